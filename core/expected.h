@@ -1,0 +1,52 @@
+#pragma once
+/// \file expected.h
+/// Errors a user can cause are values, not crashes: a function that can fail on user
+/// input returns Expected<T>, holding either the result or an Error with a message.
+/// (C++17 has no std::expected; this is the small part of it Granota needs.)
+
+#include <cassert>
+#include <string>
+#include <utility>
+#include <variant>
+
+namespace granota {
+
+/// What went wrong, in words a user can act on. `code` lets the GUI pick a translated text.
+enum class ErrorCode {
+    InvalidInput,    ///< malformed text, NaN/inf, wrong shape
+    TooFewPoints,    ///< not enough points for the construction
+    DegreeTooHigh,   ///< degree not supported by the number of (distinct) points
+    NotRational,     ///< an exact computation was asked for non-rational data
+    Singular,        ///< a linear system has no unique solution
+    NotIncreasing,   ///< abscissae of a function spline must increase strictly
+    OutOfRange,      ///< a parameter outside its meaningful range
+};
+
+struct Error {
+    ErrorCode code = ErrorCode::InvalidInput;
+    std::string message;
+};
+
+template <class T> class Expected {
+public:
+    Expected(T value) : m_v(std::move(value)) {}
+    Expected(Error error) : m_v(std::move(error)) {}
+
+    bool ok() const { return std::holds_alternative<T>(m_v); }
+    explicit operator bool() const { return ok(); }
+
+    const T& value() const& { assert(ok()); return std::get<T>(m_v); }
+    T& value() & { assert(ok()); return std::get<T>(m_v); }
+    T&& value() && { assert(ok()); return std::get<T>(std::move(m_v)); }
+    const T& operator*() const& { return value(); }
+    const T* operator->() const { return &value(); }
+
+    const Error& error() const { assert(!ok()); return std::get<Error>(m_v); }
+
+private:
+    std::variant<T, Error> m_v;
+};
+
+inline Error makeError(ErrorCode code, std::string message) { return Error{code, std::move(message)}; }
+
+} // namespace granota

@@ -1,0 +1,82 @@
+#include "core/polynomial_text.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace granota {
+
+std::string formatDouble(double v)
+{
+    if (v == 0)
+        return "0"; // also folds -0
+    char buf[64];
+    for (int precision = 1; precision <= 17; ++precision) {
+        std::snprintf(buf, sizeof buf, "%.*g", precision, v);
+        if (std::strtod(buf, nullptr) == v)
+            break;
+    }
+    return buf;
+}
+
+namespace {
+
+template <class S, class IsNeg, class Abs, class IsOne, class Fmt>
+std::string polyText(const Polynomial<S>& p, const std::string& var, IsNeg isNeg, Abs abs, IsOne isOne, Fmt fmt)
+{
+    if (p.isZero())
+        return "0";
+    std::ostringstream out;
+    bool first = true;
+    for (int k = 0; k <= p.degree(); ++k) {
+        const S c = p.coefficient(k);
+        if (c == S(0))
+            continue;
+        const bool negative = isNeg(c);
+        if (first)
+            out << (negative ? "-" : "");
+        else
+            out << (negative ? " - " : " + ");
+        first = false;
+        const S a = abs(c);
+        if (k == 0 || !isOne(a)) {
+            const std::string text = fmt(a);
+            out << text;
+            if (k >= 1 && text.find_first_of("/e") != std::string::npos)
+                out << ' '; // "7/2 t^3", not "7/2t^3"
+        }
+        if (k >= 1)
+            out << var;
+        if (k >= 2)
+            out << '^' << k;
+    }
+    return out.str();
+}
+
+} // namespace
+
+std::string toText(const Polynomial<Rational>& p, const std::string& var)
+{
+    return polyText(
+        p, var, [](const Rational& c) { return c < 0; }, [](const Rational& c) { return Rational(abs(c)); },
+        [](const Rational& c) { return c == 1; }, [](const Rational& c) { return toString(c); });
+}
+
+std::string toText(const Polynomial<double>& p, const std::string& var)
+{
+    return polyText(
+        p, var, [](double c) { return c < 0; }, [](double c) { return std::fabs(c); },
+        [](double c) { return c == 1.0; }, [](double c) { return formatDouble(c); });
+}
+
+std::string toText(const Vec2<Polynomial<Rational>>& p, const std::string& var)
+{
+    return "(" + toText(p.x, var) + ", " + toText(p.y, var) + ")";
+}
+
+std::string toText(const Vec2<Polynomial<double>>& p, const std::string& var)
+{
+    return "(" + toText(p.x, var) + ", " + toText(p.y, var) + ")";
+}
+
+} // namespace granota

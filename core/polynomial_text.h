@@ -1,0 +1,24 @@
+#pragma once
+/// \file polynomial_text.h
+/// Polynomials written as the thesis writes them: ascending powers, "2 - 6t - t^2"
+/// (Ex 2.2), exact fractions "7/2 t^3". Used by the CLI, the exact side panels and tests.
+
+#include "core/polynomial.h"
+#include "core/rational.h"
+
+#include <string>
+
+namespace granota {
+
+/// Ascending powers of `var`, e.g. "2 - 6t - t^2", "-1/2t + t^2 - 1/2t^3"; "0" for zero.
+std::string toText(const Polynomial<Rational>& p, const std::string& var = "t");
+/// The same for doubles (shortest round-trip formatting of each coefficient).
+std::string toText(const Polynomial<double>& p, const std::string& var = "t");
+/// "(x(t), y(t))".
+std::string toText(const Vec2<Polynomial<Rational>>& p, const std::string& var = "t");
+std::string toText(const Vec2<Polynomial<double>>& p, const std::string& var = "t");
+
+/// Shortest text that reads back as the same double ("0.1", "1e-09", "-3").
+std::string formatDouble(double v);
+
+} // namespace granota

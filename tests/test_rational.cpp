@@ -1,0 +1,81 @@
+// Exact rationals: parsing and printing, the ground every exact example stands on.
+#include "core/polynomial.h"
+#include "core/polynomial_text.h"
+#include "core/rational.h"
+
+#include <QtTest>
+
+using namespace granota;
+
+class TestRational : public QObject {
+    Q_OBJECT
+private slots:
+    void parse_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("exact");
+        QTest::newRow("integer") << "-3" << "-3";
+        QTest::newRow("fraction") << "7/2" << "7/2";
+        QTest::newRow("reduces") << "-6/4" << "-3/2";
+        QTest::newRow("decimal is its own rational") << "0.1" << "1/10";
+        QTest::newRow("exponent") << "1.5e-3" << "3/2000";
+        QTest::newRow("big exponent") << "1e9" << "1000000000";
+        QTest::newRow("spaces") << "  5/10 " << "1/2";
+        QTest::newRow("leading dot") << ".25" << "1/4";
+    }
+    void parse()
+    {
+        QFETCH(QString, text);
+        QFETCH(QString, exact);
+        auto q = parseRational(text.toStdString());
+        QVERIFY(q.has_value());
+        QCOMPARE(QString::fromStdString(toString(*q)), exact);
+    }
+    void rejects_data()
+    {
+        QTest::addColumn<QString>("text");
+        for (const char* bad : {"", "nan", "inf", "-inf", "1/0", "abc", "1..2", "1e", "1/2/3", "--1", "1e99999999", "0x10", "1,5"})
+            QTest::newRow(bad) << QString::fromLatin1(bad);
+    }
+    void rejects()
+    {
+        QFETCH(QString, text);
+        QVERIFY(!parseRational(text.toStdString()).has_value());
+    }
+    void exactSqrtOnlyOfSquares()
+    {
+        QCOMPARE(QString::fromStdString(toString(*exactSqrt(Rational(9, 4)))), QString("3/2"));
+        QVERIFY(!exactSqrt(Rational(2)).has_value());
+        QVERIFY(!exactSqrt(Rational(-4)).has_value());
+    }
+    void doublesAreExact()
+    {
+        QCOMPARE(QString::fromStdString(toString(exactRational(0.375))), QString("3/8"));
+        QCOMPARE(exactRational(0.1).get_d(), 0.1);
+        QVERIFY(exactRational(0.1) != Rational(1, 10)); // 0.1 is not representable
+    }
+    void polynomialText()
+    {
+        const Polynomial<Rational> p{Rational(2), Rational(-6), Rational(-1)};
+        QCOMPARE(QString::fromStdString(toText(p)), QString("2 - 6t - t^2"));
+        const Polynomial<Rational> q{Rational(0), Rational(-1, 2), Rational(1), Rational(-1, 2)};
+        QCOMPARE(QString::fromStdString(toText(q, "s")), QString("-1/2 s + s^2 - 1/2 s^3"));
+        QCOMPARE(QString::fromStdString(toText(Polynomial<Rational>())), QString("0"));
+    }
+    void polynomialAlgebra()
+    {
+        using P = Polynomial<Rational>;
+        const P t = P::identity();
+        const P one(1);
+        const P p = (one - t) * (one - t); // B_0^2
+        QCOMPARE(p, (P{Rational(1), Rational(-2), Rational(1)}));
+        QCOMPARE(p.derivative(), (P{Rational(-2), Rational(2)}));
+        QCOMPARE(p(Rational(1, 4)), Rational(9, 16));
+        // p(t + 1) = t^2
+        QCOMPARE(p.shifted(Rational(1)), (P{Rational(0), Rational(0), Rational(1)}));
+        QCOMPARE((p - p).degree(), -1);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRational)
+#include "test_rational.moc"
