@@ -6,7 +6,9 @@
 #include "core/polynomial.h"
 #include "core/rational.h"
 
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace granota {
 
@@ -17,6 +19,11 @@ std::string toText(const Polynomial<double>& p, const std::string& var = "t");
 /// "(x(t), y(t))".
 std::string toText(const Vec2<Polynomial<Rational>>& p, const std::string& var = "t");
 std::string toText(const Vec2<Polynomial<double>>& p, const std::string& var = "t");
+
+/// Reads the text form back: a sum of terms "[±][coefficient][ ][var[^k]]", coefficients
+/// integers, fractions or decimals ("2 - 6t - t^2", "-7/2 s^3 + 6s^2", "t^4"), in any order,
+/// repeated powers added. nullopt for anything else.
+std::optional<Polynomial<Rational>> parsePolynomial(std::string_view text, char var = 't');
 
 /// Shortest text that reads back as the same double ("0.1", "1e-09", "-3").
 std::string formatDouble(double v);

@@ -34,6 +34,15 @@ Rational exactRational(double d);
 /// sqrt(q) when it is rational (numerator and denominator perfect squares), else nullopt.
 std::optional<Rational> exactSqrt(const Rational& q);
 
+/// p/q in lowest terms. Use this rather than Rational(p, q): GMP's two-argument
+/// constructor does not canonicalize, and comparisons of non-canonical values are wrong.
+inline Rational frac(long p, long q)
+{
+    Rational r(p, q);
+    r.canonicalize();
+    return r;
+}
+
 inline double toDouble(const Rational& q) { return q.get_d(); }
 inline double toDouble(double d) { return d; }
 inline double toDouble(long double d) { return static_cast<double>(d); }
