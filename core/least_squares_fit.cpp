@@ -1,0 +1,448 @@
+#include "core/least_squares_fit.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Dense>
+#include <Eigen/QR>
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <utility>
+
+namespace granota {
+
+namespace {
+
+constexpr int kMaxDegree = 100;
+constexpr double kIllConditioned = 1e10;
+
+/// B_0^n(t)..B_n^n(t) into b[0..n] by the recursion of Lemma 2.1,
+/// B_j^r(t) = (1 − t) B_j^{r−1}(t) + t B_{j−1}^{r−1}(t), for double and for Rational.
+template <class S> void bernsteinRow(int n, const S& t, S* b)
+{
+    const S u = S(S(1) - t);
+    b[0] = S(1);
+    for (int r = 1; r <= n; ++r) {
+        S previous(0); // B_{j−1}^{r−1}
+        for (int j = 0; j < r; ++j) {
+            S current = b[j]; // B_j^{r−1}
+            b[j] = S(u * current + t * previous);
+            previous = std::move(current);
+        }
+        b[r] = S(t * previous);
+    }
+}
+
+/// De Casteljau's algorithm (Def 2.4) on the control points P, with scratch space.
+Point evaluateBezier(const std::vector<Point>& P, double t, std::vector<Point>& work)
+{
+    if (P.empty())
+        return Point();
+    work.assign(P.begin(), P.end());
+    const double u = 1.0 - t;
+    for (std::size_t r = 1; r < P.size(); ++r)
+        for (std::size_t i = 0; i + r < P.size(); ++i)
+            work[i] = Point(u * work[i].x + t * work[i + 1].x, u * work[i].y + t * work[i + 1].y);
+    return work[0];
+}
+
+/// The control points of the hodograph: n (P_{j+1} − P_j).
+std::vector<Point> derivativePoints(const std::vector<Point>& P)
+{
+    std::vector<Point> d;
+    if (P.size() < 2)
+        return d;
+    const double n = static_cast<double>(P.size() - 1);
+    for (std::size_t j = 0; j + 1 < P.size(); ++j)
+        d.push_back(n * (P[j + 1] - P[j]));
+    return d;
+}
+
+template <class S> int countDistinct(std::vector<S> t)
+{
+    std::sort(t.begin(), t.end());
+    return static_cast<int>(std::unique(t.begin(), t.end()) - t.begin());
+}
+
+std::string sci(double v)
+{
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.2g", v);
+    return buffer;
+}
+
+std::string pointsNeeded(int degree)
+{
+    return "degree " + std::to_string(degree) + " has " + std::to_string(degree + 1)
+           + " control points and needs at least " + std::to_string(degree + 1) + " data points";
+}
+
+/// Checks shared by the floating-point and the exact fit.
+std::optional<Error> validateShape(std::size_t count, int degree)
+{
+    if (count < 2)
+        return makeError(ErrorCode::TooFewPoints, "a least-squares fit needs at least 2 points, got "
+                                                      + std::to_string(count));
+    if (degree < 0)
+        return makeError(ErrorCode::OutOfRange, "the degree must be 0 or more, got " + std::to_string(degree));
+    if (degree > kMaxDegree)
+        return makeError(ErrorCode::OutOfRange, "degree " + std::to_string(degree)
+                                                    + " is beyond the supported maximum of "
+                                                    + std::to_string(kMaxDegree));
+    if (static_cast<std::size_t>(degree) + 1 > count)
+        return makeError(ErrorCode::DegreeTooHigh, pointsNeeded(degree) + " (n + 1 ≤ k + 1); there are only "
+                                                       + std::to_string(count) + ", so the degree can be at most "
+                                                       + std::to_string(count - 1));
+    return std::nullopt;
+}
+
+/// The least-squares solution in the working frame.
+struct Solution {
+    std::vector<Point> P;
+    double cond = 1;
+    std::vector<std::string> warnings;
+};
+
+/// Solves min ‖MP − Q‖ for M = bernsteinMatrix(t, n) with the chosen solver.
+Expected<Solution> solve(const Eigen::MatrixX2d& Q, const std::vector<double>& t, int n, LeastSquaresSolver solver)
+{
+    const Eigen::Index m = n + 1;
+    Eigen::MatrixXd M = bernsteinMatrix(t, n);
+    const int distinct = countDistinct(t);
+
+    // The thesis's normal equations MᵀM P = MᵀQ (Prop 2.2) need M before it is factorised.
+    Eigen::MatrixXd MtM, MtQ;
+    if (solver == LeastSquaresSolver::Normal) {
+        if (distinct < m)
+            return makeError(ErrorCode::Singular,
+                             "the normal equations MᵀM P = MᵀQ have no unique solution: only " + std::to_string(distinct)
+                                 + " of the parameters t_i are distinct and Lemma 2.2 needs n + 1 = " + std::to_string(m)
+                                 + " (coincident points?). Lower the degree or use the qr or svd solver.");
+        MtM = M.transpose() * M;
+        MtQ = M.transpose() * Q;
+    }
+
+    // cond₂(M) from the singular values of R in M = QR (Householder, in place: cheap even
+    // for a million rows, since R is only (n+1)×(n+1)).
+    Eigen::HouseholderQR<Eigen::Ref<Eigen::MatrixXd>> qr(M);
+    const Eigen::MatrixXd R = qr.matrixQR().topRows(m).triangularView<Eigen::Upper>();
+    const unsigned options = solver == LeastSquaresSolver::Svd ? (Eigen::ComputeFullU | Eigen::ComputeFullV) : 0u;
+    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, options);
+    const Eigen::VectorXd sigma = svd.singularValues();
+    Solution s;
+    s.cond = sigma(m - 1) > 0 ? sigma(0) / sigma(m - 1) : std::numeric_limits<double>::max();
+    if (!std::isfinite(s.cond))
+        s.cond = std::numeric_limits<double>::max();
+
+    Eigen::MatrixXd P;
+    Eigen::Index rank = m;
+    if (solver == LeastSquaresSolver::Normal) {
+        // P = (MᵀM)⁻¹MᵀQ (Prop 2.2) by Cholesky: cond₂(MᵀM) = cond₂(M)².
+        const Eigen::LLT<Eigen::MatrixXd> llt(MtM);
+        if (llt.info() != Eigen::Success)
+            return makeError(ErrorCode::Singular,
+                             "the Cholesky factorisation of MᵀM failed: MᵀM is numerically singular (cond₂(M) ≈ "
+                                 + sci(s.cond) + ", so cond₂(MᵀM) ≈ " + sci(s.cond * s.cond)
+                                 + "). Use the qr or svd solver.");
+        P = llt.solve(MtQ);
+        if (!P.allFinite())
+            return makeError(ErrorCode::Singular, "the normal equations gave a non-finite solution (cond₂(MᵀM) ≈ "
+                                                      + sci(s.cond * s.cond) + "). Use the qr or svd solver.");
+        if (s.cond > 1e5)
+            s.warnings.push_back("the normal equations square the condition number: cond₂(MᵀM) ≈ "
+                                 + sci(s.cond * s.cond) + ", so about "
+                                 + std::to_string(std::min(16, static_cast<int>(std::log10(s.cond * s.cond))))
+                                 + " of the 16 significant digits may be lost");
+    } else {
+        // Qᵀ applied as Householder reflections: the least-squares problem becomes R P = c.
+        const Eigen::MatrixXd c = (qr.householderQ().transpose() * Q).topRows(m);
+        if (solver == LeastSquaresSolver::Qr) {
+            const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(R);
+            P = cod.solve(c);
+            rank = cod.rank();
+        } else {
+            P = svd.solve(c);
+            rank = svd.rank();
+        }
+        if (rank < m) {
+            const std::string what = distinct < m ? "M is rank deficient (rank " : "M is numerically rank deficient (rank ";
+            const std::string why = distinct < m ? "only " + std::to_string(distinct)
+                                                       + " of the parameters t_i are distinct (coincident points?)"
+                                                 : "cond₂(M) ≈ " + sci(s.cond);
+            s.warnings.push_back(what + std::to_string(rank) + " < n + 1 = " + std::to_string(m) + ": " + why
+                                 + "); the control points are the minimum-norm least-squares solution");
+        }
+    }
+    if (s.cond > kIllConditioned)
+        s.warnings.push_back("ill-conditioned: cond₂(M) ≈ " + sci(s.cond)
+                             + "; the control points are very sensitive to the data (lower the degree?)");
+    if (!P.allFinite())
+        return makeError(ErrorCode::Singular, "the least-squares solve gave a non-finite result");
+    s.P.resize(static_cast<std::size_t>(m));
+    for (Eigen::Index j = 0; j < m; ++j)
+        s.P[static_cast<std::size_t>(j)] = Point(P(j, 0), P(j, 1));
+    return s;
+}
+
+double sumOfSquares(const std::vector<Point>& q, const std::vector<Point>& P, const std::vector<double>& t)
+{
+    std::vector<Point> work;
+    double sse = 0;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+        const Point r = q[i] - evaluateBezier(P, t[i], work);
+        sse += dot(r, r);
+    }
+    return sse;
+}
+
+/// Projects every q_i onto the curve P by a few Newton steps on |α(t) − q_i|², starting at
+/// t_i and clamped to [0, 1]; a point keeps its t_i unless the step brings it closer.
+std::vector<double> project(const std::vector<Point>& q, const std::vector<Point>& P, const std::vector<double>& t)
+{
+    const std::vector<Point> d1 = derivativePoints(P);
+    const std::vector<Point> d2 = derivativePoints(d1);
+    std::vector<Point> work;
+    std::vector<double> out = t;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+        const Point start = evaluateBezier(P, t[i], work) - q[i];
+        const double startDistance = dot(start, start);
+        double ti = t[i];
+        for (int iteration = 0; iteration < 8; ++iteration) {
+            const Point diff = evaluateBezier(P, ti, work) - q[i];
+            const Point a1 = evaluateBezier(d1, ti, work);
+            const Point a2 = evaluateBezier(d2, ti, work);
+            const double g = dot(diff, a1);
+            double h = dot(a1, a1) + dot(diff, a2);
+            if (!(h > 0))
+                h = dot(a1, a1); // Gauss–Newton when the curvature term makes h ≤ 0
+            if (!(h > 0))
+                break;
+            const double next = std::clamp(ti - g / h, 0.0, 1.0);
+            if (!std::isfinite(next) || next == ti)
+                break;
+            ti = next;
+        }
+        const Point end = evaluateBezier(P, ti, work) - q[i];
+        if (dot(end, end) < startDistance)
+            out[i] = ti;
+    }
+    // Stretch back to [0, 1]: an affine change of parameter keeps the space of curves of
+    // degree ≤ n, so the best fit is no worse, and M stays better conditioned.
+    const auto [lo, hi] = std::minmax_element(out.begin(), out.end());
+    const double a = *lo, b = *hi;
+    if (b > a)
+        for (double& ti : out)
+            ti = std::clamp((ti - a) / (b - a), 0.0, 1.0);
+    return out;
+}
+
+} // namespace
+
+std::optional<LeastSquaresSolver> parseLeastSquaresSolver(std::string_view text)
+{
+    std::string lower(text);
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (lower == "qr")
+        return LeastSquaresSolver::Qr;
+    if (lower == "normal")
+        return LeastSquaresSolver::Normal;
+    if (lower == "svd")
+        return LeastSquaresSolver::Svd;
+    return std::nullopt;
+}
+
+std::string toString(LeastSquaresSolver s)
+{
+    switch (s) {
+    case LeastSquaresSolver::Qr:
+        return "qr";
+    case LeastSquaresSolver::Normal:
+        return "normal";
+    case LeastSquaresSolver::Svd:
+        return "svd";
+    }
+    return "qr";
+}
+
+Eigen::MatrixXd bernsteinMatrix(const std::vector<double>& t, int n)
+{
+    n = std::max(n, 0);
+    Eigen::MatrixXd M(static_cast<Eigen::Index>(t.size()), n + 1);
+    std::vector<double> row(static_cast<std::size_t>(n + 1));
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        bernsteinRow(n, t[i], row.data());
+        for (int j = 0; j <= n; ++j)
+            M(static_cast<Eigen::Index>(i), j) = row[static_cast<std::size_t>(j)];
+    }
+    return M;
+}
+
+Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& options)
+{
+    for (std::size_t i = 0; i < q.size(); ++i)
+        if (!isFinite(q[i]))
+            return makeError(ErrorCode::InvalidInput, "point Q_" + std::to_string(i) + " (number " + std::to_string(i + 1)
+                                                          + ") has a coordinate that is NaN or infinite");
+    if (auto error = validateShape(q.size(), options.degree))
+        return *error;
+    const int n = options.degree;
+
+    FitResult result;
+    bool fellBack = false;
+    std::vector<double> t = parameters(q, options.parametrization, &fellBack);
+    if (fellBack)
+        result.warnings.push_back("all the points coincide: " + toString(options.parametrization)
+                                  + " parameters are undefined, uniform ones are used");
+
+    // Work in a centred, scaled frame: the fit is affine-invariant (the rows of M sum to 1,
+    // Prop 2.1), and data around 1e9 or 1e−9 keep their relative accuracy.
+    double minX = q[0].x, maxX = q[0].x, minY = q[0].y, maxY = q[0].y;
+    for (const Point& p : q) {
+        minX = std::min(minX, p.x);
+        maxX = std::max(maxX, p.x);
+        minY = std::min(minY, p.y);
+        maxY = std::max(maxY, p.y);
+    }
+    const Point centre(0.5 * minX + 0.5 * maxX, 0.5 * minY + 0.5 * maxY);
+    const double halfSize = std::max(0.5 * maxX - 0.5 * minX, 0.5 * maxY - 0.5 * minY);
+    const double scale = halfSize > 0 && std::isfinite(halfSize) ? halfSize : 1.0;
+    std::vector<Point> local(q.size());
+    Eigen::MatrixX2d Q(static_cast<Eigen::Index>(q.size()), 2);
+    for (std::size_t i = 0; i < q.size(); ++i) {
+        local[i] = Point((q[i].x - centre.x) / scale, (q[i].y - centre.y) / scale);
+        Q(static_cast<Eigen::Index>(i), 0) = local[i].x;
+        Q(static_cast<Eigen::Index>(i), 1) = local[i].y;
+    }
+
+    Expected<Solution> first = solve(Q, t, n, options.solver);
+    if (!first)
+        return first.error();
+    Solution best = std::move(first).value();
+    double bestSse = sumOfSquares(local, best.P, t);
+
+    // Iterative parameter correction (beyond the thesis, which fixes the t_i): project
+    // each Q_i onto the current curve and refit while the error keeps dropping.
+    if (options.correctParameters && n > 0) {
+        for (int iteration = 0; iteration < options.maxCorrections && bestSse > 0; ++iteration) {
+            std::vector<double> corrected = project(local, best.P, t);
+            Expected<Solution> next = solve(Q, corrected, n, options.solver);
+            if (!next) {
+                result.warnings.push_back("parameter correction stopped: " + next.error().message);
+                break;
+            }
+            const double sse = sumOfSquares(local, next->P, corrected);
+            if (!(sse < bestSse))
+                break;
+            const double improvement = (bestSse - sse) / bestSse;
+            best = std::move(next).value();
+            bestSse = sse;
+            t = std::move(corrected);
+            ++result.corrections;
+            if (improvement < 1e-12)
+                break;
+        }
+    }
+
+    // Back to the user's frame.
+    result.cond = best.cond;
+    result.warnings.insert(result.warnings.end(), best.warnings.begin(), best.warnings.end());
+    result.controlPoints.reserve(best.P.size());
+    for (const Point& p : best.P)
+        result.controlPoints.push_back(Point(centre.x + scale * p.x, centre.y + scale * p.y));
+    result.residuals.reserve(q.size());
+    std::vector<Point> work;
+    double sse = 0, maxError = 0;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+        const Point r = local[i] - evaluateBezier(best.P, t[i], work);
+        sse += dot(r, r);
+        maxError = std::max(maxError, norm(r));
+        result.residuals.push_back(scale * r);
+    }
+    result.sse = scale * scale * sse;
+    result.rms = std::sqrt(result.sse / static_cast<double>(q.size()));
+    result.maxError = scale * maxError;
+    result.params = std::move(t);
+
+    bool finite = std::isfinite(result.sse) && std::isfinite(result.rms) && std::isfinite(result.maxError)
+                  && std::isfinite(result.cond);
+    for (const Point& p : result.controlPoints)
+        finite = finite && isFinite(p);
+    for (const Point& r : result.residuals)
+        finite = finite && isFinite(r);
+    if (!finite)
+        return makeError(ErrorCode::OutOfRange, "the fitted curve does not fit in double precision "
+                                                "(coordinates too large for this degree?)");
+    return result;
+}
+
+Expected<ExactFit> fitBezierExact(const std::vector<RPoint>& q, int degree, Parametrization p)
+{
+    if (auto error = validateShape(q.size(), degree))
+        return *error;
+    const int n = degree;
+    const int rows = static_cast<int>(q.size());
+
+    std::optional<std::vector<Rational>> t = exactParameters(q, p);
+    if (!t) {
+        // Name the first distance that spoils it (Ex 2.9: d_1 = √10).
+        std::string which;
+        for (std::size_t j = 1; j < q.size() && which.empty(); ++j) {
+            const Rational dx = Rational(q[j].x - q[j - 1].x);
+            const Rational dy = Rational(q[j].y - q[j - 1].y);
+            const Rational squared = Rational(dx * dx + dy * dy);
+            const std::optional<Rational> d = exactSqrt(squared);
+            if (!d)
+                which = "d_" + std::to_string(j) + " = |Q_" + std::to_string(j) + " − Q_" + std::to_string(j - 1)
+                        + "| = √(" + toString(squared) + ")";
+            else if (p == Parametrization::Centripetal && !exactSqrt(*d))
+                which = "√d_" + std::to_string(j) + " = √(" + toString(*d) + ")";
+        }
+        return makeError(ErrorCode::NotRational, "the " + toString(p) + " parameters are irrational (" + which
+                                                     + " is not a rational number), so the fit cannot be exact; "
+                                                       "use uniform parameters or the floating-point fit");
+    }
+    const int distinct = countDistinct(*t);
+    if (distinct < n + 1)
+        return makeError(ErrorCode::Singular, "MᵀM is singular: only " + std::to_string(distinct)
+                                                  + " of the parameters t_i are distinct and Lemma 2.2 needs n + 1 = "
+                                                  + std::to_string(n + 1) + " (coincident points?)");
+
+    ExactFit fit;
+    fit.params = *t;
+    // M of Lemma 2.2, row by row (Lemma 2.1).
+    fit.M = RationalMatrix(rows, n + 1);
+    std::vector<Rational> row(static_cast<std::size_t>(n + 1));
+    for (int i = 0; i < rows; ++i) {
+        bernsteinRow(n, fit.params[static_cast<std::size_t>(i)], row.data());
+        for (int j = 0; j <= n; ++j)
+            fit.M(i, j) = row[static_cast<std::size_t>(j)];
+    }
+    const RationalMatrix Mt = fit.M.transpose();
+    fit.MtM = Mt * fit.M;
+    Expected<RationalMatrix> inverse = fit.MtM.inverse();
+    if (!inverse)
+        return makeError(ErrorCode::Singular, "MᵀM is singular: " + inverse.error().message);
+    fit.MtMinv = std::move(inverse).value();
+    fit.Mplus = fit.MtMinv * Mt; // Nota 2.2: M⁺ = (MᵀM)⁻¹Mᵀ
+    RationalMatrix Q(rows, 2);
+    for (int i = 0; i < rows; ++i) {
+        Q(i, 0) = q[static_cast<std::size_t>(i)].x;
+        Q(i, 1) = q[static_cast<std::size_t>(i)].y;
+    }
+    fit.P = fit.Mplus * Q;
+    const RationalMatrix fitted = fit.M * fit.P;
+    fit.sse = 0;
+    for (int i = 0; i < rows; ++i)
+        for (int c = 0; c < 2; ++c) {
+            const Rational r = Rational(Q(i, c) - fitted(i, c));
+            fit.sse += Rational(r * r);
+        }
+    return fit;
+}
+
+} // namespace granota
