@@ -1,0 +1,176 @@
+#include "core/point_list.h"
+
+#include <cctype>
+#include <string>
+
+namespace granota {
+
+namespace {
+
+std::string_view trim(std::string_view s)
+{
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front())))
+        s.remove_prefix(1);
+    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back())))
+        s.remove_suffix(1);
+    return s;
+}
+
+std::string quoted(std::string_view s)
+{
+    constexpr std::size_t kMax = 40;
+    std::string out(s.substr(0, kMax));
+    if (s.size() > kMax)
+        out += "…";
+    return "'" + out + "'";
+}
+
+Expected<Rational> coordinate(std::string_view text, std::size_t index, const char* axis)
+{
+    auto q = parseRational(text);
+    if (!q)
+        return makeError(ErrorCode::InvalidInput, "point " + std::to_string(index) + ": " + axis + " = " + quoted(trim(text)) +
+                                                      " is not a finite number (write integers, decimals or fractions p/q)");
+    return *q;
+}
+
+Expected<RPoint> pair(std::string_view text, std::size_t index)
+{
+    const auto comma = text.find(',');
+    if (comma == std::string_view::npos || text.find(',', comma + 1) != std::string_view::npos)
+        return makeError(ErrorCode::InvalidInput,
+                         "point " + std::to_string(index) + ": expected \"x,y\", got " + quoted(trim(text)));
+    auto x = coordinate(text.substr(0, comma), index, "x");
+    if (!x)
+        return x.error();
+    auto y = coordinate(text.substr(comma + 1), index, "y");
+    if (!y)
+        return y.error();
+    return RPoint(*x, *y);
+}
+
+} // namespace
+
+Expected<std::vector<RPoint>> parsePointList(std::string_view text)
+{
+    std::vector<RPoint> points;
+    text = trim(text);
+    if (text.empty())
+        return makeError(ErrorCode::TooFewPoints, "no points given");
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find(';', start);
+        if (end == std::string_view::npos)
+            end = text.size();
+        const std::string_view item = trim(text.substr(start, end - start));
+        if (!item.empty() || end != text.size()) { // a trailing ';' is tolerated
+            auto p = pair(item, points.size());
+            if (!p)
+                return p.error();
+            points.push_back(*p);
+        }
+        start = end + 1;
+    }
+    return points;
+}
+
+Expected<std::vector<RPoint>> parsePointCsv(std::string_view text)
+{
+    std::vector<RPoint> points;
+    std::size_t start = 0, lineNumber = 0;
+    while (start < text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string_view::npos)
+            end = text.size();
+        const std::string_view line = trim(text.substr(start, end - start));
+        start = end + 1;
+        ++lineNumber;
+        if (line.empty() || line.front() == '#')
+            continue;
+        auto p = pair(line, points.size());
+        if (!p) {
+            // A header such as "x,y" on the first line is not data.
+            if (points.empty() && lineNumber == 1 && line.find_first_of("0123456789") == std::string_view::npos)
+                continue;
+            return makeError(p.error().code, "line " + std::to_string(lineNumber) + ": " + p.error().message);
+        }
+        points.push_back(*p);
+    }
+    if (points.empty())
+        return makeError(ErrorCode::TooFewPoints, "the file holds no points");
+    return points;
+}
+
+Expected<std::vector<RPoint>> parsePointJson(std::string_view text)
+{
+    // A deliberately small reader for exactly [[x,y],…]; anything else is an error.
+    std::size_t pos = 0;
+    const auto skip = [&] {
+        while (pos < text.size() && std::isspace(static_cast<unsigned char>(text[pos])))
+            ++pos;
+    };
+    const auto expect = [&](char c) {
+        skip();
+        if (pos < text.size() && text[pos] == c) {
+            ++pos;
+            return true;
+        }
+        return false;
+    };
+    const auto bad = [&](const std::string& what) {
+        return makeError(ErrorCode::InvalidInput, "JSON points: " + what + " at character " + std::to_string(pos + 1) +
+                                                      " (expected [[x,y],…])");
+    };
+    const auto number = [&](std::size_t index, const char* axis) -> Expected<Rational> {
+        skip();
+        std::size_t begin = pos;
+        if (pos < text.size() && text[pos] == '"') {
+            const std::size_t close = text.find('"', pos + 1);
+            if (close == std::string_view::npos)
+                return bad("unterminated string");
+            pos = close + 1;
+            return coordinate(text.substr(begin + 1, close - begin - 1), index, axis);
+        }
+        while (pos < text.size() && text[pos] != ',' && text[pos] != ']' && !std::isspace(static_cast<unsigned char>(text[pos])))
+            ++pos;
+        return coordinate(text.substr(begin, pos - begin), index, axis);
+    };
+    std::vector<RPoint> points;
+    if (!expect('['))
+        return bad("no opening '['");
+    if (expect(']')) {
+        skip();
+        return makeError(ErrorCode::TooFewPoints, "the file holds no points");
+    }
+    do {
+        if (!expect('['))
+            return bad("a point must be a pair [x,y]");
+        auto x = number(points.size(), "x");
+        if (!x)
+            return x.error();
+        if (!expect(','))
+            return bad("a point must be a pair [x,y]");
+        auto y = number(points.size(), "y");
+        if (!y)
+            return y.error();
+        if (!expect(']'))
+            return bad("a point must be a pair [x,y]");
+        points.emplace_back(*x, *y);
+    } while (expect(','));
+    if (!expect(']'))
+        return bad("missing closing ']'");
+    skip();
+    if (pos != text.size())
+        return bad("unexpected text after the list");
+    return points;
+}
+
+Expected<std::vector<RPoint>> parsePointFile(std::string_view text)
+{
+    const std::string_view t = trim(text);
+    if (!t.empty() && t.front() == '[')
+        return parsePointJson(t);
+    return parsePointCsv(text);
+}
+
+} // namespace granota

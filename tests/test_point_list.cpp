@@ -1,0 +1,90 @@
+// Reading points: inline lists, CSV and JSON files; every coordinate exact; every kind of
+// bad input a clear error naming where it is.
+#include "core/point_list.h"
+#include "core/polynomial_text.h"
+
+#include <QtTest>
+
+using namespace granota;
+
+class TestPointList : public QObject {
+    Q_OBJECT
+private slots:
+    void inlineList()
+    {
+        auto p = parsePointList(" 2,3; -1/2, 8 ;0.25,-1e-3; ");
+        QVERIFY(p.ok());
+        QCOMPARE(int(p->size()), 3);
+        QCOMPARE((*p)[1].x, frac(-1, 2));
+        QCOMPARE((*p)[2].x, frac(1, 4));
+        QCOMPARE((*p)[2].y, frac(-1, 1000)); // the decimal, exactly, not the nearest double
+    }
+
+    void csv()
+    {
+        auto p = parsePointCsv("x,y\n# a comment\n0,0\n\n1,3\r\n4, 2\n");
+        QVERIFY(p.ok());
+        QCOMPARE(int(p->size()), 3);
+        QCOMPARE((*p)[2].x, Rational(4));
+        auto bad = parsePointCsv("0,0\n1,3\n4,two\n");
+        QVERIFY(!bad.ok());
+        QVERIFY(bad.error().message.find("line 3") != std::string::npos);
+        QVERIFY(bad.error().message.find("'two'") != std::string::npos);
+    }
+
+    void json()
+    {
+        auto p = parsePointJson(" [[0, 0], [\"7/2\", -2.5], [1e2,5]] ");
+        QVERIFY(p.ok());
+        QCOMPARE(int(p->size()), 3);
+        QCOMPARE((*p)[1].x, frac(7, 2));
+        QCOMPARE((*p)[1].y, frac(-5, 2));
+        QCOMPARE((*p)[2].x, Rational(100));
+        QVERIFY(parsePointFile("[[1,2]]").ok());
+        QVERIFY(parsePointFile("1,2\n").ok());
+    }
+
+    void rejects_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<bool>("asJson");
+        QTest::newRow("empty") << "" << false;
+        QTest::newRow("NaN") << "0,0;nan,1" << false;
+        QTest::newRow("inf") << "0,0;1,-inf" << false;
+        QTest::newRow("three coordinates") << "0,0,0" << false;
+        QTest::newRow("one coordinate") << "0,0;5" << false;
+        QTest::newRow("empty item") << "0,0;;1,1" << false;
+        QTest::newRow("letters") << "a,b" << false;
+        QTest::newRow("json not a list") << "{\"x\":1}" << true;
+        QTest::newRow("json triple") << "[[1,2,3]]" << true;
+        QTest::newRow("json NaN") << "[[1,NaN]]" << true;
+        QTest::newRow("json unterminated") << "[[1,2]" << true;
+        QTest::newRow("json trailing text") << "[[1,2]] x" << true;
+        QTest::newRow("json empty") << "[]" << true;
+        QTest::newRow("binary garbage") << QString::fromLatin1("\x01\x02\xff,\x03") << false;
+    }
+    void rejects()
+    {
+        QFETCH(QString, text);
+        QFETCH(bool, asJson);
+        const std::string s = text.toStdString();
+        auto p = asJson ? parsePointJson(s) : parsePointList(s);
+        QVERIFY(!p.ok());
+        QVERIFY(!p.error().message.empty());
+    }
+
+    void polynomialTextRoundTrips()
+    {
+        for (const char* s : {"2 - 6t - t^2", "-1/2 t + t^2 - 1/2 t^3", "t^4", "3", "-7t"}) {
+            auto p = parsePolynomial(s);
+            QVERIFY2(p.has_value(), s);
+            QCOMPARE(QString::fromStdString(toText(*p)), QString(s));
+        }
+        QCOMPARE(*parsePolynomial("t + t"), (Polynomial<Rational>{Rational(0), Rational(2)}));
+        for (const char* bad : {"", "2 +", "t^", "2x", "t t", "1/0 t"})
+            QVERIFY2(!parsePolynomial(bad).has_value(), bad);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestPointList)
+#include "test_point_list.moc"
