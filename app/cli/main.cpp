@@ -1,2 +1,83 @@
+// granota-cli: Granota's mathematics from the command line (SPEC §6).
+// Human-readable text by default, one JSON object with --json. Bad input: exit status 2
+// and a line starting with "error:" on stderr — never a crash, never a NaN.
+#include "app/cli/command.h"
+
 #include <cstdio>
-int main() { std::puts("granota-cli"); return 0; }
+#include <exception>
+#include <iostream>
+#include <new>
+
+using namespace granota;
+using namespace granota::cli;
+
+namespace {
+
+constexpr int kBadInput = 2;
+
+std::vector<Command> commands()
+{
+    return {bezierCommand(), bernsteinCommand(), fitCommand(), catmullRomCommand(), demoCommand()};
+}
+
+void printUsage(std::ostream& out)
+{
+    out << "granota-cli — splines of the thesis \"Animació procedimental per a cossos tous\"\n\n"
+           "usage: granota-cli COMMAND [options]\n\n";
+    for (const Command& c : commands())
+        out << "  " << c.name << "  " << c.usage << "\n      " << c.summary << "\n";
+    out << "\nPoints: --points \"x,y;x,y;…\" (integers, decimals or fractions p/q) or --points-file F\n"
+           "(CSV x,y lines or JSON [[x,y],…]). --exact prints exact fractions; --json prints JSON.\n";
+}
+
+int fail(const std::string& message)
+{
+    std::cerr << "error: " << message << "\n";
+    return kBadInput;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+    try {
+        if (argc < 2)
+        {
+            std::cerr << "error: no command given\n";
+            printUsage(std::cerr);
+            return kBadInput;
+        }
+        const std::string name = argv[1];
+        if (name == "--help" || name == "-h" || name == "help") {
+            printUsage(std::cout);
+            return 0;
+        }
+        for (const Command& c : commands()) {
+            if (name != c.name)
+                continue;
+            std::vector<std::string> rest(argv + 2, argv + argc);
+            for (const auto& a : rest)
+                if (a == "--help" || a == "-h") {
+                    std::cout << "usage: granota-cli " << c.name << " " << c.usage << "\n  " << c.summary << "\n";
+                    return 0;
+                }
+            auto args = Arguments::parse(rest, c.syntax);
+            if (!args)
+                return fail(args.error().message);
+            auto result = c.run(*args);
+            if (!result)
+                return fail(result.error().message);
+            if (args->flag("json"))
+                std::cout << result->json.dump() << "\n";
+            else
+                std::cout << result->text;
+            std::cout.flush();
+            return std::cout ? 0 : 1;
+        }
+        return fail("unknown command '" + name + "' (try granota-cli --help)");
+    } catch (const std::bad_alloc&) {
+        return fail("not enough memory for this input");
+    } catch (const std::exception& e) {
+        return fail(e.what());
+    }
+}

@@ -1,0 +1,133 @@
+#include "app/cli/arguments.h"
+
+#include "core/point_list.h"
+
+#include <fstream>
+#include <sstream>
+
+namespace granota::cli {
+
+Expected<Arguments> Arguments::parse(const std::vector<std::string>& args, const CommandSyntax& syntax)
+{
+    Arguments a;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& arg = args[i];
+        if (arg.rfind("--", 0) != 0 || arg.size() == 2)
+            return makeError(ErrorCode::InvalidInput, "unexpected argument '" + arg + "'");
+        std::string name = arg.substr(2);
+        std::optional<std::string> inlineValue;
+        if (auto eq = name.find('='); eq != std::string::npos) { // --t=1/2
+            inlineValue = name.substr(eq + 1);
+            name = name.substr(0, eq);
+        }
+        if (syntax.flags.count(name)) {
+            if (inlineValue)
+                return makeError(ErrorCode::InvalidInput, "--" + name + " takes no value");
+            a.m_flags.insert(name);
+            continue;
+        }
+        if (!syntax.valueOptions.count(name))
+            return makeError(ErrorCode::InvalidInput, "unknown option --" + name);
+        std::string value;
+        if (inlineValue) {
+            value = *inlineValue;
+        } else {
+            // A value may itself start with '-' (a negative number), but not with "--".
+            if (i + 1 >= args.size() || args[i + 1].rfind("--", 0) == 0)
+                return makeError(ErrorCode::InvalidInput, "--" + name + " needs a value");
+            value = args[++i];
+        }
+        auto& slot = a.m_values[name];
+        if (!slot.empty() && !syntax.repeatable.count(name))
+            return makeError(ErrorCode::InvalidInput, "--" + name + " given twice");
+        slot.push_back(value);
+    }
+    return a;
+}
+
+std::optional<std::string> Arguments::value(const std::string& name) const
+{
+    auto it = m_values.find(name);
+    if (it == m_values.end() || it->second.empty())
+        return std::nullopt;
+    return it->second.front();
+}
+
+std::vector<std::string> Arguments::values(const std::string& name) const
+{
+    auto it = m_values.find(name);
+    return it == m_values.end() ? std::vector<std::string>{} : it->second;
+}
+
+Expected<Rational> Arguments::rational(const std::string& name, std::optional<Rational> fallback) const
+{
+    auto v = value(name);
+    if (!v) {
+        if (fallback)
+            return *fallback;
+        return makeError(ErrorCode::InvalidInput, "--" + name + " is required");
+    }
+    auto q = parseRational(*v);
+    if (!q)
+        return makeError(ErrorCode::InvalidInput,
+                         "--" + name + " '" + *v + "' is not a finite number (integer, decimal or fraction p/q)");
+    return *q;
+}
+
+Expected<int> Arguments::integer(const std::string& name, int min, int max, std::optional<int> fallback) const
+{
+    auto v = value(name);
+    if (!v) {
+        if (fallback)
+            return *fallback;
+        return makeError(ErrorCode::InvalidInput, "--" + name + " is required");
+    }
+    auto q = parseRational(*v);
+    if (!q || q->get_den() != 1)
+        return makeError(ErrorCode::InvalidInput, "--" + name + " '" + *v + "' is not a whole number");
+    if (*q < min || *q > max)
+        return makeError(ErrorCode::OutOfRange,
+                         "--" + name + " " + *v + " is out of range (" + std::to_string(min) + " to " + std::to_string(max) + ")");
+    return static_cast<int>(q->get_num().get_si());
+}
+
+Expected<std::string> Arguments::choice(const std::string& name, const std::vector<std::string>& choices,
+                                        std::optional<std::string> fallback) const
+{
+    auto v = value(name);
+    if (!v) {
+        if (fallback)
+            return *fallback;
+        return makeError(ErrorCode::InvalidInput, "--" + name + " is required");
+    }
+    for (const auto& c : choices)
+        if (*v == c)
+            return *v;
+    std::string list;
+    for (const auto& c : choices)
+        list += (list.empty() ? "" : ", ") + c;
+    return makeError(ErrorCode::InvalidInput, "--" + name + " '" + *v + "' is not one of: " + list);
+}
+
+Expected<std::vector<RPoint>> Arguments::points() const
+{
+    const auto inlinePoints = value("points");
+    const auto file = value("points-file");
+    if (inlinePoints && file)
+        return makeError(ErrorCode::InvalidInput, "give either --points or --points-file, not both");
+    if (inlinePoints)
+        return parsePointList(*inlinePoints);
+    if (!file)
+        return makeError(ErrorCode::InvalidInput, "--points \"x,y;x,y;…\" or --points-file FILE is required");
+    std::ifstream in(*file, std::ios::binary);
+    if (!in)
+        return makeError(ErrorCode::InvalidInput, "cannot read '" + *file + "'");
+    std::ostringstream text;
+    text << in.rdbuf();
+    auto points = parsePointFile(text.str());
+    if (!points)
+        return makeError(points.error().code, *file + ": " + points.error().message);
+    return points;
+}
+
+} // namespace granota::cli

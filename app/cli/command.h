@@ -1,0 +1,45 @@
+#pragma once
+/// \file command.h
+/// A granota-cli command: its syntax, its usage line and what it computes. A command
+/// returns both forms of its answer, the JSON object of SPEC §6 and the text for people;
+/// main() prints one of them.
+
+#include "app/cli/arguments.h"
+#include "app/cli/json.h"
+
+#include <string>
+
+namespace granota::cli {
+
+struct CommandOutput {
+    Json json = Json::object();
+    std::string text;
+};
+
+struct Command {
+    const char* name;
+    const char* usage;   ///< one line: the options
+    const char* summary; ///< one line: what it does
+    CommandSyntax syntax;
+    Expected<CommandOutput> (*run)(const Arguments&);
+};
+
+// One per file, named for the command.
+Command bezierCommand();
+Command bernsteinCommand();
+Command fitCommand();
+Command catmullRomCommand();
+Command demoCommand();
+
+/// Number output: exact "p/q" strings with --exact, doubles otherwise (SPEC §6).
+Json number(const Rational& q, bool exact);
+Json number(double d);
+Json point(const RPoint& p, bool exact);
+Json point(const Point& p);
+std::string text(const RPoint& p);
+std::string text(const Point& p);
+/// Largest number of control points bezier/fit accept: beyond it the O(n²) triangle and
+/// the exact tables stop being something anyone reads, and a typo must not hang.
+constexpr int kMaxDegree = 200;
+
+} // namespace granota::cli

@@ -1,0 +1,326 @@
+// granota-cli against the contract of SPEC §6: JSON keys, exact output of the thesis's
+// examples, and exit status 2 with "error:" on stderr for every kind of bad input.
+#include <QtTest>
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+
+namespace {
+
+struct Run {
+    int exitCode = -1;
+    QByteArray out, err;
+    QJsonObject json() const
+    {
+        QJsonParseError e;
+        const auto doc = QJsonDocument::fromJson(out, &e);
+        if (e.error != QJsonParseError::NoError || !doc.isObject())
+            qWarning("not a JSON object: %s", out.constData());
+        return doc.object();
+    }
+};
+
+Run cli(const QStringList& args)
+{
+    QProcess p;
+    p.start(QStringLiteral(GRANOTA_CLI_PATH), args);
+    Run r;
+    if (!p.waitForFinished(120000)) {
+        p.kill();
+        qWarning("granota-cli did not finish: %s", qPrintable(args.join(' ')));
+        return r;
+    }
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2; // -2: crashed
+    r.out = p.readAllStandardOutput();
+    r.err = p.readAllStandardError();
+    return r;
+}
+
+QStringList strings(const QJsonArray& a)
+{
+    QStringList l;
+    for (const auto& v : a)
+        l << v.toString();
+    return l;
+}
+
+const char* const kEx22 = "2,3;-1,8;-5,-3;3,0;-7,-2";
+const char* const kEx27 = "0,0;1,3;4,2;8,-2;1,5";
+const char* const kEx213 = "3,5;2,2;6,0;8,3;7,5";
+
+} // namespace
+
+class TestCli : public QObject {
+    Q_OBJECT
+private slots:
+    void bezierEx22Exact()
+    {
+        const Run r = cli({"bezier", "--points", kEx22, "--t", "1/2", "--exact", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject o = r.json();
+        // c(t) = (2 - 12t - 6t^2 + 52t^3 - 43t^4, 3 + 20t - 96t^2 + 120t^3 - 49t^4)
+        const QJsonObject poly = o["poly"].toObject();
+        QCOMPARE(strings(poly["x"].toArray()), QStringList({"2", "-12", "-6", "52", "-43"}));
+        QCOMPARE(strings(poly["y"].toArray()), QStringList({"3", "20", "-96", "120", "-49"}));
+        // c(1/2) from that polynomial: x = 2 - 6 - 3/2 + 13/2 - 43/16 = -27/16.
+        QCOMPARE(strings(o["point"].toArray()), QStringList({"-27/16", "15/16"}));
+        const QJsonArray levels = o["levels"].toArray();
+        QCOMPARE(levels.size(), 5);
+        for (int r = 0; r < 5; ++r)
+            QCOMPARE(levels[r].toArray().size(), 5 - r);
+        // P_0^1(1/2) = (2 - 3/2, 3 + 5/2) from Ex 2.2's table.
+        QCOMPARE(strings(levels[1].toArray()[0].toArray()), QStringList({"1/2", "11/2"}));
+        QCOMPARE(strings(levels[4].toArray()[0].toArray()), strings(o["point"].toArray()));
+    }
+
+    void bezierDoubleAgrees()
+    {
+        const Run r = cli({"bezier", "--points", kEx22, "--t", "0.5", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray p = r.json()["point"].toArray();
+        QCOMPARE(p[0].toDouble(), -27.0 / 16);
+        QCOMPARE(p[1].toDouble(), 15.0 / 16);
+        QCOMPARE(r.json()["poly"].toObject()["x"].toArray()[4].toDouble(), -43.0);
+    }
+
+    void bernsteinExact()
+    {
+        const Run r = cli({"bernstein", "--degree", "4", "--t", "1/3", "--exact", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject o = r.json();
+        // B_i^4(1/3) = C(4,i) 2^(4-i) / 81
+        QCOMPARE(strings(o["values"].toArray()), QStringList({"16/81", "32/81", "8/27", "8/81", "1/81"}));
+        // Ex 2.4: B_1^4 = 4t - 12t^2 + 12t^3 - 4t^4
+        QCOMPARE(strings(o["poly"].toArray()[1].toArray()), QStringList({"0", "4", "-12", "12", "-4"}));
+    }
+
+    void fitEx27Exact()
+    {
+        const Run r = cli({"fit", "--points", kEx27, "--degree", "2", "--param", "uniform", "--exact", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject o = r.json();
+        const QJsonArray cp = o["control_points"].toArray();
+        QCOMPARE(cp.size(), 3);
+        QCOMPARE(strings(cp[0].toArray()), QStringList({"-8/7", "46/35"}));
+        QCOMPARE(strings(cp[1].toArray()), QStringList({"323/35", "-19/35"}));
+        QCOMPARE(strings(cp[2].toArray()), QStringList({"86/35", "116/35"}));
+        QCOMPARE(strings(o["params"].toArray()), QStringList({"0", "1/4", "1/2", "3/4", "1"}));
+        QCOMPARE(strings(o["MtM"].toArray()[0].toArray()), QStringList({"177/128", "23/64", "17/128"}));
+        QCOMPARE(strings(o["M_pinv"].toArray()[1].toArray()), QStringList({"-23/35", "22/35", "37/35", "22/35", "-23/35"}));
+        QVERIFY(o["cond"].toDouble() > 1);
+        QVERIFY(o.contains("sse"));
+    }
+
+    void fitEx28Exact()
+    {
+        const Run r = cli({"fit", "--points", kEx27, "--degree", "3", "--exact", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray cp = r.json()["control_points"].toArray();
+        QCOMPARE(strings(cp[1].toArray()), QStringList({"-3371/630", "2711/210"}));
+        QCOMPARE(strings(cp[2].toArray()), QStringList({"11399/630", "-2539/210"}));
+    }
+
+    void fitSolversAgree_data()
+    {
+        QTest::addColumn<QString>("solver");
+        QTest::newRow("qr") << "qr";
+        QTest::newRow("svd") << "svd";
+        QTest::newRow("normal") << "normal";
+    }
+    void fitSolversAgree()
+    {
+        QFETCH(QString, solver);
+        const Run r = cli({"fit", "--points", kEx27, "--degree", "2", "--param", "uniform", "--solver", solver, "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray p1 = r.json()["control_points"].toArray()[1].toArray();
+        QVERIFY(std::abs(p1[0].toDouble() - 323.0 / 35) < 1e-12);
+        QVERIFY(std::abs(p1[1].toDouble() + 19.0 / 35) < 1e-12);
+    }
+
+    void fitChordUsesConsecutiveDistances()
+    {
+        // Ex 2.9's data: d = √10, √10, 4√2, 7√2 (the thesis's (1-7) slip would give √85).
+        const Run r = cli({"fit", "--points", kEx27, "--degree", "2", "--param", "chord", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray t = r.json()["params"].toArray();
+        const double total = 2 * std::sqrt(10.0) + 11 * std::sqrt(2.0);
+        QVERIFY(std::abs(t[1].toDouble() - std::sqrt(10.0) / total) < 1e-14);
+        QVERIFY(std::abs(t[3].toDouble() - (2 * std::sqrt(10.0) + 4 * std::sqrt(2.0)) / total) < 1e-14);
+        QCOMPARE(t[4].toDouble(), 1.0);
+    }
+
+    void catmullRomEx213()
+    {
+        const Run r = cli({"catmull-rom", "--points", kEx213, "--tau", "1/2", "--mode", "open", "--exact", "--json", "--samples", "3"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray segs = r.json()["segments"].toArray();
+        QCOMPARE(segs.size(), 4);
+        // p_1^n(s) = (3 - 1/2 s - 7/2 s^2 + 3 s^3, 5 - 3/2 s - 7/2 s^2 + 2 s^3)
+        QCOMPARE(strings(segs[0].toObject()["x"].toArray()), QStringList({"3", "-1/2", "-7/2", "3"}));
+        QCOMPARE(strings(segs[0].toObject()["y"].toArray()), QStringList({"5", "-3/2", "-7/2", "2"}));
+        // p_2(s) = (2 + 3/2 s + 6 s^2 - 7/2 s^3, 2 - 5/2 s - 3/2 s^2 + 2 s^3)
+        QCOMPARE(strings(segs[1].toObject()["x"].toArray()), QStringList({"2", "3/2", "6", "-7/2"}));
+        // p_4^n(s) = (8 + 1/2 s - 7/2 s^2 + 2 s^3, 3 + 5/2 s - 1/2 s^3)
+        QCOMPARE(strings(segs[3].toObject()["x"].toArray()), QStringList({"8", "1/2", "-7/2", "2"}));
+        QCOMPARE(strings(segs[3].toObject()["y"].toArray()), QStringList({"3", "5/2", "0", "-1/2"}));
+        const QJsonArray samples = r.json()["samples"].toArray();
+        QCOMPARE(samples.size(), 4 * 3); // S per segment, ends included
+        QCOMPARE(strings(samples[0].toArray()), QStringList({"3", "5"}));
+        QCOMPARE(strings(samples[11].toArray()), QStringList({"7", "5"}));
+    }
+
+    void catmullRomModes_data()
+    {
+        QTest::addColumn<QString>("mode");
+        QTest::addColumn<int>("segments");
+        QTest::newRow("open") << "open" << 4;
+        QTest::newRow("cyclic") << "cyclic" << 4;
+        QTest::newRow("closed") << "closed" << 5;
+    }
+    void catmullRomModes()
+    {
+        QFETCH(QString, mode);
+        QFETCH(int, segments);
+        const Run r = cli({"catmull-rom", "--points", kEx213, "--tau", "0.5", "--mode", mode, "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray segs = r.json()["segments"].toArray();
+        QCOMPARE(segs.size(), segments);
+        if (mode == "closed") { // the segment q_4 -> q_0 comes last and ends at q_0
+            const QJsonObject last = segs.last().toObject();
+            double x = 0, y = 0;
+            for (int k = 0; k < 4; ++k) {
+                x += last["x"].toArray()[k].toDouble();
+                y += last["y"].toArray()[k].toDouble();
+            }
+            QCOMPARE(x, 3.0);
+            QCOMPARE(y, 5.0);
+        }
+    }
+
+    void catmullRomCentripetal()
+    {
+        const Run r = cli({"catmull-rom", "--points", "0,0;1,0;1,0;5,3", "--alpha", "1/2", "--json", "--samples", "5"});
+        QCOMPARE(r.exitCode, 0); // coincident points: finite output
+        QVERIFY(!r.out.contains("null"));
+        QVERIFY(!r.out.toLower().contains("nan"));
+    }
+
+    void pointsFiles()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        QFile csv(dir.filePath("q.csv")), json(dir.filePath("q.json")), bad(dir.filePath("bad.csv"));
+        QVERIFY(csv.open(QIODevice::WriteOnly) && json.open(QIODevice::WriteOnly) && bad.open(QIODevice::WriteOnly));
+        csv.write("x,y\n0,0\n1,3\n4,2\n# comment\n8,-2\n1,5\n");
+        json.write("[[0,0],[1,3],[\"4\",2],[8,-2.0],[1,5]]");
+        bad.write("0,0\n1,3\n4,two\n");
+        csv.close();
+        json.close();
+        bad.close();
+        for (const QString& f : {csv.fileName(), json.fileName()}) {
+            const Run r = cli({"fit", "--points-file", f, "--degree", "2", "--exact", "--json"});
+            QCOMPARE(r.exitCode, 0);
+            QCOMPARE(strings(r.json()["control_points"].toArray()[0].toArray()), QStringList({"-8/7", "46/35"}));
+        }
+        const Run r = cli({"fit", "--points-file", bad.fileName(), "--degree", "1"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY(r.err.startsWith("error:"));
+        QVERIFY(r.err.contains("line 3"));
+    }
+
+    void humanReadableByDefault()
+    {
+        const Run r = cli({"demo"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.out.contains("(2 - 12t - 6t^2 + 52t^3 - 43t^4, 3 + 20t - 96t^2 + 120t^3 - 49t^4)"));
+        QVERIFY(r.out.contains("P_1^3(t) = (-1 - 12t + 36t^2 - 30t^3, 8 - 33t + 42t^2 - 19t^3)"));
+        const Run fit = cli({"fit", "--points", kEx27, "--degree", "2", "--exact"});
+        QCOMPARE(fit.exitCode, 0);
+        QVERIFY(fit.out.contains("P_1 = (323/35, -19/35)"));
+    }
+
+    // SPEC §3 / §6: bad input is exit 2 with "error: …" on stderr, nothing on stdout.
+    void badInput_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::newRow("no command") << QStringList{};
+        QTest::newRow("unknown command") << QStringList{"frobnicate"};
+        QTest::newRow("unknown option") << QStringList{"bezier", "--points", "0,0;1,1", "--t", "0", "--colour", "red"};
+        QTest::newRow("missing t") << QStringList{"bezier", "--points", "0,0;1,1"};
+        QTest::newRow("missing value") << QStringList{"bezier", "--points", "0,0;1,1", "--t"};
+        QTest::newRow("NaN point") << QStringList{"bezier", "--points", "0,0;nan,1", "--t", "0.5"};
+        QTest::newRow("inf point") << QStringList{"bezier", "--points", "0,0;1,inf", "--t", "0.5"};
+        QTest::newRow("garbage point") << QStringList{"bezier", "--points", "0,0;1;2", "--t", "0.5"};
+        QTest::newRow("garbage t") << QStringList{"bezier", "--points", "0,0;1,1", "--t", "half"};
+        QTest::newRow("NaN t") << QStringList{"bezier", "--points", "0,0;1,1", "--t", "nan"};
+        QTest::newRow("zero denominator") << QStringList{"bezier", "--points", "0,0;1/0,1", "--t", "0"};
+        QTest::newRow("empty points") << QStringList{"bezier", "--points", "", "--t", "0"};
+        QTest::newRow("both point sources") << QStringList{"bezier", "--points", "0,0", "--points-file", "x", "--t", "0"};
+        QTest::newRow("missing file") << QStringList{"fit", "--points-file", "/nonexistent/q.csv", "--degree", "1"};
+        QTest::newRow("negative degree") << QStringList{"bernstein", "--degree", "-1", "--t", "0"};
+        QTest::newRow("fractional degree") << QStringList{"bernstein", "--degree", "3/2", "--t", "0"};
+        QTest::newRow("huge degree") << QStringList{"bernstein", "--degree", "100000", "--t", "0"};
+        QTest::newRow("degree >= points") << QStringList{"fit", "--points", kEx27, "--degree", "5"};
+        QTest::newRow("too few points") << QStringList{"fit", "--points", "1,1", "--degree", "0"};
+        QTest::newRow("bad param") << QStringList{"fit", "--points", kEx27, "--degree", "2", "--param", "arc"};
+        QTest::newRow("bad solver") << QStringList{"fit", "--points", kEx27, "--degree", "2", "--solver", "lu"};
+        QTest::newRow("exact chord, irrational") << QStringList{"fit", "--points", kEx27, "--degree", "2", "--param", "chord", "--exact"};
+        QTest::newRow("normal eq. singular") << QStringList{"fit", "--points", "0,0;0,0;0,0;1,1", "--degree", "2", "--param", "chord", "--solver", "normal"};
+        QTest::newRow("too few for cyclic") << QStringList{"catmull-rom", "--points", "0,0;1,1", "--mode", "cyclic"};
+        QTest::newRow("one point") << QStringList{"catmull-rom", "--points", "0,0"};
+        QTest::newRow("bad mode") << QStringList{"catmull-rom", "--points", kEx213, "--mode", "spiral"};
+        QTest::newRow("alpha out of range") << QStringList{"catmull-rom", "--points", kEx213, "--alpha", "2"};
+        QTest::newRow("exact centripetal") << QStringList{"catmull-rom", "--points", kEx213, "--alpha", "1/2", "--exact"};
+        QTest::newRow("one sample") << QStringList{"catmull-rom", "--points", kEx213, "--samples", "1"};
+        QTest::newRow("repeated option") << QStringList{"fit", "--points", kEx27, "--degree", "2", "--degree", "3"};
+    }
+    void badInput()
+    {
+        QFETCH(QStringList, args);
+        const Run r = cli(args);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.startsWith("error: "), r.err.constData());
+        QVERIFY(r.out.isEmpty());
+    }
+
+    // SPEC §3: extreme but valid input gives a finite answer (exit 0, no NaN/null).
+    void extremeButValid_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::newRow("huge coordinates") << QStringList{"fit", "--points", "1e9,1e9;2e9,-1e9;3e9,1e9;4e9,0", "--degree", "2", "--param", "chord", "--json"};
+        QTest::newRow("tiny coordinates") << QStringList{"fit", "--points", "1e-9,1e-9;2e-9,-1e-9;3e-9,1e-9;4e-9,0", "--degree", "2", "--param", "centripetal", "--json"};
+        QTest::newRow("coincident, chord, qr") << QStringList{"fit", "--points", "0,0;0,0;1,1;1,1;2,0", "--degree", "2", "--param", "chord", "--json"};
+        QTest::newRow("all coincident") << QStringList{"fit", "--points", "3,3;3,3;3,3", "--degree", "1", "--param", "chord", "--json"};
+        QTest::newRow("collinear") << QStringList{"fit", "--points", "0,0;1,1;2,2;3,3;4,4", "--degree", "3", "--json"};
+        QTest::newRow("degree 60") << QStringList{"bernstein", "--degree", "60", "--t", "0.3", "--json"};
+        QTest::newRow("tau -10") << QStringList{"catmull-rom", "--points", kEx213, "--tau", "-10", "--json"};
+        QTest::newRow("tau 10") << QStringList{"catmull-rom", "--points", kEx213, "--tau", "10", "--mode", "closed", "--json"};
+        QTest::newRow("iterate") << QStringList{"fit", "--points", kEx27, "--degree", "3", "--param", "chord", "--iterate", "--json"};
+        QTest::newRow("t outside [0,1]") << QStringList{"bezier", "--points", kEx22, "--t", "3", "--json"};
+    }
+    void extremeButValid()
+    {
+        QFETCH(QStringList, args);
+        const Run r = cli(args);
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(!r.json().isEmpty());
+        QVERIFY2(!r.out.contains("null") && !r.out.toLower().contains("nan") && !r.out.contains("inf"), r.out.constData());
+    }
+
+    void highDegreeFitWarns()
+    {
+        QString pts;
+        for (int i = 0; i <= 80; ++i)
+            pts += QString("%1,%2;").arg(i).arg(std::sin(i * 0.2), 0, 'g', 17);
+        const Run r = cli({"fit", "--points", pts, "--degree", "60", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        QVERIFY(r.json()["cond"].toDouble() > 1e10);
+        QVERIFY(!r.json()["warnings"].toArray().isEmpty());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "test_cli.moc"
