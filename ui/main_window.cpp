@@ -40,7 +40,7 @@ void MainWindow::retranslate()
     for (int i = 0; i < 5; ++i) {
         m_tabs->setTabText(i, titles[i]);
         if (auto* label = qobject_cast<QLabel*>(m_tabs->widget(i)))
-            label->setText(tr("%1 (%2) — the interactive view arrives with the application.").arg(titles[i], refs[i]));
+            label->setText(QStringLiteral("%1\n%2").arg(titles[i], refs[i]));
     }
 }
 
