@@ -13,6 +13,11 @@ std::string formatDouble(double v)
     if (v == 0)
         return "0"; // also folds -0
     char buf[64];
+    // Whole numbers as whole numbers: 100, not the equally short 1e+02.
+    if (std::fabs(v) < 1e16 && v == std::trunc(v)) {
+        std::snprintf(buf, sizeof buf, "%.0f", v);
+        return buf;
+    }
     for (int precision = 1; precision <= 17; ++precision) {
         std::snprintf(buf, sizeof buf, "%.*g", precision, v);
         if (std::strtod(buf, nullptr) == v)

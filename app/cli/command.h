@@ -5,11 +5,13 @@
 /// main() prints one of them.
 
 #include "app/cli/arguments.h"
-#include "app/cli/json.h"
+#include "core/json.h"
 
 #include <string>
 
 namespace granota::cli {
+
+using granota::Json;
 
 struct CommandOutput {
     Json json = Json::object();
