@@ -39,7 +39,9 @@ public:
     T& value() & { assert(ok()); return std::get<T>(m_v); }
     T&& value() && { assert(ok()); return std::get<T>(std::move(m_v)); }
     const T& operator*() const& { return value(); }
+    T& operator*() & { return value(); }
     const T* operator->() const { return &value(); }
+    T* operator->() { return &value(); }
 
     const Error& error() const { assert(!ok()); return std::get<Error>(m_v); }
 

@@ -1,0 +1,156 @@
+// Scenes as data: every scene of SPEC §1.5 by name, in the thesis's order, with exactly
+// the components it needs, its parameters only, and --set checked.
+#include "core/scene.h"
+
+#include <QtTest>
+
+using namespace granota;
+
+class TestScenes : public QObject {
+    Q_OBJECT
+private slots:
+    void allScenesInThesisOrder()
+    {
+        const std::vector<std::string> expected{"polygon", "gravity", "bounce", "springs", "area", "verlet", "tuned",
+                                                "color", "bezier", "bezier-revised", "catmull-rom", "pendulum",
+                                                "pendulum-chain", "pendulum-limits", "frog", "obstacles", "many-bodies", "shapes"};
+        QCOMPARE(sceneNames(), expected);
+        const std::vector<std::string> sections{"4.1", "4.2", "4.3", "4.4", "4.5", "4.6", "4.7", "4.8", "4.9",
+                                                "4.10", "4.12", "4.13", "4.14", "4.15", "4.16", "5.2.1", "5.2.2", "5.2.3"};
+        for (std::size_t i = 0; i < expected.size(); ++i) {
+            auto s = loadScene(expected[i]);
+            QVERIFY2(s.ok(), s.ok() ? "" : s.error().message.c_str());
+            QCOMPARE(s->name, expected[i]);
+            QCOMPARE(s->section, sections[i]);
+            QVERIFY(!s->title.empty() && !s->description.empty());
+        }
+    }
+
+    void components_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QStringList>("components");
+        QTest::newRow("polygon") << "polygon" << QStringList{};
+        QTest::newRow("gravity") << "gravity" << QStringList{"gravity", "bounds"};
+        QTest::newRow("bounce") << "bounce" << QStringList{"gravity", "bounds", "bounce"};
+        QTest::newRow("springs") << "springs" << QStringList{"gravity", "bounds", "bounce", "springs"};
+        QTest::newRow("area") << "area" << QStringList{"gravity", "bounds", "bounce", "springs", "area"};
+        QTest::newRow("verlet") << "verlet" << QStringList{"gravity", "bounds", "springs", "area", "grab"};
+        QTest::newRow("color") << "color" << QStringList{"gravity", "bounds", "springs", "area", "grab", "fill"};
+        QTest::newRow("bezier") << "bezier" << QStringList{"gravity", "bounds", "springs", "area", "grab", "fill", "outline-bezier"};
+        QTest::newRow("catmull-rom") << "catmull-rom" << QStringList{"gravity", "bounds", "springs", "area", "grab", "fill", "outline-catmull-rom"};
+        QTest::newRow("pendulum") << "pendulum" << QStringList{"gravity", "legs"};
+        QTest::newRow("pendulum-chain") << "pendulum-chain" << QStringList{"legs"};
+        QTest::newRow("pendulum-limits") << "pendulum-limits" << QStringList{"gravity", "bounds", "legs", "angle-limits"};
+        QTest::newRow("frog") << "frog" << QStringList{"gravity", "bounds", "springs", "area", "grab", "legs", "angle-limits", "fill", "outline-catmull-rom", "head"};
+        QTest::newRow("obstacles") << "obstacles" << QStringList{"gravity", "bounds", "springs", "area", "grab", "fill", "outline-catmull-rom", "head", "obstacles"};
+        QTest::newRow("many-bodies") << "many-bodies" << QStringList{"gravity", "bounds", "springs", "area", "grab", "fill", "outline-catmull-rom", "head", "collisions"};
+        QTest::newRow("shapes") << "shapes" << QStringList{"gravity", "bounds", "springs", "area", "grab", "fill", "outline-catmull-rom", "angle-limits"};
+    }
+    void components()
+    {
+        QFETCH(QString, scene);
+        QFETCH(QStringList, components);
+        auto s = loadScene(scene.toStdString());
+        QVERIFY(s.ok());
+        QStringList got;
+        for (const auto& c : s->components)
+            got << QString::fromStdString(c);
+        QCOMPARE(got, components);
+    }
+
+    void onlyTheParametersItNeeds()
+    {
+        // `gravity` carries no springs, area or legs; `pendulum` has no body area;
+        // `polygon` has no gravity.
+        auto gravity = loadScene("gravity");
+        QVERIFY(gravity->hasParam("gravity"));
+        for (const char* k : {"spring_length", "target_area", "area_factor", "legs", "friction"})
+            QVERIFY2(!gravity->hasParam(k), k);
+        auto pendulum = loadScene("pendulum");
+        for (const char* k : {"target_area", "area_factor", "sides", "radius", "spring_length"})
+            QVERIFY2(!pendulum->hasParam(k), k);
+        QVERIFY(pendulum->hasParam("chain"));
+        QVERIFY(!loadScene("polygon")->hasParam("gravity"));
+        auto frog = loadScene("frog");
+        for (const char* k : {"gravity", "friction", "v0", "area_factor", "sides", "target_area", "spring_length", "velmax",
+                              "center", "radius", "width", "height", "legs", "angle_limits"})
+            QVERIFY2(frog->hasParam(k), k);
+        // The frog's constants are the thesis's (Annex II).
+        QCOMPARE(frog->params.gravity, Point(0, 0.75));
+        QCOMPARE(frog->params.sides, 10);
+        QCOMPARE(frog->params.targetArea, 20000.0);
+        QCOMPARE(frog->params.legs[2].upper, 80.0);
+        QVERIFY(std::abs(frog->params.legs[2].elbowMax - M_PI / 3) < 1e-15);
+        QCOMPARE(loadScene("obstacles")->obstacles.size(), std::size_t(3));
+        QCOMPARE(loadScene("shapes")->shapes.size(), std::size_t(3));
+    }
+
+    void fileRoundTrip()
+    {
+        for (const auto& name : sceneNames()) {
+            auto s = loadScene(name);
+            const Json written = sceneToJson(*s);
+            auto again = parseScene(written);
+            QVERIFY(again.ok());
+            QCOMPARE(sceneToJson(*again).dump(), written.dump());
+            QCOMPARE(again->paramKeys, s->paramKeys); // nothing added, nothing lost
+        }
+    }
+
+    void settings()
+    {
+        auto s = loadScene("frog");
+        QVERIFY(applySetting(*s, "gravity=0.3,0.5").ok());
+        QCOMPARE(s->params.gravity, Point(0.3, 0.5));
+        QVERIFY(applySetting(*s, "sides=12").ok());
+        QCOMPARE(s->params.sides, 12);
+        QVERIFY(applySetting(*s, "area_factor=1/20").ok());
+        QCOMPARE(s->params.areaFactor, 0.05);
+        QVERIFY(applySetting(*s, "target_area=0").ok());   // extreme but meaningful
+        QVERIFY(applySetting(*s, "gravity=0,10000").ok()); // huge gravity runs
+        QVERIFY(sceneToJson(*s).dump().find("\"sides\":12") != std::string::npos);
+    }
+
+    void badSettings_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QString>("setting");
+        QTest::newRow("negative sides") << "frog" << "sides=-3";
+        QTest::newRow("two sides") << "frog" << "sides=2";
+        QTest::newRow("fractional sides") << "frog" << "sides=5.5";
+        QTest::newRow("zero width") << "frog" << "width=0";
+        QTest::newRow("zero height") << "frog" << "height=0";
+        QTest::newRow("negative radius") << "frog" << "radius=-1";
+        QTest::newRow("negative area") << "frog" << "target_area=-5";
+        QTest::newRow("NaN") << "frog" << "gravity=nan,1";
+        QTest::newRow("one coordinate") << "frog" << "gravity=1";
+        QTest::newRow("garbage") << "frog" << "velmax=fast";
+        QTest::newRow("no equals") << "frog" << "gravity";
+        QTest::newRow("unknown key") << "frog" << "colour=green";
+        QTest::newRow("not in this scene") << "gravity" << "spring_length=3";
+        QTest::newRow("polygon has no gravity") << "polygon" << "gravity=0,1";
+        QTest::newRow("too many bodies") << "many-bodies" << "bodies=100000";
+    }
+    void badSettings()
+    {
+        QFETCH(QString, scene);
+        QFETCH(QString, setting);
+        auto s = loadScene(scene.toStdString());
+        const SceneSpec before = *s;
+        auto r = applySetting(*s, setting.toStdString());
+        QVERIFY(!r.ok());
+        QVERIFY(!r.error().message.empty());
+        QCOMPARE(sceneToJson(*s).dump(), sceneToJson(before).dump()); // nothing changed
+    }
+
+    void unknownScene()
+    {
+        auto s = loadScene("dragon");
+        QVERIFY(!s.ok());
+        QVERIFY(s.error().message.find("frog") != std::string::npos); // lists the real ones
+    }
+};
+
+QTEST_GUILESS_MAIN(TestScenes)
+#include "test_scenes.moc"
