@@ -1,0 +1,77 @@
+// The stable solver allocates nothing per step once its contact lists have reached their
+// working size: every global operator new of this test binary is counted.
+#include "core/xpbd_world.h"
+
+#include <QtTest>
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <new>
+
+namespace {
+std::atomic<long> g_allocations{0};
+}
+
+void* operator new(std::size_t size)
+{
+    ++g_allocations;
+    if (void* p = std::malloc(size ? size : 1))
+        return p;
+    throw std::bad_alloc();
+}
+void* operator new[](std::size_t size)
+{
+    ++g_allocations;
+    if (void* p = std::malloc(size ? size : 1))
+        return p;
+    throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+using namespace granota;
+
+class TestXpbdAllocation : public QObject {
+    Q_OBJECT
+private slots:
+    void stepDoesNotAllocate_data()
+    {
+        QTest::addColumn<int>("bodies");
+        QTest::newRow("one frog") << 1;
+        QTest::newRow("60 bodies, obstacles, chains, mouse") << 60;
+    }
+    void stepDoesNotAllocate()
+    {
+        QFETCH(int, bodies);
+        const long start = g_allocations.load();
+        XpbdWorld w = XpbdWorld::create().value();
+        for (int k = 0; k < bodies; ++k)
+            QVERIFY(w.addRegularBody({100.0 + (k % 12) * 95, 80.0 + (k / 12) * 90}, 35, 6 + k % 7, 3000, {}).ok());
+        QVERIFY(w.addSegmentObstacle({200, 500}, {700, 560}).ok());
+        QVERIFY(w.addPolygonObstacle({{900, 600}, {1150, 600}, {1020, 450}}).ok());
+        for (int leg = 0; leg < 4; ++leg) {
+            const ChainAnchor a = frogLegAnchor(0, leg, 6);
+            QVERIFY(w.addChain(frogLegChain(FrogParams{}.legs[std::size_t(leg)], a, w.anchorPoint(a))).ok());
+        }
+        QVERIFY(g_allocations.load() > start); // the counter does see allocations
+        for (int i = 0; i < 300; ++i) // the contact lists grow to their working size
+            w.step();
+        QVERIFY(w.press(w.centroid(0)));
+        const long before = g_allocations.load();
+        for (int i = 0; i < 300; ++i) {
+            w.move({400 + std::sin(i * 0.05) * 300, 200});
+            w.step();
+        }
+        w.release();
+        for (int i = 0; i < 100; ++i)
+            w.step();
+        const long during = g_allocations.load() - before;
+        QCOMPARE(during, 0L);
+    }
+};
+
+QTEST_GUILESS_MAIN(TestXpbdAllocation)
+#include "test_xpbd_allocation.moc"
