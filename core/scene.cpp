@@ -371,6 +371,22 @@ Expected<bool> applySetting(SceneSpec& scene, const std::string& keyValue)
     return true;
 }
 
+Expected<SceneSpec> withBodies(SceneSpec scene, int bodies)
+{
+    if (!scene.hasParam("bodies"))
+        return makeError(ErrorCode::InvalidInput, "scene '" + scene.name + "' has a single body");
+    const int before = std::max(1, scene.bodies);
+    auto ok = applySetting(scene, "bodies=" + std::to_string(bodies));
+    if (!ok)
+        return ok.error();
+    if (bodies > before) {
+        const double grow = std::sqrt(static_cast<double>(bodies) / before);
+        scene.params.width = std::round(scene.params.width * grow);
+        scene.params.height = std::round(scene.params.height * grow);
+    }
+    return scene;
+}
+
 Json sceneToJson(const SceneSpec& s)
 {
     const FrogParams& p = s.params;

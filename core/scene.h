@@ -22,13 +22,6 @@ enum class SceneModel {
     Frog,     ///< §4.16: body, four legs and head
 };
 
-/// Which vertices hold on to the mouse when a body is grabbed.
-enum class GrabMode {
-    All,     ///< §4.6: every vertex, at its distance from the grab point
-    Above,   ///< §4.7: the vertices above the grab point
-    Anchors, ///< §4.10, §4.16: fixed anchors {0, 1, N−1} (Annex II's {0, 1, N−1, N})
-};
-
 struct ObstacleSpec {
     std::vector<Point> points; ///< a segment (2 points, open) or a closed polygon
     bool closed = false;
@@ -76,6 +69,12 @@ Expected<SceneSpec> parseScene(const Json& doc);
 /// A key the scene does not have, a malformed value, or a value that makes no sense
 /// (negative sides, a frame of zero size) is an error with a message.
 Expected<bool> applySetting(SceneSpec& scene, const std::string& keyValue);
+
+/// `bodies` bodies at the scene's density: where the scene's frame was drawn for fewer,
+/// its width and height grow by √(bodies / scene.bodies) so that the bodies fit (a
+/// thousand frogs do not fit in 1280 × 720 px; piled up, they would measure a pile, not the
+/// broad phase). Errors as applySetting.
+Expected<SceneSpec> withBodies(SceneSpec scene, int bodies);
 
 /// The scene as its file: only its own keys, with their current values.
 Json sceneToJson(const SceneSpec& scene);

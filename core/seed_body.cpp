@@ -98,6 +98,25 @@ template <class R> Expected<SeedBody<R>> SeedBody<R>::create(const FrogParams& p
     return body;
 }
 
+template <class R>
+Expected<SeedBody<R>> SeedBody<R>::createFromShape(const FrogParams& params, const std::vector<Point>& shape,
+                                                  SeedComponents components)
+{
+    if (shape.size() < 3 || shape.size() > 10000)
+        return makeError(ErrorCode::OutOfRange, "a body needs 3 to 10000 vertices");
+    for (const Point& p : shape)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y))
+            return makeError(ErrorCode::InvalidInput, "the body's shape has a non-finite point");
+    FrogParams p = params;
+    p.sides = static_cast<int>(shape.size());
+    if (auto e = checkSeedParams(p))
+        return *e;
+    SeedBody body(p, components);
+    body.m_shape = shape;
+    body.initialise(Vec(R(p.center.x), R(p.center.y)), Vec(R(p.v0.x), R(p.v0.y)));
+    return body;
+}
+
 template <class R> void SeedBody<R>::initialise(const Vec& centre, const Vec& vIni)
 {
     // Annex II, Poligon.inicialitza. PI, HALF_PI and TWO_PI are Processing's float
@@ -107,6 +126,17 @@ template <class R> void SeedBody<R>::initialise(const Vec& centre, const Vec& vI
     const int N = m_n;
     m_grabbed = false;
     const R x = centre.x, y = centre.y;
+    if (!m_shape.empty()) {
+        // A given rest shape (§4.9's Bézier points, §5.2.3's shapes), translated to the centre.
+        for (int i = 0; i <= N; ++i) {
+            const Point& o = m_shape[std::size_t(i % N)];
+            SeedVertex<R>& v = m_vert[std::size_t(i)];
+            v.pos = Vec(R(x + R(o.x)), R(y + R(o.y)));
+            v.prev = Vec(R(v.pos.x - vIni.x), R(v.pos.y - vIni.y));
+        }
+        finishInitialise();
+        return;
+    }
     // The seed's r is an int (abs(height/6)); an integral FrogParams::radius gives the same
     // value, a fractional one is kept as it is.
     const R r = m_radius;
@@ -126,7 +156,13 @@ template <class R> void SeedBody<R>::initialise(const Vec& centre, const Vec& vI
         v.prev = Vec(R(x + r * c - vIni.x), R(y + r * s - vIni.y));
         v.pos = Vec(R(x + r * c), R(y + r * s));
     }
-    for (int i = 0; i < N; ++i)
+    finishInitialise();
+}
+
+template <class R> void SeedBody<R>::finishInitialise()
+{
+    // The rest of Poligon.inicialitza: springs, the frame, the target area.
+    for (int i = 0; i < m_n; ++i)
         m_molls[std::size_t(i)] = m_springLength;
     if (m_components.bounds) {
         // "Comprovem que tots els punts estiguen dins la pantalla".
@@ -202,12 +238,12 @@ template <class R> void SeedBody<R>::step()
         }
     }
 
-    // §4.6–4.7 (Annex II, "Si esta agafat"): while held, the anchors {0, 1, N−1, N} are
-    // pulled to their grab distance estruc from the mouse along the mouse→vertex line.
-    const int anchors[4] = {0, 1, N - 1, N};
+    // §4.6–4.7 (Annex II, "Si esta agafat"): while held, the anchors ({0, 1, N−1, N} in
+    // the final program) are pulled to their grab distance estruc from the mouse along
+    // the mouse→vertex line.
     const bool held = m_components.grab && m_grabbed;
     if (held) {
-        for (int a : anchors) {
+        for (int a : m_anchors) {
             const auto i = std::size_t(a);
             Vec d(R(v[i].pos.x - m_mouse.x), R(v[i].pos.y - m_mouse.y));
             seedmath::normalize(d); // mouse on the vertex: d = 0, target = the mouse (finite)
@@ -259,9 +295,9 @@ template <class R> void SeedBody<R>::step()
     // vertices 1 and N−1 are kept within 10 px of the mouse in x and above it, vertices 0
     // and N inside the frame in x and 10 px above the mouse. These corrections do not
     // count in num_correccions (so they are averaged with the others).
-    if (held) {
+    if (held && m_components.grabMode == GrabMode::Anchors) {
         const R mx = m_mouse.x, my = m_mouse.y;
-        for (int a : anchors) {
+        for (int a : m_anchors) {
             const auto i = std::size_t(a);
             Vec& c = m_corr[i];
             const Vec& p = v[i].pos;
@@ -302,8 +338,20 @@ template <class R> void SeedBody<R>::holdAt(const Vec& clau)
 {
     // Annex II, Poligon.mantindreagafat: the anchors and their distances to the mouse.
     m_grabbed = true;
-    const int anchors[4] = {0, 1, m_n - 1, m_n};
-    for (int a : anchors) {
+    m_anchors.clear();
+    switch (m_components.grabMode) {
+    case GrabMode::Anchors: m_anchors = {0, 1, m_n - 1, m_n}; break;
+    case GrabMode::All: // §4.6: a spring from the mouse to every vertex
+        for (int i = 0; i <= m_n; ++i)
+            m_anchors.push_back(i);
+        break;
+    case GrabMode::Above: // §4.7: the vertices above the grab point (y smaller on screen)
+        for (int i = 0; i <= m_n; ++i)
+            if (m_vert[std::size_t(i)].pos.y <= clau.y)
+                m_anchors.push_back(i);
+        break;
+    }
+    for (int a : m_anchors) {
         const auto i = std::size_t(a);
         m_estruc[i] = seedmath::dist(m_vert[i].pos.x, m_vert[i].pos.y, clau.x, clau.y);
     }

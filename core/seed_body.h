@@ -33,6 +33,13 @@ struct SeedComponents {
     bool legs = true;        ///< the four `Pota` (§4.16); off: the frog is just the body
     bool grab = true;        ///< mouse grabbing with anchors (§4.6, §4.7); off: respawn does not hold
     bool angleLimits = true; ///< the acos angle clamps of the legs (§4.15)
+    /// Beyond the seed: keep the legs' joints in the frame too (the seed keeps only the
+    /// wrist above the floor, so with some constants a leg reaches past the side of the
+    /// window). Off by default, so that the seed's traces are reproduced exactly.
+    bool clampLegs = false;
+    /// Which vertices the grab holds (§4.6 all, §4.7 those above the mouse, Annex II's
+    /// fixed anchors, which also get the extra anchor clamps of the final program).
+    GrabMode grabMode = GrabMode::Anchors;
 };
 
 /// The checks the three seed factories share. Rejected: non-finite values
@@ -110,6 +117,11 @@ public:
     /// FrogParams::center, first vertex at the top, with initial velocity v0.
     static Expected<SeedBody> create(const FrogParams& params, SeedComponents components = {});
 
+    /// A body whose rest shape is any polygon (offsets from its centre, in order): the
+    /// Bézier body of §4.9 and the shapes of §5.2.3. `params.sides` is ignored.
+    static Expected<SeedBody> createFromShape(const FrogParams& params, const std::vector<Point>& shape,
+                                             SeedComponents components = {});
+
     /// Annex II, Poligon.inicialitza(center, v_ini): the regular polygon at `centre`, each
     /// vertex's previous position set back by v_ini, both clamped to the frame; not grabbed.
     void initialise(const Vec& centre, const Vec& v0);
@@ -159,6 +171,7 @@ public:
 private:
     SeedBody(const FrogParams& params, SeedComponents components);
     void holdAt(const Vec& clau); // mantindreagafat
+    void finishInitialise();      // the end of inicialitza, shared by both rest shapes
     Vec clampMouse(const Point& p) const;
 
     FrogParams m_params;
@@ -171,6 +184,8 @@ private:
     std::vector<SeedVertex<R>> m_vert; // N + 1
     std::vector<R> m_molls;            // N + 1, the last unused as in the seed
     std::vector<R> m_estruc;           // N + 1
+    std::vector<Point> m_shape;        // rest shape around the centre; empty: the regular N-gon
+    std::vector<int> m_anchors;        // the vertices held by the current grab
     bool m_grabbed = false;
     Vec m_mouse;
     // Scratch of one step, kept to avoid allocating every frame.

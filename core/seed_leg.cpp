@@ -44,6 +44,7 @@ Expected<SeedLeg<R>> SeedLeg<R>::create(const FrogParams& params, const LegParam
     l.m_freg = Vec(R(params.friction.x), R(params.friction.y));
     l.m_velmax = R(params.velmax);
     l.m_floor = R(params.height - 1);
+    l.m_width = params.width;
     return l;
 }
 
@@ -144,6 +145,14 @@ template <class R> void SeedLeg<R>::update(const Vec& mov)
         const R dx = noux - m_colze.pos.x;
         m_canell.pos = Vec(R(m_canell.pos.x + dx), R(m_canell.pos.y - dy));
         m_colze.pos = Vec(R(m_colze.pos.x + dx), R(m_colze.pos.y - dy));
+    }
+
+    // Beyond the seed (SeedComponents::clampLegs): the joints stay in the frame like the
+    // body's vertices. Only the current position is clamped, as `fita` does.
+    if (m_components.clampLegs) {
+        const R xmax = R(m_width - 1);
+        m_colze.fita(R(0), xmax, R(0), m_floor);
+        m_canell.fita(R(0), xmax, R(0), m_floor);
     }
 }
 

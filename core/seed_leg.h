@@ -59,6 +59,7 @@ private:
     R m_moll1 = 0, m_moll2 = 0;
     R m_angmin1 = 0, m_angmax1 = 0, m_angmin2 = 0, m_angmax2 = 0;
     R m_floor = 0; // height − 1
+    double m_width = 0;
 };
 
 extern template class SeedLeg<float>;

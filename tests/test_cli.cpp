@@ -1,5 +1,7 @@
 // granota-cli against the contract of SPEC §6: JSON keys, exact output of the thesis's
 // examples, and exit status 2 with "error:" on stderr for every kind of bad input.
+#include "cli_runner.h"
+
 #include <QtTest>
 
 #include <QJsonArray>
@@ -10,34 +12,8 @@
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out, err;
-    QJsonObject json() const
-    {
-        QJsonParseError e;
-        const auto doc = QJsonDocument::fromJson(out, &e);
-        if (e.error != QJsonParseError::NoError || !doc.isObject())
-            qWarning("not a JSON object: %s", out.constData());
-        return doc.object();
-    }
-};
-
-Run cli(const QStringList& args)
-{
-    QProcess p;
-    p.start(QStringLiteral(GRANOTA_CLI_PATH), args);
-    Run r;
-    if (!p.waitForFinished(120000)) {
-        p.kill();
-        qWarning("granota-cli did not finish: %s", qPrintable(args.join(' ')));
-        return r;
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2; // -2: crashed
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
-}
+using Run = CliRun;
+inline Run cli(const QStringList& args) { return runCli(args); }
 
 QStringList strings(const QJsonArray& a)
 {

@@ -31,6 +31,8 @@ Command bezierCommand();
 Command bernsteinCommand();
 Command fitCommand();
 Command catmullRomCommand();
+Command simulateCommand();
+Command benchCommand();
 Command demoCommand();
 
 /// Number output: exact "p/q" strings with --exact, doubles otherwise (SPEC §6).

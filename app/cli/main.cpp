@@ -17,7 +17,8 @@ constexpr int kBadInput = 2;
 
 std::vector<Command> commands()
 {
-    return {bezierCommand(), bernsteinCommand(), fitCommand(), catmullRomCommand(), demoCommand()};
+    return {bezierCommand(), bernsteinCommand(), fitCommand(), catmullRomCommand(), simulateCommand(), benchCommand(),
+            demoCommand()};
 }
 
 void printUsage(std::ostream& out)

@@ -1,0 +1,43 @@
+#include "app/cli/scene_options.h"
+
+namespace granota::cli {
+
+Expected<SceneSpec> sceneFromArguments(const Arguments& args)
+{
+    auto name = args.value("scene");
+    if (!name)
+        return makeError(ErrorCode::InvalidInput, "--scene NAME is required");
+    auto scene = loadScene(*name);
+    if (!scene)
+        return scene.error();
+    for (const std::string& setting : args.values("set")) {
+        auto ok = applySetting(*scene, setting);
+        if (!ok)
+            return ok.error();
+    }
+    return scene;
+}
+
+Expected<SolverKind> solverFromArguments(const Arguments& args, const SceneSpec& scene)
+{
+    if (auto name = args.value("solver")) {
+        auto kind = parseSolverKind(*name);
+        if (!kind)
+            return makeError(ErrorCode::InvalidInput, "--solver '" + *name + "' is not one of: seed, stable");
+        return *kind;
+    }
+    return scene.has("collisions") || scene.has("obstacles") ? SolverKind::Stable : SolverKind::Seed;
+}
+
+Expected<std::unique_ptr<Simulation>> buildSimulation(const Arguments& args)
+{
+    auto scene = sceneFromArguments(args);
+    if (!scene)
+        return scene.error();
+    auto solver = solverFromArguments(args, *scene);
+    if (!solver)
+        return solver.error();
+    return Simulation::create(*scene, *solver);
+}
+
+} // namespace granota::cli

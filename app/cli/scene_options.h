@@ -1,0 +1,20 @@
+#pragma once
+/// \file scene_options.h
+/// --scene, --solver and --set, shared by `simulate` and `bench`.
+
+#include "app/cli/arguments.h"
+
+#include "core/simulation.h"
+
+#include <memory>
+
+namespace granota::cli {
+
+/// The scene with every --set applied, in order.
+Expected<SceneSpec> sceneFromArguments(const Arguments& args);
+/// --solver, or the scene's natural one: stable where the scene needs collisions (the
+/// seed never had them), seed otherwise.
+Expected<SolverKind> solverFromArguments(const Arguments& args, const SceneSpec& scene);
+Expected<std::unique_ptr<Simulation>> buildSimulation(const Arguments& args);
+
+} // namespace granota::cli

@@ -1,0 +1,20 @@
+#pragma once
+/// \file simulation_trace.h
+/// The trace of any running scene in the CSV layout of reference/seed_frog_trace.csv
+/// (`granota-cli simulate --trace`): `step`, the vertices of every body (`v0x,v0y,…`;
+/// with several bodies `b1_v0x,…`), then every chain's joints after its fixed one — for
+/// the frog its four legs' elbows and wrists (`front_right_elbow_x,…`), exactly the
+/// reference's columns. The seed solver runs in single precision, so its numbers are
+/// written as floats ("640.0"): the frog with the thesis's constants reproduces the
+/// reference file byte for byte.
+
+#include "core/simulation.h"
+
+#include <string>
+
+namespace granota {
+
+std::string simulationTraceHeader(const Simulation& sim);
+std::string simulationTraceRow(const Simulation& sim);
+
+} // namespace granota

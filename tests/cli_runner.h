@@ -1,0 +1,37 @@
+#pragma once
+// Runs the real granota-cli for the CLI tests and collects what it printed.
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QStringList>
+#include <QtGlobal>
+
+struct CliRun {
+    int exitCode = -1; ///< -2 when the process crashed, -1 when it did not finish
+    QByteArray out, err;
+    QJsonObject json() const
+    {
+        QJsonParseError e;
+        const auto doc = QJsonDocument::fromJson(out, &e);
+        if (e.error != QJsonParseError::NoError || !doc.isObject())
+            qWarning("not a JSON object: %s", out.constData());
+        return doc.object();
+    }
+};
+
+inline CliRun runCli(const QStringList& args, int timeoutMs = 300000)
+{
+    QProcess p;
+    p.start(QStringLiteral(GRANOTA_CLI_PATH), args);
+    CliRun r;
+    if (!p.waitForFinished(timeoutMs)) {
+        p.kill();
+        p.waitForFinished();
+        qWarning("granota-cli did not finish: %s", qPrintable(args.join(' ')));
+        return r;
+    }
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
+    r.out = p.readAllStandardOutput();
+    r.err = p.readAllStandardError();
+    return r;
+}

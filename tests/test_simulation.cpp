@@ -1,0 +1,368 @@
+// Every scene on both solvers through the one Simulation interface: finite and in the
+// frame for 1000 steps, deterministic, the seed trace through the facade, grabs that move
+// bodies, stable area at rest, and the stiff and extreme settings of SPEC §3.
+#include "core/point_in_polygon.h"
+#include "core/polygon_area.h"
+#include "core/seed_trace.h"
+#include "core/simulation.h"
+#include "core/simulation_trace.h"
+
+#include <QtTest>
+
+#include <fstream>
+#include <sstream>
+
+using namespace granota;
+Q_DECLARE_METATYPE(SolverKind)
+
+namespace {
+
+std::unique_ptr<Simulation> make(const std::string& scene, SolverKind solver, std::initializer_list<const char*> settings = {})
+{
+    auto spec = loadScene(scene);
+    if (!spec)
+        qFatal("%s", spec.error().message.c_str());
+    for (const char* s : settings) {
+        auto ok = applySetting(*spec, s);
+        if (!ok)
+            qFatal("%s", ok.error().message.c_str());
+    }
+    auto sim = Simulation::create(*spec, solver);
+    if (!sim)
+        qFatal("%s", sim.error().message.c_str());
+    return std::move(sim).value();
+}
+
+Point centroid(const Simulation& s, int body)
+{
+    std::vector<Point> v;
+    s.bodyVertices(body, v);
+    Point c;
+    for (const Point& p : v)
+        c += p;
+    return Point(c.x / v.size(), c.y / v.size());
+}
+
+std::string readFile(const std::string& path)
+{
+    std::ifstream in(path);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+} // namespace
+
+class TestSimulation : public QObject {
+    Q_OBJECT
+private slots:
+    void everySceneRuns_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<SolverKind>("solver");
+        for (const auto& name : sceneNames())
+            for (SolverKind s : {SolverKind::Seed, SolverKind::Stable})
+                QTest::newRow(qPrintable(QString::fromStdString(name + " " + solverName(s)))) << QString::fromStdString(name) << s;
+    }
+    void everySceneRuns()
+    {
+        QFETCH(QString, scene);
+        QFETCH(SolverKind, solver);
+        auto sim = make(scene.toStdString(), solver);
+        for (int i = 0; i < 1000; ++i) {
+            sim->step();
+            if (i % 50 == 0 || i == 999) {
+                QVERIFY2(sim->finite(), qPrintable(QString("step %1").arg(i)));
+                QVERIFY2(sim->inBounds(), qPrintable(QString("step %1").arg(i)));
+            }
+        }
+        QCOMPARE(sim->stepCount(), 1000L);
+        const Readouts r = sim->readouts();
+        QVERIFY(std::isfinite(r.areaErrorPercent) && std::isfinite(r.kineticEnergy) && std::isfinite(r.potentialEnergy));
+        // Bodies where the scene has bodies, chains where it has legs: nothing else built.
+        QCOMPARE(sim->bodyCount() > 0, sim->scene().model != SceneModel::Pendulum);
+        QCOMPARE(sim->chainCount() > 0, sim->scene().has("legs"));
+    }
+
+    void seedFrogReproducesTheReferenceTrace()
+    {
+        auto sim = make("frog", SolverKind::Seed);
+        std::string csv = simulationTraceHeader(*sim) + "\n" + simulationTraceRow(*sim) + "\n";
+        for (int i = 0; i < 600; ++i) {
+            sim->step();
+            csv += simulationTraceRow(*sim) + "\n";
+        }
+        const std::string reference = readFile(GRANOTA_SOURCE_DIR "/tests/data/seed_frog_trace.csv");
+        QVERIFY(!reference.empty());
+        QVERIFY(csv == reference); // byte for byte
+    }
+
+    void determinism_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<SolverKind>("solver");
+        QTest::newRow("frog seed") << "frog" << SolverKind::Seed;
+        QTest::newRow("frog stable") << "frog" << SolverKind::Stable;
+        QTest::newRow("many-bodies stable") << "many-bodies" << SolverKind::Stable;
+        QTest::newRow("obstacles stable") << "obstacles" << SolverKind::Stable;
+    }
+    void determinism()
+    {
+        QFETCH(QString, scene);
+        QFETCH(SolverKind, solver);
+        std::string traces[2];
+        for (auto& trace : traces) {
+            auto sim = make(scene.toStdString(), solver);
+            for (int i = 0; i < 300; ++i) {
+                if (i == 100)
+                    sim->press(centroid(*sim, 0));
+                if (i > 100 && i < 150)
+                    sim->move(Point(500 + i, 300));
+                if (i == 150)
+                    sim->release();
+                sim->step();
+                trace += simulationTraceRow(*sim) + "\n";
+            }
+        }
+        QVERIFY(traces[0] == traces[1]);
+    }
+
+    void grabMovesTheBody_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<SolverKind>("solver");
+        for (const char* s : {"verlet", "tuned", "frog", "shapes"})
+            for (SolverKind k : {SolverKind::Seed, SolverKind::Stable})
+                QTest::newRow(qPrintable(QString("%1 %2").arg(s, QString::fromStdString(solverName(k))))) << s << k;
+    }
+    void grabMovesTheBody()
+    {
+        QFETCH(QString, scene);
+        QFETCH(SolverKind, solver);
+        auto sim = make(scene.toStdString(), solver);
+        for (int i = 0; i < 200; ++i) // settle on the floor
+            sim->step();
+        const Point start = centroid(*sim, 0);
+        std::vector<Point> v;
+        sim->bodyVertices(0, v);
+        const std::size_t vertexCount = v.size();
+        QVERIFY(!sim->press(Point(5, 5))); // outside every body: nothing is held
+        QVERIFY(sim->press(start));
+        QVERIFY(sim->grabbing());
+        // Drag up and to the left, hold there.
+        const Point target(start.x - 250, 200);
+        for (int i = 0; i < 200; ++i) {
+            const double t = std::min(1.0, i / 100.0);
+            sim->move(Point(start.x + t * (target.x - start.x), start.y + t * (target.y - start.y)));
+            sim->step();
+        }
+        const Point held = centroid(*sim, 0);
+        QVERIFY2(std::abs(held.x - target.x) < 60, qPrintable(QString("held at x = %1, mouse at %2").arg(held.x).arg(target.x)));
+        QVERIFY2(held.y < start.y - 100, qPrintable(QString("held at y = %1, started at %2").arg(held.y).arg(start.y)));
+        sim->release();
+        QVERIFY(!sim->grabbing());
+        for (int i = 0; i < 400; ++i)
+            sim->step();
+        QVERIFY(centroid(*sim, 0).y > held.y + 50); // it falls again
+        sim->bodyVertices(0, v);
+        QCOMPARE(v.size(), vertexCount); // no vertex lost
+        QVERIFY(sim->finite() && sim->inBounds());
+    }
+
+    void spaceBarRespawns_data()
+    {
+        QTest::addColumn<SolverKind>("solver");
+        QTest::newRow("seed") << SolverKind::Seed;
+        QTest::newRow("stable") << SolverKind::Stable;
+    }
+    void spaceBarRespawns()
+    {
+        QFETCH(SolverKind, solver);
+        auto sim = make("frog", solver);
+        for (int i = 0; i < 100; ++i)
+            sim->step();
+        sim->spawn(Point(300, 200));
+        QVERIFY(sim->grabbing());
+        for (int i = 0; i < 60; ++i)
+            sim->step();
+        // Held near the mouse: the seed clamps its anchors just above the mouse; the stable
+        // solver ties them with ropes, so the body hangs below the mouse by about its size.
+        const Point c = centroid(*sim, 0);
+        QVERIFY2(std::abs(c.x - 300) < 80, qPrintable(QString::number(c.x)));
+        QVERIFY2(c.y > 200 && c.y < (solver == SolverKind::Seed ? 320 : 420), qPrintable(QString::number(c.y)));
+        sim->releaseSpawn();
+        QVERIFY(!sim->grabbing());
+        for (int i = 0; i < 300; ++i)
+            sim->step();
+        QVERIFY(centroid(*sim, 0).y > 450); // fell to the floor
+    }
+
+    void stableHoldsTheAreaWhereTheSeedDoesNot()
+    {
+        auto seed = make("frog", SolverKind::Seed), stable = make("frog", SolverKind::Stable);
+        for (int i = 0; i < 1000; ++i) {
+            seed->step();
+            stable->step();
+        }
+        qInfo("frog at rest: area error seed %.2f %%, stable %.3f %%", seed->readouts().areaErrorPercent,
+              stable->readouts().areaErrorPercent);
+        QVERIFY(std::abs(stable->readouts().areaErrorPercent) < 1.0);
+        QVERIFY(seed->readouts().areaErrorPercent < -15); // the thesis's frog sits ~17 % short
+    }
+
+    void pendulumFollowsTheMouse_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<SolverKind>("solver");
+        for (const char* s : {"pendulum", "pendulum-chain", "pendulum-limits"})
+            for (SolverKind k : {SolverKind::Seed, SolverKind::Stable})
+                QTest::newRow(qPrintable(QString("%1 %2").arg(s, QString::fromStdString(solverName(k))))) << s << k;
+    }
+    void pendulumFollowsTheMouse()
+    {
+        QFETCH(QString, scene);
+        QFETCH(SolverKind, solver);
+        auto sim = make(scene.toStdString(), solver);
+        sim->press(Point(300, 150));
+        for (int i = 0; i < 400; ++i) {
+            sim->move(Point(300 + 200 * std::sin(i * 0.02), 150));
+            sim->step();
+        }
+        std::vector<Point> j;
+        sim->chainJoints(0, j);
+        QVERIFY(distance(j[0], Point(300 + 200 * std::sin(399 * 0.02), 150)) < 30);
+        for (std::size_t k = 1; k < j.size(); ++k) // the links keep their lengths (rigid, §4.13)
+            QVERIFY2(std::abs(distance(j[k], j[k - 1]) - sim->scene().chain[k - 1]) < 0.02 * sim->scene().chain[k - 1],
+                     qPrintable(QString("link %1: %2").arg(k).arg(distance(j[k], j[k - 1]))));
+        QVERIFY(sim->finite() && sim->inBounds());
+    }
+
+    void bodyAtRestDoesNotRoll_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<SolverKind>("solver");
+        for (const char* s : {"catmull-rom", "frog", "shapes"})
+            for (SolverKind k : {SolverKind::Seed, SolverKind::Stable})
+                QTest::newRow(qPrintable(QString("%1 %2").arg(s, QString::fromStdString(solverName(k))))) << s << k;
+    }
+    void bodyAtRestDoesNotRoll()
+    {
+        QFETCH(QString, scene);
+        QFETCH(SolverKind, solver);
+        auto sim = make(scene.toStdString(), solver);
+        for (int i = 0; i < 1000; ++i)
+            sim->step();
+        std::vector<Point> before, after;
+        sim->bodyVertices(0, before);
+        for (int i = 0; i < 2000; ++i)
+            sim->step();
+        sim->bodyVertices(0, after);
+        double worst = 0;
+        for (std::size_t i = 0; i < before.size(); ++i) // every vertex stays where it rested
+            worst = std::max(worst, distance(before[i], after[i]));
+        QVERIFY2(worst < 1.0, qPrintable(QString("a vertex moved %1 px at rest").arg(worst)));
+    }
+
+    void nothingPassesThroughObstacles()
+    {
+        auto sim = make("obstacles", SolverKind::Stable);
+        std::vector<Point> v;
+        for (int step = 0; step < 1500; ++step) {
+            sim->step();
+            if (step % 10 != 0)
+                continue;
+            sim->bodyVertices(0, v);
+            for (const auto& o : sim->obstacles())
+                if (o.closed)
+                    for (const Point& p : v) {
+                        // Inside a polygon obstacle by more than a pixel: shrink it by 1 px about its centroid.
+                        Point c;
+                        for (const Point& q : o.points)
+                            c += q;
+                        c = Point(c.x / o.points.size(), c.y / o.points.size());
+                        std::vector<Point> inner;
+                        for (const Point& q : o.points) {
+                            const Point d = q - c;
+                            const double l = norm(d);
+                            inner.push_back(Point(q.x - d.x / l, q.y - d.y / l));
+                        }
+                        QVERIFY2(!pointInPolygon(p, inner), qPrintable(QString("step %1: (%2, %3)").arg(step).arg(p.x).arg(p.y)));
+                    }
+        }
+        // The body came to rest on something above the floor: the obstacles held it.
+        Point c;
+        for (const Point& p : v)
+            c += p;
+        QVERIFY(c.y / v.size() < sim->scene().params.height - 60);
+    }
+
+    void bodiesDoNotInterpenetrate()
+    {
+        auto sim = make("many-bodies", SolverKind::Stable, {"bodies=40"});
+        for (int i = 0; i < 1500; ++i)
+            sim->step();
+        std::vector<std::vector<Point>> bodies(static_cast<std::size_t>(sim->bodyCount()));
+        for (int b = 0; b < sim->bodyCount(); ++b)
+            sim->bodyVertices(b, bodies[std::size_t(b)]);
+        int deep = 0;
+        for (std::size_t a = 0; a < bodies.size(); ++a)
+            for (std::size_t b = 0; b < bodies.size(); ++b) {
+                if (a == b)
+                    continue;
+                // Shrink body b by 2 px towards its centroid: a vertex of a inside it is a real overlap.
+                Point c;
+                for (const Point& q : bodies[b])
+                    c += q;
+                c = Point(c.x / bodies[b].size(), c.y / bodies[b].size());
+                std::vector<Point> inner;
+                for (const Point& q : bodies[b]) {
+                    const Point d = q - c;
+                    const double l = std::max(norm(d), 1e-9);
+                    inner.push_back(Point(q.x - 2 * d.x / l, q.y - 2 * d.y / l));
+                }
+                for (const Point& p : bodies[a])
+                    deep += pointInPolygon(p, inner);
+            }
+        QCOMPARE(deep, 0);
+    }
+
+    // SPEC §3 on both solvers: stiff and extreme settings stay finite and in the frame.
+    void extremeSettings_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<QString>("setting");
+        const char* settings[] = {"gravity=0,10000", "gravity=-500,-500", "target_area=0", "target_area=1000000000",
+                                  "sides=3", "sides=200", "velmax=1000000", "velmax=0", "area_factor=100",
+                                  "friction=1,1", "friction=0,0", "spring_length=1000", "radius=0", "radius=5000",
+                                  "width=40", "height=30", "center=-500,-500", "v0=1000,-3000"};
+        for (const char* scene : {"frog", "area", "many-bodies"})
+            for (const char* s : settings)
+                if (!(QString(scene) == "area" && QString(s).startsWith("sides=200")))
+                    QTest::newRow(qPrintable(QString("%1 %2").arg(scene, s))) << scene << s;
+    }
+    void extremeSettings()
+    {
+        QFETCH(QString, scene);
+        QFETCH(QString, setting);
+        for (SolverKind solver : {SolverKind::Seed, SolverKind::Stable}) {
+            auto spec = loadScene(scene.toStdString());
+            QVERIFY(applySetting(*spec, setting.toStdString()).ok());
+            auto sim = Simulation::create(*spec, solver);
+            QVERIFY2(sim.ok(), sim.ok() ? "" : sim.error().message.c_str());
+            for (int i = 0; i < 300; ++i) {
+                (*sim)->step();
+                if (i == 100)
+                    (*sim)->press(centroid(**sim, 0));
+                if (i > 100 && i < 200)
+                    (*sim)->move(Point(-1000 + 20 * i, 5000 - 30 * i)); // dragged outside the window too
+                if (i == 200)
+                    (*sim)->release();
+            }
+            QVERIFY2((*sim)->finite(), solverName(solver).c_str());
+            QVERIFY2((*sim)->inBounds(), solverName(solver).c_str());
+        }
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSimulation)
+#include "test_simulation.moc"
