@@ -1,25 +1,19 @@
 // granota: the desktop application (SPEC §1, §5).
+#include "core/scene.h"
+#include "ui/frog_tab.h"
+#include "ui/language.h"
 #include "ui/main_window.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
-#include <QLibraryInfo>
-#include <QLocale>
 #include <QTextStream>
-#include <QTranslator>
 
 namespace {
 
-/// Installs Granota's own translation and Qt's (for the standard dialogs) for `language`
-/// ("ca" or "en"). English is the source language, so its file only confirms the texts.
-void installTranslators(QApplication& app, const QString& language)
+int fail(const QString& message)
 {
-    auto* own = new QTranslator(&app);
-    if (own->load(QStringLiteral(":/i18n/granota_%1.qm").arg(language)))
-        app.installTranslator(own);
-    auto* qt = new QTranslator(&app);
-    if (qt->load(QStringLiteral("qtbase_%1").arg(language), QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-        app.installTranslator(qt);
+    QTextStream(stderr) << "error: " << message << '\n';
+    return 2;
 }
 
 } // namespace
@@ -29,49 +23,73 @@ int main(int argc, char* argv[])
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("Granota"));
     QApplication::setOrganizationName(QStringLiteral("Granota"));
+    QApplication::setApplicationVersion(QStringLiteral("1.0"));
+    QApplication::setDesktopFileName(QStringLiteral("org.granota.Granota"));
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral("Splines and soft bodies, for the classroom."));
     parser.addHelpOption();
-    QCommandLineOption tabOption(QStringLiteral("tab"), QStringLiteral("Open on tab KEY."), QStringLiteral("KEY"));
+    parser.addVersionOption();
+    QCommandLineOption tabOption(QStringLiteral("tab"), QStringLiteral("Open on tab KEY: decasteljau, bernstein, fit, catmull-rom, frog."),
+                                 QStringLiteral("KEY"));
     QCommandLineOption langOption(QStringLiteral("lang"), QStringLiteral("Interface language: ca or en."),
                                   QStringLiteral("LANG"));
+    QCommandLineOption exampleOption(QStringLiteral("example"), QStringLiteral("Load worked example ID (2.1 … 2.13)."),
+                                     QStringLiteral("ID"));
+    QCommandLineOption sceneOption(QStringLiteral("scene"), QStringLiteral("Open the frog tab on scene NAME."),
+                                   QStringLiteral("NAME"));
+    QCommandLineOption presentOption(QStringLiteral("presentation"), QStringLiteral("Start in presentation mode."));
     QCommandLineOption screenshotOption(QStringLiteral("screenshot"),
                                         QStringLiteral("Render the window (1280x800) to FILE.png and exit."),
                                         QStringLiteral("FILE"));
-    parser.addOption(tabOption);
-    parser.addOption(langOption);
-    parser.addOption(screenshotOption);
+    parser.addOptions({tabOption, langOption, exampleOption, sceneOption, presentOption, screenshotOption});
+    parser.addPositionalArgument(QStringLiteral("document"), QStringLiteral("A .granota document to open."));
     parser.process(app);
 
-    // Catalan by default on a Catalan system (SPEC §5), English otherwise.
-    QString language = QLocale::system().language() == QLocale::Catalan ? QStringLiteral("ca") : QStringLiteral("en");
+    QString language = granota::ui::preferredLanguage();
     if (parser.isSet(langOption)) {
         language = parser.value(langOption);
-        if (language != QLatin1String("ca") && language != QLatin1String("en")) {
-            QTextStream(stderr) << "error: unknown language '" << language << "' (ca, en)\n";
-            return 2;
-        }
+        if (!granota::ui::availableLanguages().contains(language))
+            return fail(QStringLiteral("unknown language '%1' (ca, en)").arg(language));
     }
-    installTranslators(app, language);
+    granota::ui::setLanguage(language, parser.isSet(langOption));
 
     granota::ui::MainWindow window;
-    if (parser.isSet(tabOption) && !window.showTab(parser.value(tabOption))) {
-        QTextStream(stderr) << "error: unknown tab '" << parser.value(tabOption)
-                            << "' (decasteljau, bernstein, fit, catmull-rom, frog)\n";
-        return 2;
+    const bool screenshot = parser.isSet(screenshotOption);
+    if (!parser.positionalArguments().isEmpty()) {
+        QString error;
+        if (!window.openFile(parser.positionalArguments().first(), &error))
+            return fail(error);
     }
-    if (parser.isSet(screenshotOption)) {
+    if (parser.isSet(sceneOption)) {
+        QString error;
+        if (!window.frogTab()->setScene(parser.value(sceneOption), &error))
+            return fail(error);
+        window.showTab(QStringLiteral("frog"));
+    }
+    if (parser.isSet(exampleOption) && !window.loadExample(parser.value(exampleOption)))
+        return fail(QStringLiteral("unknown example '%1' (2.1 … 2.13)").arg(parser.value(exampleOption)));
+    if (parser.isSet(tabOption) && !window.showTab(parser.value(tabOption)))
+        return fail(QStringLiteral("unknown tab '%1' (decasteljau, bernstein, fit, catmull-rom, frog)")
+                        .arg(parser.value(tabOption)));
+
+    if (screenshot) {
         window.resize(1280, 800);
-        window.show();
-        QApplication::processEvents();
-        const QString file = parser.value(screenshotOption);
-        if (!window.grab().save(file, "PNG")) {
-            QTextStream(stderr) << "error: cannot write '" << file << "'\n";
-            return 2;
+        if (parser.isSet(presentOption)) {
+            window.setPresentation(true);
+            window.resize(1280, 800);
         }
+        window.show();
+        for (int i = 0; i < 5; ++i) // let layouts settle and the frog canvas draw a few frames
+            QApplication::processEvents();
+        const QString file = parser.value(screenshotOption);
+        if (!window.grab().save(file, "PNG"))
+            return fail(QStringLiteral("cannot write '%1'").arg(file));
         return 0;
     }
+    if (parser.isSet(presentOption))
+        window.setPresentation(true);
     window.show();
+    window.offerRecovery();
     return app.exec();
 }

@@ -1,24 +1,105 @@
 #pragma once
 /// \file main_window.h
-/// Granota's main window: one tab per part of the thesis (SPEC §1).
+/// Granota's main window: one tab per part of the thesis (SPEC §1), the document (save,
+/// open, recent files, autosave and recovery), exports (SPEC §4), the Examples menu,
+/// languages and presentation mode (SPEC §5).
 
+#include <QFont>
 #include <QMainWindow>
+#include <QVector>
 
+class QAction;
+class QActionGroup;
+class QLabel;
+class QMenu;
 class QTabWidget;
+class QTimer;
+class QUndoGroup;
 
 namespace granota::ui {
+
+class TabPage;
+class FrogTab;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
     explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
 
     /// Tab keys of SPEC §5: decasteljau, bernstein, fit, catmull-rom, frog.
     bool showTab(const QString& key);
+    TabPage* tab(const QString& key) const;
+    TabPage* currentTab() const;
+    const QVector<TabPage*>& tabs() const { return m_pages; }
+    FrogTab* frogTab() const;
+
+    /// Loads worked example `id` ("2.7") into its tab and shows the tab. False if unknown.
+    bool loadExample(const QString& id);
+
+    /// File operations without dialogs (the menu actions and the tests use them).
+    bool openFile(const QString& file, QString* error);
+    bool saveFile(const QString& file, QString* error);
+    QString currentFile() const { return m_file; }
+    bool isModified() const { return m_modified; }
+
+    /// Exports the current tab's view: format png, svg, pdf, csv or tikz. Empty or a message.
+    QString exportCurrent(const QString& format, const QString& file, int dpi = 96);
+
+    void setPresentation(bool on);
+    bool presentation() const { return m_presentation; }
+
+    /// Where the autosave goes (under the application's data directory).
+    static QString autosavePath();
+    /// Writes the autosave now (the timer does it every 20 s while there are unsaved edits).
+    void autosave();
+    /// If the last session left an autosave, asks whether to recover it.
+    void offerRecovery();
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void changeEvent(QEvent* event) override;
 
 private:
+    void createActions();
+    void createMenus();
     void retranslate();
+    void setModified(bool modified);
+    void updateTitle();
+    bool maybeSave();
+    void newDocument();
+    void openDialog();
+    bool saveDialog(bool saveAs);
+    void exportDialog(const QString& format);
+    void exportFramesDialog();
+    void rememberRecent(const QString& file);
+    void rebuildRecentMenu();
+    void showMessage(const QString& text);
+    void showGuide();
+    void showAbout();
+
     QTabWidget* m_tabs = nullptr;
+    QVector<TabPage*> m_pages;
+    QUndoGroup* m_undoGroup = nullptr;
+    QLabel* m_cursorLabel = nullptr;
+    QTimer* m_autosaveTimer = nullptr;
+    QString m_file;
+    bool m_modified = false;
+    bool m_autosaveDirty = false;
+    bool m_presentation = false;
+    QFont m_normalFont;
+
+    QMenu *m_fileMenu = nullptr, *m_recentMenu = nullptr, *m_exportMenu = nullptr, *m_editMenu = nullptr,
+          *m_viewMenu = nullptr, *m_examplesMenu = nullptr, *m_languageMenu = nullptr, *m_helpMenu = nullptr;
+    QAction *m_new = nullptr, *m_open = nullptr, *m_save = nullptr, *m_saveAs = nullptr, *m_quit = nullptr;
+    QAction *m_exportPng = nullptr, *m_exportSvg = nullptr, *m_exportPdf = nullptr, *m_exportCsv = nullptr,
+            *m_exportTikz = nullptr, *m_exportFrames = nullptr;
+    QAction *m_undo = nullptr, *m_redo = nullptr;
+    QAction *m_presentationAction = nullptr, *m_zoomIn = nullptr, *m_zoomOut = nullptr, *m_fit = nullptr;
+    QAction *m_catalan = nullptr, *m_english = nullptr;
+    QAction *m_guide = nullptr, *m_about = nullptr;
+    QVector<QAction*> m_tabActions;
+    QVector<QAction*> m_exampleActions;
 };
 
 } // namespace granota::ui

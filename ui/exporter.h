@@ -1,0 +1,24 @@
+#pragma once
+/// \file exporter.h
+/// Exports of any Drawable (SPEC §4): PNG at a chosen DPI, SVG and PDF, all through the
+/// view's own render(), plus plain text files (CSV, TikZ). Each returns an empty string on
+/// success and a translated message otherwise; nothing here ever throws or aborts.
+
+#include <QSizeF>
+#include <QString>
+
+namespace granota::ui {
+
+class Drawable;
+
+/// Screen pixels are 96 per inch: a PNG at `dpi` has exportSize × dpi/96 pixels, and
+/// records its DPI in the file (pHYs), so slides place it at the size seen on screen.
+QString exportPng(Drawable& view, const QString& file, int dpi = 96);
+QString exportSvg(Drawable& view, const QString& file, const QString& title);
+QString exportPdf(Drawable& view, const QString& file, const QString& title);
+QString writeTextFile(const QString& file, const QString& text);
+
+/// The pixel size of a PNG export of `logical` at `dpi`.
+QSize pngPixelSize(const QSizeF& logical, int dpi);
+
+} // namespace granota::ui

@@ -1,0 +1,102 @@
+#pragma once
+/// \file point_editor.h
+/// The reusable control-point editor of the four curve tabs — Qt's HoverPoints idea, in
+/// model coordinates behind the canvas's view transform. It owns the points, draws their
+/// handles as a canvas layer and emits one signal, pointsChanged(), after every change.
+///
+/// Mouse: drag a handle (one undo step per drag); double-click empty paper to add a point
+/// on the nearest edge of the polygon (or at an end); right-click for a menu.
+/// Keys: Delete removes the selected point, arrows nudge it (one grid step when snapping,
+/// one pixel otherwise; Shift ×10), Tab selects the next point. Every edit goes through the
+/// QUndoStack given to the constructor.
+
+#include "core/vec2.h"
+
+#include <QColor>
+#include <QObject>
+#include <QString>
+
+#include <vector>
+
+class QUndoStack;
+
+namespace granota::ui {
+
+class CurveCanvas;
+
+class PointEditor : public QObject {
+    Q_OBJECT
+public:
+    PointEditor(CurveCanvas* canvas, QUndoStack* undoStack, QObject* parent = nullptr);
+
+    const std::vector<Point>& points() const { return m_points; }
+    QUndoStack* undoStack() const { return m_undo; }
+    CurveCanvas* canvas() const { return m_canvas; }
+
+    /// Undoable edits (each one step; `undoText` names it in Edit ▸ Undo).
+    void setPoints(const std::vector<Point>& points, const QString& undoText);
+    void movePoint(int index, Point to);
+    void insertPoint(int index, Point p);
+    void removePoint(int index);
+
+    /// Replaces the points without an undo step (used by the undo commands themselves).
+    void applyPoints(const std::vector<Point>& points);
+
+    int selected() const { return m_selected; }
+    void setSelected(int index);
+
+    bool snapEnabled() const { return m_snap; }
+    void setSnapEnabled(bool on) { m_snap = on; }
+    double gridStep() const { return m_gridStep; }
+    void setGridStep(double step) { m_gridStep = step > 0 ? step : m_gridStep; }
+    /// Rounds to the grid when snapping is on.
+    Point snapped(Point p) const;
+
+    /// Deleting below `minimum` or adding above `maximum` is refused with a message.
+    void setCountLimits(int minimum, int maximum);
+    int minimumCount() const { return m_min; }
+    int maximumCount() const { return m_max; }
+
+    /// Labels drawn beside the handles: prefix + index (P0, P1, … or Q0, Q1, …); empty for none.
+    void setLabelPrefix(const QString& prefix) { m_prefix = prefix; }
+    QString labelPrefix() const { return m_prefix; }
+    void setHandleColor(const QColor& c) { m_color = c; }
+    /// Whether the editor draws the polygon through the points (control polygon).
+    void setPolygonVisible(bool on) { m_polygonVisible = on; }
+    void setEnabled(bool on) { m_enabled = on; }
+
+    /// The index of the handle within pick distance of a widget position, or −1.
+    int pick(const QPointF& screen) const;
+    /// Where double-clicking at model point `p` inserts a point: nearest polygon edge, or an end.
+    int insertionIndex(Point p) const;
+
+signals:
+    void pointsChanged();
+    void selectionChanged(int index);
+    /// A refused edit (too few points, not a number…): the tab shows it in the status bar.
+    void message(const QString& text);
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    void nudge(double dx, double dy);
+    void showContextMenu(const QPointF& screen, const QPoint& global);
+
+    CurveCanvas* m_canvas;
+    QUndoStack* m_undo;
+    std::vector<Point> m_points;
+    std::vector<Point> m_dragStart; ///< the points when a drag began: one undo step per drag
+    int m_selected = -1;
+    int m_dragging = -1;
+    bool m_snap = false;
+    double m_gridStep = 0.5;
+    int m_min = 1;
+    int m_max = 200;
+    QString m_prefix = QStringLiteral("P");
+    QColor m_color;
+    bool m_polygonVisible = true;
+    bool m_enabled = true;
+};
+
+} // namespace granota::ui
