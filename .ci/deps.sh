@@ -8,7 +8,7 @@ PKGS=(
   build-essential cmake pkg-config
   qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-svg-dev
   qt6-translations-l10n libqcustomplot-dev libeigen3-dev libgmp-dev
-  libbenchmark-dev libgl-dev
+  libbenchmark-dev libgl-dev appstream desktop-file-utils
 )
 missing=()
 for p in "${PKGS[@]}"; do

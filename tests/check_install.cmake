@@ -1,0 +1,25 @@
+# Installs the build into PREFIX and checks what a desktop needs is there and valid.
+file(REMOVE_RECURSE ${PREFIX})
+execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${PREFIX} RESULT_VARIABLE rc OUTPUT_QUIET)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "cmake --install failed (${rc})")
+endif()
+foreach(f bin/granota bin/granota-cli share/applications/org.granota.Granota.desktop
+          share/metainfo/org.granota.Granota.metainfo.xml
+          share/icons/hicolor/scalable/apps/org.granota.Granota.svg share/mime/packages/org.granota.Granota.xml)
+  if(NOT EXISTS ${PREFIX}/${f})
+    message(FATAL_ERROR "missing after install: ${f}")
+  endif()
+endforeach()
+find_program(APPSTREAMCLI appstreamcli REQUIRED)
+execute_process(COMMAND ${APPSTREAMCLI} validate --no-net ${PREFIX}/share/metainfo/org.granota.Granota.metainfo.xml
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "appstreamcli validate failed")
+endif()
+find_program(DESKTOP_VALIDATE desktop-file-validate REQUIRED)
+execute_process(COMMAND ${DESKTOP_VALIDATE} ${PREFIX}/share/applications/org.granota.Granota.desktop RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "desktop-file-validate failed")
+endif()
+message(STATUS "install tree complete and valid")
