@@ -20,6 +20,7 @@ enum class ErrorCode {
     Singular,        ///< a linear system has no unique solution
     NotIncreasing,   ///< abscissae of a function spline must increase strictly
     OutOfRange,      ///< a parameter outside its meaningful range
+    Cancelled,       ///< the user stopped a long computation
 };
 
 struct Error {

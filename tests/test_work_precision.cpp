@@ -1,0 +1,200 @@
+// The work-precision reports of SPEC §2 teach what theory says: the numbers are checked
+// here (orders of convergence, who loses digits where), never the times.
+#include "core/work_precision.h"
+
+#include <QTest>
+
+#include <cmath>
+
+using namespace granota;
+
+namespace {
+
+WorkPrecisionReport quickReport(const char* name)
+{
+    WorkPrecisionOptions options;
+    options.quick = true;
+    options.minSecondsPerPoint = 1e-6; // one call per point: the errors, not the times
+    auto report = runWorkPrecisionReport(name, options);
+    if (!report)
+        qFatal("%s: %s", name, report.error().message.c_str());
+    return *report;
+}
+
+double errorAt(const WorkPrecisionSeries& s, double knob)
+{
+    for (const auto& p : s.samples)
+        if (p.knob == knob)
+            return p.error;
+    qFatal("no sample at knob %g in %s", knob, s.method.c_str());
+}
+
+} // namespace
+
+class TestWorkPrecision : public QObject {
+    Q_OBJECT
+
+private slots:
+    void everyReportHasFiniteSamples_data()
+    {
+        QTest::addColumn<QString>("name");
+        for (const auto& n : workPrecisionReportNames())
+            QTest::newRow(n.c_str()) << QString::fromStdString(n);
+    }
+    void everyReportHasFiniteSamples()
+    {
+        QFETCH(QString, name);
+        const auto r = quickReport(name.toStdString().c_str());
+        QCOMPARE(QString::fromStdString(r.name), name);
+        QVERIFY(r.series.size() >= 2);
+        QVERIFY(!r.lesson.empty() && !r.knob.empty() && !r.reference.empty());
+        for (const auto& s : r.series) {
+            QVERIFY(!s.samples.empty());
+            for (const auto& p : s.samples) {
+                QVERIFY(std::isfinite(p.error) && p.error > 0);
+                QVERIFY(std::isfinite(p.seconds) && p.seconds > 0);
+                QVERIFY(std::isfinite(p.knob) && p.knob > 0);
+            }
+        }
+    }
+
+    // Ch. 3: explicit and semi-implicit Euler are first order, Verlet second, RK4 fourth.
+    void integratorsConvergeAtTheirOrder_data()
+    {
+        QTest::addColumn<QString>("method");
+        QTest::addColumn<double>("order");
+        QTest::addColumn<double>("hMax");
+        QTest::newRow("explicit Euler") << QStringLiteral("explicit Euler") << 1.0 << 1.0 / 32;
+        QTest::newRow("semi-implicit Euler") << QStringLiteral("semi-implicit Euler") << 1.0 << 1.0 / 32;
+        QTest::newRow("Verlet") << QStringLiteral("Verlet") << 2.0 << 1.0 / 8;
+        QTest::newRow("RK4") << QStringLiteral("RK4") << 4.0 << 1.0 / 4;
+    }
+    void integratorsConvergeAtTheirOrder()
+    {
+        QFETCH(QString, method);
+        QFETCH(double, order);
+        QFETCH(double, hMax);
+        const auto r = quickReport("integrators");
+        const auto* s = r.find(method.toStdString());
+        QVERIFY(s);
+        // RK4 reaches rounding level quickly: fit its slope before that.
+        const double hMin = order == 4.0 ? 1.0 / 64 : 1.0 / 1024;
+        const double p = observedOrder(*s, hMin, hMax);
+        QVERIFY2(std::fabs(p - order) < 0.25, qPrintable(QStringLiteral("%1: observed order %2").arg(method).arg(p)));
+    }
+    void verletBeatsEulerAtEqualCost()
+    {
+        // Both cost one evaluation of the acceleration per step: compare at equal h.
+        const auto r = quickReport("integrators");
+        const auto* euler = r.find("explicit Euler");
+        const auto* verlet = r.find("Verlet");
+        for (const auto& p : euler->samples)
+            if (p.knob <= 0.25)
+                QVERIFY2(errorAt(*verlet, p.knob) * 10 < p.error, qPrintable(QString::number(p.knob)));
+    }
+
+    void hornerLosesDigitsWhereDeCasteljauDoesNot()
+    {
+        const auto r = quickReport("bezier-evaluation");
+        const auto* casteljau = r.find("De Casteljau");
+        const auto* bernstein = r.find("Bernstein sum");
+        const auto* horner = r.find("Horner (power basis)");
+        QVERIFY(casteljau && bernstein && horner);
+        for (const auto& p : casteljau->samples) {
+            QVERIFY2(p.error < 1e-13, qPrintable(QString::number(p.knob)));
+            QVERIFY(errorAt(*bernstein, p.knob) < 1e-13);
+        }
+        QVERIFY(errorAt(*horner, 2) < 1e-13);         // low degree: fine
+        QVERIFY(errorAt(*horner, 30) > 1e-8);         // degree 30: digits gone
+        QVERIFY(errorAt(*horner, 30) > 1e4 * errorAt(*casteljau, 30));
+        QVERIFY(errorAt(*horner, 30) > errorAt(*horner, 10));
+    }
+
+    void normalEquationsBreakWhereQrHolds()
+    {
+        const auto r = quickReport("least-squares");
+        const auto* normal = r.find("normal equations");
+        const auto* qr = r.find("QR");
+        const auto* svd = r.find("SVD");
+        QVERIFY(normal && qr && svd);
+        for (double n : {2.0, 6.0})
+            QVERIFY(errorAt(*normal, n) < 1e-10 && errorAt(*qr, n) < 1e-12);
+        // Near degree 25 the normal equations have lost almost every digit (cond(M)² ≈ 1e16)…
+        QVERIFY2(errorAt(*normal, 26) > 1e-3, qPrintable(QString::number(errorAt(*normal, 26))));
+        QVERIFY(errorAt(*normal, 26) > 1e5 * errorAt(*qr, 26));
+        // …and by degree 30 the answer is wrong, while QR and SVD keep about seven digits.
+        QVERIFY2(errorAt(*normal, 30) > 0.1, qPrintable(QString::number(errorAt(*normal, 30))));
+        QVERIFY2(errorAt(*qr, 30) < 1e-6, qPrintable(QString::number(errorAt(*qr, 30))));
+        QVERIFY(errorAt(*svd, 30) < 1e-6);
+    }
+
+    void samplingErrorFallsLikeOneOverNSquared()
+    {
+        const auto r = quickReport("curve-sampling");
+        const auto* uniform = r.find("uniform");
+        const auto* adaptive = r.find("adaptive");
+        QVERIFY(uniform && adaptive);
+        const double p = observedOrder(*uniform, 17, 1e9);
+        QVERIFY2(std::fabs(p + 2) < 0.2, qPrintable(QString::number(p)));
+        // Adaptive sampling reaches each of its errors with fewer points than uniform needs.
+        for (const auto& a : adaptive->samples) {
+            if (a.knob < 30)
+                continue;
+            double uniformPoints = 0;
+            for (const auto& u : uniform->samples)
+                if (u.error <= a.error) {
+                    uniformPoints = u.knob;
+                    break;
+                }
+            if (uniformPoints > 0)
+                QVERIFY2(a.knob < uniformPoints, qPrintable(QStringLiteral("%1 vs %2").arg(a.knob).arg(uniformPoints)));
+        }
+    }
+
+    void substepsTightenTheConstraints()
+    {
+        const auto r = quickReport("soft-body");
+        const auto* area = r.find("XPBD area");
+        const auto* edges = r.find("XPBD edge lengths");
+        const auto* seed = r.find("seed area (Annex II)");
+        QVERIFY(area && edges && seed);
+        QVERIFY(errorAt(*area, 8) < errorAt(*area, 1));
+        QVERIFY(errorAt(*edges, 8) < errorAt(*edges, 1) / 4);
+        QVERIFY(errorAt(*area, 8) < seed->samples.front().error / 10);
+    }
+
+    void cancelling()
+    {
+        WorkPrecisionOptions options;
+        options.quick = true;
+        options.minSecondsPerPoint = 1e-6;
+        int calls = 0;
+        options.progress = [&calls](double) { return ++calls < 3; };
+        for (const auto& name : workPrecisionReportNames()) {
+            calls = 0;
+            auto r = runWorkPrecisionReport(name, options);
+            QVERIFY2(!r.ok(), name.c_str());
+            QCOMPARE(r.error().code, ErrorCode::Cancelled);
+        }
+        QVERIFY(!runWorkPrecisionReport("nope").ok());
+    }
+
+    void csvHasContextAndOneRowPerSample()
+    {
+        const auto r = quickReport("integrators");
+        const std::string csv = workPrecisionCsv(r, {"machine: test", "build: Release"});
+        const QStringList lines = QString::fromStdString(csv).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QVERIFY(lines.contains(QStringLiteral("# machine: test")));
+        QVERIFY(lines.contains(QStringLiteral("# build: Release")));
+        const int header = static_cast<int>(lines.indexOf(QStringLiteral("method,knob,error,seconds")));
+        QVERIFY(header > 0);
+        std::size_t samples = 0;
+        for (const auto& s : r.series)
+            samples += s.samples.size();
+        QCOMPARE(static_cast<std::size_t>(lines.size() - header - 1), samples);
+        QVERIFY(lines.last().startsWith(QStringLiteral("RK4,")));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestWorkPrecision)
+#include "test_work_precision.moc"
