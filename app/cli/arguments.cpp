@@ -12,6 +12,10 @@ Expected<Arguments> Arguments::parse(const std::vector<std::string>& args, const
     Arguments a;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& arg = args[i];
+        if (arg.rfind("--", 0) != 0 && !arg.empty() && a.m_positional.size() < syntax.maxPositional) {
+            a.m_positional.push_back(arg);
+            continue;
+        }
         if (arg.rfind("--", 0) != 0 || arg.size() == 2)
             return makeError(ErrorCode::InvalidInput, "unexpected argument '" + arg + "'");
         std::string name = arg.substr(2);

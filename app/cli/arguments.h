@@ -19,6 +19,7 @@ struct CommandSyntax {
     std::set<std::string> valueOptions;   ///< options followed by a value, e.g. "points"
     std::set<std::string> flags;          ///< options without a value, e.g. "exact"
     std::set<std::string> repeatable;     ///< value options that may be given several times
+    std::size_t maxPositional = 0;        ///< plain words allowed before/among the options (report NAME)
 };
 
 class Arguments {
@@ -29,6 +30,8 @@ public:
     bool flag(const std::string& name) const { return m_flags.count(name) != 0; }
     std::optional<std::string> value(const std::string& name) const;
     std::vector<std::string> values(const std::string& name) const;
+    /// The plain words (not options), in order; at most CommandSyntax::maxPositional.
+    const std::vector<std::string>& positional() const { return m_positional; }
 
     /// A rational option (integers, decimals, fractions), or `fallback` when absent.
     Expected<Rational> rational(const std::string& name, std::optional<Rational> fallback) const;
@@ -43,6 +46,7 @@ public:
 private:
     std::map<std::string, std::vector<std::string>> m_values;
     std::set<std::string> m_flags;
+    std::vector<std::string> m_positional;
 };
 
 } // namespace granota::cli

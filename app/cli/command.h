@@ -34,6 +34,7 @@ Command catmullRomCommand();
 Command simulateCommand();
 Command benchCommand();
 Command demoCommand();
+Command reportCommand();
 
 /// Number output: exact "p/q" strings with --exact, doubles otherwise (SPEC §6).
 Json number(const Rational& q, bool exact);

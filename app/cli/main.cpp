@@ -18,6 +18,9 @@ constexpr int kBadInput = 2;
 std::vector<Command> commands()
 {
     return {bezierCommand(), bernsteinCommand(), fitCommand(), catmullRomCommand(), simulateCommand(), benchCommand(),
+#ifdef GRANOTA_HAS_REPORTS
+            reportCommand(),
+#endif
             demoCommand()};
 }
 

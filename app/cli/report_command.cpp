@@ -1,0 +1,160 @@
+// granota-cli report NAME|all --out DIR: the work-precision reports of SPEC §2 as files —
+// NAME.csv (with the machine and the build in its header), NAME.svg and NAME.png, drawn by
+// the same plotting code as the tabs.
+#include "app/cli/command.h"
+#include "core/work_precision.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QFile>
+#include <QPainter>
+#include <QSvgGenerator>
+#include <QSysInfo>
+#include <qcustomplot.h>
+
+#include "ui/work_precision_plot.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <thread>
+
+#ifndef GRANOTA_BUILD_TYPE
+#define GRANOTA_BUILD_TYPE "unknown"
+#endif
+
+namespace granota::cli {
+
+namespace {
+
+std::string cpuModel()
+{
+    std::ifstream in("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind("model name", 0) == 0) {
+            const auto colon = line.find(':');
+            return colon == std::string::npos ? line : line.substr(colon + 2);
+        }
+    return "unknown";
+}
+
+std::vector<std::string> context()
+{
+    return {"machine: " + cpuModel() + ", " + std::to_string(std::thread::hardware_concurrency()) + " threads, " +
+                QSysInfo::prettyProductName().toStdString(),
+            std::string("build: ") + GRANOTA_BUILD_TYPE + ", " + "g++ " + __VERSION__,
+            "command: granota-cli report"};
+}
+
+/// Renders the report's plot to SVG and PNG with QCustomPlot. Needs a QApplication: the
+/// command makes one on the offscreen platform (no display needed).
+Expected<bool> writePlots(const WorkPrecisionReport& report, const QString& base)
+{
+    QCustomPlot plot;
+    plot.resize(900, 600);
+    plot.plotLayout()->insertRow(0);
+    plot.plotLayout()->addElement(
+        0, 0, new QCPTextElement(&plot, QString::fromStdString(report.title), QFont(QStringLiteral("Sans"), 12, QFont::Bold)));
+    ui::plotWorkPrecision(&plot, report);
+    if (!plot.savePng(base + QStringLiteral(".png"), 900, 600, 1.0))
+        return makeError(ErrorCode::InvalidInput, "cannot write " + (base + ".png").toStdString());
+    QSvgGenerator svg;
+    svg.setFileName(base + QStringLiteral(".svg"));
+    svg.setSize(QSize(900, 600));
+    svg.setViewBox(QRect(0, 0, 900, 600));
+    svg.setTitle(QString::fromStdString(report.title));
+    QCPPainter painter;
+    if (!painter.begin(&svg))
+        return makeError(ErrorCode::InvalidInput, "cannot write " + (base + ".svg").toStdString());
+    plot.toPainter(&painter, 900, 600);
+    painter.end();
+    return true;
+}
+
+Expected<CommandOutput> run(const Arguments& args)
+{
+    const std::string name = args.positional().empty() ? "" : args.positional().front();
+    if (name.empty())
+        return makeError(ErrorCode::InvalidInput, "report needs a NAME (curve-sampling, bezier-evaluation, "
+                                                  "least-squares, integrators, soft-body, all)");
+    const auto out = args.value("out");
+    if (!out || out->empty())
+        return makeError(ErrorCode::InvalidInput, "report needs --out DIR");
+    std::vector<std::string> names;
+    if (name == "all")
+        names = workPrecisionReportNames();
+    else
+        names.push_back(name);
+    for (const auto& n : names) {
+        const auto known = workPrecisionReportNames();
+        if (std::find(known.begin(), known.end(), n) == known.end())
+            return runWorkPrecisionReport(n).error(); // the core's message lists the names
+    }
+    const QString dir = QString::fromStdString(*out);
+    if (!QDir().mkpath(dir))
+        return makeError(ErrorCode::InvalidInput, "cannot create directory '" + *out + "'");
+
+    // QCustomPlot draws with QtGui: an offscreen application is enough, no display.
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    static int argc = 1;
+    static char arg0[] = "granota-cli";
+    static char* argv[] = {arg0, nullptr};
+    std::unique_ptr<QApplication> app;
+    if (!QCoreApplication::instance()) {
+        // Starting Qt's GUI side headless prints notes (no XDG_RUNTIME_DIR…) that are not
+        // errors of ours: keep stderr for real errors.
+        const QtMessageHandler previous = qInstallMessageHandler([](QtMsgType type, const QMessageLogContext&, const QString& m) {
+            if (type == QtCriticalMsg || type == QtFatalMsg)
+                std::fprintf(stderr, "%s\n", qPrintable(m));
+        });
+        app = std::make_unique<QApplication>(argc, argv);
+        qInstallMessageHandler(previous);
+    }
+
+    WorkPrecisionOptions options;
+    options.quick = args.flag("quick");
+    CommandOutput output;
+    Json files = Json::array();
+    std::ostringstream text;
+    for (const auto& n : names) {
+        auto report = runWorkPrecisionReport(n, options);
+        if (!report)
+            return report.error();
+        const QString base = QDir(dir).filePath(QString::fromStdString(n));
+        {
+            QFile csv(base + QStringLiteral(".csv"));
+            if (!csv.open(QIODevice::WriteOnly | QIODevice::Text))
+                return makeError(ErrorCode::InvalidInput, "cannot write " + (base + ".csv").toStdString());
+            csv.write(QByteArray::fromStdString(workPrecisionCsv(*report, context())));
+        }
+        auto plots = writePlots(*report, base);
+        if (!plots)
+            return plots.error();
+        Json entry = Json::object();
+        entry.set("report", n).set("csv", (base + ".csv").toStdString()).set("svg", (base + ".svg").toStdString())
+            .set("png", (base + ".png").toStdString());
+        files.push(entry);
+        text << n << ": " << report->lesson << "\n  wrote " << (base + ".csv").toStdString() << ", .svg, .png\n";
+    }
+    output.json.set("reports", files);
+    output.text = text.str();
+    return output;
+}
+
+} // namespace
+
+Command reportCommand()
+{
+    return {"report", "NAME|all --out DIR [--quick] [--json]",
+            "error against run time (SPEC §2) as CSV, SVG and PNG: curve-sampling, bezier-evaluation, "
+            "least-squares, integrators, soft-body",
+            CommandSyntax{{"out"}, {"quick", "json"}, {}, 1},
+            run};
+}
+
+} // namespace granota::cli

@@ -1,0 +1,69 @@
+// granota-cli report NAME|all --out DIR (SPEC §2): one CSV with the machine and the build in
+// its header, and an SVG and a PNG plot per report, from the real binary.
+#include "cli_runner.h"
+
+#include <QDir>
+#include <QFile>
+#include <QImage>
+#include <QSvgRenderer>
+#include <QTemporaryDir>
+#include <QTest>
+
+class TestCliReport : public QObject {
+    Q_OBJECT
+
+private slots:
+    void allReportsWriteCsvSvgAndPng()
+    {
+        QTemporaryDir dir;
+        const CliRun run = runCli({"report", "all", "--quick", "--out", dir.path()});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.err.isEmpty(), run.err.constData());
+        for (const char* name : {"curve-sampling", "bezier-evaluation", "least-squares", "integrators", "soft-body"}) {
+            const QString base = QDir(dir.path()).filePath(QString::fromLatin1(name));
+            QFile csv(base + QStringLiteral(".csv"));
+            QVERIFY2(csv.open(QIODevice::ReadOnly | QIODevice::Text), name);
+            const QStringList lines = QString::fromUtf8(csv.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+            QVERIFY(lines.first().startsWith(QStringLiteral("# report: %1").arg(QString::fromLatin1(name))));
+            bool machine = false, build = false;
+            int rows = 0;
+            for (const QString& line : lines) {
+                machine |= line.startsWith(QStringLiteral("# machine: "));
+                build |= line.startsWith(QStringLiteral("# build: "));
+                if (!line.startsWith(QLatin1Char('#')) && !line.startsWith(QStringLiteral("method,"))) {
+                    const QStringList f = line.split(QLatin1Char(','));
+                    QCOMPARE(f.size(), 4);
+                    bool ok1 = false, ok2 = false, ok3 = false;
+                    QVERIFY(f[1].toDouble(&ok1) > 0 && f[2].toDouble(&ok2) > 0 && f[3].toDouble(&ok3) > 0);
+                    QVERIFY(ok1 && ok2 && ok3);
+                    ++rows;
+                }
+            }
+            QVERIFY(machine && build);
+            QVERIFY(rows >= 5);
+            QVERIFY(QSvgRenderer(base + QStringLiteral(".svg")).isValid());
+            const QImage png(base + QStringLiteral(".png"));
+            QCOMPARE(png.size(), QSize(900, 600));
+        }
+    }
+
+    void badInput_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::newRow("no name") << QStringList{"report", "--out", "/tmp/x"};
+        QTest::newRow("unknown name") << QStringList{"report", "dragons", "--out", "/tmp/x"};
+        QTest::newRow("no out") << QStringList{"report", "integrators"};
+        QTest::newRow("two names") << QStringList{"report", "integrators", "soft-body", "--out", "/tmp/x"};
+        QTest::newRow("unwritable") << QStringList{"report", "integrators", "--quick", "--out", "/proc/granota"};
+    }
+    void badInput()
+    {
+        QFETCH(QStringList, args);
+        const CliRun run = runCli(args);
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.startsWith("error: "), run.err.constData());
+    }
+};
+
+QTEST_MAIN(TestCliReport)
+#include "test_cli_report.moc"
