@@ -1,5 +1,8 @@
 #include "core/least_squares_fit.h"
 
+#include "core/bernstein_block.h"
+#include "core/tall_skinny_qr.h"
+
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
 #include <Eigen/QR>
@@ -11,6 +14,7 @@
 #include <cstdio>
 #include <limits>
 #include <optional>
+#include <thread>
 #include <utility>
 
 namespace granota {
@@ -64,7 +68,9 @@ std::vector<Point> derivativePoints(const std::vector<Point>& P)
 
 template <class S> int countDistinct(std::vector<S> t)
 {
-    std::sort(t.begin(), t.end());
+    // Parameters are usually increasing already (uniform, chord, centripetal): no sort then.
+    if (!std::is_sorted(t.begin(), t.end()))
+        std::sort(t.begin(), t.end());
     return static_cast<int>(std::unique(t.begin(), t.end()) - t.begin());
 }
 
@@ -100,10 +106,14 @@ std::optional<Error> validateShape(std::size_t count, int degree)
     return std::nullopt;
 }
 
+/// From this many points on, the residuals are computed on two threads.
+constexpr std::size_t kParallelResiduals = 200000;
+
 /// The least-squares solution in the working frame.
 struct Solution {
     std::vector<Point> P;
     double cond = 1;
+    double sse = -1; ///< Σ‖Q_i − α(t_i)‖² in the working frame, or −1 when not computed
     std::vector<std::string> warnings;
 };
 
@@ -111,25 +121,37 @@ struct Solution {
 Expected<Solution> solve(const Eigen::MatrixX2d& Q, const std::vector<double>& t, int n, LeastSquaresSolver solver)
 {
     const Eigen::Index m = n + 1;
-    Eigen::MatrixXd M = bernsteinMatrix(t, n);
     const int distinct = countDistinct(t);
 
-    // The thesis's normal equations MᵀM P = MᵀQ (Prop 2.2) need M before it is factorised.
+    Eigen::MatrixXd R; // upper triangular, M = QR (so cond₂(M) = cond₂(R))
+    Eigen::MatrixXd c; // (QᵀQ_data) rows 0..n: the least-squares problem is R P = c
+    double sse = -1;   // Σ‖Q_i − α(t_i)‖² when the factorisation gives it for free
     Eigen::MatrixXd MtM, MtQ;
-    if (solver == LeastSquaresSolver::Normal) {
-        if (distinct < m)
-            return makeError(ErrorCode::Singular,
-                             "the normal equations MᵀM P = MᵀQ have no unique solution: only " + std::to_string(distinct)
-                                 + " of the parameters t_i are distinct and Lemma 2.2 needs n + 1 = " + std::to_string(m)
-                                 + " (coincident points?). Lower the degree or use the qr or svd solver.");
-        MtM = M.transpose() * M;
-        MtQ = M.transpose() * Q;
+    if (solver != LeastSquaresSolver::Normal && t.size() >= kTallSkinnyRows) {
+        // Many points: QR of [M | Q] a block at a time, M never formed (tall_skinny_qr.h).
+        const Eigen::MatrixXd r = tallSkinnyQr(t, Q, n);
+        R = r.topLeftCorner(m, m);
+        c = r.topRightCorner(m, 2);
+        sse = r.bottomRightCorner(2, 2).squaredNorm();
+    } else {
+        Eigen::MatrixXd M = bernsteinMatrix(t, n);
+        // The thesis's normal equations MᵀM P = MᵀQ (Prop 2.2) need M before it is factorised.
+        if (solver == LeastSquaresSolver::Normal) {
+            if (distinct < m)
+                return makeError(ErrorCode::Singular,
+                                 "the normal equations MᵀM P = MᵀQ have no unique solution: only " + std::to_string(distinct)
+                                     + " of the parameters t_i are distinct and Lemma 2.2 needs n + 1 = " + std::to_string(m)
+                                     + " (coincident points?). Lower the degree or use the qr or svd solver.");
+            MtM = M.transpose() * M;
+            MtQ = M.transpose() * Q;
+        }
+        // cond₂(M) from the singular values of R in M = QR (Householder, in place).
+        Eigen::HouseholderQR<Eigen::Ref<Eigen::MatrixXd>> qr(M);
+        R = qr.matrixQR().topRows(m).triangularView<Eigen::Upper>();
+        // Qᵀ applied as Householder reflections.
+        if (solver != LeastSquaresSolver::Normal)
+            c = (qr.householderQ().transpose() * Q).topRows(m);
     }
-
-    // cond₂(M) from the singular values of R in M = QR (Householder, in place: cheap even
-    // for a million rows, since R is only (n+1)×(n+1)).
-    Eigen::HouseholderQR<Eigen::Ref<Eigen::MatrixXd>> qr(M);
-    const Eigen::MatrixXd R = qr.matrixQR().topRows(m).triangularView<Eigen::Upper>();
     const unsigned options = solver == LeastSquaresSolver::Svd ? (Eigen::ComputeFullU | Eigen::ComputeFullV) : 0u;
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(R, options);
     const Eigen::VectorXd sigma = svd.singularValues();
@@ -158,8 +180,7 @@ Expected<Solution> solve(const Eigen::MatrixX2d& Q, const std::vector<double>& t
                                  + std::to_string(std::min(16, static_cast<int>(std::log10(s.cond * s.cond))))
                                  + " of the 16 significant digits may be lost");
     } else {
-        // Qᵀ applied as Householder reflections: the least-squares problem becomes R P = c.
-        const Eigen::MatrixXd c = (qr.householderQ().transpose() * Q).topRows(m);
+        // R P = c, from Householder or from the blocked factorisation.
         if (solver == LeastSquaresSolver::Qr) {
             const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(R);
             P = cod.solve(c);
@@ -182,6 +203,8 @@ Expected<Solution> solve(const Eigen::MatrixX2d& Q, const std::vector<double>& t
                              + "; the control points are very sensitive to the data (lower the degree?)");
     if (!P.allFinite())
         return makeError(ErrorCode::Singular, "the least-squares solve gave a non-finite result");
+    if (rank == m)
+        s.sse = sse; // the factorisation's residual is the fit's only at full rank
     s.P.resize(static_cast<std::size_t>(m));
     for (Eigen::Index j = 0; j < m; ++j)
         s.P[static_cast<std::size_t>(j)] = Point(P(j, 0), P(j, 1));
@@ -311,23 +334,25 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
     const Point centre(0.5 * minX + 0.5 * maxX, 0.5 * minY + 0.5 * maxY);
     const double halfSize = std::max(0.5 * maxX - 0.5 * minX, 0.5 * maxY - 0.5 * minY);
     const double scale = halfSize > 0 && std::isfinite(halfSize) ? halfSize : 1.0;
-    std::vector<Point> local(q.size());
     Eigen::MatrixX2d Q(static_cast<Eigen::Index>(q.size()), 2);
     for (std::size_t i = 0; i < q.size(); ++i) {
-        local[i] = Point((q[i].x - centre.x) / scale, (q[i].y - centre.y) / scale);
-        Q(static_cast<Eigen::Index>(i), 0) = local[i].x;
-        Q(static_cast<Eigen::Index>(i), 1) = local[i].y;
+        Q(static_cast<Eigen::Index>(i), 0) = (q[i].x - centre.x) / scale;
+        Q(static_cast<Eigen::Index>(i), 1) = (q[i].y - centre.y) / scale;
     }
 
     Expected<Solution> first = solve(Q, t, n, options.solver);
     if (!first)
         return first.error();
     Solution best = std::move(first).value();
-    double bestSse = sumOfSquares(local, best.P, t);
+    double bestSse = 0;
 
     // Iterative parameter correction (beyond the thesis, which fixes the t_i): project
     // each Q_i onto the current curve and refit while the error keeps dropping.
     if (options.correctParameters && n > 0) {
+        std::vector<Point> local(q.size());
+        for (std::size_t i = 0; i < q.size(); ++i)
+            local[i] = Point(Q(static_cast<Eigen::Index>(i), 0), Q(static_cast<Eigen::Index>(i), 1));
+        bestSse = best.sse >= 0 ? best.sse : sumOfSquares(local, best.P, t);
         for (int iteration = 0; iteration < options.maxCorrections && bestSse > 0; ++iteration) {
             std::vector<double> corrected = project(local, best.P, t);
             Expected<Solution> next = solve(Q, corrected, n, options.solver);
@@ -354,15 +379,46 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
     result.controlPoints.reserve(best.P.size());
     for (const Point& p : best.P)
         result.controlPoints.push_back(Point(centre.x + scale * p.x, centre.y + scale * p.y));
-    result.residuals.reserve(q.size());
-    std::vector<Point> work;
-    double sse = 0, maxError = 0;
-    for (std::size_t i = 0; i < q.size(); ++i) {
-        const Point r = local[i] - evaluateBezier(best.P, t[i], work);
-        sse += dot(r, r);
-        maxError = std::max(maxError, norm(r));
-        result.residuals.push_back(scale * r);
+    // α(t_i) = Σ_j B_j^n(t_i) P_j (Def 2.6), a block of rows of M times P at a time
+    // (bernstein_block.h). With many points the two halves run on two threads (a fixed
+    // split: the same sums on one core).
+    result.residuals.resize(q.size());
+    struct Partial {
+        double sse = 0, maxSquared = 0;
+    };
+    auto residuals = [&](std::size_t first, std::size_t last) {
+        constexpr int kBlock = 1024;
+        BernsteinBlock bernstein(n, kBlock);
+        Eigen::MatrixX2d P(static_cast<Eigen::Index>(best.P.size()), 2), alpha(kBlock, 2);
+        for (std::size_t j = 0; j < best.P.size(); ++j)
+            P.row(static_cast<Eigen::Index>(j)) << best.P[j].x, best.P[j].y;
+        Partial part;
+        for (std::size_t s = first; s < last; s += kBlock) {
+            const int rows = static_cast<int>(std::min<std::size_t>(kBlock, last - s));
+            alpha.topRows(rows).noalias() = bernstein.fill(t.data() + s, rows).topRows(rows) * P;
+            for (int i = 0; i < rows; ++i) {
+                const Eigen::Index k = static_cast<Eigen::Index>(s) + i;
+                const Point r(Q(k, 0) - alpha(i, 0), Q(k, 1) - alpha(i, 1));
+                const double r2 = dot(r, r);
+                part.sse += r2;
+                part.maxSquared = std::max(part.maxSquared, r2);
+                result.residuals[static_cast<std::size_t>(k)] = scale * r;
+            }
+        }
+        return part;
+    };
+    Partial total;
+    if (q.size() >= kParallelResiduals) {
+        const std::size_t half = q.size() / 2;
+        Partial low;
+        std::thread worker([&] { low = residuals(0, half); });
+        const Partial high = residuals(half, q.size());
+        worker.join();
+        total = {low.sse + high.sse, std::max(low.maxSquared, high.maxSquared)};
+    } else {
+        total = residuals(0, q.size());
     }
+    const double sse = total.sse, maxError = std::sqrt(total.maxSquared);
     result.sse = scale * scale * sse;
     result.rms = std::sqrt(result.sse / static_cast<double>(q.size()));
     result.maxError = scale * maxError;
@@ -372,8 +428,7 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
                   && std::isfinite(result.cond);
     for (const Point& p : result.controlPoints)
         finite = finite && isFinite(p);
-    for (const Point& r : result.residuals)
-        finite = finite && isFinite(r);
+    // Every residual is finite when their sum of squares is (checked above).
     if (!finite)
         return makeError(ErrorCode::OutOfRange, "the fitted curve does not fit in double precision "
                                                 "(coordinates too large for this degree?)");

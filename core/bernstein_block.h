@@ -1,0 +1,31 @@
+#pragma once
+/// \file bernstein_block.h
+/// Rows of the matrix M of Lemma 2.2 (M(i, j) = B_j^n(t_i)) for a block of parameters at a
+/// time, a column at a time: B_j^n(t) = C(n,j) t^j (1−t)^(n−j) (Def 2.5). Every factor is
+/// positive, so each entry is accurate to n + 1 roundings like the recursion of Lemma 2.1,
+/// and the loops run over contiguous rows, which the compiler vectorises. Used where a fit
+/// meets a million points (tall_skinny_qr, the residuals of least_squares_fit).
+
+#include <Eigen/Dense>
+
+#include <vector>
+
+namespace granota {
+
+class BernsteinBlock {
+public:
+    /// Degree n, blocks of at most `maxRows` parameters.
+    BernsteinBlock(int n, int maxRows);
+    /// B_j^n(t_i) for i < rows, j ≤ n: the top `rows` rows of the returned matrix.
+    const Eigen::MatrixXd& fill(const double* t, int rows);
+    int degree() const { return m_n; }
+
+private:
+    int m_n;
+    std::vector<double> m_binomial;
+    Eigen::MatrixXd m_values;  ///< maxRows × (n+1)
+    Eigen::MatrixXd m_uPowers; ///< maxRows × (n+1): (1−t)^e in column e
+    Eigen::ArrayXd m_t, m_tPower;
+};
+
+} // namespace granota

@@ -1,0 +1,138 @@
+// Fitting a million points (issue: speed): the blocked QR of [M | Q] and the block-wise
+// Bernstein matrix must give what the plain constructions give — same normal matrix, same
+// error, the known control points back — only faster.
+#include "core/bernstein.h"
+#include "core/bernstein_block.h"
+#include "core/de_casteljau.h"
+#include "core/least_squares_fit.h"
+#include "core/tall_skinny_qr.h"
+
+#include <QTest>
+
+#include <cmath>
+#include <random>
+
+using namespace granota;
+
+namespace {
+
+std::vector<double> uniformT(int k)
+{
+    std::vector<double> t(static_cast<std::size_t>(k));
+    for (int i = 0; i < k; ++i)
+        t[static_cast<std::size_t>(i)] = i / double(k - 1);
+    return t;
+}
+
+std::vector<Point> curvePoints(const std::vector<Point>& control, const std::vector<double>& t, double noise)
+{
+    std::vector<Point> q;
+    std::vector<Point> work(control.size());
+    std::mt19937 random(17);
+    std::uniform_real_distribution<double> uniform(-0.5, 0.5);
+    for (double ti : t) {
+        std::copy(control.begin(), control.end(), work.begin());
+        Point p = deCasteljauInPlace(work, ti);
+        p.x += noise * uniform(random);
+        p.y += noise * uniform(random);
+        q.push_back(p);
+    }
+    return q;
+}
+
+const std::vector<Point> kControl = {{0, 0}, {1, 3}, {4, 2}, {8, -2}, {1, 5}, {-3, 1}};
+
+} // namespace
+
+class TestTallSkinnyQr : public QObject {
+    Q_OBJECT
+
+private slots:
+    void bernsteinBlockMatchesLemma21_data()
+    {
+        QTest::addColumn<int>("n");
+        for (int n : {0, 1, 3, 10, 30, 60})
+            QTest::newRow(qPrintable(QString::number(n))) << n;
+    }
+    void bernsteinBlockMatchesLemma21()
+    {
+        QFETCH(int, n);
+        const auto t = uniformT(257);
+        BernsteinBlock block(n, 300);
+        const Eigen::MatrixXd& b = block.fill(t.data(), 257);
+        for (int i = 0; i < 257; ++i) {
+            const auto expected = bernsteinAll(n, t[static_cast<std::size_t>(i)]);
+            double sum = 0;
+            for (int j = 0; j <= n; ++j) {
+                const double e = expected[static_cast<std::size_t>(j)];
+                QVERIFY2(std::fabs(b(i, j) - e) <= 1e-14 * std::max(1.0, std::fabs(e)) + 1e-300,
+                         qPrintable(QStringLiteral("i=%1 j=%2").arg(i).arg(j)));
+                sum += b(i, j);
+            }
+            QVERIFY(std::fabs(sum - 1) < 1e-13); // partition of unity (Prop 2.1)
+        }
+    }
+
+    void blockedQrHasTheSameNormalMatrix()
+    {
+        // RᵀR = [M | Q]ᵀ[M | Q] whatever the signs of R's rows: the two factorisations agree.
+        for (int k : {500, 250000}) { // one thread, and the two-half split
+            const auto t = uniformT(k);
+            const auto q = curvePoints(kControl, t, 0.1);
+            Eigen::MatrixX2d Q(k, 2);
+            for (int i = 0; i < k; ++i)
+                Q.row(i) << q[static_cast<std::size_t>(i)].x, q[static_cast<std::size_t>(i)].y;
+            const int n = 5;
+            const Eigen::MatrixXd r = tallSkinnyQr(t, Q, n);
+            Eigen::MatrixXd A(k, n + 3);
+            A << bernsteinMatrix(t, n), Q;
+            const Eigen::MatrixXd gram = A.transpose() * A;
+            const double error = (r.transpose() * r - gram).norm() / gram.norm();
+            QVERIFY2(error < 1e-12, qPrintable(QString::number(error)));
+            QVERIFY(r.isUpperTriangular(0));
+        }
+    }
+
+    void manyPointsGiveTheKnownCurveBack()
+    {
+        const int k = 300000; // beyond kTallSkinnyRows and kParallel: every new path
+        QVERIFY(static_cast<std::size_t>(k) > kTallSkinnyRows);
+        const auto q = curvePoints(kControl, uniformT(k), 0.0);
+        FitOptions options;
+        options.degree = 5;
+        const auto fit = fitBezier(q, options);
+        QVERIFY(fit.ok());
+        for (std::size_t j = 0; j < kControl.size(); ++j)
+            QVERIFY2(distance(fit->controlPoints[j], kControl[j]) < 1e-9, qPrintable(QString::number(j)));
+        QVERIFY(fit->sse < 1e-15);
+        QCOMPARE(fit->residuals.size(), q.size());
+    }
+
+    void manyNoisyPointsReportTheTrueError()
+    {
+        const int k = 250000;
+        const auto q = curvePoints(kControl, uniformT(k), 0.5);
+        FitOptions options;
+        options.degree = 5; // the curve's own degree: what is left is the noise
+        const auto fit = fitBezier(q, options);
+        QVERIFY(fit.ok());
+        // The error and the residuals, recomputed independently by De Casteljau.
+        double sse = 0, maxError = 0;
+        std::vector<Point> work(fit->controlPoints.size());
+        for (int i = 0; i < k; ++i) {
+            std::copy(fit->controlPoints.begin(), fit->controlPoints.end(), work.begin());
+            const Point r = q[static_cast<std::size_t>(i)] - deCasteljauInPlace(work, fit->params[static_cast<std::size_t>(i)]);
+            sse += dot(r, r);
+            maxError = std::max(maxError, norm(r));
+            if (i % 9973 == 0)
+                QVERIFY(distance(r, fit->residuals[static_cast<std::size_t>(i)]) < 1e-12);
+        }
+        QVERIFY2(std::fabs(fit->sse - sse) < 1e-9 * sse, qPrintable(QStringLiteral("%1 vs %2").arg(fit->sse).arg(sse)));
+        QVERIFY(std::fabs(fit->maxError - maxError) < 1e-12);
+        // Noise uniform in ±0.25 per coordinate: E‖r‖² ≈ 2 · 0.5²/12 per point.
+        QVERIFY2(std::fabs(fit->sse / k - 2 * 0.25 / 12) < 0.03 * (2 * 0.25 / 12), qPrintable(QString::number(fit->sse / k)));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestTallSkinnyQr)
+#include "test_tall_skinny_qr.moc"
