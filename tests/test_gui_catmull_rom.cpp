@@ -1,0 +1,516 @@
+// The Catmull-Rom tab (SPEC §1.4): Ex 2.11 and Ex 2.13 exactly as printed in the exact
+// panel, Ex 2.1's slip exposed, mouse drags with undo, the tension list and its refusals,
+// the segment counts of Def 2.10, Prop 2.3 at every knot, interpolation, documents, and the
+// stiff cases of SPEC §3.
+#include "core/catmull_rom.h"
+#include "core/segment_joins.h"
+#include "core/worked_examples.h"
+#include "ui/catmull_rom_tab.h"
+#include "ui/curve_canvas.h"
+#include "ui/exact_panel.h"
+#include "ui/point_editor.h"
+
+#include <QComboBox>
+#include <QJsonArray>
+#include <QSlider>
+#include <QJsonDocument>
+#include <QTest>
+#include <QUndoStack>
+#include <qcustomplot.h>
+
+#include <cmath>
+
+using namespace granota;
+using namespace granota::ui;
+
+namespace {
+
+const WorkedExample& example(const char* id)
+{
+    const WorkedExample* ex = findWorkedExample(id);
+    if (!ex)
+        qFatal("missing example %s", id);
+    return *ex;
+}
+
+/// The printed polynomials of an example's "expected" object: {"x": …, "y": …} leaves.
+QStringList expectedTexts(const Json& node)
+{
+    QStringList out;
+    if (const auto s = node.asString())
+        out << QString::fromStdString(*s);
+    if (const auto* a = node.asArray())
+        for (const Json& item : *a)
+            out << expectedTexts(item);
+    if (const auto* o = node.asObject())
+        for (const auto& [key, value] : *o)
+            out << expectedTexts(value);
+    return out;
+}
+
+bool near(Point a, Point b, double tol = 1e-9)
+{
+    const double scale = std::max({1.0, std::fabs(a.x), std::fabs(a.y)});
+    return std::fabs(a.x - b.x) <= tol * scale && std::fabs(a.y - b.y) <= tol * scale;
+}
+
+std::vector<Point> ex213Points() { return toDouble(example("2.13").points); }
+
+void showTab(CatmullRomTab& tab)
+{
+    tab.resize(1280, 760);
+    tab.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&tab));
+}
+
+bool allFinite(const CatmullRomScene& scene)
+{
+    for (const auto& c : scene.curves)
+        for (const Point& p : c.samples)
+            if (!isFinite(p))
+                return false;
+    for (const Point& p : scene.spline)
+        if (!isFinite(p))
+            return false;
+    for (const Point& p : scene.bezier)
+        if (!isFinite(p))
+            return false;
+    return true;
+}
+
+} // namespace
+
+class TestGuiCatmullRom : public QObject {
+    Q_OBJECT
+
+private slots:
+    void startsAsEx211()
+    {
+        CatmullRomTab tab;
+        QCOMPARE(tab.pointEditor()->points(), toDouble(example("2.11").points));
+        QCOMPARE(int(tab.settings().taus.size()), 3);
+        QVERIFY(tab.settings().taus[1] == frac(1, 2));
+        QCOMPARE(tab.settings().ends, CatmullRomEnds::Open);
+        QCOMPARE(int(tab.scene().curves.size()), 3);
+        // Open, 4 points: 3 segments; the middle one is Ex 2.11's segment.
+        QCOMPARE(int(tab.scene().curves[0].segments.size()), 3);
+        QVERIFY(tab.exactPanel()->plainText().contains(QStringLiteral("3 + 1/2 t - 5t^2 + 7/2 t^3")));
+    }
+
+    void ex211ExactlyAsPrinted()
+    {
+        CatmullRomTab tab;
+        QVERIFY(tab.loadExample(example("2.11")));
+        QCOMPARE(tab.settings().ends, CatmullRomEnds::Segment);
+        QCOMPARE(int(tab.scene().curves.size()), 3);
+        for (const auto& c : tab.scene().curves)
+            QCOMPARE(int(c.segments.size()), 1); // one segment, q1 → q2
+        const QString text = tab.exactPanel()->plainText();
+        const QStringList want = expectedTexts(*example("2.11").data.find("expected"));
+        QCOMPARE(want.size(), 6);
+        for (const QString& w : want)
+            QVERIFY2(text.contains(w), qPrintable(w));
+        QVERIFY(text.contains(QStringLiteral("p(t)")));
+    }
+
+    void ex213BothModesExactlyAsPrinted()
+    {
+        CatmullRomTab tab;
+        QVERIFY(tab.loadExample(example("2.13")));
+        QCOMPARE(tab.settings().ends, CatmullRomEnds::Cyclic);
+        QVERIFY(tab.settings().compareEnds);
+        const auto* combo = tab.findChildren<QComboBox*>().first();
+        QCOMPARE(combo->currentIndex(), int(CatmullRomEnds::Cyclic));
+        const QString text = tab.exactPanel()->plainText();
+        const QStringList want = expectedTexts(*example("2.13").data.find("expected"));
+        QCOMPARE(want.size(), 16);
+        for (const QString& w : want)
+            QVERIFY2(text.contains(w), qPrintable(w));
+        // The cyclic p1 and the open p1 differ (x: −5/2 t vs −1/2 t): both must be there.
+        QVERIFY(text.contains(QStringLiteral("3 - 5/2 t + 1/2 t^2 + t^3")));
+        QVERIFY(text.contains(QStringLiteral("3 - 1/2 t - 7/2 t^2 + 3t^3")));
+    }
+
+    void ex21ExposesTheSlip()
+    {
+        CatmullRomTab tab;
+        QVERIFY(tab.loadExample(example("2.1")));
+        QVERIFY(tab.settings().spline);
+        QVERIFY(!tab.scene().spline.empty());
+        const QString text = tab.exactPanel()->plainText();
+        // The printed pieces, checked: s₂ misses (1, 3) and (2, 1).
+        QVERIFY2(text.contains(QStringLiteral("394/53 x - 288/53 x^2 + 52/53 x^3")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("s_2 does not interpolate (1, 3): s_2(1) = 158/53")), qPrintable(text));
+        QVERIFY(text.contains(QStringLiteral("s_2 does not interpolate (2, 1): s_2(2) = 52/53")));
+        QVERIFY(text.contains(QStringLiteral("+1/53")));
+        // The correct s₂, and the natural spline of Def 2.3 (M_1 = −32/5, M_2 = 8/5).
+        QVERIFY(text.contains(QStringLiteral("1/53 + 394/53 x - 288/53 x^2 + 52/53 x^3")));
+        QVERIFY(text.contains(QStringLiteral("1 + 46/15 x - 16/15 x^3")));
+        QVERIFY(text.contains(QStringLiteral("C^2 at every knot")));
+        // The spline interpolates the points (samples at the knots).
+        const auto& s = tab.scene().spline;
+        const int per = CatmullRomScene::kSamplesPerSegment;
+        const auto pts = tab.pointEditor()->points();
+        for (int i = 0; i < 3; ++i) {
+            QVERIFY(near(s[std::size_t(i * per)], pts[std::size_t(i)]));
+            QVERIFY(near(s[std::size_t(i * per + per - 1)], pts[std::size_t(i + 1)]));
+        }
+    }
+
+    void splineRefusesNonFunctionData()
+    {
+        CatmullRomTab tab; // Ex 2.11's points: x = 1, 3, 2, 5 is not increasing
+        tab.setSplineVisible(true);
+        QVERIFY(tab.settings().spline);
+        QVERIFY(tab.scene().spline.empty());
+        QVERIFY(!tab.scene().splineError.isEmpty());
+        QVERIFY(tab.exactPanel()->plainText().contains(QStringLiteral("not a function of x")));
+        QVERIFY(tab.lastMessage().contains(QStringLiteral("not a function of x")));
+    }
+
+    void dragMovesAPointAndUndoRestores()
+    {
+        CatmullRomTab tab;
+        showTab(tab);
+        CurveCanvas* canvas = tab.canvas();
+        const auto before = tab.pointEditor()->points();
+        const auto samplesBefore = tab.scene().curves[1].samples;
+        const QString panelBefore = tab.exactPanel()->plainText();
+        const int undoBefore = tab.undoStack()->count();
+
+        const QPoint from = canvas->view().toScreen(before[1]).toPoint();
+        const QPoint to = from + QPoint(-40, 30);
+        QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, from);
+        QTest::mouseMove(canvas, from + QPoint(-20, 15));
+        QTest::mouseMove(canvas, to);
+        const Point target = canvas->view().toModel(QPointF(to));
+        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, to);
+
+        const auto after = tab.pointEditor()->points();
+        QVERIFY(near(after[1], target, 1e-6));
+        QVERIFY(!near(after[1], before[1], 1e-3));
+        QCOMPARE(after[0], before[0]);
+        QCOMPARE(tab.undoStack()->count(), undoBefore + 1);
+        QVERIFY(tab.scene().curves[1].samples != samplesBefore);
+        QVERIFY(tab.exactPanel()->plainText() != panelBefore);
+
+        tab.undoStack()->undo();
+        QCOMPARE(tab.pointEditor()->points(), before);
+        QCOMPARE(tab.scene().curves[1].samples, samplesBefore);
+        QCOMPARE(tab.exactPanel()->plainText(), panelBefore);
+    }
+
+    void addAndRemoveTensions()
+    {
+        CatmullRomTab tab;
+        QVERIFY(tab.addTension(QStringLiteral("-1/2"))); // Ex 2.12: negatives allowed
+        QCOMPARE(int(tab.scene().curves.size()), 4);
+        QVERIFY(tab.scene().curves[3].tau == frac(-1, 2));
+        QVERIFY(tab.exactPanel()->plainText().contains(QStringLiteral("τ = -1/2")));
+        QVERIFY(tab.addTension(QStringLiteral("0.25")));
+        QVERIFY(tab.settings().taus.back() == frac(1, 4));
+        QVERIFY(tab.removeTension(0)); // τ = 0
+        QCOMPARE(int(tab.scene().curves.size()), 4);
+        QVERIFY(tab.scene().curves[0].tau == frac(1, 2));
+        tab.undoStack()->undo();
+        tab.undoStack()->undo();
+        tab.undoStack()->undo();
+        QCOMPARE(int(tab.settings().taus.size()), 3);
+        QCOMPARE(int(tab.scene().curves.size()), 3);
+    }
+
+    void sliderMovesMergeIntoOneUndoStep()
+    {
+        CatmullRomTab tab;
+        QSlider* slider = tab.findChild<QSlider*>();
+        QVERIFY(slider);
+        QCOMPARE(tab.settings().selectedTau, 1); // τ = 1/2
+        QCOMPARE(slider->value(), 10);           // steps of 0.05
+        const auto samples = tab.scene().curves[1].samples;
+        const int count = tab.undoStack()->count();
+        slider->setValue(30);
+        slider->setValue(32);
+        QVERIFY(tab.settings().taus[1] == frac(8, 5));
+        QCOMPARE(tab.undoStack()->count(), count + 1);
+        QVERIFY(tab.scene().curves[1].samples != samples);
+        QVERIFY(tab.exactPanel()->plainText().contains(QStringLiteral("τ = 8/5")));
+        slider->setValue(0); // τ = 0 is already in the list: refused, nothing changes
+        QVERIFY(tab.settings().taus[1] == frac(8, 5));
+        QVERIFY(!tab.lastMessage().isEmpty());
+        QCOMPARE(slider->value(), 32);
+        tab.undoStack()->undo();
+        QVERIFY(tab.settings().taus[1] == frac(1, 2));
+        QCOMPARE(tab.scene().curves[1].samples, samples);
+        QCOMPARE(slider->value(), 10);
+    }
+
+    void refusedTensions_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::newRow("above 10") << "11";
+        QTest::newRow("below -10") << "-10.5";
+        QTest::newRow("garbage") << "abc";
+        QTest::newRow("zero denominator") << "1/0";
+        QTest::newRow("empty") << "";
+        QTest::newRow("nan") << "nan";
+        QTest::newRow("duplicate") << "0.5";
+    }
+    void refusedTensions()
+    {
+        QFETCH(QString, text);
+        CatmullRomTab tab;
+        const auto before = tab.settings().taus;
+        const int undo = tab.undoStack()->count();
+        QVERIFY(!tab.addTension(text));
+        QVERIFY(!tab.lastMessage().isEmpty());
+        QVERIFY(tab.settings().taus == before);
+        QCOMPARE(int(tab.scene().curves.size()), int(before.size()));
+        QCOMPARE(tab.undoStack()->count(), undo);
+    }
+
+    void tensionLimitsAccepted()
+    {
+        CatmullRomTab tab;
+        QVERIFY(tab.addTension(QStringLiteral("10")));
+        QVERIFY(tab.addTension(QStringLiteral("−10"))); // Unicode minus, as printed
+        QVERIFY(allFinite(tab.scene()));
+        QVERIFY(!tab.exactPanel()->plainText().contains(QStringLiteral("nan")));
+    }
+
+    void segmentCounts_data()
+    {
+        QTest::addColumn<int>("ends");
+        QTest::addColumn<int>("segments");
+        // n + 1 = 5 points (Ex 2.13): Def 2.10 and SPEC §1.4.
+        QTest::newRow("open: n") << int(CatmullRomEnds::Open) << 4;
+        QTest::newRow("cyclic: n") << int(CatmullRomEnds::Cyclic) << 4;
+        QTest::newRow("closed: n + 1") << int(CatmullRomEnds::Closed) << 5;
+        QTest::newRow("single segments: n - 2") << int(CatmullRomEnds::Segment) << 2;
+    }
+    void segmentCounts()
+    {
+        QFETCH(int, ends);
+        QFETCH(int, segments);
+        CatmullRomTab tab;
+        tab.pointEditor()->setPoints(ex213Points(), QStringLiteral("test"));
+        tab.setEnds(CatmullRomEnds(ends));
+        for (const auto& c : tab.scene().curves) {
+            QCOMPARE(int(c.segments.size()), segments);
+            QCOMPARE(int(c.samples.size()), segments * CatmullRomScene::kSamplesPerSegment);
+        }
+    }
+
+    void tangentContinuityAtEveryKnot_data()
+    {
+        QTest::addColumn<int>("ends");
+        QTest::newRow("open") << int(CatmullRomEnds::Open);
+        QTest::newRow("cyclic") << int(CatmullRomEnds::Cyclic);
+        QTest::newRow("closed") << int(CatmullRomEnds::Closed);
+    }
+    void tangentContinuityAtEveryKnot()
+    {
+        QFETCH(int, ends);
+        CatmullRomTab tab;
+        tab.pointEditor()->setPoints(ex213Points(), QStringLiteral("test"));
+        tab.setEnds(CatmullRomEnds(ends));
+        const bool closed = CatmullRomEnds(ends) == CatmullRomEnds::Closed;
+        for (const auto& c : tab.scene().curves) {
+            const auto joins = segmentJoinValues(c.segments, 1, closed, 1e-12);
+            QCOMPARE(int(joins.size()), closed ? 5 : 3);
+            for (const auto& j : joins)
+                QVERIFY(j.equal);
+        }
+        const QString text = tab.exactPanel()->plainText();
+        QVERIFY(text.contains(QStringLiteral("✓")));
+        QVERIFY2(!text.contains(QStringLiteral("✗")), qPrintable(text));
+        // Ex 2.13, τ = 1/2 selected: the tangent at q1 is (q2 − q0)/2 = (3/2, −5/2) from both sides.
+        QVERIFY(text.contains(QStringLiteral("′(1) = (3/2, -5/2)")));
+        QVERIFY(text.contains(QStringLiteral("′(0) = (3/2, -5/2)")));
+    }
+
+    void centripetalJoinsAreG1()
+    {
+        CatmullRomTab tab;
+        tab.pointEditor()->setPoints({{0, 0}, {1, 0}, {5, 3}, {6, 3}, {6, 8}}, QStringLiteral("test"));
+        tab.setSpacing(CatmullRomSpacing::Centripetal);
+        QVERIFY(tab.exactPanel()->plainText().contains(QStringLiteral("G¹")));
+        QVERIFY(allFinite(tab.scene()));
+    }
+
+    void curvesInterpolateThePoints_data()
+    {
+        QTest::addColumn<int>("ends");
+        QTest::addColumn<int>("spacing");
+        QTest::newRow("open uniform") << int(CatmullRomEnds::Open) << int(CatmullRomSpacing::Uniform);
+        QTest::newRow("closed uniform") << int(CatmullRomEnds::Closed) << int(CatmullRomSpacing::Uniform);
+        QTest::newRow("cyclic chordal") << int(CatmullRomEnds::Cyclic) << int(CatmullRomSpacing::Chordal);
+        QTest::newRow("segment centripetal") << int(CatmullRomEnds::Segment) << int(CatmullRomSpacing::Centripetal);
+    }
+    void curvesInterpolateThePoints()
+    {
+        QFETCH(int, ends);
+        QFETCH(int, spacing);
+        CatmullRomTab tab;
+        const auto pts = ex213Points();
+        tab.pointEditor()->setPoints(pts, QStringLiteral("test"));
+        tab.setEnds(CatmullRomEnds(ends));
+        tab.setSpacing(CatmullRomSpacing(spacing));
+        const int per = CatmullRomScene::kSamplesPerSegment;
+        const int first = CatmullRomEnds(ends) == CatmullRomEnds::Segment ? 1 : 0;
+        const int n = int(pts.size());
+        for (const auto& c : tab.scene().curves) {
+            QVERIFY(c.error.isEmpty());
+            const int segments = int(c.samples.size()) / per;
+            QVERIFY(segments >= 2);
+            for (int s = 0; s < segments; ++s) {
+                QVERIFY(near(c.samples[std::size_t(s * per)], pts[std::size_t((s + first) % n)]));
+                QVERIFY(near(c.samples[std::size_t(s * per + per - 1)], pts[std::size_t((s + first + 1) % n)]));
+            }
+        }
+    }
+
+    void blendingPlot()
+    {
+        CatmullRomTab tab;
+        QCOMPARE(tab.blendingPlot()->graphCount(), 4); // w0..w3 of the selected τ
+        QVERIFY(tab.loadExample(example("2.12")));
+        QVERIFY(tab.settings().allTausInPlot);
+        QCOMPARE(int(tab.settings().taus.size()), 4);
+        QCOMPARE(tab.blendingPlot()->graphCount(), 4 * 4 + 4); // and one legend key per τ
+        // Ex 2.12, τ = −2: w0 = 2t − 4t² + 2t³ … exactly in the panel.
+        const QString text = tab.exactPanel()->plainText();
+        for (const char* w : {"2t - 4t^2 + 2t^3", "1 - 5t^2 + 4t^3", "-2t + 7t^2 - 4t^3", "2t^2 - 2t^3", "1 - t^2",
+                              "2t - t^2"})
+            QVERIFY2(text.contains(QLatin1String(w)), w);
+        // Partition of unity in the plot: Σ_j w_j(t) = 1 for the first τ's four graphs.
+        for (int k = 0; k < 101; k += 10) {
+            double sum = 0;
+            for (int j = 0; j < 4; ++j)
+                sum += (tab.blendingPlot()->graph(j)->data()->begin() + k)->value;
+            QVERIFY(std::fabs(sum - 1) < 1e-12);
+        }
+    }
+
+    void exampleLoadIsOneUndoStep()
+    {
+        CatmullRomTab tab;
+        const auto points = tab.pointEditor()->points();
+        const auto settings = tab.settings();
+        const int count = tab.undoStack()->count();
+        QVERIFY(tab.loadExample(example("2.13")));
+        QCOMPARE(tab.undoStack()->count(), count + 1);
+        QVERIFY(tab.pointEditor()->points() != points);
+        tab.undoStack()->undo();
+        QCOMPARE(tab.pointEditor()->points(), points);
+        QVERIFY(tab.settings() == settings);
+        QVERIFY(!tab.loadExample(example("2.2"))); // not this tab's
+    }
+
+    void saveLoadRoundTrip()
+    {
+        CatmullRomTab tab;
+        QVERIFY(tab.loadExample(example("2.13")));
+        QVERIFY(tab.addTension(QStringLiteral("1/3")));
+        tab.setEnds(CatmullRomEnds::Closed);
+        tab.setSpacing(CatmullRomSpacing::Centripetal);
+        tab.setBezierVisible(true);
+        const QJsonObject saved = tab.saveState();
+        QCOMPARE(saved.value(QStringLiteral("taus")).toArray().last().toString(), QStringLiteral("1/3"));
+        // Through text, as a document would.
+        const QJsonObject reread = QJsonDocument::fromJson(QJsonDocument(saved).toJson()).object();
+
+        CatmullRomTab other;
+        QString error;
+        QVERIFY2(other.loadState(reread, &error), qPrintable(error));
+        QCOMPARE(other.pointEditor()->points(), tab.pointEditor()->points());
+        QVERIFY(other.settings() == tab.settings());
+        QCOMPARE(other.saveState(), saved);
+        QCOMPARE(other.exactPanel()->plainText(), tab.exactPanel()->plainText());
+        QCOMPARE(int(other.scene().bezier.size()), CatmullRomScene::kBezierSamples);
+    }
+
+    void loadStateRejectsGarbage_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::newRow("empty") << QByteArray("{}");
+        QTest::newRow("points not a list") << QByteArray("{\"points\": 7, \"taus\": [\"1/2\"]}");
+        QTest::newRow("one point") << QByteArray("{\"points\": [[1, 2]], \"taus\": [\"1/2\"]}");
+        QTest::newRow("nan point") << QByteArray("{\"points\": [[\"nan\", 1], [2, 3]], \"taus\": [\"1/2\"]}");
+        QTest::newRow("short point") << QByteArray("{\"points\": [[1], [2, 3]], \"taus\": [\"1/2\"]}");
+        QTest::newRow("tau out of range") << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": [\"11\"]}");
+        QTest::newRow("tau garbage") << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": [\"x\"]}");
+        QTest::newRow("no taus") << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": []}");
+        QTest::newRow("duplicate taus") << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": [\"1/2\", \"0.5\"]}");
+        QTest::newRow("bad mode") << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": [\"1/2\"], \"mode\": \"loop\"}");
+        QTest::newRow("bad selection")
+            << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": [\"1/2\"], \"selected_tau\": 3}");
+        QTest::newRow("bad flag") << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": [\"1/2\"], \"spline\": 2}");
+    }
+    void loadStateRejectsGarbage()
+    {
+        QFETCH(QByteArray, json);
+        CatmullRomTab tab;
+        QVERIFY(tab.addTension(QStringLiteral("3")));
+        const QJsonObject before = tab.saveState();
+        const QString panel = tab.exactPanel()->plainText();
+        QString error;
+        QVERIFY(!tab.loadState(QJsonDocument::fromJson(json).object(), &error));
+        QVERIFY(!error.isEmpty());
+        QCOMPARE(tab.saveState(), before);
+        QCOMPARE(tab.exactPanel()->plainText(), panel);
+    }
+
+    void stiffCases_data()
+    {
+        QTest::addColumn<double>("scale");
+        QTest::newRow("1e9") << 1e9;
+        QTest::newRow("1e-9") << 1e-9;
+        QTest::newRow("1") << 1.0;
+    }
+    void stiffCases()
+    {
+        QFETCH(double, scale);
+        CatmullRomTab tab;
+        showTab(tab);
+        // Duplicate points, huge or tiny coordinates, extreme tensions, every mode and the comparisons.
+        std::vector<Point> pts = {{0, 0}, {1 * scale, 2 * scale}, {1 * scale, 2 * scale}, {3 * scale, 0}, {4 * scale, scale}};
+        tab.pointEditor()->setPoints(pts, QStringLiteral("test"));
+        QVERIFY(tab.addTension(QStringLiteral("-10")));
+        QVERIFY(tab.addTension(QStringLiteral("10")));
+        tab.setBezierVisible(true);
+        tab.setSplineVisible(true); // x not strictly increasing (duplicate): refused with a message
+        QVERIFY(!tab.scene().splineError.isEmpty());
+        for (auto ends : {CatmullRomEnds::Open, CatmullRomEnds::Cyclic, CatmullRomEnds::Closed, CatmullRomEnds::Segment})
+            for (auto spacing : {CatmullRomSpacing::Uniform, CatmullRomSpacing::Centripetal, CatmullRomSpacing::Chordal}) {
+                tab.setEnds(ends);
+                tab.setSpacing(spacing);
+                QVERIFY(allFinite(tab.scene()));
+                for (const auto& c : tab.scene().curves)
+                    QVERIFY2(c.error.isEmpty(), qPrintable(c.error));
+                const QString text = tab.exactPanel()->plainText().toLower();
+                QVERIFY(!text.contains(QStringLiteral("nan")) && !text.contains(QStringLiteral("inf ")));
+            }
+        tab.fitView();
+        QImage image(400, 300, QImage::Format_ARGB32);
+        QPainter painter(&image);
+        tab.canvas()->render(painter, QRectF(0, 0, 400, 300)); // draws without crashing
+        QVERIFY(!tab.csv().contains(QStringLiteral("nan")));
+        QVERIFY(tab.tikz().contains(QStringLiteral("tikzpicture")));
+    }
+
+    void csvHasPointsThenSamples()
+    {
+        CatmullRomTab tab;
+        const QStringList lines = tab.csv().split(QLatin1Char('\n'));
+        QCOMPARE(lines[0], QStringLiteral("point,x,y"));
+        QCOMPARE(lines[1], QStringLiteral("q0,1,1"));
+        QVERIFY(lines.contains(QStringLiteral("tau,segment,t,x,y")));
+        // τ = 1/2, segment 2 (Ex 2.11's), t = 0 is q1 = (3, 4).
+        QVERIFY(lines.contains(QStringLiteral("1/2,2,0,3,4")));
+        const int rows = int(lines.filter(QRegularExpression(QStringLiteral("^(0|1/2|2),"))).size());
+        QCOMPARE(rows, 3 * 3 * CatmullRomScene::kSamplesPerSegment);
+    }
+};
+
+QTEST_MAIN(TestGuiCatmullRom)
+#include "test_gui_catmull_rom.moc"

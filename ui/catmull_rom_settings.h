@@ -1,0 +1,65 @@
+#pragma once
+/// \file catmull_rom_settings.h
+/// Everything the Catmull-Rom tab shows besides its points: the tensions τ, the end mode of
+/// Def 2.10, the knot spacing and the comparisons of §2.3. A plain value, so that an undo
+/// step can hold the settings before and after, and the document can save them.
+
+#include "core/catmull_rom.h"
+#include "core/rational.h"
+
+#include <QJsonObject>
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+namespace granota::ui {
+
+/// The end modes of the mode combo: Def 2.10's three (as the Matlab `Rep_CatmullRom`) and
+/// the single segment of Def 2.8 (only the segments that have both neighbours: with 4 points,
+/// the segment from q1 to q2 of Ex 2.11).
+enum class CatmullRomEnds { Open, Cyclic, Closed, Segment };
+
+/// Knot spacing h_i = |q_{i+1} − q_i|^α: the thesis's uniform spacing and two beyond it.
+enum class CatmullRomSpacing { Uniform, Centripetal, Chordal };
+
+struct CatmullRomSettings {
+    static constexpr int kMaxTensions = 10;      ///< one colour each (CanvasStyle::series)
+    static constexpr int kMaxTensionAbs = 10;    ///< SPEC §3: τ ∈ [−10, 10]
+    static constexpr int kMaxPoints = 200;       ///< SPEC §3 (soft bodies up to 200 sides)
+
+    std::vector<Rational> taus{Rational(0), frac(1, 2), Rational(2)}; ///< Ex 2.11's tensions
+    int selectedTau = 1;                         ///< the one the slider and the plot follow
+    CatmullRomEnds ends = CatmullRomEnds::Open;
+    CatmullRomSpacing spacing = CatmullRomSpacing::Uniform;
+    bool bezier = false;       ///< §2.3: the points as a Bézier control polygon too
+    bool spline = false;       ///< Def 2.3: the natural C² cubic spline through the points
+    bool compareEnds = false;  ///< Ex 2.13: the open and cyclic curves side by side
+    bool allTausInPlot = false;///< Ex 2.12: the blending functions of every τ
+
+    bool operator==(const CatmullRomSettings& o) const;
+    bool operator!=(const CatmullRomSettings& o) const { return !(*this == o); }
+};
+
+/// "open", "cyclic", "closed", "segment"; "uniform", "centripetal", "chordal".
+QString endsKey(CatmullRomEnds ends);
+std::optional<CatmullRomEnds> endsFromKey(const QString& key);
+QString spacingKey(CatmullRomSpacing spacing);
+std::optional<CatmullRomSpacing> spacingFromKey(const QString& key);
+/// α of the spacing: 0, 1/2, 1.
+double spacingAlpha(CatmullRomSpacing spacing);
+/// The core's mode for the ends (Segment uses the open curve's interior segments).
+CatmullRomMode coreMode(CatmullRomEnds ends);
+
+/// Why a typed tension is refused.
+enum class TensionProblem { None, NotANumber, OutOfRange };
+/// Reads "1/2", "-0.25", "−1/2" (Unicode minus too); nullopt with the problem otherwise.
+std::optional<Rational> parseTension(const QString& text, TensionProblem* problem = nullptr);
+
+/// The settings as JSON (taus as exact texts "1/2") and back. fromJson checks everything
+/// (known keys, τ in range, counts) and returns nullopt with `error` set (in English; the
+/// tab shows its own translated message) on bad data.
+void writeSettings(const CatmullRomSettings& s, QJsonObject& json);
+std::optional<CatmullRomSettings> readSettings(const QJsonObject& json, QString* problem);
+
+} // namespace granota::ui
