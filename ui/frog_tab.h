@@ -1,14 +1,28 @@
 #pragma once
 /// \file frog_tab.h
-/// The soft-body lab (frog) tab (SPEC §1).
+/// The soft-body lab (frog) tab (SPEC §1.5): the live canvas, the scene picker (every
+/// stage of chapter 4 and the future work of §5.2), the solver, pause / step / reset, the
+/// active scene's parameters applied live, and the overlays.
 
+#include "core/scene.h"
+#include "core/simulation.h"
 #include "ui/tab_page.h"
 
+#include <QJsonValue>
+
+class QCheckBox;
+class QComboBox;
+class QGroupBox;
+class QLabel;
+class QPushButton;
+class QRadioButton;
+class QScrollArea;
 class QUndoStack;
 
 namespace granota::ui {
 
-class CurveCanvas;
+class FrogCanvas;
+class FrogParametersPanel;
 
 class FrogTab : public TabPage {
     Q_OBJECT
@@ -25,6 +39,7 @@ public:
     Drawable* exportView() override;
     QString csv() const override;
     QString tikz() const override;
+    void setPresentation(bool on) override;
 
     /// Opens scene `name` of SPEC §1.5 (`--scene`). False with a message for an unknown name.
     bool setScene(const QString& name, QString* error);
@@ -32,9 +47,54 @@ public:
     /// stepping the simulation at the canvas's fixed step. Empty on success, else a message.
     QString exportFrames(const QString& directory, int frames);
 
+    /// The solver (rebuilds the scene on it). False with a message when the core refuses.
+    bool setSolver(SolverKind solver, QString* error);
+    SolverKind solver() const { return m_solver; }
+    QString sceneName() const { return QString::fromStdString(m_scene.name); }
+    const SceneSpec& scene() const { return m_scene; }
+    /// Edits parameter `key` (SPEC §6 name) to `value` in the scene file's form, live and
+    /// undoable (the parameter panel does this). False with a message when the core refuses.
+    bool editParameter(const QString& key, const QJsonValue& value, QString* error);
+    /// Sets `key` without an undo step (the undo commands call it).
+    bool applyParameter(const QString& key, const QJsonValue& value, QString* error);
+    /// Builds the scene again from its parameters (Reset).
+    void reset();
+
+    FrogCanvas* canvas() const { return m_canvas; }
+    FrogParametersPanel* parametersPanel() const { return m_params; }
+
+protected:
+    void changeEvent(QEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
+    void fitSidePanel();
+    bool rebuild(const SceneSpec& scene, SolverKind solver, QString* error);
+    void showScene();
+    void sceneChosen(int index);
+    void solverChosen(int index);
+    void overlaysChanged();
+    void setPaused(bool paused);
+    void stepOnce();
+    void showRefusal(const QString& message);
+    QString sceneTitle(const QString& name) const;
+    QString sceneDescription(const QString& name) const;
+    QString sceneHint() const;
+
     QUndoStack* m_undo;
-    CurveCanvas* m_canvas;
+    FrogCanvas* m_canvas;
+    FrogParametersPanel* m_params;
+    SceneSpec m_scene;
+    SolverKind m_solver = SolverKind::Seed;
+
+    QScrollArea* m_scroll = nullptr;
+    QWidget* m_side = nullptr;
+    QGroupBox *m_sceneBox, *m_bezierBox, *m_paramBox, *m_overlayBox;
+    QLabel *m_sceneLabel, *m_description, *m_solverLabel, *m_hint, *m_note, *m_fitCost;
+    QComboBox *m_sceneCombo, *m_solverCombo;
+    QPushButton *m_pause, *m_step, *m_reset;
+    QRadioButton *m_precomputed, *m_fit;
+    QCheckBox *m_showVertices, *m_showSprings, *m_showArea, *m_showVelocities, *m_showReadouts, *m_showFrameTime;
 };
 
 } // namespace granota::ui

@@ -1,0 +1,419 @@
+// The frog lab tab (SPEC §1.5): stepping, grabbing and spawning through the canvas's own
+// mouse and key events, the scene's own parameters applied live and undoably, every scene on
+// both solvers, the frame export and the document round trip.
+#include "core/simulation.h"
+#include "ui/frog_canvas.h"
+#include "ui/frog_parameters_panel.h"
+#include "ui/frog_tab.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QImage>
+#include <QJsonArray>
+#include <QPainter>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QSet>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace granota;
+using namespace granota::ui;
+
+Q_DECLARE_METATYPE(granota::SolverKind)
+
+namespace {
+
+Point centroid(const Simulation& sim, int body = 0)
+{
+    std::vector<Point> v;
+    sim.bodyVertices(body, v);
+    Point c(0, 0);
+    for (const Point& p : v)
+        c += p;
+    return Point(c.x / v.size(), c.y / v.size());
+}
+
+void steps(FrogTab& tab, int n)
+{
+    for (int i = 0; i < n; ++i)
+        tab.canvas()->step();
+}
+
+/// How many different colours a coarse grid of the image has: a drawn scene has many.
+int colours(const QImage& image)
+{
+    QSet<QRgb> seen;
+    for (int y = 0; y < image.height(); y += 7)
+        for (int x = 0; x < image.width(); x += 7)
+            seen.insert(image.pixel(x, y));
+    return seen.size();
+}
+
+} // namespace
+
+class TestGuiFrog : public QObject {
+    Q_OBJECT
+
+    std::unique_ptr<FrogTab> m_tab;
+
+    FrogTab& tab() { return *m_tab; }
+
+private slots:
+    void init()
+    {
+        m_tab = std::make_unique<FrogTab>();
+        m_tab->resize(1280, 760);
+        m_tab->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_tab.get()));
+    }
+    void cleanup() { m_tab.reset(); }
+
+    void startsOnTheFrogWithTheSeed()
+    {
+        QCOMPARE(tab().sceneName(), QStringLiteral("frog"));
+        QCOMPARE(tab().solver(), SolverKind::Seed);
+        QVERIFY(tab().parametersPanel()->keys().contains("legs"));
+        auto* combo = tab().findChild<QComboBox*>("frogScene");
+        QVERIFY(combo);
+        QCOMPARE(combo->count(), 18);
+        QCOMPARE(combo->itemText(0), QStringLiteral("4.1 Polygon and mouse"));
+        QCOMPARE(combo->itemText(14), QStringLiteral("4.16 The frog"));
+        QCOMPARE(combo->itemText(17), QStringLiteral("5.2.3 Other shapes"));
+        QCOMPARE(combo->currentData().toString(), QStringLiteral("frog"));
+    }
+
+    void stepButtonAdvancesExactlyOneStep()
+    {
+        QVERIFY(tab().setScene("gravity", nullptr));
+        auto* pause = tab().findChild<QPushButton*>("frogPause");
+        auto* step = tab().findChild<QPushButton*>("frogStep");
+        QVERIFY(pause && step);
+        pause->click();
+        QVERIFY(!tab().canvas()->running());
+        QVERIFY(!tab().canvas()->animating());
+        Simulation* sim = tab().canvas()->simulation();
+        const long before = sim->stepCount();
+        const Point start = centroid(*sim);
+        step->click();
+        QCOMPARE(sim->stepCount(), before + 1);
+        QTest::qWait(100); // paused: the timer adds nothing
+        QCOMPARE(sim->stepCount(), before + 1);
+        for (int i = 0; i < 40; ++i)
+            step->click();
+        QCOMPARE(sim->stepCount(), before + 41);
+        QVERIFY2(centroid(*sim).y > start.y + 50, "the polygon falls under gravity (§4.2)");
+
+        // Running again: the 60 Hz timer drives the steps.
+        pause->click();
+        QVERIFY(tab().canvas()->running());
+        QVERIFY(tab().canvas()->animating());
+        QTRY_VERIFY(sim->stepCount() > before + 41 + 5);
+    }
+
+    void hiddenTabStopsTheTimer()
+    {
+        QVERIFY(tab().canvas()->animating());
+        tab().hide();
+        QVERIFY(!tab().canvas()->animating());
+        tab().show();
+        QVERIFY(tab().canvas()->animating());
+    }
+
+    void mouseGrabMovesTheBody_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<SolverKind>("solver");
+        QTest::newRow("frog seed") << "frog" << SolverKind::Seed;
+        QTest::newRow("frog stable") << "frog" << SolverKind::Stable;
+        QTest::newRow("verlet seed") << "verlet" << SolverKind::Seed;
+    }
+    void mouseGrabMovesTheBody()
+    {
+        QFETCH(QString, scene);
+        QFETCH(SolverKind, solver);
+        QVERIFY(tab().setScene(scene, nullptr));
+        QVERIFY(tab().setSolver(solver, nullptr));
+        tab().findChild<QPushButton*>("frogPause")->click();
+        steps(tab(), 200); // on the floor
+        FrogCanvas* canvas = tab().canvas();
+        Simulation* sim = canvas->simulation();
+        const Point start = centroid(*sim);
+        const QPoint at = canvas->toWidget(start).toPoint();
+        QTest::mouseMove(canvas, at);
+        QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, at);
+        QVERIFY(sim->grabbing());
+        for (int i = 1; i <= 30; ++i) {
+            const Point mouse(start.x + 150.0 * i / 30, start.y - 250.0 * i / 30);
+            QTest::mouseMove(canvas, canvas->toWidget(mouse).toPoint());
+            steps(tab(), 3);
+        }
+        steps(tab(), 60);
+        const Point held = centroid(*sim);
+        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, canvas->toWidget(Point(start.x + 150, start.y - 250)).toPoint());
+        QVERIFY(!sim->grabbing());
+        QVERIFY2(held.x > start.x + 100, qPrintable(QString("centroid x %1 → %2").arg(start.x).arg(held.x)));
+        QVERIFY2(held.y < start.y - 80, qPrintable(QString("centroid y %1 → %2").arg(start.y).arg(held.y)));
+        QVERIFY(sim->finite());
+    }
+
+    void grabbingOutsideTheWindowIsSafe()
+    {
+        tab().findChild<QPushButton*>("frogPause")->click();
+        steps(tab(), 150);
+        FrogCanvas* canvas = tab().canvas();
+        Simulation* sim = canvas->simulation();
+        const QPoint at = canvas->toWidget(centroid(*sim)).toPoint();
+        QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, at);
+        QVERIFY(sim->grabbing());
+        for (const QPoint p : {QPoint(-3000, -2000), QPoint(50000, 40), QPoint(10, 90000)}) {
+            QTest::mouseMove(canvas, p);
+            steps(tab(), 20);
+        }
+        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, QPoint(10, 90000));
+        steps(tab(), 100);
+        QVERIFY(sim->finite());
+        QVERIFY(sim->inBounds(1.0));
+    }
+
+    void spaceSpawnsAFrogHeldAtTheMouse()
+    {
+        tab().findChild<QPushButton*>("frogPause")->click();
+        steps(tab(), 100);
+        FrogCanvas* canvas = tab().canvas();
+        Simulation* sim = canvas->simulation();
+        QVERIFY(centroid(*sim).y > 450); // fallen
+        QTest::mouseMove(canvas, canvas->toWidget(Point(300, 200)).toPoint());
+        QTest::keyPress(canvas, Qt::Key_Space);
+        QVERIFY(sim->grabbing());
+        steps(tab(), 60);
+        const Point held = centroid(*sim);
+        QVERIFY2(std::abs(held.x - 300) < 80 && held.y < 330, qPrintable(QString("%1, %2").arg(held.x).arg(held.y)));
+        QTest::keyRelease(canvas, Qt::Key_Space);
+        QVERIFY(!sim->grabbing());
+        steps(tab(), 300);
+        QVERIFY(centroid(*sim).y > 450); // let go, it falls again
+    }
+
+    void panelShowsOnlyTheScenesParameters()
+    {
+        QVERIFY(tab().setScene("gravity", nullptr));
+        QStringList keys = tab().parametersPanel()->keys();
+        QVERIFY(keys.contains("gravity"));
+        QVERIFY(!keys.contains("spring_length"));
+        QVERIFY(!keys.contains("legs"));
+        QVERIFY(tab().parametersPanel()->spinBox("gravity", 1));
+        QVERIFY(!tab().parametersPanel()->spinBox("spring_length"));
+        QCOMPARE(tab().findChild<QComboBox*>("frogScene")->currentData().toString(), QStringLiteral("gravity"));
+
+        QVERIFY(tab().setScene("frog", nullptr));
+        keys = tab().parametersPanel()->keys();
+        QVERIFY(keys.contains("legs"));
+        QVERIFY(keys.contains("angle_limits"));
+        QVERIFY(tab().parametersPanel()->spinBox("legs", 3)); // front upper, lower, back upper, lower
+        QVERIFY(!keys.contains("bodies"));
+        // Angle limits are shown in degrees: Annex II's π/12 at the front elbows is 15°.
+        QDoubleSpinBox* elbowFront = tab().parametersPanel()->spinBox("angle_limits", 9);
+        QVERIFY(elbowFront);
+        QCOMPARE(elbowFront->value(), 15.0);
+
+        QVERIFY(tab().setScene("pendulum-chain", nullptr));
+        QCOMPARE(tab().parametersPanel()->keys(), (QStringList{"center", "width", "height", "chain"}));
+
+        QString error;
+        QVERIFY(!tab().setScene("dragon", &error));
+        QVERIFY(error.contains("dragon"));
+        QCOMPARE(tab().sceneName(), QStringLiteral("pendulum-chain"));
+    }
+
+    void parameterAppliesLiveAndUndoes()
+    {
+        QVERIFY(tab().setScene("verlet", nullptr));
+        tab().findChild<QPushButton*>("frogPause")->click();
+        QDoubleSpinBox* gy = tab().parametersPanel()->spinBox("gravity", 1);
+        QVERIFY(gy);
+        gy->setValue(0); // as the user does: the panel applies it to the running scene
+        QCOMPARE(tab().scene().params.gravity.y, 0.0);
+        Simulation* sim = tab().canvas()->simulation();
+        steps(tab(), 150);
+        const double floating = centroid(*sim).y;
+        QVERIFY2(floating < 370, qPrintable(QString::number(floating))); // no gravity: it does not fall
+
+        QCOMPARE(tab().undoStack()->count(), 1);
+        tab().undoStack()->undo();
+        QCOMPARE(tab().scene().params.gravity.y, 0.75);
+        QCOMPARE(tab().parametersPanel()->spinBox("gravity", 1)->value(), 0.75);
+        sim = tab().canvas()->simulation();
+        steps(tab(), 150);
+        QVERIFY(centroid(*sim).y > 500); // gravity again: on the floor
+
+        // A refused value: a message, nothing changed, no undo step.
+        QString error;
+        QVERIFY(!tab().editParameter("sides", 2, &error));
+        QVERIFY(!error.isEmpty());
+        QCOMPARE(tab().scene().params.sides, 10);
+        QVERIFY(!tab().editParameter("legs", QJsonArray{1, 2}, &error)); // verlet has no legs
+        QCOMPARE(tab().undoStack()->count(), 1);
+    }
+
+    void extremeValuesStayFinite_data()
+    {
+        QTest::addColumn<QString>("key");
+        QTest::addColumn<QJsonValue>("value");
+        QTest::addColumn<SolverKind>("solver");
+        const std::pair<const char*, QJsonValue> cases[] = {
+            {"sides", 3},           {"sides", 200},         {"target_area", 0},       {"target_area", 1e9},
+            {"area_factor", 1e5},   {"gravity", QJsonArray{0, 1e5}}, {"velmax", 1e9}, {"spring_length", 0},
+        };
+        for (SolverKind k : {SolverKind::Seed, SolverKind::Stable})
+            for (const auto& [key, value] : cases)
+                QTest::newRow(qPrintable(QString("%1=%2 %3")
+                                             .arg(key, value.isArray() ? QString("0,1e5") : QString::number(value.toDouble()),
+                                                  QString::fromStdString(solverName(k)))))
+                    << QString(key) << value << k;
+    }
+    void extremeValuesStayFinite()
+    {
+        QFETCH(QString, key);
+        QFETCH(QJsonValue, value);
+        QFETCH(SolverKind, solver);
+        QVERIFY(tab().setScene("tuned", nullptr));
+        QVERIFY(tab().setSolver(solver, nullptr));
+        tab().findChild<QPushButton*>("frogPause")->click();
+        QString error;
+        QVERIFY2(tab().editParameter(key, value, &error), qPrintable(error));
+        steps(tab(), 200);
+        QVERIFY(tab().canvas()->simulation()->finite());
+        QImage image(320, 180, QImage::Format_ARGB32_Premultiplied);
+        QPainter p(&image);
+        tab().canvas()->render(p, QRectF(0, 0, 320, 180));
+    }
+
+    void everySceneOnBothSolvers_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<SolverKind>("solver");
+        for (const std::string& name : sceneNames())
+            for (SolverKind k : {SolverKind::Seed, SolverKind::Stable})
+                QTest::newRow(qPrintable(QString::fromStdString(name + " " + solverName(k))))
+                    << QString::fromStdString(name) << k;
+    }
+    void everySceneOnBothSolvers()
+    {
+        QFETCH(QString, scene);
+        QFETCH(SolverKind, solver);
+        QVERIFY(tab().setScene(scene, nullptr));
+        QVERIFY(tab().setSolver(solver, nullptr));
+        QCOMPARE(tab().solver(), solver);
+        tab().findChild<QPushButton*>("frogPause")->click();
+        for (int i = 0; i < 6; ++i) // every overlay drawn too
+            tab().findChild<QCheckBox*>(QString("frogOverlay%1").arg(i))->setChecked(true);
+        FrogCanvas* canvas = tab().canvas();
+        QTest::mouseMove(canvas, canvas->toWidget(Point(500, 300)).toPoint()); // the pendulums follow it
+        steps(tab(), 300);
+        QCOMPARE(canvas->simulation()->stepCount(), 300L);
+        QVERIFY(canvas->simulation()->finite());
+        QImage image(640, 360, QImage::Format_ARGB32_Premultiplied);
+        image.fill(Qt::black);
+        {
+            QPainter p(&image);
+            canvas->render(p, QRectF(0, 0, 640, 360));
+        }
+        QVERIFY(colours(image) > 20);
+        QVERIFY(!tab().csv().isEmpty());
+        QVERIFY(tab().tikz().contains("tikzpicture"));
+    }
+
+    void bezierScenesSwitchToThePerFrameFit()
+    {
+        QVERIFY(tab().setScene("bezier", nullptr));
+        FrogCanvas* canvas = tab().canvas();
+        const std::size_t precomputed = canvas->bodyOutline(0).size();
+        QCOMPARE(precomputed, std::size_t(tab().scene().bezierSamples)); // the body is the samples
+        auto* fit = tab().findChild<QRadioButton*>("frogBezierFit");
+        QVERIFY(fit && fit->isVisibleTo(&tab()));
+        fit->setChecked(true);
+        QCOMPARE(canvas->bezierOutline(), FrogCanvas::BezierOutline::Fit);
+        const std::size_t fitted = canvas->bodyOutline(0).size();
+        QVERIFY(fitted > precomputed); // the fitted curve, sampled finely
+        QVERIFY(tab().saveState().value("bezier_outline").toString() == "fit");
+        QVERIFY(tab().setScene("frog", nullptr));
+        QVERIFY(!tab().findChild<QRadioButton*>("frogBezierFit")->isVisibleTo(&tab()));
+    }
+
+    void exportFramesWritesPngs()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const long before = tab().canvas()->simulation()->stepCount();
+        tab().findChild<QPushButton*>("frogPause")->click();
+        QCOMPARE(tab().exportFrames(dir.path() + "/frames", 4), QString());
+        for (int i = 0; i < 4; ++i) {
+            QImage image(dir.path() + QString("/frames/frame_%1.png").arg(i, 4, 10, QChar('0')));
+            QVERIFY(!image.isNull());
+            QCOMPARE(image.size(), tab().canvas()->size());
+        }
+        QVERIFY(!QFile::exists(dir.path() + "/frames/frame_0004.png"));
+        QVERIFY(tab().canvas()->simulation()->stepCount() >= before + 3); // one step between frames
+        QVERIFY(!tab().exportFrames(dir.path(), 0).isEmpty());
+    }
+
+    void saveLoadRoundTrip()
+    {
+        QVERIFY(tab().setScene("pendulum-limits", nullptr));
+        QVERIFY(tab().setSolver(SolverKind::Stable, nullptr));
+        QVERIFY(tab().editParameter("chain", QJsonArray{70, 95}, nullptr));
+        tab().findChild<QCheckBox*>("frogOverlay2")->setChecked(true);
+        const QJsonObject saved = tab().saveState();
+
+        QVERIFY(tab().setScene("frog", nullptr));
+        QVERIFY(tab().setSolver(SolverKind::Seed, nullptr));
+        tab().findChild<QCheckBox*>("frogOverlay2")->setChecked(false);
+        QString error;
+        QVERIFY2(tab().loadState(saved, &error), qPrintable(error));
+        QCOMPARE(tab().sceneName(), QStringLiteral("pendulum-limits"));
+        QCOMPARE(tab().solver(), SolverKind::Stable);
+        QCOMPARE(tab().scene().chain, (std::vector<double>{70, 95}));
+        QVERIFY(tab().canvas()->overlays().area);
+        QVERIFY(tab().findChild<QCheckBox*>("frogOverlay2")->isChecked());
+        QCOMPARE(tab().parametersPanel()->spinBox("chain", 1)->value(), 95.0);
+        QCOMPARE(tab().saveState(), saved);
+
+        // Bad states: refused with a message, the tab unchanged.
+        QJsonObject bad = saved;
+        bad["scene"] = "dragon";
+        QVERIFY(!tab().loadState(bad, &error));
+        QVERIFY(error.contains("dragon"));
+        bad = saved;
+        bad["solver"] = "magic";
+        QVERIFY(!tab().loadState(bad, &error));
+        bad = saved;
+        bad["params"] = QJsonObject{{"sides", 10}}; // the pendulum has no sides
+        QVERIFY(!tab().loadState(bad, &error));
+        bad = saved;
+        bad["params"] = QJsonObject{{"width", 0}};
+        QVERIFY(!tab().loadState(bad, &error));
+        bad = saved;
+        bad["overlays"] = QJsonObject{{"area", "yes"}};
+        QVERIFY(!tab().loadState(bad, &error));
+        QCOMPARE(tab().saveState(), saved);
+    }
+
+    void tinyWindowIsSafe()
+    {
+        tab().resize(30, 20);
+        QTest::qWait(50);
+        FrogCanvas* canvas = tab().canvas();
+        canvas->resize(3, 2);
+        QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, QPoint(1, 1));
+        QTest::mouseMove(canvas, QPoint(2, 1));
+        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, QPoint(2, 1));
+        canvas->repaint();
+        QVERIFY(canvas->simulation()->finite());
+    }
+};
+
+QTEST_MAIN(TestGuiFrog)
+#include "test_gui_frog.moc"
