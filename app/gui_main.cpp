@@ -75,10 +75,8 @@ int main(int argc, char* argv[])
 
     if (screenshot) {
         window.resize(1280, 800);
-        if (parser.isSet(presentOption)) {
-            window.setPresentation(true);
-            window.resize(1280, 800);
-        }
+        if (parser.isSet(presentOption))
+            window.setPresentation(true, false);
         window.show();
         for (int i = 0; i < 5; ++i) // let layouts settle and the frog canvas draw a few frames
             QApplication::processEvents();

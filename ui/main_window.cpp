@@ -10,6 +10,7 @@
 #include "ui/frog_tab.h"
 #include "ui/language.h"
 #include "ui/tab_page.h"
+#include "ui/work_precision_panel.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -25,6 +26,7 @@
 #include <QMessageBox>
 #include <QSaveFile>
 #include <QSettings>
+#include <QSplitter>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTabWidget>
@@ -35,6 +37,20 @@
 namespace granota::ui {
 
 namespace {
+/// Which work-precision reports (work_precision.h) belong to which tab.
+std::vector<std::string> reportsOf(const QString& key)
+{
+    if (key == QLatin1String("decasteljau"))
+        return {"curve-sampling", "bezier-evaluation"};
+    if (key == QLatin1String("bernstein"))
+        return {"bezier-evaluation"};
+    if (key == QLatin1String("fit"))
+        return {"least-squares"};
+    if (key == QLatin1String("catmull-rom"))
+        return {"curve-sampling"};
+    return {"integrators", "soft-body"};
+}
+
 constexpr int kMaxRecent = 8;
 constexpr int kAutosaveMs = 20000;
 constexpr double kPresentationFont = 1.5; ///< font scale in presentation mode
@@ -51,15 +67,30 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
                new FrogTab(this)};
     m_undoGroup = new QUndoGroup(this);
     for (TabPage* page : m_pages) {
-        m_tabs->addTab(page, page->title());
+        // Below every tab, its work-precision section (SPEC §2), collapsed until View ▸ Error
+        // against run time opens it.
+        auto* splitter = new QSplitter(Qt::Vertical, this);
+        auto* report = new WorkPrecisionPanel(reportsOf(page->key()), splitter);
+        splitter->addWidget(page);
+        splitter->addWidget(report);
+        splitter->setCollapsible(0, false);
+        splitter->setStretchFactor(0, 3);
+        splitter->setStretchFactor(1, 2);
+        report->hide();
+        m_splitters.push_back(splitter);
+        m_reports.push_back(report);
+        m_tabs->addTab(splitter, page->title());
         m_undoGroup->addStack(page->undoStack());
         connect(page, &TabPage::documentChanged, this, [this] { setModified(true); });
         connect(page, &TabPage::statusMessage, this, &MainWindow::showMessage);
     }
     m_tabs->setDocumentMode(true);
     connect(m_tabs, &QTabWidget::currentChanged, this, [this](int index) {
-        if (index >= 0 && index < m_pages.size())
+        if (index >= 0 && index < m_pages.size()) {
             m_undoGroup->setActiveStack(m_pages[index]->undoStack());
+            if (m_reportsAction)
+                m_reportsAction->setChecked(!m_reports[index]->isHidden());
+        }
     });
     m_undoGroup->setActiveStack(m_pages.front()->undoStack());
     setCentralWidget(m_tabs);
@@ -165,10 +196,15 @@ void MainWindow::createActions()
     m_redo = m_undoGroup->createRedoAction(this);
     m_redo->setShortcuts({QKeySequence::Redo, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)});
 
+    m_reportsAction = new QAction(this);
+    m_reportsAction->setCheckable(true);
+    m_reportsAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
+    connect(m_reportsAction, &QAction::toggled, this, &MainWindow::setWorkPrecisionVisible);
+
     m_presentationAction = new QAction(this);
     m_presentationAction->setCheckable(true);
     m_presentationAction->setShortcuts({QKeySequence(Qt::Key_F11), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P)});
-    connect(m_presentationAction, &QAction::toggled, this, &MainWindow::setPresentation);
+    connect(m_presentationAction, &QAction::toggled, this, [this](bool on) { setPresentation(on); });
     m_zoomIn = new QAction(this);
     m_zoomIn->setShortcuts({QKeySequence::ZoomIn, QKeySequence(Qt::CTRL | Qt::Key_Equal)});
     connect(m_zoomIn, &QAction::triggered, this, [this] {
@@ -244,6 +280,7 @@ void MainWindow::createMenus()
 
     m_viewMenu = menuBar()->addMenu(QString());
     m_viewMenu->addAction(m_presentationAction);
+    m_viewMenu->addAction(m_reportsAction);
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(m_zoomIn);
     m_viewMenu->addAction(m_zoomOut);
@@ -287,6 +324,9 @@ void MainWindow::retranslate()
     m_viewMenu->setTitle(tr("&View"));
     m_presentationAction->setText(tr("&Presentation mode"));
     m_presentationAction->setToolTip(tr("Full screen, larger text and thicker lines for the classroom."));
+    m_reportsAction->setText(tr("&Error against run time"));
+    m_reportsAction->setToolTip(tr("Show, below the tab, how accurate each numerical method is for the time it "
+                                   "takes (work-precision plot)."));
     m_zoomIn->setText(tr("Zoom &in"));
     m_zoomOut->setText(tr("Zoom &out"));
     m_fit->setText(tr("&Fit to view"));
@@ -603,7 +643,7 @@ void MainWindow::exportFramesDialog()
 
 // ---------------------------------------------------------------- classroom
 
-void MainWindow::setPresentation(bool on)
+void MainWindow::setPresentation(bool on, bool fullScreen)
 {
     if (on == m_presentation)
         return;
@@ -616,10 +656,40 @@ void MainWindow::setPresentation(bool on)
     QApplication::setFont(font);
     for (TabPage* page : m_pages)
         page->setPresentation(on);
-    if (on)
+    for (WorkPrecisionPanel* report : m_reports)
+        report->setPresentation(on);
+    if (on && fullScreen)
         showFullScreen();
-    else
+    else if (!on && isFullScreen())
         showNormal();
+}
+
+WorkPrecisionPanel* MainWindow::workPrecisionPanel(const QString& key) const
+{
+    for (int i = 0; i < m_pages.size(); ++i)
+        if (m_pages[i]->key() == key)
+            return m_reports[i];
+    return nullptr;
+}
+
+void MainWindow::setWorkPrecisionVisible(bool visible)
+{
+    const int index = m_tabs->currentIndex();
+    if (index < 0)
+        return;
+    m_reports[index]->setVisible(visible);
+    if (visible) {
+        const int total = m_splitters[index]->height();
+        m_splitters[index]->setSizes({total * 3 / 5, total * 2 / 5});
+    }
+    if (m_reportsAction->isChecked() != visible)
+        m_reportsAction->setChecked(visible);
+}
+
+bool MainWindow::workPrecisionVisible() const
+{
+    const int index = m_tabs->currentIndex();
+    return index >= 0 && !m_reports[index]->isHidden();
 }
 
 void MainWindow::showMessage(const QString& text) { statusBar()->showMessage(text, 8000); }

@@ -12,6 +12,7 @@ class QAction;
 class QActionGroup;
 class QLabel;
 class QMenu;
+class QSplitter;
 class QTabWidget;
 class QTimer;
 class QUndoGroup;
@@ -20,6 +21,7 @@ namespace granota::ui {
 
 class TabPage;
 class FrogTab;
+class WorkPrecisionPanel;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
@@ -46,7 +48,14 @@ public:
     /// Exports the current tab's view: format png, svg, pdf, csv or tikz. Empty or a message.
     QString exportCurrent(const QString& format, const QString& file, int dpi = 96);
 
-    void setPresentation(bool on);
+    /// Presentation mode: larger text and lines; `fullScreen` false keeps the window's size
+    /// (screenshots of presentation mode at 1280×800).
+    void setPresentation(bool on, bool fullScreen = true);
+
+    /// The work-precision section below each tab (SPEC §2), hidden until asked for.
+    WorkPrecisionPanel* workPrecisionPanel(const QString& key) const;
+    void setWorkPrecisionVisible(bool visible);
+    bool workPrecisionVisible() const;
     bool presentation() const { return m_presentation; }
 
     /// Where the autosave goes (under the application's data directory).
@@ -80,6 +89,8 @@ private:
 
     QTabWidget* m_tabs = nullptr;
     QVector<TabPage*> m_pages;
+    QVector<WorkPrecisionPanel*> m_reports; ///< one per tab, below it in a splitter
+    QVector<QSplitter*> m_splitters;
     QUndoGroup* m_undoGroup = nullptr;
     QLabel* m_cursorLabel = nullptr;
     QTimer* m_autosaveTimer = nullptr;
@@ -95,6 +106,7 @@ private:
     QAction *m_exportPng = nullptr, *m_exportSvg = nullptr, *m_exportPdf = nullptr, *m_exportCsv = nullptr,
             *m_exportTikz = nullptr, *m_exportFrames = nullptr;
     QAction *m_undo = nullptr, *m_redo = nullptr;
+    QAction* m_reportsAction = nullptr;
     QAction *m_presentationAction = nullptr, *m_zoomIn = nullptr, *m_zoomOut = nullptr, *m_fit = nullptr;
     QAction *m_catalan = nullptr, *m_english = nullptr;
     QAction *m_guide = nullptr, *m_about = nullptr;

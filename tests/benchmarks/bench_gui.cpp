@@ -1,0 +1,85 @@
+// Google Benchmark: what a user feels (issue: speed). A drag on a degree-30 curve in the
+// De Casteljau tab — the tab's recomputation (curve, levels, table, panel) and a repaint of
+// the canvas at 1280×760 — must fit in one frame (16.7 ms at 60 Hz); and a frame of the frog
+// canvas with 200 frogs — one step and one paint — too.
+//   QT_QPA_PLATFORM=offscreen build/bin/granota-bench --benchmark_filter=Gui
+#include "core/scene.h"
+#include "core/simulation.h"
+#include "ui/curve_canvas.h"
+#include "ui/decasteljau_tab.h"
+#include "ui/frog_canvas.h"
+#include "ui/point_editor.h"
+
+#include <QApplication>
+#include <QImage>
+#include <QPainter>
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+using namespace granota;
+using namespace granota::ui;
+
+namespace {
+
+/// The widgets need an application; the benchmark runs headless.
+void ensureApplication()
+{
+    static int argc = 1;
+    static char name[] = "granota-bench";
+    static char* argv[] = {name, nullptr};
+    if (!QCoreApplication::instance()) {
+        if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+            qputenv("QT_QPA_PLATFORM", "offscreen");
+        new QApplication(argc, argv); // lives until the process ends
+    }
+}
+
+void BM_GuiDragDegree30(benchmark::State& state)
+{
+    ensureApplication();
+    DeCasteljauTab tab;
+    tab.resize(1280, 760);
+    tab.show();
+    QCoreApplication::processEvents();
+    std::vector<Point> points;
+    for (int i = 0; i <= 30; ++i)
+        points.emplace_back(i, 4 * std::sin(i * 0.7));
+    tab.pointEditor()->setPoints(points, QStringLiteral("bench"));
+    QImage image(tab.canvas()->size(), QImage::Format_ARGB32_Premultiplied);
+    int frame = 0;
+    for (auto _ : state) {
+        points[15].y += (frame++ % 2) ? 0.05 : -0.05; // the mouse moved
+        tab.pointEditor()->applyPoints(points);      // what a drag does on each move
+        QPainter painter(&image);
+        tab.canvas()->render(painter, QRectF(image.rect()));
+    }
+    state.counters["frame_budget_ms"] = 1000.0 / 60.0;
+}
+
+void BM_GuiFrog200(benchmark::State& state)
+{
+    ensureApplication();
+    auto scene = withBodies(*loadScene("many-bodies"), 200);
+    FrogCanvas canvas;
+    canvas.resize(1280, 760);
+    canvas.setSimulation(std::move(Simulation::create(*scene, SolverKind::Stable)).value());
+    canvas.setRunning(false);
+    canvas.show();
+    QCoreApplication::processEvents();
+    QImage image(canvas.size(), QImage::Format_ARGB32_Premultiplied);
+    for (int i = 0; i < 60; ++i)
+        canvas.step(); // let them fall and meet
+    for (auto _ : state) {
+        canvas.step();
+        QPainter painter(&image);
+        canvas.render(painter, QRectF(image.rect()));
+    }
+    state.counters["frame_budget_ms"] = 1000.0 / 60.0;
+}
+
+} // namespace
+
+BENCHMARK(BM_GuiDragDegree30)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GuiFrog200)->Unit(benchmark::kMillisecond);

@@ -1,0 +1,462 @@
+// The main window as a whole (issue: the application): every tab present, every worked
+// example loads into its tab, documents round-trip, exports are valid files, a live
+// language switch retranslates every visible text, autosave and presentation mode, and the
+// command-line options of SPEC §5 on the real binary.
+#include "ui/drawable.h"
+#include "ui/exporter.h"
+#include "ui/document.h"
+#include "ui/language.h"
+#include "ui/main_window.h"
+#include "ui/tab_page.h"
+#include "ui/work_precision_panel.h"
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QDir>
+#include <QFile>
+#include <QGroupBox>
+#include <QImage>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QStandardPaths>
+#include <QSignalSpy>
+#include <QSvgRenderer>
+#include <QTabWidget>
+#include <QTableWidget>
+#include <QHeaderView>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QXmlStreamReader>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <map>
+
+using granota::ui::MainWindow;
+using granota::ui::TabPage;
+
+namespace {
+
+const QStringList kTabs = {QStringLiteral("decasteljau"), QStringLiteral("bernstein"), QStringLiteral("fit"),
+                           QStringLiteral("catmull-rom"), QStringLiteral("frog")};
+
+/// Every user-visible text of the window, keyed by where it is: widget texts, titles,
+/// tooltips, placeholders, combo items, table headers, tab titles, menu and action texts.
+std::map<QString, QString> visibleTexts(MainWindow& window)
+{
+    std::map<QString, QString> texts;
+    auto add = [&texts](const QString& where, const QString& text) {
+        QString t = text;
+        t.remove(QLatin1Char('&'));
+        if (!t.trimmed().isEmpty())
+            texts[where] = t;
+    };
+    int counter = 0;
+    for (QWidget* w : window.findChildren<QWidget*>()) {
+        const QString id = QStringLiteral("%1#%2").arg(QString::fromLatin1(w->metaObject()->className())).arg(counter++);
+        add(id + QStringLiteral(".toolTip"), w->toolTip());
+        if (auto* l = qobject_cast<QLabel*>(w))
+            add(id + QStringLiteral(".text"), l->text());
+        if (auto* b = qobject_cast<QAbstractButton*>(w))
+            add(id + QStringLiteral(".text"), b->text());
+        if (auto* g = qobject_cast<QGroupBox*>(w))
+            add(id + QStringLiteral(".title"), g->title());
+        if (auto* c = qobject_cast<QComboBox*>(w))
+            for (int i = 0; i < c->count(); ++i)
+                add(id + QStringLiteral(".item%1").arg(i), c->itemText(i));
+        if (auto* t = qobject_cast<QTableWidget*>(w))
+            for (int i = 0; i < t->columnCount(); ++i)
+                if (auto* h = t->horizontalHeaderItem(i))
+                    add(id + QStringLiteral(".header%1").arg(i), h->text());
+        if (auto* tabs = qobject_cast<QTabWidget*>(w))
+            for (int i = 0; i < tabs->count(); ++i)
+                add(id + QStringLiteral(".tab%1").arg(i), tabs->tabText(i));
+        if (auto* m = qobject_cast<QMenu*>(w))
+            add(id + QStringLiteral(".title"), m->title());
+    }
+    int a = 0;
+    for (QAction* action : window.findChildren<QAction*>()) {
+        if (action->isSeparator())
+            continue;
+        add(QStringLiteral("action#%1.text").arg(a), action->text());
+        add(QStringLiteral("action#%1.toolTip").arg(a++), action->toolTip() == action->text().remove(QLatin1Char('&'))
+                                                                 ? QString()
+                                                                 : action->toolTip());
+    }
+    return texts;
+}
+
+/// Texts that are the same in Catalan and English: names, symbols and numbers.
+bool languageNeutral(const QString& text)
+{
+    static const QStringList names = {
+        QStringLiteral("De Casteljau"), QStringLiteral("Bernstein"), QStringLiteral("Catmull-Rom"),
+        QStringLiteral("Granota"), QStringLiteral("Català"), QStringLiteral("English"), QStringLiteral("TikZ"),
+        QStringLiteral("QR"), QStringLiteral("SVD"), QStringLiteral("PNG"), QStringLiteral("SVG"), QStringLiteral("PDF"),
+        QStringLiteral("CSV"), QStringLiteral("Verlet"), QStringLiteral("XPBD")};
+    if (names.contains(text.trimmed()))
+        return true;
+    // Numbers, symbols, variable names, point labels, file names.
+    static const QRegularExpression symbols(QStringLiteral(
+        "^[\\s0-9.,:;/+\\-−=×·²³⁴<>()\\[\\]{}|%…ταtnxyijkPQqBcwsW_′'^√∞≤≥✓✗µ]*$"));
+    return symbols.match(text).hasMatch();
+}
+
+} // namespace
+
+class TestGuiMainWindow : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("GranotaTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("GranotaTest"));
+        granota::ui::setLanguage(QStringLiteral("en"), false);
+    }
+
+    void everyTabInOrder()
+    {
+        MainWindow window;
+        QCOMPARE(window.tabs().size(), kTabs.size());
+        for (int i = 0; i < kTabs.size(); ++i) {
+            QCOMPARE(window.tabs()[i]->key(), kTabs[i]);
+            QVERIFY(window.showTab(kTabs[i]));
+            QCOMPARE(window.currentTab()->key(), kTabs[i]);
+        }
+        QVERIFY(!window.showTab(QStringLiteral("nope")));
+    }
+
+    void everyExampleLoads_data()
+    {
+        QTest::addColumn<QString>("id");
+        QTest::addColumn<QString>("tab");
+        const char* const ids[][2] = {{"2.1", "catmull-rom"}, {"2.2", "decasteljau"}, {"2.3", "decasteljau"},
+                                      {"2.4", "bernstein"},   {"2.5", "bernstein"},   {"2.6", "bernstein"},
+                                      {"2.7", "fit"},         {"2.8", "fit"},         {"2.9", "fit"},
+                                      {"2.10", "fit"},        {"2.11", "catmull-rom"}, {"2.12", "catmull-rom"},
+                                      {"2.13", "catmull-rom"}};
+        for (const auto& row : ids)
+            QTest::newRow(row[0]) << QString::fromLatin1(row[0]) << QString::fromLatin1(row[1]);
+    }
+    void everyExampleLoads()
+    {
+        QFETCH(QString, id);
+        QFETCH(QString, tab);
+        MainWindow window;
+        window.showTab(QStringLiteral("frog"));
+        QVERIFY2(window.loadExample(id), qPrintable(id));
+        QCOMPARE(window.currentTab()->key(), tab);
+        QVERIFY(!window.loadExample(QStringLiteral("9.9")));
+    }
+
+    void documentRoundTrip()
+    {
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("lesson.granota"));
+        QByteArray saved;
+        {
+            MainWindow window;
+            QVERIFY(window.loadExample(QStringLiteral("2.3")));
+            QVERIFY(window.loadExample(QStringLiteral("2.8")));
+            QVERIFY(window.loadExample(QStringLiteral("2.13")));
+            QVERIFY(window.isModified());
+            QString error;
+            QVERIFY2(window.saveFile(file, &error), qPrintable(error));
+            QVERIFY(!window.isModified());
+            saved = granota::ui::serializeDocument(window.tabs(), window.currentTab()->key());
+        }
+        const QJsonDocument json = QJsonDocument::fromJson([&] {
+            QFile f(file);
+            f.open(QIODevice::ReadOnly);
+            return f.readAll();
+        }());
+        QCOMPARE(json.object().value(QStringLiteral("format")).toString(), QStringLiteral("granota"));
+        for (const QString& key : kTabs)
+            QVERIFY2(json.object().value(QStringLiteral("tabs")).toObject().contains(key), qPrintable(key));
+
+        MainWindow reopened;
+        const QByteArray fresh = granota::ui::serializeDocument(reopened.tabs(), QStringLiteral("catmull-rom"));
+        QVERIFY(fresh != saved); // the examples changed the document
+        QString error;
+        QVERIFY2(reopened.openFile(file, &error), qPrintable(error));
+        QCOMPARE(reopened.currentTab()->key(), QStringLiteral("catmull-rom"));
+        QCOMPARE(granota::ui::serializeDocument(reopened.tabs(), reopened.currentTab()->key()), saved);
+        QCOMPARE(reopened.currentFile(), file);
+    }
+
+    void badDocumentsAreRefusedAndLoseNothing_data()
+    {
+        QTest::addColumn<QByteArray>("bytes");
+        QTest::newRow("garbage") << QByteArray("\x01\x02 not json");
+        QTest::newRow("other json") << QByteArray("{\"hello\": 1}");
+        QTest::newRow("future version") << QByteArray("{\"format\": \"granota\", \"version\": 99, \"tabs\": {}}");
+        QTest::newRow("nan point") << QByteArray(
+            "{\"format\": \"granota\", \"version\": 1, \"tabs\": {\"decasteljau\": {\"points\": [[\"nan\", 1], [2, 3]]}}}");
+        QTest::newRow("tab not an object") << QByteArray(
+            "{\"format\": \"granota\", \"version\": 1, \"tabs\": {\"fit\": {\"degree\": -5, \"points\": 7}}}");
+    }
+    void badDocumentsAreRefusedAndLoseNothing()
+    {
+        QFETCH(QByteArray, bytes);
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("bad.granota"));
+        {
+            QFile f(file);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(bytes);
+        }
+        MainWindow window;
+        QVERIFY(window.loadExample(QStringLiteral("2.2")));
+        const QByteArray before = granota::ui::serializeDocument(window.tabs(), QString());
+        QString error;
+        QVERIFY(!window.openFile(file, &error));
+        QVERIFY(!error.isEmpty());
+        QCOMPARE(granota::ui::serializeDocument(window.tabs(), QString()), before);
+        QVERIFY(!window.openFile(dir.filePath(QStringLiteral("missing.granota")), &error));
+    }
+
+    void exportsAreValidFiles_data()
+    {
+        QTest::addColumn<QString>("tab");
+        for (const QString& key : kTabs)
+            QTest::newRow(qPrintable(key)) << key;
+    }
+    void exportsAreValidFiles()
+    {
+        QFETCH(QString, tab);
+        MainWindow window;
+        window.resize(1280, 800);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.showTab(tab));
+        QTemporaryDir dir;
+        // PNG at 300 DPI: the view's size scaled by 300/96, and the DPI recorded in the file.
+        const QString png = dir.filePath(QStringLiteral("view.png"));
+        QCOMPARE(window.exportCurrent(QStringLiteral("png"), png, 300), QString());
+        QImage image(png);
+        QVERIFY(!image.isNull());
+        const QSize expected = granota::ui::pngPixelSize(window.currentTab()->exportView()->exportSize(), 300);
+        QCOMPARE(image.size(), expected);
+        QVERIFY(image.width() > 600);
+        QVERIFY(qAbs(image.dotsPerMeterX() - 11811) <= 1);
+        // The picture is not blank: more than a handful of colours.
+        QSet<QRgb> colours;
+        for (int y = 0; y < image.height(); y += 7)
+            for (int x = 0; x < image.width(); x += 7)
+                colours.insert(image.pixel(x, y));
+        QVERIFY2(colours.size() > 4, qPrintable(QString::number(colours.size())));
+        // SVG: well-formed XML that Qt's renderer accepts.
+        const QString svg = dir.filePath(QStringLiteral("view.svg"));
+        QCOMPARE(window.exportCurrent(QStringLiteral("svg"), svg), QString());
+        {
+            QFile f(svg);
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            QXmlStreamReader xml(&f);
+            int elements = 0;
+            while (!xml.atEnd())
+                if (xml.readNext() == QXmlStreamReader::StartElement)
+                    ++elements;
+            QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
+            QVERIFY(elements > 10);
+        }
+        QVERIFY(QSvgRenderer(svg).isValid());
+        // PDF: header and trailer.
+        const QString pdf = dir.filePath(QStringLiteral("view.pdf"));
+        QCOMPARE(window.exportCurrent(QStringLiteral("pdf"), pdf), QString());
+        {
+            QFile f(pdf);
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            const QByteArray bytes = f.readAll();
+            QVERIFY(bytes.startsWith("%PDF-"));
+            QVERIFY(bytes.trimmed().endsWith("%%EOF"));
+        }
+        // CSV: a header and rows of numbers with the same number of fields.
+        const QString csv = dir.filePath(QStringLiteral("data.csv"));
+        QCOMPARE(window.exportCurrent(QStringLiteral("csv"), csv), QString());
+        {
+            QFile f(csv);
+            QVERIFY(f.open(QIODevice::ReadOnly | QIODevice::Text));
+            const QStringList lines = QString::fromUtf8(f.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+            QVERIFY(lines.size() >= 3);
+            QVERIFY(lines[0].contains(QLatin1Char(',')));
+        }
+        // TikZ: one picture.
+        const QString tex = dir.filePath(QStringLiteral("view.tex"));
+        QCOMPARE(window.exportCurrent(QStringLiteral("tikz"), tex), QString());
+        {
+            QFile f(tex);
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            const QString text = QString::fromUtf8(f.readAll());
+            QCOMPARE(text.count(QStringLiteral("\\begin{tikzpicture}")), 1);
+            QVERIFY(text.contains(QStringLiteral("\\draw")));
+            QVERIFY(!text.contains(QStringLiteral("nan")) && !text.contains(QStringLiteral("inf")));
+        }
+        // A file that cannot be written gives a message, not a crash.
+        QVERIFY(!window.exportCurrent(QStringLiteral("png"), QStringLiteral("/nonexistent/dir/x.png")).isEmpty());
+        QVERIFY(!window.exportCurrent(QStringLiteral("png"), png, 5).isEmpty());
+    }
+
+    void languageSwitchRetranslatesEveryText()
+    {
+        granota::ui::setLanguage(QStringLiteral("en"), false);
+        MainWindow window;
+        window.resize(1280, 800);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        for (const QString& id : {QStringLiteral("2.2"), QStringLiteral("2.4"), QStringLiteral("2.8"), QStringLiteral("2.13")})
+            QVERIFY(window.loadExample(id));
+        const auto english = visibleTexts(window);
+        QVERIFY(english.size() > 50);
+        QVERIFY(granota::ui::setLanguage(QStringLiteral("ca"), false));
+        QCoreApplication::processEvents();
+        const auto catalan = visibleTexts(window);
+        QStringList untranslated;
+        for (const auto& [where, text] : english) {
+            auto it = catalan.find(where);
+            if (it != catalan.end() && it->second == text && !languageNeutral(text))
+                untranslated << QStringLiteral("%1: “%2”").arg(where, text);
+        }
+        QVERIFY2(untranslated.isEmpty(), qPrintable(untranslated.join(QLatin1Char('\n'))));
+        QCOMPARE(window.tabs()[2]->title(), QStringLiteral("Ajust"));
+        // And back: the English texts return exactly.
+        QVERIFY(granota::ui::setLanguage(QStringLiteral("en"), false));
+        QCoreApplication::processEvents();
+        const auto again = visibleTexts(window);
+        int same = 0;
+        for (const auto& [where, text] : english) {
+            auto it = again.find(where);
+            same += it != again.end() && it->second == text;
+        }
+        QVERIFY2(same >= static_cast<int>(english.size() * 0.95), qPrintable(QString::number(same)));
+    }
+
+    void autosaveRecoversTheDocument()
+    {
+        QFile::remove(MainWindow::autosavePath());
+        QByteArray state;
+        {
+            MainWindow window;
+            QVERIFY(window.loadExample(QStringLiteral("2.9")));
+            window.autosave();
+            QVERIFY(QFile::exists(MainWindow::autosavePath()));
+            state = granota::ui::serializeDocument(window.tabs(), window.currentTab()->key());
+        } // destroyed without a clean close: the autosave stays, as after a crash
+        QVERIFY(QFile::exists(MainWindow::autosavePath()));
+        MainWindow next;
+        QString error;
+        QVERIFY2(next.openFile(MainWindow::autosavePath(), &error), qPrintable(error));
+        QCOMPARE(granota::ui::serializeDocument(next.tabs(), next.currentTab()->key()), state);
+        QFile::remove(MainWindow::autosavePath());
+    }
+
+    void workPrecisionBelowEachTab_data()
+    {
+        QTest::addColumn<QString>("tab");
+        QTest::addColumn<int>("methods");
+        QTest::newRow("decasteljau") << QStringLiteral("decasteljau") << 2; // curve sampling: uniform, adaptive
+        QTest::newRow("bernstein") << QStringLiteral("bernstein") << 3;     // De Casteljau, Bernstein, Horner
+        QTest::newRow("fit") << QStringLiteral("fit") << 3;                 // normal equations, QR, SVD
+        QTest::newRow("catmull-rom") << QStringLiteral("catmull-rom") << 2;
+        QTest::newRow("frog") << QStringLiteral("frog") << 4;               // Euler, semi-implicit, Verlet, RK4
+    }
+    void workPrecisionBelowEachTab()
+    {
+        QFETCH(QString, tab);
+        QFETCH(int, methods);
+        MainWindow window;
+        window.resize(1280, 800);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(window.showTab(tab));
+        QVERIFY(!window.workPrecisionVisible());
+        window.setWorkPrecisionVisible(true);
+        QVERIFY(window.workPrecisionVisible());
+        auto* panel = window.workPrecisionPanel(tab);
+        QVERIFY(panel && panel->isVisible());
+        panel->setQuick(true);
+        QSignalSpy done(panel, &granota::ui::WorkPrecisionPanel::finished);
+        panel->measure();
+        QVERIFY(panel->running());
+        QVERIFY(done.wait(60000));
+        QCOMPARE(done.first().first().toBool(), true);
+        QVERIFY(panel->report().has_value());
+        QCOMPARE(panel->plot()->graphCount(), methods);
+        QVERIFY(panel->plot()->xAxis->scaleType() == QCPAxis::stLogarithmic);
+        QVERIFY(panel->plot()->yAxis->scaleType() == QCPAxis::stLogarithmic);
+        // Cancelling stops a measurement and keeps the window responsive.
+        panel->setQuick(false);
+        QSignalSpy cancelled(panel, &granota::ui::WorkPrecisionPanel::finished);
+        panel->measure();
+        panel->cancel();
+        QVERIFY(cancelled.wait(60000));
+        QCOMPARE(cancelled.first().first().toBool(), false);
+        window.setWorkPrecisionVisible(false);
+        QVERIFY(!window.workPrecisionVisible());
+    }
+
+    void presentationModeEnlargesText()
+    {
+        MainWindow window;
+        const double normal = QApplication::font().pointSizeF();
+        window.setPresentation(true);
+        QVERIFY(window.presentation());
+        QVERIFY(QApplication::font().pointSizeF() > normal * 1.3);
+        window.setPresentation(false);
+        QCOMPARE(QApplication::font().pointSizeF(), normal);
+    }
+
+    void commandLineOptions_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<int>("exitCode");
+        QTest::newRow("tab and language") << QStringList{"--tab", "fit", "--lang", "ca"} << 0;
+        QTest::newRow("example") << QStringList{"--example", "2.13"} << 0;
+        QTest::newRow("scene") << QStringList{"--scene", "pendulum-limits"} << 0;
+        QTest::newRow("presentation") << QStringList{"--tab", "bernstein", "--presentation"} << 0;
+        QTest::newRow("bad tab") << QStringList{"--tab", "nope"} << 2;
+        QTest::newRow("bad language") << QStringList{"--lang", "fr"} << 2;
+        QTest::newRow("bad example") << QStringList{"--example", "3.1"} << 2;
+        QTest::newRow("bad scene") << QStringList{"--scene", "dragon"} << 2;
+    }
+    void commandLineOptions()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(int, exitCode);
+        QTemporaryDir dir;
+        const QString png = dir.filePath(QStringLiteral("shot.png"));
+        QProcess process;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+        env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
+        env.insert(QStringLiteral("XDG_DATA_HOME"), dir.filePath(QStringLiteral("data")));
+        QDir(dir.path()).mkdir(QStringLiteral("runtime"));
+        QFile::setPermissions(dir.filePath(QStringLiteral("runtime")), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+        env.insert(QStringLiteral("XDG_RUNTIME_DIR"), dir.filePath(QStringLiteral("runtime")));
+        process.setProcessEnvironment(env);
+        process.start(QStringLiteral(GRANOTA_GUI_PATH), arguments + QStringList{QStringLiteral("--screenshot"), png});
+        QVERIFY(process.waitForFinished(120000));
+        QCOMPARE(process.exitCode(), exitCode);
+        if (exitCode == 0) {
+            const QImage image(png);
+            QCOMPARE(image.size(), QSize(1280, 800));
+        } else {
+            const QStringList lines = QString::fromUtf8(process.readAllStandardError()).split(QLatin1Char('\n'));
+            QVERIFY2(std::any_of(lines.begin(), lines.end(),
+                                 [](const QString& l) { return l.startsWith(QStringLiteral("error: ")); }),
+                     qPrintable(lines.join(QLatin1Char('|'))));
+            QVERIFY(!QFile::exists(png));
+        }
+    }
+};
+
+QTEST_MAIN(TestGuiMainWindow)
+#include "test_gui_main_window.moc"
