@@ -1,0 +1,445 @@
+// The De Casteljau tab (SPEC §1.1) as a user drives it: dragging, adding, deleting and
+// nudging control points with undo/redo, the thesis's tables of Ex 2.2 and Ex 2.3 in the
+// exact panel (checked against the thesis text and against granota-cli), degree
+// elevation, the shared parameter t, and documents that round-trip or are refused whole.
+#include "cli_runner.h"
+
+#include "core/de_casteljau.h"
+#include "core/polynomial_text.h"
+#include "core/rational.h"
+#include "core/worked_examples.h"
+#include "ui/curve_canvas.h"
+#include "ui/decasteljau_parameter_control.h"
+#include "ui/decasteljau_tab.h"
+#include "ui/exact_panel.h"
+#include "ui/point_editor.h"
+#include "ui/point_table.h"
+
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QJsonArray>
+#include <QJsonObject>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTest>
+#include <QUndoStack>
+
+#include <cmath>
+#include <limits>
+
+using granota::Point;
+using granota::ui::DeCasteljauTab;
+
+namespace {
+
+template <class W> W* findByText(QWidget& root, const QString& text)
+{
+    for (W* w : root.findChildren<W*>())
+        if (w->text() == text)
+            return w;
+    return nullptr;
+}
+
+void showTab(DeCasteljauTab& tab)
+{
+    tab.resize(1280, 760);
+    tab.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&tab));
+}
+
+QPoint screenOf(DeCasteljauTab& tab, Point p) { return tab.canvas()->view().toScreen(p).toPoint(); }
+
+bool samePoints(const std::vector<Point>& a, const std::vector<Point>& b)
+{
+    if (a.size() != b.size())
+        return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].x != b[i].x || a[i].y != b[i].y)
+            return false;
+    return true;
+}
+
+double cellValue(DeCasteljauTab& tab, int row, int column)
+{
+    const auto q = granota::parseRational(tab.pointTable()->item(row, column)->text().toStdString());
+    return q ? q->get_d() : std::numeric_limits<double>::quiet_NaN();
+}
+
+} // namespace
+
+class TestGuiDeCasteljau : public QObject {
+    Q_OBJECT
+
+private slots:
+    void defaultIsACubic()
+    {
+        DeCasteljauTab tab;
+        QCOMPARE(tab.pointEditor()->points().size(), std::size_t(4));
+        QCOMPARE(tab.t(), 0.5);
+        QCOMPARE(tab.table().degree(), 3);
+        // (0,0),(1,2),(3,2),(4,0) at t = 1/2: c = (2, 3/2).
+        QCOMPARE(tab.table().point().x, 2.0);
+        QCOMPARE(tab.table().point().y, 1.5);
+        QVERIFY(tab.exactPanel()->plainText().contains(QStringLiteral("(2, 3/2)")));
+        QVERIFY(tab.warning().isEmpty());
+    }
+
+    // A drag moves P1 to the mouse (model coordinates), live; it is one undo step.
+    void dragMovesPointAndUndoes()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        QWidget* canvas = tab.canvas();
+        const auto before = tab.pointEditor()->points();
+        const QString panelBefore = tab.exactPanel()->plainText();
+        const QString cellBefore = tab.pointTable()->item(1, 0)->text();
+        const Point cBefore = tab.table().point();
+        const int stepsBefore = tab.undoStack()->count();
+
+        const QPoint start = screenOf(tab, before[1]);
+        const QPoint end = start + QPoint(60, -45);
+        QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, start);
+        for (int k = 1; k <= 4; ++k)
+            QTest::mouseMove(canvas, start + (end - start) * k / 4);
+        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, end);
+
+        const Point expected = tab.canvas()->view().toModel(QPointF(end));
+        const auto after = tab.pointEditor()->points();
+        QVERIFY(std::fabs(after[1].x - expected.x) < 1e-9);
+        QVERIFY(std::fabs(after[1].y - expected.y) < 1e-9);
+        QVERIFY(after[1].x > before[1].x && after[1].y > before[1].y); // right and up (y up in the model)
+        QCOMPARE(after[0].x, before[0].x);
+        QCOMPARE(after[2].y, before[2].y);
+        QVERIFY(tab.pointTable()->item(1, 0)->text() != cellBefore);
+        QCOMPARE(cellValue(tab, 1, 0), after[1].x);
+        QCOMPARE(cellValue(tab, 1, 1), after[1].y);
+        QVERIFY(tab.table().point().x != cBefore.x || tab.table().point().y != cBefore.y);
+        QVERIFY(tab.exactPanel()->plainText() != panelBefore);
+        QCOMPARE(tab.undoStack()->count(), stepsBefore + 1); // the whole drag: one step
+
+        tab.undoStack()->undo();
+        QVERIFY(samePoints(tab.pointEditor()->points(), before));
+        QCOMPARE(tab.exactPanel()->plainText(), panelBefore);
+        QCOMPARE(tab.pointTable()->item(1, 0)->text(), cellBefore);
+        tab.undoStack()->redo();
+        QVERIFY(samePoints(tab.pointEditor()->points(), after));
+    }
+
+    // Double-click on the middle of edge P1P2 inserts there; Delete removes it again.
+    void doubleClickAddsDeleteRemoves()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        const auto before = tab.pointEditor()->points();
+        const QPoint at = screenOf(tab, {2.0, 2.0}); // midway between P1 (1,2) and P2 (3,2)
+        QTest::mouseDClick(tab.canvas(), Qt::LeftButton, Qt::NoModifier, at);
+        const auto after = tab.pointEditor()->points();
+        QCOMPARE(after.size(), before.size() + 1);
+        const Point model = tab.canvas()->view().toModel(QPointF(at));
+        QCOMPARE(after[2].x, model.x); // on the nearest edge: between P1 and P2
+        QCOMPARE(after[2].y, model.y);
+        QCOMPARE(after[3].x, before[2].x);
+        QCOMPARE(tab.pointEditor()->selected(), 2);
+        QCOMPARE(tab.pointTable()->rowCount(), 5);
+        QCOMPARE(tab.table().degree(), 4);
+
+        tab.canvas()->setFocus();
+        QTest::keyClick(tab.canvas(), Qt::Key_Delete);
+        QVERIFY(samePoints(tab.pointEditor()->points(), before));
+        QCOMPARE(tab.pointTable()->rowCount(), 4);
+    }
+
+    // Arrow keys nudge the selected point: one grid step with Snap to grid on.
+    void keyboardNudge()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        QCheckBox* snap = findByText<QCheckBox>(tab, QStringLiteral("Snap to grid"));
+        QVERIFY(snap);
+        snap->setChecked(true);
+        QVERIFY(tab.pointEditor()->snapEnabled());
+        tab.pointEditor()->setSelected(0);
+        tab.canvas()->setFocus();
+        const int steps = tab.undoStack()->count();
+        QTest::keyClick(tab.canvas(), Qt::Key_Right);
+        QTest::keyClick(tab.canvas(), Qt::Key_Up);
+        QTest::keyClick(tab.canvas(), Qt::Key_Up);
+        const Point p = tab.pointEditor()->points()[0];
+        QCOMPARE(p.x, tab.pointEditor()->gridStep());
+        QCOMPARE(p.y, 2 * tab.pointEditor()->gridStep());
+        QCOMPARE(tab.undoStack()->count(), steps + 3);
+        // Without snapping, one pixel.
+        snap->setChecked(false);
+        QTest::keyClick(tab.canvas(), Qt::Key_Left);
+        QVERIFY(std::fabs(tab.pointEditor()->points()[0].x - (p.x - 1.0 / tab.canvas()->view().scale())) < 1e-12);
+    }
+
+    // Ex 2.2 and Ex 2.3: every P_i^r(t) of the thesis's tables, and c(t).
+    void thesisTables_data()
+    {
+        QTest::addColumn<QString>("id");
+        QTest::addColumn<QStringList>("entries");
+        QTest::newRow("Ex 2.2") << QStringLiteral("2.2")
+                                << QStringList{
+                                       "(2, 3)", "(-1, 8)", "(-5, -3)", "(3, 0)", "(-7, -2)",
+                                       "(2 - 3t, 3 + 5t)", "(-1 - 4t, 8 - 11t)", "(-5 + 8t, -3 + 3t)", "(3 - 10t, -2t)",
+                                       "(2 - 6t - t^2, 3 + 10t - 16t^2)", "(-1 - 8t + 12t^2, 8 - 22t + 14t^2)",
+                                       "(-5 + 16t - 18t^2, -3 + 6t - 5t^2)",
+                                       "(2 - 9t - 3t^2 + 13t^3, 3 + 15t - 48t^2 + 30t^3)",
+                                       "(-1 - 12t + 36t^2 - 30t^3, 8 - 33t + 42t^2 - 19t^3)",
+                                       "P0^4(t) = c(t) = (2 - 12t - 6t^2 + 52t^3 - 43t^4, 3 + 20t - 96t^2 + 120t^3 - 49t^4)"};
+        QTest::newRow("Ex 2.3") << QStringLiteral("2.3")
+                                << QStringList{
+                                       "(1, 7)", "(0, -3)", "(-4, -2)", "(8, 0)",
+                                       "(1 - t, 7 - 10t)", "(-4t, -3 + t)", "(-4 + 12t, -2 + 2t)", "(8 - 7t, 7t)",
+                                       "(1 - 2t - 3t^2, 7 - 20t + 11t^2)", "(-8t + 16t^2, -3 + 2t + t^2)",
+                                       "(-4 + 24t - 19t^2, -2 + 4t + 5t^2)",
+                                       "(1 - 3t - 9t^2 + 19t^3, 7 - 30t + 33t^2 - 10t^3)",
+                                       "(-12t + 48t^2 - 35t^3, -3 + 3t + 3t^2 + 4t^3)",
+                                       "P0^4(t) = c(t) = (1 - 4t - 18t^2 + 76t^3 - 54t^4, 7 - 40t + 66t^2 - 40t^3 + 14t^4)"};
+    }
+    void thesisTables()
+    {
+        QFETCH(QString, id);
+        QFETCH(QStringList, entries);
+        DeCasteljauTab tab;
+        tab.setT(0.8);
+        const granota::WorkedExample* ex = granota::findWorkedExample(id.toStdString());
+        QVERIFY(ex);
+        QVERIFY(tab.loadExample(*ex));
+        QCOMPARE(tab.t(), 0.5);
+        QCOMPARE(tab.undoStack()->undoText(), QStringLiteral("Load Ex %1").arg(id));
+        QCOMPARE(tab.pointEditor()->points().size(), ex->points.size());
+        const QString text = tab.exactPanel()->plainText();
+        for (const QString& e : entries)
+            QVERIFY2(text.contains(e), qPrintable(e + QStringLiteral("\n---\n") + text));
+        // The same c(t) as chapter2.json's "expected".
+        const granota::Json* expected = ex->data.find("expected");
+        QVERIFY(expected);
+        for (const char* coordinate : {"x", "y"}) {
+            const granota::Json* c = expected->find(coordinate);
+            QVERIFY(c && c->asString());
+            QVERIFY(text.contains(QString::fromStdString(*c->asString())));
+        }
+        // One undo step brings the default cubic back.
+        tab.undoStack()->undo();
+        QCOMPARE(tab.pointEditor()->points().size(), std::size_t(4));
+    }
+
+    // The triangle at t = 1/2 in fractions, entry by entry as granota-cli prints it.
+    void triangleAtOneHalfMatchesCli()
+    {
+        DeCasteljauTab tab;
+        QVERIFY(tab.loadExample(*granota::findWorkedExample("2.2")));
+        const CliRun run = runCli({"bezier", "--points", "2,3;-1,8;-5,-3;3,0;-7,-2", "--t", "1/2", "--exact"});
+        QCOMPARE(run.exitCode, 0);
+        const QString text = tab.exactPanel()->plainText();
+        QVERIFY(text.contains(QStringLiteral("triangle at t = 1/2")));
+        int entries = 0;
+        for (const QString& line : QString::fromUtf8(run.out).split(QLatin1Char('\n'))) {
+            if (!line.trimmed().startsWith(QStringLiteral("r = ")))
+                continue;
+            const QString points = line.section(QLatin1Char(':'), 1).trimmed();
+            for (const QString& p : points.split(QStringLiteral("  "), Qt::SkipEmptyParts)) {
+                QVERIFY2(text.contains(p.trimmed()), qPrintable(p));
+                ++entries;
+            }
+        }
+        QCOMPARE(entries, 15); // 5 + 4 + 3 + 2 + 1
+        QVERIFY(text.contains(QStringLiteral("c(t) = P0^4(t) = (-27/16, 15/16)")));
+        QVERIFY(text.contains(QStringLiteral("c′(t) = (-1/2, -21/2)")));
+    }
+
+    void setTUpdatesTriangle()
+    {
+        DeCasteljauTab tab;
+        QVERIFY(tab.loadExample(*granota::findWorkedExample("2.2")));
+        QSignalSpy spy(&tab, &DeCasteljauTab::tChanged);
+        tab.setT(0.25);
+        QCOMPARE(spy.count(), 1);
+        QCOMPARE(spy.at(0).at(0).toDouble(), 0.25);
+        const QString text = tab.exactPanel()->plainText();
+        QVERIFY(text.contains(QStringLiteral("triangle at t = 1/4")));
+        QVERIFY(text.contains(QStringLiteral("(5/4, 17/4)"))); // P_0^1(1/4) = (2 - 3/4, 3 + 5/4)
+        QVERIFY(!text.contains(QStringLiteral("(1/2, 11/2)"))); // the t = 1/2 value is gone
+        QCOMPARE(tab.parameterControl()->spinBox()->value(), 0.25);
+        QCOMPARE(tab.parameterControl()->slider()->value(), 250);
+        // c(1/4) from the table is the curve of the thesis at 1/4.
+        QVERIFY(std::fabs(tab.table().point().x - (2 - 3 - 6.0 / 16 + 52.0 / 64 - 43.0 / 256)) < 1e-12);
+        tab.setT(0.25); // no change, no signal
+        QCOMPARE(spy.count(), 1);
+    }
+
+    // "1/3" typed in the spin box is t = 1/3 exactly, not 0.333.
+    void typedFractionIsExact()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        QVERIFY(tab.loadExample(*granota::findWorkedExample("2.2")));
+        QDoubleSpinBox* spin = tab.parameterControl()->spinBox();
+        spin->setFocus();
+        spin->selectAll();
+        QTest::keyClicks(spin, QStringLiteral("1/3"));
+        QTest::keyClick(spin, Qt::Key_Return);
+        QCOMPARE(tab.t(), 1.0 / 3.0);
+        QVERIFY(tab.exactPanel()->plainText().contains(QStringLiteral("triangle at t = 1/3")));
+        QCOMPARE(spin->text(), spin->locale().toString(0.333, 'f', 3));
+    }
+
+    // Degree elevation: one point more, the same curve.
+    void raiseDegreeKeepsTheCurve()
+    {
+        DeCasteljauTab tab;
+        QVERIFY(tab.loadExample(*granota::findWorkedExample("2.3")));
+        const auto before = tab.pointEditor()->points();
+        QPushButton* raise = findByText<QPushButton>(tab, QStringLiteral("Raise degree"));
+        QVERIFY(raise);
+        raise->click();
+        raise->click();
+        const auto after = tab.pointEditor()->points();
+        QCOMPARE(after.size(), before.size() + 2);
+        double deviation = 0.0;
+        for (int k = 0; k < 50; ++k) {
+            const double t = k / 49.0;
+            const Point a = granota::deCasteljauPoint(before, t), b = granota::deCasteljauPoint(after, t);
+            deviation = std::max(deviation, granota::distance(a, b));
+        }
+        QVERIFY2(deviation < 1e-12, qPrintable(QString::number(deviation)));
+        // Still the thesis's polynomial, now from six points.
+        QVERIFY(tab.exactPanel()->plainText().contains(QStringLiteral("(1 - 4t - 18t^2 + 76t^3 - 54t^4, 7 - 40t + 66t^2 - 40t^3 + 14t^4)")));
+        tab.undoStack()->undo();
+        tab.undoStack()->undo();
+        QVERIFY(samePoints(tab.pointEditor()->points(), before));
+    }
+
+    // Degree 60 draws, warns, and shows no NaN; 200 points cannot be raised further.
+    void highDegree()
+    {
+        DeCasteljauTab tab;
+        std::vector<Point> points;
+        for (int i = 0; i <= 60; ++i)
+            points.push_back({i * 0.1, std::sin(i * 0.7) * 3.0});
+        tab.pointEditor()->setPoints(points, QStringLiteral("many"));
+        QVERIFY(!tab.warning().isEmpty());
+        const QString text = tab.exactPanel()->plainText();
+        QVERIFY(!text.contains(QStringLiteral("nan"), Qt::CaseInsensitive));
+        QVERIFY(!text.contains(QStringLiteral("inf"), Qt::CaseInsensitive));
+        QVERIFY(granota::isFinite(tab.table().point()));
+        for (const Point& p : tab.curve())
+            QVERIFY(granota::isFinite(p));
+        tab.setT(0.37);
+        QVERIFY(granota::isFinite(tab.table().point()));
+
+        std::vector<Point> many;
+        for (int i = 0; i < DeCasteljauTab::kMaxPoints; ++i)
+            many.push_back({i * 1.0, (i % 7) * 1.0});
+        tab.pointEditor()->setPoints(many, QStringLiteral("200"));
+        tab.raiseDegree();
+        QCOMPARE(tab.pointEditor()->points().size(), std::size_t(DeCasteljauTab::kMaxPoints));
+    }
+
+    void saveLoadRoundTrip()
+    {
+        DeCasteljauTab tab;
+        QVERIFY(tab.loadExample(*granota::findWorkedExample("2.2")));
+        tab.pointEditor()->movePoint(2, {-5.125, -2.7182818284590451});
+        tab.setT(0.3);
+        tab.setSamples(77);
+        tab.setConstructionVisible(false);
+        tab.setStepByStep(true);
+        tab.setTangentVisible(true);
+        tab.setSplitVisible(true);
+        const QJsonObject saved = tab.saveState();
+
+        DeCasteljauTab other;
+        QString error;
+        QVERIFY2(other.loadState(saved, &error), qPrintable(error));
+        QCOMPARE(other.saveState(), saved);
+        QVERIFY(samePoints(other.pointEditor()->points(), tab.pointEditor()->points()));
+        QCOMPARE(other.t(), 0.3);
+        QCOMPARE(other.samples(), 77);
+        QCOMPARE(other.curve().size(), std::size_t(78));
+        QVERIFY(!other.constructionVisible());
+        QVERIFY(other.stepByStep() && other.tangentVisible() && other.splitVisible());
+        QCOMPARE(other.exactPanel()->plainText(), tab.exactPanel()->plainText());
+    }
+
+    void loadStateRejectsGarbage_data()
+    {
+        QTest::addColumn<QJsonObject>("state");
+        const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+        const QJsonArray good{QJsonArray{0, 0}, QJsonArray{1, 1}};
+        auto with = [&good](const char* key, const QJsonValue& v) {
+            QJsonObject o{{"points", good}};
+            o.insert(QLatin1String(key), v);
+            return o;
+        };
+        QTest::newRow("no points") << QJsonObject{{"t", 0.5}};
+        QTest::newRow("points not a list") << QJsonObject{{"points", "2,3;4,5"}};
+        QTest::newRow("empty") << QJsonObject{{"points", QJsonArray{}}};
+        QJsonArray tooMany;
+        for (int i = 0; i <= DeCasteljauTab::kMaxPoints; ++i)
+            tooMany.append(QJsonArray{i, 0});
+        QTest::newRow("201 points") << QJsonObject{{"points", tooMany}};
+        QTest::newRow("NaN") << QJsonObject{{"points", QJsonArray{QJsonArray{0, 0}, QJsonArray{nan, 1}}}};
+        QTest::newRow("inf") << QJsonObject{{"points", QJsonArray{QJsonArray{inf, 0}}}};
+        QTest::newRow("string") << QJsonObject{{"points", QJsonArray{QJsonArray{"nan", 0}}}};
+        QTest::newRow("three coordinates") << QJsonObject{{"points", QJsonArray{QJsonArray{1, 2, 3}}}};
+        QTest::newRow("null point") << QJsonObject{{"points", QJsonArray{QJsonValue()}}};
+        QTest::newRow("t = 2") << with("t", 2.0);
+        QTest::newRow("t NaN") << with("t", nan);
+        QTest::newRow("t text") << with("t", "half");
+        QTest::newRow("samples 0") << with("samples", 0);
+        QTest::newRow("samples 1.5") << with("samples", 1.5);
+        QTest::newRow("toggle text") << with("construction", "yes");
+    }
+    void loadStateRejectsGarbage()
+    {
+        QFETCH(QJsonObject, state);
+        DeCasteljauTab tab;
+        QVERIFY(tab.loadExample(*granota::findWorkedExample("2.3")));
+        tab.setT(0.7);
+        const QJsonObject before = tab.saveState();
+        const QString panel = tab.exactPanel()->plainText();
+        QString error;
+        QVERIFY(!tab.loadState(state, &error));
+        QVERIFY(!error.isEmpty());
+        QCOMPARE(tab.saveState(), before);
+        QCOMPARE(tab.exactPanel()->plainText(), panel);
+    }
+
+    void animationMovesT()
+    {
+        DeCasteljauTab tab;
+        tab.setT(0.99);
+        QSignalSpy spy(&tab, &DeCasteljauTab::tChanged);
+        tab.setPlaying(true);
+        QVERIFY(tab.isPlaying());
+        QTRY_VERIFY(spy.count() >= 5);
+        tab.setPlaying(false);
+        QVERIFY(!tab.isPlaying());
+        QVERIFY(tab.t() < 0.99); // it looped past 1 back to the start
+    }
+
+    void csvAndTikz()
+    {
+        DeCasteljauTab tab;
+        QVERIFY(tab.loadExample(*granota::findWorkedExample("2.2")));
+        tab.setSamples(10);
+        const QStringList lines = tab.csv().split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines[0], QStringLiteral("i,x,y"));
+        QCOMPARE(lines[1], QStringLiteral("0,2,3"));
+        QCOMPARE(lines[6], QStringLiteral("t,x,y"));
+        QCOMPARE(lines.size(), 1 + 5 + 1 + 11);
+        QCOMPARE(lines.last(), QStringLiteral("1,-7,-2"));
+        const QString tex = tab.tikz();
+        QVERIFY(tex.contains(QStringLiteral("\\begin{tikzpicture}")));
+        QVERIFY(tex.contains(QStringLiteral("P_{4}")));
+        QVERIFY(!tex.contains(QStringLiteral("nan")));
+    }
+};
+
+QTEST_MAIN(TestGuiDeCasteljau)
+#include "test_gui_decasteljau.moc"
