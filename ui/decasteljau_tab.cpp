@@ -47,6 +47,7 @@ constexpr int kMaxSamples = 5000;       ///< 200 points × 5000 samples: about 1
 constexpr double kStepBudget = 2e7;      ///< operations allowed for the step-by-step curves per update
 constexpr int kMinStepSamples = 16;
 constexpr int kAnimationMs = 30;          ///< timer period of the t animation
+constexpr int kPanelMs = 100;             ///< exact panel refresh period while dragging or playing
 constexpr double kAnimationStep = 0.004;  ///< t per tick: one sweep of [0, 1] in about 7.5 s
 constexpr long kExactTDenominator = 16;   ///< t = p/q with q ≤ 16 gives the triangle in fractions
 constexpr long kMaxShownDenominator = 10000; ///< larger denominators: the triangle at t in decimals
@@ -176,6 +177,13 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent)
     m_play->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     m_timer = new QTimer(this);
     m_timer->setInterval(kAnimationMs);
+    // While a point is dragged or t is animated the canvas follows every frame; the exact
+    // panel (hundreds of typeset entries at high degree) at most every kPanelMs, and at once
+    // when the point is dropped.
+    m_panelTimer = new QTimer(this);
+    m_panelTimer->setSingleShot(true);
+    m_panelTimer->setInterval(kPanelMs);
+    connect(m_panelTimer, &QTimer::timeout, this, &DeCasteljauTab::refreshPanel);
     m_samplesLabel = new QLabel(this);
     m_samplesBox = new QSpinBox(this);
     m_samplesBox->setRange(kMinSamples, kMaxSamples);
@@ -328,11 +336,15 @@ void DeCasteljauTab::buildLayers()
             p.setPen(QPen(c, style.thinLine() * 1.4));
             p.setBrush(Qt::NoBrush);
             p.drawPath(polylinePath(level, view));
+            // All the level's points as one path: one fill and one stroke instead of one per
+            // point keeps a drag at degree 30 (465 points) within a frame.
+            const double rad = style.handleRadius() * 0.6;
+            QPainterPath dots;
+            for (const Point& q : level)
+                dots.addEllipse(view.toScreen(q), rad, rad);
             p.setPen(QPen(Qt::white, style.thinLine()));
             p.setBrush(c);
-            const double rad = style.handleRadius() * 0.6;
-            for (const Point& q : level)
-                p.drawEllipse(view.toScreen(q), rad, rad);
+            p.drawPath(dots);
         }
     });
     // The tangent c′(t), from the last level but one.
@@ -398,18 +410,37 @@ void DeCasteljauTab::pointsChanged()
                                                          part + 1));
     }
     m_levels = deCasteljau(points, m_t);
+    if (m_editor->dragging() || isPlaying()) {
+        schedulePanel();
+    } else {
+        m_panelTimer->stop();
+        refreshPanel();
+    }
+    m_canvas->update();
+    emit documentChanged();
+}
+
+void DeCasteljauTab::refreshPanel()
+{
     updateExactSymbolic();
     updateExactPanel();
     updateWarning();
-    m_canvas->update();
-    emit documentChanged();
+}
+
+void DeCasteljauTab::schedulePanel()
+{
+    if (!m_panelTimer->isActive())
+        m_panelTimer->start();
 }
 
 void DeCasteljauTab::parameterChanged()
 {
     if (!m_editor->points().empty())
         m_levels = deCasteljau(m_editor->points(), m_t);
-    updateExactPanel();
+    if (isPlaying() || m_editor->dragging())
+        schedulePanel(); // the triangle at t, a few times a second while t runs
+    else
+        updateExactPanel();
     m_canvas->update();
     emit tChanged(m_t);
 }

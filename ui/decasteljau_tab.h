@@ -127,6 +127,9 @@ private:
     QPushButton* m_raise = nullptr;
     QLabel* m_warningLabel = nullptr;
     QTimer* m_timer = nullptr;
+    QTimer* m_panelTimer = nullptr; ///< coalesces panel refreshes while dragging or playing
+    void refreshPanel();
+    void schedulePanel();
 
     double m_t = 0.5;
     int m_samples = 200;

@@ -43,6 +43,8 @@ public:
     void applyPoints(const std::vector<Point>& points);
 
     int selected() const { return m_selected; }
+    /// A point is being dragged: views may defer costly refreshes until it is dropped.
+    bool dragging() const { return m_dragging >= 0; }
     void setSelected(int index);
 
     bool snapEnabled() const { return m_snap; }

@@ -57,6 +57,14 @@ void PointTable::refresh()
 {
     m_refreshing = true;
     const auto& points = m_editor->points();
+    // During a drag only the dragged point changes: refresh its row alone.
+    const int dragged = m_editor->dragging() ? m_editor->selected() : -1;
+    if (dragged >= 0 && rowCount() == static_cast<int>(points.size()) && item(dragged, 0) && item(dragged, 1)) {
+        item(dragged, 0)->setText(coordinateText(points[static_cast<std::size_t>(dragged)].x));
+        item(dragged, 1)->setText(coordinateText(points[static_cast<std::size_t>(dragged)].y));
+        m_refreshing = false;
+        return;
+    }
     setRowCount(static_cast<int>(points.size()));
     for (int i = 0; i < static_cast<int>(points.size()); ++i) {
         setVerticalHeaderItem(i, new QTableWidgetItem(QStringLiteral("%1%2").arg(m_editor->labelPrefix()).arg(i)));

@@ -12,6 +12,7 @@
 
 #include <QApplication>
 #include <QImage>
+#include <QMouseEvent>
 #include <QPainter>
 
 #include <benchmark/benchmark.h>
@@ -48,13 +49,25 @@ void BM_GuiDragDegree30(benchmark::State& state)
         points.emplace_back(i, 4 * std::sin(i * 0.7));
     tab.pointEditor()->setPoints(points, QStringLiteral("bench"));
     QImage image(tab.canvas()->size(), QImage::Format_ARGB32_Premultiplied);
+    // A real drag: press on P15's handle, then mouse moves, each followed by a repaint.
+    CurveCanvas* canvas = tab.canvas();
+    const QPointF start = canvas->view().toScreen(points[15]);
+    QMouseEvent press(QEvent::MouseButtonPress, start, canvas->mapToGlobal(start), Qt::LeftButton, Qt::LeftButton,
+                      Qt::NoModifier);
+    QCoreApplication::sendEvent(canvas, &press);
     int frame = 0;
     for (auto _ : state) {
-        points[15].y += (frame++ % 2) ? 0.05 : -0.05; // the mouse moved
-        tab.pointEditor()->applyPoints(points);      // what a drag does on each move
-        QPainter painter(&image);
-        tab.canvas()->render(painter, QRectF(image.rect()));
+        const QPointF at = start + QPointF(0, (frame++ % 2) ? 3 : -3); // the mouse moved
+        QMouseEvent move(QEvent::MouseMove, at, canvas->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(canvas, &move);
+        if (state.range(0)) {
+            QPainter painter(&image);
+            canvas->render(painter, QRectF(image.rect()));
+        }
     }
+    QMouseEvent release(QEvent::MouseButtonRelease, start, canvas->mapToGlobal(start), Qt::LeftButton, Qt::NoButton,
+                        Qt::NoModifier);
+    QCoreApplication::sendEvent(canvas, &release);
     state.counters["frame_budget_ms"] = 1000.0 / 60.0;
 }
 
@@ -81,5 +94,5 @@ void BM_GuiFrog200(benchmark::State& state)
 
 } // namespace
 
-BENCHMARK(BM_GuiDragDegree30)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GuiDragDegree30)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GuiFrog200)->Unit(benchmark::kMillisecond);
