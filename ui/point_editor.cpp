@@ -33,13 +33,19 @@ PointEditor::PointEditor(CurveCanvas* canvas, QUndoStack* undoStack, QObject* pa
         }
         p.setFont(style.labelFont());
         const double r = style.handleRadius();
+        // Huge data sets (10^6 points in the fitting tab, SPEC §3): draw every stride-th
+        // handle and no labels, so that painting stays fast; the selected one always.
+        constexpr std::size_t kMaxDrawnHandles = 5000;
+        const std::size_t stride = (m_points.size() + kMaxDrawnHandles - 1) / kMaxDrawnHandles;
         for (std::size_t i = 0; i < m_points.size(); ++i) {
-            const QPointF s = view.toScreen(m_points[i]);
             const bool sel = static_cast<int>(i) == m_selected;
+            if (stride > 1 && i % stride != 0 && !sel)
+                continue;
+            const QPointF s = view.toScreen(m_points[i]);
             p.setPen(QPen(Qt::white, style.thinLine()));
             p.setBrush(sel ? style.handleSelected : m_color);
             p.drawEllipse(s, sel ? r * 1.3 : r, sel ? r * 1.3 : r);
-            if (!m_prefix.isEmpty()) {
+            if (!m_prefix.isEmpty() && stride <= 1) {
                 p.setPen(style.text);
                 p.drawText(s + QPointF(r + 3 * style.scale, -r), m_prefix + QString::number(i));
             }

@@ -1,0 +1,487 @@
+// The Fitting tab (SPEC §1.3): the exact results of Ex 2.7–2.9 as the thesis prints them
+// (with its slips corrected and noted), dragging and undo, the readouts against the core,
+// the normal equations breaking where QR does not, the degree limit n ≤ k, CSV import,
+// documents, and the error-against-degree plot (LS optimality over nested spaces).
+#include "core/least_squares_fit.h"
+#include "core/worked_examples.h"
+#include "ui/curve_canvas.h"
+#include "ui/exact_panel.h"
+#include "ui/fit_tab.h"
+#include "ui/point_editor.h"
+#include "ui/point_table.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QSignalSpy>
+#include <QSpinBox>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QUndoStack>
+#include <qcustomplot.h>
+
+#include <cmath>
+#include <limits>
+
+using granota::ui::FitSettings;
+using granota::ui::FitTab;
+using namespace granota;
+
+namespace {
+
+bool loadEx(FitTab& tab, const char* id)
+{
+    const WorkedExample* example = findWorkedExample(id);
+    return example && tab.loadExample(*example);
+}
+
+/// 200 samples of a smooth curve with a little deterministic noise.
+std::vector<Point> smoothSamples(int count)
+{
+    std::vector<Point> q;
+    for (int i = 0; i < count; ++i) {
+        const double s = static_cast<double>(i) / (count - 1);
+        q.emplace_back(std::cos(3 * s) + 0.5 * s + 0.01 * std::sin(91.0 * i),
+                       std::sin(4 * s) - s * s + 0.01 * std::cos(37.0 * i));
+    }
+    return q;
+}
+
+FitOptions optionsOf(const FitTab& tab)
+{
+    FitOptions o;
+    o.degree = tab.fittedDegree();
+    o.parametrization = tab.settings().parametrization;
+    o.solver = tab.settings().solver;
+    o.correctParameters = tab.settings().correctParameters;
+    o.maxCorrections = tab.settings().iterations;
+    return o;
+}
+
+QString number(double v) { return QString::number(v, 'g', 6); }
+
+} // namespace
+
+class TestGuiFit : public QObject {
+    Q_OBJECT
+
+private slots:
+    void startsWithAFit()
+    {
+        FitTab tab;
+        QCOMPARE(tab.pointEditor()->points().size(), std::size_t(5));
+        QVERIFY(tab.currentFit());
+        QCOMPARE(tab.fittedDegree(), 2);
+        QVERIFY(tab.exactPanel()->plainText().contains(QStringLiteral("P0 = (-8/7, 46/35)")));
+    }
+
+    void ex27Exact()
+    {
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.8")); // something else first: the example really loads
+        QVERIFY(loadEx(tab, "2.7"));
+        QCOMPARE(tab.fittedDegree(), 2);
+        QVERIFY(tab.settings().parametrization == Parametrization::Uniform);
+        const QString text = tab.exactPanel()->plainText();
+        for (const char* expected : {"t0 = 0, t1 = 1/4, t2 = 1/2, t3 = 3/4, t4 = 1", "P0 = (-8/7, 46/35)",
+                                     "P1 = (323/35, -19/35)", "P2 = (86/35, 116/35)",
+                                     // The thesis's 600/35, 130/35, 200/35 reduced:
+                                     "x(t) = -8/7 + 726/35 t - 120/7 t^2", "y(t) = 46/35 - 26/7 t + 40/7 t^2"})
+            QVERIFY2(text.contains(QString::fromUtf8(expected)), expected);
+        QVERIFY(text.contains(QStringLiteral("600/35 = 120/7")));
+        QVERIFY(!text.contains(QStringLiteral("177/128"))); // matrices only on demand
+        tab.showMatricesBox()->setChecked(true);
+        const QString matrices = tab.exactPanel()->plainText();
+        for (const char* row : {"9/16\t3/8\t1/16", "177/128\t23/64\t17/128", "31/35\t-23/35\t3/35",
+                                "-23/35\t97/35\t-23/35", "31/35\t9/35\t-3/35\t-1/7\t3/35",
+                                "-23/35\t22/35\t37/35\t22/35\t-23/35"})
+            QVERIFY2(matrices.contains(QString::fromUtf8(row)), row);
+    }
+
+    void ex28Exact()
+    {
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.8"));
+        tab.showMatricesBox()->setChecked(true);
+        const QString text = tab.exactPanel()->plainText();
+        for (const char* expected :
+             {"P0 = (11/70, -13/70)", "P1 = (-3371/630, 2711/210)", "P2 = (11399/630, -2539/210)", "P3 = (81/70, 337/70)",
+              // −347/21 = −1735/105, not the printed −1636/105:
+              "x(t) = 11/70 - 347/21 t + 608/7 t^2 - 208/3 t^3", "y(t) = -13/70 + 275/7 t - 800/7 t^2 + 80t^3",
+              "2445/2048\t465/2048\t231/2048\t59/2048", "69/70\t-629/630\t281/630\t-1/70",
+              "-629/630\t47389/5670\t-36121/5670\t281/630", "-629/630\t698/315\t71/105\t-422/315\t281/630"})
+            QVERIFY2(text.contains(QString::fromUtf8(expected)), expected);
+        QVERIFY(text.contains(QStringLiteral("−1636/105"))); // the note names the slip…
+        QVERIFY(text.contains(QStringLiteral("−1735/105"))); // …and the right value
+        QVERIFY(!text.contains(QStringLiteral("1636/105 t")));
+    }
+
+    void ex29ChordLengths()
+    {
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.9"));
+        QVERIFY(tab.settings().parametrization == Parametrization::ChordLength);
+        const QString text = tab.exactPanel()->plainText();
+        QVERIFY2(text.contains(QStringLiteral("d1 = √10")), qPrintable(text));
+        QVERIFY(text.contains(QStringLiteral("d2 = √10")));
+        QVERIFY(text.contains(QStringLiteral("d3 = 4√2")));
+        QVERIFY(text.contains(QStringLiteral("d4 = 7√2")));
+        QVERIFY(!text.contains(QStringLiteral("d4 = √85")));
+        QVERIFY(text.contains(QStringLiteral("√85"))); // the slip, in the note
+        // Decimal results: t_1 = √10 / (2√10 + 4√2 + 7√2).
+        const double t1 = std::sqrt(10.0) / (2 * std::sqrt(10.0) + 11 * std::sqrt(2.0));
+        QVERIFY2(text.contains(QStringLiteral("t1 = %1").arg(number(t1))), qPrintable(text));
+        QVERIFY(!text.contains(QStringLiteral("nan")));
+        // Uniform parameters for the same data: no chord lengths, no note.
+        tab.parametrizationBox()->setCurrentIndex(0);
+        QVERIFY(!tab.exactPanel()->plainText().contains(QStringLiteral("7√2")));
+    }
+
+    void dragRefitsAndUndoRestores()
+    {
+        FitTab tab;
+        tab.resize(1280, 760);
+        tab.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&tab));
+        QVERIFY(loadEx(tab, "2.8"));
+        QCoreApplication::processEvents();
+        const std::vector<Point> pointsBefore = tab.pointEditor()->points();
+        const std::vector<Point> controlBefore = tab.currentFit()->controlPoints;
+        const QString readoutBefore = tab.readoutText();
+        const QString exactBefore = tab.exactPanel()->plainText();
+        const int stepsBefore = tab.undoStack()->count();
+
+        granota::ui::CurveCanvas* canvas = tab.canvas();
+        const QPoint from = canvas->view().toScreen(pointsBefore[2]).toPoint();
+        const QPoint to = from + QPoint(40, -30);
+        QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, from);
+        QTest::mouseMove(canvas, from + QPoint(20, -15));
+        QTest::mouseMove(canvas, to);
+        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, to);
+
+        QCOMPARE(tab.undoStack()->count(), stepsBefore + 1); // one step per drag
+        QVERIFY(tab.pointEditor()->points()[2] != pointsBefore[2]);
+        QVERIFY(tab.currentFit()->controlPoints != controlBefore);
+        QVERIFY(tab.readoutText() != readoutBefore);
+        // The readout is the core's value for the new points.
+        const auto core = fitBezier(tab.pointEditor()->points(), optionsOf(tab));
+        QVERIFY(core.ok());
+        QVERIFY2(tab.readoutText().contains(number(core->sse)), qPrintable(tab.readoutText()));
+
+        tab.undoStack()->undo();
+        QCOMPARE(tab.pointEditor()->points(), pointsBefore);
+        QCOMPARE(tab.currentFit()->controlPoints, controlBefore);
+        QCOMPARE(tab.readoutText(), readoutBefore);
+        QCOMPARE(tab.exactPanel()->plainText(), exactBefore);
+    }
+
+    void readoutsMatchTheCore_data()
+    {
+        QTest::addColumn<QString>("example");
+        for (const char* id : {"2.7", "2.8", "2.9", "2.10"})
+            QTest::newRow(id) << QString::fromLatin1(id);
+    }
+    void readoutsMatchTheCore()
+    {
+        QFETCH(QString, example);
+        FitTab tab;
+        QVERIFY(loadEx(tab, example.toLatin1().constData()));
+        const auto core = fitBezier(tab.pointEditor()->points(), optionsOf(tab));
+        QVERIFY(core.ok());
+        QCOMPARE(tab.currentFit()->sse, core->sse);
+        const QString text = tab.readoutText();
+        QVERIFY2(text.contains(number(core->sse)), qPrintable(text));
+        QVERIFY(text.contains(number(core->rms)));
+        QVERIFY(text.contains(number(core->maxError)));
+        QVERIFY(text.contains(number(core->cond)));
+        // Ex 2.9 (chord, n = 2) fits better than Ex 2.7 (uniform, n = 2), as the thesis observes.
+        if (example == QLatin1String("2.9")) {
+            FitTab uniform;
+            QVERIFY(loadEx(uniform, "2.7"));
+            QVERIFY(core->sse < uniform.currentFit()->sse);
+        }
+    }
+
+    void normalEquationsBreakWhereQrDoesNot()
+    {
+        FitTab tab;
+        tab.pointEditor()->setPoints(smoothSamples(200), QStringLiteral("samples"));
+        FitSettings s = tab.settings();
+        s.degree = 25;
+        s.parametrization = Parametrization::Uniform;
+        s.solver = LeastSquaresSolver::Qr;
+        tab.changeSettings(s, QStringLiteral("qr"));
+        QVERIFY(tab.currentFit());
+        const double qrError = tab.currentFit()->sse;
+        QVERIFY(!tab.warningText().contains(QStringLiteral("normal equations")));
+
+        tab.solverBox()->setCurrentIndex(tab.solverBox()->findData(static_cast<int>(LeastSquaresSolver::Normal)));
+        QVERIFY(tab.settings().solver == LeastSquaresSolver::Normal);
+        const QString warning = tab.warningText();
+        QVERIFY2(warning.contains(QStringLiteral("normal equations")), qPrintable(warning));
+        if (tab.currentFit()) {
+            const double normalError = tab.currentFit()->sse;
+            qInfo("degree 25, 200 points: SSE %.17g with QR, %.17g with the normal equations", qrError, normalError);
+            QVERIFY(normalError > qrError); // worse than the optimum
+        } else {
+            QVERIFY(!tab.fitError().isEmpty());
+        }
+        QVERIFY(!tab.readoutText().contains(QStringLiteral("nan")));
+        // Back to QR: the optimum again.
+        tab.undoStack()->undo();
+        QVERIFY(tab.settings().solver == LeastSquaresSolver::Qr);
+        QCOMPARE(tab.currentFit()->sse, qrError);
+    }
+
+    void highDegreeDoesNotBreak()
+    {
+        FitTab tab;
+        tab.pointEditor()->setPoints(smoothSamples(200), QStringLiteral("samples"));
+        for (int solver = 0; solver < 3; ++solver) {
+            tab.solverBox()->setCurrentIndex(solver);
+            tab.degreeBox()->setValue(60);
+            QCOMPARE(tab.fittedDegree(), 60);
+            QVERIFY(!tab.readoutText().contains(QStringLiteral("nan"), Qt::CaseInsensitive));
+            QVERIFY(!tab.exactPanel()->plainText().contains(QStringLiteral("nan"), Qt::CaseInsensitive));
+            // A warning (high degree, ill-conditioned), or for the normal equations a refusal that says why.
+            QVERIFY2(!tab.warningText().isEmpty() || !tab.fitError().isEmpty(), qPrintable(tab.readoutText()));
+            if (!tab.currentFit())
+                QVERIFY(tab.readoutText().contains(QStringLiteral("QR or SVD")));
+            if (tab.currentFit())
+                for (const Point& p : tab.currentFit()->controlPoints)
+                    QVERIFY(isFinite(p));
+        }
+    }
+
+    void degreeCannotExceedK()
+    {
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.7")); // k = 4
+        QCOMPARE(tab.degreeBox()->maximum(), 4);
+        tab.degreeBox()->setValue(9);
+        QCOMPARE(tab.degreeBox()->value(), 4);
+        QCOMPARE(tab.fittedDegree(), 4);
+        QSignalSpy messages(&tab, &FitTab::statusMessage);
+        tab.degreeBox()->stepBy(1);
+        QCOMPARE(tab.degreeBox()->value(), 4);
+        QVERIFY(!messages.isEmpty());
+        QVERIFY(messages.last().at(0).toString().contains(QStringLiteral("n ≤ 4")));
+        // Four points interpolate with n = 3… and deleting one lowers the degree, with a reason.
+        tab.pointEditor()->removePoint(4);
+        QCOMPARE(tab.degreeBox()->maximum(), 3);
+        QCOMPARE(tab.fittedDegree(), 3);
+        QVERIFY(messages.last().at(0).toString().contains(QStringLiteral("lowered")));
+        QVERIFY(tab.currentFit()->sse < 1e-20); // n = k interpolates
+        tab.undoStack()->undo();
+        QCOMPARE(tab.fittedDegree(), 4);
+    }
+
+    void settingsAreUndoable()
+    {
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.7"));
+        const FitSettings before = tab.settings();
+        const double sse = tab.currentFit()->sse;
+        tab.degreeBox()->setValue(3);
+        tab.degreeBox()->setValue(4); // merges with the previous step
+        tab.parametrizationBox()->setCurrentIndex(2);
+        QVERIFY(tab.settings().parametrization == Parametrization::Centripetal);
+        tab.undoStack()->undo();
+        QVERIFY(tab.settings().parametrization == Parametrization::Uniform);
+        QCOMPARE(tab.settings().degree, 4);
+        tab.undoStack()->undo();
+        QCOMPARE(tab.settings(), before);
+        QCOMPARE(tab.degreeBox()->value(), 2);
+        QCOMPARE(tab.currentFit()->sse, sse);
+        // Loading an example is one step.
+        const int steps = tab.undoStack()->index();
+        QVERIFY(loadEx(tab, "2.10"));
+        QCOMPARE(tab.undoStack()->index(), steps + 1);
+        tab.undoStack()->undo();
+        QCOMPARE(tab.settings(), before);
+    }
+
+    void csvImport()
+    {
+        QTemporaryDir dir;
+        const QString good = dir.filePath(QStringLiteral("good.csv"));
+        {
+            QFile f(good);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("x,y\n0,0\n1,2\n# a comment\n2,1.5\n3,-1\n4,1/3\n");
+        }
+        const QString bad = dir.filePath(QStringLiteral("bad.csv"));
+        {
+            QFile f(bad);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write("0,0\n1,banana\n\x01\x02\n");
+        }
+        FitTab tab;
+        QString error;
+        QVERIFY2(tab.importFile(good, &error), qPrintable(error));
+        QCOMPARE(tab.pointEditor()->points().size(), std::size_t(5));
+        QCOMPARE(tab.pointEditor()->points()[4], Point(4, 1.0 / 3));
+        QCOMPARE(tab.pointTable()->rowCount(), 5);
+        QVERIFY(tab.currentFit());
+        const std::vector<Point> kept = tab.pointEditor()->points();
+        const int steps = tab.undoStack()->count();
+
+        QVERIFY(!tab.importFile(bad, &error));
+        QVERIFY(!error.isEmpty());
+        QVERIFY(error.contains(QStringLiteral("bad.csv")));
+        QCOMPARE(tab.pointEditor()->points(), kept);
+        QCOMPARE(tab.undoStack()->count(), steps);
+        QVERIFY(!tab.importFile(dir.filePath(QStringLiteral("missing.csv")), &error));
+        QCOMPARE(tab.pointEditor()->points(), kept);
+    }
+
+    void aMillionPoints()
+    {
+        std::vector<Point> q;
+        for (int i = 0; i < 1000000; ++i) {
+            const double s = i / 999999.0;
+            q.emplace_back(std::cos(3 * s) + 1e-3 * std::sin(7.0 * i), std::sin(3 * s) + 1e-3 * std::cos(5.0 * i));
+        }
+        FitTab tab;
+        tab.resize(1280, 760);
+        tab.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&tab));
+        QElapsedTimer timer;
+        timer.start();
+        tab.pointEditor()->setPoints(q, QStringLiteral("many"));
+        const qint64 fitted = timer.elapsed();
+        tab.canvas()->repaint();
+        qInfo("10^6 points: loaded and fitted in %lld ms, drawn in %lld ms", fitted, timer.elapsed() - fitted);
+        QVERIFY(tab.currentFit());
+        QVERIFY(std::isfinite(tab.currentFit()->sse));
+        QCOMPARE(tab.pointTable()->rowCount(), 0); // not listed
+        timer.restart();
+        const QString csv = tab.csv();
+        qInfo("10^6 points: CSV written in %lld ms", timer.elapsed());
+        QCOMPARE(csv.count(QLatin1Char('\n')), 1000000 + 1 + 2 + tab.fittedDegree() + 1);
+    }
+
+    void saveLoadRoundTrip()
+    {
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.10"));
+        tab.pointEditor()->movePoint(1, Point(1.0 / 3, 2.718281828459045));
+        FitSettings s = tab.settings();
+        s.solver = LeastSquaresSolver::Svd;
+        s.correctParameters = true;
+        s.iterations = 7;
+        tab.changeSettings(s, QStringLiteral("svd"));
+        tab.showMatricesBox()->setChecked(true);
+        const QJsonObject state = tab.saveState();
+        // Through the JSON text, as in a .granota file.
+        const QJsonObject reread = QJsonDocument::fromJson(QJsonDocument(state).toJson()).object();
+
+        FitTab other;
+        QString error;
+        QVERIFY2(other.loadState(reread, &error), qPrintable(error));
+        QCOMPARE(other.saveState(), state);
+        QCOMPARE(other.pointEditor()->points(), tab.pointEditor()->points());
+        QCOMPARE(other.settings(), tab.settings());
+        QVERIFY(other.showMatricesBox()->isChecked());
+        QCOMPARE(other.currentFit()->sse, tab.currentFit()->sse);
+        QCOMPARE(other.readoutText(), tab.readoutText());
+    }
+
+    void loadStateRejectsBadData_data()
+    {
+        QTest::addColumn<QByteArray>("json");
+        QTest::newRow("nan string") << QByteArray("{\"points\": [[\"nan\", 1], [2, 3]], \"degree\": 1}");
+        QTest::newRow("huge") << QByteArray("{\"points\": [[1e999, 1], [2, 3]], \"degree\": 1}");
+        QTest::newRow("one point") << QByteArray("{\"points\": [[1, 1]], \"degree\": 0}");
+        QTest::newRow("not a list") << QByteArray("{\"points\": 7, \"degree\": 1}");
+        QTest::newRow("three coordinates") << QByteArray("{\"points\": [[1, 1, 1], [2, 3]]}");
+        QTest::newRow("negative degree") << QByteArray("{\"points\": [[1, 1], [2, 3]], \"degree\": -5}");
+        QTest::newRow("fractional degree") << QByteArray("{\"points\": [[1, 1], [2, 3]], \"degree\": 1.5}");
+        QTest::newRow("unknown solver") << QByteArray("{\"points\": [[1, 1], [2, 3]], \"solver\": \"magic\"}");
+        QTest::newRow("unknown parameters") << QByteArray("{\"points\": [[1, 1], [2, 3]], \"parametrization\": 3}");
+        QTest::newRow("iterations") << QByteArray("{\"points\": [[1, 1], [2, 3]], \"iterations\": 0}");
+    }
+    void loadStateRejectsBadData()
+    {
+        QFETCH(QByteArray, json);
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.8"));
+        const QJsonObject before = tab.saveState();
+        const int steps = tab.undoStack()->count();
+        QString error;
+        QVERIFY(!tab.loadState(QJsonDocument::fromJson(json).object(), &error));
+        QVERIFY(!error.isEmpty());
+        QCOMPARE(tab.saveState(), before);
+        QCOMPARE(tab.undoStack()->count(), steps);
+        // A NaN put straight into the object is refused too.
+        QJsonObject nan = before;
+        QJsonArray points = nan.value(QStringLiteral("points")).toArray();
+        points[1] = QJsonArray{std::numeric_limits<double>::quiet_NaN(), 1.0};
+        nan.insert(QStringLiteral("points"), points);
+        QVERIFY(!tab.loadState(nan, &error));
+        QCOMPARE(tab.saveState(), before);
+    }
+
+    void errorAgainstDegreePlot()
+    {
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.7"));
+        QCPGraph* graph = tab.errorPlot()->graph(0);
+        QCOMPARE(graph->dataCount(), 4); // n = 1..k
+        QCOMPARE(tab.errorPlot()->graph(1)->dataCount(), 1);
+        QCOMPARE(tab.errorPlot()->graph(1)->data()->at(0)->key, 2.0);
+        QCOMPARE(graph->data()->at(1)->value, tab.currentFit()->sse); // the current n is on the curve
+
+        tab.pointEditor()->setPoints(smoothSamples(200), QStringLiteral("samples"));
+        tab.degreeBox()->setValue(5);
+        QCOMPARE(graph->dataCount(), 30); // n = 1..30
+        QCOMPARE(tab.errorPlot()->graph(1)->data()->at(0)->key, 5.0);
+        for (int i = 0; i < graph->dataCount(); ++i) {
+            QCOMPARE(graph->data()->at(i)->key, double(i + 1));
+            if (i > 0) // nested spaces: the optimum cannot grow with n
+                QVERIFY2(graph->data()->at(i)->value <= graph->data()->at(i - 1)->value * (1 + 1e-9),
+                         qPrintable(QString::number(i + 1)));
+        }
+        QVERIFY(graph->data()->at(29)->value < graph->data()->at(0)->value);
+    }
+
+    void degenerateData()
+    {
+        FitTab tab;
+        tab.parametrizationBox()->setCurrentIndex(1); // chord length
+        tab.pointEditor()->setPoints({{1, 1}, {1, 1}, {1, 1}, {1, 1}}, QStringLiteral("same"));
+        QVERIFY(tab.currentFit());
+        QVERIFY(tab.warningText().contains(QStringLiteral("coincide")));
+        QVERIFY(!tab.readoutText().contains(QStringLiteral("nan")));
+        tab.pointEditor()->setPoints({{0, 0}, {1, 2}, {1, 2}, {3, 6}, {2, 4}}, QStringLiteral("line"));
+        QVERIFY(tab.currentFit());
+        QVERIFY(tab.warningText().contains(QStringLiteral("collinear")));
+        QVERIFY(tab.warningText().contains(QStringLiteral("Q1 and Q2 coincide")));
+        tab.pointEditor()->setPoints({{1e9, 1e9}, {1e9 + 3, 1e9 - 1}, {1e9 + 5, 1e9 + 2}}, QStringLiteral("far"));
+        QVERIFY(tab.currentFit());
+        tab.pointEditor()->setPoints({{1e-9, 0}, {2e-9, 1e-9}, {4e-9, -1e-9}}, QStringLiteral("tiny"));
+        QVERIFY(tab.currentFit());
+        QVERIFY(std::isfinite(tab.currentFit()->sse));
+        QVERIFY(!tab.csv().contains(QStringLiteral("nan")));
+        QVERIFY(!tab.tikz().contains(QStringLiteral("nan")));
+    }
+
+    void csvAndTikz()
+    {
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.7"));
+        const QStringList lines = tab.csv().split(QLatin1Char('\n'));
+        QCOMPARE(lines[0], QStringLiteral("i,x,y,t,alpha_x,alpha_y,residual_x,residual_y"));
+        QVERIFY(lines[2].startsWith(QStringLiteral("1,1,3,0.25,")));
+        QVERIFY(tab.csv().contains(QStringLiteral("j,P_x,P_y")));
+        QCOMPARE(tab.tikz().count(QStringLiteral("\\begin{tikzpicture}")), 1);
+        QVERIFY(tab.tikz().contains(QStringLiteral("P_{2}")));
+        QVERIFY(tab.tikz().contains(QStringLiteral("Q_{4}")));
+    }
+};
+
+QTEST_MAIN(TestGuiFit)
+#include "test_gui_fit.moc"
