@@ -100,8 +100,12 @@ bool languageNeutral(const QString& text)
         QStringLiteral("De Casteljau"), QStringLiteral("Bernstein"), QStringLiteral("Catmull-Rom"),
         QStringLiteral("Granota"), QStringLiteral("Català"), QStringLiteral("English"), QStringLiteral("TikZ"),
         QStringLiteral("QR"), QStringLiteral("SVD"), QStringLiteral("PNG"), QStringLiteral("SVG"), QStringLiteral("PDF"),
-        QStringLiteral("CSV"), QStringLiteral("Verlet"), QStringLiteral("XPBD")};
+        QStringLiteral("CSV"), QStringLiteral("Verlet"), QStringLiteral("XPBD"),
+        // Words that are spelt the same in Catalan.
+        QStringLiteral("Tangent"), QStringLiteral("5.2.1 Obstacles"), QStringLiteral("Centre (x, y)")};
     if (names.contains(text.trimmed()))
+        return true;
+    if (text.endsWith(QLatin1String(".granota"))) // File ▸ Open Recent lists file names
         return true;
     // Numbers, symbols, variable names, point labels, file names.
     static const QRegularExpression symbols(QStringLiteral(

@@ -1,62 +1,3183 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="ca_ES">
-<context>
-    <name>granota::ui::MainWindow</name>
-    <message>
-        <location filename="../ui/main_window.cpp" line="36"/>
-        <source>Granota</source>
-        <translation>Granota</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="37"/>
-        <source>De Casteljau</source>
-        <translation>De Casteljau</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="37"/>
-        <source>Bernstein</source>
-        <translation>Bernstein</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="37"/>
-        <source>Fitting</source>
-        <translation>Ajust</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="37"/>
-        <source>Catmull-Rom</source>
-        <translation>Catmull-Rom</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="37"/>
-        <source>Frog</source>
-        <translation>Granota</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="38"/>
-        <source>§2.1.1, Def 2.4</source>
-        <translation>§2.1.1, Def. 2.4</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="38"/>
-        <source>§2.1.2, Def 2.5</source>
-        <translation>§2.1.2, Def. 2.5</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="38"/>
-        <source>§2.1.3, Lemma 2.2</source>
-        <translation>§2.1.3, Lema 2.2</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="39"/>
-        <source>§2.2, Def 2.10</source>
-        <translation>§2.2, Def. 2.10</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="39"/>
-        <source>Chapter 4, Annex II</source>
-        <translation>Capítol 4, Annex II</translation>
-    </message>
-</context>
+    <context>
+        <name>CatmullRomCurves</name>
+        <message>
+            <location filename="../ui/catmull_rom_curves.cpp" line="58" />
+            <source>An open curve needs at least 2 points.</source>
+            <translation>Una corba oberta necessita almenys 2 punts.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_curves.cpp" line="59" />
+            <source>A single segment (Def 2.8) needs at least 4 points.</source>
+            <translation>Un sol segment (Def. 2.8) necessita almenys 4 punts.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_curves.cpp" line="60" />
+            <source>A cyclic or closed curve needs at least 3 points.</source>
+            <translation>Una corba cíclica o tancada necessita almenys 3 punts.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_curves.cpp" line="62" />
+            <source>A point or a tension is not a finite number.</source>
+            <translation>Un punt o una tensió no és un nombre finit.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_curves.cpp" line="63" />
+            <source>The curve overflows: the coordinates are too large.</source>
+            <translation>La corba desborda: les coordenades són massa grans.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_curves.cpp" line="65" />
+            <source>No cubic spline (Def 2.3): the points are not a function of x — their abscissae must increase strictly from q0 to qn.</source>
+            <translation>No hi ha spline cúbic (Def. 2.3): els punts no són una funció de x — les seues abscisses han de créixer estrictament de q0 a qn.</translation>
+        </message>
+    </context>
+    <context>
+        <name>CatmullRomReport</name>
+        <message numerus="yes">
+            <location filename="../ui/catmull_rom_report.cpp" line="62" />
+            <source>… and %n more segments.</source>
+            <translation>
+                <numerusform>… i %n segments més.</numerusform>
+                <numerusform>… i %n segments més.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="71" />
+            <source>%1 jumps at x = %2: left %3, right %4 (jump %5)</source>
+            <translation>%1 fa un salt a x = %2: per l'esquerra %3, per la dreta %4 (salt %5)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="75" />
+            <source>%1 does not interpolate (%2, %3): %1(%2) = %4</source>
+            <translation>%1 no interpola (%2, %3): %1(%2) = %4</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="79" />
+            <source>The point (%1, %2) lies outside the domain.</source>
+            <translation>El punt (%1, %2) és fora del domini.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="91" />
+            <source>not continuous</source>
+            <translation>no és contínua</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="94" />
+            <source>C^%1 at every knot</source>
+            <translation>C^%1 a tots els nusos</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="97" />
+            <source>C^%1, not C^%2</source>
+            <translation>C^%1, però no C^%2</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/catmull_rom_report.cpp" line="101" />
+            <source>interpolates all %n points</source>
+            <translation>
+                <numerusform>interpola els %n punts</numerusform>
+                <numerusform>interpola els %n punts</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="103" />
+            <source>does not interpolate every point</source>
+            <translation>no interpola tots els punts</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="117" />
+            <location filename="../ui/catmull_rom_report.cpp" line="180" />
+            <source>knot</source>
+            <translation>nus</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="147" />
+            <source>no interior knot</source>
+            <translation>cap nus interior</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/catmull_rom_report.cpp" line="150" />
+            <source>equal tangents at all %n knots (C¹)</source>
+            <translation>
+                <numerusform>tangents iguals als %n nusos (C¹)</numerusform>
+                <numerusform>tangents iguals als %n nusos (C¹)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="153" />
+            <source>C² too (p″ matches)</source>
+            <translation>també C² (p″ coincideix)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="154" />
+            <source>not C²: p″ jumps</source>
+            <translation>no és C²: p″ fa un salt</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/catmull_rom_report.cpp" line="158" />
+            <source>parallel tangents at all %n knots (G¹), not equal ones (C¹) in the local parameters</source>
+            <translation>
+                <numerusform>tangents paral·leles als %n nusos (G¹), no iguals (C¹) en els paràmetres locals</numerusform>
+                <numerusform>tangents paral·leles als %n nusos (G¹), no iguals (C¹) en els paràmetres locals</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="163" />
+            <source>the tangents differ at some knots</source>
+            <translation>les tangents difereixen en alguns nusos</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="180" />
+            <source>end of the segment before</source>
+            <translation>final del segment anterior</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="181" />
+            <source>start of the segment after</source>
+            <translation>inici del segment següent</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="188" />
+            <source>Matrix form (Lemma 2.3)</source>
+            <translation>Forma matricial (Lema 2.3)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="207" />
+            <source>Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)</source>
+            <translation>Funcions de mescla w_j(t, τ) (Def. 2.9, Cor. 2.1)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="220" />
+            <source>Processing's curveTightness</source>
+            <translation>El curveTightness de Processing</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="221" />
+            <source>Processing draws the same curves with curveTightness(s), τ = (1 − s)/2: s = 0 (its default) is τ = 1/2.</source>
+            <translation>Processing dibuixa les mateixes corbes amb curveTightness(s), τ = (1 − s)/2: s = 0 (el valor per defecte) és τ = 1/2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="255" />
+            <source>Ex 2.1 as printed in the thesis</source>
+            <translation>L'Ex. 2.1 tal com apareix al treball</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="261" />
+            <source>The check of Def 2.3 on the printed pieces:</source>
+            <translation>La comprovació de la Def. 2.3 sobre els trossos impresos:</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="267" />
+            <source>%1 as printed misses both of its points by the same constant: it lacks %2.</source>
+            <translation>%1 tal com està imprès s'allunya dels seus dos punts en la mateixa constant: li falta %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="270" />
+            <source>Correct %1:</source>
+            <translation>%1 correcte:</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="275" />
+            <source>The corrected spline:</source>
+            <translation>L'spline corregit:</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="277" />
+            <source>Ex 2.1's spline is a cubic spline (Def 2.3) but not the natural one: s″ ≠ 0 at its ends, so its pieces differ from those above.</source>
+            <translation>L'spline de l'Ex. 2.1 és un spline cúbic (Def. 2.3) però no el natural: s″ ≠ 0 als extrems, i per això els seus trossos difereixen dels de dalt.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="286" />
+            <source>Cubic spline C² (Def 2.3), natural ends</source>
+            <translation>Spline cúbic C² (Def. 2.3), extrems naturals</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="309" />
+            <source>In decimals, each piece in powers of u = x − x_i:</source>
+            <translation>En decimals, cada tros en potències de u = x − x_i:</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="326" />
+            <source>open</source>
+            <translation>oberta</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="327" />
+            <source>cyclic</source>
+            <translation>cíclica</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="328" />
+            <source>closed</source>
+            <translation>tancada</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="329" />
+            <source>single segment</source>
+            <translation>un sol segment</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="351" />
+            <source>Segments, t ∈ [0, 1]: %1</source>
+            <translation>Segments, t ∈ [0, 1]: %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="353" />
+            <source>Centripetal and chordal spacing: coefficients in decimals.</source>
+            <translation>Parametrització centrípeta o per longitud de corda: coeficients en decimals.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="354" />
+            <source>The points are not small fractions: coefficients in decimals.</source>
+            <translation>Els punts no són fraccions petites: coeficients en decimals.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="370" />
+            <source>Tangents at the knots (Prop 2.3)</source>
+            <translation>Tangents als nusos (Prop. 2.3)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="371" />
+            <source>Catmull-Rom curves are C¹: at every knot c_i′(1) = c_{i+1}′(0) = τ(q_{i+1} − q_{i−1}).</source>
+            <translation>Les corbes de Catmull-Rom són C¹: a cada nus c_i′(1) = c_{i+1}′(0) = τ(q_{i+1} − q_{i−1}).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="394" />
+            <source>Smoothness compared (§2.3)</source>
+            <translation>Comparació de la suavitat (§2.3)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="397" />
+            <source>Bézier, degree %1</source>
+            <translation>Bézier, grau %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="397" />
+            <source>C^∞: one polynomial</source>
+            <translation>C^∞: un sol polinomi</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="398" />
+            <source>only q0 and q%1</source>
+            <translation>només q0 i q%1</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="400" />
+            <source>Catmull-Rom, τ = %1</source>
+            <translation>Catmull-Rom, τ = %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="401" />
+            <source>C^%1 at the joins (checked)</source>
+            <translation>C^%1 a les unions (comprovat)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="402" />
+            <source>not C¹ at the joins (checked)</source>
+            <translation>no és C¹ a les unions (comprovat)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="403" />
+            <location filename="../ui/catmull_rom_report.cpp" line="407" />
+            <source>every point</source>
+            <translation>tots els punts</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="405" />
+            <source>Cubic spline</source>
+            <translation>Spline cúbic</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="406" />
+            <source>C² (checked above)</source>
+            <translation>C² (comprovat més amunt)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="406" />
+            <source>not defined</source>
+            <translation>no definit</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="408" />
+            <source>curve</source>
+            <translation>corba</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="408" />
+            <source>smoothness</source>
+            <translation>suavitat</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="408" />
+            <source>passes through</source>
+            <translation>passa per</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="410" />
+            <source>The Bézier curve only approaches the inner points: Catmull-Rom passes through all of them, which is why the thesis chose it for the frog (§2.3, §4.12).</source>
+            <translation>La corba de Bézier només s'acosta als punts interiors: la de Catmull-Rom passa per tots, i per això el treball la va triar per a la granota (§2.3, §4.12).</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::BernsteinTab</name>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="326" />
+            <source>At t = %1 the weights sum to %2.&lt;br&gt;Def 2.6: %3 = %4&lt;br&gt;De Casteljau: %5 = %6 (difference %7)</source>
+            <translation>A t = %1 els pesos sumen %2.&lt;br&gt;Def 2.6: %3 = %4&lt;br&gt;De Casteljau: %5 = %6 (diferència %7)</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/bernstein_tab.cpp" line="332" />
+            <source>Weights of the %n control points of the De Casteljau tab at t (Def 2.6)</source>
+            <translation>
+                <numerusform>Pesos dels %n punts de control de la pestanya De Casteljau a t (Def 2.6)</numerusform>
+                <numerusform>Pesos dels %n punts de control de la pestanya De Casteljau a t (Def 2.6)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="393" />
+            <source>yes</source>
+            <translation>sí</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="395" />
+            <source>%1 %2 %3 — residual at t: %4; exact as polynomials: %5</source>
+            <translation>%1 %2 %3 — residu a t: %4; exacta com a polinomis: %5</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="397" />
+            <source>no</source>
+            <translation>no</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="399" />
+            <source>Partition of unity:</source>
+            <translation>Partició de la unitat:</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="402" />
+            <source>Symmetry:</source>
+            <translation>Simetria:</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="407" />
+            <source>Recursion (Lemma 2.1):</source>
+            <translation>Recurrència (Lema 2.1):</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="414" />
+            <source>Recursion (Lemma 2.1): needs n ≥ 1.</source>
+            <translation>Recurrència (Lema 2.1): cal n ≥ 1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="429" />
+            <source>Bernstein polynomials of degree %1 (Def 2.5)</source>
+            <translation>Polinomis de Bernstein de grau %1 (Def 2.5)</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="440" />
+            <source>The De Casteljau tab's curve in the Bernstein basis (Def 2.6)</source>
+            <translation>La corba de la pestanya De Casteljau en la base de Bernstein (Def 2.6)</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="443" />
+            <source>The control points are not small fractions, so the curve is not expanded exactly.</source>
+            <translation>Els punts de control no són fraccions petites; per això la corba no es desenvolupa exactament.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="445" />
+            <source>The expansion is shown up to degree %1; the curve has degree %2.</source>
+            <translation>El desenvolupament es mostra fins al grau %1; la corba té grau %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="468" />
+            <source>Degree n:</source>
+            <translation>Grau n:</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="469" />
+            <source>The degree n of the Bernstein polynomials B_i^n(t) = C(n,i) t^i (1−t)^(n−i) (Def 2.5).</source>
+            <translation>El grau n dels polinomis de Bernstein B_i^n(t) = C(n,i) t^i (1−t)^(n−i) (Def 2.5).</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="472" />
+            <source>All degrees up to n</source>
+            <translation>Tots els graus fins a n</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="473" />
+            <source>Overlay the polynomials of every degree 0…n, one colour per degree, like the tots option of the thesis's Matlab Rep_Pol_Bernstein (Ex 2.4, Figure 2.4).</source>
+            <translation>Superposa els polinomis de cada grau 0…n, un color per grau, com l'opció tots de la funció de Matlab Rep_Pol_Bernstein del treball (Ex 2.4, Figura 2.4).</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="475" />
+            <source>value</source>
+            <translation>valor</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="476" />
+            <source>The Bernstein polynomials on [0, 1] (Def 2.5). Move the mouse to read their values; click or drag to move t, shared with the De Casteljau tab.</source>
+            <translation>Els polinomis de Bernstein a [0, 1] (Def 2.5). Moveu el ratolí per llegir-ne els valors; feu clic o arrossegueu per moure t, compartit amb la pestanya De Casteljau.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="478" />
+            <source>Def 2.6: c(t) = Σ B_i^n(t) P_i. Each bar is the weight of one control point of the De Casteljau tab at the current t; they sum to 1 (partition of unity).</source>
+            <translation>Def 2.6: c(t) = Σ B_i^n(t) P_i. Cada barra és el pes d'un punt de control de la pestanya De Casteljau al t actual; sumen 1 (partició de la unitat).</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="480" />
+            <source>weight</source>
+            <translation>pes</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="481" />
+            <source>The point c(t) from the Bernstein sum (Def 2.6) and from De Casteljau's algorithm (Def 2.4): equal by Prop 2.1.</source>
+            <translation>El punt c(t) obtingut amb la suma de Bernstein (Def 2.6) i amb l'algorisme de De Casteljau (Def 2.4): iguals per la Prop 2.1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="483" />
+            <source>Properties at the current n and t</source>
+            <translation>Propietats als n i t actuals</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="484" />
+            <source>Each property is checked twice: in floating point at t (the residual) and exactly, as polynomials with rational coefficients.</source>
+            <translation>Cada propietat es comprova dues vegades: en coma flotant a t (el residu) i exactament, com a polinomis de coeficients racionals.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="486" />
+            <source>Partition of unity: the Bernstein polynomials of one degree sum to 1.</source>
+            <translation>Partició de la unitat: els polinomis de Bernstein d'un mateix grau sumen 1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="487" />
+            <source>Symmetry: B_i^n(t) = B_(n−i)^n(1 − t).</source>
+            <translation>Simetria: B_i^n(t) = B_(n−i)^n(1 − t).</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="488" />
+            <source>Lemma 2.1: B_i^n = (1 − t) B_i^(n−1) + t B_(i−1)^(n−1).</source>
+            <translation>Lema 2.1: B_i^n = (1 − t) B_i^(n−1) + t B_(i−1)^(n−1).</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="489" />
+            <source>The Bernstein polynomials expanded in powers of t (Ex 2.4) and the De Casteljau tab's curve written in the Bernstein basis (Ex 2.5, Ex 2.6).</source>
+            <translation>Els polinomis de Bernstein desenvolupats en potències de t (Ex 2.4) i la corba de la pestanya De Casteljau escrita en la base de Bernstein (Ex 2.5, Ex 2.6).</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="517" />
+            <source>The Bernstein degree must be a whole number from 0 to %1.</source>
+            <translation>El grau de Bernstein ha de ser un nombre enter de 0 a %1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="523" />
+            <source>The Bernstein mode must be "single" or "all".</source>
+            <translation>El mode de Bernstein ha de ser "single" o "all".</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="529" />
+            <source>The parameter t must be a number between 0 and 1.</source>
+            <translation>El paràmetre t ha de ser un nombre entre 0 i 1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="546" />
+            <source>Ex %1: the Bernstein polynomials of every degree up to %2.</source>
+            <translation>Ex %1: els polinomis de Bernstein de cada grau fins a %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="552" />
+            <source>Load Ex %1</source>
+            <translation>Carrega l'Ex %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="557" />
+            <source>Ex %1: the curve written in the Bernstein basis is in the panel on the right.</source>
+            <translation>Ex %1: la corba escrita en la base de Bernstein és al quadre de la dreta.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="613" />
+            <source>Move the mouse over the plot to read B_i^n(t); click or drag to move t.</source>
+            <translation>Moveu el ratolí per sobre del gràfic per llegir B_i^n(t); feu clic o arrossegueu per moure t.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.h" line="46" />
+            <source>Bernstein</source>
+            <translation>Bernstein</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::CatmullRomTab</name>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="286" />
+            <source>Tensions τ (Def 2.8)</source>
+            <translation>Tensions τ (Def. 2.8)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="287" />
+            <source>The tension τ scales the tangents p′(0) = τ(p2 − p0), p′(1) = τ(p3 − p1) of every segment (Def 2.8): 0 gives straight segments, 1/2 is the usual value, negative values turn the tangents round (Ex 2.12). One curve per τ, in its colour.</source>
+            <translation>La tensió τ escala les tangents p′(0) = τ(p2 − p0), p′(1) = τ(p3 − p1) de cada segment (Def. 2.8): 0 dona segments rectes, 1/2 és el valor habitual i els valors negatius giren les tangents (Ex. 2.12). Una corba per cada τ, amb el seu color.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="290" />
+            <source>The tensions drawn, each with its colour and Processing's curveTightness(s), τ = (1 − s)/2. Select one for the slider, the blending plot and the tangent table.</source>
+            <translation>Les tensions dibuixades, cadascuna amb el seu color i el curveTightness(s) de Processing, τ = (1 − s)/2. Seleccioneu-ne una per al control lliscant, el gràfic de les funcions de mescla i la taula de tangents.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="292" />
+            <source>τ, e.g. 1/2 or -0.5</source>
+            <translation>τ, p. ex. 1/2 o -0,5</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="293" />
+            <source>Type a tension as a decimal or a fraction (-1/2), between −10 and 10, and press Enter.</source>
+            <translation>Escriviu una tensió com a decimal o com a fracció (-1/2), entre −10 i 10, i premeu Retorn.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="294" />
+            <source>&amp;Add</source>
+            <translation>&amp;Afegeix</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="295" />
+            <source>Add the typed tension: one more curve on the canvas (Ex 2.11 compares 0, 1/2 and 2).</source>
+            <translation>Afegeix la tensió escrita: una corba més al llenç (l'Ex. 2.11 compara 0, 1/2 i 2).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="296" />
+            <source>&amp;Remove</source>
+            <translation>&amp;Elimina</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="297" />
+            <source>Remove the selected tension and its curve.</source>
+            <translation>Elimina la tensió seleccionada i la seua corba.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="298" />
+            <source>Drag to change the selected tension in steps of 0.05, from −10 to 10; the curve, the blending functions and the exact panel follow.</source>
+            <translation>Arrossegueu per canviar la tensió seleccionada en passos de 0,05, de −10 a 10; la corba, les funcions de mescla i el quadre exacte la segueixen.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="300" />
+            <source>Curve (Def 2.10)</source>
+            <translation>Corba (Def. 2.10)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="301" />
+            <source>&amp;Ends:</source>
+            <translation>E&amp;xtrems:</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="302" />
+            <source>open (ends repeated)</source>
+            <translation>oberta (extrems repetits)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="303" />
+            <source>cyclic (n segments)</source>
+            <translation>cíclica (n segments)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="304" />
+            <source>closed (n + 1 segments)</source>
+            <translation>tancada (n + 1 segments)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="305" />
+            <source>single segment (Def 2.8)</source>
+            <translation>un sol segment (Def. 2.8)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="306" />
+            <source>How the end segments get their missing neighbours (Def 2.10, Matlab Rep_CatmullRom): open repeats q0 and qn (p1′(0) = τ(q1 − q0)); cyclic takes q₋₁ = qn and qn₊₁ = q0 (n segments, Ex 2.13); closed adds the segment from qn back to q0; a single segment (Def 2.8, Ex 2.11) keeps only the segments with both neighbours.</source>
+            <translation>Com obtenen els segments extrems els veïns que els falten (Def. 2.10, Rep_CatmullRom de Matlab): l'oberta repeteix q0 i qn (p1′(0) = τ(q1 − q0)); la cíclica pren q₋₁ = qn i qn₊₁ = q0 (n segments, Ex. 2.13); la tancada afegeix el segment de qn a q0; un sol segment (Def. 2.8, Ex. 2.11) només conserva els segments que tenen tots dos veïns.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="310" />
+            <source>&amp;Parametrization:</source>
+            <translation>&amp;Parametrització:</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="311" />
+            <source>uniform (thesis)</source>
+            <translation>uniforme (treball)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="312" />
+            <source>centripetal (α = 1/2)</source>
+            <translation>centrípeta (α = 1/2)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="313" />
+            <source>chordal (α = 1)</source>
+            <translation>per longitud de corda (α = 1)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="314" />
+            <source>Knot spacing |q_{i+1} − q_i|^α. The thesis uses uniform spacing (α = 0). Beyond it: centripetal (α = 1/2) avoids cusps and loops, chordal (α = 1) follows the chord lengths; the segments then join with parallel tangents (G¹).</source>
+            <translation>Separació dels nusos |q_{i+1} − q_i|^α. El treball fa servir la parametrització uniforme (α = 0). Més enllà: la centrípeta (α = 1/2) evita cúspides i bucles, la de longitud de corda (α = 1) segueix les longituds de les cordes; aleshores els segments s'uneixen amb tangents paral·leles (G¹).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="317" />
+            <source>Compare with &amp;Bézier</source>
+            <translation>Compara amb &amp;Bézier</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="318" />
+            <source>Draw the Bézier curve that has the same points as control polygon (De Casteljau, Def 2.4): it passes only through q0 and qn, while Catmull-Rom passes through every point (§2.3).</source>
+            <translation>Dibuixa la corba de Bézier que té els mateixos punts com a polígon de control (De Casteljau, Def. 2.4): només passa per q0 i qn, mentre que la de Catmull-Rom passa per tots els punts (§2.3).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="321" />
+            <source>Cubic &amp;spline (C²)</source>
+            <translation>&amp;Spline cúbic (C²)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="322" />
+            <source>Draw the natural C² cubic spline of Def 2.3 through the same points (a function of x: the abscissae must increase) and check its continuity at the knots: Bézier C^∞, Catmull-Rom C¹, cubic spline C² (§2.3, Ex 2.1).</source>
+            <translation>Dibuixa l'spline cúbic natural C² de la Def. 2.3 pels mateixos punts (una funció de x: les abscisses han de créixer) i comprova'n la continuïtat als nusos: Bézier C^∞, Catmull-Rom C¹, spline cúbic C² (§2.3, Ex. 2.1).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="325" />
+            <source>Compare open and &amp;cyclic ends</source>
+            <translation>Compara els extrems oberts i &amp;cíclics</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="326" />
+            <source>Also draw (dashed) and list the curve with the other end mode, as Ex 2.13 compares the cyclic and the open curve through the same points.</source>
+            <translation>Dibuixa també (discontínua) i llista la corba amb l'altre tipus d'extrems, com l'Ex. 2.13 compara la corba cíclica i l'oberta pels mateixos punts.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="328" />
+            <source>Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)</source>
+            <translation>Funcions de mescla w_j(t, τ) (Def. 2.9, Cor. 2.1)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="329" />
+            <source>p(t) = Σ w_j(t, τ) p_j: the weight of each of the four points along a segment. They always add up to 1.</source>
+            <translation>p(t) = Σ w_j(t, τ) p_j: el pes de cadascun dels quatre punts al llarg d'un segment. Sempre sumen 1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="331" />
+            <source>Every &amp;τ</source>
+            <translation>Totes les &amp;τ</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="332" />
+            <source>Plot the blending functions of every tension in the list (one line style per τ), as Ex 2.12 does for τ = −2, 0, 1/2 and 2.</source>
+            <translation>Representa les funcions de mescla de totes les tensions de la llista (un estil de línia per τ), com fa l'Ex. 2.12 per a τ = −2, 0, 1/2 i 2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="334" />
+            <source>The blending functions w_0…w_3 of Cor 2.1 on t ∈ [0, 1].</source>
+            <translation>Les funcions de mescla w_0…w_3 del Cor. 2.1 en t ∈ [0, 1].</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="335" />
+            <source>Exact results: segment polynomials (Lemma 2.3, Def 2.10), tangents at the knots (Prop 2.3), blending functions (Cor 2.1), and the comparisons of §2.3.</source>
+            <translation>Resultats exactes: polinomis dels segments (Lema 2.3, Def. 2.10), tangents als nusos (Prop. 2.3), funcions de mescla (Cor. 2.1) i les comparacions de la §2.3.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="337" />
+            <source>Drag a point to move it; double-click to add one; Delete removes the selected point; drag the paper to pan, wheel to zoom.</source>
+            <translation>Arrossegueu un punt per moure'l; feu doble clic per afegir-ne un; Supr elimina el punt seleccionat; arrossegueu el paper per desplaçar la vista i feu servir la roda per fer zoom.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="339" />
+            <source>Exact results</source>
+            <translation>Resultats exactes</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="340" />
+            <source>Points</source>
+            <translation>Punts</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="342" />
+            <source>The points q0…qn as numbers; fractions such as 1/3 are accepted.</source>
+            <translation>Els punts q0…qn com a nombres; s'accepten fraccions com 1/3.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="350" />
+            <source>τ = %1   (curveTightness %2)</source>
+            <translation>τ = %1   (curveTightness de Processing: %2)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="376" />
+            <source>Selected: τ = %1, Processing's curveTightness(%2)</source>
+            <translation>Seleccionada: τ = %1, curveTightness(%2) de Processing</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="420" />
+            <source>τ = %1 is outside [−10, 10]: beyond that the curve is all overshoot. Not added.</source>
+            <translation>τ = %1 és fora de [−10, 10]: més enllà la corba només fa sobreoscil·lacions. No s'ha afegit.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="423" />
+            <source>“%1” is not a tension: type a decimal (0.5) or a fraction (-1/2). Not added.</source>
+            <translation>«%1» no és una tensió: escriviu un decimal (0.5) o una fracció (-1/2). No s'ha afegit.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="427" />
+            <location filename="../ui/catmull_rom_tab.cpp" line="476" />
+            <source>τ = %1 is already in the list.</source>
+            <translation>τ = %1 ja és a la llista.</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/catmull_rom_tab.cpp" line="431" />
+            <source>At most %n tensions at a time: remove one first.</source>
+            <translation>
+                <numerusform>Com a màxim %n tensions alhora: primer elimineu-ne una.</numerusform>
+                <numerusform>Com a màxim %n tensions alhora: primer elimineu-ne una.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="437" />
+            <source>Add τ = %1</source>
+            <translation>Afegeix τ = %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="438" />
+            <source>Added τ = %1.</source>
+            <translation>S'ha afegit τ = %1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="447" />
+            <source>At least one tension is needed.</source>
+            <translation>Cal almenys una tensió.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="454" />
+            <source>Remove τ = %1</source>
+            <translation>Elimina τ = %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="482" />
+            <source>Change τ</source>
+            <translation>Canvia τ</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="489" />
+            <source>Change the ends</source>
+            <translation>Canvia els extrems</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="491" />
+            <source>A single segment uses four points p0…p3 and joins p1 to p2; with more points, every segment that has both neighbours is drawn.</source>
+            <translation>Un sol segment fa servir quatre punts p0…p3 i uneix p1 amb p2; amb més punts, es dibuixen tots els segments que tenen tots dos veïns.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="499" />
+            <source>Change the parametrization</source>
+            <translation>Canvia la parametrització</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="506" />
+            <source>Show the Bézier curve</source>
+            <translation>Mostra la corba de Bézier</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="506" />
+            <source>Hide the Bézier curve</source>
+            <translation>Amaga la corba de Bézier</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="513" />
+            <source>Show the cubic spline</source>
+            <translation>Mostra l'spline cúbic</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="513" />
+            <source>Hide the cubic spline</source>
+            <translation>Amaga l'spline cúbic</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="520" />
+            <source>Compare the ends</source>
+            <translation>Compara els extrems</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="527" />
+            <source>Blending functions of every τ</source>
+            <translation>Funcions de mescla de totes les τ</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="689" />
+            <source>dashed: %1 ends</source>
+            <translation>discontínua: extrems de tipus %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="691" />
+            <source>Bézier curve of the same points</source>
+            <translation>Corba de Bézier dels mateixos punts</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="694" />
+            <source>no cubic spline: x must increase</source>
+            <translation>sense spline cúbic: x ha de créixer</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="694" />
+            <source>cubic spline C²</source>
+            <translation>spline cúbic C²</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="796" />
+            <location filename="../ui/catmull_rom_tab.cpp" line="798" />
+            <location filename="../ui/catmull_rom_tab.cpp" line="799" />
+            <source>Load Ex %1</source>
+            <translation>Carrega l'Ex %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="826" />
+            <source>The Catmull-Rom points are missing or not a list.</source>
+            <translation>Els punts de Catmull-Rom falten o no són una llista.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="829" />
+            <source>A Catmull-Rom curve needs between 2 and %1 points; the file has %2.</source>
+            <translation>Una corba de Catmull-Rom necessita entre 2 i %1 punts; el fitxer en té %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="836" />
+            <source>Point %1 of the Catmull-Rom tab is not a pair of numbers.</source>
+            <translation>El punt %1 de la pestanya Catmull-Rom no és un parell de nombres.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="839" />
+            <source>Point %1 of the Catmull-Rom tab is not a finite number.</source>
+            <translation>El punt %1 de la pestanya Catmull-Rom no és un nombre finit.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="845" />
+            <source>The Catmull-Rom settings are not valid (“%1”): tensions must be numbers in [−10, 10], at most %2 of them, without repeats.</source>
+            <translation>La configuració de Catmull-Rom no és vàlida («%1»): les tensions han de ser nombres de [−10, 10], com a màxim %2, sense repeticions.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.h" line="42" />
+            <source>Catmull-Rom</source>
+            <translation>Catmull-Rom</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::DeCasteljauParameterControl</name>
+        <message>
+            <location filename="../ui/decasteljau_parameter_control.cpp" line="95" />
+            <source>The parameter t ∈ [0, 1] of the curve c(t) (Def 2.4). Type a decimal or a fraction such as 1/3.</source>
+            <translation>El paràmetre t ∈ [0, 1] de la corba c(t) (Def 2.4). Escriviu un decimal o una fracció com ara 1/3.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::DeCasteljauTab</name>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="502" />
+            <source>Pause</source>
+            <translation>Pausa</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="502" />
+            <source>Play</source>
+            <translation>Reprodueix</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="518" />
+            <source>At most %1 control points: the degree cannot be raised further.</source>
+            <translation>Com a màxim %1 punts de control: el grau no es pot elevar més.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="524" />
+            <source>Raise degree to %1</source>
+            <translation>Eleva el grau a %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="525" />
+            <source>Degree raised to %1: the same curve with one control point more.</source>
+            <translation>Grau elevat a %1: la mateixa corba amb un punt de control més.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="533" />
+            <source>Degree %1 is high: in powers of t the condition number is %2, so only De Casteljau's algorithm, which stays stable, is used here and the exact tables are hidden.</source>
+            <translation>El grau %1 és alt: en potències de t el nombre de condició és %2, de manera que aquí només s'usa l'algorisme de De Casteljau, que es manté estable, i s'amaguen les taules exactes.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="552" />
+            <source>The exact polynomials need control points that are small fractions: type them in the table (1/3 is accepted) or turn on Snap to grid.</source>
+            <translation>Els polinomis exactes necessiten punts de control que siguin fraccions petites: escriviu-los a la taula (s'accepta 1/3) o activeu Ajusta a la graella.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="557" />
+            <source>The levels in powers of t are shown up to degree %1; at degree %2 their coefficients would no longer be readable.</source>
+            <translation>Els nivells en potències de t es mostren fins al grau %1; amb grau %2 els seus coeficients ja no serien llegibles.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="568" />
+            <source>The levels %1 in powers of t (Def 2.4)</source>
+            <translation>Els nivells %1 en potències de t (Def 2.4)</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="601" />
+            <location filename="../ui/decasteljau_tab.cpp" line="612" />
+            <source>De Casteljau's triangle at t = %1 (Def 2.4)</source>
+            <translation>Triangle de De Casteljau a t = %1 (Def 2.4)</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="608" />
+            <location filename="../ui/decasteljau_tab.cpp" line="622" />
+            <source>Split at t: [0, t] has control points %1; [t, 1] has %2.</source>
+            <translation>Divisió a t: [0, t] té els punts de control %1; [t, 1] té %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="618" />
+            <source>The triangle is shown up to degree %1; this curve has degree %2.</source>
+            <translation>El triangle es mostra fins al grau %1; aquesta corba té grau %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="655" />
+            <source>Animate t from 0 to 1 and around again: watch c(t) trace the curve (Def 2.4).</source>
+            <translation>Anima t de 0 a 1 i torna a començar: mireu com c(t) traça la corba (Def 2.4).</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="656" />
+            <source>Samples:</source>
+            <translation>Mostres:</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="658" />
+            <source>Sampling precision: the curve is drawn through this many intervals of t, like part in the thesis's Matlab De_Casteljau(P, part).</source>
+            <translation>Precisió del mostreig: la corba es dibuixa amb aquest nombre d'intervals de t, com part a la funció de Matlab De_Casteljau(P, part) del treball.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="662" />
+            <source>Raise degree</source>
+            <translation>Eleva el grau</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="663" />
+            <source>Degree elevation: the same curve written with one control point more (Q_i = i/(n+1) P_(i−1) + (1 − i/(n+1)) P_i). Undoable.</source>
+            <translation>Elevació del grau: la mateixa corba escrita amb un punt de control més (Q_i = i/(n+1) P_(i−1) + (1 − i/(n+1)) P_i). Es pot desfer.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="665" />
+            <source>Construction</source>
+            <translation>Construcció</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="666" />
+            <source>Draw every level P_i^r(t) of De Casteljau's algorithm (Def 2.4): the points of each level and the segments between them, one colour per level.</source>
+            <translation>Dibuixa cada nivell P_i^r(t) de l'algorisme de De Casteljau (Def 2.4): els punts de cada nivell i els segments que els uneixen, un color per nivell.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="668" />
+            <source>Step by step</source>
+            <translation>Pas a pas</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="669" />
+            <source>Overlay the curves of the first 1, 2, …, n+1 control points, like the desglossar option of the thesis's Matlab Rep_Bezier.</source>
+            <translation>Superposa les corbes dels primers 1, 2, …, n+1 punts de control, com l'opció desglossar de la funció de Matlab Rep_Bezier del treball.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="671" />
+            <source>Tangent</source>
+            <translation>Tangent</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="672" />
+            <source>The tangent vector c′(t) = n (P_1^(n−1)(t) − P_0^(n−1)(t)), read off the last level but one of the construction; the arrow at c(t) is c′(t)/n, that last segment.</source>
+            <translation>El vector tangent c′(t) = n (P_1^(n−1)(t) − P_0^(n−1)(t)), llegit al penúltim nivell de la construcció; la fletxa a c(t) és c′(t)/n, aquest últim segment.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="674" />
+            <source>Split at t</source>
+            <translation>Divideix a t</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="675" />
+            <source>Split the curve at t: the two edges of De Casteljau's triangle are the control polygons of the halves [0, t] and [t, 1].</source>
+            <translation>Divideix la corba a t: les dues vores del triangle de De Casteljau són els polígons de control de les meitats [0, t] i [t, 1].</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="677" />
+            <source>Snap to grid</source>
+            <translation>Ajusta a la quadrícula</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="678" />
+            <source>Round dragged and added points to the grid, so that they stay small fractions and the exact tables appear.</source>
+            <translation>Arrodoneix a la graella els punts arrossegats i afegits, perquè continuïn sent fraccions petites i apareguin les taules exactes.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="680" />
+            <source>Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add one on the nearest edge, Delete removes the selected one, arrows nudge it.</source>
+            <translation>Punts de control P0…Pn de la corba de Bézier (Def 2.4): arrossegueu un punt, feu doble clic per afegir-ne un a l'aresta més propera, Supr elimina el seleccionat i les fletxes el desplacen.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="682" />
+            <source>De Casteljau's triangle P_i^r(t) at the current t and, for rational points, every level in powers of t, as in Ex 2.2 and Ex 2.3.</source>
+            <translation>Triangle de De Casteljau P_i^r(t) al t actual i, per a punts racionals, cada nivell en potències de t, com a l'Ex 2.2 i l'Ex 2.3.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="717" />
+            <source>The De Casteljau points are missing or not a list.</source>
+            <translation>Falten els punts de De Casteljau o no són una llista.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="720" />
+            <source>The De Casteljau tab needs between 1 and %1 control points; the document has %2.</source>
+            <translation>La pestanya De Casteljau necessita entre 1 i %1 punts de control; el document en té %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="728" />
+            <source>Control point %1 is not a pair of finite numbers.</source>
+            <translation>El punt de control %1 no és un parell de nombres finits.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="734" />
+            <source>The parameter t must be a number between 0 and 1.</source>
+            <translation>El paràmetre t ha de ser un nombre entre 0 i 1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="741" />
+            <source>The number of samples must be a whole number from %1 to %2.</source>
+            <translation>El nombre de mostres ha de ser un nombre enter de %1 a %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="751" />
+            <source>A De Casteljau display option is not true or false.</source>
+            <translation>Una opció de visualització de De Casteljau no és true ni false.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="786" />
+            <source>Load Ex %1</source>
+            <translation>Carrega l'Ex %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="789" />
+            <source>Ex %1: the tables of the thesis are in the panel on the right at t = 1/2.</source>
+            <translation>Ex %1: les taules del treball són al quadre de la dreta, a t = 1/2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="847" />
+            <source>Drag a point; double-click to add one; Delete removes the selected point; move t with the slider.</source>
+            <translation>Arrossegueu un punt; feu doble clic per afegir-ne un; Supr elimina el punt seleccionat; moveu t amb el control lliscant.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.h" line="39" />
+            <source>De Casteljau</source>
+            <translation>De Casteljau</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::Document</name>
+        <message>
+            <location filename="../ui/document.cpp" line="33" />
+            <source>This is not a Granota document: %1 (at byte %2).</source>
+            <translation>Això no és un document del Granota: %1 (al byte %2).</translation>
+        </message>
+        <message>
+            <location filename="../ui/document.cpp" line="40" />
+            <source>This is not a Granota document (no "format": "granota").</source>
+            <translation>Això no és un document del Granota (no hi ha "format": "granota").</translation>
+        </message>
+        <message>
+            <location filename="../ui/document.cpp" line="45" />
+            <source>This document has version %1; this Granota reads version %2.</source>
+            <translation>Aquest document és de la versió %1; aquest Granota llegeix la versió %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/document.cpp" line="61" />
+            <source>Tab “%1”: %2</source>
+            <translation>Pestanya «%1»: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::Exporter</name>
+        <message>
+            <location filename="../ui/exporter.cpp" line="23" />
+            <source>Cannot write “%1”.</source>
+            <translation>No es pot escriure «%1».</translation>
+        </message>
+        <message>
+            <location filename="../ui/exporter.cpp" line="36" />
+            <source>The resolution must be between 24 and 1200 DPI.</source>
+            <translation>La resolució ha d'estar entre 24 i 1200 PPP.</translation>
+        </message>
+        <message>
+            <location filename="../ui/exporter.cpp" line="40" />
+            <source>The image would be too large: choose a lower resolution.</source>
+            <translation>La imatge seria massa gran: trieu una resolució més baixa.</translation>
+        </message>
+        <message>
+            <location filename="../ui/exporter.cpp" line="43" />
+            <source>Not enough memory for an image of %1×%2 pixels.</source>
+            <translation>No hi ha prou memòria per a una imatge de %1×%2 píxels.</translation>
+        </message>
+        <message>
+            <location filename="../ui/exporter.cpp" line="64" />
+            <source>Made with Granota</source>
+            <translation>Fet amb el Granota</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FitExactView</name>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="80" />
+            <source>Chord lengths d_i = dist(Q_i−1, Q_i)</source>
+            <translation>Longituds de corda d_i = dist(Q_i−1, Q_i)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="92" />
+            <source>The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has x = 8, so d_4 = √(49 + 49) = 7√2, which is used here.</source>
+            <translation>La tesi (Ex 2.9) escriu d_4 = √85, a partir de (1 − 7)² + (5 + 2)²; però Q_3 té x = 8, per tant d_4 = √(49 + 49) = 7√2, que és el que s'usa aquí.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="95" />
+            <source>Centripetal parameters (beyond the thesis) use √d_i instead of d_i.</source>
+            <translation>Els paràmetres centrípets (més enllà de la tesi) usen √d_i en lloc de d_i.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="107" />
+            <source>Parameter correction moves the t_i to where the points project onto the curve: the results are shown in decimals.</source>
+            <translation>La correcció dels paràmetres mou els t_i allà on els punts es projecten sobre la corba: els resultats es mostren en decimals.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="110" />
+            <source>Exact fractions are shown for up to %1 data points; these %2 are shown in decimals.</source>
+            <translation>Les fraccions exactes es mostren fins a %1 punts de dades; aquests %2 es mostren en decimals.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="114" />
+            <source>The data are not small fractions: the results are shown in decimals.</source>
+            <translation>Les dades no són fraccions petites: els resultats es mostren en decimals.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="120" />
+            <source>These parameters are irrational (square roots of the distances), so M cannot be written in fractions: the results are shown in decimals, as the thesis does with Matlab in Ex 2.9 and Ex 2.10.</source>
+            <translation>Aquests paràmetres són irracionals (arrels quadrades de les distàncies), així que M no es pot escriure en fraccions: els resultats es mostren en decimals, com fa la tesi amb Matlab a l'Ex 2.9 i l'Ex 2.10.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="124" />
+            <source>MᵀM is singular for these parameters (coincident points): the control points shown are the minimum-norm least-squares solution, in decimals.</source>
+            <translation>MᵀM és singular per a aquests paràmetres (punts coincidents): els punts de control que es mostren són la solució de mínims quadrats de norma mínima, en decimals.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="129" />
+            <location filename="../ui/fit_exact_view.cpp" line="169" />
+            <source>Parameters t_i</source>
+            <translation>Paràmetres t_i</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="136" />
+            <source>Matrices (Lemma 2.2, Nota 2.2)</source>
+            <translation>Matrius (Lema 2.2, Nota 2.2)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="142" />
+            <source>Control points P = M⁺Q</source>
+            <translation>Punts de control P = M⁺Q</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="150" />
+            <location filename="../ui/fit_exact_view.cpp" line="191" />
+            <source>Fitted curve α(t) = Σ Bⱼⁿ(t) Pⱼ</source>
+            <translation>Corba ajustada α(t) = Σ Bⱼⁿ(t) Pⱼ</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="156" />
+            <source>Ex 2.7: the thesis prints α(t) = (−8/7 + 726/35 t − 600/35 t², 46/35 − 130/35 t + 200/35 t²), the same curve with unreduced fractions (600/35 = 120/7, 130/35 = 26/7, 200/35 = 40/7).</source>
+            <translation>Ex 2.7: la tesi escriu α(t) = (−8/7 + 726/35 t − 600/35 t², 46/35 − 130/35 t + 200/35 t²), la mateixa corba amb fraccions sense simplificar (600/35 = 120/7, 130/35 = 26/7, 200/35 = 40/7).</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="160" />
+            <source>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here.</source>
+            <translation>Ex 2.8: la tesi escriu −1636/105 com a coeficient de t a x(t). És 3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, que és el que es mostra aquí.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="175" />
+            <source>Matrix M (Lemma 2.2), in decimals</source>
+            <translation>Matriu M (Lema 2.2), en decimals</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="184" />
+            <source>Control points P</source>
+            <translation>Punts de control P</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="195" />
+            <source>α(t) in powers of t is not shown beyond degree %1: its coefficients grow like C(n, k) and cancel each other.</source>
+            <translation>No es mostra α(t) en potències de t més enllà del grau %1: els coeficients creixen com C(n, k) i es cancel·len entre ells.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FitTab</name>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="146" />
+            <source>Drag Q_i: the curve is refitted as it moves; Delete removes it.</source>
+            <translation>Arrossegueu Q_i: la corba es torna a ajustar mentre es mou; Supr l'elimina.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="174" />
+            <source>Degree %1 needs %2 data points (n + 1 ≤ k + 1); there are %3, so n ≤ %4.</source>
+            <translation>El grau %1 necessita %2 punts de dades (n + 1 ≤ k + 1); n'hi ha %3, per tant n ≤ %4.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="291" />
+            <source>Degree %1</source>
+            <translation>Grau %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="298" />
+            <source>Parametrization</source>
+            <translation>Parametrització</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="305" />
+            <source>Solver</source>
+            <translation>Resolució</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="312" />
+            <location filename="../ui/fit_tab.cpp" line="319" />
+            <source>Parameter correction</source>
+            <translation>Correcció dels paràmetres</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="380" />
+            <source>Least-squares fit (§2.1.3)</source>
+            <translation>Ajust per mínims quadrats (§2.1.3)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="381" />
+            <source>&amp;Degree n:</source>
+            <translation>&amp;Grau n:</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="382" />
+            <source>n: the fitted Bézier curve has n + 1 control points P_0…P_n, so n + 1 ≤ k + 1 data points (§2.1.3, Lemma 2.2). Ex 2.7 uses n = 2, Ex 2.8 n = 3.</source>
+            <translation>n: la corba de Bézier ajustada té n + 1 punts de control P_0…P_n, per tant n + 1 ≤ k + 1 punts de dades (§2.1.3, Lema 2.2). L'Ex 2.7 usa n = 2 i l'Ex 2.8, n = 3.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="384" />
+            <source>&amp;Parameters t_i:</source>
+            <translation>&amp;Paràmetres t_i:</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="385" />
+            <source>Uniform, i/k (Ex 2.7, 2.8)</source>
+            <translation>Uniforme, i/k (Ex 2.7, 2.8)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="386" />
+            <source>Chord length (Ex 2.9, 2.10)</source>
+            <translation>Longitud de corda (Ex 2.9, 2.10)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="387" />
+            <source>Centripetal (beyond the thesis)</source>
+            <translation>Centrípeta (més enllà de la tesi)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="389" />
+            <source>Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord lengths d_i = dist(Q_i−1, Q_i); or centripetal, proportional to √d_i.</source>
+            <translation>On ha de caure cada Q_i sobre la corba (§2.1.3): parametrització uniforme t_i = i/k; proporcional a les longituds de corda d_i = dist(Q_i−1, Q_i); o centrípeta, proporcional a √d_i.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="391" />
+            <source>&amp;Solver:</source>
+            <translation>&amp;Mètode:</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="392" />
+            <source>QR (default)</source>
+            <translation>QR (per defecte)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="393" />
+            <source>Normal equations (the thesis)</source>
+            <translation>Equacions normals (la tesi)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="394" />
+            <source>SVD (singular values)</source>
+            <translation>SVD (valors singulars)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="395" />
+            <source>How MP = Q is solved in the least-squares sense. The thesis solves the normal equations MᵀM P = MᵀQ (Prop 2.2), which square the condition number; QR and SVD work on M itself and stay accurate at high degree.</source>
+            <translation>Com es resol MP = Q en el sentit dels mínims quadrats. La tesi resol les equacions normals MᵀM P = MᵀQ (Prop 2.2), que eleven al quadrat el nombre de condició; QR i SVD treballen directament amb M i es mantenen precises en grau alt.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="398" />
+            <source>&amp;Correct parameters, at most</source>
+            <translation>&amp;Corregeix els paràmetres, com a màxim</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="399" />
+            <source>Beyond the thesis: project each Q_i onto the fitted curve, take the new t_i and fit again, while the error Σ‖Q_i − α(t_i)‖² drops.</source>
+            <translation>Més enllà de la tesi: projecta cada Q_i sobre la corba ajustada, pren els nous t_i i torna a ajustar, mentre l'error Σ‖Q_i − α(t_i)‖² baixi.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="401" />
+            <source> times</source>
+            <translation> vegades</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="402" />
+            <source>The largest number of parameter corrections (re-projection and refit).</source>
+            <translation>El nombre màxim de correccions dels paràmetres (projecció i nou ajust).</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="403" />
+            <source>&amp;Import CSV…</source>
+            <translation>&amp;Importa CSV…</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="404" />
+            <source>Read the data points Q_i from a CSV file (one “x,y” per line) or a JSON list [[x,y],…].</source>
+            <translation>Llegeix els punts de dades Q_i d'un fitxer CSV (un «x,y» per línia) o d'una llista JSON [[x,y],…].</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="405" />
+            <source>Show &amp;matrices</source>
+            <translation>Mostra les &amp;matrius</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="406" />
+            <source>Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Nota 2.2), in fractions when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8.</source>
+            <translation>Mostra M (Lema 2.2), MᵀM, (MᵀM)⁻¹ i M⁺ = (MᵀM)⁻¹Mᵀ (Nota 2.2), en fraccions quan les dades i els paràmetres són racionals, com a l'Ex 2.7 i l'Ex 2.8.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="408" />
+            <source>Quality of the fit (Prop 2.2)</source>
+            <translation>Qualitat de l'ajust (Prop 2.2)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="409" />
+            <source>The error that the least-squares curve minimises, and how sensitive the solution is to the data.</source>
+            <translation>L'error que minimitza la corba de mínims quadrats, i com de sensible és la solució a les dades.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="411" />
+            <source>The data points Q_i (round, draggable), the fitted Bézier curve α(t), its control points P_j (square) and control polygon, and the residuals Q_i − α(t_i).</source>
+            <translation>Els punts de dades Q_i (rodons, es poden arrossegar), la corba de Bézier ajustada α(t), els seus punts de control P_j (quadrats) i el polígon de control, i els residus Q_i − α(t_i).</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="413" />
+            <source>The parameters, the control points P = M⁺Q and the curve α(t) in powers of t, exact when possible (Ex 2.7–2.10).</source>
+            <translation>Els paràmetres, els punts de control P = M⁺Q i la corba α(t) en potències de t, exactes quan és possible (Ex 2.7–2.10).</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="415" />
+            <source>The least-squares error Σ‖Q_i − α(t_i)‖² of the best curve of each degree n for the current parameters (without correction); the circle marks the current n. With fixed t_i it can only go down as n grows, unless the solver loses accuracy.</source>
+            <translation>L'error de mínims quadrats Σ‖Q_i − α(t_i)‖² de la millor corba de cada grau n per als paràmetres actuals (sense correcció); el cercle marca la n actual. Amb els t_i fixos només pot baixar en augmentar n, tret que el mètode perdi precisió.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="418" />
+            <source>degree n</source>
+            <translation>grau n</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="419" />
+            <source>squared error (log)</source>
+            <translation>error quadràtic (log)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="421" />
+            <source>Large data sets are fitted and drawn, but not listed.</source>
+            <translation>Els conjunts de dades grans s'ajusten i es dibuixen, però no es llisten.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="432" />
+            <source>A least-squares fit needs at least 2 data points.</source>
+            <translation>Un ajust per mínims quadrats necessita com a mínim 2 punts de dades.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="434" />
+            <source>Degree %1 needs at least %2 data points.</source>
+            <translation>El grau %1 necessita com a mínim %2 punts de dades.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="437" />
+            <source>The normal equations MᵀM P = MᵀQ cannot be solved here: MᵀM is numerically singular (coincident points, or cond₂(MᵀM) = cond₂(M)² beyond 10^16). Choose QR or SVD.</source>
+            <translation>Les equacions normals MᵀM P = MᵀQ no es poden resoldre aquí: MᵀM és numèricament singular (punts coincidents, o cond₂(MᵀM) = cond₂(M)² més enllà de 10^16). Trieu QR o SVD.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="439" />
+            <source>The least-squares system has no usable solution here.</source>
+            <translation>El sistema de mínims quadrats no té aquí cap solució utilitzable.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="441" />
+            <source>The fitted curve does not fit in double precision: lower the degree.</source>
+            <translation>La corba ajustada no cap en doble precisió: abaixeu el grau.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="444" />
+            <source>A data point is not a finite number.</source>
+            <translation>Un punt de dades no és un nombre finit.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="495" />
+            <source>Degree lowered to %1: n + 1 control points need at least n + 1 data points, and there are %2.</source>
+            <translation>Grau rebaixat a %1: n + 1 punts de control necessiten com a mínim n + 1 punts de dades, i n'hi ha %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="546" />
+            <source>Squared error Σ‖Q_i − α(t_i)‖²: %1</source>
+            <translation>Error quadràtic Σ‖Q_i − α(t_i)‖²: %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="547" />
+            <source>RMS error √(Σ/(k+1)): %1</source>
+            <translation>Error quadràtic mitjà √(Σ/(k+1)): %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="548" />
+            <source>Largest error max‖Q_i − α(t_i)‖: %1</source>
+            <translation>Error màxim max‖Q_i − α(t_i)‖: %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="550" />
+            <source>Condition number cond₂(M): infinite (M is singular)</source>
+            <translation>Nombre de condició cond₂(M): infinit (M és singular)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="551" />
+            <source>Condition number cond₂(M): %1</source>
+            <translation>Nombre de condició cond₂(M): %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="553" />
+            <source>Parameter corrections that lowered the error: %1</source>
+            <translation>Correccions dels paràmetres que han reduït l'error: %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="556" />
+            <source>⚠ Ill-conditioned: cond₂(M) ≈ %1. The control points are very sensitive to the data; lower the degree.</source>
+            <translation>⚠ Mal condicionat: cond₂(M) ≈ %1. Els punts de control són molt sensibles a les dades; abaixeu el grau.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="560" />
+            <source>⚠ High degree n = %1: the Bernstein basis grows ill-conditioned (cond₂(M) ≈ %2); a lower degree or a spline is usually the better model.</source>
+            <translation>⚠ Grau alt n = %1: la base de Bernstein es torna mal condicionada (cond₂(M) ≈ %2); un grau més baix o un spline sol ser un model millor.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="566" />
+            <source>⚠ The normal equations square the condition number: cond₂(MᵀM) ≈ %1, so about %2 of the 16 significant digits may be lost. Choose QR.</source>
+            <translation>⚠ Les equacions normals eleven al quadrat el nombre de condició: cond₂(MᵀM) ≈ %1, de manera que es poden perdre unes %2 de les 16 xifres significatives. Trieu QR.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="575" />
+            <source>⚠ Only %1 distinct parameters t_i for %2 control points: M is rank deficient, and the control points shown are the minimum-norm least-squares solution.</source>
+            <translation>⚠ Només %1 paràmetres t_i diferents per a %2 punts de control: M no té rang màxim, i els punts de control que es mostren són la solució de mínims quadrats de norma mínima.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="580" />
+            <source>No fit: %1</source>
+            <translation>Sense ajust: %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="593" />
+            <source>All the data points coincide: the chord lengths are all zero, so uniform parameters are used instead.</source>
+            <translation>Tots els punts de dades coincideixen: les longituds de corda són totes zero, així que s'usen paràmetres uniformes.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="595" />
+            <source>All the data points coincide: the curve is that point.</source>
+            <translation>Tots els punts de dades coincideixen: la corba és aquest punt.</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/fit_tab.cpp" line="597" />
+            <source>Q%1 and Q%2 coincide: a zero chord length gives them the same parameter t_i (%n such pair(s)).</source>
+            <translation>
+                <numerusform>Q%1 i Q%2 coincideixen: una longitud de corda zero els dona el mateix paràmetre t_i (%n parell(s) així).</numerusform>
+                <numerusform>Q%1 i Q%2 coincideixen: una longitud de corda zero els dona el mateix paràmetre t_i (%n parell(s) així).</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="603" />
+            <source>The data points are collinear: the fitted curve and its control points lie on their line.</source>
+            <translation>Els punts de dades són alineats: la corba ajustada i els seus punts de control són sobre la mateixa recta.</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/fit_tab.cpp" line="677" />
+            <source>%n data points: too many to list; they are fitted and drawn.</source>
+            <translation>
+                <numerusform>%n punts de dades: massa per llistar-los; s'ajusten i es dibuixen.</numerusform>
+                <numerusform>%n punts de dades: massa per llistar-los; s'ajusten i es dibuixen.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="706" />
+            <source>Load Ex %1</source>
+            <translation>Carrega l'Ex %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="707" />
+            <source>Ex %1 data</source>
+            <translation>Dades de l'Ex %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="709" />
+            <source>Ex %1 settings</source>
+            <translation>Configuració de l'Ex %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="721" />
+            <source>Cannot open “%1”: %2</source>
+            <translation>No es pot obrir «%1»: %2</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="725" />
+            <source>“%1” is larger than %2 MB; Granota reads data files up to that size.</source>
+            <translation>«%1» fa més de %2 MB; Granota llegeix fitxers de dades fins a aquesta mida.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="735" />
+            <source>“%1” holds no valid data points, nothing was changed: %2</source>
+            <translation>«%1» no conté punts de dades vàlids; no s'ha canviat res: %2</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/fit_tab.cpp" line="740" />
+            <source>“%1” has %n point(s); a fit needs at least 2, nothing was changed.</source>
+            <translation>
+                <numerusform>«%1» té %n punt(s); un ajust en necessita com a mínim 2; no s'ha canviat res.</numerusform>
+                <numerusform>«%1» té %n punt(s); un ajust en necessita com a mínim 2; no s'ha canviat res.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="747" />
+            <source>“%1” has a coordinate too large for a double; nothing was changed.</source>
+            <translation>«%1» té una coordenada massa gran per a un double; no s'ha canviat res.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="751" />
+            <source>Import %1</source>
+            <translation>Importa %1</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/fit_tab.cpp" line="754" />
+            <source>Imported %n data points from “%1”.</source>
+            <translation>
+                <numerusform>S'han importat %n punts de dades de «%1».</numerusform>
+                <numerusform>S'han importat %n punts de dades de «%1».</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="760" />
+            <location filename="../ui/fit_tab.cpp" line="767" />
+            <source>Import data points</source>
+            <translation>Importa punts de dades</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="761" />
+            <source>Point files (*.csv *.txt *.json);;All files (*)</source>
+            <translation>Fitxers de punts (*.csv *.txt *.json);;Tots els fitxers (*)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="789" />
+            <source>The fitting tab's data points are missing or not a list.</source>
+            <translation>Falten els punts de dades de la pestanya d'ajust o no són una llista.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="798" />
+            <source>Data point Q%1 is not a pair of finite numbers.</source>
+            <translation>El punt de dades Q%1 no és un parell de nombres finits.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="804" />
+            <source>The fitting tab needs at least 2 data points.</source>
+            <translation>La pestanya d'ajust necessita com a mínim 2 punts de dades.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="812" />
+            <source>The degree must be a whole number from 0 to %1.</source>
+            <translation>El grau ha de ser un nombre enter de 0 a %1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="821" />
+            <source>Unknown parametrization “%1”.</source>
+            <translation>Parametrització desconeguda «%1».</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="830" />
+            <source>Unknown solver “%1”.</source>
+            <translation>Mètode de resolució desconegut «%1».</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="837" />
+            <source>“correctParameters” must be true or false.</source>
+            <translation>«correctParameters» ha de ser true o false.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="845" />
+            <source>The number of parameter corrections must be a whole number from 1 to %1.</source>
+            <translation>El nombre de correccions dels paràmetres ha de ser un nombre enter d'1 a %1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="852" />
+            <source>“showMatrices” must be true or false.</source>
+            <translation>«showMatrices» ha de ser true o false.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="858" />
+            <source>Open fitting data</source>
+            <translation>Obre les dades d'ajust</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="859" />
+            <source>Open data points</source>
+            <translation>Obre els punts de dades</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="861" />
+            <source>Open fitting settings</source>
+            <translation>Obre la configuració d'ajust</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="960" />
+            <source>Drag a data point Q_i and the curve is refitted; double-click adds a point, Delete removes it.</source>
+            <translation>Arrossegueu un punt de dades Q_i i la corba es torna a ajustar; amb doble clic s'afegeix un punt, Supr l'elimina.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.h" line="40" />
+            <source>Fitting</source>
+            <translation>Ajust</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FrogCanvas</name>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="227" />
+            <source>Least-squares Bézier fit, degree %1 through %2 points: %3 µs per frame</source>
+            <translation>Ajust de Bézier per mínims quadrats, grau %1 per %2 punts: %3 µs per fotograma</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="232" />
+            <source>Precomputed Bézier points (§4.9): computed once, nothing per frame</source>
+            <translation>Punts de Bézier precalculats (§4.9): calculats una sola vegada, res per fotograma</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="237" />
+            <source>Area %1 px² · target %2 px² (%3 %)</source>
+            <translation>Àrea %1 px² · desitjada %2 px² (%3 %)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="240" />
+            <source>Area %1 px² · target %2 px²</source>
+            <translation>Àrea %1 px² · desitjada %2 px²</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="244" />
+            <source>Area error %1 % · largest stretch %2 %</source>
+            <translation>Error d'àrea %1 % · estirament màxim %2 %</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="246" />
+            <source>Largest correction %1 · kinetic energy %2 · potential energy %3</source>
+            <translation>Correcció màxima %1 · energia cinètica %2 · energia potencial %3</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="250" />
+            <source>Velocities: this scene has no soft body</source>
+            <translation>Velocitats: aquesta escena no té cap cos tou</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="253" />
+            <source>Frame %1 ms (%2 frames per second) · step %3 ms · drawing %4 ms</source>
+            <translation>Fotograma %1 ms (%2 fotogrames per segon) · pas %3 ms · dibuix %4 ms</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="257" />
+            <source>Paused · step %1 ms · drawing %2 ms</source>
+            <translation>En pausa · pas %1 ms · dibuix %2 ms</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="258" />
+            <source>Step %1</source>
+            <translation>Pas %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="670" />
+            <source>Press inside the body to grab it.</source>
+            <translation>Premeu dins del cos per agafar-lo.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FrogParametersPanel</name>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="267" />
+            <source>px</source>
+            <translation>px</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="269" />
+            <source>px/step²</source>
+            <translation>px/pas²</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="271" />
+            <source>px/step</source>
+            <translation>px/pas</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="273" />
+            <source>px²</source>
+            <translation>px²</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="281" />
+            <source>Sides N</source>
+            <translation>Costats N</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="282" />
+            <source>Radius r</source>
+            <translation>Radi r</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="283" />
+            <source>Centre (x, y)</source>
+            <translation>Centre (x, y)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="284" />
+            <source>Frame width</source>
+            <translation>Amplada del marc</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="285" />
+            <source>Frame height</source>
+            <translation>Altura del marc</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="286" />
+            <source>Gravity g (x, y)</source>
+            <translation>Gravetat g (x, y)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="287" />
+            <source>Initial velocity v₀ (x, y)</source>
+            <translation>Velocitat inicial v₀ (x, y)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="288" />
+            <source>Friction f (x, y)</source>
+            <translation>Fregament f (x, y)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="289" />
+            <source>Largest move velmax</source>
+            <translation>Moviment màxim velmax</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="290" />
+            <source>Spring length</source>
+            <translation>Longitud dels molls</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="291" />
+            <source>Target area</source>
+            <translation>Àrea desitjada</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="292" />
+            <source>Area factor C</source>
+            <translation>Factor d'àrea C</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="293" />
+            <source>Grab</source>
+            <translation>Agafar</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="294" />
+            <source>Bodies</source>
+            <translation>Cossos</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="295" />
+            <source>Bézier points</source>
+            <translation>Punts de Bézier</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="296" />
+            <source>Fit degree n</source>
+            <translation>Grau de l'ajust n</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="298" />
+            <source>Front legs (upper, lower)</source>
+            <translation>Potes de davant (superior, inferior)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="298" />
+            <source>Back legs (upper, lower)</source>
+            <translation>Potes de darrere (superior, inferior)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="299" />
+            <source>Link %1</source>
+            <translation>Segment %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="301" />
+            <source>Front right shoulder (min, max)</source>
+            <translation>Muscle dret de davant (mín., màx.)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="302" />
+            <source>Front left shoulder (min, max)</source>
+            <translation>Muscle esquerre de davant (mín., màx.)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="303" />
+            <source>Back right shoulder (min, max)</source>
+            <translation>Muscle dret de darrere (mín., màx.)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="304" />
+            <source>Back left shoulder (min, max)</source>
+            <translation>Muscle esquerre de darrere (mín., màx.)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="305" />
+            <source>Front elbows (min, max)</source>
+            <translation>Colzes de davant (mín., màx.)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="306" />
+            <source>Back elbows (min, max)</source>
+            <translation>Colzes de darrere (mín., màx.)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="307" />
+            <source>Shoulder (min, max)</source>
+            <translation>Muscle (mín., màx.)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="308" />
+            <source>Elbow (min, max)</source>
+            <translation>Colze (mín., màx.)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="316" />
+            <source>N (costats): the vertices of the body, a regular polygon built from the top (§4.1). Annex II's frog has N = 10; try 3 to 200.</source>
+            <translation>N (costats): els vèrtexs del cos, un polígon regular construït des de dalt (§4.1). La granota de l'Annex II en té N = 10; proveu de 3 a 200.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="319" />
+            <source>r: distance from the centre to each vertex of the starting polygon (§4.1).</source>
+            <translation>r: distància del centre a cada vèrtex del polígon inicial (§4.1).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="321" />
+            <source>(c₁, c₂): where the first body starts, in pixels of the frame (y grows downwards).</source>
+            <translation>(c₁, c₂): on comença el primer cos, en píxels del marc (la y creix cap avall).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="323" />
+            <source>The frame (Processing's size(1280, 720)): vertices stay inside [0, width − 1] × [0, height − 1] (§4.2).</source>
+            <translation>El marc (size(1280, 720) de Processing): els vèrtexs es queden dins de [0, amplada − 1] × [0, altura − 1] (§4.2).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="325" />
+            <source>g (gravetat): acceleration added to every vertex each step, v(t) = v(t − 1) + g (§4.2).</source>
+            <translation>g (gravetat): acceleració que se suma a cada vèrtex a cada pas, v(t) = v(t − 1) + g (§4.2).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="327" />
+            <source>v⁰ (velocitat inicial): the velocity the body starts with (§4.2).</source>
+            <translation>v⁰ (velocitat inicial): la velocitat amb què comença el cos (§4.2).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="329" />
+            <source>f (fregament): share of the velocity kept per step on each axis, f ∈ ]0, 1[ (§4.3).</source>
+            <translation>f (fregament): fracció de la velocitat que es conserva a cada pas en cada eix, f ∈ ]0, 1[ (§4.3).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="331" />
+            <source>velmax: the largest move of a vertex in one step, per axis (Annex II).</source>
+            <translation>velmax: el moviment màxim d'un vèrtex en un pas, per eix (Annex II).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="333" />
+            <source>molls: rest length of every edge spring; the springs pull the edges back towards it (§4.4).</source>
+            <translation>molls: longitud de repòs de cada moll dels costats; els molls tornen els costats cap a aquesta longitud (§4.4).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="335" />
+            <source>Areal: the area the body tries to keep, by the trapezoid rule and edge normals (§4.5). 0 or huge values are allowed.</source>
+            <translation>Areal: l'àrea que el cos intenta conservar, amb la regla del trapezi i les normals dels costats (§4.5). Es permeten 0 i valors enormes.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="338" />
+            <source>C (reescala): how strongly each step corrects the area; large values make a stiff body (§4.5).</source>
+            <translation>C (reescala): quant corregeix l'àrea cada pas; els valors grans fan un cos rígid (§4.5).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="340" />
+            <source>Which vertices hold on to the mouse: all of them (§4.6), those above the grab point (§4.7), or Annex II's fixed anchors {0, 1, N−1, N} (§4.10).</source>
+            <translation>Quins vèrtexs queden subjectes al ratolí: tots (§4.6), els que estan per damunt del punt on s'agafa (§4.7) o les àncores fixes {0, 1, N−1, N} de l'Annex II (§4.10).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="343" />
+            <source>How many bodies fall and collide (§5.2.2); a broad phase keeps the cost close to linear.</source>
+            <translation>Quants cossos cauen i xoquen (§5.2.2); una fase ampla manté el cost gairebé lineal.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="345" />
+            <source>§4.9: the polygon is the control polygon of one Bézier curve, sampled once at this many points by De Casteljau (Def 2.4); the samples become the body's vertices.</source>
+            <translation>§4.9: el polígon és el polígon de control d'una corba de Bézier, mostrejada una sola vegada en aquests punts amb De Casteljau (Def 2.4); les mostres esdevenen els vèrtexs del cos.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="348" />
+            <source>§4.9, the abandoned option: the degree n of the least-squares Bézier curve fitted to the outline every frame (Lemma 2.2, Prop 2.2).</source>
+            <translation>§4.9, l'opció descartada: el grau n de la corba de Bézier d'ajust per mínims quadrats de la silueta a cada fotograma (Lema 2.2, Prop 2.2).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="351" />
+            <source>longit: lengths of the two segments of each leg, shoulder–elbow and elbow–wrist (§4.16, Annex II).</source>
+            <translation>longit: longituds dels dos segments de cada pota, muscle–colze i colze–canell (§4.16, Annex II).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="353" />
+            <source>Length of this link of the pendulum; the links keep their length exactly (§4.13, §4.14).</source>
+            <translation>Longitud d'aquest segment del pèndol; els segments conserven exactament la seua longitud (§4.13, §4.14).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="356" />
+            <source>angles: smallest and largest angle between the two segments at the elbow, in degrees (§4.15; Annex II uses ±π/12 in front, ±π/3 behind).</source>
+            <translation>angles: angle mínim i màxim entre els dos segments al colze, en graus (§4.15; l'Annex II usa ±π/12 davant i ±π/3 darrere).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="358" />
+            <source>anglesc: smallest and largest angle of the upper segment at the shoulder, in degrees (§4.15; Annex II uses 0 to π and −π to 0).</source>
+            <translation>anglesc: angle mínim i màxim del segment superior al muscle, en graus (§4.15; l'Annex II usa de 0 a π i de −π a 0).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="375" />
+            <source>All vertices (§4.6)</source>
+            <translation>Tots els vèrtexs (§4.6)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="376" />
+            <source>Vertices above the mouse (§4.7)</source>
+            <translation>Vèrtexs per damunt del ratolí (§4.7)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="377" />
+            <source>Fixed anchors {0, 1, N−1, N} (§4.10)</source>
+            <translation>Àncores fixes {0, 1, N−1, N} (§4.10)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="383" />
+            <source>The obstacles come from the scene file.</source>
+            <translation>Els obstacles vénen del fitxer de l'escena.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="384" />
+            <source>The shapes of the bodies come from the scene file.</source>
+            <translation>Les formes dels cossos vénen del fitxer de l'escena.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FrogTab</name>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="229" />
+            <location filename="../ui/frog_tab.cpp" line="560" />
+            <source>Cost of the fit: %1 µs per frame.</source>
+            <translation>Cost de l'ajust: %1 µs per fotograma.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="264" />
+            <source>The simulation cannot be built with these values: %1</source>
+            <translation>No es pot construir la simulació amb aquests valors: %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="280" />
+            <source>Unknown scene “%1”. The scenes are: %2.</source>
+            <translation>Escena desconeguda «%1». Les escenes són: %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="330" />
+            <source>The scene starts again.</source>
+            <translation>L'escena torna a començar.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="382" />
+            <location filename="../ui/frog_tab.cpp" line="641" />
+            <source>Scene “%1” has no parameter “%2”.</source>
+            <translation>L'escena «%1» no té el paràmetre «%2».</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="391" />
+            <location filename="../ui/frog_tab.cpp" line="649" />
+            <source>This value was refused: %1</source>
+            <translation>S'ha rebutjat aquest valor: %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="409" />
+            <source>Change %1</source>
+            <translation>Canvia %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="447" />
+            <source>4.1 Polygon and mouse</source>
+            <translation>4.1 Polígon i ratolí</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="448" />
+            <source>4.2 Gravity</source>
+            <translation>4.2 Gravetat</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="449" />
+            <source>4.3 Bounce</source>
+            <translation>4.3 Rebot</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="450" />
+            <source>4.4 Springs</source>
+            <translation>4.4 Molls</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="451" />
+            <source>4.5 Area</source>
+            <translation>4.5 Àrea</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="452" />
+            <source>4.6 Verlet and grabbing</source>
+            <translation>4.6 Verlet i agafar el cos</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="453" />
+            <source>4.7 Tuned parameters</source>
+            <translation>4.7 Ajust de paràmetres</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="454" />
+            <source>4.8 Colour fill</source>
+            <translation>4.8 Color</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="455" />
+            <source>4.9 Bézier outline</source>
+            <translation>4.9 Silueta de Bézier</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="456" />
+            <source>4.10 Revised Bézier</source>
+            <translation>4.10 Revisió de Bézier</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="457" />
+            <source>4.12 Catmull-Rom outline</source>
+            <translation>4.12 Silueta de Catmull-Rom</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="458" />
+            <source>4.13 Pendulum</source>
+            <translation>4.13 Pèndol</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="459" />
+            <source>4.14 Chain of joints</source>
+            <translation>4.14 Cadena d'articulacions</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="460" />
+            <source>4.15 Angle limits</source>
+            <translation>4.15 Restriccions angulars</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="461" />
+            <source>4.16 The frog</source>
+            <translation>4.16 La granota</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="462" />
+            <source>5.2.1 Obstacles</source>
+            <translation>5.2.1 Obstacles</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="463" />
+            <source>5.2.2 Many bodies</source>
+            <translation>5.2.2 Diversos cossos</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="464" />
+            <source>5.2.3 Other shapes</source>
+            <translation>5.2.3 Altres formes</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="471" />
+            <source>A regular polygon drawn with straight lines; its radius follows the mouse, r = |mouseY − h/2|.</source>
+            <translation>Un polígon regular dibuixat amb línies rectes; el seu radi segueix el ratolí, r = |mouseY − h/2|.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="473" />
+            <source>Every vertex falls with constant acceleration (MRUA) and stops at the edge of the frame.</source>
+            <translation>Cada vèrtex cau amb acceleració constant (MRUA) i s'atura a la vora del marc.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="475" />
+            <source>At the frame the velocity turns round and keeps a share f of itself; a click starts the polygon again at the mouse.</source>
+            <translation>A la vora del marc la velocitat canvia de sentit i en conserva una fracció f; un clic torna a començar el polígon al ratolí.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="478" />
+            <source>Springs along the edges pull each pair of neighbours back towards their rest length.</source>
+            <translation>Els molls dels costats tornen cada parell de veïns cap a la seua longitud de repòs.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="480" />
+            <source>The area, by the trapezoid rule, is pushed back towards the target along the edge normals.</source>
+            <translation>L'àrea, per la regla del trapezi, es corregeix cap a l'àrea desitjada al llarg de les normals dels costats.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="482" />
+            <source>Verlet integration (Def 3.1). Press inside the body to grab it: every vertex is tied to the mouse.</source>
+            <translation>Integració de Verlet (Def 3.1). Premeu dins del cos per agafar-lo: cada vèrtex queda lligat al ratolí.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="484" />
+            <source>Only the vertices above the grab point hold on to the mouse.</source>
+            <translation>Només els vèrtexs per damunt del punt on s'agafa queden subjectes al ratolí.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="486" />
+            <source>The same body, filled with colour.</source>
+            <translation>El mateix cos, ple de color.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="488" />
+            <source>The polygon's vertices are the control points of one Bézier curve, sampled once. Beside it, the per-frame least-squares fit that the thesis abandoned, with its cost.</source>
+            <translation>Els vèrtexs del polígon són els punts de control d'una corba de Bézier, mostrejada una sola vegada. Al costat, l'ajust per mínims quadrats a cada fotograma que el treball va descartar, amb el seu cost.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="491" />
+            <source>Tuned constants, and fixed anchors for grabbing, on the precomputed Bézier points.</source>
+            <translation>Constants ajustades i àncores fixes per agafar el cos, sobre els punts de Bézier precalculats.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="493" />
+            <source>The outline is a Catmull-Rom curve through the vertices (τ = 1/2, Processing's curveVertex).</source>
+            <translation>La silueta és una corba de Catmull-Rom que passa pels vèrtexs (τ = 1/2, el curveVertex de Processing).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="495" />
+            <source>A double pendulum hanging from the mouse; its lengths are restored at once.</source>
+            <translation>Un pèndol doble penjat del ratolí; les seues longituds es restableixen immediatament.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="497" />
+            <source>A chain of joints following its first joint: each joint is put back at its distance from the previous one.</source>
+            <translation>Una cadena d'articulacions que segueix la primera: cada articulació es torna a posar a la seua distància de l'anterior.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="500" />
+            <source>A leg: two links with gravity, the frame, and limits on the angles at its joints.</source>
+            <translation>Una pota: dos segments amb gravetat, el marc i límits als angles de les articulacions.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="502" />
+            <source>Body, four legs and head: the final program of Annex II.</source>
+            <translation>Cos, quatre potes i cap: el programa final de l'Annex II.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="504" />
+            <source>Fixed segments and polygons that the bodies collide with (future work, §5.2).</source>
+            <translation>Segments i polígons fixos amb què xoquen els cossos (treball futur, §5.2).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="506" />
+            <source>Several bodies collide with each other; a broad phase keeps the cost close to linear.</source>
+            <translation>Diversos cossos xoquen entre si; una fase ampla manté el cost gairebé lineal.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="508" />
+            <source>Bodies that are not regular polygons, kept in shape by angle constraints between their edges.</source>
+            <translation>Cossos que no són polígons regulars, que mantenen la forma amb restriccions d'angle entre els costats.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="515" />
+            <source>The pendulum hangs from the mouse: move the mouse over the picture.</source>
+            <translation>El pèndol penja del ratolí: moveu el ratolí per damunt de la imatge.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="518" />
+            <source>Move the mouse up and down: the radius is r = |mouseY − h/2| (§4.1).</source>
+            <translation>Moveu el ratolí amunt i avall: el radi és r = |mouseY − h/2| (§4.1).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="520" />
+            <source>Click to start the polygon again at the mouse (§4.3).</source>
+            <translation>Feu clic per tornar a començar el polígon al ratolí (§4.3).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="521" />
+            <source>Reset (R) drops the polygon again.</source>
+            <translation>Reinicia (R) torna a deixar caure el polígon.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="523" />
+            <source>Drag the body with the left button. Space drops a new one at the mouse and holds it until you let go (Annex II).</source>
+            <translation>Arrossegueu el cos amb el botó esquerre. L'espai en crea un de nou al ratolí i el manté agafat fins que el deixeu anar (Annex II).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="529" />
+            <source>Scene</source>
+            <translation>Escena</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="530" />
+            <source>Stage</source>
+            <translation>Etapa</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="533" />
+            <source>The stages of chapter 4, in the thesis's order, and the future work of §5.2. Each scene builds, draws and shows only its own components.</source>
+            <translation>Les etapes del capítol 4, en l'ordre del treball, i el treball futur de §5.2. Cada escena construeix, dibuixa i mostra només els seus components.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="536" />
+            <source>Solver</source>
+            <translation>Resolució</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="537" />
+            <source>Seed (Annex II)</source>
+            <translation>Llavor (Annex II)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="538" />
+            <source>Stable (XPBD)</source>
+            <translation>Estable (XPBD)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="539" />
+            <source>Seed: the thesis's own schemes, reproduced faithfully (Annex II). Stable: beyond the thesis, position-based constraints with compliance (XPBD) that hold the target area and stay stable on stiff and extreme settings. Switching starts the scene again.</source>
+            <translation>Llavor: els esquemes del mateix treball, reproduïts fidelment (Annex II). Estable: més enllà del treball, restriccions sobre les posicions amb flexibilitat (XPBD) que mantenen l'àrea desitjada i són estables amb valors rígids i extrems. En canviar, l'escena torna a començar.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="542" />
+            <source>Run</source>
+            <translation>Continua</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="542" />
+            <source>Pause</source>
+            <translation>Pausa</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="543" />
+            <source>Pause or run the animation, one fixed step per frame at 60 frames per second (P).</source>
+            <translation>Atura o continua l'animació, un pas fix per fotograma a 60 fotogrames per segon (P).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="544" />
+            <source>Step</source>
+            <translation>Pas</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="545" />
+            <source>One fixed step, as one call of actualitza() in Annex II; pauses first (S or .).</source>
+            <translation>Un pas fix, com una crida a actualitza() de l'Annex II; primer atura l'animació (S o .).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="546" />
+            <source>Reset</source>
+            <translation>Reinicia</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="547" />
+            <source>Start the scene again with the current parameters (R).</source>
+            <translation>Torna a començar l'escena amb els paràmetres actuals (R).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="549" />
+            <source>Bézier outline (§4.9)</source>
+            <translation>Silueta de Bézier (§4.9)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="550" />
+            <source>Precomputed points</source>
+            <translation>Punts precalculats</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="551" />
+            <source>The thesis's choice (§4.9, §4.10): the polygon is the control polygon of a Bézier curve sampled once by De Casteljau (Def 2.4); the samples are the body's vertices.</source>
+            <translation>L'opció del treball (§4.9, §4.10): el polígon és el polígon de control d'una corba de Bézier mostrejada una sola vegada amb De Casteljau (Def 2.4); les mostres són els vèrtexs del cos.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="553" />
+            <source>Least-squares fit every frame</source>
+            <translation>Ajust per mínims quadrats a cada fotograma</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="554" />
+            <source>The option §4.9 abandoned as too costly for Processing: every frame, the least-squares Bézier curve through the outline (Lemma 2.2, Prop 2.2). With M⁺ computed once, a frame costs one small matrix product; the curve need not pass through the vertices (Nota 2.3).</source>
+            <translation>L'opció que §4.9 va descartar per massa costosa per a Processing: a cada fotograma, la corba de Bézier d'ajust per mínims quadrats de la silueta (Lema 2.2, Prop 2.2). Amb M⁺ calculada una sola vegada, cada fotograma costa un petit producte de matrius; la corba no té per què passar pels vèrtexs (Nota 2.3).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="558" />
+            <source>Precomputed points: nothing to compute per frame.</source>
+            <translation>Punts precalculats: res a calcular a cada fotograma.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="562" />
+            <source>Parameters</source>
+            <translation>Paràmetres</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="563" />
+            <source>Only this scene's parameters, with the names of Annex II. Changes apply at once: the scene starts again with them.</source>
+            <translation>Només els paràmetres d'aquesta escena, amb els noms de l'Annex II. Els canvis s'apliquen immediatament: l'escena torna a començar amb ells.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="567" />
+            <source>Overlays</source>
+            <translation>Capes</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="568" />
+            <source>Vertices</source>
+            <translation>Vèrtexs</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="569" />
+            <source>The body's vertices, numbered as in Annex II's arrays (v₀ under the head), and the joints of the legs.</source>
+            <translation>Els vèrtexs del cos, numerats com als vectors de l'Annex II (v₀ sota el cap), i les articulacions de les potes.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="571" />
+            <source>Springs</source>
+            <translation>Molls</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="572" />
+            <source>The polygon's edges: the springs of §4.4 that keep neighbours at their length.</source>
+            <translation>Els costats del polígon: els molls de §4.4 que mantenen els veïns a la seua distància.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="573" />
+            <source>Area vs target</source>
+            <translation>Àrea i àrea desitjada</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="574" />
+            <source>The body's area by the trapezoid rule against the target area (§4.5); the bar's mark is the target.</source>
+            <translation>L'àrea del cos per la regla del trapezi comparada amb l'àrea desitjada (§4.5); la marca de la barra és l'àrea desitjada.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="576" />
+            <source>Velocities</source>
+            <translation>Velocitats</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="577" />
+            <source>Each vertex's move in the last step, x − x_prev (Verlet, Def 3.1), drawn four times longer.</source>
+            <translation>El desplaçament de cada vèrtex en l'últim pas, x − x_prev (Verlet, Def 3.1), dibuixat quatre vegades més llarg.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="579" />
+            <source>Readouts</source>
+            <translation>Mesures</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="580" />
+            <source>What the solver measures: area error, largest stretch of an edge, largest correction or constraint force, kinetic and potential energy.</source>
+            <translation>El que mesura la resolució: error d'àrea, estirament màxim d'un costat, correcció o força de restricció màxima, energia cinètica i potencial.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="582" />
+            <source>Frame time</source>
+            <translation>Temps per fotograma</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="583" />
+            <source>Time per frame and per simulation step, in milliseconds, averaged a few times a second.</source>
+            <translation>Temps per fotograma i per pas de simulació, en mil·lisegons, amb la mitjana actualitzada unes quantes vegades per segon.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="617" />
+            <source>Unknown scene “%1”.</source>
+            <translation>Escena desconeguda «%1».</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="625" />
+            <source>Unknown solver “%1” (seed or stable).</source>
+            <translation>Resolució desconeguda «%1» (seed o stable).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="633" />
+            <source>The frog's parameters must be an object.</source>
+            <translation>Els paràmetres de la granota han de ser un objecte.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="658" />
+            <source>The frog's overlays must be an object.</source>
+            <translation>Les capes de la granota han de ser un objecte.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="670" />
+            <source>The overlay “%1” must be true or false.</source>
+            <translation>La capa «%1» ha de ser true o false.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="680" />
+            <source>The Bézier outline must be “precomputed” or “fit”, not “%1”.</source>
+            <translation>La silueta de Bézier ha de ser «precomputed» o «fit», no «%1».</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="688" />
+            <source>“paused” must be true or false.</source>
+            <translation>«paused» ha de ser true o false.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="795" />
+            <source>The number of frames must be at least 1.</source>
+            <translation>El nombre de fotogrames ha de ser com a mínim 1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="797" />
+            <source>Cannot create the folder “%1”.</source>
+            <translation>No es pot crear la carpeta «%1».</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="811" />
+            <source>Cannot write “%1”.</source>
+            <translation>No es pot escriure «%1».</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.h" line="33" />
+            <source>Frog</source>
+            <translation>Granota</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::MainWindow</name>
+        <message>
+            <location filename="../ui/main_window.cpp" line="156" />
+            <source>Loaded Ex %1 of the thesis.</source>
+            <translation>S'ha carregat l'Ex %1 de la tesi.</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="248" />
+            <source>Ex %1 could not be loaded.</source>
+            <translation>No s'ha pogut carregar l'Ex %1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="307" />
+            <source>&amp;File</source>
+            <translation>&amp;Fitxer</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="308" />
+            <source>&amp;New</source>
+            <translation>&amp;Nou</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="309" />
+            <source>&amp;Open…</source>
+            <translation>&amp;Obre…</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="310" />
+            <source>Open &amp;Recent</source>
+            <translation>Obre'n un de &amp;recent</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="311" />
+            <source>&amp;Save</source>
+            <translation>&amp;Desa</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="312" />
+            <source>Save &amp;As…</source>
+            <translation>Desa &amp;com a…</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="313" />
+            <source>&amp;Export</source>
+            <translation>&amp;Exporta</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="314" />
+            <source>PNG image…</source>
+            <translation>Imatge PNG…</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="315" />
+            <source>SVG drawing…</source>
+            <translation>Dibuix SVG…</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="316" />
+            <source>PDF document…</source>
+            <translation>Document PDF…</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="317" />
+            <source>CSV data…</source>
+            <translation>Dades CSV…</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="318" />
+            <source>TikZ picture for LaTeX…</source>
+            <translation>Figura TikZ per a LaTeX…</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="319" />
+            <source>Frog animation as PNG frames…</source>
+            <translation>Animació de la granota en fotogrames PNG…</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="320" />
+            <source>&amp;Quit</source>
+            <translation>&amp;Surt</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="321" />
+            <source>&amp;Edit</source>
+            <translation>&amp;Edita</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="322" />
+            <source>&amp;Undo</source>
+            <translation>&amp;Desfés</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="323" />
+            <source>&amp;Redo</source>
+            <translation>&amp;Refés</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="324" />
+            <source>&amp;View</source>
+            <translation>&amp;Visualitza</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="325" />
+            <source>&amp;Presentation mode</source>
+            <translation>Mode &amp;presentació</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="326" />
+            <source>Full screen, larger text and thicker lines for the classroom.</source>
+            <translation>Pantalla completa, text més gran i línies més gruixudes per a l'aula.</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="327" />
+            <source>&amp;Error against run time</source>
+            <translation>&amp;Error respecte del temps d'execució</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="328" />
+            <source>Show, below the tab, how accurate each numerical method is for the time it takes (work-precision plot).</source>
+            <translation>Mostra, sota la pestanya, quina precisió dona cada mètode numèric per al temps que triga (gràfic de treball-precisió).</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="330" />
+            <source>Zoom &amp;in</source>
+            <translation>&amp;Amplia</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="331" />
+            <source>Zoom &amp;out</source>
+            <translation>&amp;Redueix</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="332" />
+            <source>&amp;Fit to view</source>
+            <translation>&amp;Encaixa a la vista</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="334" />
+            <source>Show %1</source>
+            <translation>Mostra %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="337" />
+            <source>&amp;Language</source>
+            <translation>&amp;Llengua</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="338" />
+            <source>E&amp;xamples</source>
+            <translation>E&amp;xemples</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="340" />
+            <source>Ex 2.1 — Cubic spline through four points (Def 2.3)</source>
+            <translation>Ex 2.1 — Spline cúbic per quatre punts (Def 2.3)</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="341" />
+            <source>Ex 2.2 — De Casteljau, degree 4</source>
+            <translation>Ex 2.2 — De Casteljau, grau 4</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="342" />
+            <source>Ex 2.3 — De Casteljau, a closed curve of degree 4</source>
+            <translation>Ex 2.3 — De Casteljau, una corba tancada de grau 4</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="343" />
+            <source>Ex 2.4 — Bernstein polynomials up to degree 5</source>
+            <translation>Ex 2.4 — Polinomis de Bernstein fins al grau 5</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="344" />
+            <source>Ex 2.5 — Ex 2.2's curve in the Bernstein basis</source>
+            <translation>Ex 2.5 — La corba de l'Ex 2.2 en la base de Bernstein</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="345" />
+            <source>Ex 2.6 — Ex 2.3's curve in the Bernstein basis</source>
+            <translation>Ex 2.6 — La corba de l'Ex 2.3 en la base de Bernstein</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="346" />
+            <source>Ex 2.7 — Least squares, degree 2, uniform parameters</source>
+            <translation>Ex 2.7 — Mínims quadrats, grau 2, paràmetres uniformes</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="347" />
+            <source>Ex 2.8 — Least squares, degree 3, uniform parameters</source>
+            <translation>Ex 2.8 — Mínims quadrats, grau 3, paràmetres uniformes</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="348" />
+            <source>Ex 2.9 — Least squares, degree 2, chord lengths</source>
+            <translation>Ex 2.9 — Mínims quadrats, grau 2, longituds de corda</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="349" />
+            <source>Ex 2.10 — Least squares, degree 3, chord lengths</source>
+            <translation>Ex 2.10 — Mínims quadrats, grau 3, longituds de corda</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="350" />
+            <source>Ex 2.11 — A Catmull-Rom segment for τ = 0, 1/2, 2</source>
+            <translation>Ex 2.11 — Un segment de Catmull-Rom per a τ = 0, 1/2, 2</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="351" />
+            <source>Ex 2.12 — Blending functions for several tensions</source>
+            <translation>Ex 2.12 — Funcions de combinació per a diverses tensions</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="352" />
+            <source>Ex 2.13 — Catmull-Rom curve, cyclic and open</source>
+            <translation>Ex 2.13 — Corba de Catmull-Rom, cíclica i oberta</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="356" />
+            <source>&amp;Help</source>
+            <translation>A&amp;juda</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="357" />
+            <source>&amp;User guide</source>
+            <translation>&amp;Guia d'ús</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="358" />
+            <source>&amp;About Granota</source>
+            <translation>&amp;Quant al Granota</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="359" />
+            <source>Position of the mouse in the plane</source>
+            <translation>Posició del ratolí al pla</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="387" />
+            <source>Untitled</source>
+            <translation>Sense títol</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="388" />
+            <source>%1%2 — Granota</source>
+            <translation>%1%2 — Granota</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="395" />
+            <source>Unsaved changes</source>
+            <translation>Canvis sense desar</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="396" />
+            <source>The document has unsaved changes. Save them?</source>
+            <translation>El document té canvis sense desar. Els voleu desar?</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="424" />
+            <source>Cannot open “%1”: %2</source>
+            <translation>No es pot obrir «%1»: %2</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="428" />
+            <source>“%1” is too large for a Granota document.</source>
+            <translation>«%1» és massa gran per a un document del Granota.</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="450" />
+            <source>Cannot write “%1”.</source>
+            <translation>No es pot escriure «%1».</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="465" />
+            <location filename="../ui/main_window.cpp" line="471" />
+            <location filename="../ui/main_window.cpp" line="519" />
+            <source>Open document</source>
+            <translation>Obre un document</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="466" />
+            <source>Granota documents (*.granota);;All files (*)</source>
+            <translation>Documents del Granota (*.granota);;Tots els fitxers (*)</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="478" />
+            <location filename="../ui/main_window.cpp" line="487" />
+            <source>Save document</source>
+            <translation>Desa el document</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="479" />
+            <source>Granota documents (*.granota)</source>
+            <translation>Documents del Granota (*.granota)</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="490" />
+            <source>Saved %1</source>
+            <translation>S'ha desat %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="547" />
+            <location filename="../ui/main_window.cpp" line="561" />
+            <source>Recover unsaved work</source>
+            <translation>Recupera la feina sense desar</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="548" />
+            <source>Granota was closed without saving the last changes. Recover them?</source>
+            <translation>El Granota es va tancar sense desar els últims canvis. Els voleu recuperar?</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="559" />
+            <source>Recovered the unsaved work of the last session.</source>
+            <translation>S'ha recuperat la feina sense desar de l'última sessió.</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="561" />
+            <source>The autosave could not be read.</source>
+            <translation>No s'ha pogut llegir la còpia automàtica.</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="581" />
+            <source>No tab is shown.</source>
+            <translation>No es mostra cap pestanya.</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="582" />
+            <source>Granota — %1</source>
+            <translation>Granota — %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="593" />
+            <source>Unknown export format “%1”.</source>
+            <translation>Format d'exportació desconegut: «%1».</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="606" />
+            <source>Export PNG</source>
+            <translation>Exporta PNG</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="607" />
+            <source>Resolution (dots per inch; 300 for print):</source>
+            <translation>Resolució (punts per polzada; 300 per imprimir):</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="615" />
+            <location filename="../ui/main_window.cpp" line="623" />
+            <source>Export</source>
+            <translation>Exporta</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="616" />
+            <source>%1 files (*.%2)</source>
+            <translation>Fitxers %1 (*.%2)</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="621" />
+            <source>Exported %1</source>
+            <translation>S'ha exportat %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="630" />
+            <location filename="../ui/main_window.cpp" line="641" />
+            <source>Frog animation</source>
+            <translation>Animació de la granota</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="630" />
+            <source>Number of frames (60 per second):</source>
+            <translation>Nombre de fotogrames (60 per segon):</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="634" />
+            <source>Folder for the frames</source>
+            <translation>Carpeta per als fotogrames</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/main_window.cpp" line="639" />
+            <source>Wrote %n frames.</source>
+            <translation>
+                <numerusform>S'ha escrit %n fotograma.</numerusform>
+                <numerusform>S'han escrit %n fotogrames.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="700" />
+            <source>User guide</source>
+            <translation>Guia d'ús</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="702" />
+            <source>&lt;h3&gt;Granota in five tabs&lt;/h3&gt;&lt;p&gt;&lt;b&gt;De Casteljau&lt;/b&gt; (§2.1.1): drag the control points, move t, watch every level.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bernstein&lt;/b&gt; (§2.1.2): the basis polynomials and their weights at the same t.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Fitting&lt;/b&gt; (§2.1.3): a Bézier curve through data by least squares.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Catmull-Rom&lt;/b&gt; (§2.2): curves through the points, one per tension τ.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Frog&lt;/b&gt; (chapter 4): the soft body, stage by stage.&lt;/p&gt;&lt;p&gt;Double-click to add a point, Delete to remove it, arrows to nudge it, Ctrl+Z to undo. The Examples menu loads every worked example of chapter 2. F11 switches presentation mode.&lt;/p&gt;</source>
+            <translation>&lt;h3&gt;El Granota en cinc pestanyes&lt;/h3&gt;&lt;p&gt;&lt;b&gt;De Casteljau&lt;/b&gt; (§2.1.1): arrossegueu els punts de control, moveu t i mireu cada nivell.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bernstein&lt;/b&gt; (§2.1.2): els polinomis de la base i els seus pesos al mateix t.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Ajust&lt;/b&gt; (§2.1.3): una corba de Bézier que s'ajusta a les dades per mínims quadrats.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Catmull-Rom&lt;/b&gt; (§2.2): corbes que passen pels punts, una per cada tensió τ.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Granota&lt;/b&gt; (capítol 4): el cos tou, etapa a etapa.&lt;/p&gt;&lt;p&gt;Feu doble clic per afegir un punt, Supr per treure'l, les fletxes per moure'l i Ctrl+Z per desfer. El menú Exemples carrega tots els exemples resolts del capítol 2. F11 activa el mode presentació.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="716" />
+            <source>About Granota</source>
+            <translation>Quant al Granota</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="717" />
+            <source>&lt;h3&gt;Granota&lt;/h3&gt;&lt;p&gt;Splines and soft bodies for the classroom, from the thesis “Animació procedimental per a cossos tous”.&lt;/p&gt;</source>
+            <translation>&lt;h3&gt;Granota&lt;/h3&gt;&lt;p&gt;Corbes i cossos tous per a l'aula, a partir del treball «Animació procedimental per a cossos tous».&lt;/p&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::PointEditor</name>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="81" />
+            <source>Refused: a point is not a finite number.</source>
+            <translation>Refusat: un punt no és un nombre finit.</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="92" />
+            <source>Refused: a coordinate must be a finite number.</source>
+            <translation>Refusat: una coordenada ha de ser un nombre finit.</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="97" />
+            <location filename="../ui/point_editor.cpp" line="264" />
+            <source>Move point %1</source>
+            <translation>Mou el punt %1</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/point_editor.cpp" line="103" />
+            <source>At most %n points here.</source>
+            <translation>
+                <numerusform>Aquí hi caben com a màxim %n punt.</numerusform>
+                <numerusform>Aquí hi caben com a màxim %n punts.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="111" />
+            <source>Add point</source>
+            <translation>Afegeix un punt</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/point_editor.cpp" line="120" />
+            <source>At least %n points are needed here.</source>
+            <translation>
+                <numerusform>Aquí cal com a mínim %n punt.</numerusform>
+                <numerusform>Aquí calen com a mínim %n punts.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="125" />
+            <source>Delete point %1</source>
+            <translation>Suprimeix el punt %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="213" />
+            <source>Delete %1%2</source>
+            <translation>Suprimeix %1%2</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="215" />
+            <source>Add a point here</source>
+            <translation>Afegeix un punt aquí</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="218" />
+            <source>Snap to grid</source>
+            <translation>Ajusta a la quadrícula</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="222" />
+            <source>Fit view</source>
+            <translation>Encaixa la vista</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::PointTable</name>
+        <message>
+            <location filename="../ui/point_table.cpp" line="51" />
+            <source>x</source>
+            <translation>x</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_table.cpp" line="51" />
+            <source>y</source>
+            <translation>y</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_table.cpp" line="52" />
+            <source>The points as numbers: type a decimal or a fraction such as 1/3.</source>
+            <translation>Els punts com a nombres: escriviu un decimal o una fracció com ara 1/3.</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_table.cpp" line="93" />
+            <source>“%1” is not a number: type a decimal (2.5) or a fraction (5/2).</source>
+            <translation>«%1» no és un nombre: escriviu un decimal (2,5 s'escriu 2.5) o una fracció (5/2).</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::WorkPrecision</name>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="28" />
+            <source>Curve sampling: polyline against curve</source>
+            <translation>Mostreig de corbes: poligonal respecte de la corba</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="30" />
+            <source>Evaluating a Bézier curve of degree n</source>
+            <translation>Avaluació d'una corba de Bézier de grau n</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="32" />
+            <source>Least-squares Bézier fit: normal equations, QR, SVD</source>
+            <translation>Ajust de Bézier per mínims quadrats: equacions normals, QR, SVD</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="34" />
+            <source>Integrators: global error against run time</source>
+            <translation>Integradors: error global respecte del temps d'execució</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="36" />
+            <source>Soft body: constraint error against substeps</source>
+            <translation>Cos tou: error de les restriccions respecte dels subpassos</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="43" />
+            <source>Both errors fall like 1/N² (twice the points, a quarter of the error); adaptive subdivision puts its points where the curve bends and needs fewer for the same error.</source>
+            <translation>Tots dos errors baixen com 1/N² (el doble de punts, una quarta part de l'error); la subdivisió adaptativa posa els punts on la corba es corba i en necessita menys per al mateix error.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="46" />
+            <source>De Casteljau and the Bernstein sum stay at rounding level at every degree; Horner on the power basis loses digits as the degree grows, because its coefficients are huge alternating sums that cancel.</source>
+            <translation>De Casteljau i la suma de Bernstein es mantenen a nivell d'arrodoniment a tots els graus; Horner en la base de potències perd xifres a mesura que creix el grau, perquè els seus coeficients són sumes alternades enormes que es cancel·len.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="50" />
+            <source>The normal equations square the condition number of M: near degree 25 they have lost almost every digit and by degree 30 the curve is wrong, while QR and SVD still hold about seven digits.</source>
+            <translation>Les equacions normals eleven al quadrat el nombre de condició de M: prop del grau 25 han perdut gairebé totes les xifres i al grau 30 la corba ja és errònia, mentre que QR i SVD encara en conserven unes set.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="54" />
+            <source>Halving h halves Euler's error but quarters Verlet's (order 1 against 2): at equal run time Verlet is orders of magnitude more accurate. RK4 (order 4) costs four evaluations per step and wins when high accuracy is needed.</source>
+            <translation>Reduir h a la meitat redueix a la meitat l'error d'Euler però a una quarta part el de Verlet (ordre 1 contra 2): amb el mateix temps d'execució, Verlet és ordres de magnitud més precís. RK4 (ordre 4) costa quatre avaluacions per pas i guanya quan cal molta precisió.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="58" />
+            <source>XPBD's constraint error falls as the substeps grow, at a cost proportional to their number; the seed's per-step corrections leave a lasting area deficit.</source>
+            <translation>L'error de les restriccions de l'XPBD baixa a mesura que augmenten els subpassos, amb un cost proporcional al seu nombre; les correccions per pas de la llavor deixen un dèficit d'àrea persistent.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="66" />
+            <source>uniform</source>
+            <translation>uniforme</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="67" />
+            <source>adaptive</source>
+            <translation>adaptatiu</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="68" />
+            <source>De Casteljau</source>
+            <translation>De Casteljau</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="69" />
+            <source>Bernstein sum</source>
+            <translation>suma de Bernstein</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="70" />
+            <source>Horner (power basis)</source>
+            <translation>Horner (base de potències)</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="71" />
+            <source>normal equations</source>
+            <translation>equacions normals</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="72" />
+            <source>QR</source>
+            <translation>QR</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="73" />
+            <source>SVD</source>
+            <translation>SVD</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="74" />
+            <source>explicit Euler</source>
+            <translation>Euler explícit</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="75" />
+            <source>semi-implicit Euler</source>
+            <translation>Euler semiimplícit</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="76" />
+            <source>Verlet</source>
+            <translation>Verlet</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="77" />
+            <source>RK4</source>
+            <translation>RK4</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="78" />
+            <source>XPBD area</source>
+            <translation>àrea (XPBD)</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="79" />
+            <source>XPBD edge lengths</source>
+            <translation>longituds de les arestes (XPBD)</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="80" />
+            <source>seed area (Annex II)</source>
+            <translation>àrea de la llavor (annex II)</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="91" />
+            <source>points</source>
+            <translation>punts</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="93" />
+            <source>degree</source>
+            <translation>grau</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="95" />
+            <source>step h</source>
+            <translation>pas h</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="97" />
+            <source>substeps</source>
+            <translation>subpassos</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="104" />
+            <source>max distance between curve and polyline</source>
+            <translation>distància màxima entre la corba i la poligonal</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="106" />
+            <source>max |c(t) − exact| / max |Pᵢ|</source>
+            <translation>màx |c(t) − exacte| / màx |Pᵢ|</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="108" />
+            <source>max |Pⱼ − Pⱼ(true)| / max |Pⱼ(true)|</source>
+            <translation>màx |Pⱼ − Pⱼ(real)| / màx |Pⱼ(real)|</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="110" />
+            <source>|x(T) − exact| at T = 10</source>
+            <translation>|x(T) − exacte| a T = 10</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="112" />
+            <source>RMS relative constraint violation</source>
+            <translation>violació relativa de les restriccions (RMS)</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="132" />
+            <source>run time per call (s)</source>
+            <translation>temps d'execució per crida (s)</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::WorkPrecisionPanel</name>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="120" />
+            <source>Cancelled. Press Measure to start again.</source>
+            <translation>S'ha cancel·lat. Premeu Mesura per tornar a començar.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="121" />
+            <source>Press Measure: each method runs over a range of its setting, and the plot shows its error against its run time (lower left is better).</source>
+            <translation>Premeu Mesura: cada mètode s'executa amb tot un ventall de valors del seu paràmetre, i el gràfic en mostra l'error respecte del temps d'execució (com més avall i a l'esquerra, millor).</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="142" />
+            <source>Which numerical method to measure (SPEC §2: error against run time).</source>
+            <translation>Quin mètode numèric es mesura (error respecte del temps d'execució).</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="143" />
+            <source>Measure</source>
+            <translation>Mesura</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="144" />
+            <source>Run every method over a range of its setting and plot error against run time.</source>
+            <translation>Executa cada mètode amb un ventall de valors del seu paràmetre i dibuixa l'error respecte del temps d'execució.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="145" />
+            <source>Cancel</source>
+            <translation>Cancel·la</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="146" />
+            <source>Stop the measurement.</source>
+            <translation>Atura la mesura.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="147" />
+            <source>Measuring…</source>
+            <translation>Mesurant…</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="148" />
+            <source>Work-precision plot: each marker is one setting of a method; lower is more accurate, left is faster.</source>
+            <translation>Gràfic de treball-precisió: cada marca és un valor del paràmetre d'un mètode; més avall és més precís, més a l'esquerra és més ràpid.</translation>
+        </message>
+    </context>
 </TS>

@@ -1,62 +1,3183 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="en_US">
-<context>
-    <name>granota::ui::MainWindow</name>
-    <message>
-        <location filename="../ui/main_window.cpp" line="36"/>
-        <source>Granota</source>
-        <translation>Granota</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="37"/>
-        <source>De Casteljau</source>
-        <translation>De Casteljau</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="37"/>
-        <source>Bernstein</source>
-        <translation>Bernstein</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="37"/>
-        <source>Fitting</source>
-        <translation>Fitting</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="37"/>
-        <source>Catmull-Rom</source>
-        <translation>Catmull-Rom</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="37"/>
-        <source>Frog</source>
-        <translation>Frog</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="38"/>
-        <source>§2.1.1, Def 2.4</source>
-        <translation>§2.1.1, Def 2.4</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="38"/>
-        <source>§2.1.2, Def 2.5</source>
-        <translation>§2.1.2, Def 2.5</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="38"/>
-        <source>§2.1.3, Lemma 2.2</source>
-        <translation>§2.1.3, Lemma 2.2</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="39"/>
-        <source>§2.2, Def 2.10</source>
-        <translation>§2.2, Def 2.10</translation>
-    </message>
-    <message>
-        <location filename="../ui/main_window.cpp" line="39"/>
-        <source>Chapter 4, Annex II</source>
-        <translation>Chapter 4, Annex II</translation>
-    </message>
-</context>
+    <context>
+        <name>CatmullRomCurves</name>
+        <message>
+            <location filename="../ui/catmull_rom_curves.cpp" line="58" />
+            <source>An open curve needs at least 2 points.</source>
+            <translation>An open curve needs at least 2 points.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_curves.cpp" line="59" />
+            <source>A single segment (Def 2.8) needs at least 4 points.</source>
+            <translation>A single segment (Def 2.8) needs at least 4 points.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_curves.cpp" line="60" />
+            <source>A cyclic or closed curve needs at least 3 points.</source>
+            <translation>A cyclic or closed curve needs at least 3 points.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_curves.cpp" line="62" />
+            <source>A point or a tension is not a finite number.</source>
+            <translation>A point or a tension is not a finite number.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_curves.cpp" line="63" />
+            <source>The curve overflows: the coordinates are too large.</source>
+            <translation>The curve overflows: the coordinates are too large.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_curves.cpp" line="65" />
+            <source>No cubic spline (Def 2.3): the points are not a function of x — their abscissae must increase strictly from q0 to qn.</source>
+            <translation>No cubic spline (Def 2.3): the points are not a function of x — their abscissae must increase strictly from q0 to qn.</translation>
+        </message>
+    </context>
+    <context>
+        <name>CatmullRomReport</name>
+        <message numerus="yes">
+            <location filename="../ui/catmull_rom_report.cpp" line="62" />
+            <source>… and %n more segments.</source>
+            <translation>
+                <numerusform>… and %n more segments.</numerusform>
+                <numerusform>… and %n more segments.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="71" />
+            <source>%1 jumps at x = %2: left %3, right %4 (jump %5)</source>
+            <translation>%1 jumps at x = %2: left %3, right %4 (jump %5)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="75" />
+            <source>%1 does not interpolate (%2, %3): %1(%2) = %4</source>
+            <translation>%1 does not interpolate (%2, %3): %1(%2) = %4</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="79" />
+            <source>The point (%1, %2) lies outside the domain.</source>
+            <translation>The point (%1, %2) lies outside the domain.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="91" />
+            <source>not continuous</source>
+            <translation>not continuous</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="94" />
+            <source>C^%1 at every knot</source>
+            <translation>C^%1 at every knot</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="97" />
+            <source>C^%1, not C^%2</source>
+            <translation>C^%1, not C^%2</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/catmull_rom_report.cpp" line="101" />
+            <source>interpolates all %n points</source>
+            <translation>
+                <numerusform>interpolates all %n point</numerusform>
+                <numerusform>interpolates all %n points</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="103" />
+            <source>does not interpolate every point</source>
+            <translation>does not interpolate every point</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="117" />
+            <location filename="../ui/catmull_rom_report.cpp" line="180" />
+            <source>knot</source>
+            <translation>knot</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="147" />
+            <source>no interior knot</source>
+            <translation>no interior knot</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/catmull_rom_report.cpp" line="150" />
+            <source>equal tangents at all %n knots (C¹)</source>
+            <translation>
+                <numerusform>equal tangents at all %n knots (C¹)</numerusform>
+                <numerusform>equal tangents at all %n knots (C¹)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="153" />
+            <source>C² too (p″ matches)</source>
+            <translation>C² too (p″ matches)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="154" />
+            <source>not C²: p″ jumps</source>
+            <translation>not C²: p″ jumps</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/catmull_rom_report.cpp" line="158" />
+            <source>parallel tangents at all %n knots (G¹), not equal ones (C¹) in the local parameters</source>
+            <translation>
+                <numerusform>parallel tangents at all %n knots (G¹), not equal ones (C¹) in the local parameters</numerusform>
+                <numerusform>parallel tangents at all %n knots (G¹), not equal ones (C¹) in the local parameters</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="163" />
+            <source>the tangents differ at some knots</source>
+            <translation>the tangents differ at some knots</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="180" />
+            <source>end of the segment before</source>
+            <translation>end of the segment before</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="181" />
+            <source>start of the segment after</source>
+            <translation>start of the segment after</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="188" />
+            <source>Matrix form (Lemma 2.3)</source>
+            <translation>Matrix form (Lemma 2.3)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="207" />
+            <source>Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)</source>
+            <translation>Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="220" />
+            <source>Processing's curveTightness</source>
+            <translation>Processing's curveTightness</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="221" />
+            <source>Processing draws the same curves with curveTightness(s), τ = (1 − s)/2: s = 0 (its default) is τ = 1/2.</source>
+            <translation>Processing draws the same curves with curveTightness(s), τ = (1 − s)/2: s = 0 (its default) is τ = 1/2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="255" />
+            <source>Ex 2.1 as printed in the thesis</source>
+            <translation>Ex 2.1 as printed in the thesis</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="261" />
+            <source>The check of Def 2.3 on the printed pieces:</source>
+            <translation>The check of Def 2.3 on the printed pieces:</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="267" />
+            <source>%1 as printed misses both of its points by the same constant: it lacks %2.</source>
+            <translation>%1 as printed misses both of its points by the same constant: it lacks %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="270" />
+            <source>Correct %1:</source>
+            <translation>Correct %1:</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="275" />
+            <source>The corrected spline:</source>
+            <translation>The corrected spline:</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="277" />
+            <source>Ex 2.1's spline is a cubic spline (Def 2.3) but not the natural one: s″ ≠ 0 at its ends, so its pieces differ from those above.</source>
+            <translation>Ex 2.1's spline is a cubic spline (Def 2.3) but not the natural one: s″ ≠ 0 at its ends, so its pieces differ from those above.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="286" />
+            <source>Cubic spline C² (Def 2.3), natural ends</source>
+            <translation>Cubic spline C² (Def 2.3), natural ends</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="309" />
+            <source>In decimals, each piece in powers of u = x − x_i:</source>
+            <translation>In decimals, each piece in powers of u = x − x_i:</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="326" />
+            <source>open</source>
+            <translation>open</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="327" />
+            <source>cyclic</source>
+            <translation>cyclic</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="328" />
+            <source>closed</source>
+            <translation>closed</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="329" />
+            <source>single segment</source>
+            <translation>single segment</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="351" />
+            <source>Segments, t ∈ [0, 1]: %1</source>
+            <translation>Segments, t ∈ [0, 1]: %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="353" />
+            <source>Centripetal and chordal spacing: coefficients in decimals.</source>
+            <translation>Centripetal and chordal spacing: coefficients in decimals.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="354" />
+            <source>The points are not small fractions: coefficients in decimals.</source>
+            <translation>The points are not small fractions: coefficients in decimals.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="370" />
+            <source>Tangents at the knots (Prop 2.3)</source>
+            <translation>Tangents at the knots (Prop 2.3)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="371" />
+            <source>Catmull-Rom curves are C¹: at every knot c_i′(1) = c_{i+1}′(0) = τ(q_{i+1} − q_{i−1}).</source>
+            <translation>Catmull-Rom curves are C¹: at every knot c_i′(1) = c_{i+1}′(0) = τ(q_{i+1} − q_{i−1}).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="394" />
+            <source>Smoothness compared (§2.3)</source>
+            <translation>Smoothness compared (§2.3)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="397" />
+            <source>Bézier, degree %1</source>
+            <translation>Bézier, degree %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="397" />
+            <source>C^∞: one polynomial</source>
+            <translation>C^∞: one polynomial</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="398" />
+            <source>only q0 and q%1</source>
+            <translation>only q0 and q%1</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="400" />
+            <source>Catmull-Rom, τ = %1</source>
+            <translation>Catmull-Rom, τ = %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="401" />
+            <source>C^%1 at the joins (checked)</source>
+            <translation>C^%1 at the joins (checked)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="402" />
+            <source>not C¹ at the joins (checked)</source>
+            <translation>not C¹ at the joins (checked)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="403" />
+            <location filename="../ui/catmull_rom_report.cpp" line="407" />
+            <source>every point</source>
+            <translation>every point</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="405" />
+            <source>Cubic spline</source>
+            <translation>Cubic spline</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="406" />
+            <source>C² (checked above)</source>
+            <translation>C² (checked above)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="406" />
+            <source>not defined</source>
+            <translation>not defined</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="408" />
+            <source>curve</source>
+            <translation>curve</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="408" />
+            <source>smoothness</source>
+            <translation>smoothness</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="408" />
+            <source>passes through</source>
+            <translation>passes through</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="410" />
+            <source>The Bézier curve only approaches the inner points: Catmull-Rom passes through all of them, which is why the thesis chose it for the frog (§2.3, §4.12).</source>
+            <translation>The Bézier curve only approaches the inner points: Catmull-Rom passes through all of them, which is why the thesis chose it for the frog (§2.3, §4.12).</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::BernsteinTab</name>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="326" />
+            <source>At t = %1 the weights sum to %2.&lt;br&gt;Def 2.6: %3 = %4&lt;br&gt;De Casteljau: %5 = %6 (difference %7)</source>
+            <translation>At t = %1 the weights sum to %2.&lt;br&gt;Def 2.6: %3 = %4&lt;br&gt;De Casteljau: %5 = %6 (difference %7)</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/bernstein_tab.cpp" line="332" />
+            <source>Weights of the %n control points of the De Casteljau tab at t (Def 2.6)</source>
+            <translation>
+                <numerusform>Weights of the %n control points of the De Casteljau tab at t (Def 2.6)</numerusform>
+                <numerusform>Weights of the %n control points of the De Casteljau tab at t (Def 2.6)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="393" />
+            <source>yes</source>
+            <translation>yes</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="395" />
+            <source>%1 %2 %3 — residual at t: %4; exact as polynomials: %5</source>
+            <translation>%1 %2 %3 — residual at t: %4; exact as polynomials: %5</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="397" />
+            <source>no</source>
+            <translation>no</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="399" />
+            <source>Partition of unity:</source>
+            <translation>Partition of unity:</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="402" />
+            <source>Symmetry:</source>
+            <translation>Symmetry:</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="407" />
+            <source>Recursion (Lemma 2.1):</source>
+            <translation>Recursion (Lemma 2.1):</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="414" />
+            <source>Recursion (Lemma 2.1): needs n ≥ 1.</source>
+            <translation>Recursion (Lemma 2.1): needs n ≥ 1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="429" />
+            <source>Bernstein polynomials of degree %1 (Def 2.5)</source>
+            <translation>Bernstein polynomials of degree %1 (Def 2.5)</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="440" />
+            <source>The De Casteljau tab's curve in the Bernstein basis (Def 2.6)</source>
+            <translation>The De Casteljau tab's curve in the Bernstein basis (Def 2.6)</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="443" />
+            <source>The control points are not small fractions, so the curve is not expanded exactly.</source>
+            <translation>The control points are not small fractions, so the curve is not expanded exactly.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="445" />
+            <source>The expansion is shown up to degree %1; the curve has degree %2.</source>
+            <translation>The expansion is shown up to degree %1; the curve has degree %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="468" />
+            <source>Degree n:</source>
+            <translation>Degree n:</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="469" />
+            <source>The degree n of the Bernstein polynomials B_i^n(t) = C(n,i) t^i (1−t)^(n−i) (Def 2.5).</source>
+            <translation>The degree n of the Bernstein polynomials B_i^n(t) = C(n,i) t^i (1−t)^(n−i) (Def 2.5).</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="472" />
+            <source>All degrees up to n</source>
+            <translation>All degrees up to n</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="473" />
+            <source>Overlay the polynomials of every degree 0…n, one colour per degree, like the tots option of the thesis's Matlab Rep_Pol_Bernstein (Ex 2.4, Figure 2.4).</source>
+            <translation>Overlay the polynomials of every degree 0…n, one colour per degree, like the tots option of the thesis's Matlab Rep_Pol_Bernstein (Ex 2.4, Figure 2.4).</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="475" />
+            <source>value</source>
+            <translation>value</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="476" />
+            <source>The Bernstein polynomials on [0, 1] (Def 2.5). Move the mouse to read their values; click or drag to move t, shared with the De Casteljau tab.</source>
+            <translation>The Bernstein polynomials on [0, 1] (Def 2.5). Move the mouse to read their values; click or drag to move t, shared with the De Casteljau tab.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="478" />
+            <source>Def 2.6: c(t) = Σ B_i^n(t) P_i. Each bar is the weight of one control point of the De Casteljau tab at the current t; they sum to 1 (partition of unity).</source>
+            <translation>Def 2.6: c(t) = Σ B_i^n(t) P_i. Each bar is the weight of one control point of the De Casteljau tab at the current t; they sum to 1 (partition of unity).</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="480" />
+            <source>weight</source>
+            <translation>weight</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="481" />
+            <source>The point c(t) from the Bernstein sum (Def 2.6) and from De Casteljau's algorithm (Def 2.4): equal by Prop 2.1.</source>
+            <translation>The point c(t) from the Bernstein sum (Def 2.6) and from De Casteljau's algorithm (Def 2.4): equal by Prop 2.1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="483" />
+            <source>Properties at the current n and t</source>
+            <translation>Properties at the current n and t</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="484" />
+            <source>Each property is checked twice: in floating point at t (the residual) and exactly, as polynomials with rational coefficients.</source>
+            <translation>Each property is checked twice: in floating point at t (the residual) and exactly, as polynomials with rational coefficients.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="486" />
+            <source>Partition of unity: the Bernstein polynomials of one degree sum to 1.</source>
+            <translation>Partition of unity: the Bernstein polynomials of one degree sum to 1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="487" />
+            <source>Symmetry: B_i^n(t) = B_(n−i)^n(1 − t).</source>
+            <translation>Symmetry: B_i^n(t) = B_(n−i)^n(1 − t).</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="488" />
+            <source>Lemma 2.1: B_i^n = (1 − t) B_i^(n−1) + t B_(i−1)^(n−1).</source>
+            <translation>Lemma 2.1: B_i^n = (1 − t) B_i^(n−1) + t B_(i−1)^(n−1).</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="489" />
+            <source>The Bernstein polynomials expanded in powers of t (Ex 2.4) and the De Casteljau tab's curve written in the Bernstein basis (Ex 2.5, Ex 2.6).</source>
+            <translation>The Bernstein polynomials expanded in powers of t (Ex 2.4) and the De Casteljau tab's curve written in the Bernstein basis (Ex 2.5, Ex 2.6).</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="517" />
+            <source>The Bernstein degree must be a whole number from 0 to %1.</source>
+            <translation>The Bernstein degree must be a whole number from 0 to %1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="523" />
+            <source>The Bernstein mode must be "single" or "all".</source>
+            <translation>The Bernstein mode must be "single" or "all".</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="529" />
+            <source>The parameter t must be a number between 0 and 1.</source>
+            <translation>The parameter t must be a number between 0 and 1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="546" />
+            <source>Ex %1: the Bernstein polynomials of every degree up to %2.</source>
+            <translation>Ex %1: the Bernstein polynomials of every degree up to %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="552" />
+            <source>Load Ex %1</source>
+            <translation>Load Ex %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="557" />
+            <source>Ex %1: the curve written in the Bernstein basis is in the panel on the right.</source>
+            <translation>Ex %1: the curve written in the Bernstein basis is in the panel on the right.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.cpp" line="613" />
+            <source>Move the mouse over the plot to read B_i^n(t); click or drag to move t.</source>
+            <translation>Move the mouse over the plot to read B_i^n(t); click or drag to move t.</translation>
+        </message>
+        <message>
+            <location filename="../ui/bernstein_tab.h" line="46" />
+            <source>Bernstein</source>
+            <translation>Bernstein</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::CatmullRomTab</name>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="286" />
+            <source>Tensions τ (Def 2.8)</source>
+            <translation>Tensions τ (Def 2.8)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="287" />
+            <source>The tension τ scales the tangents p′(0) = τ(p2 − p0), p′(1) = τ(p3 − p1) of every segment (Def 2.8): 0 gives straight segments, 1/2 is the usual value, negative values turn the tangents round (Ex 2.12). One curve per τ, in its colour.</source>
+            <translation>The tension τ scales the tangents p′(0) = τ(p2 − p0), p′(1) = τ(p3 − p1) of every segment (Def 2.8): 0 gives straight segments, 1/2 is the usual value, negative values turn the tangents round (Ex 2.12). One curve per τ, in its colour.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="290" />
+            <source>The tensions drawn, each with its colour and Processing's curveTightness(s), τ = (1 − s)/2. Select one for the slider, the blending plot and the tangent table.</source>
+            <translation>The tensions drawn, each with its colour and Processing's curveTightness(s), τ = (1 − s)/2. Select one for the slider, the blending plot and the tangent table.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="292" />
+            <source>τ, e.g. 1/2 or -0.5</source>
+            <translation>τ, e.g. 1/2 or -0.5</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="293" />
+            <source>Type a tension as a decimal or a fraction (-1/2), between −10 and 10, and press Enter.</source>
+            <translation>Type a tension as a decimal or a fraction (-1/2), between −10 and 10, and press Enter.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="294" />
+            <source>&amp;Add</source>
+            <translation>&amp;Add</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="295" />
+            <source>Add the typed tension: one more curve on the canvas (Ex 2.11 compares 0, 1/2 and 2).</source>
+            <translation>Add the typed tension: one more curve on the canvas (Ex 2.11 compares 0, 1/2 and 2).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="296" />
+            <source>&amp;Remove</source>
+            <translation>&amp;Remove</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="297" />
+            <source>Remove the selected tension and its curve.</source>
+            <translation>Remove the selected tension and its curve.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="298" />
+            <source>Drag to change the selected tension in steps of 0.05, from −10 to 10; the curve, the blending functions and the exact panel follow.</source>
+            <translation>Drag to change the selected tension in steps of 0.05, from −10 to 10; the curve, the blending functions and the exact panel follow.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="300" />
+            <source>Curve (Def 2.10)</source>
+            <translation>Curve (Def 2.10)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="301" />
+            <source>&amp;Ends:</source>
+            <translation>&amp;Ends:</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="302" />
+            <source>open (ends repeated)</source>
+            <translation>open (ends repeated)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="303" />
+            <source>cyclic (n segments)</source>
+            <translation>cyclic (n segments)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="304" />
+            <source>closed (n + 1 segments)</source>
+            <translation>closed (n + 1 segments)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="305" />
+            <source>single segment (Def 2.8)</source>
+            <translation>single segment (Def 2.8)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="306" />
+            <source>How the end segments get their missing neighbours (Def 2.10, Matlab Rep_CatmullRom): open repeats q0 and qn (p1′(0) = τ(q1 − q0)); cyclic takes q₋₁ = qn and qn₊₁ = q0 (n segments, Ex 2.13); closed adds the segment from qn back to q0; a single segment (Def 2.8, Ex 2.11) keeps only the segments with both neighbours.</source>
+            <translation>How the end segments get their missing neighbours (Def 2.10, Matlab Rep_CatmullRom): open repeats q0 and qn (p1′(0) = τ(q1 − q0)); cyclic takes q₋₁ = qn and qn₊₁ = q0 (n segments, Ex 2.13); closed adds the segment from qn back to q0; a single segment (Def 2.8, Ex 2.11) keeps only the segments with both neighbours.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="310" />
+            <source>&amp;Parametrization:</source>
+            <translation>&amp;Parametrization:</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="311" />
+            <source>uniform (thesis)</source>
+            <translation>uniform (thesis)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="312" />
+            <source>centripetal (α = 1/2)</source>
+            <translation>centripetal (α = 1/2)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="313" />
+            <source>chordal (α = 1)</source>
+            <translation>chordal (α = 1)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="314" />
+            <source>Knot spacing |q_{i+1} − q_i|^α. The thesis uses uniform spacing (α = 0). Beyond it: centripetal (α = 1/2) avoids cusps and loops, chordal (α = 1) follows the chord lengths; the segments then join with parallel tangents (G¹).</source>
+            <translation>Knot spacing |q_{i+1} − q_i|^α. The thesis uses uniform spacing (α = 0). Beyond it: centripetal (α = 1/2) avoids cusps and loops, chordal (α = 1) follows the chord lengths; the segments then join with parallel tangents (G¹).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="317" />
+            <source>Compare with &amp;Bézier</source>
+            <translation>Compare with &amp;Bézier</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="318" />
+            <source>Draw the Bézier curve that has the same points as control polygon (De Casteljau, Def 2.4): it passes only through q0 and qn, while Catmull-Rom passes through every point (§2.3).</source>
+            <translation>Draw the Bézier curve that has the same points as control polygon (De Casteljau, Def 2.4): it passes only through q0 and qn, while Catmull-Rom passes through every point (§2.3).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="321" />
+            <source>Cubic &amp;spline (C²)</source>
+            <translation>Cubic &amp;spline (C²)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="322" />
+            <source>Draw the natural C² cubic spline of Def 2.3 through the same points (a function of x: the abscissae must increase) and check its continuity at the knots: Bézier C^∞, Catmull-Rom C¹, cubic spline C² (§2.3, Ex 2.1).</source>
+            <translation>Draw the natural C² cubic spline of Def 2.3 through the same points (a function of x: the abscissae must increase) and check its continuity at the knots: Bézier C^∞, Catmull-Rom C¹, cubic spline C² (§2.3, Ex 2.1).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="325" />
+            <source>Compare open and &amp;cyclic ends</source>
+            <translation>Compare open and &amp;cyclic ends</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="326" />
+            <source>Also draw (dashed) and list the curve with the other end mode, as Ex 2.13 compares the cyclic and the open curve through the same points.</source>
+            <translation>Also draw (dashed) and list the curve with the other end mode, as Ex 2.13 compares the cyclic and the open curve through the same points.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="328" />
+            <source>Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)</source>
+            <translation>Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="329" />
+            <source>p(t) = Σ w_j(t, τ) p_j: the weight of each of the four points along a segment. They always add up to 1.</source>
+            <translation>p(t) = Σ w_j(t, τ) p_j: the weight of each of the four points along a segment. They always add up to 1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="331" />
+            <source>Every &amp;τ</source>
+            <translation>Every &amp;τ</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="332" />
+            <source>Plot the blending functions of every tension in the list (one line style per τ), as Ex 2.12 does for τ = −2, 0, 1/2 and 2.</source>
+            <translation>Plot the blending functions of every tension in the list (one line style per τ), as Ex 2.12 does for τ = −2, 0, 1/2 and 2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="334" />
+            <source>The blending functions w_0…w_3 of Cor 2.1 on t ∈ [0, 1].</source>
+            <translation>The blending functions w_0…w_3 of Cor 2.1 on t ∈ [0, 1].</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="335" />
+            <source>Exact results: segment polynomials (Lemma 2.3, Def 2.10), tangents at the knots (Prop 2.3), blending functions (Cor 2.1), and the comparisons of §2.3.</source>
+            <translation>Exact results: segment polynomials (Lemma 2.3, Def 2.10), tangents at the knots (Prop 2.3), blending functions (Cor 2.1), and the comparisons of §2.3.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="337" />
+            <source>Drag a point to move it; double-click to add one; Delete removes the selected point; drag the paper to pan, wheel to zoom.</source>
+            <translation>Drag a point to move it; double-click to add one; Delete removes the selected point; drag the paper to pan, wheel to zoom.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="339" />
+            <source>Exact results</source>
+            <translation>Exact results</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="340" />
+            <source>Points</source>
+            <translation>Points</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="342" />
+            <source>The points q0…qn as numbers; fractions such as 1/3 are accepted.</source>
+            <translation>The points q0…qn as numbers; fractions such as 1/3 are accepted.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="350" />
+            <source>τ = %1   (curveTightness %2)</source>
+            <translation>τ = %1   (curveTightness %2)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="376" />
+            <source>Selected: τ = %1, Processing's curveTightness(%2)</source>
+            <translation>Selected: τ = %1, Processing's curveTightness(%2)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="420" />
+            <source>τ = %1 is outside [−10, 10]: beyond that the curve is all overshoot. Not added.</source>
+            <translation>τ = %1 is outside [−10, 10]: beyond that the curve is all overshoot. Not added.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="423" />
+            <source>“%1” is not a tension: type a decimal (0.5) or a fraction (-1/2). Not added.</source>
+            <translation>“%1” is not a tension: type a decimal (0.5) or a fraction (-1/2). Not added.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="427" />
+            <location filename="../ui/catmull_rom_tab.cpp" line="476" />
+            <source>τ = %1 is already in the list.</source>
+            <translation>τ = %1 is already in the list.</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/catmull_rom_tab.cpp" line="431" />
+            <source>At most %n tensions at a time: remove one first.</source>
+            <translation>
+                <numerusform>At most %n tensions at a time: remove one first.</numerusform>
+                <numerusform>At most %n tensions at a time: remove one first.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="437" />
+            <source>Add τ = %1</source>
+            <translation>Add τ = %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="438" />
+            <source>Added τ = %1.</source>
+            <translation>Added τ = %1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="447" />
+            <source>At least one tension is needed.</source>
+            <translation>At least one tension is needed.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="454" />
+            <source>Remove τ = %1</source>
+            <translation>Remove τ = %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="482" />
+            <source>Change τ</source>
+            <translation>Change τ</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="489" />
+            <source>Change the ends</source>
+            <translation>Change the ends</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="491" />
+            <source>A single segment uses four points p0…p3 and joins p1 to p2; with more points, every segment that has both neighbours is drawn.</source>
+            <translation>A single segment uses four points p0…p3 and joins p1 to p2; with more points, every segment that has both neighbours is drawn.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="499" />
+            <source>Change the parametrization</source>
+            <translation>Change the parametrization</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="506" />
+            <source>Show the Bézier curve</source>
+            <translation>Show the Bézier curve</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="506" />
+            <source>Hide the Bézier curve</source>
+            <translation>Hide the Bézier curve</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="513" />
+            <source>Show the cubic spline</source>
+            <translation>Show the cubic spline</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="513" />
+            <source>Hide the cubic spline</source>
+            <translation>Hide the cubic spline</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="520" />
+            <source>Compare the ends</source>
+            <translation>Compare the ends</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="527" />
+            <source>Blending functions of every τ</source>
+            <translation>Blending functions of every τ</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="689" />
+            <source>dashed: %1 ends</source>
+            <translation>dashed: %1 ends</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="691" />
+            <source>Bézier curve of the same points</source>
+            <translation>Bézier curve of the same points</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="694" />
+            <source>no cubic spline: x must increase</source>
+            <translation>no cubic spline: x must increase</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="694" />
+            <source>cubic spline C²</source>
+            <translation>cubic spline C²</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="796" />
+            <location filename="../ui/catmull_rom_tab.cpp" line="798" />
+            <location filename="../ui/catmull_rom_tab.cpp" line="799" />
+            <source>Load Ex %1</source>
+            <translation>Load Ex %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="826" />
+            <source>The Catmull-Rom points are missing or not a list.</source>
+            <translation>The Catmull-Rom points are missing or not a list.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="829" />
+            <source>A Catmull-Rom curve needs between 2 and %1 points; the file has %2.</source>
+            <translation>A Catmull-Rom curve needs between 2 and %1 points; the file has %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="836" />
+            <source>Point %1 of the Catmull-Rom tab is not a pair of numbers.</source>
+            <translation>Point %1 of the Catmull-Rom tab is not a pair of numbers.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="839" />
+            <source>Point %1 of the Catmull-Rom tab is not a finite number.</source>
+            <translation>Point %1 of the Catmull-Rom tab is not a finite number.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="845" />
+            <source>The Catmull-Rom settings are not valid (“%1”): tensions must be numbers in [−10, 10], at most %2 of them, without repeats.</source>
+            <translation>The Catmull-Rom settings are not valid (“%1”): tensions must be numbers in [−10, 10], at most %2 of them, without repeats.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.h" line="42" />
+            <source>Catmull-Rom</source>
+            <translation>Catmull-Rom</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::DeCasteljauParameterControl</name>
+        <message>
+            <location filename="../ui/decasteljau_parameter_control.cpp" line="95" />
+            <source>The parameter t ∈ [0, 1] of the curve c(t) (Def 2.4). Type a decimal or a fraction such as 1/3.</source>
+            <translation>The parameter t ∈ [0, 1] of the curve c(t) (Def 2.4). Type a decimal or a fraction such as 1/3.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::DeCasteljauTab</name>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="502" />
+            <source>Pause</source>
+            <translation>Pause</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="502" />
+            <source>Play</source>
+            <translation>Play</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="518" />
+            <source>At most %1 control points: the degree cannot be raised further.</source>
+            <translation>At most %1 control points: the degree cannot be raised further.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="524" />
+            <source>Raise degree to %1</source>
+            <translation>Raise degree to %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="525" />
+            <source>Degree raised to %1: the same curve with one control point more.</source>
+            <translation>Degree raised to %1: the same curve with one control point more.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="533" />
+            <source>Degree %1 is high: in powers of t the condition number is %2, so only De Casteljau's algorithm, which stays stable, is used here and the exact tables are hidden.</source>
+            <translation>Degree %1 is high: in powers of t the condition number is %2, so only De Casteljau's algorithm, which stays stable, is used here and the exact tables are hidden.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="552" />
+            <source>The exact polynomials need control points that are small fractions: type them in the table (1/3 is accepted) or turn on Snap to grid.</source>
+            <translation>The exact polynomials need control points that are small fractions: type them in the table (1/3 is accepted) or turn on Snap to grid.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="557" />
+            <source>The levels in powers of t are shown up to degree %1; at degree %2 their coefficients would no longer be readable.</source>
+            <translation>The levels in powers of t are shown up to degree %1; at degree %2 their coefficients would no longer be readable.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="568" />
+            <source>The levels %1 in powers of t (Def 2.4)</source>
+            <translation>The levels %1 in powers of t (Def 2.4)</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="601" />
+            <location filename="../ui/decasteljau_tab.cpp" line="612" />
+            <source>De Casteljau's triangle at t = %1 (Def 2.4)</source>
+            <translation>De Casteljau's triangle at t = %1 (Def 2.4)</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="608" />
+            <location filename="../ui/decasteljau_tab.cpp" line="622" />
+            <source>Split at t: [0, t] has control points %1; [t, 1] has %2.</source>
+            <translation>Split at t: [0, t] has control points %1; [t, 1] has %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="618" />
+            <source>The triangle is shown up to degree %1; this curve has degree %2.</source>
+            <translation>The triangle is shown up to degree %1; this curve has degree %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="655" />
+            <source>Animate t from 0 to 1 and around again: watch c(t) trace the curve (Def 2.4).</source>
+            <translation>Animate t from 0 to 1 and around again: watch c(t) trace the curve (Def 2.4).</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="656" />
+            <source>Samples:</source>
+            <translation>Samples:</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="658" />
+            <source>Sampling precision: the curve is drawn through this many intervals of t, like part in the thesis's Matlab De_Casteljau(P, part).</source>
+            <translation>Sampling precision: the curve is drawn through this many intervals of t, like part in the thesis's Matlab De_Casteljau(P, part).</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="662" />
+            <source>Raise degree</source>
+            <translation>Raise degree</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="663" />
+            <source>Degree elevation: the same curve written with one control point more (Q_i = i/(n+1) P_(i−1) + (1 − i/(n+1)) P_i). Undoable.</source>
+            <translation>Degree elevation: the same curve written with one control point more (Q_i = i/(n+1) P_(i−1) + (1 − i/(n+1)) P_i). Undoable.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="665" />
+            <source>Construction</source>
+            <translation>Construction</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="666" />
+            <source>Draw every level P_i^r(t) of De Casteljau's algorithm (Def 2.4): the points of each level and the segments between them, one colour per level.</source>
+            <translation>Draw every level P_i^r(t) of De Casteljau's algorithm (Def 2.4): the points of each level and the segments between them, one colour per level.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="668" />
+            <source>Step by step</source>
+            <translation>Step by step</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="669" />
+            <source>Overlay the curves of the first 1, 2, …, n+1 control points, like the desglossar option of the thesis's Matlab Rep_Bezier.</source>
+            <translation>Overlay the curves of the first 1, 2, …, n+1 control points, like the desglossar option of the thesis's Matlab Rep_Bezier.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="671" />
+            <source>Tangent</source>
+            <translation>Tangent</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="672" />
+            <source>The tangent vector c′(t) = n (P_1^(n−1)(t) − P_0^(n−1)(t)), read off the last level but one of the construction; the arrow at c(t) is c′(t)/n, that last segment.</source>
+            <translation>The tangent vector c′(t) = n (P_1^(n−1)(t) − P_0^(n−1)(t)), read off the last level but one of the construction; the arrow at c(t) is c′(t)/n, that last segment.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="674" />
+            <source>Split at t</source>
+            <translation>Split at t</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="675" />
+            <source>Split the curve at t: the two edges of De Casteljau's triangle are the control polygons of the halves [0, t] and [t, 1].</source>
+            <translation>Split the curve at t: the two edges of De Casteljau's triangle are the control polygons of the halves [0, t] and [t, 1].</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="677" />
+            <source>Snap to grid</source>
+            <translation>Snap to grid</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="678" />
+            <source>Round dragged and added points to the grid, so that they stay small fractions and the exact tables appear.</source>
+            <translation>Round dragged and added points to the grid, so that they stay small fractions and the exact tables appear.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="680" />
+            <source>Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add one on the nearest edge, Delete removes the selected one, arrows nudge it.</source>
+            <translation>Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add one on the nearest edge, Delete removes the selected one, arrows nudge it.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="682" />
+            <source>De Casteljau's triangle P_i^r(t) at the current t and, for rational points, every level in powers of t, as in Ex 2.2 and Ex 2.3.</source>
+            <translation>De Casteljau's triangle P_i^r(t) at the current t and, for rational points, every level in powers of t, as in Ex 2.2 and Ex 2.3.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="717" />
+            <source>The De Casteljau points are missing or not a list.</source>
+            <translation>The De Casteljau points are missing or not a list.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="720" />
+            <source>The De Casteljau tab needs between 1 and %1 control points; the document has %2.</source>
+            <translation>The De Casteljau tab needs between 1 and %1 control points; the document has %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="728" />
+            <source>Control point %1 is not a pair of finite numbers.</source>
+            <translation>Control point %1 is not a pair of finite numbers.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="734" />
+            <source>The parameter t must be a number between 0 and 1.</source>
+            <translation>The parameter t must be a number between 0 and 1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="741" />
+            <source>The number of samples must be a whole number from %1 to %2.</source>
+            <translation>The number of samples must be a whole number from %1 to %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="751" />
+            <source>A De Casteljau display option is not true or false.</source>
+            <translation>A De Casteljau display option is not true or false.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="786" />
+            <source>Load Ex %1</source>
+            <translation>Load Ex %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="789" />
+            <source>Ex %1: the tables of the thesis are in the panel on the right at t = 1/2.</source>
+            <translation>Ex %1: the tables of the thesis are in the panel on the right at t = 1/2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="847" />
+            <source>Drag a point; double-click to add one; Delete removes the selected point; move t with the slider.</source>
+            <translation>Drag a point; double-click to add one; Delete removes the selected point; move t with the slider.</translation>
+        </message>
+        <message>
+            <location filename="../ui/decasteljau_tab.h" line="39" />
+            <source>De Casteljau</source>
+            <translation>De Casteljau</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::Document</name>
+        <message>
+            <location filename="../ui/document.cpp" line="33" />
+            <source>This is not a Granota document: %1 (at byte %2).</source>
+            <translation>This is not a Granota document: %1 (at byte %2).</translation>
+        </message>
+        <message>
+            <location filename="../ui/document.cpp" line="40" />
+            <source>This is not a Granota document (no "format": "granota").</source>
+            <translation>This is not a Granota document (no "format": "granota").</translation>
+        </message>
+        <message>
+            <location filename="../ui/document.cpp" line="45" />
+            <source>This document has version %1; this Granota reads version %2.</source>
+            <translation>This document has version %1; this Granota reads version %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/document.cpp" line="61" />
+            <source>Tab “%1”: %2</source>
+            <translation>Tab “%1”: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::Exporter</name>
+        <message>
+            <location filename="../ui/exporter.cpp" line="23" />
+            <source>Cannot write “%1”.</source>
+            <translation>Cannot write “%1”.</translation>
+        </message>
+        <message>
+            <location filename="../ui/exporter.cpp" line="36" />
+            <source>The resolution must be between 24 and 1200 DPI.</source>
+            <translation>The resolution must be between 24 and 1200 DPI.</translation>
+        </message>
+        <message>
+            <location filename="../ui/exporter.cpp" line="40" />
+            <source>The image would be too large: choose a lower resolution.</source>
+            <translation>The image would be too large: choose a lower resolution.</translation>
+        </message>
+        <message>
+            <location filename="../ui/exporter.cpp" line="43" />
+            <source>Not enough memory for an image of %1×%2 pixels.</source>
+            <translation>Not enough memory for an image of %1×%2 pixels.</translation>
+        </message>
+        <message>
+            <location filename="../ui/exporter.cpp" line="64" />
+            <source>Made with Granota</source>
+            <translation>Made with Granota</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FitExactView</name>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="80" />
+            <source>Chord lengths d_i = dist(Q_i−1, Q_i)</source>
+            <translation>Chord lengths d_i = dist(Q_i−1, Q_i)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="92" />
+            <source>The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has x = 8, so d_4 = √(49 + 49) = 7√2, which is used here.</source>
+            <translation>The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has x = 8, so d_4 = √(49 + 49) = 7√2, which is used here.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="95" />
+            <source>Centripetal parameters (beyond the thesis) use √d_i instead of d_i.</source>
+            <translation>Centripetal parameters (beyond the thesis) use √d_i instead of d_i.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="107" />
+            <source>Parameter correction moves the t_i to where the points project onto the curve: the results are shown in decimals.</source>
+            <translation>Parameter correction moves the t_i to where the points project onto the curve: the results are shown in decimals.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="110" />
+            <source>Exact fractions are shown for up to %1 data points; these %2 are shown in decimals.</source>
+            <translation>Exact fractions are shown for up to %1 data points; these %2 are shown in decimals.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="114" />
+            <source>The data are not small fractions: the results are shown in decimals.</source>
+            <translation>The data are not small fractions: the results are shown in decimals.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="120" />
+            <source>These parameters are irrational (square roots of the distances), so M cannot be written in fractions: the results are shown in decimals, as the thesis does with Matlab in Ex 2.9 and Ex 2.10.</source>
+            <translation>These parameters are irrational (square roots of the distances), so M cannot be written in fractions: the results are shown in decimals, as the thesis does with Matlab in Ex 2.9 and Ex 2.10.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="124" />
+            <source>MᵀM is singular for these parameters (coincident points): the control points shown are the minimum-norm least-squares solution, in decimals.</source>
+            <translation>MᵀM is singular for these parameters (coincident points): the control points shown are the minimum-norm least-squares solution, in decimals.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="129" />
+            <location filename="../ui/fit_exact_view.cpp" line="169" />
+            <source>Parameters t_i</source>
+            <translation>Parameters t_i</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="136" />
+            <source>Matrices (Lemma 2.2, Nota 2.2)</source>
+            <translation>Matrices (Lemma 2.2, Nota 2.2)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="142" />
+            <source>Control points P = M⁺Q</source>
+            <translation>Control points P = M⁺Q</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="150" />
+            <location filename="../ui/fit_exact_view.cpp" line="191" />
+            <source>Fitted curve α(t) = Σ Bⱼⁿ(t) Pⱼ</source>
+            <translation>Fitted curve α(t) = Σ Bⱼⁿ(t) Pⱼ</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="156" />
+            <source>Ex 2.7: the thesis prints α(t) = (−8/7 + 726/35 t − 600/35 t², 46/35 − 130/35 t + 200/35 t²), the same curve with unreduced fractions (600/35 = 120/7, 130/35 = 26/7, 200/35 = 40/7).</source>
+            <translation>Ex 2.7: the thesis prints α(t) = (−8/7 + 726/35 t − 600/35 t², 46/35 − 130/35 t + 200/35 t²), the same curve with unreduced fractions (600/35 = 120/7, 130/35 = 26/7, 200/35 = 40/7).</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="160" />
+            <source>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here.</source>
+            <translation>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="175" />
+            <source>Matrix M (Lemma 2.2), in decimals</source>
+            <translation>Matrix M (Lemma 2.2), in decimals</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="184" />
+            <source>Control points P</source>
+            <translation>Control points P</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_exact_view.cpp" line="195" />
+            <source>α(t) in powers of t is not shown beyond degree %1: its coefficients grow like C(n, k) and cancel each other.</source>
+            <translation>α(t) in powers of t is not shown beyond degree %1: its coefficients grow like C(n, k) and cancel each other.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FitTab</name>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="146" />
+            <source>Drag Q_i: the curve is refitted as it moves; Delete removes it.</source>
+            <translation>Drag Q_i: the curve is refitted as it moves; Delete removes it.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="174" />
+            <source>Degree %1 needs %2 data points (n + 1 ≤ k + 1); there are %3, so n ≤ %4.</source>
+            <translation>Degree %1 needs %2 data points (n + 1 ≤ k + 1); there are %3, so n ≤ %4.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="291" />
+            <source>Degree %1</source>
+            <translation>Degree %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="298" />
+            <source>Parametrization</source>
+            <translation>Parametrization</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="305" />
+            <source>Solver</source>
+            <translation>Solver</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="312" />
+            <location filename="../ui/fit_tab.cpp" line="319" />
+            <source>Parameter correction</source>
+            <translation>Parameter correction</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="380" />
+            <source>Least-squares fit (§2.1.3)</source>
+            <translation>Least-squares fit (§2.1.3)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="381" />
+            <source>&amp;Degree n:</source>
+            <translation>&amp;Degree n:</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="382" />
+            <source>n: the fitted Bézier curve has n + 1 control points P_0…P_n, so n + 1 ≤ k + 1 data points (§2.1.3, Lemma 2.2). Ex 2.7 uses n = 2, Ex 2.8 n = 3.</source>
+            <translation>n: the fitted Bézier curve has n + 1 control points P_0…P_n, so n + 1 ≤ k + 1 data points (§2.1.3, Lemma 2.2). Ex 2.7 uses n = 2, Ex 2.8 n = 3.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="384" />
+            <source>&amp;Parameters t_i:</source>
+            <translation>&amp;Parameters t_i:</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="385" />
+            <source>Uniform, i/k (Ex 2.7, 2.8)</source>
+            <translation>Uniform, i/k (Ex 2.7, 2.8)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="386" />
+            <source>Chord length (Ex 2.9, 2.10)</source>
+            <translation>Chord length (Ex 2.9, 2.10)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="387" />
+            <source>Centripetal (beyond the thesis)</source>
+            <translation>Centripetal (beyond the thesis)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="389" />
+            <source>Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord lengths d_i = dist(Q_i−1, Q_i); or centripetal, proportional to √d_i.</source>
+            <translation>Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord lengths d_i = dist(Q_i−1, Q_i); or centripetal, proportional to √d_i.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="391" />
+            <source>&amp;Solver:</source>
+            <translation>&amp;Solver:</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="392" />
+            <source>QR (default)</source>
+            <translation>QR (default)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="393" />
+            <source>Normal equations (the thesis)</source>
+            <translation>Normal equations (the thesis)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="394" />
+            <source>SVD (singular values)</source>
+            <translation>SVD (singular values)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="395" />
+            <source>How MP = Q is solved in the least-squares sense. The thesis solves the normal equations MᵀM P = MᵀQ (Prop 2.2), which square the condition number; QR and SVD work on M itself and stay accurate at high degree.</source>
+            <translation>How MP = Q is solved in the least-squares sense. The thesis solves the normal equations MᵀM P = MᵀQ (Prop 2.2), which square the condition number; QR and SVD work on M itself and stay accurate at high degree.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="398" />
+            <source>&amp;Correct parameters, at most</source>
+            <translation>&amp;Correct parameters, at most</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="399" />
+            <source>Beyond the thesis: project each Q_i onto the fitted curve, take the new t_i and fit again, while the error Σ‖Q_i − α(t_i)‖² drops.</source>
+            <translation>Beyond the thesis: project each Q_i onto the fitted curve, take the new t_i and fit again, while the error Σ‖Q_i − α(t_i)‖² drops.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="401" />
+            <source> times</source>
+            <translation> times</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="402" />
+            <source>The largest number of parameter corrections (re-projection and refit).</source>
+            <translation>The largest number of parameter corrections (re-projection and refit).</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="403" />
+            <source>&amp;Import CSV…</source>
+            <translation>&amp;Import CSV…</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="404" />
+            <source>Read the data points Q_i from a CSV file (one “x,y” per line) or a JSON list [[x,y],…].</source>
+            <translation>Read the data points Q_i from a CSV file (one “x,y” per line) or a JSON list [[x,y],…].</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="405" />
+            <source>Show &amp;matrices</source>
+            <translation>Show &amp;matrices</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="406" />
+            <source>Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Nota 2.2), in fractions when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8.</source>
+            <translation>Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Nota 2.2), in fractions when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="408" />
+            <source>Quality of the fit (Prop 2.2)</source>
+            <translation>Quality of the fit (Prop 2.2)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="409" />
+            <source>The error that the least-squares curve minimises, and how sensitive the solution is to the data.</source>
+            <translation>The error that the least-squares curve minimises, and how sensitive the solution is to the data.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="411" />
+            <source>The data points Q_i (round, draggable), the fitted Bézier curve α(t), its control points P_j (square) and control polygon, and the residuals Q_i − α(t_i).</source>
+            <translation>The data points Q_i (round, draggable), the fitted Bézier curve α(t), its control points P_j (square) and control polygon, and the residuals Q_i − α(t_i).</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="413" />
+            <source>The parameters, the control points P = M⁺Q and the curve α(t) in powers of t, exact when possible (Ex 2.7–2.10).</source>
+            <translation>The parameters, the control points P = M⁺Q and the curve α(t) in powers of t, exact when possible (Ex 2.7–2.10).</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="415" />
+            <source>The least-squares error Σ‖Q_i − α(t_i)‖² of the best curve of each degree n for the current parameters (without correction); the circle marks the current n. With fixed t_i it can only go down as n grows, unless the solver loses accuracy.</source>
+            <translation>The least-squares error Σ‖Q_i − α(t_i)‖² of the best curve of each degree n for the current parameters (without correction); the circle marks the current n. With fixed t_i it can only go down as n grows, unless the solver loses accuracy.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="418" />
+            <source>degree n</source>
+            <translation>degree n</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="419" />
+            <source>squared error (log)</source>
+            <translation>squared error (log)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="421" />
+            <source>Large data sets are fitted and drawn, but not listed.</source>
+            <translation>Large data sets are fitted and drawn, but not listed.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="432" />
+            <source>A least-squares fit needs at least 2 data points.</source>
+            <translation>A least-squares fit needs at least 2 data points.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="434" />
+            <source>Degree %1 needs at least %2 data points.</source>
+            <translation>Degree %1 needs at least %2 data points.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="437" />
+            <source>The normal equations MᵀM P = MᵀQ cannot be solved here: MᵀM is numerically singular (coincident points, or cond₂(MᵀM) = cond₂(M)² beyond 10^16). Choose QR or SVD.</source>
+            <translation>The normal equations MᵀM P = MᵀQ cannot be solved here: MᵀM is numerically singular (coincident points, or cond₂(MᵀM) = cond₂(M)² beyond 10^16). Choose QR or SVD.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="439" />
+            <source>The least-squares system has no usable solution here.</source>
+            <translation>The least-squares system has no usable solution here.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="441" />
+            <source>The fitted curve does not fit in double precision: lower the degree.</source>
+            <translation>The fitted curve does not fit in double precision: lower the degree.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="444" />
+            <source>A data point is not a finite number.</source>
+            <translation>A data point is not a finite number.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="495" />
+            <source>Degree lowered to %1: n + 1 control points need at least n + 1 data points, and there are %2.</source>
+            <translation>Degree lowered to %1: n + 1 control points need at least n + 1 data points, and there are %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="546" />
+            <source>Squared error Σ‖Q_i − α(t_i)‖²: %1</source>
+            <translation>Squared error Σ‖Q_i − α(t_i)‖²: %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="547" />
+            <source>RMS error √(Σ/(k+1)): %1</source>
+            <translation>RMS error √(Σ/(k+1)): %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="548" />
+            <source>Largest error max‖Q_i − α(t_i)‖: %1</source>
+            <translation>Largest error max‖Q_i − α(t_i)‖: %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="550" />
+            <source>Condition number cond₂(M): infinite (M is singular)</source>
+            <translation>Condition number cond₂(M): infinite (M is singular)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="551" />
+            <source>Condition number cond₂(M): %1</source>
+            <translation>Condition number cond₂(M): %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="553" />
+            <source>Parameter corrections that lowered the error: %1</source>
+            <translation>Parameter corrections that lowered the error: %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="556" />
+            <source>⚠ Ill-conditioned: cond₂(M) ≈ %1. The control points are very sensitive to the data; lower the degree.</source>
+            <translation>⚠ Ill-conditioned: cond₂(M) ≈ %1. The control points are very sensitive to the data; lower the degree.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="560" />
+            <source>⚠ High degree n = %1: the Bernstein basis grows ill-conditioned (cond₂(M) ≈ %2); a lower degree or a spline is usually the better model.</source>
+            <translation>⚠ High degree n = %1: the Bernstein basis grows ill-conditioned (cond₂(M) ≈ %2); a lower degree or a spline is usually the better model.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="566" />
+            <source>⚠ The normal equations square the condition number: cond₂(MᵀM) ≈ %1, so about %2 of the 16 significant digits may be lost. Choose QR.</source>
+            <translation>⚠ The normal equations square the condition number: cond₂(MᵀM) ≈ %1, so about %2 of the 16 significant digits may be lost. Choose QR.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="575" />
+            <source>⚠ Only %1 distinct parameters t_i for %2 control points: M is rank deficient, and the control points shown are the minimum-norm least-squares solution.</source>
+            <translation>⚠ Only %1 distinct parameters t_i for %2 control points: M is rank deficient, and the control points shown are the minimum-norm least-squares solution.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="580" />
+            <source>No fit: %1</source>
+            <translation>No fit: %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="593" />
+            <source>All the data points coincide: the chord lengths are all zero, so uniform parameters are used instead.</source>
+            <translation>All the data points coincide: the chord lengths are all zero, so uniform parameters are used instead.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="595" />
+            <source>All the data points coincide: the curve is that point.</source>
+            <translation>All the data points coincide: the curve is that point.</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/fit_tab.cpp" line="597" />
+            <source>Q%1 and Q%2 coincide: a zero chord length gives them the same parameter t_i (%n such pair(s)).</source>
+            <translation>
+                <numerusform>Q%1 and Q%2 coincide: a zero chord length gives them the same parameter t_i (%n such pair(s)).</numerusform>
+                <numerusform>Q%1 and Q%2 coincide: a zero chord length gives them the same parameter t_i (%n such pair(s)).</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="603" />
+            <source>The data points are collinear: the fitted curve and its control points lie on their line.</source>
+            <translation>The data points are collinear: the fitted curve and its control points lie on their line.</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/fit_tab.cpp" line="677" />
+            <source>%n data points: too many to list; they are fitted and drawn.</source>
+            <translation>
+                <numerusform>%n data points: too many to list; they are fitted and drawn.</numerusform>
+                <numerusform>%n data points: too many to list; they are fitted and drawn.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="706" />
+            <source>Load Ex %1</source>
+            <translation>Load Ex %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="707" />
+            <source>Ex %1 data</source>
+            <translation>Ex %1 data</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="709" />
+            <source>Ex %1 settings</source>
+            <translation>Ex %1 settings</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="721" />
+            <source>Cannot open “%1”: %2</source>
+            <translation>Cannot open “%1”: %2</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="725" />
+            <source>“%1” is larger than %2 MB; Granota reads data files up to that size.</source>
+            <translation>“%1” is larger than %2 MB; Granota reads data files up to that size.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="735" />
+            <source>“%1” holds no valid data points, nothing was changed: %2</source>
+            <translation>“%1” holds no valid data points, nothing was changed: %2</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/fit_tab.cpp" line="740" />
+            <source>“%1” has %n point(s); a fit needs at least 2, nothing was changed.</source>
+            <translation>
+                <numerusform>“%1” has %n point(s); a fit needs at least 2, nothing was changed.</numerusform>
+                <numerusform>“%1” has %n point(s); a fit needs at least 2, nothing was changed.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="747" />
+            <source>“%1” has a coordinate too large for a double; nothing was changed.</source>
+            <translation>“%1” has a coordinate too large for a double; nothing was changed.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="751" />
+            <source>Import %1</source>
+            <translation>Import %1</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/fit_tab.cpp" line="754" />
+            <source>Imported %n data points from “%1”.</source>
+            <translation>
+                <numerusform>Imported %n data points from “%1”.</numerusform>
+                <numerusform>Imported %n data points from “%1”.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="760" />
+            <location filename="../ui/fit_tab.cpp" line="767" />
+            <source>Import data points</source>
+            <translation>Import data points</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="761" />
+            <source>Point files (*.csv *.txt *.json);;All files (*)</source>
+            <translation>Point files (*.csv *.txt *.json);;All files (*)</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="789" />
+            <source>The fitting tab's data points are missing or not a list.</source>
+            <translation>The fitting tab's data points are missing or not a list.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="798" />
+            <source>Data point Q%1 is not a pair of finite numbers.</source>
+            <translation>Data point Q%1 is not a pair of finite numbers.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="804" />
+            <source>The fitting tab needs at least 2 data points.</source>
+            <translation>The fitting tab needs at least 2 data points.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="812" />
+            <source>The degree must be a whole number from 0 to %1.</source>
+            <translation>The degree must be a whole number from 0 to %1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="821" />
+            <source>Unknown parametrization “%1”.</source>
+            <translation>Unknown parametrization “%1”.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="830" />
+            <source>Unknown solver “%1”.</source>
+            <translation>Unknown solver “%1”.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="837" />
+            <source>“correctParameters” must be true or false.</source>
+            <translation>“correctParameters” must be true or false.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="845" />
+            <source>The number of parameter corrections must be a whole number from 1 to %1.</source>
+            <translation>The number of parameter corrections must be a whole number from 1 to %1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="852" />
+            <source>“showMatrices” must be true or false.</source>
+            <translation>“showMatrices” must be true or false.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="858" />
+            <source>Open fitting data</source>
+            <translation>Open fitting data</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="859" />
+            <source>Open data points</source>
+            <translation>Open data points</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="861" />
+            <source>Open fitting settings</source>
+            <translation>Open fitting settings</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.cpp" line="960" />
+            <source>Drag a data point Q_i and the curve is refitted; double-click adds a point, Delete removes it.</source>
+            <translation>Drag a data point Q_i and the curve is refitted; double-click adds a point, Delete removes it.</translation>
+        </message>
+        <message>
+            <location filename="../ui/fit_tab.h" line="40" />
+            <source>Fitting</source>
+            <translation>Fitting</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FrogCanvas</name>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="227" />
+            <source>Least-squares Bézier fit, degree %1 through %2 points: %3 µs per frame</source>
+            <translation>Least-squares Bézier fit, degree %1 through %2 points: %3 µs per frame</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="232" />
+            <source>Precomputed Bézier points (§4.9): computed once, nothing per frame</source>
+            <translation>Precomputed Bézier points (§4.9): computed once, nothing per frame</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="237" />
+            <source>Area %1 px² · target %2 px² (%3 %)</source>
+            <translation>Area %1 px² · target %2 px² (%3 %)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="240" />
+            <source>Area %1 px² · target %2 px²</source>
+            <translation>Area %1 px² · target %2 px²</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="244" />
+            <source>Area error %1 % · largest stretch %2 %</source>
+            <translation>Area error %1 % · largest stretch %2 %</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="246" />
+            <source>Largest correction %1 · kinetic energy %2 · potential energy %3</source>
+            <translation>Largest correction %1 · kinetic energy %2 · potential energy %3</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="250" />
+            <source>Velocities: this scene has no soft body</source>
+            <translation>Velocities: this scene has no soft body</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="253" />
+            <source>Frame %1 ms (%2 frames per second) · step %3 ms · drawing %4 ms</source>
+            <translation>Frame %1 ms (%2 frames per second) · step %3 ms · drawing %4 ms</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="257" />
+            <source>Paused · step %1 ms · drawing %2 ms</source>
+            <translation>Paused · step %1 ms · drawing %2 ms</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="258" />
+            <source>Step %1</source>
+            <translation>Step %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_canvas.cpp" line="670" />
+            <source>Press inside the body to grab it.</source>
+            <translation>Press inside the body to grab it.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FrogParametersPanel</name>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="267" />
+            <source>px</source>
+            <translation>px</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="269" />
+            <source>px/step²</source>
+            <translation>px/step²</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="271" />
+            <source>px/step</source>
+            <translation>px/step</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="273" />
+            <source>px²</source>
+            <translation>px²</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="281" />
+            <source>Sides N</source>
+            <translation>Sides N</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="282" />
+            <source>Radius r</source>
+            <translation>Radius r</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="283" />
+            <source>Centre (x, y)</source>
+            <translation>Centre (x, y)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="284" />
+            <source>Frame width</source>
+            <translation>Frame width</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="285" />
+            <source>Frame height</source>
+            <translation>Frame height</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="286" />
+            <source>Gravity g (x, y)</source>
+            <translation>Gravity g (x, y)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="287" />
+            <source>Initial velocity v₀ (x, y)</source>
+            <translation>Initial velocity v₀ (x, y)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="288" />
+            <source>Friction f (x, y)</source>
+            <translation>Friction f (x, y)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="289" />
+            <source>Largest move velmax</source>
+            <translation>Largest move velmax</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="290" />
+            <source>Spring length</source>
+            <translation>Spring length</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="291" />
+            <source>Target area</source>
+            <translation>Target area</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="292" />
+            <source>Area factor C</source>
+            <translation>Area factor C</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="293" />
+            <source>Grab</source>
+            <translation>Grab</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="294" />
+            <source>Bodies</source>
+            <translation>Bodies</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="295" />
+            <source>Bézier points</source>
+            <translation>Bézier points</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="296" />
+            <source>Fit degree n</source>
+            <translation>Fit degree n</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="298" />
+            <source>Front legs (upper, lower)</source>
+            <translation>Front legs (upper, lower)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="298" />
+            <source>Back legs (upper, lower)</source>
+            <translation>Back legs (upper, lower)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="299" />
+            <source>Link %1</source>
+            <translation>Link %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="301" />
+            <source>Front right shoulder (min, max)</source>
+            <translation>Front right shoulder (min, max)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="302" />
+            <source>Front left shoulder (min, max)</source>
+            <translation>Front left shoulder (min, max)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="303" />
+            <source>Back right shoulder (min, max)</source>
+            <translation>Back right shoulder (min, max)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="304" />
+            <source>Back left shoulder (min, max)</source>
+            <translation>Back left shoulder (min, max)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="305" />
+            <source>Front elbows (min, max)</source>
+            <translation>Front elbows (min, max)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="306" />
+            <source>Back elbows (min, max)</source>
+            <translation>Back elbows (min, max)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="307" />
+            <source>Shoulder (min, max)</source>
+            <translation>Shoulder (min, max)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="308" />
+            <source>Elbow (min, max)</source>
+            <translation>Elbow (min, max)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="316" />
+            <source>N (costats): the vertices of the body, a regular polygon built from the top (§4.1). Annex II's frog has N = 10; try 3 to 200.</source>
+            <translation>N (costats): the vertices of the body, a regular polygon built from the top (§4.1). Annex II's frog has N = 10; try 3 to 200.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="319" />
+            <source>r: distance from the centre to each vertex of the starting polygon (§4.1).</source>
+            <translation>r: distance from the centre to each vertex of the starting polygon (§4.1).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="321" />
+            <source>(c₁, c₂): where the first body starts, in pixels of the frame (y grows downwards).</source>
+            <translation>(c₁, c₂): where the first body starts, in pixels of the frame (y grows downwards).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="323" />
+            <source>The frame (Processing's size(1280, 720)): vertices stay inside [0, width − 1] × [0, height − 1] (§4.2).</source>
+            <translation>The frame (Processing's size(1280, 720)): vertices stay inside [0, width − 1] × [0, height − 1] (§4.2).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="325" />
+            <source>g (gravetat): acceleration added to every vertex each step, v(t) = v(t − 1) + g (§4.2).</source>
+            <translation>g (gravetat): acceleration added to every vertex each step, v(t) = v(t − 1) + g (§4.2).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="327" />
+            <source>v⁰ (velocitat inicial): the velocity the body starts with (§4.2).</source>
+            <translation>v⁰ (velocitat inicial): the velocity the body starts with (§4.2).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="329" />
+            <source>f (fregament): share of the velocity kept per step on each axis, f ∈ ]0, 1[ (§4.3).</source>
+            <translation>f (fregament): share of the velocity kept per step on each axis, f ∈ ]0, 1[ (§4.3).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="331" />
+            <source>velmax: the largest move of a vertex in one step, per axis (Annex II).</source>
+            <translation>velmax: the largest move of a vertex in one step, per axis (Annex II).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="333" />
+            <source>molls: rest length of every edge spring; the springs pull the edges back towards it (§4.4).</source>
+            <translation>molls: rest length of every edge spring; the springs pull the edges back towards it (§4.4).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="335" />
+            <source>Areal: the area the body tries to keep, by the trapezoid rule and edge normals (§4.5). 0 or huge values are allowed.</source>
+            <translation>Areal: the area the body tries to keep, by the trapezoid rule and edge normals (§4.5). 0 or huge values are allowed.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="338" />
+            <source>C (reescala): how strongly each step corrects the area; large values make a stiff body (§4.5).</source>
+            <translation>C (reescala): how strongly each step corrects the area; large values make a stiff body (§4.5).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="340" />
+            <source>Which vertices hold on to the mouse: all of them (§4.6), those above the grab point (§4.7), or Annex II's fixed anchors {0, 1, N−1, N} (§4.10).</source>
+            <translation>Which vertices hold on to the mouse: all of them (§4.6), those above the grab point (§4.7), or Annex II's fixed anchors {0, 1, N−1, N} (§4.10).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="343" />
+            <source>How many bodies fall and collide (§5.2.2); a broad phase keeps the cost close to linear.</source>
+            <translation>How many bodies fall and collide (§5.2.2); a broad phase keeps the cost close to linear.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="345" />
+            <source>§4.9: the polygon is the control polygon of one Bézier curve, sampled once at this many points by De Casteljau (Def 2.4); the samples become the body's vertices.</source>
+            <translation>§4.9: the polygon is the control polygon of one Bézier curve, sampled once at this many points by De Casteljau (Def 2.4); the samples become the body's vertices.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="348" />
+            <source>§4.9, the abandoned option: the degree n of the least-squares Bézier curve fitted to the outline every frame (Lemma 2.2, Prop 2.2).</source>
+            <translation>§4.9, the abandoned option: the degree n of the least-squares Bézier curve fitted to the outline every frame (Lemma 2.2, Prop 2.2).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="351" />
+            <source>longit: lengths of the two segments of each leg, shoulder–elbow and elbow–wrist (§4.16, Annex II).</source>
+            <translation>longit: lengths of the two segments of each leg, shoulder–elbow and elbow–wrist (§4.16, Annex II).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="353" />
+            <source>Length of this link of the pendulum; the links keep their length exactly (§4.13, §4.14).</source>
+            <translation>Length of this link of the pendulum; the links keep their length exactly (§4.13, §4.14).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="356" />
+            <source>angles: smallest and largest angle between the two segments at the elbow, in degrees (§4.15; Annex II uses ±π/12 in front, ±π/3 behind).</source>
+            <translation>angles: smallest and largest angle between the two segments at the elbow, in degrees (§4.15; Annex II uses ±π/12 in front, ±π/3 behind).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="358" />
+            <source>anglesc: smallest and largest angle of the upper segment at the shoulder, in degrees (§4.15; Annex II uses 0 to π and −π to 0).</source>
+            <translation>anglesc: smallest and largest angle of the upper segment at the shoulder, in degrees (§4.15; Annex II uses 0 to π and −π to 0).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="375" />
+            <source>All vertices (§4.6)</source>
+            <translation>All vertices (§4.6)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="376" />
+            <source>Vertices above the mouse (§4.7)</source>
+            <translation>Vertices above the mouse (§4.7)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="377" />
+            <source>Fixed anchors {0, 1, N−1, N} (§4.10)</source>
+            <translation>Fixed anchors {0, 1, N−1, N} (§4.10)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="383" />
+            <source>The obstacles come from the scene file.</source>
+            <translation>The obstacles come from the scene file.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_parameters_panel.cpp" line="384" />
+            <source>The shapes of the bodies come from the scene file.</source>
+            <translation>The shapes of the bodies come from the scene file.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FrogTab</name>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="229" />
+            <location filename="../ui/frog_tab.cpp" line="560" />
+            <source>Cost of the fit: %1 µs per frame.</source>
+            <translation>Cost of the fit: %1 µs per frame.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="264" />
+            <source>The simulation cannot be built with these values: %1</source>
+            <translation>The simulation cannot be built with these values: %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="280" />
+            <source>Unknown scene “%1”. The scenes are: %2.</source>
+            <translation>Unknown scene “%1”. The scenes are: %2.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="330" />
+            <source>The scene starts again.</source>
+            <translation>The scene starts again.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="382" />
+            <location filename="../ui/frog_tab.cpp" line="641" />
+            <source>Scene “%1” has no parameter “%2”.</source>
+            <translation>Scene “%1” has no parameter “%2”.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="391" />
+            <location filename="../ui/frog_tab.cpp" line="649" />
+            <source>This value was refused: %1</source>
+            <translation>This value was refused: %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="409" />
+            <source>Change %1</source>
+            <translation>Change %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="447" />
+            <source>4.1 Polygon and mouse</source>
+            <translation>4.1 Polygon and mouse</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="448" />
+            <source>4.2 Gravity</source>
+            <translation>4.2 Gravity</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="449" />
+            <source>4.3 Bounce</source>
+            <translation>4.3 Bounce</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="450" />
+            <source>4.4 Springs</source>
+            <translation>4.4 Springs</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="451" />
+            <source>4.5 Area</source>
+            <translation>4.5 Area</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="452" />
+            <source>4.6 Verlet and grabbing</source>
+            <translation>4.6 Verlet and grabbing</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="453" />
+            <source>4.7 Tuned parameters</source>
+            <translation>4.7 Tuned parameters</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="454" />
+            <source>4.8 Colour fill</source>
+            <translation>4.8 Colour fill</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="455" />
+            <source>4.9 Bézier outline</source>
+            <translation>4.9 Bézier outline</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="456" />
+            <source>4.10 Revised Bézier</source>
+            <translation>4.10 Revised Bézier</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="457" />
+            <source>4.12 Catmull-Rom outline</source>
+            <translation>4.12 Catmull-Rom outline</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="458" />
+            <source>4.13 Pendulum</source>
+            <translation>4.13 Pendulum</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="459" />
+            <source>4.14 Chain of joints</source>
+            <translation>4.14 Chain of joints</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="460" />
+            <source>4.15 Angle limits</source>
+            <translation>4.15 Angle limits</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="461" />
+            <source>4.16 The frog</source>
+            <translation>4.16 The frog</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="462" />
+            <source>5.2.1 Obstacles</source>
+            <translation>5.2.1 Obstacles</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="463" />
+            <source>5.2.2 Many bodies</source>
+            <translation>5.2.2 Many bodies</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="464" />
+            <source>5.2.3 Other shapes</source>
+            <translation>5.2.3 Other shapes</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="471" />
+            <source>A regular polygon drawn with straight lines; its radius follows the mouse, r = |mouseY − h/2|.</source>
+            <translation>A regular polygon drawn with straight lines; its radius follows the mouse, r = |mouseY − h/2|.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="473" />
+            <source>Every vertex falls with constant acceleration (MRUA) and stops at the edge of the frame.</source>
+            <translation>Every vertex falls with constant acceleration (MRUA) and stops at the edge of the frame.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="475" />
+            <source>At the frame the velocity turns round and keeps a share f of itself; a click starts the polygon again at the mouse.</source>
+            <translation>At the frame the velocity turns round and keeps a share f of itself; a click starts the polygon again at the mouse.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="478" />
+            <source>Springs along the edges pull each pair of neighbours back towards their rest length.</source>
+            <translation>Springs along the edges pull each pair of neighbours back towards their rest length.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="480" />
+            <source>The area, by the trapezoid rule, is pushed back towards the target along the edge normals.</source>
+            <translation>The area, by the trapezoid rule, is pushed back towards the target along the edge normals.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="482" />
+            <source>Verlet integration (Def 3.1). Press inside the body to grab it: every vertex is tied to the mouse.</source>
+            <translation>Verlet integration (Def 3.1). Press inside the body to grab it: every vertex is tied to the mouse.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="484" />
+            <source>Only the vertices above the grab point hold on to the mouse.</source>
+            <translation>Only the vertices above the grab point hold on to the mouse.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="486" />
+            <source>The same body, filled with colour.</source>
+            <translation>The same body, filled with colour.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="488" />
+            <source>The polygon's vertices are the control points of one Bézier curve, sampled once. Beside it, the per-frame least-squares fit that the thesis abandoned, with its cost.</source>
+            <translation>The polygon's vertices are the control points of one Bézier curve, sampled once. Beside it, the per-frame least-squares fit that the thesis abandoned, with its cost.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="491" />
+            <source>Tuned constants, and fixed anchors for grabbing, on the precomputed Bézier points.</source>
+            <translation>Tuned constants, and fixed anchors for grabbing, on the precomputed Bézier points.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="493" />
+            <source>The outline is a Catmull-Rom curve through the vertices (τ = 1/2, Processing's curveVertex).</source>
+            <translation>The outline is a Catmull-Rom curve through the vertices (τ = 1/2, Processing's curveVertex).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="495" />
+            <source>A double pendulum hanging from the mouse; its lengths are restored at once.</source>
+            <translation>A double pendulum hanging from the mouse; its lengths are restored at once.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="497" />
+            <source>A chain of joints following its first joint: each joint is put back at its distance from the previous one.</source>
+            <translation>A chain of joints following its first joint: each joint is put back at its distance from the previous one.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="500" />
+            <source>A leg: two links with gravity, the frame, and limits on the angles at its joints.</source>
+            <translation>A leg: two links with gravity, the frame, and limits on the angles at its joints.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="502" />
+            <source>Body, four legs and head: the final program of Annex II.</source>
+            <translation>Body, four legs and head: the final program of Annex II.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="504" />
+            <source>Fixed segments and polygons that the bodies collide with (future work, §5.2).</source>
+            <translation>Fixed segments and polygons that the bodies collide with (future work, §5.2).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="506" />
+            <source>Several bodies collide with each other; a broad phase keeps the cost close to linear.</source>
+            <translation>Several bodies collide with each other; a broad phase keeps the cost close to linear.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="508" />
+            <source>Bodies that are not regular polygons, kept in shape by angle constraints between their edges.</source>
+            <translation>Bodies that are not regular polygons, kept in shape by angle constraints between their edges.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="515" />
+            <source>The pendulum hangs from the mouse: move the mouse over the picture.</source>
+            <translation>The pendulum hangs from the mouse: move the mouse over the picture.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="518" />
+            <source>Move the mouse up and down: the radius is r = |mouseY − h/2| (§4.1).</source>
+            <translation>Move the mouse up and down: the radius is r = |mouseY − h/2| (§4.1).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="520" />
+            <source>Click to start the polygon again at the mouse (§4.3).</source>
+            <translation>Click to start the polygon again at the mouse (§4.3).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="521" />
+            <source>Reset (R) drops the polygon again.</source>
+            <translation>Reset (R) drops the polygon again.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="523" />
+            <source>Drag the body with the left button. Space drops a new one at the mouse and holds it until you let go (Annex II).</source>
+            <translation>Drag the body with the left button. Space drops a new one at the mouse and holds it until you let go (Annex II).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="529" />
+            <source>Scene</source>
+            <translation>Scene</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="530" />
+            <source>Stage</source>
+            <translation>Stage</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="533" />
+            <source>The stages of chapter 4, in the thesis's order, and the future work of §5.2. Each scene builds, draws and shows only its own components.</source>
+            <translation>The stages of chapter 4, in the thesis's order, and the future work of §5.2. Each scene builds, draws and shows only its own components.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="536" />
+            <source>Solver</source>
+            <translation>Solver</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="537" />
+            <source>Seed (Annex II)</source>
+            <translation>Seed (Annex II)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="538" />
+            <source>Stable (XPBD)</source>
+            <translation>Stable (XPBD)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="539" />
+            <source>Seed: the thesis's own schemes, reproduced faithfully (Annex II). Stable: beyond the thesis, position-based constraints with compliance (XPBD) that hold the target area and stay stable on stiff and extreme settings. Switching starts the scene again.</source>
+            <translation>Seed: the thesis's own schemes, reproduced faithfully (Annex II). Stable: beyond the thesis, position-based constraints with compliance (XPBD) that hold the target area and stay stable on stiff and extreme settings. Switching starts the scene again.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="542" />
+            <source>Run</source>
+            <translation>Run</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="542" />
+            <source>Pause</source>
+            <translation>Pause</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="543" />
+            <source>Pause or run the animation, one fixed step per frame at 60 frames per second (P).</source>
+            <translation>Pause or run the animation, one fixed step per frame at 60 frames per second (P).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="544" />
+            <source>Step</source>
+            <translation>Step</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="545" />
+            <source>One fixed step, as one call of actualitza() in Annex II; pauses first (S or .).</source>
+            <translation>One fixed step, as one call of actualitza() in Annex II; pauses first (S or .).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="546" />
+            <source>Reset</source>
+            <translation>Reset</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="547" />
+            <source>Start the scene again with the current parameters (R).</source>
+            <translation>Start the scene again with the current parameters (R).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="549" />
+            <source>Bézier outline (§4.9)</source>
+            <translation>Bézier outline (§4.9)</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="550" />
+            <source>Precomputed points</source>
+            <translation>Precomputed points</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="551" />
+            <source>The thesis's choice (§4.9, §4.10): the polygon is the control polygon of a Bézier curve sampled once by De Casteljau (Def 2.4); the samples are the body's vertices.</source>
+            <translation>The thesis's choice (§4.9, §4.10): the polygon is the control polygon of a Bézier curve sampled once by De Casteljau (Def 2.4); the samples are the body's vertices.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="553" />
+            <source>Least-squares fit every frame</source>
+            <translation>Least-squares fit every frame</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="554" />
+            <source>The option §4.9 abandoned as too costly for Processing: every frame, the least-squares Bézier curve through the outline (Lemma 2.2, Prop 2.2). With M⁺ computed once, a frame costs one small matrix product; the curve need not pass through the vertices (Nota 2.3).</source>
+            <translation>The option §4.9 abandoned as too costly for Processing: every frame, the least-squares Bézier curve through the outline (Lemma 2.2, Prop 2.2). With M⁺ computed once, a frame costs one small matrix product; the curve need not pass through the vertices (Nota 2.3).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="558" />
+            <source>Precomputed points: nothing to compute per frame.</source>
+            <translation>Precomputed points: nothing to compute per frame.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="562" />
+            <source>Parameters</source>
+            <translation>Parameters</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="563" />
+            <source>Only this scene's parameters, with the names of Annex II. Changes apply at once: the scene starts again with them.</source>
+            <translation>Only this scene's parameters, with the names of Annex II. Changes apply at once: the scene starts again with them.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="567" />
+            <source>Overlays</source>
+            <translation>Overlays</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="568" />
+            <source>Vertices</source>
+            <translation>Vertices</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="569" />
+            <source>The body's vertices, numbered as in Annex II's arrays (v₀ under the head), and the joints of the legs.</source>
+            <translation>The body's vertices, numbered as in Annex II's arrays (v₀ under the head), and the joints of the legs.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="571" />
+            <source>Springs</source>
+            <translation>Springs</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="572" />
+            <source>The polygon's edges: the springs of §4.4 that keep neighbours at their length.</source>
+            <translation>The polygon's edges: the springs of §4.4 that keep neighbours at their length.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="573" />
+            <source>Area vs target</source>
+            <translation>Area vs target</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="574" />
+            <source>The body's area by the trapezoid rule against the target area (§4.5); the bar's mark is the target.</source>
+            <translation>The body's area by the trapezoid rule against the target area (§4.5); the bar's mark is the target.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="576" />
+            <source>Velocities</source>
+            <translation>Velocities</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="577" />
+            <source>Each vertex's move in the last step, x − x_prev (Verlet, Def 3.1), drawn four times longer.</source>
+            <translation>Each vertex's move in the last step, x − x_prev (Verlet, Def 3.1), drawn four times longer.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="579" />
+            <source>Readouts</source>
+            <translation>Readouts</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="580" />
+            <source>What the solver measures: area error, largest stretch of an edge, largest correction or constraint force, kinetic and potential energy.</source>
+            <translation>What the solver measures: area error, largest stretch of an edge, largest correction or constraint force, kinetic and potential energy.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="582" />
+            <source>Frame time</source>
+            <translation>Frame time</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="583" />
+            <source>Time per frame and per simulation step, in milliseconds, averaged a few times a second.</source>
+            <translation>Time per frame and per simulation step, in milliseconds, averaged a few times a second.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="617" />
+            <source>Unknown scene “%1”.</source>
+            <translation>Unknown scene “%1”.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="625" />
+            <source>Unknown solver “%1” (seed or stable).</source>
+            <translation>Unknown solver “%1” (seed or stable).</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="633" />
+            <source>The frog's parameters must be an object.</source>
+            <translation>The frog's parameters must be an object.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="658" />
+            <source>The frog's overlays must be an object.</source>
+            <translation>The frog's overlays must be an object.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="670" />
+            <source>The overlay “%1” must be true or false.</source>
+            <translation>The overlay “%1” must be true or false.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="680" />
+            <source>The Bézier outline must be “precomputed” or “fit”, not “%1”.</source>
+            <translation>The Bézier outline must be “precomputed” or “fit”, not “%1”.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="688" />
+            <source>“paused” must be true or false.</source>
+            <translation>“paused” must be true or false.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="795" />
+            <source>The number of frames must be at least 1.</source>
+            <translation>The number of frames must be at least 1.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="797" />
+            <source>Cannot create the folder “%1”.</source>
+            <translation>Cannot create the folder “%1”.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.cpp" line="811" />
+            <source>Cannot write “%1”.</source>
+            <translation>Cannot write “%1”.</translation>
+        </message>
+        <message>
+            <location filename="../ui/frog_tab.h" line="33" />
+            <source>Frog</source>
+            <translation>Frog</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::MainWindow</name>
+        <message>
+            <location filename="../ui/main_window.cpp" line="156" />
+            <source>Loaded Ex %1 of the thesis.</source>
+            <translation>Loaded Ex %1 of the thesis.</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="248" />
+            <source>Ex %1 could not be loaded.</source>
+            <translation>Ex %1 could not be loaded.</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="307" />
+            <source>&amp;File</source>
+            <translation>&amp;File</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="308" />
+            <source>&amp;New</source>
+            <translation>&amp;New</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="309" />
+            <source>&amp;Open…</source>
+            <translation>&amp;Open…</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="310" />
+            <source>Open &amp;Recent</source>
+            <translation>Open &amp;Recent</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="311" />
+            <source>&amp;Save</source>
+            <translation>&amp;Save</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="312" />
+            <source>Save &amp;As…</source>
+            <translation>Save &amp;As…</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="313" />
+            <source>&amp;Export</source>
+            <translation>&amp;Export</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="314" />
+            <source>PNG image…</source>
+            <translation>PNG image…</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="315" />
+            <source>SVG drawing…</source>
+            <translation>SVG drawing…</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="316" />
+            <source>PDF document…</source>
+            <translation>PDF document…</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="317" />
+            <source>CSV data…</source>
+            <translation>CSV data…</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="318" />
+            <source>TikZ picture for LaTeX…</source>
+            <translation>TikZ picture for LaTeX…</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="319" />
+            <source>Frog animation as PNG frames…</source>
+            <translation>Frog animation as PNG frames…</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="320" />
+            <source>&amp;Quit</source>
+            <translation>&amp;Quit</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="321" />
+            <source>&amp;Edit</source>
+            <translation>&amp;Edit</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="322" />
+            <source>&amp;Undo</source>
+            <translation>&amp;Undo</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="323" />
+            <source>&amp;Redo</source>
+            <translation>&amp;Redo</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="324" />
+            <source>&amp;View</source>
+            <translation>&amp;View</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="325" />
+            <source>&amp;Presentation mode</source>
+            <translation>&amp;Presentation mode</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="326" />
+            <source>Full screen, larger text and thicker lines for the classroom.</source>
+            <translation>Full screen, larger text and thicker lines for the classroom.</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="327" />
+            <source>&amp;Error against run time</source>
+            <translation>&amp;Error against run time</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="328" />
+            <source>Show, below the tab, how accurate each numerical method is for the time it takes (work-precision plot).</source>
+            <translation>Show, below the tab, how accurate each numerical method is for the time it takes (work-precision plot).</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="330" />
+            <source>Zoom &amp;in</source>
+            <translation>Zoom &amp;in</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="331" />
+            <source>Zoom &amp;out</source>
+            <translation>Zoom &amp;out</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="332" />
+            <source>&amp;Fit to view</source>
+            <translation>&amp;Fit to view</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="334" />
+            <source>Show %1</source>
+            <translation>Show %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="337" />
+            <source>&amp;Language</source>
+            <translation>&amp;Language</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="338" />
+            <source>E&amp;xamples</source>
+            <translation>E&amp;xamples</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="340" />
+            <source>Ex 2.1 — Cubic spline through four points (Def 2.3)</source>
+            <translation>Ex 2.1 — Cubic spline through four points (Def 2.3)</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="341" />
+            <source>Ex 2.2 — De Casteljau, degree 4</source>
+            <translation>Ex 2.2 — De Casteljau, degree 4</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="342" />
+            <source>Ex 2.3 — De Casteljau, a closed curve of degree 4</source>
+            <translation>Ex 2.3 — De Casteljau, a closed curve of degree 4</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="343" />
+            <source>Ex 2.4 — Bernstein polynomials up to degree 5</source>
+            <translation>Ex 2.4 — Bernstein polynomials up to degree 5</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="344" />
+            <source>Ex 2.5 — Ex 2.2's curve in the Bernstein basis</source>
+            <translation>Ex 2.5 — Ex 2.2's curve in the Bernstein basis</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="345" />
+            <source>Ex 2.6 — Ex 2.3's curve in the Bernstein basis</source>
+            <translation>Ex 2.6 — Ex 2.3's curve in the Bernstein basis</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="346" />
+            <source>Ex 2.7 — Least squares, degree 2, uniform parameters</source>
+            <translation>Ex 2.7 — Least squares, degree 2, uniform parameters</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="347" />
+            <source>Ex 2.8 — Least squares, degree 3, uniform parameters</source>
+            <translation>Ex 2.8 — Least squares, degree 3, uniform parameters</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="348" />
+            <source>Ex 2.9 — Least squares, degree 2, chord lengths</source>
+            <translation>Ex 2.9 — Least squares, degree 2, chord lengths</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="349" />
+            <source>Ex 2.10 — Least squares, degree 3, chord lengths</source>
+            <translation>Ex 2.10 — Least squares, degree 3, chord lengths</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="350" />
+            <source>Ex 2.11 — A Catmull-Rom segment for τ = 0, 1/2, 2</source>
+            <translation>Ex 2.11 — A Catmull-Rom segment for τ = 0, 1/2, 2</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="351" />
+            <source>Ex 2.12 — Blending functions for several tensions</source>
+            <translation>Ex 2.12 — Blending functions for several tensions</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="352" />
+            <source>Ex 2.13 — Catmull-Rom curve, cyclic and open</source>
+            <translation>Ex 2.13 — Catmull-Rom curve, cyclic and open</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="356" />
+            <source>&amp;Help</source>
+            <translation>&amp;Help</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="357" />
+            <source>&amp;User guide</source>
+            <translation>&amp;User guide</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="358" />
+            <source>&amp;About Granota</source>
+            <translation>&amp;About Granota</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="359" />
+            <source>Position of the mouse in the plane</source>
+            <translation>Position of the mouse in the plane</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="387" />
+            <source>Untitled</source>
+            <translation>Untitled</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="388" />
+            <source>%1%2 — Granota</source>
+            <translation>%1%2 — Granota</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="395" />
+            <source>Unsaved changes</source>
+            <translation>Unsaved changes</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="396" />
+            <source>The document has unsaved changes. Save them?</source>
+            <translation>The document has unsaved changes. Save them?</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="424" />
+            <source>Cannot open “%1”: %2</source>
+            <translation>Cannot open “%1”: %2</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="428" />
+            <source>“%1” is too large for a Granota document.</source>
+            <translation>“%1” is too large for a Granota document.</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="450" />
+            <source>Cannot write “%1”.</source>
+            <translation>Cannot write “%1”.</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="465" />
+            <location filename="../ui/main_window.cpp" line="471" />
+            <location filename="../ui/main_window.cpp" line="519" />
+            <source>Open document</source>
+            <translation>Open document</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="466" />
+            <source>Granota documents (*.granota);;All files (*)</source>
+            <translation>Granota documents (*.granota);;All files (*)</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="478" />
+            <location filename="../ui/main_window.cpp" line="487" />
+            <source>Save document</source>
+            <translation>Save document</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="479" />
+            <source>Granota documents (*.granota)</source>
+            <translation>Granota documents (*.granota)</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="490" />
+            <source>Saved %1</source>
+            <translation>Saved %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="547" />
+            <location filename="../ui/main_window.cpp" line="561" />
+            <source>Recover unsaved work</source>
+            <translation>Recover unsaved work</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="548" />
+            <source>Granota was closed without saving the last changes. Recover them?</source>
+            <translation>Granota was closed without saving the last changes. Recover them?</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="559" />
+            <source>Recovered the unsaved work of the last session.</source>
+            <translation>Recovered the unsaved work of the last session.</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="561" />
+            <source>The autosave could not be read.</source>
+            <translation>The autosave could not be read.</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="581" />
+            <source>No tab is shown.</source>
+            <translation>No tab is shown.</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="582" />
+            <source>Granota — %1</source>
+            <translation>Granota — %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="593" />
+            <source>Unknown export format “%1”.</source>
+            <translation>Unknown export format “%1”.</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="606" />
+            <source>Export PNG</source>
+            <translation>Export PNG</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="607" />
+            <source>Resolution (dots per inch; 300 for print):</source>
+            <translation>Resolution (dots per inch; 300 for print):</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="615" />
+            <location filename="../ui/main_window.cpp" line="623" />
+            <source>Export</source>
+            <translation>Export</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="616" />
+            <source>%1 files (*.%2)</source>
+            <translation>%1 files (*.%2)</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="621" />
+            <source>Exported %1</source>
+            <translation>Exported %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="630" />
+            <location filename="../ui/main_window.cpp" line="641" />
+            <source>Frog animation</source>
+            <translation>Frog animation</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="630" />
+            <source>Number of frames (60 per second):</source>
+            <translation>Number of frames (60 per second):</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="634" />
+            <source>Folder for the frames</source>
+            <translation>Folder for the frames</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/main_window.cpp" line="639" />
+            <source>Wrote %n frames.</source>
+            <translation>
+                <numerusform>Wrote %n frame.</numerusform>
+                <numerusform>Wrote %n frames.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="700" />
+            <source>User guide</source>
+            <translation>User guide</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="702" />
+            <source>&lt;h3&gt;Granota in five tabs&lt;/h3&gt;&lt;p&gt;&lt;b&gt;De Casteljau&lt;/b&gt; (§2.1.1): drag the control points, move t, watch every level.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bernstein&lt;/b&gt; (§2.1.2): the basis polynomials and their weights at the same t.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Fitting&lt;/b&gt; (§2.1.3): a Bézier curve through data by least squares.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Catmull-Rom&lt;/b&gt; (§2.2): curves through the points, one per tension τ.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Frog&lt;/b&gt; (chapter 4): the soft body, stage by stage.&lt;/p&gt;&lt;p&gt;Double-click to add a point, Delete to remove it, arrows to nudge it, Ctrl+Z to undo. The Examples menu loads every worked example of chapter 2. F11 switches presentation mode.&lt;/p&gt;</source>
+            <translation>&lt;h3&gt;Granota in five tabs&lt;/h3&gt;&lt;p&gt;&lt;b&gt;De Casteljau&lt;/b&gt; (§2.1.1): drag the control points, move t, watch every level.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bernstein&lt;/b&gt; (§2.1.2): the basis polynomials and their weights at the same t.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Fitting&lt;/b&gt; (§2.1.3): a Bézier curve through data by least squares.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Catmull-Rom&lt;/b&gt; (§2.2): curves through the points, one per tension τ.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Frog&lt;/b&gt; (chapter 4): the soft body, stage by stage.&lt;/p&gt;&lt;p&gt;Double-click to add a point, Delete to remove it, arrows to nudge it, Ctrl+Z to undo. The Examples menu loads every worked example of chapter 2. F11 switches presentation mode.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="716" />
+            <source>About Granota</source>
+            <translation>About Granota</translation>
+        </message>
+        <message>
+            <location filename="../ui/main_window.cpp" line="717" />
+            <source>&lt;h3&gt;Granota&lt;/h3&gt;&lt;p&gt;Splines and soft bodies for the classroom, from the thesis “Animació procedimental per a cossos tous”.&lt;/p&gt;</source>
+            <translation>&lt;h3&gt;Granota&lt;/h3&gt;&lt;p&gt;Splines and soft bodies for the classroom, from the thesis “Animació procedimental per a cossos tous”.&lt;/p&gt;</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::PointEditor</name>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="81" />
+            <source>Refused: a point is not a finite number.</source>
+            <translation>Refused: a point is not a finite number.</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="92" />
+            <source>Refused: a coordinate must be a finite number.</source>
+            <translation>Refused: a coordinate must be a finite number.</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="97" />
+            <location filename="../ui/point_editor.cpp" line="264" />
+            <source>Move point %1</source>
+            <translation>Move point %1</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/point_editor.cpp" line="103" />
+            <source>At most %n points here.</source>
+            <translation>
+                <numerusform>At most %n point here.</numerusform>
+                <numerusform>At most %n points here.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="111" />
+            <source>Add point</source>
+            <translation>Add point</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/point_editor.cpp" line="120" />
+            <source>At least %n points are needed here.</source>
+            <translation>
+                <numerusform>At least %n point are needed here.</numerusform>
+                <numerusform>At least %n points are needed here.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="125" />
+            <source>Delete point %1</source>
+            <translation>Delete point %1</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="213" />
+            <source>Delete %1%2</source>
+            <translation>Delete %1%2</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="215" />
+            <source>Add a point here</source>
+            <translation>Add a point here</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="218" />
+            <source>Snap to grid</source>
+            <translation>Snap to grid</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_editor.cpp" line="222" />
+            <source>Fit view</source>
+            <translation>Fit view</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::PointTable</name>
+        <message>
+            <location filename="../ui/point_table.cpp" line="51" />
+            <source>x</source>
+            <translation>x</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_table.cpp" line="51" />
+            <source>y</source>
+            <translation>y</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_table.cpp" line="52" />
+            <source>The points as numbers: type a decimal or a fraction such as 1/3.</source>
+            <translation>The points as numbers: type a decimal or a fraction such as 1/3.</translation>
+        </message>
+        <message>
+            <location filename="../ui/point_table.cpp" line="93" />
+            <source>“%1” is not a number: type a decimal (2.5) or a fraction (5/2).</source>
+            <translation>“%1” is not a number: type a decimal (2.5) or a fraction (5/2).</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::WorkPrecision</name>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="28" />
+            <source>Curve sampling: polyline against curve</source>
+            <translation>Curve sampling: polyline against curve</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="30" />
+            <source>Evaluating a Bézier curve of degree n</source>
+            <translation>Evaluating a Bézier curve of degree n</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="32" />
+            <source>Least-squares Bézier fit: normal equations, QR, SVD</source>
+            <translation>Least-squares Bézier fit: normal equations, QR, SVD</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="34" />
+            <source>Integrators: global error against run time</source>
+            <translation>Integrators: global error against run time</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="36" />
+            <source>Soft body: constraint error against substeps</source>
+            <translation>Soft body: constraint error against substeps</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="43" />
+            <source>Both errors fall like 1/N² (twice the points, a quarter of the error); adaptive subdivision puts its points where the curve bends and needs fewer for the same error.</source>
+            <translation>Both errors fall like 1/N² (twice the points, a quarter of the error); adaptive subdivision puts its points where the curve bends and needs fewer for the same error.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="46" />
+            <source>De Casteljau and the Bernstein sum stay at rounding level at every degree; Horner on the power basis loses digits as the degree grows, because its coefficients are huge alternating sums that cancel.</source>
+            <translation>De Casteljau and the Bernstein sum stay at rounding level at every degree; Horner on the power basis loses digits as the degree grows, because its coefficients are huge alternating sums that cancel.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="50" />
+            <source>The normal equations square the condition number of M: near degree 25 they have lost almost every digit and by degree 30 the curve is wrong, while QR and SVD still hold about seven digits.</source>
+            <translation>The normal equations square the condition number of M: near degree 25 they have lost almost every digit and by degree 30 the curve is wrong, while QR and SVD still hold about seven digits.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="54" />
+            <source>Halving h halves Euler's error but quarters Verlet's (order 1 against 2): at equal run time Verlet is orders of magnitude more accurate. RK4 (order 4) costs four evaluations per step and wins when high accuracy is needed.</source>
+            <translation>Halving h halves Euler's error but quarters Verlet's (order 1 against 2): at equal run time Verlet is orders of magnitude more accurate. RK4 (order 4) costs four evaluations per step and wins when high accuracy is needed.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="58" />
+            <source>XPBD's constraint error falls as the substeps grow, at a cost proportional to their number; the seed's per-step corrections leave a lasting area deficit.</source>
+            <translation>XPBD's constraint error falls as the substeps grow, at a cost proportional to their number; the seed's per-step corrections leave a lasting area deficit.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="66" />
+            <source>uniform</source>
+            <translation>uniform</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="67" />
+            <source>adaptive</source>
+            <translation>adaptive</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="68" />
+            <source>De Casteljau</source>
+            <translation>De Casteljau</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="69" />
+            <source>Bernstein sum</source>
+            <translation>Bernstein sum</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="70" />
+            <source>Horner (power basis)</source>
+            <translation>Horner (power basis)</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="71" />
+            <source>normal equations</source>
+            <translation>normal equations</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="72" />
+            <source>QR</source>
+            <translation>QR</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="73" />
+            <source>SVD</source>
+            <translation>SVD</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="74" />
+            <source>explicit Euler</source>
+            <translation>explicit Euler</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="75" />
+            <source>semi-implicit Euler</source>
+            <translation>semi-implicit Euler</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="76" />
+            <source>Verlet</source>
+            <translation>Verlet</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="77" />
+            <source>RK4</source>
+            <translation>RK4</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="78" />
+            <source>XPBD area</source>
+            <translation>XPBD area</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="79" />
+            <source>XPBD edge lengths</source>
+            <translation>XPBD edge lengths</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="80" />
+            <source>seed area (Annex II)</source>
+            <translation>seed area (Annex II)</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="91" />
+            <source>points</source>
+            <translation>points</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="93" />
+            <source>degree</source>
+            <translation>degree</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="95" />
+            <source>step h</source>
+            <translation>step h</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="97" />
+            <source>substeps</source>
+            <translation>substeps</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="104" />
+            <source>max distance between curve and polyline</source>
+            <translation>max distance between curve and polyline</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="106" />
+            <source>max |c(t) − exact| / max |Pᵢ|</source>
+            <translation>max |c(t) − exact| / max |Pᵢ|</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="108" />
+            <source>max |Pⱼ − Pⱼ(true)| / max |Pⱼ(true)|</source>
+            <translation>max |Pⱼ − Pⱼ(true)| / max |Pⱼ(true)|</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="110" />
+            <source>|x(T) − exact| at T = 10</source>
+            <translation>|x(T) − exact| at T = 10</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="112" />
+            <source>RMS relative constraint violation</source>
+            <translation>RMS relative constraint violation</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="132" />
+            <source>run time per call (s)</source>
+            <translation>run time per call (s)</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::WorkPrecisionPanel</name>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="120" />
+            <source>Cancelled. Press Measure to start again.</source>
+            <translation>Cancelled. Press Measure to start again.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="121" />
+            <source>Press Measure: each method runs over a range of its setting, and the plot shows its error against its run time (lower left is better).</source>
+            <translation>Press Measure: each method runs over a range of its setting, and the plot shows its error against its run time (lower left is better).</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="142" />
+            <source>Which numerical method to measure (SPEC §2: error against run time).</source>
+            <translation>Which numerical method to measure (SPEC §2: error against run time).</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="143" />
+            <source>Measure</source>
+            <translation>Measure</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="144" />
+            <source>Run every method over a range of its setting and plot error against run time.</source>
+            <translation>Run every method over a range of its setting and plot error against run time.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="145" />
+            <source>Cancel</source>
+            <translation>Cancel</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="146" />
+            <source>Stop the measurement.</source>
+            <translation>Stop the measurement.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="147" />
+            <source>Measuring…</source>
+            <translation>Measuring…</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_panel.cpp" line="148" />
+            <source>Work-precision plot: each marker is one setting of a method; lower is more accurate, left is faster.</source>
+            <translation>Work-precision plot: each marker is one setting of a method; lower is more accurate, left is faster.</translation>
+        </message>
+    </context>
 </TS>

@@ -10,7 +10,6 @@ namespace granota::ui {
 
 namespace {
 constexpr int kVersion = 1;
-QString tr(const char* text) { return QCoreApplication::translate("granota::ui::Document", text); }
 } // namespace
 
 QByteArray serializeDocument(const QVector<TabPage*>& tabs, const QString& currentTab)
@@ -31,19 +30,19 @@ bool loadDocument(const QByteArray& bytes, const QVector<TabPage*>& tabs, QStrin
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
     if (doc.isNull() || !doc.isObject()) {
-        *error = tr("This is not a Granota document: %1 (at byte %2).")
+        *error = QCoreApplication::translate("granota::ui::Document", "This is not a Granota document: %1 (at byte %2).")
                      .arg(parseError.errorString())
                      .arg(parseError.offset);
         return false;
     }
     const QJsonObject root = doc.object();
     if (root.value(QStringLiteral("format")).toString() != QLatin1String("granota")) {
-        *error = tr("This is not a Granota document (no \"format\": \"granota\").");
+        *error = QCoreApplication::translate("granota::ui::Document", "This is not a Granota document (no \"format\": \"granota\").");
         return false;
     }
     const int version = root.value(QStringLiteral("version")).toInt(-1);
     if (version < 1 || version > kVersion) {
-        *error = tr("This document has version %1; this Granota reads version %2.").arg(version).arg(kVersion);
+        *error = QCoreApplication::translate("granota::ui::Document", "This document has version %1; this Granota reads version %2.").arg(version).arg(kVersion);
         return false;
     }
     const QJsonObject parts = root.value(QStringLiteral("tabs")).toObject();
@@ -59,7 +58,7 @@ bool loadDocument(const QByteArray& bytes, const QVector<TabPage*>& tabs, QStrin
                 QString ignored;
                 tabs[j]->loadState(before[j], &ignored);
             }
-            *error = tr("Tab “%1”: %2").arg(tabs[i]->title(), tabError);
+            *error = QCoreApplication::translate("granota::ui::Document", "Tab “%1”: %2").arg(tabs[i]->title(), tabError);
             return false;
         }
     }

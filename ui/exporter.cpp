@@ -19,9 +19,8 @@ namespace granota::ui {
 namespace {
 constexpr double kScreenDpi = 96.0;
 
-QString tr(const char* text) { return QCoreApplication::translate("granota::ui::Exporter", text); }
 
-QString cannotWrite(const QString& file) { return tr("Cannot write “%1”.").arg(file); }
+QString cannotWrite(const QString& file) { return QCoreApplication::translate("granota::ui::Exporter", "Cannot write “%1”.").arg(file); }
 } // namespace
 
 QSize pngPixelSize(const QSizeF& logical, int dpi)
@@ -34,14 +33,14 @@ QSize pngPixelSize(const QSizeF& logical, int dpi)
 QString exportPng(Drawable& view, const QString& file, int dpi)
 {
     if (dpi < 24 || dpi > 1200)
-        return tr("The resolution must be between 24 and 1200 DPI.");
+        return QCoreApplication::translate("granota::ui::Exporter", "The resolution must be between 24 and 1200 DPI.");
     const QSizeF logical = view.exportSize();
     const QSize pixels = pngPixelSize(logical, dpi);
     if (static_cast<qint64>(pixels.width()) * pixels.height() > 400LL * 1000 * 1000)
-        return tr("The image would be too large: choose a lower resolution.");
+        return QCoreApplication::translate("granota::ui::Exporter", "The image would be too large: choose a lower resolution.");
     QImage image(pixels, QImage::Format_ARGB32_Premultiplied);
     if (image.isNull())
-        return tr("Not enough memory for an image of %1×%2 pixels.").arg(pixels.width()).arg(pixels.height());
+        return QCoreApplication::translate("granota::ui::Exporter", "Not enough memory for an image of %1×%2 pixels.").arg(pixels.width()).arg(pixels.height());
     image.fill(Qt::white);
     const int dotsPerMeter = static_cast<int>(std::lround(dpi / 0.0254));
     image.setDotsPerMeterX(dotsPerMeter);
@@ -62,7 +61,7 @@ QString exportSvg(Drawable& view, const QString& file, const QString& title)
     svg.setSize(logical.toSize());
     svg.setViewBox(QRectF(QPointF(0, 0), logical));
     svg.setTitle(title);
-    svg.setDescription(tr("Made with Granota"));
+    svg.setDescription(QCoreApplication::translate("granota::ui::Exporter", "Made with Granota"));
     svg.setResolution(static_cast<int>(kScreenDpi));
     {
         QFile probe(file);

@@ -16,6 +16,11 @@
 
 namespace granota::ui {
 
+namespace {
+/// Above this many points, coincident labels are not looked for (the check is quadratic).
+constexpr std::size_t kStackLabelsUpTo = 300;
+} // namespace
+
 PointEditor::PointEditor(CurveCanvas* canvas, QUndoStack* undoStack, QObject* parent)
     : QObject(parent), m_canvas(canvas), m_undo(undoStack), m_color(CanvasStyle().handle)
 {
@@ -46,8 +51,15 @@ PointEditor::PointEditor(CurveCanvas* canvas, QUndoStack* undoStack, QObject* pa
             p.setBrush(sel ? style.handleSelected : m_color);
             p.drawEllipse(s, sel ? r * 1.3 : r, sel ? r * 1.3 : r);
             if (!m_prefix.isEmpty() && stride <= 1) {
+                // Coincident points (Ex 2.3 closes its curve: P4 = P0) stack their labels.
+                int below = 0;
+                for (std::size_t j = 0; j < i && m_points.size() <= kStackLabelsUpTo; ++j) {
+                    const QPointF d = view.toScreen(m_points[j]) - s;
+                    below += d.x() * d.x() + d.y() * d.y() < r * r;
+                }
                 p.setPen(style.text);
-                p.drawText(s + QPointF(r + 3 * style.scale, -r), m_prefix + QString::number(i));
+                p.drawText(s + QPointF(r + 3 * style.scale, -r + below * p.fontMetrics().height()),
+                           m_prefix + QString::number(i));
             }
         }
     });

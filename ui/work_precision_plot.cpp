@@ -10,7 +10,6 @@
 namespace granota::ui {
 
 namespace {
-QString tr(const char* text) { return QCoreApplication::translate("granota::ui::WorkPrecision", text); }
 
 QString knobLabel(double knob)
 {
@@ -26,37 +25,37 @@ QString knobLabel(double knob)
 QString reportTitle(const WorkPrecisionReport& r)
 {
     if (r.name == "curve-sampling")
-        return tr("Curve sampling: polyline against curve");
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "Curve sampling: polyline against curve");
     if (r.name == "bezier-evaluation")
-        return tr("Evaluating a Bézier curve of degree n");
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "Evaluating a Bézier curve of degree n");
     if (r.name == "least-squares")
-        return tr("Least-squares Bézier fit: normal equations, QR, SVD");
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "Least-squares Bézier fit: normal equations, QR, SVD");
     if (r.name == "integrators")
-        return tr("Integrators: global error against run time");
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "Integrators: global error against run time");
     if (r.name == "soft-body")
-        return tr("Soft body: constraint error against substeps");
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "Soft body: constraint error against substeps");
     return QString::fromStdString(r.title);
 }
 
 QString reportLesson(const WorkPrecisionReport& r)
 {
     if (r.name == "curve-sampling")
-        return tr("Both errors fall like 1/N² (twice the points, a quarter of the error); adaptive subdivision "
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "Both errors fall like 1/N² (twice the points, a quarter of the error); adaptive subdivision "
                   "puts its points where the curve bends and needs fewer for the same error.");
     if (r.name == "bezier-evaluation")
-        return tr("De Casteljau and the Bernstein sum stay at rounding level at every degree; Horner on the power "
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "De Casteljau and the Bernstein sum stay at rounding level at every degree; Horner on the power "
                   "basis loses digits as the degree grows, because its coefficients are huge alternating sums "
                   "that cancel.");
     if (r.name == "least-squares")
-        return tr("The normal equations square the condition number of M: near degree 25 they have lost almost "
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "The normal equations square the condition number of M: near degree 25 they have lost almost "
                   "every digit and by degree 30 the curve is wrong, while QR and SVD still hold about seven "
                   "digits.");
     if (r.name == "integrators")
-        return tr("Halving h halves Euler's error but quarters Verlet's (order 1 against 2): at equal run time "
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "Halving h halves Euler's error but quarters Verlet's (order 1 against 2): at equal run time "
                   "Verlet is orders of magnitude more accurate. RK4 (order 4) costs four evaluations per step "
                   "and wins when high accuracy is needed.");
     if (r.name == "soft-body")
-        return tr("XPBD's constraint error falls as the substeps grow, at a cost proportional to their number; "
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "XPBD's constraint error falls as the substeps grow, at a cost proportional to their number; "
                   "the seed's per-step corrections leave a lasting area deficit.");
     return QString::fromStdString(r.lesson);
 }
@@ -82,35 +81,35 @@ QString reportMethod(const std::string& m)
     };
     for (const auto& [key, text] : names)
         if (m == key)
-            return tr(text);
+            return QCoreApplication::translate("granota::ui::WorkPrecision", text);
     return QString::fromStdString(m);
 }
 
 QString reportKnob(const WorkPrecisionReport& r)
 {
     if (r.knob == "points")
-        return tr("points");
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "points");
     if (r.knob == "degree")
-        return tr("degree");
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "degree");
     if (r.knob == "step h")
-        return tr("step h");
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "step h");
     if (r.knob == "substeps")
-        return tr("substeps");
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "substeps");
     return QString::fromStdString(r.knob);
 }
 
 QString reportError(const WorkPrecisionReport& r)
 {
     if (r.name == "curve-sampling")
-        return tr("max distance between curve and polyline");
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "max distance between curve and polyline");
     if (r.name == "bezier-evaluation")
-        return tr("max |c(t) − exact| / max |Pᵢ|");
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "max |c(t) − exact| / max |Pᵢ|");
     if (r.name == "least-squares")
-        return tr("max |Pⱼ − Pⱼ(true)| / max |Pⱼ(true)|");
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "max |Pⱼ − Pⱼ(true)| / max |Pⱼ(true)|");
     if (r.name == "integrators")
-        return tr("|x(T) − exact| at T = 10");
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "|x(T) − exact| at T = 10");
     if (r.name == "soft-body")
-        return tr("RMS relative constraint violation");
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "RMS relative constraint violation");
     return QString::fromStdString(r.error);
 }
 
@@ -130,7 +129,7 @@ void plotWorkPrecision(QCustomPlot* plot, const WorkPrecisionReport& report, dou
         axis->setLabelFont(f);
         axis->setTickLabelFont(f);
     }
-    plot->xAxis->setLabel(tr("run time per call (s)"));
+    plot->xAxis->setLabel(QCoreApplication::translate("granota::ui::WorkPrecision", "run time per call (s)"));
     plot->yAxis->setLabel(reportError(report));
     double xmin = 1e300, xmax = 0, ymin = 1e300, ymax = 0;
     int index = 0;
