@@ -1,6 +1,7 @@
 #include "core/seed_body.h"
 
 #include "core/point_in_polygon.h"
+#include "core/seed_lanes.h"
 
 #include <algorithm>
 #include <limits>
@@ -79,13 +80,14 @@ SeedBody<R>::SeedBody(const FrogParams& params, SeedComponents components)
 {
     const auto n1 = std::size_t(m_n) + 1;
     m_vert.resize(n1);
-    m_molls.assign(n1, R(0));
     m_estruc.assign(n1, R(0));
-    m_corr.resize(n1);
-    m_puntA.resize(n1);
-    m_puntB.resize(n1);
     m_applied.assign(n1, Vec(R(0), R(0)));
-    m_num.resize(n1);
+    // Each array holds the N + 1 vertices rounded up to whole packs of lanes, plus one more
+    // pack: the edge loops read vertex i + 1 and write punt_b[i + 1] for a whole pack. The
+    // spare lanes hold zeros, compute garbage and are never read back.
+    const auto lanesPerPack = std::size_t(kSeedLanes);
+    m_stride = (n1 + lanesPerPack - 1) / lanesPerPack * lanesPerPack + lanesPerPack;
+    m_lanes.assign(m_stride * LaneArrayCount, R(0));
 }
 
 template <class R> Expected<SeedBody<R>> SeedBody<R>::create(const FrogParams& params, SeedComponents components)
@@ -161,9 +163,8 @@ template <class R> void SeedBody<R>::initialise(const Vec& centre, const Vec& vI
 
 template <class R> void SeedBody<R>::finishInitialise()
 {
-    // The rest of Poligon.inicialitza: springs, the frame, the target area.
-    for (int i = 0; i < m_n; ++i)
-        m_molls[std::size_t(i)] = m_springLength;
+    // The rest of Poligon.inicialitza: springs (molls[i] = the spring length for every
+    // edge, kept as m_springLength), the frame, the target area.
     if (m_components.bounds) {
         // "Comprovem que tots els punts estiguen dins la pantalla".
         for (auto& v : m_vert) {
@@ -172,8 +173,18 @@ template <class R> void SeedBody<R>::finishInitialise()
         }
     }
     m_areal = R(m_params.targetArea);
-    for (auto& c : m_applied)
-        c = Vec(R(0), R(0));
+    std::fill(lanes(AppliedX), lanes(AppliedX) + m_stride, R(0));
+    std::fill(lanes(AppliedY), lanes(AppliedY) + m_stride, R(0));
+}
+
+template <class R> const std::vector<typename SeedBody<R>::Vec>& SeedBody<R>::corrections() const
+{
+    // Gathered only when asked (the readouts), not in every step.
+    const R* ax = m_lanes.data() + std::size_t(AppliedX) * m_stride;
+    const R* ay = m_lanes.data() + std::size_t(AppliedY) * m_stride;
+    for (std::size_t i = 0; i < m_applied.size(); ++i)
+        m_applied[i] = Vec(ax[i], ay[i]);
+    return m_applied;
 }
 
 template <class R> R SeedBody<R>::area() const
@@ -193,48 +204,89 @@ template <class R> R SeedBody<R>::area() const
 
 template <class R> void SeedBody<R>::step()
 {
-    // Annex II, Poligon.actualitza, as SeedFrog.java runs it.
+    // Annex II, Poligon.actualitza, as SeedFrog.java runs it. The same operations in the
+    // same order on every vertex, four vertices at a time (core/seed_lanes.h); what the
+    // seed does several times over is still done as often (the five passes change the
+    // rounding), but nothing is allocated and every length is computed once.
+    using L = Lanes<R>;
     const int N = m_n;
-    const auto n1 = std::size_t(N) + 1;
-    const Vec g = m_components.gravity ? m_gravity : Vec(R(0), R(0));
-    const Vec zero(R(0), R(0));
+    const int n1 = N + 1;
+    R* const x = lanes(X);
+    R* const y = lanes(Y);
+    R* const px = lanes(PrevX);
+    R* const py = lanes(PrevY);
+    R* const cx = lanes(CorrX);
+    R* const cy = lanes(CorrY);
+    R* const ax = lanes(PuntAX);
+    R* const ay = lanes(PuntAY);
+    R* const bx = lanes(PuntBX);
+    R* const by = lanes(PuntBY);
+    R* const num = lanes(Num);
     auto& v = m_vert;
+    // Four vertices of m_vert as lanes, built in registers (lanes past N repeat vertex N).
+    const auto gather = [&v, n1](int i, auto field) {
+        const auto at = [&](int k) { return field(v[std::size_t(std::min(i + k, n1 - 1))]); };
+        return L::set(at(0), at(1), at(2), at(3));
+    };
+    const L zero = L::splat(R(0)), half = L::splat(R(0.5f)), vmax = L::splat(m_velmax);
 
-    // §4.6: Verlet first, for every vertex including the copy N.
-    for (std::size_t i = 0; i < n1; ++i) {
-        v[i].verlet(m_friction, g, m_velmax);
-        m_corr[i] = zero;
-        m_num[i] = 0;
+    // §4.6: Verlet first, for every vertex including the copy N (SeedVertex::verlet):
+    // x' = x + f∘(x − x_prev) + g, clamped to x ± velmax.
+    {
+        const Vec g = m_components.gravity ? m_gravity : Vec(R(0), R(0));
+        const L fx = L::splat(m_friction.x), fy = L::splat(m_friction.y), gx = L::splat(g.x), gy = L::splat(g.y);
+        for (int i = 0; i < n1; i += kSeedLanes) {
+            const L x0 = gather(i, [](const SeedVertex<R>& a) { return a.pos.x; });
+            const L y0 = gather(i, [](const SeedVertex<R>& a) { return a.pos.y; });
+            const L nx = x0 + fx * (x0 - gather(i, [](const SeedVertex<R>& a) { return a.prev.x; })) + gx;
+            const L ny = y0 + fy * (y0 - gather(i, [](const SeedVertex<R>& a) { return a.prev.y; })) + gy;
+            x0.store(px + i);
+            y0.store(py + i);
+            clampLanes(nx, x0 - vmax, x0 + vmax).store(x + i);
+            clampLanes(ny, y0 - vmax, y0 + vmax).store(y + i);
+            zero.store(cx + i);
+            zero.store(cy + i);
+            zero.store(num + i);
+        }
     }
 
     // §4.4: springs. Each edge i → i+1 proposes targets at distance molls[i]/2 either
     // side of its midpoint: punt_a[i] for vertex i and punt_b[i+1] for vertex i+1.
     if (m_components.springs) {
-        for (int i = 0; i < N; ++i) {
-            const Vec& p = v[std::size_t(i)].pos;
-            const Vec& q = v[std::size_t(i) + 1].pos;
-            const Vec mig(R((p.x + q.x) / R(2)), R((p.y + q.y) / R(2)));
-            Vec d(R(p.x - q.x), R(p.y - q.y));
+        // molls[i]·0.5f, the same for every edge.
+        const L halfSpring = L::splat(R(m_springLength * R(0.5f)));
+        for (int i = 0; i < N; i += kSeedLanes) {
+            const L pxl = L::load(x + i), pyl = L::load(y + i), qx = L::load(x + i + 1), qy = L::load(y + i + 1);
+            // (p + q)/2: halving is exact, so ·0.5 gives the very same bits as /2.
+            const L migx = (pxl + qx) * half, migy = (pyl + qy) * half;
+            L dx = pxl - qx, dy = pyl - qy;
             // A zero-length edge: PVector.normalize leaves d = 0 and both targets are the
             // midpoint — finite, so kept as in the seed.
-            seedmath::normalize(d);
-            const R half = R(m_molls[std::size_t(i)] * R(0.5f));
-            m_puntA[std::size_t(i)] = Vec(R(mig.x + half * d.x), R(mig.y + half * d.y));
-            m_puntB[std::size_t(i) + 1] = Vec(R(mig.x - half * d.x), R(mig.y - half * d.y));
+            normalizeLanes(dx, dy, sqrt(dx * dx + dy * dy));
+            (migx + halfSpring * dx).store(ax + i);
+            (migy + halfSpring * dy).store(ay + i);
+            (migx - halfSpring * dx).store(bx + i + 1);
+            (migy - halfSpring * dy).store(by + i + 1);
         }
-        m_puntA[std::size_t(N)] = m_puntA[0];
-        m_puntB[0] = m_puntB[std::size_t(N)];
+        ax[N] = ax[0], ay[N] = ay[0];
+        bx[0] = bx[N], by[0] = by[N];
         // "Apliquem les correccions 5 voltes": the positions do not change between the
-        // passes, so each pass adds the same two corrections again. `punt_a[i] !=
-        // vert[i].posicio` compares Java references and is always true: both are added.
-        for (std::size_t i = 0; i < n1; ++i) {
-            const Vec ca(R(m_puntA[i].x - v[i].pos.x), R(m_puntA[i].y - v[i].pos.y));
-            const Vec cb(R(m_puntB[i].x - v[i].pos.x), R(m_puntB[i].y - v[i].pos.y));
+        // passes, so each pass adds the same two corrections again (rounded each time, so
+        // the five passes stay five). `punt_a[i] != vert[i].posicio` compares Java
+        // references and is always true: both are added.
+        const L ten = L::splat(R(10));
+        for (int i = 0; i < n1; i += kSeedLanes) {
+            const L x0 = L::load(x + i), y0 = L::load(y + i);
+            const L cax = L::load(ax + i) - x0, cay = L::load(ay + i) - y0;
+            const L cbx = L::load(bx + i) - x0, cby = L::load(by + i) - y0;
+            L sx = zero, sy = zero;
             for (int j = 0; j < 5; ++j) {
-                m_corr[i] = Vec(R(m_corr[i].x + ca.x), R(m_corr[i].y + ca.y));
-                m_corr[i] = Vec(R(m_corr[i].x + cb.x), R(m_corr[i].y + cb.y));
-                m_num[i] += 2;
+                sx = sx + cax, sy = sy + cay;
+                sx = sx + cbx, sy = sy + cby;
             }
+            sx.store(cx + i);
+            sy.store(cy + i);
+            ten.store(num + i);
         }
     }
 
@@ -244,51 +296,68 @@ template <class R> void SeedBody<R>::step()
     const bool held = m_components.grab && m_grabbed;
     if (held) {
         for (int a : m_anchors) {
-            const auto i = std::size_t(a);
-            Vec d(R(v[i].pos.x - m_mouse.x), R(v[i].pos.y - m_mouse.y));
+            Vec d(R(x[a] - m_mouse.x), R(y[a] - m_mouse.y));
             seedmath::normalize(d); // mouse on the vertex: d = 0, target = the mouse (finite)
-            const Vec c(R(m_mouse.x + m_estruc[i] * d.x), R(m_mouse.y + m_estruc[i] * d.y));
-            const Vec correc(R(c.x - v[i].pos.x), R(c.y - v[i].pos.y));
-            m_corr[i] = Vec(R(m_corr[i].x + correc.x), R(m_corr[i].y + correc.y));
-            m_num[i] += 1;
+            const R e = m_estruc[std::size_t(a)];
+            const Vec c(R(m_mouse.x + e * d.x), R(m_mouse.y + e * d.y));
+            cx[a] = R(cx[a] + R(c.x - x[a]));
+            cy[a] = R(cy[a] + R(c.y - y[a]));
+            num[a] += 1;
         }
+    }
+
+    // Annex II, calculaarea (§4.5): the trapezoids L·W of the edges side by side, then
+    // summed one after the other in the seed's order (a sum's rounding depends on it).
+    {
+        R* const lw = ax; // punt_a is no longer needed
+        for (int i = 0; i < N; i += kSeedLanes) {
+            const L l = L::load(x + i) - L::load(x + i + 1);
+            const L w = (L::load(y + i) + L::load(y + i + 1)) * half; // exact halving, as above
+            (l * w).store(lw + i);
+        }
+        R area = 0;
+        for (int i = 0; i < N; ++i)
+            area = area + lw[i];
+        m_aloc = area;
     }
 
     // §4.5: area. F = C·(A_target − A)/N pushes every vertex along the normal of the chord
     // between its neighbours, five times. SeedFrog.java (and the reference trace) applies
     // the correction of vertices 0 and N inside the five passes.
-    m_aloc = area();
-    if (m_components.area) {
-        if (m_areal != m_aloc) {
-            R F = m_areaFactor * (m_areal - m_aloc) / R(N);
-            // Guard: with an accepted but absurd factor (C and the area both near 1e15) the
-            // product overflows R, and ∞ times a zero normal component would be NaN; any F
-            // beyond this bound is cut by the ±velmax clamp below anyway.
-            const R fmax = std::numeric_limits<R>::max() / R(64);
-            if (!(F <= fmax)) F = fmax;
-            if (!(F >= -fmax)) F = -fmax;
-            for (int i = 1; i < N; ++i) {
-                const Vec& next = v[std::size_t(i) + 1].pos;
-                const Vec& before = v[std::size_t(i) - 1].pos;
-                Vec p(R(next.y - before.y), R(-next.x + before.x));
-                seedmath::normalize(p); // coincident neighbours: p = 0, no push (finite)
-                const Vec fp(R(F * p.x), R(F * p.y));
-                for (int j = 0; j < 5; ++j)
-                    m_corr[std::size_t(i)] = Vec(R(m_corr[std::size_t(i)].x + fp.x), R(m_corr[std::size_t(i)].y + fp.y));
-                m_num[std::size_t(i)] += 5;
-            }
-            const Vec& next = v[1].pos;
-            const Vec& before = v[std::size_t(N) - 1].pos;
-            Vec p(R(next.y - before.y), R(-next.x + before.x));
-            seedmath::normalize(p);
-            const Vec fp(R(F * p.x), R(F * p.y));
-            for (int j = 0; j < 5; ++j) {
-                m_corr[0] = Vec(R(m_corr[0].x + fp.x), R(m_corr[0].y + fp.y));
-                m_corr[std::size_t(N)] = Vec(R(m_corr[std::size_t(N)].x + fp.x), R(m_corr[std::size_t(N)].y + fp.y));
-            }
-            m_num[0] += 5;
-            m_num[std::size_t(N)] += 5;
+    if (m_components.area && m_areal != m_aloc) {
+        R F = m_areaFactor * (m_areal - m_aloc) / R(N);
+        // Guard: with an accepted but absurd factor (C and the area both near 1e15) the
+        // product overflows R, and ∞ times a zero normal component would be NaN; any F
+        // beyond this bound is cut by the ±velmax clamp below anyway.
+        const R fmax = std::numeric_limits<R>::max() / R(64);
+        if (!(F <= fmax)) F = fmax;
+        if (!(F >= -fmax)) F = -fmax;
+        const L f = L::splat(F), five = L::splat(R(5)), last = L::splat(R(N));
+        const R laneIndex[kSeedLanes] = {0, 1, 2, 3};
+        for (int i = 1; i < N; i += kSeedLanes) {
+            // The normal (next.y − before.y, −next.x + before.x); −a + b is b − a exactly.
+            L nx = L::load(y + i + 1) - L::load(y + i - 1);
+            L ny = L::load(x + i - 1) - L::load(x + i + 1);
+            normalizeLanes(nx, ny, sqrt(nx * nx + ny * ny)); // coincident neighbours: no push
+            const L fpx = f * nx, fpy = f * ny;
+            L sx = L::load(cx + i), sy = L::load(cy + i);
+            for (int j = 0; j < 5; ++j)
+                sx = sx + fpx, sy = sy + fpy;
+            // Only vertices 1 … N−1 here: the lanes past N−1 keep what they had.
+            const auto inner = lt(L::load(laneIndex) + L::splat(R(i)), last);
+            select(inner, sx, L::load(cx + i)).store(cx + i);
+            select(inner, sy, L::load(cy + i)).store(cy + i);
+            select(inner, L::load(num + i) + five, L::load(num + i)).store(num + i);
         }
+        Vec p(R(y[1] - y[N - 1]), R(-x[1] + x[N - 1]));
+        seedmath::normalize(p);
+        const Vec fp(R(F * p.x), R(F * p.y));
+        for (int j = 0; j < 5; ++j) {
+            cx[0] = R(cx[0] + fp.x), cy[0] = R(cy[0] + fp.y);
+            cx[N] = R(cx[N] + fp.x), cy[N] = R(cy[N] + fp.y);
+        }
+        num[0] += 5;
+        num[N] += 5;
     }
 
     // Annex II, "Corregim la posicio de les ancores si estan massa lluny": while held,
@@ -298,40 +367,53 @@ template <class R> void SeedBody<R>::step()
     if (held && m_components.grabMode == GrabMode::Anchors) {
         const R mx = m_mouse.x, my = m_mouse.y;
         for (int a : m_anchors) {
-            const auto i = std::size_t(a);
-            Vec& c = m_corr[i];
-            const Vec& p = v[i].pos;
+            R& ccx = cx[a];
+            R& ccy = cy[a];
+            const R pxa = x[a], pya = y[a];
             if (a > 0 && a < N) {
-                if (p.x < R(mx - R(10))) c = Vec(R(c.x + R(mx - R(10)) - p.x), c.y);
-                else if (p.x > R(mx + R(10))) c = Vec(R(c.x + R(mx + R(10)) - p.x), c.y);
-                if (p.y < 0) c = Vec(c.x, R(c.y - p.y));
-                else if (p.y > R(my - R(1))) c = Vec(c.x, R(c.y + R(my - R(1)) - p.y));
+                if (pxa < R(mx - R(10))) ccx = R(ccx + R(mx - R(10)) - pxa);
+                else if (pxa > R(mx + R(10))) ccx = R(ccx + R(mx + R(10)) - pxa);
+                if (pya < 0) ccy = R(ccy - pya);
+                else if (pya > R(my - R(1))) ccy = R(ccy + R(my - R(1)) - pya);
             } else {
-                if (p.x < 0) c = Vec(R(c.x - p.x), c.y);
-                else if (p.x > m_xmax) c = Vec(R(c.x + m_xmax - p.x), c.y);
-                if (p.y < 0) c = Vec(c.x, R(c.y - p.y));
-                else if (p.y > R(my - R(10))) c = Vec(c.x, R(c.y + R(my - R(10)) - p.y));
+                if (pxa < 0) ccx = R(ccx - pxa);
+                else if (pxa > m_xmax) ccx = R(ccx + m_xmax - pxa);
+                if (pya < 0) ccy = R(ccy - pya);
+                else if (pya > R(my - R(10))) ccy = R(ccy + R(my - R(10)) - pya);
             }
         }
     }
 
-    // The average of the corrections of each vertex, clamped per axis to ±velmax.
-    for (std::size_t i = 0; i < n1; ++i) {
-        if (m_num[i] >= 1) {
-            Vec m(R(m_corr[i].x / R(m_num[i])), R(m_corr[i].y / R(m_num[i])));
-            if (m.x < -m_velmax) m.x = -m_velmax; else if (m.x > m_velmax) m.x = m_velmax;
-            if (m.y < -m_velmax) m.y = -m_velmax; else if (m.y > m_velmax) m.y = m_velmax;
-            v[i].pos = Vec(R(v[i].pos.x + m.x), R(v[i].pos.y + m.y));
-            m_applied[i] = m;
-        } else {
-            m_applied[i] = zero;
+    // The average of the corrections of each vertex, clamped per axis to ±velmax, then
+    // §4.2's frame: only the current position is clamped (fita, not fitaant).
+    {
+        R* const mxs = lanes(AppliedX);
+        R* const mys = lanes(AppliedY);
+        const L one = L::splat(R(1)), nvmax = L::splat(R(-m_velmax));
+        const bool bounds = m_components.bounds;
+        const L xmax = L::splat(m_xmax), ymax = L::splat(m_ymax);
+        for (int i = 0; i < n1; i += kSeedLanes) {
+            const L n = L::load(num + i);
+            const auto corrected = ge(n, one); // no correction: 0/0 in the lane, dropped
+            const L mx = select(corrected, clampLanes(L::load(cx + i) / n, nvmax, vmax), zero);
+            const L my = select(corrected, clampLanes(L::load(cy + i) / n, nvmax, vmax), zero);
+            L x1 = select(corrected, L::load(x + i) + mx, L::load(x + i));
+            L y1 = select(corrected, L::load(y + i) + my, L::load(y + i));
+            if (bounds) {
+                x1 = clampLanes(x1, zero, xmax);
+                y1 = clampLanes(y1, zero, ymax);
+            }
+            x1.store(x + i);
+            y1.store(y + i);
+            mx.store(mxs + i);
+            my.store(mys + i);
         }
     }
-
-    // §4.2: the frame. Only the current position is clamped (fita, not fitaant).
-    if (m_components.bounds)
-        for (auto& vert : v)
-            vert.fita(R(0), m_xmax, R(0), m_ymax);
+    for (int i = 0; i < n1; ++i) {
+        SeedVertex<R>& vi = v[std::size_t(i)];
+        vi.pos = Vec(x[i], y[i]);
+        vi.prev = Vec(px[i], py[i]);
+    }
 }
 
 template <class R> void SeedBody<R>::holdAt(const Vec& clau)

@@ -156,7 +156,7 @@ public:
     const std::vector<SeedVertex<R>>& seedVertices() const { return m_vert; }
     /// The correction applied to each of the N + 1 vertices in the last step (averaged and
     /// clamped to ±velmax per axis); zero where none was applied.
-    const std::vector<Vec>& corrections() const { return m_applied; }
+    const std::vector<Vec>& corrections() const;
     /// Annex II, calculaarea: the trapezoid rule of §4.5 on the current vertices, in R.
     R area() const;
     /// The area Aloc measured during the last step (before its corrections).
@@ -182,15 +182,20 @@ private:
     R m_xmax = 0, m_ymax = 0; // width − 1, height − 1
     R m_areal = 0, m_aloc = 0;
     std::vector<SeedVertex<R>> m_vert; // N + 1
-    std::vector<R> m_molls;            // N + 1, the last unused as in the seed
     std::vector<R> m_estruc;           // N + 1
     std::vector<Point> m_shape;        // rest shape around the centre; empty: the regular N-gon
     std::vector<int> m_anchors;        // the vertices held by the current grab
     bool m_grabbed = false;
     Vec m_mouse;
-    // Scratch of one step, kept to avoid allocating every frame.
-    std::vector<Vec> m_corr, m_puntA, m_puntB, m_applied;
-    std::vector<int> m_num;
+    // The step works on the vertices "structure of arrays" (all x, then all y, …) so that
+    // four vertices go through each operation at once (core/seed_lanes.h). The arrays live
+    // in one buffer, sized once: a step allocates nothing.
+    enum LaneArray { X, Y, PrevX, PrevY, CorrX, CorrY, PuntAX, PuntAY, PuntBX, PuntBY, Num, AppliedX, AppliedY,
+                     LaneArrayCount };
+    R* lanes(LaneArray a) { return m_lanes.data() + std::size_t(a) * m_stride; }
+    std::vector<R> m_lanes;
+    std::size_t m_stride = 0;
+    mutable std::vector<Vec> m_applied; // corrections(), filled from AppliedX/Y when asked
 };
 
 extern template class SeedBody<float>;

@@ -1,5 +1,6 @@
 #include "core/seed_frog.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace granota {
@@ -70,10 +71,17 @@ template <class R> void SeedFrog<R>::step()
     if (m_legs.empty())
         return;
     computeShoulders();
-    for (int i : {seedleg::FrontRight, seedleg::BackRight, seedleg::FrontLeft, seedleg::BackLeft}) {
+    // Annex II steps the legs one after the other (dd, dr, ed, er); they do not act on
+    // each other, so all four go at once, one per SIMD lane (SeedLeg::stepTogether).
+    SeedLeg<R>* legs[4];
+    Point shoulders[4];
+    const int count = static_cast<int>(std::min<std::size_t>(m_legs.size(), 4));
+    for (int i = 0; i < count; ++i) {
+        legs[i] = &m_legs[std::size_t(i)];
         const Vec& s = m_shoulders[std::size_t(i)];
-        m_legs[std::size_t(i)].step(Point(double(s.x), double(s.y)));
+        shoulders[i] = Point(double(s.x), double(s.y));
     }
+    SeedLeg<R>::stepTogether(legs, shoulders, count);
 }
 
 template class SeedFrog<float>;

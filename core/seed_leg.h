@@ -33,6 +33,11 @@ public:
 
     /// Annex II, Pota.actualitza(mov): the shoulder moves to `shoulder`, then one step.
     void step(const Point& shoulder);
+    /// The same for `count` (1 to 4) legs at once, side by side in SIMD lanes: legs[k]
+    /// moves its shoulder to shoulders[k] and steps. The legs do not act on each other, so
+    /// this is exactly `legs[k]->step(shoulders[k])` for each k. The legs must share their
+    /// SeedComponents (the frog's four do).
+    static void stepTogether(SeedLeg* const* legs, const Point* shoulders, int count);
 
     Vec shoulder() const { return m_muscle; }
     Vec elbow() const { return m_colze.pos; }
@@ -49,7 +54,8 @@ public:
 
 private:
     SeedLeg() = default;
-    void update(const Vec& mov);
+    void precomputeLimits();
+    void moveShoulder(const Point& shoulder);
 
     SeedComponents m_components;
     Vec m_muscle;
@@ -60,6 +66,11 @@ private:
     R m_angmin1 = 0, m_angmax1 = 0, m_angmin2 = 0, m_angmax2 = 0;
     R m_floor = 0; // height − 1
     double m_width = 0;
+    // §4.15's clamps without acos, sin or cos in the step (precomputeLimits), for the
+    // limits shoulder max, −shoulder min, elbow max, −elbow min:
+    R m_limitRatio[4] = {};  // the largest Δy/|Δ| whose float acos exceeds the limit
+    R m_limitOffX[4] = {};   // R(sin(limit))·moll: where the clamp puts the joint, …
+    R m_limitOffY[4] = {};   // … and R(cos(limit))·moll
 };
 
 extern template class SeedLeg<float>;

@@ -1,0 +1,74 @@
+// Google Benchmark: the many-bodies scene of §5.2.2 on the `stable` solver at 10, 100 and
+// 1000 bodies (issue 5: 1000 colliding frogs in at most 16 ms per step on one core), in
+// two layouts, so that the growth with the number of bodies is visible in the counter
+// `ns_per_body_step` (flat = linear cost, the point of the broad phase):
+//  - spread: the scene's own density (withBodies grows the frame with the bodies), just
+//    after the start — the bodies fall, few touch;
+//  - pile: the frame narrowed to about √B columns, run until the bodies have piled up —
+//    every body pressed against about six others, the worst case of the narrow phase.
+//   build/bin/granota-bench --benchmark_filter=ManyBodies
+#include "core/simulation.h"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace granota;
+
+namespace {
+
+/// Steps before timing the spread layout: the bodies are under way, still apart.
+constexpr int kSpreadSettleSteps = 50;
+/// Steps before timing the pile: enough for the top row to fall onto the others and the
+/// pile to come (nearly) to rest.
+constexpr int kPileSettleSteps = 300;
+/// The scene's layout (scene_layout.cpp) puts bodies 2.2 radii apart…
+constexpr double kLayoutPitchRadii = 2.2;
+/// …and keeps about 2.1 radii from the frame's top-left corner; one more radius of room.
+constexpr double kLayoutMarginRadii = 3.0;
+
+SceneSpec spreadScene(int bodies) { return *withBodies(*loadScene("many-bodies"), bodies); }
+
+/// The same bodies in a frame about √B bodies wide and just tall enough to hold the
+/// starting grid: after a short fall they form a pile as deep as it is wide.
+SceneSpec pileScene(int bodies)
+{
+    SceneSpec s = spreadScene(bodies);
+    const double r = s.params.radius, pitch = kLayoutPitchRadii * r;
+    const int perRow = std::max(1, static_cast<int>(std::ceil(std::sqrt(double(bodies)))));
+    const int rows = (bodies + perRow - 1) / perRow;
+    s.params.width = std::round(kLayoutMarginRadii * r + perRow * pitch);
+    s.params.height = std::round(kLayoutMarginRadii * r + rows * pitch);
+    return s;
+}
+
+void run(benchmark::State& state, const SceneSpec& spec, int settle)
+{
+    const int bodies = static_cast<int>(state.range(0));
+    auto sim = std::move(Simulation::create(spec, SolverKind::Stable)).value();
+    for (int i = 0; i < settle; ++i)
+        sim->step();
+    for (auto _ : state)
+        sim->step();
+    state.SetComplexityN(bodies);
+    state.counters["bodies"] = bodies;
+    state.counters["ns_per_body_step"] = benchmark::Counter(static_cast<double>(state.iterations()) * bodies,
+                                                            benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["in_bounds"] = sim->inBounds() ? 1 : 0;
+}
+
+void BM_ManyBodiesSpread(benchmark::State& state)
+{
+    run(state, spreadScene(static_cast<int>(state.range(0))), kSpreadSettleSteps);
+}
+
+void BM_ManyBodiesPile(benchmark::State& state)
+{
+    run(state, pileScene(static_cast<int>(state.range(0))), kPileSettleSteps);
+}
+
+} // namespace
+
+BENCHMARK(BM_ManyBodiesSpread)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Complexity();
+BENCHMARK(BM_ManyBodiesPile)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Complexity();
