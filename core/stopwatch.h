@@ -5,13 +5,16 @@
 /// many repetitions and the clock's resolution does not matter. Reports compare methods
 /// measured in the same run; nothing here is a test.
 
+#include <algorithm>
 #include <chrono>
 #include <functional>
 
 namespace granota {
 
 /// Seconds per call of `work` (a callable returning a double that is accumulated, so the
-/// compiler cannot drop the work).
+/// compiler cannot drop the work). The number of calls is first raised until a batch takes
+/// `minSeconds`; then the batch is timed three times and the fastest kept — on a shared
+/// machine other programs only ever add time, so the minimum is the least disturbed.
 template <class Work> double secondsPerCall(Work&& work, double minSeconds, double* sink)
 {
     using Clock = std::chrono::steady_clock;
@@ -19,24 +22,25 @@ template <class Work> double secondsPerCall(Work&& work, double minSeconds, doub
     // function runs, so it can neither hoist a pure computation out of the loop nor drop it.
     std::function<double()> call(std::ref(work));
     std::function<double()>* volatile opaque = &call;
-    long calls = 0;
-    long batch = 1;
     double acc = 0;
-    const auto start = Clock::now();
-    double elapsed = 0;
-    for (;;) {
-        for (long i = 0; i < batch; ++i) {
+    auto timeBatch = [&](long calls) {
+        const auto start = Clock::now();
+        for (long i = 0; i < calls; ++i)
             acc += (*opaque)();
-        }
-        calls += batch;
-        elapsed = std::chrono::duration<double>(Clock::now() - start).count();
-        if (elapsed >= minSeconds)
-            break;
+        return std::chrono::duration<double>(Clock::now() - start).count();
+    };
+    long batch = 1;
+    double elapsed = timeBatch(batch);
+    while (elapsed < minSeconds && batch < (1L << 40)) {
         batch *= 2;
+        elapsed = timeBatch(batch);
     }
+    constexpr int kRepeats = 3;
+    for (int r = 1; r < kRepeats && minSeconds > 1e-5; ++r)
+        elapsed = std::min(elapsed, timeBatch(batch));
     if (sink)
         *sink += acc;
-    return elapsed / static_cast<double>(calls);
+    return elapsed / static_cast<double>(batch);
 }
 
 } // namespace granota
