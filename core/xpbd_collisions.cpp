@@ -13,24 +13,25 @@ bool pointInPolygon(const Point* poly, int n, const Point& p, int* nearestCrossi
     // §4.6 as in point_in_polygon.cpp: x interval half-open, vertical edges skipped. "p
     // lies above the edge" (p.y ≤ y of the edge at p.x) is tested without a division:
     // (p.y − a.y)(b.x − a.x) ≤ (p.x − a.x)(b.y − a.y), the inequality flipping when b.x < a.x.
+    // Written without branches on the data: in a pile nearly every vertex is near an edge,
+    // so which edges straddle p is a coin toss that a branch predictor keeps losing.
     bool inside = false;
     double closest = std::numeric_limits<double>::infinity();
     for (int i = 0, j = n - 1; i < n; j = i++) {
         const Point& a = poly[j];
         const Point& b = poly[i];
-        const bool rightwards = a.x <= p.x && p.x < b.x;
-        if (!rightwards && !(b.x <= p.x && p.x < a.x))
-            continue;
+        // Half-open on both orders: a.x ≤ p.x < b.x or b.x ≤ p.x < a.x.
+        const bool straddles = (a.x <= p.x) != (b.x <= p.x);
         const double lhs = (p.y - a.y) * (b.x - a.x);
         const double rhs = (p.x - a.x) * (b.y - a.y);
-        if (rightwards ? lhs <= rhs : lhs >= rhs) {
-            inside = !inside;
-            if (nearestCrossing) { // the crossed edge closest along the ray: edge j → i
-                const double gap = (rhs - lhs) / (b.x - a.x);
-                if (gap < closest) {
-                    closest = gap;
-                    *nearestCrossing = j;
-                }
+        const bool above = b.x > a.x ? lhs <= rhs : lhs >= rhs;
+        const bool crosses = straddles && above;
+        inside ^= crosses;
+        if (nearestCrossing && crosses) { // the crossed edge closest along the ray: edge j → i
+            const double gap = (rhs - lhs) / (b.x - a.x);
+            if (gap < closest) {
+                closest = gap;
+                *nearestCrossing = j;
             }
         }
     }
@@ -61,9 +62,10 @@ BoundaryPoint nearestBoundaryPoint(const Point* poly, int n, const Point& p, int
         const Point& a = poly[i];
         const Point& b = poly[i + 1 == n ? 0 : i + 1];
         // An edge whose box is farther than the best so far cannot be nearer: skip it
-        // before the division. With a good hint, most edges end here.
-        const double gx = std::max({std::min(a.x, b.x) - p.x, p.x - std::max(a.x, b.x), 0.0});
-        const double gy = std::max({std::min(a.y, b.y) - p.y, p.y - std::max(a.y, b.y), 0.0});
+        // before the division. With a good hint, most edges end here. (Plain max/min of
+        // two: they compile to max/min instructions, not to branches on the data.)
+        const double gx = std::max(std::max(std::min(a.x, b.x) - p.x, p.x - std::max(a.x, b.x)), 0.0);
+        const double gy = std::max(std::max(std::min(a.y, b.y) - p.y, p.y - std::max(a.y, b.y)), 0.0);
         if (gx * gx + gy * gy < best2 && i != hint)
             consider(i);
     }
@@ -235,15 +237,20 @@ bool solveObstacle(const XpbdObstacle& o, const Point* pts, Point& x, const Poin
 }
 
 bool solvePointInBody(Point* x, const double* w, int p, const Point& fixedPoint, int first, int count,
-                      double orientation, double margin, BodyContact* contact)
+                      double orientation, double margin, BodyContact* contact, int* edgeHint)
 {
     const Point pp = p >= 0 ? x[p] : fixedPoint;
     const Point* poly = x + first;
-    int hint = -1; // the edge the upward ray crossed first: usually the nearest one
-    const bool inside = pointInPolygon(poly, count, pp, &hint);
+    // A first guess for the nearest edge: the caller's (last substep's nearest: contacts
+    // move little between substeps), else the edge the upward ray crossed first.
+    const bool known = edgeHint && *edgeHint >= 0 && *edgeHint < count;
+    int hint = known ? *edgeHint : -1;
+    const bool inside = pointInPolygon(poly, count, pp, known ? nullptr : &hint);
     if (!inside && !(margin > 0)) // the common case: near the box, outside the polygon
         return false;
     const BoundaryPoint bp = nearestBoundaryPoint(poly, count, pp, hint);
+    if (edgeHint)
+        *edgeHint = bp.edge;
     if (!inside && bp.dist >= margin)
         return false;
     const int e0 = first + bp.edge;
@@ -275,6 +282,38 @@ bool solvePointInBody(Point* x, const double* w, int p, const Point& fixedPoint,
     x[e1] -= Point(w1 * dl * n.x, w1 * dl * n.y);
     if (contact)
         *contact = BodyContact{p, e0, e1, s, n, dl};
+    return true;
+}
+
+bool solvePointAgainstEdge(Point* x, const double* w, int p, int e0, int e1, double orientation, double margin,
+                           BodyContact* contact)
+{
+    const Point a = x[e0];
+    const Point t = x[e1] - a;
+    const double l2 = dot(t, t);
+    if (!(l2 > 1e-24)) // a collapsed edge has no normal: the exact test decides
+        return false;
+    const Point ap = x[p] - a;
+    const double along = dot(ap, t);
+    if (!(along >= 0 && along <= l2)) // slid past an end: a corner, where another edge may be nearer
+        return false;
+    const double len = std::sqrt(l2);
+    const Point n(orientation * t.y / len, -orientation * t.x / len); // outward, as solvePointInBody's
+    const double depth = margin - dot(ap, n);
+    if (!(depth > 0)) // in front of the edge: perhaps leaving, perhaps past a corner
+        return false;
+    const double s = along / l2;
+    const double wp = w[p];
+    const double w0 = (1 - s) * w[e0];
+    const double w1 = s * w[e1];
+    const double wsum = wp + (1 - s) * w0 + s * w1;
+    if (!(wsum > 0))
+        return false;
+    const double dl = depth / wsum; // C = n·(p − q) − margin ≥ 0, α = 0, as in solvePointInBody
+    x[p] += Point(wp * dl * n.x, wp * dl * n.y);
+    x[e0] -= Point(w0 * dl * n.x, w0 * dl * n.y);
+    x[e1] -= Point(w1 * dl * n.x, w1 * dl * n.y);
+    *contact = BodyContact{p, e0, e1, s, n, dl};
     return true;
 }
 

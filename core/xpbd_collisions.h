@@ -87,9 +87,21 @@ struct BodyContact {
 /// against the polygon body [first, first + count): if p is inside or closer than margin,
 /// p and the nearest edge are pushed apart, by inverse masses. `orientation` is the sign of
 /// the polygon's signed area (for the normal when p lies on an edge). Returns true on
-/// contact and describes it in *contact, for friction.
+/// contact and describes it in *contact, for friction. `edgeHint`, when given, holds the
+/// edge (0 … count − 1) found nearest last time, or −1: it is tried first, which lets the
+/// search reject the other edges by their boxes, and receives the edge found nearest now
+/// (touching or not); the answer does not depend on it.
 bool solvePointInBody(Point* x, const double* w, int p, const Point& fixedPoint, int first, int count,
-                      double orientation, double margin, BodyContact* contact);
+                      double orientation, double margin, BodyContact* contact, int* edgeHint = nullptr);
+
+/// The same contact kept from the last substep (contact persistence, as contacts found once
+/// and re-solved in every substep in Macklin et al. 2019, §4): p against the line of the
+/// edge e0 → e1 of a body of orientation `orientation`, solved as solvePointInBody would
+/// when that edge is the nearest. Only when p lies within the edge's span and behind it
+/// (deeper than −margin); returns false — and does nothing — otherwise, and the caller then
+/// asks solvePointInBody for the exact answer. Costs one edge instead of every edge twice.
+bool solvePointAgainstEdge(Point* x, const double* w, int p, int e0, int e1, double orientation, double margin,
+                           BodyContact* contact);
 
 /// Coulomb friction of a body contact at the velocity level, after the substep's velocity
 /// update: the relative tangential velocity of p and the edge point is reduced by at most

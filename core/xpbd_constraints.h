@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 namespace granota {
 
@@ -65,6 +66,15 @@ struct AngleConstraint {
     double hi = 0;     ///< rad, in [−π, π]
     ConstraintKind kind = ConstraintKind::Rigid;
     double lambda = 0;
+    /// Cache of the cheap "inside the limits" test (filled on first use, refilled when lo,
+    /// hi or offset change): the window [lo, hi] as its middle direction (cos, sin of
+    /// offset + (lo + hi)/2) and the cosine of its half width.
+    double windowLo = std::numeric_limits<double>::quiet_NaN();
+    double windowHi = 0;
+    double windowOffset = 0;
+    double windowCos = 1;
+    double windowSin = 0;
+    double windowCosHalf = 1;
 };
 
 /// The seed's angle of a direction: 0 = straight down (screen y grows downwards), π/2 = −x.

@@ -223,6 +223,17 @@ private:
     std::vector<BodyPair> m_pairs;
     std::vector<BodyPair> m_obstaclePairs; // (obstacle, body)
     std::vector<BodyContact> m_bodyContacts; // contacts with bodies in the current substep (for friction)
+    /// A vertex that may touch another body during this step, found once per step from the
+    /// broad phase's pairs (collision detection per step, resolution per substep: Macklin
+    /// et al. 2019, §4), with the edge of that body found nearest in the last substep.
+    struct ContactCandidate {
+        int particle = 0;
+        int body = 0;
+        int edge = -1;
+        bool touching = false; // pushed out against `edge` in the last substep
+    };
+    std::vector<ContactCandidate> m_candidates;
+    std::vector<double> m_reach;       // per body: how far its vertices may travel this step, px
 
     // Mouse.
     int m_grabBody = -1;
