@@ -81,11 +81,26 @@ public:
     }
 
     int bodyCount() const override { return m_frog ? 1 : static_cast<int>(m_bodies.size()); }
-    void bodyVertices(int i, std::vector<Point>& out) const override { out = body(i).vertices(); }
+    // Written into the caller's vector (its capacity reused): no allocation per frame.
+    void bodyVertices(int i, std::vector<Point>& out) const override
+    {
+        const SeedBody<Real>& b = body(i);
+        const auto& v = b.seedVertices();
+        out.resize(std::size_t(b.sides()));
+        for (std::size_t k = 0; k < out.size(); ++k)
+            out[k] = Point(double(v[k].pos.x), double(v[k].pos.y));
+    }
     double bodyArea(int i) const override { return std::abs(double(body(i).area())); }
     double bodyTargetArea(int i) const override { return double(body(i).targetArea()); }
     int chainCount() const override { return m_frog ? static_cast<int>(m_frog->legs().size()) : 0; }
-    void chainJoints(int i, std::vector<Point>& out) const override { out = m_frog->legs()[std::size_t(i)].joints(); }
+    void chainJoints(int i, std::vector<Point>& out) const override
+    {
+        const SeedLeg<Real>& l = m_frog->legs()[std::size_t(i)];
+        out.resize(3);
+        out[0] = Point(double(l.shoulder().x), double(l.shoulder().y));
+        out[1] = Point(double(l.elbow().x), double(l.elbow().y));
+        out[2] = Point(double(l.wrist().x), double(l.wrist().y));
+    }
 
     bool press(Point p) override
     {

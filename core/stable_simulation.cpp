@@ -108,11 +108,12 @@ public:
     }
 
     int bodyCount() const override { return m_world.bodyCount(); }
-    void bodyVertices(int i, std::vector<Point>& out) const override { out = m_world.bodyVertices(i); }
+    // Copied into the caller's vector (its capacity reused): no allocation per frame.
+    void bodyVertices(int i, std::vector<Point>& out) const override { copyRange(m_world.bodyRange(i), out); }
     double bodyArea(int i) const override { return std::abs(m_world.area(i)); }
     double bodyTargetArea(int i) const override { return m_world.targetArea(i); }
     int chainCount() const override { return m_world.chainCount(); }
-    void chainJoints(int i, std::vector<Point>& out) const override { out = m_world.chainJoints(i); }
+    void chainJoints(int i, std::vector<Point>& out) const override { copyRange(m_world.chainRange(i), out); }
 
     bool press(Point p) override
     {
@@ -182,6 +183,12 @@ protected:
     void doStep() override { m_world.step(); }
 
 private:
+    void copyRange(ParticleRange r, std::vector<Point>& out) const
+    {
+        const auto first = m_world.positions().begin() + r.first;
+        out.assign(first, first + r.count);
+    }
+
     void respawnAt(Point p)
     {
         p.x = std::clamp(p.x, 0.0, scene().params.width - 1);

@@ -1,5 +1,7 @@
 // The stable solver allocates nothing per step once its contact lists have reached their
 // working size: every global operator new of this test binary is counted.
+#include "core/scene.h"
+#include "core/simulation.h"
 #include "core/xpbd_world.h"
 
 #include <QtTest>
@@ -70,6 +72,49 @@ private slots:
             w.step();
         const long during = g_allocations.load() - before;
         QCOMPARE(during, 0L);
+    }
+
+    // What the frog canvas does every frame, on either solver: step, then read every
+    // body's vertices and every leg's joints into vectors it keeps.
+    void frameDoesNotAllocate_data()
+    {
+        QTest::addColumn<int>("solver");
+        QTest::newRow("seed") << int(SolverKind::Seed);
+        QTest::newRow("stable") << int(SolverKind::Stable);
+    }
+    void frameDoesNotAllocate()
+    {
+        QFETCH(int, solver);
+        auto spec = loadScene("frog");
+        QVERIFY(spec.ok());
+        auto sim = Simulation::create(spec.value(), SolverKind(solver));
+        QVERIFY(sim.ok());
+        Simulation& s = *sim.value();
+        QCOMPARE(s.chainCount(), 4);
+        std::vector<Point> vertices, joints;
+        const auto frame = [&] {
+            s.step();
+            double sum = 0;
+            for (int b = 0; b < s.bodyCount(); ++b) {
+                s.bodyVertices(b, vertices);
+                sum += vertices.front().x;
+            }
+            for (int c = 0; c < s.chainCount(); ++c) {
+                s.chainJoints(c, joints);
+                sum += joints.back().y;
+            }
+            return sum;
+        };
+        for (int i = 0; i < 10; ++i) // the vectors reach their size
+            frame();
+        const long before = g_allocations.load();
+        double sum = 0;
+        for (int i = 0; i < 200; ++i)
+            sum += frame();
+        QCOMPARE(g_allocations.load() - before, 0L);
+        QVERIFY(std::isfinite(sum));
+        QVERIFY(vertices.size() >= 3);
+        QCOMPARE(joints.size(), std::size_t(3));
     }
 };
 
