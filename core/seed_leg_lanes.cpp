@@ -76,16 +76,6 @@ template <class R> SeedLegLanes<R>::SeedLegLanes(const SeedLeg<R>* const* legs, 
     }
 }
 
-template <class R> void SeedLegLanes<R>::moveShoulders(const L& sx, const L& sy)
-{
-    // SeedLeg::moveShoulder takes R(clamp(double(s), −1e15, 1e15)). For R = float the
-    // clamp in float to ±R(1e15) picks the same number: no float lies between R(1e15) and
-    // 1e15. s − s is 0 exactly when s is finite (∞ − ∞ and NaN − NaN are NaN).
-    const L zero = L::splat(R(0)), lo = L::splat(R(-1e15)), hi = L::splat(R(1e15));
-    m_mx = select(ne(sx - sx, zero), m_mx, clampLanes(sx, lo, hi));
-    m_my = select(ne(sy - sy, zero), m_my, clampLanes(sy, lo, hi));
-}
-
 template <class R> void SeedLegLanes<R>::step()
 {
     // Annex II, Pota.actualitza(mov), one leg per lane. Every branch of the seed becomes a
@@ -150,8 +140,10 @@ template <class R> void SeedLegLanes<R>::step()
             // number, writing NaN into the leg for good. We take the nearest real solution
             // (discriminant 0: the elbow on the vertical through the shoulder).
             disc = select(ge(disc, zero), disc, zero);
-            const L root = sqrt(disc), twoA = L::splat(R(2));
-            const L noux = select(ge(cx, mx), (-qb + root) / twoA, (-qb - root) / twoA);
+            // x = (−b ± √disc)/(2a) with a = 1; halving is exact, so ·0.5 gives the very
+            // same bits as /2 (and does not wait for a division).
+            const L root = sqrt(disc), half = L::splat(R(0.5f));
+            const L noux = select(ge(cx, mx), (-qb + root) * half, (-qb - root) * half);
             const L dx = noux - cx;
             wx = select(below, wx + dx, wx), wy = select(below, wy - dy, wy);
             cx = select(below, cx + dx, cx), cy = select(below, cy - dy, cy);

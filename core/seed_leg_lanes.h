@@ -23,7 +23,15 @@ public:
 
     /// SeedLeg::step's move of the shoulder, lane by lane: a non-finite coordinate keeps
     /// the last one, the others are clamped to ±1e15.
-    void moveShoulders(const L& sx, const L& sy);
+    void moveShoulders(const L& sx, const L& sy)
+    {
+        // SeedLeg::moveShoulder takes R(clamp(double(s), −1e15, 1e15)). For R = float the
+        // clamp in float to ±R(1e15) picks the same number: no float lies between R(1e15)
+        // and 1e15. s − s is 0 exactly when s is finite (∞ − ∞ and NaN − NaN are NaN).
+        const L zero = L::splat(R(0)), lo = L::splat(R(-1e15)), hi = L::splat(R(1e15));
+        m_mx = select(ne(sx - sx, zero), m_mx, clampLanes(sx, lo, hi));
+        m_my = select(ne(sy - sy, zero), m_my, clampLanes(sy, lo, hi));
+    }
     /// Annex II, Pota.actualitza, every lane from its current shoulder.
     void step();
     /// The shoulders, elbows and wrists back into legs[0 .. count).
