@@ -83,13 +83,11 @@ SeedBody<R>::SeedBody(const FrogParams& params, SeedComponents components)
     m_estruc.assign(n1, R(0));
     m_applied.assign(n1, Vec(R(0), R(0)));
     // Each array holds the N + 1 vertices rounded up to whole packs of lanes, plus one more
-    // pack after them and one before (kLanePad): the edge loops read vertex i + 1 and write
-    // punt_b[i + 1] for a whole pack, the area pass reads vertex i − 1. The spare lanes
-    // start as zeros, compute garbage that stays finite (it is clamped like the vertices)
-    // and are never read back.
-    static_assert(kLanePad == std::size_t(kSeedLanes), "the padding is one pack");
+    // pack: the edge loops read the pack after each. The spare lanes start as zeros,
+    // compute garbage that stays finite (it is clamped like the vertices) and are never
+    // read back.
     const auto lanesPerPack = std::size_t(kSeedLanes);
-    m_stride = kLanePad + (n1 + lanesPerPack - 1) / lanesPerPack * lanesPerPack + lanesPerPack;
+    m_stride = (n1 + lanesPerPack - 1) / lanesPerPack * lanesPerPack + lanesPerPack;
     m_lanes.assign(m_stride * LaneArrayCount, R(0));
 }
 
@@ -186,8 +184,8 @@ template <class R> void SeedBody<R>::finishInitialise()
         px[i] = m_vert[i].prev.x, py[i] = m_vert[i].prev.y;
     }
     m_vertStale = false;
-    std::fill(lanes(AppliedX), lanes(AppliedX) + m_stride - kLanePad, R(0));
-    std::fill(lanes(AppliedY), lanes(AppliedY) + m_stride - kLanePad, R(0));
+    std::fill(lanes(AppliedX), lanes(AppliedX) + m_stride, R(0));
+    std::fill(lanes(AppliedY), lanes(AppliedY) + m_stride, R(0));
 }
 
 template <class R> void SeedBody<R>::syncVertices() const
@@ -230,14 +228,29 @@ template <class R> R SeedBody<R>::area() const
 
 template <class R> void SeedBody<R>::step()
 {
+    // A body of up to 12 vertices (the frog has 11) takes a step whose loops have a fixed
+    // number of packs, unrolled by the compiler; the operations are the same.
+    switch ((m_n + kSeedLanes) / kSeedLanes) {
+    case 1: stepPacks<1>(); break;
+    case 2: stepPacks<2>(); break;
+    case 3: stepPacks<3>(); break;
+    default: stepPacks<0>(); break;
+    }
+}
+
+template <class R> template <int Packs> void SeedBody<R>::stepPacks()
+{
     // Annex II, Poligon.actualitza, as SeedFrog.java runs it. The same operations in the
     // same order on every vertex, four vertices at a time (core/seed_lanes.h); what the
     // seed does several times over is still done as often (the five passes change the
     // rounding), but nothing is allocated and every length is computed once. The vertices
-    // stay in the lane arrays from one step to the next.
+    // stay in the lane arrays from one step to the next. Every array is read and written
+    // in whole packs at multiples of four; a neighbour (vertex i ± 1) is shifted in from
+    // the next or previous pack in registers (nextLanes, previousLanes).
     using L = Lanes<R>;
     const int N = m_n;
     const int n1 = N + 1;
+    const int end = Packs > 0 ? Packs * kSeedLanes : n1; // the packs cover vertices 0 … N
     R* const x = lanes(X);
     R* const y = lanes(Y);
     R* const px = lanes(PrevX);
@@ -249,6 +262,9 @@ template <class R> void SeedBody<R>::step()
     R* const bx = lanes(PuntBX);
     R* const by = lanes(PuntBY);
     const L zero = L::splat(R(0)), half = L::splat(R(0.5f)), vmax = L::splat(m_velmax);
+    // The lanes of vertex N, the seed's copy of vertex 0, in the pack starting at i.
+    const L lanePos = L::set(R(0), R(1), R(2), R(3)), lastVertex = L::splat(R(N));
+    const auto isLast = [&](int i) { return eq(lanePos + L::splat(R(i)), lastVertex); };
     m_vertStale = true;
 
     // §4.6: Verlet first, for every vertex including the copy N (SeedVertex::verlet):
@@ -256,7 +272,7 @@ template <class R> void SeedBody<R>::step()
     {
         const Vec g = m_components.gravity ? m_gravity : Vec(R(0), R(0));
         const L fx = L::splat(m_friction.x), fy = L::splat(m_friction.y), gx = L::splat(g.x), gy = L::splat(g.y);
-        for (int i = 0; i < n1; i += kSeedLanes) {
+        for (int i = 0; i < end; i += kSeedLanes) {
             const L x0 = L::load(x + i), y0 = L::load(y + i);
             const L nx = x0 + fx * (x0 - L::load(px + i)) + gx;
             const L ny = y0 + fy * (y0 - L::load(py + i)) + gy;
@@ -272,12 +288,14 @@ template <class R> void SeedBody<R>::step()
     int numAll = 0;
 
     // §4.4: springs. Each edge i → i+1 proposes targets at distance molls[i]/2 either
-    // side of its midpoint: punt_a[i] for vertex i and punt_b[i+1] for vertex i+1.
+    // side of its midpoint: punt_a[i] for vertex i and punt_b[i+1] for vertex i+1 (kept
+    // at index i, by edge).
     if (m_components.springs) {
         // molls[i]·0.5f, the same for every edge.
         const L halfSpring = L::splat(R(m_springLength * R(0.5f)));
-        for (int i = 0; i < N; i += kSeedLanes) {
-            const L pxl = L::load(x + i), pyl = L::load(y + i), qx = L::load(x + i + 1), qy = L::load(y + i + 1);
+        for (int i = 0; i < end && i < N; i += kSeedLanes) {
+            const L pxl = L::load(x + i), pyl = L::load(y + i);
+            const L qx = nextLanes(pxl, L::load(x + i + kSeedLanes)), qy = nextLanes(pyl, L::load(y + i + kSeedLanes));
             // (p + q)/2: halving is exact, so ·0.5 gives the very same bits as /2.
             const L migx = (pxl + qx) * half, migy = (pyl + qy) * half;
             L dx = pxl - qx, dy = pyl - qy;
@@ -286,19 +304,25 @@ template <class R> void SeedBody<R>::step()
             normalizeLanes(dx, dy, sqrt(dx * dx + dy * dy));
             (migx + halfSpring * dx).store(ax + i);
             (migy + halfSpring * dy).store(ay + i);
-            (migx - halfSpring * dx).store(bx + i + 1);
-            (migy - halfSpring * dy).store(by + i + 1);
+            (migx - halfSpring * dx).store(bx + i);
+            (migy - halfSpring * dy).store(by + i);
         }
-        ax[N] = ax[0], ay[N] = ay[0];
-        bx[0] = bx[N], by[0] = by[N];
         // "Apliquem les correccions 5 voltes": the positions do not change between the
         // passes, so each pass adds the same two corrections again (rounded each time, so
         // the five passes stay five). `punt_a[i] != vert[i].posicio` compares Java
-        // references and is always true: both are added.
-        for (int i = 0; i < n1; i += kSeedLanes) {
+        // references and is always true: both are added. Vertex N takes punt_a[0] and
+        // vertex 0 punt_b[N], the target of edge N − 1 (the seed's copies of each other).
+        L pbx = L::splat(bx[N - 1]), pby = L::splat(by[N - 1]); // the pack before: edge N − 1 last
+        for (int i = 0; i < end; i += kSeedLanes) {
             const L x0 = L::load(x + i), y0 = L::load(y + i);
-            const L cax = L::load(ax + i) - x0, cay = L::load(ay + i) - y0;
-            const L cbx = L::load(bx + i) - x0, cby = L::load(by + i) - y0;
+            const auto last = isLast(i);
+            const L tax = select(last, L::splat(ax[0]), L::load(ax + i));
+            const L tay = select(last, L::splat(ay[0]), L::load(ay + i));
+            const L ebx = L::load(bx + i), eby = L::load(by + i);
+            const L tbx = previousLanes(pbx, ebx), tby = previousLanes(pby, eby);
+            pbx = ebx, pby = eby;
+            const L cax = tax - x0, cay = tay - y0;
+            const L cbx = tbx - x0, cby = tby - y0;
             L sx = zero, sy = zero;
             for (int j = 0; j < 5; ++j) {
                 sx = sx + cax, sy = sy + cay;
@@ -309,7 +333,7 @@ template <class R> void SeedBody<R>::step()
         }
         numAll = 10;
     } else {
-        for (int i = 0; i < n1; i += kSeedLanes) {
+        for (int i = 0; i < end; i += kSeedLanes) {
             zero.store(cx + i);
             zero.store(cy + i);
         }
@@ -334,9 +358,10 @@ template <class R> void SeedBody<R>::step()
     // summed one after the other in the seed's order (a sum's rounding depends on it).
     {
         R* const lw = ax; // punt_a is no longer needed
-        for (int i = 0; i < N; i += kSeedLanes) {
-            const L l = L::load(x + i) - L::load(x + i + 1);
-            const L w = (L::load(y + i) + L::load(y + i + 1)) * half; // exact halving, as above
+        for (int i = 0; i < end && i < N; i += kSeedLanes) {
+            const L x0 = L::load(x + i), y0 = L::load(y + i);
+            const L l = x0 - nextLanes(x0, L::load(x + i + kSeedLanes));
+            const L w = (y0 + nextLanes(y0, L::load(y + i + kSeedLanes))) * half; // exact halving, as above
             (l * w).store(lw + i);
         }
         R area = 0;
@@ -348,9 +373,9 @@ template <class R> void SeedBody<R>::step()
     // §4.5: area. F = C·(A_target − A)/N pushes every vertex along the normal of the chord
     // between its neighbours, five times. SeedFrog.java (and the reference trace) applies
     // the correction of vertices 0 and N inside the five passes, both with the normal of
-    // the chord v1–v(N−1): with vertex −1 a copy of N − 1 and vertex N + 1 a copy of 1 (the
-    // latter a spare lane, no longer read), the chord of vertex i is v(i−1)–v(i+1) for
-    // every i in 0…N, and all N + 1 vertices go through the same lanes.
+    // the chord v1–v(N−1): with vertex N − 1 before vertex 0 and vertex 1 after vertex N,
+    // the chord of vertex i is v(i−1)–v(i+1) for every i in 0…N, and all N + 1 vertices go
+    // through the same lanes.
     if (m_components.area && m_areal != m_aloc) {
         R F = m_areaFactor * (m_areal - m_aloc) / R(N);
         // Guard: with an accepted but absurd factor (C and the area both near 1e15) the
@@ -359,13 +384,18 @@ template <class R> void SeedBody<R>::step()
         const R fmax = std::numeric_limits<R>::max() / R(64);
         if (!(F <= fmax)) F = fmax;
         if (!(F >= -fmax)) F = -fmax;
-        x[-1] = x[N - 1], y[-1] = y[N - 1];
-        x[N + 1] = x[1], y[N + 1] = y[1];
         const L f = L::splat(F);
-        for (int i = 0; i < n1; i += kSeedLanes) {
+        L prevX = L::splat(x[N - 1]), prevY = L::splat(y[N - 1]); // the pack before: N − 1 last
+        for (int i = 0; i < end; i += kSeedLanes) {
+            const L x0 = L::load(x + i), y0 = L::load(y + i);
+            const auto last = isLast(i);
+            const L beforeX = previousLanes(prevX, x0), beforeY = previousLanes(prevY, y0);
+            const L nextX = select(last, L::splat(x[1]), nextLanes(x0, L::load(x + i + kSeedLanes)));
+            const L nextY = select(last, L::splat(y[1]), nextLanes(y0, L::load(y + i + kSeedLanes)));
+            prevX = x0, prevY = y0;
             // The normal (next.y − before.y, −next.x + before.x); −a + b is b − a exactly.
-            L nx = L::load(y + i + 1) - L::load(y + i - 1);
-            L ny = L::load(x + i - 1) - L::load(x + i + 1);
+            L nx = nextY - beforeY;
+            L ny = beforeX - nextX;
             normalizeLanes(nx, ny, sqrt(nx * nx + ny * ny)); // coincident neighbours: no push
             const L fpx = f * nx, fpy = f * ny;
             L sx = L::load(cx + i), sy = L::load(cy + i);
@@ -423,7 +453,7 @@ template <class R> void SeedBody<R>::step()
             for (int a : m_anchors)
                 num[a] += 1;
             const L one = L::splat(R(1));
-            for (int i = 0; i < n1; i += kSeedLanes) {
+            for (int i = 0; i < end; i += kSeedLanes) {
                 const L n = L::load(num + i);
                 const auto corrected = ge(n, one); // no correction: 0/0 in the lane, dropped
                 const L mx = select(corrected, clampLanes(L::load(cx + i) / n, nvmax, vmax), zero);
@@ -433,13 +463,13 @@ template <class R> void SeedBody<R>::step()
             }
         } else if (numAll > 0) {
             const L n = L::splat(R(numAll));
-            for (int i = 0; i < n1; i += kSeedLanes) {
+            for (int i = 0; i < end; i += kSeedLanes) {
                 const L mx = clampLanes(L::load(cx + i) / n, nvmax, vmax);
                 const L my = clampLanes(L::load(cy + i) / n, nvmax, vmax);
                 finish(i, mx, my, L::load(x + i) + mx, L::load(y + i) + my);
             }
         } else {
-            for (int i = 0; i < n1; i += kSeedLanes)
+            for (int i = 0; i < end; i += kSeedLanes)
                 finish(i, zero, zero, L::load(x + i), L::load(y + i));
         }
     }

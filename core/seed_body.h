@@ -179,7 +179,8 @@ public:
 
 private:
     SeedBody(const FrogParams& params, SeedComponents components);
-    void holdAt(const Vec& clau); // mantindreagafat
+    template <int Packs> void stepPacks(); // step() with `Packs` packs of lanes; 0: as many as needed
+    void holdAt(const Vec& clau);          // mantindreagafat
     void finishInitialise();      // the end of inicialitza, shared by both rest shapes
     Vec clampMouse(const Point& p) const;
     void syncVertices() const; // m_vert from the lane arrays
@@ -201,13 +202,11 @@ private:
     // The body's state is kept as a "structure of arrays" (all x, then all y, …) so that
     // four vertices go through each operation of the step at once (core/seed_lanes.h);
     // X, Y, PrevX and PrevY hold the vertices between steps. The arrays live in one buffer,
-    // sized once: a step allocates nothing. Each array starts one pack after its slot, so
-    // that index −1 can be read (the area pass wraps round, see step()).
+    // sized once: a step allocates nothing.
     enum LaneArray { X, Y, PrevX, PrevY, CorrX, CorrY, PuntAX, PuntAY, PuntBX, PuntBY, Num, AppliedX, AppliedY,
                      LaneArrayCount };
-    R* lanes(LaneArray a) { return m_lanes.data() + std::size_t(a) * m_stride + kLanePad; }
-    const R* lanes(LaneArray a) const { return m_lanes.data() + std::size_t(a) * m_stride + kLanePad; }
-    static constexpr std::size_t kLanePad = 4; // one pack of lanes
+    R* lanes(LaneArray a) { return m_lanes.data() + std::size_t(a) * m_stride; }
+    const R* lanes(LaneArray a) const { return m_lanes.data() + std::size_t(a) * m_stride; }
     std::vector<R> m_lanes;
     std::size_t m_stride = 0;
     mutable std::vector<Vec> m_applied; // corrections(), filled from AppliedX/Y when asked
