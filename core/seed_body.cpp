@@ -251,16 +251,18 @@ template <class R> template <int Packs> void SeedBody<R>::stepPacks()
     const int N = m_n;
     const int n1 = N + 1;
     const int end = Packs > 0 ? Packs * kSeedLanes : n1; // the packs cover vertices 0 … N
-    R* const x = lanes(X);
-    R* const y = lanes(Y);
-    R* const px = lanes(PrevX);
-    R* const py = lanes(PrevY);
-    R* const cx = lanes(CorrX);
-    R* const cy = lanes(CorrY);
-    R* const ax = lanes(PuntAX);
-    R* const ay = lanes(PuntAY);
-    R* const bx = lanes(PuntBX);
-    R* const by = lanes(PuntBY);
+    // The arrays do not overlap: told so (__restrict), the compiler keeps in registers what
+    // one pass stored and the next reads.
+    R* __restrict const x = lanes(X);
+    R* __restrict const y = lanes(Y);
+    R* __restrict const px = lanes(PrevX);
+    R* __restrict const py = lanes(PrevY);
+    R* __restrict const cx = lanes(CorrX);
+    R* __restrict const cy = lanes(CorrY);
+    R* __restrict const ax = lanes(PuntAX);
+    R* __restrict const ay = lanes(PuntAY);
+    R* __restrict const bx = lanes(PuntBX);
+    R* __restrict const by = lanes(PuntBY);
     const L zero = L::splat(R(0)), half = L::splat(R(0.5f)), vmax = L::splat(m_velmax);
     // The lanes of vertex N, the seed's copy of vertex 0, in the pack starting at i.
     const L lanePos = L::set(R(0), R(1), R(2), R(3)), lastVertex = L::splat(R(N));
@@ -435,8 +437,8 @@ template <class R> template <int Packs> void SeedBody<R>::stepPacks()
     // §4.2's frame: only the current position is clamped (fita, not fitaant). The count is
     // the same float num_correccions the seed divides by.
     {
-        R* const mxs = lanes(AppliedX);
-        R* const mys = lanes(AppliedY);
+        R* __restrict const mxs = lanes(AppliedX);
+        R* __restrict const mys = lanes(AppliedY);
         const L nvmax = L::splat(R(-m_velmax));
         const bool bounds = m_components.bounds;
         const L xmax = L::splat(m_xmax), ymax = L::splat(m_ymax);
@@ -448,7 +450,7 @@ template <class R> template <int Packs> void SeedBody<R>::stepPacks()
         };
         if (held) {
             // The anchors count one more (the seed's num_correccions += 1 of the grab).
-            R* const num = lanes(Num);
+            R* __restrict const num = lanes(Num);
             std::fill(num, num + n1, R(numAll));
             for (int a : m_anchors)
                 num[a] += 1;

@@ -179,8 +179,9 @@ public:
 
 private:
     SeedBody(const FrogParams& params, SeedComponents components);
-    template <int Packs> void stepPacks(); // step() with `Packs` packs of lanes; 0: as many as needed
-    void holdAt(const Vec& clau);          // mantindreagafat
+    // step() with a fixed number of packs of lanes (0: as many as the body needs).
+    template <int Packs> void stepPacks();
+    void holdAt(const Vec& clau); // mantindreagafat
     void finishInitialise();      // the end of inicialitza, shared by both rest shapes
     Vec clampMouse(const Point& p) const;
     void syncVertices() const; // m_vert from the lane arrays
@@ -192,7 +193,8 @@ private:
     R m_areaFactor = 0, m_velmax = 0, m_radius = 0, m_springLength = 0;
     R m_xmax = 0, m_ymax = 0; // width − 1, height − 1
     R m_areal = 0, m_aloc = 0;
-    mutable std::vector<SeedVertex<R>> m_vert; // N + 1; stale after a step until asked for
+    // N + 1: a copy of the lane arrays, stale after a step until asked for.
+    mutable std::vector<SeedVertex<R>> m_vert;
     mutable bool m_vertStale = false;
     std::vector<R> m_estruc;           // N + 1
     std::vector<Point> m_shape;        // rest shape around the centre; empty: the regular N-gon
