@@ -83,8 +83,9 @@ SeedBody<R>::SeedBody(const FrogParams& params, SeedComponents components)
     m_estruc.assign(n1, R(0));
     m_applied.assign(n1, Vec(R(0), R(0)));
     // Each array holds the N + 1 vertices rounded up to whole packs of lanes, plus one more
-    // pack: the edge loops read vertex i + 1 and write punt_b[i + 1] for a whole pack. The
-    // spare lanes hold zeros, compute garbage and are never read back.
+    // pack: the edge loops read the pack after each. The spare lanes start as zeros,
+    // compute garbage that stays finite (it is clamped like the vertices) and are never
+    // read back.
     const auto lanesPerPack = std::size_t(kSeedLanes);
     m_stride = (n1 + lanesPerPack - 1) / lanesPerPack * lanesPerPack + lanesPerPack;
     m_lanes.assign(m_stride * LaneArrayCount, R(0));
@@ -173,15 +174,38 @@ template <class R> void SeedBody<R>::finishInitialise()
         }
     }
     m_areal = R(m_params.targetArea);
+    // The vertices go into the lane arrays, where the steps keep them.
+    R* const x = lanes(X);
+    R* const y = lanes(Y);
+    R* const px = lanes(PrevX);
+    R* const py = lanes(PrevY);
+    for (std::size_t i = 0; i < m_vert.size(); ++i) {
+        x[i] = m_vert[i].pos.x, y[i] = m_vert[i].pos.y;
+        px[i] = m_vert[i].prev.x, py[i] = m_vert[i].prev.y;
+    }
+    m_vertStale = false;
     std::fill(lanes(AppliedX), lanes(AppliedX) + m_stride, R(0));
     std::fill(lanes(AppliedY), lanes(AppliedY) + m_stride, R(0));
+}
+
+template <class R> void SeedBody<R>::syncVertices() const
+{
+    const R* const x = lanes(X);
+    const R* const y = lanes(Y);
+    const R* const px = lanes(PrevX);
+    const R* const py = lanes(PrevY);
+    for (std::size_t i = 0; i < m_vert.size(); ++i) {
+        m_vert[i].pos = Vec(x[i], y[i]);
+        m_vert[i].prev = Vec(px[i], py[i]);
+    }
+    m_vertStale = false;
 }
 
 template <class R> const std::vector<typename SeedBody<R>::Vec>& SeedBody<R>::corrections() const
 {
     // Gathered only when asked (the readouts), not in every step.
-    const R* ax = m_lanes.data() + std::size_t(AppliedX) * m_stride;
-    const R* ay = m_lanes.data() + std::size_t(AppliedY) * m_stride;
+    const R* ax = lanes(AppliedX);
+    const R* ay = lanes(AppliedY);
     for (std::size_t i = 0; i < m_applied.size(); ++i)
         m_applied[i] = Vec(ax[i], ay[i]);
     return m_applied;
@@ -191,12 +215,12 @@ template <class R> R SeedBody<R>::area() const
 {
     // Annex II, calculaarea: trapezoids between each edge and the x axis (§4.5),
     // L = x_i − x_{i+1}, W = (y_i + y_{i+1})/2, summed in this order.
+    const R* const x = lanes(X);
+    const R* const y = lanes(Y);
     R area = 0;
     for (int i = 0; i < m_n; ++i) {
-        const Vec& a = m_vert[std::size_t(i)].pos;
-        const Vec& b = m_vert[std::size_t(i) + 1].pos;
-        const R L = a.x - b.x;
-        const R W = (a.y + b.y) / R(2);
+        const R L = x[i] - x[i + 1];
+        const R W = (y[i] + y[i + 1]) / R(2);
         area = area + L * W;
     }
     return area;
@@ -204,59 +228,76 @@ template <class R> R SeedBody<R>::area() const
 
 template <class R> void SeedBody<R>::step()
 {
+    // A body of up to 12 vertices (the frog has 11) takes a step whose loops have a fixed
+    // number of packs, unrolled by the compiler; the operations are the same.
+    switch ((m_n + kSeedLanes) / kSeedLanes) {
+    case 1: stepPacks<1>(); break;
+    case 2: stepPacks<2>(); break;
+    case 3: stepPacks<3>(); break;
+    default: stepPacks<0>(); break;
+    }
+}
+
+template <class R> template <int Packs> void SeedBody<R>::stepPacks()
+{
     // Annex II, Poligon.actualitza, as SeedFrog.java runs it. The same operations in the
     // same order on every vertex, four vertices at a time (core/seed_lanes.h); what the
     // seed does several times over is still done as often (the five passes change the
-    // rounding), but nothing is allocated and every length is computed once.
+    // rounding), but nothing is allocated and every length is computed once. The vertices
+    // stay in the lane arrays from one step to the next. Every array is read and written
+    // in whole packs at multiples of four; a neighbour (vertex i ± 1) is shifted in from
+    // the next or previous pack in registers (nextLanes, previousLanes).
     using L = Lanes<R>;
     const int N = m_n;
     const int n1 = N + 1;
-    R* const x = lanes(X);
-    R* const y = lanes(Y);
-    R* const px = lanes(PrevX);
-    R* const py = lanes(PrevY);
-    R* const cx = lanes(CorrX);
-    R* const cy = lanes(CorrY);
-    R* const ax = lanes(PuntAX);
-    R* const ay = lanes(PuntAY);
-    R* const bx = lanes(PuntBX);
-    R* const by = lanes(PuntBY);
-    R* const num = lanes(Num);
-    auto& v = m_vert;
-    // Four vertices of m_vert as lanes, built in registers (lanes past N repeat vertex N).
-    const auto gather = [&v, n1](int i, auto field) {
-        const auto at = [&](int k) { return field(v[std::size_t(std::min(i + k, n1 - 1))]); };
-        return L::set(at(0), at(1), at(2), at(3));
-    };
+    const int end = Packs > 0 ? Packs * kSeedLanes : n1; // the packs cover vertices 0 … N
+    // The arrays do not overlap: told so (__restrict), the compiler keeps in registers what
+    // one pass stored and the next reads.
+    R* __restrict const x = lanes(X);
+    R* __restrict const y = lanes(Y);
+    R* __restrict const px = lanes(PrevX);
+    R* __restrict const py = lanes(PrevY);
+    R* __restrict const cx = lanes(CorrX);
+    R* __restrict const cy = lanes(CorrY);
+    R* __restrict const ax = lanes(PuntAX);
+    R* __restrict const ay = lanes(PuntAY);
+    R* __restrict const bx = lanes(PuntBX);
+    R* __restrict const by = lanes(PuntBY);
     const L zero = L::splat(R(0)), half = L::splat(R(0.5f)), vmax = L::splat(m_velmax);
+    // The lanes of vertex N, the seed's copy of vertex 0, in the pack starting at i.
+    const L lanePos = L::set(R(0), R(1), R(2), R(3)), lastVertex = L::splat(R(N));
+    const auto isLast = [&](int i) { return eq(lanePos + L::splat(R(i)), lastVertex); };
+    m_vertStale = true;
 
     // §4.6: Verlet first, for every vertex including the copy N (SeedVertex::verlet):
     // x' = x + f∘(x − x_prev) + g, clamped to x ± velmax.
     {
         const Vec g = m_components.gravity ? m_gravity : Vec(R(0), R(0));
         const L fx = L::splat(m_friction.x), fy = L::splat(m_friction.y), gx = L::splat(g.x), gy = L::splat(g.y);
-        for (int i = 0; i < n1; i += kSeedLanes) {
-            const L x0 = gather(i, [](const SeedVertex<R>& a) { return a.pos.x; });
-            const L y0 = gather(i, [](const SeedVertex<R>& a) { return a.pos.y; });
-            const L nx = x0 + fx * (x0 - gather(i, [](const SeedVertex<R>& a) { return a.prev.x; })) + gx;
-            const L ny = y0 + fy * (y0 - gather(i, [](const SeedVertex<R>& a) { return a.prev.y; })) + gy;
+        for (int i = 0; i < end; i += kSeedLanes) {
+            const L x0 = L::load(x + i), y0 = L::load(y + i);
+            const L nx = x0 + fx * (x0 - L::load(px + i)) + gx;
+            const L ny = y0 + fy * (y0 - L::load(py + i)) + gy;
             x0.store(px + i);
             y0.store(py + i);
             clampLanes(nx, x0 - vmax, x0 + vmax).store(x + i);
             clampLanes(ny, y0 - vmax, y0 + vmax).store(y + i);
-            zero.store(cx + i);
-            zero.store(cy + i);
-            zero.store(num + i);
         }
     }
 
+    // Every vertex gets the same number of corrections (num_correccions) but for the
+    // grab's anchors: counted here rather than summed in floats (small integers, exact).
+    int numAll = 0;
+
     // §4.4: springs. Each edge i → i+1 proposes targets at distance molls[i]/2 either
-    // side of its midpoint: punt_a[i] for vertex i and punt_b[i+1] for vertex i+1.
+    // side of its midpoint: punt_a[i] for vertex i and punt_b[i+1] for vertex i+1 (kept
+    // at index i, by edge).
     if (m_components.springs) {
         // molls[i]·0.5f, the same for every edge.
         const L halfSpring = L::splat(R(m_springLength * R(0.5f)));
-        for (int i = 0; i < N; i += kSeedLanes) {
-            const L pxl = L::load(x + i), pyl = L::load(y + i), qx = L::load(x + i + 1), qy = L::load(y + i + 1);
+        for (int i = 0; i < end && i < N; i += kSeedLanes) {
+            const L pxl = L::load(x + i), pyl = L::load(y + i);
+            const L qx = nextLanes(pxl, L::load(x + i + kSeedLanes)), qy = nextLanes(pyl, L::load(y + i + kSeedLanes));
             // (p + q)/2: halving is exact, so ·0.5 gives the very same bits as /2.
             const L migx = (pxl + qx) * half, migy = (pyl + qy) * half;
             L dx = pxl - qx, dy = pyl - qy;
@@ -265,20 +306,25 @@ template <class R> void SeedBody<R>::step()
             normalizeLanes(dx, dy, sqrt(dx * dx + dy * dy));
             (migx + halfSpring * dx).store(ax + i);
             (migy + halfSpring * dy).store(ay + i);
-            (migx - halfSpring * dx).store(bx + i + 1);
-            (migy - halfSpring * dy).store(by + i + 1);
+            (migx - halfSpring * dx).store(bx + i);
+            (migy - halfSpring * dy).store(by + i);
         }
-        ax[N] = ax[0], ay[N] = ay[0];
-        bx[0] = bx[N], by[0] = by[N];
         // "Apliquem les correccions 5 voltes": the positions do not change between the
         // passes, so each pass adds the same two corrections again (rounded each time, so
         // the five passes stay five). `punt_a[i] != vert[i].posicio` compares Java
-        // references and is always true: both are added.
-        const L ten = L::splat(R(10));
-        for (int i = 0; i < n1; i += kSeedLanes) {
+        // references and is always true: both are added. Vertex N takes punt_a[0] and
+        // vertex 0 punt_b[N], the target of edge N − 1 (the seed's copies of each other).
+        L pbx = L::splat(bx[N - 1]), pby = L::splat(by[N - 1]); // the pack before: edge N − 1 last
+        for (int i = 0; i < end; i += kSeedLanes) {
             const L x0 = L::load(x + i), y0 = L::load(y + i);
-            const L cax = L::load(ax + i) - x0, cay = L::load(ay + i) - y0;
-            const L cbx = L::load(bx + i) - x0, cby = L::load(by + i) - y0;
+            const auto last = isLast(i);
+            const L tax = select(last, L::splat(ax[0]), L::load(ax + i));
+            const L tay = select(last, L::splat(ay[0]), L::load(ay + i));
+            const L ebx = L::load(bx + i), eby = L::load(by + i);
+            const L tbx = previousLanes(pbx, ebx), tby = previousLanes(pby, eby);
+            pbx = ebx, pby = eby;
+            const L cax = tax - x0, cay = tay - y0;
+            const L cbx = tbx - x0, cby = tby - y0;
             L sx = zero, sy = zero;
             for (int j = 0; j < 5; ++j) {
                 sx = sx + cax, sy = sy + cay;
@@ -286,13 +332,18 @@ template <class R> void SeedBody<R>::step()
             }
             sx.store(cx + i);
             sy.store(cy + i);
-            ten.store(num + i);
+        }
+        numAll = 10;
+    } else {
+        for (int i = 0; i < end; i += kSeedLanes) {
+            zero.store(cx + i);
+            zero.store(cy + i);
         }
     }
 
     // §4.6–4.7 (Annex II, "Si esta agafat"): while held, the anchors ({0, 1, N−1, N} in
     // the final program) are pulled to their grab distance estruc from the mouse along
-    // the mouse→vertex line.
+    // the mouse→vertex line; each counts one correction more (below).
     const bool held = m_components.grab && m_grabbed;
     if (held) {
         for (int a : m_anchors) {
@@ -302,7 +353,6 @@ template <class R> void SeedBody<R>::step()
             const Vec c(R(m_mouse.x + e * d.x), R(m_mouse.y + e * d.y));
             cx[a] = R(cx[a] + R(c.x - x[a]));
             cy[a] = R(cy[a] + R(c.y - y[a]));
-            num[a] += 1;
         }
     }
 
@@ -310,9 +360,10 @@ template <class R> void SeedBody<R>::step()
     // summed one after the other in the seed's order (a sum's rounding depends on it).
     {
         R* const lw = ax; // punt_a is no longer needed
-        for (int i = 0; i < N; i += kSeedLanes) {
-            const L l = L::load(x + i) - L::load(x + i + 1);
-            const L w = (L::load(y + i) + L::load(y + i + 1)) * half; // exact halving, as above
+        for (int i = 0; i < end && i < N; i += kSeedLanes) {
+            const L x0 = L::load(x + i), y0 = L::load(y + i);
+            const L l = x0 - nextLanes(x0, L::load(x + i + kSeedLanes));
+            const L w = (y0 + nextLanes(y0, L::load(y + i + kSeedLanes))) * half; // exact halving, as above
             (l * w).store(lw + i);
         }
         R area = 0;
@@ -323,7 +374,10 @@ template <class R> void SeedBody<R>::step()
 
     // §4.5: area. F = C·(A_target − A)/N pushes every vertex along the normal of the chord
     // between its neighbours, five times. SeedFrog.java (and the reference trace) applies
-    // the correction of vertices 0 and N inside the five passes.
+    // the correction of vertices 0 and N inside the five passes, both with the normal of
+    // the chord v1–v(N−1): with vertex N − 1 before vertex 0 and vertex 1 after vertex N,
+    // the chord of vertex i is v(i−1)–v(i+1) for every i in 0…N, and all N + 1 vertices go
+    // through the same lanes.
     if (m_components.area && m_areal != m_aloc) {
         R F = m_areaFactor * (m_areal - m_aloc) / R(N);
         // Guard: with an accepted but absurd factor (C and the area both near 1e15) the
@@ -332,32 +386,27 @@ template <class R> void SeedBody<R>::step()
         const R fmax = std::numeric_limits<R>::max() / R(64);
         if (!(F <= fmax)) F = fmax;
         if (!(F >= -fmax)) F = -fmax;
-        const L f = L::splat(F), five = L::splat(R(5)), last = L::splat(R(N));
-        const R laneIndex[kSeedLanes] = {0, 1, 2, 3};
-        for (int i = 1; i < N; i += kSeedLanes) {
+        const L f = L::splat(F);
+        L prevX = L::splat(x[N - 1]), prevY = L::splat(y[N - 1]); // the pack before: N − 1 last
+        for (int i = 0; i < end; i += kSeedLanes) {
+            const L x0 = L::load(x + i), y0 = L::load(y + i);
+            const auto last = isLast(i);
+            const L beforeX = previousLanes(prevX, x0), beforeY = previousLanes(prevY, y0);
+            const L nextX = select(last, L::splat(x[1]), nextLanes(x0, L::load(x + i + kSeedLanes)));
+            const L nextY = select(last, L::splat(y[1]), nextLanes(y0, L::load(y + i + kSeedLanes)));
+            prevX = x0, prevY = y0;
             // The normal (next.y − before.y, −next.x + before.x); −a + b is b − a exactly.
-            L nx = L::load(y + i + 1) - L::load(y + i - 1);
-            L ny = L::load(x + i - 1) - L::load(x + i + 1);
+            L nx = nextY - beforeY;
+            L ny = beforeX - nextX;
             normalizeLanes(nx, ny, sqrt(nx * nx + ny * ny)); // coincident neighbours: no push
             const L fpx = f * nx, fpy = f * ny;
             L sx = L::load(cx + i), sy = L::load(cy + i);
             for (int j = 0; j < 5; ++j)
                 sx = sx + fpx, sy = sy + fpy;
-            // Only vertices 1 … N−1 here: the lanes past N−1 keep what they had.
-            const auto inner = lt(L::load(laneIndex) + L::splat(R(i)), last);
-            select(inner, sx, L::load(cx + i)).store(cx + i);
-            select(inner, sy, L::load(cy + i)).store(cy + i);
-            select(inner, L::load(num + i) + five, L::load(num + i)).store(num + i);
+            sx.store(cx + i);
+            sy.store(cy + i);
         }
-        Vec p(R(y[1] - y[N - 1]), R(-x[1] + x[N - 1]));
-        seedmath::normalize(p);
-        const Vec fp(R(F * p.x), R(F * p.y));
-        for (int j = 0; j < 5; ++j) {
-            cx[0] = R(cx[0] + fp.x), cy[0] = R(cy[0] + fp.y);
-            cx[N] = R(cx[N] + fp.x), cy[N] = R(cy[N] + fp.y);
-        }
-        num[0] += 5;
-        num[N] += 5;
+        numAll += 5;
     }
 
     // Annex II, "Corregim la posicio de les ancores si estan massa lluny": while held,
@@ -385,34 +434,46 @@ template <class R> void SeedBody<R>::step()
     }
 
     // The average of the corrections of each vertex, clamped per axis to ±velmax, then
-    // §4.2's frame: only the current position is clamped (fita, not fitaant).
+    // §4.2's frame: only the current position is clamped (fita, not fitaant). The count is
+    // the same float num_correccions the seed divides by.
     {
-        R* const mxs = lanes(AppliedX);
-        R* const mys = lanes(AppliedY);
-        const L one = L::splat(R(1)), nvmax = L::splat(R(-m_velmax));
+        R* __restrict const mxs = lanes(AppliedX);
+        R* __restrict const mys = lanes(AppliedY);
+        const L nvmax = L::splat(R(-m_velmax));
         const bool bounds = m_components.bounds;
         const L xmax = L::splat(m_xmax), ymax = L::splat(m_ymax);
-        for (int i = 0; i < n1; i += kSeedLanes) {
-            const L n = L::load(num + i);
-            const auto corrected = ge(n, one); // no correction: 0/0 in the lane, dropped
-            const L mx = select(corrected, clampLanes(L::load(cx + i) / n, nvmax, vmax), zero);
-            const L my = select(corrected, clampLanes(L::load(cy + i) / n, nvmax, vmax), zero);
-            L x1 = select(corrected, L::load(x + i) + mx, L::load(x + i));
-            L y1 = select(corrected, L::load(y + i) + my, L::load(y + i));
-            if (bounds) {
-                x1 = clampLanes(x1, zero, xmax);
-                y1 = clampLanes(y1, zero, ymax);
-            }
-            x1.store(x + i);
-            y1.store(y + i);
+        const auto finish = [&](int i, const L& mx, const L& my, const L& x1, const L& y1) {
+            (bounds ? clampLanes(x1, zero, xmax) : x1).store(x + i);
+            (bounds ? clampLanes(y1, zero, ymax) : y1).store(y + i);
             mx.store(mxs + i);
             my.store(mys + i);
+        };
+        if (held) {
+            // The anchors count one more (the seed's num_correccions += 1 of the grab).
+            R* __restrict const num = lanes(Num);
+            std::fill(num, num + n1, R(numAll));
+            for (int a : m_anchors)
+                num[a] += 1;
+            const L one = L::splat(R(1));
+            for (int i = 0; i < end; i += kSeedLanes) {
+                const L n = L::load(num + i);
+                const auto corrected = ge(n, one); // no correction: 0/0 in the lane, dropped
+                const L mx = select(corrected, clampLanes(L::load(cx + i) / n, nvmax, vmax), zero);
+                const L my = select(corrected, clampLanes(L::load(cy + i) / n, nvmax, vmax), zero);
+                finish(i, mx, my, select(corrected, L::load(x + i) + mx, L::load(x + i)),
+                       select(corrected, L::load(y + i) + my, L::load(y + i)));
+            }
+        } else if (numAll > 0) {
+            const L n = L::splat(R(numAll));
+            for (int i = 0; i < end; i += kSeedLanes) {
+                const L mx = clampLanes(L::load(cx + i) / n, nvmax, vmax);
+                const L my = clampLanes(L::load(cy + i) / n, nvmax, vmax);
+                finish(i, mx, my, L::load(x + i) + mx, L::load(y + i) + my);
+            }
+        } else {
+            for (int i = 0; i < end; i += kSeedLanes)
+                finish(i, zero, zero, L::load(x + i), L::load(y + i));
         }
-    }
-    for (int i = 0; i < n1; ++i) {
-        SeedVertex<R>& vi = v[std::size_t(i)];
-        vi.pos = Vec(x[i], y[i]);
-        vi.prev = Vec(px[i], py[i]);
     }
 }
 
@@ -429,14 +490,12 @@ template <class R> void SeedBody<R>::holdAt(const Vec& clau)
         break;
     case GrabMode::Above: // §4.7: the vertices above the grab point (y smaller on screen)
         for (int i = 0; i <= m_n; ++i)
-            if (m_vert[std::size_t(i)].pos.y <= clau.y)
+            if (lanes(Y)[i] <= clau.y)
                 m_anchors.push_back(i);
         break;
     }
-    for (int a : m_anchors) {
-        const auto i = std::size_t(a);
-        m_estruc[i] = seedmath::dist(m_vert[i].pos.x, m_vert[i].pos.y, clau.x, clau.y);
-    }
+    for (int a : m_anchors)
+        m_estruc[std::size_t(a)] = seedmath::dist(lanes(X)[a], lanes(Y)[a], clau.x, clau.y);
 }
 
 template <class R> typename SeedBody<R>::Vec SeedBody<R>::clampMouse(const Point& p) const
@@ -492,7 +551,7 @@ template <class R> std::vector<Point> SeedBody<R>::vertices() const
     std::vector<Point> out;
     out.reserve(std::size_t(m_n));
     for (int i = 0; i < m_n; ++i)
-        out.emplace_back(double(m_vert[std::size_t(i)].pos.x), double(m_vert[std::size_t(i)].pos.y));
+        out.emplace_back(double(lanes(X)[i]), double(lanes(Y)[i]));
     return out;
 }
 
@@ -501,7 +560,7 @@ template <class R> std::vector<Point> SeedBody<R>::previousVertices() const
     std::vector<Point> out;
     out.reserve(std::size_t(m_n));
     for (int i = 0; i < m_n; ++i)
-        out.emplace_back(double(m_vert[std::size_t(i)].prev.x), double(m_vert[std::size_t(i)].prev.y));
+        out.emplace_back(double(lanes(PrevX)[i]), double(lanes(PrevY)[i]));
     return out;
 }
 

@@ -152,8 +152,17 @@ public:
     std::vector<Point> vertices() const;
     /// The previous positions of the N distinct vertices (velocity = vertex − previous).
     std::vector<Point> previousVertices() const;
-    /// All N + 1 vertices of the seed, in precision R.
-    const std::vector<SeedVertex<R>>& seedVertices() const { return m_vert; }
+    /// All N + 1 vertices of the seed, in precision R. Between steps the body keeps its
+    /// vertices as lanes (positionsX/Y below); this copy is refreshed when asked.
+    const std::vector<SeedVertex<R>>& seedVertices() const
+    {
+        if (m_vertStale)
+            syncVertices();
+        return m_vert;
+    }
+    /// The current x (and y) of the N + 1 vertices, contiguous: the step's own arrays.
+    const R* positionsX() const { return lanes(X); }
+    const R* positionsY() const { return lanes(Y); }
     /// The correction applied to each of the N + 1 vertices in the last step (averaged and
     /// clamped to ±velmax per axis); zero where none was applied.
     const std::vector<Vec>& corrections() const;
@@ -170,9 +179,12 @@ public:
 
 private:
     SeedBody(const FrogParams& params, SeedComponents components);
+    // step() with a fixed number of packs of lanes (0: as many as the body needs).
+    template <int Packs> void stepPacks();
     void holdAt(const Vec& clau); // mantindreagafat
     void finishInitialise();      // the end of inicialitza, shared by both rest shapes
     Vec clampMouse(const Point& p) const;
+    void syncVertices() const; // m_vert from the lane arrays
 
     FrogParams m_params;
     SeedComponents m_components;
@@ -181,18 +193,22 @@ private:
     R m_areaFactor = 0, m_velmax = 0, m_radius = 0, m_springLength = 0;
     R m_xmax = 0, m_ymax = 0; // width − 1, height − 1
     R m_areal = 0, m_aloc = 0;
-    std::vector<SeedVertex<R>> m_vert; // N + 1
+    // N + 1: a copy of the lane arrays, stale after a step until asked for.
+    mutable std::vector<SeedVertex<R>> m_vert;
+    mutable bool m_vertStale = false;
     std::vector<R> m_estruc;           // N + 1
     std::vector<Point> m_shape;        // rest shape around the centre; empty: the regular N-gon
     std::vector<int> m_anchors;        // the vertices held by the current grab
     bool m_grabbed = false;
     Vec m_mouse;
-    // The step works on the vertices "structure of arrays" (all x, then all y, …) so that
-    // four vertices go through each operation at once (core/seed_lanes.h). The arrays live
-    // in one buffer, sized once: a step allocates nothing.
+    // The body's state is kept as a "structure of arrays" (all x, then all y, …) so that
+    // four vertices go through each operation of the step at once (core/seed_lanes.h);
+    // X, Y, PrevX and PrevY hold the vertices between steps. The arrays live in one buffer,
+    // sized once: a step allocates nothing.
     enum LaneArray { X, Y, PrevX, PrevY, CorrX, CorrY, PuntAX, PuntAY, PuntBX, PuntBY, Num, AppliedX, AppliedY,
                      LaneArrayCount };
     R* lanes(LaneArray a) { return m_lanes.data() + std::size_t(a) * m_stride; }
+    const R* lanes(LaneArray a) const { return m_lanes.data() + std::size_t(a) * m_stride; }
     std::vector<R> m_lanes;
     std::size_t m_stride = 0;
     mutable std::vector<Vec> m_applied; // corrections(), filled from AppliedX/Y when asked

@@ -7,9 +7,16 @@ namespace granota {
 
 template <class R>
 SeedFrog<R>::SeedFrog(SeedBody<R> body, std::vector<SeedLeg<R>> legs, const Vec& centre)
-    : m_body(std::move(body)), m_legs(std::move(legs))
+    : m_body(std::move(body)), m_legs(std::move(legs)), m_shoulderX(Lanes<R>::splat(centre.x)),
+      m_shoulderY(Lanes<R>::splat(centre.y))
 {
     m_shoulders.fill(centre);
+    if (!m_legs.empty()) {
+        const SeedLeg<R>* in[4];
+        for (std::size_t i = 0; i < 4; ++i)
+            in[i] = &m_legs[std::min(i, m_legs.size() - 1)];
+        m_legLanes = SeedLegLanes<R>(in, static_cast<int>(std::min<std::size_t>(m_legs.size(), 4)));
+    }
     // Annex II assumes ten vertices ("Podem assumir ara ja que el poligon del cos te 10
     // vertex") and attaches the legs between vertices 2, 3, 4, 6, 7 and 8. For another N
     // the vertex at the same angle is taken, round(k·N/10) (half up): the same indices for
@@ -41,47 +48,50 @@ template <class R> Expected<SeedFrog<R>> SeedFrog<R>::create(const FrogParams& p
     return SeedFrog(std::move(body).value(), std::move(legs), centre);
 }
 
-template <class R> void SeedFrog<R>::computeShoulders()
-{
-    // Annex II, Granota.actualitza: the front legs sit on the chord v2–v8, a fifth of the
-    // way in from each end; the back legs at the midpoints of the edges v3–v4 and v6–v7.
-    const auto& v = m_body.seedVertices();
-    const Vec& v2 = v[std::size_t(m_attach[0])].pos;
-    const Vec& v3 = v[std::size_t(m_attach[1])].pos;
-    const Vec& v4 = v[std::size_t(m_attach[2])].pos;
-    const Vec& v6 = v[std::size_t(m_attach[3])].pos;
-    const Vec& v7 = v[std::size_t(m_attach[4])].pos;
-    const Vec& v8 = v[std::size_t(m_attach[5])].pos;
-    const R desx = (v8.x - v2.x) / R(5), desy = (v8.y - v2.y) / R(5);
-    const Vec esDav(R(v2.x + desx), R(v2.y + desy));
-    const Vec dreDav(R(v8.x - desx), R(v8.y - desy));
-    const R desyd = (v3.y - v4.y) / R(2), desxd = (v3.x - v4.x) / R(2);
-    const R desye = (v7.y - v6.y) / R(2), desxe = (v7.x - v6.x) / R(2);
-    const Vec esDar(R(v4.x + desxd), R(v4.y + desyd));
-    const Vec dreDar(R(v6.x + desxe), R(v6.y + desye));
-    m_shoulders[seedleg::FrontRight] = dreDav;
-    m_shoulders[seedleg::FrontLeft] = esDav;
-    m_shoulders[seedleg::BackRight] = dreDar;
-    m_shoulders[seedleg::BackLeft] = esDar;
-}
-
 template <class R> void SeedFrog<R>::step()
 {
     m_body.step();
     if (m_legs.empty())
         return;
-    computeShoulders();
+    // Annex II, Granota.actualitza: the front legs sit on the chord v2–v8, a fifth of the
+    // way in from each end; the back legs at the midpoints of the edges v3–v4 and v6–v7:
+    //   front right v8 − (v8 − v2)/5, front left v2 + (v8 − v2)/5,
+    //   back right v6 + (v7 − v6)/2,  back left v4 + (v3 − v4)/2,
+    // one leg per lane as a + (p − q)/d·s. s = ±1 only gives the sign (exact), and
+    // v8 + (−des) is v8 − des exactly (IEEE subtraction is the addition of the negation).
+    using L = Lanes<R>;
+    const R* const x = m_body.positionsX();
+    const R* const y = m_body.positionsY();
+    const int v2 = m_attach[0], v3 = m_attach[1], v4 = m_attach[2], v6 = m_attach[3], v7 = m_attach[4],
+              v8 = m_attach[5];
+    const L d = L::set(R(5), R(5), R(2), R(2)), s = L::set(R(-1), R(1), R(1), R(1));
+    const auto shoulder = [&](const R* c) {
+        const L a = L::set(c[v8], c[v2], c[v6], c[v4]);
+        const L p = L::set(c[v8], c[v8], c[v7], c[v3]);
+        const L q = L::set(c[v2], c[v2], c[v6], c[v4]);
+        return a + (p - q) / d * s;
+    };
+    m_shoulderX = shoulder(x);
+    m_shoulderY = shoulder(y);
     // Annex II steps the legs one after the other (dd, dr, ed, er); they do not act on
-    // each other, so all four go at once, one per SIMD lane (SeedLeg::stepTogether).
-    SeedLeg<R>* legs[4];
-    Point shoulders[4];
-    const int count = static_cast<int>(std::min<std::size_t>(m_legs.size(), 4));
-    for (int i = 0; i < count; ++i) {
-        legs[i] = &m_legs[std::size_t(i)];
-        const Vec& s = m_shoulders[std::size_t(i)];
-        shoulders[i] = Point(double(s.x), double(s.y));
-    }
-    SeedLeg<R>::stepTogether(legs, shoulders, count);
+    // each other, so all four go at once, one per SIMD lane (SeedLegLanes).
+    m_legLanes.moveShoulders(m_shoulderX, m_shoulderY);
+    m_legLanes.step();
+    m_legsStale = true;
+}
+
+template <class R> void SeedFrog<R>::syncLegs() const
+{
+    SeedLeg<R>* out[4];
+    for (std::size_t i = 0; i < m_legs.size() && i < 4; ++i)
+        out[i] = &m_legs[i];
+    m_legLanes.store(out);
+    R sx[kSeedLanes], sy[kSeedLanes];
+    m_shoulderX.store(sx);
+    m_shoulderY.store(sy);
+    for (std::size_t i = 0; i < 4; ++i)
+        m_shoulders[i] = Vec(sx[i], sy[i]);
+    m_legsStale = false;
 }
 
 template class SeedFrog<float>;

@@ -3,10 +3,13 @@
 /// The `seed` solver's frog: the `Granota` of Annex II (§4.16) — a SeedBody and four
 /// SeedLegs whose shoulders are recomputed from the body after every body step. The legs
 /// hang from the body but do not act on it (the seed has no feedback from legs to body),
-/// so the body of a frog moves exactly as a lone SeedBody.
+/// so the body of a frog moves exactly as a lone SeedBody. The four legs are kept side by
+/// side in SIMD lanes (core/seed_leg_lanes.h); legs() and shoulders() are refreshed from
+/// them when read.
 
 #include "core/seed_body.h"
 #include "core/seed_leg.h"
+#include "core/seed_leg_lanes.h"
 
 #include <array>
 #include <vector>
@@ -34,9 +37,19 @@ public:
     const SeedBody<R>& body() const { return m_body; }
     SeedBody<R>& body() { return m_body; }
     /// Front right, front left, back right, back left; empty when the legs are off.
-    const std::vector<SeedLeg<R>>& legs() const { return m_legs; }
+    const std::vector<SeedLeg<R>>& legs() const
+    {
+        if (m_legsStale)
+            syncLegs();
+        return m_legs;
+    }
     /// Where the four legs were attached in the last step (the centre before the first).
-    const std::array<Vec, 4>& shoulders() const { return m_shoulders; }
+    const std::array<Vec, 4>& shoulders() const
+    {
+        if (m_legsStale)
+            syncLegs();
+        return m_shoulders;
+    }
 
     /// The sketch's mouse and space-bar handlers (see SeedBody): they act on the body only;
     /// a respawn leaves the legs where they are, and they follow at the next step.
@@ -51,11 +64,14 @@ public:
 
 private:
     SeedFrog(SeedBody<R> body, std::vector<SeedLeg<R>> legs, const Vec& centre);
-    void computeShoulders();
+    void syncLegs() const; // m_legs and m_shoulders from m_legLanes
 
     SeedBody<R> m_body;
-    std::vector<SeedLeg<R>> m_legs;
-    std::array<Vec, 4> m_shoulders;
+    SeedLegLanes<R> m_legLanes;            // the legs between steps
+    mutable std::vector<SeedLeg<R>> m_legs; // stale after a step until asked for
+    Lanes<R> m_shoulderX, m_shoulderY;      // the shoulders of the last step, one leg per lane
+    mutable std::array<Vec, 4> m_shoulders;
+    mutable bool m_legsStale = false;
     std::array<int, 6> m_attach{}; // the seed's vertices 2, 3, 4, 6, 7, 8 for this N
 };
 

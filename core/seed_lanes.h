@@ -83,6 +83,7 @@ template <class R> struct Lanes {
     GRANOTA_LANES_CMP(gt, >)
     GRANOTA_LANES_CMP(ge, >=)
     GRANOTA_LANES_CMP(ne, !=)
+    GRANOTA_LANES_CMP(eq, ==)
 #undef GRANOTA_LANES_CMP
     /// −a: flips the sign bit, exactly as the scalar −a (0 − a would turn −0 into +0).
     friend Lanes operator-(const Lanes& a)
@@ -107,6 +108,14 @@ template <class R> struct Lanes {
             r.v[i] = m.b[i] ? a.v[i] : b.v[i];
         return r;
     }
+    /// m ? a : +0, lane by lane.
+    friend Lanes zeroUnless(const LaneMask<R>& m, const Lanes& a) { return select(m, a, splat(R(0))); }
+    /// (a1, a2, a3, b0): element i + 1 of an array for each lane i of `a`, when b holds
+    /// the four elements after a. Built in registers: a load from p + 1 just after stores
+    /// to p and p + 4 would wait for the stores to reach the cache.
+    friend Lanes nextLanes(const Lanes& a, const Lanes& b) { return Lanes{{a.v[1], a.v[2], a.v[3], b.v[0]}}; }
+    /// (a3, b0, b1, b2): element i − 1 for each lane i of b, when a holds the four before.
+    friend Lanes previousLanes(const Lanes& a, const Lanes& b) { return Lanes{{a.v[3], b.v[0], b.v[1], b.v[2]}}; }
 };
 
 #ifdef GRANOTA_SEED_SSE2
@@ -139,28 +148,52 @@ template <> struct Lanes<float> {
     friend LaneMask<float> gt(const Lanes& a, const Lanes& b) { return {_mm_cmpgt_ps(a.v, b.v)}; }
     friend LaneMask<float> ge(const Lanes& a, const Lanes& b) { return {_mm_cmpge_ps(a.v, b.v)}; }
     friend LaneMask<float> ne(const Lanes& a, const Lanes& b) { return {_mm_cmpneq_ps(a.v, b.v)}; }
+    friend LaneMask<float> eq(const Lanes& a, const Lanes& b) { return {_mm_cmpeq_ps(a.v, b.v)}; }
     friend Lanes operator-(const Lanes& a) { return {_mm_xor_ps(a.v, _mm_set1_ps(-0.0f))}; }
     friend Lanes sqrt(const Lanes& a) { return {_mm_sqrt_ps(a.v)}; }
     friend Lanes select(const LaneMask<float>& m, const Lanes& a, const Lanes& b)
     {
         return {_mm_or_ps(_mm_and_ps(m.m, a.v), _mm_andnot_ps(m.m, b.v))};
     }
+    friend Lanes zeroUnless(const LaneMask<float>& m, const Lanes& a) { return {_mm_and_ps(m.m, a.v)}; }
+    friend Lanes nextLanes(const Lanes& a, const Lanes& b)
+    {
+        const __m128 t = _mm_move_ss(a.v, b.v); // (b0, a1, a2, a3)
+        return {_mm_shuffle_ps(t, t, _MM_SHUFFLE(0, 3, 2, 1))};
+    }
+    friend Lanes previousLanes(const Lanes& a, const Lanes& b)
+    {
+        const __m128 t = _mm_shuffle_ps(a.v, b.v, _MM_SHUFFLE(0, 0, 3, 3)); // (a3, a3, b0, b0)
+        return {_mm_shuffle_ps(t, b.v, _MM_SHUFFLE(2, 1, 2, 0))};
+    }
 };
 #endif
 
-/// Annex II's clamp `if (p < lo) p = lo; else if (p > hi) p = hi;`, lane by lane.
+/// Annex II's clamp `if (p < lo) p = lo; else if (p > hi) p = hi;`, lane by lane, for
+/// lo <= hi (every clamp of the seed: a value ± velmax, ±velmax, the frame, [−1, 1]).
 template <class R> Lanes<R> clampLanes(const Lanes<R>& p, const Lanes<R>& lo, const Lanes<R>& hi)
 {
     return select(lt(p, lo), lo, select(gt(p, hi), hi, p));
 }
 
+#ifdef GRANOTA_SEED_SSE2
+/// The same clamp as minps/maxps, two instructions instead of eight. minps(hi, p) is
+/// `hi < p ? hi : p`, the inner branch exactly (a NaN p stays p); maxps(lo, q) is
+/// `lo > q ? lo : q`, which with lo <= hi is true exactly when p < lo (then q = p).
+template <> inline Lanes<float> clampLanes(const Lanes<float>& p, const Lanes<float>& lo, const Lanes<float>& hi)
+{
+    return {_mm_max_ps(lo.v, _mm_min_ps(hi.v, p.v))};
+}
+#endif
+
 /// PVector.normalize on lanes: (x, y) divided by m = |(x, y)| unless m is 0 or 1. `m` is
-/// passed in because the seed often needs the length itself as well.
+/// passed in because the seed often needs the length itself as well. x/1 is x exactly, so
+/// only m = 0 needs care: there the divisor is made 1 (m + 1 = 1), elsewhere m + 0 = m.
 template <class R> void normalizeLanes(Lanes<R>& x, Lanes<R>& y, const Lanes<R>& m)
 {
-    const LaneMask<R> divide = ne(m, Lanes<R>::splat(R(0))) & ne(m, Lanes<R>::splat(R(1)));
-    x = select(divide, x / m, x);
-    y = select(divide, y / m, y);
+    const Lanes<R> d = m + zeroUnless(eq(m, Lanes<R>::splat(R(0))), Lanes<R>::splat(R(1)));
+    x = x / d;
+    y = y / d;
 }
 
 } // namespace granota

@@ -1,6 +1,6 @@
 #include "core/seed_leg.h"
 
-#include "core/seed_lanes.h"
+#include "core/seed_leg_lanes.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -94,35 +94,6 @@ template <class R> R largestRatioAbove(R limit)
     return fromOrderedKey<R>(lo);
 }
 
-/// SeedVertex::verlet on lanes.
-template <class R>
-void verletLanes(Lanes<R>& x, Lanes<R>& y, Lanes<R>& px, Lanes<R>& py, const Lanes<R>& fx, const Lanes<R>& fy,
-                 const Lanes<R>& gx, const Lanes<R>& gy, const Lanes<R>& vmax)
-{
-    const Lanes<R> nx = x + fx * (x - px) + gx;
-    const Lanes<R> ny = y + fy * (y - py) + gy;
-    px = x, py = y;
-    x = clampLanes(nx, x - vmax, x + vmax);
-    y = clampLanes(ny, y - vmax, y + vmax);
-}
-
-/// §4.14 on lanes: joint (x, y) back to distance `length` from (fx, fy) along the line
-/// joining them, moved with Desp (position and previous position: the velocity is kept).
-/// dist() and PVector.normalize measure the same vector: one square root serves both.
-template <class R>
-void restoreLengthLanes(const Lanes<R>& fx, const Lanes<R>& fy, Lanes<R>& x, Lanes<R>& y, Lanes<R>& px,
-                        Lanes<R>& py, const Lanes<R>& length)
-{
-    Lanes<R> dx = x - fx, dy = y - fy;
-    const Lanes<R> m = sqrt(dx * dx + dy * dy);
-    const auto moved = ne(m, length);
-    // A joint on its parent: d stays 0 and it is put on the parent (finite, as in the seed).
-    normalizeLanes(dx, dy, m);
-    const Lanes<R> movx = fx + dx * length - x, movy = fy + dy * length - y;
-    px = select(moved, px + movx, px), py = select(moved, py + movy, py);
-    x = select(moved, x + movx, x), y = select(moved, y + movy, y);
-}
-
 } // namespace
 
 template <class R> void SeedLeg<R>::precomputeLimits()
@@ -149,133 +120,12 @@ template <class R> void SeedLeg<R>::moveShoulder(const Point& shoulder)
 
 template <class R> void SeedLeg<R>::step(const Point& shoulder)
 {
+    // One leg in the lanes of SeedLegLanes (the other three repeat it and are dropped).
+    moveShoulder(shoulder);
     SeedLeg* self = this;
-    stepTogether(&self, &shoulder, 1);
-}
-
-template <class R> void SeedLeg<R>::stepTogether(SeedLeg* const* legs, const Point* shoulders, int count)
-{
-    // Annex II, Pota.actualitza(mov), one leg per lane. Every branch of the seed becomes a
-    // mask; lanes past `count` repeat leg 0 and are not written back.
-    using L = Lanes<R>;
-    constexpr int W = kSeedLanes;
-    count = std::clamp(count, 0, W);
-    if (count == 0)
-        return;
-    for (int k = 0; k < count; ++k)
-        legs[k]->moveShoulder(shoulders[k]);
-    const SeedLeg* in[W];
-    for (int k = 0; k < W; ++k)
-        in[k] = legs[k < count ? k : 0];
-    static_assert(W == 4, "one leg per lane: the frog's four legs");
-    const auto gather = [&in](auto field) { return L::set(field(*in[0]), field(*in[1]), field(*in[2]), field(*in[3])); };
-    const SeedComponents comp = in[0]->m_components;
-    L mx = gather([](const SeedLeg& l) { return l.m_muscle.x; });
-    L my = gather([](const SeedLeg& l) { return l.m_muscle.y; });
-    L cx = gather([](const SeedLeg& l) { return l.m_colze.pos.x; });
-    L cy = gather([](const SeedLeg& l) { return l.m_colze.pos.y; });
-    L cpx = gather([](const SeedLeg& l) { return l.m_colze.prev.x; });
-    L cpy = gather([](const SeedLeg& l) { return l.m_colze.prev.y; });
-    L wx = gather([](const SeedLeg& l) { return l.m_canell.pos.x; });
-    L wy = gather([](const SeedLeg& l) { return l.m_canell.pos.y; });
-    L wpx = gather([](const SeedLeg& l) { return l.m_canell.prev.x; });
-    L wpy = gather([](const SeedLeg& l) { return l.m_canell.prev.y; });
-    const L moll1 = gather([](const SeedLeg& l) { return l.m_moll1; });
-    const L moll2 = gather([](const SeedLeg& l) { return l.m_moll2; });
-    const L zero = L::splat(R(0));
-
-    {
-        const L fx = gather([](const SeedLeg& l) { return l.m_freg.x; });
-        const L fy = gather([](const SeedLeg& l) { return l.m_freg.y; });
-        const L gx = comp.gravity ? gather([](const SeedLeg& l) { return l.m_grav.x; }) : zero;
-        const L gy = comp.gravity ? gather([](const SeedLeg& l) { return l.m_grav.y; }) : zero;
-        const L vmax = gather([](const SeedLeg& l) { return l.m_velmax; });
-        verletLanes(cx, cy, cpx, cpy, fx, fy, gx, gy, vmax);
-        verletLanes(wx, wy, wpx, wpy, fx, fy, gx, gy, vmax);
-    }
-
-    // §4.15: the angle of parent→joint measured from straight down, acos(Δy/|Δ|), taken
-    // positive when the joint is left of its parent and negative when right of it; past
-    // [min, max] the joint is put on the limit. `a > max` is `ratio <= T` (largestRatioAbove)
-    // and −a < min is a > −min. Guard: a zero length gives 0/0 — NaN in the seed, whose
-    // comparisons are then false and leave the joint alone; the mask `len > 0` does the
-    // same. The ratio is clamped to [−1, 1] as acos would need.
-    const auto clampAngle = [&](const L& fx, const L& fy, L& x, L& y, int maxIndex) {
-        const L dx = x - fx, dy = y - fy;
-        const L len = sqrt(dx * dx + dy * dy);
-        const L ratio = clampLanes(dy / len, L::splat(R(-1)), L::splat(R(1)));
-        const auto measured = gt(len, zero);
-        const auto right = ge(fx - x, zero);
-        const L maxRatio = gather([maxIndex](const SeedLeg& l) { return l.m_limitRatio[maxIndex]; });
-        const L minRatio = gather([maxIndex](const SeedLeg& l) { return l.m_limitRatio[maxIndex + 1]; });
-        const auto left = !right;
-        const auto pastMax = right & measured & le(ratio, maxRatio);
-        const auto pastMin = left & measured & le(ratio, minRatio);
-        if (!(pastMax.any() || pastMin.any()))
-            return;
-        const auto off = [&](int k, bool offY) {
-            return gather([k, offY](const SeedLeg& l) { return offY ? l.m_limitOffY[k] : l.m_limitOffX[k]; });
-        };
-        x = select(pastMax, fx - off(maxIndex, false), select(pastMin, fx - off(maxIndex + 1, false), x));
-        y = select(pastMax, fy + off(maxIndex, true), select(pastMin, fy + off(maxIndex + 1, true), y));
-    };
-
-    // §4.14: shoulder–elbow length, then its angle; elbow–wrist length, then its angle
-    // (measured in the screen's frame, not the elbow's).
-    restoreLengthLanes(mx, my, cx, cy, cpx, cpy, moll1);
-    if (comp.angleLimits)
-        clampAngle(mx, my, cx, cy, 0);
-    restoreLengthLanes(cx, cy, wx, wy, wpx, wpy, moll2);
-    if (comp.angleLimits)
-        clampAngle(cx, cy, wx, wy, 2);
-
-    // "Corregim la posicio del canell si se n'ix del marc": a wrist below the floor is
-    // lifted by dy, and the elbow, lifted by the same dy, slides horizontally back onto
-    // the circle of radius moll1 round the shoulder: (x − mx)² + (my − (cy − dy))² = moll1²,
-    // i.e. x² + b x + c = 0 with a = 1, b = −2 mx. Both joints move by the same dx.
-    const L floor = gather([](const SeedLeg& l) { return l.m_floor; });
-    if (comp.bounds) {
-        const auto below = gt(wy, floor);
-        if (below.any()) {
-            // dy = dist(wx, wy, wx, floor), whose x term is (wx − wx)² = 0.
-            const L zx = wx - wx, zy = floor - wy;
-            const L dy = sqrt(zx * zx + zy * zy);
-            const L qb = L::splat(R(-2)) * mx;
-            const L lifted = my - (cy - dy);
-            const L qc = mx * mx + lifted * lifted - moll1 * moll1;
-            L disc = qb * qb - L::splat(R(4)) * qc; // 4·a·c with a = 1
-            // Guard: when the lifted elbow is more than moll1 above or below the shoulder
-            // the circle has no point at that height and the seed takes sqrt of a negative
-            // number, writing NaN into the leg for good. We take the nearest real solution
-            // (discriminant 0: the elbow on the vertical through the shoulder).
-            disc = select(ge(disc, zero), disc, zero);
-            const L root = sqrt(disc), twoA = L::splat(R(2));
-            const L noux = select(ge(cx, mx), (-qb + root) / twoA, (-qb - root) / twoA);
-            const L dx = noux - cx;
-            wx = select(below, wx + dx, wx), wy = select(below, wy - dy, wy);
-            cx = select(below, cx + dx, cx), cy = select(below, cy - dy, cy);
-        }
-    }
-
-    // Beyond the seed (SeedComponents::clampLegs): the joints stay in the frame like the
-    // body's vertices. Only the current position is clamped, as `fita` does.
-    if (comp.clampLegs) {
-        const L xmax = gather([](const SeedLeg& l) { return R(l.m_width - 1); });
-        cx = clampLanes(cx, zero, xmax), cy = clampLanes(cy, zero, floor);
-        wx = clampLanes(wx, zero, xmax), wy = clampLanes(wy, zero, floor);
-    }
-
-    R out[8][W];
-    const L* state[8] = {&cx, &cy, &cpx, &cpy, &wx, &wy, &wpx, &wpy};
-    for (int f = 0; f < 8; ++f)
-        state[f]->store(out[f]);
-    for (int k = 0; k < count; ++k) {
-        SeedLeg& l = *legs[k];
-        l.m_colze.pos = Vec(out[0][k], out[1][k]);
-        l.m_colze.prev = Vec(out[2][k], out[3][k]);
-        l.m_canell.pos = Vec(out[4][k], out[5][k]);
-        l.m_canell.prev = Vec(out[6][k], out[7][k]);
-    }
+    SeedLegLanes<R> lanes(&self, 1);
+    lanes.step();
+    lanes.store(&self);
 }
 
 template <class R> std::vector<Point> SeedLeg<R>::joints() const

@@ -17,6 +17,8 @@
 
 namespace granota {
 
+template <class R> class SeedLegLanes;
+
 template <class R> class SeedLeg {
 public:
     using Vec = Vec2<R>;
@@ -33,11 +35,6 @@ public:
 
     /// Annex II, Pota.actualitza(mov): the shoulder moves to `shoulder`, then one step.
     void step(const Point& shoulder);
-    /// The same for `count` (1 to 4) legs at once, side by side in SIMD lanes: legs[k]
-    /// moves its shoulder to shoulders[k] and steps. The legs do not act on each other, so
-    /// this is exactly `legs[k]->step(shoulders[k])` for each k. The legs must share their
-    /// SeedComponents (the frog's four do).
-    static void stepTogether(SeedLeg* const* legs, const Point* shoulders, int count);
 
     Vec shoulder() const { return m_muscle; }
     Vec elbow() const { return m_colze.pos; }
@@ -53,6 +50,7 @@ public:
     SeedComponents components() const { return m_components; }
 
 private:
+    friend class SeedLegLanes<R>; // the frog's legs are stepped side by side, in lanes
     SeedLeg() = default;
     void precomputeLimits();
     void moveShoulder(const Point& shoulder);
