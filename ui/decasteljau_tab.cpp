@@ -333,7 +333,10 @@ void DeCasteljauTab::buildLayers()
         for (int r = 1; r < n; ++r) {
             const auto& level = m_levels.levels[static_cast<std::size_t>(r)];
             const QColor c = CanvasStyle::series(r);
-            p.setPen(QPen(c, style.thinLine() * 1.4));
+            // Beyond degree 10 the levels crowd each other: hairlines keep them apart, and a
+            // one-pixel line is drawn by Qt's fast stroker — a 1.4 px one costs the outline
+            // of every segment, three quarters of a frame at degree 30.
+            p.setPen(QPen(c, style.thinLine() * (n > 10 ? 1.0 : 1.4)));
             p.setBrush(Qt::NoBrush);
             p.drawPath(polylinePath(level, view));
             // All the level's points as one path: one fill and one stroke instead of one per

@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# Every speed target of the project measured in one run, the seed's own program (Annex II
+# as Java, SeedFrog.java) as the baseline in the same run; prints the README's table.
+#   bash tests/benchmarks/targets.sh [BUILD_DIR] [PATH/TO/SeedFrog.java]
+# Timings are medians of three repetitions (Google Benchmark) on whatever else the machine
+# is doing: compare the ratios, not the absolute numbers of two different runs.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+build="${1:-build}"
+seed_java="${2:-../shared/reference/SeedFrog.java}"
+export QT_QPA_PLATFORM=offscreen
+
+bench() { # filter → median real time in the unit asked for
+  "$build/bin/granota-bench" --benchmark_filter="$1" --benchmark_repetitions=3 \
+    --benchmark_report_aggregates_only=true --benchmark_format=json 2>/dev/null |
+    python3 -c 'import json,sys; d=json.load(sys.stdin)
+scale={"ns":1,"us":1e3,"ms":1e6,"s":1e9}
+for b in d["benchmarks"]:
+    if b.get("aggregate_name")=="median": print(b["real_time"]*scale[b["time_unit"]]/scale[sys.argv[1]]); break' "$2"
+}
+
+mkdir -p "$build/seedfrog"
+javac -d "$build/seedfrog" "$seed_java"
+java_ns=$(for i in 1 2 3; do java -cp "$build/seedfrog" SeedFrog 2000000; done |
+  sed -n 's/.*ns_per_frog_step=\([0-9.]*\).*/\1/p' | sort -n | sed -n 2p)
+seed_ns=$(bench 'BM_FrogStep/seed$' ns)
+stable_us=$(bench 'BM_FrogStep/stable$' us)
+pile_ms=$(bench 'BM_ManyBodiesPile/1000$' ms)
+spread_ms=$(bench 'BM_ManyBodiesSpread/1000$' ms)
+outline_us=$(bench 'BM_OutlineFit/3$' us)
+fit_ms=$(bench 'BM_FitBezier/1000000/10$' ms)
+drag_ms=$(bench 'BM_GuiDragDegree30/1$' ms)
+frogs_ms=$(bench 'BM_GuiFrog200$' ms)
+
+python3 - "$java_ns" "$seed_ns" "$stable_us" "$pile_ms" "$spread_ms" "$outline_us" "$fit_ms" "$drag_ms" "$frogs_ms" <<'PY'
+import sys, platform, subprocess
+java, seed, stable, pile, spread, outline, fit, drag, frogs = map(float, sys.argv[1:])
+cpu = next((l.split(':',1)[1].strip() for l in open('/proc/cpuinfo') if l.startswith('model name')), '?')
+print(f"Machine: {cpu}, {subprocess.check_output(['nproc']).decode().strip()} cores; release build.\n")
+print("| target | measured | goal | met |")
+print("|---|---|---|---|")
+rows = [
+  ("`seed` frog step vs `java SeedFrog` (same run)", f"{seed:.0f} ns vs {java:.0f} ns: **{java/seed:.1f}×**", "≥ 20×", java/seed >= 20),
+  ("1000 colliding frogs, `stable`, piled", f"{pile:.1f} ms/step", "≤ 16 ms, one core", pile <= 16),
+  ("1000 frogs, `stable`, spread", f"{spread:.1f} ms/step", "≤ 16 ms, one core", spread <= 16),
+  ("per-frame least-squares fit of the outline (§4.9)", f"{outline:.2f} µs", "< 5 µs", outline < 5),
+  ("degree-10 fit of 10⁶ points", f"{fit:.0f} ms", "< 100 ms", fit < 100),
+  ("drag on a degree-30 curve: recompute + repaint", f"{drag:.1f} ms", "< 16.7 ms (one frame)", drag < 16.7),
+  ("200 frogs on the canvas: step + paint", f"{frogs:.1f} ms", "< 16.7 ms (60 fps)", frogs < 16.7),
+  ("one `stable` frog step", f"{stable:.1f} µs", "—", True),
+]
+for name, got, goal, ok in rows:
+    print(f"| {name} | {got} | {goal} | {'yes' if ok else 'no'} |")
+PY
