@@ -6,11 +6,9 @@
 namespace granota {
 
 template <class R>
-SeedFrog<R>::SeedFrog(SeedBody<R> body, std::vector<SeedLeg<R>> legs, const Vec& centre)
-    : m_body(std::move(body)), m_legs(std::move(legs)), m_shoulderX(Lanes<R>::splat(centre.x)),
-      m_shoulderY(Lanes<R>::splat(centre.y))
+SeedFrog<R>::SeedFrog(SeedBody<R> body, std::vector<SeedLeg<R>> legs)
+    : m_body(std::move(body)), m_legs(std::move(legs))
 {
-    m_shoulders.fill(centre);
     if (!m_legs.empty()) {
         const SeedLeg<R>* in[4];
         for (std::size_t i = 0; i < 4; ++i)
@@ -45,7 +43,7 @@ template <class R> Expected<SeedFrog<R>> SeedFrog<R>::create(const FrogParams& p
             legs.push_back(std::move(leg).value());
         }
     }
-    return SeedFrog(std::move(body).value(), std::move(legs), centre);
+    return SeedFrog(std::move(body).value(), std::move(legs));
 }
 
 template <class R> void SeedFrog<R>::step()
@@ -71,11 +69,9 @@ template <class R> void SeedFrog<R>::step()
         const L q = L::set(c[v2], c[v2], c[v6], c[v4]);
         return a + (p - q) / d * s;
     };
-    m_shoulderX = shoulder(x);
-    m_shoulderY = shoulder(y);
     // Annex II steps the legs one after the other (dd, dr, ed, er); they do not act on
     // each other, so all four go at once, one per SIMD lane (SeedLegLanes).
-    m_legLanes.moveShoulders(m_shoulderX, m_shoulderY);
+    m_legLanes.moveShoulders(shoulder(x), shoulder(y));
     m_legLanes.step();
     m_legsStale = true;
 }
@@ -86,11 +82,6 @@ template <class R> void SeedFrog<R>::syncLegs() const
     for (std::size_t i = 0; i < m_legs.size() && i < 4; ++i)
         out[i] = &m_legs[i];
     m_legLanes.store(out);
-    R sx[kSeedLanes], sy[kSeedLanes];
-    m_shoulderX.store(sx);
-    m_shoulderY.store(sy);
-    for (std::size_t i = 0; i < 4; ++i)
-        m_shoulders[i] = Vec(sx[i], sy[i]);
     m_legsStale = false;
 }
 

@@ -4,8 +4,8 @@
 /// SeedLegs whose shoulders are recomputed from the body after every body step. The legs
 /// hang from the body but do not act on it (the seed has no feedback from legs to body),
 /// so the body of a frog moves exactly as a lone SeedBody. The four legs are kept side by
-/// side in SIMD lanes (core/seed_leg_lanes.h); legs() and shoulders() are refreshed from
-/// them when read.
+/// side in SIMD lanes (core/seed_leg_lanes.h); legs() is refreshed from them when read
+/// (each leg's shoulder() is where it was attached in the last step).
 
 #include "core/seed_body.h"
 #include "core/seed_leg.h"
@@ -43,13 +43,6 @@ public:
             syncLegs();
         return m_legs;
     }
-    /// Where the four legs were attached in the last step (the centre before the first).
-    const std::array<Vec, 4>& shoulders() const
-    {
-        if (m_legsStale)
-            syncLegs();
-        return m_shoulders;
-    }
 
     /// The sketch's mouse and space-bar handlers (see SeedBody): they act on the body only;
     /// a respawn leaves the legs where they are, and they follow at the next step.
@@ -63,14 +56,12 @@ public:
     SeedComponents components() const { return m_body.components(); }
 
 private:
-    SeedFrog(SeedBody<R> body, std::vector<SeedLeg<R>> legs, const Vec& centre);
-    void syncLegs() const; // m_legs and m_shoulders from m_legLanes
+    SeedFrog(SeedBody<R> body, std::vector<SeedLeg<R>> legs);
+    void syncLegs() const; // m_legs from m_legLanes
 
     SeedBody<R> m_body;
     SeedLegLanes<R> m_legLanes;            // the legs between steps
     mutable std::vector<SeedLeg<R>> m_legs; // stale after a step until asked for
-    Lanes<R> m_shoulderX, m_shoulderY;      // the shoulders of the last step, one leg per lane
-    mutable std::array<Vec, 4> m_shoulders;
     mutable bool m_legsStale = false;
     std::array<int, 6> m_attach{}; // the seed's vertices 2, 3, 4, 6, 7, 8 for this N
 };
