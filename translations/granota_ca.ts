@@ -904,7 +904,7 @@
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="552" />
             <source>The exact polynomials need control points that are small fractions: type them in the table (1/3 is accepted) or turn on Snap to grid.</source>
-            <translation>Els polinomis exactes necessiten punts de control que siguin fraccions petites: escriviu-los a la taula (s'accepta 1/3) o activeu Ajusta a la graella.</translation>
+            <translation>Els polinomis exactes necessiten punts de control que siguin fraccions petites: escriviu-los a la taula (s'accepta 1/3) o activeu Ajusta a la quadrícula.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="557" />
@@ -1006,7 +1006,7 @@
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="678" />
             <source>Round dragged and added points to the grid, so that they stay small fractions and the exact tables appear.</source>
-            <translation>Arrodoneix a la graella els punts arrossegats i afegits, perquè continuïn sent fraccions petites i apareguin les taules exactes.</translation>
+            <translation>Arrodoneix a la quadrícula els punts arrossegats i afegits, perquè continuïn sent fraccions petites i apareguin les taules exactes.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="680" />
