@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 
+#include <cstddef>
 #include <vector>
 
 namespace granota {
@@ -18,14 +19,16 @@ public:
     BernsteinBlock(int n, int maxRows);
     /// B_j^n(t_i) for i < rows, j ≤ n: the top `rows` rows of the returned matrix.
     const Eigen::MatrixXd& fill(const double* t, int rows);
+    /// The same values written column by column: B_j^n(t_i) at out[j·stride + i]
+    /// (rows ≤ maxRows ≤ stride).
+    void fillInto(const double* t, int rows, double* out, std::size_t stride);
     int degree() const { return m_n; }
 
 private:
     int m_n;
     std::vector<double> m_binomial;
-    Eigen::MatrixXd m_values;  ///< maxRows × (n+1)
-    Eigen::MatrixXd m_uPowers; ///< maxRows × (n+1): (1−t)^e in column e
-    Eigen::ArrayXd m_t, m_tPower;
+    Eigen::MatrixXd m_values; ///< maxRows × (n+1)
+    std::vector<double> m_power; ///< maxRows: t^j, then (1 − t)^(n−j), row by row
 };
 
 } // namespace granota

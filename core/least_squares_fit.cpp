@@ -66,12 +66,19 @@ std::vector<Point> derivativePoints(const std::vector<Point>& P)
     return d;
 }
 
-template <class S> int countDistinct(std::vector<S> t)
+template <class S> int countDistinct(const std::vector<S>& t)
 {
-    // Parameters are usually increasing already (uniform, chord, centripetal): no sort then.
-    if (!std::is_sorted(t.begin(), t.end()))
-        std::sort(t.begin(), t.end());
-    return static_cast<int>(std::unique(t.begin(), t.end()) - t.begin());
+    // Parameters are usually increasing already (uniform, chord, centripetal): counted
+    // where they change, without a copy.
+    if (std::is_sorted(t.begin(), t.end())) {
+        int count = t.empty() ? 0 : 1;
+        for (std::size_t i = 1; i < t.size(); ++i)
+            count += t[i] != t[i - 1] ? 1 : 0;
+        return count;
+    }
+    std::vector<S> sorted = t;
+    std::sort(sorted.begin(), sorted.end());
+    return static_cast<int>(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
 }
 
 std::string sci(double v)
@@ -118,10 +125,16 @@ struct Solution {
 };
 
 /// Solves min ‖MP − Q‖ for M = bernsteinMatrix(t, n) with the chosen solver.
-Expected<Solution> solve(const Eigen::MatrixX2d& Q, const std::vector<double>& t, int n, LeastSquaresSolver solver)
+Expected<Solution> solve(const ScaledPoints& data, const std::vector<double>& t, int n, LeastSquaresSolver solver)
 {
     const Eigen::Index m = n + 1;
-    const int distinct = countDistinct(t);
+    // How many t_i differ: only needed to explain a singular or rank-deficient M.
+    std::optional<int> distinctCount;
+    const auto distinct = [&] {
+        if (!distinctCount)
+            distinctCount = countDistinct(t);
+        return *distinctCount;
+    };
 
     Eigen::MatrixXd R; // upper triangular, M = QR (so cond₂(M) = cond₂(R))
     Eigen::MatrixXd c; // (QᵀQ_data) rows 0..n: the least-squares problem is R P = c
@@ -129,17 +142,20 @@ Expected<Solution> solve(const Eigen::MatrixX2d& Q, const std::vector<double>& t
     Eigen::MatrixXd MtM, MtQ;
     if (solver != LeastSquaresSolver::Normal && t.size() >= kTallSkinnyRows) {
         // Many points: QR of [M | Q] a block at a time, M never formed (tall_skinny_qr.h).
-        const Eigen::MatrixXd r = tallSkinnyQr(t, Q, n);
+        const Eigen::MatrixXd r = tallSkinnyQr(t, data, n);
         R = r.topLeftCorner(m, m);
         c = r.topRightCorner(m, 2);
         sse = r.bottomRightCorner(2, 2).squaredNorm();
     } else {
+        Eigen::MatrixX2d Q(static_cast<Eigen::Index>(data.count), 2);
+        for (std::size_t i = 0; i < data.count; ++i)
+            Q.row(static_cast<Eigen::Index>(i)) << data.x(i), data.y(i);
         Eigen::MatrixXd M = bernsteinMatrix(t, n);
         // The thesis's normal equations MᵀM P = MᵀQ (Prop 2.2) need M before it is factorised.
         if (solver == LeastSquaresSolver::Normal) {
-            if (distinct < m)
+            if (distinct() < m)
                 return makeError(ErrorCode::Singular,
-                                 "the normal equations MᵀM P = MᵀQ have no unique solution: only " + std::to_string(distinct)
+                                 "the normal equations MᵀM P = MᵀQ have no unique solution: only " + std::to_string(distinct())
                                      + " of the parameters t_i are distinct and Lemma 2.2 needs n + 1 = " + std::to_string(m)
                                      + " (coincident points?). Lower the degree or use the qr or svd solver.");
             MtM = M.transpose() * M;
@@ -190,8 +206,9 @@ Expected<Solution> solve(const Eigen::MatrixX2d& Q, const std::vector<double>& t
             rank = svd.rank();
         }
         if (rank < m) {
-            const std::string what = distinct < m ? "M is rank deficient (rank " : "M is numerically rank deficient (rank ";
-            const std::string why = distinct < m ? "only " + std::to_string(distinct)
+            const bool repeated = distinct() < m;
+            const std::string what = repeated ? "M is rank deficient (rank " : "M is numerically rank deficient (rank ";
+            const std::string why = repeated ? "only " + std::to_string(distinct())
                                                        + " of the parameters t_i are distinct (coincident points?)"
                                                  : "cond₂(M) ≈ " + sci(s.cond);
             s.warnings.push_back(what + std::to_string(rank) + " < n + 1 = " + std::to_string(m) + ": " + why
@@ -334,13 +351,9 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
     const Point centre(0.5 * minX + 0.5 * maxX, 0.5 * minY + 0.5 * maxY);
     const double halfSize = std::max(0.5 * maxX - 0.5 * minX, 0.5 * maxY - 0.5 * minY);
     const double scale = halfSize > 0 && std::isfinite(halfSize) ? halfSize : 1.0;
-    Eigen::MatrixX2d Q(static_cast<Eigen::Index>(q.size()), 2);
-    for (std::size_t i = 0; i < q.size(); ++i) {
-        Q(static_cast<Eigen::Index>(i), 0) = (q[i].x - centre.x) / scale;
-        Q(static_cast<Eigen::Index>(i), 1) = (q[i].y - centre.y) / scale;
-    }
+    const ScaledPoints data{q.data(), q.size(), centre, scale};
 
-    Expected<Solution> first = solve(Q, t, n, options.solver);
+    Expected<Solution> first = solve(data, t, n, options.solver);
     if (!first)
         return first.error();
     Solution best = std::move(first).value();
@@ -351,11 +364,11 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
     if (options.correctParameters && n > 0) {
         std::vector<Point> local(q.size());
         for (std::size_t i = 0; i < q.size(); ++i)
-            local[i] = Point(Q(static_cast<Eigen::Index>(i), 0), Q(static_cast<Eigen::Index>(i), 1));
+            local[i] = Point(data.x(i), data.y(i));
         bestSse = best.sse >= 0 ? best.sse : sumOfSquares(local, best.P, t);
         for (int iteration = 0; iteration < options.maxCorrections && bestSse > 0; ++iteration) {
             std::vector<double> corrected = project(local, best.P, t);
-            Expected<Solution> next = solve(Q, corrected, n, options.solver);
+            Expected<Solution> next = solve(data, corrected, n, options.solver);
             if (!next) {
                 result.warnings.push_back("parameter correction stopped: " + next.error().message);
                 break;
@@ -387,22 +400,31 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
         double sse = 0, maxSquared = 0;
     };
     auto residuals = [&](std::size_t first, std::size_t last) {
-        constexpr int kBlock = 1024;
+        constexpr int kBlock = 512;
+        const std::size_t m = best.P.size();
         BernsteinBlock bernstein(n, kBlock);
-        Eigen::MatrixX2d P(static_cast<Eigen::Index>(best.P.size()), 2), alpha(kBlock, 2);
-        for (std::size_t j = 0; j < best.P.size(); ++j)
-            P.row(static_cast<Eigen::Index>(j)) << best.P[j].x, best.P[j].y;
+        std::vector<double> b(m * kBlock), alphaX(kBlock), alphaY(kBlock);
         Partial part;
         for (std::size_t s = first; s < last; s += kBlock) {
             const int rows = static_cast<int>(std::min<std::size_t>(kBlock, last - s));
-            alpha.topRows(rows).noalias() = bernstein.fill(t.data() + s, rows).topRows(rows) * P;
+            bernstein.fillInto(t.data() + s, rows, b.data(), kBlock);
+            std::fill(alphaX.begin(), alphaX.begin() + rows, 0.0);
+            std::fill(alphaY.begin(), alphaY.begin() + rows, 0.0);
+            for (std::size_t j = 0; j < m; ++j) {
+                const double* const bj = b.data() + j * kBlock;
+                const double px = best.P[j].x, py = best.P[j].y;
+                for (int i = 0; i < rows; ++i) {
+                    alphaX[static_cast<std::size_t>(i)] += bj[i] * px;
+                    alphaY[static_cast<std::size_t>(i)] += bj[i] * py;
+                }
+            }
             for (int i = 0; i < rows; ++i) {
-                const Eigen::Index k = static_cast<Eigen::Index>(s) + i;
-                const Point r(Q(k, 0) - alpha(i, 0), Q(k, 1) - alpha(i, 1));
+                const std::size_t k = s + static_cast<std::size_t>(i);
+                const Point r(data.x(k) - alphaX[static_cast<std::size_t>(i)], data.y(k) - alphaY[static_cast<std::size_t>(i)]);
                 const double r2 = dot(r, r);
                 part.sse += r2;
                 part.maxSquared = std::max(part.maxSquared, r2);
-                result.residuals[static_cast<std::size_t>(k)] = scale * r;
+                result.residuals[k] = scale * r;
             }
         }
         return part;

@@ -93,6 +93,38 @@ private slots:
         }
     }
 
+    void blockedQrHandlesZeroColumnsAndRaggedBlocks()
+    {
+        // The first 600 parameters are 0, so whole blocks have B_j(0) = 0 for j ≥ 1 (no
+        // reflector to apply in those columns), and 1003 rows end in a block whose row count
+        // is not a multiple of four (padded with zero rows).
+        const int k = 1003, n = 4;
+        std::vector<double> t(static_cast<std::size_t>(k), 0.0);
+        for (int i = 600; i < k; ++i)
+            t[static_cast<std::size_t>(i)] = (i - 599) / double(k - 599);
+        const auto q = curvePoints(kControl, t, 0.3);
+        Eigen::MatrixX2d Q(k, 2);
+        for (int i = 0; i < k; ++i)
+            Q.row(i) << q[static_cast<std::size_t>(i)].x, q[static_cast<std::size_t>(i)].y;
+        const Eigen::MatrixXd r = tallSkinnyQr(t, Q, n);
+        Eigen::MatrixXd A(k, n + 3);
+        A << bernsteinMatrix(t, n), Q;
+        const Eigen::MatrixXd gram = A.transpose() * A;
+        const double error = (r.transpose() * r - gram).norm() / gram.norm();
+        QVERIFY2(error < 1e-13, qPrintable(QString::number(error)));
+        QVERIFY(r.allFinite());
+        QVERIFY(r.isUpperTriangular(0));
+        // The same rows read from points through a centre and a scale give the R of the
+        // transformed data, column by column.
+        const ScaledPoints scaled{q.data(), q.size(), Point(2, -1), 4};
+        const Eigen::MatrixXd rs = tallSkinnyQr(t, scaled, n);
+        Eigen::MatrixXd As = A;
+        for (int i = 0; i < k; ++i)
+            As.row(i).tail(2) << scaled.x(static_cast<std::size_t>(i)), scaled.y(static_cast<std::size_t>(i));
+        const Eigen::MatrixXd gramS = As.transpose() * As;
+        QVERIFY((rs.transpose() * rs - gramS).norm() < 1e-13 * gramS.norm());
+    }
+
     void manyPointsGiveTheKnownCurveBack()
     {
         const int k = 300000; // beyond kTallSkinnyRows and kParallel: every new path
