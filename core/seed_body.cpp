@@ -2,6 +2,7 @@
 
 #include "core/point_in_polygon.h"
 #include "core/seed_lanes.h"
+#include "core/seed_leg_lanes.h"
 
 #include <algorithm>
 #include <limits>
@@ -230,15 +231,21 @@ template <class R> void SeedBody<R>::step()
 {
     // A body of up to 12 vertices (the frog has 11) takes a step whose loops have a fixed
     // number of packs, unrolled by the compiler; the operations are the same.
+    NothingAlong nothing;
+    stepWith(nothing);
+}
+
+template <class R> template <class Along> void SeedBody<R>::stepWith(Along& along)
+{
     switch ((m_n + kSeedLanes) / kSeedLanes) {
-    case 1: stepPacks<1>(); break;
-    case 2: stepPacks<2>(); break;
-    case 3: stepPacks<3>(); break;
-    default: stepPacks<0>(); break;
+    case 1: stepPacks<1>(along); break;
+    case 2: stepPacks<2>(along); break;
+    case 3: stepPacks<3>(along); break;
+    default: stepPacks<0>(along); break;
     }
 }
 
-template <class R> template <int Packs> void SeedBody<R>::stepPacks()
+template <class R> template <int Packs, class Along> void SeedBody<R>::stepPacks(Along& along)
 {
     // Annex II, Poligon.actualitza, as SeedFrog.java runs it. The same operations in the
     // same order on every vertex, four vertices at a time (core/seed_lanes.h); what the
@@ -269,6 +276,8 @@ template <class R> template <int Packs> void SeedBody<R>::stepPacks()
     const auto isLast = [&](int i) { return eq(lanePos + L::splat(R(i)), lastVertex); };
     m_vertStale = true;
 
+    // The other computation's parts go in before each part of this step (SeedBody::stepWith).
+    along.run(0);
     // §4.6: Verlet first, for every vertex including the copy N (SeedVertex::verlet):
     // x' = x + f∘(x − x_prev) + g, clamped to x ± velmax.
     {
@@ -289,6 +298,7 @@ template <class R> template <int Packs> void SeedBody<R>::stepPacks()
     // grab's anchors: counted here rather than summed in floats (small integers, exact).
     int numAll = 0;
 
+    along.run(1);
     // §4.4: springs. Each edge i → i+1 proposes targets at distance molls[i]/2 either
     // side of its midpoint: punt_a[i] for vertex i and punt_b[i+1] for vertex i+1 (kept
     // at index i, by edge).
@@ -309,6 +319,7 @@ template <class R> template <int Packs> void SeedBody<R>::stepPacks()
             (migx - halfSpring * dx).store(bx + i);
             (migy - halfSpring * dy).store(by + i);
         }
+        along.run(2);
         // "Apliquem les correccions 5 voltes": the positions do not change between the
         // passes, so each pass adds the same two corrections again (rounded each time, so
         // the five passes stay five). `punt_a[i] != vert[i].posicio` compares Java
@@ -335,6 +346,7 @@ template <class R> template <int Packs> void SeedBody<R>::stepPacks()
         }
         numAll = 10;
     } else {
+        along.run(2);
         for (int i = 0; i < end; i += kSeedLanes) {
             zero.store(cx + i);
             zero.store(cy + i);
@@ -356,6 +368,7 @@ template <class R> template <int Packs> void SeedBody<R>::stepPacks()
         }
     }
 
+    along.run(3);
     // Annex II, calculaarea (§4.5): the trapezoids L·W of the edges side by side, then
     // summed one after the other in the seed's order (a sum's rounding depends on it).
     {
@@ -372,6 +385,7 @@ template <class R> template <int Packs> void SeedBody<R>::stepPacks()
         m_aloc = area;
     }
 
+    along.run(4);
     // §4.5: area. F = C·(A_target − A)/N pushes every vertex along the normal of the chord
     // between its neighbours, five times. SeedFrog.java (and the reference trace) applies
     // the correction of vertices 0 and N inside the five passes, both with the normal of
@@ -433,6 +447,7 @@ template <class R> template <int Packs> void SeedBody<R>::stepPacks()
         }
     }
 
+    along.run(5);
     // The average of the corrections of each vertex, clamped per axis to ±velmax, then
     // §4.2's frame: only the current position is clamped (fita, not fitaant). The count is
     // the same float num_correccions the seed divides by.
@@ -566,5 +581,7 @@ template <class R> std::vector<Point> SeedBody<R>::previousVertices() const
 
 template class SeedBody<float>;
 template class SeedBody<double>;
+template void SeedBody<float>::stepWith(SeedLegLanes<float>::Step&);
+template void SeedBody<double>::stepWith(SeedLegLanes<double>::Step&);
 
 } // namespace granota

@@ -128,6 +128,11 @@ public:
 
     /// Annex II, Poligon.actualitza: one frame (Verlet, springs, anchors, area, clamps).
     void step();
+    /// step() with another computation's six parts, along.run(0) … along.run(5), run
+    /// between its own: the processor then works on both at once (the frog's legs, whose
+    /// chains of square roots and divisions would otherwise leave it waiting). `along` may
+    /// not touch this body. Instantiated for SeedLegLanes<R>::Step.
+    template <class Along> void stepWith(Along& along);
 
     /// mousePressed + mantindreagafat: grabs the body if `mouse` (clamped to the frame) is
     /// inside it and it is not held already. Returns whether it is now held by this press.
@@ -180,7 +185,10 @@ public:
 private:
     SeedBody(const FrogParams& params, SeedComponents components);
     // step() with a fixed number of packs of lanes (0: as many as the body needs).
-    template <int Packs> void stepPacks();
+    template <int Packs, class Along> void stepPacks(Along& along);
+    struct NothingAlong {
+        void run(int) {}
+    };
     void holdAt(const Vec& clau); // mantindreagafat
     void finishInitialise();      // the end of inicialitza, shared by both rest shapes
     Vec clampMouse(const Point& p) const;

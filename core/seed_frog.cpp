@@ -48,9 +48,18 @@ template <class R> Expected<SeedFrog<R>> SeedFrog<R>::create(const FrogParams& p
 
 template <class R> void SeedFrog<R>::step()
 {
-    m_body.step();
-    if (m_legs.empty())
+    if (m_legs.empty()) {
+        m_body.step();
         return;
+    }
+    // The legs' step owed from the last call (see seed_frog.h) goes between the parts of
+    // this body step: the legs follow the body of the last step, which is done.
+    if (m_legsOwed) {
+        typename SeedLegLanes<R>::Step legs(m_legLanes);
+        m_body.stepWith(legs);
+    } else {
+        m_body.step();
+    }
     // Annex II, Granota.actualitza: the front legs sit on the chord v2–v8, a fifth of the
     // way in from each end; the back legs at the midpoints of the edges v3–v4 and v6–v7:
     //   front right v8 − (v8 − v2)/5, front left v2 + (v8 − v2)/5,
@@ -72,12 +81,21 @@ template <class R> void SeedFrog<R>::step()
     // Annex II steps the legs one after the other (dd, dr, ed, er); they do not act on
     // each other, so all four go at once, one per SIMD lane (SeedLegLanes).
     m_legLanes.moveShoulders(shoulder(x), shoulder(y));
-    m_legLanes.step();
+    m_legsOwed = true;
     m_legsStale = true;
+}
+
+template <class R> void SeedFrog<R>::settleLegs() const
+{
+    if (m_legsOwed) {
+        m_legLanes.step();
+        m_legsOwed = false;
+    }
 }
 
 template <class R> void SeedFrog<R>::syncLegs() const
 {
+    settleLegs();
     SeedLeg<R>* out[4];
     for (std::size_t i = 0; i < m_legs.size() && i < 4; ++i)
         out[i] = &m_legs[i];

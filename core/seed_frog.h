@@ -6,6 +6,12 @@
 /// so the body of a frog moves exactly as a lone SeedBody. The four legs are kept side by
 /// side in SIMD lanes (core/seed_leg_lanes.h); legs() is refreshed from them when read
 /// (each leg's shoulder() is where it was attached in the last step).
+///
+/// The legs' part of a step waits for the body's, and the body's next step does not wait
+/// for the legs. So step() leaves the legs' step owed, with their shoulders set, and pays
+/// it inside the next step(), between the parts of the body's step (SeedBody::stepWith):
+/// the processor works on both chains at once. legs() pays what is owed before it
+/// answers, so what anyone reads is exactly Annex II's frog after each step.
 
 #include "core/seed_body.h"
 #include "core/seed_leg.h"
@@ -57,10 +63,12 @@ public:
 
 private:
     SeedFrog(SeedBody<R> body, std::vector<SeedLeg<R>> legs);
-    void syncLegs() const; // m_legs from m_legLanes
+    void syncLegs() const;   // m_legs from m_legLanes
+    void settleLegs() const; // the owed legs' step, if any
 
     SeedBody<R> m_body;
-    SeedLegLanes<R> m_legLanes;            // the legs between steps
+    mutable SeedLegLanes<R> m_legLanes;    // the legs between steps
+    mutable bool m_legsOwed = false;       // m_legLanes is one step behind (shoulders set)
     mutable std::vector<SeedLeg<R>> m_legs; // stale after a step until asked for
     mutable bool m_legsStale = false;
     std::array<int, 6> m_attach{}; // the seed's vertices 2, 3, 4, 6, 7, 8 for this N

@@ -365,6 +365,29 @@ private slots:
         QVERIFY(scriptedRun<float>() != scriptedRun<double>());
     }
 
+    void legsReadNowAndThen()
+    {
+        // The frog pays the legs' step inside its next step unless the legs are read in
+        // between (seed_frog.h). Read only now and then, over a grab, a drag, a respawn and
+        // the reference trace's 600 steps, it gives the very same numbers as when read
+        // after every step, and the reference trace at the steps read.
+        legsReadNowAndThenIn<float>();
+        legsReadNowAndThenIn<double>();
+        const SeedTrace trace = loadTrace("seed_frog_trace.csv");
+        auto frog = SeedFrog<float>::create(FrogParams{}).value();
+        for (int s = 1; s <= 600; ++s) {
+            frog.step();
+            if (s % 97 != 0 && s != 600)
+                continue;
+            const std::vector<double> ours = state(frog);
+            const std::vector<double>& row = trace.rows[std::size_t(s)];
+            QCOMPARE(row.size(), ours.size() + 1);
+            for (std::size_t k = 0; k < ours.size(); ++k)
+                QVERIFY2(std::abs(ours[k] - double(float(row[k + 1]))) <= kFloatLegTolerance,
+                         qPrintable(QStringLiteral("step %1, column %2").arg(s).arg(k + 1)));
+        }
+    }
+
     // --- Extreme settings (SPEC §3) -----------------------------------------------------
 
     void extremeSettings_data()
@@ -839,6 +862,34 @@ private:
             out += seedTraceRow(s, frog) + "\n";
         }
         return out;
+    }
+
+    template <class R> static void legsReadNowAndThenIn()
+    {
+        auto everyStep = SeedFrog<R>::create(FrogParams{}).value();
+        auto nowAndThen = everyStep;
+        const auto both = [&](auto&& action) {
+            action(everyStep);
+            action(nowAndThen);
+        };
+        for (int s = 1; s <= 600; ++s) {
+            if (s == 150)
+                both([](SeedFrog<R>& f) { f.press(centroid(f.body())); });
+            if (s > 150 && s < 250)
+                both([s](SeedFrog<R>& f) { f.move(Point{640 - 2.0 * (s - 150), 660 - 4.0 * (s - 150)}); });
+            if (s == 300)
+                both([](SeedFrog<R>& f) { f.release(); });
+            if (s == 400)
+                both([](SeedFrog<R>& f) { f.respawn(Point{900, 300}); });
+            if (s == 450)
+                both([](SeedFrog<R>& f) { f.releaseSpawn(); });
+            both([](SeedFrog<R>& f) { f.step(); });
+            const std::vector<double> every = state(everyStep);
+            if (s % 61 == 0 || s == 600) {
+                const std::vector<double> sometimes = state(nowAndThen);
+                QVERIFY2(every == sometimes, qPrintable(QStringLiteral("step %1").arg(s)));
+            }
+        }
     }
 
     template <class R> static void grabFollowsTheMouseIn()
