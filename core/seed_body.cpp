@@ -274,6 +274,9 @@ template <class R> template <int Packs, class Along> void SeedBody<R>::stepPacks
     // The lanes of vertex N, the seed's copy of vertex 0, in the pack starting at i.
     const L lanePos = L::set(R(0), R(1), R(2), R(3)), lastVertex = L::splat(R(N));
     const auto isLast = [&](int i) { return eq(lanePos + L::splat(R(i)), lastVertex); };
+    // Whether the pack starting at i holds vertex N: one pack does, so the lanes of the
+    // others need no mask (a branch the processor predicts instead of a select per lane).
+    const auto holdsLast = [N](int i) { return i <= N && N < i + kSeedLanes; };
     m_vertStale = true;
 
     // The other computation's parts go in before each part of this step (SeedBody::stepWith).
@@ -328,9 +331,12 @@ template <class R> template <int Packs, class Along> void SeedBody<R>::stepPacks
         L pbx = L::splat(bx[N - 1]), pby = L::splat(by[N - 1]); // the pack before: edge N − 1 last
         for (int i = 0; i < end; i += kSeedLanes) {
             const L x0 = L::load(x + i), y0 = L::load(y + i);
-            const auto last = isLast(i);
-            const L tax = select(last, L::splat(ax[0]), L::load(ax + i));
-            const L tay = select(last, L::splat(ay[0]), L::load(ay + i));
+            L tax = L::load(ax + i), tay = L::load(ay + i);
+            if (holdsLast(i)) {
+                const auto last = isLast(i);
+                tax = select(last, L::splat(ax[0]), tax);
+                tay = select(last, L::splat(ay[0]), tay);
+            }
             const L ebx = L::load(bx + i), eby = L::load(by + i);
             const L tbx = previousLanes(pbx, ebx), tby = previousLanes(pby, eby);
             pbx = ebx, pby = eby;
@@ -404,10 +410,13 @@ template <class R> template <int Packs, class Along> void SeedBody<R>::stepPacks
         L prevX = L::splat(x[N - 1]), prevY = L::splat(y[N - 1]); // the pack before: N − 1 last
         for (int i = 0; i < end; i += kSeedLanes) {
             const L x0 = L::load(x + i), y0 = L::load(y + i);
-            const auto last = isLast(i);
             const L beforeX = previousLanes(prevX, x0), beforeY = previousLanes(prevY, y0);
-            const L nextX = select(last, L::splat(x[1]), nextLanes(x0, L::load(x + i + kSeedLanes)));
-            const L nextY = select(last, L::splat(y[1]), nextLanes(y0, L::load(y + i + kSeedLanes)));
+            L nextX = nextLanes(x0, L::load(x + i + kSeedLanes)), nextY = nextLanes(y0, L::load(y + i + kSeedLanes));
+            if (holdsLast(i)) {
+                const auto last = isLast(i);
+                nextX = select(last, L::splat(x[1]), nextX);
+                nextY = select(last, L::splat(y[1]), nextY);
+            }
             prevX = x0, prevY = y0;
             // The normal (next.y − before.y, −next.x + before.x); −a + b is b − a exactly.
             L nx = nextY - beforeY;

@@ -73,9 +73,9 @@ template <class R> void SeedFrog<R>::step()
               v8 = m_attach[5];
     const L d = L::set(R(5), R(5), R(2), R(2)), s = L::set(R(-1), R(1), R(1), R(1));
     const auto shoulder = [&](const R* c) {
-        const L a = L::set(c[v8], c[v2], c[v6], c[v4]);
         const L p = L::set(c[v8], c[v8], c[v7], c[v3]);
         const L q = L::set(c[v2], c[v2], c[v6], c[v4]);
+        const L a = firstLaneFrom(q, p); // (v8, v2, v6, v4)
         return a + (p - q) / d * s;
     };
     // Annex II steps the legs one after the other (dd, dr, ed, er); they do not act on

@@ -116,6 +116,8 @@ template <class R> struct Lanes {
     friend Lanes nextLanes(const Lanes& a, const Lanes& b) { return Lanes{{a.v[1], a.v[2], a.v[3], b.v[0]}}; }
     /// (a3, b0, b1, b2): element i − 1 for each lane i of b, when a holds the four before.
     friend Lanes previousLanes(const Lanes& a, const Lanes& b) { return Lanes{{a.v[3], b.v[0], b.v[1], b.v[2]}}; }
+    /// (b0, a1, a2, a3): a with its first lane taken from b.
+    friend Lanes firstLaneFrom(const Lanes& a, const Lanes& b) { return Lanes{{b.v[0], a.v[1], a.v[2], a.v[3]}}; }
 };
 
 #ifdef GRANOTA_SEED_SSE2
@@ -166,6 +168,7 @@ template <> struct Lanes<float> {
         const __m128 t = _mm_shuffle_ps(a.v, b.v, _MM_SHUFFLE(0, 0, 3, 3)); // (a3, a3, b0, b0)
         return {_mm_shuffle_ps(t, b.v, _MM_SHUFFLE(2, 1, 2, 0))};
     }
+    friend Lanes firstLaneFrom(const Lanes& a, const Lanes& b) { return {_mm_move_ss(a.v, b.v)}; }
 };
 #endif
 
