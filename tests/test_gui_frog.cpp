@@ -2,6 +2,7 @@
 // mouse and key events, the scene's own parameters applied live and undoably, every scene on
 // both solvers, the frame export and the document round trip.
 #include "core/simulation.h"
+#include "ui/frog_art.h"
 #include "ui/frog_canvas.h"
 #include "ui/frog_parameters_panel.h"
 #include "ui/frog_tab.h"
@@ -12,6 +13,7 @@
 #include <QImage>
 #include <QJsonArray>
 #include <QPainter>
+#include <QPicture>
 #include <QPushButton>
 #include <QRadioButton>
 #include <QSet>
@@ -70,6 +72,49 @@ private slots:
         QVERIFY(QTest::qWaitForWindowExposed(m_tab.get()));
     }
     void cleanup() { m_tab.reset(); }
+
+    void smallHeadsFromTheCachedImageLookLikeThePaths()
+    {
+        // A crowd of small heads is drawn from an image made once per size; a vector device
+        // (QPicture, as SVG and PDF) gets the paths. Both renderings of a 40-px head agree
+        // to a few levels per channel on average, and the image is actually drawn.
+        const FrogArt art;
+        const double scale = 0.3; // 132 × 0.3 ≈ 40 px wide: below kHeadImageBelowPx
+        QVERIFY(132 * scale < FrogArt::kHeadImageBelowPx);
+        const auto paint = [&](QPaintDevice* device) {
+            QPainter p(device);
+            p.setRenderHint(QPainter::Antialiasing, true);
+            p.setRenderHint(QPainter::SmoothPixmapTransform, true);
+            art.paintHead(p, QPointF(32, 32), 0.4, scale, QPointF(60, 10));
+        };
+        QImage fromImage(64, 64, QImage::Format_ARGB32_Premultiplied);
+        fromImage.fill(Qt::white);
+        paint(&fromImage);
+        QPicture picture;
+        paint(&picture);
+        QImage fromPaths(64, 64, QImage::Format_ARGB32_Premultiplied);
+        fromPaths.fill(Qt::white);
+        {
+            QPainter p(&fromPaths);
+            p.setRenderHint(QPainter::Antialiasing, true);
+            p.drawPicture(0, 0, picture);
+        }
+        double difference = 0;
+        int inked = 0;
+        for (int y = 0; y < 64; ++y)
+            for (int x = 0; x < 64; ++x) {
+                const QColor a = fromImage.pixelColor(x, y), b = fromPaths.pixelColor(x, y);
+                difference += std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue());
+                inked += b != QColor(Qt::white) ? 1 : 0;
+            }
+        difference /= 3.0 * 64 * 64;
+        QVERIFY2(inked > 600, qPrintable(QString::number(inked))); // the head covers ~1000 px
+        QVERIFY2(difference < 6, qPrintable(QString::number(difference)));
+        QImage again(64, 64, QImage::Format_ARGB32_Premultiplied);
+        again.fill(Qt::white);
+        paint(&again);
+        QCOMPARE(again, fromImage); // the cached image, drawn again
+    }
 
     void startsOnTheFrogWithTheSeed()
     {

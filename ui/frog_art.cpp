@@ -1,10 +1,12 @@
 #include "ui/frog_art.h"
 
 #include <QLinearGradient>
+#include <QPaintEngine>
 #include <QPainter>
 #include <QRadialGradient>
 #include <QTransform>
 
+#include <algorithm>
 #include <cmath>
 
 namespace granota::ui {
@@ -229,17 +231,8 @@ void FrogArt::paintBackground(QPainter& p, double W, double H) const
     p.restore();
 }
 
-void FrogArt::paintHead(QPainter& p, QPointF at, double angle, double scale, QPointF lookAt) const
+void FrogArt::paintHeadStill(QPainter& p) const
 {
-    // Where the mouse is in the head's own frame (turned by −angle, unscaled).
-    const QPointF d = lookAt - at;
-    const double c = std::cos(angle), s = std::sin(angle), k = scale > 0 ? 1 / scale : 0;
-    const QPointF mouse((d.x() * c + d.y() * s) * k, (-d.x() * s + d.y() * c) * k);
-
-    p.save();
-    p.translate(at);
-    p.rotate(angle * 180 / M_PI);
-    p.scale(scale, scale);
     p.setPen(m_headPen);
     p.setBrush(m_skins[0]);
     p.drawPath(m_head);
@@ -249,24 +242,86 @@ void FrogArt::paintHead(QPainter& p, QPointF at, double angle, double scale, QPo
     p.setPen(m_eyePen);
     p.setBrush(m_eyeWhiteBrush);
     p.drawPath(m_eyeWhites);
-
-    // The pupils (horizontal, as a frog's) look at the mouse, 4 px off centre at most.
-    for (double ex : {-34.0, 34.0}) {
-        const QPointF eye(ex, -21);
-        QPointF look = mouse - eye;
-        const double n = std::hypot(look.x(), look.y());
-        look = n > 1e-9 && std::isfinite(n) ? look * (4.5 / std::max(n, 4.5)) : QPointF();
-        p.setPen(Qt::NoPen);
-        p.setBrush(m_pupilBrush);
-        p.drawEllipse(eye + look, 8.5, 6.5);
-        p.setBrush(m_glintBrush);
-        p.drawEllipse(eye + look + QPointF(-2.6, -2.4), 2.2, 2.2);
-    }
+    p.setPen(Qt::NoPen);
     p.setBrush(m_outlineBrush);
     p.drawPath(m_nostrils);
     p.setBrush(Qt::NoBrush);
     p.setPen(m_mouthPen);
     p.drawPath(m_mouth);
+}
+
+void FrogArt::paintPupils(QPainter& p, QPointF mouse, bool glints) const
+{
+    // The pupils (horizontal, as a frog's) look at the mouse, 4 px off centre at most.
+    p.setPen(Qt::NoPen);
+    for (double ex : {-34.0, 34.0}) {
+        const QPointF eye(ex, -21);
+        QPointF look = mouse - eye;
+        const double n = std::hypot(look.x(), look.y());
+        look = n > 1e-9 && std::isfinite(n) ? look * (4.5 / std::max(n, 4.5)) : QPointF();
+        p.setBrush(m_pupilBrush);
+        p.drawEllipse(eye + look, 8.5, 6.5);
+        if (glints) {
+            p.setBrush(m_glintBrush);
+            p.drawEllipse(eye + look + QPointF(-2.6, -2.4), 2.2, 2.2);
+        }
+    }
+}
+
+namespace {
+// The head's box in its own frame, with room for the outline's pen.
+const QRectF kHeadBox(-66, -47, 132, 92);
+} // namespace
+
+const QImage& FrogArt::headImage(int key) const
+{
+    auto found = m_headImages.find(key);
+    if (found != m_headImages.end())
+        return found->second;
+    const double s = key / 32.0; // device pixels per head unit
+    QImage image(QSize(int(std::ceil(kHeadBox.width() * s)) + 2, int(std::ceil(kHeadBox.height() * s)) + 2),
+                 QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::transparent);
+    QPainter p(&image);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.translate(1, 1);
+    p.scale(s, s);
+    p.translate(-kHeadBox.topLeft());
+    paintHeadStill(p);
+    p.end();
+    if (m_headImages.size() > 64) // sizes seen while zooming: keep the cache small
+        m_headImages.clear();
+    return m_headImages.emplace(key, std::move(image)).first->second;
+}
+
+void FrogArt::paintHead(QPainter& p, QPointF at, double angle, double scale, QPointF lookAt) const
+{
+    // Where the mouse is in the head's own frame (turned by −angle, unscaled).
+    const QPointF d = lookAt - at;
+    const double c = std::cos(angle), s = std::sin(angle), k = scale > 0 ? 1 / scale : 0;
+    const QPointF mouse((d.x() * c + d.y() * s) * k, (-d.x() * s + d.y() * c) * k);
+    // Device pixels per head unit (the canvas scales uniformly).
+    const double pixels = scale * std::sqrt(std::abs(p.worldTransform().determinant()));
+    const bool raster = p.paintEngine() && p.paintEngine()->type() == QPaintEngine::Raster;
+    const bool fromImage = raster && std::isfinite(pixels) && pixels > 0 && pixels * kHeadBox.width() < kHeadImageBelowPx;
+
+    p.save();
+    p.translate(at);
+    p.rotate(angle * 180 / M_PI);
+    p.scale(scale, scale);
+    if (fromImage) {
+        // A crowd of small heads: one image each (made once per size), then the pupils.
+        const int key = std::max(1, int(std::lround(pixels * 32)));
+        const QImage& image = headImage(key);
+        const double unitsPerPixel = 32.0 / key;
+        p.drawImage(QRectF(kHeadBox.left() - unitsPerPixel, kHeadBox.top() - unitsPerPixel,
+                           image.width() * unitsPerPixel, image.height() * unitsPerPixel),
+                    image);
+        paintPupils(p, mouse, false); // the glints would be under a pixel
+    } else {
+        paintHeadStill(p);
+        paintPupils(p, mouse, true);
+    }
     p.restore();
 }
 

@@ -8,8 +8,11 @@
 
 #include <QBrush>
 #include <QColor>
+#include <QImage>
 #include <QPainterPath>
 #include <QPen>
+
+#include <map>
 
 class QPainter;
 
@@ -25,8 +28,13 @@ public:
 
     /// The head centred on `at` (the body's vertex 0, as Annex II places cap_granota.png),
     /// turned by `angle` (radians), `scale` 1 for the thesis's 1109/8 × 747/8 px image; the
-    /// pupils look towards `lookAt` (scene coordinates).
+    /// pupils look towards `lookAt` (scene coordinates). A head smaller than
+    /// kHeadImageBelowPx on a raster device (a crowd of small bodies) is drawn from an image
+    /// of it made once per size, with only the pupils painted per frame; vector devices (SVG,
+    /// PDF) always get paths.
     void paintHead(QPainter& painter, QPointF at, double angle, double scale, QPointF lookAt) const;
+    /// On-screen head width (px) below which paintHead draws from the cached image.
+    static constexpr double kHeadImageBelowPx = 72;
     /// A webbed foot at the wrist, toes along `angle` (the direction of the lower bone).
     void paintFoot(QPainter& painter, QPointF wrist, double angle, double scale) const;
 
@@ -58,6 +66,11 @@ private:
     QPen m_headPen, m_eyePen, m_mouthPen, m_footEdgePen, m_footWebPen, m_toePen;
     QBrush m_cheekBrush, m_eyeWhiteBrush, m_pupilBrush, m_glintBrush, m_outlineBrush, m_toeBrush;
     QPainterPath m_head, m_mouth, m_nostrils, m_cheeks, m_eyeWhites, m_foot, m_footWeb;
+    // The head without its pupils, by size: key = device pixels per head unit × 32.
+    mutable std::map<int, QImage> m_headImages;
+    void paintHeadStill(QPainter& painter) const; // head, cheeks, eye whites, nostrils, mouth
+    void paintPupils(QPainter& painter, QPointF mouse, bool glints) const;
+    const QImage& headImage(int key) const;
 };
 
 } // namespace granota::ui
