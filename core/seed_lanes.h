@@ -41,6 +41,7 @@ template <class R> struct LaneMask {
         return m;
     }
     bool any() const { return b[0] || b[1] || b[2] || b[3]; }
+    bool all() const { return b[0] && b[1] && b[2] && b[3]; }
 };
 
 /// Four values of R; loads and stores are unaligned (any R* will do).
@@ -129,6 +130,7 @@ template <> struct LaneMask<float> {
         return {_mm_xor_ps(p.m, _mm_castsi128_ps(_mm_set1_epi32(-1)))};
     }
     bool any() const { return _mm_movemask_ps(m) != 0; }
+    bool all() const { return _mm_movemask_ps(m) == 0xf; }
 };
 
 template <> struct Lanes<float> {

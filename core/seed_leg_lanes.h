@@ -122,6 +122,11 @@ private:
         // A joint on its parent: d stays 0 and it is put on the parent (finite, as in the seed).
         normalizeLanes(dx, dy, m);
         const L movx = fx + dx * length - x, movy = fy + dy * length - y;
+        if (moved.all()) { // the usual case: no lane needs a mask
+            px = px + movx, py = py + movy;
+            x = x + movx, y = y + movy;
+            return;
+        }
         px = select(moved, px + movx, px), py = select(moved, py + movy, py);
         x = select(moved, x + movx, x), y = select(moved, y + movy, y);
     }
