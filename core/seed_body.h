@@ -15,6 +15,7 @@
 
 #include "core/expected.h"
 #include "core/frog_params.h"
+#include "core/seed_lanes_avx2.h"
 #include "core/vec2.h"
 
 #include <cmath>
@@ -186,6 +187,10 @@ private:
     SeedBody(const FrogParams& params, SeedComponents components);
     // step() with a fixed number of packs of lanes (0: as many as the body needs).
     template <int Packs, class Along> void stepPacks(Along& along);
+#ifdef GRANOTA_SEED_AVX2
+    // The same with eight lanes per pack (R = float, a processor with AVX2).
+    template <int Packs, class Along> GRANOTA_AVX2_TARGET void stepPacksWide(Along& along);
+#endif
     struct NothingAlong {
         void run(int) {}
     };

@@ -46,6 +46,7 @@ template <class R> struct LaneMask {
 
 /// Four values of R; loads and stores are unaligned (any R* will do).
 template <class R> struct Lanes {
+    static constexpr int kWidth = kSeedLanes;
     R v[kSeedLanes];
 
     static Lanes load(const R* p)
@@ -56,6 +57,8 @@ template <class R> struct Lanes {
     }
     static Lanes splat(R a) { return Lanes{{a, a, a, a}}; }
     static Lanes set(R a, R b, R c, R d) { return Lanes{{a, b, c, d}}; }
+    /// (0, 1, 2, 3)
+    static Lanes iota() { return set(R(0), R(1), R(2), R(3)); }
     void store(R* p) const { std::memcpy(p, v, sizeof v); }
 
 #define GRANOTA_LANES_OP(op)                                                                                           \
@@ -134,6 +137,7 @@ template <> struct LaneMask<float> {
 };
 
 template <> struct Lanes<float> {
+    static constexpr int kWidth = kSeedLanes;
     __m128 v;
 
     static Lanes load(const float* p) { return {_mm_loadu_ps(p)}; }
@@ -141,6 +145,7 @@ template <> struct Lanes<float> {
     /// Built in registers: four scalar stores read back as one vector would stall the
     /// store-to-load forwarding of the CPU.
     static Lanes set(float a, float b, float c, float d) { return {_mm_setr_ps(a, b, c, d)}; }
+    static Lanes iota() { return set(0, 1, 2, 3); }
     void store(float* p) const { _mm_storeu_ps(p, v); }
 
     friend Lanes operator+(const Lanes& a, const Lanes& b) { return {_mm_add_ps(a.v, b.v)}; }

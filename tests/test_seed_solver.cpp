@@ -365,6 +365,33 @@ private slots:
         QVERIFY(scriptedRun<float>() != scriptedRun<double>());
     }
 
+    void fourAndEightLanesAgree()
+    {
+        // With AVX2 the float body steps eight vertices at a time (core/seed_lanes_avx2.h),
+        // otherwise four; both are the seed's operations lane by lane, so a grab, a drag, a
+        // respawn and 600 steps write the same bytes, and four lanes follow the reference.
+        qInfo("eight lanes on this machine: %s", seedWideLanes() ? "yes" : "no");
+        const std::string wide = scriptedRun<float>();
+        setSeedWideLanesAllowed(false);
+        QVERIFY(!seedWideLanes());
+        const std::string narrow = scriptedRun<float>();
+        const SeedTrace trace = loadTrace("seed_frog_trace.csv");
+        const Deviation d = deviationFromTrace<float>(trace, FrogParams{}, 600);
+        auto manySides = FrogParams{};
+        manySides.sides = 14; // two packs of eight, one of them nearly full
+        auto fourLanes = SeedFrog<float>::create(manySides).value();
+        for (int s = 0; s < 300; ++s)
+            fourLanes.step();
+        setSeedWideLanesAllowed(true);
+        auto eightLanes = SeedFrog<float>::create(manySides).value();
+        for (int s = 0; s < 300; ++s)
+            eightLanes.step();
+        QVERIFY(wide == narrow);
+        QVERIFY2(d.body <= kFloatBodyTolerance && d.legs <= kFloatLegTolerance,
+                 qPrintable(QStringLiteral("%1 %2").arg(d.body).arg(d.legs)));
+        QVERIFY(state(fourLanes) == state(eightLanes));
+    }
+
     void legsReadNowAndThen()
     {
         // The frog pays the legs' step inside its next step unless the legs are read in
