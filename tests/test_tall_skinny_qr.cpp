@@ -40,6 +40,21 @@ std::vector<Point> curvePoints(const std::vector<Point>& control, const std::vec
     return q;
 }
 
+Eigen::MatrixX2d asMatrix(const std::vector<Point>& q)
+{
+    Eigen::MatrixX2d Q(static_cast<Eigen::Index>(q.size()), 2);
+    for (std::size_t i = 0; i < q.size(); ++i)
+        Q.row(static_cast<Eigen::Index>(i)) << q[i].x, q[i].y;
+    return Q;
+}
+
+/// ‖RᵀR − AᵀA‖/‖AᵀA‖: zero when R is the R of a QR of A, whatever the signs of its rows.
+double gramError(const Eigen::MatrixXd& r, const Eigen::MatrixXd& A)
+{
+    const Eigen::MatrixXd gram = A.transpose() * A;
+    return (r.transpose() * r - gram).norm() / gram.norm();
+}
+
 const std::vector<Point> kControl = {{0, 0}, {1, 3}, {4, 2}, {8, -2}, {1, 5}, {-3, 1}};
 
 } // namespace
@@ -79,15 +94,12 @@ private slots:
         for (int k : {500, 250000}) { // one thread, and the two-half split
             const auto t = uniformT(k);
             const auto q = curvePoints(kControl, t, 0.1);
-            Eigen::MatrixX2d Q(k, 2);
-            for (int i = 0; i < k; ++i)
-                Q.row(i) << q[static_cast<std::size_t>(i)].x, q[static_cast<std::size_t>(i)].y;
+            const Eigen::MatrixX2d Q = asMatrix(q);
             const int n = 5;
             const Eigen::MatrixXd r = tallSkinnyQr(t, Q, n);
             Eigen::MatrixXd A(k, n + 3);
             A << bernsteinMatrix(t, n), Q;
-            const Eigen::MatrixXd gram = A.transpose() * A;
-            const double error = (r.transpose() * r - gram).norm() / gram.norm();
+            const double error = gramError(r, A);
             QVERIFY2(error < 1e-12, qPrintable(QString::number(error)));
             QVERIFY(r.isUpperTriangular(0));
         }
@@ -103,14 +115,11 @@ private slots:
         for (int i = 600; i < k; ++i)
             t[static_cast<std::size_t>(i)] = (i - 599) / double(k - 599);
         const auto q = curvePoints(kControl, t, 0.3);
-        Eigen::MatrixX2d Q(k, 2);
-        for (int i = 0; i < k; ++i)
-            Q.row(i) << q[static_cast<std::size_t>(i)].x, q[static_cast<std::size_t>(i)].y;
+        const Eigen::MatrixX2d Q = asMatrix(q);
         const Eigen::MatrixXd r = tallSkinnyQr(t, Q, n);
         Eigen::MatrixXd A(k, n + 3);
         A << bernsteinMatrix(t, n), Q;
-        const Eigen::MatrixXd gram = A.transpose() * A;
-        const double error = (r.transpose() * r - gram).norm() / gram.norm();
+        const double error = gramError(r, A);
         QVERIFY2(error < 1e-13, qPrintable(QString::number(error)));
         QVERIFY(r.allFinite());
         QVERIFY(r.isUpperTriangular(0));
@@ -121,8 +130,7 @@ private slots:
         Eigen::MatrixXd As = A;
         for (int i = 0; i < k; ++i)
             As.row(i).tail(2) << scaled.x(static_cast<std::size_t>(i)), scaled.y(static_cast<std::size_t>(i));
-        const Eigen::MatrixXd gramS = As.transpose() * As;
-        QVERIFY((rs.transpose() * rs - gramS).norm() < 1e-13 * gramS.norm());
+        QVERIFY(gramError(rs, As) < 1e-13);
     }
 
     void manyPointsGiveTheKnownCurveBack()
