@@ -1,23 +1,16 @@
 #include "core/seed_lanes_avx2.h"
 
-#include <atomic>
-
 namespace granota {
 
-namespace {
-std::atomic<bool> g_wideAllowed{true};
-}
-
-bool seedWideLanes()
-{
+namespace detail {
 #ifdef GRANOTA_SEED_AVX2
-    static const bool available = __builtin_cpu_supports("avx2");
-    return available && g_wideAllowed.load(std::memory_order_relaxed);
+const bool g_seedAvx2 = (__builtin_cpu_init(), __builtin_cpu_supports("avx2")); // before main: 4 lanes (false)
 #else
-    return false;
+const bool g_seedAvx2 = false;
 #endif
-}
+std::atomic<bool> g_seedWideAllowed{true};
+} // namespace detail
 
-void setSeedWideLanesAllowed(bool allowed) { g_wideAllowed.store(allowed, std::memory_order_relaxed); }
+void setSeedWideLanesAllowed(bool allowed) { detail::g_seedWideAllowed.store(allowed, std::memory_order_relaxed); }
 
 } // namespace granota

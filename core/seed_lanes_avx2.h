@@ -12,6 +12,8 @@
 
 #include "core/seed_lanes.h"
 
+#include <atomic>
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define GRANOTA_SEED_AVX2 1
 #define GRANOTA_AVX2_TARGET __attribute__((target("avx2")))
@@ -20,9 +22,17 @@
 
 namespace granota {
 
+namespace detail {
+extern const bool g_seedAvx2;             ///< the processor has AVX2 (asked once, at start-up)
+extern std::atomic<bool> g_seedWideAllowed; ///< setSeedWideLanesAllowed
+} // namespace detail
+
 /// Whether the body step may use eight lanes: the processor has AVX2 and
-/// setSeedWideLanesAllowed(false) was not called.
-bool seedWideLanes();
+/// setSeedWideLanesAllowed(false) was not called. Asked at every step: two loads.
+inline bool seedWideLanes()
+{
+    return detail::g_seedAvx2 && detail::g_seedWideAllowed.load(std::memory_order_relaxed);
+}
 /// Tests use this to run the four-lane step on a machine with AVX2 (both must give the
 /// same trace). Not thread-safe against a step running at the same time.
 void setSeedWideLanesAllowed(bool allowed);
