@@ -4,7 +4,8 @@ namespace granota {
 
 namespace detail {
 #ifdef GRANOTA_SEED_AVX2
-const bool g_seedAvx2 = (__builtin_cpu_init(), __builtin_cpu_supports("avx2")); // before main: 4 lanes (false)
+// Zero (four lanes) for a step taken before the start-up constructors have run.
+const bool g_seedAvx2 = (__builtin_cpu_init(), __builtin_cpu_supports("avx2"));
 #else
 const bool g_seedAvx2 = false;
 #endif
