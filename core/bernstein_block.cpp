@@ -3,19 +3,12 @@
 namespace granota {
 
 BernsteinBlock::BernsteinBlock(int n, int maxRows)
-    : m_n(n), m_binomial(static_cast<std::size_t>(n + 1), 1.0), m_values(maxRows, n + 1),
-      m_power(static_cast<std::size_t>(maxRows))
+    : m_n(n), m_binomial(static_cast<std::size_t>(n + 1), 1.0), m_power(static_cast<std::size_t>(maxRows))
 {
     // C(n, j), exact in double for the degrees a fit allows (≤ 100: C(100, 50) < 2^97, but the
     // product C(n,j)·(n−j)/(j+1) is exact while it stays below 2^53 and within 1 ulp beyond).
     for (int j = 1; j <= n; ++j)
         m_binomial[static_cast<std::size_t>(j)] = m_binomial[static_cast<std::size_t>(j - 1)] * (n - j + 1) / j;
-}
-
-const Eigen::MatrixXd& BernsteinBlock::fill(const double* t, int rows)
-{
-    fillInto(t, rows, m_values.data(), static_cast<std::size_t>(m_values.rows()));
-    return m_values;
 }
 
 void BernsteinBlock::fillInto(const double* t, int rows, double* out, std::size_t stride)

@@ -6,8 +6,6 @@
 /// and the loops run over contiguous rows, which the compiler vectorises. Used where a fit
 /// meets a million points (tall_skinny_qr, the residuals of least_squares_fit).
 
-#include <Eigen/Dense>
-
 #include <cstddef>
 #include <vector>
 
@@ -17,9 +15,7 @@ class BernsteinBlock {
 public:
     /// Degree n, blocks of at most `maxRows` parameters.
     BernsteinBlock(int n, int maxRows);
-    /// B_j^n(t_i) for i < rows, j ≤ n: the top `rows` rows of the returned matrix.
-    const Eigen::MatrixXd& fill(const double* t, int rows);
-    /// The same values written column by column: B_j^n(t_i) at out[j·stride + i]
+    /// B_j^n(t_i) for i < rows, j ≤ n, written column by column: at out[j·stride + i]
     /// (rows ≤ maxRows ≤ stride).
     void fillInto(const double* t, int rows, double* out, std::size_t stride);
     int degree() const { return m_n; }
@@ -27,7 +23,6 @@ public:
 private:
     int m_n;
     std::vector<double> m_binomial;
-    Eigen::MatrixXd m_values; ///< maxRows × (n+1)
     std::vector<double> m_power; ///< maxRows: t^j, then (1 − t)^(n−j), row by row
 };
 

@@ -64,13 +64,19 @@ public:
     {
     }
 
-    template <class Source> void absorb(const double* t, const Source& source, std::size_t first, int rows)
+    /// Rows [first, first + rows) of [M | Q].
+    void absorb(const double* t, const ScaledPoints& q, std::size_t first, int rows)
     {
         const int m = m_n + 1, padded = (rows + 3) / 4 * 4;
         double* const a = m_block.data();
         const auto column = [a](int c) { return a + static_cast<std::size_t>(c) * kBlockRows; };
         m_bernstein.fillInto(t + first, rows, a, kBlockRows);
-        source(first, rows, column(m), column(m + 1));
+        double* const x = column(m);
+        double* const y = column(m + 1);
+        for (int i = 0; i < rows; ++i) {
+            x[i] = q.x(first + static_cast<std::size_t>(i));
+            y[i] = q.y(first + static_cast<std::size_t>(i));
+        }
         // Rows of zeros up to a multiple of four: a zero row changes no reflector.
         for (int c = 0; c < m_w; ++c)
             std::fill(column(c) + rows, column(c) + padded, 0.0);
@@ -117,55 +123,34 @@ private:
     BernsteinBlock m_bernstein;
 };
 
-/// R of [M | Q] over the rows [first, last); source(first, rows, x, y) writes the data.
-template <class Source>
-Eigen::MatrixXd factorRows(const std::vector<double>& t, const Source& source, int n, std::size_t first,
+/// R of [M | Q] over the rows [first, last).
+Eigen::MatrixXd factorRows(const std::vector<double>& t, const ScaledPoints& q, int n, std::size_t first,
                            std::size_t last)
 {
     StreamingQr qr(n);
     for (std::size_t s = first; s < last; s += kBlockRows)
-        qr.absorb(t.data(), source, s, static_cast<int>(std::min<std::size_t>(kBlockRows, last - s)));
+        qr.absorb(t.data(), q, s, static_cast<int>(std::min<std::size_t>(kBlockRows, last - s)));
     return qr.r();
-}
-
-template <class Source> Eigen::MatrixXd factor(const std::vector<double>& t, const Source& source, int n)
-{
-    const std::size_t k = t.size();
-    const int w = n + 3;
-    if (k < kParallelRows)
-        return factorRows(t, source, n, 0, k);
-    // Two halves (a fixed split: the same answer on one core or two), then R of [R₁; R₂].
-    const std::size_t half = (k / 2 / kBlockRows) * kBlockRows;
-    Eigen::MatrixXd r1;
-    std::thread worker([&] { r1 = factorRows(t, source, n, 0, half); });
-    const Eigen::MatrixXd r2 = factorRows(t, source, n, half, k);
-    worker.join();
-    Eigen::MatrixXd stacked(2 * w, w);
-    stacked << r1, r2;
-    Eigen::HouseholderQR<Eigen::Ref<Eigen::MatrixXd>> qr(stacked);
-    return qr.matrixQR().topRows(w).triangularView<Eigen::Upper>();
 }
 
 } // namespace
 
 Eigen::MatrixXd tallSkinnyQr(const std::vector<double>& t, const ScaledPoints& q, int n)
 {
-    return factor(t, [&q](std::size_t first, int rows, double* x, double* y) {
-        for (int i = 0; i < rows; ++i) {
-            x[i] = q.x(first + static_cast<std::size_t>(i));
-            y[i] = q.y(first + static_cast<std::size_t>(i));
-        }
-    }, n);
-}
-
-Eigen::MatrixXd tallSkinnyQr(const std::vector<double>& t, const Eigen::MatrixX2d& q, int n)
-{
-    return factor(t, [&q](std::size_t first, int rows, double* x, double* y) {
-        for (int i = 0; i < rows; ++i) {
-            x[i] = q(static_cast<Eigen::Index>(first) + i, 0);
-            y[i] = q(static_cast<Eigen::Index>(first) + i, 1);
-        }
-    }, n);
+    const std::size_t k = t.size();
+    const int w = n + 3;
+    if (k < kParallelRows)
+        return factorRows(t, q, n, 0, k);
+    // Two halves (a fixed split: the same answer on one core or two), then R of [R₁; R₂].
+    const std::size_t half = (k / 2 / kBlockRows) * kBlockRows;
+    Eigen::MatrixXd r1;
+    std::thread worker([&] { r1 = factorRows(t, q, n, 0, half); });
+    const Eigen::MatrixXd r2 = factorRows(t, q, n, half, k);
+    worker.join();
+    Eigen::MatrixXd stacked(2 * w, w);
+    stacked << r1, r2;
+    Eigen::HouseholderQR<Eigen::Ref<Eigen::MatrixXd>> qr(stacked);
+    return qr.matrixQR().topRows(w).triangularView<Eigen::Upper>();
 }
 
 } // namespace granota

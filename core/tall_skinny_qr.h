@@ -35,8 +35,6 @@ struct ScaledPoints {
 /// Σ‖Q_i − α(t_i)‖² (the error of Prop 2.2). The block partition and every sum's order are
 /// fixed, so the result depends neither on the number of threads nor on the machine.
 Eigen::MatrixXd tallSkinnyQr(const std::vector<double>& t, const ScaledPoints& q, int n);
-/// The same for data already in a k × 2 matrix.
-Eigen::MatrixXd tallSkinnyQr(const std::vector<double>& t, const Eigen::MatrixX2d& q, int n);
 
 /// From this many data points on, the fit uses tallSkinnyQr.
 constexpr std::size_t kTallSkinnyRows = 20000;

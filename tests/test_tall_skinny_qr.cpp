@@ -48,6 +48,9 @@ Eigen::MatrixX2d asMatrix(const std::vector<Point>& q)
     return Q;
 }
 
+/// The points as they are: centre 0 and scale 1 read each coordinate exactly.
+ScaledPoints asIs(const std::vector<Point>& q) { return ScaledPoints{q.data(), q.size(), Point(0, 0), 1}; }
+
 /// ‖RᵀR − AᵀA‖/‖AᵀA‖: zero when R is the R of a QR of A, whatever the signs of its rows.
 double gramError(const Eigen::MatrixXd& r, const Eigen::MatrixXd& A)
 {
@@ -74,7 +77,9 @@ private slots:
         QFETCH(int, n);
         const auto t = uniformT(257);
         BernsteinBlock block(n, 300);
-        const Eigen::MatrixXd& b = block.fill(t.data(), 257);
+        std::vector<double> values(static_cast<std::size_t>(300 * (n + 1)));
+        block.fillInto(t.data(), 257, values.data(), 300);
+        const auto b = [&values](int i, int j) { return values[static_cast<std::size_t>(j * 300 + i)]; };
         for (int i = 0; i < 257; ++i) {
             const auto expected = bernsteinAll(n, t[static_cast<std::size_t>(i)]);
             double sum = 0;
@@ -96,7 +101,7 @@ private slots:
             const auto q = curvePoints(kControl, t, 0.1);
             const Eigen::MatrixX2d Q = asMatrix(q);
             const int n = 5;
-            const Eigen::MatrixXd r = tallSkinnyQr(t, Q, n);
+            const Eigen::MatrixXd r = tallSkinnyQr(t, asIs(q), n);
             Eigen::MatrixXd A(k, n + 3);
             A << bernsteinMatrix(t, n), Q;
             const double error = gramError(r, A);
@@ -116,7 +121,7 @@ private slots:
             t[static_cast<std::size_t>(i)] = (i - 599) / double(k - 599);
         const auto q = curvePoints(kControl, t, 0.3);
         const Eigen::MatrixX2d Q = asMatrix(q);
-        const Eigen::MatrixXd r = tallSkinnyQr(t, Q, n);
+        const Eigen::MatrixXd r = tallSkinnyQr(t, asIs(q), n);
         Eigen::MatrixXd A(k, n + 3);
         A << bernsteinMatrix(t, n), Q;
         const double error = gramError(r, A);
