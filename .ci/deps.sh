@@ -8,7 +8,8 @@ PKGS=(
   build-essential cmake pkg-config
   qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-svg-dev
   qt6-translations-l10n libqcustomplot-dev libeigen3-dev libgmp-dev
-  libbenchmark-dev libgl-dev appstream desktop-file-utils
+  libbenchmark-dev libgl-dev appstream desktop-file-utils nlohmann-json3-dev
+  locales clang libclang-rt-14-dev
 )
 missing=()
 for p in "${PKGS[@]}"; do
@@ -18,4 +19,10 @@ if [ "${#missing[@]}" -gt 0 ]; then
   export DEBIAN_FRONTEND=noninteractive
   $SUDO apt-get update -q
   $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+# The tests also run in a Catalan locale (decimal commas): generate it once.
+if ! locale -a 2>/dev/null | grep -qi '^ca_ES\.utf-\?8$'; then
+  $SUDO sed -i 's/^# *\(ca_ES\.UTF-8 UTF-8\)/\1/' /etc/locale.gen
+  grep -q '^ca_ES.UTF-8 UTF-8' /etc/locale.gen || echo 'ca_ES.UTF-8 UTF-8' | $SUDO tee -a /etc/locale.gen >/dev/null
+  $SUDO locale-gen >/dev/null
 fi
