@@ -4,6 +4,7 @@
 
 #include <cassert>
 #include <cmath>
+#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 
@@ -184,9 +185,9 @@ private:
         const std::string text(m_s.substr(begin, m_pos - begin));
         if (text.empty() || text == "-")
             return fail("expected a value");
-        char* end = nullptr;
-        const double d = std::strtod(text.c_str(), &end);
-        if (end != text.c_str() + text.size() || !std::isfinite(d)) {
+        double d = 0;
+        const auto r = std::from_chars(text.data(), text.data() + text.size(), d);
+        if (r.ec != std::errc() || r.ptr != text.data() + text.size() || !std::isfinite(d)) {
             m_pos = begin;
             return fail("'" + text + "' is not a finite number");
         }

@@ -1,6 +1,7 @@
 #include "core/least_squares_fit.h"
 
 #include "core/bernstein_block.h"
+#include "core/polynomial_text.h"
 #include "core/tall_skinny_qr.h"
 
 #include <Eigen/Cholesky>
@@ -11,7 +12,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <optional>
 #include <thread>
@@ -83,9 +83,7 @@ template <class S> int countDistinct(const std::vector<S>& t)
 
 std::string sci(double v)
 {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.2g", v);
-    return buffer;
+    return formatSignificant(v, 2);
 }
 
 std::string pointsNeeded(int degree)

@@ -1,9 +1,8 @@
 #include "core/polynomial_text.h"
 
 #include <cctype>
+#include <charconv>
 #include <cmath>
-#include <cstdlib>
-#include <cstdio>
 #include <sstream>
 
 namespace granota {
@@ -12,18 +11,36 @@ std::string formatDouble(double v)
 {
     if (v == 0)
         return "0"; // also folds -0
-    char buf[64];
     // Whole numbers as whole numbers: 100, not the equally short 1e+02.
-    if (std::fabs(v) < 1e16 && v == std::trunc(v)) {
-        std::snprintf(buf, sizeof buf, "%.0f", v);
-        return buf;
-    }
+    if (std::fabs(v) < 1e16 && v == std::trunc(v))
+        return formatFixed(v, 0);
+    // The fewest significant digits that read back as the same double ("%.*g" in the C
+    // locale: to_chars and from_chars never look at LC_NUMERIC).
+    std::string text;
     for (int precision = 1; precision <= 17; ++precision) {
-        std::snprintf(buf, sizeof buf, "%.*g", precision, v);
-        if (std::strtod(buf, nullptr) == v)
+        text = formatSignificant(v, precision);
+        double back = 0;
+        std::from_chars(text.data(), text.data() + text.size(), back);
+        if (back == v)
             break;
     }
-    return buf;
+    return text;
+}
+
+std::string formatSignificant(double v, int digits)
+{
+    char buf[64];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, digits);
+    return std::string(buf, r.ptr);
+}
+
+std::string formatFixed(double v, int decimals)
+{
+    char buf[400]; // 1e308 written out in full, with its decimals
+    const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
+    if (r.ec != std::errc())
+        return formatSignificant(v, 17);
+    return std::string(buf, r.ptr);
 }
 
 namespace {
@@ -117,7 +134,7 @@ std::optional<Polynomial<Rational>> parsePolynomial(std::string_view text, char 
                     ++e;
                 if (e == pos || e - pos > 4)
                     return std::nullopt;
-                power = std::stoi(s.substr(pos, e - pos));
+                std::from_chars(s.data() + pos, s.data() + e, power); // at most 4 digits
                 pos = e;
             }
         } else if (!hasNumber) {

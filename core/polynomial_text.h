@@ -26,6 +26,11 @@ std::string toText(const Vec2<Polynomial<double>>& p, const std::string& var = "
 std::optional<Polynomial<Rational>> parsePolynomial(std::string_view text, char var = 't');
 
 /// Shortest text that reads back as the same double ("0.1", "1e-09", "-3").
+/// Every number formatter here ignores the C locale (LC_NUMERIC): a point, always.
 std::string formatDouble(double v);
+/// `digits` significant digits, as printf's "%.*g" writes them in the C locale ("1.5e-08").
+std::string formatSignificant(double v, int digits);
+/// `decimals` digits after the point, as printf's "%.*f" writes them in the C locale.
+std::string formatFixed(double v, int decimals);
 
 } // namespace granota

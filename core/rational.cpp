@@ -1,7 +1,10 @@
 #include "core/rational.h"
 
 #include <cctype>
+#include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace granota {
 
@@ -47,7 +50,7 @@ std::optional<Rational> parseDecimal(std::string_view s)
         }
         if (!allDigits(exp) || exp.size() > 6)
             return std::nullopt;
-        exponent = std::stol(std::string(exp));
+        std::from_chars(exp.data(), exp.data() + exp.size(), exponent); // at most 6 digits
         if (exponent > kMaxExponent)
             return std::nullopt;
         if (expNegative)
@@ -106,6 +109,26 @@ std::string toString(const Rational& q)
     if (q.get_den() == 1)
         return q.get_num().get_str();
     return q.get_num().get_str() + "/" + q.get_den().get_str();
+}
+
+double nearestDouble(const Rational& q)
+{
+    const double t = q.get_d(); // truncated: |t| <= |q|, and the true nearest is t or its outward neighbour
+    if (!std::isfinite(t) || q == 0)
+        return t;
+    const double away = std::nextafter(t, t > 0 ? HUGE_VAL : -HUGE_VAL);
+    if (!std::isfinite(away)) {
+        // Past the largest double by more than half a unit: overflow, as from_chars would.
+        const Rational halfUlp = (exactRational(t) - exactRational(std::nextafter(t, 0.0))) / 2;
+        return abs(q - exactRational(t)) >= halfUlp ? away : t;
+    }
+    const Rational dt = abs(q - exactRational(t)), da = abs(exactRational(away) - q);
+    if (dt != da)
+        return dt < da ? t : away;
+    // A tie: the even significand.
+    std::int64_t bits;
+    std::memcpy(&bits, &t, sizeof bits);
+    return (bits & 1) == 0 ? t : away;
 }
 
 Rational exactRational(double d)

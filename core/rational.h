@@ -43,7 +43,11 @@ inline Rational frac(long p, long q)
     return r;
 }
 
-inline double toDouble(const Rational& q) { return q.get_d(); }
+/// The double nearest to q (ties to even), as reading its decimal would give: 0.05688
+/// stays 0.05688. GMP's get_d() truncates towards zero, one unit in the last place off
+/// for about half of all decimals. ±infinity beyond the largest double.
+double nearestDouble(const Rational& q);
+inline double toDouble(const Rational& q) { return nearestDouble(q); }
 inline double toDouble(double d) { return d; }
 inline double toDouble(long double d) { return static_cast<double>(d); }
 

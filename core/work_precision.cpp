@@ -52,9 +52,7 @@ std::string csvField(const std::string& s)
 
 std::string full(double v)
 {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.9g", v);
-    return buffer;
+    return formatSignificant(v, 9);
 }
 } // namespace
 

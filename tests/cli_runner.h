@@ -19,9 +19,20 @@ struct CliRun {
     }
 };
 
-inline CliRun runCli(const QStringList& args, int timeoutMs = 300000)
+/// Runs granota-cli with `env` added to the environment (e.g. a desktop's locale).
+inline CliRun runCliWith(const QStringList& env, const QStringList& args, int timeoutMs = 300000);
+
+inline CliRun runCli(const QStringList& args, int timeoutMs = 300000) { return runCliWith({}, args, timeoutMs); }
+
+inline CliRun runCliWith(const QStringList& env, const QStringList& args, int timeoutMs)
 {
     QProcess p;
+    if (!env.isEmpty()) {
+        QProcessEnvironment e = QProcessEnvironment::systemEnvironment();
+        for (const QString& kv : env)
+            e.insert(kv.section(QLatin1Char('='), 0, 0), kv.section(QLatin1Char('='), 1));
+        p.setProcessEnvironment(e);
+    }
     p.start(QStringLiteral(GRANOTA_CLI_PATH), args);
     CliRun r;
     if (!p.waitForFinished(timeoutMs)) {

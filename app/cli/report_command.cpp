@@ -5,6 +5,7 @@
 #include "core/work_precision.h"
 
 #include <QApplication>
+#include <QLocale>
 #include <QDir>
 #include <QFile>
 #include <QPainter>
@@ -115,6 +116,9 @@ Expected<CommandOutput> run(const Arguments& args)
         app = std::make_unique<QApplication>(argc, argv);
         qInstallMessageHandler(previous);
     }
+    // The plots' axes and legends are files the scripter keeps: numbers with a point, not
+    // in the desktop's locale (QApplication has just set LC_NUMERIC from the environment).
+    QLocale::setDefault(QLocale::c());
 
     WorkPrecisionOptions options;
     options.quick = args.flag("quick");

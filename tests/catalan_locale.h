@@ -1,0 +1,26 @@
+#pragma once
+// The locale of a Catalan desktop, for the tests that check that numbers in files, streams
+// and the command line do not follow it. ca_ES.UTF-8 writes 0.5 as "0,5": a test that runs
+// without it proves nothing, so its absence is a failure, not a skip (.ci/deps.sh makes it).
+#include <QStringList>
+
+#include <clocale>
+#include <cstdlib>
+#include <cstring>
+
+inline constexpr const char* kCatalanLocale = "ca_ES.UTF-8";
+
+/// The environment of a process started on a Catalan desktop.
+inline QStringList catalanEnvironment()
+{
+    return {QStringLiteral("LANG=ca_ES.UTF-8"), QStringLiteral("LC_ALL=ca_ES.UTF-8"),
+            QStringLiteral("LANGUAGE=ca")};
+}
+
+/// Switches this process's C locale to Catalan; true when it took and has a decimal comma.
+inline bool enterCatalanLocale()
+{
+    if (!std::setlocale(LC_ALL, kCatalanLocale))
+        return false;
+    return std::strcmp(std::localeconv()->decimal_point, ",") == 0;
+}
