@@ -717,7 +717,7 @@
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="423" />
             <source>“%1” is not a tension: type a decimal (0.5) or a fraction (-1/2). Not added.</source>
-            <translation>«%1» no és una tensió: escriviu un decimal (0.5) o una fracció (-1/2). No s'ha afegit.</translation>
+            <translation>«%1» no és una tensió: escriviu un decimal (0,5) o una fracció (-1/2). No s'ha afegit.</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="427" />
@@ -2405,8 +2405,8 @@
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="617" />
-            <source>Unknown scene “%1”.</source>
-            <translation>Escena desconeguda «%1».</translation>
+            <source>The scene “%1” cannot be loaded: %2</source>
+            <translation>No es pot carregar l’escena «%1»: %2</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="625" />
@@ -2951,7 +2951,7 @@
         <message>
             <location filename="../ui/point_table.cpp" line="93" />
             <source>“%1” is not a number: type a decimal (2.5) or a fraction (5/2).</source>
-            <translation>«%1» no és un nombre: escriviu un decimal (2,5 s'escriu 2.5) o una fracció (5/2).</translation>
+            <translation>«%1» no és un nombre: escriviu un decimal (2,5) o una fracció (5/2).</translation>
         </message>
     </context>
     <context>

@@ -2405,8 +2405,8 @@
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="617" />
-            <source>Unknown scene “%1”.</source>
-            <translation>Unknown scene “%1”.</translation>
+            <source>The scene “%1” cannot be loaded: %2</source>
+            <translation>The scene “%1” cannot be loaded: %2</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="625" />

@@ -1,4 +1,5 @@
 #include "ui/bernstein_tab.h"
+#include "ui/number_text.h"
 
 #include "core/bernstein.h"
 #include "core/de_casteljau.h"
@@ -62,10 +63,10 @@ QString number(double v)
 {
     if (v == 0.0 || !std::isfinite(v))
         return QStringLiteral("0");
-    return QString::number(v, 'g', 6);
+    return displaySignificant(v, 6);
 }
 
-QString residualText(double r) { return r == 0.0 ? QStringLiteral("0") : QString::number(r, 'e', 1); }
+QString residualText(double r) { return r == 0.0 ? QStringLiteral("0") : displayText(QString::number(r, 'e', 1).toStdString()); }
 
 QString mark(bool ok) { return ok ? QStringLiteral("<span style=\"color:#2c8a2c\">✓</span>") : QStringLiteral("<span style=\"color:#c62828\">✗</span>"); }
 
@@ -324,7 +325,7 @@ void BernsteinTab::updateWeights()
         sum += v;
     m_curveLabel->setText(
         tr("At t = %1 the weights sum to %2.<br>Def 2.6: %3 = %4<br>De Casteljau: %5 = %6 (difference %7)")
-            .arg(number(tt), QString::number(sum, 'g', 17),
+            .arg(number(tt), displaySignificant(sum, 17),
                  QStringLiteral("Σ %1 P<sub>i</sub>").arg(basisHtml(QStringLiteral("i"), QString::number(n))),
                  pointText(viaBernstein),
                  QStringLiteral("P<sub>0</sub><sup>%1</sup>(t)").arg(n), pointText(viaDeCasteljau),
@@ -355,9 +356,9 @@ void BernsteinTab::plotMousePress(QMouseEvent* event)
 QString BernsteinTab::readout(double tt) const
 {
     const std::vector<double> b = bernsteinAll(m_degree, tt);
-    QStringList lines{QStringLiteral("t = %1").arg(tt, 0, 'f', 3)};
+    QStringList lines{QStringLiteral("t = %1").arg(displayFixed(tt, 3))};
     for (int i = 0; i <= m_degree && i < kMaxReadoutLines; ++i)
-        lines << QStringLiteral("%1 = %2").arg(basisName(i, m_degree)).arg(b[static_cast<std::size_t>(i)], 0, 'f', 4);
+        lines << QStringLiteral("%1 = %2").arg(basisName(i, m_degree)).arg(displayFixed(b[static_cast<std::size_t>(i)], 4));
     if (m_degree + 1 > kMaxReadoutLines)
         lines << QStringLiteral("…");
     return lines.join(QLatin1Char('\n'));

@@ -1,4 +1,5 @@
 #include "ui/catmull_rom_tab.h"
+#include "ui/number_text.h"
 
 #include "core/polynomial_text.h"
 #include "core/rational_approximation.h"
@@ -50,10 +51,10 @@ QString tauString(const Rational& tau) { return QString::fromStdString(toString(
 /// τ as Processing's curveTightness(s), s = 1 − 2τ, as a short fraction or decimal.
 QString tightnessString(const Rational& tau)
 {
-    const double s = tauToCurveTightness(tau.get_d());
+    const double s = tauToCurveTightness(toDouble(tau));
     if (const auto q = smallRational(s))
         return QString::fromStdString(toString(*q));
-    return QString::fromStdString(formatDouble(s));
+    return displayNumber(s);
 }
 
 Qt::PenStyle tauPenStyle(int i)
@@ -414,7 +415,7 @@ void CatmullRomTab::applySettings(const CatmullRomSettings& s)
 bool CatmullRomTab::addTension(const QString& text)
 {
     TensionProblem problem = TensionProblem::None;
-    const auto tau = parseTension(text, &problem);
+    const auto tau = parseTension(typedToC(text), &problem);
     if (!tau) {
         if (problem == TensionProblem::OutOfRange)
             refuse(tr("τ = %1 is outside [−10, 10]: beyond that the curve is all overshoot. Not added.")
@@ -578,7 +579,7 @@ void CatmullRomTab::updatePlot()
     double lo = 0, hi = 1;
     for (std::size_t n = 0; n < shown.size(); ++n) {
         const int i = shown[n];
-        const auto w = blendingFunctions(m_settings.taus[static_cast<std::size_t>(i)].get_d());
+        const auto w = blendingFunctions(toDouble(m_settings.taus[static_cast<std::size_t>(i)]));
         for (int j = 0; j < 4; ++j) {
             QVector<double> y(kPlotSamples);
             for (int k = 0; k < kPlotSamples; ++k) {

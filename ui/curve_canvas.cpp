@@ -1,4 +1,5 @@
 #include "ui/curve_canvas.h"
+#include "ui/number_text.h"
 
 #include <QMouseEvent>
 #include <QPainter>
@@ -27,8 +28,8 @@ QString axisLabel(double v, double step)
         v = 0.0;
     const int decimals = std::max(0, static_cast<int>(-std::floor(std::log10(step))));
     if (std::fabs(v) >= 1e6 || (v != 0.0 && std::fabs(v) < 1e-4))
-        return QString::number(v, 'g', 4);
-    return QString::number(v, 'f', std::min(decimals, 9));
+        return displaySignificant(v, 4);
+    return displayFixed(v, std::min(decimals, 9));
 }
 
 } // namespace

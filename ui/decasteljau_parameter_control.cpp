@@ -1,6 +1,8 @@
 #include "ui/decasteljau_parameter_control.h"
 
 #include "core/rational.h"
+#include "ui/decimal_spin_box.h"
+#include "ui/number_text.h"
 
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
@@ -21,10 +23,10 @@ constexpr int kDecimals = 3;           ///< digits the spin box shows
 constexpr double kHalfStep = 0.0005;   ///< a typed fraction is kept when it rounds to the shown value
 } // namespace
 
-/// A QDoubleSpinBox that also reads fractions and remembers the exact value typed.
-class ParameterSpinBox : public QDoubleSpinBox {
+/// A spin box that also reads fractions and remembers the exact value typed.
+class ParameterSpinBox : public DecimalSpinBox {
 public:
-    using QDoubleSpinBox::QDoubleSpinBox;
+    using DecimalSpinBox::DecimalSpinBox;
 
     /// The value last typed, when it was a valid number in [0, 1].
     std::optional<double> typed() const { return m_typed; }
@@ -33,7 +35,7 @@ public:
     QValidator::State validate(QString& text, int& pos) const override
     {
         const QString s = text.trimmed();
-        if (s.isEmpty() || s.endsWith(QLatin1Char('/')) || s == QLatin1String("-") || s.endsWith(QLatin1Char('.')))
+        if (s.isEmpty() || s.endsWith(QLatin1Char('/')) || s == QLatin1String("-") || s.endsWith(QLatin1Char('.')) || s.endsWith(QLatin1Char(',')))
             return QValidator::Intermediate;
         if (s.contains(QLatin1Char('/'))) {
             const auto q = parseRational(s.toStdString());
@@ -41,24 +43,24 @@ public:
                 return QValidator::Intermediate;
             return (*q >= 0 && *q <= 1) ? QValidator::Acceptable : QValidator::Intermediate;
         }
-        return QDoubleSpinBox::validate(text, pos);
+        return DecimalSpinBox::validate(text, pos);
     }
     double valueFromText(const QString& text) const override
     {
         const QString s = text.trimmed();
-        if (const auto q = parseRational(s.toStdString())) {
-            const double v = q->get_d();
+        if (const auto q = parseTypedRational(s)) {
+            const double v = toDouble(*q);
             if (std::isfinite(v) && v >= 0 && v <= 1) {
                 m_typed = v;
                 return v;
             }
         }
-        return QDoubleSpinBox::valueFromText(text);
+        return DecimalSpinBox::valueFromText(text);
     }
     void stepBy(int steps) override
     {
         m_typed.reset();
-        QDoubleSpinBox::stepBy(steps);
+        DecimalSpinBox::stepBy(steps);
     }
 
 private:

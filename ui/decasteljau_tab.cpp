@@ -1,4 +1,5 @@
 #include "ui/decasteljau_tab.h"
+#include "ui/number_text.h"
 
 #include "core/bernstein_properties.h"
 #include "core/degree_elevation.h"
@@ -61,13 +62,13 @@ QString number(double v)
 {
     if (v == 0.0 || !std::isfinite(v))
         return QStringLiteral("0");
-    return QString::number(v, 'g', 6);
+    return displaySignificant(v, 6);
 }
 
-QString pointText(const Point& p) { return QStringLiteral("(%1, %2)").arg(number(p.x), number(p.y)); }
+QString pointText(const Point& p) { return QStringLiteral("(%1%2%3)").arg(number(p.x), pointSeparator(), number(p.y)); }
 QString pointText(const RPoint& p)
 {
-    return QStringLiteral("(%1, %2)").arg(QString::fromStdString(toString(p.x)), QString::fromStdString(toString(p.y)));
+    return QStringLiteral("(%1%2%3)").arg(QString::fromStdString(toString(p.x)), pointSeparator(), QString::fromStdString(toString(p.y)));
 }
 
 template <class P> QString joinPoints(const std::vector<P>& points)
@@ -536,7 +537,7 @@ void DeCasteljauTab::updateWarning()
         m_warningText = tr("Degree %1 is high: in powers of t the condition number is %2, so only De Casteljau's "
                            "algorithm, which stays stable, is used here and the exact tables are hidden.")
                             .arg(n)
-                            .arg(powerBasisCondition(n), 0, 'g', 2);
+                            .arg(displaySignificant(powerBasisCondition(n), 2));
     else
         m_warningText.clear();
     m_warningLabel->setText(m_warningText);

@@ -1,4 +1,5 @@
 #include "ui/fit_exact_view.h"
+#include "ui/number_text.h"
 
 #include "core/power_basis.h"
 #include "core/polynomial_text.h"
@@ -20,7 +21,7 @@ QString decimal(double v, int digits = 6)
 {
     if (v == 0)
         v = 0; // no "-0"
-    return QString::number(v, 'g', digits);
+    return displaySignificant(v, digits);
 }
 
 std::string decimalText(double v, int digits = 6) { return decimal(v, digits).toStdString(); }
@@ -30,7 +31,7 @@ Polynomial<double> rounded(const Polynomial<double>& p, int digits = 6)
 {
     std::vector<double> c;
     for (double a : p.coefficients())
-        c.push_back(decimal(a, digits).toDouble());
+        c.push_back(QString::fromStdString(formatSignificant(a, digits)).toDouble());
     return Polynomial<double>(std::move(c));
 }
 

@@ -1,4 +1,5 @@
 #include "ui/fit_tab.h"
+#include "ui/number_text.h"
 
 #include "core/data_shape.h"
 #include "core/de_casteljau.h"
@@ -88,7 +89,7 @@ public:
     QSize minimumSizeHint() const override { return sizeHint(); }
 };
 
-QString number(double v) { return QString::number(v, 'g', 6); }
+QString number(double v) { return displaySignificant(v, 6); }
 
 QRectF boundsOf(const std::vector<Point>& a, const std::vector<Point>& b)
 {

@@ -1,4 +1,5 @@
 #include "ui/frog_canvas.h"
+#include "ui/number_text.h"
 
 #include "core/outline.h"
 #include "core/outline_sampling.h"
@@ -9,7 +10,6 @@
 #include <QCursor>
 #include <QEnterEvent>
 #include <QKeyEvent>
-#include <QLocale>
 #include <QMouseEvent>
 #include <QPainter>
 
@@ -218,8 +218,7 @@ void FrogCanvas::refreshTexts()
     emit fitCostChanged(m_fitShownUs);
 
     QStringList lines;
-    const QLocale locale;
-    const auto num = [&locale](double v, int decimals) { return locale.toString(v, 'f', decimals); };
+    const auto num = [](double v, int decimals) { return displayFixed(v, decimals); };
     if (m_sim) {
         const SceneSpec& scene = m_sim->scene();
         if (scene.has("outline-bezier")) {

@@ -1,4 +1,5 @@
 #include "ui/frog_parameters_panel.h"
+#include "ui/decimal_spin_box.h"
 
 #include "core/scene.h"
 #include "ui/frog_json.h"
@@ -87,7 +88,7 @@ void FrogParametersPanel::addRow(const QString& key, const QString& sub, int cou
     m_rows.push_back({key, sub, label});
     const Range r = rangeFor(key);
     for (int i = 0; i < count; ++i) {
-        auto* spin = new QDoubleSpinBox(this);
+        auto* spin = new DecimalSpinBox(this);
         spin->setRange(r.min, r.max);
         spin->setDecimals(r.decimals);
         spin->setSingleStep(r.step);

@@ -1,4 +1,5 @@
 #include "ui/frog_tab.h"
+#include "ui/number_text.h"
 
 #include "core/outline.h"
 #include "ui/frog_canvas.h"
@@ -226,7 +227,7 @@ FrogTab::FrogTab(QWidget* parent)
     });
     connect(m_canvas, &FrogCanvas::fitCostChanged, this, [this](double us) {
         if (m_fit->isChecked())
-            m_fitCost->setText(tr("Cost of the fit: %1 µs per frame.").arg(QLocale().toString(us, 'f', 1)));
+            m_fitCost->setText(tr("Cost of the fit: %1 µs per frame.").arg(displayFixed(us, 1)));
     });
     connect(m_canvas, &FrogCanvas::statusMessage, this, &TabPage::statusMessage);
     connect(m_params, &FrogParametersPanel::edited, this, [this](const QString& key, const QJsonValue& value) {
@@ -270,14 +271,23 @@ bool FrogTab::rebuild(const SceneSpec& scene, SolverKind solver, QString* error)
     return true;
 }
 
+QString FrogTab::sceneLoadError(const QString& name, const std::string& coreMessage)
+{
+    QStringList names;
+    for (const std::string& n : sceneNames())
+        names << fromStd(n);
+    // A known scene that fails to load is a fault in its file (or in how it is read):
+    // the core's own message says which, and hiding it behind "unknown" hides the cause.
+    if (names.contains(name))
+        return tr("The scene “%1” cannot be loaded: %2").arg(name, fromStd(coreMessage));
+    return tr("Unknown scene “%1”. The scenes are: %2.").arg(name, names.join(QStringLiteral(", ")));
+}
+
 bool FrogTab::setScene(const QString& name, QString* error)
 {
     auto spec = loadScene(name.toStdString());
     if (!spec) {
-        QStringList names;
-        for (const std::string& n : sceneNames())
-            names << fromStd(n);
-        setError(error, tr("Unknown scene “%1”. The scenes are: %2.").arg(name, names.join(QStringLiteral(", "))));
+        setError(error, sceneLoadError(name, spec.error().message));
         return false;
     }
     // The seed never had collisions (§5.2 is future work): those scenes start on the stable
@@ -557,7 +567,7 @@ void FrogTab::retranslate()
     if (!m_fit->isChecked())
         m_fitCost->setText(tr("Precomputed points: nothing to compute per frame."));
     else
-        m_fitCost->setText(tr("Cost of the fit: %1 µs per frame.").arg(QLocale().toString(m_canvas->fitMicroseconds(), 'f', 1)));
+        m_fitCost->setText(tr("Cost of the fit: %1 µs per frame.").arg(displayFixed(m_canvas->fitMicroseconds(), 1)));
 
     m_paramBox->setTitle(tr("Parameters"));
     m_paramBox->setToolTip(tr("Only this scene's parameters, with the names of Annex II. Changes apply at once: the "
@@ -614,7 +624,7 @@ bool FrogTab::loadState(const QJsonObject& state, QString* error)
     const QString name = state.value(QStringLiteral("scene")).toString();
     auto spec = loadScene(name.toStdString());
     if (!spec) {
-        setError(error, tr("Unknown scene “%1”.").arg(name));
+        setError(error, sceneLoadError(name, spec.error().message));
         return false;
     }
     SolverKind solver = SolverKind::Seed;

@@ -3,6 +3,7 @@
 #include "core/polynomial_text.h"
 #include "core/rational.h"
 #include "core/rational_approximation.h"
+#include "ui/number_text.h"
 #include "ui/point_editor.h"
 
 #include <QHeaderView>
@@ -18,7 +19,7 @@ QString coordinateText(double v)
 {
     if (auto q = smallRational(v, 1000))
         return QString::fromStdString(toString(*q));
-    return QString::fromStdString(formatDouble(v));
+    return displayNumber(v);
 }
 
 } // namespace
@@ -87,8 +88,8 @@ void PointTable::cellEdited(int row, int column)
     if (m_refreshing)
         return;
     const QString text = item(row, column)->text().trimmed();
-    const auto q = parseRational(text.toStdString());
-    const double v = q ? q->get_d() : std::nan("");
+    const auto q = parseTypedRational(text);
+    const double v = q ? toDouble(*q) : std::nan("");
     if (!q || !std::isfinite(v)) {
         emit message(tr("“%1” is not a number: type a decimal (2.5) or a fraction (5/2).").arg(text));
         refresh();

@@ -3,6 +3,7 @@
 #include "ui/canvas_style.h"
 
 #include <QCoreApplication>
+#include <QLocale>
 #include <qcustomplot.h>
 
 #include <cmath>
@@ -18,7 +19,7 @@ QString knobLabel(double knob)
         if (std::ldexp(1.0, -e) == knob)
             return QStringLiteral("2^-%1").arg(e);
     }
-    return QString::number(knob, 'g', 4);
+    return QLocale().toString(knob, 'g', 4); // the interface's decimal sign (C in granota-cli)
 }
 } // namespace
 

@@ -1,0 +1,52 @@
+#pragma once
+/// \file number_text.h
+/// Numbers for people, and numbers for files.
+///
+/// A number that goes to a file, a stream, the clipboard or the command line is written and
+/// read without the locale: `formatDouble` and `parseRational` from the core, or
+/// `QLocale::c()`. A `ca_ES.UTF-8` desktop sets LC_NUMERIC to a decimal comma, and anything
+/// that follows it there writes CSV rows such as "0,005,0,015" that no reader can split.
+///
+/// A number that the window shows a person follows the interface language instead, the
+/// same everywhere (spin boxes, tables, readouts, plot axes): a decimal comma in Catalan,
+/// a point in English, never a group separator. In Catalan a typed number may use either
+/// a comma or a point; a fraction such as 1/3 is read in both languages.
+
+#include "core/rational.h"
+
+#include <QLocale>
+#include <QString>
+
+#include <optional>
+#include <string>
+
+namespace granota::ui {
+
+/// The locale of the interface language ("ca" or "en"), without group separators.
+QLocale displayLocale(const QString& language);
+/// The locale of the language in use (currentLanguage()).
+QLocale displayLocale();
+
+/// The shortest text that reads back as `v`, with the interface's decimal sign ("0,1").
+QString displayNumber(double v);
+/// `decimals` digits after the decimal sign ("0,300").
+QString displayFixed(double v, int decimals);
+/// `digits` significant digits ("1,5e-08").
+QString displaySignificant(double v, int digits);
+/// A text of the core (numbers with a decimal point, none of them separated by commas)
+/// with the interface's decimal sign: "1.5 - 0.25t" → "1,5 - 0,25t" in Catalan.
+QString displayText(const std::string& cText);
+/// "(x, y)" — in Catalan "(x; y)", since the comma is the decimal sign there.
+QString displayPoint(double x, double y);
+/// The separator between the coordinates of a shown point: ", " or "; ".
+QString pointSeparator();
+
+/// A person's typed text with the number in the C form the core reads: in Catalan a
+/// decimal comma becomes a point; the Unicode minus that the window shows becomes '-'.
+QString typedToC(const QString& text);
+/// A number as typed by a person: an integer, a decimal (with the interface's decimal sign
+/// or a point) or a fraction. nullopt for anything else, including NaN and infinities.
+std::optional<Rational> parseTypedRational(const QString& text);
+std::optional<double> parseTypedNumber(const QString& text);
+
+} // namespace granota::ui
