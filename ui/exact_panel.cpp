@@ -1,4 +1,5 @@
 #include "ui/exact_panel.h"
+#include "ui/number_text.h"
 
 #include <QRegularExpression>
 #include <QScrollBar>
@@ -47,7 +48,7 @@ void ExactPanel::setPresentation(bool on)
 
 QString ExactPanel::polynomialHtml(const std::string& text)
 {
-    QString html = QString::fromStdString(text).toHtmlEscaped();
+    QString html = displayText(text).toHtmlEscaped();
     html.replace(QRegularExpression(QStringLiteral("\\^(-?[0-9]+)")), QStringLiteral("<sup>\\1</sup>"));
     return QStringLiteral("<span class=\"poly\">%1</span>").arg(html);
 }

@@ -19,13 +19,18 @@ QLocale displayLocale() { return displayLocale(currentLanguage()); }
 
 namespace {
 
-/// The C text of the core, with the decimal point replaced by the interface's.
+/// The C text of the core with the interface's decimal sign. The core writes no decimal
+/// commas, so each of its commas separates two things ("(1.5, 2)"): where the comma is the
+/// decimal sign, it becomes a semicolon first ("(1,5; 2)").
 QString localized(const std::string& cText)
 {
     QString s = QString::fromStdString(cText);
     const QString point = displayLocale().decimalPoint();
-    if (point != QLatin1String("."))
+    if (point != QLatin1String(".")) {
+        if (point == QLatin1String(","))
+            s.replace(QLatin1Char(','), QLatin1Char(';'));
         s.replace(QLatin1Char('.'), point);
+    }
     return s;
 }
 

@@ -33,8 +33,8 @@ QString displayNumber(double v);
 QString displayFixed(double v, int decimals);
 /// `digits` significant digits ("1,5e-08").
 QString displaySignificant(double v, int digits);
-/// A text of the core (numbers with a decimal point, none of them separated by commas)
-/// with the interface's decimal sign: "1.5 - 0.25t" → "1,5 - 0,25t" in Catalan.
+/// A text of the core with the interface's decimal sign: "1.5 - 0.25t" → "1,5 - 0,25t" and
+/// "(0.5, 2)" → "(0,5; 2)" in Catalan (the core's commas only ever separate).
 QString displayText(const std::string& cText);
 /// "(x, y)" — in Catalan "(x; y)", since the comma is the decimal sign there.
 QString displayPoint(double x, double y);
