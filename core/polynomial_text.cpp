@@ -1,9 +1,8 @@
 #include "core/polynomial_text.h"
 
 #include <cctype>
+#include <charconv>
 #include <cmath>
-#include <cstdlib>
-#include <cstdio>
 #include <sstream>
 
 namespace granota {
@@ -12,18 +11,22 @@ std::string formatDouble(double v)
 {
     if (v == 0)
         return "0"; // also folds -0
+    // std::to_chars and std::from_chars ignore the locale: "0.5" stays "0.5" where the
+    // decimal separator is a comma. With a precision they give exactly printf's %.*g.
     char buf[64];
+    char* const end = buf + sizeof buf;
     // Whole numbers as whole numbers: 100, not the equally short 1e+02.
-    if (std::fabs(v) < 1e16 && v == std::trunc(v)) {
-        std::snprintf(buf, sizeof buf, "%.0f", v);
-        return buf;
-    }
+    if (std::fabs(v) < 1e16 && v == std::trunc(v))
+        return std::string(buf, std::to_chars(buf, end, static_cast<long long>(v)).ptr);
+    std::string text;
     for (int precision = 1; precision <= 17; ++precision) {
-        std::snprintf(buf, sizeof buf, "%.*g", precision, v);
-        if (std::strtod(buf, nullptr) == v)
+        text.assign(buf, std::to_chars(buf, end, v, std::chars_format::general, precision).ptr);
+        double back = 0;
+        std::from_chars(text.data(), text.data() + text.size(), back);
+        if (back == v)
             break;
     }
-    return buf;
+    return text;
 }
 
 namespace {

@@ -3,7 +3,26 @@
 
 #include <QtTest>
 
+#include <clocale>
+#include <string>
+
 using namespace granota;
+
+namespace {
+
+/// Switches LC_NUMERIC to Catalan (decimal comma) for one scope, and back.
+class CatalanNumbers {
+public:
+    CatalanNumbers() : m_saved(std::setlocale(LC_NUMERIC, nullptr)) { m_active = std::setlocale(LC_NUMERIC, "ca_ES.UTF-8"); }
+    ~CatalanNumbers() { std::setlocale(LC_NUMERIC, m_saved.c_str()); }
+    bool active() const { return m_active; }
+
+private:
+    std::string m_saved;
+    bool m_active = false;
+};
+
+} // namespace
 
 class TestJson : public QObject {
     Q_OBJECT
@@ -32,6 +51,15 @@ private slots:
         Json a = Json::array();
         a.push(0.1).push(1e-9).push(-3).push(123456789.0).push(10).push(100).push(1500.5).push(1e21);
         QCOMPARE(a.dump(), std::string("[0.1,1e-09,-3,123456789,10,100,1500.5,1e+21]"));
+    }
+    void writesNumbersWhateverTheLocale()
+    {
+        CatalanNumbers catalan;
+        if (!catalan.active())
+            QSKIP("the ca_ES.UTF-8 locale is not installed");
+        Json a = Json::array();
+        a.push(0.5).push(1500.25).push(-2.5e-7).push(12);
+        QCOMPARE(a.dump(), std::string("[0.5,1500.25,-2.5e-07,12]"));
     }
     void rejects_data()
     {
