@@ -1,9 +1,12 @@
 #pragma once
 /// \file json.h
-/// A small JSON value for Granota's data files (scenes, examples) and the CLI's output:
-/// objects keep the order of their keys (so output reads in the order SPEC §6 lists
-/// them), numbers are doubles written in their shortest round-trip form, and parse()
-/// reports malformed text as an Error with the line and column.
+/// A small JSON value for Granota's data files (scenes, examples) and the CLI's
+/// output. Objects keep their keys in the order they were read or set, so what is
+/// written reads in a fixed order. Numbers are doubles, written in their shortest
+/// round-trip form, and read the same in any locale.
+/// parse() takes strict JSON only (nlohmann-json does the reading, out of sight of this
+/// header): anything else, nesting deeper than kMaxDepth, or a number too large for a
+/// double, is an Error naming the line and column (from 1, in bytes) where it stops.
 
 #include "core/expected.h"
 
@@ -20,6 +23,9 @@ class Json {
 public:
     using Array = std::vector<Json>;
     using Object = std::vector<std::pair<std::string, Json>>;
+
+    /// Deepest nesting of arrays and objects parse() accepts.
+    static constexpr int kMaxDepth = 256;
 
     Json() : m_v(nullptr) {}
     Json(bool b) : m_v(b) {}
@@ -59,6 +65,8 @@ public:
     std::string dump(int indent = 0) const;
 
 private:
+    struct Reader; ///< parse()'s handler of nlohmann's events (json.cpp)
+
     void write(std::string& out, int indent, int depth) const;
     std::variant<std::nullptr_t, bool, double, std::string, Array, Object> m_v;
 };
