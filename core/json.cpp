@@ -24,8 +24,15 @@ std::optional<bool> Json::asBool() const
 
 std::optional<double> Json::asNumber() const
 {
-    if (auto d = std::get_if<double>(&m_v))
-        return *d;
+    if (auto n = std::get_if<Number>(&m_v))
+        return n->value;
+    return std::nullopt;
+}
+
+std::optional<std::string_view> Json::numberText() const
+{
+    if (auto n = std::get_if<Number>(&m_v); n && !n->text.empty())
+        return std::string_view(n->text);
     return std::nullopt;
 }
 
@@ -300,7 +307,9 @@ private:
             // Not expected: nlohmann has checked the form already.
             return refuse(offset(text), "'" + std::string(text) + "' is not a number");
         }
-        return add(Json(value));
+        Json v;
+        v.m_v = Number{value, std::string(text)};
+        return add(std::move(v));
     }
 
     bool tooLarge(std::string_view number)
@@ -379,10 +388,10 @@ void Json::write(std::string& out, int indent, int depth) const
         out += "null";
     } else if (const bool* b = std::get_if<bool>(&m_v)) {
         out += *b ? "true" : "false";
-    } else if (const double* d = std::get_if<double>(&m_v)) {
+    } else if (const Number* n = std::get_if<Number>(&m_v)) {
         // JSON has no NaN or infinity; nothing of Granota's produces them, and if one
         // slipped through it must not yield invalid JSON.
-        out += std::isfinite(*d) ? formatDouble(*d) : "null";
+        out += std::isfinite(n->value) ? formatDouble(n->value) : "null";
     } else if (const std::string* s = std::get_if<std::string>(&m_v)) {
         writeString(out, *s);
     } else if (const Array* a = std::get_if<Array>(&m_v)) {

@@ -168,6 +168,29 @@ private slots:
         QVERIFY2(v.error().message.find(" at line 1, column ") != std::string::npos, v.error().message.c_str());
     }
 
+    // A number read keeps its text, for readers that want it exactly.
+    void numberTextAsWritten()
+    {
+        auto v = Json::parse("[0.10, -0, 1E+2, 123456789012345678901234567890, 7, {\"x\": 2.50}]");
+        QVERIFY(v.ok());
+        const Json::Array& a = *v->asArray();
+        QCOMPARE(std::string(*a[0].numberText()), std::string("0.10"));
+        QCOMPARE(std::string(*a[1].numberText()), std::string("-0"));
+        QVERIFY(std::signbit(*a[1].asNumber()));
+        QCOMPARE(std::string(*a[2].numberText()), std::string("1E+2"));
+        QCOMPARE(std::string(*a[3].numberText()), std::string("123456789012345678901234567890"));
+        QCOMPARE(std::string(*a[4].numberText()), std::string("7"));
+        const Json copy = a[5];
+        QCOMPARE(std::string(*copy.find("x")->numberText()), std::string("2.50"));
+        // Output is unchanged by it: the shortest form of the double.
+        QCOMPARE(v->dump(), std::string("[0.1,0,100,1.2345678901234568e+29,7,{\"x\":2.5}]"));
+        // Only parsed numbers have a text.
+        QVERIFY(!Json(0.5).numberText());
+        QVERIFY(!Json(3).numberText());
+        QVERIFY(!Json("0.5").numberText());
+        QVERIFY(!Json().numberText());
+        QVERIFY(!v->numberText());
+    }
     void readsNumbersWhateverTheLocale()
     {
         CatalanNumbers catalan;
@@ -178,6 +201,8 @@ private slots:
         const Json::Array& a = *v->asArray();
         QCOMPARE(*a[0].asNumber(), 0.5);
         QCOMPARE(*a[1].asNumber(), -1250.0);
+        QCOMPARE(std::string(*a[0].numberText()), std::string("0.5"));
+        QCOMPARE(std::string(*a[1].numberText()), std::string("-1.25e3"));
         QCOMPARE(int(Json::parse("[0,5]")->asArray()->size()), 2); // two numbers, not 0.5
     }
 
