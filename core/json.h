@@ -1,7 +1,7 @@
 #pragma once
 /// \file json.h
-/// A small JSON value for Granota's data files (scenes, examples) and the CLI's
-/// output. Objects keep their keys in the order they were read or set, so what is
+/// A small JSON value for Granota's data files (scenes, examples, point lists) and the
+/// CLI's output. Objects keep their keys in the order they were read or set, so what is
 /// written reads in a fixed order. Numbers are doubles, written in their shortest
 /// round-trip form and read the same in any locale; a number read by parse() also keeps
 /// its text as written, for readers that need it exactly (0.1 as 1/10, not a double).
