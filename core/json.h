@@ -1,9 +1,13 @@
 #pragma once
 /// \file json.h
-/// A small JSON value for Granota's data files (scenes, examples) and the CLI's output:
-/// objects keep the order of their keys (so output reads in the order SPEC §6 lists
-/// them), numbers are doubles written in their shortest round-trip form, and parse()
-/// reports malformed text as an Error with the line and column.
+/// A small JSON value for Granota's data files (scenes, examples, point lists) and the
+/// CLI's output. Objects keep their keys in the order they were read or set, so what is
+/// written reads in a fixed order. Numbers are doubles, written in their shortest
+/// round-trip form and read the same in any locale; a number read by parse() also keeps
+/// its text as written, for readers that need it exactly (0.1 as 1/10, not a double).
+/// parse() takes strict JSON only (nlohmann-json does the reading, out of sight of this
+/// header): anything else, nesting deeper than kMaxDepth, or a number too large for a
+/// double, is an Error naming the line and column (from 1, in bytes) where it stops.
 
 #include "core/expected.h"
 
@@ -21,10 +25,13 @@ public:
     using Array = std::vector<Json>;
     using Object = std::vector<std::pair<std::string, Json>>;
 
+    /// Deepest nesting of arrays and objects parse() accepts.
+    static constexpr int kMaxDepth = 256;
+
     Json() : m_v(nullptr) {}
     Json(bool b) : m_v(b) {}
-    Json(double d) : m_v(d) {}
-    Json(int i) : m_v(static_cast<double>(i)) {}
+    Json(double d) : m_v(Number{d, {}}) {}
+    Json(int i) : m_v(Number{static_cast<double>(i), {}}) {}
     Json(const char* s) : m_v(std::string(s)) {}
     Json(std::string s) : m_v(std::move(s)) {}
     Json(Array a) : m_v(std::move(a)) {}
@@ -36,7 +43,7 @@ public:
 
     bool isNull() const { return std::holds_alternative<std::nullptr_t>(m_v); }
     bool isBool() const { return std::holds_alternative<bool>(m_v); }
-    bool isNumber() const { return std::holds_alternative<double>(m_v); }
+    bool isNumber() const { return std::holds_alternative<Number>(m_v); }
     bool isString() const { return std::holds_alternative<std::string>(m_v); }
     bool isArray() const { return std::holds_alternative<Array>(m_v); }
     bool isObject() const { return std::holds_alternative<Object>(m_v); }
@@ -44,6 +51,8 @@ public:
     /// The value, or nullopt when it has another type.
     std::optional<bool> asBool() const;
     std::optional<double> asNumber() const;
+    /// A parsed number's text as written ("0.10", "-0", "1e2"); nullopt if made in code.
+    std::optional<std::string_view> numberText() const;
     std::optional<std::string> asString() const;
     const Array* asArray() const { return std::get_if<Array>(&m_v); }
     const Object* asObject() const { return std::get_if<Object>(&m_v); }
@@ -59,8 +68,15 @@ public:
     std::string dump(int indent = 0) const;
 
 private:
+    /// A number with, when parse() read it, its text (empty for numbers made in code).
+    struct Number {
+        double value;
+        std::string text;
+    };
+    struct Reader; ///< parse()'s handler of nlohmann's events (json.cpp)
+
     void write(std::string& out, int indent, int depth) const;
-    std::variant<std::nullptr_t, bool, double, std::string, Array, Object> m_v;
+    std::variant<std::nullptr_t, bool, Number, std::string, Array, Object> m_v;
 };
 
 } // namespace granota

@@ -1,5 +1,7 @@
 #include "core/point_list.h"
 
+#include "core/json.h"
+
 #include <cctype>
 #include <string>
 
@@ -32,6 +34,16 @@ Expected<Rational> coordinate(std::string_view text, std::size_t index, const ch
         return makeError(ErrorCode::InvalidInput, "point " + std::to_string(index) + ": " + axis + " = " + quoted(trim(text)) +
                                                       " is not a finite number (write integers, decimals or fractions p/q)");
     return *q;
+}
+
+/// A coordinate of a JSON point: a number, read exactly from its text as written, or a
+/// string holding one ("7/2"); anything else is refused as written.
+Expected<Rational> jsonCoordinate(const Json& value, std::size_t index, const char* axis)
+{
+    if (const auto number = value.numberText())
+        return coordinate(*number, index, axis);
+    const std::string text = value.isString() ? *value.asString() : value.dump();
+    return coordinate(text, index, axis);
 }
 
 Expected<RPoint> pair(std::string_view text, std::size_t index)
@@ -103,65 +115,37 @@ Expected<std::vector<RPoint>> parsePointCsv(std::string_view text)
 
 Expected<std::vector<RPoint>> parsePointJson(std::string_view text)
 {
-    // A deliberately small reader for exactly [[x,y],…]; anything else is an error.
-    std::size_t pos = 0;
-    const auto skip = [&] {
-        while (pos < text.size() && std::isspace(static_cast<unsigned char>(text[pos])))
-            ++pos;
+    const auto bad = [](const std::string& what) {
+        return makeError(ErrorCode::InvalidInput, "JSON points: " + what + " (expected [[x,y],…])");
     };
-    const auto expect = [&](char c) {
-        skip();
-        if (pos < text.size() && text[pos] == c) {
-            ++pos;
-            return true;
-        }
-        return false;
-    };
-    const auto bad = [&](const std::string& what) {
-        return makeError(ErrorCode::InvalidInput, "JSON points: " + what + " at character " + std::to_string(pos + 1) +
-                                                      " (expected [[x,y],…])");
-    };
-    const auto number = [&](std::size_t index, const char* axis) -> Expected<Rational> {
-        skip();
-        std::size_t begin = pos;
-        if (pos < text.size() && text[pos] == '"') {
-            const std::size_t close = text.find('"', pos + 1);
-            if (close == std::string_view::npos)
-                return bad("unterminated string");
-            pos = close + 1;
-            return coordinate(text.substr(begin + 1, close - begin - 1), index, axis);
-        }
-        while (pos < text.size() && text[pos] != ',' && text[pos] != ']' && !std::isspace(static_cast<unsigned char>(text[pos])))
-            ++pos;
-        return coordinate(text.substr(begin, pos - begin), index, axis);
-    };
-    std::vector<RPoint> points;
-    if (!expect('['))
-        return bad("no opening '['");
-    if (expect(']')) {
-        skip();
-        return makeError(ErrorCode::TooFewPoints, "the file holds no points");
+    auto doc = Json::parse(text);
+    if (!doc) {
+        constexpr std::string_view kPrefix = "JSON: "; // Json::parse's, "JSON points: " here
+        std::string what = doc.error().message;
+        if (what.compare(0, kPrefix.size(), kPrefix) == 0)
+            what.erase(0, kPrefix.size());
+        return bad(what);
     }
-    do {
-        if (!expect('['))
-            return bad("a point must be a pair [x,y]");
-        auto x = number(points.size(), "x");
+    const Json::Array* list = doc->asArray();
+    if (!list)
+        return bad("the text is " + quoted(doc->dump()) + ", not a list");
+    if (list->empty())
+        return makeError(ErrorCode::TooFewPoints, "the file holds no points");
+    std::vector<RPoint> points;
+    for (const Json& item : *list) {
+        const std::size_t index = points.size();
+        const Json::Array* xy = item.asArray();
+        if (!xy || xy->size() != 2)
+            return bad("point " + std::to_string(index) + " is " + quoted(item.dump()) +
+                       ", not a pair [x,y]");
+        auto x = jsonCoordinate((*xy)[0], index, "x");
         if (!x)
             return x.error();
-        if (!expect(','))
-            return bad("a point must be a pair [x,y]");
-        auto y = number(points.size(), "y");
+        auto y = jsonCoordinate((*xy)[1], index, "y");
         if (!y)
             return y.error();
-        if (!expect(']'))
-            return bad("a point must be a pair [x,y]");
         points.emplace_back(*x, *y);
-    } while (expect(','));
-    if (!expect(']'))
-        return bad("missing closing ']'");
-    skip();
-    if (pos != text.size())
-        return bad("unexpected text after the list");
+    }
     return points;
 }
 

@@ -4,7 +4,7 @@
 ///  - inline:  "x,y;x,y;…"           e.g. "2,3;-1,8;-5/2,0.5"
 ///  - CSV:     one "x,y" per line     (blank lines and lines starting with # ignored,
 ///                                     a first line of column names is skipped)
-///  - JSON:    [[x,y],[x,y],…]        (numbers, or strings holding fractions "p/q")
+///  - JSON:    [[x,y],[x,y],…]        (JSON numbers, or strings holding fractions "p/q")
 /// Every coordinate is read as the exact rational it denotes (integers, fractions p/q,
 /// decimals, exponents), so that exact computations get exactly what was typed.
 /// NaN, infinities and anything else is an error naming the offending point.

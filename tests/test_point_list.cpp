@@ -5,7 +5,26 @@
 
 #include <QtTest>
 
+#include <clocale>
+#include <string>
+
 using namespace granota;
+
+namespace {
+
+/// Switches LC_NUMERIC to Catalan (decimal comma) for one scope, and back.
+class CatalanNumbers {
+public:
+    CatalanNumbers() : m_saved(std::setlocale(LC_NUMERIC, nullptr)) { m_active = std::setlocale(LC_NUMERIC, "ca_ES.UTF-8"); }
+    ~CatalanNumbers() { std::setlocale(LC_NUMERIC, m_saved.c_str()); }
+    bool active() const { return m_active; }
+
+private:
+    std::string m_saved;
+    bool m_active = false;
+};
+
+} // namespace
 
 class TestPointList : public QObject {
     Q_OBJECT
@@ -43,6 +62,42 @@ private slots:
         QVERIFY(parsePointFile("[[1,2]]").ok());
         QVERIFY(parsePointFile("1,2\n").ok());
     }
+    void jsonDecimalsExact()
+    {
+        // The decimals as written, not the doubles nearest to them.
+        auto p = parsePointJson("[[0.1, 3], [-0.30, 1e-3], [\"1/3\", 12345678901234567890.5]]");
+        QVERIFY2(p.ok(), p.ok() ? "" : p.error().message.c_str());
+        QCOMPARE((*p)[0].x, frac(1, 10));
+        QCOMPARE((*p)[1].x, frac(-3, 10));
+        QCOMPARE((*p)[1].y, frac(1, 1000));
+        QCOMPARE((*p)[2].x, frac(1, 3));
+        QCOMPARE((*p)[2].y, Rational(mpz_class("24691357802469135781"), mpz_class(2)));
+        CatalanNumbers catalan; // where the decimal separator is a comma, too
+        if (!catalan.active())
+            QSKIP("the ca_ES.UTF-8 locale is not installed");
+        auto q = parsePointJson("[[0.1, 2.5]]");
+        QVERIFY2(q.ok(), q.ok() ? "" : q.error().message.c_str());
+        QCOMPARE((*q)[0].x, frac(1, 10));
+        QCOMPARE((*q)[0].y, frac(5, 2));
+    }
+    void jsonErrorsSayWhere_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("expected");
+        QTest::newRow("syntax") << "[[1,2],\n [3 4]]" << "at line 2, column 5";
+        QTest::newRow("triple") << "[[1,2],[1,2,3]]" << "point 1 is '[1,2,3]', not a pair [x,y]";
+        QTest::newRow("not a list") << "{\"x\":1}" << "not a list";
+        QTest::newRow("bad string") << "[[1,2],[\"two\",3]]" << "point 1: x = 'two' is not a finite number";
+        QTest::newRow("null") << "[[1,null]]" << "point 0: y = 'null' is not a finite number";
+    }
+    void jsonErrorsSayWhere()
+    {
+        QFETCH(QString, text);
+        QFETCH(QString, expected);
+        auto p = parsePointJson(text.toStdString());
+        QVERIFY(!p.ok());
+        QVERIFY2(p.error().message.find(expected.toStdString()) != std::string::npos, p.error().message.c_str());
+    }
 
     void rejects_data()
     {
@@ -61,6 +116,9 @@ private slots:
         QTest::newRow("json unterminated") << "[[1,2]" << true;
         QTest::newRow("json trailing text") << "[[1,2]] x" << true;
         QTest::newRow("json empty") << "[]" << true;
+        QTest::newRow("json plus sign") << "[[+1,2]]" << true;        // not a JSON number: write "+1"
+        QTest::newRow("json bare fraction") << "[[7/2,2]]" << true;   // fractions go in strings: "7/2"
+        QTest::newRow("json leading dot") << "[[.5,2]]" << true;      // nor is .5
         QTest::newRow("binary garbage") << QString::fromLatin1("\x01\x02\xff,\x03") << false;
     }
     void rejects()
