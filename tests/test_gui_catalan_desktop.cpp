@@ -224,6 +224,8 @@ private slots:
         QCOMPARE(granota::ui::displayNumber(0.25), QStringLiteral("0,25"));
         QCOMPARE(granota::ui::displayPoint(1.5, -2), QStringLiteral("(1,5; -2)"));
         QCOMPARE(granota::ui::displayText("(0.5 - 1.25t, 3)"), QStringLiteral("(0,5 - 1,25t; 3)"));
+        QCOMPARE(granota::ui::displayText("(1/2 - 3t, 11/2)"), QStringLiteral("(1/2 - 3t, 11/2)")); // as the thesis prints it
+        QCOMPARE(granota::ui::displayPoint(2, -3), QStringLiteral("(2, -3)"));
         QCOMPARE(granota::ui::displaySignificant(3.66950989e-08, 2), QStringLiteral("3,7e-08"));
         // Spin boxes: the frog's parameters.
         QVERIFY(window.showTab(QStringLiteral("frog")));

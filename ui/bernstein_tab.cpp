@@ -70,10 +70,10 @@ QString residualText(double r) { return r == 0.0 ? QStringLiteral("0") : display
 
 QString mark(bool ok) { return ok ? QStringLiteral("<span style=\"color:#2c8a2c\">✓</span>") : QStringLiteral("<span style=\"color:#c62828\">✗</span>"); }
 
-QString pointText(const Point& p) { return QStringLiteral("(%1%2%3)").arg(number(p.x), pointSeparator(), number(p.y)); }
+QString pointText(const Point& p) { return displayPair(number(p.x), number(p.y)); }
 QString pointText(const RPoint& p)
 {
-    return QStringLiteral("(%1%2%3)").arg(QString::fromStdString(toString(p.x)), pointSeparator(), QString::fromStdString(toString(p.y)));
+    return QStringLiteral("(%1, %2)").arg(QString::fromStdString(toString(p.x)), QString::fromStdString(toString(p.y)));
 }
 
 } // namespace

@@ -65,10 +65,10 @@ QString number(double v)
     return displaySignificant(v, 6);
 }
 
-QString pointText(const Point& p) { return QStringLiteral("(%1%2%3)").arg(number(p.x), pointSeparator(), number(p.y)); }
+QString pointText(const Point& p) { return displayPair(number(p.x), number(p.y)); }
 QString pointText(const RPoint& p)
 {
-    return QStringLiteral("(%1%2%3)").arg(QString::fromStdString(toString(p.x)), pointSeparator(), QString::fromStdString(toString(p.y)));
+    return QStringLiteral("(%1, %2)").arg(QString::fromStdString(toString(p.x)), QString::fromStdString(toString(p.y)));
 }
 
 template <class P> QString joinPoints(const std::vector<P>& points)

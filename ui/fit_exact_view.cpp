@@ -144,9 +144,9 @@ QString FitExactView::html(const Input& in)
         std::vector<RPoint> P;
         for (int j = 0; j < exact->P.rows(); ++j) {
             P.emplace_back(exact->P(j, 0), exact->P(j, 1));
-            html += line(QStringLiteral("%1 = (%2%4%3)")
+            html += line(QStringLiteral("%1 = (%2, %3)")
                              .arg(sub(QStringLiteral("P"), j), QString::fromStdString(toString(exact->P(j, 0))),
-                                  QString::fromStdString(toString(exact->P(j, 1))), pointSeparator()));
+                                  QString::fromStdString(toString(exact->P(j, 1)))));
         }
         html += ExactPanel::heading(tr("Fitted curve α(t) = Σ Bⱼⁿ(t) Pⱼ"));
         const Vec2<Polynomial<Rational>> alpha = bezierToPowerBasis(P);
@@ -184,9 +184,9 @@ QString FitExactView::html(const Input& in)
     }
     html += ExactPanel::heading(tr("Control points P"));
     for (std::size_t j = 0; j < fit.controlPoints.size(); ++j)
-        html += line(QStringLiteral("%1 = (%2%4%3)")
-                         .arg(sub(QStringLiteral("P"), static_cast<int>(j)), decimal(fit.controlPoints[j].x),
-                              decimal(fit.controlPoints[j].y), pointSeparator()));
+        html += line(QStringLiteral("%1 = %2")
+                         .arg(sub(QStringLiteral("P"), static_cast<int>(j)),
+                              displayPair(decimal(fit.controlPoints[j].x), decimal(fit.controlPoints[j].y))));
     constexpr int kMaxPowerDegree = 12;
     if (n <= kMaxPowerDegree) {
         html += ExactPanel::heading(tr("Fitted curve α(t) = Σ Bⱼⁿ(t) Pⱼ"));

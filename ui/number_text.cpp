@@ -20,13 +20,13 @@ QLocale displayLocale() { return displayLocale(currentLanguage()); }
 namespace {
 
 /// The C text of the core with the interface's decimal sign. The core writes no decimal
-/// commas, so each of its commas separates two things ("(1.5, 2)"): where the comma is the
-/// decimal sign, it becomes a semicolon first ("(1,5; 2)").
+/// commas, so each of its commas separates two things ("(1.5, 2)"): where a decimal comma
+/// appears, the separator becomes a semicolon first ("(1,5; 2)"); "(1/2, 3)" stays.
 QString localized(const std::string& cText)
 {
     QString s = QString::fromStdString(cText);
     const QString point = displayLocale().decimalPoint();
-    if (point != QLatin1String(".")) {
+    if (point != QLatin1String(".") && s.contains(QLatin1Char('.'))) {
         if (point == QLatin1String(","))
             s.replace(QLatin1Char(','), QLatin1Char(';'));
         s.replace(QLatin1Char('.'), point);
@@ -41,15 +41,13 @@ QString displayFixed(double v, int decimals) { return localized(formatFixed(v, d
 QString displaySignificant(double v, int digits) { return localized(formatSignificant(v, digits)); }
 QString displayText(const std::string& cText) { return localized(cText); }
 
-QString pointSeparator()
+QString displayPair(const QString& x, const QString& y)
 {
-    return displayLocale().decimalPoint() == QLatin1String(",") ? QStringLiteral("; ") : QStringLiteral(", ");
+    const bool comma = x.contains(QLatin1Char(',')) || y.contains(QLatin1Char(','));
+    return QLatin1Char('(') + x + (comma ? QStringLiteral("; ") : QStringLiteral(", ")) + y + QLatin1Char(')');
 }
 
-QString displayPoint(double x, double y)
-{
-    return QLatin1Char('(') + displayNumber(x) + pointSeparator() + displayNumber(y) + QLatin1Char(')');
-}
+QString displayPoint(double x, double y) { return displayPair(displayNumber(x), displayNumber(y)); }
 
 QString typedToC(const QString& text)
 {

@@ -34,12 +34,13 @@ QString displayFixed(double v, int decimals);
 /// `digits` significant digits ("1,5e-08").
 QString displaySignificant(double v, int digits);
 /// A text of the core with the interface's decimal sign: "1.5 - 0.25t" → "1,5 - 0,25t" and
-/// "(0.5, 2)" → "(0,5; 2)" in Catalan (the core's commas only ever separate).
+/// "(0.5, 2)" → "(0,5; 2)" in Catalan (the core's commas only ever separate). Texts without
+/// decimals, such as the thesis's fractions "(1/2, 11/2)", are shown as printed.
 QString displayText(const std::string& cText);
-/// "(x, y)" — in Catalan "(x; y)", since the comma is the decimal sign there.
+/// "(x, y)" of two shown numbers; "(x; y)" when one has a decimal comma ("(1,5; 2)").
+QString displayPair(const QString& x, const QString& y);
+/// displayPair of two doubles, each the shortest round-trip text.
 QString displayPoint(double x, double y);
-/// The separator between the coordinates of a shown point: ", " or "; ".
-QString pointSeparator();
 
 /// A person's typed text with the number in the C form the core reads: in Catalan a
 /// decimal comma becomes a point; the Unicode minus that the window shows becomes '-'.
