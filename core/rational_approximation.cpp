@@ -22,7 +22,7 @@ std::optional<Rational> smallRational(double d, long maxDenominator)
         q.canonicalize();
         if (negative)
             q = -q;
-        if (q.get_d() == d)
+        if (toDouble(q) == d)
             return q;
         h0 = h1; h1 = h2; k0 = k1; k1 = k2;
         const double frac = x - a;

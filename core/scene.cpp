@@ -352,7 +352,7 @@ Expected<bool> applySetting(SceneSpec& scene, const std::string& keyValue)
             auto q = parseRational(item);
             if (!q)
                 return makeError(ErrorCode::InvalidInput, "--set " + key + ": '" + item + "' is not a finite number");
-            list.push(q->get_d());
+            list.push(toDouble(*q));
             ++count;
             if (comma == std::string::npos)
                 break;

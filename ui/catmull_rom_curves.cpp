@@ -76,7 +76,7 @@ CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomS
         CatmullRomCurve curve;
         curve.tau = tau;
         curve.ends = ends;
-        auto segs = curveSegments(points, tau.get_d(), ends, alpha);
+        auto segs = curveSegments(points, toDouble(tau), ends, alpha);
         if (!segs) {
             curve.error = translatedError(segs.error(), ends);
             return curve;

@@ -223,7 +223,7 @@ QString processingSection(const CatmullRomSettings& settings)
                      .toHtmlEscaped());
     std::vector<QStringList> rows;
     for (const Rational& tau : settings.taus) {
-        const double s = tauToCurveTightness(tau.get_d());
+        const double s = tauToCurveTightness(toDouble(tau));
         const auto exact = smallRational(s);
         rows.push_back({QStringLiteral("τ = %1").arg(tauText(tau)),
                         QStringLiteral("curveTightness(%1)").arg(exact ? tauText(*exact) : text(formatDouble(s)))});

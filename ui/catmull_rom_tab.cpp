@@ -50,7 +50,7 @@ QString tauString(const Rational& tau) { return QString::fromStdString(toString(
 /// τ as Processing's curveTightness(s), s = 1 − 2τ, as a short fraction or decimal.
 QString tightnessString(const Rational& tau)
 {
-    const double s = tauToCurveTightness(tau.get_d());
+    const double s = tauToCurveTightness(toDouble(tau));
     if (const auto q = smallRational(s))
         return QString::fromStdString(toString(*q));
     return QString::fromStdString(formatDouble(s));
@@ -372,7 +372,7 @@ void CatmullRomTab::syncControls()
     m_tauSlider->setEnabled(hasSelection);
     if (hasSelection) {
         const Rational& tau = m_settings.taus[static_cast<std::size_t>(m_settings.selectedTau)];
-        m_tauSlider->setValue(static_cast<int>(std::lround(tau.get_d() * kSliderSteps)));
+        m_tauSlider->setValue(static_cast<int>(std::lround(toDouble(tau) * kSliderSteps)));
         m_sliderLabel->setText(tr("Selected: τ = %1, Processing's curveTightness(%2)")
                                    .arg(tauString(tau), tightnessString(tau)));
     }
@@ -578,7 +578,7 @@ void CatmullRomTab::updatePlot()
     double lo = 0, hi = 1;
     for (std::size_t n = 0; n < shown.size(); ++n) {
         const int i = shown[n];
-        const auto w = blendingFunctions(m_settings.taus[static_cast<std::size_t>(i)].get_d());
+        const auto w = blendingFunctions(toDouble(m_settings.taus[static_cast<std::size_t>(i)]));
         for (int j = 0; j < 4; ++j) {
             QVector<double> y(kPlotSamples);
             for (int k = 0; k < kPlotSamples; ++k) {

@@ -47,7 +47,7 @@ public:
     {
         const QString s = text.trimmed();
         if (const auto q = parseRational(s.toStdString())) {
-            const double v = q->get_d();
+            const double v = toDouble(*q);
             if (std::isfinite(v) && v >= 0 && v <= 1) {
                 m_typed = v;
                 return v;

@@ -88,7 +88,7 @@ void PointTable::cellEdited(int row, int column)
         return;
     const QString text = item(row, column)->text().trimmed();
     const auto q = parseRational(text.toStdString());
-    const double v = q ? q->get_d() : std::nan("");
+    const double v = q ? toDouble(*q) : std::nan("");
     if (!q || !std::isfinite(v)) {
         emit message(tr("“%1” is not a number: type a decimal (2.5) or a fraction (5/2).").arg(text));
         refresh();

@@ -26,7 +26,7 @@ Expected<CommandOutput> run(const Arguments& args)
     Json values = Json::array(), polys = Json::array();
     // Values through the recursion of Lemma 2.1: exact, or in double (stable on [0,1]).
     const std::vector<Rational> exactValues = exact ? bernsteinAll(*n, *t) : std::vector<Rational>{};
-    const std::vector<double> doubleValues = exact ? std::vector<double>{} : bernsteinAll(*n, t->get_d());
+    const std::vector<double> doubleValues = exact ? std::vector<double>{} : bernsteinAll(*n, toDouble(*t));
     for (int i = 0; i <= *n; ++i) {
         const Polynomial<Rational> b = bernsteinPolynomial(i, *n);
         Json coefficients = Json::array();

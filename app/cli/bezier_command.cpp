@@ -53,7 +53,7 @@ Expected<CommandOutput> run(const Arguments& args)
         pointText = text(table.point());
         tangentText = text(table.tangent());
     } else {
-        const auto table = deCasteljau(toDouble(*points), t->get_d());
+        const auto table = deCasteljau(toDouble(*points), toDouble(*t));
         for (int r = 0; r <= n; ++r) {
             Json level = Json::array();
             txt << "  r = " << r << ":";

@@ -74,7 +74,7 @@ Expected<CommandOutput> run(const Arguments& args)
             }
         }
     } else {
-        auto segs = catmullRomSegments(toDouble(*points), tau->get_d(), mode, alpha->get_d());
+        auto segs = catmullRomSegments(toDouble(*points), toDouble(*tau), mode, toDouble(*alpha));
         if (!segs)
             return segs.error();
         for (std::size_t i = 0; i < segs->size(); ++i) {

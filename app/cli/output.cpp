@@ -4,7 +4,7 @@
 
 namespace granota::cli {
 
-Json number(const Rational& q, bool exact) { return exact ? Json(toString(q)) : Json(q.get_d()); }
+Json number(const Rational& q, bool exact) { return exact ? Json(toString(q)) : Json(toDouble(q)); }
 Json number(double d) { return Json(d); }
 
 Json point(const RPoint& p, bool exact)
