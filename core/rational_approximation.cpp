@@ -29,6 +29,8 @@ std::optional<Rational> smallRational(double d, long maxDenominator)
         if (frac <= 0)
             return std::nullopt;
         x = 1.0 / frac;
+        if (!std::isfinite(x))
+            return std::nullopt; // d is subnormal (1e-320): 1/d overflows, no small fraction is d
     }
     return std::nullopt;
 }

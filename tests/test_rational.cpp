@@ -2,6 +2,7 @@
 #include "core/polynomial.h"
 #include "core/polynomial_text.h"
 #include "core/rational.h"
+#include "core/rational_approximation.h"
 
 #include <QtTest>
 
@@ -88,6 +89,17 @@ private slots:
         QCOMPARE(toDouble(*parseRational(formatDouble(0.1))), 0.1);
         QCOMPARE(toDouble(*parseRational("-1e-400")), 0.0);
         QVERIFY(std::signbit(toDouble(*parseRational("-1e-400")))); // −0, as strtod reads it
+    }
+    void smallFractions()
+    {
+        QCOMPARE(toString(*smallRational(0.1)), std::string("1/10")); // its nearest double is 0.1
+        QCOMPARE(toString(*smallRational(-1.0 / 3)), std::string("-1/3"));
+        QVERIFY(!smallRational(0.1 + 1e-9).has_value());
+        // Found with the document fuzz target's harness: a point at 1e-320 crashed the
+        // point table (1/d overflowed to infinity, and GMP aborts on mpz_class(inf)).
+        QVERIFY(!smallRational(1e-320).has_value());
+        QVERIFY(!smallRational(-4.9406564584124654e-324).has_value());
+        QCOMPARE(toString(*smallRational(0.0)), std::string("0"));
     }
     void polynomialText()
     {
