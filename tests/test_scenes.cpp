@@ -1,6 +1,7 @@
 // Scenes as data: every scene of SPEC §1.5 by name, in the thesis's order, with exactly
 // the components it needs, its parameters only, and --set checked.
 #include "core/scene.h"
+#include "core/scene_layout.h"
 
 #include <QtTest>
 
@@ -142,6 +143,18 @@ private slots:
         QVERIFY(!r.ok());
         QVERIFY(!r.error().message.empty());
         QCOMPARE(sceneToJson(*s).dump(), sceneToJson(before).dump()); // nothing changed
+    }
+
+    void aWideFrameHoldsEveryBodyInOneRow()
+    {
+        // Found by the scene fuzz target (UBSan): in a frame 1e300 px wide the number of
+        // bodies per row overflowed an int (and came out as 1: a single column).
+        auto s = loadScene("many-bodies");
+        QVERIFY(applySetting(*s, "width=1e300").ok());
+        const std::vector<Point> at = bodyStarts(*s);
+        QCOMPARE(static_cast<int>(at.size()), s->bodies);
+        for (const Point& p : at)
+            QCOMPARE(p.y, at.front().y);
     }
 
     void unknownScene()
