@@ -13,6 +13,9 @@ namespace {
 
 constexpr int kMaxBodies = 5000;
 constexpr int kMaxBezierSamples = 2000;
+/// Every body's vertices together: 5000 bodies of 10000 sides would be 50 million
+/// vertices, gigabytes and minutes to build (a .granota document can ask for it).
+constexpr long kMaxVertices = 100000;
 
 Error bad(const std::string& scene, const std::string& what)
 {
@@ -226,6 +229,9 @@ Expected<bool> validate(const SceneSpec& s)
     auto ok = validateFrogParams(s.params);
     if (!ok)
         return makeError(ok.error().code, "scene '" + s.name + "': " + ok.error().message);
+    if (static_cast<long>(s.bodies) * std::max(s.params.sides, s.bezierSamples) > kMaxVertices)
+        return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': bodies × sides must be at most " +
+                                                    std::to_string(kMaxVertices) + " vertices in all");
     for (double l : s.chain)
         if (!(l >= 0) || !std::isfinite(l))
             return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': chain lengths must be finite and ≥ 0");
