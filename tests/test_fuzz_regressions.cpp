@@ -41,7 +41,7 @@ private slots:
         QTest::addColumn<QString>("file");
         for (const char* target : kTargets)
             for (const QString& file : inputsOf(QLatin1String(target)))
-                QTest::newRow(qPrintable(QStringLiteral("%1/%2").arg(QLatin1String(target), QDir(GRANOTA_SOURCE_DIR "/tests/fuzz").relativeFilePath(file))))
+                QTest::newRow(qPrintable(QDir(QStringLiteral(GRANOTA_SOURCE_DIR "/tests/fuzz")).relativeFilePath(file)))
                     << QString::fromLatin1(target) << file;
     }
 
