@@ -1,6 +1,7 @@
 #include "core/rational.h"
 
 #include <cctype>
+#include <cfloat>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -111,26 +112,6 @@ std::string toString(const Rational& q)
     return q.get_num().get_str() + "/" + q.get_den().get_str();
 }
 
-double nearestDouble(const Rational& q)
-{
-    const double t = q.get_d(); // truncated: |t| <= |q|, and the true nearest is t or its outward neighbour
-    if (!std::isfinite(t) || q == 0)
-        return t;
-    const double away = std::nextafter(t, t > 0 ? HUGE_VAL : -HUGE_VAL);
-    if (!std::isfinite(away)) {
-        // Past the largest double by more than half a unit: overflow, as from_chars would.
-        const Rational halfUlp = (exactRational(t) - exactRational(std::nextafter(t, 0.0))) / 2;
-        return abs(q - exactRational(t)) >= halfUlp ? away : t;
-    }
-    const Rational dt = abs(q - exactRational(t)), da = abs(exactRational(away) - q);
-    if (dt != da)
-        return dt < da ? t : away;
-    // A tie: the even significand.
-    std::int64_t bits;
-    std::memcpy(&bits, &t, sizeof bits);
-    return (bits & 1) == 0 ? t : away;
-}
-
 Rational exactRational(double d)
 {
     assert(std::isfinite(d));
@@ -154,12 +135,34 @@ std::optional<Rational> exactSqrt(const Rational& q)
     return r;
 }
 
+double toDouble(const Rational& q)
+{
+    const double truncated = q.get_d(); // towards zero; ±infinity from 2^1024 on
+    if (!std::isfinite(truncated) || exactRational(truncated) == q)
+        return truncated;
+    const double away = std::nextafter(truncated, q > 0 ? HUGE_VAL : -HUGE_VAL);
+    if (!std::isfinite(away)) {
+        // Beyond the largest double: infinity from halfway to the next power of two on.
+        static const Rational halfway = exactRational(DBL_MAX) + exactRational(std::ldexp(1.0, 970));
+        return abs(q) >= halfway ? away : truncated;
+    }
+    const Rational below = abs(q - exactRational(truncated)), above = abs(exactRational(away) - q);
+    double nearest = below < above ? truncated : away;
+    if (below == above) {
+        // A tie: the one whose last bit of mantissa is 0.
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &truncated, sizeof bits);
+        nearest = (bits & 1) == 0 ? truncated : away;
+    }
+    return nearest == 0 ? std::copysign(0.0, q < 0 ? -1.0 : 1.0) : nearest; // -1e-400 is -0, as strtod reads it
+}
+
 std::vector<Point> toDouble(const std::vector<RPoint>& points)
 {
     std::vector<Point> out;
     out.reserve(points.size());
     for (const RPoint& p : points)
-        out.emplace_back(p.x.get_d(), p.y.get_d());
+        out.emplace_back(toDouble(p.x), toDouble(p.y));
     return out;
 }
 

@@ -43,11 +43,11 @@ inline Rational frac(long p, long q)
     return r;
 }
 
-/// The double nearest to q (ties to even), as reading its decimal would give: 0.05688
-/// stays 0.05688. GMP's get_d() truncates towards zero, one unit in the last place off
-/// for about half of all decimals. ±infinity beyond the largest double.
-double nearestDouble(const Rational& q);
-inline double toDouble(const Rational& q) { return nearestDouble(q); }
+/// The double nearest to q (ties to even), as strtod reads the same decimal: "0.1" gives
+/// 0.1, and a double written shortest reads back as itself; ±infinity beyond the largest
+/// double. (GMP's get_d() truncates towards zero instead: 1/10 would become
+/// 0.09999999999999999, and each retyping of that one step smaller.)
+double toDouble(const Rational& q);
 inline double toDouble(double d) { return d; }
 inline double toDouble(long double d) { return static_cast<double>(d); }
 

@@ -22,13 +22,15 @@ std::optional<Rational> smallRational(double d, long maxDenominator)
         q.canonicalize();
         if (negative)
             q = -q;
-        if (q.get_d() == d)
+        if (toDouble(q) == d)
             return q;
         h0 = h1; h1 = h2; k0 = k1; k1 = k2;
         const double frac = x - a;
         if (frac <= 0)
             return std::nullopt;
         x = 1.0 / frac;
+        if (!std::isfinite(x))
+            return std::nullopt; // d is subnormal (1e-320): 1/d overflows, no small fraction is d
     }
     return std::nullopt;
 }

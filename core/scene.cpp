@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace granota {
 
@@ -13,6 +14,12 @@ namespace {
 
 constexpr int kMaxBodies = 5000;
 constexpr int kMaxBezierSamples = 2000;
+/// The largest magnitude of any number of a scene (lengths, coordinates, areas, factors),
+/// the seed's own limit: beyond it a body's area or a chain's reach overflows to infinity.
+constexpr double kMaxMagnitude = 1e15;
+/// Every body's vertices together: 5000 bodies of 10000 sides would be 50 million
+/// vertices, gigabytes and minutes to build (a .granota document can ask for it).
+constexpr long kMaxVertices = 100000;
 
 Error bad(const std::string& scene, const std::string& what)
 {
@@ -221,11 +228,53 @@ Expected<bool> setParam(SceneSpec& s, const std::string& key, const Json& v)
     return bad(s.name, "unknown parameter '" + key + "'");
 }
 
+/// The name of the first number of the scene beyond ±kMaxMagnitude, if any.
+std::optional<std::string> tooLarge(const SceneSpec& s)
+{
+    const FrogParams& p = s.params;
+    const std::pair<const char*, double> numbers[] = {
+        {"gravity", p.gravity.x}, {"gravity", p.gravity.y}, {"friction", p.friction.x}, {"friction", p.friction.y},
+        {"v0", p.v0.x}, {"v0", p.v0.y}, {"center", p.center.x}, {"center", p.center.y},
+        {"area_factor", p.areaFactor}, {"target_area", p.targetArea}, {"spring_length", p.springLength},
+        {"velmax", p.velmax}, {"radius", p.radius}, {"width", p.width}, {"height", p.height},
+        {"angle_limits", s.chainShoulderMin}, {"angle_limits", s.chainShoulderMax},
+        {"angle_limits", s.chainElbowMin}, {"angle_limits", s.chainElbowMax}};
+    for (const auto& [name, v] : numbers)
+        if (!(std::fabs(v) <= kMaxMagnitude))
+            return name;
+    for (const LegParams& l : p.legs) {
+        for (double v : {l.upper, l.lower})
+            if (!(std::fabs(v) <= kMaxMagnitude))
+                return "legs";
+        for (double v : {l.shoulderMin, l.shoulderMax, l.elbowMin, l.elbowMax})
+            if (!(std::fabs(v) <= kMaxMagnitude))
+                return "angle_limits";
+    }
+    for (double l : s.chain)
+        if (!(std::fabs(l) <= kMaxMagnitude))
+            return "chain";
+    for (const auto& o : s.obstacles)
+        for (Point q : o.points)
+            if (!(std::fabs(q.x) <= kMaxMagnitude && std::fabs(q.y) <= kMaxMagnitude))
+                return "obstacles";
+    for (const auto& sh : s.shapes)
+        for (Point q : sh.points)
+            if (!(std::fabs(q.x) <= kMaxMagnitude && std::fabs(q.y) <= kMaxMagnitude &&
+                  std::fabs(sh.at.x) <= kMaxMagnitude && std::fabs(sh.at.y) <= kMaxMagnitude))
+                return "shapes";
+    return std::nullopt;
+}
+
 Expected<bool> validate(const SceneSpec& s)
 {
     auto ok = validateFrogParams(s.params);
     if (!ok)
         return makeError(ok.error().code, "scene '" + s.name + "': " + ok.error().message);
+    if (auto big = tooLarge(s))
+        return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': " + *big + " must be at most 1e15 in magnitude");
+    if (static_cast<long>(s.bodies) * std::max(s.params.sides, s.bezierSamples) > kMaxVertices)
+        return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': bodies × sides must be at most " +
+                                                    std::to_string(kMaxVertices) + " vertices in all");
     for (double l : s.chain)
         if (!(l >= 0) || !std::isfinite(l))
             return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': chain lengths must be finite and ≥ 0");

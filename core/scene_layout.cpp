@@ -19,7 +19,9 @@ std::vector<Point> bodyStarts(const SceneSpec& s)
         return {s.params.center};
     const double w = s.params.width, h = s.params.height, r = std::max(1.0, s.params.radius);
     const double pitch = 2.2 * r; // a little more than a diameter apart
-    const int perRow = std::max(1, static_cast<int>((w - 2 * r) / pitch));
+    // At most one row of all the bodies (a frame 1e300 px wide holds more than an int counts).
+    const double across = (w - 2 * r) / pitch;
+    const int perRow = across >= s.bodies ? s.bodies : std::max(1, static_cast<int>(across));
     for (int i = 0; i < s.bodies; ++i) {
         const int row = i / perRow, col = i % perRow;
         const double x = 2.1 * r + col * pitch + (row % 2) * 0.5 * r; // every other row shifted

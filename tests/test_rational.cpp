@@ -2,6 +2,7 @@
 #include "core/polynomial.h"
 #include "core/polynomial_text.h"
 #include "core/rational.h"
+#include "core/rational_approximation.h"
 
 #include <QtTest>
 
@@ -53,6 +54,59 @@ private slots:
         QCOMPARE(QString::fromStdString(toString(exactRational(0.375))), QString("3/8"));
         QCOMPARE(exactRational(0.1).get_d(), 0.1);
         QVERIFY(exactRational(0.1) != Rational(1, 10)); // 0.1 is not representable
+    }
+    void toDoubleIsTheNearestDouble_data()
+    {
+        // What each text denotes, rounded to nearest as the C++ literal (and strtod) is.
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<double>("nearest");
+        QTest::newRow("0.1 (get_d() truncates it to 0.09999999999999999)") << "0.1" << 0.1;
+        QTest::newRow("-0.1") << "-0.1" << -0.1;
+        QTest::newRow("0.3") << "0.3" << 0.3;
+        QTest::newRow("0.95") << "0.95" << 0.95;
+        QTest::newRow("1/3") << "1/3" << 1.0 / 3;
+        QTest::newRow("2/3") << "2/3" << 2.0 / 3;
+        QTest::newRow("shortest of 1/10 minus an ulp") << "0.09999999999999999" << 0.09999999999999999;
+        QTest::newRow("a tie goes to even") << "9007199254740993" << 9007199254740992.0;
+        QTest::newRow("the other tie") << "9007199254740995" << 9007199254740996.0;
+        QTest::newRow("below the smallest subnormal's half") << "1e-330" << 0.0;
+        QTest::newRow("the smallest subnormal") << "4e-324" << 4.9406564584124654e-324;
+        QTest::newRow("the largest double") << "1.7976931348623157e308" << 1.7976931348623157e308;
+        QTest::newRow("just below halfway to 2^1024") << "1.797693134862315807e308" << 1.7976931348623157e308;
+        QTest::newRow("past the largest double") << "1.8e308" << HUGE_VAL;
+        QTest::newRow("far past it") << "-1e400" << -HUGE_VAL;
+    }
+    void toDoubleIsTheNearestDouble()
+    {
+        // Found by the rational fuzz target (tests/fuzz/regressions/rational): typing 0.1
+        // gave 0.09999999999999999, written so by the exports and each retyping smaller.
+        QFETCH(QString, text);
+        QFETCH(double, nearest);
+        const auto q = parseRational(text.toStdString());
+        QVERIFY(q);
+        const double d = toDouble(*q);
+        // Exactly (QCOMPARE on doubles is fuzzy: it takes 0.09999999999999999 for 0.1).
+        QVERIFY2(d == nearest,
+                 qPrintable(QStringLiteral("%1 instead of %2").arg(d, 0, 'g', 17).arg(nearest, 0, 'g', 17)));
+        QCOMPARE(std::signbit(d), std::signbit(nearest));
+    }
+    void retypingADoubleGivesItBack()
+    {
+        for (double d : {0.1, 0.3, 1.0 / 3, 0.0015, 5e-324, 1.7976931348623157e308, -2.5e-7})
+            QVERIFY2(toDouble(*parseRational(formatDouble(d))) == d, formatDouble(d).c_str());
+        QVERIFY(toDouble(*parseRational("-1e-400")) == 0.0);
+        QVERIFY(std::signbit(toDouble(*parseRational("-1e-400")))); // −0, as strtod reads it
+    }
+    void smallFractions()
+    {
+        QCOMPARE(toString(*smallRational(0.1)), std::string("1/10")); // its nearest double is 0.1
+        QCOMPARE(toString(*smallRational(-1.0 / 3)), std::string("-1/3"));
+        QVERIFY(!smallRational(0.1 + 1e-9).has_value());
+        // Found with the document fuzz target's harness: a point at 1e-320 crashed the
+        // point table (1/d overflowed to infinity, and GMP aborts on mpz_class(inf)).
+        QVERIFY(!smallRational(1e-320).has_value());
+        QVERIFY(!smallRational(-4.9406564584124654e-324).has_value());
+        QCOMPARE(toString(*smallRational(0.0)), std::string("0"));
     }
     void polynomialText()
     {

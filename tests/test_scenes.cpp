@@ -1,6 +1,7 @@
 // Scenes as data: every scene of SPEC §1.5 by name, in the thesis's order, with exactly
 // the components it needs, its parameters only, and --set checked.
 #include "core/scene.h"
+#include "core/scene_layout.h"
 
 #include <QtTest>
 
@@ -131,6 +132,12 @@ private slots:
         QTest::newRow("not in this scene") << "gravity" << "spring_length=3";
         QTest::newRow("polygon has no gravity") << "polygon" << "gravity=0,1";
         QTest::newRow("too many bodies") << "many-bodies" << "bodies=100000";
+        // Found with the document fuzz target's harness: 300 bodies of 10000 sides took a
+        // minute and a gigabyte to build when a .granota document asked for them.
+        QTest::newRow("too many vertices in all") << "many-bodies" << "sides=10000";
+        // Found by the scene fuzz target: a body of radius 1e308 has an infinite area.
+        QTest::newRow("radius beyond 1e15") << "polygon" << "radius=1e16";
+        QTest::newRow("centre beyond 1e15") << "frog" << "center=0,-2e15";
     }
     void badSettings()
     {
@@ -142,6 +149,34 @@ private slots:
         QVERIFY(!r.ok());
         QVERIFY(!r.error().message.empty());
         QCOMPARE(sceneToJson(*s).dump(), sceneToJson(before).dump()); // nothing changed
+    }
+
+    void numbersBeyondTheLimitAreRefused()
+    {
+        // Found by the scene fuzz target: links of 1e308 px put the chain's end at infinity.
+        Json doc = sceneToJson(*loadScene("pendulum-chain"));
+        Json params = *doc.find("params");
+        params.set("chain", Json(Json::Array{Json(1e308), Json(1e308)}));
+        doc.set("params", params);
+        auto s = parseScene(doc);
+        QVERIFY(!s.ok());
+        QVERIFY2(s.error().message.find("chain must be at most 1e15") != std::string::npos, s.error().message.c_str());
+        params.set("chain", Json(Json::Array{Json(1e15), Json(1e15)})); // at the limit
+        doc.set("params", params);
+        QVERIFY(parseScene(doc).ok());
+    }
+
+    void aWideFrameHoldsEveryBodyInOneRow()
+    {
+        // Found by the scene fuzz target (UBSan): in a frame 1e15 px wide (1e300 before
+        // scenes were limited to 1e15) the number of bodies per row overflowed an int (and
+        // came out as 1: a single column).
+        auto s = loadScene("many-bodies");
+        QVERIFY(applySetting(*s, "width=1e15").ok());
+        const std::vector<Point> at = bodyStarts(*s);
+        QCOMPARE(static_cast<int>(at.size()), s->bodies);
+        for (const Point& p : at)
+            QCOMPARE(p.y, at.front().y);
     }
 
     void unknownScene()

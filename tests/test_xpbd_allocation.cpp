@@ -36,6 +36,11 @@ void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 using namespace granota;
 
+namespace {
+/// Allocations that adding one body may make, amortized (its outline, its constraints).
+constexpr double kAllocationsPerBody = 3;
+} // namespace
+
 class TestXpbdAllocation : public QObject {
     Q_OBJECT
 private slots:
@@ -72,6 +77,20 @@ private slots:
             w.step();
         const long during = g_allocations.load() - before;
         QCOMPARE(during, 0L);
+    }
+
+    void addingBodiesReallocatesRarely()
+    {
+        // Found with the scene fuzz target's harness (many-bodies with --set bodies=5000
+        // took seconds to build): every body added reserved room for exactly one more in a
+        // dozen lists, so N bodies reallocated each list N times (N² copying).
+        XpbdWorld w = XpbdWorld::create().value();
+        constexpr int kBodies = 2048;
+        const long start = g_allocations.load();
+        for (int k = 0; k < kBodies; ++k)
+            QVERIFY(w.addRegularBody({20.0 + (k % 64) * 20, 20.0 + (k / 64) * 20}, 8, 6, 150, {}).ok());
+        const double perBody = static_cast<double>(g_allocations.load() - start) / kBodies;
+        QVERIFY2(perBody < kAllocationsPerBody, qPrintable(QStringLiteral("%1 allocations per body").arg(perBody)));
     }
 
     // What the frog canvas does every frame, on either solver: step, then read every

@@ -373,7 +373,7 @@ void CatmullRomTab::syncControls()
     m_tauSlider->setEnabled(hasSelection);
     if (hasSelection) {
         const Rational& tau = m_settings.taus[static_cast<std::size_t>(m_settings.selectedTau)];
-        m_tauSlider->setValue(static_cast<int>(std::lround(tau.get_d() * kSliderSteps)));
+        m_tauSlider->setValue(static_cast<int>(std::lround(toDouble(tau) * kSliderSteps)));
         m_sliderLabel->setText(tr("Selected: τ = %1, Processing's curveTightness(%2)")
                                    .arg(tauString(tau), tightnessString(tau)));
     }
