@@ -29,6 +29,10 @@ std::optional<Rational> smallRational(double d, long maxDenominator)
         if (frac <= 0)
             return std::nullopt;
         x = 1.0 / frac;
+        // A subnormal d (1e-320) has no small fraction, and its reciprocal overflows: GMP
+        // would be handed floor(inf) next and stop the program with SIGFPE.
+        if (!std::isfinite(x))
+            return std::nullopt;
     }
     return std::nullopt;
 }
