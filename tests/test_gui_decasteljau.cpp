@@ -14,9 +14,13 @@
 #include "ui/exact_panel.h"
 #include "ui/point_editor.h"
 #include "ui/point_table.h"
+#include "ui/view_transform.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QImage>
+#include <QPainter>
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QLineEdit>
@@ -189,7 +193,8 @@ private slots:
         showTab(tab);
         QWidget* canvas = tab.canvas();
         const auto before = tab.pointEditor()->points();
-        QTest::mouseDClick(canvas, Qt::LeftButton, Qt::NoModifier, screenOf(tab, {4.1, -0.1})); // a new last point, beyond P3
+        // A new last point, beyond P3.
+        QTest::mouseDClick(canvas, Qt::LeftButton, Qt::NoModifier, screenOf(tab, {4.1, -0.1}));
         QCOMPARE(tab.pointEditor()->points().size(), before.size() + 1);
         const QPoint start = screenOf(tab, tab.pointEditor()->points().back());
         QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, start);
@@ -203,6 +208,31 @@ private slots:
         QCOMPARE(tab.undoStack()->index(), 0);
         tab.undoStack()->redo();
         QCOMPARE(tab.pointEditor()->points().size(), before.size() + 1);
+    }
+
+    // The grid at a deep zoom far from the origin (found by the input storm, seeds 3 and 10):
+    // there the grid step is below the resolution of the coordinates, `x += step` left x
+    // where it was, and painting the canvas never ended.
+    void gridAtADeepZoomFarFromTheOrigin()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        granota::ui::ViewTransform& view = tab.canvas()->view();
+        view.setCenter({1e8, -3e9});
+        view.setScale(granota::ui::ViewTransform::kMaxScale);
+        QElapsedTimer clock;
+        clock.start();
+        QImage image(tab.canvas()->size(), QImage::Format_ARGB32_Premultiplied);
+        {
+            QPainter painter(&image);
+            tab.canvas()->render(painter, QRectF(image.rect()));
+        }
+        tab.canvas()->repaint();
+        // And at the smallest scale around a point typed as 1e308 (seed 10 of the storm).
+        view.setCenter({5e307, -1e300});
+        view.setScale(granota::ui::ViewTransform::kMinScale);
+        tab.canvas()->repaint();
+        QVERIFY2(clock.elapsed() < 20000, qPrintable(QString::number(clock.elapsed())));
     }
 
     // Arrow keys nudge the selected point: one grid step with Snap to grid on.
