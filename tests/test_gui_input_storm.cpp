@@ -39,6 +39,7 @@
 #include <QMenuBar>
 #include <QPointer>
 #include <QRegularExpression>
+#include <QSignalBlocker>
 #include <QSlider>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -1019,6 +1020,41 @@ private slots:
         for (const char* good : {"information", "infinite (M is singular)", "Nancy", "infinity", "banana", "Inform",
                                  "3.25, -1/2"})
             QVERIFY2(!nonFiniteNumber().match(QLatin1String(good)).hasMatch(), good);
+    }
+
+    // And the walk over the window finds them where the storm would meet them, on the tab
+    // shown only.
+    void nonFiniteTextsOfTheWindow()
+    {
+        MainWindow window;
+        window.resize(1280, 800);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(nonFiniteTexts(window).isEmpty());
+        QVERIFY(window.showTab(QStringLiteral("catmull-rom")));
+        QLineEdit* tau = nullptr;
+        for (QLineEdit* e : window.currentTab()->findChildren<QLineEdit*>())
+            if (e->isVisible() && !qobject_cast<QAbstractSpinBox*>(e->parentWidget()))
+                tau = e;
+        QVERIFY(tau);
+        tau->setText(QStringLiteral("-nan"));
+        QVERIFY(window.showTab(QStringLiteral("decasteljau")));
+        auto* table = window.currentTab()->findChild<QTableWidget*>();
+        QVERIFY(table);
+        {
+            const QSignalBlocker block(table); // shown only, not an edit
+            table->item(1, 1)->setText(QStringLiteral("NaN"));
+        }
+        window.statusBar()->showMessage(QStringLiteral("cond = inf"));
+        QStringList found = nonFiniteTexts(window);
+        QCOMPARE(found.size(), 2);
+        QVERIFY2(found[0].startsWith(QLatin1String("status bar")), qPrintable(found[0]));
+        QVERIFY2(found[1].contains(QLatin1String("PointTable in decasteljau (1, 1)")), qPrintable(found[1]));
+        QVERIFY(window.showTab(QStringLiteral("catmull-rom")));
+        window.statusBar()->clearMessage();
+        found = nonFiniteTexts(window);
+        QCOMPARE(found.size(), 1);
+        QVERIFY2(found[0].startsWith(QLatin1String("QLineEdit in catmull-rom")), qPrintable(found[0]));
     }
 
     // The storm of GRANOTA_STORM_SEED (or the default seed), GRANOTA_STORM_EVENTS events. In
