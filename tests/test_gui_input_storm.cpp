@@ -54,7 +54,9 @@
 #include <QWheelEvent>
 #include <qcustomplot.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <deque>
 #include <random>
@@ -424,7 +426,10 @@ QPoint Storm::pressPoint()
             const int i = uniform(0, int(points.size()) - 1);
             const QPointF s = editor->canvas()->view().toScreen(points[static_cast<std::size_t>(i)]);
             const QPoint jitter(uniform(-3, 3), uniform(-3, 3));
-            pos = editor->canvas()->mapTo(&m_window, s.toPoint() + jitter);
+            // A handle far off the canvas (zoomed or panned away) is pressed far outside the
+            // window, not at a pixel that overflows int.
+            const auto pixel = [](double v) { return std::isfinite(v) ? int(std::clamp(v, -1e5, 1e5)) : 100000; };
+            pos = editor->canvas()->mapTo(&m_window, QPoint(pixel(s.x()), pixel(s.y())) + jitter);
             m_pressNote = QStringLiteral(" (point %1%2)").arg(editor->labelPrefix()).arg(i);
         } else if (r < 80 && !canvases.isEmpty()) {
             pos = randomPointIn(pickFrom(canvases));
