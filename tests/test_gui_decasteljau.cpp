@@ -14,9 +14,13 @@
 #include "ui/exact_panel.h"
 #include "ui/point_editor.h"
 #include "ui/point_table.h"
+#include "ui/view_transform.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QImage>
+#include <QPainter>
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QLineEdit>
@@ -149,6 +153,86 @@ private slots:
         QTest::keyClick(tab.canvas(), Qt::Key_Delete);
         QVERIFY(samePoints(tab.pointEditor()->points(), before));
         QCOMPARE(tab.pointTable()->rowCount(), 4);
+    }
+
+    // Delete in the middle of a drag (found by the input storm): the drag ends with its point.
+    // Before, the drag's index stayed past the end of the points and the next move wrote
+    // beyond them. The drag so far is kept as its own step, before the deletion.
+    void deleteWhileDraggingEndsTheDrag()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        QWidget* canvas = tab.canvas();
+        const auto before = tab.pointEditor()->points();
+        const QPoint start = screenOf(tab, before[3]); // the last point: its index is past the end after Delete
+        QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, start);
+        QVERIFY(tab.pointEditor()->dragging());
+        QTest::mouseMove(canvas, start + QPoint(-20, 10));
+        const auto dragged = tab.pointEditor()->points();
+        QVERIFY(!samePoints(dragged, before));
+        QTest::keyClick(canvas, Qt::Key_Delete);
+        const auto deleted = tab.pointEditor()->points();
+        QTest::mouseMove(canvas, start + QPoint(40, 30)); // (under ASan, the write past the end was reported here)
+        QVERIFY(!tab.pointEditor()->dragging());
+        QCOMPARE(deleted.size(), before.size() - 1);
+        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, start + QPoint(40, 30));
+        QVERIFY(samePoints(tab.pointEditor()->points(), deleted)); // the move moved nothing
+        QCOMPARE(tab.pointTable()->rowCount(), 3);
+        QCOMPARE(tab.undoStack()->count(), 2); // the drag so far, then the deletion
+        tab.undoStack()->undo();
+        QVERIFY(samePoints(tab.pointEditor()->points(), dragged));
+        tab.undoStack()->undo();
+        QVERIFY(samePoints(tab.pointEditor()->points(), before));
+    }
+
+    // Ctrl+Z in the middle of a drag: the undone step's points are shown and the drag ends
+    // (its point may no longer exist); the rest of the drag moves nothing.
+    void undoWhileDraggingEndsTheDrag()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        QWidget* canvas = tab.canvas();
+        const auto before = tab.pointEditor()->points();
+        // A new last point, beyond P3.
+        QTest::mouseDClick(canvas, Qt::LeftButton, Qt::NoModifier, screenOf(tab, {4.1, -0.1}));
+        QCOMPARE(tab.pointEditor()->points().size(), before.size() + 1);
+        const QPoint start = screenOf(tab, tab.pointEditor()->points().back());
+        QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, start);
+        QVERIFY(tab.pointEditor()->dragging());
+        tab.undoStack()->undo(); // what Edit ▸ Undo does: the new point goes
+        QVERIFY(!tab.pointEditor()->dragging());
+        QVERIFY(samePoints(tab.pointEditor()->points(), before));
+        QTest::mouseMove(canvas, start + QPoint(25, -25));
+        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, start + QPoint(25, -25));
+        QVERIFY(samePoints(tab.pointEditor()->points(), before));
+        QCOMPARE(tab.undoStack()->index(), 0);
+        tab.undoStack()->redo();
+        QCOMPARE(tab.pointEditor()->points().size(), before.size() + 1);
+    }
+
+    // The grid at a deep zoom far from the origin (found by the input storm, seeds 3 and 10):
+    // there the grid step is below the resolution of the coordinates, `x += step` left x
+    // where it was, and painting the canvas never ended.
+    void gridAtADeepZoomFarFromTheOrigin()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        granota::ui::ViewTransform& view = tab.canvas()->view();
+        view.setCenter({1e8, -3e9});
+        view.setScale(granota::ui::ViewTransform::kMaxScale);
+        QElapsedTimer clock;
+        clock.start();
+        QImage image(tab.canvas()->size(), QImage::Format_ARGB32_Premultiplied);
+        {
+            QPainter painter(&image);
+            tab.canvas()->render(painter, QRectF(image.rect()));
+        }
+        tab.canvas()->repaint();
+        // And at the smallest scale around a point typed as 1e308 (seed 10 of the storm).
+        view.setCenter({5e307, -1e300});
+        view.setScale(granota::ui::ViewTransform::kMinScale);
+        tab.canvas()->repaint();
+        QVERIFY2(clock.elapsed() < 20000, qPrintable(QString::number(clock.elapsed())));
     }
 
     // Arrow keys nudge the selected point: one grid step with Snap to grid on.

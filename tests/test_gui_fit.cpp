@@ -3,6 +3,7 @@
 // the normal equations breaking where QR does not, the degree limit n ≤ k, CSV import,
 // documents, and the error-against-degree plot (LS optimality over nested spaces).
 #include "core/least_squares_fit.h"
+#include "core/rational.h"
 #include "core/worked_examples.h"
 #include "ui/curve_canvas.h"
 #include "ui/exact_panel.h"
@@ -76,6 +77,24 @@ private slots:
         QVERIFY(tab.currentFit());
         QCOMPARE(tab.fittedDegree(), 2);
         QVERIFY(tab.exactPanel()->plainText().contains(QStringLiteral("P0 = (-8/7, 46/35)")));
+    }
+
+    // A subnormal coordinate typed into the table (found by the input storm, seed 20261123):
+    // the point is taken as typed and fitted; before, looking for a small fraction of it for
+    // the table and the exact panel stopped the program with SIGFPE (GMP handed floor(inf)).
+    void subnormalCoordinateFromTheTable()
+    {
+        FitTab tab;
+        tab.resize(1280, 760);
+        tab.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&tab));
+        tab.pointTable()->item(0, 0)->setText(QStringLiteral("1e-320"));
+        QCOMPARE(tab.pointEditor()->points()[0].x, 1e-320);
+        QCOMPARE(tab.undoStack()->count(), 1);
+        QVERIFY(tab.currentFit());
+        const auto shown = parseRational(tab.pointTable()->item(0, 0)->text().toStdString());
+        QVERIFY(shown && shown->get_d() == 1e-320);
+        QVERIFY(!tab.exactPanel()->plainText().isEmpty());
     }
 
     void ex27Exact()

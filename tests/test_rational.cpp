@@ -6,6 +6,8 @@
 
 #include <QtTest>
 
+#include <limits>
+
 using namespace granota;
 
 class TestRational : public QObject {
@@ -107,6 +109,32 @@ private slots:
         QVERIFY(!smallRational(1e-320).has_value());
         QVERIFY(!smallRational(-4.9406564584124654e-324).has_value());
         QCOMPARE(toString(*smallRational(0.0)), std::string("0"));
+    }
+    void smallFractionsOfDoubles_data()
+    {
+        QTest::addColumn<double>("value");
+        QTest::addColumn<QString>("fraction"); // empty: none
+        QTest::newRow("third") << 1.0 / 3 << "1/3";
+        QTest::newRow("negative") << -2.5 << "-5/2";
+        QTest::newRow("integer") << 7.0 << "7";
+        QTest::newRow("zero") << 0.0 << "0";
+        QTest::newRow("no small denominator") << 0.1234567891 << "";
+        QTest::newRow("too large") << 1e300 << "";
+        QTest::newRow("tiny normal") << 1e-300 << "";
+        // Found by the input storm (1e-320 typed into a point table): the reciprocal of a
+        // subnormal overflows, and GMP stopped the program with SIGFPE on floor(inf).
+        QTest::newRow("subnormal") << 1e-320 << "";
+        QTest::newRow("negative subnormal") << -4.9e-324 << "";
+        QTest::newRow("infinity") << std::numeric_limits<double>::infinity() << "";
+        QTest::newRow("nan") << std::numeric_limits<double>::quiet_NaN() << "";
+    }
+    void smallFractionsOfDoubles()
+    {
+        QFETCH(double, value);
+        QFETCH(QString, fraction);
+        const auto q = smallRational(value, 1000);
+        QCOMPARE(q ? QString::fromStdString(toString(*q)) : QString(), fraction);
+        QVERIFY(!q || q->get_d() == value);
     }
     void polynomialText()
     {

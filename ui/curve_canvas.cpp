@@ -109,17 +109,26 @@ void CurveCanvas::drawGrid(QPainter& painter, const ViewTransform& view) const
     const double step = niceStep(view.scale(), 60.0 * m_style.scale);
     if (!std::isfinite(step) || step <= 0)
         return;
-    const double x0 = std::floor(model.left() / step) * step, y0 = std::floor(model.top() / step) * step;
-    // At most a few hundred lines, whatever the zoom.
-    if ((model.width() / step) > 400 || (model.height() / step) > 400)
+    // The lines are counted from the first multiple of the step, never stepped with x += step:
+    // far from the origin at a deep zoom the step is below the coordinates' resolution, and
+    // x += step would leave x where it is for ever. At most a few hundred lines, whatever the
+    // zoom; none when the multiples of the step cannot be told apart at these coordinates.
+    const double i0 = std::floor(model.left() / step), j0 = std::floor(model.top() / step);
+    const double columns = std::floor(model.right() / step) - i0, rows = std::floor(model.bottom() / step) - j0;
+    constexpr double kMaxLines = 400, kExactIntegers = 9007199254740992.0; // 2^53
+    if (!(columns <= kMaxLines && rows <= kMaxLines) || !(std::fabs(i0) + columns < kExactIntegers)
+        || !(std::fabs(j0) + rows < kExactIntegers))
         return;
+    const int nx = static_cast<int>(columns), ny = static_cast<int>(rows);
+    const auto xAt = [&](int k) { return (i0 + k) * step; };
+    const auto yAt = [&](int k) { return (j0 + k) * step; };
     painter.setPen(QPen(m_style.gridMinor, m_style.thinLine()));
-    for (double x = x0; x <= model.right(); x += step) {
-        const double sx = view.toScreen({x, 0}).x();
+    for (int k = 0; k <= nx; ++k) {
+        const double sx = view.toScreen({xAt(k), 0}).x();
         painter.drawLine(QPointF(sx, area.top()), QPointF(sx, area.bottom()));
     }
-    for (double y = y0; y <= model.bottom(); y += step) {
-        const double sy = view.toScreen({0, y}).y();
+    for (int k = 0; k <= ny; ++k) {
+        const double sy = view.toScreen({0, yAt(k)}).y();
         painter.drawLine(QPointF(area.left(), sy), QPointF(area.right(), sy));
     }
     // Axes through the origin when visible, labels along them (or along the edges).
@@ -134,14 +143,16 @@ void CurveCanvas::drawGrid(QPainter& painter, const ViewTransform& view) const
     painter.setFont(font);
     painter.setPen(m_style.axis);
     const double labelY = std::min(ay + 4 * m_style.scale, area.bottom() - painter.fontMetrics().height());
-    for (double x = x0; x <= model.right(); x += step) {
+    for (int k = 0; k <= nx; ++k) {
+        const double x = xAt(k);
         if (std::fabs(x) < step * 1e-6)
             continue;
         const double sx = view.toScreen({x, 0}).x();
         painter.drawText(QPointF(sx + 3 * m_style.scale, labelY + painter.fontMetrics().ascent()), axisLabel(x, step));
     }
     const double labelX = std::min(ax + 4 * m_style.scale, area.right() - painter.fontMetrics().horizontalAdvance(QStringLiteral("-00000")));
-    for (double y = y0; y <= model.bottom(); y += step) {
+    for (int k = 0; k <= ny; ++k) {
+        const double y = yAt(k);
         if (std::fabs(y) < step * 1e-6)
             continue;
         const double sy = view.toScreen({0, y}).y();

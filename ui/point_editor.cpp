@@ -67,6 +67,9 @@ PointEditor::PointEditor(CurveCanvas* canvas, QUndoStack* undoStack, QObject* pa
 
 void PointEditor::applyPoints(const std::vector<Point>& points)
 {
+    // Undo, redo or a document in the middle of a drag: the points are no longer the drag's,
+    // and its index may be past their end. The drag ends here (the release finds none).
+    m_dragging = -1;
     m_points = points;
     if (m_selected >= static_cast<int>(m_points.size()))
         setSelected(static_cast<int>(m_points.size()) - 1);
@@ -81,6 +84,7 @@ void PointEditor::setPoints(const std::vector<Point>& points, const QString& und
             emit message(tr("Refused: a point is not a finite number."));
             return;
         }
+    finishDrag();
     m_undo->push(new PointsCommand(this, m_points, points, undoText));
 }
 
@@ -92,6 +96,7 @@ void PointEditor::movePoint(int index, Point to)
         emit message(tr("Refused: a coordinate must be a finite number."));
         return;
     }
+    finishDrag();
     auto after = m_points;
     after[index] = to;
     m_undo->push(new PointsCommand(this, m_points, after, tr("Move point %1").arg(index)));
@@ -105,6 +110,7 @@ void PointEditor::insertPoint(int index, Point p)
     }
     if (!isFinite(p))
         return;
+    finishDrag();
     index = std::clamp(index, 0, static_cast<int>(m_points.size()));
     auto after = m_points;
     after.insert(after.begin() + index, p);
@@ -120,9 +126,20 @@ void PointEditor::removePoint(int index)
         emit message(tr("At least %n points are needed here.", nullptr, m_min));
         return;
     }
+    finishDrag();
     auto after = m_points;
     after.erase(after.begin() + index);
     m_undo->push(new PointsCommand(this, m_points, after, tr("Delete point %1").arg(index)));
+}
+
+void PointEditor::finishDrag()
+{
+    if (m_dragging < 0)
+        return;
+    const int index = m_dragging;
+    m_dragging = -1;
+    if (m_dragStart[index].x != m_points[index].x || m_dragStart[index].y != m_points[index].y)
+        m_undo->push(new PointsCommand(this, m_dragStart, m_points, tr("Move point %1").arg(index)));
 }
 
 void PointEditor::setSelected(int index)
@@ -258,10 +275,7 @@ bool PointEditor::eventFilter(QObject* watched, QEvent* event)
         auto* e = static_cast<QMouseEvent*>(event);
         if (e->button() != Qt::LeftButton || m_dragging < 0)
             return false;
-        const int index = m_dragging;
-        m_dragging = -1;
-        if (m_dragStart[index].x != m_points[index].x || m_dragStart[index].y != m_points[index].y)
-            m_undo->push(new PointsCommand(this, m_dragStart, m_points, tr("Move point %1").arg(index)));
+        finishDrag(); // one undo step for the whole drag
         return true;
     }
     case QEvent::MouseButtonDblClick: {

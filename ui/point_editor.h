@@ -39,7 +39,8 @@ public:
     void insertPoint(int index, Point p);
     void removePoint(int index);
 
-    /// Replaces the points without an undo step (used by the undo commands themselves).
+    /// Replaces the points without an undo step (used by the undo commands themselves, and by
+    /// loading a document). A drag in progress is dropped: its point may be gone.
     void applyPoints(const std::vector<Point>& points);
 
     int selected() const { return m_selected; }
@@ -83,6 +84,9 @@ protected:
 
 private:
     void nudge(double dx, double dy);
+    /// Before an edit of the editor's own (Delete, a nudge, an example, the table) while a
+    /// point is dragged: the drag so far becomes its undo step, and the drag ends.
+    void finishDrag();
     void showContextMenu(const QPointF& screen, const QPoint& global);
 
     CurveCanvas* m_canvas;
