@@ -111,9 +111,10 @@ std::string csvForm(const Points& pts)
 
 std::string jsonForm(const Points& pts)
 {
-    // Integers as JSON numbers, fractions as strings "p/q" (both are documented).
+    // Integers as JSON numbers, fractions as strings "p/q" (both are documented); an integer
+    // beyond a double's range is a string too, since JSON numbers must fit in a double.
     const auto coordinate = [](const Rational& q) {
-        return q.get_den() == 1 ? toString(q) : "\"" + toString(q) + "\"";
+        return q.get_den() == 1 && std::isfinite(toDouble(q)) ? toString(q) : "\"" + toString(q) + "\"";
     };
     std::string out = "[";
     for (std::size_t i = 0; i < pts.size(); ++i)
