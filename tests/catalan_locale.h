@@ -7,8 +7,11 @@
 #include <clocale>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 
 inline constexpr const char* kCatalanLocale = "ca_ES.UTF-8";
+inline constexpr const char* kMissingCatalan =
+    "the ca_ES.UTF-8 locale is missing: generate it (locale-gen), see .ci/deps.sh";
 
 /// The environment of a process started on a Catalan desktop.
 inline QStringList catalanEnvironment()
@@ -24,3 +27,15 @@ inline bool enterCatalanLocale()
         return false;
     return std::strcmp(std::localeconv()->decimal_point, ",") == 0;
 }
+
+/// Switches LC_NUMERIC to Catalan (decimal comma) for one scope, and back.
+class CatalanNumbers {
+public:
+    CatalanNumbers() : m_saved(std::setlocale(LC_NUMERIC, nullptr)) { m_active = std::setlocale(LC_NUMERIC, kCatalanLocale); }
+    ~CatalanNumbers() { std::setlocale(LC_NUMERIC, m_saved.c_str()); }
+    bool active() const { return m_active; }
+
+private:
+    std::string m_saved;
+    bool m_active = false;
+};

@@ -51,7 +51,7 @@ class TestCatalanLocale : public QObject {
 private slots:
     void initTestCase()
     {
-        QVERIFY2(enterCatalanLocale(), "the ca_ES.UTF-8 locale is missing: generate it (locale-gen), see .ci/deps.sh");
+        QVERIFY2(enterCatalanLocale(), kMissingCatalan);
         // The fault this file guards against, shown to be live in this process.
         char buf[32];
         std::snprintf(buf, sizeof buf, "%g", 0.5);

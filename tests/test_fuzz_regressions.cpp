@@ -4,25 +4,13 @@
 // answers with what it found wrong; a bug that comes back fails here by name.
 #include "tests/fuzz/properties.h"
 
-#include <QDir>
-#include <QFile>
+#include "tests/fuzz/regression_inputs.h"
+
 #include <QtTest>
 
 namespace {
 
-const char* const kTargets[] = {"json", "point_list", "rational", "polynomial", "scene"};
-
-/// The committed inputs of a target: its seed corpus and its regressions.
-QStringList inputsOf(const QString& target)
-{
-    QStringList files;
-    for (const char* kind : {"corpus", "regressions"}) {
-        const QDir dir(QStringLiteral(GRANOTA_SOURCE_DIR "/tests/fuzz/%1/%2").arg(QLatin1String(kind), target));
-        for (const QString& name : dir.entryList(QDir::Files, QDir::Name))
-            files << dir.filePath(name);
-    }
-    return files;
-}
+constexpr std::initializer_list<const char*> kTargets = {"json", "point_list", "rational", "polynomial", "scene"};
 
 } // namespace
 
@@ -32,27 +20,17 @@ private slots:
     void everyTargetHasSeeds()
     {
         for (const char* target : kTargets)
-            QVERIFY2(inputsOf(QLatin1String(target)).size() >= 3, target);
+            QVERIFY2(granota::fuzz::inputsOf(QLatin1String(target)).size() >= 3, target);
     }
 
-    void replay_data()
-    {
-        QTest::addColumn<QString>("target");
-        QTest::addColumn<QString>("file");
-        for (const char* target : kTargets)
-            for (const QString& file : inputsOf(QLatin1String(target)))
-                QTest::newRow(qPrintable(QDir(QStringLiteral(GRANOTA_SOURCE_DIR "/tests/fuzz")).relativeFilePath(file)))
-                    << QString::fromLatin1(target) << file;
-    }
-
+    void replay_data() { granota::fuzz::addInputRows(kTargets); }
     void replay()
     {
         QFETCH(QString, target);
         QFETCH(QString, file);
-        QFile in(file);
-        QVERIFY(in.open(QIODevice::ReadOnly));
-        const QByteArray bytes = in.readAll();
-        const std::string finding = granota::fuzz::checkCore(target.toStdString(), std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+        const auto bytes = granota::fuzz::readInput(file);
+        QVERIFY2(bytes, qPrintable(file));
+        const std::string finding = granota::fuzz::checkCore(target.toStdString(), granota::fuzz::view(*bytes));
         QVERIFY2(finding.empty(), finding.c_str());
     }
 };

@@ -73,7 +73,7 @@ private slots:
     void initTestCase()
     {
         // QApplication has set LC_NUMERIC from the environment; a Catalan desktop's for sure.
-        QVERIFY2(enterCatalanLocale(), "the ca_ES.UTF-8 locale is missing: generate it (locale-gen), see .ci/deps.sh");
+        QVERIFY2(enterCatalanLocale(), kMissingCatalan);
         QStandardPaths::setTestModeEnabled(true);
         QCoreApplication::setOrganizationName(QStringLiteral("GranotaTest"));
         QCoreApplication::setApplicationName(QStringLiteral("GranotaCatalanTest"));

@@ -4,25 +4,13 @@
 // (tests/fuzz/ui_properties.h), on the same tabs built as the main window builds them.
 #include "tests/fuzz/ui_properties.h"
 
-#include <QDir>
-#include <QFile>
+#include "tests/fuzz/regression_inputs.h"
+
 #include <QtTest>
 
 namespace {
 
-const char* const kTargets[] = {"document", "fit_import"};
-
-/// The committed inputs of a target: its seed corpus and its regressions.
-QStringList inputsOf(const QString& target)
-{
-    QStringList files;
-    for (const char* kind : {"corpus", "regressions"}) {
-        const QDir dir(QStringLiteral(GRANOTA_SOURCE_DIR "/tests/fuzz/%1/%2").arg(QLatin1String(kind), target));
-        for (const QString& name : dir.entryList(QDir::Files, QDir::Name))
-            files << dir.filePath(name);
-    }
-    return files;
-}
+constexpr std::initializer_list<const char*> kTargets = {"document", "fit_import"};
 
 } // namespace
 
@@ -34,27 +22,17 @@ private slots:
     void everyTargetHasSeeds()
     {
         for (const char* target : kTargets)
-            QVERIFY2(inputsOf(QLatin1String(target)).size() >= 3, target);
+            QVERIFY2(granota::fuzz::inputsOf(QLatin1String(target)).size() >= 3, target);
     }
 
-    void replay_data()
-    {
-        QTest::addColumn<QString>("target");
-        QTest::addColumn<QString>("file");
-        for (const char* target : kTargets)
-            for (const QString& file : inputsOf(QLatin1String(target)))
-                QTest::newRow(qPrintable(QDir(QStringLiteral(GRANOTA_SOURCE_DIR "/tests/fuzz")).relativeFilePath(file)))
-                    << QString::fromLatin1(target) << file;
-    }
-
+    void replay_data() { granota::fuzz::addInputRows(kTargets); }
     void replay()
     {
         QFETCH(QString, target);
         QFETCH(QString, file);
-        QFile in(file);
-        QVERIFY(in.open(QIODevice::ReadOnly));
-        const QByteArray bytes = in.readAll();
-        const std::string finding = granota::fuzz::checkUi(target.toStdString(), std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+        const auto bytes = granota::fuzz::readInput(file);
+        QVERIFY2(bytes, qPrintable(file));
+        const std::string finding = granota::fuzz::checkUi(target.toStdString(), granota::fuzz::view(*bytes));
         QVERIFY2(finding.empty(), finding.c_str());
     }
 };

@@ -3,6 +3,8 @@
 #include "core/point_list.h"
 #include "core/polynomial_text.h"
 
+#include "catalan_locale.h"
+
 #include <QtTest>
 
 #include <clocale>
@@ -12,17 +14,6 @@ using namespace granota;
 
 namespace {
 
-/// Switches LC_NUMERIC to Catalan (decimal comma) for one scope, and back.
-class CatalanNumbers {
-public:
-    CatalanNumbers() : m_saved(std::setlocale(LC_NUMERIC, nullptr)) { m_active = std::setlocale(LC_NUMERIC, "ca_ES.UTF-8"); }
-    ~CatalanNumbers() { std::setlocale(LC_NUMERIC, m_saved.c_str()); }
-    bool active() const { return m_active; }
-
-private:
-    std::string m_saved;
-    bool m_active = false;
-};
 
 } // namespace
 
@@ -73,8 +64,7 @@ private slots:
         QCOMPARE((*p)[2].x, frac(1, 3));
         QCOMPARE((*p)[2].y, Rational(mpz_class("24691357802469135781"), mpz_class(2)));
         CatalanNumbers catalan; // where the decimal separator is a comma, too
-        if (!catalan.active())
-            QSKIP("the ca_ES.UTF-8 locale is not installed");
+        QVERIFY2(catalan.active(), kMissingCatalan);
         auto q = parsePointJson("[[0.1, 2.5]]");
         QVERIFY2(q.ok(), q.ok() ? "" : q.error().message.c_str());
         QCOMPARE((*q)[0].x, frac(1, 10));
