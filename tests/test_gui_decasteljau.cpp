@@ -210,7 +210,7 @@ private slots:
         QCOMPARE(tab.pointEditor()->points().size(), before.size() + 1);
     }
 
-    // The grid at a deep zoom far from the origin (found by the input storm, seeds 3 and 10):
+    // The grid at a deep zoom far from the origin (found by the input storm, seeds 3, 10, 31, 32):
     // there the grid step is below the resolution of the coordinates, `x += step` left x
     // where it was, and painting the canvas never ended.
     void gridAtADeepZoomFarFromTheOrigin()
@@ -228,7 +228,7 @@ private slots:
             tab.canvas()->render(painter, QRectF(image.rect()));
         }
         tab.canvas()->repaint();
-        // And at the smallest scale around a point typed as 1e308 (seed 10 of the storm).
+        // And at the smallest scale around a point typed as 1e308 (seeds 10, 31, 32 of the storm).
         view.setCenter({5e307, -1e300});
         view.setScale(granota::ui::ViewTransform::kMinScale);
         tab.canvas()->repaint();

@@ -1086,11 +1086,11 @@ private slots:
     // program (core/rational_approximation.cpp; test_rational, test_gui_fit).
     void seed3SubnormalTypedIntoTheTable() { runStorm(3, 56); }
 
-    // Seed 10, event #1164: after “1e308” typed into the Fitting table, the canvas looked far
-    // off; there the grid step was below the coordinates' resolution, x += step did not move
-    // x, and painting never ended (ui/curve_canvas.cpp; test_gui_decasteljau). Seed 3 found
-    // the same at event #1960, at a deep zoom far from the origin.
-    void seed10GridFarOff() { runStorm(10, 1165); }
+    // Seed 31, event #24: “1e308” typed into the De Casteljau table, then Ctrl+0 (fit the
+    // view): far off, the grid step was below the coordinates' resolution, x += step did not
+    // move x, and painting never ended (ui/curve_canvas.cpp; test_gui_decasteljau). Seeds 3
+    // (event #1960, a deep zoom far from the origin), 10 (#1164) and 32 (#407) found it too.
+    void seed31GridFarOff() { runStorm(31, 25); }
 };
 
 QTEST_MAIN(TestGuiInputStorm)
