@@ -586,8 +586,8 @@ Storm::Kind Storm::nextKind()
         {TabKey, 3},                {Undo, 6},                {Redo, 3},
         {Space, frog ? 4 : 0},      {Typing, 4},              {ReturnOrEscape, 1},
         {SwitchTab, 2},             {Field, 8},               {Cell, 4},
-        {Example, 1},
-        {ZoomKey, 1},               {FrogKey, frog ? 2 : 0},  {Presentation, m_event % 7 == 0 ? 1 : 0},
+        {Example, 1},               {ZoomKey, 1},             {FrogKey, frog ? 2 : 0},
+        {Presentation, m_event % 7 == 0 ? 1 : 0}, // about once in 700 events
     };
     int total = 0;
     for (const Weight& w : table)
@@ -947,6 +947,12 @@ bool Storm::undoEverything(QString* failure)
                                .arg(where(focusTarget()));
                 return false;
             }
+        }
+        QCoreApplication::processEvents();
+        if (const QStringList bad = nonFiniteTexts(m_window); !bad.isEmpty()) {
+            *failure = QStringLiteral("after undoing tab %1, the window shows a non-finite number:\n%2")
+                           .arg(tab->key(), bad.join(QLatin1Char('\n')));
+            return false;
         }
     }
     return true;
