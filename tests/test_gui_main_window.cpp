@@ -345,21 +345,22 @@ private slots:
 
     void autosaveRecoversTheDocument()
     {
-        QFile::remove(MainWindow::autosavePath());
         QByteArray state;
+        QString autosave;
         {
             MainWindow window;
             QVERIFY(window.loadExample(QStringLiteral("2.9")));
-            window.autosave();
-            QVERIFY(QFile::exists(MainWindow::autosavePath()));
+            autosave = window.autosaveFile();
+            QVERIFY(window.autosave());
+            QVERIFY(QFile::exists(autosave));
             state = granota::ui::serializeDocument(window.tabs(), window.currentTab()->key());
         } // destroyed without a clean close: the autosave stays, as after a crash
-        QVERIFY(QFile::exists(MainWindow::autosavePath()));
+        QVERIFY(QFile::exists(autosave));
         MainWindow next;
         QString error;
-        QVERIFY2(next.openFile(MainWindow::autosavePath(), &error), qPrintable(error));
+        QVERIFY2(next.openFile(autosave, &error), qPrintable(error));
         QCOMPARE(granota::ui::serializeDocument(next.tabs(), next.currentTab()->key()), state);
-        QFile::remove(MainWindow::autosavePath());
+        QFile::remove(autosave);
     }
 
     void workPrecisionBelowEachTab_data()

@@ -4,6 +4,7 @@
 #include "core/data_shape.h"
 #include "core/de_casteljau.h"
 #include "core/fit_error_by_degree.h"
+#include "core/input_limits.h"
 #include "core/point_list.h"
 #include "core/worked_examples.h"
 #include "ui/curve_canvas.h"
@@ -12,6 +13,7 @@
 #include "ui/point_editor.h"
 #include "ui/point_table.h"
 #include "ui/tikz_writer.h"
+#include "ui/user_file.h"
 
 #include <QApplication>
 #include <QCheckBox>
@@ -47,7 +49,6 @@ namespace {
 constexpr int kCurveSamples = 400;         ///< De Casteljau samples of the fitted curve
 constexpr std::size_t kDrawLimit = 5000;   ///< beyond this many points, residuals are drawn decimated
 constexpr int kMaxLabelledControls = 30;   ///< control points labelled P0… up to this degree
-constexpr qint64 kMaxImportBytes = 256LL * 1024 * 1024;
 constexpr double kPresentationScale = 1.6; ///< canvas and plot scale in presentation mode
 constexpr int kMaxDegree = 100;            ///< the core's limit
 constexpr int kMaxIterations = 1000;
@@ -717,20 +718,11 @@ bool FitTab::loadExample(const granota::WorkedExample& example)
 bool FitTab::importFile(const QString& path, QString* error)
 {
     const QString name = QFileInfo(path).fileName();
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        *error = tr("Cannot open “%1”: %2").arg(name, file.errorString());
+    const std::optional<QByteArray> bytes = readUserFile(path, error);
+    if (!bytes)
         return false;
-    }
-    if (file.size() > kMaxImportBytes) {
-        *error = tr("“%1” is larger than %2 MB; Granota reads data files up to that size.")
-                     .arg(name)
-                     .arg(kMaxImportBytes / (1024 * 1024));
-        return false;
-    }
-    const QByteArray bytes = file.readAll();
     QApplication::setOverrideCursor(Qt::WaitCursor);
-    const Expected<std::vector<RPoint>> parsed = parsePointFile(std::string_view(bytes.constData(), bytes.size()));
+    const Expected<std::vector<RPoint>> parsed = parsePointFile(std::string_view(bytes->constData(), static_cast<std::size_t>(bytes->size())));
     QApplication::restoreOverrideCursor();
     if (!parsed) {
         *error = tr("“%1” holds no valid data points, nothing was changed: %2")
@@ -792,6 +784,10 @@ bool FitTab::loadState(const QJsonObject& state, QString* error)
     }
     std::vector<Point> points;
     const QJsonArray array = pointsValue.toArray();
+    if (static_cast<std::size_t>(array.size()) > kMaxDataPoints) {
+        *error = tr("The fitting tab holds %1 data points; Granota reads at most %2.").arg(array.size()).arg(kMaxDataPoints);
+        return false;
+    }
     for (int i = 0; i < array.size(); ++i) {
         const QJsonArray p = array.at(i).toArray();
         if (p.size() != 2 || !p.at(0).isDouble() || !p.at(1).isDouble() || !std::isfinite(p.at(0).toDouble())
@@ -854,13 +850,11 @@ bool FitTab::loadState(const QJsonObject& state, QString* error)
         return false;
     }
 
-    // Apply as one undo step.
+    // Apply without an undo step: opening a document starts a new history (the main window
+    // clears the stacks), and a refused document must leave the user's history as it was.
     m_loading = true;
-    m_undo->beginMacro(tr("Open fitting data"));
-    m_editor->setPoints(points, tr("Open data points"));
-    m_undo->push(new FitSettingsCommand([this](const FitSettings& x) { applySettings(x); }, m_settings, s,
-                                        tr("Open fitting settings")));
-    m_undo->endMacro();
+    m_settings = s;
+    m_editor->applyPoints(points); // refits once, with the new settings
     m_loading = false;
     m_showMatrices->setChecked(matrices.toBool(false));
     m_canvas->fitToContent();

@@ -10,6 +10,7 @@
 #include "ui/frog_tab.h"
 #include "ui/language.h"
 #include "ui/tab_page.h"
+#include "ui/user_file.h"
 #include "ui/work_precision_panel.h"
 
 #include <QAction>
@@ -24,6 +25,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSaveFile>
 #include <QSettings>
 #include <QSplitter>
@@ -102,6 +104,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
     createMenus();
     rebuildRecentMenu();
 
+    m_autosaveWarning = new QLabel(this);
+    m_autosaveWarning->setStyleSheet(QStringLiteral("QLabel { color: #b00020; font-weight: bold; }"));
+    m_autosaveWarning->hide();
+    statusBar()->addPermanentWidget(m_autosaveWarning);
+    m_autosave = std::make_unique<Autosave>();
     m_autosaveTimer = new QTimer(this);
     m_autosaveTimer->setInterval(kAutosaveMs);
     connect(m_autosaveTimer, &QTimer::timeout, this, [this] {
@@ -419,23 +426,18 @@ void MainWindow::newDocument()
 
 bool MainWindow::openFile(const QString& file, QString* error)
 {
-    QFile in(file);
-    if (!in.open(QIODevice::ReadOnly)) {
-        *error = tr("Cannot open “%1”: %2").arg(file, in.errorString());
+    const std::optional<QByteArray> bytes = readUserFile(file, error);
+    if (!bytes)
         return false;
-    }
-    if (in.size() > 64 * 1024 * 1024) {
-        *error = tr("“%1” is too large for a Granota document.").arg(file);
-        return false;
-    }
     QString current;
-    if (!loadDocument(in.readAll(), m_pages, error, &current))
+    if (!loadDocument(*bytes, m_pages, error, &current))
         return false;
     for (TabPage* page : m_pages)
         page->undoStack()->clear();
-    m_file = file;
+    m_file = QFileInfo(file).absoluteFilePath();
     setModified(false);
     m_autosaveDirty = false;
+    m_autosave->remove(); // the window's work is now the file's
     showTab(current);
     rememberRecent(file);
     return true;
@@ -450,10 +452,10 @@ bool MainWindow::saveFile(const QString& file, QString* error)
         *error = tr("Cannot write “%1”.").arg(file);
         return false;
     }
-    m_file = file;
+    m_file = QFileInfo(file).absoluteFilePath();
     setModified(false);
     m_autosaveDirty = false;
-    QFile::remove(autosavePath());
+    m_autosave->remove();
     rememberRecent(file);
     return true;
 }
@@ -522,43 +524,121 @@ void MainWindow::rebuildRecentMenu()
     m_recentMenu->setEnabled(!recent.isEmpty());
 }
 
-QString MainWindow::autosavePath()
+QString MainWindow::autosaveFile() const { return m_autosave->path(); }
+
+bool MainWindow::autosave()
 {
-    return QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + QStringLiteral("/autosave.granota");
+    const TabPage* current = currentTab();
+    const QByteArray bytes = serializeAutosave(m_pages, current ? current->key() : QString(), m_file);
+    QString error;
+    if (m_autosave->write(bytes, &error)) {
+        m_autosaveDirty = false;
+        if (!m_autosaveError.isEmpty()) {
+            m_autosaveError.clear();
+            m_autosaveWarning->hide();
+            showMessage(tr("The autosave works again."));
+        }
+        return true;
+    }
+    const bool first = m_autosaveError.isEmpty();
+    m_autosaveError = error;
+    m_autosaveWarning->setText(tr("⚠ Not autosaved: save your work"));
+    m_autosaveWarning->setToolTip(error);
+    m_autosaveWarning->show();
+    if (first) { // say it once, without stopping the lesson: a window that does not block
+        auto* box = new QMessageBox(QMessageBox::Warning, tr("Autosave failed"),
+                                    tr("Granota cannot keep a copy of your unsaved changes: %1\n\n"
+                                       "Save the document (Ctrl+S) to keep them. Granota will keep trying.")
+                                        .arg(error),
+                                    QMessageBox::Ok, this);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->setObjectName(QStringLiteral("autosaveFailed"));
+        box->open();
+    }
+    return false;
 }
 
-void MainWindow::autosave()
+QVector<Orphan> MainWindow::recoverableAutosaves() const
 {
-    QDir().mkpath(QFileInfo(autosavePath()).absolutePath());
-    const TabPage* current = currentTab();
-    QSaveFile out(autosavePath());
-    if (out.open(QIODevice::WriteOnly)) {
-        out.write(serializeDocument(m_pages, current ? current->key() : QString()));
-        if (out.commit())
-            m_autosaveDirty = false;
+    QVector<Orphan> out;
+    for (const Orphan& orphan : m_autosave->orphans())
+        if (m_file.isEmpty() || orphan.documentFile == m_file)
+            out.push_back(orphan);
+    return out;
+}
+
+MainWindow::RecoveryOutcome MainWindow::recoverAutosave(const QString& orphanPath)
+{
+    RecoveryOutcome outcome;
+    QString error;
+    const std::optional<QByteArray> bytes = readUserFile(orphanPath, &error);
+    Recovery r;
+    if (bytes)
+        r = recoverDocument(*bytes, m_pages);
+    else
+        r.error = error;
+    if (!r.readable || r.recovered.isEmpty()) {
+        // Nothing to take: the file is kept, out of the way of later autosaves.
+        const QString kept = m_autosave->keepAside(orphanPath);
+        const QString reason = r.error.isEmpty() ? tr("no tab's part could be read.") + QLatin1Char('\n') + r.refused.join(QLatin1Char('\n')) : r.error;
+        outcome.message = tr("The autosave could not be recovered: %1\n\nIt is kept as “%2”.")
+                              .arg(reason, QDir::toNativeSeparators(kept.isEmpty() ? orphanPath : kept));
+        return outcome;
     }
+    for (TabPage* page : m_pages)
+        page->undoStack()->clear();
+    if (!r.documentFile.isEmpty())
+        m_file = r.documentFile; // the work goes back to the document it belongs to
+    setModified(true);
+    showTab(r.currentTab);
+    outcome.recovered = true;
+    // The work is in this window now: write this window's autosave before letting go of the
+    // orphan, and keep the orphan whole if some of it was refused or the write failed.
+    const bool written = autosave();
+    if (r.refused.isEmpty() && written) {
+        Autosave::discard(orphanPath);
+        outcome.complete = true;
+        outcome.message = tr("Recovered the unsaved work of the last session.");
+        return outcome;
+    }
+    const QString kept = m_autosave->keepAside(orphanPath);
+    const QString where = QDir::toNativeSeparators(kept.isEmpty() ? orphanPath : kept);
+    if (r.refused.isEmpty())
+        outcome.message = tr("Recovered the unsaved work of the last session. The autosave is kept as “%1”.").arg(where);
+    else
+        outcome.message = tr("Recovered %1. Not recovered:\n%2\n\nThe whole autosave is kept as “%3”.")
+                              .arg(QLocale().createSeparatedList(r.recovered), r.refused.join(QLatin1Char('\n')), where);
+    return outcome;
 }
 
 void MainWindow::offerRecovery()
 {
-    if (!QFile::exists(autosavePath()))
-        return;
-    const auto answer = QMessageBox::question(
-        this, tr("Recover unsaved work"),
-        tr("Granota was closed without saving the last changes. Recover them?"),
-        QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes);
-    if (answer != QMessageBox::Yes) {
-        QFile::remove(autosavePath());
-        return;
-    }
-    QFile in(autosavePath());
-    QString error, current;
-    if (in.open(QIODevice::ReadOnly) && loadDocument(in.readAll(), m_pages, &error, &current)) {
-        setModified(true);
-        showTab(current);
-        showMessage(tr("Recovered the unsaved work of the last session."));
-    } else {
-        QMessageBox::warning(this, tr("Recover unsaved work"), error.isEmpty() ? tr("The autosave could not be read.") : error);
+    for (const Orphan& orphan : recoverableAutosaves()) {
+        const QString document = orphan.documentFile.isEmpty() ? tr("an Untitled document")
+                                                               : QStringLiteral("“%1”").arg(QFileInfo(orphan.documentFile).fileName());
+        QMessageBox box(QMessageBox::Question, tr("Recover unsaved work"),
+                        tr("A Granota session was closed without saving its changes to %1 (autosaved %2). Recover them?")
+                            .arg(document, QLocale().toString(orphan.written, QLocale::ShortFormat)),
+                        QMessageBox::NoButton, this);
+        QPushButton* recover = box.addButton(tr("&Recover"), QMessageBox::AcceptRole);
+        QPushButton* later = box.addButton(tr("&Keep for later"), QMessageBox::RejectRole);
+        QPushButton* discard = box.addButton(tr("&Discard"), QMessageBox::DestructiveRole);
+        box.setDefaultButton(recover);
+        box.setEscapeButton(later);
+        box.exec();
+        if (box.clickedButton() == discard) {
+            Autosave::discard(orphan.path);
+            continue;
+        }
+        if (box.clickedButton() != recover)
+            continue;
+        const RecoveryOutcome outcome = recoverAutosave(orphan.path);
+        if (outcome.complete)
+            showMessage(outcome.message);
+        else
+            QMessageBox::warning(this, tr("Recover unsaved work"), outcome.message);
+        if (outcome.recovered)
+            return; // the window holds a document now; other autosaves wait for another window
     }
 }
 
@@ -568,7 +648,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
         event->ignore();
         return;
     }
-    QFile::remove(autosavePath()); // a clean exit leaves nothing to recover
+    m_autosave->remove(); // saved or discarded: this window's copy has done its work
     event->accept();
 }
 

@@ -8,6 +8,10 @@
 #include <QMainWindow>
 #include <QVector>
 
+#include "ui/autosave.h"
+
+#include <memory>
+
 class QAction;
 class QActionGroup;
 class QLabel;
@@ -58,11 +62,28 @@ public:
     bool workPrecisionVisible() const;
     bool presentation() const { return m_presentation; }
 
-    /// Where the autosave goes (under the application's data directory).
-    static QString autosavePath();
+    /// This window's autosave (ui/autosave.h: one file per window, locked while it lives).
+    QString autosaveFile() const;
     /// Writes the autosave now (the timer does it every 20 s while there are unsaved edits).
-    void autosave();
-    /// If the last session left an autosave, asks whether to recover it.
+    /// If it cannot be written the window says so, once, and keeps a warning in the status
+    /// bar until a write succeeds. False if it failed.
+    bool autosave();
+    /// The last autosave failure, empty once a write succeeded.
+    QString autosaveError() const { return m_autosaveError; }
+    /// The autosaves of ended sessions this window may recover: those of its document if it
+    /// has one, else all of them. Newest first.
+    QVector<Orphan> recoverableAutosaves() const;
+    /// What recovering an autosave did, and the message shown to the user.
+    struct RecoveryOutcome {
+        bool recovered = false; ///< some tab took its part; the window is modified
+        bool complete = false;  ///< every tab did, and the orphan's work is now this window's
+        QString message;
+    };
+    /// Recovers an orphan autosave into this window: every valid tab, under the name of the
+    /// document it belongs to. What could not be taken stays on disk, moved aside.
+    RecoveryOutcome recoverAutosave(const QString& orphanPath);
+    /// Asks, for each recoverable autosave, whether to recover it, keep it for later or
+    /// discard it.
     void offerRecovery();
 
 protected:
@@ -94,6 +115,9 @@ private:
     QUndoGroup* m_undoGroup = nullptr;
     QLabel* m_cursorLabel = nullptr;
     QTimer* m_autosaveTimer = nullptr;
+    std::unique_ptr<Autosave> m_autosave;
+    QString m_autosaveError;
+    QLabel* m_autosaveWarning = nullptr;
     QString m_file;
     bool m_modified = false;
     bool m_autosaveDirty = false;
