@@ -1072,6 +1072,22 @@
     <context>
         <name>granota::ui::Document</name>
         <message>
+            <source>Tab “%1”: its part of the document is not an object.</source>
+            <translation>Pestanya «%1»: la seva part del document no és un objecte.</translation>
+        </message>
+        <message>
+            <source>This document has no "tabs" object holding the tabs' points and settings.</source>
+            <translation>Aquest document no té l'objecte "tabs" amb els punts i la configuració de les pestanyes.</translation>
+        </message>
+        <message>
+            <source>This document's "version" is not a whole number; this Granota reads version %1.</source>
+            <translation>La "version" d'aquest document no és un nombre enter; aquest Granota llegeix la versió %1.</translation>
+        </message>
+        <message>
+            <source>This is not a Granota document: it is a JSON list, not an object.</source>
+            <translation>Això no és un document del Granota: és una llista JSON, no un objecte.</translation>
+        </message>
+        <message>
             <location filename="../ui/document.cpp" line="33" />
             <source>This is not a Granota document: %1 (at byte %2).</source>
             <translation>Això no és un document del Granota: %1 (al byte %2).</translation>
@@ -1212,6 +1228,10 @@
     </context>
     <context>
         <name>granota::ui::FitTab</name>
+        <message>
+            <source>The fitting tab holds %1 data points; Granota reads at most %2.</source>
+            <translation>La pestanya d'ajust té %1 punts de dades; el Granota en llegeix com a màxim %2.</translation>
+        </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="146" />
             <source>Drag Q_i: the curve is refitted as it moves; Delete removes it.</source>
@@ -2462,6 +2482,72 @@
     <context>
         <name>granota::ui::MainWindow</name>
         <message>
+            <source>&amp;Discard</source>
+            <translation>&amp;Descarta</translation>
+        </message>
+        <message>
+            <source>&amp;Keep for later</source>
+            <translation>&amp;Guarda-la per a més tard</translation>
+        </message>
+        <message>
+            <source>&amp;Recover</source>
+            <translation>&amp;Recupera</translation>
+        </message>
+        <message>
+            <source>A Granota session was closed without saving its changes to %1 (autosaved %2). Recover them?</source>
+            <translation>Una sessió del Granota es va tancar sense desar els canvis de %1 (còpia automàtica del %2). Els voleu recuperar?</translation>
+        </message>
+        <message>
+            <source>an Untitled document</source>
+            <translation>un document sense títol</translation>
+        </message>
+        <message>
+            <source>Recovered %1. Not recovered:
+%2
+
+The whole autosave is kept as “%3”.</source>
+            <translation>S'ha recuperat: %1. No s'ha recuperat:
+%2
+
+Tota la còpia automàtica es conserva com a «%3».</translation>
+        </message>
+        <message>
+            <source>Recovered the unsaved work of the last session. The autosave is kept as “%1”.</source>
+            <translation>S'ha recuperat la feina sense desar de l'última sessió. La còpia automàtica es conserva com a «%1».</translation>
+        </message>
+        <message>
+            <source>The autosave could not be recovered: %1
+
+It is kept as “%2”.</source>
+            <translation>No s'ha pogut recuperar la còpia automàtica: %1
+
+Es conserva com a «%2».</translation>
+        </message>
+        <message>
+            <source>no tab's part could be read.</source>
+            <translation>no s'ha pogut llegir la part de cap pestanya.</translation>
+        </message>
+        <message>
+            <source>Granota cannot keep a copy of your unsaved changes: %1
+
+Save the document (Ctrl+S) to keep them. Granota will keep trying.</source>
+            <translation>El Granota no pot guardar una còpia dels canvis sense desar: %1
+
+Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentant.</translation>
+        </message>
+        <message>
+            <source>Autosave failed</source>
+            <translation>La còpia automàtica ha fallat</translation>
+        </message>
+        <message>
+            <source>⚠ Not autosaved: save your work</source>
+            <translation>⚠ Sense còpia automàtica: deseu la feina</translation>
+        </message>
+        <message>
+            <source>The autosave works again.</source>
+            <translation>La còpia automàtica torna a funcionar.</translation>
+        </message>
+        <message>
             <location filename="../ui/main_window.cpp" line="156" />
             <source>Loaded Ex %1 of the thesis.</source>
             <translation>S'ha carregat l'Ex %1 de la tesi.</translation>
@@ -3178,6 +3264,32 @@
             <location filename="../ui/work_precision_panel.cpp" line="148" />
             <source>Work-precision plot: each marker is one setting of a method; lower is more accurate, left is faster.</source>
             <translation>Gràfic de treball-precisió: cada marca és un valor del paràmetre d'un mètode; més avall és més precís, més a l'esquerra és més ràpid.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::UserFile</name>
+        <message>
+            <source>it cannot be read.</source>
+            <translation>no es pot llegir.</translation>
+        </message>
+        <message>
+            <source>Cannot open “%1”: %2</source>
+            <translation>No es pot obrir «%1»: %2</translation>
+        </message>
+        <message>
+            <source>“%1” is a folder, not a file.</source>
+            <translation>«%1» és una carpeta, no un fitxer.</translation>
+        </message>
+        <message>
+            <source>“%1” is larger than %2 MB, the most Granota reads from one file.</source>
+            <translation>«%1» ocupa més de %2 MB, el màxim que el Granota llegeix d'un fitxer.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::Autosave</name>
+        <message>
+            <source>Cannot write the autosave “%1”: %2</source>
+            <translation>No es pot escriure la còpia automàtica «%1»: %2</translation>
         </message>
     </context>
 </TS>

@@ -1072,6 +1072,22 @@
     <context>
         <name>granota::ui::Document</name>
         <message>
+            <source>Tab “%1”: its part of the document is not an object.</source>
+            <translation>Tab “%1”: its part of the document is not an object.</translation>
+        </message>
+        <message>
+            <source>This document has no "tabs" object holding the tabs' points and settings.</source>
+            <translation>This document has no "tabs" object holding the tabs' points and settings.</translation>
+        </message>
+        <message>
+            <source>This document's "version" is not a whole number; this Granota reads version %1.</source>
+            <translation>This document's "version" is not a whole number; this Granota reads version %1.</translation>
+        </message>
+        <message>
+            <source>This is not a Granota document: it is a JSON list, not an object.</source>
+            <translation>This is not a Granota document: it is a JSON list, not an object.</translation>
+        </message>
+        <message>
             <location filename="../ui/document.cpp" line="33" />
             <source>This is not a Granota document: %1 (at byte %2).</source>
             <translation>This is not a Granota document: %1 (at byte %2).</translation>
@@ -1212,6 +1228,10 @@
     </context>
     <context>
         <name>granota::ui::FitTab</name>
+        <message>
+            <source>The fitting tab holds %1 data points; Granota reads at most %2.</source>
+            <translation>The fitting tab holds %1 data points; Granota reads at most %2.</translation>
+        </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="146" />
             <source>Drag Q_i: the curve is refitted as it moves; Delete removes it.</source>
@@ -2462,6 +2482,72 @@
     <context>
         <name>granota::ui::MainWindow</name>
         <message>
+            <source>&amp;Discard</source>
+            <translation>&amp;Discard</translation>
+        </message>
+        <message>
+            <source>&amp;Keep for later</source>
+            <translation>&amp;Keep for later</translation>
+        </message>
+        <message>
+            <source>&amp;Recover</source>
+            <translation>&amp;Recover</translation>
+        </message>
+        <message>
+            <source>A Granota session was closed without saving its changes to %1 (autosaved %2). Recover them?</source>
+            <translation>A Granota session was closed without saving its changes to %1 (autosaved %2). Recover them?</translation>
+        </message>
+        <message>
+            <source>an Untitled document</source>
+            <translation>an Untitled document</translation>
+        </message>
+        <message>
+            <source>Recovered %1. Not recovered:
+%2
+
+The whole autosave is kept as “%3”.</source>
+            <translation>Recovered %1. Not recovered:
+%2
+
+The whole autosave is kept as “%3”.</translation>
+        </message>
+        <message>
+            <source>Recovered the unsaved work of the last session. The autosave is kept as “%1”.</source>
+            <translation>Recovered the unsaved work of the last session. The autosave is kept as “%1”.</translation>
+        </message>
+        <message>
+            <source>The autosave could not be recovered: %1
+
+It is kept as “%2”.</source>
+            <translation>The autosave could not be recovered: %1
+
+It is kept as “%2”.</translation>
+        </message>
+        <message>
+            <source>no tab's part could be read.</source>
+            <translation>no tab's part could be read.</translation>
+        </message>
+        <message>
+            <source>Granota cannot keep a copy of your unsaved changes: %1
+
+Save the document (Ctrl+S) to keep them. Granota will keep trying.</source>
+            <translation>Granota cannot keep a copy of your unsaved changes: %1
+
+Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
+        </message>
+        <message>
+            <source>Autosave failed</source>
+            <translation>Autosave failed</translation>
+        </message>
+        <message>
+            <source>⚠ Not autosaved: save your work</source>
+            <translation>⚠ Not autosaved: save your work</translation>
+        </message>
+        <message>
+            <source>The autosave works again.</source>
+            <translation>The autosave works again.</translation>
+        </message>
+        <message>
             <location filename="../ui/main_window.cpp" line="156" />
             <source>Loaded Ex %1 of the thesis.</source>
             <translation>Loaded Ex %1 of the thesis.</translation>
@@ -3178,6 +3264,32 @@
             <location filename="../ui/work_precision_panel.cpp" line="148" />
             <source>Work-precision plot: each marker is one setting of a method; lower is more accurate, left is faster.</source>
             <translation>Work-precision plot: each marker is one setting of a method; lower is more accurate, left is faster.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::UserFile</name>
+        <message>
+            <source>it cannot be read.</source>
+            <translation>it cannot be read.</translation>
+        </message>
+        <message>
+            <source>Cannot open “%1”: %2</source>
+            <translation>Cannot open “%1”: %2</translation>
+        </message>
+        <message>
+            <source>“%1” is a folder, not a file.</source>
+            <translation>“%1” is a folder, not a file.</translation>
+        </message>
+        <message>
+            <source>“%1” is larger than %2 MB, the most Granota reads from one file.</source>
+            <translation>“%1” is larger than %2 MB, the most Granota reads from one file.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::Autosave</name>
+        <message>
+            <source>Cannot write the autosave “%1”: %2</source>
+            <translation>Cannot write the autosave “%1”: %2</translation>
         </message>
     </context>
 </TS>

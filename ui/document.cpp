@@ -15,8 +15,6 @@ namespace {
 constexpr int kVersion = 1;
 const QString kAutosaveKey = QStringLiteral("autosave");
 
-QString tr(const char* text) { return QCoreApplication::translate("granota::ui::Document", text); }
-
 /// The parts of a document every reader checks before any tab sees it.
 struct Root {
     QJsonObject object;
@@ -31,36 +29,36 @@ std::optional<Root> readRoot(const QByteArray& bytes, const QVector<TabPage*>& t
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
     if (doc.isNull()) {
-        *error = tr("This is not a Granota document: %1 (at byte %2).").arg(parseError.errorString()).arg(parseError.offset);
+        *error = QCoreApplication::translate("granota::ui::Document", "This is not a Granota document: %1 (at byte %2).").arg(parseError.errorString()).arg(parseError.offset);
         return std::nullopt;
     }
     if (!doc.isObject()) {
-        *error = tr("This is not a Granota document: it is a JSON list, not an object.");
+        *error = QCoreApplication::translate("granota::ui::Document", "This is not a Granota document: it is a JSON list, not an object.");
         return std::nullopt;
     }
     Root root{doc.object(), {}};
     if (root.object.value(QStringLiteral("format")).toString() != QLatin1String("granota")) {
-        *error = tr("This is not a Granota document (no \"format\": \"granota\").");
+        *error = QCoreApplication::translate("granota::ui::Document", "This is not a Granota document (no \"format\": \"granota\").");
         return std::nullopt;
     }
     const QJsonValue version = root.object.value(QStringLiteral("version"));
     if (!version.isDouble() || version.toDouble() != std::floor(version.toDouble())) {
-        *error = tr("This document's \"version\" is not a whole number; this Granota reads version %1.").arg(kVersion);
+        *error = QCoreApplication::translate("granota::ui::Document", "This document's \"version\" is not a whole number; this Granota reads version %1.").arg(kVersion);
         return std::nullopt;
     }
     if (version.toDouble() < 1 || version.toDouble() > kVersion) {
-        *error = tr("This document has version %1; this Granota reads version %2.").arg(version.toDouble()).arg(kVersion);
+        *error = QCoreApplication::translate("granota::ui::Document", "This document has version %1; this Granota reads version %2.").arg(version.toDouble()).arg(kVersion);
         return std::nullopt;
     }
     const QJsonValue parts = root.object.value(QStringLiteral("tabs"));
     if (!parts.isObject()) {
-        *error = tr("This document has no \"tabs\" object holding the tabs' points and settings.");
+        *error = QCoreApplication::translate("granota::ui::Document", "This document has no \"tabs\" object holding the tabs' points and settings.");
         return std::nullopt;
     }
     root.parts = parts.toObject();
     for (const TabPage* tab : tabs)
         if (root.parts.contains(tab->key()) && !root.parts.value(tab->key()).isObject()) {
-            *error = tr("Tab “%1”: its part of the document is not an object.").arg(tab->title());
+            *error = QCoreApplication::translate("granota::ui::Document", "Tab “%1”: its part of the document is not an object.").arg(tab->title());
             return std::nullopt;
         }
     return root;
@@ -110,7 +108,7 @@ bool loadDocument(const QByteArray& bytes, const QVector<TabPage*>& tabs, QStrin
                 QString ignored;
                 tabs[j]->loadState(before[j], &ignored);
             }
-            *error = tr("Tab “%1”: %2").arg(tabs[i]->title(), tabError);
+            *error = QCoreApplication::translate("granota::ui::Document", "Tab “%1”: %2").arg(tabs[i]->title(), tabError);
             return false;
         }
     }
@@ -133,7 +131,7 @@ Recovery recoverDocument(const QByteArray& bytes, const QVector<TabPage*>& tabs)
         if (tab->loadState(root->parts.value(tab->key()).toObject(), &tabError))
             r.recovered << tab->title();
         else
-            r.refused << tr("%1: %2").arg(tab->title(), tabError);
+            r.refused << QStringLiteral("%1: %2").arg(tab->title(), tabError);
     }
     r.currentTab = root->object.value(QStringLiteral("current")).toString();
     r.documentFile = root->object.value(kAutosaveKey).toObject().value(QStringLiteral("file")).toString();

@@ -430,7 +430,10 @@ bool MainWindow::openFile(const QString& file, QString* error)
     if (!bytes)
         return false;
     QString current;
-    if (!loadDocument(*bytes, m_pages, error, &current))
+    QApplication::setOverrideCursor(Qt::WaitCursor); // the largest documents take a second or two
+    const bool loaded = loadDocument(*bytes, m_pages, error, &current);
+    QApplication::restoreOverrideCursor();
+    if (!loaded)
         return false;
     for (TabPage* page : m_pages)
         page->undoStack()->clear();
