@@ -2482,6 +2482,14 @@
     <context>
         <name>granota::ui::MainWindow</name>
         <message>
+            <source>A Granota session was closed without saving its changes to “%1” (autosaved %2). Recover them?</source>
+            <translation>Una sessió del Granota es va tancar sense desar els canvis de «%1» (còpia automàtica del %2). Els voleu recuperar?</translation>
+        </message>
+        <message>
+            <source>A Granota session was closed without saving its Untitled document (autosaved %1). Recover it?</source>
+            <translation>Una sessió del Granota es va tancar sense desar el document sense títol (còpia automàtica del %1). El voleu recuperar?</translation>
+        </message>
+        <message>
             <source>&amp;Discard</source>
             <translation>&amp;Descarta</translation>
         </message>
@@ -2492,14 +2500,6 @@
         <message>
             <source>&amp;Recover</source>
             <translation>&amp;Recupera</translation>
-        </message>
-        <message>
-            <source>A Granota session was closed without saving its changes to %1 (autosaved %2). Recover them?</source>
-            <translation>Una sessió del Granota es va tancar sense desar els canvis de %1 (còpia automàtica del %2). Els voleu recuperar?</translation>
-        </message>
-        <message>
-            <source>an Untitled document</source>
-            <translation>un document sense títol</translation>
         </message>
         <message>
             <source>Recovered %1. Not recovered:

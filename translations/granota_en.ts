@@ -2482,6 +2482,14 @@
     <context>
         <name>granota::ui::MainWindow</name>
         <message>
+            <source>A Granota session was closed without saving its changes to “%1” (autosaved %2). Recover them?</source>
+            <translation>A Granota session was closed without saving its changes to “%1” (autosaved %2). Recover them?</translation>
+        </message>
+        <message>
+            <source>A Granota session was closed without saving its Untitled document (autosaved %1). Recover it?</source>
+            <translation>A Granota session was closed without saving its Untitled document (autosaved %1). Recover it?</translation>
+        </message>
+        <message>
             <source>&amp;Discard</source>
             <translation>&amp;Discard</translation>
         </message>
@@ -2492,14 +2500,6 @@
         <message>
             <source>&amp;Recover</source>
             <translation>&amp;Recover</translation>
-        </message>
-        <message>
-            <source>A Granota session was closed without saving its changes to %1 (autosaved %2). Recover them?</source>
-            <translation>A Granota session was closed without saving its changes to %1 (autosaved %2). Recover them?</translation>
-        </message>
-        <message>
-            <source>an Untitled document</source>
-            <translation>an Untitled document</translation>
         </message>
         <message>
             <source>Recovered %1. Not recovered:

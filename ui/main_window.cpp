@@ -617,11 +617,13 @@ MainWindow::RecoveryOutcome MainWindow::recoverAutosave(const QString& orphanPat
 void MainWindow::offerRecovery()
 {
     for (const Orphan& orphan : recoverableAutosaves()) {
-        const QString document = orphan.documentFile.isEmpty() ? tr("an Untitled document")
-                                                               : QStringLiteral("“%1”").arg(QFileInfo(orphan.documentFile).fileName());
-        QMessageBox box(QMessageBox::Question, tr("Recover unsaved work"),
-                        tr("A Granota session was closed without saving its changes to %1 (autosaved %2). Recover them?")
-                            .arg(document, QLocale().toString(orphan.written, QLocale::ShortFormat)),
+        const QString when = QLocale().toString(orphan.written, QLocale::ShortFormat);
+        const QString question =
+            orphan.documentFile.isEmpty()
+                ? tr("A Granota session was closed without saving its Untitled document (autosaved %1). Recover it?").arg(when)
+                : tr("A Granota session was closed without saving its changes to “%1” (autosaved %2). Recover them?")
+                      .arg(QFileInfo(orphan.documentFile).fileName(), when);
+        QMessageBox box(QMessageBox::Question, tr("Recover unsaved work"), question,
                         QMessageBox::NoButton, this);
         QPushButton* recover = box.addButton(tr("&Recover"), QMessageBox::AcceptRole);
         QPushButton* later = box.addButton(tr("&Keep for later"), QMessageBox::RejectRole);
