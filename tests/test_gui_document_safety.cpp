@@ -9,6 +9,7 @@
 #include "ui/fit_tab.h"
 #include "ui/language.h"
 #include "ui/main_window.h"
+#include "ui/point_editor.h"
 #include "ui/tab_page.h"
 
 #include <QDir>
@@ -109,6 +110,9 @@ private slots:
         QVERIFY(fit);
         QString error;
         QVERIFY2(fit->importFile(csv, &error), qPrintable(error));
+        // At the limit the editor adds no point: no Save can write what Open refuses.
+        fit->pointEditor()->insertPoint(0, granota::Point(-1, -1));
+        QCOMPARE(fit->pointEditor()->points().size(), granota::kMaxDataPoints);
         const QString file = dir.filePath("big.granota");
         QVERIFY2(window.saveFile(file, &error), qPrintable(error));
         QVERIFY(QFileInfo(file).size() < qint64(granota::kMaxFileBytes));

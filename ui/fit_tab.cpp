@@ -134,7 +134,7 @@ FitTab::FitTab(QWidget* parent) : TabPage(parent), m_undo(new QUndoStack(this)),
     m_editor = new PointEditor(m_canvas, m_undo, this);
     m_editor->setLabelPrefix(QStringLiteral("Q"));
     m_editor->setPolygonVisible(false);
-    m_editor->setCountLimits(2, std::numeric_limits<int>::max());
+    m_editor->setCountLimits(2, static_cast<int>(kMaxDataPoints)); // what a document holds, it opens
     m_table = new PointTable(m_editor, this);
     // The table refreshes through updateTable(), which skips huge data sets (10^6 rows would hang).
     disconnect(m_editor, &PointEditor::pointsChanged, m_table, nullptr);
