@@ -2,6 +2,7 @@
 // Human-readable text by default, one JSON object with --json. Bad input: exit status 2
 // and a line starting with "error:" on stderr — never a crash, never a NaN.
 #include "app/cli/command.h"
+#include "core/display_text.h"
 
 #include <cstdio>
 #include <exception>
@@ -78,7 +79,7 @@ int main(int argc, char* argv[])
             std::cout.flush();
             return std::cout ? 0 : 1;
         }
-        return fail("unknown command '" + name + "' (try granota-cli --help)");
+        return fail("unknown command " + quotedForDisplay(name) + " (try granota-cli --help)");
     } catch (const std::bad_alloc&) {
         return fail("not enough memory for this input");
     } catch (const std::exception& e) {

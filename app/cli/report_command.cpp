@@ -2,6 +2,7 @@
 // NAME.csv (with the machine and the build in its header), NAME.svg and NAME.png, drawn by
 // the same plotting code as the tabs.
 #include "app/cli/command.h"
+#include "core/display_text.h"
 #include "core/work_precision.h"
 
 #include <QApplication>
@@ -97,7 +98,7 @@ Expected<CommandOutput> run(const Arguments& args)
     }
     const QString dir = QString::fromStdString(*out);
     if (!QDir().mkpath(dir))
-        return makeError(ErrorCode::InvalidInput, "cannot create directory '" + *out + "'");
+        return makeError(ErrorCode::InvalidInput, "cannot create directory " + quotedForDisplay(*out));
 
     // QCustomPlot draws with QtGui: an offscreen application is enough, no display.
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))

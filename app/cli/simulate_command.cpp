@@ -2,6 +2,7 @@
 #include "app/cli/command.h"
 #include "app/cli/scene_options.h"
 
+#include "core/display_text.h"
 #include "core/polynomial_text.h"
 #include "core/simulation_trace.h"
 
@@ -28,7 +29,7 @@ Expected<CommandOutput> run(const Arguments& args)
     if (auto path = args.value("trace")) {
         trace.open(*path, std::ios::binary | std::ios::trunc);
         if (!trace)
-            return makeError(ErrorCode::InvalidInput, "cannot write the trace to '" + *path + "'");
+            return makeError(ErrorCode::InvalidInput, "cannot write the trace to " + quotedForDisplay(*path));
         trace << simulationTraceHeader(s) << '\n' << simulationTraceRow(s) << '\n';
     }
     for (int i = 0; i < *steps; ++i) {
