@@ -45,7 +45,7 @@ Expected<CommandOutput> run(const Arguments& args)
     auto points = args.points();
     if (!points)
         return points.error();
-    auto degree = args.integer("degree", 0, kMaxDegree, std::nullopt);
+    auto degree = args.integer("degree", 0, kMaxFitDegree, std::nullopt);
     if (!degree)
         return degree.error();
     auto paramName = args.choice("param", {"uniform", "chord", "centripetal"}, std::string("uniform"));
@@ -143,7 +143,7 @@ Expected<CommandOutput> run(const Arguments& args)
 Command fitCommand()
 {
     return {"fit",
-            "--points Q | --points-file F  --degree n  [--param uniform|chord|centripetal] [--solver qr|normal|svd] "
+            "--points Q | --points-file F  --degree n (0 to " + std::to_string(kMaxFitDegree) + ")  [--param uniform|chord|centripetal] [--solver qr|normal|svd] "
             "[--iterate] [--exact] [--json]",
             "least-squares Bézier fit: control points, t_i, Σ‖Q_i − α(t_i)‖², cond₂(M); --exact adds M, MᵀM, (MᵀM)⁻¹, M⁺",
             {{"points", "points-file", "degree", "param", "solver"}, {"exact", "json", "iterate"}, {}},
