@@ -377,6 +377,39 @@ private slots:
         QVERIFY2(line.contains("\\x1b"), line.constData());
     }
 
+    // Every command's answer, written to a full disk: the failed write is said on stderr,
+    // with the reason, and the status is 2 like every other error (README, --help).
+    void failedWriteSaysSo_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::newRow("demo") << QStringList{"demo"};
+        QTest::newRow("demo json") << QStringList{"demo", "--json"};
+        QTest::newRow("help") << QStringList{"--help"};
+        QTest::newRow("command help") << QStringList{"fit", "--help"};
+        QTest::newRow("bezier") << QStringList{"bezier", "--points", kEx22, "--t", "1/2", "--exact"};
+        QTest::newRow("bernstein json") << QStringList{"bernstein", "--degree", "4", "--t", "1/3", "--json"};
+        QTest::newRow("fit") << QStringList{"fit", "--points", kEx27, "--degree", "2"};
+        QTest::newRow("catmull-rom") << QStringList{"catmull-rom", "--points", kEx213};
+        QTest::newRow("simulate") << QStringList{"simulate", "--scene", "frog", "--steps", "1"};
+        QTest::newRow("bench") << QStringList{"bench", "--scene", "frog", "--steps", "1"};
+    }
+    void failedWriteSaysSo()
+    {
+        QFETCH(QStringList, args);
+        const Run r = runCliToFile(QStringLiteral("/dev/full"), args);
+        QCOMPARE(r.exitCode, 2);
+        QCOMPARE(r.err, QByteArray("error: cannot write the output: No space left on device\n"));
+    }
+
+    // A file the command writes itself: the trace, on a full disk.
+    void failedTraceWriteSaysSo()
+    {
+        const Run r = cli({"simulate", "--scene", "frog", "--steps", "10", "--trace", "/dev/full"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.startsWith("error: cannot write the trace to '/dev/full': No space left on device"), r.err.constData());
+        QVERIFY(r.out.isEmpty());
+    }
+
     void highDegreeFitWarns()
     {
         QString pts;
