@@ -410,6 +410,50 @@ private slots:
         QVERIFY(r.out.isEmpty());
     }
 
+    // Input whose doubles overflow: every number printed is finite. Without --exact the
+    // answer is exit 2 naming the value too large for a double (and suggesting --exact);
+    // with --exact the exact answer, exit 0, with no nan/inf/null anywhere.
+    void hostileDoubles_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<bool>("exactWorks"); // fit needs cond₂(M) in double even with --exact
+        const QString digits10000 = QString(10000, QLatin1Char('9'));
+        QTest::newRow("t 1e200") << QStringList{"bezier", "--points", "0,0;1,3;4,5", "--t", "1e200"} << true;
+        QTest::newRow("point 1e400") << QStringList{"bezier", "--points", "0,0;1e400,3", "--t", "0.5"} << true;
+        QTest::newRow("t 1e400") << QStringList{"bezier", "--points", "0,0;1,3", "--t", "1e400"} << true;
+        QTest::newRow("point 1e309") << QStringList{"bezier", "--points", "0,0;1e309,1;2,2", "--t", "1/2"} << true;
+        QTest::newRow("10000 digits") << QStringList{"bezier", "--points", "0,0;" + digits10000 + ",1", "--t", "1/2"} << true;
+        QTest::newRow("tangent overflows") << QStringList{"bezier", "--points", "-1e308,0;1e308,0", "--t", "1/2"} << true;
+        QTest::newRow("tangent at 0") << QStringList{"bezier", "--points", "0,0;1e308,1e308;-1e308,1e308", "--t", "0"} << true;
+        QTest::newRow("bernstein 200 at 1e10") << QStringList{"bernstein", "--degree", "200", "--t", "1e10"} << true;
+        QTest::newRow("bernstein t 1e400") << QStringList{"bernstein", "--degree", "3", "--t", "1e400"} << true;
+        QTest::newRow("catmull-rom 1e309") << QStringList{"catmull-rom", "--points", "0,0;1e309,1;2,2"} << true;
+        QTest::newRow("catmull-rom overflows") << QStringList{"catmull-rom", "--points", "-1e308,0;1e308,0;-1e308,0"} << true;
+        QTest::newRow("fit 1e309") << QStringList{"fit", "--points", "0,0;1e309,1;2,2", "--degree", "1"} << false;
+    }
+    void hostileDoubles()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(bool, exactWorks);
+        for (const QStringList& extra : {QStringList{}, QStringList{"--json"}}) {
+            const Run r = cli(args + extra);
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.startsWith("error: ") && r.err.count('\n') == 1, r.err.constData());
+            QVERIFY2(r.err.contains("too large for a double"), r.err.constData());
+            if (exactWorks)
+                QVERIFY2(r.err.contains("--exact"), r.err.constData());
+            QVERIFY(r.out.isEmpty());
+            if (!exactWorks)
+                continue;
+            const Run e = cli(args + extra + QStringList{"--exact"});
+            QVERIFY2(e.exitCode == 0, e.err.constData());
+            const QByteArray out = e.out.toLower();
+            QVERIFY2(!out.contains("nan") && !out.contains("inf") && !out.contains("null"), e.out.left(2000).constData());
+            if (!extra.isEmpty())
+                QVERIFY(!e.json().isEmpty());
+        }
+    }
+
     void highDegreeFitWarns()
     {
         QString pts;

@@ -1,6 +1,7 @@
 // granota-cli fit: least-squares Bézier fitting (§2.1.3, Lemma 2.2, Prop 2.2).
 // --exact reproduces the matrices of Ex 2.7 and Ex 2.8 as fractions.
 #include "app/cli/command.h"
+#include "app/cli/finite_doubles.h"
 
 #include "core/least_squares_fit.h"
 #include "core/polynomial_text.h"
@@ -67,7 +68,11 @@ Expected<CommandOutput> run(const Arguments& args)
     options.correctParameters = iterate;
     // The numerical fit always runs: it gives cond₂(M), and validates the input the same
     // way with or without --exact.
-    auto fit = fitBezier(toDouble(*points), options);
+    // cond₂(M) is a double, so even --exact needs the points as doubles.
+    auto doublePoints = finiteDoubles(*points, false);
+    if (!doublePoints)
+        return doublePoints.error();
+    auto fit = fitBezier(*doublePoints, options);
     if (!fit)
         return fit.error();
 

@@ -3,6 +3,7 @@
 // and a line starting with "error:" on stderr — never a crash, never a NaN. An answer that
 // cannot be written (a full disk, a closed pipe) is an error too, with the same status 2.
 #include "app/cli/command.h"
+#include "app/cli/finite_doubles.h"
 #include "app/cli/output_file.h"
 #include "core/display_text.h"
 
@@ -88,6 +89,11 @@ int main(int argc, char* argv[])
             auto result = c.run(*args);
             if (!result)
                 return fail(result.error().message);
+            // The text shows the numbers of the JSON object: one check covers both forms.
+            if (auto where = nonFiniteNumber(result->json))
+                return fail(tooLargeForDouble("the answer's " + *where + " (as --json names it)",
+                                              c.syntax.flags.count("exact") && !args->flag("exact"))
+                                .message);
             errno = 0;
             if (args->flag("json"))
                 std::cout << result->json.dump() << "\n";
