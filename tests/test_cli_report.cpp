@@ -71,6 +71,15 @@ private slots:
         QVERIFY(run.out.isEmpty());
     }
 
+    // A report name with terminal escapes is echoed escaped, not as raw bytes.
+    void unknownNameIsEscaped()
+    {
+        const CliRun run = runCli({"report", QStringLiteral("\033[2Jdragons"), "--out", "/tmp/x"});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.startsWith("error: ") && run.err.contains("'\\x1b[2Jdragons'"), run.err.constData());
+        QVERIFY(!run.err.contains('\033'));
+    }
+
     void badInput_data()
     {
         QTest::addColumn<QStringList>("args");
