@@ -1,7 +1,8 @@
 #include "app/cli/finite_doubles.h"
 
+#include "core/polynomial_text.h"
+
 #include <cmath>
-#include <cstdio>
 
 namespace granota::cli {
 
@@ -22,9 +23,7 @@ std::string magnitudeText(const Rational& q)
         mantissa /= 10;
         ++exponent;
     }
-    char text[64];
-    std::snprintf(text, sizeof text, "≈ %s%ge%ld", q < 0 ? "-" : "", mantissa, exponent);
-    return text;
+    return std::string("≈ ") + (q < 0 ? "-" : "") + formatDouble(mantissa) + "e" + std::to_string(exponent);
 }
 
 } // namespace
