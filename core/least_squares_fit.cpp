@@ -21,7 +21,6 @@ namespace granota {
 
 namespace {
 
-constexpr int kMaxDegree = 100;
 constexpr double kIllConditioned = 1e10;
 
 /// B_0^n(t)..B_n^n(t) into b[0..n] by the recursion of Lemma 2.1,
@@ -100,10 +99,10 @@ std::optional<Error> validateShape(std::size_t count, int degree)
                                                       + std::to_string(count));
     if (degree < 0)
         return makeError(ErrorCode::OutOfRange, "the degree must be 0 or more, got " + std::to_string(degree));
-    if (degree > kMaxDegree)
+    if (degree > kMaxFitDegree)
         return makeError(ErrorCode::OutOfRange, "degree " + std::to_string(degree)
                                                     + " is beyond the supported maximum of "
-                                                    + std::to_string(kMaxDegree));
+                                                    + std::to_string(kMaxFitDegree));
     if (static_cast<std::size_t>(degree) + 1 > count)
         return makeError(ErrorCode::DegreeTooHigh, pointsNeeded(degree) + " (n + 1 ≤ k + 1); there are only "
                                                        + std::to_string(count) + ", so the degree can be at most "

@@ -60,11 +60,15 @@ struct FitResult {
     std::vector<std::string> warnings; ///< ill-conditioning, rank deficiency, fallbacks
 };
 
+/// The highest degree fitBezier and fitBezierExact accept: beyond it the Bernstein basis
+/// at the data's parameters is too ill-conditioned for any solver (cond₂(M) grows like 2ⁿ).
+constexpr int kMaxFitDegree = 100;
+
 /// M of Lemma 2.2: row i holds B_0^n(t_i)..B_n^n(t_i) (via the recursion of Lemma 2.1).
 Eigen::MatrixXd bernsteinMatrix(const std::vector<double>& t, int n);
 
 /// Fits a degree-n Bézier curve to q. Errors: InvalidInput (a NaN/inf point, naming its
-/// index), TooFewPoints (fewer than 2), OutOfRange (degree < 0 or > 100, or a result that
+/// index), TooFewPoints (fewer than 2), OutOfRange (degree < 0 or > kMaxFitDegree, or a result that
 /// does not fit in a double), DegreeTooHigh (n > k: degree n needs n + 1 points),
 /// Singular (normal equations with fewer than n + 1 distinct parameters, or whose
 /// Cholesky factorisation fails). Qr and Svd return the minimum-norm least-squares

@@ -1,5 +1,7 @@
 #include "core/point_list.h"
 
+#include "core/display_text.h"
+#include "core/input_limits.h"
 #include "core/json.h"
 
 #include <cctype>
@@ -18,13 +20,24 @@ std::string_view trim(std::string_view s)
     return s;
 }
 
-std::string quoted(std::string_view s)
+/// Text from a file or typed by a user inside a message: quoted, control characters escaped.
+std::string quoted(std::string_view s) { return quotedForDisplay(s, 40); }
+
+/// A file saved by a spreadsheet or Notepad may start with the UTF-8 byte-order mark
+/// EF BB BF: it is not part of the first number.
+std::string_view withoutByteOrderMark(std::string_view text)
 {
-    constexpr std::size_t kMax = 40;
-    std::string out(s.substr(0, kMax));
-    if (s.size() > kMax)
-        out += "…";
-    return "'" + out + "'";
+    constexpr std::string_view kMark = "\xEF\xBB\xBF";
+    if (text.substr(0, kMark.size()) == kMark)
+        text.remove_prefix(kMark.size());
+    return text;
+}
+
+/// The refusal of a list longer than kMaxDataPoints, the limit the GUI shares.
+Error tooManyPoints(const char* holder)
+{
+    return makeError(ErrorCode::OutOfRange, std::string(holder) + " holds more than " + std::to_string(kMaxDataPoints)
+                                                + " points, the most Granota reads");
 }
 
 Expected<Rational> coordinate(std::string_view text, std::size_t index, const char* axis)
@@ -76,6 +89,8 @@ Expected<std::vector<RPoint>> parsePointList(std::string_view text)
             end = text.size();
         const std::string_view item = trim(text.substr(start, end - start));
         if (!item.empty() || end != text.size()) { // a trailing ';' is tolerated
+            if (points.size() == kMaxDataPoints)
+                return tooManyPoints("the list");
             auto p = pair(item, points.size());
             if (!p)
                 return p.error();
@@ -88,6 +103,7 @@ Expected<std::vector<RPoint>> parsePointList(std::string_view text)
 
 Expected<std::vector<RPoint>> parsePointCsv(std::string_view text)
 {
+    text = withoutByteOrderMark(text);
     std::vector<RPoint> points;
     std::size_t start = 0, lineNumber = 0;
     while (start < text.size()) {
@@ -106,6 +122,8 @@ Expected<std::vector<RPoint>> parsePointCsv(std::string_view text)
                 continue;
             return makeError(p.error().code, "line " + std::to_string(lineNumber) + ": " + p.error().message);
         }
+        if (points.size() == kMaxDataPoints)
+            return tooManyPoints("the file");
         points.push_back(*p);
     }
     if (points.empty())
@@ -118,7 +136,7 @@ Expected<std::vector<RPoint>> parsePointJson(std::string_view text)
     const auto bad = [](const std::string& what) {
         return makeError(ErrorCode::InvalidInput, "JSON points: " + what + " (expected [[x,y],…])");
     };
-    auto doc = Json::parse(text);
+    auto doc = Json::parse(withoutByteOrderMark(text));
     if (!doc) {
         constexpr std::string_view kPrefix = "JSON: "; // Json::parse's, "JSON points: " here
         std::string what = doc.error().message;
@@ -131,6 +149,8 @@ Expected<std::vector<RPoint>> parsePointJson(std::string_view text)
         return bad("the text is " + quoted(doc->dump()) + ", not a list");
     if (list->empty())
         return makeError(ErrorCode::TooFewPoints, "the file holds no points");
+    if (list->size() > kMaxDataPoints)
+        return tooManyPoints("the file");
     std::vector<RPoint> points;
     for (const Json& item : *list) {
         const std::size_t index = points.size();
@@ -151,7 +171,7 @@ Expected<std::vector<RPoint>> parsePointJson(std::string_view text)
 
 Expected<std::vector<RPoint>> parsePointFile(std::string_view text)
 {
-    const std::string_view t = trim(text);
+    const std::string_view t = trim(withoutByteOrderMark(text));
     if (!t.empty() && t.front() == '[')
         return parsePointJson(t);
     return parsePointCsv(text);

@@ -7,7 +7,10 @@
 ///  - JSON:    [[x,y],[x,y],…]        (JSON numbers, or strings holding fractions "p/q")
 /// Every coordinate is read as the exact rational it denotes (integers, fractions p/q,
 /// decimals, exponents), so that exact computations get exactly what was typed.
-/// NaN, infinities and anything else is an error naming the offending point.
+/// NaN, infinities and anything else is an error naming the offending point; the text
+/// quoted in it has its control characters escaped (quotedForDisplay). A file may start
+/// with a UTF-8 byte-order mark. A list holds at most kMaxDataPoints points
+/// (core/input_limits.h), the limit the CLI and the GUI share.
 
 #include "core/expected.h"
 #include "core/rational.h"

@@ -1,5 +1,6 @@
 #include "core/scene.h"
 
+#include "core/display_text.h"
 #include "core/rational.h"
 #include "core/scene_files.h"
 #include "core/stage_body.h"
@@ -324,7 +325,7 @@ Expected<SceneSpec> loadScene(const std::string& name)
     std::string list;
     for (const auto& n : sceneNames())
         list += (list.empty() ? "" : ", ") + n;
-    return makeError(ErrorCode::InvalidInput, "unknown scene '" + name + "' (scenes: " + list + ")");
+    return makeError(ErrorCode::InvalidInput, "unknown scene " + quotedForDisplay(name) + " (scenes: " + list + ")");
 }
 
 Expected<SceneSpec> parseScene(const Json& doc)
@@ -376,17 +377,17 @@ Expected<bool> applySetting(SceneSpec& scene, const std::string& keyValue)
 {
     const auto eq = keyValue.find('=');
     if (eq == std::string::npos || eq == 0)
-        return makeError(ErrorCode::InvalidInput, "--set takes key=value, got '" + keyValue + "'");
+        return makeError(ErrorCode::InvalidInput, "--set takes key=value, got " + quotedForDisplay(keyValue));
     const std::string key = keyValue.substr(0, eq), value = keyValue.substr(eq + 1);
     if (!scene.hasParam(key)) {
         std::string keys;
         for (const auto& k : scene.paramKeys)
             keys += (keys.empty() ? "" : ", ") + k;
         return makeError(ErrorCode::InvalidInput,
-                         "scene '" + scene.name + "' has no parameter '" + key + "' (it has: " + keys + ")");
+                         "scene '" + scene.name + "' has no parameter " + quotedForDisplay(key) + " (it has: " + keys + ")");
     }
     if (key == "legs" || key == "angle_limits" || key == "obstacles" || key == "shapes" || key == "chain")
-        return makeError(ErrorCode::InvalidInput, "'" + key + "' is set in the scene file, not with --set");
+        return makeError(ErrorCode::InvalidInput, quotedForDisplay(key) + " is set in the scene file, not with --set");
     // "0,0.75" → [0, 0.75]; "all" → "all"; numbers may be fractions.
     Json json;
     if (key == "grab") {
@@ -400,7 +401,7 @@ Expected<bool> applySetting(SceneSpec& scene, const std::string& keyValue)
             const std::string item = value.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
             auto q = parseRational(item);
             if (!q)
-                return makeError(ErrorCode::InvalidInput, "--set " + key + ": '" + item + "' is not a finite number");
+                return makeError(ErrorCode::InvalidInput, "--set " + key + ": " + quotedForDisplay(item) + " is not a finite number");
             list.push(toDouble(*q));
             ++count;
             if (comma == std::string::npos)

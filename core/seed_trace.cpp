@@ -1,5 +1,7 @@
 #include "core/seed_trace.h"
 
+#include "core/display_text.h"
+
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -149,8 +151,8 @@ Expected<SeedTrace> parseSeedTrace(std::string_view text)
         for (std::size_t k = 0; k < parts.size(); ++k)
             if (!parseNumber(parts[k], row[k]))
                 return makeError(ErrorCode::InvalidInput, "line " + std::to_string(lineNo) + ", column "
-                                                              + trace.columns[k] + ": not a number: '"
-                                                              + std::string(parts[k]) + "'");
+                                                              + trace.columns[k] + ": not a number: "
+                                                              + quotedForDisplay(parts[k]));
         trace.rows.push_back(std::move(row));
     }
     if (!haveHeader)

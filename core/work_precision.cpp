@@ -1,4 +1,5 @@
 #include "core/work_precision.h"
+#include "core/display_text.h"
 
 #include "core/polynomial_text.h"
 #include "core/work_precision_reports.h"
@@ -35,7 +36,7 @@ Expected<WorkPrecisionReport> runWorkPrecisionReport(std::string_view name, cons
     std::string known;
     for (const auto& n : workPrecisionReportNames())
         known += (known.empty() ? "" : ", ") + n;
-    return makeError(ErrorCode::InvalidInput, "unknown report '" + std::string(name) + "' (" + known + ", all)");
+    return makeError(ErrorCode::InvalidInput, "unknown report " + quotedForDisplay(name) + " (" + known + ", all)");
 }
 
 namespace {

@@ -24,9 +24,17 @@ inline CliRun runCliWith(const QStringList& env, const QStringList& args, int ti
 
 inline CliRun runCli(const QStringList& args, int timeoutMs = 300000) { return runCliWith({}, args, timeoutMs); }
 
-inline CliRun runCliWith(const QStringList& env, const QStringList& args, int timeoutMs)
+/// Runs granota-cli with its standard output written to `stdoutFile` (e.g. "/dev/full"
+/// to see what it does when the output cannot be written); CliRun::out stays empty.
+inline CliRun runCliToFile(const QString& stdoutFile, const QStringList& args, int timeoutMs = 300000);
+
+namespace cli_runner_detail {
+
+inline CliRun run(const QStringList& env, const QString& stdoutFile, const QStringList& args, int timeoutMs)
 {
     QProcess p;
+    if (!stdoutFile.isEmpty())
+        p.setStandardOutputFile(stdoutFile);
     if (!env.isEmpty()) {
         QProcessEnvironment e = QProcessEnvironment::systemEnvironment();
         for (const QString& kv : env)
@@ -45,4 +53,16 @@ inline CliRun runCliWith(const QStringList& env, const QStringList& args, int ti
     r.out = p.readAllStandardOutput();
     r.err = p.readAllStandardError();
     return r;
+}
+
+} // namespace cli_runner_detail
+
+inline CliRun runCliWith(const QStringList& env, const QStringList& args, int timeoutMs)
+{
+    return cli_runner_detail::run(env, QString(), args, timeoutMs);
+}
+
+inline CliRun runCliToFile(const QString& stdoutFile, const QStringList& args, int timeoutMs)
+{
+    return cli_runner_detail::run({}, stdoutFile, args, timeoutMs);
 }

@@ -286,6 +286,174 @@ private slots:
         QVERIFY2(!r.out.contains("null") && !r.out.toLower().contains("nan") && !r.out.contains("inf"), r.out.constData());
     }
 
+    // --points-file is read with a bound (core/input_limits.h): a device that never ends
+    // is refused at 64 MB, a folder is named as one, not as a file without points.
+    void pointsFileBounded()
+    {
+        const Run zero = cli({"bezier", "--points-file", "/dev/zero", "--t", "0"});
+        QCOMPARE(zero.exitCode, 2);
+        QVERIFY2(zero.err.startsWith("error: ") && zero.err.contains("larger than 64 MB"), zero.err.constData());
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const Run folder = cli({"fit", "--points-file", dir.path(), "--degree", "1"});
+        QCOMPARE(folder.exitCode, 2);
+        QVERIFY2(folder.err.startsWith("error: ") && folder.err.contains("is a folder"), folder.err.constData());
+        QVERIFY(!folder.err.contains("no points"));
+    }
+
+    // A CSV saved with a UTF-8 byte-order mark reads as the same points.
+    void pointsFileWithByteOrderMark()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        QFile csv(dir.filePath("bom.csv"));
+        QVERIFY(csv.open(QIODevice::WriteOnly));
+        csv.write("\xEF\xBB\xBFx,y\n0,0\n1,3\n4,2\n8,-2\n1,5\n");
+        csv.close();
+        const Run r = cli({"fit", "--points-file", csv.fileName(), "--degree", "2", "--exact", "--json"});
+        QVERIFY2(r.exitCode == 0, r.err.constData());
+        QCOMPARE(strings(r.json()["control_points"].toArray()[0].toArray()), QStringList({"-8/7", "46/35"}));
+    }
+
+    // The argument check of fit --degree states the fit's real maximum, and the usage agrees.
+    void fitDegreeStatesTheRealMaximum()
+    {
+        QString pts;
+        for (int i = 0; i <= 160; ++i)
+            pts += QString("%1,%2;").arg(i).arg(i % 7);
+        const Run r = cli({"fit", "--points", pts, "--degree", "150"});
+        QCOMPARE(r.exitCode, 2);
+        const QRegularExpression range(QStringLiteral("\\(0 to (\\d+)\\)"));
+        const auto m = range.match(QString::fromUtf8(r.err));
+        QVERIFY2(m.hasMatch(), r.err.constData());
+        const int maximum = m.captured(1).toInt();
+        QVERIFY2(maximum < 150, r.err.constData());
+        // That maximum is accepted (given enough points), one more is not.
+        const Run most = cli({"fit", "--points", pts, "--degree", QString::number(maximum), "--json"});
+        QVERIFY2(!most.err.contains("out of range") && !most.err.contains("maximum"), most.err.constData());
+        const Run help = cli({"fit", "--help"});
+        QCOMPARE(help.exitCode, 0);
+        QVERIFY2(help.out.contains(m.captured(0).toUtf8()), help.out.constData());
+    }
+
+    // Text from the user inside a message has its control characters escaped: an ESC in a
+    // CSV cell or an argument cannot clear the terminal through stderr.
+    void messagesEscapeControlCharacters_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        const QString evil = QStringLiteral("\033[2J\033]0;pwned\007x");
+        QTest::newRow("CSV cell") << QStringList{"fit", "--points-file", "CSV", "--degree", "1"};
+        QTest::newRow("command") << QStringList{evil};
+        QTest::newRow("argument") << QStringList{"bezier", evil};
+        QTest::newRow("option") << QStringList{"bezier", "--" + evil};
+        QTest::newRow("points") << QStringList{"bezier", "--points", evil + ",1", "--t", "0"};
+        QTest::newRow("t") << QStringList{"bezier", "--points", "0,0;1,1", "--t", evil};
+        QTest::newRow("degree") << QStringList{"bernstein", "--degree", evil, "--t", "0"};
+        QTest::newRow("choice") << QStringList{"fit", "--points", kEx27, "--degree", "2", "--param", evil};
+        QTest::newRow("file name") << QStringList{"fit", "--points-file", "/nonexistent/" + evil, "--degree", "1"};
+        QTest::newRow("scene") << QStringList{"simulate", "--scene", evil};
+        QTest::newRow("solver") << QStringList{"simulate", "--scene", "frog", "--solver", evil};
+        QTest::newRow("set key") << QStringList{"simulate", "--scene", "frog", "--set", evil + "=1"};
+        QTest::newRow("set value") << QStringList{"simulate", "--scene", "frog", "--set", "gravity=" + evil};
+        QTest::newRow("set form") << QStringList{"simulate", "--scene", "frog", "--set", evil};
+        QTest::newRow("trace") << QStringList{"simulate", "--scene", "frog", "--steps", "1", "--trace", "/nonexistent/" + evil};
+    }
+    void messagesEscapeControlCharacters()
+    {
+        QFETCH(QStringList, args);
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        QFile csv(dir.filePath("evil.csv"));
+        QVERIFY(csv.open(QIODevice::WriteOnly));
+        csv.write("\033[2J\033]0;pwned\007x,1\n2,3\n");
+        csv.close();
+        args.replaceInStrings(QRegularExpression("^CSV$"), csv.fileName());
+        const Run r = cli(args);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.startsWith("error: ") && r.err.endsWith("\n"), r.err.constData());
+        const QByteArray line = r.err.chopped(1);
+        for (char c : line)
+            QVERIFY2(static_cast<unsigned char>(c) >= 0x20, r.err.toPercentEncoding(" :'/()=,").constData());
+        QVERIFY2(line.contains("\\x1b"), line.constData());
+    }
+
+    // Every command's answer, written to a full disk: the failed write is said on stderr,
+    // with the reason, and the status is 2 like every other error (README, --help).
+    void failedWriteSaysSo_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::newRow("demo") << QStringList{"demo"};
+        QTest::newRow("demo json") << QStringList{"demo", "--json"};
+        QTest::newRow("help") << QStringList{"--help"};
+        QTest::newRow("command help") << QStringList{"fit", "--help"};
+        QTest::newRow("bezier") << QStringList{"bezier", "--points", kEx22, "--t", "1/2", "--exact"};
+        QTest::newRow("bernstein json") << QStringList{"bernstein", "--degree", "4", "--t", "1/3", "--json"};
+        QTest::newRow("fit") << QStringList{"fit", "--points", kEx27, "--degree", "2"};
+        QTest::newRow("catmull-rom") << QStringList{"catmull-rom", "--points", kEx213};
+        QTest::newRow("simulate") << QStringList{"simulate", "--scene", "frog", "--steps", "1"};
+        QTest::newRow("bench") << QStringList{"bench", "--scene", "frog", "--steps", "1"};
+    }
+    void failedWriteSaysSo()
+    {
+        QFETCH(QStringList, args);
+        const Run r = runCliToFile(QStringLiteral("/dev/full"), args);
+        QCOMPARE(r.exitCode, 2);
+        QCOMPARE(r.err, QByteArray("error: cannot write the output: No space left on device\n"));
+    }
+
+    // A file the command writes itself: the trace, on a full disk.
+    void failedTraceWriteSaysSo()
+    {
+        const Run r = cli({"simulate", "--scene", "frog", "--steps", "10", "--trace", "/dev/full"});
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.startsWith("error: cannot write the trace to '/dev/full': No space left on device"), r.err.constData());
+        QVERIFY(r.out.isEmpty());
+    }
+
+    // Input whose doubles overflow: every number printed is finite. Without --exact the
+    // answer is exit 2 naming the value too large for a double (and suggesting --exact);
+    // with --exact the exact answer, exit 0, with no nan/inf/null anywhere.
+    void hostileDoubles_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<bool>("exactWorks"); // fit needs cond₂(M) in double even with --exact
+        const QString digits10000 = QString(10000, QLatin1Char('9'));
+        QTest::newRow("t 1e200") << QStringList{"bezier", "--points", "0,0;1,3;4,5", "--t", "1e200"} << true;
+        QTest::newRow("point 1e400") << QStringList{"bezier", "--points", "0,0;1e400,3", "--t", "0.5"} << true;
+        QTest::newRow("t 1e400") << QStringList{"bezier", "--points", "0,0;1,3", "--t", "1e400"} << true;
+        QTest::newRow("point 1e309") << QStringList{"bezier", "--points", "0,0;1e309,1;2,2", "--t", "1/2"} << true;
+        QTest::newRow("10000 digits") << QStringList{"bezier", "--points", "0,0;" + digits10000 + ",1", "--t", "1/2"} << true;
+        QTest::newRow("tangent overflows") << QStringList{"bezier", "--points", "-1e308,0;1e308,0", "--t", "1/2"} << true;
+        QTest::newRow("tangent at 0") << QStringList{"bezier", "--points", "0,0;1e308,1e308;-1e308,1e308", "--t", "0"} << true;
+        QTest::newRow("bernstein 200 at 1e10") << QStringList{"bernstein", "--degree", "200", "--t", "1e10"} << true;
+        QTest::newRow("bernstein t 1e400") << QStringList{"bernstein", "--degree", "3", "--t", "1e400"} << true;
+        QTest::newRow("catmull-rom 1e309") << QStringList{"catmull-rom", "--points", "0,0;1e309,1;2,2"} << true;
+        QTest::newRow("catmull-rom overflows") << QStringList{"catmull-rom", "--points", "-1e308,0;1e308,0;-1e308,0"} << true;
+        QTest::newRow("fit 1e309") << QStringList{"fit", "--points", "0,0;1e309,1;2,2", "--degree", "1"} << false;
+    }
+    void hostileDoubles()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(bool, exactWorks);
+        for (const QStringList& extra : {QStringList{}, QStringList{"--json"}}) {
+            const Run r = cli(args + extra);
+            QCOMPARE(r.exitCode, 2);
+            QVERIFY2(r.err.startsWith("error: ") && r.err.count('\n') == 1, r.err.constData());
+            QVERIFY2(r.err.contains("too large for a double"), r.err.constData());
+            if (exactWorks)
+                QVERIFY2(r.err.contains("--exact"), r.err.constData());
+            QVERIFY(r.out.isEmpty());
+            if (!exactWorks)
+                continue;
+            const Run e = cli(args + extra + QStringList{"--exact"});
+            QVERIFY2(e.exitCode == 0, e.err.constData());
+            const QByteArray out = e.out.toLower();
+            QVERIFY2(!out.contains("nan") && !out.contains("inf") && !out.contains("null"), e.out.left(2000).constData());
+            if (!extra.isEmpty())
+                QVERIFY(!e.json().isEmpty());
+        }
+    }
+
     void highDegreeFitWarns()
     {
         QString pts;

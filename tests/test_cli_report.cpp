@@ -47,6 +47,39 @@ private slots:
         }
     }
 
+    // A report file that cannot be written (each of the three, on a full disk: a link to
+    // /dev/full) is an error naming the file and the reason, not a silent success.
+    void failedFileWriteSaysSo_data()
+    {
+        QTest::addColumn<QString>("extension");
+        QTest::newRow("csv") << QStringLiteral(".csv");
+        QTest::newRow("svg") << QStringLiteral(".svg");
+        QTest::newRow("png") << QStringLiteral(".png");
+    }
+    void failedFileWriteSaysSo()
+    {
+        QFETCH(QString, extension);
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString file = dir.filePath(QStringLiteral("integrators") + extension);
+        QVERIFY(QFile::link(QStringLiteral("/dev/full"), file));
+        const CliRun run = runCli({"report", "integrators", "--quick", "--out", dir.path()});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.startsWith("error: cannot write ") && run.err.contains(("integrators" + extension).toUtf8())
+                     && run.err.contains("No space left on device"),
+                 run.err.constData());
+        QVERIFY(run.out.isEmpty());
+    }
+
+    // A report name with terminal escapes is echoed escaped, not as raw bytes.
+    void unknownNameIsEscaped()
+    {
+        const CliRun run = runCli({"report", QStringLiteral("\033[2Jdragons"), "--out", "/tmp/x"});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.startsWith("error: ") && run.err.contains("'\\x1b[2Jdragons'"), run.err.constData());
+        QVERIFY(!run.err.contains('\033'));
+    }
+
     void badInput_data()
     {
         QTest::addColumn<QStringList>("args");

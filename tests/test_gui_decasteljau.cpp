@@ -36,6 +36,8 @@
 using granota::Point;
 using granota::ui::DeCasteljauTab;
 
+Q_DECLARE_METATYPE(std::vector<granota::Point>)
+
 namespace {
 
 template <class W> W* findByText(QWidget& root, const QString& text)
@@ -354,6 +356,34 @@ private slots:
         QVERIFY(std::fabs(tab.table().point().x - (2 - 3 - 6.0 / 16 + 52.0 / 64 - 43.0 / 256)) < 1e-12);
         tab.setT(0.25); // no change, no signal
         QCOMPARE(spy.count(), 1);
+    }
+
+    // Control points near ±1e308: c′(t) = n (P_1 − P_0) overflows a double. The readout
+    // says the values are too large instead of showing a wrong (0, 0), nan or inf.
+    void valuesTooLargeForADouble_data()
+    {
+        QTest::addColumn<double>("t");
+        QTest::addColumn<std::vector<Point>>("points");
+        // c′(0) = 2 (P_1 − P_0) = (2e308, 2e308); c′(1/2) = 2 (P_1^1 − P_0^1), x = 2e308.
+        QTest::newRow("t = 0") << 0.0 << std::vector<Point>{{0, 0}, {1e308, 1e308}, {-1e308, 1e308}};
+        QTest::newRow("t = 1/2") << 0.5 << std::vector<Point>{{-1e308, 0}, {1e308, 1e308}, {1e308, -1e308}};
+    }
+    void valuesTooLargeForADouble()
+    {
+        QFETCH(double, t);
+        QFETCH(std::vector<Point>, points);
+        DeCasteljauTab tab;
+        tab.setT(t);
+        tab.pointEditor()->setPoints(points, QStringLiteral("huge"));
+        const QString text = tab.exactPanel()->plainText();
+        QVERIFY2(text.contains(QStringLiteral("too large")), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("0, 0")), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("nan"), Qt::CaseInsensitive) && !text.contains(QStringLiteral("inf"), Qt::CaseInsensitive),
+                 qPrintable(text));
+        // Back to ordinary points: the triangle and c′(t) again, no note.
+        tab.pointEditor()->setPoints({{0, 0}, {1, 2}, {3, 2}}, QStringLiteral("small"));
+        const QString again = tab.exactPanel()->plainText();
+        QVERIFY2(!again.contains(QStringLiteral("too large")) && again.contains(QStringLiteral("c′(t) = ")), qPrintable(again));
     }
 
     // "1/3" typed in the spin box is t = 1/3 exactly, not 0.333.

@@ -1,5 +1,6 @@
 // Reading points: inline lists, CSV and JSON files; every coordinate exact; every kind of
 // bad input a clear error naming where it is.
+#include "core/input_limits.h"
 #include "core/point_list.h"
 #include "core/polynomial_text.h"
 
@@ -7,6 +8,7 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <clocale>
 #include <string>
 
@@ -14,6 +16,16 @@ using namespace granota;
 
 namespace {
 
+/// `count` points "i,i" as CSV lines, or as a JSON list.
+std::string generatedPoints(std::size_t count, bool asJson)
+{
+    std::string text = asJson ? "[" : "";
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::string n = std::to_string(i);
+        text += asJson ? (i ? ",[" : "[") + n + "," + n + "]" : n + "," + n + "\n";
+    }
+    return asJson ? text + "]" : text;
+}
 
 } // namespace
 
@@ -119,6 +131,61 @@ private slots:
         auto p = asJson ? parsePointJson(s) : parsePointList(s);
         QVERIFY(!p.ok());
         QVERIFY(!p.error().message.empty());
+    }
+
+    // A file saved by a spreadsheet or Notepad starts with a UTF-8 byte-order mark.
+    void byteOrderMarkIsSkipped()
+    {
+        const std::string bom = "\xEF\xBB\xBF";
+        for (const std::string& text : {bom + "x,y\n0,0\n1,3\n", bom + "0,0\n1,3\n", bom + "[[0,0],[1,3]]",
+                                        bom + " [[0,0],[1,3]]"}) {
+            for (auto reader : {parsePointFile, text.find('[') != std::string::npos ? parsePointJson : parsePointCsv}) {
+                const auto p = reader(text);
+                QVERIFY2(p.ok(), p.ok() ? "" : p.error().message.c_str());
+                QCOMPARE(int(p->size()), 2);
+                QCOMPARE((*p)[1].y, Rational(3));
+            }
+        }
+        // Only at the start: a mark inside the text is still not a number.
+        QVERIFY(!parsePointCsv("0,0\n" + bom + "1,3\n").ok());
+    }
+
+    // A cell with terminal escapes is shown escaped: a message cannot clear the screen.
+    void errorsEscapeControlCharacters()
+    {
+        for (auto reader : {parsePointCsv, parsePointList}) {
+            const auto p = reader("\033[2J\033]0;pwned\007x,1\n");
+            QVERIFY(!p.ok());
+            const std::string& m = p.error().message;
+            for (char c : m)
+                QVERIFY2(static_cast<unsigned char>(c) >= 0x20, m.c_str());
+            QVERIFY2(m.find("\\x1b[2J") != std::string::npos, m.c_str());
+        }
+        const auto j = parsePointJson("[[\"\\u001b[2J\",1]]");
+        QVERIFY(!j.ok());
+        QVERIFY2(j.error().message.find("\\x1b") != std::string::npos, j.error().message.c_str());
+    }
+
+    // One limit for every reader, shared by the CLI and the GUI (core/input_limits.h).
+    void atMostMaxDataPoints_data()
+    {
+        QTest::addColumn<bool>("asJson");
+        QTest::newRow("CSV") << false;
+        QTest::newRow("JSON") << true;
+    }
+    void atMostMaxDataPoints()
+    {
+        QFETCH(bool, asJson);
+        const auto most = parsePointFile(generatedPoints(kMaxDataPoints, asJson));
+        QVERIFY2(most.ok(), most.ok() ? "" : most.error().message.c_str());
+        QCOMPARE(most->size(), kMaxDataPoints);
+        const auto tooMany = parsePointFile(generatedPoints(kMaxDataPoints + 1, asJson));
+        QVERIFY(!tooMany.ok());
+        QVERIFY2(tooMany.error().message.find("more than " + std::to_string(kMaxDataPoints) + " points") != std::string::npos,
+                 tooMany.error().message.c_str());
+        std::string inlineList = generatedPoints(kMaxDataPoints + 1, false);
+        std::replace(inlineList.begin(), inlineList.end(), '\n', ';');
+        QVERIFY(!parsePointList(inlineList).ok());
     }
 
     void polynomialTextRoundTrips()

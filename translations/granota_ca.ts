@@ -934,6 +934,11 @@
             <translation>El triangle es mostra fins al grau %1; aquesta corba té grau %2.</translation>
         </message>
         <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="630" />
+            <source>The values are too large for a double (beyond ±1.8e308): a level of the triangle or c′(t) overflows. Move the control points closer to the origin.</source>
+            <translation>Els valors són massa grans per a un double (més enllà de ±1,8e308): un nivell del triangle o c′(t) desborda. Acosteu els punts de control a l'origen.</translation>
+        </message>
+        <message>
             <location filename="../ui/decasteljau_tab.cpp" line="655" />
             <source>Animate t from 0 to 1 and around again: watch c(t) trace the curve (Def 2.4).</source>
             <translation>Anima t de 0 a 1 i torna a començar: mireu com c(t) traça la corba (Def 2.4).</translation>

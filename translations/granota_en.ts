@@ -934,6 +934,11 @@
             <translation>The triangle is shown up to degree %1; this curve has degree %2.</translation>
         </message>
         <message>
+            <location filename="../ui/decasteljau_tab.cpp" line="630" />
+            <source>The values are too large for a double (beyond ±1.8e308): a level of the triangle or c′(t) overflows. Move the control points closer to the origin.</source>
+            <translation>The values are too large for a double (beyond ±1.8e308): a level of the triangle or c′(t) overflows. Move the control points closer to the origin.</translation>
+        </message>
+        <message>
             <location filename="../ui/decasteljau_tab.cpp" line="655" />
             <source>Animate t from 0 to 1 and around again: watch c(t) trace the curve (Def 2.4).</source>
             <translation>Animate t from 0 to 1 and around again: watch c(t) trace the curve (Def 2.4).</translation>

@@ -71,6 +71,17 @@ QString pointText(const RPoint& p)
     return QStringLiteral("(%1, %2)").arg(QString::fromStdString(toString(p.x)), QString::fromStdString(toString(p.y)));
 }
 
+/// Whether every level P_i^r(t) and c′(t) fits in a double (Def 2.4): control points
+/// near ±1e308 make n (P_1 − P_0) or a level overflow to inf, or inf − inf to NaN.
+bool fitsInDoubles(const DeCasteljauTable<double>& table)
+{
+    for (const auto& level : table.levels)
+        for (const Point& p : level)
+            if (!isFinite(p))
+                return false;
+    return isFinite(table.tangent());
+}
+
 template <class P> QString joinPoints(const std::vector<P>& points)
 {
     QStringList parts;
@@ -614,6 +625,14 @@ void DeCasteljauTab::updateExactPanel()
     } else {
         const QString tText = exactT ? QString::fromStdString(toString(*exactT)) : number(m_t);
         html += ExactPanel::heading(tr("De Casteljau's triangle at t = %1 (Def 2.4)").arg(tText));
+        if (!fitsInDoubles(m_levels)) {
+            // No wrong number: the values themselves do not exist in double precision.
+            html += ExactPanel::note(tr("The values are too large for a double (beyond ±1.8e308): a level of the "
+                                        "triangle or c′(t) overflows. Move the control points closer to the origin."));
+            html += m_symbolicHtml;
+            m_exact->setContent(html);
+            return;
+        }
         if (n <= kMaxTableDegree)
             html += triangleHtml(n, n, kNumericLevelsPerTable, [this](int r, int i) {
                 return pointText(m_levels.levels[static_cast<std::size_t>(r)][static_cast<std::size_t>(i)]);

@@ -1,9 +1,9 @@
 #include "app/cli/arguments.h"
 
+#include "core/bounded_file.h"
+#include "core/display_text.h"
+#include "core/input_limits.h"
 #include "core/point_list.h"
-
-#include <fstream>
-#include <sstream>
 
 namespace granota::cli {
 
@@ -17,7 +17,7 @@ Expected<Arguments> Arguments::parse(const std::vector<std::string>& args, const
             continue;
         }
         if (arg.rfind("--", 0) != 0 || arg.size() == 2)
-            return makeError(ErrorCode::InvalidInput, "unexpected argument '" + arg + "'");
+            return makeError(ErrorCode::InvalidInput, "unexpected argument " + quotedForDisplay(arg));
         std::string name = arg.substr(2);
         std::optional<std::string> inlineValue;
         if (auto eq = name.find('='); eq != std::string::npos) { // --t=1/2
@@ -31,7 +31,7 @@ Expected<Arguments> Arguments::parse(const std::vector<std::string>& args, const
             continue;
         }
         if (!syntax.valueOptions.count(name))
-            return makeError(ErrorCode::InvalidInput, "unknown option --" + name);
+            return makeError(ErrorCode::InvalidInput, "unknown option " + quotedForDisplay("--" + name));
         std::string value;
         if (inlineValue) {
             value = *inlineValue;
@@ -74,7 +74,7 @@ Expected<Rational> Arguments::rational(const std::string& name, std::optional<Ra
     auto q = parseRational(*v);
     if (!q)
         return makeError(ErrorCode::InvalidInput,
-                         "--" + name + " '" + *v + "' is not a finite number (integer, decimal or fraction p/q)");
+                         "--" + name + " " + quotedForDisplay(*v) + " is not a finite number (integer, decimal or fraction p/q)");
     return *q;
 }
 
@@ -88,10 +88,10 @@ Expected<int> Arguments::integer(const std::string& name, int min, int max, std:
     }
     auto q = parseRational(*v);
     if (!q || q->get_den() != 1)
-        return makeError(ErrorCode::InvalidInput, "--" + name + " '" + *v + "' is not a whole number");
+        return makeError(ErrorCode::InvalidInput, "--" + name + " " + quotedForDisplay(*v) + " is not a whole number");
     if (*q < min || *q > max)
         return makeError(ErrorCode::OutOfRange,
-                         "--" + name + " " + *v + " is out of range (" + std::to_string(min) + " to " + std::to_string(max) + ")");
+                         "--" + name + " " + quotedForDisplay(*v) + " is out of range (" + std::to_string(min) + " to " + std::to_string(max) + ")");
     return static_cast<int>(q->get_num().get_si());
 }
 
@@ -110,7 +110,7 @@ Expected<std::string> Arguments::choice(const std::string& name, const std::vect
     std::string list;
     for (const auto& c : choices)
         list += (list.empty() ? "" : ", ") + c;
-    return makeError(ErrorCode::InvalidInput, "--" + name + " '" + *v + "' is not one of: " + list);
+    return makeError(ErrorCode::InvalidInput, "--" + name + " " + quotedForDisplay(*v) + " is not one of: " + list);
 }
 
 Expected<std::vector<RPoint>> Arguments::points() const
@@ -123,14 +123,12 @@ Expected<std::vector<RPoint>> Arguments::points() const
         return parsePointList(*inlinePoints);
     if (!file)
         return makeError(ErrorCode::InvalidInput, "--points \"x,y;x,y;…\" or --points-file FILE is required");
-    std::ifstream in(*file, std::ios::binary);
-    if (!in)
-        return makeError(ErrorCode::InvalidInput, "cannot read '" + *file + "'");
-    std::ostringstream text;
-    text << in.rdbuf();
-    auto points = parsePointFile(text.str());
+    const auto text = readBoundedFile(*file, kMaxFileBytes); // it names the file
+    if (!text)
+        return text.error();
+    auto points = parsePointFile(*text);
     if (!points)
-        return makeError(points.error().code, *file + ": " + points.error().message);
+        return makeError(points.error().code, quotedForDisplay(*file) + ": " + points.error().message);
     return points;
 }
 

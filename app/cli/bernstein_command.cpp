@@ -1,5 +1,6 @@
 // granota-cli bernstein: the values B_i^N(T) and the polynomials of Ex 2.4 (Def 2.5).
 #include "app/cli/command.h"
+#include "app/cli/finite_doubles.h"
 
 #include "core/bernstein.h"
 #include "core/polynomial_text.h"
@@ -19,6 +20,13 @@ Expected<CommandOutput> run(const Arguments& args)
     if (!t)
         return t.error();
     const bool exact = args.flag("exact");
+    double doubleT = 0;
+    if (!exact) {
+        auto d = finiteDouble(*t, "--t " + valueText(*t), true);
+        if (!d)
+            return d.error();
+        doubleT = *d;
+    }
 
     CommandOutput out;
     std::ostringstream txt;
@@ -26,7 +34,7 @@ Expected<CommandOutput> run(const Arguments& args)
     Json values = Json::array(), polys = Json::array();
     // Values through the recursion of Lemma 2.1: exact, or in double (stable on [0,1]).
     const std::vector<Rational> exactValues = exact ? bernsteinAll(*n, *t) : std::vector<Rational>{};
-    const std::vector<double> doubleValues = exact ? std::vector<double>{} : bernsteinAll(*n, toDouble(*t));
+    const std::vector<double> doubleValues = exact ? std::vector<double>{} : bernsteinAll(*n, doubleT);
     for (int i = 0; i <= *n; ++i) {
         const Polynomial<Rational> b = bernsteinPolynomial(i, *n);
         Json coefficients = Json::array();

@@ -1,6 +1,7 @@
 // granota-cli bezier: De Casteljau's construction (Def 2.4) at one t, every level, and
 // the curve in powers of t (Ex 2.2, Ex 2.3).
 #include "app/cli/command.h"
+#include "app/cli/finite_doubles.h"
 
 #include "core/de_casteljau.h"
 #include "core/power_basis.h"
@@ -29,6 +30,19 @@ Expected<CommandOutput> run(const Arguments& args)
     // The power basis is converted exactly and rounded once, so its coefficients are right
     // to the last digit even where evaluating them in floating point would not be.
     const Vec2<Polynomial<Rational>> poly = bezierToPowerBasis(*points);
+    // Without --exact every number is a double, the input's too: checked before computing.
+    std::vector<Point> doublePoints;
+    double doubleT = 0;
+    if (!exact) {
+        auto d = finiteDoubles(*points, true);
+        if (!d)
+            return d.error();
+        doublePoints = std::move(*d);
+        auto dt = finiteDouble(*t, "--t " + valueText(*t), true);
+        if (!dt)
+            return dt.error();
+        doubleT = *dt;
+    }
 
     CommandOutput out;
     std::ostringstream txt;
@@ -53,7 +67,7 @@ Expected<CommandOutput> run(const Arguments& args)
         pointText = text(table.point());
         tangentText = text(table.tangent());
     } else {
-        const auto table = deCasteljau(toDouble(*points), toDouble(*t));
+        const auto table = deCasteljau(doublePoints, doubleT);
         for (int r = 0; r <= n; ++r) {
             Json level = Json::array();
             txt << "  r = " << r << ":";
@@ -71,7 +85,19 @@ Expected<CommandOutput> run(const Arguments& args)
     }
     txt << "c(t)  = P_0^" << n << "(t) = " << pointText << "\n";
     txt << "c'(t) = " << tangentText << "\n";
-    txt << "c(t) in powers of t: " << toText(poly) << "\n";
+    if (exact) {
+        txt << "c(t) in powers of t: " << toText(poly) << "\n";
+    } else {
+        // Rounded once from the exact coefficients, the numbers --json prints.
+        const auto rounded = [](const Polynomial<Rational>& p) {
+            std::vector<double> c;
+            for (const Rational& q : p.coefficients())
+                c.push_back(toDouble(q));
+            return Polynomial<double>(std::move(c));
+        };
+        const Vec2<Polynomial<double>> doublePoly(rounded(poly.x), rounded(poly.y));
+        txt << "c(t) in powers of t: " << toText(doublePoly) << "\n";
+    }
 
     Json px = Json::array(), py = Json::array();
     for (const Rational& c : poly.x.coefficients(n))

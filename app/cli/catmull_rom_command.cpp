@@ -1,6 +1,7 @@
 // granota-cli catmull-rom: the segment polynomials of a Catmull-Rom curve (§2.2,
 // Lemma 2.3, Def 2.10; Ex 2.11, Ex 2.13) in powers of the local s, and samples.
 #include "app/cli/command.h"
+#include "app/cli/finite_doubles.h"
 
 #include "core/catmull_rom.h"
 #include "core/polynomial_text.h"
@@ -74,9 +75,19 @@ Expected<CommandOutput> run(const Arguments& args)
             }
         }
     } else {
-        auto segs = catmullRomSegments(toDouble(*points), toDouble(*tau), mode, toDouble(*alpha));
+        // Exact coordinates beyond the doubles are named here; an overflow while computing
+        // is the core's OutOfRange (it checks every coefficient, like fitting does).
+        auto doublePoints = finiteDoubles(*points, *alpha == 0);
+        if (!doublePoints)
+            return doublePoints.error();
+        auto doubleTau = finiteDouble(*tau, "--tau " + valueText(*tau), *alpha == 0);
+        if (!doubleTau)
+            return doubleTau.error();
+        auto segs = catmullRomSegments(*doublePoints, *doubleTau, mode, toDouble(*alpha));
         if (!segs)
-            return segs.error();
+            return segs.error().code == ErrorCode::OutOfRange
+                       ? tooLargeForDouble("the Catmull-Rom curve of these points", *alpha == 0)
+                       : segs.error();
         for (std::size_t i = 0; i < segs->size(); ++i) {
             const auto& s = (*segs)[i];
             Json seg = Json::object();

@@ -20,7 +20,7 @@ struct CommandOutput {
 
 struct Command {
     const char* name;
-    const char* usage;   ///< one line: the options
+    std::string usage;   ///< one line: the options
     const char* summary; ///< one line: what it does
     CommandSyntax syntax;
     Expected<CommandOutput> (*run)(const Arguments&);
@@ -43,8 +43,9 @@ Json point(const RPoint& p, bool exact);
 Json point(const Point& p);
 std::string text(const RPoint& p);
 std::string text(const Point& p);
-/// Largest number of control points bezier/fit accept: beyond it the O(n²) triangle and
-/// the exact tables stop being something anyone reads, and a typo must not hang.
+/// Highest degree bezier and bernstein accept: beyond it the O(n²) triangle and the exact
+/// tables stop being something anyone reads, and a typo must not hang. fit has its own,
+/// lower maximum, the core's kMaxFitDegree.
 constexpr int kMaxDegree = 200;
 
 } // namespace granota::cli

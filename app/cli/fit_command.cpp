@@ -1,6 +1,7 @@
 // granota-cli fit: least-squares Bézier fitting (§2.1.3, Lemma 2.2, Prop 2.2).
 // --exact reproduces the matrices of Ex 2.7 and Ex 2.8 as fractions.
 #include "app/cli/command.h"
+#include "app/cli/finite_doubles.h"
 
 #include "core/least_squares_fit.h"
 #include "core/polynomial_text.h"
@@ -45,7 +46,7 @@ Expected<CommandOutput> run(const Arguments& args)
     auto points = args.points();
     if (!points)
         return points.error();
-    auto degree = args.integer("degree", 0, kMaxDegree, std::nullopt);
+    auto degree = args.integer("degree", 0, kMaxFitDegree, std::nullopt);
     if (!degree)
         return degree.error();
     auto paramName = args.choice("param", {"uniform", "chord", "centripetal"}, std::string("uniform"));
@@ -67,7 +68,11 @@ Expected<CommandOutput> run(const Arguments& args)
     options.correctParameters = iterate;
     // The numerical fit always runs: it gives cond₂(M), and validates the input the same
     // way with or without --exact.
-    auto fit = fitBezier(toDouble(*points), options);
+    // cond₂(M) is a double, so even --exact needs the points as doubles.
+    auto doublePoints = finiteDoubles(*points, false);
+    if (!doublePoints)
+        return doublePoints.error();
+    auto fit = fitBezier(*doublePoints, options);
     if (!fit)
         return fit.error();
 
@@ -143,7 +148,7 @@ Expected<CommandOutput> run(const Arguments& args)
 Command fitCommand()
 {
     return {"fit",
-            "--points Q | --points-file F  --degree n  [--param uniform|chord|centripetal] [--solver qr|normal|svd] "
+            "--points Q | --points-file F  --degree n (0 to " + std::to_string(kMaxFitDegree) + ")  [--param uniform|chord|centripetal] [--solver qr|normal|svd] "
             "[--iterate] [--exact] [--json]",
             "least-squares Bézier fit: control points, t_i, Σ‖Q_i − α(t_i)‖², cond₂(M); --exact adds M, MᵀM, (MᵀM)⁻¹, M⁺",
             {{"points", "points-file", "degree", "param", "solver"}, {"exact", "json", "iterate"}, {}},

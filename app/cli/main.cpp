@@ -1,8 +1,13 @@
 // granota-cli: Granota's mathematics from the command line (SPEC §6).
 // Human-readable text by default, one JSON object with --json. Bad input: exit status 2
-// and a line starting with "error:" on stderr — never a crash, never a NaN.
+// and a line starting with "error:" on stderr — never a crash, never a NaN. An answer that
+// cannot be written (a full disk, a closed pipe) is an error too, with the same status 2.
 #include "app/cli/command.h"
+#include "app/cli/finite_doubles.h"
+#include "app/cli/output_file.h"
+#include "core/display_text.h"
 
+#include <cerrno>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -13,7 +18,7 @@ using namespace granota::cli;
 
 namespace {
 
-constexpr int kBadInput = 2;
+constexpr int kFailed = 2; ///< every error: bad input, or an answer that cannot be written
 
 std::vector<Command> commands()
 {
@@ -31,13 +36,24 @@ void printUsage(std::ostream& out)
     for (const Command& c : commands())
         out << "  " << c.name << "  " << c.usage << "\n      " << c.summary << "\n";
     out << "\nPoints: --points \"x,y;x,y;…\" (integers, decimals or fractions p/q) or --points-file F\n"
-           "(CSV x,y lines or JSON [[x,y],…]). --exact prints exact fractions; --json prints JSON.\n";
+           "(CSV x,y lines or JSON [[x,y],…]). --exact prints exact fractions; --json prints JSON.\n"
+           "Every error, bad input or an answer that cannot be written, exits with status 2 and\n"
+           "one line \"error: …\" on stderr.\n";
 }
 
 int fail(const std::string& message)
 {
     std::cerr << "error: " << message << "\n";
-    return kBadInput;
+    return kFailed;
+}
+
+/// Flushes what went to stdout: 0, or the failed write said on stderr.
+int finishOutput()
+{
+    std::cout.flush();
+    if (std::cout)
+        return 0;
+    return fail(writeError("the output", errno).message);
 }
 
 } // namespace
@@ -49,12 +65,13 @@ int main(int argc, char* argv[])
         {
             std::cerr << "error: no command given\n";
             printUsage(std::cerr);
-            return kBadInput;
+            return kFailed;
         }
         const std::string name = argv[1];
         if (name == "--help" || name == "-h" || name == "help") {
+            errno = 0;
             printUsage(std::cout);
-            return 0;
+            return finishOutput();
         }
         for (const Command& c : commands()) {
             if (name != c.name)
@@ -62,8 +79,9 @@ int main(int argc, char* argv[])
             std::vector<std::string> rest(argv + 2, argv + argc);
             for (const auto& a : rest)
                 if (a == "--help" || a == "-h") {
+                    errno = 0;
                     std::cout << "usage: granota-cli " << c.name << " " << c.usage << "\n  " << c.summary << "\n";
-                    return 0;
+                    return finishOutput();
                 }
             auto args = Arguments::parse(rest, c.syntax);
             if (!args)
@@ -71,14 +89,19 @@ int main(int argc, char* argv[])
             auto result = c.run(*args);
             if (!result)
                 return fail(result.error().message);
+            // The text shows the numbers of the JSON object: one check covers both forms.
+            if (auto where = nonFiniteNumber(result->json))
+                return fail(tooLargeForDouble("the answer's " + *where + " (as --json names it)",
+                                              c.syntax.flags.count("exact") && !args->flag("exact"))
+                                .message);
+            errno = 0;
             if (args->flag("json"))
                 std::cout << result->json.dump() << "\n";
             else
                 std::cout << result->text;
-            std::cout.flush();
-            return std::cout ? 0 : 1;
+            return finishOutput();
         }
-        return fail("unknown command '" + name + "' (try granota-cli --help)");
+        return fail("unknown command " + quotedForDisplay(name) + " (try granota-cli --help)");
     } catch (const std::bad_alloc&) {
         return fail("not enough memory for this input");
     } catch (const std::exception& e) {

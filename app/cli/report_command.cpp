@@ -2,12 +2,15 @@
 // NAME.csv (with the machine and the build in its header), NAME.svg and NAME.png, drawn by
 // the same plotting code as the tabs.
 #include "app/cli/command.h"
+#include "app/cli/output_file.h"
+#include "core/display_text.h"
 #include "core/work_precision.h"
 
 #include <QApplication>
+#include <QBuffer>
 #include <QLocale>
 #include <QDir>
-#include <QFile>
+#include <QImage>
 #include <QPainter>
 #include <QSvgGenerator>
 #include <QSysInfo>
@@ -52,8 +55,9 @@ std::vector<std::string> context()
 }
 
 /// Renders the report's plot to SVG and PNG with QCustomPlot. Needs a QApplication: the
-/// command makes one on the offscreen platform (no display needed).
-Expected<bool> writePlots(const WorkPrecisionReport& report, const QString& base)
+/// command makes one on the offscreen platform (no display needed). The images are drawn
+/// in memory and written by writeFile(), so that a failed write says which file and why.
+Expected<bool> writePlots(const WorkPrecisionReport& report, const std::string& base)
 {
     QCustomPlot plot;
     plot.resize(900, 600);
@@ -61,19 +65,35 @@ Expected<bool> writePlots(const WorkPrecisionReport& report, const QString& base
     plot.plotLayout()->addElement(
         0, 0, new QCPTextElement(&plot, QString::fromStdString(report.title), QFont(QStringLiteral("Sans"), 12, QFont::Bold)));
     ui::plotWorkPrecision(&plot, report);
-    if (!plot.savePng(base + QStringLiteral(".png"), 900, 600, 1.0))
-        return makeError(ErrorCode::InvalidInput, "cannot write " + (base + ".png").toStdString());
-    QSvgGenerator svg;
-    svg.setFileName(base + QStringLiteral(".svg"));
-    svg.setSize(QSize(900, 600));
-    svg.setViewBox(QRect(0, 0, 900, 600));
-    svg.setTitle(QString::fromStdString(report.title));
-    QCPPainter painter;
-    if (!painter.begin(&svg))
-        return makeError(ErrorCode::InvalidInput, "cannot write " + (base + ".svg").toStdString());
-    plot.toPainter(&painter, 900, 600);
-    painter.end();
-    return true;
+
+    QImage image = plot.toPixmap(900, 600, 1.0).toImage();
+    constexpr int kDotsPerMeter = 3780; // 96 dpi, what QCustomPlot::savePng writes
+    image.setDotsPerMeterX(kDotsPerMeter);
+    image.setDotsPerMeterY(kDotsPerMeter);
+    QByteArray png;
+    QBuffer pngBuffer(&png);
+    if (!pngBuffer.open(QIODevice::WriteOnly) || !image.save(&pngBuffer, "PNG"))
+        return makeError(ErrorCode::InvalidInput, "cannot draw " + quotedForDisplay(base + ".png"));
+    if (auto written = writeFile(base + ".png", std::string_view(png.constData(), static_cast<std::size_t>(png.size())));
+        !written)
+        return written.error();
+
+    QByteArray svgBytes;
+    QBuffer svgBuffer(&svgBytes);
+    svgBuffer.open(QIODevice::WriteOnly);
+    {
+        QSvgGenerator svg;
+        svg.setOutputDevice(&svgBuffer);
+        svg.setSize(QSize(900, 600));
+        svg.setViewBox(QRect(0, 0, 900, 600));
+        svg.setTitle(QString::fromStdString(report.title));
+        QCPPainter painter;
+        if (!painter.begin(&svg))
+            return makeError(ErrorCode::InvalidInput, "cannot draw " + quotedForDisplay(base + ".svg"));
+        plot.toPainter(&painter, 900, 600);
+        painter.end();
+    }
+    return writeFile(base + ".svg", std::string_view(svgBytes.constData(), static_cast<std::size_t>(svgBytes.size())));
 }
 
 Expected<CommandOutput> run(const Arguments& args)
@@ -97,7 +117,7 @@ Expected<CommandOutput> run(const Arguments& args)
     }
     const QString dir = QString::fromStdString(*out);
     if (!QDir().mkpath(dir))
-        return makeError(ErrorCode::InvalidInput, "cannot create directory '" + *out + "'");
+        return makeError(ErrorCode::InvalidInput, "cannot create directory " + quotedForDisplay(*out));
 
     // QCustomPlot draws with QtGui: an offscreen application is enough, no display.
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
@@ -129,21 +149,16 @@ Expected<CommandOutput> run(const Arguments& args)
         auto report = runWorkPrecisionReport(n, options);
         if (!report)
             return report.error();
-        const QString base = QDir(dir).filePath(QString::fromStdString(n));
-        {
-            QFile csv(base + QStringLiteral(".csv"));
-            if (!csv.open(QIODevice::WriteOnly | QIODevice::Text))
-                return makeError(ErrorCode::InvalidInput, "cannot write " + (base + ".csv").toStdString());
-            csv.write(QByteArray::fromStdString(workPrecisionCsv(*report, context())));
-        }
+        const std::string base = QDir(dir).filePath(QString::fromStdString(n)).toStdString();
+        if (auto csv = writeFile(base + ".csv", workPrecisionCsv(*report, context())); !csv)
+            return csv.error();
         auto plots = writePlots(*report, base);
         if (!plots)
             return plots.error();
         Json entry = Json::object();
-        entry.set("report", n).set("csv", (base + ".csv").toStdString()).set("svg", (base + ".svg").toStdString())
-            .set("png", (base + ".png").toStdString());
+        entry.set("report", n).set("csv", base + ".csv").set("svg", base + ".svg").set("png", base + ".png");
         files.push(entry);
-        text << n << ": " << report->lesson << "\n  wrote " << (base + ".csv").toStdString() << ", .svg, .png\n";
+        text << n << ": " << report->lesson << "\n  wrote " << base + ".csv" << ", .svg, .png\n";
     }
     output.json.set("reports", files);
     output.text = text.str();

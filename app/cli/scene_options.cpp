@@ -1,5 +1,7 @@
 #include "app/cli/scene_options.h"
 
+#include "core/display_text.h"
+
 namespace granota::cli {
 
 Expected<SceneSpec> sceneFromArguments(const Arguments& args)
@@ -23,7 +25,7 @@ Expected<SolverKind> solverFromArguments(const Arguments& args, const SceneSpec&
     if (auto name = args.value("solver")) {
         auto kind = parseSolverKind(*name);
         if (!kind)
-            return makeError(ErrorCode::InvalidInput, "--solver '" + *name + "' is not one of: seed, stable");
+            return makeError(ErrorCode::InvalidInput, "--solver " + quotedForDisplay(*name) + " is not one of: seed, stable");
         return *kind;
     }
     return scene.has("collisions") || scene.has("obstacles") ? SolverKind::Stable : SolverKind::Seed;

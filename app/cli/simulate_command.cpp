@@ -1,10 +1,13 @@
 // granota-cli simulate: run a scene of chapter 4 / §5.2 headless (SPEC §6).
 #include "app/cli/command.h"
+#include "app/cli/output_file.h"
 #include "app/cli/scene_options.h"
 
+#include "core/display_text.h"
 #include "core/polynomial_text.h"
 #include "core/simulation_trace.h"
 
+#include <cerrno>
 #include <fstream>
 #include <sstream>
 
@@ -25,19 +28,30 @@ Expected<CommandOutput> run(const Arguments& args)
         return steps.error();
 
     std::ofstream trace;
-    if (auto path = args.value("trace")) {
-        trace.open(*path, std::ios::binary | std::ios::trunc);
+    const auto tracePath = args.value("trace");
+    const std::string traceName = "the trace to " + quotedForDisplay(tracePath.value_or(""));
+    errno = 0;
+    if (tracePath) {
+        trace.open(*tracePath, std::ios::binary | std::ios::trunc);
         if (!trace)
-            return makeError(ErrorCode::InvalidInput, "cannot write the trace to '" + *path + "'");
+            return writeError(traceName, errno);
         trace << simulationTraceHeader(s) << '\n' << simulationTraceRow(s) << '\n';
     }
     for (int i = 0; i < *steps; ++i) {
         s.step();
-        if (trace.is_open())
+        if (trace.is_open()) {
             trace << simulationTraceRow(s) << '\n';
+            if (!trace) // a full disk: stop at once, with the reason
+                return writeError(traceName, errno);
+        }
     }
     if (trace.is_open() && !trace.flush())
-        return makeError(ErrorCode::InvalidInput, "could not finish writing the trace");
+        return writeError(traceName, errno);
+    if (trace.is_open()) {
+        trace.close();
+        if (!trace)
+            return writeError(traceName, errno);
+    }
 
     CommandOutput out;
     std::ostringstream txt;

@@ -1,0 +1,20 @@
+#pragma once
+/// \file output_file.h
+/// Writing what granota-cli produces — its answer on stdout, a --trace, a report's files —
+/// so that a failed write (a full disk, a closed pipe, a folder that cannot be written) is
+/// an error that says what could not be written and why, never a silent success.
+
+#include "core/expected.h"
+
+#include <string>
+#include <string_view>
+
+namespace granota::cli {
+
+/// "cannot write WHAT: REASON", REASON from `errnoValue` (0: the reason is unknown).
+Error writeError(const std::string& what, int errnoValue);
+
+/// Writes `bytes` to the file at `path`, replacing it; the error names the file.
+Expected<bool> writeFile(const std::string& path, std::string_view bytes);
+
+} // namespace granota::cli
