@@ -50,7 +50,7 @@ constexpr int kCurveSamples = 400;         ///< De Casteljau samples of the fitt
 constexpr std::size_t kDrawLimit = 5000;   ///< beyond this many points, residuals are drawn decimated
 constexpr int kMaxLabelledControls = 30;   ///< control points labelled P0… up to this degree
 constexpr double kPresentationScale = 1.6; ///< canvas and plot scale in presentation mode
-constexpr int kMaxDegree = 100;            ///< the core's limit
+constexpr int kMaxDegree = kMaxFitDegree;  ///< the core's limit
 constexpr int kMaxIterations = 1000;
 /// Undo-merge fields of FitSettingsCommand.
 enum Field { DegreeField, ParametrizationField, SolverField, CorrectionField };
