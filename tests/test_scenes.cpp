@@ -5,6 +5,8 @@
 
 #include <QtTest>
 
+#include <limits>
+
 using namespace granota;
 
 class TestScenes : public QObject {
@@ -177,6 +179,45 @@ private slots:
         QCOMPARE(static_cast<int>(at.size()), s->bodies);
         for (const Point& p : at)
             QCOMPARE(p.y, at.front().y);
+    }
+
+    void orderBeyondAnIntIsRefused_data()
+    {
+        QTest::addColumn<QString>("order");
+        QTest::newRow("1e300") << "1e300";
+        QTest::newRow("-1e300") << "-1e300";
+        QTest::newRow("just past an int") << "2147483648";
+        QTest::newRow("fraction") << "2.5";
+        QTest::newRow("text") << "\"first\"";
+    }
+    void orderBeyondAnIntIsRefused()
+    {
+        // Found by the scene fuzz target (UBSan): "order": 1e300 was cast to an int.
+        QFETCH(QString, order);
+        std::string text = sceneToJson(*loadScene("frog")).dump();
+        const std::string was = "\"order\":15";
+        const auto at = text.find(was);
+        QVERIFY(at != std::string::npos);
+        text.replace(at, was.size(), "\"order\":" + order.toStdString());
+        auto doc = Json::parse(text);
+        QVERIFY2(doc.ok(), text.c_str());
+        auto s = parseScene(*doc);
+        QVERIFY(!s.ok());
+        QVERIFY2(s.error().message.find("order must be a whole number") != std::string::npos, s.error().message.c_str());
+    }
+    void orderNotANumberIsRefused()
+    {
+        for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                           -std::numeric_limits<double>::infinity()}) {
+            Json doc = sceneToJson(*loadScene("frog"));
+            doc.set("order", Json(bad));
+            auto s = parseScene(doc);
+            QVERIFY(!s.ok());
+            QVERIFY(s.error().message.find("order") != std::string::npos);
+        }
+        Json doc = sceneToJson(*loadScene("frog"));
+        doc.set("order", Json(100000.0)); // the largest place
+        QVERIFY(parseScene(doc).ok());
     }
 
     void unknownScene()
