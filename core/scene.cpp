@@ -2,6 +2,8 @@
 
 #include "core/rational.h"
 #include "core/scene_files.h"
+#include "core/polynomial_text.h"
+#include "core/scene_layout.h"
 #include "core/stage_body.h"
 
 #include <algorithm>
@@ -20,6 +22,13 @@ constexpr double kMaxMagnitude = 1e15;
 /// Every body's vertices together: 5000 bodies of 10000 sides would be 50 million
 /// vertices, gigabytes and minutes to build (a .granota document can ask for it).
 constexpr long kMaxVertices = 100000;
+/// The most vertices (all bodies together) a scene may start piled up, in a frame too small
+/// to hold its bodies side by side: piled, every body is a broad-phase pair of every other
+/// and every vertex is tested against every other body's edges, about 35 ns × vertices² a
+/// step of the stable solver on the reference machine (50 bodies of 10 sides: 10 ms; 100:
+/// 38 ms; 12 bodies of 1000 sides: 3.4 s; 5000 of 10 — what `--set bodies=5000` asked for
+/// in 1280 × 720 px — seconds). 600 keeps a piled step near 15 ms.
+constexpr long kMaxPiledVertices = 600;
 /// A scene's place in the thesis's order (`"order"`): 1 to 18 today, room for more.
 constexpr int kMaxOrder = 100000;
 
@@ -288,6 +297,15 @@ Expected<bool> validate(const SceneSpec& s)
     if (static_cast<long>(s.bodies) * std::max(s.params.sides, s.bezierSamples) > kMaxVertices)
         return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': bodies × sides must be at most " +
                                                     std::to_string(kMaxVertices) + " vertices in all");
+    if (const long vertices = static_cast<long>(s.bodies) * std::max(s.params.sides, s.bezierSamples);
+        s.hasParam("bodies") && vertices > kMaxPiledVertices && !bodiesFitFrame(s))
+        return makeError(ErrorCode::OutOfRange,
+                         "scene '" + s.name + "': " + std::to_string(s.bodies) + " bodies of radius " +
+                             formatDouble(s.params.radius) + " do not fit side by side in a " + formatDouble(s.params.width) +
+                             " × " + formatDouble(s.params.height) + " px frame, and piled up their " +
+                             std::to_string(vertices) + " vertices would all touch (at most " +
+                             std::to_string(kMaxPiledVertices) +
+                             " may start piled): lower bodies, sides or radius, or raise width and height");
     for (double l : s.chain)
         if (!(l >= 0) || !std::isfinite(l))
             return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': chain lengths must be finite and ≥ 0");
@@ -443,15 +461,14 @@ Expected<SceneSpec> withBodies(SceneSpec scene, int bodies)
 {
     if (!scene.hasParam("bodies"))
         return makeError(ErrorCode::InvalidInput, "scene '" + scene.name + "' has a single body");
-    const int before = std::max(1, scene.bodies);
+    if (bodies >= 1 && bodies <= kMaxBodies) { // out of range: applySetting says so
+        const FrameSize f = frameForBodies(scene, bodies);
+        scene.params.width = f.width;
+        scene.params.height = f.height;
+    }
     auto ok = applySetting(scene, "bodies=" + std::to_string(bodies));
     if (!ok)
         return ok.error();
-    if (bodies > before) {
-        const double grow = std::sqrt(static_cast<double>(bodies) / before);
-        scene.params.width = std::round(scene.params.width * grow);
-        scene.params.height = std::round(scene.params.height * grow);
-    }
     return scene;
 }
 

@@ -21,6 +21,8 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include <QJsonDocument>
+
 using namespace granota;
 using namespace granota::ui;
 
@@ -444,6 +446,26 @@ private slots:
         bad["overlays"] = QJsonObject{{"area", "yes"}};
         QVERIFY(!tab().loadState(bad, &error));
         QCOMPARE(tab().saveState(), saved);
+    }
+
+    void aDocumentAskingForTooManyVerticesIsRefused()
+    {
+        // Issue 12: a 110-byte document froze the GUI (5000 bodies of 10000 sides, each
+        // within its own range).
+        const QByteArray text = R"({"frog":{"scene":"many-bodies","params":{"bodies":5000,"sides":10000}}})";
+        QVERIFY(text.size() <= 110);
+        const QJsonObject frog = QJsonDocument::fromJson(text).object()["frog"].toObject();
+        const QJsonObject before = tab().saveState();
+        QString error;
+        QVERIFY(!tab().loadState(frog, &error));
+        QVERIFY2(error.contains("100000 vertices"), qPrintable(error));
+        QCOMPARE(tab().saveState(), before);
+        // 5000 bodies of 10 sides are 50 000 vertices, but they do not fit the scene's frame.
+        QJsonObject fewerSides = frog;
+        fewerSides["params"] = QJsonObject{{"bodies", 5000}};
+        QVERIFY(!tab().loadState(fewerSides, &error));
+        QVERIFY2(error.contains("raise width and height"), qPrintable(error));
+        QCOMPARE(tab().saveState(), before);
     }
 
     void tinyWindowIsSafe()

@@ -220,6 +220,42 @@ private slots:
         QVERIFY(parseScene(doc).ok());
     }
 
+    void bodiesThatDoNotFitTheFrameAreRefused()
+    {
+        // 5000 bodies in the scene's 1280 × 720 px start piled up: every body pairs with every
+        // other in the broad phase, seconds a step.
+        auto s = loadScene("many-bodies");
+        auto r = applySetting(*s, "bodies=5000");
+        QVERIFY(!r.ok());
+        QVERIFY2(r.error().message.find("lower bodies, sides or radius, or raise width and height") != std::string::npos,
+                 r.error().message.c_str());
+        QCOMPARE(s->bodies, 12); // unchanged
+        // A few bodies may start piled (120 vertices), many may not (1200).
+        QVERIFY(applySetting(*s, "radius=300").ok());
+        QVERIFY(!applySetting(*s, "sides=100").ok());
+        QVERIFY(applySetting(*s, "radius=40").ok());
+        QVERIFY(applySetting(*s, "sides=100").ok()); // side by side: fine
+        QVERIFY(applySetting(*s, "sides=10").ok());
+        // withBodies grows the frame for them (the one layout of bench and --set bodies=N).
+        auto grown = withBodies(*s, 5000);
+        QVERIFY2(grown.ok(), grown.ok() ? "" : grown.error().message.c_str());
+        QVERIFY(bodiesFitFrame(*grown));
+        QVERIFY(grown->params.width > 1280 && grown->params.height > 720);
+        const std::vector<Point> at = bodyStarts(*grown);
+        QCOMPARE(at.size(), std::size_t(5000));
+        const double r2 = 2 * grown->params.radius;
+        for (std::size_t i = 0; i < at.size(); ++i) {
+            QVERIFY(at[i].x - grown->params.radius >= 0 && at[i].x + grown->params.radius <= grown->params.width);
+            QVERIFY(at[i].y - grown->params.radius >= 0 && at[i].y + grown->params.radius <= grown->params.height);
+            for (std::size_t j = i + 1; j < at.size() && j < i + 400; ++j) // neighbours in the grid
+                QVERIFY(norm(at[j] - at[i]) >= r2);
+        }
+        // The scene's own 12 keep its frame (the golden hash's scene).
+        auto same = withBodies(*s, 12);
+        QCOMPARE(same->params.width, 1280.0);
+        QCOMPARE(same->params.height, 720.0);
+    }
+
     void unknownScene()
     {
         auto s = loadScene("dragon");
