@@ -1163,6 +1163,11 @@
             <translation>MᵀM és singular per a aquests paràmetres (punts coincidents): els punts de control que es mostren són la solució de mínims quadrats de norma mínima, en decimals.</translation>
         </message>
         <message>
+            <location filename="../ui/fit_exact_view.cpp" line="125" />
+            <source>The exact fractions of this fit would take too long to compute (their digits grow with the degree and the number of points): the results are shown in decimals.</source>
+            <translation>Les fraccions exactes d’aquest ajust trigarien massa a calcular-se (les seves xifres creixen amb el grau i amb el nombre de punts): els resultats es mostren en decimals.</translation>
+        </message>
+        <message>
             <location filename="../ui/fit_exact_view.cpp" line="129" />
             <location filename="../ui/fit_exact_view.cpp" line="169" />
             <source>Parameters t_i</source>

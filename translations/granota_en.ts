@@ -1163,6 +1163,11 @@
             <translation>MᵀM is singular for these parameters (coincident points): the control points shown are the minimum-norm least-squares solution, in decimals.</translation>
         </message>
         <message>
+            <location filename="../ui/fit_exact_view.cpp" line="125" />
+            <source>The exact fractions of this fit would take too long to compute (their digits grow with the degree and the number of points): the results are shown in decimals.</source>
+            <translation>The exact fractions of this fit would take too long to compute (their digits grow with the degree and the number of points): the results are shown in decimals.</translation>
+        </message>
+        <message>
             <location filename="../ui/fit_exact_view.cpp" line="129" />
             <location filename="../ui/fit_exact_view.cpp" line="169" />
             <source>Parameters t_i</source>

@@ -2,6 +2,7 @@
 #include "app/cli/command.h"
 
 #include "core/bernstein.h"
+#include "core/exact_cost.h"
 #include "core/polynomial_text.h"
 
 #include <sstream>
@@ -19,6 +20,11 @@ Expected<CommandOutput> run(const Arguments& args)
     if (!t)
         return t.error();
     const bool exact = args.flag("exact");
+    if (exact) {
+        const double work = bernsteinExactWork(*n, bitLength(*t));
+        if (!exactWorkAllowed(work))
+            return makeError(ErrorCode::OutOfRange, exactWorkRefusal("Bernstein values", work, "--degree or the digits of --t"));
+    }
 
     CommandOutput out;
     std::ostringstream txt;
