@@ -296,7 +296,18 @@ Expected<bool> validate(const SceneSpec& s)
         return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': " + *big + " must be at most 1e15 in magnitude");
     if (static_cast<long>(s.bodies) * std::max(s.params.sides, s.bezierSamples) > kMaxVertices)
         return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': bodies × sides must be at most " +
-                                                    std::to_string(kMaxVertices) + " vertices in all");
+                                                    std::to_string(kMaxVertices) + " vertices in all: lower bodies or sides");
+    // A document may also give the vertices themselves (shapes) or obstacles' corners.
+    std::size_t shapePoints = 0, obstaclePoints = 0;
+    for (const auto& sh : s.shapes)
+        shapePoints += sh.points.size();
+    for (const auto& o : s.obstacles)
+        obstaclePoints += o.points.size();
+    if (shapePoints > static_cast<std::size_t>(kMaxVertices) || obstaclePoints > static_cast<std::size_t>(kMaxVertices))
+        return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': " +
+                                                    (shapePoints > static_cast<std::size_t>(kMaxVertices) ? "shapes" : "obstacles") +
+                                                    " must have at most " + std::to_string(kMaxVertices) +
+                                                    " points in all: lower the number of points");
     if (const long vertices = static_cast<long>(s.bodies) * std::max(s.params.sides, s.bezierSamples);
         s.hasParam("bodies") && vertices > kMaxPiledVertices && !bodiesFitFrame(s))
         return makeError(ErrorCode::OutOfRange,

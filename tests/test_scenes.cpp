@@ -256,6 +256,34 @@ private slots:
         QCOMPARE(same->params.height, 720.0);
     }
 
+    void shapesAndObstaclesOfTooManyPointsAreRefused()
+    {
+        // A document can give the points themselves: a shape of 100 001 vertices would be a
+        // body beyond the vertex limit that bodies × sides has.
+        for (const char* scene : {"shapes", "obstacles"}) {
+            Json doc = sceneToJson(*loadScene(scene));
+            Json params = *doc.find("params");
+            Json points = Json::array();
+            for (int i = 0; i < 100001; ++i) {
+                const double a = 2 * M_PI * i / 100001;
+                points.push(Json(Json::Array{Json(300 + 100 * std::cos(a)), Json(300 + 100 * std::sin(a))}));
+            }
+            Json item = Json::object();
+            Json list = Json::array();
+            if (std::string(scene) == "shapes")
+                item.set("name", "ring").set("points", points).set("at", Json(Json::Array{Json(400.0), Json(300.0)}));
+            else
+                item.set("polygon", points);
+            list.push(item);
+            params.set(scene, list);
+            doc.set("params", params);
+            auto s = parseScene(doc);
+            QVERIFY2(!s.ok(), scene);
+            QVERIFY2(s.error().message.find(std::string(scene) + " must have at most 100000 points") != std::string::npos,
+                     s.error().message.c_str());
+        }
+    }
+
     void unknownScene()
     {
         auto s = loadScene("dragon");
