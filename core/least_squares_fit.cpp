@@ -454,7 +454,7 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
     return result;
 }
 
-Expected<ExactFit> fitBezierExact(const std::vector<RPoint>& q, int degree, Parametrization p)
+Expected<ExactFit> fitBezierExact(const std::vector<RPoint>& q, int degree, Parametrization p, double budget)
 {
     if (auto error = validateShape(q.size(), degree))
         return *error;
@@ -481,6 +481,9 @@ Expected<ExactFit> fitBezierExact(const std::vector<RPoint>& q, int degree, Para
                                                        "use uniform parameters or the floating-point fit");
     }
     const int distinct = countDistinct(*t);
+    if (const double work = fitExactWork(n, *t, maxBitLength(q)); !exactWorkAllowed(work, budget))
+        return makeError(ErrorCode::OutOfRange,
+                         exactWorkRefusal("fit", work, "--degree, the number of points or their digits"));
     if (distinct < n + 1)
         return makeError(ErrorCode::Singular, "MᵀM is singular: only " + std::to_string(distinct)
                                                   + " of the parameters t_i are distinct and Lemma 2.2 needs n + 1 = "

@@ -11,6 +11,7 @@
 
 #include "core/expected.h"
 #include "core/parametrization.h"
+#include "core/exact_cost.h"
 #include "core/rational.h"
 #include "core/rational_matrix.h"
 #include "core/vec2.h"
@@ -90,8 +91,10 @@ struct ExactFit {
 
 /// Errors as fitBezier (no OutOfRange for results), plus NotRational when the chosen
 /// parameters are irrational (chord length or centripetal with a distance whose square
-/// root is not rational, as in Ex 2.9) and Singular when fewer than n + 1 parameters are
-/// distinct (MᵀM is then singular, see Lemma 2.2).
-Expected<ExactFit> fitBezierExact(const std::vector<RPoint>& q, int degree, Parametrization p);
+/// root is not rational, as in Ex 2.9), Singular when fewer than n + 1 parameters are
+/// distinct (MᵀM is then singular, see Lemma 2.2), and OutOfRange, before any matrix is
+/// built, when fitExactWork() (core/exact_cost.h) is beyond `budget`.
+Expected<ExactFit> fitBezierExact(const std::vector<RPoint>& q, int degree, Parametrization p,
+                                  double budget = kMaxExactWork);
 
 } // namespace granota

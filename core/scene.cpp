@@ -3,6 +3,8 @@
 #include "core/display_text.h"
 #include "core/rational.h"
 #include "core/scene_files.h"
+#include "core/polynomial_text.h"
+#include "core/scene_layout.h"
 #include "core/stage_body.h"
 
 #include <algorithm>
@@ -21,6 +23,26 @@ constexpr double kMaxMagnitude = 1e15;
 /// Every body's vertices together: 5000 bodies of 10000 sides would be 50 million
 /// vertices, gigabytes and minutes to build (a .granota document can ask for it).
 constexpr long kMaxVertices = 100000;
+/// The most vertices (all bodies together) a scene may start piled up, in a frame too small
+/// to hold its bodies side by side: piled, every body is a broad-phase pair of every other
+/// and every vertex is tested against every other body's edges, about 35 ns × vertices² a
+/// step of the stable solver on the reference machine (50 bodies of 10 sides: 10 ms; 100:
+/// 38 ms; 12 bodies of 1000 sides: 3.4 s; 5000 of 10 — what `--set bodies=5000` asked for
+/// in 1280 × 720 px — seconds). 600 keeps a piled step near 15 ms.
+constexpr long kMaxPiledVertices = 600;
+/// A scene's place in the thesis's order (`"order"`): 1 to 18 today, room for more.
+constexpr int kMaxOrder = 100000;
+
+/// The JSON number v as an int when it is a whole number in [lo, hi]; nullopt otherwise.
+/// The range is checked on the double, before converting: 1e300, ±inf or NaN cast to int
+/// is undefined behaviour (found by the scene fuzz target, UBSan).
+std::optional<int> wholeNumber(const Json& v, int lo, int hi)
+{
+    const auto d = v.asNumber();
+    if (!d || !(*d >= lo && *d <= hi) || *d != std::trunc(*d))
+        return std::nullopt;
+    return static_cast<int>(*d);
+}
 
 Error bad(const std::string& scene, const std::string& what)
 {
@@ -85,11 +107,11 @@ Expected<bool> setParam(SceneSpec& s, const std::string& key, const Json& v)
     const auto integer = [&](int& out, int lo, int hi) -> Expected<bool> {
         if (!v.isNumber() || *v.asNumber() != std::trunc(*v.asNumber()))
             return bad(s.name, key + " must be a whole number");
-        const double d = *v.asNumber();
-        if (d < lo || d > hi)
+        const auto n = wholeNumber(v, lo, hi);
+        if (!n)
             return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': " + key + " must be between " +
                                                         std::to_string(lo) + " and " + std::to_string(hi));
-        out = static_cast<int>(d);
+        out = *n;
         return true;
     };
     const auto point = [&](Point& out) -> Expected<bool> {
@@ -275,7 +297,27 @@ Expected<bool> validate(const SceneSpec& s)
         return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': " + *big + " must be at most 1e15 in magnitude");
     if (static_cast<long>(s.bodies) * std::max(s.params.sides, s.bezierSamples) > kMaxVertices)
         return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': bodies × sides must be at most " +
-                                                    std::to_string(kMaxVertices) + " vertices in all");
+                                                    std::to_string(kMaxVertices) + " vertices in all: lower bodies or sides");
+    // A document may also give the vertices themselves (shapes) or obstacles' corners.
+    std::size_t shapePoints = 0, obstaclePoints = 0;
+    for (const auto& sh : s.shapes)
+        shapePoints += sh.points.size();
+    for (const auto& o : s.obstacles)
+        obstaclePoints += o.points.size();
+    if (shapePoints > static_cast<std::size_t>(kMaxVertices) || obstaclePoints > static_cast<std::size_t>(kMaxVertices))
+        return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': " +
+                                                    (shapePoints > static_cast<std::size_t>(kMaxVertices) ? "shapes" : "obstacles") +
+                                                    " must have at most " + std::to_string(kMaxVertices) +
+                                                    " points in all: lower the number of points");
+    if (const long vertices = static_cast<long>(s.bodies) * std::max(s.params.sides, s.bezierSamples);
+        s.hasParam("bodies") && vertices > kMaxPiledVertices && !bodiesFitFrame(s))
+        return makeError(ErrorCode::OutOfRange,
+                         "scene '" + s.name + "': " + std::to_string(s.bodies) + " bodies of radius " +
+                             formatDouble(s.params.radius) + " do not fit side by side in a " + formatDouble(s.params.width) +
+                             " × " + formatDouble(s.params.height) + " px frame, and piled up their " +
+                             std::to_string(vertices) + " vertices would all touch (at most " +
+                             std::to_string(kMaxPiledVertices) +
+                             " may start piled): lower bodies, sides or radius, or raise width and height");
     for (double l : s.chain)
         if (!(l >= 0) || !std::isfinite(l))
             return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': chain lengths must be finite and ≥ 0");
@@ -304,7 +346,8 @@ std::vector<std::string> sceneNames()
     for (const auto& [name, text] : sceneFiles()) {
         auto doc = Json::parse(text);
         const Json* order = doc ? doc->find("order") : nullptr;
-        ordered.emplace_back(order && order->asNumber() ? static_cast<int>(*order->asNumber()) : 1000, std::string(name));
+        const auto place = order ? wholeNumber(*order, 0, kMaxOrder) : std::nullopt;
+        ordered.emplace_back(place ? *place : kMaxOrder, std::string(name));
     }
     std::sort(ordered.begin(), ordered.end());
     std::vector<std::string> names;
@@ -352,8 +395,13 @@ Expected<SceneSpec> parseScene(const Json& doc)
         s.model = SceneModel::Frog;
     else
         return bad(s.name, "model must be stage, body, pendulum or frog");
-    if (const Json* o = doc.find("order"); o && o->asNumber())
-        s.order = static_cast<int>(*o->asNumber());
+    if (const Json* o = doc.find("order")) {
+        const auto place = wholeNumber(*o, 0, kMaxOrder);
+        if (!place)
+            return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': order must be a whole number between 0 and " +
+                                                        std::to_string(kMaxOrder));
+        s.order = *place;
+    }
     if (const Json* c = doc.find("components"); c && c->asArray())
         for (const Json& name : *c->asArray())
             if (name.asString())
@@ -425,15 +473,14 @@ Expected<SceneSpec> withBodies(SceneSpec scene, int bodies)
 {
     if (!scene.hasParam("bodies"))
         return makeError(ErrorCode::InvalidInput, "scene '" + scene.name + "' has a single body");
-    const int before = std::max(1, scene.bodies);
+    if (bodies >= 1 && bodies <= kMaxBodies) { // out of range: applySetting says so
+        const FrameSize f = frameForBodies(scene, bodies);
+        scene.params.width = f.width;
+        scene.params.height = f.height;
+    }
     auto ok = applySetting(scene, "bodies=" + std::to_string(bodies));
     if (!ok)
         return ok.error();
-    if (bodies > before) {
-        const double grow = std::sqrt(static_cast<double>(bodies) / before);
-        scene.params.width = std::round(scene.params.width * grow);
-        scene.params.height = std::round(scene.params.height * grow);
-    }
     return scene;
 }
 

@@ -67,13 +67,15 @@ Expected<SceneSpec> parseScene(const Json& doc);
 /// area_factor=C, sides=N, target_area=A, spring_length=L, velmax=V, center=x,y,
 /// radius=r, width=W, height=H; and the scene's own: bodies, bezier_samples, …).
 /// A key the scene does not have, a malformed value, or a value that makes no sense
-/// (negative sides, a frame of zero size) is an error with a message.
+/// (negative sides, a frame of zero size, more bodies than the frame holds side by side)
+/// is an error with a message.
 Expected<bool> applySetting(SceneSpec& scene, const std::string& keyValue);
 
 /// `bodies` bodies at the scene's density: where the scene's frame was drawn for fewer,
-/// its width and height grow by √(bodies / scene.bodies) so that the bodies fit (a
+/// it grows as frameForBodies() says (core/scene_layout.h) so that the bodies fit (a
 /// thousand frogs do not fit in 1280 × 720 px; piled up, they would measure a pile, not the
-/// broad phase). Errors as applySetting.
+/// broad phase, and cost seconds a step). `bench --bodies` and `--set bodies=N` both come
+/// here. Errors as applySetting.
 Expected<SceneSpec> withBodies(SceneSpec scene, int bodies);
 
 /// The scene as its file: only its own keys, with their current values.

@@ -50,6 +50,21 @@ template <class F> bool allPoints(const Simulation& s, F pred)
 }
 } // namespace
 
+std::size_t Simulation::pointCount() const
+{
+    std::size_t n = 0;
+    std::vector<Point> pts;
+    for (int i = 0; i < bodyCount(); ++i) {
+        bodyVertices(i, pts);
+        n += pts.size();
+    }
+    for (int c = 0; c < chainCount(); ++c) {
+        chainJoints(c, pts);
+        n += pts.size();
+    }
+    return n;
+}
+
 bool Simulation::finite() const
 {
     for (int i = 0; i < bodyCount(); ++i)

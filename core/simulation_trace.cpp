@@ -22,6 +22,21 @@ std::string chainName(const Simulation& sim, int chain, int joint)
 
 } // namespace
 
+std::size_t simulationTracePoints(const Simulation& sim)
+{
+    std::size_t n = 0;
+    std::vector<Point> pts;
+    for (int b = 0; b < sim.bodyCount(); ++b) {
+        sim.bodyVertices(b, pts);
+        n += pts.size();
+    }
+    for (int c = 0; c < sim.chainCount(); ++c) {
+        sim.chainJoints(c, pts);
+        n += pts.empty() ? 0 : pts.size() - 1;
+    }
+    return n;
+}
+
 std::string simulationTraceHeader(const Simulation& sim)
 {
     std::string h = "step";

@@ -107,6 +107,7 @@ public:
         return true;
     }
 
+    int substeps() const override { return m_world.params().substeps; }
     int bodyCount() const override { return m_world.bodyCount(); }
     // Copied into the caller's vector (its capacity reused): no allocation per frame.
     void bodyVertices(int i, std::vector<Point>& out) const override { copyRange(m_world.bodyRange(i), out); }

@@ -11,10 +11,13 @@
 #include <QProcess>
 #include <QTemporaryDir>
 
+#include <algorithm>
+#include <vector>
+
 namespace {
 
 using Run = CliRun;
-inline Run cli(const QStringList& args) { return runCli(args); }
+inline Run cli(const QStringList& args, int timeoutMs = 300000) { return runCli(args, timeoutMs); }
 
 } // namespace
 
@@ -109,6 +112,77 @@ private slots:
         QCOMPARE(m.exitCode, 0);
         QCOMPARE(m.json()["solver"].toString(), QString("stable"));
         QCOMPARE(m.json()["bodies"].toInt(), 50);
+    }
+
+    void manyBodiesGetAFrameThatHoldsThem()
+    {
+        // `--set bodies=5000` kept the 1280 × 720 frame and started every body piled up
+        // (17 s for 2 steps); now the frame grows as for `bench --bodies 5000`.
+        const Run r = cli({"simulate", "--scene", "many-bodies", "--set", "bodies=5000", "--steps", "0", "--json"}, 30000);
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject o = r.json();
+        QVERIFY(o["in_bounds"].toBool());
+        const QJsonArray bodies = o["bodies"].toArray();
+        QCOMPARE(bodies.size(), 5000);
+        // Each body's bounding box; no two overlap (sorted by left edge, a sweep).
+        struct Box { double x0, y0, x1, y1; };
+        std::vector<Box> boxes;
+        for (const auto& b : bodies) {
+            Box box{1e300, 1e300, -1e300, -1e300};
+            for (const auto& v : b.toObject()["vertices"].toArray()) {
+                const double x = v.toArray()[0].toDouble(), y = v.toArray()[1].toDouble();
+                box = {std::min(box.x0, x), std::min(box.y0, y), std::max(box.x1, x), std::max(box.y1, y)};
+            }
+            QVERIFY(box.x1 - box.x0 > 50); // a body of radius 40, not a point
+            boxes.push_back(box);
+        }
+        std::sort(boxes.begin(), boxes.end(), [](const Box& a, const Box& b) { return a.x0 < b.x0; });
+        int overlaps = 0;
+        for (std::size_t i = 0; i < boxes.size(); ++i)
+            for (std::size_t j = i + 1; j < boxes.size() && boxes[j].x0 < boxes[i].x1; ++j)
+                if (boxes[j].y0 < boxes[i].y1 && boxes[i].y0 < boxes[j].y1)
+                    ++overlaps;
+        QCOMPARE(overlaps, 0);
+        // The frame bench reports for the same bodies.
+        const Run b = cli({"bench", "--scene", "many-bodies", "--bodies", "5000", "--steps", "1"}, 30000);
+        QCOMPARE(b.exitCode, 0);
+        QVERIFY2(b.out.contains("frame 26128 × 14697 px"), b.out.constData());
+        double right = 0, bottom = 0;
+        for (const Box& box : boxes) {
+            right = std::max(right, box.x1);
+            bottom = std::max(bottom, box.y1);
+        }
+        QVERIFY(right <= 26128 && bottom <= 14697);
+        QVERIFY(right > 1280); // laid out across the grown frame, not the scene's own
+    }
+
+    void workBeyondTheLimitsIsRefused_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("message");
+        // 50 000 vertices × 300 001 rows: 15 million positions for the trace.
+        QTest::newRow("trace") << QStringList{"--set", "bodies=5000", "--steps", "300", "--trace", "TRACE"}
+                               << "--trace would write 15050000 vertex positions";
+        QTest::newRow("steps") << QStringList{"--set", "bodies=5000", "--steps", "30000"}
+                               << "30000 steps of 50000 vertices are 1500000000 vertex steps";
+    }
+    void workBeyondTheLimitsIsRefused()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QString, message);
+        QTemporaryDir dir;
+        const QString path = dir.filePath("trace.csv");
+        args.replaceInStrings("TRACE", path);
+        const Run r = cli(QStringList{"simulate", "--scene", "many-bodies"} + args, 30000);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(r.err.startsWith("error: " + message.toUtf8()), r.err.constData());
+        QVERIFY(r.err.contains("lower --steps"));
+        QCOMPARE(r.err.count('\n'), 1);
+        QVERIFY(!QFile::exists(path)); // refused before writing
+        // Well inside: 2 rows of 50 000 vertices.
+        const Run ok = cli({"simulate", "--scene", "many-bodies", "--set", "bodies=5000", "--steps", "1", "--trace", path}, 30000);
+        QCOMPARE(ok.exitCode, 0);
+        QVERIFY(QFile::exists(path));
     }
 
     void badSettings_data()

@@ -2,11 +2,13 @@
 // (with its slips corrected and noted), dragging and undo, the readouts against the core,
 // the normal equations breaking where QR does not, the degree limit n ≤ k, CSV import,
 // documents, and the error-against-degree plot (LS optimality over nested spaces).
+#include "core/exact_cost.h"
 #include "core/least_squares_fit.h"
 #include "core/rational.h"
 #include "core/worked_examples.h"
 #include "ui/curve_canvas.h"
 #include "ui/exact_panel.h"
+#include "ui/fit_exact_view.h"
 #include "ui/fit_tab.h"
 #include "ui/point_editor.h"
 #include "ui/point_table.h"
@@ -499,6 +501,38 @@ private slots:
         QCOMPARE(tab.tikz().count(QStringLiteral("\\begin{tikzpicture}")), 1);
         QVERIFY(tab.tikz().contains(QStringLiteral("P_{2}")));
         QVERIFY(tab.tikz().contains(QStringLiteral("Q_{4}")));
+    }
+
+    void anOversizedExactFitFallsBackToDecimals()
+    {
+        // The exact fit is estimated before it is done (core/exact_cost.h); beyond the budget
+        // the panel shows decimals and says why instead of freezing.
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.7"));
+        const std::vector<Point> q = tab.pointEditor()->points();
+        const FitResult* fit = tab.currentFit();
+        QVERIFY(fit);
+        granota::ui::FitExactView::Input in;
+        in.points = &q;
+        in.degree = tab.fittedDegree();
+        in.fit = fit;
+        const QString note = granota::ui::FitExactView::tr(
+            "The exact fractions of this fit would take too long to compute (their digits grow with the degree and the "
+            "number of points): the results are shown in decimals.");
+        const QString exact = granota::ui::FitExactView::html(in);
+        QVERIFY(exact.contains(QStringLiteral("-8/7")));
+        QVERIFY(!exact.contains(note.toHtmlEscaped()));
+        in.exactBudget = 100; // Ex 2.7 needs more than 100 bit operations
+        const QString refused = granota::ui::FitExactView::html(in);
+        QVERIFY2(refused.contains(note.toHtmlEscaped()), qPrintable(refused));
+        QVERIFY(!refused.contains(QStringLiteral("-8/7")));
+        // The tab's largest exact fit (kMaxExactPoints points of 15 digits over 10⁵, degree
+        // one less) is inside the budget: the tab itself never has to refuse.
+        std::vector<Rational> t;
+        for (int i = 0; i < granota::ui::FitExactView::kMaxExactPoints; ++i)
+            t.push_back(frac(i, granota::ui::FitExactView::kMaxExactPoints - 1));
+        const long bits = bitLength(Rational(mpz_class("999999999999999"), mpz_class("99999")));
+        QVERIFY(fitExactWork(granota::ui::FitExactView::kMaxExactPoints - 1, t, bits) < kMaxExactWork);
     }
 };
 

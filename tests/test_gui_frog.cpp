@@ -21,6 +21,8 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include <QJsonDocument>
+
 using namespace granota;
 using namespace granota::ui;
 
@@ -156,6 +158,41 @@ private slots:
         QVERIFY(tab().canvas()->running());
         QVERIFY(tab().canvas()->animating());
         QTRY_VERIFY(sim->stepCount() > before + 41 + 5);
+    }
+
+    void aHeavyStepRunsSlowerThanRealTime()
+    {
+        // Issue 12: the stable solver with 10000 sides costs 30–50 ms a step; stepped every
+        // frame it held the event loop frame after frame. Now a frame steps at most
+        // FrogCanvas::kFrameWork of counted work (points × substeps), and says it is slower.
+        FrogCanvas* canvas = tab().canvas();
+        QVERIFY(tab().setScene("frog", nullptr));
+        QVERIFY(tab().setSolver(SolverKind::Stable, nullptr));
+        QCOMPARE(canvas->framesPerStep(), 1); // the thesis's frog: one step per frame, real time
+        QString error;
+        QVERIFY2(tab().editParameter("sides", 10000, &error), qPrintable(error));
+        Simulation* sim = canvas->simulation();
+        const long work = sim->workPerStep();
+        QVERIFY(work >= 10000L * 8); // 10000 vertices, 8 substeps
+        const int every = canvas->framesPerStep();
+        QCOMPARE(every, static_cast<int>((work + FrogCanvas::kFrameWork - 1) / FrogCanvas::kFrameWork));
+        QVERIFY(every > 1);
+        QVERIFY2(canvas->textLines().join('\n').contains("slower than real time"), qPrintable(canvas->textLines().join('\n')));
+        QVERIFY(canvas->running() && canvas->animating());
+        const long stepsBefore = sim->stepCount(), framesBefore = canvas->frameCount();
+        QTRY_VERIFY_WITH_TIMEOUT(canvas->frameCount() >= framesBefore + 3 * every, 60000);
+        const long frames = canvas->frameCount() - framesBefore, steps = sim->stepCount() - stepsBefore;
+        QVERIFY(steps >= 1); // it runs, slowly
+        // Counted work per frame within the budget: one step every `every` frames at most.
+        QVERIFY2(steps * work <= (frames + every) * FrogCanvas::kFrameWork,
+                 qPrintable(QStringLiteral("%1 steps in %2 frames").arg(steps).arg(frames)));
+        // Back to the thesis's 10 sides: real time again, the note gone.
+        QVERIFY(tab().editParameter("sides", 10, &error));
+        QCOMPARE(canvas->framesPerStep(), 1);
+        QVERIFY(!canvas->textLines().join('\n').contains("slower than real time"));
+        const long realBefore = canvas->simulation()->stepCount(), realFrames = canvas->frameCount();
+        QTRY_VERIFY(canvas->frameCount() >= realFrames + 10);
+        QCOMPARE(canvas->simulation()->stepCount() - realBefore, canvas->frameCount() - realFrames);
     }
 
     void hiddenTabStopsTheTimer()
@@ -444,6 +481,26 @@ private slots:
         bad["overlays"] = QJsonObject{{"area", "yes"}};
         QVERIFY(!tab().loadState(bad, &error));
         QCOMPARE(tab().saveState(), saved);
+    }
+
+    void aDocumentAskingForTooManyVerticesIsRefused()
+    {
+        // Issue 12: a 110-byte document froze the GUI (5000 bodies of 10000 sides, each
+        // within its own range).
+        const QByteArray text = R"({"frog":{"scene":"many-bodies","params":{"bodies":5000,"sides":10000}}})";
+        QVERIFY(text.size() <= 110);
+        const QJsonObject frog = QJsonDocument::fromJson(text).object()["frog"].toObject();
+        const QJsonObject before = tab().saveState();
+        QString error;
+        QVERIFY(!tab().loadState(frog, &error));
+        QVERIFY2(error.contains("100000 vertices"), qPrintable(error));
+        QCOMPARE(tab().saveState(), before);
+        // 5000 bodies of 10 sides are 50 000 vertices, but they do not fit the scene's frame.
+        QJsonObject fewerSides = frog;
+        fewerSides["params"] = QJsonObject{{"bodies", 5000}};
+        QVERIFY(!tab().loadState(fewerSides, &error));
+        QVERIFY2(error.contains("raise width and height"), qPrintable(error));
+        QCOMPARE(tab().saveState(), before);
     }
 
     void tinyWindowIsSafe()

@@ -503,7 +503,15 @@ private slots:
         const std::vector<Point> q = smoothSamples(200, 1e-3);
         QElapsedTimer clock;
         clock.start();
-        const auto exact = fitBezierExact(toRational(q), degree, Parametrization::Uniform); // t_i = i/199
+        // t_i = i/199. A reference computed on purpose: beyond the budget a user's --exact
+        // gets (kMaxExactWork), so the budget is given.
+        const std::vector<RPoint> rq = toRational(q);
+        std::vector<Rational> t;
+        for (int i = 0; i < 200; ++i)
+            t.push_back(frac(i, 199));
+        const double work = fitExactWork(degree, t, maxBitLength(rq));
+        QVERIFY(work > kMaxExactWork); // else the budget below is not needed
+        const auto exact = fitBezierExact(rq, degree, Parametrization::Uniform, 2 * work);
         const qint64 exactMs = clock.elapsed();
         QVERIFY(exact.ok());
         const Eigen::MatrixXd reference = exact->P.toDouble();

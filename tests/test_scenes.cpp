@@ -5,6 +5,8 @@
 
 #include <QtTest>
 
+#include <limits>
+
 using namespace granota;
 
 class TestScenes : public QObject {
@@ -177,6 +179,109 @@ private slots:
         QCOMPARE(static_cast<int>(at.size()), s->bodies);
         for (const Point& p : at)
             QCOMPARE(p.y, at.front().y);
+    }
+
+    void orderBeyondAnIntIsRefused_data()
+    {
+        QTest::addColumn<QString>("order");
+        QTest::newRow("1e300") << "1e300";
+        QTest::newRow("-1e300") << "-1e300";
+        QTest::newRow("just past an int") << "2147483648";
+        QTest::newRow("fraction") << "2.5";
+        QTest::newRow("text") << "\"first\"";
+    }
+    void orderBeyondAnIntIsRefused()
+    {
+        // Found by the scene fuzz target (UBSan): "order": 1e300 was cast to an int.
+        QFETCH(QString, order);
+        std::string text = sceneToJson(*loadScene("frog")).dump();
+        const std::string was = "\"order\":15";
+        const auto at = text.find(was);
+        QVERIFY(at != std::string::npos);
+        text.replace(at, was.size(), "\"order\":" + order.toStdString());
+        auto doc = Json::parse(text);
+        QVERIFY2(doc.ok(), text.c_str());
+        auto s = parseScene(*doc);
+        QVERIFY(!s.ok());
+        QVERIFY2(s.error().message.find("order must be a whole number") != std::string::npos, s.error().message.c_str());
+    }
+    void orderNotANumberIsRefused()
+    {
+        for (double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                           -std::numeric_limits<double>::infinity()}) {
+            Json doc = sceneToJson(*loadScene("frog"));
+            doc.set("order", Json(bad));
+            auto s = parseScene(doc);
+            QVERIFY(!s.ok());
+            QVERIFY(s.error().message.find("order") != std::string::npos);
+        }
+        Json doc = sceneToJson(*loadScene("frog"));
+        doc.set("order", Json(100000.0)); // the largest place
+        QVERIFY(parseScene(doc).ok());
+    }
+
+    void bodiesThatDoNotFitTheFrameAreRefused()
+    {
+        // 5000 bodies in the scene's 1280 × 720 px start piled up: every body pairs with every
+        // other in the broad phase, seconds a step.
+        auto s = loadScene("many-bodies");
+        auto r = applySetting(*s, "bodies=5000");
+        QVERIFY(!r.ok());
+        QVERIFY2(r.error().message.find("lower bodies, sides or radius, or raise width and height") != std::string::npos,
+                 r.error().message.c_str());
+        QCOMPARE(s->bodies, 12); // unchanged
+        // A few bodies may start piled (120 vertices), many may not (1200).
+        QVERIFY(applySetting(*s, "radius=300").ok());
+        QVERIFY(!applySetting(*s, "sides=100").ok());
+        QVERIFY(applySetting(*s, "radius=40").ok());
+        QVERIFY(applySetting(*s, "sides=100").ok()); // side by side: fine
+        QVERIFY(applySetting(*s, "sides=10").ok());
+        // withBodies grows the frame for them (the one layout of bench and --set bodies=N).
+        auto grown = withBodies(*s, 5000);
+        QVERIFY2(grown.ok(), grown.ok() ? "" : grown.error().message.c_str());
+        QVERIFY(bodiesFitFrame(*grown));
+        QVERIFY(grown->params.width > 1280 && grown->params.height > 720);
+        const std::vector<Point> at = bodyStarts(*grown);
+        QCOMPARE(at.size(), std::size_t(5000));
+        const double r2 = 2 * grown->params.radius;
+        for (std::size_t i = 0; i < at.size(); ++i) {
+            QVERIFY(at[i].x - grown->params.radius >= 0 && at[i].x + grown->params.radius <= grown->params.width);
+            QVERIFY(at[i].y - grown->params.radius >= 0 && at[i].y + grown->params.radius <= grown->params.height);
+            for (std::size_t j = i + 1; j < at.size() && j < i + 400; ++j) // neighbours in the grid
+                QVERIFY(norm(at[j] - at[i]) >= r2);
+        }
+        // The scene's own 12 keep its frame (the golden hash's scene).
+        auto same = withBodies(*s, 12);
+        QCOMPARE(same->params.width, 1280.0);
+        QCOMPARE(same->params.height, 720.0);
+    }
+
+    void shapesAndObstaclesOfTooManyPointsAreRefused()
+    {
+        // A document can give the points themselves: a shape of 100 001 vertices would be a
+        // body beyond the vertex limit that bodies × sides has.
+        for (const char* scene : {"shapes", "obstacles"}) {
+            Json doc = sceneToJson(*loadScene(scene));
+            Json params = *doc.find("params");
+            Json points = Json::array();
+            for (int i = 0; i < 100001; ++i) {
+                const double a = 2 * M_PI * i / 100001;
+                points.push(Json(Json::Array{Json(300 + 100 * std::cos(a)), Json(300 + 100 * std::sin(a))}));
+            }
+            Json item = Json::object();
+            Json list = Json::array();
+            if (std::string(scene) == "shapes")
+                item.set("name", "ring").set("points", points).set("at", Json(Json::Array{Json(400.0), Json(300.0)}));
+            else
+                item.set("polygon", points);
+            list.push(item);
+            params.set(scene, list);
+            doc.set("params", params);
+            auto s = parseScene(doc);
+            QVERIFY2(!s.ok(), scene);
+            QVERIFY2(s.error().message.find(std::string(scene) + " must have at most 100000 points") != std::string::npos,
+                     s.error().message.c_str());
+        }
     }
 
     void unknownScene()

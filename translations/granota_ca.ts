@@ -1184,6 +1184,11 @@
             <translation>MᵀM és singular per a aquests paràmetres (punts coincidents): els punts de control que es mostren són la solució de mínims quadrats de norma mínima, en decimals.</translation>
         </message>
         <message>
+            <location filename="../ui/fit_exact_view.cpp" line="125" />
+            <source>The exact fractions of this fit would take too long to compute (their digits grow with the degree and the number of points): the results are shown in decimals.</source>
+            <translation>Les fraccions exactes d’aquest ajust trigarien massa a calcular-se (les seves xifres creixen amb el grau i amb el nombre de punts): els resultats es mostren en decimals.</translation>
+        </message>
+        <message>
             <location filename="../ui/fit_exact_view.cpp" line="129" />
             <location filename="../ui/fit_exact_view.cpp" line="169" />
             <source>Parameters t_i</source>
@@ -1674,6 +1679,14 @@
     </context>
     <context>
         <name>granota::ui::FrogCanvas</name>
+        <message numerus="yes">
+            <location filename="../ui/frog_canvas.cpp" line="232" />
+            <source>Running %n× slower than real time: a step of this scene is more work than a frame holds</source>
+            <translation>
+                <numerusform>Va %n× més lent que el temps real: un pas d’aquesta escena és més feina de la que cap en un fotograma</numerusform>
+                <numerusform>Va %n× més lent que el temps real: un pas d’aquesta escena és més feina de la que cap en un fotograma</numerusform>
+            </translation>
+        </message>
         <message>
             <location filename="../ui/frog_canvas.cpp" line="227" />
             <source>Least-squares Bézier fit, degree %1 through %2 points: %3 µs per frame</source>
@@ -1889,8 +1902,8 @@
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="316" />
-            <source>N (costats): the vertices of the body, a regular polygon built from the top (§4.1). Annex II's frog has N = 10; try 3 to 200.</source>
-            <translation>N (costats): els vèrtexs del cos, un polígon regular construït des de dalt (§4.1). La granota de l'Annex II en té N = 10; proveu de 3 a 200.</translation>
+            <source>N (costats): the vertices of the body, a regular polygon built from the top (§4.1). Annex II's frog has N = 10; try 3 to 200. Up to 10000, 100000 vertices in all: beyond about 3000 the stable solver runs slower than real time.</source>
+            <translation>N (costats): els vèrtexs del cos, un polígon regular construït des de dalt (§4.1). La granota de l'Annex II en té N = 10; proveu de 3 a 200. Fins a 10000, 100000 vèrtexs en total: per sobre d'uns 3000 el resolutor estable va més lent que el temps real.</translation>
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="319" />

@@ -1184,6 +1184,11 @@
             <translation>MᵀM is singular for these parameters (coincident points): the control points shown are the minimum-norm least-squares solution, in decimals.</translation>
         </message>
         <message>
+            <location filename="../ui/fit_exact_view.cpp" line="125" />
+            <source>The exact fractions of this fit would take too long to compute (their digits grow with the degree and the number of points): the results are shown in decimals.</source>
+            <translation>The exact fractions of this fit would take too long to compute (their digits grow with the degree and the number of points): the results are shown in decimals.</translation>
+        </message>
+        <message>
             <location filename="../ui/fit_exact_view.cpp" line="129" />
             <location filename="../ui/fit_exact_view.cpp" line="169" />
             <source>Parameters t_i</source>
@@ -1674,6 +1679,14 @@
     </context>
     <context>
         <name>granota::ui::FrogCanvas</name>
+        <message numerus="yes">
+            <location filename="../ui/frog_canvas.cpp" line="232" />
+            <source>Running %n× slower than real time: a step of this scene is more work than a frame holds</source>
+            <translation>
+                <numerusform>Running %n× slower than real time: a step of this scene is more work than a frame holds</numerusform>
+                <numerusform>Running %n× slower than real time: a step of this scene is more work than a frame holds</numerusform>
+            </translation>
+        </message>
         <message>
             <location filename="../ui/frog_canvas.cpp" line="227" />
             <source>Least-squares Bézier fit, degree %1 through %2 points: %3 µs per frame</source>
@@ -1889,8 +1902,8 @@
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="316" />
-            <source>N (costats): the vertices of the body, a regular polygon built from the top (§4.1). Annex II's frog has N = 10; try 3 to 200.</source>
-            <translation>N (costats): the vertices of the body, a regular polygon built from the top (§4.1). Annex II's frog has N = 10; try 3 to 200.</translation>
+            <source>N (costats): the vertices of the body, a regular polygon built from the top (§4.1). Annex II's frog has N = 10; try 3 to 200. Up to 10000, 100000 vertices in all: beyond about 3000 the stable solver runs slower than real time.</source>
+            <translation>N (costats): the vertices of the body, a regular polygon built from the top (§4.1). Annex II's frog has N = 10; try 3 to 200. Up to 10000, 100000 vertices in all: beyond about 3000 the stable solver runs slower than real time.</translation>
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="319" />

@@ -114,13 +114,16 @@ QString FitExactView::html(const Input& in)
     else if (!rational)
         whyNotExact = tr("The data are not small fractions: the results are shown in decimals.");
     else {
-        Expected<ExactFit> e = fitBezierExact(*rational, n, in.parametrization);
+        Expected<ExactFit> e = fitBezierExact(*rational, n, in.parametrization, in.exactBudget);
         if (e)
             exact = std::move(e).value();
         else if (e.error().code == ErrorCode::NotRational)
             whyNotExact = tr("These parameters are irrational (square roots of the distances), so M cannot be "
                              "written in fractions: the results are shown in decimals, as the thesis does with "
                              "Matlab in Ex 2.9 and Ex 2.10.");
+        else if (e.error().code == ErrorCode::OutOfRange) // refused before any matrix was built
+            whyNotExact = tr("The exact fractions of this fit would take too long to compute (their digits grow "
+                             "with the degree and the number of points): the results are shown in decimals.");
         else
             whyNotExact = tr("MᵀM is singular for these parameters (coincident points): the control points shown "
                              "are the minimum-norm least-squares solution, in decimals.");

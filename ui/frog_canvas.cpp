@@ -64,6 +64,9 @@ FrogCanvas::~FrogCanvas() = default;
 void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
 {
     m_sim = std::move(simulation);
+    m_stepWork = m_sim ? m_sim->workPerStep() : 0;
+    m_frameCount = 0;
+    m_framesSinceStep = 0;
     m_fitter.reset();
     m_previousValid = false;
     m_pressed = false;
@@ -171,10 +174,29 @@ void FrogCanvas::tick()
         ++m_frames;
     }
     m_lastFrameNs = now;
-    advance(); // Processing's draw(): one actualitza() per frame, a fixed step
+    ++m_frameCount;
+    // Processing's draw(): one actualitza() per frame, a fixed step — or, for a step that
+    // is more work than a frame holds, one every framesPerStep() frames.
+    if (++m_framesSinceStep >= framesPerStep()) {
+        m_framesSinceStep = 0;
+        advance();
+    }
     if (m_textClock.nsecsElapsed() >= kTextRefreshNs)
         refreshTexts();
     update();
+}
+
+QStringList FrogCanvas::textLines() const
+{
+    QStringList lines;
+    for (const QStaticText& t : m_lines)
+        lines << t.text();
+    return lines;
+}
+
+int FrogCanvas::framesPerStep() const
+{
+    return static_cast<int>(std::max<long>(1, (m_stepWork + kFrameWork - 1) / kFrameWork));
 }
 
 void FrogCanvas::advance()
@@ -221,6 +243,9 @@ void FrogCanvas::refreshTexts()
     const auto num = [](double v, int decimals) { return displayFixed(v, decimals); };
     if (m_sim) {
         const SceneSpec& scene = m_sim->scene();
+        if (const int slower = framesPerStep(); slower > 1)
+            lines << tr("Running %n× slower than real time: a step of this scene is more work than a frame holds", "",
+                        slower);
         if (scene.has("outline-bezier")) {
             if (m_bezier == BezierOutline::Fit)
                 lines << tr("Least-squares Bézier fit, degree %1 through %2 points: %3 µs per frame")
@@ -717,6 +742,7 @@ void FrogCanvas::keyPressEvent(QKeyEvent* event)
         m_mouseKnown = true;
     }
     m_sim->spawn(m_mouse);
+    m_stepWork = m_sim->workPerStep();
     m_spawnHeld = true;
     update();
 }

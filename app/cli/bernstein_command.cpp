@@ -3,6 +3,7 @@
 #include "app/cli/finite_doubles.h"
 
 #include "core/bernstein.h"
+#include "core/exact_cost.h"
 #include "core/polynomial_text.h"
 
 #include <sstream>
@@ -21,7 +22,11 @@ Expected<CommandOutput> run(const Arguments& args)
         return t.error();
     const bool exact = args.flag("exact");
     double doubleT = 0;
-    if (!exact) {
+    if (exact) {
+        const double work = bernsteinExactWork(*n, bitLength(*t));
+        if (!exactWorkAllowed(work))
+            return makeError(ErrorCode::OutOfRange, exactWorkRefusal("Bernstein values", work, "--degree or the digits of --t"));
+    } else {
         auto d = finiteDouble(*t, "--t " + valueText(*t), true);
         if (!d)
             return d.error();

@@ -4,6 +4,7 @@
 #include "app/cli/finite_doubles.h"
 
 #include "core/de_casteljau.h"
+#include "core/exact_cost.h"
 #include "core/power_basis.h"
 #include "core/polynomial_text.h"
 
@@ -26,6 +27,12 @@ Expected<CommandOutput> run(const Arguments& args)
         return t.error();
     const bool exact = args.flag("exact");
     const int n = static_cast<int>(points->size()) - 1;
+    if (exact) {
+        const double work = deCasteljauExactWork(n, maxBitLength(*points), bitLength(*t));
+        if (!exactWorkAllowed(work))
+            return makeError(ErrorCode::OutOfRange,
+                             exactWorkRefusal("De Casteljau triangle", work, "the number of points or the digits of --t and the points"));
+    }
 
     // The power basis is converted exactly and rounded once, so its coefficients are right
     // to the last digit even where evaluating them in floating point would not be.

@@ -1,6 +1,9 @@
 #include "app/cli/scene_options.h"
 
 #include "core/display_text.h"
+#include "core/rational.h"
+
+#include <cmath>
 
 namespace granota::cli {
 
@@ -13,6 +16,19 @@ Expected<SceneSpec> sceneFromArguments(const Arguments& args)
     if (!scene)
         return scene.error();
     for (const std::string& setting : args.values("set")) {
+        // bodies=N lays the N bodies out as `bench --bodies N` does: in a frame grown for them.
+        const std::string prefix = "bodies=";
+        if (setting.compare(0, prefix.size(), prefix) == 0 && scene->hasParam("bodies")) {
+            const auto q = parseRational(setting.substr(prefix.size()));
+            const double n = q ? toDouble(*q) : 0;
+            if (q && n >= 1 && n <= 1e9 && n == std::trunc(n)) { // else applySetting says what is wrong
+                auto grown = withBodies(*scene, static_cast<int>(n));
+                if (!grown)
+                    return grown.error();
+                scene = std::move(grown);
+                continue;
+            }
+        }
         auto ok = applySetting(*scene, setting);
         if (!ok)
             return ok.error();
