@@ -1,4 +1,4 @@
-// granota: the desktop application (SPEC §1, §5).
+// granota: the desktop application (docs/tabs.md, docs/classroom.md).
 #include "core/scene.h"
 #include "ui/frog_tab.h"
 #include "ui/language.h"

@@ -1,6 +1,6 @@
 #pragma once
 /// \file adaptive_sampling.h
-/// Adaptive sampling of a Bézier curve (beyond the thesis, SPEC §2 "uniform vs adaptive
+/// Adaptive sampling of a Bézier curve (beyond the thesis, docs/work-precision.md "uniform vs adaptive
 /// subdivision"): an interval [a, b] of the parameter is split while the curve's midpoint
 /// c((a+b)/2) lies farther than `tolerance` from the chord c(a)c(b). Flat parts get few
 /// points and tight bends many, where uniform sampling (the Matlab `part`) spends the same

@@ -1,7 +1,7 @@
 #pragma once
 /// \file bernstein_properties.h
 /// The properties of the Bernstein polynomials that the Bernstein tab checks live, at a
-/// degree n and a parameter t (SPEC §1.2): each one as a floating-point residual at t and
+/// degree n and a parameter t (docs/tabs.md): each one as a floating-point residual at t and
 /// as an exact identity between polynomials with rational coefficients.
 ///  - partition of unity: Σ_i B_i^n(t) = 1;
 ///  - symmetry: B_i^n(t) = B_{n−i}^n(1 − t);
@@ -41,7 +41,7 @@ BernsteinChecks checkBernsteinProperties(int n, double t);
 /// How much the change from the Bernstein basis of degree n to the powers of t can amplify
 /// relative errors: the condition number ‖M‖∞ ‖M⁻¹‖∞ of a_k = Σ_i C(n,k) C(k,i) (−1)^{k−i} P_i
 /// (core/power_basis.h), which is (n + 1) · max_k C(n,k) 2^k. It is 160 at n = 4 and about
-/// 1e10 at n = 20: why the power-basis tables are hidden at high degree (SPEC §3).
+/// 1e10 at n = 20: why the power-basis tables are hidden at high degree (docs/extreme-cases.md).
 double powerBasisCondition(int n);
 
 /// Def 2.6 written out as the thesis does in Ex 2.5 and Ex 2.6: the terms B_k^n(t) P_k

@@ -2,7 +2,7 @@
 /// \file degree_elevation.h
 /// Degree elevation: the same curve written with one control point more,
 ///   Q_0 = P_0,  Q_i = (i/(n+1)) P_{i−1} + (1 − i/(n+1)) P_i,  Q_{n+1} = P_n.
-/// (Beyond the thesis, SPEC §1.1; Farin, "Curves and Surfaces for CAGD", §6.1.)
+/// (Beyond the thesis, docs/tabs.md; Farin, "Curves and Surfaces for CAGD", §6.1.)
 
 #include "core/vec2.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 /// \file integrators.h
 /// Time integrators for a particle x'' = a(x, v): the ones the thesis uses and the ones a
-/// student should compare them with (SPEC §2).
+/// student should compare them with (docs/work-precision.md).
 ///  - explicit Euler:       x' = x + h v,          v' = v + h a(x, v)
 ///  - semi-implicit Euler:  v' = v + h a(x, v),    x' = x + h v'   — the "MRUA" update of
 ///    §4.2 (v(t) = v(t−1) + g, X(t) = X(t−1) + v(t), with h = 1)

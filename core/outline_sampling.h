@@ -1,7 +1,7 @@
 #pragma once
 /// \file outline_sampling.h
 /// The outlines of outline.h sampled into buffers that the caller keeps, for the live frog
-/// canvas (60 frames per second, SPEC §1.5): once the buffers have grown to size, drawing a
+/// canvas (60 frames per second, docs/scenes.md): once the buffers have grown to size, drawing a
 /// frame allocates nothing. Each function writes exactly the points of its counterpart in
 /// outline.h / de_casteljau.h (test_outline_sampling checks it), from the same M(τ) of
 /// Lemma 2.3 and the same De Casteljau (Def 2.4); `out` is cleared first, its capacity kept.

@@ -1,6 +1,6 @@
 #pragma once
 /// \file point_list.h
-/// Reading points typed by a user or stored in a file (SPEC §6):
+/// Reading points typed by a user or stored in a file (docs/cli.md):
 ///  - inline:  "x,y;x,y;…"           e.g. "2,3;-1,8;-5/2,0.5"
 ///  - CSV:     one "x,y" per line     (blank lines and lines starting with # ignored,
 ///                                     a first line of column names is skipped)

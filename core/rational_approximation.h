@@ -1,7 +1,7 @@
 #pragma once
 /// \file rational_approximation.h
 /// Recovering the fraction a user meant from a double: points typed as 1/3 or loaded from
-/// Ex 2.7 are stored as doubles by the editors, but the exact panels (SPEC §1.1–1.4) want
+/// Ex 2.7 are stored as doubles by the editors, but the exact panels (docs/tabs.md) want
 /// 1/3, not the dyadic rational 6004799503160661/18014398509481984.
 
 #include "core/rational.h"

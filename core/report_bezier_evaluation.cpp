@@ -1,4 +1,4 @@
-// SPEC §2, Bézier evaluation at degree n: De Casteljau (Def 2.4) against the Bernstein sum
+// docs/work-precision.md, Bézier evaluation at degree n: De Casteljau (Def 2.4) against the Bernstein sum
 // (Def 2.6) and Horner's rule on the power basis, against exact rational arithmetic.
 #include "core/bernstein.h"
 #include "core/de_casteljau.h"

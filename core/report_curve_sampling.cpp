@@ -1,4 +1,4 @@
-// SPEC §2, curve sampling: the polyline drawn for a curve (the Matlab `part` samples) against
+// docs/work-precision.md, curve sampling: the polyline drawn for a curve (the Matlab `part` samples) against
 // the curve itself, uniform against adaptive subdivision.
 #include "core/adaptive_sampling.h"
 #include "core/de_casteljau.h"

@@ -1,4 +1,4 @@
-// SPEC §2, integrators (ch. 3, §4.2, §4.6): explicit Euler, semi-implicit Euler (the MRUA
+// docs/work-precision.md, integrators (ch. 3, §4.2, §4.6): explicit Euler, semi-implicit Euler (the MRUA
 // update of §4.2), Verlet (Def 3.1) and RK4 on a problem with a known solution: a particle
 // on a spring, x'' = −x, starting at (1, 0) with velocity (0, 1), whose orbit is the unit
 // circle (cos t, sin t).

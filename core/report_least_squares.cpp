@@ -1,4 +1,4 @@
-// SPEC §2, least squares (§2.1.3): the thesis's normal equations MᵀMP = MᵀQ (Prop 2.2)
+// docs/work-precision.md, least squares (§2.1.3): the thesis's normal equations MᵀMP = MᵀQ (Prop 2.2)
 // against QR and SVD, on data that lie exactly on a known Bézier curve, so the exact
 // answer is known: its control points.
 #include "core/de_casteljau.h"

@@ -1,4 +1,4 @@
-// SPEC §2, soft body: how far the constraints of the body are from holding, against the
+// docs/work-precision.md, soft body: how far the constraints of the body are from holding, against the
 // work spent on them. XPBD (the `stable` solver) with rigid edges and an exact area
 // constraint (§4.4, §4.5 made hard constraints) over more and more substeps; the seed's
 // soft corrections (Annex II) for comparison.

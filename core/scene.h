@@ -1,7 +1,7 @@
 #pragma once
 /// \file scene.h
 /// A scene is data: a JSON file under resources/scenes naming the stage of chapter 4 (or
-/// the future work of §5.2) it shows, the components it uses (SPEC §1.5 vocabulary) and
+/// the future work of §5.2) it shows, the components it uses (docs/scenes.md vocabulary) and
 /// the parameters of those components only. Only what a scene names is built, stepped,
 /// drawn, shown as a parameter and written back to its file.
 
@@ -63,7 +63,7 @@ std::vector<std::string> sceneNames();
 Expected<SceneSpec> loadScene(const std::string& name);
 Expected<SceneSpec> parseScene(const Json& doc);
 
-/// Applies "key=value" (SPEC §6 keys: gravity=gx,gy, friction=fx,fy, v0=vx,vy,
+/// Applies "key=value" (docs/scenes.md keys: gravity=gx,gy, friction=fx,fy, v0=vx,vy,
 /// area_factor=C, sides=N, target_area=A, spring_length=L, velmax=V, center=x,y,
 /// radius=r, width=W, height=H; and the scene's own: bodies, bezier_samples, …).
 /// A key the scene does not have, a malformed value, or a value that makes no sense

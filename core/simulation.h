@@ -21,7 +21,7 @@ enum class SolverKind { Seed, Stable };
 std::optional<SolverKind> parseSolverKind(std::string_view name);
 std::string solverName(SolverKind s);
 
-/// Teaching readouts (SPEC §1.5 overlays, issue: "readouts from both solvers").
+/// Teaching readouts (docs/scenes.md overlays, issue: "readouts from both solvers").
 struct Readouts {
     double areaErrorPercent = 0;  ///< mean over bodies of 100·(A − A₀)/A₀ (0 when A₀ = 0)
     double maxStretch = 0;        ///< largest |edge length / rest length − 1|

@@ -1,6 +1,6 @@
 #pragma once
 /// \file stopwatch.h
-/// Run time of a piece of work for the work-precision reports (SPEC §2): the work is
+/// Run time of a piece of work for the work-precision reports (docs/work-precision.md): the work is
 /// repeated until at least `minSeconds` have passed, so that short calls are measured over
 /// many repetitions and the clock's resolution does not matter. Reports compare methods
 /// measured in the same run; nothing here is a test.

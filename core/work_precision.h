@@ -1,6 +1,6 @@
 #pragma once
 /// \file work_precision.h
-/// Error against run time for every numerical method (SPEC §2): a report measures, for
+/// Error against run time for every numerical method (docs/work-precision.md): a report measures, for
 /// each method, the error against an independent reference (exact rationals, long double
 /// or a known analytic solution) and the run time, over a range of the method's knob
 /// (samples, degree, step size, substeps). The GUI plots it in the tab it belongs to; the

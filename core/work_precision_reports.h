@@ -1,6 +1,6 @@
 #pragma once
 /// \file work_precision_reports.h
-/// The five reports of SPEC §2, one file each (report_*.cpp); run through
+/// The five reports of docs/work-precision.md, one file each (report_*.cpp); run through
 /// runWorkPrecisionReport(), which checks the name and handles cancelling.
 
 #include "core/vec2.h"

@@ -1,4 +1,4 @@
-// granota-cli against the contract of SPEC §6: JSON keys, exact output of the thesis's
+// granota-cli against the contract of docs/cli.md: JSON keys, exact output of the thesis's
 // examples, and exit status 2 with "error:" on stderr for every kind of bad input.
 #include "cli_runner.h"
 
@@ -218,7 +218,7 @@ private slots:
         QVERIFY(fit.out.contains("P_1 = (323/35, -19/35)"));
     }
 
-    // SPEC §3 / §6: bad input is exit 2 with "error: …" on stderr, nothing on stdout.
+    // docs/extreme-cases.md, docs/cli.md: bad input is exit 2 with "error: …" on stderr, nothing on stdout.
     void badInput_data()
     {
         QTest::addColumn<QStringList>("args");
@@ -262,7 +262,7 @@ private slots:
         QVERIFY(r.out.isEmpty());
     }
 
-    // SPEC §3: extreme but valid input gives a finite answer (exit 0, no NaN/null).
+    // docs/extreme-cases.md: extreme but valid input gives a finite answer (exit 0, no NaN/null).
     void extremeButValid_data()
     {
         QTest::addColumn<QStringList>("args");

@@ -1,4 +1,4 @@
-// granota-cli report NAME|all --out DIR (SPEC §2): one CSV with the machine and the build in
+// granota-cli report NAME|all --out DIR (docs/work-precision.md): one CSV with the machine and the build in
 // its header, and an SVG and a PNG plot per report, from the real binary.
 #include "cli_runner.h"
 

@@ -1,4 +1,4 @@
-// granota-cli simulate and bench against SPEC §6: JSON keys, the seed trace written by
+// granota-cli simulate and bench against docs/cli.md: JSON keys, the seed trace written by
 // --trace, --set, and exit status 2 for settings that make no sense.
 #include "cli_runner.h"
 

@@ -204,7 +204,7 @@ private slots:
     }
 
     // A degree-40 Bézier evaluates to within 1e-12 of the exact value, while Horner on the
-    // power basis (same data, same doubles) does not: the lesson of SPEC §2.
+    // power basis (same data, same doubles) does not: the lesson of docs/work-precision.md.
     void degree40IsAccurate()
     {
         std::mt19937 rng(2024);

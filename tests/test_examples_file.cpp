@@ -73,7 +73,7 @@ private slots:
             ids << e.toObject()["id"].toString();
         for (int i = 1; i <= 13; ++i)
             QVERIFY2(ids.contains(QString("2.%1").arg(i)), qPrintable(QString("Ex 2.%1 missing").arg(i)));
-        for (const auto& e : m_examples) // each one names a tab of SPEC §5
+        for (const auto& e : m_examples) // each one names a tab of docs/classroom.md
             QVERIFY(QStringList({"decasteljau", "bernstein", "fit", "catmull-rom"}).contains(e.toObject()["tab"].toString()));
     }
 

@@ -1,4 +1,4 @@
-// The Bernstein tab (SPEC §1.2): Ex 2.4's polynomials, the weights of Def 2.6 applied to
+// The Bernstein tab (docs/tabs.md): Ex 2.4's polynomials, the weights of Def 2.6 applied to
 // the De Casteljau tab's points, the shared t in both directions, Ex 2.5/2.6 expanded as
 // the thesis prints them, the property checks, and the all-degrees plot.
 #include "core/bernstein.h"

@@ -1,7 +1,7 @@
-// The Catmull-Rom tab (SPEC §1.4): Ex 2.11 and Ex 2.13 exactly as printed in the exact
+// The Catmull-Rom tab (docs/tabs.md): Ex 2.11 and Ex 2.13 exactly as printed in the exact
 // panel, Ex 2.1's slip exposed, mouse drags with undo, the tension list and its refusals,
 // the segment counts of Def 2.10, Prop 2.3 at every knot, interpolation, documents, and the
-// stiff cases of SPEC §3.
+// stiff cases of docs/extreme-cases.md.
 #include "core/catmull_rom.h"
 #include "core/segment_joins.h"
 #include "core/worked_examples.h"
@@ -281,7 +281,7 @@ private slots:
     {
         QTest::addColumn<int>("ends");
         QTest::addColumn<int>("segments");
-        // n + 1 = 5 points (Ex 2.13): Def 2.10 and SPEC §1.4.
+        // n + 1 = 5 points (Ex 2.13): Def 2.10 and docs/tabs.md.
         QTest::newRow("open: n") << int(CatmullRomEnds::Open) << 4;
         QTest::newRow("cyclic: n") << int(CatmullRomEnds::Cyclic) << 4;
         QTest::newRow("closed: n + 1") << int(CatmullRomEnds::Closed) << 5;

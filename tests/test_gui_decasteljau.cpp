@@ -1,4 +1,4 @@
-// The De Casteljau tab (SPEC §1.1) as a user drives it: dragging, adding, deleting and
+// The De Casteljau tab (docs/tabs.md) as a user drives it: dragging, adding, deleting and
 // nudging control points with undo/redo, the thesis's tables of Ex 2.2 and Ex 2.3 in the
 // exact panel (checked against the thesis text and against granota-cli), degree
 // elevation, the shared parameter t, and documents that round-trip or are refused whole.

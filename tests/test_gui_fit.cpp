@@ -1,4 +1,4 @@
-// The Fitting tab (SPEC §1.3): the exact results of Ex 2.7–2.9 as the thesis prints them
+// The Fitting tab (docs/tabs.md): the exact results of Ex 2.7–2.9 as the thesis prints them
 // (with its slips corrected and noted), dragging and undo, the readouts against the core,
 // the normal equations breaking where QR does not, the degree limit n ≤ k, CSV import,
 // documents, and the error-against-degree plot (LS optimality over nested spaces).

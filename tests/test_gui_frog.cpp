@@ -1,4 +1,4 @@
-// The frog lab tab (SPEC §1.5): stepping, grabbing and spawning through the canvas's own
+// The frog lab tab (docs/scenes.md): stepping, grabbing and spawning through the canvas's own
 // mouse and key events, the scene's own parameters applied live and undoably, every scene on
 // both solvers, the frame export and the document round trip.
 #include "core/simulation.h"

@@ -1,7 +1,7 @@
 // The main window as a whole (issue: the application): every tab present, every worked
 // example loads into its tab, documents round-trip, exports are valid files, a live
 // language switch retranslates every visible text, autosave and presentation mode, and the
-// command-line options of SPEC §5 on the real binary.
+// command-line options of docs/classroom.md on the real binary.
 #include "ui/drawable.h"
 #include "ui/exporter.h"
 #include "ui/document.h"

@@ -1,4 +1,4 @@
-// Scenes as data: every scene of SPEC §1.5 by name, in the thesis's order, with exactly
+// Scenes as data: every scene of docs/scenes.md by name, in the thesis's order, with exactly
 // the components it needs, its parameters only, and --set checked.
 #include "core/scene.h"
 #include "core/scene_layout.h"

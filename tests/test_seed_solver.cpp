@@ -1,6 +1,6 @@
 // The `seed` solver: Annex II's Poligon, Pota and Granota reproduced headless (§4.2–4.16).
 // Checked against traces of the seed itself (reference/SeedFrog.java, single precision),
-// on extreme settings (SPEC §3), and for the interaction of Annex II (grab, respawn).
+// on extreme settings (docs/extreme-cases.md), and for the interaction of Annex II (grab, respawn).
 #include "core/seed_frog.h"
 #include "core/seed_trace.h"
 
@@ -415,7 +415,7 @@ private slots:
         }
     }
 
-    // --- Extreme settings (SPEC §3) -----------------------------------------------------
+    // --- Extreme settings (docs/extreme-cases.md) -----------------------------------------------------
 
     void extremeSettings_data()
     {

@@ -1,6 +1,6 @@
 // Every scene on both solvers through the one Simulation interface: finite and in the
 // frame for 1000 steps, deterministic, the seed trace through the facade, grabs that move
-// bodies, stable area at rest, and the stiff and extreme settings of SPEC §3.
+// bodies, stable area at rest, and the stiff and extreme settings of docs/extreme-cases.md.
 #include "core/point_in_polygon.h"
 #include "core/polygon_area.h"
 #include "core/seed_trace.h"
@@ -326,7 +326,7 @@ private slots:
         QCOMPARE(deep, 0);
     }
 
-    // SPEC §3 on both solvers: stiff and extreme settings stay finite and in the frame.
+    // docs/extreme-cases.md on both solvers: stiff and extreme settings stay finite and in the frame.
     void extremeSettings_data()
     {
         QTest::addColumn<QString>("scene");

@@ -1,4 +1,4 @@
-// Catalan and English (SPEC §5): no untranslated string in either language, and every
+// Catalan and English (docs/classroom.md): no untranslated string in either language, and every
 // translation keeps the placeholders (%1, %2, %n) of its source, so no message ever shows
 // a raw "%1" or loses a number.
 #include <QFile>

@@ -1,4 +1,4 @@
-// The work-precision reports of SPEC §2 teach what theory says: the numbers are checked
+// The work-precision reports of docs/work-precision.md teach what theory says: the numbers are checked
 // here (orders of convergence, who loses digits where), never the times.
 #include "core/work_precision.h"
 

@@ -306,7 +306,7 @@ private slots:
         QVERIFY(std::abs(lowest - floorY(w)) < 1e-6);
     }
 
-    // --- Stiff and extreme settings (SPEC §3) ----------------------------------------------
+    // --- Stiff and extreme settings (docs/extreme-cases.md) ----------------------------------------------
     void extremeSettingsStayFiniteAndInside_data()
     {
         QTest::addColumn<int>("which");

@@ -3250,8 +3250,8 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
         </message>
         <message>
             <location filename="../ui/work_precision_panel.cpp" line="142" />
-            <source>Which numerical method to measure (SPEC §2: error against run time).</source>
-            <translation>Quin mètode numèric es mesura (error respecte del temps d'execució).</translation>
+            <source>Which numerical method to measure: its error against its run time.</source>
+            <translation>Quin mètode numèric es mesura: el seu error respecte del seu temps d'execució.</translation>
         </message>
         <message>
             <location filename="../ui/work_precision_panel.cpp" line="143" />

@@ -3250,8 +3250,8 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
         </message>
         <message>
             <location filename="../ui/work_precision_panel.cpp" line="142" />
-            <source>Which numerical method to measure (SPEC §2: error against run time).</source>
-            <translation>Which numerical method to measure (SPEC §2: error against run time).</translation>
+            <source>Which numerical method to measure: its error against its run time.</source>
+            <translation>Which numerical method to measure: its error against its run time.</translation>
         </message>
         <message>
             <location filename="../ui/work_precision_panel.cpp" line="143" />

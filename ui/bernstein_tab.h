@@ -1,6 +1,6 @@
 #pragma once
 /// \file bernstein_tab.h
-/// The Bernstein tab (SPEC §1.2; thesis §2.1.2, Def 2.5, Lemma 2.1, Prop 2.1, Def 2.6,
+/// The Bernstein tab (docs/tabs.md; thesis §2.1.2, Def 2.5, Lemma 2.1, Prop 2.1, Def 2.6,
 /// Ex 2.4–2.6): the basis B_i^n(t) for a chosen n or for every degree up to N (the Matlab
 /// Rep_Pol_Bernstein `tots`), their exact expansions, live checks of partition of unity,
 /// symmetry and Lemma 2.1, and the weights B_i^n(t) that Def 2.6 applies to the De
@@ -38,7 +38,7 @@ class ExactPanel;
 class BernsteinTab : public TabPage {
     Q_OBJECT
 public:
-    /// Shares the control points and the parameter t of the De Casteljau tab (SPEC §1.2).
+    /// Shares the control points and the parameter t of the De Casteljau tab (docs/tabs.md).
     explicit BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent = nullptr);
     ~BernsteinTab() override;
 

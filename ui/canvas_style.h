@@ -1,7 +1,7 @@
 #pragma once
 /// \file canvas_style.h
 /// Pens, colours and sizes shared by every canvas, scaled up in presentation mode so that
-/// lines and labels read from the back of a classroom (SPEC §5).
+/// lines and labels read from the back of a classroom (docs/classroom.md).
 
 #include <QColor>
 #include <QFont>

@@ -1,6 +1,6 @@
 #pragma once
 /// \file catmull_rom_report.h
-/// The exact side panel of the Catmull-Rom tab (SPEC §1.4), as HTML for ExactPanel: the
+/// The exact side panel of the Catmull-Rom tab (docs/tabs.md), as HTML for ExactPanel: the
 /// matrix M(τ) of Lemma 2.3, the segment polynomials of Def 2.10 (exact fractions when the
 /// points are small rationals and the spacing uniform: Ex 2.11 and Ex 2.13 as printed), the
 /// tangents at the knots (Prop 2.3), the blending functions (Cor 2.1), Processing's

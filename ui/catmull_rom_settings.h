@@ -25,8 +25,8 @@ enum class CatmullRomSpacing { Uniform, Centripetal, Chordal };
 
 struct CatmullRomSettings {
     static constexpr int kMaxTensions = 10;      ///< one colour each (CanvasStyle::series)
-    static constexpr int kMaxTensionAbs = 10;    ///< SPEC §3: τ ∈ [−10, 10]
-    static constexpr int kMaxPoints = 200;       ///< SPEC §3 (soft bodies up to 200 sides)
+    static constexpr int kMaxTensionAbs = 10;    ///< docs/extreme-cases.md: τ ∈ [−10, 10]
+    static constexpr int kMaxPoints = 200;       ///< docs/extreme-cases.md (soft bodies up to 200 sides)
 
     std::vector<Rational> taus{Rational(0), frac(1, 2), Rational(2)}; ///< Ex 2.11's tensions
     int selectedTau = 1;                         ///< the one the slider and the plot follow

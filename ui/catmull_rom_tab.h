@@ -1,6 +1,6 @@
 #pragma once
 /// \file catmull_rom_tab.h
-/// The Catmull-Rom tab (SPEC §1.4; thesis §2.2–2.3): points q0…qn on a canvas with one
+/// The Catmull-Rom tab (docs/tabs.md; thesis §2.2–2.3): points q0…qn on a canvas with one
 /// Catmull-Rom curve per tension τ (Def 2.8–2.10), the end modes of Def 2.10, uniform,
 /// centripetal or chordal spacing, the blending functions (Cor 2.1), the exact segment
 /// polynomials (Lemma 2.3, Ex 2.11, Ex 2.13) and tangents at the knots (Prop 2.3), and the

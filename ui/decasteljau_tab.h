@@ -1,6 +1,6 @@
 #pragma once
 /// \file decasteljau_tab.h
-/// The De Casteljau tab (SPEC §1.1; thesis §2.1.1, Def 2.4, Ex 2.2, Ex 2.3): editable
+/// The De Casteljau tab (docs/tabs.md; thesis §2.1.1, Def 2.4, Ex 2.2, Ex 2.3): editable
 /// control points, the construction of c(t) level by level at a parameter t that can be
 /// animated, the Matlab Rep_Bezier "desglossar" view, the tangent, the split at t, degree
 /// elevation, and beside the canvas the point table and the exact triangle of P_i^r(t).
@@ -85,7 +85,7 @@ public:
     /// The warning shown for high degrees; empty when there is none.
     QString warning() const { return m_warningText; }
 
-    static constexpr int kMaxPoints = 200;       ///< SPEC §3: the editor refuses more
+    static constexpr int kMaxPoints = 200;       ///< docs/extreme-cases.md: the editor refuses more
     static constexpr int kMaxExactDegree = 8;    ///< above, the symbolic P_i^r(t) would not be readable
     static constexpr int kMaxTableDegree = 20;   ///< above, the numeric triangle is not shown either
     static constexpr int kWarnDegree = 20;       ///< from here on, the conditioning warning

@@ -1,6 +1,6 @@
 #pragma once
 /// \file document.h
-/// The .granota document (SPEC §4): one JSON object with every tab's points and settings.
+/// The .granota document (docs/file-formats.md): one JSON object with every tab's points and settings.
 ///
 ///     { "format": "granota", "version": 1, "current": "fit",
 ///       "tabs": { "decasteljau": {…}, "bernstein": {…}, "fit": {…}, "catmull-rom": {…}, "frog": {…} } }

@@ -1,6 +1,6 @@
 #pragma once
 /// \file exact_panel.h
-/// The side panel that shows the thesis's exact results (SPEC §1.1–1.4): polynomials,
+/// The side panel that shows the thesis's exact results (docs/tabs.md): polynomials,
 /// tables and matrices as fractions, typeset in HTML (t⁴ as t<sup>4</sup>, fractions as
 /// p/q). It only formats: the values come from the core. Tests read plainText() and
 /// compare with the thesis text (“2 - 12t - 6t^2 + 52t^3 - 43t^4”).

@@ -1,6 +1,6 @@
 #pragma once
 /// \file exporter.h
-/// Exports of any Drawable (SPEC §4): PNG at a chosen DPI, SVG and PDF, all through the
+/// Exports of any Drawable (docs/tabs.md): PNG at a chosen DPI, SVG and PDF, all through the
 /// view's own render(), plus plain text files (CSV, TikZ). Each returns an empty string on
 /// success and a translated message otherwise; nothing here ever throws or aborts.
 

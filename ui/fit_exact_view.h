@@ -1,6 +1,6 @@
 #pragma once
 /// \file fit_exact_view.h
-/// The fitting tab's side panel text (SPEC §1.3): the parameters t_i, the chord lengths
+/// The fitting tab's side panel text (docs/tabs.md): the parameters t_i, the chord lengths
 /// d_i in simplest radical form, the matrices M, MᵀM, (MᵀM)⁻¹, M⁺ (Ex 2.7, Ex 2.8), the
 /// control points P = M⁺Q and the curve α(t) in powers of t — as fractions when the data
 /// and the parameters are rational, in decimals otherwise — with the thesis's slips

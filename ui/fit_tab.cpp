@@ -55,7 +55,7 @@ constexpr int kMaxIterations = 1000;
 /// Undo-merge fields of FitSettingsCommand.
 enum Field { DegreeField, ParametrizationField, SolverField, CorrectionField };
 
-/// The degree spin box: refuses n > k with a reason instead of silently (SPEC §1.3).
+/// The degree spin box: refuses n > k with a reason instead of silently (docs/tabs.md).
 class DegreeSpinBox : public QSpinBox {
 public:
     using QSpinBox::QSpinBox;

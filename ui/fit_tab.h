@@ -1,6 +1,6 @@
 #pragma once
 /// \file fit_tab.h
-/// The Fitting tab (SPEC §1.3; thesis §2.1.3, Lemma 2.2, Prop 2.2, Ex 2.7–2.10): data
+/// The Fitting tab (docs/tabs.md; thesis §2.1.3, Lemma 2.2, Prop 2.2, Ex 2.7–2.10): data
 /// points Q_0..Q_k edited on a canvas and in a table (or imported from a CSV file), the
 /// least-squares Bézier curve of degree n for uniform, chord-length or centripetal
 /// parameters t_i (optionally corrected by re-projection), its control points and control
@@ -81,11 +81,11 @@ public:
 
     /// The table lists the points up to this many; beyond, a note says how many there are.
     static constexpr int kTableLimit = 5000;
-    /// The error-against-degree plot goes up to this degree (SPEC §1.3).
+    /// The error-against-degree plot goes up to this degree (docs/tabs.md).
     static constexpr int kPlotMaxDegree = 30;
     /// Degrees above this get a warning even when M is still well conditioned.
     static constexpr int kHighDegree = 20;
-    /// cond₂(M) above this gets a warning (SPEC §3).
+    /// cond₂(M) above this gets a warning (docs/extreme-cases.md).
     static constexpr double kIllConditioned = 1e10;
 
 protected:

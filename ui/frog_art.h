@@ -1,7 +1,7 @@
 #pragma once
 /// \file frog_art.h
 /// The frog lab's own art (the thesis's panta.png and cap_granota.png are not available,
-/// SPEC §1.5): a pond background, the frog's head with eyes and mouth, webbed feet, and the
+/// docs/scenes.md): a pond background, the frog's head with eyes and mouth, webbed feet, and the
 /// colours of bodies, obstacles and pendulums. Everything is painted with QPainter in scene
 /// coordinates (Processing pixels, y down); the paths are built once, so painting a frame
 /// allocates nothing here.

@@ -1,6 +1,6 @@
 #pragma once
 /// \file frog_canvas.h
-/// The live soft-body canvas of the frog lab (SPEC §1.5): one Simulation, stepped once per
+/// The live soft-body canvas of the frog lab (docs/scenes.md): one Simulation, stepped once per
 /// frame by a 60 Hz timer as Processing's draw(), drawn in the thesis's order (background,
 /// back legs, body, front legs, head) in the scene's own Processing pixels, letterboxed into
 /// the widget. The mouse grabs and the space bar spawns as in Annex II. Drawing reuses

@@ -23,7 +23,7 @@ struct Range {
     double step;
 };
 
-/// Wide ranges on purpose: SPEC §3 asks for huge gravity, target area 0 or huge, 3 to 200
+/// Wide ranges on purpose: docs/extreme-cases.md lists huge gravity, target area 0 or huge, 3 to 200
 /// sides and more; the core refuses what makes no sense, with a message.
 Range rangeFor(const QString& key)
 {

@@ -1,8 +1,8 @@
 #pragma once
 /// \file frog_parameters_panel.h
-/// The parameters of the active scene, and only those (SPEC §1.5): one row per key of the
+/// The parameters of the active scene, and only those (docs/scenes.md): one row per key of the
 /// scene's file, with the thesis's names and units, spin boxes wide enough in range for the
-/// extreme cases of SPEC §3. An edit emits the key's whole new value (as the scene file
+/// extreme cases of docs/extreme-cases.md. An edit emits the key's whole new value (as the scene file
 /// writes it); the tab validates it through the core and applies it live.
 
 #include <QJsonObject>
@@ -31,7 +31,7 @@ public:
     void setScene(const SceneSpec& scene);
     /// Shows `scene`'s values again (after an undo, or a refused edit); emits nothing.
     void setValues(const SceneSpec& scene);
-    /// The keys shown, in the scene file's order (SPEC §6 names: gravity, legs, …).
+    /// The keys shown, in the scene file's order (docs/scenes.md names: gravity, legs, …).
     QStringList keys() const { return m_keys; }
     /// The spin box `index` of `key` (0 for x / min / upper, 1 for y / max / lower, …), for tests.
     QDoubleSpinBox* spinBox(const QString& key, int index = 0) const;

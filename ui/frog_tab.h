@@ -1,6 +1,6 @@
 #pragma once
 /// \file frog_tab.h
-/// The soft-body lab (frog) tab (SPEC §1.5): the live canvas, the scene picker (every
+/// The soft-body lab (frog) tab (docs/scenes.md): the live canvas, the scene picker (every
 /// stage of chapter 4 and the future work of §5.2), the solver, pause / step / reset, the
 /// active scene's parameters applied live, and the overlays.
 
@@ -41,7 +41,7 @@ public:
     QString tikz() const override;
     void setPresentation(bool on) override;
 
-    /// Opens scene `name` of SPEC §1.5 (`--scene`). False with a message for an unknown name.
+    /// Opens scene `name` (docs/scenes.md) (`--scene`). False with a message for an unknown name.
     bool setScene(const QString& name, QString* error);
     /// Why the scene `name` did not load: unknown, or the core's own message for a known one.
     static QString sceneLoadError(const QString& name, const std::string& coreMessage);
@@ -54,7 +54,7 @@ public:
     SolverKind solver() const { return m_solver; }
     QString sceneName() const { return QString::fromStdString(m_scene.name); }
     const SceneSpec& scene() const { return m_scene; }
-    /// Edits parameter `key` (SPEC §6 name) to `value` in the scene file's form, live and
+    /// Edits parameter `key` (docs/scenes.md name) to `value` in the scene file's form, live and
     /// undoable (the parameter panel does this). False with a message when the core refuses.
     bool editParameter(const QString& key, const QJsonValue& value, QString* error);
     /// Sets `key` without an undo step (the undo commands call it).

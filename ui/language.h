@@ -1,6 +1,6 @@
 #pragma once
 /// \file language.h
-/// Catalan and English, switchable live (SPEC §5): installs Granota's translation and Qt's
+/// Catalan and English, switchable live (docs/classroom.md): installs Granota's translation and Qt's
 /// own (qtbase_ca.qm, for the standard dialogs), remembers the choice in QSettings, and
 /// picks Catalan on a Catalan system when nothing was chosen. Widgets retranslate on the
 /// QEvent::LanguageChange that installing a translator sends.

@@ -69,7 +69,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
                new FrogTab(this)};
     m_undoGroup = new QUndoGroup(this);
     for (TabPage* page : m_pages) {
-        // Below every tab, its work-precision section (SPEC §2), collapsed until View ▸ Error
+        // Below every tab, its work-precision section (docs/work-precision.md), collapsed until View ▸ Error
         // against run time opens it.
         auto* splitter = new QSplitter(Qt::Vertical, this);
         auto* report = new WorkPrecisionPanel(reportsOf(page->key()), splitter);

@@ -1,8 +1,8 @@
 #pragma once
 /// \file main_window.h
-/// Granota's main window: one tab per part of the thesis (SPEC §1), the document (save,
-/// open, recent files, autosave and recovery), exports (SPEC §4), the Examples menu,
-/// languages and presentation mode (SPEC §5).
+/// Granota's main window: one tab per part of the thesis (docs/tabs.md), the document (save,
+/// open, recent files, autosave and recovery), exports (docs/tabs.md), the Examples menu,
+/// languages and presentation mode (docs/classroom.md).
 
 #include <QFont>
 #include <QMainWindow>
@@ -33,7 +33,7 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    /// Tab keys of SPEC §5: decasteljau, bernstein, fit, catmull-rom, frog.
+    /// Tab keys (docs/classroom.md): decasteljau, bernstein, fit, catmull-rom, frog.
     bool showTab(const QString& key);
     TabPage* tab(const QString& key) const;
     TabPage* currentTab() const;
@@ -56,7 +56,7 @@ public:
     /// (screenshots of presentation mode at 1280×800).
     void setPresentation(bool on, bool fullScreen = true);
 
-    /// The work-precision section below each tab (SPEC §2), hidden until asked for.
+    /// The work-precision section below each tab (docs/work-precision.md), hidden until asked for.
     WorkPrecisionPanel* workPrecisionPanel(const QString& key) const;
     void setWorkPrecisionVisible(bool visible);
     bool workPrecisionVisible() const;

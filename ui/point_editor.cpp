@@ -38,7 +38,7 @@ PointEditor::PointEditor(CurveCanvas* canvas, QUndoStack* undoStack, QObject* pa
         }
         p.setFont(style.labelFont());
         const double r = style.handleRadius();
-        // Huge data sets (10^6 points in the fitting tab, SPEC §3): draw every stride-th
+        // Huge data sets (up to kMaxDataPoints in the fitting tab, docs/extreme-cases.md): draw every stride-th
         // handle and no labels, so that painting stays fast; the selected one always.
         constexpr std::size_t kMaxDrawnHandles = 5000;
         const std::size_t stride = (m_points.size() + kMaxDrawnHandles - 1) / kMaxDrawnHandles;

@@ -23,7 +23,7 @@ class TabPage : public QWidget {
 public:
     using QWidget::QWidget;
 
-    /// The key of SPEC §5 (`--tab`): decasteljau, bernstein, fit, catmull-rom, frog.
+    /// The key (docs/classroom.md) (`--tab`): decasteljau, bernstein, fit, catmull-rom, frog.
     virtual QString key() const = 0;
     /// The tab's title, translated.
     virtual QString title() const = 0;
@@ -46,7 +46,7 @@ public:
     virtual QString csv() const = 0;
     virtual QString tikz() const = 0;
 
-    /// Presentation mode: larger lines, handles and labels (SPEC §5).
+    /// Presentation mode: larger lines, handles and labels (docs/classroom.md).
     virtual void setPresentation(bool on) { (void)on; }
     /// View ▸ Zoom in/out (factor > 1 zooms in) and View ▸ Fit.
     virtual void zoom(double factor) { (void)factor; }

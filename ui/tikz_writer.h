@@ -1,6 +1,6 @@
 #pragma once
 /// \file tikz_writer.h
-/// A TikZ picture for LaTeX slides (SPEC §4): polylines, points and labels in model
+/// A TikZ picture for LaTeX slides (docs/tabs.md): polylines, points and labels in model
 /// coordinates, scaled to a given width. Tabs add what they draw; str() is the file.
 
 #include "core/vec2.h"

@@ -62,7 +62,7 @@ public:
     /// Moves the view with the mouse: the model follows a drag of `deltaPx` pixels.
     void pan(const QPointF& deltaPx) { m_center = {m_center.x - deltaPx.x() / m_scale, m_center.y + deltaPx.y() / m_scale}; }
 
-    static constexpr double kMinScale = 1e-9; ///< px per unit: coordinates up to 1e9 still fit (SPEC §3)
+    static constexpr double kMinScale = 1e-9; ///< px per unit: coordinates up to 1e9 still fit (docs/extreme-cases.md)
     static constexpr double kMaxScale = 1e12; ///< px per unit: coordinates down to 1e-9 still separate
 
 private:

@@ -139,7 +139,7 @@ void WorkPrecisionPanel::retranslate()
         m_choice->addItem(reportTitle(r));
     }
     m_choice->setCurrentIndex(current < 0 ? 0 : current);
-    m_choice->setToolTip(tr("Which numerical method to measure (SPEC §2: error against run time)."));
+    m_choice->setToolTip(tr("Which numerical method to measure: its error against its run time."));
     m_measure->setText(tr("Measure"));
     m_measure->setToolTip(tr("Run every method over a range of its setting and plot error against run time."));
     m_cancel->setText(tr("Cancel"));

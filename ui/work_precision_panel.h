@@ -1,6 +1,6 @@
 #pragma once
 /// \file work_precision_panel.h
-/// The work-precision section of a tab (SPEC §2): pick a report, Measure, watch the
+/// The work-precision section of a tab (docs/work-precision.md): pick a report, Measure, watch the
 /// progress, Cancel at any time; the plot (error against run time, log–log) and the lesson
 /// it teaches. The measurement runs in a worker thread, so the window never freezes.
 

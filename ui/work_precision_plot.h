@@ -1,6 +1,6 @@
 #pragma once
 /// \file work_precision_plot.h
-/// Work-precision plots (SPEC §2): error against run time on log–log axes, one series per
+/// Work-precision plots (docs/work-precision.md): error against run time on log–log axes, one series per
 /// method, with the knob's values written beside the markers. The same code draws the tab's
 /// plot and the CLI's SVG and PNG files.
 

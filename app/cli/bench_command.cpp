@@ -1,4 +1,4 @@
-// granota-cli bench: nanoseconds per step of a scene (SPEC §6). With --bodies B, a scene
+// granota-cli bench: nanoseconds per step of a scene (docs/cli.md). With --bodies B, a scene
 // that has bodies of its own (many-bodies) gets B of them; any other scene is run as B
 // independent copies, like the seed's `java SeedFrog STEPS FROGS`.
 #include "app/cli/command.h"

@@ -1,7 +1,7 @@
 #pragma once
 /// \file command.h
 /// A granota-cli command: its syntax, its usage line and what it computes. A command
-/// returns both forms of its answer, the JSON object of SPEC §6 and the text for people;
+/// returns both forms of its answer, the JSON object of docs/cli.md and the text for people;
 /// main() prints one of them.
 
 #include "app/cli/arguments.h"
@@ -36,7 +36,7 @@ Command benchCommand();
 Command demoCommand();
 Command reportCommand();
 
-/// Number output: exact "p/q" strings with --exact, doubles otherwise (SPEC §6).
+/// Number output: exact "p/q" strings with --exact, doubles otherwise (docs/cli.md).
 Json number(const Rational& q, bool exact);
 Json number(double d);
 Json point(const RPoint& p, bool exact);

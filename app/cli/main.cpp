@@ -1,4 +1,4 @@
-// granota-cli: Granota's mathematics from the command line (SPEC §6).
+// granota-cli: Granota's mathematics from the command line (docs/cli.md).
 // Human-readable text by default, one JSON object with --json. Bad input: exit status 2
 // and a line starting with "error:" on stderr — never a crash, never a NaN. An answer that
 // cannot be written (a full disk, a closed pipe) is an error too, with the same status 2.

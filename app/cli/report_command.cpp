@@ -1,4 +1,4 @@
-// granota-cli report NAME|all --out DIR: the work-precision reports of SPEC §2 as files —
+// granota-cli report NAME|all --out DIR: the work-precision reports of docs/work-precision.md as files —
 // NAME.csv (with the machine and the build in its header), NAME.svg and NAME.png, drawn by
 // the same plotting code as the tabs.
 #include "app/cli/command.h"
@@ -170,7 +170,7 @@ Expected<CommandOutput> run(const Arguments& args)
 Command reportCommand()
 {
     return {"report", "NAME|all --out DIR [--quick] [--json]",
-            "error against run time (SPEC §2) as CSV, SVG and PNG: curve-sampling, bezier-evaluation, "
+            "error against run time as CSV, SVG and PNG: curve-sampling, bezier-evaluation, "
             "least-squares, integrators, soft-body",
             CommandSyntax{{"out"}, {"quick", "json"}, {}, 1},
             run};

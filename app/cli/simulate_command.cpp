@@ -1,4 +1,4 @@
-// granota-cli simulate: run a scene of chapter 4 / §5.2 headless (SPEC §6).
+// granota-cli simulate: run a scene of chapter 4 / §5.2 headless (docs/cli.md).
 #include "app/cli/command.h"
 #include "app/cli/output_file.h"
 #include "app/cli/scene_options.h"
