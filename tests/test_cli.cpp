@@ -15,6 +15,15 @@ namespace {
 using Run = CliRun;
 inline Run cli(const QStringList& args) { return runCli(args); }
 
+/// Writes `bytes` to `name` in `dir` and returns its path (empty if it could not).
+QString writeFile(const QTemporaryDir& dir, const QString& name, const QByteArray& bytes)
+{
+    QFile file(dir.filePath(name));
+    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size())
+        return QString();
+    return file.fileName();
+}
+
 QStringList strings(const QJsonArray& a)
 {
     QStringList l;
@@ -305,12 +314,9 @@ private slots:
     void pointsFileWithByteOrderMark()
     {
         QTemporaryDir dir;
-        QVERIFY(dir.isValid());
-        QFile csv(dir.filePath("bom.csv"));
-        QVERIFY(csv.open(QIODevice::WriteOnly));
-        csv.write("\xEF\xBB\xBFx,y\n0,0\n1,3\n4,2\n8,-2\n1,5\n");
-        csv.close();
-        const Run r = cli({"fit", "--points-file", csv.fileName(), "--degree", "2", "--exact", "--json"});
+        const QString csv = writeFile(dir, "bom.csv", "\xEF\xBB\xBFx,y\n0,0\n1,3\n4,2\n8,-2\n1,5\n");
+        QVERIFY(!csv.isEmpty());
+        const Run r = cli({"fit", "--points-file", csv, "--degree", "2", "--exact", "--json"});
         QVERIFY2(r.exitCode == 0, r.err.constData());
         QCOMPARE(strings(r.json()["control_points"].toArray()[0].toArray()), QStringList({"-8/7", "46/35"}));
     }
@@ -362,12 +368,9 @@ private slots:
     {
         QFETCH(QStringList, args);
         QTemporaryDir dir;
-        QVERIFY(dir.isValid());
-        QFile csv(dir.filePath("evil.csv"));
-        QVERIFY(csv.open(QIODevice::WriteOnly));
-        csv.write("\033[2J\033]0;pwned\007x,1\n2,3\n");
-        csv.close();
-        args.replaceInStrings(QRegularExpression("^CSV$"), csv.fileName());
+        const QString csv = writeFile(dir, "evil.csv", "\033[2J\033]0;pwned\007x,1\n2,3\n");
+        QVERIFY(!csv.isEmpty());
+        args.replaceInStrings(QRegularExpression("^CSV$"), csv);
         const Run r = cli(args);
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(r.err.startsWith("error: ") && r.err.endsWith("\n"), r.err.constData());
