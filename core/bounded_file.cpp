@@ -24,12 +24,12 @@ Expected<std::string> readBoundedFile(const std::string& path, std::size_t maxBy
     const std::string name = quotedForDisplay(path);
     struct stat info {};
     if (::stat(path.c_str(), &info) != 0)
-        return makeError(ErrorCode::InvalidInput, "cannot read " + name + ": " + std::strerror(errno));
+        return makeError(ErrorCode::InvalidInput, "cannot read " + name + ": " + systemErrorText(errno));
     if (S_ISDIR(info.st_mode))
         return makeError(ErrorCode::InvalidInput, name + " is a folder, not a file");
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
     if (!file)
-        return makeError(ErrorCode::InvalidInput, "cannot read " + name + ": " + std::strerror(errno));
+        return makeError(ErrorCode::InvalidInput, "cannot read " + name + ": " + systemErrorText(errno));
     std::string bytes;
     char buffer[1 << 16];
     while (bytes.size() <= maxBytes) {
@@ -38,7 +38,7 @@ Expected<std::string> readBoundedFile(const std::string& path, std::size_t maxBy
         bytes.append(buffer, got);
         if (got < want) {
             if (std::ferror(file.get()))
-                return makeError(ErrorCode::InvalidInput, "cannot read " + name + ": " + std::strerror(errno));
+                return makeError(ErrorCode::InvalidInput, "cannot read " + name + ": " + systemErrorText(errno));
             break; // end of file
         }
     }

@@ -1,5 +1,7 @@
 #include "core/display_text.h"
 
+#include <string.h> // strerrordesc_np (glibc): the untranslated text of strerror
+
 namespace granota {
 
 namespace {
@@ -82,6 +84,13 @@ std::string quotedForDisplay(std::string_view text, std::size_t maxChars)
     if (i < text.size())
         out += "…";
     return out + "'";
+}
+
+std::string systemErrorText(int errnum)
+{
+    if (const char* text = ::strerrordesc_np(errnum))
+        return text;
+    return "system error " + std::to_string(errnum);
 }
 
 } // namespace granota

@@ -3,10 +3,14 @@
 #include "core/bounded_file.h"
 #include "core/display_text.h"
 #include "core/input_limits.h"
+#include "catalan_locale.h"
 
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <cerrno>
+#include <clocale>
+#include <cstring>
 #include <fstream>
 
 using namespace granota;
@@ -50,6 +54,19 @@ private slots:
         const auto missing = readBoundedFile(dir.filePath("nope.csv").toStdString(), 100);
         QVERIFY(!missing);
         QVERIFY(QString::fromStdString(missing.error().message).contains("No such file"));
+    }
+    // The reason in a command-line message is English on a Catalan desktop, as the message is.
+    void systemErrorsAreEnglishInEveryLocale()
+    {
+        QVERIFY2(enterCatalanLocale(), kMissingCatalan);
+        const std::string localized = std::strerror(ENOSPC); // what the old messages used
+        QCOMPARE(QString::fromStdString(systemErrorText(ENOSPC)), QString("No space left on device"));
+        QCOMPARE(QString::fromStdString(systemErrorText(ENOENT)), QString("No such file or directory"));
+        const auto missing = readBoundedFile("/nonexistent/x.csv", 10);
+        QVERIFY(!missing);
+        QVERIFY2(QString::fromStdString(missing.error().message).contains("No such file"), missing.error().message.c_str());
+        std::setlocale(LC_ALL, "C");
+        QVERIFY2(localized != "No space left on device", "the Catalan locale has no Catalan messages");
     }
     void controlCharactersAreEscaped_data()
     {

@@ -380,8 +380,24 @@ private slots:
         QVERIFY2(!text.contains(QStringLiteral("0, 0")), qPrintable(text));
         QVERIFY2(!text.contains(QStringLiteral("nan"), Qt::CaseInsensitive) && !text.contains(QStringLiteral("inf"), Qt::CaseInsensitive),
                  qPrintable(text));
+        // The canvas cannot draw them either: it says so instead of staying blank.
+        QVERIFY2(tab.canvas()->notice().contains(QStringLiteral("too large to draw")), qPrintable(tab.canvas()->notice()));
+        tab.canvas()->resize(400, 300);
+        QImage picture(400, 300, QImage::Format_RGB32);
+        {
+            QPainter painter(&picture);
+            tab.canvas()->render(painter, QRectF(0, 0, 400, 300));
+        }
+        const QRgb background = picture.pixel(0, 0);
+        int written = 0;
+        for (int y = 0; y < picture.height(); ++y)
+            for (int x = 0; x < picture.width(); ++x)
+                written += picture.pixel(x, y) != background;
+        QVERIFY2(written > 200, "the canvas is blank");
         // Back to ordinary points: the triangle and c′(t) again, no note.
         tab.pointEditor()->setPoints({{0, 0}, {1, 2}, {3, 2}}, QStringLiteral("small"));
+        QVERIFY(tab.canvas()->notice().isEmpty());
+        QVERIFY(tab.canvas()->contentDrawable());
         const QString again = tab.exactPanel()->plainText();
         QVERIFY2(!again.contains(QStringLiteral("too large")) && again.contains(QStringLiteral("c′(t) = ")), qPrintable(again));
     }

@@ -3310,4 +3310,11 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
             <translation>No es pot escriure la còpia automàtica «%1»: %2</translation>
         </message>
     </context>
+    <context>
+        <name>granota::ui::CurveCanvas</name>
+        <message>
+            <source>These points are too large to draw: the canvas shows coordinates up to about ±%1. Their values are in the table; bring them closer to the origin to see the curve.</source>
+            <translation>Aquests punts són massa grans per dibuixar-los: el llenç mostra coordenades fins a uns ±%1. Els seus valors són a la taula; acosteu-los a l'origen per veure la corba.</translation>
+        </message>
+    </context>
 </TS>

@@ -3310,4 +3310,11 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
             <translation>Cannot write the autosave “%1”: %2</translation>
         </message>
     </context>
+    <context>
+        <name>granota::ui::CurveCanvas</name>
+        <message>
+            <source>These points are too large to draw: the canvas shows coordinates up to about ±%1. Their values are in the table; bring them closer to the origin to see the curve.</source>
+            <translation>These points are too large to draw: the canvas shows coordinates up to about ±%1. Their values are in the table; bring them closer to the origin to see the curve.</translation>
+        </message>
+    </context>
 </TS>

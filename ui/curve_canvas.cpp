@@ -50,9 +50,45 @@ void CurveCanvas::setStyleScale(double scale)
     update();
 }
 
+namespace {
+
+bool drawable(const QRectF& r, double maxSpan)
+{
+    const double w = r.width(), h = r.height(), x = r.center().x(), y = r.center().y();
+    return std::isfinite(w) && std::isfinite(h) && std::isfinite(x) && std::isfinite(y) && w <= maxSpan && h <= maxSpan
+           && std::fabs(x) <= maxSpan && std::fabs(y) <= maxSpan;
+}
+
+} // namespace
+
+bool CurveCanvas::contentDrawable() const
+{
+    return drawable(m_content, kMaxDrawableSpan) && drawable(m_dataExtent, kMaxDrawableSpan);
+}
+
+void CurveCanvas::setDataExtent(const QRectF& modelBounds)
+{
+    m_dataExtent = modelBounds;
+    update();
+}
+
+QString CurveCanvas::notice() const
+{
+    if (contentDrawable())
+        return QString();
+    return tr("These points are too large to draw: the canvas shows coordinates up to about ±%1. "
+              "Their values are in the table; bring them closer to the origin to see the curve.")
+        .arg(displaySignificant(kMaxDrawableSpan, 2));
+}
+
 void CurveCanvas::setContentBounds(const QRectF& modelBounds)
 {
     m_content = modelBounds;
+    m_dataExtent = modelBounds;
+    if (!contentDrawable()) { // keep the last view: fitting it to infinities would lose it
+        update();
+        return;
+    }
     if (!m_userMoved)
         m_view.fit(m_content, 40.0 * m_style.scale);
     update();
@@ -61,7 +97,8 @@ void CurveCanvas::setContentBounds(const QRectF& modelBounds)
 void CurveCanvas::fitToContent()
 {
     m_userMoved = false;
-    m_view.fit(m_content, 40.0 * m_style.scale);
+    if (contentDrawable())
+        m_view.fit(m_content, 40.0 * m_style.scale);
     update();
 }
 
@@ -92,6 +129,16 @@ void CurveCanvas::render(QPainter& painter, const QRectF& target)
     painter.fillRect(target, m_style.background);
     painter.setRenderHint(QPainter::Antialiasing, true);
     painter.setRenderHint(QPainter::TextAntialiasing, true);
+    if (const QString text = notice(); !text.isEmpty()) {
+        QFont font = painter.font();
+        font.setPointSizeF(font.pointSizeF() * m_style.scale);
+        painter.setFont(font);
+        painter.setPen(palette().color(QPalette::WindowText));
+        const QRectF box = target.adjusted(target.width() * 0.1, 0, -target.width() * 0.1, 0);
+        painter.drawText(box, Qt::AlignCenter | Qt::TextWordWrap, text);
+        painter.restore();
+        return;
+    }
     if (m_gridVisible)
         drawGrid(painter, view);
     for (const auto& layer : m_layers) {
@@ -169,7 +216,7 @@ void CurveCanvas::paintEvent(QPaintEvent*)
 void CurveCanvas::resizeEvent(QResizeEvent* event)
 {
     m_view.setViewport(rect());
-    if (!m_userMoved)
+    if (!m_userMoved && contentDrawable())
         m_view.fit(m_content, 40.0 * m_style.scale);
     QWidget::resizeEvent(event);
 }

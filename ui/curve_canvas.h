@@ -37,6 +37,17 @@ public:
     /// Fits the view to the content again (View ▸ Fit, or after loading).
     void fitToContent();
     void zoom(double factor);
+    /// The extent of what is drawn now (the points as they are edited), without refitting the
+    /// view: it only decides whether the content can be drawn (contentDrawable()).
+    void setDataExtent(const QRectF& modelBounds);
+    /// Whether the content can be drawn at all: its extent is finite and within what the view
+    /// can show (kMaxDrawableSpan). Control points near ±1e308 cannot: the canvas then shows
+    /// notice() instead of a blank or a wrong picture.
+    bool contentDrawable() const;
+    /// The text shown instead of the drawing when the content cannot be drawn; empty otherwise.
+    QString notice() const;
+    /// The widest span of content the canvas draws: the smallest scale over a large screen.
+    static constexpr double kMaxDrawableSpan = 1e12;
     bool gridVisible() const { return m_gridVisible; }
     void setGridVisible(bool on);
 
@@ -65,6 +76,7 @@ private:
     CanvasStyle m_style;
     std::vector<Layer> m_layers;
     QRectF m_content{-1, -1, 2, 2};
+    QRectF m_dataExtent{-1, -1, 2, 2};
     bool m_userMoved = false; ///< once the user pans or zooms, new content no longer refits
     bool m_gridVisible = true;
     bool m_panning = false;

@@ -410,6 +410,7 @@ void DeCasteljauTab::buildLayers()
 
 void DeCasteljauTab::pointsChanged()
 {
+    m_canvas->setDataExtent(pointBounds()); // points near ±1e308 get a notice, not a blank canvas
     const auto& points = m_editor->points();
     if (points.empty())
         return;

@@ -11,7 +11,7 @@ namespace granota::cli {
 Error writeError(const std::string& what, int errnoValue)
 {
     return makeError(ErrorCode::InvalidInput,
-                     "cannot write " + what + ": " + (errnoValue != 0 ? std::strerror(errnoValue) : "the write failed"));
+                     "cannot write " + what + ": " + (errnoValue != 0 ? systemErrorText(errnoValue) : "the write failed"));
 }
 
 Expected<bool> writeFile(const std::string& path, std::string_view bytes)
