@@ -1,5 +1,5 @@
 // granota: the desktop application (docs/tabs.md, docs/classroom.md).
-#include "core/scene.h"
+#include "core/softbody/scenes/scene.h"
 #include "ui/frog_tab.h"
 #include "ui/language.h"
 #include "ui/main_window.h"

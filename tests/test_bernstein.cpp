@@ -1,8 +1,8 @@
 // Bernstein polynomials (Def 2.5): Ex 2.4's expansions, Lemma 2.1, partition of unity,
 // symmetry, Prop 2.1 (De Casteljau = Bernstein) and Ex 2.5/2.6 (Def 2.6).
-#include "core/bernstein.h"
-#include "core/de_casteljau.h"
-#include "core/polynomial_text.h"
+#include "core/curves/bezier/bernstein.h"
+#include "core/curves/bezier/de_casteljau.h"
+#include "core/exact/polynomial_text.h"
 
 #include <QtTest>
 

@@ -1,10 +1,10 @@
-// The live property checks of the Bernstein tab (core/bernstein_properties.h): partition of
+// The live property checks of the Bernstein tab (core/curves/bezier/bernstein_properties.h): partition of
 // unity, symmetry and Lemma 2.1 as residuals and as exact identities, and Def 2.6 written
 // term by term as in Ex 2.5 and Ex 2.6.
-#include "core/bernstein.h"
-#include "core/bernstein_properties.h"
-#include "core/polynomial_text.h"
-#include "core/power_basis.h"
+#include "core/curves/bezier/bernstein.h"
+#include "core/curves/bezier/bernstein_properties.h"
+#include "core/exact/polynomial_text.h"
+#include "core/curves/bezier/power_basis.h"
 
 #include <QtTest>
 

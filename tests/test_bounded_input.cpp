@@ -1,8 +1,8 @@
 // Reading untrusted files with a bound on the bytes read, and quoting untrusted text in
 // messages (issue 12, items 8 and 13).
-#include "core/bounded_file.h"
-#include "core/display_text.h"
-#include "core/input_limits.h"
+#include "core/base/bounded_file.h"
+#include "core/base/display_text.h"
+#include "core/base/input_limits.h"
 #include "catalan_locale.h"
 
 #include <QTemporaryDir>

@@ -5,11 +5,11 @@
 #include "catalan_locale.h"
 #include "cli_runner.h"
 
-#include "core/json.h"
-#include "core/point_list.h"
-#include "core/polynomial_text.h"
-#include "core/rational.h"
-#include "core/scene.h"
+#include "core/io/json.h"
+#include "core/io/point_list.h"
+#include "core/exact/polynomial_text.h"
+#include "core/exact/rational.h"
+#include "core/softbody/scenes/scene.h"
 
 #include <QDir>
 #include <QFile>

@@ -1,10 +1,10 @@
 // Catmull-Rom curves (§2.2): the thesis's examples exactly as printed (Ex 2.11, Ex 2.12,
 // Ex 2.13), the properties it proves (partition of unity, interpolation, Prop 2.3), and the
 // extensions (centripetal/chordal spacing, extreme input, Processing's curveTightness).
-#include "core/catmull_rom.h"
-#include "core/continuity_check.h"
-#include "core/polynomial_text.h"
-#include "core/rational.h"
+#include "core/curves/splines/catmull_rom.h"
+#include "core/curves/splines/continuity_check.h"
+#include "core/exact/polynomial_text.h"
+#include "core/exact/rational.h"
 
 #include <QtTest>
 

@@ -295,7 +295,7 @@ private slots:
         QVERIFY2(!r.out.contains("null") && !r.out.toLower().contains("nan") && !r.out.contains("inf"), r.out.constData());
     }
 
-    // --points-file is read with a bound (core/input_limits.h): a device that never ends
+    // --points-file is read with a bound (core/base/input_limits.h): a device that never ends
     // is refused at 64 MB, a folder is named as one, not as a file without points.
     void pointsFileBounded()
     {

@@ -1,11 +1,11 @@
 // The C² cubic spline of Def 2.3 (natural ends) and the continuity check that exposes the
 // slip in Ex 2.1. Expected coefficients were computed by hand (and re-checked with a
 // dense Gaussian elimination in exact fractions, not with this code).
-#include "core/continuity_check.h"
-#include "core/cubic_spline.h"
-#include "core/piecewise_polynomial.h"
-#include "core/polynomial_text.h"
-#include "core/rational.h"
+#include "core/curves/splines/continuity_check.h"
+#include "core/curves/splines/cubic_spline.h"
+#include "core/curves/splines/piecewise_polynomial.h"
+#include "core/exact/polynomial_text.h"
+#include "core/exact/rational.h"
 
 #include <QtTest>
 

@@ -1,5 +1,5 @@
 // The shape of data points before fitting: coincident points, zero chords, collinearity.
-#include "core/data_shape.h"
+#include "core/curves/fitting/data_shape.h"
 
 #include <QtTest>
 

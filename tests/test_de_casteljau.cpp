@@ -1,10 +1,10 @@
 // De Casteljau's algorithm (Def 2.4): the tables of Ex 2.2 and Ex 2.3 exactly as printed,
 // tangent, split, degree elevation, the power basis, and accuracy at degree 40.
-#include "core/bernstein.h"
-#include "core/de_casteljau.h"
-#include "core/degree_elevation.h"
-#include "core/power_basis.h"
-#include "core/polynomial_text.h"
+#include "core/curves/bezier/bernstein.h"
+#include "core/curves/bezier/de_casteljau.h"
+#include "core/curves/bezier/degree_elevation.h"
+#include "core/curves/bezier/power_basis.h"
+#include "core/exact/polynomial_text.h"
 
 #include <QtTest>
 

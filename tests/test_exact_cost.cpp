@@ -1,10 +1,10 @@
-// The cost of exact work is estimated before it is done (core/exact_cost.h): the CLI's
+// The cost of exact work is estimated before it is done (core/exact/exact_cost.h): the CLI's
 // --exact refuses what would run for minutes, at once, and still answers exactly just
 // inside; the estimate grows as the algorithms do.
 #include "cli_runner.h"
 
-#include "core/exact_cost.h"
-#include "core/least_squares_fit.h"
+#include "core/exact/exact_cost.h"
+#include "core/curves/fitting/least_squares_fit.h"
 
 #include <QtTest>
 

@@ -1,11 +1,11 @@
 // resources/examples/chapter2.json — the data behind the Examples menu — reproduces what
 // the thesis prints when run through the core, example by example.
-#include "core/catmull_rom.h"
-#include "core/continuity_check.h"
-#include "core/de_casteljau.h"
-#include "core/least_squares_fit.h"
-#include "core/power_basis.h"
-#include "core/polynomial_text.h"
+#include "core/curves/splines/catmull_rom.h"
+#include "core/curves/splines/continuity_check.h"
+#include "core/curves/bezier/de_casteljau.h"
+#include "core/curves/fitting/least_squares_fit.h"
+#include "core/curves/bezier/power_basis.h"
+#include "core/exact/polynomial_text.h"
 
 #include <QtTest>
 

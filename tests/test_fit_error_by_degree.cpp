@@ -1,6 +1,6 @@
 // The error against degree (Prop 2.2 for every n): least-squares optimality over nested
 // spaces makes it non-increasing for fixed parameters; the budget bounds the work.
-#include "core/fit_error_by_degree.h"
+#include "core/curves/fitting/fit_error_by_degree.h"
 
 #include <QtTest>
 

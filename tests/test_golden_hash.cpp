@@ -4,8 +4,8 @@
 // after every step. The constants below hold in the release and the debug-asan builds
 // alike; anything that changes the solver's results must change them on purpose (run the
 // test, read the new value it prints, and say in the commit why the results moved).
-#include "core/scene.h"
-#include "core/simulation.h"
+#include "core/softbody/scenes/scene.h"
+#include "core/softbody/simulation.h"
 
 #include <QtTest>
 

@@ -1,8 +1,8 @@
 // The Bernstein tab (docs/tabs.md): Ex 2.4's polynomials, the weights of Def 2.6 applied to
 // the De Casteljau tab's points, the shared t in both directions, Ex 2.5/2.6 expanded as
 // the thesis prints them, the property checks, and the all-degrees plot.
-#include "core/bernstein.h"
-#include "core/worked_examples.h"
+#include "core/curves/bezier/bernstein.h"
+#include "core/io/worked_examples.h"
 #include "ui/decasteljau_parameter_control.h"
 #include "ui/bernstein_tab.h"
 #include "ui/decasteljau_tab.h"

@@ -14,7 +14,7 @@
 #include "ui/number_text.h"
 #include "ui/tab_page.h"
 
-#include "core/scene.h"
+#include "core/softbody/scenes/scene.h"
 
 #include <QApplication>
 #include <QDoubleSpinBox>

@@ -2,9 +2,9 @@
 // panel, Ex 2.1's slip exposed, mouse drags with undo, the tension list and its refusals,
 // the segment counts of Def 2.10, Prop 2.3 at every knot, interpolation, documents, and the
 // stiff cases of docs/extreme-cases.md.
-#include "core/catmull_rom.h"
-#include "core/segment_joins.h"
-#include "core/worked_examples.h"
+#include "core/curves/splines/catmull_rom.h"
+#include "core/curves/splines/segment_joins.h"
+#include "core/io/worked_examples.h"
 #include "ui/catmull_rom_tab.h"
 #include "ui/curve_canvas.h"
 #include "ui/exact_panel.h"

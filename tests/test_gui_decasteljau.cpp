@@ -4,10 +4,10 @@
 // elevation, the shared parameter t, and documents that round-trip or are refused whole.
 #include "cli_runner.h"
 
-#include "core/de_casteljau.h"
-#include "core/polynomial_text.h"
-#include "core/rational.h"
-#include "core/worked_examples.h"
+#include "core/curves/bezier/de_casteljau.h"
+#include "core/exact/polynomial_text.h"
+#include "core/exact/rational.h"
+#include "core/io/worked_examples.h"
 #include "ui/curve_canvas.h"
 #include "ui/decasteljau_parameter_control.h"
 #include "ui/decasteljau_tab.h"

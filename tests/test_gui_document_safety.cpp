@@ -3,7 +3,7 @@
 // documents are refused with a message, an autosave that was not recovered is never
 // deleted or overwritten, recovery goes back into the document the autosave belongs to,
 // a failing autosave says so, and devices are read with a bound.
-#include "core/input_limits.h"
+#include "core/base/input_limits.h"
 #include "ui/autosave.h"
 #include "ui/document.h"
 #include "ui/fit_tab.h"

@@ -2,10 +2,10 @@
 // (with its slips corrected and noted), dragging and undo, the readouts against the core,
 // the normal equations breaking where QR does not, the degree limit n ≤ k, CSV import,
 // documents, and the error-against-degree plot (LS optimality over nested spaces).
-#include "core/exact_cost.h"
-#include "core/least_squares_fit.h"
-#include "core/rational.h"
-#include "core/worked_examples.h"
+#include "core/exact/exact_cost.h"
+#include "core/curves/fitting/least_squares_fit.h"
+#include "core/exact/rational.h"
+#include "core/io/worked_examples.h"
 #include "ui/curve_canvas.h"
 #include "ui/exact_panel.h"
 #include "ui/fit_exact_view.h"
@@ -505,7 +505,7 @@ private slots:
 
     void anOversizedExactFitFallsBackToDecimals()
     {
-        // The exact fit is estimated before it is done (core/exact_cost.h); beyond the budget
+        // The exact fit is estimated before it is done (core/exact/exact_cost.h); beyond the budget
         // the panel shows decimals and says why instead of freezing.
         FitTab tab;
         QVERIFY(loadEx(tab, "2.7"));

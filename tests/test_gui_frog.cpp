@@ -1,7 +1,7 @@
 // The frog lab tab (docs/scenes.md): stepping, grabbing and spawning through the canvas's own
 // mouse and key events, the scene's own parameters applied live and undoably, every scene on
 // both solvers, the frame export and the document round trip.
-#include "core/simulation.h"
+#include "core/softbody/simulation.h"
 #include "ui/frog_art.h"
 #include "ui/frog_canvas.h"
 #include "ui/frog_parameters_panel.h"

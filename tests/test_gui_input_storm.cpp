@@ -1089,7 +1089,7 @@ private slots:
 
     // Seed 3, event #55: “1e-320” typed into a cell of the De Casteljau point table; looking
     // for a small fraction of the subnormal handed GMP floor(inf), and SIGFPE stopped the
-    // program (core/rational_approximation.cpp; test_rational, test_gui_fit).
+    // program (core/exact/rational_approximation.cpp; test_rational, test_gui_fit).
     void seed3SubnormalTypedIntoTheTable() { runStorm(3, 56); }
 
     // Seed 31, event #24: “1e308” typed into the De Casteljau table, then Ctrl+0 (fit the

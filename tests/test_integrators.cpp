@@ -1,7 +1,7 @@
 // The integrators of chapter 3 and §4.2 against problems with known solutions: constant
 // gravity (exact for Verlet and the MRUA update up to the start) and the harmonic
 // oscillator (orders of convergence: Euler 1, Verlet 2, RK4 4; energy behaviour).
-#include "core/integrators.h"
+#include "core/softbody/integrators.h"
 
 #include <QtTest>
 

@@ -1,5 +1,5 @@
 // The JSON reader/writer behind scenes, examples and the CLI's output.
-#include "core/json.h"
+#include "core/io/json.h"
 
 #include "catalan_locale.h"
 

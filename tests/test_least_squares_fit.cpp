@@ -2,11 +2,11 @@
 // chord-length parameters of Ex 2.9/2.10 (with the distances of the definition, not the
 // thesis's slips), the optimality of Prop 2.2, and the numerical behaviour the thesis does
 // not discuss: conditioning, rank deficiency, extreme data, parameter correction.
-#include "core/least_squares_fit.h"
-#include "core/parametrization.h"
-#include "core/polynomial.h"
-#include "core/rational.h"
-#include "core/rational_matrix.h"
+#include "core/curves/fitting/least_squares_fit.h"
+#include "core/curves/fitting/parametrization.h"
+#include "core/exact/polynomial.h"
+#include "core/exact/rational.h"
+#include "core/exact/rational_matrix.h"
 
 #include <Eigen/Dense>
 #include <QElapsedTimer>

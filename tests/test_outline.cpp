@@ -1,10 +1,10 @@
 // Outlines for drawing (§4.9–4.12, §4.16): Processing's curveVertex shapes, the thick
 // legs, the thesis's precomputed Bézier points and the per-frame least-squares fit.
-#include "core/least_squares_fit.h"
-#include "core/outline.h"
-#include "core/polygon_area.h"
-#include "core/point_in_polygon.h"
-#include "core/regular_polygon.h"
+#include "core/curves/fitting/least_squares_fit.h"
+#include "core/softbody/outline.h"
+#include "core/softbody/polygon_area.h"
+#include "core/softbody/point_in_polygon.h"
+#include "core/softbody/regular_polygon.h"
 
 #include <QtTest>
 

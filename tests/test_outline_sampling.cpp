@@ -1,9 +1,9 @@
-// The live canvas's outlines (core/outline_sampling.h) against the reference outlines of
-// core/outline.h and de_casteljau.h: the same points, and no allocation once warm.
-#include "core/de_casteljau.h"
-#include "core/outline.h"
-#include "core/outline_sampling.h"
-#include "core/regular_polygon.h"
+// The live canvas's outlines (core/softbody/outline_sampling.h) against the reference outlines of
+// core/softbody/outline.h and de_casteljau.h: the same points, and no allocation once warm.
+#include "core/curves/bezier/de_casteljau.h"
+#include "core/softbody/outline.h"
+#include "core/softbody/outline_sampling.h"
+#include "core/softbody/regular_polygon.h"
 
 #include <QtTest>
 

@@ -1,8 +1,8 @@
 // Reading points: inline lists, CSV and JSON files; every coordinate exact; every kind of
 // bad input a clear error naming where it is.
-#include "core/input_limits.h"
-#include "core/point_list.h"
-#include "core/polynomial_text.h"
+#include "core/base/input_limits.h"
+#include "core/io/point_list.h"
+#include "core/exact/polynomial_text.h"
 
 #include "catalan_locale.h"
 
@@ -166,7 +166,7 @@ private slots:
         QVERIFY2(j.error().message.find("\\x1b") != std::string::npos, j.error().message.c_str());
     }
 
-    // One limit for every reader, shared by the CLI and the GUI (core/input_limits.h).
+    // One limit for every reader, shared by the CLI and the GUI (core/base/input_limits.h).
     void atMostMaxDataPoints_data()
     {
         QTest::addColumn<bool>("asJson");

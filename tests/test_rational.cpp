@@ -1,8 +1,8 @@
 // Exact rationals: parsing and printing, the ground every exact example stands on.
-#include "core/polynomial.h"
-#include "core/polynomial_text.h"
-#include "core/rational.h"
-#include "core/rational_approximation.h"
+#include "core/exact/polynomial.h"
+#include "core/exact/polynomial_text.h"
+#include "core/exact/rational.h"
+#include "core/exact/rational_approximation.h"
 
 #include <QtTest>
 

@@ -1,7 +1,7 @@
 // Scenes as data: every scene of docs/scenes.md by name, in the thesis's order, with exactly
 // the components it needs, its parameters only, and --set checked.
-#include "core/scene.h"
-#include "core/scene_layout.h"
+#include "core/softbody/scenes/scene.h"
+#include "core/softbody/scenes/scene_layout.h"
 
 #include <QtTest>
 

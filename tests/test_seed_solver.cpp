@@ -1,8 +1,8 @@
 // The `seed` solver: Annex II's Poligon, Pota and Granota reproduced headless (§4.2–4.16).
 // Checked against traces of the seed itself (reference/SeedFrog.java, single precision),
 // on extreme settings (docs/extreme-cases.md), and for the interaction of Annex II (grab, respawn).
-#include "core/seed_frog.h"
-#include "core/seed_trace.h"
+#include "core/softbody/seed/seed_frog.h"
+#include "core/softbody/seed/seed_trace.h"
 
 #include <QtTest>
 
@@ -367,7 +367,7 @@ private slots:
 
     void fourAndEightLanesAgree()
     {
-        // With AVX2 the float body steps eight vertices at a time (core/seed_lanes_avx2.h),
+        // With AVX2 the float body steps eight vertices at a time (core/softbody/seed/seed_lanes_avx2.h),
         // otherwise four; both are the seed's operations lane by lane, so a grab, a drag, a
         // respawn and 600 steps write the same bytes, and four lanes follow the reference.
         qInfo("eight lanes on this machine: %s", seedWideLanes() ? "yes" : "no");

@@ -1,8 +1,8 @@
 // The values at the joins of a segmented curve: Prop 2.3 (uniform Catmull-Rom curves are C¹,
 // the tangent at a join is τ(q_{m+1} − q_{m−1}) from both sides), and G¹ (parallel, unequal
 // tangents) for centripetal spacing.
-#include "core/catmull_rom.h"
-#include "core/segment_joins.h"
+#include "core/curves/splines/catmull_rom.h"
+#include "core/curves/splines/segment_joins.h"
 
 #include <QtTest>
 

@@ -1,8 +1,8 @@
 // Ex 2.1's slip: s₂ as printed lacks +1/53. The correction finds exactly that constant, and
 // the corrected spline passes the continuity check of Def 2.3; nothing else is "corrected".
-#include "core/continuity_check.h"
-#include "core/cubic_spline.h"
-#include "core/spline_offset_correction.h"
+#include "core/curves/splines/continuity_check.h"
+#include "core/curves/splines/cubic_spline.h"
+#include "core/curves/splines/spline_offset_correction.h"
 
 #include <QtTest>
 

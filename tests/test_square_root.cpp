@@ -1,6 +1,6 @@
 // Square roots in simplest radical form: the chord lengths of Ex 2.9 and Ex 2.10.
-#include "core/rational.h"
-#include "core/square_root.h"
+#include "core/exact/rational.h"
+#include "core/exact/square_root.h"
 
 #include <QtTest>
 

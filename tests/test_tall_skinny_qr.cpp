@@ -1,11 +1,11 @@
 // Fitting a million points (issue: speed): the blocked QR of [M | Q] and the block-wise
 // Bernstein matrix must give what the plain constructions give — same normal matrix, same
 // error, the known control points back — only faster.
-#include "core/bernstein.h"
-#include "core/bernstein_block.h"
-#include "core/de_casteljau.h"
-#include "core/least_squares_fit.h"
-#include "core/tall_skinny_qr.h"
+#include "core/curves/bezier/bernstein.h"
+#include "core/curves/fitting/bernstein_block.h"
+#include "core/curves/bezier/de_casteljau.h"
+#include "core/curves/fitting/least_squares_fit.h"
+#include "core/curves/fitting/tall_skinny_qr.h"
 
 #include <QTest>
 

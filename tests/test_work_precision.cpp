@@ -1,6 +1,6 @@
 // The work-precision reports of docs/work-precision.md teach what theory says: the numbers are checked
 // here (orders of convergence, who loses digits where), never the times.
-#include "core/work_precision.h"
+#include "core/reports/work_precision.h"
 
 #include <QTest>
 

@@ -1,8 +1,8 @@
 // The stable solver allocates nothing per step once its contact lists have reached their
 // working size: every global operator new of this test binary is counted.
-#include "core/scene.h"
-#include "core/simulation.h"
-#include "core/xpbd_world.h"
+#include "core/softbody/scenes/scene.h"
+#include "core/softbody/simulation.h"
+#include "core/softbody/xpbd/xpbd_world.h"
 
 #include <QtTest>
 

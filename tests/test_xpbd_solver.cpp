@@ -1,13 +1,13 @@
 // The `stable` solver (XPBD with substeps): exact area, stiff and extreme settings,
 // recovery, grabbing, obstacles, many bodies, chains, determinism and energy.
-#include "core/frog_params.h"
-#include "core/point_in_polygon.h"
-#include "core/polygon_area.h"
-#include "core/regular_polygon.h"
-#include "core/xpbd_broad_phase.h"
-#include "core/xpbd_chain.h"
-#include "core/xpbd_constraints.h"
-#include "core/xpbd_world.h"
+#include "core/softbody/scenes/frog_params.h"
+#include "core/softbody/point_in_polygon.h"
+#include "core/softbody/polygon_area.h"
+#include "core/softbody/regular_polygon.h"
+#include "core/softbody/xpbd/xpbd_broad_phase.h"
+#include "core/softbody/xpbd/xpbd_chain.h"
+#include "core/softbody/xpbd/xpbd_constraints.h"
+#include "core/softbody/xpbd/xpbd_world.h"
 
 #include <QtTest>
 

@@ -1,12 +1,12 @@
 #include "ui/bernstein_tab.h"
 #include "ui/number_text.h"
 
-#include "core/bernstein.h"
-#include "core/de_casteljau.h"
-#include "core/polynomial_text.h"
-#include "core/rational.h"
-#include "core/rational_approximation.h"
-#include "core/worked_examples.h"
+#include "core/curves/bezier/bernstein.h"
+#include "core/curves/bezier/de_casteljau.h"
+#include "core/exact/polynomial_text.h"
+#include "core/exact/rational.h"
+#include "core/exact/rational_approximation.h"
+#include "core/io/worked_examples.h"
 #include "ui/canvas_style.h"
 #include "ui/decasteljau_parameter_control.h"
 #include "ui/decasteljau_tab.h"
@@ -256,7 +256,7 @@ void BernsteinTab::rebuildBasisPlot()
     const double width = (m_presentation ? 1.8 : 1.0) * 2.0;
     int legendEntries = 0;
     for (int n = first; n <= m_degree; ++n) {
-        // Every graph of one degree at once through Lemma 2.1 (core/bernstein.h).
+        // Every graph of one degree at once through Lemma 2.1 (core/curves/bezier/bernstein.h).
         std::vector<QVector<double>> values(static_cast<std::size_t>(n + 1), QVector<double>(kPlotSamples));
         for (int j = 0; j < kPlotSamples; ++j) {
             const auto b = bernsteinAll(n, ts[j]);

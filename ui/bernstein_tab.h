@@ -9,7 +9,7 @@
 /// Settings (degree, mode) are not undoable: this tab's QUndoStack stays empty. Loading
 /// Ex 2.5 or Ex 2.6 changes the De Casteljau tab's points, one step on that tab's stack.
 
-#include "core/bernstein_properties.h"
+#include "core/curves/bezier/bernstein_properties.h"
 #include "ui/plot_drawable.h"
 #include "ui/tab_page.h"
 

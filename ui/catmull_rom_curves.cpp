@@ -1,7 +1,7 @@
 #include "ui/catmull_rom_curves.h"
 
-#include "core/cubic_spline.h"
-#include "core/de_casteljau.h"
+#include "core/curves/splines/cubic_spline.h"
+#include "core/curves/bezier/de_casteljau.h"
 
 namespace granota::ui {
 

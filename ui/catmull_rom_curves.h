@@ -3,13 +3,13 @@
 /// What the Catmull-Rom tab draws, computed by the core from the points and the settings:
 /// one curve per τ (Def 2.10 in the chosen mode and spacing), the other end mode for Ex 2.13's
 /// comparison, the Bézier curve of the same points (§2.3) and the natural cubic spline
-/// (Def 2.3). No mathematics here: only calls to core/catmull_rom.h, de_casteljau.h and
+/// (Def 2.3). No mathematics here: only calls to core/curves/splines/catmull_rom.h, de_casteljau.h and
 /// cubic_spline.h, and the translation of their errors.
 
-#include "core/expected.h"
-#include "core/polynomial.h"
-#include "core/rational.h"
-#include "core/vec2.h"
+#include "core/base/expected.h"
+#include "core/exact/polynomial.h"
+#include "core/exact/rational.h"
+#include "core/base/vec2.h"
 #include "ui/catmull_rom_settings.h"
 
 #include <QCoreApplication>

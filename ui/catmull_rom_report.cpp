@@ -1,12 +1,12 @@
 #include "ui/catmull_rom_report.h"
 
-#include "core/continuity_check.h"
-#include "core/cubic_spline.h"
-#include "core/polynomial_text.h"
-#include "core/rational_approximation.h"
-#include "core/segment_joins.h"
-#include "core/spline_offset_correction.h"
-#include "core/worked_examples.h"
+#include "core/curves/splines/continuity_check.h"
+#include "core/curves/splines/cubic_spline.h"
+#include "core/exact/polynomial_text.h"
+#include "core/exact/rational_approximation.h"
+#include "core/curves/splines/segment_joins.h"
+#include "core/curves/splines/spline_offset_correction.h"
+#include "core/io/worked_examples.h"
 #include "ui/exact_panel.h"
 
 #include <QRegularExpression>

@@ -4,8 +4,8 @@
 /// Def 2.10, the knot spacing and the comparisons of §2.3. A plain value, so that an undo
 /// step can hold the settings before and after, and the document can save them.
 
-#include "core/catmull_rom.h"
-#include "core/rational.h"
+#include "core/curves/splines/catmull_rom.h"
+#include "core/exact/rational.h"
 
 #include <QJsonObject>
 #include <QString>

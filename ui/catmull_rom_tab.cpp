@@ -1,9 +1,9 @@
 #include "ui/catmull_rom_tab.h"
 #include "ui/number_text.h"
 
-#include "core/polynomial_text.h"
-#include "core/rational_approximation.h"
-#include "core/worked_examples.h"
+#include "core/exact/polynomial_text.h"
+#include "core/exact/rational_approximation.h"
+#include "core/io/worked_examples.h"
 #include "ui/catmull_rom_commands.h"
 #include "ui/catmull_rom_report.h"
 #include "ui/curve_canvas.h"

@@ -1,6 +1,6 @@
 #include "ui/decasteljau_parameter_control.h"
 
-#include "core/rational.h"
+#include "core/exact/rational.h"
 #include "ui/decimal_spin_box.h"
 #include "ui/number_text.h"
 

@@ -6,7 +6,7 @@
 /// elevation, and beside the canvas the point table and the exact triangle of P_i^r(t).
 /// The Bernstein tab shares this tab's control points and its t.
 
-#include "core/de_casteljau.h"
+#include "core/curves/bezier/de_casteljau.h"
 #include "ui/tab_page.h"
 
 #include <QString>

@@ -1,11 +1,11 @@
 #include "ui/fit_exact_view.h"
 #include "ui/number_text.h"
 
-#include "core/power_basis.h"
-#include "core/polynomial_text.h"
-#include "core/rational_approximation.h"
-#include "core/square_root.h"
-#include "core/worked_examples.h"
+#include "core/curves/bezier/power_basis.h"
+#include "core/exact/polynomial_text.h"
+#include "core/exact/rational_approximation.h"
+#include "core/exact/square_root.h"
+#include "core/io/worked_examples.h"
 #include "ui/exact_panel.h"
 
 #include <QStringList>

@@ -7,8 +7,8 @@
 /// (Ex 2.8's −1636/105, Ex 2.9's √85) noted where the data are the thesis's. It only
 /// formats: every value comes from the core.
 
-#include "core/exact_cost.h"
-#include "core/least_squares_fit.h"
+#include "core/exact/exact_cost.h"
+#include "core/curves/fitting/least_squares_fit.h"
 #include "ui/fit_settings_command.h"
 
 #include <QCoreApplication>
@@ -33,7 +33,7 @@ public:
         bool correctParameters = false;
         const FitResult* fit = nullptr;             ///< nullptr when the fit failed
         bool showMatrices = false;
-        /// The most estimated work of the exact fit (core/exact_cost.h); beyond it the
+        /// The most estimated work of the exact fit (core/exact/exact_cost.h); beyond it the
         /// results are shown in decimals with a note. Always kMaxExactWork in the tab.
         double exactBudget = kMaxExactWork;
     };

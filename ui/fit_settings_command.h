@@ -5,7 +5,7 @@
 /// PointsCommand for the points. Consecutive changes of the same setting merge into one
 /// step (spinning the degree from 2 to 9 is one undo).
 
-#include "core/least_squares_fit.h"
+#include "core/curves/fitting/least_squares_fit.h"
 
 #include <QUndoCommand>
 

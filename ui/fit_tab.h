@@ -6,9 +6,9 @@
 /// parameters t_i (optionally corrected by re-projection), its control points and control
 /// polygon, the residuals Q_i − α(t_i), the error readouts and cond₂(M), an "error against
 /// degree" plot, and the exact matrices of Ex 2.7 and Ex 2.8. Every computation is the core's
-/// (core/least_squares_fit.h, core/fit_error_by_degree.h); the tab draws and explains.
+/// (core/curves/fitting/least_squares_fit.h, core/curves/fitting/fit_error_by_degree.h); the tab draws and explains.
 
-#include "core/least_squares_fit.h"
+#include "core/curves/fitting/least_squares_fit.h"
 #include "ui/fit_settings_command.h"
 #include "ui/tab_page.h"
 
@@ -50,7 +50,7 @@ public:
     void zoom(double factor) override;
     void fitView() override;
 
-    /// Reads data points from a CSV or JSON file (core/point_list.h) as one undo step. On a
+    /// Reads data points from a CSV or JSON file (core/io/point_list.h) as one undo step. On a
     /// bad file returns false with a translated message in `error` and changes nothing.
     bool importFile(const QString& path, QString* error);
 

@@ -1,9 +1,9 @@
 #include "ui/frog_canvas.h"
 #include "ui/number_text.h"
 
-#include "core/outline.h"
-#include "core/outline_sampling.h"
-#include "core/point_in_polygon.h"
+#include "core/softbody/outline.h"
+#include "core/softbody/outline_sampling.h"
+#include "core/softbody/point_in_polygon.h"
 
 #include <QAbstractSpinBox>
 #include <QApplication>

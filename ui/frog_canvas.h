@@ -6,7 +6,7 @@
 /// the widget. The mouse grabs and the space bar spawns as in Annex II. Drawing reuses
 /// member buffers: a frame allocates nothing in this class once warm.
 
-#include "core/simulation.h"
+#include "core/softbody/simulation.h"
 #include "ui/canvas_style.h"
 #include "ui/drawable.h"
 #include "ui/frog_art.h"

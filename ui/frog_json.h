@@ -2,7 +2,7 @@
 /// \file frog_json.h
 /// The core's Json (scene files) and Qt's QJsonValue (the .granota document), both ways.
 
-#include "core/json.h"
+#include "core/io/json.h"
 
 #include <QJsonValue>
 

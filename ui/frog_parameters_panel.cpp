@@ -1,7 +1,7 @@
 #include "ui/frog_parameters_panel.h"
 #include "ui/decimal_spin_box.h"
 
-#include "core/scene.h"
+#include "core/softbody/scenes/scene.h"
 #include "ui/frog_json.h"
 
 #include <QComboBox>

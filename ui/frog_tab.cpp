@@ -1,7 +1,7 @@
 #include "ui/frog_tab.h"
 #include "ui/number_text.h"
 
-#include "core/outline.h"
+#include "core/softbody/outline.h"
 #include "ui/frog_canvas.h"
 #include "ui/frog_json.h"
 #include "ui/frog_parameters_panel.h"

@@ -4,8 +4,8 @@
 /// stage of chapter 4 and the future work of §5.2), the solver, pause / step / reset, the
 /// active scene's parameters applied live, and the overlays.
 
-#include "core/scene.h"
-#include "core/simulation.h"
+#include "core/softbody/scenes/scene.h"
+#include "core/softbody/simulation.h"
 #include "ui/tab_page.h"
 
 #include <QJsonValue>

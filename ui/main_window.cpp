@@ -1,6 +1,6 @@
 #include "ui/main_window.h"
 
-#include "core/worked_examples.h"
+#include "core/io/worked_examples.h"
 #include "ui/bernstein_tab.h"
 #include "ui/catmull_rom_tab.h"
 #include "ui/decasteljau_tab.h"

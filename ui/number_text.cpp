@@ -1,6 +1,6 @@
 #include "ui/number_text.h"
 
-#include "core/polynomial_text.h"
+#include "core/exact/polynomial_text.h"
 #include "ui/language.h"
 
 #include <cmath>

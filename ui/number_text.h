@@ -12,7 +12,7 @@
 /// a point in English, never a group separator. In Catalan a typed number may use either
 /// a comma or a point; a fraction such as 1/3 is read in both languages.
 
-#include "core/rational.h"
+#include "core/exact/rational.h"
 
 #include <QLocale>
 #include <QString>

@@ -3,7 +3,7 @@
 /// The undo step of every point edit: the points before and after (a handful of points, so
 /// storing both is simpler and safer than inverse operations).
 
-#include "core/vec2.h"
+#include "core/base/vec2.h"
 
 #include <QUndoCommand>
 

@@ -10,7 +10,7 @@
 /// one pixel otherwise; Shift ×10), Tab selects the next point. Every edit goes through the
 /// QUndoStack given to the constructor.
 
-#include "core/vec2.h"
+#include "core/base/vec2.h"
 
 #include <QColor>
 #include <QObject>

@@ -1,8 +1,8 @@
 #include "ui/point_table.h"
 
-#include "core/polynomial_text.h"
-#include "core/rational.h"
-#include "core/rational_approximation.h"
+#include "core/exact/polynomial_text.h"
+#include "core/exact/rational.h"
+#include "core/exact/rational_approximation.h"
 #include "ui/number_text.h"
 #include "ui/point_editor.h"
 

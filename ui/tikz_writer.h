@@ -3,7 +3,7 @@
 /// A TikZ picture for LaTeX slides (docs/tabs.md): polylines, points and labels in model
 /// coordinates, scaled to a given width. Tabs add what they draw; str() is the file.
 
-#include "core/vec2.h"
+#include "core/base/vec2.h"
 
 #include <QColor>
 #include <QString>

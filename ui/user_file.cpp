@@ -1,7 +1,7 @@
 #include "ui/user_file.h"
 
-#include "core/bounded_file.h"
-#include "core/input_limits.h"
+#include "core/base/bounded_file.h"
+#include "core/base/input_limits.h"
 
 #include <QCoreApplication>
 #include <QFile>

@@ -1,7 +1,7 @@
 #pragma once
 /// \file user_file.h
 /// Reading a file the user chose (a document, an autosave, data to fit) with the bound of
-/// core/input_limits.h on the bytes read, and a translated message naming what is wrong.
+/// core/base/input_limits.h on the bytes read, and a translated message naming what is wrong.
 
 #include <QByteArray>
 #include <QString>

@@ -3,7 +3,7 @@
 /// Model coordinates (y up, the thesis's plane) ↔ widget pixels (y down), with pan and zoom.
 /// The model never stores pixels: every point lives in model coordinates.
 
-#include "core/vec2.h"
+#include "core/base/vec2.h"
 
 #include <QPointF>
 #include <QRectF>

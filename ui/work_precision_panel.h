@@ -4,7 +4,7 @@
 /// progress, Cancel at any time; the plot (error against run time, log–log) and the lesson
 /// it teaches. The measurement runs in a worker thread, so the window never freezes.
 
-#include "core/work_precision.h"
+#include "core/reports/work_precision.h"
 
 #include <QWidget>
 

@@ -4,7 +4,7 @@
 /// method, with the knob's values written beside the markers. The same code draws the tab's
 /// plot and the CLI's SVG and PNG files.
 
-#include "core/work_precision.h"
+#include "core/reports/work_precision.h"
 
 #include <QString>
 

@@ -1,9 +1,9 @@
 #include "app/cli/arguments.h"
 
-#include "core/bounded_file.h"
-#include "core/display_text.h"
-#include "core/input_limits.h"
-#include "core/point_list.h"
+#include "core/base/bounded_file.h"
+#include "core/base/display_text.h"
+#include "core/base/input_limits.h"
+#include "core/io/point_list.h"
 
 namespace granota::cli {
 

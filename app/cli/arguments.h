@@ -4,8 +4,8 @@
 /// Each command declares its options; anything undeclared is an error (exit 2), so a typo
 /// never silently falls back to a default.
 
-#include "core/expected.h"
-#include "core/rational.h"
+#include "core/base/expected.h"
+#include "core/exact/rational.h"
 
 #include <map>
 #include <optional>

@@ -2,9 +2,9 @@
 #include "app/cli/command.h"
 #include "app/cli/finite_doubles.h"
 
-#include "core/bernstein.h"
-#include "core/exact_cost.h"
-#include "core/polynomial_text.h"
+#include "core/curves/bezier/bernstein.h"
+#include "core/exact/exact_cost.h"
+#include "core/exact/polynomial_text.h"
 
 #include <sstream>
 

@@ -3,10 +3,10 @@
 #include "app/cli/command.h"
 #include "app/cli/finite_doubles.h"
 
-#include "core/de_casteljau.h"
-#include "core/exact_cost.h"
-#include "core/power_basis.h"
-#include "core/polynomial_text.h"
+#include "core/curves/bezier/de_casteljau.h"
+#include "core/exact/exact_cost.h"
+#include "core/curves/bezier/power_basis.h"
+#include "core/exact/polynomial_text.h"
 
 #include <sstream>
 

@@ -5,7 +5,7 @@
 /// main() prints one of them.
 
 #include "app/cli/arguments.h"
-#include "core/json.h"
+#include "core/io/json.h"
 
 #include <string>
 

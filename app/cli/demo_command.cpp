@@ -2,8 +2,8 @@
 // in t — what `granota` shows first, for machines without a display.
 #include "app/cli/command.h"
 
-#include "core/de_casteljau.h"
-#include "core/polynomial_text.h"
+#include "core/curves/bezier/de_casteljau.h"
+#include "core/exact/polynomial_text.h"
 
 #include <sstream>
 

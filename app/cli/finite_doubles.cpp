@@ -1,6 +1,6 @@
 #include "app/cli/finite_doubles.h"
 
-#include "core/polynomial_text.h"
+#include "core/exact/polynomial_text.h"
 
 #include <cmath>
 

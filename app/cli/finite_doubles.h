@@ -6,9 +6,9 @@
 /// approach as the Catmull-Rom segments and the least-squares fit, which check every
 /// number they return with std::isfinite; here in one place for every command.
 
-#include "core/expected.h"
-#include "core/json.h"
-#include "core/rational.h"
+#include "core/base/expected.h"
+#include "core/io/json.h"
+#include "core/exact/rational.h"
 
 #include <optional>
 #include <string>

@@ -3,8 +3,8 @@
 #include "app/cli/command.h"
 #include "app/cli/finite_doubles.h"
 
-#include "core/least_squares_fit.h"
-#include "core/polynomial_text.h"
+#include "core/curves/fitting/least_squares_fit.h"
+#include "core/exact/polynomial_text.h"
 
 #include <sstream>
 

@@ -5,7 +5,7 @@
 #include "app/cli/command.h"
 #include "app/cli/finite_doubles.h"
 #include "app/cli/output_file.h"
-#include "core/display_text.h"
+#include "core/base/display_text.h"
 
 #include <cerrno>
 #include <cstdio>

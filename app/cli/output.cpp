@@ -1,6 +1,6 @@
 #include "app/cli/command.h"
 
-#include "core/polynomial_text.h"
+#include "core/exact/polynomial_text.h"
 
 namespace granota::cli {
 

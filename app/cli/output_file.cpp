@@ -1,6 +1,6 @@
 #include "app/cli/output_file.h"
 
-#include "core/display_text.h"
+#include "core/base/display_text.h"
 
 #include <cerrno>
 #include <cstdio>

@@ -4,7 +4,7 @@
 /// so that a failed write (a full disk, a closed pipe, a folder that cannot be written) is
 /// an error that says what could not be written and why, never a silent success.
 
-#include "core/expected.h"
+#include "core/base/expected.h"
 
 #include <string>
 #include <string_view>

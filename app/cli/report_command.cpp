@@ -3,8 +3,8 @@
 // the same plotting code as the tabs.
 #include "app/cli/command.h"
 #include "app/cli/output_file.h"
-#include "core/display_text.h"
-#include "core/work_precision.h"
+#include "core/base/display_text.h"
+#include "core/reports/work_precision.h"
 
 #include <QApplication>
 #include <QBuffer>

@@ -1,7 +1,7 @@
 #include "app/cli/scene_options.h"
 
-#include "core/display_text.h"
-#include "core/rational.h"
+#include "core/base/display_text.h"
+#include "core/exact/rational.h"
 
 #include <cmath>
 

@@ -4,7 +4,7 @@
 
 #include "app/cli/arguments.h"
 
-#include "core/simulation.h"
+#include "core/softbody/simulation.h"
 
 #include <memory>
 

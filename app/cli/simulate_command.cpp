@@ -3,9 +3,9 @@
 #include "app/cli/output_file.h"
 #include "app/cli/scene_options.h"
 
-#include "core/display_text.h"
-#include "core/polynomial_text.h"
-#include "core/simulation_trace.h"
+#include "core/base/display_text.h"
+#include "core/exact/polynomial_text.h"
+#include "core/softbody/simulation_trace.h"
 
 #include <cerrno>
 #include <fstream>

@@ -1,13 +1,13 @@
 // Google Benchmark: the curve hot paths (issue: speed). How cost grows with the size of the
 // work — degree, samples, data points — is printed by the Complexity() fits.
 //   build/bin/granota-bench --benchmark_filter='Fit|Outline|DeCasteljau'
-#include "core/bernstein.h"
-#include "core/catmull_rom.h"
-#include "core/de_casteljau.h"
-#include "core/least_squares_fit.h"
-#include "core/outline.h"
-#include "core/power_basis.h"
-#include "core/regular_polygon.h"
+#include "core/curves/bezier/bernstein.h"
+#include "core/curves/splines/catmull_rom.h"
+#include "core/curves/bezier/de_casteljau.h"
+#include "core/curves/fitting/least_squares_fit.h"
+#include "core/softbody/outline.h"
+#include "core/curves/bezier/power_basis.h"
+#include "core/softbody/regular_polygon.h"
 
 #include <benchmark/benchmark.h>
 

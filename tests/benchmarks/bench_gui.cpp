@@ -5,8 +5,8 @@
 // (repaint: paintEvent into the backing store). Both paint as the screen does
 // (repaint: paintEvent into the backing store).
 //   QT_QPA_PLATFORM=offscreen build/bin/granota-bench --benchmark_filter=Gui
-#include "core/scene.h"
-#include "core/simulation.h"
+#include "core/softbody/scenes/scene.h"
+#include "core/softbody/simulation.h"
 #include "ui/curve_canvas.h"
 #include "ui/decasteljau_tab.h"
 #include "ui/frog_canvas.h"

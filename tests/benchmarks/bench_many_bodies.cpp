@@ -13,7 +13,7 @@
 //    the broad phase and ~10 000 vertex contacts per substep, about one per vertex. Timed
 //    steps continue from that state (the pile stays a pile: nothing leaves it).
 //   build/bin/granota-bench --benchmark_filter=ManyBodies
-#include "core/simulation.h"
+#include "core/softbody/simulation.h"
 
 #include <benchmark/benchmark.h>
 

@@ -4,7 +4,7 @@
 //   build/bin/granota-bench --benchmark_filter=Frog
 // Compare with the seed in the same run:
 //   javac -d /tmp/seedfrog SeedFrog.java && java -cp /tmp/seedfrog SeedFrog 2000000
-#include "core/simulation.h"
+#include "core/softbody/simulation.h"
 
 #include <benchmark/benchmark.h>
 

@@ -12,26 +12,26 @@
 
 namespace granota::fuzz {
 
-/// core/json.h: parse → dump → parse → dump gives the same text (and the pretty form
+/// core/io/json.h: parse → dump → parse → dump gives the same text (and the pretty form
 /// reads back as the same value); every number read is finite.
 std::string checkJson(std::string_view input);
 
-/// core/point_list.h, all four readers on the same text: what one accepts, written back
+/// core/io/point_list.h, all four readers on the same text: what one accepts, written back
 /// in each form (inline "x,y;…", CSV, JSON) and read again, is the same list of exact
 /// rationals; written as the shortest doubles (as the exports write them) and read
 /// again, it is the same list of doubles.
 std::string checkPointList(std::string_view input);
 
-/// core/rational.h parseRational: toString of what it reads is in lowest terms and reads
+/// core/exact/rational.h parseRational: toString of what it reads is in lowest terms and reads
 /// back as the same rational; its double reads back as the same double.
 std::string checkRational(std::string_view input);
 
-/// core/polynomial_text.h parsePolynomial. The first byte picks the variable ('s' or 'x',
+/// core/exact/polynomial_text.h parsePolynomial. The first byte picks the variable ('s' or 'x',
 /// anything else 't': the ones Granota writes), the rest is the text: toText of what it reads reads back as
 /// the same polynomial and gives the same text again.
 std::string checkPolynomial(std::string_view input);
 
-/// core/scene.h: a scene (JSON text starting with '{', or the name of a built-in scene)
+/// core/softbody/scenes/scene.h: a scene (JSON text starting with '{', or the name of a built-in scene)
 /// on the first part, then any number of lines "--set key=value" applied in order.
 /// Every scene accepted (and after every setting accepted) has only finite numbers,
 /// survives sceneToJson → dump → parse → parseScene unchanged, and builds a simulation

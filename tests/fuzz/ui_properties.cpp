@@ -1,6 +1,6 @@
 #include "tests/fuzz/ui_properties.h"
 
-#include "core/point_list.h"
+#include "core/io/point_list.h"
 #include "ui/bernstein_tab.h"
 #include "ui/catmull_rom_tab.h"
 #include "ui/decasteljau_tab.h"

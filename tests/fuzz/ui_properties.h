@@ -19,7 +19,7 @@ void initUi();
 /// the same bytes (the fresh tabs accept what was saved: the same validation as opening it).
 std::string checkDocument(std::string_view input);
 
-/// The Fitting tab's Import CSV… (FitTab::importFile, which reads with core/point_list's
+/// The Fitting tab's Import CSV… (FitTab::importFile, which reads with core/io/point_list's
 /// parsePointFile): a refused file leaves the tab as it was and says why; an accepted one
 /// gives the tab at least 2 points, all finite, exactly the doubles of what the file says,
 /// and the tab's state then loads into another Fitting tab unchanged.

@@ -1,0 +1,46 @@
+#pragma once
+/// \file parametrization.h
+/// The parameters t_0 = 0 ≤ t_1 ≤ … ≤ t_k = 1 at which a fitted Bézier curve should pass
+/// near the data points Q_0..Q_k (§2.1.3, the criteria after Nota 2.2):
+///  - uniform: t_i = i/k (Ex 2.7, Ex 2.8, Matlab `BezParamEqui`);
+///  - chord length: t_i = Σ_{j≤i} d_j / Σ_j d_j with d_j = |Q_j − Q_{j−1}| (Ex 2.9, Ex 2.10,
+///    Matlab `BezParamProp`). The thesis's Matlab code uses |Q_j| and Ex 2.9 writes (1 − 7)
+///    where Q_3 has x = 8: Granota implements the definition, so Ex 2.9 has d_4 = 7√2;
+///  - centripetal (beyond the thesis): the same with √d_j.
+
+#include "core/exact/rational.h"
+#include "core/base/vec2.h"
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace granota {
+
+enum class Parametrization {
+    Uniform,     ///< t_i = i/k
+    ChordLength, ///< proportional to the distances between consecutive points
+    Centripetal, ///< proportional to the square roots of those distances
+};
+
+/// "uniform", "chord", "centripetal" (case-insensitive); nullopt for anything else.
+std::optional<Parametrization> parseParametrization(std::string_view text);
+/// The name parseParametrization() reads back.
+std::string toString(Parametrization p);
+
+/// The parameters t_0..t_k for the points q (k + 1 = q.size(); empty for no points, {0}
+/// for one). t_0 = 0 and t_k = 1 exactly, and the t_i never decrease; coincident
+/// consecutive points give equal parameters. When the total length is zero (all points
+/// coincide) or not finite, chord length and centripetal fall back to uniform and set
+/// *fellBackToUniform (when given) to true; otherwise it is set to false.
+std::vector<double> parameters(const std::vector<Point>& q, Parametrization p, bool* fellBackToUniform = nullptr);
+
+/// The same parameters exactly. Uniform always exists; chord length only when every
+/// distance d_j is rational (the squared distance is the square of a rational, see
+/// exactSqrt), centripetal only when every √d_j is rational; nullopt otherwise. Falls
+/// back to uniform, as above, when all the points coincide.
+std::optional<std::vector<Rational>> exactParameters(const std::vector<RPoint>& q, Parametrization p,
+                                                     bool* fellBackToUniform = nullptr);
+
+} // namespace granota

@@ -1,0 +1,55 @@
+#pragma once
+/// \file exact_cost.h
+/// How much work an exact computation (GMP rationals) would be, estimated before it is
+/// done, so that the CLI's --exact and the GUI's exact panels refuse, or fall back to
+/// decimals, rather than run for minutes with memory growing. The estimate is in bit
+/// operations: the number of rational operations times the bits (numerator plus
+/// denominator) of the numbers they work on, which grow as the algorithm goes:
+///
+/// - De Casteljau (Def 2.4) of degree n at t: level r holds n − r + 1 points whose
+///   coordinates have about b_P + r·b_t bits (each level multiplies by t and 1 − t once),
+///   so Σ_r 2(n − r + 1)(b_P + r·b_t) ≈ n²·b_P + n³·b_t/3.
+/// - The Bernstein values B_i^n(t) by Lemma 2.1: the same triangle, one coordinate, b_P = 0.
+/// - The exact least-squares fit (Lemma 2.2, Nota 2.2) of m points at degree n: the t_i
+///   written over one denominator L; an entry of M has about E_M = n·(b_L + 1) bits, one
+///   of MᵀM E = 2E_M + log₂ m; Gauss–Jordan on the (n + 1)² matrix MᵀM does (n + 1)³
+///   operations on numbers of up to (n + 1)·E bits, and M⁺ = (MᵀM)⁻¹Mᵀ another
+///   m(n + 1)² on those: m(n + 1)²E + (n + 1)⁴E + m(n + 1)³E, plus the points' bits b_Q.
+///
+/// GMP multiplies and reduces b-bit numbers in more than b steps (b log b, and gcds
+/// b log² b), so the estimate is a lower bound that grows more slowly than the time; the
+/// budget kMaxExactWork is set where the measured time reaches a few seconds on the
+/// reference machine (see docs/exact-cost.md for the measurements).
+
+#include "core/exact/rational.h"
+
+#include <string>
+#include <vector>
+
+namespace granota {
+
+/// The most estimated bit operations an exact computation may take: a few seconds on the
+/// reference machine (2 cores, 2026); beyond it the CLI refuses and the GUI shows decimals.
+constexpr double kMaxExactWork = 1e9;
+
+/// Bits of |numerator| plus bits of the denominator (1/2: 1 + 2 = 3).
+long bitLength(const Rational& q);
+/// The largest bitLength of any coordinate of the points (0 for none).
+long maxBitLength(const std::vector<RPoint>& points);
+
+/// De Casteljau's triangle of degree n at t, exactly, points of up to pointBits bits.
+double deCasteljauExactWork(int degree, long pointBits, long tBits);
+/// Every B_i^n(t) by Lemma 2.1, exactly.
+double bernsteinExactWork(int degree, long tBits);
+/// The exact fit of Lemma 2.2 at degree n with these parameters t_i and points of up to
+/// pointBits bits.
+double fitExactWork(int degree, const std::vector<Rational>& params, long pointBits);
+
+/// Whether an exact computation of this estimated work is done.
+inline bool exactWorkAllowed(double work, double budget = kMaxExactWork) { return work <= budget; }
+
+/// "the exact <what> would take about 3.2e+11 bit operations, more than 4e+09 (minutes,
+/// and memory growing): lower <lower>, or leave out --exact" — the CLI's refusal.
+std::string exactWorkRefusal(const std::string& what, double work, const std::string& lower);
+
+} // namespace granota

@@ -1,0 +1,99 @@
+#include "core/reports/work_precision.h"
+#include "core/base/display_text.h"
+
+#include "core/exact/polynomial_text.h"
+#include "core/reports/work_precision_reports.h"
+
+#include <cmath>
+
+namespace granota {
+
+const WorkPrecisionSeries* WorkPrecisionReport::find(std::string_view method) const
+{
+    for (const auto& s : series)
+        if (s.method == method)
+            return &s;
+    return nullptr;
+}
+
+std::vector<std::string> workPrecisionReportNames()
+{
+    return {"curve-sampling", "bezier-evaluation", "least-squares", "integrators", "soft-body"};
+}
+
+Expected<WorkPrecisionReport> runWorkPrecisionReport(std::string_view name, const WorkPrecisionOptions& options)
+{
+    if (name == "curve-sampling")
+        return reports::curveSampling(options);
+    if (name == "bezier-evaluation")
+        return reports::bezierEvaluation(options);
+    if (name == "least-squares")
+        return reports::leastSquares(options);
+    if (name == "integrators")
+        return reports::integrators(options);
+    if (name == "soft-body")
+        return reports::softBody(options);
+    std::string known;
+    for (const auto& n : workPrecisionReportNames())
+        known += (known.empty() ? "" : ", ") + n;
+    return makeError(ErrorCode::InvalidInput, "unknown report " + quotedForDisplay(name) + " (" + known + ", all)");
+}
+
+namespace {
+/// CSV fields never hold commas or quotes of their own in our reports, but be safe.
+std::string csvField(const std::string& s)
+{
+    if (s.find_first_of(",\"\n") == std::string::npos)
+        return s;
+    std::string out = "\"";
+    for (char c : s)
+        out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+std::string full(double v)
+{
+    return formatSignificant(v, 9);
+}
+} // namespace
+
+std::string workPrecisionCsv(const WorkPrecisionReport& report, const std::vector<std::string>& context)
+{
+    std::string out;
+    out += "# report: " + report.name + "\n";
+    out += "# title: " + report.title + "\n";
+    out += "# knob: " + report.knob + "\n";
+    out += "# error: " + report.error + "\n";
+    out += "# reference: " + report.reference + "\n";
+    out += "# lesson: " + report.lesson + "\n";
+    for (const auto& line : context)
+        out += "# " + line + "\n";
+    out += "method,knob,error,seconds\n";
+    for (const auto& s : report.series)
+        for (const auto& p : s.samples)
+            out += csvField(s.method) + "," + full(p.knob) + "," + full(p.error) + "," + full(p.seconds) + "\n";
+    return out;
+}
+
+double observedOrder(const WorkPrecisionSeries& series, double knobMin, double knobMax)
+{
+    double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const auto& p : series.samples) {
+        if (p.knob < knobMin || p.knob > knobMax || !(p.error > 0) || !(p.knob > 0))
+            continue;
+        const double x = std::log(p.knob), y = std::log(p.error);
+        n += 1;
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
+    }
+    const double d = n * sxx - sx * sx;
+    return n >= 2 && d != 0 ? (n * sxy - sx * sy) / d : std::nan("");
+}
+
+namespace reports {
+Error cancelled() { return makeError(ErrorCode::Cancelled, "cancelled"); }
+} // namespace reports
+
+} // namespace granota

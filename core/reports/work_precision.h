@@ -1,0 +1,66 @@
+#pragma once
+/// \file work_precision.h
+/// Error against run time for every numerical method (docs/work-precision.md): a report measures, for
+/// each method, the error against an independent reference (exact rationals, long double
+/// or a known analytic solution) and the run time, over a range of the method's knob
+/// (samples, degree, step size, substeps). The GUI plots it in the tab it belongs to; the
+/// CLI writes it as CSV, SVG and PNG (`granota-cli report NAME --out DIR`).
+
+#include "core/base/expected.h"
+
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace granota {
+
+struct WorkPrecisionSample {
+    double knob = 0;    ///< the method's setting: samples, degree, step size h, substeps
+    double error = 0;   ///< against the reference, in the report's unit
+    double seconds = 0; ///< run time of one call at this setting
+};
+
+struct WorkPrecisionSeries {
+    std::string method; ///< e.g. "De Casteljau", "normal equations", "Verlet"
+    std::vector<WorkPrecisionSample> samples;
+};
+
+struct WorkPrecisionReport {
+    std::string name;      ///< curve-sampling, bezier-evaluation, least-squares, integrators, soft-body
+    std::string title;     ///< English; the GUI translates it
+    std::string knob;      ///< what the knob is: "samples", "degree", "step h", "substeps"
+    std::string error;     ///< what the error is: "max distance to the curve", …
+    std::string reference; ///< what the error is measured against
+    std::string lesson;    ///< the one sentence the plot teaches
+    std::vector<WorkPrecisionSeries> series;
+
+    const WorkPrecisionSeries* find(std::string_view method) const;
+};
+
+struct WorkPrecisionOptions {
+    /// Each measurement repeats its work for at least this long (s). Tests use a tiny value:
+    /// they check the errors, never the times.
+    double minSecondsPerPoint = 2e-3;
+    /// Fewer and cheaper settings (tests, quick previews).
+    bool quick = false;
+    /// Called with the fraction done (0..1); returning false cancels the report.
+    std::function<bool(double)> progress;
+};
+
+/// curve-sampling, bezier-evaluation, least-squares, integrators, soft-body.
+std::vector<std::string> workPrecisionReportNames();
+
+/// Runs a report. Errors: an unknown name, or "cancelled" when `progress` returned false.
+Expected<WorkPrecisionReport> runWorkPrecisionReport(std::string_view name, const WorkPrecisionOptions& options = {});
+
+/// The report as CSV: `# key: value` header lines (title, knob, error, reference, lesson and
+/// each line of `context`, e.g. machine and build type), then `method,knob,error,seconds`.
+std::string workPrecisionCsv(const WorkPrecisionReport& report, const std::vector<std::string>& context);
+
+/// Least-squares slope of log(error) against log(knob) over the samples with knob in
+/// [knobMin, knobMax] and error > 0: the observed order of convergence (integrators:
+/// error ~ h^p gives slope p).
+double observedOrder(const WorkPrecisionSeries& series, double knobMin, double knobMax);
+
+} // namespace granota

@@ -1,0 +1,39 @@
+#pragma once
+/// \file work_precision_reports.h
+/// The five reports of docs/work-precision.md, one file each (report_*.cpp); run through
+/// runWorkPrecisionReport(), which checks the name and handles cancelling.
+
+#include "core/base/vec2.h"
+#include "core/reports/work_precision.h"
+
+#include <vector>
+
+namespace granota::reports {
+
+/// Progress and cancelling shared by the reports: `tick(done, total)` returns false when
+/// the user cancelled.
+class Progress {
+public:
+    explicit Progress(const WorkPrecisionOptions& options) : m_options(options) {}
+    bool tick(double done, double total) const
+    {
+        return !m_options.progress || m_options.progress(total > 0 ? done / total : 1.0);
+    }
+
+private:
+    const WorkPrecisionOptions& m_options;
+};
+
+Expected<WorkPrecisionReport> curveSampling(const WorkPrecisionOptions& options);
+Expected<WorkPrecisionReport> bezierEvaluation(const WorkPrecisionOptions& options);
+Expected<WorkPrecisionReport> leastSquares(const WorkPrecisionOptions& options);
+Expected<WorkPrecisionReport> integrators(const WorkPrecisionOptions& options);
+Expected<WorkPrecisionReport> softBody(const WorkPrecisionOptions& options);
+
+/// Reproducible control points with small integer coordinates in [−10, 10].
+std::vector<Point> reportControlPoints(int count, unsigned seed);
+
+/// The error every report returns when cancelled.
+Error cancelled();
+
+} // namespace granota::reports

@@ -1,0 +1,84 @@
+#pragma once
+/// \file scene.h
+/// A scene is data: a JSON file under resources/scenes naming the stage of chapter 4 (or
+/// the future work of §5.2) it shows, the components it uses (docs/scenes.md vocabulary) and
+/// the parameters of those components only. Only what a scene names is built, stepped,
+/// drawn, shown as a parameter and written back to its file.
+
+#include "core/base/expected.h"
+#include "core/softbody/scenes/frog_params.h"
+#include "core/io/json.h"
+
+#include <string>
+#include <vector>
+
+namespace granota {
+
+/// Which machinery a scene runs on.
+enum class SceneModel {
+    Stage,    ///< §4.1–4.5: explicit velocities (StageBody)
+    Body,     ///< §4.6–4.12 and §5.2: Verlet soft bodies
+    Pendulum, ///< §4.13–4.15: a chain of joints
+    Frog,     ///< §4.16: body, four legs and head
+};
+
+struct ObstacleSpec {
+    std::vector<Point> points; ///< a segment (2 points, open) or a closed polygon
+    bool closed = false;
+};
+
+struct ShapeSpec {
+    std::string name;
+    std::vector<Point> points; ///< rest shape around (0, 0)
+    Point at;                  ///< where it starts
+};
+
+struct SceneSpec {
+    std::string name;        ///< CLI and file name, e.g. "bezier-revised"
+    std::string section;     ///< the thesis's section, e.g. "4.10"
+    std::string title;       ///< English title (the GUI translates it)
+    std::string description; ///< one sentence
+    SceneModel model = SceneModel::Body;
+    int order = 0;           ///< position in the thesis's order
+    std::vector<std::string> components;
+    std::vector<std::string> paramKeys; ///< the parameters this scene has, in file order
+
+    FrogParams params;
+    GrabMode grab = GrabMode::Anchors;
+    int bodies = 1;            ///< many-bodies: how many
+    int bezierSamples = 0;     ///< §4.9/4.10: vertices sampled from the Bézier curve
+    int bezierFitDegree = 0;   ///< §4.9/4.10: degree of the per-frame least-squares fit
+    std::vector<double> chain; ///< pendulum link lengths, px
+    double chainShoulderMin = 0, chainShoulderMax = 0, chainElbowMin = 0, chainElbowMax = 0;
+    std::vector<ObstacleSpec> obstacles;
+    std::vector<ShapeSpec> shapes;
+
+    bool has(const std::string& component) const;
+    bool hasParam(const std::string& key) const;
+};
+
+/// Every scene name in the thesis's order: polygon, gravity, …, frog, obstacles,
+/// many-bodies, shapes.
+std::vector<std::string> sceneNames();
+Expected<SceneSpec> loadScene(const std::string& name);
+Expected<SceneSpec> parseScene(const Json& doc);
+
+/// Applies "key=value" (docs/scenes.md keys: gravity=gx,gy, friction=fx,fy, v0=vx,vy,
+/// area_factor=C, sides=N, target_area=A, spring_length=L, velmax=V, center=x,y,
+/// radius=r, width=W, height=H; and the scene's own: bodies, bezier_samples, …).
+/// A key the scene does not have, a malformed value, or a value that makes no sense
+/// (negative sides, a frame of zero size, more bodies than the frame holds side by side)
+/// is an error with a message.
+Expected<bool> applySetting(SceneSpec& scene, const std::string& keyValue);
+
+/// `bodies` bodies at the scene's density: where the scene's frame was drawn for fewer,
+/// it grows as frameForBodies() says (core/softbody/scenes/scene_layout.h) so that the bodies fit (a
+/// thousand frogs do not fit in 1280 × 720 px; piled up, they would measure a pile, not the
+/// broad phase, and cost seconds a step). `bench --bodies` and `--set bodies=N` both come
+/// here. Errors as applySetting.
+Expected<SceneSpec> withBodies(SceneSpec scene, int bodies);
+
+/// The scene as its file: only its own keys, with their current values.
+Json sceneToJson(const SceneSpec& scene);
+
+} // namespace granota

@@ -1,0 +1,103 @@
+#pragma once
+/// \file simulation.h
+/// One running scene: the scene's components built on the chosen solver, stepped at a
+/// fixed step, driven by the mouse and the space bar as in Annex II — headless, so that
+/// the GUI canvas stays thin and tests can drive grabs. Both solvers sit behind this one
+/// interface so a student can switch and compare:
+///  - `seed`: the thesis's own schemes (§4.1–4.5 explicit velocities, Annex II's Verlet
+///    body, legs and pendulums), reproduced faithfully;
+///  - `stable`: beyond the thesis, position-based constraints with compliance (XPBD).
+
+#include "core/base/expected.h"
+#include "core/softbody/scenes/scene.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace granota {
+
+enum class SolverKind { Seed, Stable };
+std::optional<SolverKind> parseSolverKind(std::string_view name);
+std::string solverName(SolverKind s);
+
+/// Teaching readouts (docs/scenes.md overlays, issue: "readouts from both solvers").
+struct Readouts {
+    double areaErrorPercent = 0;  ///< mean over bodies of 100·(A − A₀)/A₀ (0 when A₀ = 0)
+    double maxStretch = 0;        ///< largest |edge length / rest length − 1|
+    double constraintForce = 0;   ///< largest constraint force (stable: |λ|/h²; seed: largest correction, px/step²)
+    double kineticEnergy = 0;     ///< Σ ½ |v|², unit masses, px²/step²
+    double potentialEnergy = 0;   ///< Σ g·(height above the frame edge gravity points to), px²/step²
+};
+
+class Simulation {
+public:
+    virtual ~Simulation() = default;
+
+    /// Builds `scene` on `solver`. Errors: parameters that make no sense for it.
+    static Expected<std::unique_ptr<Simulation>> create(const SceneSpec& scene, SolverKind solver);
+
+    const SceneSpec& scene() const { return m_scene; }
+    SolverKind solver() const { return m_solver; }
+    long stepCount() const { return m_steps; }
+
+    /// One fixed step (one `actualitza()` of the seed).
+    void step()
+    {
+        doStep();
+        ++m_steps;
+    }
+
+    /// Substeps per step: the stable solver's n (XpbdParams::substeps), 1 for the seed.
+    virtual int substeps() const { return 1; }
+    /// Every body's vertices and every chain's joints.
+    std::size_t pointCount() const;
+    /// The counted work of one step, pointCount() × substeps(): what the frog canvas budgets
+    /// its frames by (ui/frog_canvas.cpp). The stable solver costs 45 ns to 480 ns per unit
+    /// (a body of 100 sides to one of 10000: 37 µs to 39 ms a step), the seed less.
+    long workPerStep() const { return static_cast<long>(pointCount()) * substeps(); }
+
+    /// Soft bodies (none in the pendulum scenes).
+    virtual int bodyCount() const = 0;
+    /// The distinct vertices of body i, in order, written into `out`.
+    virtual void bodyVertices(int i, std::vector<Point>& out) const = 0;
+    virtual double bodyArea(int i) const = 0;
+    virtual double bodyTargetArea(int i) const = 0;
+    /// Chains of joints: the frog's legs (front right, front left, back right, back left)
+    /// or the pendulum; each from its fixed end (shoulder, clau) outwards.
+    virtual int chainCount() const { return 0; }
+    virtual void chainJoints(int, std::vector<Point>&) const {}
+    /// The obstacles of §5.2.1 as the scene gives them.
+    const std::vector<ObstacleSpec>& obstacles() const { return m_scene.obstacles; }
+
+    /// Mouse and keyboard (Annex II): press/move/release of the left button, and the
+    /// space bar (spawn a new body at the mouse, held until released).
+    virtual bool press(Point) { return false; }
+    virtual void move(Point) {}
+    virtual void release() {}
+    virtual void spawn(Point) {}
+    virtual void releaseSpawn() {}
+    virtual bool grabbing() const { return false; }
+
+    virtual Readouts readouts() const = 0;
+
+    /// Every coordinate finite, every body vertex and joint inside [0, W−1] × [0, H−1]
+    /// (within `slack` px).
+    bool finite() const;
+    bool inBounds(double slack = 1e-6) const;
+
+protected:
+    Simulation(SceneSpec scene, SolverKind solver) : m_scene(std::move(scene)), m_solver(solver) {}
+    virtual void doStep() = 0;
+
+private:
+    SceneSpec m_scene;
+    SolverKind m_solver;
+    long m_steps = 0;
+};
+
+/// Potential energy of unit masses at `points` under gravity g, measured from the frame
+/// edge that gravity points to (so it is ≥ 0 inside the frame).
+double potentialEnergy(const std::vector<Point>& points, Point gravity, double width, double height);
+
+} // namespace granota

@@ -1,0 +1,219 @@
+// The stable (XPBD) solver behind Simulation: every scene, with the scene's components
+// mapped onto constraints. A component the scene lacks is a constraint left out (or, for
+// the springs and area of §4.1–4.3, one so compliant that it does nothing).
+#include "core/softbody/scenes/scene_layout.h"
+#include "core/softbody/polygon_area.h"
+#include "core/softbody/regular_polygon.h"
+#include "core/softbody/simulation_backends.h"
+#include "core/softbody/xpbd/xpbd_world.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace granota {
+
+namespace {
+
+constexpr double kNoConstraint = 1e12; // compliance of a constraint a scene does not have
+
+XpbdParams paramsOf(const SceneSpec& s)
+{
+    XpbdParams p;
+    p.gravity = s.has("gravity") ? s.params.gravity : Point(0, 0);
+    p.damping = s.hasParam("friction") && !s.has("bounce") ? s.params.friction : Point(1, 1);
+    // f > 1 would add energy every step (the seed lets it, its velmax clamp bounds it); the
+    // constraint solver keeps at most all of the velocity.
+    p.damping = Point(std::clamp(p.damping.x, 0.0, 1.0), std::clamp(p.damping.y, 0.0, 1.0));
+    // The friction f of §4.3 is the share of speed kept at a bounce: a restitution.
+    p.restitution = s.has("bounce") ? std::clamp(0.5 * (s.params.friction.x + s.params.friction.y), 0.0, 1.0) : 0.0;
+    p.width = s.params.width;
+    p.height = s.params.height;
+    if (s.hasParam("velmax"))
+        p.velmax = std::max(s.params.velmax, 1e-9);
+    if (!s.has("springs"))
+        p.edgeCompliance = kNoConstraint;
+    if (!s.has("area"))
+        p.areaCompliance = kNoConstraint;
+    p.grabAnchors = s.grab == GrabMode::All ? GrabAnchors::AllVertices
+                    : s.grab == GrabMode::Above ? GrabAnchors::AboveGrabPoint : GrabAnchors::FrogAnchors;
+    return p;
+}
+
+std::vector<Point> shapeAt(const SceneSpec& s, std::size_t i, Point centre)
+{
+    std::vector<Point> shape = customRestShape(s, i).value_or(regularPolygon(Point(0, 0), s.params.radius, s.params.sides));
+    if (polygonArea(shape) <= 0) {
+        // A body of radius 0 has no rest shape to keep; the stable solver needs one, so it
+        // takes the regular polygon of the target area (or of 1 px² when that is 0 too).
+        const double n = std::max<std::size_t>(3, shape.size());
+        const double area = std::max(1.0, s.has("area") ? s.params.targetArea : 1.0);
+        shape = regularPolygon(Point(0, 0), std::sqrt(2 * area / (n * std::sin(2 * M_PI / n))), static_cast<int>(n));
+    }
+    for (Point& p : shape)
+        p += centre;
+    return shape;
+}
+
+class StableSimulation final : public Simulation {
+public:
+    StableSimulation(const SceneSpec& scene, XpbdWorld world) : Simulation(scene, SolverKind::Stable), m_world(std::move(world)) {}
+
+    Expected<bool> build()
+    {
+        const SceneSpec& s = scene();
+        if (s.model == SceneModel::Pendulum) {
+            if (s.chain.empty())
+                return makeError(ErrorCode::InvalidInput, "scene '" + s.name + "' needs a chain of link lengths");
+            ChainDef chain;
+            chain.anchor.point = s.params.center;
+            chain.joints.push_back(s.params.center);
+            for (double l : s.chain) // hanging straight down; a zero link is nudged to 1e-6 px
+                chain.joints.emplace_back(s.params.center.x, chain.joints.back().y + std::max(l, 1e-6));
+            if (s.has("angle-limits")) {
+                chain.limits.push_back(AngleLimit{s.chainShoulderMin, s.chainShoulderMax, AngleReference::World});
+                for (std::size_t k = 1; k < s.chain.size(); ++k)
+                    chain.limits.push_back(AngleLimit{s.chainElbowMin, s.chainElbowMax, AngleReference::Parent});
+            }
+            auto c = m_world.addChain(chain);
+            if (!c)
+                return c.error();
+            return true;
+        }
+        const auto starts = bodyStarts(s);
+        BodyOptions options;
+        options.bending = !s.shapes.empty() && s.has("angle-limits");
+        options.collides = s.has("collisions");
+        for (std::size_t i = 0; i < starts.size(); ++i) {
+            const auto shape = shapeAt(s, i, starts[i]);
+            // Without the area component the rest shape keeps its own area.
+            const double target = s.has("area") ? s.params.targetArea : polygonArea(shape);
+            auto b = m_world.addBody(shape, target, s.hasParam("v0") ? s.params.v0 : Point(0, 0), options);
+            if (!b)
+                return b.error();
+        }
+        if (s.model == SceneModel::Frog && s.has("legs"))
+            for (int leg = 0; leg < 4; ++leg) {
+                const ChainAnchor anchor = frogLegAnchor(0, leg, s.params.sides);
+                auto c = m_world.addChain(frogLegChain(s.params.legs[std::size_t(leg)], anchor, m_world.anchorPoint(anchor)));
+                if (!c)
+                    return c.error();
+            }
+        if (s.has("obstacles"))
+            for (const auto& o : s.obstacles) {
+                auto ok = o.closed ? m_world.addPolygonObstacle(o.points) : m_world.addSegmentObstacle(o.points[0], o.points[1]);
+                if (!ok)
+                    return ok.error();
+            }
+        return true;
+    }
+
+    int substeps() const override { return m_world.params().substeps; }
+    int bodyCount() const override { return m_world.bodyCount(); }
+    // Copied into the caller's vector (its capacity reused): no allocation per frame.
+    void bodyVertices(int i, std::vector<Point>& out) const override { copyRange(m_world.bodyRange(i), out); }
+    double bodyArea(int i) const override { return std::abs(m_world.area(i)); }
+    double bodyTargetArea(int i) const override { return m_world.targetArea(i); }
+    int chainCount() const override { return m_world.chainCount(); }
+    void chainJoints(int i, std::vector<Point>& out) const override { copyRange(m_world.chainRange(i), out); }
+
+    bool press(Point p) override
+    {
+        if (scene().model == SceneModel::Pendulum) {
+            move(p);
+            return true;
+        }
+        if (scene().has("bounce") && !scene().has("grab")) { // §4.3: a click respawns
+            respawnAt(p);
+            return true;
+        }
+        return scene().has("grab") && m_world.press(p);
+    }
+    void move(Point p) override
+    {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y))
+            return;
+        if (scene().model == SceneModel::Pendulum) {
+            m_world.moveChainAnchor(0, p);
+            return;
+        }
+        if (scene().components.empty() && bodyCount() == 1) { // §4.1: r = |mouseY − h/2|
+            const double r = std::min(std::fabs(p.y - scene().params.height / 2), 10 * scene().params.height);
+            const auto shape = regularPolygon(scene().params.center, r, scene().params.sides);
+            m_world.setTargetArea(0, polygonArea(shape));
+            m_world.setBodyVertices(0, shape);
+            return;
+        }
+        m_world.move(p);
+    }
+    void release() override { m_world.release(); }
+    void spawn(Point p) override
+    {
+        if (m_world.grabbedBody() >= 0 || bodyCount() == 0)
+            return;
+        respawnAt(p);
+        if (scene().has("grab")) {
+            m_world.press(p);
+            m_spawned = true;
+        }
+    }
+    void releaseSpawn() override
+    {
+        if (m_spawned)
+            m_world.release();
+        m_spawned = false;
+    }
+    bool grabbing() const override { return m_world.grabbedBody() >= 0; }
+
+    Readouts readouts() const override
+    {
+        Readouts r;
+        for (int i = 0; i < bodyCount(); ++i) {
+            r.areaErrorPercent += m_world.areaErrorPercent(i) / bodyCount();
+            r.maxStretch = std::max(r.maxStretch, m_world.maxEdgeStretch(i));
+            r.constraintForce = std::max({r.constraintForce, std::abs(m_world.areaPressure(i)), m_world.maxEdgeTension(i)});
+        }
+        for (int c = 0; c < chainCount(); ++c)
+            r.constraintForce = std::max(r.constraintForce, m_world.angleLimitTorque(c));
+        r.kineticEnergy = m_world.kineticEnergy();
+        std::vector<Point> all = m_world.positions();
+        r.potentialEnergy = potentialEnergy(all, m_world.params().gravity, scene().params.width, scene().params.height);
+        return r;
+    }
+
+protected:
+    void doStep() override { m_world.step(); }
+
+private:
+    void copyRange(ParticleRange r, std::vector<Point>& out) const
+    {
+        const auto first = m_world.positions().begin() + r.first;
+        out.assign(first, first + r.count);
+    }
+
+    void respawnAt(Point p)
+    {
+        p.x = std::clamp(p.x, 0.0, scene().params.width - 1);
+        p.y = std::clamp(p.y, 0.0, scene().params.height - 1);
+        m_world.setBodyVertices(0, shapeAt(scene(), 0, p));
+        m_world.setBodyVelocity(0, Point(0, 0));
+    }
+
+    XpbdWorld m_world;
+    bool m_spawned = false;
+};
+
+} // namespace
+
+Expected<std::unique_ptr<Simulation>> makeStableSimulation(const SceneSpec& scene)
+{
+    auto world = XpbdWorld::create(paramsOf(scene));
+    if (!world)
+        return makeError(world.error().code, "scene '" + scene.name + "': " + world.error().message);
+    auto sim = std::make_unique<StableSimulation>(scene, std::move(world).value());
+    auto ok = sim->build();
+    if (!ok)
+        return ok.error();
+    return std::unique_ptr<Simulation>(std::move(sim));
+}
+
+} // namespace granota
