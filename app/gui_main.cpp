@@ -1,8 +1,8 @@
 // granota: the desktop application (docs/tabs.md, docs/classroom.md).
 #include "core/softbody/scenes/scene.h"
-#include "ui/frog_tab.h"
-#include "ui/language.h"
-#include "ui/main_window.h"
+#include "ui/frog/frog_tab.h"
+#include "ui/shell/language.h"
+#include "ui/shell/main_window.h"
 
 #include <QApplication>
 #include <QCommandLineParser>

@@ -3,11 +3,11 @@
 // the thesis prints them, the property checks, and the all-degrees plot.
 #include "core/curves/bezier/bernstein.h"
 #include "core/io/worked_examples.h"
-#include "ui/decasteljau_parameter_control.h"
-#include "ui/bernstein_tab.h"
-#include "ui/decasteljau_tab.h"
-#include "ui/exact_panel.h"
-#include "ui/point_editor.h"
+#include "ui/decasteljau/decasteljau_parameter_control.h"
+#include "ui/bernstein/bernstein_tab.h"
+#include "ui/decasteljau/decasteljau_tab.h"
+#include "ui/common/exact_panel.h"
+#include "ui/common/point_editor.h"
 
 #include <QCheckBox>
 #include <QJsonObject>

@@ -4,15 +4,15 @@
 // readouts and plot axes — while a typed point is still accepted.
 #include "catalan_locale.h"
 
-#include "ui/decimal_spin_box.h"
-#include "ui/document.h"
-#include "ui/drawable.h"
-#include "ui/frog_parameters_panel.h"
-#include "ui/frog_tab.h"
-#include "ui/language.h"
-#include "ui/main_window.h"
-#include "ui/number_text.h"
-#include "ui/tab_page.h"
+#include "ui/common/decimal_spin_box.h"
+#include "ui/shell/document.h"
+#include "ui/common/drawable.h"
+#include "ui/frog/frog_parameters_panel.h"
+#include "ui/frog/frog_tab.h"
+#include "ui/shell/language.h"
+#include "ui/shell/main_window.h"
+#include "ui/common/number_text.h"
+#include "ui/shell/tab_page.h"
 
 #include "core/softbody/scenes/scene.h"
 

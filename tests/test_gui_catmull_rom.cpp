@@ -5,10 +5,10 @@
 #include "core/curves/splines/catmull_rom.h"
 #include "core/curves/splines/segment_joins.h"
 #include "core/io/worked_examples.h"
-#include "ui/catmull_rom_tab.h"
-#include "ui/curve_canvas.h"
-#include "ui/exact_panel.h"
-#include "ui/point_editor.h"
+#include "ui/catmull_rom/catmull_rom_tab.h"
+#include "ui/common/curve_canvas.h"
+#include "ui/common/exact_panel.h"
+#include "ui/common/point_editor.h"
 
 #include <QComboBox>
 #include <QJsonArray>

@@ -8,13 +8,13 @@
 #include "core/exact/polynomial_text.h"
 #include "core/exact/rational.h"
 #include "core/io/worked_examples.h"
-#include "ui/curve_canvas.h"
-#include "ui/decasteljau_parameter_control.h"
-#include "ui/decasteljau_tab.h"
-#include "ui/exact_panel.h"
-#include "ui/point_editor.h"
-#include "ui/point_table.h"
-#include "ui/view_transform.h"
+#include "ui/common/curve_canvas.h"
+#include "ui/decasteljau/decasteljau_parameter_control.h"
+#include "ui/decasteljau/decasteljau_tab.h"
+#include "ui/common/exact_panel.h"
+#include "ui/common/point_editor.h"
+#include "ui/common/point_table.h"
+#include "ui/common/view_transform.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>

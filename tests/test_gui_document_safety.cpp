@@ -4,13 +4,13 @@
 // deleted or overwritten, recovery goes back into the document the autosave belongs to,
 // a failing autosave says so, and devices are read with a bound.
 #include "core/base/input_limits.h"
-#include "ui/autosave.h"
-#include "ui/document.h"
-#include "ui/fit_tab.h"
-#include "ui/language.h"
-#include "ui/main_window.h"
-#include "ui/point_editor.h"
-#include "ui/tab_page.h"
+#include "ui/shell/autosave.h"
+#include "ui/shell/document.h"
+#include "ui/fit/fit_tab.h"
+#include "ui/shell/language.h"
+#include "ui/shell/main_window.h"
+#include "ui/common/point_editor.h"
+#include "ui/shell/tab_page.h"
 
 #include <QDir>
 #include <QFile>

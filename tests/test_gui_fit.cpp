@@ -6,12 +6,12 @@
 #include "core/curves/fitting/least_squares_fit.h"
 #include "core/exact/rational.h"
 #include "core/io/worked_examples.h"
-#include "ui/curve_canvas.h"
-#include "ui/exact_panel.h"
-#include "ui/fit_exact_view.h"
-#include "ui/fit_tab.h"
-#include "ui/point_editor.h"
-#include "ui/point_table.h"
+#include "ui/common/curve_canvas.h"
+#include "ui/common/exact_panel.h"
+#include "ui/fit/fit_exact_view.h"
+#include "ui/fit/fit_tab.h"
+#include "ui/common/point_editor.h"
+#include "ui/common/point_table.h"
 
 #include <QCheckBox>
 #include <QComboBox>

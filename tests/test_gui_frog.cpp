@@ -2,10 +2,10 @@
 // mouse and key events, the scene's own parameters applied live and undoably, every scene on
 // both solvers, the frame export and the document round trip.
 #include "core/softbody/simulation.h"
-#include "ui/frog_art.h"
-#include "ui/frog_canvas.h"
-#include "ui/frog_parameters_panel.h"
-#include "ui/frog_tab.h"
+#include "ui/frog/frog_art.h"
+#include "ui/frog/frog_canvas.h"
+#include "ui/frog/frog_parameters_panel.h"
+#include "ui/frog/frog_tab.h"
 
 #include <QCheckBox>
 #include <QComboBox>

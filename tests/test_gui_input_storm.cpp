@@ -11,14 +11,14 @@
 // The stream is std::mt19937 with a seed printed at the start: GRANOTA_STORM_SEED replays
 // another one, GRANOTA_STORM_EVENTS sets the number of events, GRANOTA_STORM_VERBOSE=1
 // prints every event as it is sent (to find the last one before a crash).
-#include "ui/curve_canvas.h"
-#include "ui/document.h"
-#include "ui/frog_canvas.h"
-#include "ui/frog_tab.h"
-#include "ui/language.h"
-#include "ui/main_window.h"
-#include "ui/point_editor.h"
-#include "ui/tab_page.h"
+#include "ui/common/curve_canvas.h"
+#include "ui/shell/document.h"
+#include "ui/frog/frog_canvas.h"
+#include "ui/frog/frog_tab.h"
+#include "ui/shell/language.h"
+#include "ui/shell/main_window.h"
+#include "ui/common/point_editor.h"
+#include "ui/shell/tab_page.h"
 
 #include <QAbstractButton>
 #include <QAbstractItemView>
@@ -1069,7 +1069,7 @@ private slots:
     }
 
     // The storm of GRANOTA_STORM_SEED (or the default seed), GRANOTA_STORM_EVENTS events. In
-    // the debug-asan build, without the fix of ui/point_editor.cpp, the default seed finds the
+    // the debug-asan build, without the fix of ui/common/point_editor.cpp, the default seed finds the
     // drag past the end of the points at event #1997 (press on q2 of the Catmull-Rom tab,
     // Ctrl+Z, Delete, Ctrl+Shift+Z, move: a container-overflow write).
     void storm()
@@ -1094,7 +1094,7 @@ private slots:
 
     // Seed 31, event #24: “1e308” typed into the De Casteljau table, then Ctrl+0 (fit the
     // view): far off, the grid step was below the coordinates' resolution, x += step did not
-    // move x, and painting never ended (ui/curve_canvas.cpp; test_gui_decasteljau). Seeds 3
+    // move x, and painting never ended (ui/common/curve_canvas.cpp; test_gui_decasteljau). Seeds 3
     // (event #1960, a deep zoom far from the origin), 10 (#1164) and 32 (#407) found it too.
     void seed31GridFarOff() { runStorm(31, 25); }
 };

@@ -2,13 +2,13 @@
 // example loads into its tab, documents round-trip, exports are valid files, a live
 // language switch retranslates every visible text, autosave and presentation mode, and the
 // command-line options of docs/classroom.md on the real binary.
-#include "ui/drawable.h"
-#include "ui/exporter.h"
-#include "ui/document.h"
-#include "ui/language.h"
-#include "ui/main_window.h"
-#include "ui/tab_page.h"
-#include "ui/work_precision_panel.h"
+#include "ui/common/drawable.h"
+#include "ui/shell/exporter.h"
+#include "ui/shell/document.h"
+#include "ui/shell/language.h"
+#include "ui/shell/main_window.h"
+#include "ui/shell/tab_page.h"
+#include "ui/common/work_precision_panel.h"
 
 #include <QAbstractButton>
 #include <QAction>

@@ -3,7 +3,7 @@
 // On a ca_ES.UTF-8 desktop LC_NUMERIC has a decimal comma, and QApplication sets it from
 // the environment: strtod("0.5") then reads 0 and printf("%g", 0.5) writes "0,5". The
 // core's formatDouble/formatSignificant/formatFixed and std::from_chars, or QLocale::c()
-// in ui/, are the ways in and out (ui/number_text.h explains which is for what).
+// in ui/, are the ways in and out (ui/common/number_text.h explains which is for what).
 #include <QDirIterator>
 #include <QFile>
 #include <QRegularExpression>

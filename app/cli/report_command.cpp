@@ -16,7 +16,7 @@
 #include <QSysInfo>
 #include <qcustomplot.h>
 
-#include "ui/work_precision_plot.h"
+#include "ui/common/work_precision_plot.h"
 
 #include <algorithm>
 #include <cstdio>

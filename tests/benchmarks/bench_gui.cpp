@@ -7,10 +7,10 @@
 //   QT_QPA_PLATFORM=offscreen build/bin/granota-bench --benchmark_filter=Gui
 #include "core/softbody/scenes/scene.h"
 #include "core/softbody/simulation.h"
-#include "ui/curve_canvas.h"
-#include "ui/decasteljau_tab.h"
-#include "ui/frog_canvas.h"
-#include "ui/point_editor.h"
+#include "ui/common/curve_canvas.h"
+#include "ui/decasteljau/decasteljau_tab.h"
+#include "ui/frog/frog_canvas.h"
+#include "ui/common/point_editor.h"
 
 #include <QApplication>
 #include <QMouseEvent>

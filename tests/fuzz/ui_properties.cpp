@@ -1,14 +1,14 @@
 #include "tests/fuzz/ui_properties.h"
 
 #include "core/io/point_list.h"
-#include "ui/bernstein_tab.h"
-#include "ui/catmull_rom_tab.h"
-#include "ui/decasteljau_tab.h"
-#include "ui/document.h"
-#include "ui/fit_tab.h"
-#include "ui/frog_tab.h"
-#include "ui/language.h"
-#include "ui/tab_page.h"
+#include "ui/bernstein/bernstein_tab.h"
+#include "ui/catmull_rom/catmull_rom_tab.h"
+#include "ui/decasteljau/decasteljau_tab.h"
+#include "ui/shell/document.h"
+#include "ui/fit/fit_tab.h"
+#include "ui/frog/frog_tab.h"
+#include "ui/shell/language.h"
+#include "ui/shell/tab_page.h"
 
 #include <QCoreApplication>
 #include <QFile>

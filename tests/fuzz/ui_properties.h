@@ -13,7 +13,7 @@ namespace granota::fuzz {
 /// Once, after the QApplication is made: test paths and settings, English texts.
 void initUi();
 
-/// ui/document.h loadDocument, starting from the blank document (File ▸ New): a document
+/// ui/shell/document.h loadDocument, starting from the blank document (File ▸ New): a document
 /// it refuses leaves every tab as it was and says why; one it accepts has only finite
 /// numbers, and load → serializeDocument → load into fresh tabs → serializeDocument gives
 /// the same bytes (the fresh tabs accept what was saved: the same validation as opening it).

@@ -1,0 +1,617 @@
+#include "ui/bernstein/bernstein_tab.h"
+#include "ui/common/number_text.h"
+
+#include "core/curves/bezier/bernstein.h"
+#include "core/curves/bezier/de_casteljau.h"
+#include "core/exact/polynomial_text.h"
+#include "core/exact/rational.h"
+#include "core/exact/rational_approximation.h"
+#include "core/io/worked_examples.h"
+#include "ui/common/canvas_style.h"
+#include "ui/decasteljau/decasteljau_parameter_control.h"
+#include "ui/decasteljau/decasteljau_tab.h"
+#include "ui/common/exact_panel.h"
+#include "ui/common/point_editor.h"
+#include "ui/shell/tikz_writer.h"
+
+#include <QCheckBox>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QJsonValue>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QUndoStack>
+#include <QVBoxLayout>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace granota::ui {
+
+namespace {
+
+constexpr double kCheckTolerance = 1e-12;   ///< a residual below this shows ✓
+constexpr int kMaxLegendEntries = 12;       ///< more graphs than this: no legend (colours repeat anyway)
+constexpr int kMaxReadoutLines = 12;        ///< values listed in the hover readout
+constexpr int kMaxBarLabels = 20;           ///< more bars than this: label every k-th
+constexpr int kCsvSamples = 101;            ///< rows of the CSV export: t = 0, 0.01, …, 1
+
+const char* const kSubscripts[] = {"₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉"};
+const char* const kSuperscripts[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+
+QString digits(int v, const char* const* table)
+{
+    QString out;
+    for (QChar c : QString::number(v))
+        out += QString::fromUtf8(table[c.digitValue()]);
+    return out;
+}
+
+/// B_i^n in plain Unicode (legend, readout): B₂⁵.
+QString basisName(int i, int n) { return QStringLiteral("B") + digits(i, kSubscripts) + digits(n, kSuperscripts); }
+/// B_i^n(t) in HTML.
+QString basisHtml(const QString& i, const QString& n, const QString& arg = QStringLiteral("t"))
+{
+    return QStringLiteral("B<sub>%1</sub><sup>%2</sup>(%3)").arg(i, n, arg);
+}
+
+QString number(double v)
+{
+    if (v == 0.0 || !std::isfinite(v))
+        return QStringLiteral("0");
+    return displaySignificant(v, 6);
+}
+
+QString residualText(double r) { return r == 0.0 ? QStringLiteral("0") : displayText(QString::number(r, 'e', 1).toStdString()); }
+
+QString mark(bool ok) { return ok ? QStringLiteral("<span style=\"color:#2c8a2c\">✓</span>") : QStringLiteral("<span style=\"color:#c62828\">✗</span>"); }
+
+QString pointText(const Point& p) { return displayPair(number(p.x), number(p.y)); }
+QString pointText(const RPoint& p)
+{
+    return QStringLiteral("(%1, %2)").arg(QString::fromStdString(toString(p.x)), QString::fromStdString(toString(p.y)));
+}
+
+} // namespace
+
+BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
+    : TabPage(parent), m_deCasteljau(deCasteljau), m_undo(new QUndoStack(this)), m_basisPlot(new QCustomPlot(this)),
+      m_weightsPlot(new QCustomPlot(this)), m_drawable(std::make_unique<PlotDrawable>(m_basisPlot)),
+      m_exact(new ExactPanel(this)), m_parameter(new DeCasteljauParameterControl(this)), m_degreeLabel(new QLabel(this)),
+      m_degreeBox(new QSpinBox(this)), m_allBox(new QCheckBox(this)), m_checksGroup(new QGroupBox(this)),
+      m_checkLabels{new QLabel(this), new QLabel(this), new QLabel(this)}, m_weightsGroup(new QGroupBox(this)),
+      m_curveLabel(new QLabel(this))
+{
+    m_exact->setWordWrapMode(QTextOption::WordWrap); // break between terms, never inside "t^5"
+    m_degreeBox->setRange(0, kMaxDegree);
+    m_degreeBox->setValue(m_degree);
+    m_degreeLabel->setBuddy(m_degreeBox);
+
+    // The basis plot: B_i^n on [0, 1], the current t as a vertical line, a hover readout.
+    m_basisPlot->setMinimumHeight(200);
+    m_basisPlot->xAxis->setRange(0, 1);
+    m_basisPlot->yAxis->setRange(-0.02, 1.05);
+    m_basisPlot->xAxis->setLabel(QStringLiteral("t"));
+    // The legend beside the axes, not over the curves.
+    m_basisPlot->axisRect()->insetLayout()->take(m_basisPlot->legend);
+    auto* legendColumn = new QCPLayoutGrid;
+    m_basisPlot->plotLayout()->addElement(0, 1, legendColumn);
+    m_basisPlot->plotLayout()->setColumnStretchFactor(1, 0.001);
+    legendColumn->addElement(0, 0, m_basisPlot->legend);
+    legendColumn->addElement(1, 0, new QCPLayoutElement(m_basisPlot)); // takes the height left below
+    legendColumn->setRowStretchFactor(0, 0.001);
+    legendColumn->setRowStretchFactor(1, 1);
+    legendColumn->setMargins(QMargins(4, 10, 8, 4)); // the legend's frame clear of the widget's edge
+    m_basisPlot->legend->setMargins(QMargins(6, 4, 6, 4));
+    m_marker = new QCPItemStraightLine(m_basisPlot);
+    m_marker->setPen(QPen(QColor(0x33, 0x33, 0x33), 1.5, Qt::DashLine));
+    m_readout = new QCPItemText(m_basisPlot);
+    m_readout->position->setType(QCPItemPosition::ptAxisRectRatio);
+    m_readout->position->setCoords(0.01, 0.02);
+    m_readout->setPositionAlignment(Qt::AlignTop | Qt::AlignLeft);
+    m_readout->setTextAlignment(Qt::AlignLeft);
+    m_readout->setPadding(QMargins(6, 4, 6, 4));
+    m_readout->setBrush(QColor(255, 255, 255, 225));
+    m_readout->setPen(QPen(QColor(0xbb, 0xbb, 0xbb)));
+    m_readout->setVisible(false);
+    m_basisPlot->setMouseTracking(true);
+    connect(m_basisPlot, &QCustomPlot::mouseMove, this, &BernsteinTab::plotMouseMove);
+    connect(m_basisPlot, &QCustomPlot::mousePress, this, &BernsteinTab::plotMousePress);
+    connect(m_basisPlot, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) { m_dragging = false; });
+
+    // The weights B_i^n(t) applied to the De Casteljau tab's points (Def 2.6).
+    m_bars = new QCPBars(m_weightsPlot->xAxis, m_weightsPlot->yAxis);
+    m_bars->setWidth(0.6);
+    m_bars->setPen(QPen(CanvasStyle().curve.darker(130)));
+    m_bars->setBrush(CanvasStyle().curve.lighter(140));
+    m_weightsPlot->yAxis->setRange(0, 1.05);
+    m_weightsPlot->yAxis->ticker()->setTickCount(3);
+    m_weightsPlot->setMinimumHeight(120);
+    m_curveLabel->setWordWrap(true);
+    m_curveLabel->setTextFormat(Qt::RichText);
+    m_curveLabel->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    auto* weightsLayout = new QVBoxLayout(m_weightsGroup);
+    weightsLayout->addWidget(m_weightsPlot, 1);
+    weightsLayout->addWidget(m_curveLabel);
+
+    auto* checksLayout = new QVBoxLayout(m_checksGroup);
+    for (QLabel* label : m_checkLabels) {
+        label->setTextFormat(Qt::RichText);
+        label->setWordWrap(true);
+        checksLayout->addWidget(label);
+    }
+
+    auto* controls = new QHBoxLayout;
+    controls->addWidget(m_degreeLabel);
+    controls->addWidget(m_degreeBox);
+    controls->addWidget(m_allBox);
+    controls->addSpacing(12);
+    controls->addWidget(m_parameter, 1);
+
+    auto* plots = new QSplitter(Qt::Vertical, this);
+    plots->addWidget(m_basisPlot);
+    plots->addWidget(m_weightsGroup);
+    plots->setStretchFactor(0, 3);
+    plots->setStretchFactor(1, 2);
+    plots->setChildrenCollapsible(false);
+    plots->setSizes({430, 270});
+    auto* left = new QWidget(this);
+    auto* leftLayout = new QVBoxLayout(left);
+    leftLayout->setContentsMargins(0, 0, 0, 0);
+    leftLayout->addLayout(controls);
+    leftLayout->addWidget(plots, 1);
+
+    auto* right = new QWidget(this);
+    auto* rightLayout = new QVBoxLayout(right);
+    rightLayout->setContentsMargins(0, 0, 0, 0);
+    rightLayout->addWidget(m_checksGroup);
+    rightLayout->addWidget(m_exact, 1);
+
+    m_mainSplitter = new QSplitter(Qt::Horizontal, this);
+    m_mainSplitter->addWidget(left);
+    m_mainSplitter->addWidget(right);
+    m_mainSplitter->setStretchFactor(0, 3);
+    m_mainSplitter->setStretchFactor(1, 2);
+    m_mainSplitter->setSizes({760, 500});
+    m_mainSplitter->setChildrenCollapsible(false);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_mainSplitter);
+
+    connect(m_degreeBox, &QSpinBox::valueChanged, this, &BernsteinTab::setDegree);
+    connect(m_allBox, &QCheckBox::toggled, this, &BernsteinTab::setAllDegrees);
+    // One t for both tabs: this tab's slider moves the De Casteljau tab's t, and back.
+    connect(m_parameter, &DeCasteljauParameterControl::valueChanged, this, &BernsteinTab::setT);
+    connect(m_deCasteljau, &DeCasteljauTab::tChanged, this, [this](double t) {
+        m_parameter->setValue(t);
+        updateMarker();
+        updateWeights();
+        updateChecks();
+    });
+    connect(m_deCasteljau->pointEditor(), &PointEditor::pointsChanged, this, [this] {
+        updateWeights();
+        updateExactPanel();
+    });
+
+    m_parameter->setValue(t());
+    rebuildBasisPlot();
+    applyPlotStyle();
+    retranslate();
+}
+
+BernsteinTab::~BernsteinTab() = default;
+
+// ---------------------------------------------------------------- settings
+
+double BernsteinTab::t() const { return m_deCasteljau->t(); }
+
+void BernsteinTab::setT(double t)
+{
+    m_deCasteljau->setT(t); // comes back through tChanged
+    m_parameter->setValue(m_deCasteljau->t());
+}
+
+void BernsteinTab::setDegree(int n)
+{
+    n = std::clamp(n, 0, kMaxDegree);
+    if (m_degreeBox->value() != n) {
+        const QSignalBlocker block(m_degreeBox);
+        m_degreeBox->setValue(n);
+    }
+    if (n == m_degree)
+        return;
+    m_degree = n;
+    rebuildBasisPlot();
+    updateChecks();
+    updateExactPanel();
+    emit documentChanged();
+}
+
+void BernsteinTab::setAllDegrees(bool on)
+{
+    if (m_allBox->isChecked() != on) {
+        const QSignalBlocker block(m_allBox);
+        m_allBox->setChecked(on);
+    }
+    if (on == m_allDegrees)
+        return;
+    m_allDegrees = on;
+    rebuildBasisPlot();
+    updateExactPanel();
+    emit documentChanged();
+}
+
+// ---------------------------------------------------------------- plots
+
+void BernsteinTab::rebuildBasisPlot()
+{
+    m_basisPlot->clearGraphs();
+    QVector<double> ts(kPlotSamples);
+    for (int j = 0; j < kPlotSamples; ++j)
+        ts[j] = static_cast<double>(j) / (kPlotSamples - 1);
+    const int first = m_allDegrees ? 0 : m_degree;
+    const double width = (m_presentation ? 1.8 : 1.0) * 2.0;
+    int legendEntries = 0;
+    for (int n = first; n <= m_degree; ++n) {
+        // Every graph of one degree at once through Lemma 2.1 (core/curves/bezier/bernstein.h).
+        std::vector<QVector<double>> values(static_cast<std::size_t>(n + 1), QVector<double>(kPlotSamples));
+        for (int j = 0; j < kPlotSamples; ++j) {
+            const auto b = bernsteinAll(n, ts[j]);
+            for (int i = 0; i <= n; ++i)
+                values[static_cast<std::size_t>(i)][j] = b[static_cast<std::size_t>(i)];
+        }
+        for (int i = 0; i <= n; ++i) {
+            QCPGraph* g = m_basisPlot->addGraph();
+            g->setData(ts, values[static_cast<std::size_t>(i)], true);
+            if (m_allDegrees) {
+                // One colour per degree; the largest degree drawn boldest.
+                g->setPen(QPen(CanvasStyle::series(n), n == m_degree ? width : width * 0.6));
+                g->setName(QStringLiteral("n = %1").arg(n));
+                if (i == 0)
+                    ++legendEntries;
+                else
+                    g->removeFromLegend();
+            } else {
+                g->setPen(QPen(CanvasStyle::series(i), width));
+                g->setName(basisName(i, n));
+                ++legendEntries;
+            }
+        }
+    }
+    m_basisPlot->legend->setVisible(legendEntries <= kMaxLegendEntries);
+    updateMarker();
+}
+
+void BernsteinTab::updateMarker()
+{
+    const double tt = t();
+    m_marker->point1->setCoords(tt, 0);
+    m_marker->point2->setCoords(tt, 1);
+    m_basisPlot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+double BernsteinTab::markerT() const { return m_marker->point1->coords().x(); }
+
+void BernsteinTab::updateWeights()
+{
+    const auto& points = m_deCasteljau->pointEditor()->points();
+    if (points.empty())
+        return;
+    const int n = static_cast<int>(points.size()) - 1;
+    const double tt = t();
+    const std::vector<double> w = bernsteinAll(n, tt);
+    QVector<double> keys(n + 1), values(n + 1);
+    for (int i = 0; i <= n; ++i) {
+        keys[i] = i;
+        values[i] = w[static_cast<std::size_t>(i)];
+    }
+    m_bars->setData(keys, values, true);
+    auto ticker = QSharedPointer<QCPAxisTickerText>::create();
+    const int every = n + 1 > kMaxBarLabels ? (n + kMaxBarLabels) / kMaxBarLabels : 1;
+    for (int i = 0; i <= n; i += every)
+        ticker->addTick(i, QStringLiteral("P%1").arg(i));
+    m_weightsPlot->xAxis->setTicker(ticker);
+    m_weightsPlot->xAxis->setRange(-0.7, n + 0.7);
+    m_weightsPlot->replot(QCustomPlot::rpQueuedReplot);
+
+    // Def 2.6 against De Casteljau (Prop 2.1): the same point.
+    const Point viaBernstein = bezierBernstein(points, tt);
+    const Point viaDeCasteljau = deCasteljauPoint(points, tt);
+    double sum = 0.0;
+    for (double v : w)
+        sum += v;
+    m_curveLabel->setText(
+        tr("At t = %1 the weights sum to %2.<br>Def 2.6: %3 = %4<br>De Casteljau: %5 = %6 (difference %7)")
+            .arg(number(tt), displaySignificant(sum, 17),
+                 QStringLiteral("Σ %1 P<sub>i</sub>").arg(basisHtml(QStringLiteral("i"), QString::number(n))),
+                 pointText(viaBernstein),
+                 QStringLiteral("P<sub>0</sub><sup>%1</sup>(t)").arg(n), pointText(viaDeCasteljau),
+                 residualText(distance(viaBernstein, viaDeCasteljau))));
+    m_weightsGroup->setTitle(tr("Weights of the %n control points of the De Casteljau tab at t (Def 2.6)", nullptr, n + 1));}
+
+void BernsteinTab::plotMouseMove(QMouseEvent* event)
+{
+    const double tt = std::clamp(m_basisPlot->xAxis->pixelToCoord(event->position().x()), 0.0, 1.0);
+    if (m_dragging && (event->buttons() & Qt::LeftButton)) {
+        setT(tt);
+        return;
+    }
+    m_readout->setText(readout(tt));
+    m_readout->setVisible(true);
+    m_basisPlot->replot(QCustomPlot::rpQueuedReplot);
+    emit statusMessage(readout(tt).replace(QLatin1Char('\n'), QStringLiteral("   ")));
+}
+
+void BernsteinTab::plotMousePress(QMouseEvent* event)
+{
+    if (event->button() != Qt::LeftButton)
+        return;
+    m_dragging = true;
+    setT(std::clamp(m_basisPlot->xAxis->pixelToCoord(event->position().x()), 0.0, 1.0));
+}
+
+QString BernsteinTab::readout(double tt) const
+{
+    const std::vector<double> b = bernsteinAll(m_degree, tt);
+    QStringList lines{QStringLiteral("t = %1").arg(displayFixed(tt, 3))};
+    for (int i = 0; i <= m_degree && i < kMaxReadoutLines; ++i)
+        lines << QStringLiteral("%1 = %2").arg(basisName(i, m_degree)).arg(displayFixed(b[static_cast<std::size_t>(i)], 4));
+    if (m_degree + 1 > kMaxReadoutLines)
+        lines << QStringLiteral("…");
+    return lines.join(QLatin1Char('\n'));
+}
+
+void BernsteinTab::applyPlotStyle()
+{
+    // Fonts follow the application font (the main window enlarges it in presentation
+    // mode); lines are thickened here.
+    const double s = m_presentation ? 1.6 : 1.0;
+    QFont tickFont;
+    tickFont.setPointSizeF(tickFont.pointSizeF() * 0.9);
+    const QFont labelFont;
+    for (QCustomPlot* plot : {m_basisPlot, m_weightsPlot}) {
+        for (QCPAxis* axis : {plot->xAxis, plot->yAxis}) {
+            axis->setTickLabelFont(tickFont);
+            axis->setLabelFont(labelFont);
+        }
+        plot->legend->setFont(tickFont);
+    }
+    m_readout->setFont(tickFont);
+    m_marker->setPen(QPen(QColor(0x33, 0x33, 0x33), 1.5 * s, Qt::DashLine));
+    rebuildBasisPlot();
+    m_weightsPlot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+// ---------------------------------------------------------------- checks and exact panel
+
+void BernsteinTab::updateChecks()
+{
+    m_checks = checkBernsteinProperties(m_degree, t());
+    const QString n = QString::number(m_degree);
+    const QString verdictYes = tr("yes");
+    auto line = [&](const QString& name, const QString& formula, const BernsteinPropertyCheck& c) {
+        return tr("%1 %2 %3 — residual at t: %4; exact as polynomials: %5")
+            .arg(mark(c.exact && c.residual < kCheckTolerance), name, formula, residualText(c.residual),
+                 c.exact ? verdictYes : tr("no"));
+    };
+    m_checkLabels[0]->setText(line(tr("Partition of unity:"),
+                                   QStringLiteral("Σ<sub>i</sub> %1 = 1").arg(basisHtml(QStringLiteral("i"), n)),
+                                   m_checks.partitionOfUnity));
+    m_checkLabels[1]->setText(line(tr("Symmetry:"),
+                                   QStringLiteral("%1 = %2").arg(basisHtml(QStringLiteral("i"), n),
+                                                                 basisHtml(QStringLiteral("n−i"), n, QStringLiteral("1 − t"))),
+                                   m_checks.symmetry));
+    if (m_checks.recursion.applies)
+        m_checkLabels[2]->setText(line(tr("Recursion (Lemma 2.1):"),
+                                       QStringLiteral("%1 = (1 − t) %2 + t %3")
+                                           .arg(basisHtml(QStringLiteral("i"), n),
+                                                basisHtml(QStringLiteral("i"), QString::number(m_degree - 1)),
+                                                basisHtml(QStringLiteral("i−1"), QString::number(m_degree - 1))),
+                                       m_checks.recursion));
+    else
+        m_checkLabels[2]->setText(tr("Recursion (Lemma 2.1): needs n ≥ 1."));
+}
+
+QStringList BernsteinTab::checkTexts() const
+{
+    return {m_checkLabels[0]->text(), m_checkLabels[1]->text(), m_checkLabels[2]->text()};
+}
+
+QString BernsteinTab::curvePointText() const { return m_curveLabel->text(); }
+
+void BernsteinTab::updateExactPanel()
+{
+    QString html;
+    // Ex 2.4: B_i^n expanded in powers of t.
+    for (int n = m_allDegrees ? 0 : m_degree; n <= m_degree; ++n) {
+        html += ExactPanel::heading(tr("Bernstein polynomials of degree %1 (Def 2.5)").arg(n));
+        html += QStringLiteral("<p>");
+        for (int i = 0; i <= n; ++i)
+            html += QStringLiteral("%1 = %2<br>")
+                        .arg(basisHtml(QString::number(i), QString::number(n)),
+                             ExactPanel::polynomialHtml(toText(bernsteinPolynomial(i, n))));
+        html += QStringLiteral("</p>");
+    }
+    // Ex 2.5, Ex 2.6: the De Casteljau tab's curve written with Def 2.6, term by term.
+    const auto& points = m_deCasteljau->pointEditor()->points();
+    const int n = static_cast<int>(points.size()) - 1;
+    html += ExactPanel::heading(tr("The De Casteljau tab's curve in the Bernstein basis (Def 2.6)"));
+    const auto exact = smallRationalPoints(points);
+    if (!exact) {
+        html += ExactPanel::note(tr("The control points are not small fractions, so the curve is not expanded exactly."));
+    } else if (n > kMaxExactCurve) {
+        html += ExactPanel::note(tr("The expansion is shown up to degree %1; the curve has degree %2.").arg(kMaxExactCurve).arg(n));
+    } else {
+        const QString nText = QString::number(n);
+        html += QStringLiteral("<p>α(t) = Σ<sub>k=0</sub><sup>%1</sup> %2 P<sub>k</sub></p><p>")
+                    .arg(nText, basisHtml(QStringLiteral("k"), nText));
+        const auto terms = bernsteinTerms(*exact);
+        for (int k = 0; k <= n; ++k)
+            html += QStringLiteral("%1 P<sub>%2</sub> = (%3) · %4 = %5<br>")
+                        .arg(basisHtml(QString::number(k), nText))
+                        .arg(k)
+                        .arg(ExactPanel::polynomialHtml(toText(bernsteinPolynomial(k, n))),
+                             pointText((*exact)[static_cast<std::size_t>(k)]),
+                             ExactPanel::polynomialHtml(toText(terms[static_cast<std::size_t>(k)])));
+        html += QStringLiteral("</p><p><b>α(t) = %1</b></p>").arg(ExactPanel::polynomialHtml(toText(bernsteinSum(*exact))));
+    }
+    m_exact->setContent(html);
+}
+
+// ---------------------------------------------------------------- TabPage
+
+void BernsteinTab::retranslate()
+{
+    m_parameter->retranslate();
+    m_degreeLabel->setText(tr("Degree n:"));
+    const QString degreeTip = tr("The degree n of the Bernstein polynomials B_i^n(t) = C(n,i) t^i (1−t)^(n−i) (Def 2.5).");
+    m_degreeLabel->setToolTip(degreeTip);
+    m_degreeBox->setToolTip(degreeTip);
+    m_allBox->setText(tr("All degrees up to n"));
+    m_allBox->setToolTip(tr("Overlay the polynomials of every degree 0…n, one colour per degree, like the tots option "
+                            "of the thesis's Matlab Rep_Pol_Bernstein (Ex 2.4, Figure 2.4)."));
+    m_basisPlot->yAxis->setLabel(tr("value"));
+    m_basisPlot->setToolTip(tr("The Bernstein polynomials on [0, 1] (Def 2.5). Move the mouse to read their values; "
+                               "click or drag to move t, shared with the De Casteljau tab."));
+    m_weightsGroup->setToolTip(tr("Def 2.6: c(t) = Σ B_i^n(t) P_i. Each bar is the weight of one control point of the "
+                                  "De Casteljau tab at the current t; they sum to 1 (partition of unity)."));
+    m_weightsPlot->yAxis->setLabel(tr("weight"));
+    m_curveLabel->setToolTip(tr("The point c(t) from the Bernstein sum (Def 2.6) and from De Casteljau's algorithm "
+                                "(Def 2.4): equal by Prop 2.1."));
+    m_checksGroup->setTitle(tr("Properties at the current n and t"));
+    m_checksGroup->setToolTip(tr("Each property is checked twice: in floating point at t (the residual) and exactly, "
+                                 "as polynomials with rational coefficients."));
+    m_checkLabels[0]->setToolTip(tr("Partition of unity: the Bernstein polynomials of one degree sum to 1."));
+    m_checkLabels[1]->setToolTip(tr("Symmetry: B_i^n(t) = B_(n−i)^n(1 − t)."));
+    m_checkLabels[2]->setToolTip(tr("Lemma 2.1: B_i^n = (1 − t) B_i^(n−1) + t B_(i−1)^(n−1)."));
+    m_exact->setToolTip(tr("The Bernstein polynomials expanded in powers of t (Ex 2.4) and the De Casteljau tab's curve "
+                           "written in the Bernstein basis (Ex 2.5, Ex 2.6)."));
+    updateWeights();
+    updateChecks();
+    updateExactPanel();
+    m_basisPlot->replot(QCustomPlot::rpQueuedReplot); // the axis label
+}
+
+QJsonObject BernsteinTab::saveState() const
+{
+    QJsonObject state;
+    state.insert(QStringLiteral("degree"), m_degree);
+    state.insert(QStringLiteral("mode"), m_allDegrees ? QStringLiteral("all") : QStringLiteral("single"));
+    state.insert(QStringLiteral("t"), t());
+    return state;
+}
+
+bool BernsteinTab::loadState(const QJsonObject& state, QString* error)
+{
+    auto fail = [error](const QString& message) {
+        if (error)
+            *error = message;
+        return false;
+    };
+    int degree = 3;
+    if (const QJsonValue v = state.value(QStringLiteral("degree")); !v.isUndefined()) {
+        const double d = v.toDouble(-1);
+        if (!v.isDouble() || d != std::floor(d) || d < 0 || d > kMaxDegree)
+            return fail(tr("The Bernstein degree must be a whole number from 0 to %1.").arg(kMaxDegree));
+        degree = static_cast<int>(d);
+    }
+    bool all = false;
+    if (const QJsonValue v = state.value(QStringLiteral("mode")); !v.isUndefined()) {
+        if (v.toString() != QLatin1String("single") && v.toString() != QLatin1String("all"))
+            return fail(tr("The Bernstein mode must be \"single\" or \"all\"."));
+        all = v.toString() == QLatin1String("all");
+    }
+    std::optional<double> tt;
+    if (const QJsonValue v = state.value(QStringLiteral("t")); !v.isUndefined()) {
+        if (!v.isDouble() || !std::isfinite(v.toDouble()) || v.toDouble() < 0 || v.toDouble() > 1)
+            return fail(tr("The parameter t must be a number between 0 and 1."));
+        tt = v.toDouble();
+    }
+    setAllDegrees(all);
+    setDegree(degree);
+    if (tt)
+        setT(*tt);
+    return true;
+}
+
+bool BernsteinTab::loadExample(const granota::WorkedExample& example)
+{
+    const QString id = QString::fromStdString(example.id);
+    if (example.kind == "bernstein" && example.degree >= 0 && example.degree <= kMaxDegree) {
+        // Ex 2.4: every degree up to 5, as the thesis lists them.
+        setAllDegrees(true);
+        setDegree(example.degree);
+        emit statusMessage(tr("Ex %1: the Bernstein polynomials of every degree up to %2.").arg(id).arg(example.degree));
+        return true;
+    }
+    if (example.kind == "bezier" && !example.points.empty()
+        && static_cast<int>(example.points.size()) <= kMaxDegree + 1) {
+        // Ex 2.5, Ex 2.6: the curves of Ex 2.2 and Ex 2.3 through Def 2.6.
+        m_deCasteljau->pointEditor()->setPoints(toDouble(example.points), tr("Load Ex %1").arg(id));
+        m_deCasteljau->fitView();
+        setAllDegrees(false);
+        setDegree(static_cast<int>(example.points.size()) - 1);
+        setT(0.5);
+        emit statusMessage(tr("Ex %1: the curve written in the Bernstein basis is in the panel on the right.").arg(id));
+        return true;
+    }
+    return false;
+}
+
+Drawable* BernsteinTab::exportView() { return m_drawable.get(); }
+
+QString BernsteinTab::csv() const
+{
+    QStringList header{QStringLiteral("t")};
+    for (int i = 0; i <= m_degree; ++i)
+        header << QStringLiteral("B_%1^%2").arg(i).arg(m_degree);
+    QString out = header.join(QLatin1Char(',')) + QLatin1Char('\n');
+    for (int j = 0; j < kCsvSamples; ++j) {
+        const double tt = static_cast<double>(j) / (kCsvSamples - 1);
+        QStringList row{QString::fromStdString(formatDouble(tt))};
+        for (double b : bernsteinAll(m_degree, tt))
+            row << QString::fromStdString(formatDouble(b));
+        out += row.join(QLatin1Char(',')) + QLatin1Char('\n');
+    }
+    return out;
+}
+
+QString BernsteinTab::tikz() const
+{
+    TikzWriter w;
+    w.comment(QStringLiteral("Bernstein polynomials of degree %1 (Def 2.5) on [0, 1]").arg(m_degree));
+    w.polyline({{0, 0}, {1, 0}}, Qt::black, 0.6);
+    w.polyline({{0, 0}, {0, 1}}, Qt::black, 0.6);
+    for (int n = m_allDegrees ? 0 : m_degree; n <= m_degree; ++n) {
+        std::vector<std::vector<Point>> curves(static_cast<std::size_t>(n + 1));
+        for (int j = 0; j < kPlotSamples; ++j) {
+            const double tt = static_cast<double>(j) / (kPlotSamples - 1);
+            const auto b = bernsteinAll(n, tt);
+            for (int i = 0; i <= n; ++i)
+                curves[static_cast<std::size_t>(i)].push_back({tt, b[static_cast<std::size_t>(i)]});
+        }
+        for (int i = 0; i <= n; ++i)
+            w.polyline(curves[static_cast<std::size_t>(i)], CanvasStyle::series(m_allDegrees ? n : i), 1.0);
+    }
+    w.polyline({{t(), 0}, {t(), 1}}, QColor(0x33, 0x33, 0x33), 0.6, true);
+    return w.str();
+}
+
+void BernsteinTab::setPresentation(bool on)
+{
+    m_presentation = on;
+    m_exact->setPresentation(on);
+    applyPlotStyle();
+    updateExactPanel();
+}
+
+void BernsteinTab::showEvent(QShowEvent* event)
+{
+    TabPage::showEvent(event);
+    emit statusMessage(tr("Move the mouse over the plot to read B_i^n(t); click or drag to move t."));
+}
+
+} // namespace granota::ui

@@ -1,0 +1,126 @@
+#pragma once
+/// \file bernstein_tab.h
+/// The Bernstein tab (docs/tabs.md; thesis §2.1.2, Def 2.5, Lemma 2.1, Prop 2.1, Def 2.6,
+/// Ex 2.4–2.6): the basis B_i^n(t) for a chosen n or for every degree up to N (the Matlab
+/// Rep_Pol_Bernstein `tots`), their exact expansions, live checks of partition of unity,
+/// symmetry and Lemma 2.1, and the weights B_i^n(t) that Def 2.6 applies to the De
+/// Casteljau tab's control points at the shared parameter t.
+///
+/// Settings (degree, mode) are not undoable: this tab's QUndoStack stays empty. Loading
+/// Ex 2.5 or Ex 2.6 changes the De Casteljau tab's points, one step on that tab's stack.
+
+#include "core/curves/bezier/bernstein_properties.h"
+#include "ui/common/plot_drawable.h"
+#include "ui/shell/tab_page.h"
+
+#include <QString>
+
+#include <memory>
+
+class QCheckBox;
+class QCPBars;
+class QCPItemStraightLine;
+class QCPItemText;
+class QCustomPlot;
+class QGroupBox;
+class QLabel;
+class QMouseEvent;
+class QSpinBox;
+class QSplitter;
+class QUndoStack;
+
+namespace granota::ui {
+
+class DeCasteljauParameterControl;
+class DeCasteljauTab;
+class ExactPanel;
+
+class BernsteinTab : public TabPage {
+    Q_OBJECT
+public:
+    /// Shares the control points and the parameter t of the De Casteljau tab (docs/tabs.md).
+    explicit BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent = nullptr);
+    ~BernsteinTab() override;
+
+    QString key() const override { return QStringLiteral("bernstein"); }
+    QString title() const override { return tr("Bernstein"); }
+    void retranslate() override;
+    QJsonObject saveState() const override;
+    bool loadState(const QJsonObject& state, QString* error) override;
+    bool loadExample(const granota::WorkedExample& example) override;
+    QUndoStack* undoStack() const override { return m_undo; }
+    Drawable* exportView() override;
+    QString csv() const override;
+    QString tikz() const override;
+    void setPresentation(bool on) override;
+
+    /// The degree n of the basis shown (the largest degree N in all-degrees mode).
+    int degree() const { return m_degree; }
+    void setDegree(int n);
+    /// All degrees 0…N overlaid (the Matlab Rep_Pol_Bernstein(n, tots = true)).
+    bool allDegrees() const { return m_allDegrees; }
+    void setAllDegrees(bool on);
+    /// The shared parameter t (the De Casteljau tab's).
+    double t() const;
+    void setT(double t);
+
+    QCustomPlot* basisPlot() const { return m_basisPlot; }
+    QCustomPlot* weightsPlot() const { return m_weightsPlot; }
+    QCPBars* weightBars() const { return m_bars; }
+    ExactPanel* exactPanel() const { return m_exact; }
+    DeCasteljauParameterControl* parameterControl() const { return m_parameter; }
+    /// The checks of partition of unity, symmetry and Lemma 2.1 at the current n and t.
+    const BernsteinChecks& checks() const { return m_checks; }
+    /// The three check lines as shown (rich text), in that order.
+    QStringList checkTexts() const;
+    /// The comparison of Def 2.6 with De Casteljau at t, as shown.
+    QString curvePointText() const;
+    /// The hover readout for a parameter value (what the plot shows under the mouse).
+    QString readout(double t) const;
+    /// The x position (t) of the vertical line marking the current t.
+    double markerT() const;
+
+    static constexpr int kMaxDegree = 30;        ///< the spin box's range: 0…30
+    static constexpr int kMaxExactCurve = 8;     ///< the curve in powers of t up to this degree
+    static constexpr int kPlotSamples = 201;     ///< t samples per graph (Matlab linspace(0, 1, 200))
+
+protected:
+    void showEvent(QShowEvent* event) override;
+
+private:
+    void rebuildBasisPlot();
+    void updateMarker();
+    void updateWeights();
+    void updateChecks();
+    void updateExactPanel();
+    void applyPlotStyle();
+    void plotMouseMove(QMouseEvent* event);
+    void plotMousePress(QMouseEvent* event);
+
+    DeCasteljauTab* m_deCasteljau;
+    QUndoStack* m_undo;
+    QCustomPlot* m_basisPlot;
+    QCustomPlot* m_weightsPlot;
+    std::unique_ptr<PlotDrawable> m_drawable;
+    QCPBars* m_bars = nullptr;
+    QCPItemStraightLine* m_marker = nullptr;
+    QCPItemText* m_readout = nullptr;
+    ExactPanel* m_exact;
+    DeCasteljauParameterControl* m_parameter;
+    QLabel* m_degreeLabel;
+    QSpinBox* m_degreeBox;
+    QCheckBox* m_allBox;
+    QGroupBox* m_checksGroup;
+    QLabel* m_checkLabels[3];
+    QGroupBox* m_weightsGroup;
+    QLabel* m_curveLabel;
+    QSplitter* m_mainSplitter = nullptr;
+
+    int m_degree = 3;
+    bool m_allDegrees = false;
+    bool m_presentation = false;
+    bool m_dragging = false;
+    BernsteinChecks m_checks;
+};
+
+} // namespace granota::ui

@@ -1,0 +1,114 @@
+#include "ui/catmull_rom/catmull_rom_curves.h"
+
+#include "core/curves/splines/cubic_spline.h"
+#include "core/curves/bezier/de_casteljau.h"
+
+namespace granota::ui {
+
+namespace {
+
+
+
+/// Segment mode: the open curve without its two end segments (those are the ones Def 2.10
+/// has to invent neighbours for); with 4 points, the single segment of Def 2.8.
+template <class S>
+Expected<std::vector<Vec2<Polynomial<S>>>> interiorOnly(Expected<std::vector<Vec2<Polynomial<S>>>> open,
+                                                         std::size_t count)
+{
+    if (!open)
+        return open;
+    if (count < 4)
+        return makeError(ErrorCode::TooFewPoints, "A single segment needs 4 points.");
+    std::vector<Vec2<Polynomial<S>>> inner(open->begin() + 1, open->end() - 1);
+    return inner;
+}
+
+} // namespace
+
+CatmullRomEnds comparedEnds(CatmullRomEnds ends)
+{
+    return ends == CatmullRomEnds::Open ? CatmullRomEnds::Cyclic : CatmullRomEnds::Open;
+}
+
+int firstSegmentStart(CatmullRomEnds ends) { return ends == CatmullRomEnds::Segment ? 1 : 0; }
+
+Expected<std::vector<Vec2<Polynomial<Rational>>>> exactCurveSegments(const std::vector<RPoint>& q, const Rational& tau,
+                                                                     CatmullRomEnds ends)
+{
+    auto segs = catmullRomSegments(q, tau, coreMode(ends));
+    if (ends == CatmullRomEnds::Segment)
+        return interiorOnly(std::move(segs), q.size());
+    return segs;
+}
+
+Expected<std::vector<Vec2<Polynomial<double>>>> curveSegments(const std::vector<Point>& q, double tau,
+                                                              CatmullRomEnds ends, double alpha)
+{
+    auto segs = catmullRomSegments(q, tau, coreMode(ends), alpha);
+    if (ends == CatmullRomEnds::Segment)
+        return interiorOnly(std::move(segs), q.size());
+    return segs;
+}
+
+QString translatedError(const Error& error, CatmullRomEnds ends)
+{
+    switch (error.code) {
+    case ErrorCode::TooFewPoints:
+        switch (ends) {
+        case CatmullRomEnds::Open: return CatmullRomCurves::tr("An open curve needs at least 2 points.");
+        case CatmullRomEnds::Segment: return CatmullRomCurves::tr("A single segment (Def 2.8) needs at least 4 points.");
+        default: return CatmullRomCurves::tr("A cyclic or closed curve needs at least 3 points.");
+        }
+    case ErrorCode::InvalidInput: return CatmullRomCurves::tr("A point or a tension is not a finite number.");
+    case ErrorCode::OutOfRange: return CatmullRomCurves::tr("The curve overflows: the coordinates are too large.");
+    case ErrorCode::NotIncreasing:
+        return CatmullRomCurves::tr("No cubic spline (Def 2.3): the points are not a function of x — their abscissae must "
+                      "increase strictly from q0 to qn.");
+    default: return QString::fromStdString(error.message);
+    }
+}
+
+CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomSettings& settings)
+{
+    CatmullRomScene scene;
+    const double alpha = spacingAlpha(settings.spacing);
+    auto makeCurve = [&](const Rational& tau, CatmullRomEnds ends) {
+        CatmullRomCurve curve;
+        curve.tau = tau;
+        curve.ends = ends;
+        auto segs = curveSegments(points, toDouble(tau), ends, alpha);
+        if (!segs) {
+            curve.error = translatedError(segs.error(), ends);
+            return curve;
+        }
+        curve.segments = std::move(*segs);
+        if (!curve.segments.empty())
+            curve.samples = sampleSegments(curve.segments, CatmullRomScene::kSamplesPerSegment);
+        return curve;
+    };
+    for (const Rational& tau : settings.taus)
+        scene.curves.push_back(makeCurve(tau, settings.ends));
+    if (settings.compareEnds)
+        for (const Rational& tau : settings.taus)
+            scene.otherEnds.push_back(makeCurve(tau, comparedEnds(settings.ends)));
+    if (settings.bezier && points.size() >= 2)
+        scene.bezier = sampleBezier(points, CatmullRomScene::kBezierSamples);
+    if (settings.spline) {
+        const auto spline = naturalCubicSpline(points);
+        if (!spline) {
+            scene.splineError = translatedError(spline.error(), settings.ends);
+        } else {
+            for (int i = 0; i < spline->pieceCount(); ++i) {
+                const double a = spline->knots[static_cast<std::size_t>(i)];
+                const double b = spline->knots[static_cast<std::size_t>(i) + 1];
+                for (int j = 0; j < CatmullRomScene::kSamplesPerSegment; ++j) {
+                    const double x = a + (b - a) * j / (CatmullRomScene::kSamplesPerSegment - 1);
+                    scene.spline.push_back({x, spline->evaluatePiece(i, x)});
+                }
+            }
+        }
+    }
+    return scene;
+}
+
+} // namespace granota::ui

@@ -1,0 +1,63 @@
+#pragma once
+/// \file catmull_rom_curves.h
+/// What the Catmull-Rom tab draws, computed by the core from the points and the settings:
+/// one curve per τ (Def 2.10 in the chosen mode and spacing), the other end mode for Ex 2.13's
+/// comparison, the Bézier curve of the same points (§2.3) and the natural cubic spline
+/// (Def 2.3). No mathematics here: only calls to core/curves/splines/catmull_rom.h, de_casteljau.h and
+/// cubic_spline.h, and the translation of their errors.
+
+#include "core/base/expected.h"
+#include "core/exact/polynomial.h"
+#include "core/exact/rational.h"
+#include "core/base/vec2.h"
+#include "ui/catmull_rom/catmull_rom_settings.h"
+
+#include <QCoreApplication>
+#include <QString>
+
+#include <vector>
+
+namespace granota::ui {
+
+/// One Catmull-Rom curve: its segments in the local s ∈ [0, 1] and its samples.
+struct CatmullRomCurve {
+    Rational tau;
+    CatmullRomEnds ends = CatmullRomEnds::Open;
+    std::vector<Vec2<Polynomial<double>>> segments;
+    std::vector<Point> samples;  ///< kSamplesPerSegment per segment, ends included, in order
+    QString error;               ///< translated; empty when the curve exists
+};
+
+struct CatmullRomScene {
+    static constexpr int kSamplesPerSegment = 41; ///< `part` = 40 in the Matlab SegmentCatmullRom
+    static constexpr int kBezierSamples = 301;
+    std::vector<CatmullRomCurve> curves;    ///< one per τ, in the order of the list
+    std::vector<CatmullRomCurve> otherEnds; ///< compareEnds: one per τ in the other end mode
+    std::vector<Point> bezier;              ///< the Bézier curve of the points (when shown)
+    std::vector<Point> spline;              ///< the natural cubic spline (when shown and defined)
+    QString splineError;                    ///< translated: why there is no spline
+};
+
+/// The mode Ex 2.13 compares with: cyclic for an open curve, open otherwise.
+CatmullRomEnds comparedEnds(CatmullRomEnds ends);
+
+/// The segments of the curve through `q` (Def 2.10; Segment: the open curve's interior
+/// segments, Def 2.8). Exact with Rational (uniform spacing only).
+Expected<std::vector<Vec2<Polynomial<Rational>>>> exactCurveSegments(const std::vector<RPoint>& q, const Rational& tau,
+                                                                     CatmullRomEnds ends);
+Expected<std::vector<Vec2<Polynomial<double>>>> curveSegments(const std::vector<Point>& q, double tau,
+                                                              CatmullRomEnds ends, double alpha);
+
+/// The index of the first point of segment 0 (1 for Segment mode: the first segment starts at q1).
+int firstSegmentStart(CatmullRomEnds ends);
+
+/// A core error in the user's language.
+QString translatedError(const Error& error, CatmullRomEnds ends);
+
+CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomSettings& settings);
+
+class CatmullRomCurves {
+    Q_DECLARE_TR_FUNCTIONS(CatmullRomCurves)
+};
+
+} // namespace granota::ui

@@ -1,0 +1,421 @@
+#include "ui/catmull_rom/catmull_rom_report.h"
+
+#include "core/curves/splines/continuity_check.h"
+#include "core/curves/splines/cubic_spline.h"
+#include "core/exact/polynomial_text.h"
+#include "core/exact/rational_approximation.h"
+#include "core/curves/splines/segment_joins.h"
+#include "core/curves/splines/spline_offset_correction.h"
+#include "core/io/worked_examples.h"
+#include "ui/common/exact_panel.h"
+
+#include <QRegularExpression>
+
+#include <algorithm>
+
+namespace granota::ui {
+
+namespace {
+
+constexpr double kTolerance = 1e-9; ///< relative, for comparisons in doubles (continuity_check.h)
+
+QString text(const std::string& s) { return QString::fromStdString(s); }
+QString tauText(const Rational& t) { return text(toString(t)); }
+template <class S> QString poly(const Polynomial<S>& p, const char* var = "t")
+{
+    return ExactPanel::polynomialHtml(toText(p, var));
+}
+template <class S> QString vec(const Vec2<S>& v) { return text(detail::scalarText(v)).toHtmlEscaped(); }
+QString mark(bool ok)
+{
+    return ok ? QStringLiteral("<span style=\"color:#1a7f37\">✓</span>")
+              : QStringLiteral("<span style=\"color:#c62828\">✗</span>");
+}
+QString para(const QString& html) { return QStringLiteral("<p>%1</p>").arg(html); }
+/// Escapes `plain` and writes C^2 as C<sup>2</sup> (plainText() gives back "C^2").
+QString esc(const QString& plain)
+{
+    QString html = plain.toHtmlEscaped();
+    html.replace(QRegularExpression(QStringLiteral("\\^(\\d+|∞)")), QStringLiteral("<sup>\\1</sup>"));
+    return html;
+}
+QString sub(const QString& name, int index) { return QStringLiteral("%1<sub>%2</sub>").arg(name).arg(index); }
+
+QString segmentName(int index, int count, CatmullRomEnds ends)
+{
+    if (ends == CatmullRomEnds::Segment && count == 1)
+        return QStringLiteral("p(t)");
+    return sub(QStringLiteral("p"), index + 1 + firstSegmentStart(ends)) + QStringLiteral("(t)");
+}
+
+template <class S> QString segmentTable(const std::vector<Vec2<Polynomial<S>>>& segs, CatmullRomEnds ends)
+{
+    std::vector<QStringList> rows;
+    const int count = static_cast<int>(segs.size());
+    const int shown = std::min(count, CatmullRomReport::kMaxListedSegments);
+    for (int i = 0; i < shown; ++i) {
+        const auto& s = segs[static_cast<std::size_t>(i)];
+        rows.push_back({segmentName(i, count, ends), poly(s.x), poly(s.y)});
+    }
+    QString html = ExactPanel::table({QString(), QStringLiteral("x(t)"), QStringLiteral("y(t)")}, rows);
+    if (count > shown)
+        html += ExactPanel::note(CatmullRomReport::tr("… and %n more segments.", nullptr, count - shown));
+    return html;
+}
+
+template <class S> QString defectText(const ContinuityDefect<S>& d)
+{
+    const QString x = text(detail::scalarText(d.x));
+    switch (d.kind) {
+    case DefectKind::Jump:
+        return CatmullRomReport::tr("%1 jumps at x = %2: left %3, right %4 (jump %5)")
+            .arg(text(detail::derivativeName("s", d.order)), x, text(detail::scalarText(d.left)),
+                 text(detail::scalarText(d.right)), text(detail::scalarText(d.jump())));
+    case DefectKind::NotInterpolated:
+        return CatmullRomReport::tr("%1 does not interpolate (%2, %3): %1(%2) = %4")
+            .arg(QStringLiteral("s_%1").arg(d.piece + 1), x, text(detail::scalarText(d.expected)),
+                 text(detail::scalarText(d.got)));
+    case DefectKind::OutsideDomain:
+        return CatmullRomReport::tr("The point (%1, %2) lies outside the domain.")
+            .arg(x, text(detail::scalarText(d.expected)));
+    }
+    return {};
+}
+
+/// "✓ C² at every knot; interpolates all 4 points" or the failures, one per line.
+template <class S> QString continuitySummary(const ContinuityReport<S>& report, int checkedUpTo)
+{
+    QString html;
+    const int order = report.continuityOrder();
+    if (order < 0)
+        html += mark(false) + QLatin1Char(' ') + CatmullRomReport::tr("not continuous").toHtmlEscaped();
+    else if (order >= checkedUpTo)
+        html += mark(true) + QLatin1Char(' ') +
+                esc(CatmullRomReport::tr("C^%1 at every knot").arg(order));
+    else
+        html += mark(order >= 2) + QLatin1Char(' ') +
+                esc(CatmullRomReport::tr("C^%1, not C^%2").arg(order).arg(order + 1));
+    html += QStringLiteral("; ");
+    if (report.interpolates())
+        html += mark(true) + QLatin1Char(' ') +
+                CatmullRomReport::tr("interpolates all %n points", nullptr, report.dataPoints).toHtmlEscaped();
+    else
+        html += mark(false) + QLatin1Char(' ') + CatmullRomReport::tr("does not interpolate every point").toHtmlEscaped();
+    html = para(html);
+    QStringList lines;
+    for (const auto& d : report.defects)
+        if (d.kind != DefectKind::Jump || d.order <= std::max(order, 0) + 1)
+            lines << defectText(d).toHtmlEscaped();
+    if (!lines.isEmpty())
+        html += para(lines.join(QStringLiteral("<br>")));
+    return html;
+}
+
+/// The knot table of a function spline: x_i and, per derivative order, ✓ or ✗.
+template <class S> QString knotTable(const PiecewisePolynomial<S>& spline, const ContinuityReport<S>& report)
+{
+    QStringList header{CatmullRomReport::tr("knot")};
+    for (int k = 0; k <= report.maxOrder; ++k)
+        header << text(detail::derivativeName("s", k)).toHtmlEscaped();
+    std::vector<QStringList> rows;
+    for (int i = 1; i < spline.pieceCount(); ++i) {
+        QStringList row{QStringLiteral("x = %1").arg(text(detail::scalarText(spline.knots[static_cast<std::size_t>(i)])))};
+        for (int k = 0; k <= report.maxOrder; ++k) {
+            const bool bad = std::any_of(report.defects.begin(), report.defects.end(), [&](const auto& d) {
+                return d.kind == DefectKind::Jump && d.knot == i && d.order == k;
+            });
+            row << mark(!bad);
+        }
+        rows.push_back(row);
+    }
+    return ExactPanel::table(header, rows);
+}
+
+/// Prop 2.3 for one τ: a summary line, and for the selected τ the table knot by knot.
+template <class S>
+QString tangentSection(const std::vector<Vec2<Polynomial<S>>>& segs, const Rational& tau, CatmullRomEnds ends,
+                       int pointCount, bool uniform, bool withTable)
+{
+    const bool closed = ends == CatmullRomEnds::Closed;
+    const double tol = std::is_floating_point_v<S> ? kTolerance : 0.0;
+    const auto joins = segmentJoinValues(segs, 1, closed, tol);
+    const auto report = checkSegmentJoins(segs, 2, closed, tol);
+    const bool allEqual = std::all_of(joins.begin(), joins.end(), [](const auto& j) { return j.equal; });
+    const bool allParallel = std::all_of(joins.begin(), joins.end(), [](const auto& j) { return j.parallel; });
+    QString line = QStringLiteral("<b>τ = %1</b>: ").arg(tauText(tau));
+    if (joins.empty()) {
+        line += CatmullRomReport::tr("no interior knot").toHtmlEscaped();
+    } else if (allEqual) {
+        line += mark(true) + QLatin1Char(' ') +
+                CatmullRomReport::tr("equal tangents at all %n knots (C¹)", nullptr, static_cast<int>(joins.size()))
+                    .toHtmlEscaped();
+        line += QStringLiteral("; ") +
+                (report.continuityOrder() >= 2 ? CatmullRomReport::tr("C² too (p″ matches)")
+                                               : CatmullRomReport::tr("not C²: p″ jumps"))
+                    .toHtmlEscaped();
+    } else if (allParallel && !uniform) {
+        line += mark(true) + QLatin1Char(' ') +
+                CatmullRomReport::tr("parallel tangents at all %n knots (G¹), not equal ones (C¹) in the local "
+                                     "parameters",
+                                     nullptr, static_cast<int>(joins.size()))
+                    .toHtmlEscaped();
+    } else {
+        line += mark(false) + QLatin1Char(' ') + CatmullRomReport::tr("the tangents differ at some knots").toHtmlEscaped();
+    }
+    QString html = para(line);
+    if (!withTable || joins.empty())
+        return html;
+    std::vector<QStringList> rows;
+    const int shown = std::min(static_cast<int>(joins.size()), CatmullRomReport::kMaxListedSegments);
+    for (int j = 0; j < shown; ++j) {
+        const auto& v = joins[static_cast<std::size_t>(j)];
+        const int knot = (v.fromSegment + firstSegmentStart(ends) + 1) % std::max(pointCount, 1);
+        const int from = v.fromSegment + 1 + firstSegmentStart(ends), to = v.toSegment + 1 + firstSegmentStart(ends);
+        QString verdict = mark(v.equal);
+        if (!v.equal && v.parallel)
+            verdict += QStringLiteral(" G¹ ") + mark(true);
+        rows.push_back({sub(QStringLiteral("q"), knot), sub(QStringLiteral("p"), from) + QStringLiteral("′(1) = ") + vec(v.left),
+                        sub(QStringLiteral("p"), to) + QStringLiteral("′(0) = ") + vec(v.right), verdict});
+    }
+    html += ExactPanel::table({CatmullRomReport::tr("knot"), CatmullRomReport::tr("end of the segment before"),
+                               CatmullRomReport::tr("start of the segment after"), QString()},
+                              rows);
+    return html;
+}
+
+QString matrixSection(const CatmullRomSettings& settings)
+{
+    QString html = ExactPanel::heading(CatmullRomReport::tr("Matrix form (Lemma 2.3)"));
+    html += para(QStringLiteral("p(t) = [1 t t<sup>2</sup> t<sup>3</sup>] M(τ) [p<sub>0</sub> p<sub>1</sub> "
+                                "p<sub>2</sub> p<sub>3</sub>]<sup>T</sup>"));
+    for (const Rational& tau : settings.taus) {
+        const Matrix4<Rational> m = catmullRomMatrix(tau);
+        std::vector<std::vector<std::string>> entries;
+        for (const auto& row : m) {
+            std::vector<std::string> r;
+            for (const Rational& e : row)
+                r.push_back(toString(e));
+            entries.push_back(r);
+        }
+        html += ExactPanel::matrix(QStringLiteral("M(τ = %1)").arg(tauText(tau)), entries);
+    }
+    return html;
+}
+
+QString blendingSection(const CatmullRomSettings& settings)
+{
+    QString html = ExactPanel::heading(CatmullRomReport::tr("Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)"));
+    for (const Rational& tau : settings.taus) {
+        const auto w = blendingFunctions(tau);
+        std::vector<QStringList> rows;
+        for (int j = 0; j < 4; ++j)
+            rows.push_back({sub(QStringLiteral("w"), j) + QStringLiteral("(t)"), poly(w[static_cast<std::size_t>(j)])});
+        html += para(QStringLiteral("<b>τ = %1</b>").arg(tauText(tau))) + ExactPanel::table({}, rows);
+    }
+    return html;
+}
+
+QString processingSection(const CatmullRomSettings& settings)
+{
+    QString html = ExactPanel::heading(CatmullRomReport::tr("Processing's curveTightness"));
+    html += para(CatmullRomReport::tr("Processing draws the same curves with curveTightness(s), τ = (1 − s)/2: "
+                                      "s = 0 (its default) is τ = 1/2.")
+                     .toHtmlEscaped());
+    std::vector<QStringList> rows;
+    for (const Rational& tau : settings.taus) {
+        const double s = tauToCurveTightness(toDouble(tau));
+        const auto exact = smallRational(s);
+        rows.push_back({QStringLiteral("τ = %1").arg(tauText(tau)),
+                        QStringLiteral("curveTightness(%1)").arg(exact ? tauText(*exact) : text(formatDouble(s)))});
+    }
+    return html + ExactPanel::table({}, rows);
+}
+
+/// Ex 2.1's spline as printed, checked; the constant its s₂ lacks; the corrected pieces checked.
+QString example21Section(const std::vector<RPoint>& data)
+{
+    const WorkedExample* ex = findWorkedExample("2.1");
+    if (!ex || ex->points != data)
+        return {};
+    const Json* printedJson = ex->data.find("pieces_as_printed");
+    if (!printedJson || !printedJson->asArray())
+        return {};
+    PiecewisePolynomial<Rational> printed;
+    for (const RPoint& p : data)
+        printed.knots.push_back(p.x);
+    for (const Json& item : *printedJson->asArray()) {
+        const auto pieceText = item.asString();
+        const auto piece = pieceText ? parsePolynomial(*pieceText, 'x') : std::nullopt;
+        if (!piece)
+            return {};
+        printed.pieces.push_back(*piece);
+    }
+    if (!printed.isValid())
+        return {};
+    QString html = ExactPanel::heading(CatmullRomReport::tr("Ex 2.1 as printed in the thesis"));
+    std::vector<QStringList> rows;
+    for (int i = 0; i < printed.pieceCount(); ++i)
+        rows.push_back({sub(QStringLiteral("s"), i + 1) + QStringLiteral("(x)"), poly(printed.pieces[static_cast<std::size_t>(i)], "x")});
+    html += ExactPanel::table({}, rows);
+    const auto report = checkContinuity(printed, 2, data);
+    html += para(CatmullRomReport::tr("The check of Def 2.3 on the printed pieces:").toHtmlEscaped());
+    html += continuitySummary(report, 2);
+    const auto fix = correctConstantOffsets(printed, data);
+    for (const auto& c : fix.corrections) {
+        const QString name = QStringLiteral("s_%1").arg(c.piece + 1);
+        const QString offset = (c.offset > 0 ? QStringLiteral("+") : QString()) + tauText(c.offset);
+        html += para(CatmullRomReport::tr("%1 as printed misses both of its points by the same constant: it lacks %2.")
+                         .arg(name, offset)
+                         .toHtmlEscaped());
+        html += para(CatmullRomReport::tr("Correct %1:").arg(name).toHtmlEscaped() + QStringLiteral(" ") +
+                     sub(QStringLiteral("s"), c.piece + 1) + QStringLiteral("(x) = ") +
+                     poly(fix.corrected.pieces[static_cast<std::size_t>(c.piece)], "x"));
+    }
+    if (!fix.corrections.empty()) {
+        html += para(CatmullRomReport::tr("The corrected spline:").toHtmlEscaped());
+        html += continuitySummary(checkContinuity(fix.corrected, 2, data), 2);
+        html += ExactPanel::note(CatmullRomReport::tr("Ex 2.1's spline is a cubic spline (Def 2.3) but not the natural "
+                                                      "one: s″ ≠ 0 at its ends, so its pieces differ from those above."));
+    }
+    return html;
+}
+
+QString splineSection(const std::vector<Point>& points, const std::optional<std::vector<RPoint>>& rational,
+                      const CatmullRomScene& scene)
+{
+    QString html = ExactPanel::heading(CatmullRomReport::tr("Cubic spline C² (Def 2.3), natural ends"));
+    if (!scene.splineError.isEmpty())
+        return html + ExactPanel::note(scene.splineError);
+    constexpr int kChecked = 3; // s, s′, s″ must match; s‴ shows that it is not more than C²
+    if (rational) {
+        const auto spline = naturalCubicSpline(*rational);
+        if (!spline)
+            return html + ExactPanel::note(translatedError(spline.error(), CatmullRomEnds::Open));
+        std::vector<QStringList> rows;
+        const int shown = std::min(spline->pieceCount(), CatmullRomReport::kMaxListedSegments);
+        for (int i = 0; i < shown; ++i)
+            rows.push_back({sub(QStringLiteral("s"), i + 1) + QStringLiteral("(x)"),
+                            QStringLiteral("[%1, %2]").arg(tauText(spline->knots[static_cast<std::size_t>(i)]),
+                                                           tauText(spline->knots[static_cast<std::size_t>(i) + 1])),
+                            poly(spline->pieces[static_cast<std::size_t>(i)], "x")});
+        html += ExactPanel::table({}, rows);
+        const auto report = checkContinuity(*spline, kChecked, *rational);
+        html += continuitySummary(report, 2) + knotTable(*spline, report);
+        html += example21Section(*rational);
+    } else {
+        const auto spline = naturalCubicSpline(points);
+        if (!spline)
+            return html + ExactPanel::note(translatedError(spline.error(), CatmullRomEnds::Open));
+        html += para(CatmullRomReport::tr("In decimals, each piece in powers of u = x − x_i:").toHtmlEscaped());
+        std::vector<QStringList> rows;
+        const int shown = std::min(spline->pieceCount(), CatmullRomReport::kMaxListedSegments);
+        for (int i = 0; i < shown; ++i)
+            rows.push_back({sub(QStringLiteral("s"), i + 1), poly(spline->localPiece(i), "u")});
+        html += ExactPanel::table({}, rows);
+        const auto report = checkContinuity(*spline, kChecked, points, kTolerance);
+        html += continuitySummary(report, 2) + knotTable(*spline, report);
+    }
+    return html;
+}
+
+} // namespace
+
+QString CatmullRomReport::endsName(CatmullRomEnds ends)
+{
+    switch (ends) {
+    case CatmullRomEnds::Open: return tr("open");
+    case CatmullRomEnds::Cyclic: return tr("cyclic");
+    case CatmullRomEnds::Closed: return tr("closed");
+    case CatmullRomEnds::Segment: return tr("single segment");
+    }
+    return {};
+}
+
+QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRomSettings& settings,
+                               const CatmullRomScene& scene)
+{
+    const auto rational = smallRationalPoints(points);
+    const bool uniform = settings.spacing == CatmullRomSpacing::Uniform;
+    const bool exact = rational.has_value() && uniform;
+    const int count = static_cast<int>(points.size());
+    QString html;
+    if (settings.spline)
+        html += splineSection(points, rational, scene);
+
+    // Segments (Def 2.10), the current mode and, for Ex 2.13, the other one.
+    std::vector<CatmullRomEnds> modes{settings.ends};
+    if (settings.compareEnds)
+        modes.push_back(comparedEnds(settings.ends));
+    for (std::size_t m = 0; m < modes.size(); ++m) {
+        const CatmullRomEnds ends = modes[m];
+        html += ExactPanel::heading(tr("Segments, t ∈ [0, 1]: %1").arg(endsName(ends)));
+        if (!exact)
+            html += ExactPanel::note(!uniform ? tr("Centripetal and chordal spacing: coefficients in decimals.")
+                                              : tr("The points are not small fractions: coefficients in decimals."));
+        const auto& curves = m == 0 ? scene.curves : scene.otherEnds;
+        for (std::size_t i = 0; i < settings.taus.size(); ++i) {
+            const Rational& tau = settings.taus[i];
+            html += para(QStringLiteral("<b>τ = %1</b>").arg(tauText(tau)));
+            if (exact) {
+                const auto segs = exactCurveSegments(*rational, tau, ends);
+                html += segs ? segmentTable(*segs, ends) : ExactPanel::note(translatedError(segs.error(), ends));
+            } else if (i < curves.size()) {
+                html += curves[i].error.isEmpty() ? segmentTable(curves[i].segments, ends)
+                                                  : ExactPanel::note(curves[i].error);
+            }
+        }
+    }
+
+    // Prop 2.3, knot by knot for the selected τ.
+    html += ExactPanel::heading(tr("Tangents at the knots (Prop 2.3)"));
+    html += para(tr("Catmull-Rom curves are C¹: at every knot c_i′(1) = c_{i+1}′(0) = τ(q_{i+1} − q_{i−1}).")
+                     .toHtmlEscaped());
+    int selectedOrder = -1;
+    for (std::size_t i = 0; i < settings.taus.size(); ++i) {
+        const Rational& tau = settings.taus[i];
+        const bool table = static_cast<int>(i) == settings.selectedTau;
+        const bool closed = settings.ends == CatmullRomEnds::Closed;
+        if (exact) {
+            const auto segs = exactCurveSegments(*rational, tau, settings.ends);
+            if (!segs)
+                continue;
+            html += tangentSection(*segs, tau, settings.ends, count, true, table);
+            if (table)
+                selectedOrder = checkSegmentJoins(*segs, 2, closed).continuityOrder();
+        } else if (i < scene.curves.size() && scene.curves[i].error.isEmpty()) {
+            html += tangentSection(scene.curves[i].segments, tau, settings.ends, count, uniform, table);
+            if (table)
+                selectedOrder = checkSegmentJoins(scene.curves[i].segments, 2, closed, kTolerance).continuityOrder();
+        }
+    }
+
+    // §2.3: what each kind of curve guarantees.
+    if (settings.bezier || settings.spline) {
+        html += ExactPanel::heading(tr("Smoothness compared (§2.3)"));
+        std::vector<QStringList> rows;
+        if (settings.bezier)
+            rows.push_back({tr("Bézier, degree %1").arg(count - 1), esc(tr("C^∞: one polynomial")),
+                            tr("only q0 and q%1").arg(count - 1)});
+        if (settings.selectedTau >= 0 && settings.selectedTau < static_cast<int>(settings.taus.size()))
+            rows.push_back({tr("Catmull-Rom, τ = %1").arg(tauText(settings.taus[static_cast<std::size_t>(settings.selectedTau)])),
+                            selectedOrder >= 0 ? esc(tr("C^%1 at the joins (checked)").arg(std::min(selectedOrder, 2)))
+                                               : tr("not C¹ at the joins (checked)"),
+                            tr("every point")});
+        if (settings.spline)
+            rows.push_back({tr("Cubic spline"),
+                            scene.splineError.isEmpty() ? tr("C² (checked above)") : tr("not defined"),
+                            scene.splineError.isEmpty() ? tr("every point") : QStringLiteral("—")});
+        html += ExactPanel::table({tr("curve"), tr("smoothness"), tr("passes through")}, rows);
+        if (settings.bezier)
+            html += para(tr("The Bézier curve only approaches the inner points: Catmull-Rom passes through all of "
+                            "them, which is why the thesis chose it for the frog (§2.3, §4.12).")
+                             .toHtmlEscaped());
+    }
+
+    html += matrixSection(settings);
+    html += blendingSection(settings);
+    html += processingSection(settings);
+    return html;
+}
+
+} // namespace granota::ui

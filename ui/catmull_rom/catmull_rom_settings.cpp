@@ -1,0 +1,173 @@
+#include "ui/catmull_rom/catmull_rom_settings.h"
+
+#include <QJsonArray>
+
+#include <cmath>
+
+namespace granota::ui {
+
+bool CatmullRomSettings::operator==(const CatmullRomSettings& o) const
+{
+    return taus == o.taus && selectedTau == o.selectedTau && ends == o.ends && spacing == o.spacing &&
+           bezier == o.bezier && spline == o.spline && compareEnds == o.compareEnds && allTausInPlot == o.allTausInPlot;
+}
+
+QString endsKey(CatmullRomEnds ends)
+{
+    switch (ends) {
+    case CatmullRomEnds::Open: return QStringLiteral("open");
+    case CatmullRomEnds::Cyclic: return QStringLiteral("cyclic");
+    case CatmullRomEnds::Closed: return QStringLiteral("closed");
+    case CatmullRomEnds::Segment: return QStringLiteral("segment");
+    }
+    return {};
+}
+
+std::optional<CatmullRomEnds> endsFromKey(const QString& key)
+{
+    for (auto e : {CatmullRomEnds::Open, CatmullRomEnds::Cyclic, CatmullRomEnds::Closed, CatmullRomEnds::Segment})
+        if (endsKey(e) == key)
+            return e;
+    return std::nullopt;
+}
+
+QString spacingKey(CatmullRomSpacing spacing)
+{
+    switch (spacing) {
+    case CatmullRomSpacing::Uniform: return QStringLiteral("uniform");
+    case CatmullRomSpacing::Centripetal: return QStringLiteral("centripetal");
+    case CatmullRomSpacing::Chordal: return QStringLiteral("chordal");
+    }
+    return {};
+}
+
+std::optional<CatmullRomSpacing> spacingFromKey(const QString& key)
+{
+    for (auto s : {CatmullRomSpacing::Uniform, CatmullRomSpacing::Centripetal, CatmullRomSpacing::Chordal})
+        if (spacingKey(s) == key)
+            return s;
+    return std::nullopt;
+}
+
+double spacingAlpha(CatmullRomSpacing spacing)
+{
+    switch (spacing) {
+    case CatmullRomSpacing::Uniform: return 0.0;
+    case CatmullRomSpacing::Centripetal: return 0.5;
+    case CatmullRomSpacing::Chordal: return 1.0;
+    }
+    return 0.0;
+}
+
+CatmullRomMode coreMode(CatmullRomEnds ends)
+{
+    switch (ends) {
+    case CatmullRomEnds::Cyclic: return CatmullRomMode::Cyclic;
+    case CatmullRomEnds::Closed: return CatmullRomMode::Closed;
+    case CatmullRomEnds::Open:
+    case CatmullRomEnds::Segment: return CatmullRomMode::Open;
+    }
+    return CatmullRomMode::Open;
+}
+
+std::optional<Rational> parseTension(const QString& text, TensionProblem* problem)
+{
+    QString t = text.trimmed();
+    t.replace(QChar(0x2212), QLatin1Char('-')); // "−1/2" as the thesis prints it
+    t.remove(QLatin1Char(' '));
+    const auto value = parseRational(t.toStdString());
+    if (!value) {
+        if (problem)
+            *problem = TensionProblem::NotANumber;
+        return std::nullopt;
+    }
+    if (abs(*value) > CatmullRomSettings::kMaxTensionAbs) {
+        if (problem)
+            *problem = TensionProblem::OutOfRange;
+        return std::nullopt;
+    }
+    if (problem)
+        *problem = TensionProblem::None;
+    return value;
+}
+
+void writeSettings(const CatmullRomSettings& s, QJsonObject& json)
+{
+    QJsonArray taus;
+    for (const Rational& t : s.taus)
+        taus.append(QString::fromStdString(toString(t)));
+    json.insert(QStringLiteral("taus"), taus);
+    json.insert(QStringLiteral("selected_tau"), s.selectedTau);
+    json.insert(QStringLiteral("mode"), endsKey(s.ends));
+    json.insert(QStringLiteral("parametrization"), spacingKey(s.spacing));
+    json.insert(QStringLiteral("bezier"), s.bezier);
+    json.insert(QStringLiteral("spline"), s.spline);
+    json.insert(QStringLiteral("compare_ends"), s.compareEnds);
+    json.insert(QStringLiteral("all_taus_in_plot"), s.allTausInPlot);
+}
+
+std::optional<CatmullRomSettings> readSettings(const QJsonObject& json, QString* problem)
+{
+    auto fail = [problem](const QString& why) -> std::optional<CatmullRomSettings> {
+        if (problem)
+            *problem = why;
+        return std::nullopt;
+    };
+    CatmullRomSettings s;
+    const QJsonValue taus = json.value(QStringLiteral("taus"));
+    if (!taus.isArray() || taus.toArray().isEmpty() || taus.toArray().size() > CatmullRomSettings::kMaxTensions)
+        return fail(QStringLiteral("taus"));
+    s.taus.clear();
+    for (const QJsonValue& v : taus.toArray()) {
+        std::optional<Rational> tau;
+        if (v.isString())
+            tau = parseTension(v.toString());
+        else if (v.isDouble())
+            tau = parseTension(QString::number(v.toDouble(), 'g', 17));
+        if (!tau)
+            return fail(QStringLiteral("tau"));
+        for (const Rational& t : s.taus)
+            if (t == *tau)
+                return fail(QStringLiteral("duplicate tau"));
+        s.taus.push_back(*tau);
+    }
+    const QJsonValue selected = json.value(QStringLiteral("selected_tau"));
+    if (!selected.isUndefined()) {
+        if (!selected.isDouble() || selected.toDouble() != std::floor(selected.toDouble()))
+            return fail(QStringLiteral("selected_tau"));
+        s.selectedTau = selected.toInt(-1);
+    } else {
+        s.selectedTau = 0;
+    }
+    if (s.selectedTau < 0 || s.selectedTau >= static_cast<int>(s.taus.size()))
+        return fail(QStringLiteral("selected_tau"));
+    const QJsonValue mode = json.value(QStringLiteral("mode"));
+    if (!mode.isUndefined()) {
+        const auto e = endsFromKey(mode.toString());
+        if (!e)
+            return fail(QStringLiteral("mode"));
+        s.ends = *e;
+    }
+    const QJsonValue spacing = json.value(QStringLiteral("parametrization"));
+    if (!spacing.isUndefined()) {
+        const auto p = spacingFromKey(spacing.toString());
+        if (!p)
+            return fail(QStringLiteral("parametrization"));
+        s.spacing = *p;
+    }
+    const std::pair<const char*, bool*> flags[] = {{"bezier", &s.bezier},
+                                                   {"spline", &s.spline},
+                                                   {"compare_ends", &s.compareEnds},
+                                                   {"all_taus_in_plot", &s.allTausInPlot}};
+    for (const auto& [key, target] : flags) {
+        const QJsonValue v = json.value(QLatin1String(key));
+        if (v.isUndefined())
+            continue;
+        if (!v.isBool())
+            return fail(QLatin1String(key));
+        *target = v.toBool();
+    }
+    return s;
+}
+
+} // namespace granota::ui

@@ -1,0 +1,932 @@
+#include "ui/catmull_rom/catmull_rom_tab.h"
+#include "ui/common/number_text.h"
+
+#include "core/exact/polynomial_text.h"
+#include "core/exact/rational_approximation.h"
+#include "core/io/worked_examples.h"
+#include "ui/catmull_rom/catmull_rom_commands.h"
+#include "ui/catmull_rom/catmull_rom_report.h"
+#include "ui/common/curve_canvas.h"
+#include "ui/common/exact_panel.h"
+#include "ui/common/point_editor.h"
+#include "ui/common/point_table.h"
+#include "ui/shell/tikz_writer.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QJsonArray>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPainter>
+#include <QPainterPath>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSlider>
+#include <QSplitter>
+#include <QTabWidget>
+#include <QUndoStack>
+#include <QVBoxLayout>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace granota::ui {
+
+namespace {
+
+constexpr int kSliderSteps = 20;          ///< slider units per unit of τ: steps of 0.05
+constexpr double kPresentationScale = 1.6; ///< lines and handles in presentation mode
+constexpr int kPlotSamples = 101;         ///< t = 0, 0.01, …, 1 (the Matlab linspace(0,1))
+const QColor kBezierColor(0x6a, 0x3d, 0x9a);
+const QColor kSplineColor(0x33, 0x33, 0x33);
+const QColor kErrorColor(0xc6, 0x28, 0x28);
+
+QString tauString(const Rational& tau) { return QString::fromStdString(toString(tau)); }
+
+/// τ as Processing's curveTightness(s), s = 1 − 2τ, as a short fraction or decimal.
+QString tightnessString(const Rational& tau)
+{
+    const double s = tauToCurveTightness(toDouble(tau));
+    if (const auto q = smallRational(s))
+        return QString::fromStdString(toString(*q));
+    return displayNumber(s);
+}
+
+Qt::PenStyle tauPenStyle(int i)
+{
+    static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine, Qt::DashDotLine, Qt::DashDotDotLine};
+    return styles[i % 5];
+}
+
+void drawPolyline(QPainter& p, const ViewTransform& view, const std::vector<Point>& points)
+{
+    if (points.size() < 2)
+        return;
+    QPolygonF poly;
+    poly.reserve(static_cast<int>(points.size()));
+    for (const Point& q : points)
+        if (isFinite(q))
+            poly << view.toScreen(q);
+    p.drawPolyline(poly);
+}
+
+/// The rectangle holding the points, never empty (one point or coincident points get a unit box).
+QRectF pointBounds(const std::vector<Point>& points)
+{
+    if (points.empty())
+        return {-1, -1, 2, 2};
+    double x0 = points[0].x, x1 = x0, y0 = points[0].y, y1 = y0;
+    for (const Point& p : points) {
+        x0 = std::min(x0, p.x);
+        x1 = std::max(x1, p.x);
+        y0 = std::min(y0, p.y);
+        y1 = std::max(y1, p.y);
+    }
+    double w = x1 - x0, h = y1 - y0;
+    const double size = std::max({w, h, 0.0});
+    const double pad = size > 0 ? 0.0 : std::max(1e-9, std::max(std::fabs(x0), std::fabs(y0)) * 0.1 + (x0 == 0 && y0 == 0 ? 1.0 : 0.0));
+    if (w < size * 0.05 || w == 0)
+        w = std::max(size * 0.05, pad);
+    if (h < size * 0.05 || h == 0)
+        h = std::max(size * 0.05, pad);
+    const QPointF c((x0 + x1) / 2, (y0 + y1) / 2);
+    return QRectF(c.x() - w / 2, c.y() - h / 2, w, h);
+}
+
+} // namespace
+
+CatmullRomTab::CatmullRomTab(QWidget* parent)
+    : TabPage(parent), m_undo(new QUndoStack(this)), m_canvas(new CurveCanvas(this))
+{
+    // Curves under the handles, the legend on top.
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& v, const CanvasStyle& s) { drawCurves(p, v, s); });
+    m_editor = new PointEditor(m_canvas, m_undo, this);
+    m_editor->setLabelPrefix(QStringLiteral("q"));
+    m_editor->setCountLimits(2, CatmullRomSettings::kMaxPoints);
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& v, const CanvasStyle& s) { drawLegend(p, v, s); });
+    buildUi();
+
+    connect(m_editor, &PointEditor::pointsChanged, this, &CatmullRomTab::pointsEdited);
+    connect(m_editor, &PointEditor::message, this, &CatmullRomTab::refuse);
+    connect(m_table, &PointTable::message, this, &CatmullRomTab::refuse);
+
+    // Start as Ex 2.11: its four points, τ ∈ {0, 1/2, 2}, open ends.
+    std::vector<Point> start{{1, 1}, {3, 4}, {2, -1}, {5, 1}};
+    if (const WorkedExample* ex = findWorkedExample("2.11"))
+        start = toDouble(ex->points);
+    m_editor->applyPoints(start);
+    applySettings(CatmullRomSettings{});
+    retranslate();
+    updateContentBounds(true);
+}
+
+// ---------------------------------------------------------------- widgets
+
+void CatmullRomTab::buildUi()
+{
+    // Tensions.
+    m_tensionBox = new QGroupBox(this);
+    m_tauList = new QListWidget(m_tensionBox);
+    m_tauList->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_tauEdit = new QLineEdit(m_tensionBox);
+    m_addTau = new QPushButton(m_tensionBox);
+    m_removeTau = new QPushButton(m_tensionBox);
+    m_tauSlider = new QSlider(Qt::Horizontal, m_tensionBox);
+    m_tauSlider->setRange(-CatmullRomSettings::kMaxTensionAbs * kSliderSteps,
+                          CatmullRomSettings::kMaxTensionAbs * kSliderSteps);
+    m_tauSlider->setPageStep(kSliderSteps / 2);
+    m_sliderLabel = new QLabel(m_tensionBox);
+    m_sliderLabel->setWordWrap(true);
+    auto* tauLayout = new QGridLayout(m_tensionBox);
+    tauLayout->addWidget(m_tauList, 0, 0, 1, 3);
+    tauLayout->addWidget(m_tauEdit, 1, 0);
+    tauLayout->addWidget(m_addTau, 1, 1);
+    tauLayout->addWidget(m_removeTau, 1, 2);
+    tauLayout->addWidget(m_sliderLabel, 2, 0, 1, 3);
+    tauLayout->addWidget(m_tauSlider, 3, 0, 1, 3);
+    tauLayout->setColumnStretch(0, 1);
+
+    connect(m_addTau, &QPushButton::clicked, this, [this] {
+        if (addTension(m_tauEdit->text()))
+            m_tauEdit->clear();
+    });
+    connect(m_tauEdit, &QLineEdit::returnPressed, m_addTau, &QPushButton::click);
+    connect(m_removeTau, &QPushButton::clicked, this, [this] { removeTension(m_settings.selectedTau); });
+    connect(m_tauList, &QListWidget::currentRowChanged, this, [this](int row) {
+        if (!m_syncing)
+            setSelectedTension(row);
+    });
+    connect(m_tauSlider, &QSlider::valueChanged, this, [this](int value) {
+        if (!m_syncing)
+            sliderMoved(value);
+    });
+
+    // Curve options.
+    m_curveBox = new QGroupBox(this);
+    m_endsLabel = new QLabel(m_curveBox);
+    m_endsCombo = new QComboBox(m_curveBox);
+    m_spacingLabel = new QLabel(m_curveBox);
+    m_spacingCombo = new QComboBox(m_curveBox);
+    for (int i = 0; i < 4; ++i)
+        m_endsCombo->addItem(QString());
+    for (int i = 0; i < 3; ++i)
+        m_spacingCombo->addItem(QString());
+    m_endsLabel->setBuddy(m_endsCombo);
+    m_spacingLabel->setBuddy(m_spacingCombo);
+    m_bezierCheck = new QCheckBox(m_curveBox);
+    m_splineCheck = new QCheckBox(m_curveBox);
+    m_compareCheck = new QCheckBox(m_curveBox);
+    auto* curveLayout = new QGridLayout(m_curveBox);
+    curveLayout->addWidget(m_endsLabel, 0, 0);
+    curveLayout->addWidget(m_endsCombo, 0, 1);
+    curveLayout->addWidget(m_spacingLabel, 1, 0);
+    curveLayout->addWidget(m_spacingCombo, 1, 1);
+    curveLayout->addWidget(m_bezierCheck, 2, 0, 1, 2);
+    curveLayout->addWidget(m_splineCheck, 3, 0, 1, 2);
+    curveLayout->addWidget(m_compareCheck, 4, 0, 1, 2);
+    curveLayout->setColumnStretch(1, 1);
+    connect(m_endsCombo, &QComboBox::currentIndexChanged, this, [this](int i) {
+        if (!m_syncing && i >= 0)
+            setEnds(static_cast<CatmullRomEnds>(i));
+    });
+    connect(m_spacingCombo, &QComboBox::currentIndexChanged, this, [this](int i) {
+        if (!m_syncing && i >= 0)
+            setSpacing(static_cast<CatmullRomSpacing>(i));
+    });
+    connect(m_bezierCheck, &QCheckBox::toggled, this, [this](bool on) {
+        if (!m_syncing)
+            setBezierVisible(on);
+    });
+    connect(m_splineCheck, &QCheckBox::toggled, this, [this](bool on) {
+        if (!m_syncing)
+            setSplineVisible(on);
+    });
+    connect(m_compareCheck, &QCheckBox::toggled, this, [this](bool on) {
+        if (!m_syncing)
+            setCompareEnds(on);
+    });
+
+    // Blending functions plot.
+    auto* plotBox = new QWidget(this);
+    m_plotTitle = new QLabel(plotBox);
+    m_allTausCheck = new QCheckBox(plotBox);
+    m_plot = new QCustomPlot(plotBox);
+    m_plot->setMinimumHeight(120);
+    m_plot->legend->setVisible(true);
+    m_plot->legend->setBrush(QColor(255, 255, 255, 190));
+    m_plot->legend->setFillOrder(QCPLayoutGrid::foRowsFirst);
+    m_plot->legend->setWrap(4); // w0…w3 in one column, the line style of each τ in the next
+    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+    m_plot->xAxis->setRange(0, 1);
+    auto* plotHeader = new QHBoxLayout;
+    plotHeader->addWidget(m_plotTitle, 1);
+    plotHeader->addWidget(m_allTausCheck);
+    auto* plotLayout = new QVBoxLayout(plotBox);
+    plotLayout->setContentsMargins(0, 4, 0, 0);
+    plotLayout->addLayout(plotHeader);
+    plotLayout->addWidget(m_plot, 1);
+    connect(m_allTausCheck, &QCheckBox::toggled, this, [this](bool on) {
+        if (!m_syncing)
+            setAllTausInPlot(on);
+    });
+
+    // Exact results and the points table.
+    m_panel = new ExactPanel(this);
+    m_table = new PointTable(m_editor, this);
+    m_sideTabs = new QTabWidget(this);
+    m_sideTabs->addTab(m_panel, QString());
+    m_sideTabs->addTab(m_table, QString());
+
+    auto* controls = new QWidget;
+    auto* controlsLayout = new QVBoxLayout(controls);
+    controlsLayout->setContentsMargins(0, 0, 0, 0);
+    controlsLayout->addWidget(m_tensionBox);
+    controlsLayout->addWidget(m_curveBox);
+    controlsLayout->addStretch(1);
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(controls);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+
+    auto* right = new QSplitter(Qt::Vertical, this);
+    right->addWidget(scroll);
+    right->addWidget(m_sideTabs);
+    right->setStretchFactor(0, 0);
+    right->setStretchFactor(1, 1);
+    right->setSizes({380, 340});
+    right->setChildrenCollapsible(false);
+
+    auto* left = new QSplitter(Qt::Vertical, this);
+    left->addWidget(m_canvas);
+    left->addWidget(plotBox);
+    left->setStretchFactor(0, 3);
+    left->setStretchFactor(1, 1);
+    left->setSizes({520, 200});
+    left->setChildrenCollapsible(false);
+
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->addWidget(left);
+    split->addWidget(right);
+    split->setStretchFactor(0, 1);
+    split->setStretchFactor(1, 0);
+    split->setSizes({830, 450});
+    split->setChildrenCollapsible(false);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(split);
+}
+
+void CatmullRomTab::retranslate()
+{
+    m_tensionBox->setTitle(tr("Tensions τ (Def 2.8)"));
+    m_tensionBox->setToolTip(tr("The tension τ scales the tangents p′(0) = τ(p2 − p0), p′(1) = τ(p3 − p1) of every "
+                                "segment (Def 2.8): 0 gives straight segments, 1/2 is the usual value, negative "
+                                "values turn the tangents round (Ex 2.12). One curve per τ, in its colour."));
+    m_tauList->setToolTip(tr("The tensions drawn, each with its colour and Processing's curveTightness(s), "
+                             "τ = (1 − s)/2. Select one for the slider, the blending plot and the tangent table."));
+    m_tauEdit->setPlaceholderText(tr("τ, e.g. 1/2 or -0.5"));
+    m_tauEdit->setToolTip(tr("Type a tension as a decimal or a fraction (-1/2), between −10 and 10, and press Enter."));
+    m_addTau->setText(tr("&Add"));
+    m_addTau->setToolTip(tr("Add the typed tension: one more curve on the canvas (Ex 2.11 compares 0, 1/2 and 2)."));
+    m_removeTau->setText(tr("&Remove"));
+    m_removeTau->setToolTip(tr("Remove the selected tension and its curve."));
+    m_tauSlider->setToolTip(tr("Drag to change the selected tension in steps of 0.05, from −10 to 10; the curve, "
+                               "the blending functions and the exact panel follow."));
+    m_curveBox->setTitle(tr("Curve (Def 2.10)"));
+    m_endsLabel->setText(tr("&Ends:"));
+    m_endsCombo->setItemText(0, tr("open (ends repeated)"));
+    m_endsCombo->setItemText(1, tr("cyclic (n segments)"));
+    m_endsCombo->setItemText(2, tr("closed (n + 1 segments)"));
+    m_endsCombo->setItemText(3, tr("single segment (Def 2.8)"));
+    m_endsCombo->setToolTip(tr("How the end segments get their missing neighbours (Def 2.10, Matlab Rep_CatmullRom): "
+                               "open repeats q0 and qn (p1′(0) = τ(q1 − q0)); cyclic takes q₋₁ = qn and qn₊₁ = q0 "
+                               "(n segments, Ex 2.13); closed adds the segment from qn back to q0; a single segment "
+                               "(Def 2.8, Ex 2.11) keeps only the segments with both neighbours."));
+    m_spacingLabel->setText(tr("&Parametrization:"));
+    m_spacingCombo->setItemText(0, tr("uniform (thesis)"));
+    m_spacingCombo->setItemText(1, tr("centripetal (α = 1/2)"));
+    m_spacingCombo->setItemText(2, tr("chordal (α = 1)"));
+    m_spacingCombo->setToolTip(tr("Knot spacing |q_{i+1} − q_i|^α. The thesis uses uniform spacing (α = 0). Beyond "
+                                  "it: centripetal (α = 1/2) avoids cusps and loops, chordal (α = 1) follows the "
+                                  "chord lengths; the segments then join with parallel tangents (G¹)."));
+    m_bezierCheck->setText(tr("Compare with &Bézier"));
+    m_bezierCheck->setToolTip(tr("Draw the Bézier curve that has the same points as control polygon (De Casteljau, "
+                                 "Def 2.4): it passes only through q0 and qn, while Catmull-Rom passes through every "
+                                 "point (§2.3)."));
+    m_splineCheck->setText(tr("Cubic &spline (C²)"));
+    m_splineCheck->setToolTip(tr("Draw the natural C² cubic spline of Def 2.3 through the same points (a function of "
+                                 "x: the abscissae must increase) and check its continuity at the knots: Bézier C^∞, "
+                                 "Catmull-Rom C¹, cubic spline C² (§2.3, Ex 2.1)."));
+    m_compareCheck->setText(tr("Compare open and &cyclic ends"));
+    m_compareCheck->setToolTip(tr("Also draw (dashed) and list the curve with the other end mode, as Ex 2.13 compares "
+                                  "the cyclic and the open curve through the same points."));
+    m_plotTitle->setText(tr("Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)"));
+    m_plotTitle->setToolTip(tr("p(t) = Σ w_j(t, τ) p_j: the weight of each of the four points along a segment. "
+                               "They always add up to 1."));
+    m_allTausCheck->setText(tr("Every &τ"));
+    m_allTausCheck->setToolTip(tr("Plot the blending functions of every tension in the list (one line style per τ), "
+                                  "as Ex 2.12 does for τ = −2, 0, 1/2 and 2."));
+    m_plot->setToolTip(tr("The blending functions w_0…w_3 of Cor 2.1 on t ∈ [0, 1]."));
+    m_panel->setToolTip(tr("Exact results: segment polynomials (Lemma 2.3, Def 2.10), tangents at the knots "
+                           "(Prop 2.3), blending functions (Cor 2.1), and the comparisons of §2.3."));
+    m_canvas->setToolTip(tr("Drag a point to move it; double-click to add one; Delete removes the selected point; "
+                            "drag the paper to pan, wheel to zoom."));
+    m_sideTabs->setTabText(0, tr("Exact results"));
+    m_sideTabs->setTabText(1, tr("Points"));
+    m_sideTabs->setTabToolTip(0, m_panel->toolTip());
+    m_sideTabs->setTabToolTip(1, tr("The points q0…qn as numbers; fractions such as 1/3 are accepted."));
+    m_table->retranslate();
+    syncControls();
+    recompute();
+}
+
+QString CatmullRomTab::tensionItemText(const Rational& tau) const
+{
+    return tr("τ = %1   (curveTightness %2)").arg(tauString(tau), tightnessString(tau));
+}
+
+void CatmullRomTab::syncControls()
+{
+    m_syncing = true;
+    const int count = static_cast<int>(m_settings.taus.size());
+    if (m_tauList->count() != count) {
+        m_tauList->clear();
+        for (int i = 0; i < count; ++i)
+            m_tauList->addItem(QString());
+    }
+    for (int i = 0; i < count; ++i) {
+        QListWidgetItem* item = m_tauList->item(i);
+        item->setText(tensionItemText(m_settings.taus[static_cast<std::size_t>(i)]));
+        QPixmap swatch(14, 14);
+        swatch.fill(CanvasStyle::series(i));
+        item->setIcon(QIcon(swatch));
+    }
+    m_tauList->setCurrentRow(m_settings.selectedTau);
+    const bool hasSelection = m_settings.selectedTau >= 0 && m_settings.selectedTau < count;
+    m_removeTau->setEnabled(hasSelection && count > 1);
+    m_tauSlider->setEnabled(hasSelection);
+    if (hasSelection) {
+        const Rational& tau = m_settings.taus[static_cast<std::size_t>(m_settings.selectedTau)];
+        m_tauSlider->setValue(static_cast<int>(std::lround(toDouble(tau) * kSliderSteps)));
+        m_sliderLabel->setText(tr("Selected: τ = %1, Processing's curveTightness(%2)")
+                                   .arg(tauString(tau), tightnessString(tau)));
+    }
+    m_endsCombo->setCurrentIndex(static_cast<int>(m_settings.ends));
+    m_spacingCombo->setCurrentIndex(static_cast<int>(m_settings.spacing));
+    m_bezierCheck->setChecked(m_settings.bezier);
+    m_splineCheck->setChecked(m_settings.spline);
+    m_compareCheck->setChecked(m_settings.compareEnds);
+    m_allTausCheck->setChecked(m_settings.allTausInPlot);
+    const int rows = std::clamp(count, 2, 6);
+    m_tauList->setFixedHeight(rows * (m_tauList->fontMetrics().height() + 6) + 6);
+    m_syncing = false;
+}
+
+// ---------------------------------------------------------------- edits
+
+void CatmullRomTab::refuse(const QString& message)
+{
+    m_lastMessage = message;
+    emit statusMessage(message);
+}
+
+void CatmullRomTab::changeSettings(const CatmullRomSettings& after, const QString& undoText, bool mergeable)
+{
+    if (after == m_settings)
+        return;
+    m_undo->push(new CatmullRomSettingsCommand([this](const CatmullRomSettings& s) { applySettings(s); }, m_settings,
+                                               after, undoText, mergeable));
+}
+
+void CatmullRomTab::applySettings(const CatmullRomSettings& s)
+{
+    m_settings = s;
+    syncControls();
+    recompute();
+    emit documentChanged();
+}
+
+bool CatmullRomTab::addTension(const QString& text)
+{
+    TensionProblem problem = TensionProblem::None;
+    const auto tau = parseTension(typedToC(text), &problem);
+    if (!tau) {
+        if (problem == TensionProblem::OutOfRange)
+            refuse(tr("τ = %1 is outside [−10, 10]: beyond that the curve is all overshoot. Not added.")
+                       .arg(text.trimmed()));
+        else
+            refuse(tr("“%1” is not a tension: type a decimal (0.5) or a fraction (-1/2). Not added.").arg(text.trimmed()));
+        return false;
+    }
+    if (std::find(m_settings.taus.begin(), m_settings.taus.end(), *tau) != m_settings.taus.end()) {
+        refuse(tr("τ = %1 is already in the list.").arg(tauString(*tau)));
+        return false;
+    }
+    if (static_cast<int>(m_settings.taus.size()) >= CatmullRomSettings::kMaxTensions) {
+        refuse(tr("At most %n tensions at a time: remove one first.", nullptr, CatmullRomSettings::kMaxTensions));
+        return false;
+    }
+    CatmullRomSettings after = m_settings;
+    after.taus.push_back(*tau);
+    after.selectedTau = static_cast<int>(after.taus.size()) - 1;
+    changeSettings(after, tr("Add τ = %1").arg(tauString(*tau)));
+    refuse(tr("Added τ = %1.").arg(tauString(*tau)));
+    return true;
+}
+
+bool CatmullRomTab::removeTension(int index)
+{
+    if (index < 0 || index >= static_cast<int>(m_settings.taus.size()))
+        return false;
+    if (m_settings.taus.size() <= 1) {
+        refuse(tr("At least one tension is needed."));
+        return false;
+    }
+    CatmullRomSettings after = m_settings;
+    const Rational removed = after.taus[static_cast<std::size_t>(index)];
+    after.taus.erase(after.taus.begin() + index);
+    after.selectedTau = std::min(index, static_cast<int>(after.taus.size()) - 1);
+    changeSettings(after, tr("Remove τ = %1").arg(tauString(removed)));
+    return true;
+}
+
+void CatmullRomTab::setSelectedTension(int index)
+{
+    if (index < 0 || index >= static_cast<int>(m_settings.taus.size()) || index == m_settings.selectedTau)
+        return;
+    // Choosing which τ to look at is not an edit: no undo step.
+    m_settings.selectedTau = index;
+    syncControls();
+    recompute();
+}
+
+void CatmullRomTab::sliderMoved(int value)
+{
+    const int index = m_settings.selectedTau;
+    if (index < 0 || index >= static_cast<int>(m_settings.taus.size()))
+        return;
+    const Rational tau = frac(value, kSliderSteps);
+    for (std::size_t i = 0; i < m_settings.taus.size(); ++i)
+        if (static_cast<int>(i) != index && m_settings.taus[i] == tau) {
+            refuse(tr("τ = %1 is already in the list.").arg(tauString(tau)));
+            syncControls(); // the slider back on the selected τ
+            return;
+        }
+    CatmullRomSettings after = m_settings;
+    after.taus[static_cast<std::size_t>(index)] = tau;
+    changeSettings(after, tr("Change τ"), true);
+}
+
+void CatmullRomTab::setEnds(CatmullRomEnds ends)
+{
+    CatmullRomSettings after = m_settings;
+    after.ends = ends;
+    changeSettings(after, tr("Change the ends"));
+    if (ends == CatmullRomEnds::Segment && m_editor->points().size() != 4)
+        refuse(tr("A single segment uses four points p0…p3 and joins p1 to p2; with more points, every segment "
+                  "that has both neighbours is drawn."));
+}
+
+void CatmullRomTab::setSpacing(CatmullRomSpacing spacing)
+{
+    CatmullRomSettings after = m_settings;
+    after.spacing = spacing;
+    changeSettings(after, tr("Change the parametrization"));
+}
+
+void CatmullRomTab::setBezierVisible(bool on)
+{
+    CatmullRomSettings after = m_settings;
+    after.bezier = on;
+    changeSettings(after, on ? tr("Show the Bézier curve") : tr("Hide the Bézier curve"));
+}
+
+void CatmullRomTab::setSplineVisible(bool on)
+{
+    CatmullRomSettings after = m_settings;
+    after.spline = on;
+    changeSettings(after, on ? tr("Show the cubic spline") : tr("Hide the cubic spline"));
+}
+
+void CatmullRomTab::setCompareEnds(bool on)
+{
+    CatmullRomSettings after = m_settings;
+    after.compareEnds = on;
+    changeSettings(after, tr("Compare the ends"));
+}
+
+void CatmullRomTab::setAllTausInPlot(bool on)
+{
+    CatmullRomSettings after = m_settings;
+    after.allTausInPlot = on;
+    changeSettings(after, tr("Blending functions of every τ"));
+}
+
+void CatmullRomTab::pointsEdited()
+{
+    recompute();
+    updateContentBounds(false);
+    emit documentChanged();
+}
+
+// ---------------------------------------------------------------- computing and showing
+
+void CatmullRomTab::recompute()
+{
+    m_scene = computeScene(m_editor->points(), m_settings);
+    m_panel->setContent(CatmullRomReport::html(m_editor->points(), m_settings, m_scene));
+    updatePlot();
+    m_canvas->update();
+    for (const CatmullRomCurve& c : m_scene.curves)
+        if (!c.error.isEmpty()) {
+            refuse(c.error);
+            break;
+        }
+    if (m_settings.spline && !m_scene.splineError.isEmpty())
+        refuse(m_scene.splineError);
+}
+
+void CatmullRomTab::updatePlot()
+{
+    const double scale = m_presentation ? kPresentationScale : 1.0;
+    m_plot->clearGraphs();
+    QFont font = this->font();
+    m_plot->legend->setFont(font);
+    m_plot->xAxis->setTickLabelFont(font);
+    m_plot->yAxis->setTickLabelFont(font);
+    m_plot->xAxis->setLabelFont(font);
+    m_plot->yAxis->setLabelFont(font);
+    m_plot->xAxis->setLabel(QStringLiteral("t"));
+    m_plot->yAxis->setLabel(QStringLiteral("w_j(t, τ)"));
+    std::vector<int> shown;
+    if (m_settings.allTausInPlot) {
+        for (int i = 0; i < static_cast<int>(m_settings.taus.size()); ++i)
+            shown.push_back(i);
+    } else if (m_settings.selectedTau >= 0 && m_settings.selectedTau < static_cast<int>(m_settings.taus.size())) {
+        shown.push_back(m_settings.selectedTau);
+    }
+    // Two columns of legend entries: w0…w3 (and a τ per line style) stay short in a low plot.
+    m_plot->legend->setWrap(shown.size() > 1 ? 4 : 2);
+    QVector<double> t(kPlotSamples);
+    for (int k = 0; k < kPlotSamples; ++k)
+        t[k] = static_cast<double>(k) / (kPlotSamples - 1);
+    double lo = 0, hi = 1;
+    for (std::size_t n = 0; n < shown.size(); ++n) {
+        const int i = shown[n];
+        const auto w = blendingFunctions(toDouble(m_settings.taus[static_cast<std::size_t>(i)]));
+        for (int j = 0; j < 4; ++j) {
+            QVector<double> y(kPlotSamples);
+            for (int k = 0; k < kPlotSamples; ++k) {
+                y[k] = w[static_cast<std::size_t>(j)](t[k]);
+                lo = std::min(lo, y[k]);
+                hi = std::max(hi, y[k]);
+            }
+            QCPGraph* g = m_plot->addGraph();
+            g->setData(t, y, true);
+            g->setPen(QPen(CanvasStyle::series(j), 2.0 * scale, shown.size() > 1 ? tauPenStyle(static_cast<int>(n))
+                                                                                   : Qt::SolidLine));
+            g->setName(QStringLiteral("w%1").arg(j));
+            if (n > 0)
+                g->removeFromLegend();
+        }
+    }
+    // With several τ, one legend entry per line style.
+    if (shown.size() > 1)
+        for (std::size_t n = 0; n < shown.size(); ++n) {
+            QCPGraph* key = m_plot->addGraph();
+            key->setPen(QPen(QColor(0x55, 0x55, 0x55), 1.5 * scale, tauPenStyle(static_cast<int>(n))));
+            key->setName(QStringLiteral("τ = %1").arg(tauString(m_settings.taus[static_cast<std::size_t>(shown[n])])));
+        }
+    if (shown.size() == 1) // the plot alone tells which tension it shows
+        m_plot->yAxis->setLabel(
+            QStringLiteral("w_j(t, %1)").arg(tauString(m_settings.taus[static_cast<std::size_t>(shown[0])])));
+    const double pad = (hi - lo) * 0.05;
+    m_plot->xAxis->setRange(0, 1);
+    m_plot->yAxis->setRange(lo - pad, hi + pad);
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void CatmullRomTab::updateContentBounds(bool force)
+{
+    const auto& points = m_editor->points();
+    const QRectF box = pointBounds(points);
+    // The curves overshoot the points for large |τ|; include them, up to one box size around.
+    const QRectF limit = box.adjusted(-box.width(), -box.height(), box.width(), box.height());
+    double x0 = box.left(), x1 = box.right(), y0 = box.top(), y1 = box.bottom();
+    auto include = [&](const std::vector<Point>& samples) {
+        for (const Point& p : samples)
+            if (isFinite(p) && limit.contains(QPointF(p.x, p.y))) {
+                x0 = std::min(x0, p.x);
+                x1 = std::max(x1, p.x);
+                y0 = std::min(y0, p.y);
+                y1 = std::max(y1, p.y);
+            }
+    };
+    for (const auto& c : m_scene.curves)
+        include(c.samples);
+    for (const auto& c : m_scene.otherEnds)
+        include(c.samples);
+    include(m_scene.spline);
+    include(m_scene.bezier);
+    const QRectF bounds(QPointF(x0, y0), QPointF(x1, y1));
+    if (!force) {
+        // Edits keep the view unless a point leaves it (never during a drag: the handle must
+        // stay under the mouse).
+        if (QGuiApplication::mouseButtons() != Qt::NoButton)
+            return;
+        const QRectF visible = m_canvas->view().visibleModelRect();
+        bool outside = false;
+        for (const Point& p : points)
+            outside = outside || !visible.contains(QPointF(p.x, p.y));
+        if (!outside)
+            return;
+    }
+    m_canvas->setContentBounds(bounds);
+}
+
+void CatmullRomTab::drawCurves(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const
+{
+    if (!m_scene.bezier.empty()) {
+        p.setPen(QPen(kBezierColor, style.lineWidth(), Qt::DashDotLine, Qt::RoundCap, Qt::RoundJoin));
+        drawPolyline(p, view, m_scene.bezier);
+    }
+    if (!m_scene.spline.empty()) {
+        p.setPen(QPen(kSplineColor, style.lineWidth(), Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        drawPolyline(p, view, m_scene.spline);
+    }
+    for (std::size_t i = 0; i < m_scene.otherEnds.size(); ++i) {
+        p.setPen(QPen(CanvasStyle::series(static_cast<int>(i)), style.lineWidth() * 0.75, Qt::DashLine));
+        drawPolyline(p, view, m_scene.otherEnds[i].samples);
+    }
+    for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
+        const bool selected = static_cast<int>(i) == m_settings.selectedTau;
+        p.setPen(QPen(CanvasStyle::series(static_cast<int>(i)), style.lineWidth() * (selected ? 1.5 : 1.0),
+                      Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        drawPolyline(p, view, m_scene.curves[i].samples);
+    }
+}
+
+void CatmullRomTab::drawLegend(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const
+{
+    struct Entry {
+        QColor color;
+        Qt::PenStyle pen;
+        QString text;
+    };
+    std::vector<Entry> entries;
+    for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
+        const auto& c = m_scene.curves[i];
+        entries.push_back({CanvasStyle::series(static_cast<int>(i)), c.error.isEmpty() ? Qt::SolidLine : Qt::NoPen,
+                           QStringLiteral("τ = %1").arg(tauString(c.tau))});
+    }
+    if (!m_scene.otherEnds.empty())
+        entries.push_back({QColor(0x77, 0x77, 0x77), Qt::DashLine,
+                           tr("dashed: %1 ends").arg(CatmullRomReport::endsName(comparedEnds(m_settings.ends)))});
+    if (!m_scene.bezier.empty())
+        entries.push_back({kBezierColor, Qt::DashDotLine, tr("Bézier curve of the same points")});
+    if (m_settings.spline)
+        entries.push_back({kSplineColor, m_scene.spline.empty() ? Qt::NoPen : Qt::SolidLine,
+                           m_scene.spline.empty() ? tr("no cubic spline: x must increase") : tr("cubic spline C²")});
+    QString error;
+    for (const auto& c : m_scene.curves)
+        if (!c.error.isEmpty())
+            error = c.error;
+
+    // The application font (already larger in presentation mode), a little smaller: the
+    // legend must not hide the points.
+    QFont font;
+    font.setPointSizeF(font.pointSizeF() * 0.9);
+    p.setFont(font);
+    const QFontMetricsF fm(font);
+    const double line = fm.height() * 1.15, swatch = 26 * style.scale, pad = 6 * style.scale;
+    double width = 0;
+    for (const auto& e : entries)
+        width = std::max(width, fm.horizontalAdvance(e.text));
+    const double maxErrorWidth = std::max(120.0, view.viewport().width() * 0.6);
+    QRectF errorRect;
+    if (!error.isEmpty())
+        errorRect = fm.boundingRect(QRectF(0, 0, maxErrorWidth, 1000), Qt::TextWordWrap, error);
+    const double boxW = std::max(swatch + pad + width, errorRect.width()) + 2 * pad;
+    const double boxH = entries.size() * line + (error.isEmpty() ? 0 : errorRect.height() + pad) + 2 * pad;
+    const QRectF box(view.viewport().left() + 8 * style.scale, view.viewport().top() + 8 * style.scale, boxW, boxH);
+    p.setPen(QPen(style.gridMajor, style.thinLine()));
+    p.setBrush(QColor(255, 255, 255, 180));
+    p.drawRoundedRect(box, 4, 4);
+    double y = box.top() + pad;
+    for (const auto& e : entries) {
+        const double mid = y + line / 2;
+        if (e.pen != Qt::NoPen) {
+            p.setPen(QPen(e.color, style.lineWidth(), e.pen));
+            p.drawLine(QPointF(box.left() + pad, mid), QPointF(box.left() + pad + swatch, mid));
+        }
+        p.setPen(e.pen == Qt::NoPen ? kErrorColor : style.text);
+        p.drawText(QRectF(box.left() + 2 * pad + swatch, y, width + pad, line), Qt::AlignVCenter | Qt::AlignLeft, e.text);
+        y += line;
+    }
+    if (!error.isEmpty()) {
+        p.setPen(kErrorColor);
+        p.drawText(QRectF(box.left() + pad, y + pad / 2, errorRect.width() + 1, errorRect.height() + 1),
+                   Qt::TextWordWrap, error);
+    }
+}
+
+// ---------------------------------------------------------------- examples and documents
+
+bool CatmullRomTab::loadExample(const WorkedExample& example)
+{
+    if (example.tab != "catmull-rom")
+        return false;
+    CatmullRomSettings s = m_settings;
+    std::vector<Point> points = m_editor->points();
+    s.spacing = CatmullRomSpacing::Uniform;
+    s.bezier = false;
+    s.spline = false;
+    s.compareEnds = false;
+    s.allTausInPlot = false;
+    auto useTaus = [&s](const std::vector<Rational>& taus) {
+        if (taus.empty() || static_cast<int>(taus.size()) > CatmullRomSettings::kMaxTensions)
+            return false;
+        s.taus = taus;
+        // Select τ = 1/2, the usual value (Def 2.8), when the example has it.
+        const auto half = std::find(taus.begin(), taus.end(), frac(1, 2));
+        s.selectedTau = half != taus.end() ? static_cast<int>(half - taus.begin()) : 0;
+        return true;
+    };
+    if (example.kind == "cubic-spline") { // Ex 2.1
+        points = toDouble(example.points);
+        useTaus({frac(1, 2)});
+        s.ends = CatmullRomEnds::Open;
+        s.spline = true;
+    } else if (example.kind == "catmull-rom-segment") { // Ex 2.11
+        points = toDouble(example.points);
+        if (!useTaus(example.taus))
+            return false;
+        s.ends = CatmullRomEnds::Segment;
+    } else if (example.kind == "blending") { // Ex 2.12: the points stay
+        if (!useTaus(example.taus))
+            return false;
+        s.allTausInPlot = true;
+    } else if (example.kind == "catmull-rom") { // Ex 2.13
+        points = toDouble(example.points);
+        if (!useTaus(example.taus))
+            return false;
+        const auto mode = example.modes.empty() ? std::optional<CatmullRomMode>(CatmullRomMode::Open)
+                                                : parseCatmullRomMode(example.modes.front());
+        if (!mode)
+            return false;
+        s.ends = *mode == CatmullRomMode::Cyclic ? CatmullRomEnds::Cyclic
+                 : *mode == CatmullRomMode::Closed ? CatmullRomEnds::Closed
+                                                   : CatmullRomEnds::Open;
+        s.compareEnds = example.modes.size() > 1;
+    } else {
+        return false;
+    }
+    for (const Rational& tau : s.taus)
+        if (abs(tau) > CatmullRomSettings::kMaxTensionAbs)
+            return false;
+    if (points.size() < 2 || static_cast<int>(points.size()) > CatmullRomSettings::kMaxPoints)
+        return false;
+
+    const QString id = QString::fromStdString(example.id);
+    m_undo->beginMacro(tr("Load Ex %1").arg(id));
+    if (points != m_editor->points())
+        m_editor->setPoints(points, tr("Load Ex %1").arg(id));
+    changeSettings(s, tr("Load Ex %1").arg(id));
+    m_undo->endMacro();
+    updateContentBounds(true);
+    m_canvas->fitToContent();
+    return true;
+}
+
+QJsonObject CatmullRomTab::saveState() const
+{
+    QJsonObject state;
+    QJsonArray points;
+    for (const Point& p : m_editor->points())
+        points.append(QJsonArray{p.x, p.y});
+    state.insert(QStringLiteral("points"), points);
+    writeSettings(m_settings, state);
+    return state;
+}
+
+bool CatmullRomTab::loadState(const QJsonObject& state, QString* error)
+{
+    auto fail = [error](const QString& message) {
+        if (error)
+            *error = message;
+        return false;
+    };
+    const QJsonValue pointsValue = state.value(QStringLiteral("points"));
+    if (!pointsValue.isArray())
+        return fail(tr("The Catmull-Rom points are missing or not a list."));
+    const QJsonArray array = pointsValue.toArray();
+    if (array.size() < 2 || array.size() > CatmullRomSettings::kMaxPoints)
+        return fail(tr("A Catmull-Rom curve needs between 2 and %1 points; the file has %2.")
+                        .arg(CatmullRomSettings::kMaxPoints)
+                        .arg(array.size()));
+    std::vector<Point> points;
+    for (int i = 0; i < array.size(); ++i) {
+        const QJsonArray xy = array.at(i).toArray();
+        if (xy.size() != 2 || !xy.at(0).isDouble() || !xy.at(1).isDouble())
+            return fail(tr("Point %1 of the Catmull-Rom tab is not a pair of numbers.").arg(i));
+        const Point p{xy.at(0).toDouble(), xy.at(1).toDouble()};
+        if (!isFinite(p))
+            return fail(tr("Point %1 of the Catmull-Rom tab is not a finite number.").arg(i));
+        points.push_back(p);
+    }
+    QString problem;
+    const auto settings = readSettings(state, &problem);
+    if (!settings)
+        return fail(tr("The Catmull-Rom settings are not valid (“%1”): tensions must be numbers in [−10, 10], "
+                       "at most %2 of them, without repeats.")
+                        .arg(problem)
+                        .arg(CatmullRomSettings::kMaxTensions));
+    // All checked: now change the tab.
+    m_editor->applyPoints(points);
+    applySettings(*settings);
+    updateContentBounds(true);
+    m_canvas->fitToContent();
+    return true;
+}
+
+// ---------------------------------------------------------------- exports and view
+
+Drawable* CatmullRomTab::exportView() { return m_canvas; }
+
+QString CatmullRomTab::csv() const
+{
+    QString out = QStringLiteral("point,x,y\n");
+    const auto& points = m_editor->points();
+    for (std::size_t i = 0; i < points.size(); ++i)
+        out += QStringLiteral("q%1,%2,%3\n")
+                   .arg(i)
+                   .arg(QString::fromStdString(formatDouble(points[i].x)), QString::fromStdString(formatDouble(points[i].y)));
+    out += QStringLiteral("\ntau,segment,t,x,y\n");
+    const int samples = CatmullRomScene::kSamplesPerSegment;
+    for (const CatmullRomCurve& c : m_scene.curves) {
+        const QString tau = tauString(c.tau);
+        for (std::size_t k = 0; k < c.samples.size(); ++k) {
+            const int segment = static_cast<int>(k) / samples + 1 + firstSegmentStart(c.ends);
+            const double t = static_cast<double>(static_cast<int>(k) % samples) / (samples - 1);
+            out += QStringLiteral("%1,%2,%3,%4,%5\n")
+                       .arg(tau)
+                       .arg(segment)
+                       .arg(QString::fromStdString(formatDouble(t)), QString::fromStdString(formatDouble(c.samples[k].x)),
+                            QString::fromStdString(formatDouble(c.samples[k].y)));
+        }
+    }
+    return out;
+}
+
+QString CatmullRomTab::tikz() const
+{
+    TikzWriter w;
+    w.comment(QStringLiteral("Catmull-Rom curves (thesis §2.2), mode %1").arg(endsKey(m_settings.ends)));
+    if (!m_scene.bezier.empty())
+        w.polyline(m_scene.bezier, kBezierColor, 1.0, true);
+    if (!m_scene.spline.empty())
+        w.polyline(m_scene.spline, kSplineColor, 1.0);
+    for (std::size_t i = 0; i < m_scene.otherEnds.size(); ++i)
+        w.polyline(m_scene.otherEnds[i].samples, CanvasStyle::series(static_cast<int>(i)), 0.8, true);
+    for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
+        w.comment(QStringLiteral("tau = %1").arg(tauString(m_scene.curves[i].tau)));
+        w.polyline(m_scene.curves[i].samples, CanvasStyle::series(static_cast<int>(i)), 1.2);
+    }
+    const auto& points = m_editor->points();
+    for (std::size_t i = 0; i < points.size(); ++i)
+        w.point(points[i], CanvasStyle().handle, QStringLiteral("q_{%1}").arg(i));
+    return w.str();
+}
+
+void CatmullRomTab::setPresentation(bool on)
+{
+    m_presentation = on;
+    m_canvas->setStyleScale(on ? kPresentationScale : 1.0);
+    m_panel->setPresentation(on);
+    syncControls();
+    updatePlot();
+}
+
+void CatmullRomTab::changeEvent(QEvent* event)
+{
+    TabPage::changeEvent(event);
+    // Presentation mode changes the application font: the plot's legend and axes follow.
+    if (event->type() == QEvent::FontChange && m_plot)
+        updatePlot();
+}
+
+void CatmullRomTab::zoom(double factor) { m_canvas->zoom(factor); }
+
+void CatmullRomTab::fitView()
+{
+    updateContentBounds(true);
+    m_canvas->fitToContent();
+}
+
+} // namespace granota::ui

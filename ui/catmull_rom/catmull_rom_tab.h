@@ -1,0 +1,129 @@
+#pragma once
+/// \file catmull_rom_tab.h
+/// The Catmull-Rom tab (docs/tabs.md; thesis §2.2–2.3): points q0…qn on a canvas with one
+/// Catmull-Rom curve per tension τ (Def 2.8–2.10), the end modes of Def 2.10, uniform,
+/// centripetal or chordal spacing, the blending functions (Cor 2.1), the exact segment
+/// polynomials (Lemma 2.3, Ex 2.11, Ex 2.13) and tangents at the knots (Prop 2.3), and the
+/// comparisons of §2.3 with the Bézier curve of the same points and the C² cubic spline
+/// (Def 2.3, Ex 2.1).
+
+#include "ui/catmull_rom/catmull_rom_curves.h"
+#include "ui/catmull_rom/catmull_rom_settings.h"
+#include "ui/shell/tab_page.h"
+
+class QCheckBox;
+class QComboBox;
+class QCustomPlot;
+class QGroupBox;
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QPainter;
+class QPushButton;
+class QSlider;
+class QTabWidget;
+class QUndoStack;
+
+namespace granota::ui {
+
+class CurveCanvas;
+class ExactPanel;
+class PointEditor;
+class PointTable;
+class ViewTransform;
+struct CanvasStyle;
+
+class CatmullRomTab : public TabPage {
+    Q_OBJECT
+public:
+    explicit CatmullRomTab(QWidget* parent = nullptr);
+
+    QString key() const override { return QStringLiteral("catmull-rom"); }
+    QString title() const override { return tr("Catmull-Rom"); }
+    void retranslate() override;
+    QJsonObject saveState() const override;
+    bool loadState(const QJsonObject& state, QString* error) override;
+    bool loadExample(const granota::WorkedExample& example) override;
+    QUndoStack* undoStack() const override { return m_undo; }
+    Drawable* exportView() override;
+    QString csv() const override;
+    QString tikz() const override;
+    void setPresentation(bool on) override;
+    void zoom(double factor) override;
+    void fitView() override;
+
+    // The model and the views, for the main window's neighbours and for tests.
+    PointEditor* pointEditor() const { return m_editor; }
+    CurveCanvas* canvas() const { return m_canvas; }
+    ExactPanel* exactPanel() const { return m_panel; }
+    QCustomPlot* blendingPlot() const { return m_plot; }
+    const CatmullRomSettings& settings() const { return m_settings; }
+    const CatmullRomScene& scene() const { return m_scene; }
+    /// The last refusal or hint sent to the status bar.
+    QString lastMessage() const { return m_lastMessage; }
+
+    /// Undoable edits of the settings. addTension refuses garbage, values outside [−10, 10],
+    /// duplicates and an 11th tension with a message (statusMessage) and returns false.
+    bool addTension(const QString& text);
+    bool removeTension(int index);
+    void setSelectedTension(int index);
+    void setEnds(CatmullRomEnds ends);
+    void setSpacing(CatmullRomSpacing spacing);
+    void setBezierVisible(bool on);
+    void setSplineVisible(bool on);
+    void setCompareEnds(bool on);
+    void setAllTausInPlot(bool on);
+
+protected:
+    void changeEvent(QEvent* event) override;
+
+private:
+    void buildUi();
+    /// Pushes an undo step from the current settings to `after` (nothing if equal).
+    void changeSettings(const CatmullRomSettings& after, const QString& undoText, bool mergeable = false);
+    /// Makes `s` current (undo/redo, loading): controls, curves, panel, plot.
+    void applySettings(const CatmullRomSettings& s);
+    void pointsEdited();
+    void recompute();
+    void syncControls();
+    void updatePlot();
+    void updateContentBounds(bool force);
+    void sliderMoved(int value);
+    void refuse(const QString& message);
+    void drawCurves(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const;
+    void drawLegend(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const;
+    QString tensionItemText(const Rational& tau) const;
+
+    QUndoStack* m_undo;
+    CurveCanvas* m_canvas;
+    PointEditor* m_editor = nullptr;
+    PointTable* m_table = nullptr;
+    ExactPanel* m_panel = nullptr;
+    QCustomPlot* m_plot = nullptr;
+    QTabWidget* m_sideTabs = nullptr;
+    QGroupBox* m_tensionBox = nullptr;
+    QListWidget* m_tauList = nullptr;
+    QLineEdit* m_tauEdit = nullptr;
+    QPushButton* m_addTau = nullptr;
+    QPushButton* m_removeTau = nullptr;
+    QSlider* m_tauSlider = nullptr;
+    QLabel* m_sliderLabel = nullptr;
+    QGroupBox* m_curveBox = nullptr;
+    QLabel* m_endsLabel = nullptr;
+    QComboBox* m_endsCombo = nullptr;
+    QLabel* m_spacingLabel = nullptr;
+    QComboBox* m_spacingCombo = nullptr;
+    QCheckBox* m_bezierCheck = nullptr;
+    QCheckBox* m_splineCheck = nullptr;
+    QCheckBox* m_compareCheck = nullptr;
+    QCheckBox* m_allTausCheck = nullptr;
+    QLabel* m_plotTitle = nullptr;
+
+    CatmullRomSettings m_settings;
+    CatmullRomScene m_scene;
+    QString m_lastMessage;
+    bool m_syncing = false;
+    bool m_presentation = false;
+};
+
+} // namespace granota::ui

@@ -1,0 +1,74 @@
+#include "ui/common/number_text.h"
+
+#include "core/exact/polynomial_text.h"
+#include "ui/shell/language.h"
+
+#include <cmath>
+
+namespace granota::ui {
+
+QLocale displayLocale(const QString& language)
+{
+    QLocale locale = language == QLatin1String("ca") ? QLocale(QLocale::Catalan, QLocale::Spain)
+                                                     : QLocale(QLocale::English, QLocale::UnitedStates);
+    locale.setNumberOptions(QLocale::OmitGroupSeparator | QLocale::RejectGroupSeparator);
+    return locale;
+}
+
+QLocale displayLocale() { return displayLocale(currentLanguage()); }
+
+namespace {
+
+/// The C text of the core with the interface's decimal sign. The core writes no decimal
+/// commas, so each of its commas separates two things ("(1.5, 2)"): where a decimal comma
+/// appears, the separator becomes a semicolon first ("(1,5; 2)"); "(1/2, 3)" stays.
+QString localized(const std::string& cText)
+{
+    QString s = QString::fromStdString(cText);
+    const QString point = displayLocale().decimalPoint();
+    if (point != QLatin1String(".") && s.contains(QLatin1Char('.'))) {
+        if (point == QLatin1String(","))
+            s.replace(QLatin1Char(','), QLatin1Char(';'));
+        s.replace(QLatin1Char('.'), point);
+    }
+    return s;
+}
+
+} // namespace
+
+QString displayNumber(double v) { return localized(formatDouble(v)); }
+QString displayFixed(double v, int decimals) { return localized(formatFixed(v, decimals)); }
+QString displaySignificant(double v, int digits) { return localized(formatSignificant(v, digits)); }
+QString displayText(const std::string& cText) { return localized(cText); }
+
+QString displayPair(const QString& x, const QString& y)
+{
+    const bool comma = x.contains(QLatin1Char(',')) || y.contains(QLatin1Char(','));
+    return QLatin1Char('(') + x + (comma ? QStringLiteral("; ") : QStringLiteral(", ")) + y + QLatin1Char(')');
+}
+
+QString displayPoint(double x, double y) { return displayPair(displayNumber(x), displayNumber(y)); }
+
+QString typedToC(const QString& text)
+{
+    QString s = text.trimmed();
+    s.replace(QChar(0x2212), QLatin1Char('-'));
+    if (displayLocale().decimalPoint() == QLatin1String(","))
+        s.replace(QLatin1Char(','), QLatin1Char('.'));
+    return s;
+}
+
+std::optional<Rational> parseTypedRational(const QString& text) { return parseRational(typedToC(text).toStdString()); }
+
+std::optional<double> parseTypedNumber(const QString& text)
+{
+    const auto q = parseTypedRational(text);
+    if (!q)
+        return std::nullopt;
+    const double v = toDouble(*q);
+    if (!std::isfinite(v))
+        return std::nullopt;
+    return v;
+}
+
+} // namespace granota::ui

@@ -1,0 +1,322 @@
+#include "ui/common/point_editor.h"
+
+#include "ui/common/curve_canvas.h"
+#include "ui/common/point_commands.h"
+
+#include <QContextMenuEvent>
+#include <QKeyEvent>
+#include <QMenu>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QUndoStack>
+
+#include <cmath>
+#include <limits>
+
+namespace granota::ui {
+
+namespace {
+/// Above this many points, coincident labels are not looked for (the check is quadratic).
+constexpr std::size_t kStackLabelsUpTo = 300;
+} // namespace
+
+PointEditor::PointEditor(CurveCanvas* canvas, QUndoStack* undoStack, QObject* parent)
+    : QObject(parent), m_canvas(canvas), m_undo(undoStack), m_color(CanvasStyle().handle)
+{
+    m_canvas->installEventFilter(this);
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (m_points.empty())
+            return;
+        if (m_polygonVisible && m_points.size() > 1) {
+            QPen pen(style.polygon, style.thinLine(), Qt::DashLine);
+            p.setPen(pen);
+            QPainterPath path(view.toScreen(m_points[0]));
+            for (std::size_t i = 1; i < m_points.size(); ++i)
+                path.lineTo(view.toScreen(m_points[i]));
+            p.drawPath(path);
+        }
+        p.setFont(style.labelFont());
+        const double r = style.handleRadius();
+        // Huge data sets (up to kMaxDataPoints in the fitting tab, docs/extreme-cases.md): draw every stride-th
+        // handle and no labels, so that painting stays fast; the selected one always.
+        constexpr std::size_t kMaxDrawnHandles = 5000;
+        const std::size_t stride = (m_points.size() + kMaxDrawnHandles - 1) / kMaxDrawnHandles;
+        for (std::size_t i = 0; i < m_points.size(); ++i) {
+            const bool sel = static_cast<int>(i) == m_selected;
+            if (stride > 1 && i % stride != 0 && !sel)
+                continue;
+            const QPointF s = view.toScreen(m_points[i]);
+            p.setPen(QPen(Qt::white, style.thinLine()));
+            p.setBrush(sel ? style.handleSelected : m_color);
+            p.drawEllipse(s, sel ? r * 1.3 : r, sel ? r * 1.3 : r);
+            if (!m_prefix.isEmpty() && stride <= 1) {
+                // Coincident points (Ex 2.3 closes its curve: P4 = P0) stack their labels.
+                int below = 0;
+                for (std::size_t j = 0; j < i && m_points.size() <= kStackLabelsUpTo; ++j) {
+                    const QPointF d = view.toScreen(m_points[j]) - s;
+                    below += d.x() * d.x() + d.y() * d.y() < r * r;
+                }
+                p.setPen(style.text);
+                p.drawText(s + QPointF(r + 3 * style.scale, -r + below * p.fontMetrics().height()),
+                           m_prefix + QString::number(i));
+            }
+        }
+    });
+}
+
+void PointEditor::applyPoints(const std::vector<Point>& points)
+{
+    // Undo, redo or a document in the middle of a drag: the points are no longer the drag's,
+    // and its index may be past their end. The drag ends here (the release finds none).
+    m_dragging = -1;
+    m_points = points;
+    if (m_selected >= static_cast<int>(m_points.size()))
+        setSelected(static_cast<int>(m_points.size()) - 1);
+    m_canvas->update();
+    emit pointsChanged();
+}
+
+void PointEditor::setPoints(const std::vector<Point>& points, const QString& undoText)
+{
+    for (const Point& p : points)
+        if (!isFinite(p)) {
+            emit message(tr("Refused: a point is not a finite number."));
+            return;
+        }
+    finishDrag();
+    m_undo->push(new PointsCommand(this, m_points, points, undoText));
+}
+
+void PointEditor::movePoint(int index, Point to)
+{
+    if (index < 0 || index >= static_cast<int>(m_points.size()))
+        return;
+    if (!isFinite(to)) {
+        emit message(tr("Refused: a coordinate must be a finite number."));
+        return;
+    }
+    finishDrag();
+    auto after = m_points;
+    after[index] = to;
+    m_undo->push(new PointsCommand(this, m_points, after, tr("Move point %1").arg(index)));
+}
+
+void PointEditor::insertPoint(int index, Point p)
+{
+    if (static_cast<int>(m_points.size()) >= m_max) {
+        emit message(tr("At most %n points here.", nullptr, m_max));
+        return;
+    }
+    if (!isFinite(p))
+        return;
+    finishDrag();
+    index = std::clamp(index, 0, static_cast<int>(m_points.size()));
+    auto after = m_points;
+    after.insert(after.begin() + index, p);
+    m_undo->push(new PointsCommand(this, m_points, after, tr("Add point")));
+    setSelected(index);
+}
+
+void PointEditor::removePoint(int index)
+{
+    if (index < 0 || index >= static_cast<int>(m_points.size()))
+        return;
+    if (static_cast<int>(m_points.size()) <= m_min) {
+        emit message(tr("At least %n points are needed here.", nullptr, m_min));
+        return;
+    }
+    finishDrag();
+    auto after = m_points;
+    after.erase(after.begin() + index);
+    m_undo->push(new PointsCommand(this, m_points, after, tr("Delete point %1").arg(index)));
+}
+
+void PointEditor::finishDrag()
+{
+    if (m_dragging < 0)
+        return;
+    const int index = m_dragging;
+    m_dragging = -1;
+    if (m_dragStart[index].x != m_points[index].x || m_dragStart[index].y != m_points[index].y)
+        m_undo->push(new PointsCommand(this, m_dragStart, m_points, tr("Move point %1").arg(index)));
+}
+
+void PointEditor::setSelected(int index)
+{
+    if (index < -1 || index >= static_cast<int>(m_points.size()))
+        index = -1;
+    if (index == m_selected)
+        return;
+    m_selected = index;
+    m_canvas->update();
+    emit selectionChanged(index);
+}
+
+Point PointEditor::snapped(Point p) const
+{
+    if (!m_snap)
+        return p;
+    return {std::round(p.x / m_gridStep) * m_gridStep, std::round(p.y / m_gridStep) * m_gridStep};
+}
+
+void PointEditor::setCountLimits(int minimum, int maximum)
+{
+    m_min = std::max(0, minimum);
+    m_max = std::max(m_min, maximum);
+}
+
+int PointEditor::pick(const QPointF& screen) const
+{
+    const ViewTransform& view = m_canvas->view();
+    const double r = m_canvas->style().pickRadius();
+    int best = -1;
+    double bestD = r * r;
+    for (std::size_t i = 0; i < m_points.size(); ++i) {
+        const QPointF d = view.toScreen(m_points[i]) - screen;
+        const double dd = d.x() * d.x() + d.y() * d.y();
+        if (dd <= bestD) { // later points win ties: they are drawn on top
+            bestD = dd;
+            best = static_cast<int>(i);
+        }
+    }
+    return best;
+}
+
+int PointEditor::insertionIndex(Point p) const
+{
+    const int n = static_cast<int>(m_points.size());
+    if (n < 2)
+        return n;
+    // Nearest edge of the polygon; beyond either end of it, the new point becomes the end.
+    double best = std::numeric_limits<double>::infinity();
+    int index = n;
+    for (int i = 0; i + 1 < n; ++i) {
+        const Point a = m_points[i], b = m_points[i + 1];
+        const Point ab = b - a;
+        const double len2 = dot(ab, ab);
+        double s = len2 > 0 ? dot(p - a, ab) / len2 : 0.0;
+        int candidate = i + 1;
+        if (s < 0 && i == 0)
+            candidate = 0;
+        else if (s > 1 && i + 2 == n)
+            candidate = n;
+        s = std::clamp(s, 0.0, 1.0);
+        const double d = distance(p, a + s * ab);
+        if (d < best) {
+            best = d;
+            index = candidate;
+        }
+    }
+    return index;
+}
+
+void PointEditor::nudge(double dx, double dy)
+{
+    if (m_selected < 0)
+        return;
+    Point p = m_points[m_selected];
+    p.x += dx;
+    p.y += dy;
+    movePoint(m_selected, m_snap ? snapped(p) : p);
+}
+
+void PointEditor::showContextMenu(const QPointF& screen, const QPoint& global)
+{
+    QMenu menu(m_canvas);
+    const int hit = pick(screen);
+    const Point at = snapped(m_canvas->view().toModel(screen));
+    if (hit >= 0) {
+        menu.addAction(tr("Delete %1%2").arg(m_prefix).arg(hit), this, [this, hit] { removePoint(hit); });
+    } else {
+        menu.addAction(tr("Add a point here"), this, [this, at] { insertPoint(insertionIndex(at), at); });
+    }
+    menu.addSeparator();
+    QAction* snap = menu.addAction(tr("Snap to grid"));
+    snap->setCheckable(true);
+    snap->setChecked(m_snap);
+    connect(snap, &QAction::toggled, this, [this](bool on) { setSnapEnabled(on); });
+    menu.addAction(tr("Fit view"), m_canvas, &CurveCanvas::fitToContent);
+    menu.exec(global);
+}
+
+bool PointEditor::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched != m_canvas || !m_enabled)
+        return QObject::eventFilter(watched, event);
+    switch (event->type()) {
+    case QEvent::MouseButtonPress: {
+        auto* e = static_cast<QMouseEvent*>(event);
+        if (e->button() != Qt::LeftButton)
+            return false;
+        const int hit = pick(e->position());
+        setSelected(hit);
+        if (hit < 0)
+            return false; // empty paper: the canvas pans
+        m_dragging = hit;
+        m_dragStart = m_points;
+        return true;
+    }
+    case QEvent::MouseMove: {
+        auto* e = static_cast<QMouseEvent*>(event);
+        if (m_dragging < 0) {
+            m_canvas->setCursor(pick(e->position()) >= 0 ? Qt::OpenHandCursor : Qt::ArrowCursor);
+            return false;
+        }
+        const Point p = snapped(m_canvas->view().toModel(e->position()));
+        if (isFinite(p)) {
+            m_points[m_dragging] = p;
+            m_canvas->update();
+            emit pointsChanged();
+        }
+        return false; // the canvas still reports the cursor position
+    }
+    case QEvent::MouseButtonRelease: {
+        auto* e = static_cast<QMouseEvent*>(event);
+        if (e->button() != Qt::LeftButton || m_dragging < 0)
+            return false;
+        finishDrag(); // one undo step for the whole drag
+        return true;
+    }
+    case QEvent::MouseButtonDblClick: {
+        auto* e = static_cast<QMouseEvent*>(event);
+        if (e->button() != Qt::LeftButton || pick(e->position()) >= 0)
+            return false;
+        const Point p = snapped(m_canvas->view().toModel(e->position()));
+        insertPoint(insertionIndex(p), p);
+        return true;
+    }
+    case QEvent::ContextMenu: {
+        auto* e = static_cast<QContextMenuEvent*>(event);
+        showContextMenu(e->pos(), e->globalPos());
+        return true;
+    }
+    case QEvent::KeyPress: {
+        auto* e = static_cast<QKeyEvent*>(event);
+        const double px = 1.0 / m_canvas->view().scale();
+        const double step = (m_snap ? m_gridStep : px) * ((e->modifiers() & Qt::ShiftModifier) ? 10.0 : 1.0);
+        switch (e->key()) {
+        case Qt::Key_Delete:
+        case Qt::Key_Backspace:
+            removePoint(m_selected);
+            return true;
+        case Qt::Key_Left: nudge(-step, 0); return m_selected >= 0;
+        case Qt::Key_Right: nudge(step, 0); return m_selected >= 0;
+        case Qt::Key_Up: nudge(0, step); return m_selected >= 0;
+        case Qt::Key_Down: nudge(0, -step); return m_selected >= 0;
+        case Qt::Key_Tab:
+            if (!m_points.empty()) {
+                setSelected((m_selected + 1) % static_cast<int>(m_points.size()));
+                return true;
+            }
+            return false;
+        default:
+            return false;
+        }
+    }
+    default:
+        return QObject::eventFilter(watched, event);
+    }
+}
+
+} // namespace granota::ui

@@ -1,0 +1,103 @@
+#include "ui/common/point_table.h"
+
+#include "core/exact/polynomial_text.h"
+#include "core/exact/rational.h"
+#include "core/exact/rational_approximation.h"
+#include "ui/common/number_text.h"
+#include "ui/common/point_editor.h"
+
+#include <QHeaderView>
+
+#include <cmath>
+
+namespace granota::ui {
+
+namespace {
+
+/// A fraction when the value is one with a small denominator, else the shortest decimal.
+QString coordinateText(double v)
+{
+    if (auto q = smallRational(v, 1000))
+        return QString::fromStdString(toString(*q));
+    return displayNumber(v);
+}
+
+} // namespace
+
+PointTable::PointTable(PointEditor* editor, QWidget* parent) : QTableWidget(parent), m_editor(editor)
+{
+    setColumnCount(2);
+    horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    setSelectionBehavior(QAbstractItemView::SelectRows);
+    setSelectionMode(QAbstractItemView::SingleSelection);
+    connect(m_editor, &PointEditor::pointsChanged, this, &PointTable::refresh);
+    connect(m_editor, &PointEditor::selectionChanged, this, [this](int index) {
+        if (index >= 0 && index < rowCount())
+            selectRow(index);
+        else
+            clearSelection();
+    });
+    connect(this, &QTableWidget::cellChanged, this, &PointTable::cellEdited);
+    connect(this, &QTableWidget::currentCellChanged, this, [this](int row, int, int, int) {
+        if (!m_refreshing && row >= 0)
+            m_editor->setSelected(row);
+    });
+    retranslate();
+    refresh();
+}
+
+void PointTable::retranslate()
+{
+    setHorizontalHeaderLabels({tr("x"), tr("y")});
+    setToolTip(tr("The points as numbers: type a decimal or a fraction such as 1/3."));
+    refresh();
+}
+
+void PointTable::refresh()
+{
+    m_refreshing = true;
+    const auto& points = m_editor->points();
+    // During a drag only the dragged point changes: refresh its row alone.
+    const int dragged = m_editor->dragging() ? m_editor->selected() : -1;
+    if (dragged >= 0 && rowCount() == static_cast<int>(points.size()) && item(dragged, 0) && item(dragged, 1)) {
+        item(dragged, 0)->setText(coordinateText(points[static_cast<std::size_t>(dragged)].x));
+        item(dragged, 1)->setText(coordinateText(points[static_cast<std::size_t>(dragged)].y));
+        m_refreshing = false;
+        return;
+    }
+    setRowCount(static_cast<int>(points.size()));
+    for (int i = 0; i < static_cast<int>(points.size()); ++i) {
+        setVerticalHeaderItem(i, new QTableWidgetItem(QStringLiteral("%1%2").arg(m_editor->labelPrefix()).arg(i)));
+        const double values[2] = {points[i].x, points[i].y};
+        for (int c = 0; c < 2; ++c) {
+            QTableWidgetItem* cell = item(i, c);
+            if (!cell) {
+                cell = new QTableWidgetItem;
+                cell->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+                setItem(i, c, cell);
+            }
+            cell->setText(coordinateText(values[c]));
+        }
+    }
+    m_refreshing = false;
+}
+
+void PointTable::cellEdited(int row, int column)
+{
+    if (m_refreshing)
+        return;
+    const QString text = item(row, column)->text().trimmed();
+    const auto q = parseTypedRational(text);
+    const double v = q ? toDouble(*q) : std::nan("");
+    if (!q || !std::isfinite(v)) {
+        emit message(tr("“%1” is not a number: type a decimal (2.5) or a fraction (5/2).").arg(text));
+        refresh();
+        return;
+    }
+    Point p = m_editor->points()[row];
+    (column == 0 ? p.x : p.y) = v;
+    m_editor->movePoint(row, p);
+}
+
+} // namespace granota::ui

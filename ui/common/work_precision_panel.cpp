@@ -1,0 +1,160 @@
+#include "ui/common/work_precision_panel.h"
+
+#include "ui/common/work_precision_plot.h"
+
+#include <QComboBox>
+#include <QEvent>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QThread>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <qcustomplot.h>
+
+namespace granota::ui {
+
+WorkPrecisionPanel::WorkPrecisionPanel(std::vector<std::string> reports, QWidget* parent)
+    : QWidget(parent), m_names(std::move(reports)), m_choice(new QComboBox(this)), m_measure(new QPushButton(this)),
+      m_cancel(new QPushButton(this)), m_progress(new QProgressBar(this)), m_lesson(new QLabel(this)),
+      m_plot(new QCustomPlot(this))
+{
+    auto* layout = new QVBoxLayout(this);
+    auto* row = new QHBoxLayout;
+    row->addWidget(m_choice, 1);
+    row->addWidget(m_measure);
+    row->addWidget(m_cancel);
+    layout->addLayout(row);
+    layout->addWidget(m_progress);
+    layout->addWidget(m_plot, 1);
+    layout->addWidget(m_lesson);
+    m_lesson->setWordWrap(true);
+    m_progress->setRange(0, 1000);
+    m_progress->setTextVisible(false);
+    m_progress->setVisible(false);
+    m_cancel->setEnabled(false);
+    m_choice->setVisible(m_names.size() > 1);
+    m_plot->setMinimumHeight(180);
+    connect(m_measure, &QPushButton::clicked, this, &WorkPrecisionPanel::measure);
+    connect(m_cancel, &QPushButton::clicked, this, &WorkPrecisionPanel::cancel);
+    connect(m_choice, &QComboBox::currentIndexChanged, this, [this] {
+        if (m_report && m_choice->currentIndex() >= 0 &&
+            m_report->name != m_names[static_cast<std::size_t>(m_choice->currentIndex())]) {
+            m_report.reset();
+            showReport();
+        }
+    });
+    retranslate();
+    showReport();
+}
+
+WorkPrecisionPanel::~WorkPrecisionPanel()
+{
+    if (m_thread) {
+        m_cancelRequested = true;
+        m_thread->wait();
+        delete m_thread;
+    }
+}
+
+void WorkPrecisionPanel::selectReport(const std::string& name)
+{
+    for (std::size_t i = 0; i < m_names.size(); ++i)
+        if (m_names[i] == name)
+            m_choice->setCurrentIndex(static_cast<int>(i));
+}
+
+void WorkPrecisionPanel::measure()
+{
+    if (m_thread || m_choice->currentIndex() < 0)
+        return;
+    const std::string name = m_names[static_cast<std::size_t>(m_choice->currentIndex())];
+    m_cancelRequested = false;
+    m_permille = 0;
+    m_result.reset();
+    WorkPrecisionOptions options;
+    options.quick = m_quick;
+    if (m_quick)
+        options.minSecondsPerPoint = 1e-6;
+    options.progress = [this](double fraction) {
+        m_permille = static_cast<int>(fraction * 1000);
+        return !m_cancelRequested.load();
+    };
+    m_thread = QThread::create([this, name, options] { m_result = runWorkPrecisionReport(name, options); });
+    auto* poll = new QTimer(this);
+    connect(poll, &QTimer::timeout, this, [this] { m_progress->setValue(m_permille.load()); });
+    poll->start(50);
+    connect(m_thread, &QThread::finished, this, [this, poll] {
+        poll->deleteLater();
+        m_thread->deleteLater();
+        m_thread = nullptr;
+        const bool ok = m_result && m_result->ok();
+        if (ok)
+            m_report = m_result->value();
+        m_measure->setEnabled(true);
+        m_cancel->setEnabled(false);
+        m_progress->setVisible(false);
+        showReport();
+        emit finished(ok);
+    });
+    m_measure->setEnabled(false);
+    m_cancel->setEnabled(true);
+    m_progress->setValue(0);
+    m_progress->setVisible(true);
+    m_thread->start(QThread::LowPriority);
+}
+
+void WorkPrecisionPanel::cancel() { m_cancelRequested = true; }
+
+void WorkPrecisionPanel::showReport()
+{
+    if (m_report) {
+        plotWorkPrecision(m_plot, *m_report, m_styleScale);
+        m_lesson->setText(reportLesson(*m_report));
+    } else {
+        m_plot->clearGraphs();
+        m_plot->clearItems();
+        m_plot->replot();
+        m_lesson->setText(m_result && !m_result->ok() && m_result->error().code == ErrorCode::Cancelled
+                              ? tr("Cancelled. Press Measure to start again.")
+                              : tr("Press Measure: each method runs over a range of its setting, and the plot "
+                                   "shows its error against its run time (lower left is better)."));
+    }
+}
+
+void WorkPrecisionPanel::setPresentation(bool on)
+{
+    m_styleScale = on ? 1.6 : 1.0;
+    showReport();
+}
+
+void WorkPrecisionPanel::retranslate()
+{
+    const int current = m_choice->currentIndex();
+    m_choice->clear();
+    for (const auto& name : m_names) {
+        WorkPrecisionReport r;
+        r.name = name;
+        m_choice->addItem(reportTitle(r));
+    }
+    m_choice->setCurrentIndex(current < 0 ? 0 : current);
+    m_choice->setToolTip(tr("Which numerical method to measure: its error against its run time."));
+    m_measure->setText(tr("Measure"));
+    m_measure->setToolTip(tr("Run every method over a range of its setting and plot error against run time."));
+    m_cancel->setText(tr("Cancel"));
+    m_cancel->setToolTip(tr("Stop the measurement."));
+    m_progress->setToolTip(tr("Measuring…"));
+    m_plot->setToolTip(tr("Work-precision plot: each marker is one setting of a method; lower is more accurate, "
+                          "left is faster."));
+    showReport();
+}
+
+void WorkPrecisionPanel::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        retranslate();
+    QWidget::changeEvent(event);
+}
+
+} // namespace granota::ui

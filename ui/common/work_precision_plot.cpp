@@ -1,0 +1,186 @@
+#include "ui/common/work_precision_plot.h"
+
+#include "ui/common/canvas_style.h"
+
+#include <QCoreApplication>
+#include <QLocale>
+#include <qcustomplot.h>
+
+#include <cmath>
+
+namespace granota::ui {
+
+namespace {
+
+QString knobLabel(double knob)
+{
+    if (knob < 1 && knob > 0) {
+        const int e = static_cast<int>(std::lround(-std::log2(knob)));
+        if (std::ldexp(1.0, -e) == knob)
+            return QStringLiteral("2^-%1").arg(e);
+    }
+    return QLocale().toString(knob, 'g', 4); // the interface's decimal sign (C in granota-cli)
+}
+} // namespace
+
+QString reportTitle(const WorkPrecisionReport& r)
+{
+    if (r.name == "curve-sampling")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "Curve sampling: polyline against curve");
+    if (r.name == "bezier-evaluation")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "Evaluating a Bézier curve of degree n");
+    if (r.name == "least-squares")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "Least-squares Bézier fit: normal equations, QR, SVD");
+    if (r.name == "integrators")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "Integrators: global error against run time");
+    if (r.name == "soft-body")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "Soft body: constraint error against substeps");
+    return QString::fromStdString(r.title);
+}
+
+QString reportLesson(const WorkPrecisionReport& r)
+{
+    if (r.name == "curve-sampling")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "Both errors fall like 1/N² (twice the points, a quarter of the error); adaptive subdivision "
+                  "puts its points where the curve bends and needs fewer for the same error.");
+    if (r.name == "bezier-evaluation")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "De Casteljau and the Bernstein sum stay at rounding level at every degree; Horner on the power "
+                  "basis loses digits as the degree grows, because its coefficients are huge alternating sums "
+                  "that cancel.");
+    if (r.name == "least-squares")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "The normal equations square the condition number of M: near degree 25 they have lost almost "
+                  "every digit and by degree 30 the curve is wrong, while QR and SVD still hold about seven "
+                  "digits.");
+    if (r.name == "integrators")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "Halving h halves Euler's error but quarters Verlet's (order 1 against 2): at equal run time "
+                  "Verlet is orders of magnitude more accurate. RK4 (order 4) costs four evaluations per step "
+                  "and wins when high accuracy is needed.");
+    if (r.name == "soft-body")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "XPBD's constraint error falls as the substeps grow, at a cost proportional to their number; "
+                  "the seed's per-step corrections leave a lasting area deficit.");
+    return QString::fromStdString(r.lesson);
+}
+
+QString reportMethod(const std::string& m)
+{
+    static const std::pair<const char*, const char*> names[] = {
+        {"uniform", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "uniform")},
+        {"adaptive", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "adaptive")},
+        {"De Casteljau", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "De Casteljau")},
+        {"Bernstein sum", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Bernstein sum")},
+        {"Horner (power basis)", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Horner (power basis)")},
+        {"normal equations", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "normal equations")},
+        {"QR", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "QR")},
+        {"SVD", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "SVD")},
+        {"explicit Euler", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "explicit Euler")},
+        {"semi-implicit Euler", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "semi-implicit Euler")},
+        {"Verlet", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Verlet")},
+        {"RK4", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "RK4")},
+        {"XPBD area", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "XPBD area")},
+        {"XPBD edge lengths", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "XPBD edge lengths")},
+        {"seed area (Annex II)", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "seed area (Annex II)")},
+    };
+    for (const auto& [key, text] : names)
+        if (m == key)
+            return QCoreApplication::translate("granota::ui::WorkPrecision", text);
+    return QString::fromStdString(m);
+}
+
+QString reportKnob(const WorkPrecisionReport& r)
+{
+    if (r.knob == "points")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "points");
+    if (r.knob == "degree")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "degree");
+    if (r.knob == "step h")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "step h");
+    if (r.knob == "substeps")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "substeps");
+    return QString::fromStdString(r.knob);
+}
+
+QString reportError(const WorkPrecisionReport& r)
+{
+    if (r.name == "curve-sampling")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "max distance between curve and polyline");
+    if (r.name == "bezier-evaluation")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "max |c(t) − exact| / max |Pᵢ|");
+    if (r.name == "least-squares")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "max |Pⱼ − Pⱼ(true)| / max |Pⱼ(true)|");
+    if (r.name == "integrators")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "|x(T) − exact| at T = 10");
+    if (r.name == "soft-body")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "RMS relative constraint violation");
+    return QString::fromStdString(r.error);
+}
+
+void plotWorkPrecision(QCustomPlot* plot, const WorkPrecisionReport& report, double styleScale)
+{
+    plot->clearGraphs();
+    plot->clearItems();
+    plot->plotLayout()->setAutoMargins(QCP::msAll);
+    QSharedPointer<QCPAxisTickerLog> logTicker(new QCPAxisTickerLog);
+    for (QCPAxis* axis : {plot->xAxis, plot->yAxis}) {
+        axis->setScaleType(QCPAxis::stLogarithmic);
+        axis->setTicker(logTicker);
+        axis->setNumberFormat(QStringLiteral("eb"));
+        axis->setNumberPrecision(0);
+        QFont f = axis->labelFont();
+        f.setPointSizeF(QFont().pointSizeF() * styleScale);
+        axis->setLabelFont(f);
+        axis->setTickLabelFont(f);
+    }
+    plot->xAxis->setLabel(QCoreApplication::translate("granota::ui::WorkPrecision", "run time per call (s)"));
+    plot->yAxis->setLabel(reportError(report));
+    double xmin = 1e300, xmax = 0, ymin = 1e300, ymax = 0;
+    int index = 0;
+    const QCPScatterStyle::ScatterShape shapes[] = {QCPScatterStyle::ssCircle, QCPScatterStyle::ssSquare,
+                                                     QCPScatterStyle::ssTriangle, QCPScatterStyle::ssDiamond,
+                                                     QCPScatterStyle::ssCross};
+    for (const auto& series : report.series) {
+        QCPGraph* graph = plot->addGraph();
+        graph->setName(reportMethod(series.method));
+        const QColor colour = CanvasStyle::series(index);
+        graph->setPen(QPen(colour, 2.0 * styleScale));
+        graph->setScatterStyle(QCPScatterStyle(shapes[index % 5], colour, colour.lighter(150), 7 * styleScale));
+        QVector<double> x, y;
+        for (const auto& p : series.samples) {
+            if (!(p.seconds > 0) || !(p.error > 0))
+                continue;
+            x << p.seconds;
+            y << p.error;
+            xmin = std::min(xmin, p.seconds);
+            xmax = std::max(xmax, p.seconds);
+            ymin = std::min(ymin, p.error);
+            ymax = std::max(ymax, p.error);
+        }
+        graph->setData(x, y, true);
+        // The knob at the first and last marker: which end is coarse, which is fine.
+        for (std::size_t k : {std::size_t(0), series.samples.size() - 1}) {
+            if (series.samples.empty() || (k > 0 && series.samples.size() < 2))
+                continue;
+            const auto& p = series.samples[k];
+            auto* label = new QCPItemText(plot);
+            label->position->setCoords(p.seconds, p.error);
+            label->setPositionAlignment(Qt::AlignLeft | Qt::AlignBottom);
+            label->setText(QStringLiteral(" %1 = %2").arg(reportKnob(report), knobLabel(p.knob)));
+            label->setColor(colour.darker(130));
+            QFont f = label->font();
+            f.setPointSizeF(QFont().pointSizeF() * 0.85 * styleScale);
+            label->setFont(f);
+        }
+        ++index;
+    }
+    if (xmax > 0) {
+        plot->xAxis->setRange(xmin / 2, xmax * 4);
+        plot->yAxis->setRange(ymin / 10, ymax * 10);
+    }
+    plot->legend->setVisible(true);
+    plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+    QFont lf = plot->legend->font();
+    lf.setPointSizeF(QFont().pointSizeF() * styleScale);
+    plot->legend->setFont(lf);
+    plot->replot();
+}
+
+} // namespace granota::ui

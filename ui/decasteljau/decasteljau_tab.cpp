@@ -1,0 +1,874 @@
+#include "ui/decasteljau/decasteljau_tab.h"
+#include "ui/common/number_text.h"
+
+#include "core/curves/bezier/bernstein_properties.h"
+#include "core/curves/bezier/degree_elevation.h"
+#include "core/exact/polynomial.h"
+#include "core/exact/polynomial_text.h"
+#include "core/exact/rational.h"
+#include "core/exact/rational_approximation.h"
+#include "core/io/worked_examples.h"
+#include "ui/common/curve_canvas.h"
+#include "ui/decasteljau/decasteljau_flow_layout.h"
+#include "ui/decasteljau/decasteljau_parameter_control.h"
+#include "ui/common/exact_panel.h"
+#include "ui/common/point_editor.h"
+#include "ui/common/point_table.h"
+#include "ui/shell/tikz_writer.h"
+
+#include <QCheckBox>
+#include <QHBoxLayout>
+#include <QJsonArray>
+#include <QLabel>
+#include <QPainter>
+#include <QPainterPath>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QStyle>
+#include <QTimer>
+#include <QToolButton>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace granota::ui {
+
+namespace {
+
+using RPoly = Polynomial<Rational>;
+
+constexpr int kDefaultSamples = 200;      ///< Matlab `part`: the curve through part + 1 points
+constexpr int kMinSamples = 1;            ///< one interval: the chord P_0 P_n
+constexpr int kMaxSamples = 5000;       ///< 200 points × 5000 samples: about 1e8 operations
+constexpr double kStepBudget = 2e7;      ///< operations allowed for the step-by-step curves per update
+constexpr int kMinStepSamples = 16;
+constexpr int kAnimationMs = 30;          ///< timer period of the t animation
+constexpr int kPanelMs = 100;             ///< exact panel refresh period while dragging or playing
+constexpr double kAnimationStep = 0.004;  ///< t per tick: one sweep of [0, 1] in about 7.5 s
+constexpr long kExactTDenominator = 16;   ///< t = p/q with q ≤ 16 gives the triangle in fractions
+constexpr long kMaxShownDenominator = 10000; ///< larger denominators: the triangle at t in decimals
+constexpr int kLevelsPerTable = 3;        ///< symbolic table columns per block, as the thesis prints them
+constexpr int kNumericLevelsPerTable = 5;
+
+/// Ex 2.2-like default: a cubic with four points.
+std::vector<Point> defaultPoints() { return {{0, 0}, {1, 2}, {3, 2}, {4, 0}}; }
+
+QString number(double v)
+{
+    if (v == 0.0 || !std::isfinite(v))
+        return QStringLiteral("0");
+    return displaySignificant(v, 6);
+}
+
+QString pointText(const Point& p) { return displayPair(number(p.x), number(p.y)); }
+QString pointText(const RPoint& p)
+{
+    return QStringLiteral("(%1, %2)").arg(QString::fromStdString(toString(p.x)), QString::fromStdString(toString(p.y)));
+}
+
+/// Whether every level P_i^r(t) and c′(t) fits in a double (Def 2.4): control points
+/// near ±1e308 make n (P_1 − P_0) or a level overflow to inf, or inf − inf to NaN.
+bool fitsInDoubles(const DeCasteljauTable<double>& table)
+{
+    for (const auto& level : table.levels)
+        for (const Point& p : level)
+            if (!isFinite(p))
+                return false;
+    return isFinite(table.tangent());
+}
+
+template <class P> QString joinPoints(const std::vector<P>& points)
+{
+    QStringList parts;
+    for (const P& p : points)
+        parts << pointText(p);
+    return parts.join(QStringLiteral(", "));
+}
+
+/// P_i^r(t) as HTML.
+QString levelName(const QString& i, const QString& r)
+{
+    return QStringLiteral("P<sub>%1</sub><sup>%2</sup>(t)").arg(i, r);
+}
+
+/// A polynomial pair in one unbroken line (the panel scrolls sideways instead).
+QString unbrokenPolynomial(const std::string& text)
+{
+    return QStringLiteral("<span style=\"white-space:nowrap\">%1</span>").arg(ExactPanel::polynomialHtml(text));
+}
+
+/// The triangle laid out as the thesis does: one row per i, one column per level r, in
+/// blocks of `perTable` levels; `cell(r, i)` gives the HTML of P_i^r.
+template <class Cell> QString triangleHtml(int n, int lastLevel, int perTable, Cell cell)
+{
+    // The cells never break inside (white-space: nowrap): a wide table scrolls sideways.
+    QString html;
+    for (int r0 = 0; r0 <= lastLevel; r0 += perTable) {
+        const int r1 = std::min(lastLevel, r0 + perTable - 1);
+        html += QStringLiteral("<table border=\"1\" cellspacing=\"0\"><tr><th></th>");
+        for (int r = r0; r <= r1; ++r)
+            html += QStringLiteral("<th>%1</th>").arg(levelName(QStringLiteral("i"), QString::number(r)));
+        html += QStringLiteral("</tr>");
+        for (int i = 0; i <= n - r0; ++i) {
+            html += QStringLiteral("<tr><td style=\"white-space:nowrap\">i = %1</td>").arg(i);
+            for (int r = r0; r <= r1; ++r)
+                html += QStringLiteral("<td style=\"white-space:nowrap\">%1</td>").arg(i <= n - r ? cell(r, i) : QString());
+            html += QStringLiteral("</tr>");
+        }
+        html += QStringLiteral("</table><p></p>");
+    }
+    return html;
+}
+
+void drawArrow(QPainter& p, const QPointF& from, const QPointF& to, double head)
+{
+    p.drawLine(from, to);
+    const QPointF d = to - from;
+    const double len = std::hypot(d.x(), d.y());
+    if (len < 1e-9)
+        return;
+    const QPointF u = d / len, n(-u.y(), u.x());
+    QPolygonF tip;
+    tip << to << to - head * u + 0.45 * head * n << to - head * u - 0.45 * head * n;
+    p.setBrush(p.pen().color());
+    p.drawPolygon(tip);
+}
+
+QPainterPath polylinePath(const std::vector<Point>& points, const ViewTransform& view)
+{
+    QPainterPath path;
+    bool first = true;
+    for (const Point& q : points) {
+        if (!isFinite(q))
+            continue;
+        const QPointF s = view.toScreen(q);
+        if (first)
+            path.moveTo(s);
+        else
+            path.lineTo(s);
+        first = false;
+    }
+    return path;
+}
+
+std::optional<bool> optionalBool(const QJsonObject& state, const char* key, bool* ok)
+{
+    const QJsonValue v = state.value(QLatin1String(key));
+    if (v.isUndefined())
+        return std::nullopt;
+    if (!v.isBool()) {
+        *ok = false;
+        return std::nullopt;
+    }
+    return v.toBool();
+}
+
+} // namespace
+
+DeCasteljauTab::DeCasteljauTab(QWidget* parent)
+    : TabPage(parent), m_undo(new QUndoStack(this)), m_canvas(new CurveCanvas(this))
+{
+    buildLayers(); // under the handles: the editor adds its own layer on top
+    m_editor = new PointEditor(m_canvas, m_undo, this);
+    m_editor->setCountLimits(1, kMaxPoints);
+    m_editor->setLabelPrefix(QStringLiteral("P"));
+    m_table = new PointTable(m_editor, this);
+    m_exact = new ExactPanel(this);
+    // Break lines only between words: wide tables scroll sideways instead of splitting "(1/2, 3)".
+    m_exact->setWordWrapMode(QTextOption::WordWrap);
+
+    // The controls, in two compact rows above the canvas.
+    m_parameter = new DeCasteljauParameterControl(this);
+    m_play = new QToolButton(this);
+    m_play->setCheckable(true);
+    m_play->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_timer = new QTimer(this);
+    m_timer->setInterval(kAnimationMs);
+    // While a point is dragged or t is animated the canvas follows every frame; the exact
+    // panel (hundreds of typeset entries at high degree) at most every kPanelMs, and at once
+    // when the point is dropped.
+    m_panelTimer = new QTimer(this);
+    m_panelTimer->setSingleShot(true);
+    m_panelTimer->setInterval(kPanelMs);
+    connect(m_panelTimer, &QTimer::timeout, this, &DeCasteljauTab::refreshPanel);
+    m_samplesLabel = new QLabel(this);
+    m_samplesBox = new QSpinBox(this);
+    m_samplesBox->setRange(kMinSamples, kMaxSamples);
+    m_samplesBox->setValue(m_samples);
+    m_samplesBox->setKeyboardTracking(false);
+    m_samplesLabel->setBuddy(m_samplesBox);
+    m_raise = new QPushButton(this);
+    m_construction = new QCheckBox(this);
+    m_construction->setChecked(m_showConstruction);
+    m_steps = new QCheckBox(this);
+    m_tangent = new QCheckBox(this);
+    m_split = new QCheckBox(this);
+    m_snap = new QCheckBox(this);
+    m_warningLabel = new QLabel(this);
+    m_warningLabel->setWordWrap(true);
+    m_warningLabel->setStyleSheet(QStringLiteral("color: #8a3a00;"));
+    m_warningLabel->hide();
+
+    auto* row1 = new QHBoxLayout;
+    row1->addWidget(m_parameter, 1);
+    row1->addWidget(m_play);
+    // The rest wraps onto more rows when the width runs out (Catalan, presentation mode).
+    auto* samples = new QWidget(this);
+    auto* samplesLayout = new QHBoxLayout(samples);
+    samplesLayout->setContentsMargins(0, 0, 0, 0);
+    samplesLayout->addWidget(m_samplesLabel);
+    samplesLayout->addWidget(m_samplesBox);
+    auto* row2 = new DeCasteljauFlowLayout;
+    for (QCheckBox* box : {m_construction, m_steps, m_tangent, m_split, m_snap})
+        row2->addWidget(box);
+    row2->addWidget(samples);
+    row2->addWidget(m_raise);
+
+    auto* left = new QWidget(this);
+    auto* leftLayout = new QVBoxLayout(left);
+    leftLayout->setContentsMargins(0, 0, 0, 0);
+    leftLayout->addLayout(row1);
+    leftLayout->addLayout(row2);
+    leftLayout->addWidget(m_canvas, 1);
+    leftLayout->addWidget(m_warningLabel);
+
+    m_sideSplitter = new QSplitter(Qt::Vertical, this);
+    m_sideSplitter->addWidget(m_table);
+    m_sideSplitter->addWidget(m_exact);
+    m_sideSplitter->setStretchFactor(0, 1);
+    m_sideSplitter->setStretchFactor(1, 3);
+    m_sideSplitter->setSizes({200, 560});
+    m_mainSplitter = new QSplitter(Qt::Horizontal, this);
+    m_mainSplitter->addWidget(left);
+    m_mainSplitter->addWidget(m_sideSplitter);
+    m_mainSplitter->setStretchFactor(0, 3);
+    m_mainSplitter->setStretchFactor(1, 2);
+    m_mainSplitter->setSizes({780, 480});
+    m_mainSplitter->setChildrenCollapsible(false);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(m_mainSplitter);
+
+    connect(m_editor, &PointEditor::pointsChanged, this, &DeCasteljauTab::pointsChanged);
+    connect(m_editor, &PointEditor::message, this, &TabPage::statusMessage);
+    connect(m_table, &PointTable::message, this, &TabPage::statusMessage);
+    connect(m_parameter, &DeCasteljauParameterControl::valueChanged, this, [this](double t) {
+        m_t = t;
+        parameterChanged();
+        if (!isPlaying())
+            emit documentChanged();
+    });
+    connect(m_play, &QToolButton::toggled, this, &DeCasteljauTab::setPlaying);
+    connect(m_timer, &QTimer::timeout, this, &DeCasteljauTab::advanceAnimation);
+    connect(m_samplesBox, &QSpinBox::valueChanged, this, &DeCasteljauTab::setSamples);
+    connect(m_raise, &QPushButton::clicked, this, &DeCasteljauTab::raiseDegree);
+    connect(m_construction, &QCheckBox::toggled, this, &DeCasteljauTab::setConstructionVisible);
+    connect(m_steps, &QCheckBox::toggled, this, &DeCasteljauTab::setStepByStep);
+    connect(m_tangent, &QCheckBox::toggled, this, &DeCasteljauTab::setTangentVisible);
+    connect(m_split, &QCheckBox::toggled, this, &DeCasteljauTab::setSplitVisible);
+    connect(m_snap, &QCheckBox::toggled, this, [this](bool on) {
+        m_editor->setSnapEnabled(on);
+        emit documentChanged();
+    });
+
+    m_editor->applyPoints(defaultPoints());
+    m_parameter->setValue(m_t);
+    m_canvas->setContentBounds(pointBounds());
+    retranslate();
+}
+
+// ---------------------------------------------------------------- drawing
+
+void DeCasteljauTab::buildLayers()
+{
+    // Rep_Bezier with desglossar: the curves of the first 1, 2, …, n + 1 points.
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (!m_showSteps)
+            return;
+        p.setBrush(Qt::NoBrush);
+        for (std::size_t k = 0; k < m_stepCurves.size(); ++k) {
+            QColor c = CanvasStyle::series(static_cast<int>(k));
+            c.setAlpha(170);
+            p.setPen(QPen(c, style.lineWidth() * 0.75));
+            if (m_stepCurves[k].size() == 1) {
+                p.setBrush(c);
+                p.drawEllipse(view.toScreen(m_stepCurves[k][0]), style.handleRadius() * 0.5, style.handleRadius() * 0.5);
+                p.setBrush(Qt::NoBrush);
+            } else {
+                p.drawPath(polylinePath(m_stepCurves[k], view));
+            }
+        }
+    });
+    // The curve: all of it lighter, the part traced so far (0..t) bold.
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (m_curve.size() < 2)
+            return;
+        p.setBrush(Qt::NoBrush);
+        QColor light = style.curve;
+        light.setAlpha(110);
+        p.setPen(QPen(light, style.lineWidth(), Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        p.drawPath(polylinePath(m_curve, view));
+        std::vector<Point> traced;
+        const double part = static_cast<double>(m_curve.size() - 1);
+        for (std::size_t j = 0; j < m_curve.size() && static_cast<double>(j) / part <= m_t; ++j)
+            traced.push_back(m_curve[j]);
+        if (!m_levels.levels.empty())
+            traced.push_back(m_levels.point());
+        p.setPen(QPen(style.curve, style.lineWidth() * 1.8, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        p.drawPath(polylinePath(traced, view));
+    });
+    // Split at t: the halves' control polygons are the triangle's two edges.
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (!m_showSplit || m_levels.levels.size() < 2)
+            return;
+        const std::vector<Point> halves[2] = {m_levels.leftHalf(), m_levels.rightHalf()};
+        const QColor colours[2] = {QColor(0xc0, 0x39, 0x8b), QColor(0x1b, 0x9e, 0x77)};
+        for (int h = 0; h < 2; ++h) {
+            p.setPen(QPen(colours[h], style.lineWidth(), Qt::DashDotLine));
+            p.setBrush(Qt::NoBrush);
+            p.drawPath(polylinePath(halves[h], view));
+            p.setPen(Qt::NoPen);
+            p.setBrush(colours[h]);
+            for (const Point& q : halves[h])
+                p.drawRect(QRectF(view.toScreen(q) - QPointF(3.5, 3.5) * style.scale, QSizeF(7, 7) * style.scale));
+        }
+    });
+    // The construction of Def 2.4: every level r ≥ 1, points and segments, one colour each.
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (!m_showConstruction || m_levels.levels.size() < 2)
+            return;
+        const int n = m_levels.degree();
+        for (int r = 1; r < n; ++r) {
+            const auto& level = m_levels.levels[static_cast<std::size_t>(r)];
+            const QColor c = CanvasStyle::series(r);
+            // Beyond degree 10 the levels crowd each other: hairlines keep them apart, and a
+            // one-pixel line is drawn by Qt's fast stroker — a 1.4 px one costs the outline
+            // of every segment, three quarters of a frame at degree 30.
+            p.setPen(QPen(c, style.thinLine() * (n > 10 ? 1.0 : 1.4)));
+            p.setBrush(Qt::NoBrush);
+            p.drawPath(polylinePath(level, view));
+            // All the level's points as one path: one fill and one stroke instead of one per
+            // point keeps a drag at degree 30 (465 points) within a frame.
+            const double rad = style.handleRadius() * 0.6;
+            QPainterPath dots;
+            for (const Point& q : level)
+                dots.addEllipse(view.toScreen(q), rad, rad);
+            p.setPen(QPen(Qt::white, style.thinLine()));
+            p.setBrush(c);
+            p.drawPath(dots);
+        }
+    });
+    // The tangent c′(t), from the last level but one.
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (!m_showTangent || m_levels.degree() < 1)
+            return;
+        // Drawn as c′(t)/n = P_1^{n−1}(t) − P_0^{n−1}(t): the last segment of the construction,
+        // so the arrow stays on screen (c′ itself is n times longer).
+        const int n = m_levels.degree();
+        const Point c = m_levels.point(), d = (1.0 / n) * m_levels.tangent();
+        if (!isFinite(c) || !isFinite(d))
+            return;
+        const QColor colour(0x6a, 0x3d, 0x9a);
+        p.setPen(QPen(colour, style.lineWidth()));
+        const QPointF from = view.toScreen(c), to = view.toScreen(c + d);
+        drawArrow(p, from, to, 11.0 * style.scale);
+        p.setFont(style.labelFont());
+        p.setPen(colour);
+        // The label beyond the arrow's tip, on the side the arrow points to.
+        const QString label = n == 1 ? QStringLiteral("c′(t)") : QStringLiteral("c′(t)/%1").arg(n);
+        const QPointF dir = to - from;
+        const double len = std::hypot(dir.x(), dir.y());
+        const QPointF ahead = len > 0 ? dir / len * (8.0 * style.scale) : QPointF();
+        const QFontMetricsF fm(p.font());
+        QPointF at = to + ahead + QPointF(0, fm.ascent() / 2);
+        if (dir.x() < 0)
+            at.rx() -= fm.horizontalAdvance(label);
+        p.drawText(at, label);
+    });
+    // c(t) itself, prominent.
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (m_levels.levels.empty() || !isFinite(m_levels.point()))
+            return;
+        const QPointF s = view.toScreen(m_levels.point());
+        const double r = style.handleRadius() * 1.25;
+        p.setPen(QPen(Qt::white, style.thinLine() * 2));
+        p.setBrush(style.curve);
+        p.drawEllipse(s, r, r);
+        p.setPen(style.curve);
+        QFont f = style.labelFont();
+        f.setBold(true);
+        p.setFont(f);
+        p.drawText(s + QPointF(r + 4 * style.scale, r + 12 * style.scale), QStringLiteral("c(t)"));
+    });
+}
+
+// ---------------------------------------------------------------- updates
+
+void DeCasteljauTab::pointsChanged()
+{
+    m_canvas->setDataExtent(pointBounds()); // points near ±1e308 get a notice, not a blank canvas
+    const auto& points = m_editor->points();
+    if (points.empty())
+        return;
+    m_curve = sampleBezier(points, m_samples + 1);
+    m_stepCurves.clear();
+    if (m_showSteps) {
+        // n + 1 curves of 1…n + 1 points cost about n³/6 per sample: fewer samples at high degree.
+        const double n = static_cast<double>(points.size());
+        const int part = std::min(m_samples, std::max(kMinStepSamples, static_cast<int>(kStepBudget * 6.0 / (n * n * n))));
+        for (std::size_t k = 1; k <= points.size(); ++k)
+            m_stepCurves.push_back(k == 1 ? std::vector<Point>{points[0]}
+                                          : sampleBezier(std::vector<Point>(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(k)),
+                                                         part + 1));
+    }
+    m_levels = deCasteljau(points, m_t);
+    if (m_editor->dragging() || isPlaying()) {
+        schedulePanel();
+    } else {
+        m_panelTimer->stop();
+        refreshPanel();
+    }
+    m_canvas->update();
+    emit documentChanged();
+}
+
+void DeCasteljauTab::refreshPanel()
+{
+    updateExactSymbolic();
+    updateExactPanel();
+    updateWarning();
+}
+
+void DeCasteljauTab::schedulePanel()
+{
+    if (!m_panelTimer->isActive())
+        m_panelTimer->start();
+}
+
+void DeCasteljauTab::parameterChanged()
+{
+    if (!m_editor->points().empty())
+        m_levels = deCasteljau(m_editor->points(), m_t);
+    if (isPlaying() || m_editor->dragging())
+        schedulePanel(); // the triangle at t, a few times a second while t runs
+    else
+        updateExactPanel();
+    m_canvas->update();
+    emit tChanged(m_t);
+}
+
+void DeCasteljauTab::setT(double t)
+{
+    if (!std::isfinite(t))
+        return;
+    t = std::clamp(t, 0.0, 1.0);
+    m_parameter->setValue(t);
+    if (t == m_t)
+        return;
+    m_t = t;
+    parameterChanged();
+}
+
+void DeCasteljauTab::setSamples(int part)
+{
+    part = std::clamp(part, kMinSamples, kMaxSamples);
+    if (m_samplesBox->value() != part) {
+        const QSignalBlocker block(m_samplesBox);
+        m_samplesBox->setValue(part);
+    }
+    if (part == m_samples)
+        return;
+    m_samples = part;
+    pointsChanged();
+}
+
+void DeCasteljauTab::setToggle(bool& flag, QCheckBox* box, bool on)
+{
+    if (box->isChecked() != on) {
+        const QSignalBlocker block(box);
+        box->setChecked(on);
+    }
+    if (flag == on)
+        return;
+    flag = on;
+    pointsChanged(); // recomputes what the toggle needs (step curves, split list in the panel)
+}
+
+void DeCasteljauTab::setConstructionVisible(bool on) { setToggle(m_showConstruction, m_construction, on); }
+void DeCasteljauTab::setStepByStep(bool on) { setToggle(m_showSteps, m_steps, on); }
+void DeCasteljauTab::setTangentVisible(bool on) { setToggle(m_showTangent, m_tangent, on); }
+void DeCasteljauTab::setSplitVisible(bool on) { setToggle(m_showSplit, m_split, on); }
+
+bool DeCasteljauTab::isPlaying() const { return m_timer->isActive(); }
+
+void DeCasteljauTab::setPlaying(bool on)
+{
+    if (on && !m_timer->isActive())
+        m_timer->start();
+    else if (!on)
+        m_timer->stop();
+    if (m_play->isChecked() != on) {
+        const QSignalBlocker block(m_play);
+        m_play->setChecked(on);
+    }
+    m_play->setText(on ? tr("Pause") : tr("Play"));
+    m_play->setIcon(style()->standardIcon(on ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+}
+
+void DeCasteljauTab::advanceAnimation()
+{
+    double t = m_t + kAnimationStep;
+    if (t > 1.0 + 1e-12)
+        t = 0.0; // loops
+    setT(std::min(t, 1.0));
+}
+
+void DeCasteljauTab::raiseDegree()
+{
+    const auto& points = m_editor->points();
+    if (static_cast<int>(points.size()) >= kMaxPoints) {
+        emit statusMessage(tr("At most %1 control points: the degree cannot be raised further.").arg(kMaxPoints));
+        return;
+    }
+    // Small fractions are elevated exactly, so that the exact tables survive the step.
+    const auto exact = smallRationalPoints(points);
+    m_editor->setPoints(exact ? toDouble(elevateDegree(*exact)) : elevateDegree(points),
+                        tr("Raise degree to %1").arg(points.size()));
+    emit statusMessage(tr("Degree raised to %1: the same curve with one control point more.").arg(points.size()));
+}
+
+void DeCasteljauTab::updateWarning()
+{
+    const int n = static_cast<int>(m_editor->points().size()) - 1;
+    const QString before = m_warningText;
+    if (n >= kWarnDegree)
+        m_warningText = tr("Degree %1 is high: in powers of t the condition number is %2, so only De Casteljau's "
+                           "algorithm, which stays stable, is used here and the exact tables are hidden.")
+                            .arg(n)
+                            .arg(displaySignificant(powerBasisCondition(n), 2));
+    else
+        m_warningText.clear();
+    m_warningLabel->setText(m_warningText);
+    m_warningLabel->setVisible(!m_warningText.isEmpty());
+    if (m_warningText != before && !m_warningText.isEmpty())
+        emit statusMessage(m_warningText);
+}
+
+void DeCasteljauTab::updateExactSymbolic()
+{
+    m_symbolicHtml.clear();
+    const auto& points = m_editor->points();
+    const int n = static_cast<int>(points.size()) - 1;
+    const auto exact = smallRationalPoints(points);
+    if (!exact) {
+        m_symbolicHtml = ExactPanel::note(tr("The exact polynomials need control points that are small fractions: "
+                                             "type them in the table (1/3 is accepted) or turn on Snap to grid."));
+        return;
+    }
+    if (n > kMaxExactDegree) {
+        m_symbolicHtml = ExactPanel::note(tr("The levels in powers of t are shown up to degree %1; at degree %2 "
+                                             "their coefficients would no longer be readable.")
+                                              .arg(kMaxExactDegree)
+                                              .arg(n));
+        return;
+    }
+    // Def 2.4 run on polynomials: t is the polynomial t, every P_i^r(t) comes out expanded.
+    std::vector<Vec2<RPoly>> symbolic;
+    for (const RPoint& p : *exact)
+        symbolic.emplace_back(RPoly(p.x), RPoly(p.y));
+    const auto table = deCasteljau(symbolic, RPoly::identity());
+    QString html = QStringLiteral("<h3>%1</h3>").arg(tr("The levels %1 in powers of t (Def 2.4)").arg(levelName(QStringLiteral("i"), QStringLiteral("r"))));
+    if (n >= 1)
+        html += triangleHtml(n, n - 1, kLevelsPerTable, [&table](int r, int i) {
+            return unbrokenPolynomial(toText(table.levels[static_cast<std::size_t>(r)][static_cast<std::size_t>(i)]));
+        });
+    html += QStringLiteral("<p>%1 = c(t) = %2</p>")
+                .arg(levelName(QStringLiteral("0"), QString::number(n)), unbrokenPolynomial(toText(table.point())));
+    m_symbolicHtml = html;
+}
+
+void DeCasteljauTab::updateExactPanel()
+{
+    const auto& points = m_editor->points();
+    if (points.empty() || m_levels.levels.empty())
+        return;
+    const int n = static_cast<int>(points.size()) - 1;
+    const auto exactPoints = smallRationalPoints(points);
+    const auto exactT = smallRational(m_t, kExactTDenominator);
+    QString html;
+    std::optional<DeCasteljauTable<Rational>> exactTable;
+    if (exactPoints && exactT && n <= kMaxExactDegree) {
+        exactTable = deCasteljau(*exactPoints, *exactT);
+        // Fractions only while they stay readable; decimals otherwise.
+        bool readable = true;
+        for (const auto& level : exactTable->levels)
+            for (const RPoint& q : level)
+                readable = readable && q.x.get_den() <= kMaxShownDenominator && q.y.get_den() <= kMaxShownDenominator;
+        if (!readable)
+            exactTable.reset();
+    }
+    if (exactTable) {
+        // Rational points at a rational t: the triangle in fractions.
+        const auto& table = *exactTable;
+        html += ExactPanel::heading(tr("De Casteljau's triangle at t = %1 (Def 2.4)").arg(QString::fromStdString(toString(*exactT))));
+        html += triangleHtml(n, n, kNumericLevelsPerTable, [&table](int r, int i) {
+            return pointText(table.levels[static_cast<std::size_t>(r)][static_cast<std::size_t>(i)]);
+        });
+        html += QStringLiteral("<p>c(t) = %1 = %2<br>c′(t) = %3</p>")
+                    .arg(levelName(QStringLiteral("0"), QString::number(n)), pointText(table.point()), pointText(table.tangent()));
+        if (m_showSplit)
+            html += QStringLiteral("<p>%1</p>").arg(tr("Split at t: [0, t] has control points %1; [t, 1] has %2.")
+                                                        .arg(joinPoints(table.leftHalf()), joinPoints(table.rightHalf())));
+    } else {
+        const QString tText = exactT ? QString::fromStdString(toString(*exactT)) : number(m_t);
+        html += ExactPanel::heading(tr("De Casteljau's triangle at t = %1 (Def 2.4)").arg(tText));
+        if (!fitsInDoubles(m_levels)) {
+            // No wrong number: the values themselves do not exist in double precision.
+            html += ExactPanel::note(tr("The values are too large for a double (beyond ±1.8e308): a level of the "
+                                        "triangle or c′(t) overflows. Move the control points closer to the origin."));
+            html += m_symbolicHtml;
+            m_exact->setContent(html);
+            return;
+        }
+        if (n <= kMaxTableDegree)
+            html += triangleHtml(n, n, kNumericLevelsPerTable, [this](int r, int i) {
+                return pointText(m_levels.levels[static_cast<std::size_t>(r)][static_cast<std::size_t>(i)]);
+            });
+        else
+            html += ExactPanel::note(tr("The triangle is shown up to degree %1; this curve has degree %2.").arg(kMaxTableDegree).arg(n));
+        html += QStringLiteral("<p>c(t) = %1 = %2<br>c′(t) = %3</p>")
+                    .arg(levelName(QStringLiteral("0"), QString::number(n)), pointText(m_levels.point()), pointText(m_levels.tangent()));
+        if (m_showSplit && n <= kMaxTableDegree)
+            html += QStringLiteral("<p>%1</p>").arg(tr("Split at t: [0, t] has control points %1; [t, 1] has %2.")
+                                                        .arg(joinPoints(m_levels.leftHalf()), joinPoints(m_levels.rightHalf())));
+    }
+    html += m_symbolicHtml;
+    if (!m_warningText.isEmpty())
+        html += ExactPanel::note(m_warningText);
+    m_exact->setContent(html);
+}
+
+QRectF DeCasteljauTab::pointBounds() const
+{
+    const auto& points = m_editor->points();
+    if (points.empty())
+        return {-1, -1, 2, 2};
+    double x0 = points[0].x, x1 = x0, y0 = points[0].y, y1 = y0;
+    for (const Point& p : points) {
+        x0 = std::min(x0, p.x);
+        x1 = std::max(x1, p.x);
+        y0 = std::min(y0, p.y);
+        y1 = std::max(y1, p.y);
+    }
+    double pad = 0.05 * std::max(x1 - x0, y1 - y0);
+    if (!(pad > 0))
+        pad = 0.5 * std::max({std::fabs(x0), std::fabs(y0), 1e-9}); // one point, or all coincident
+    return QRectF(QPointF(x0 - pad, y0 - pad), QPointF(x1 + pad, y1 + pad));
+}
+
+// ---------------------------------------------------------------- TabPage
+
+void DeCasteljauTab::retranslate()
+{
+    m_parameter->retranslate();
+    setPlaying(isPlaying()); // the button's text
+    m_play->setToolTip(tr("Animate t from 0 to 1 and around again: watch c(t) trace the curve (Def 2.4)."));
+    m_samplesLabel->setText(tr("Samples:"));
+    const QString samplesTip =
+        tr("Sampling precision: the curve is drawn through this many intervals of t, like part in the thesis's Matlab "
+           "De_Casteljau(P, part).");
+    m_samplesLabel->setToolTip(samplesTip);
+    m_samplesBox->setToolTip(samplesTip);
+    m_raise->setText(tr("Raise degree"));
+    m_raise->setToolTip(tr("Degree elevation: the same curve written with one control point more "
+                           "(Q_i = i/(n+1) P_(i−1) + (1 − i/(n+1)) P_i). Undoable."));
+    m_construction->setText(tr("Construction"));
+    m_construction->setToolTip(tr("Draw every level P_i^r(t) of De Casteljau's algorithm (Def 2.4): the points of each "
+                                  "level and the segments between them, one colour per level."));
+    m_steps->setText(tr("Step by step"));
+    m_steps->setToolTip(tr("Overlay the curves of the first 1, 2, …, n+1 control points, like the desglossar option of "
+                           "the thesis's Matlab Rep_Bezier."));
+    m_tangent->setText(tr("Tangent"));
+    m_tangent->setToolTip(tr("The tangent vector c′(t) = n (P_1^(n−1)(t) − P_0^(n−1)(t)), read off the last level "
+                             "but one of the construction; the arrow at c(t) is c′(t)/n, that last segment."));
+    m_split->setText(tr("Split at t"));
+    m_split->setToolTip(tr("Split the curve at t: the two edges of De Casteljau's triangle are the control polygons "
+                           "of the halves [0, t] and [t, 1]."));
+    m_snap->setText(tr("Snap to grid"));
+    m_snap->setToolTip(tr("Round dragged and added points to the grid, so that they stay small fractions and the "
+                          "exact tables appear."));
+    m_canvas->setToolTip(tr("Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add "
+                            "one on the nearest edge, Delete removes the selected one, arrows nudge it."));
+    m_exact->setToolTip(tr("De Casteljau's triangle P_i^r(t) at the current t and, for rational points, every level "
+                           "in powers of t, as in Ex 2.2 and Ex 2.3."));
+    m_table->retranslate();
+    updateWarning();
+    updateExactSymbolic();
+    updateExactPanel();
+}
+
+QJsonObject DeCasteljauTab::saveState() const
+{
+    QJsonArray points;
+    for (const Point& p : m_editor->points())
+        points.append(QJsonArray{p.x, p.y});
+    QJsonObject state;
+    state.insert(QStringLiteral("points"), points);
+    state.insert(QStringLiteral("t"), m_t);
+    state.insert(QStringLiteral("samples"), m_samples);
+    state.insert(QStringLiteral("construction"), m_showConstruction);
+    state.insert(QStringLiteral("stepByStep"), m_showSteps);
+    state.insert(QStringLiteral("tangent"), m_showTangent);
+    state.insert(QStringLiteral("split"), m_showSplit);
+    state.insert(QStringLiteral("snap"), m_editor->snapEnabled());
+    return state;
+}
+
+bool DeCasteljauTab::loadState(const QJsonObject& state, QString* error)
+{
+    auto fail = [error](const QString& message) {
+        if (error)
+            *error = message;
+        return false;
+    };
+    // Validate everything first: a bad document changes nothing.
+    const QJsonValue pointsValue = state.value(QStringLiteral("points"));
+    if (!pointsValue.isArray())
+        return fail(tr("The De Casteljau points are missing or not a list."));
+    const QJsonArray array = pointsValue.toArray();
+    if (array.isEmpty() || array.size() > kMaxPoints)
+        return fail(tr("The De Casteljau tab needs between 1 and %1 control points; the document has %2.")
+                        .arg(kMaxPoints)
+                        .arg(array.size()));
+    std::vector<Point> points;
+    for (int i = 0; i < array.size(); ++i) {
+        const QJsonArray xy = array[i].toArray();
+        if (!array[i].isArray() || xy.size() != 2 || !xy[0].isDouble() || !xy[1].isDouble()
+            || !std::isfinite(xy[0].toDouble()) || !std::isfinite(xy[1].toDouble()))
+            return fail(tr("Control point %1 is not a pair of finite numbers.").arg(i));
+        points.push_back({xy[0].toDouble(), xy[1].toDouble()});
+    }
+    double t = 0.5;
+    if (const QJsonValue v = state.value(QStringLiteral("t")); !v.isUndefined()) {
+        if (!v.isDouble() || !std::isfinite(v.toDouble()) || v.toDouble() < 0 || v.toDouble() > 1)
+            return fail(tr("The parameter t must be a number between 0 and 1."));
+        t = v.toDouble();
+    }
+    int samples = kDefaultSamples;
+    if (const QJsonValue v = state.value(QStringLiteral("samples")); !v.isUndefined()) {
+        const double s = v.toDouble(-1);
+        if (!v.isDouble() || s != std::floor(s) || s < kMinSamples || s > kMaxSamples)
+            return fail(tr("The number of samples must be a whole number from %1 to %2.").arg(kMinSamples).arg(kMaxSamples));
+        samples = static_cast<int>(s);
+    }
+    bool ok = true;
+    const auto construction = optionalBool(state, "construction", &ok);
+    const auto steps = optionalBool(state, "stepByStep", &ok);
+    const auto tangent = optionalBool(state, "tangent", &ok);
+    const auto split = optionalBool(state, "split", &ok);
+    const auto snap = optionalBool(state, "snap", &ok);
+    if (!ok)
+        return fail(tr("A De Casteljau display option is not true or false."));
+
+    setPlaying(false);
+    m_showConstruction = construction.value_or(true);
+    m_showSteps = steps.value_or(false);
+    m_showTangent = tangent.value_or(false);
+    m_showSplit = split.value_or(false);
+    for (auto [box, on] : {std::pair{m_construction, m_showConstruction}, std::pair{m_steps, m_showSteps},
+                           std::pair{m_tangent, m_showTangent}, std::pair{m_split, m_showSplit}}) {
+        const QSignalBlocker block(box);
+        box->setChecked(on);
+    }
+    {
+        const QSignalBlocker block(m_snap);
+        m_snap->setChecked(snap.value_or(false));
+        m_editor->setSnapEnabled(snap.value_or(false));
+    }
+    m_samples = samples;
+    {
+        const QSignalBlocker block(m_samplesBox);
+        m_samplesBox->setValue(samples);
+    }
+    m_t = t;
+    m_parameter->setValue(t);
+    m_editor->applyPoints(points); // recomputes everything at the new t and samples
+    fitView();
+    emit tChanged(m_t);
+    return true;
+}
+
+bool DeCasteljauTab::loadExample(const granota::WorkedExample& example)
+{
+    if (example.kind != "bezier" || example.points.empty())
+        return false;
+    const QString id = QString::fromStdString(example.id);
+    m_editor->setPoints(toDouble(example.points), tr("Load Ex %1").arg(id));
+    fitView();
+    setT(0.5);
+    emit statusMessage(tr("Ex %1: the tables of the thesis are in the panel on the right at t = 1/2.").arg(id));
+    return true;
+}
+
+Drawable* DeCasteljauTab::exportView() { return m_canvas; }
+
+QString DeCasteljauTab::csv() const
+{
+    QString out = QStringLiteral("i,x,y\n");
+    const auto& points = m_editor->points();
+    for (std::size_t i = 0; i < points.size(); ++i)
+        out += QStringLiteral("%1,%2,%3\n").arg(i).arg(QString::fromStdString(formatDouble(points[i].x)),
+                                                       QString::fromStdString(formatDouble(points[i].y)));
+    out += QStringLiteral("\nt,x,y\n");
+    const double part = static_cast<double>(m_curve.size() > 1 ? m_curve.size() - 1 : 1);
+    for (std::size_t j = 0; j < m_curve.size(); ++j)
+        out += QStringLiteral("%1,%2,%3\n")
+                   .arg(QString::fromStdString(formatDouble(static_cast<double>(j) / part)),
+                        QString::fromStdString(formatDouble(m_curve[j].x)), QString::fromStdString(formatDouble(m_curve[j].y)));
+    return out;
+}
+
+QString DeCasteljauTab::tikz() const
+{
+    TikzWriter w;
+    const CanvasStyle style;
+    const auto& points = m_editor->points();
+    w.comment(QStringLiteral("Bezier curve of degree %1 (De Casteljau, Def 2.4) at t = %2").arg(points.size() - 1).arg(m_t));
+    w.polyline(points, style.polygon, 0.6, true);
+    if (m_showConstruction)
+        for (int r = 1; r < m_levels.degree(); ++r)
+            w.polyline(m_levels.levels[static_cast<std::size_t>(r)], CanvasStyle::series(r), 0.6);
+    w.polyline(m_curve, style.curve, 1.2);
+    for (std::size_t i = 0; i < points.size(); ++i)
+        w.point(points[i], style.handle, QStringLiteral("P_{%1}").arg(i));
+    if (!m_levels.levels.empty())
+        w.point(m_levels.point(), style.curve, QStringLiteral("c(t)"));
+    return w.str();
+}
+
+void DeCasteljauTab::setPresentation(bool on)
+{
+    m_canvas->setStyleScale(on ? 1.8 : 1.0);
+    m_exact->setPresentation(on);
+    updateExactPanel();
+}
+
+void DeCasteljauTab::zoom(double factor) { m_canvas->zoom(factor); }
+
+void DeCasteljauTab::fitView()
+{
+    m_canvas->setContentBounds(pointBounds());
+    m_canvas->fitToContent();
+}
+
+void DeCasteljauTab::showEvent(QShowEvent* event)
+{
+    TabPage::showEvent(event);
+    emit statusMessage(tr("Drag a point; double-click to add one; Delete removes the selected point; move t with the slider."));
+}
+
+} // namespace granota::ui

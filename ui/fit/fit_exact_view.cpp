@@ -1,0 +1,207 @@
+#include "ui/fit/fit_exact_view.h"
+#include "ui/common/number_text.h"
+
+#include "core/curves/bezier/power_basis.h"
+#include "core/exact/polynomial_text.h"
+#include "core/exact/rational_approximation.h"
+#include "core/exact/square_root.h"
+#include "core/io/worked_examples.h"
+#include "ui/common/exact_panel.h"
+
+#include <QStringList>
+
+#include <optional>
+
+namespace granota::ui {
+
+namespace {
+
+/// Decimals for the panel: six significant digits read well and are enough to compare.
+QString decimal(double v, int digits = 6)
+{
+    if (v == 0)
+        v = 0; // no "-0"
+    return displaySignificant(v, digits);
+}
+
+std::string decimalText(double v, int digits = 6) { return decimal(v, digits).toStdString(); }
+
+/// A polynomial of doubles rounded to `digits` significant digits, for display only.
+Polynomial<double> rounded(const Polynomial<double>& p, int digits = 6)
+{
+    std::vector<double> c;
+    for (double a : p.coefficients())
+        c.push_back(QString::fromStdString(formatSignificant(a, digits)).toDouble());
+    return Polynomial<double>(std::move(c));
+}
+
+std::vector<std::vector<std::string>> entries(const RationalMatrix& m)
+{
+    std::vector<std::vector<std::string>> e(static_cast<std::size_t>(m.rows()));
+    for (int r = 0; r < m.rows(); ++r)
+        for (int c = 0; c < m.cols(); ++c)
+            e[static_cast<std::size_t>(r)].push_back(toString(m(r, c)));
+    return e;
+}
+
+QString line(const QString& html) { return QStringLiteral("%1<br>").arg(html); }
+
+QString sub(const QString& name, int index) { return QStringLiteral("%1<sub>%2</sub>").arg(name).arg(index); }
+
+/// Whether the data are the thesis's Q_0..Q_4 of Ex 2.7–2.10.
+bool isThesisData(const std::optional<std::vector<RPoint>>& rational)
+{
+    const WorkedExample* example = findWorkedExample("2.7");
+    return rational && example && *rational == example->points;
+}
+
+QString curveHtml(const std::string& x, const std::string& y)
+{
+    return line(QStringLiteral("x(t) = ") + ExactPanel::polynomialHtml(x))
+           + line(QStringLiteral("y(t) = ") + ExactPanel::polynomialHtml(y));
+}
+
+} // namespace
+
+QString FitExactView::html(const Input& in)
+{
+    const std::vector<Point>& q = *in.points;
+    const int count = static_cast<int>(q.size());
+    const int n = in.degree;
+    QString html;
+
+    std::optional<std::vector<RPoint>> rational;
+    if (count <= kMaxListedPoints)
+        rational = smallRationalPoints(q);
+    const bool thesisData = isThesisData(rational);
+    const bool byDistance = in.parametrization != Parametrization::Uniform;
+
+    // Chord lengths d_j = |Q_j − Q_{j−1}| (§2.1.3), in simplest radical form (Ex 2.9).
+    if (byDistance && rational && count >= 2) {
+        html += ExactPanel::heading(tr("Chord lengths d_i = dist(Q_i−1, Q_i)"));
+        const auto d = exactChordLengths(*rational);
+        for (std::size_t j = 0; j < d.size(); ++j) {
+            const Point a = q[j], b = q[j + 1];
+            const double approx = norm(b - a);
+            const QString value = d[j] ? QString::fromStdString(toString(*d[j])) : decimal(approx);
+            const bool isRational = d[j] && d[j]->radicand == 1;
+            html += line(isRational ? QStringLiteral("%1 = %2").arg(sub(QStringLiteral("d"), static_cast<int>(j) + 1), value)
+                                    : QStringLiteral("%1 = %2 ≈ %3")
+                                          .arg(sub(QStringLiteral("d"), static_cast<int>(j) + 1), value, decimal(approx)));
+        }
+        if (thesisData && in.parametrization == Parametrization::ChordLength)
+            html += ExactPanel::note(tr("The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has "
+                                        "x = 8, so d_4 = √(49 + 49) = 7√2, which is used here."));
+        if (in.parametrization == Parametrization::Centripetal)
+            html += QStringLiteral("<p>%1</p>").arg(tr("Centripetal parameters (beyond the thesis) use √d_i instead of d_i.")
+                                                        .toHtmlEscaped());
+    }
+
+    if (!in.fit)
+        return html;
+    const FitResult& fit = *in.fit;
+
+    // The exact fit of Ex 2.7 and Ex 2.8: every matrix as fractions.
+    std::optional<ExactFit> exact;
+    QString whyNotExact;
+    if (in.correctParameters)
+        whyNotExact = tr("Parameter correction moves the t_i to where the points project onto the curve: the "
+                         "results are shown in decimals.");
+    else if (count > kMaxExactPoints)
+        whyNotExact = tr("Exact fractions are shown for up to %1 data points; these %2 are shown in decimals.")
+                          .arg(kMaxExactPoints)
+                          .arg(count);
+    else if (!rational)
+        whyNotExact = tr("The data are not small fractions: the results are shown in decimals.");
+    else {
+        Expected<ExactFit> e = fitBezierExact(*rational, n, in.parametrization, in.exactBudget);
+        if (e)
+            exact = std::move(e).value();
+        else if (e.error().code == ErrorCode::NotRational)
+            whyNotExact = tr("These parameters are irrational (square roots of the distances), so M cannot be "
+                             "written in fractions: the results are shown in decimals, as the thesis does with "
+                             "Matlab in Ex 2.9 and Ex 2.10.");
+        else if (e.error().code == ErrorCode::OutOfRange) // refused before any matrix was built
+            whyNotExact = tr("The exact fractions of this fit would take too long to compute (their digits grow "
+                             "with the degree and the number of points): the results are shown in decimals.");
+        else
+            whyNotExact = tr("MᵀM is singular for these parameters (coincident points): the control points shown "
+                             "are the minimum-norm least-squares solution, in decimals.");
+    }
+
+    if (exact) {
+        html += ExactPanel::heading(tr("Parameters t_i"));
+        QStringList ts;
+        for (std::size_t i = 0; i < exact->params.size(); ++i)
+            ts << QStringLiteral("%1 = %2").arg(sub(QStringLiteral("t"), static_cast<int>(i)),
+                                                QString::fromStdString(toString(exact->params[i])));
+        html += QStringLiteral("<p>%1</p>").arg(ts.join(QStringLiteral(", ")));
+        if (in.showMatrices) {
+            html += ExactPanel::heading(tr("Matrices (Lemma 2.2, Nota 2.2)"));
+            html += ExactPanel::matrix(QStringLiteral("M"), entries(exact->M));
+            html += ExactPanel::matrix(QStringLiteral("MᵀM"), entries(exact->MtM));
+            html += ExactPanel::matrix(QStringLiteral("(MᵀM)⁻¹"), entries(exact->MtMinv));
+            html += ExactPanel::matrix(QStringLiteral("M⁺ = (MᵀM)⁻¹Mᵀ"), entries(exact->Mplus));
+        }
+        html += ExactPanel::heading(tr("Control points P = M⁺Q"));
+        std::vector<RPoint> P;
+        for (int j = 0; j < exact->P.rows(); ++j) {
+            P.emplace_back(exact->P(j, 0), exact->P(j, 1));
+            html += line(QStringLiteral("%1 = (%2, %3)")
+                             .arg(sub(QStringLiteral("P"), j), QString::fromStdString(toString(exact->P(j, 0))),
+                                  QString::fromStdString(toString(exact->P(j, 1)))));
+        }
+        html += ExactPanel::heading(tr("Fitted curve α(t) = Σ Bⱼⁿ(t) Pⱼ"));
+        const Vec2<Polynomial<Rational>> alpha = bezierToPowerBasis(P);
+        html += curveHtml(toText(alpha.x), toText(alpha.y));
+        html += QStringLiteral("<p>Σ‖Q<sub>i</sub> − α(t<sub>i</sub>)‖² = %1 ≈ %2</p>")
+                    .arg(QString::fromStdString(toString(exact->sse)), decimal(exact->sse.get_d()));
+        if (thesisData && in.parametrization == Parametrization::Uniform && n == 2)
+            html += ExactPanel::note(tr("Ex 2.7: the thesis prints α(t) = (−8/7 + 726/35 t − 600/35 t², 46/35 − 130/35 t + "
+                                        "200/35 t²), the same curve with unreduced fractions (600/35 = 120/7, "
+                                        "130/35 = 26/7, 200/35 = 40/7)."));
+        if (thesisData && in.parametrization == Parametrization::Uniform && n == 3)
+            html += ExactPanel::note(tr("Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is "
+                                        "3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here."));
+        return html;
+    }
+
+    // Decimals: the chord-length examples (Ex 2.9, Ex 2.10), drawn data, large data sets.
+    if (!whyNotExact.isEmpty())
+        html += QStringLiteral("<p>%1</p>").arg(whyNotExact.toHtmlEscaped());
+    if (count <= kMaxListedPoints) {
+        html += ExactPanel::heading(tr("Parameters t_i"));
+        QStringList ts;
+        for (std::size_t i = 0; i < fit.params.size(); ++i)
+            ts << QStringLiteral("%1 = %2").arg(sub(QStringLiteral("t"), static_cast<int>(i)), decimal(fit.params[i]));
+        html += QStringLiteral("<p>%1</p>").arg(ts.join(QStringLiteral(", ")));
+        if (in.showMatrices) {
+            html += ExactPanel::heading(tr("Matrix M (Lemma 2.2), in decimals"));
+            const Eigen::MatrixXd M = bernsteinMatrix(fit.params, n);
+            std::vector<std::vector<std::string>> e(static_cast<std::size_t>(M.rows()));
+            for (Eigen::Index r = 0; r < M.rows(); ++r)
+                for (Eigen::Index c = 0; c < M.cols(); ++c)
+                    e[static_cast<std::size_t>(r)].push_back(decimalText(M(r, c), 4));
+            html += ExactPanel::matrix(QStringLiteral("M"), e);
+        }
+    }
+    html += ExactPanel::heading(tr("Control points P"));
+    for (std::size_t j = 0; j < fit.controlPoints.size(); ++j)
+        html += line(QStringLiteral("%1 = %2")
+                         .arg(sub(QStringLiteral("P"), static_cast<int>(j)),
+                              displayPair(decimal(fit.controlPoints[j].x), decimal(fit.controlPoints[j].y))));
+    constexpr int kMaxPowerDegree = 12;
+    if (n <= kMaxPowerDegree) {
+        html += ExactPanel::heading(tr("Fitted curve α(t) = Σ Bⱼⁿ(t) Pⱼ"));
+        const Vec2<Polynomial<double>> alpha = bezierToPowerBasis(fit.controlPoints);
+        html += curveHtml(toText(rounded(alpha.x)), toText(rounded(alpha.y)));
+    } else {
+        html += QStringLiteral("<p>%1</p>").arg(tr("α(t) in powers of t is not shown beyond degree %1: its coefficients "
+                                                   "grow like C(n, k) and cancel each other.")
+                                                    .arg(kMaxPowerDegree)
+                                                    .toHtmlEscaped());
+    }
+    return html;
+}
+
+} // namespace granota::ui

@@ -1,0 +1,959 @@
+#include "ui/fit/fit_tab.h"
+#include "ui/common/number_text.h"
+
+#include "core/curves/fitting/data_shape.h"
+#include "core/curves/bezier/de_casteljau.h"
+#include "core/curves/fitting/fit_error_by_degree.h"
+#include "core/base/input_limits.h"
+#include "core/io/point_list.h"
+#include "core/io/worked_examples.h"
+#include "ui/common/curve_canvas.h"
+#include "ui/common/exact_panel.h"
+#include "ui/fit/fit_exact_view.h"
+#include "ui/common/point_editor.h"
+#include "ui/common/point_table.h"
+#include "ui/shell/tikz_writer.h"
+#include "ui/shell/user_file.h"
+
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QJsonArray>
+#include <QLabel>
+#include <QMessageBox>
+#include <QPainter>
+#include <QPainterPath>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QUndoStack>
+#include <QVBoxLayout>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+namespace granota::ui {
+
+namespace {
+
+constexpr int kCurveSamples = 400;         ///< De Casteljau samples of the fitted curve
+constexpr std::size_t kDrawLimit = 5000;   ///< beyond this many points, residuals are drawn decimated
+constexpr int kMaxLabelledControls = 30;   ///< control points labelled P0… up to this degree
+constexpr double kPresentationScale = 1.6; ///< canvas and plot scale in presentation mode
+constexpr int kMaxDegree = kMaxFitDegree;  ///< the core's limit
+constexpr int kMaxIterations = 1000;
+/// Undo-merge fields of FitSettingsCommand.
+enum Field { DegreeField, ParametrizationField, SolverField, CorrectionField };
+
+/// The degree spin box: refuses n > k with a reason instead of silently (docs/tabs.md).
+class DegreeSpinBox : public QSpinBox {
+public:
+    using QSpinBox::QSpinBox;
+    std::function<void(int)> refused; ///< called with the degree that was asked for
+
+    void stepBy(int steps) override
+    {
+        if (steps > 0 && value() + steps > maximum() && refused)
+            refused(value() + steps);
+        QSpinBox::stepBy(steps);
+    }
+
+protected:
+    QValidator::State validate(QString& input, int& pos) const override
+    {
+        bool ok = false;
+        const int v = input.trimmed().toInt(&ok);
+        if (ok && v > maximum()) {
+            if (refused)
+                refused(v);
+            return QValidator::Invalid;
+        }
+        return QSpinBox::validate(input, pos);
+    }
+};
+
+/// A combo box that never truncates its items (in Catalan, in presentation mode): when the
+/// side panel is narrow, the form wraps its label above it instead.
+class WholeComboBox : public QComboBox {
+public:
+    using QComboBox::QComboBox;
+    QSize minimumSizeHint() const override { return sizeHint(); }
+};
+
+QString number(double v) { return displaySignificant(v, 6); }
+
+QRectF boundsOf(const std::vector<Point>& a, const std::vector<Point>& b)
+{
+    double minX = std::numeric_limits<double>::infinity(), maxX = -minX, minY = minX, maxY = -minX;
+    for (const auto* list : {&a, &b})
+        for (const Point& p : *list)
+            if (isFinite(p)) {
+                minX = std::min(minX, p.x);
+                maxX = std::max(maxX, p.x);
+                minY = std::min(minY, p.y);
+                maxY = std::max(maxY, p.y);
+            }
+    if (!(minX <= maxX))
+        return QRectF(-1, -1, 2, 2);
+    double w = maxX - minX, h = maxY - minY;
+    const double size = std::max({w, h, std::fabs(minX) * 1e-12, std::fabs(minY) * 1e-12, 1e-300});
+    if (w < size * 1e-3)
+        w = size * 1e-3;
+    if (h < size * 1e-3)
+        h = size * 1e-3;
+    const double cx = 0.5 * minX + 0.5 * maxX, cy = 0.5 * minY + 0.5 * maxY;
+    return QRectF(cx - 0.5 * w, cy - 0.5 * h, w, h);
+}
+
+/// Every `stride`-th index so that at most `limit` items are drawn (all of them below it).
+std::size_t strideFor(std::size_t count, std::size_t limit) { return count > limit ? (count + limit - 1) / limit : 1; }
+
+QJsonArray pointsJson(const std::vector<Point>& points)
+{
+    QJsonArray array;
+    for (const Point& p : points)
+        array.append(QJsonArray{p.x, p.y});
+    return array;
+}
+
+} // namespace
+
+FitTab::FitTab(QWidget* parent) : TabPage(parent), m_undo(new QUndoStack(this)), m_canvas(new CurveCanvas(this))
+{
+    addLayers(); // under the data handles, which the editor draws last
+    m_editor = new PointEditor(m_canvas, m_undo, this);
+    m_editor->setLabelPrefix(QStringLiteral("Q"));
+    m_editor->setPolygonVisible(false);
+    m_editor->setCountLimits(2, static_cast<int>(kMaxDataPoints)); // what a document holds, it opens
+    m_table = new PointTable(m_editor, this);
+    // The table refreshes through updateTable(), which skips huge data sets (10^6 rows would hang).
+    disconnect(m_editor, &PointEditor::pointsChanged, m_table, nullptr);
+    buildUi();
+
+    connect(m_editor, &PointEditor::pointsChanged, this, &FitTab::onPointsChanged);
+    connect(m_editor, &PointEditor::message, this, &FitTab::statusMessage);
+    connect(m_table, &PointTable::message, this, &FitTab::statusMessage);
+    connect(m_canvas, &CurveCanvas::cursorMoved, this, [this](double x, double y) {
+        if (m_editor->pick(m_canvas->view().toScreen(Point(x, y))) >= 0)
+            emit statusMessage(tr("Drag Q_i: the curve is refitted as it moves; Delete removes it."));
+    });
+
+    // A sensible start: the data of Ex 2.7 with n = 2, uniform parameters (no undo step).
+    if (const WorkedExample* example = findWorkedExample("2.7")) {
+        m_loading = true;
+        m_settings.degree = example->degree;
+        m_editor->applyPoints(toDouble(example->points));
+        m_loading = false;
+    }
+    updateControls();
+    refit();
+    retranslate();
+    m_canvas->fitToContent();
+}
+
+// ---------------------------------------------------------------- construction
+
+void FitTab::buildUi()
+{
+    // Settings.
+    m_settingsGroup = new QGroupBox(this);
+    auto* form = new QFormLayout(m_settingsGroup);
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows); // narrow (presentation, Catalan): labels above the fields
+    auto* degree = new DegreeSpinBox(m_settingsGroup);
+    degree->refused = [this](int asked) {
+        const int count = static_cast<int>(m_editor->points().size());
+        emit statusMessage(tr("Degree %1 needs %2 data points (n + 1 ≤ k + 1); there are %3, so n ≤ %4.")
+                               .arg(asked)
+                               .arg(asked + 1)
+                               .arg(count)
+                               .arg(std::min(count - 1, kMaxDegree)));
+    };
+    m_degree = degree;
+    m_degree->setRange(0, kMaxDegree);
+    m_degreeLabel = new QLabel(m_settingsGroup);
+    m_degreeLabel->setBuddy(m_degree);
+    form->addRow(m_degreeLabel, m_degree);
+    m_parametrization = new WholeComboBox(m_settingsGroup);
+    m_parametrization->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    for (Parametrization p : {Parametrization::Uniform, Parametrization::ChordLength, Parametrization::Centripetal})
+        m_parametrization->addItem(QString(), static_cast<int>(p));
+    m_parametrizationLabel = new QLabel(m_settingsGroup);
+    m_parametrizationLabel->setBuddy(m_parametrization);
+    form->addRow(m_parametrizationLabel, m_parametrization);
+    m_solver = new WholeComboBox(m_settingsGroup);
+    m_solver->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    for (LeastSquaresSolver s : {LeastSquaresSolver::Qr, LeastSquaresSolver::Normal, LeastSquaresSolver::Svd})
+        m_solver->addItem(QString(), static_cast<int>(s));
+    m_solverLabel = new QLabel(m_settingsGroup);
+    m_solverLabel->setBuddy(m_solver);
+    form->addRow(m_solverLabel, m_solver);
+    m_correct = new QCheckBox(m_settingsGroup);
+    m_iterations = new QSpinBox(m_settingsGroup);
+    m_iterations->setRange(1, kMaxIterations);
+    form->addRow(m_correct, m_iterations);
+    auto* buttons = new QHBoxLayout;
+    m_import = new QPushButton(m_settingsGroup);
+    m_showMatrices = new QCheckBox(m_settingsGroup);
+    buttons->addWidget(m_import);
+    buttons->addWidget(m_showMatrices);
+    buttons->addStretch(1);
+    form->addRow(buttons);
+
+    // Readouts.
+    m_readoutGroup = new QGroupBox(this);
+    auto* readouts = new QVBoxLayout(m_readoutGroup);
+    for (QLabel** label : {&m_sseLabel, &m_rmsLabel, &m_maxLabel, &m_condLabel, &m_correctionsLabel, &m_warningLabel}) {
+        *label = new QLabel(m_readoutGroup);
+        (*label)->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        (*label)->setWordWrap(true);
+        readouts->addWidget(*label);
+    }
+    m_warningLabel->setObjectName(QStringLiteral("fitWarning"));
+    m_warningLabel->setStyleSheet(QStringLiteral("color: #8a3a00;"));
+
+    m_exact = new ExactPanel(this);
+    m_exact->setMinimumWidth(240);
+
+    auto* side = new QWidget(this);
+    auto* sideLayout = new QVBoxLayout(side);
+    sideLayout->setContentsMargins(0, 0, 0, 0);
+    sideLayout->addWidget(m_settingsGroup);
+    sideLayout->addWidget(m_readoutGroup);
+    sideLayout->addWidget(m_exact, 1);
+
+    // The error against the degree.
+    m_plot = new QCustomPlot(this);
+    m_plot->setMinimumHeight(120);
+    m_plot->addGraph(); // Σ‖Q_i − α(t_i)‖² for n = 1..min(k, 30)
+    m_plot->graph(0)->setPen(QPen(CanvasStyle::series(0), 1.5));
+    m_plot->graph(0)->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 5));
+    m_plot->addGraph(); // the current n
+    m_plot->graph(1)->setLineStyle(QCPGraph::lsNone);
+    m_plot->graph(1)->setScatterStyle(
+        QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(CanvasStyle::series(3), 2), Qt::NoBrush, 12));
+    m_plot->yAxis->setScaleType(QCPAxis::stLogarithmic);
+    m_plot->yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
+    m_plot->yAxis->setNumberFormat(QStringLiteral("eb"));
+    m_plot->yAxis->setNumberPrecision(0);
+    QSharedPointer<QCPAxisTickerFixed> integers(new QCPAxisTickerFixed);
+    integers->setTickStep(1);
+    integers->setScaleStrategy(QCPAxisTickerFixed::ssMultiples);
+    m_plot->xAxis->setTicker(integers);
+
+    auto* tableBox = new QWidget(this);
+    auto* tableLayout = new QVBoxLayout(tableBox);
+    tableLayout->setContentsMargins(0, 0, 0, 0);
+    m_tableNote = new QLabel(tableBox);
+    m_tableNote->setWordWrap(true);
+    m_tableNote->hide();
+    tableLayout->addWidget(m_table, 1);
+    tableLayout->addWidget(m_tableNote);
+    m_table->setMinimumWidth(160);
+
+    m_bottomSplitter = new QSplitter(Qt::Horizontal, this);
+    m_bottomSplitter->addWidget(tableBox);
+    m_bottomSplitter->addWidget(m_plot);
+    m_bottomSplitter->setStretchFactor(0, 1);
+    m_bottomSplitter->setStretchFactor(1, 2);
+    m_bottomSplitter->setSizes({260, 520});
+    m_leftSplitter = new QSplitter(Qt::Vertical, this);
+    m_leftSplitter->addWidget(m_canvas);
+    m_leftSplitter->addWidget(m_bottomSplitter);
+    m_leftSplitter->setStretchFactor(0, 3);
+    m_leftSplitter->setStretchFactor(1, 1);
+    m_leftSplitter->setSizes({500, 220});
+    m_mainSplitter = new QSplitter(Qt::Horizontal, this);
+    m_mainSplitter->addWidget(m_leftSplitter);
+    m_mainSplitter->addWidget(side);
+    m_mainSplitter->setStretchFactor(0, 2);
+    m_mainSplitter->setStretchFactor(1, 1);
+    m_mainSplitter->setSizes({830, 450});
+    m_mainSplitter->setChildrenCollapsible(false);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(m_mainSplitter);
+
+    // Every setting change is an undo step (consecutive ones of the same setting merge).
+    connect(m_degree, qOverload<int>(&QSpinBox::valueChanged), this, [this](int n) {
+        if (m_updatingControls)
+            return;
+        FitSettings after = m_settings;
+        after.degree = n;
+        changeSettings(after, tr("Degree %1").arg(n), DegreeField);
+    });
+    connect(m_parametrization, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
+        if (m_updatingControls || index < 0)
+            return;
+        FitSettings after = m_settings;
+        after.parametrization = static_cast<Parametrization>(m_parametrization->itemData(index).toInt());
+        changeSettings(after, tr("Parametrization"), ParametrizationField);
+    });
+    connect(m_solver, qOverload<int>(&QComboBox::currentIndexChanged), this, [this](int index) {
+        if (m_updatingControls || index < 0)
+            return;
+        FitSettings after = m_settings;
+        after.solver = static_cast<LeastSquaresSolver>(m_solver->itemData(index).toInt());
+        changeSettings(after, tr("Solver"), SolverField);
+    });
+    connect(m_correct, &QCheckBox::toggled, this, [this](bool on) {
+        if (m_updatingControls)
+            return;
+        FitSettings after = m_settings;
+        after.correctParameters = on;
+        changeSettings(after, tr("Parameter correction"), CorrectionField);
+    });
+    connect(m_iterations, qOverload<int>(&QSpinBox::valueChanged), this, [this](int n) {
+        if (m_updatingControls)
+            return;
+        FitSettings after = m_settings;
+        after.iterations = n;
+        changeSettings(after, tr("Parameter correction"), CorrectionField);
+    });
+    connect(m_showMatrices, &QCheckBox::toggled, this, [this] {
+        updateExact();
+        emit documentChanged();
+    });
+    connect(m_import, &QPushButton::clicked, this, &FitTab::importDialog);
+}
+
+void FitTab::addLayers()
+{
+    // Residual vectors Q_i − α(t_i): thin segments from α(t_i) to Q_i.
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (!m_fit)
+            return;
+        const std::vector<Point>& q = m_editor->points();
+        if (q.size() != m_fit->residuals.size())
+            return;
+        p.setPen(QPen(CanvasStyle::series(4), style.thinLine()));
+        const std::size_t stride = strideFor(q.size(), kDrawLimit);
+        for (std::size_t i = 0; i < q.size(); i += stride)
+            p.drawLine(view.toScreen(q[i] - m_fit->residuals[i]), view.toScreen(q[i]));
+    });
+    // The control polygon, the fitted curve and its control points P_0..P_n (not editable).
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (!m_fit)
+            return;
+        const std::vector<Point>& P = m_fit->controlPoints;
+        if (P.size() > 1) {
+            p.setPen(QPen(style.polygon, style.thinLine(), Qt::DashLine));
+            QPainterPath polygon(view.toScreen(P[0]));
+            for (std::size_t j = 1; j < P.size(); ++j)
+                polygon.lineTo(view.toScreen(P[j]));
+            p.drawPath(polygon);
+        }
+        if (m_curve.size() > 1) {
+            p.setPen(QPen(style.curve, style.lineWidth()));
+            QPainterPath curve(view.toScreen(m_curve[0]));
+            for (std::size_t j = 1; j < m_curve.size(); ++j)
+                curve.lineTo(view.toScreen(m_curve[j]));
+            p.drawPath(curve);
+        }
+        const double r = style.handleRadius() * 0.8;
+        p.setFont(style.labelFont());
+        for (std::size_t j = 0; j < P.size(); ++j) {
+            const QPointF s = view.toScreen(P[j]);
+            p.setPen(QPen(Qt::white, style.thinLine()));
+            p.setBrush(style.curve);
+            p.drawRect(QRectF(s.x() - r, s.y() - r, 2 * r, 2 * r)); // squares: computed, not dragged
+            if (P.size() <= kMaxLabelledControls + 1) {
+                p.setPen(style.curve);
+                p.drawText(s + QPointF(r + 3 * style.scale, r + p.fontMetrics().ascent()), QStringLiteral("P%1").arg(j));
+            }
+        }
+    });
+}
+
+// ---------------------------------------------------------------- texts
+
+void FitTab::retranslate()
+{
+    m_settingsGroup->setTitle(tr("Least-squares fit (§2.1.3)"));
+    m_degreeLabel->setText(tr("&Degree n:"));
+    m_degree->setToolTip(tr("n: the fitted Bézier curve has n + 1 control points P_0…P_n, so n + 1 ≤ k + 1 data "
+                            "points (§2.1.3, Lemma 2.2). Ex 2.7 uses n = 2, Ex 2.8 n = 3."));
+    m_parametrizationLabel->setText(tr("&Parameters t_i:"));
+    m_parametrization->setItemText(0, tr("Uniform, i/k (Ex 2.7, 2.8)"));
+    m_parametrization->setItemText(1, tr("Chord length (Ex 2.9, 2.10)"));
+    m_parametrization->setItemText(2, tr("Centripetal (beyond the thesis)"));
+    m_parametrization->setToolTip(
+        tr("Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord "
+           "lengths d_i = dist(Q_i−1, Q_i); or centripetal, proportional to √d_i."));
+    m_solverLabel->setText(tr("&Solver:"));
+    m_solver->setItemText(0, tr("QR (default)"));
+    m_solver->setItemText(1, tr("Normal equations (the thesis)"));
+    m_solver->setItemText(2, tr("SVD (singular values)"));
+    m_solver->setToolTip(tr("How MP = Q is solved in the least-squares sense. The thesis solves the normal "
+                            "equations MᵀM P = MᵀQ (Prop 2.2), which square the condition number; QR and SVD "
+                            "work on M itself and stay accurate at high degree."));
+    m_correct->setText(tr("&Correct parameters, at most"));
+    m_correct->setToolTip(tr("Beyond the thesis: project each Q_i onto the fitted curve, take the new t_i and fit "
+                             "again, while the error Σ‖Q_i − α(t_i)‖² drops."));
+    m_iterations->setSuffix(tr(" times"));
+    m_iterations->setToolTip(tr("The largest number of parameter corrections (re-projection and refit)."));
+    m_import->setText(tr("&Import CSV…"));
+    m_import->setToolTip(tr("Read the data points Q_i from a CSV file (one “x,y” per line) or a JSON list [[x,y],…]."));
+    m_showMatrices->setText(tr("Show &matrices"));
+    m_showMatrices->setToolTip(tr("Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Nota 2.2), in fractions "
+                                  "when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8."));
+    m_readoutGroup->setTitle(tr("Quality of the fit (Prop 2.2)"));
+    m_readoutGroup->setToolTip(tr("The error that the least-squares curve minimises, and how sensitive the "
+                                  "solution is to the data."));
+    m_canvas->setToolTip(tr("The data points Q_i (round, draggable), the fitted Bézier curve α(t), its control "
+                            "points P_j (square) and control polygon, and the residuals Q_i − α(t_i)."));
+    m_exact->setToolTip(tr("The parameters, the control points P = M⁺Q and the curve α(t) in powers of t, exact "
+                           "when possible (Ex 2.7–2.10)."));
+    m_plot->setToolTip(tr("The least-squares error Σ‖Q_i − α(t_i)‖² of the best curve of each degree n for the "
+                          "current parameters (without correction); the circle marks the current n. With fixed "
+                          "t_i it can only go down as n grows, unless the solver loses accuracy."));
+    m_plot->xAxis->setLabel(tr("degree n"));
+    m_plot->yAxis->setLabel(tr("squared error (log)"));
+    m_table->retranslate();
+    m_tableNote->setToolTip(tr("Large data sets are fitted and drawn, but not listed."));
+    updateTable();
+    updateReadouts();
+    updateExact();
+    m_plot->replot();
+}
+
+QString FitTab::errorText(const Error& error) const
+{
+    switch (error.code) {
+    case ErrorCode::TooFewPoints:
+        return tr("A least-squares fit needs at least 2 data points.");
+    case ErrorCode::DegreeTooHigh:
+        return tr("Degree %1 needs at least %2 data points.").arg(fittedDegree()).arg(fittedDegree() + 1);
+    case ErrorCode::Singular:
+        return m_settings.solver == LeastSquaresSolver::Normal
+                   ? tr("The normal equations MᵀM P = MᵀQ cannot be solved here: MᵀM is numerically singular "
+                        "(coincident points, or cond₂(MᵀM) = cond₂(M)² beyond 10^16). Choose QR or SVD.")
+                   : tr("The least-squares system has no usable solution here.");
+    case ErrorCode::OutOfRange:
+        return tr("The fitted curve does not fit in double precision: lower the degree.");
+    case ErrorCode::InvalidInput:
+    default:
+        return tr("A data point is not a finite number.");
+    }
+}
+
+// ---------------------------------------------------------------- settings
+
+int FitTab::fittedDegree() const
+{
+    const int k = static_cast<int>(m_editor->points().size()) - 1;
+    return std::max(0, std::min(m_settings.degree, k));
+}
+
+void FitTab::changeSettings(const FitSettings& after, const QString& undoText, int field)
+{
+    if (after == m_settings)
+        return;
+    m_undo->push(new FitSettingsCommand([this](const FitSettings& s) { applySettings(s); }, m_settings, after,
+                                        undoText, field));
+}
+
+void FitTab::applySettings(const FitSettings& s)
+{
+    m_settings = s;
+    updateControls();
+    refit();
+    emit documentChanged();
+}
+
+void FitTab::updateControls()
+{
+    m_updatingControls = true;
+    const int k = static_cast<int>(m_editor->points().size()) - 1;
+    m_degree->setMaximum(std::clamp(k, 0, kMaxDegree));
+    m_degree->setValue(fittedDegree());
+    m_parametrization->setCurrentIndex(m_parametrization->findData(static_cast<int>(m_settings.parametrization)));
+    m_solver->setCurrentIndex(m_solver->findData(static_cast<int>(m_settings.solver)));
+    m_correct->setChecked(m_settings.correctParameters);
+    m_iterations->setValue(std::clamp(m_settings.iterations, 1, kMaxIterations));
+    m_iterations->setEnabled(m_settings.correctParameters);
+    m_updatingControls = false;
+}
+
+// ---------------------------------------------------------------- fitting
+
+void FitTab::onPointsChanged()
+{
+    const int before = m_lastFittedDegree;
+    updateControls();
+    refit();
+    updateTable();
+    if (!m_loading && before >= 0 && fittedDegree() < before && fittedDegree() < m_settings.degree)
+        emit statusMessage(tr("Degree lowered to %1: n + 1 control points need at least n + 1 data points, and "
+                              "there are %2.")
+                               .arg(fittedDegree())
+                               .arg(m_editor->points().size()));
+    emit documentChanged();
+}
+
+void FitTab::refit()
+{
+    const std::vector<Point>& q = m_editor->points();
+    FitOptions options;
+    options.degree = fittedDegree();
+    options.parametrization = m_settings.parametrization;
+    options.solver = m_settings.solver;
+    options.correctParameters = m_settings.correctParameters;
+    options.maxCorrections = m_settings.iterations;
+    m_lastFittedDegree = options.degree;
+    Expected<FitResult> fit = fitBezier(q, options);
+    if (fit) {
+        m_fit = std::move(fit).value();
+        m_fitError.clear();
+        m_curve = sampleBezier(m_fit->controlPoints, kCurveSamples);
+    } else {
+        m_fit.reset();
+        m_fitError = errorText(fit.error());
+        m_curve.clear();
+    }
+    // The view shows the data and the curve, and the control points unless they fly far off
+    // (high degrees put them orders of magnitude away: then the data would shrink to a dot).
+    QRectF bounds = boundsOf(q, m_curve);
+    if (m_fit) {
+        const QRectF control = boundsOf(m_fit->controlPoints, {});
+        const double size = std::max(bounds.width(), bounds.height());
+        const QRectF near = bounds.adjusted(-0.5 * size, -0.5 * size, 0.5 * size, 0.5 * size);
+        if (near.contains(control))
+            bounds = bounds.united(control);
+    }
+    m_canvas->setContentBounds(bounds);
+    m_canvas->update();
+    updateReadouts();
+    updatePlot();
+    updateExact();
+}
+
+void FitTab::updateReadouts()
+{
+    if (!m_sseLabel)
+        return;
+    const std::vector<Point>& q = m_editor->points();
+    QStringList warnings;
+    if (m_fit) {
+        m_sseLabel->setText(tr("Squared error Σ‖Q_i − α(t_i)‖²: %1").arg(number(m_fit->sse)));
+        m_rmsLabel->setText(tr("RMS error √(Σ/(k+1)): %1").arg(number(m_fit->rms)));
+        m_maxLabel->setText(tr("Largest error max‖Q_i − α(t_i)‖: %1").arg(number(m_fit->maxError)));
+        m_condLabel->setText(m_fit->cond >= std::numeric_limits<double>::max()
+                                 ? tr("Condition number cond₂(M): infinite (M is singular)")
+                                 : tr("Condition number cond₂(M): %1").arg(number(m_fit->cond)));
+        m_correctionsLabel->setVisible(m_settings.correctParameters);
+        m_correctionsLabel->setText(tr("Parameter corrections that lowered the error: %1").arg(m_fit->corrections));
+        const int n = fittedDegree();
+        if (m_fit->cond > kIllConditioned)
+            warnings << tr("⚠ Ill-conditioned: cond₂(M) ≈ %1. The control points are very sensitive to the data; "
+                           "lower the degree.")
+                            .arg(number(m_fit->cond));
+        else if (n > kHighDegree)
+            warnings << tr("⚠ High degree n = %1: the Bernstein basis grows ill-conditioned (cond₂(M) ≈ %2); a "
+                           "lower degree or a spline is usually the better model.")
+                            .arg(n)
+                            .arg(number(m_fit->cond));
+        if (m_settings.solver == LeastSquaresSolver::Normal && m_fit->cond > 1e5) {
+            const double squared = m_fit->cond * m_fit->cond;
+            warnings << tr("⚠ The normal equations square the condition number: cond₂(MᵀM) ≈ %1, so about %2 of "
+                           "the 16 significant digits may be lost. Choose QR.")
+                            .arg(number(squared))
+                            .arg(std::min(16, static_cast<int>(std::log10(squared))));
+        }
+        std::vector<double> sorted = m_fit->params;
+        std::sort(sorted.begin(), sorted.end());
+        const auto distinct = std::unique(sorted.begin(), sorted.end()) - sorted.begin();
+        if (distinct < n + 1)
+            warnings << tr("⚠ Only %1 distinct parameters t_i for %2 control points: M is rank deficient, and the "
+                           "control points shown are the minimum-norm least-squares solution.")
+                            .arg(distinct)
+                            .arg(n + 1);
+    } else {
+        m_sseLabel->setText(tr("No fit: %1").arg(m_fitError));
+        m_rmsLabel->clear();
+        m_maxLabel->clear();
+        m_condLabel->clear();
+        m_correctionsLabel->hide();
+    }
+    m_rmsLabel->setVisible(m_fit.has_value());
+    m_maxLabel->setVisible(m_fit.has_value());
+    m_condLabel->setVisible(m_fit.has_value());
+    // The shape of the data: explain degenerate input rather than draw something odd.
+    const DataShape shape = analyseDataShape(q);
+    const bool byDistance = m_settings.parametrization != Parametrization::Uniform;
+    if (q.size() >= 2 && shape.allCoincide)
+        warnings << (byDistance ? tr("All the data points coincide: the chord lengths are all zero, so uniform "
+                                     "parameters are used instead.")
+                                : tr("All the data points coincide: the curve is that point."));
+    else if (byDistance && shape.zeroChords > 0)
+        warnings << tr("Q%1 and Q%2 coincide: a zero chord length gives them the same parameter t_i (%n such "
+                       "pair(s)).",
+                       nullptr, shape.zeroChords)
+                        .arg(shape.firstZeroChord - 1)
+                        .arg(shape.firstZeroChord);
+    if (q.size() >= 2 && shape.collinear && !shape.allCoincide)
+        warnings << tr("The data points are collinear: the fitted curve and its control points lie on their line.");
+    m_warningLabel->setText(warnings.join(QLatin1Char('\n')));
+    m_warningLabel->setVisible(!warnings.isEmpty());
+}
+
+void FitTab::updatePlot()
+{
+    if (!m_plot)
+        return;
+    FitOptions options;
+    options.parametrization = m_settings.parametrization;
+    options.solver = m_settings.solver;
+    const std::vector<Point>& q = m_editor->points();
+    bool truncated = false;
+    const std::vector<DegreeError> errors = fitErrorByDegree(q, options, kPlotMaxDegree, 4000000, &truncated);
+    // Log scale: an interpolating fit has error ~0; show it at a floor far below the rest.
+    double largest = 0;
+    for (const DegreeError& e : errors)
+        if (e.ok)
+            largest = std::max(largest, e.sse);
+    const double floor = std::max(largest * 1e-20, std::numeric_limits<double>::min());
+    QVector<double> x, y, cx, cy;
+    for (const DegreeError& e : errors) {
+        if (!e.ok)
+            continue; // the normal equations broke down at this degree
+        x << e.degree;
+        y << std::max(e.sse, floor);
+        if (e.degree == fittedDegree()) {
+            cx << e.degree;
+            cy << std::max(e.sse, floor);
+        }
+    }
+    m_plot->graph(0)->setData(x, y, true);
+    m_plot->graph(1)->setData(cx, cy, true);
+    const int last = x.isEmpty() ? 1 : static_cast<int>(x.back());
+    m_plot->xAxis->setRange(0.5, std::max(last, 2) + 0.5);
+    if (!y.isEmpty()) {
+        const auto [lo, hi] = std::minmax_element(y.begin(), y.end());
+        m_plot->yAxis->setRange(*lo / 3, *hi * 3);
+    }
+    m_plot->replot(QCustomPlot::rpQueuedReplot); // not now: a synchronous repaint would flush the canvas too
+    Q_UNUSED(truncated);
+}
+
+void FitTab::updateExact()
+{
+    if (!m_exact)
+        return;
+    FitExactView::Input in;
+    in.points = &m_editor->points();
+    in.degree = fittedDegree();
+    in.parametrization = m_settings.parametrization;
+    in.correctParameters = m_settings.correctParameters;
+    in.fit = currentFit();
+    in.showMatrices = m_showMatrices->isChecked();
+    QString html = FitExactView::html(in);
+    if (!m_fit && !m_fitError.isEmpty())
+        html += ExactPanel::note(m_fitError);
+    m_exact->setContent(html);
+}
+
+void FitTab::updateTable()
+{
+    if (!m_table)
+        return;
+    const std::size_t count = m_editor->points().size();
+    const bool listed = count <= static_cast<std::size_t>(kTableLimit);
+    if (listed) {
+        m_table->retranslate(); // refreshes the rows
+    } else if (m_table->rowCount() != 0) {
+        m_table->setRowCount(0);
+    }
+    m_table->setEnabled(listed);
+    m_tableNote->setVisible(!listed);
+    m_tableNote->setText(tr("%n data points: too many to list; they are fitted and drawn.", nullptr,
+                            static_cast<int>(std::min<std::size_t>(count, std::numeric_limits<int>::max()))));
+}
+
+QString FitTab::readoutText() const
+{
+    QStringList lines;
+    for (const QLabel* label : {m_sseLabel, m_rmsLabel, m_maxLabel, m_condLabel})
+        if (!label->text().isEmpty())
+            lines << label->text();
+    return lines.join(QLatin1Char('\n'));
+}
+
+QString FitTab::warningText() const { return m_warningLabel->isVisibleTo(this) ? m_warningLabel->text() : QString(); }
+
+// ---------------------------------------------------------------- examples and files
+
+bool FitTab::loadExample(const granota::WorkedExample& example)
+{
+    if (example.kind != "fit" || example.points.size() < 2)
+        return false;
+    const std::optional<Parametrization> p = parseParametrization(example.parametrization);
+    FitSettings after = m_settings;
+    after.degree = std::clamp(example.degree, 0, kMaxDegree);
+    after.parametrization = p.value_or(Parametrization::Uniform);
+    after.solver = LeastSquaresSolver::Qr;
+    after.correctParameters = false;
+    const QString id = QString::fromStdString(example.id);
+    m_loading = true;
+    m_undo->beginMacro(tr("Load Ex %1").arg(id));
+    m_editor->setPoints(toDouble(example.points), tr("Ex %1 data").arg(id));
+    m_undo->push(new FitSettingsCommand([this](const FitSettings& s) { applySettings(s); }, m_settings, after,
+                                        tr("Ex %1 settings").arg(id)));
+    m_undo->endMacro();
+    m_loading = false;
+    m_canvas->fitToContent();
+    return true;
+}
+
+bool FitTab::importFile(const QString& path, QString* error)
+{
+    const QString name = QFileInfo(path).fileName();
+    const std::optional<QByteArray> bytes = readUserFile(path, error);
+    if (!bytes)
+        return false;
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    const Expected<std::vector<RPoint>> parsed = parsePointFile(std::string_view(bytes->constData(), static_cast<std::size_t>(bytes->size())));
+    QApplication::restoreOverrideCursor();
+    if (!parsed) {
+        *error = tr("“%1” holds no valid data points, nothing was changed: %2")
+                     .arg(name, QString::fromStdString(parsed.error().message));
+        return false;
+    }
+    if (parsed->size() < 2) {
+        *error = tr("“%1” has %n point(s); a fit needs at least 2, nothing was changed.", nullptr,
+                    static_cast<int>(parsed->size()))
+                     .arg(name);
+        return false;
+    }
+    const std::vector<Point> points = toDouble(*parsed);
+    if (!std::all_of(points.begin(), points.end(), [](const Point& p) { return isFinite(p); })) {
+        *error = tr("“%1” has a coordinate too large for a double; nothing was changed.").arg(name);
+        return false;
+    }
+    QApplication::setOverrideCursor(Qt::WaitCursor);
+    m_editor->setPoints(points, tr("Import %1").arg(name));
+    QApplication::restoreOverrideCursor();
+    m_canvas->fitToContent();
+    emit statusMessage(tr("Imported %n data points from “%1”.", nullptr, static_cast<int>(points.size())).arg(name));
+    return true;
+}
+
+void FitTab::importDialog()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Import data points"), QString(),
+                                                      tr("Point files (*.csv *.txt *.json);;All files (*)"));
+    if (path.isEmpty())
+        return;
+    QString error;
+    if (!importFile(path, &error)) {
+        emit statusMessage(error);
+        QMessageBox::warning(this, tr("Import data points"), error);
+    }
+}
+
+QJsonObject FitTab::saveState() const
+{
+    QJsonObject state;
+    state.insert(QStringLiteral("points"), pointsJson(m_editor->points()));
+    state.insert(QStringLiteral("degree"), m_settings.degree);
+    state.insert(QStringLiteral("parametrization"), QString::fromStdString(toString(m_settings.parametrization)));
+    state.insert(QStringLiteral("solver"), QString::fromStdString(toString(m_settings.solver)));
+    state.insert(QStringLiteral("correctParameters"), m_settings.correctParameters);
+    state.insert(QStringLiteral("iterations"), m_settings.iterations);
+    state.insert(QStringLiteral("showMatrices"), m_showMatrices->isChecked());
+    return state;
+}
+
+bool FitTab::loadState(const QJsonObject& state, QString* error)
+{
+    // Validate everything first: all or nothing.
+    const QJsonValue pointsValue = state.value(QStringLiteral("points"));
+    if (!pointsValue.isArray()) {
+        *error = tr("The fitting tab's data points are missing or not a list.");
+        return false;
+    }
+    std::vector<Point> points;
+    const QJsonArray array = pointsValue.toArray();
+    if (static_cast<std::size_t>(array.size()) > kMaxDataPoints) {
+        *error = tr("The fitting tab holds %1 data points; Granota reads at most %2.").arg(array.size()).arg(kMaxDataPoints);
+        return false;
+    }
+    for (int i = 0; i < array.size(); ++i) {
+        const QJsonArray p = array.at(i).toArray();
+        if (p.size() != 2 || !p.at(0).isDouble() || !p.at(1).isDouble() || !std::isfinite(p.at(0).toDouble())
+            || !std::isfinite(p.at(1).toDouble())) {
+            *error = tr("Data point Q%1 is not a pair of finite numbers.").arg(i);
+            return false;
+        }
+        points.emplace_back(p.at(0).toDouble(), p.at(1).toDouble());
+    }
+    if (points.size() < 2) {
+        *error = tr("The fitting tab needs at least 2 data points.");
+        return false;
+    }
+    FitSettings s;
+    const QJsonValue degree = state.value(QStringLiteral("degree"));
+    if (!degree.isUndefined()) {
+        const double d = degree.toDouble(-1);
+        if (!degree.isDouble() || d != std::floor(d) || d < 0 || d > kMaxDegree) {
+            *error = tr("The degree must be a whole number from 0 to %1.").arg(kMaxDegree);
+            return false;
+        }
+        s.degree = static_cast<int>(d);
+    }
+    const QJsonValue param = state.value(QStringLiteral("parametrization"));
+    if (!param.isUndefined()) {
+        const auto p = parseParametrization(param.toString().toStdString());
+        if (!p) {
+            *error = tr("Unknown parametrization “%1”.").arg(param.toVariant().toString());
+            return false;
+        }
+        s.parametrization = *p;
+    }
+    const QJsonValue solver = state.value(QStringLiteral("solver"));
+    if (!solver.isUndefined()) {
+        const auto p = parseLeastSquaresSolver(solver.toString().toStdString());
+        if (!p) {
+            *error = tr("Unknown solver “%1”.").arg(solver.toVariant().toString());
+            return false;
+        }
+        s.solver = *p;
+    }
+    const QJsonValue correct = state.value(QStringLiteral("correctParameters"));
+    if (!correct.isUndefined() && !correct.isBool()) {
+        *error = tr("“correctParameters” must be true or false.");
+        return false;
+    }
+    s.correctParameters = correct.toBool(false);
+    const QJsonValue iterations = state.value(QStringLiteral("iterations"));
+    if (!iterations.isUndefined()) {
+        const double d = iterations.toDouble(-1);
+        if (!iterations.isDouble() || d != std::floor(d) || d < 1 || d > kMaxIterations) {
+            *error = tr("The number of parameter corrections must be a whole number from 1 to %1.").arg(kMaxIterations);
+            return false;
+        }
+        s.iterations = static_cast<int>(d);
+    }
+    const QJsonValue matrices = state.value(QStringLiteral("showMatrices"));
+    if (!matrices.isUndefined() && !matrices.isBool()) {
+        *error = tr("“showMatrices” must be true or false.");
+        return false;
+    }
+
+    // Apply without an undo step: opening a document starts a new history (the main window
+    // clears the stacks), and a refused document must leave the user's history as it was.
+    m_loading = true;
+    m_settings = s;
+    m_editor->applyPoints(points); // refits once, with the new settings
+    m_loading = false;
+    m_showMatrices->setChecked(matrices.toBool(false));
+    m_canvas->fitToContent();
+    return true;
+}
+
+Drawable* FitTab::exportView() { return m_canvas; }
+
+QString FitTab::csv() const
+{
+    const std::vector<Point>& q = m_editor->points();
+    // Shortest round-trip text (std::to_chars): exact, and fast enough for 10^6 rows.
+    const auto f = [](double v) {
+        char buffer[32];
+        const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
+        return QString::fromLatin1(buffer, static_cast<int>(result.ptr - buffer));
+    };
+    QString out = QStringLiteral("i,x,y,t,alpha_x,alpha_y,residual_x,residual_y\n");
+    out.reserve(static_cast<qsizetype>(q.size()) * 160);
+    const bool fitted = m_fit && m_fit->residuals.size() == q.size();
+    for (std::size_t i = 0; i < q.size(); ++i) {
+        out += QStringLiteral("%1,%2,%3").arg(i).arg(f(q[i].x), f(q[i].y));
+        if (fitted) {
+            const Point r = m_fit->residuals[i];
+            const Point a = q[i] - r;
+            out += QStringLiteral(",%1,%2,%3,%4,%5")
+                       .arg(f(m_fit->params[i]), f(a.x), f(a.y), f(r.x), f(r.y));
+        } else {
+            out += QStringLiteral(",,,,,");
+        }
+        out += QLatin1Char('\n');
+    }
+    if (fitted) {
+        out += QStringLiteral("\nj,P_x,P_y\n");
+        for (std::size_t j = 0; j < m_fit->controlPoints.size(); ++j)
+            out += QStringLiteral("%1,%2,%3\n").arg(j).arg(f(m_fit->controlPoints[j].x), f(m_fit->controlPoints[j].y));
+    }
+    return out;
+}
+
+QString FitTab::tikz() const
+{
+    TikzWriter tikz;
+    const std::vector<Point>& q = m_editor->points();
+    const CanvasStyle style;
+    tikz.comment(QStringLiteral("Granota: least-squares Bézier fit of degree %1 (%2 parameters), %3 data points")
+                     .arg(fittedDegree())
+                     .arg(QString::fromStdString(toString(m_settings.parametrization)))
+                     .arg(q.size()));
+    if (m_fit) {
+        tikz.polyline(m_fit->controlPoints, style.polygon, 0.6, true);
+        tikz.polyline(m_curve, style.curve, 1.2);
+        for (std::size_t j = 0; j < m_fit->controlPoints.size(); ++j)
+            tikz.point(m_fit->controlPoints[j], style.curve,
+                       m_fit->controlPoints.size() <= kMaxLabelledControls + 1 ? QStringLiteral("$P_{%1}$").arg(j)
+                                                                              : QString());
+    }
+    const std::size_t stride = strideFor(q.size(), 2000);
+    for (std::size_t i = 0; i < q.size(); i += stride)
+        tikz.point(q[i], style.handle, q.size() <= 30 ? QStringLiteral("$Q_{%1}$").arg(i) : QString());
+    return tikz.str();
+}
+
+// ---------------------------------------------------------------- view
+
+void FitTab::setPresentation(bool on)
+{
+    m_presentation = on;
+    const double scale = on ? kPresentationScale : 1.0;
+    m_canvas->setStyleScale(scale);
+    m_exact->setPresentation(on);
+    const QFont tickFont; // the application's font, which presentation mode enlarges
+    for (QCPAxis* axis : {m_plot->xAxis, m_plot->yAxis}) {
+        axis->setTickLabelFont(tickFont);
+        axis->setLabelFont(tickFont);
+    }
+    m_plot->graph(0)->setPen(QPen(CanvasStyle::series(0), 1.5 * scale));
+    m_plot->graph(0)->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 5 * scale));
+    m_plot->graph(1)->setScatterStyle(
+        QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(CanvasStyle::series(3), 2 * scale), Qt::NoBrush, 12 * scale));
+    m_plot->replot();
+    const int total = m_mainSplitter->width();
+    if (total > 0) // the side panel's texts grow with the font: give it more room
+        m_mainSplitter->setSizes({total * (on ? 52 : 65) / 100, total * (on ? 48 : 35) / 100});
+    const int height = m_leftSplitter->height();
+    if (height > 0) // and the plot's labels too
+        m_leftSplitter->setSizes({height * (on ? 64 : 70) / 100, height * (on ? 36 : 30) / 100});
+    m_canvas->fitToContent();
+}
+
+void FitTab::zoom(double factor) { m_canvas->zoom(factor); }
+
+void FitTab::fitView() { m_canvas->fitToContent(); }
+
+void FitTab::showEvent(QShowEvent* event)
+{
+    TabPage::showEvent(event);
+    emit statusMessage(tr("Drag a data point Q_i and the curve is refitted; double-click adds a point, Delete "
+                          "removes it."));
+}
+
+} // namespace granota::ui

@@ -1,0 +1,149 @@
+#pragma once
+/// \file fit_tab.h
+/// The Fitting tab (docs/tabs.md; thesis §2.1.3, Lemma 2.2, Prop 2.2, Ex 2.7–2.10): data
+/// points Q_0..Q_k edited on a canvas and in a table (or imported from a CSV file), the
+/// least-squares Bézier curve of degree n for uniform, chord-length or centripetal
+/// parameters t_i (optionally corrected by re-projection), its control points and control
+/// polygon, the residuals Q_i − α(t_i), the error readouts and cond₂(M), an "error against
+/// degree" plot, and the exact matrices of Ex 2.7 and Ex 2.8. Every computation is the core's
+/// (core/curves/fitting/least_squares_fit.h, core/curves/fitting/fit_error_by_degree.h); the tab draws and explains.
+
+#include "core/curves/fitting/least_squares_fit.h"
+#include "ui/fit/fit_settings_command.h"
+#include "ui/shell/tab_page.h"
+
+#include <optional>
+
+class QCheckBox;
+class QComboBox;
+class QCustomPlot;
+class QGroupBox;
+class QLabel;
+class QPushButton;
+class QSpinBox;
+class QSplitter;
+class QUndoStack;
+
+namespace granota::ui {
+
+class CurveCanvas;
+class ExactPanel;
+class PointEditor;
+class PointTable;
+
+class FitTab : public TabPage {
+    Q_OBJECT
+public:
+    explicit FitTab(QWidget* parent = nullptr);
+
+    QString key() const override { return QStringLiteral("fit"); }
+    QString title() const override { return tr("Fitting"); }
+    void retranslate() override;
+    QJsonObject saveState() const override;
+    bool loadState(const QJsonObject& state, QString* error) override;
+    bool loadExample(const granota::WorkedExample& example) override;
+    QUndoStack* undoStack() const override { return m_undo; }
+    Drawable* exportView() override;
+    QString csv() const override;
+    QString tikz() const override;
+    void setPresentation(bool on) override;
+    void zoom(double factor) override;
+    void fitView() override;
+
+    /// Reads data points from a CSV or JSON file (core/io/point_list.h) as one undo step. On a
+    /// bad file returns false with a translated message in `error` and changes nothing.
+    bool importFile(const QString& path, QString* error);
+
+    /// The settings, and changing them as one undo step.
+    const FitSettings& settings() const { return m_settings; }
+    void changeSettings(const FitSettings& after, const QString& undoText, int field = -1);
+    /// The degree actually fitted: min(n, k).
+    int fittedDegree() const;
+    /// The current fit, or nullptr when there is none (then fitError() says why).
+    const FitResult* currentFit() const { return m_fit ? &*m_fit : nullptr; }
+    QString fitError() const { return m_fitError; }
+    /// The readouts (error, RMS, max, cond₂) and the warnings as shown, for tests.
+    QString readoutText() const;
+    QString warningText() const;
+
+    // The parts, for the tests.
+    PointEditor* pointEditor() const { return m_editor; }
+    CurveCanvas* canvas() const { return m_canvas; }
+    PointTable* pointTable() const { return m_table; }
+    ExactPanel* exactPanel() const { return m_exact; }
+    QCustomPlot* errorPlot() const { return m_plot; }
+    QSpinBox* degreeBox() const { return m_degree; }
+    QComboBox* parametrizationBox() const { return m_parametrization; }
+    QComboBox* solverBox() const { return m_solver; }
+    QCheckBox* correctionBox() const { return m_correct; }
+    QSpinBox* iterationsBox() const { return m_iterations; }
+    QCheckBox* showMatricesBox() const { return m_showMatrices; }
+
+    /// The table lists the points up to this many; beyond, a note says how many there are.
+    static constexpr int kTableLimit = 5000;
+    /// The error-against-degree plot goes up to this degree (docs/tabs.md).
+    static constexpr int kPlotMaxDegree = 30;
+    /// Degrees above this get a warning even when M is still well conditioned.
+    static constexpr int kHighDegree = 20;
+    /// cond₂(M) above this gets a warning (docs/extreme-cases.md).
+    static constexpr double kIllConditioned = 1e10;
+
+protected:
+    void showEvent(QShowEvent* event) override;
+
+private:
+    void buildUi();
+    void addLayers();
+    void applySettings(const FitSettings& s);
+    void updateControls();
+    void onPointsChanged();
+    void refit();
+    void updateReadouts();
+    void updatePlot();
+    void updateExact();
+    void updateTable();
+    void importDialog();
+    QString errorText(const Error& error) const;
+
+    QUndoStack* m_undo;
+    CurveCanvas* m_canvas;
+    PointEditor* m_editor = nullptr;
+    PointTable* m_table = nullptr;
+    QLabel* m_tableNote = nullptr;
+    ExactPanel* m_exact = nullptr;
+    QCustomPlot* m_plot = nullptr;
+    QSplitter* m_mainSplitter = nullptr;
+    QSplitter* m_leftSplitter = nullptr;
+    QSplitter* m_bottomSplitter = nullptr;
+
+    QGroupBox* m_settingsGroup = nullptr;
+    QLabel* m_degreeLabel = nullptr;
+    QSpinBox* m_degree = nullptr;
+    QLabel* m_parametrizationLabel = nullptr;
+    QComboBox* m_parametrization = nullptr;
+    QLabel* m_solverLabel = nullptr;
+    QComboBox* m_solver = nullptr;
+    QCheckBox* m_correct = nullptr;
+    QSpinBox* m_iterations = nullptr;
+    QPushButton* m_import = nullptr;
+    QCheckBox* m_showMatrices = nullptr;
+
+    QGroupBox* m_readoutGroup = nullptr;
+    QLabel* m_sseLabel = nullptr;
+    QLabel* m_rmsLabel = nullptr;
+    QLabel* m_maxLabel = nullptr;
+    QLabel* m_condLabel = nullptr;
+    QLabel* m_correctionsLabel = nullptr;
+    QLabel* m_warningLabel = nullptr;
+
+    FitSettings m_settings;
+    std::optional<FitResult> m_fit;
+    QString m_fitError;
+    std::vector<Point> m_curve;       ///< the fitted curve, sampled by De Casteljau
+    int m_lastFittedDegree = -1;      ///< to say when too few points lower the degree
+    bool m_updatingControls = false;
+    bool m_loading = false;           ///< examples and documents: no "degree lowered" message
+    bool m_presentation = false;
+};
+
+} // namespace granota::ui

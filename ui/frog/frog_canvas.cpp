@@ -1,0 +1,804 @@
+#include "ui/frog/frog_canvas.h"
+#include "ui/common/number_text.h"
+
+#include "core/softbody/outline.h"
+#include "core/softbody/outline_sampling.h"
+#include "core/softbody/point_in_polygon.h"
+
+#include <QAbstractSpinBox>
+#include <QApplication>
+#include <QCursor>
+#include <QEnterEvent>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+
+namespace granota::ui {
+
+namespace {
+
+/// Samples of the per-frame least-squares Bézier curve (§4.9's abandoned option).
+constexpr int kFitSamples = 160;
+/// Annex II, Pota.dibuixar: `factor = 7`, the half-thickness of a leg.
+constexpr double kLegFactor = 7;
+/// The head image's size in Annex II belongs to the frog's target area, Areal = 20000 px².
+constexpr double kSeedTargetArea = 20000;
+/// Velocity arrows: the step's displacement drawn this many times longer.
+constexpr double kVelocityScale = 4;
+/// How often the text overlays and the averaged timings refresh.
+constexpr qint64 kTextRefreshNs = 250'000'000;
+
+const QColor kLetterbox(0x26, 0x30, 0x36);
+const QColor kSkyTop(0xb9, 0xdc, 0xee);   // FrogArt's sky, top
+const QColor kMudBottom(0x86, 0x6a, 0x44); // FrogArt's bank, bottom
+const QColor kEdgeColour(0xff, 0x8a, 0x1e);
+const QColor kVelocityColour(0x1f, 0x5f, 0xd8);
+
+/// Samples per Catmull-Rom segment: smooth for the seed's 10 vertices, few for 200.
+int samplesPerSegment(std::size_t vertices)
+{
+    return std::clamp(static_cast<int>(1200 / std::max<std::size_t>(vertices, 1)), 2, 12);
+}
+
+QPointF q(const Point& p) { return QPointF(p.x, p.y); }
+
+} // namespace
+
+FrogCanvas::FrogCanvas(QWidget* parent) : QWidget(parent)
+{
+    setMouseTracking(true); // Processing's mouseX/mouseY are always current (§4.1, §4.13)
+    setFocusPolicy(Qt::StrongFocus);
+    setAttribute(Qt::WA_OpaquePaintEvent);
+    m_timer.setTimerType(Qt::PreciseTimer);
+    connect(&m_timer, &QTimer::timeout, this, &FrogCanvas::tick);
+    m_clock.start();
+    m_textClock.start();
+    buildPens();
+}
+
+FrogCanvas::~FrogCanvas() = default;
+
+void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
+{
+    m_sim = std::move(simulation);
+    m_stepWork = m_sim ? m_sim->workPerStep() : 0;
+    m_frameCount = 0;
+    m_framesSinceStep = 0;
+    m_fitter.reset();
+    m_previousValid = false;
+    m_pressed = false;
+    m_spawnHeld = false;
+    m_fitNsSum = 0;
+    m_fits = 0;
+    m_fitShownUs = 0;
+    m_backgroundSize = QSize(); // the frame may have another size
+    if (m_sim && m_mouseKnown && underMouse())
+        m_sim->move(m_mouse); // Processing's mouseX/mouseY hold from the first frame (§4.1, §4.13)
+    unsetCursor();
+    refreshTexts();
+    updateTimer();
+    update();
+}
+
+void FrogCanvas::setRunning(bool running)
+{
+    m_running = running;
+    m_lastFrameNs = -1;
+    updateTimer();
+    refreshTexts();
+    update();
+}
+
+void FrogCanvas::step()
+{
+    advance();
+    refreshTexts();
+    update();
+}
+
+void FrogCanvas::setOverlays(const Overlays& overlays)
+{
+    m_overlays = overlays;
+    if (!overlays.velocities)
+        m_previousValid = false;
+    refreshTexts();
+    update();
+}
+
+void FrogCanvas::setBezierOutline(BezierOutline mode)
+{
+    m_bezier = mode;
+    m_fitNsSum = 0;
+    m_fits = 0;
+    m_fitShownUs = 0;
+    refreshTexts();
+    update();
+}
+
+void FrogCanvas::setPresentation(bool on)
+{
+    m_style.scale = on ? 1.6 : 1.0;
+    buildPens();
+    refreshTexts();
+    update();
+}
+
+void FrogCanvas::buildPens()
+{
+    const double k = m_style.scale;
+    m_art.setLineScale(k);
+    m_framePen = QPen(QColor(0x26, 0x30, 0x36, 45), 1);
+    m_edgePen = QPen(kEdgeColour, 2 * k);
+    m_edgePen.setCosmetic(true);
+    m_velocityPen = QPen(kVelocityColour, 2 * k, Qt::SolidLine, Qt::RoundCap);
+    m_velocityPen.setCosmetic(true);
+    m_ringPen = QPen(QColor(0x1c, 0x2a, 0x33), 1.2 * k);
+    m_ringPen.setCosmetic(true);
+    m_numberPen = QPen(QColor(0x10, 0x18, 0x1c));
+    m_markPen = QPen(Qt::white, 2 * k);
+    m_panelBrush = QBrush(QColor(0x10, 0x1c, 0x22, 170));
+    m_trackBrush = QBrush(QColor(255, 255, 255, 50));
+    m_goodBrush = QBrush(QColor(0x6c, 0xc2, 0x4a));
+    m_offBrush = QBrush(QColor(0xf0, 0xa2, 0x3a));
+    m_jointDotBrush = QBrush(QColor(0xff, 0xe0, 0x8a));
+    m_font = m_style.labelFont();
+    m_numberFont = font();
+    m_numberFont.setPixelSize(std::max(1, int(std::lround(11 * k))));
+}
+
+// ---------------------------------------------------------------- time
+
+void FrogCanvas::updateTimer()
+{
+    if (m_running && m_sim && isVisible()) {
+        if (!m_timer.isActive()) {
+            m_lastFrameNs = -1;
+            m_timer.start(17);
+        }
+    } else {
+        m_timer.stop();
+    }
+}
+
+void FrogCanvas::tick()
+{
+    // 17, 17, 16 ms: three frames in 50 ms, 60 frames per second on average.
+    m_tick = (m_tick + 1) % 3;
+    m_timer.setInterval(m_tick == 2 ? 16 : 17);
+    const qint64 now = m_clock.nsecsElapsed();
+    if (m_lastFrameNs >= 0) {
+        m_frameNsSum += double(now - m_lastFrameNs);
+        ++m_frames;
+    }
+    m_lastFrameNs = now;
+    ++m_frameCount;
+    // Processing's draw(): one actualitza() per frame, a fixed step — or, for a step that
+    // is more work than a frame holds, one every framesPerStep() frames.
+    if (++m_framesSinceStep >= framesPerStep()) {
+        m_framesSinceStep = 0;
+        advance();
+    }
+    if (m_textClock.nsecsElapsed() >= kTextRefreshNs)
+        refreshTexts();
+    update();
+}
+
+QStringList FrogCanvas::textLines() const
+{
+    QStringList lines;
+    for (const QStaticText& t : m_lines)
+        lines << t.text();
+    return lines;
+}
+
+int FrogCanvas::framesPerStep() const
+{
+    return static_cast<int>(std::max<long>(1, (m_stepWork + kFrameWork - 1) / kFrameWork));
+}
+
+void FrogCanvas::advance()
+{
+    if (!m_sim)
+        return;
+    if (m_overlays.velocities) { // keep x_prev to draw x − x_prev
+        m_previous.clear();
+        m_previousOffset.clear();
+        for (int i = 0; i < m_sim->bodyCount(); ++i) {
+            m_sim->bodyVertices(i, m_vertices);
+            m_previousOffset.push_back(m_previous.size());
+            m_previous.insert(m_previous.end(), m_vertices.begin(), m_vertices.end());
+        }
+        m_previousOffset.push_back(m_previous.size());
+        m_previousValid = true;
+    }
+    const qint64 t0 = m_clock.nsecsElapsed();
+    m_sim->step();
+    m_stepNsSum += double(m_clock.nsecsElapsed() - t0);
+    ++m_steps;
+}
+
+void FrogCanvas::refreshTexts()
+{
+    m_textClock.restart();
+    const auto mean = [](double& sum, int& count, double unit) {
+        const double v = count > 0 ? sum / count / unit : 0;
+        sum = 0;
+        count = 0;
+        return v;
+    };
+    if (m_frames > 0 || !m_running)
+        m_frameShownMs = mean(m_frameNsSum, m_frames, 1e6);
+    if (m_steps > 0)
+        m_stepShownMs = mean(m_stepNsSum, m_steps, 1e6);
+    if (m_draws > 0)
+        m_drawShownMs = mean(m_drawNsSum, m_draws, 1e6);
+    if (m_fits > 0)
+        m_fitShownUs = mean(m_fitNsSum, m_fits, 1e3);
+    emit fitCostChanged(m_fitShownUs);
+
+    QStringList lines;
+    const auto num = [](double v, int decimals) { return displayFixed(v, decimals); };
+    if (m_sim) {
+        const SceneSpec& scene = m_sim->scene();
+        if (const int slower = framesPerStep(); slower > 1)
+            lines << tr("Running %n× slower than real time: a step of this scene is more work than a frame holds", "",
+                        slower);
+        if (scene.has("outline-bezier")) {
+            if (m_bezier == BezierOutline::Fit)
+                lines << tr("Least-squares Bézier fit, degree %1 through %2 points: %3 µs per frame")
+                             .arg(m_fitter ? m_fitter->degree() : scene.bezierFitDegree)
+                             .arg(m_fitter ? m_fitter->vertexCount() + 1 : scene.bezierSamples + 1)
+                             .arg(num(m_fitShownUs, 1));
+            else
+                lines << tr("Precomputed Bézier points (§4.9): computed once, nothing per frame");
+        }
+        if (m_overlays.area && m_sim->bodyCount() > 0) {
+            const double area = m_sim->bodyArea(0), target = m_sim->bodyTargetArea(0);
+            if (target > 0)
+                lines << tr("Area %1 px² · target %2 px² (%3 %)")
+                             .arg(num(area, 0), num(target, 0), num(100 * (area - target) / target, 1));
+            else
+                lines << tr("Area %1 px² · target %2 px²").arg(num(area, 0), num(target, 0));
+        }
+        if (m_overlays.readouts) {
+            const Readouts r = m_sim->readouts();
+            lines << tr("Area error %1 % · largest stretch %2 %")
+                         .arg(num(r.areaErrorPercent, 2), num(100 * r.maxStretch, 1));
+            lines << tr("Largest correction %1 · kinetic energy %2 · potential energy %3")
+                         .arg(num(r.constraintForce, 3), num(r.kineticEnergy, 1), num(r.potentialEnergy, 0));
+        }
+        if (m_overlays.velocities && m_sim->bodyCount() == 0)
+            lines << tr("Velocities: this scene has no soft body");
+        if (m_overlays.frameTime) {
+            if (m_running)
+                lines << tr("Frame %1 ms (%2 frames per second) · step %3 ms · drawing %4 ms")
+                             .arg(num(m_frameShownMs, 1), num(m_frameShownMs > 0 ? 1000 / m_frameShownMs : 0.0, 0), num(m_stepShownMs, 3),
+                                  num(m_drawShownMs, 2));
+            else
+                lines << tr("Paused · step %1 ms · drawing %2 ms").arg(num(m_stepShownMs, 3), num(m_drawShownMs, 2));
+            lines << tr("Step %1").arg(m_sim->stepCount());
+        }
+    }
+    const QFont& font = m_font;
+    m_lines.resize(static_cast<std::size_t>(lines.size()));
+    for (int i = 0; i < lines.size(); ++i) {
+        QStaticText& t = m_lines[static_cast<std::size_t>(i)];
+        t.setTextFormat(Qt::PlainText);
+        t.setText(lines[i]);
+        t.prepare(QTransform(), font);
+    }
+}
+
+// ---------------------------------------------------------------- coordinates
+
+QRectF FrogCanvas::sceneRectIn(const QRectF& target) const
+{
+    const double W = m_sim ? m_sim->scene().params.width : 1280, H = m_sim ? m_sim->scene().params.height : 720;
+    const double s = std::min(target.width() / W, target.height() / H);
+    if (!(s > 0) || !std::isfinite(s))
+        return {};
+    return QRectF(target.center().x() - W * s / 2, target.center().y() - H * s / 2, W * s, H * s);
+}
+
+QPointF FrogCanvas::toWidget(const Point& p) const
+{
+    const QRectF r = sceneRectIn(QRectF(rect()));
+    const double W = m_sim ? m_sim->scene().params.width : 1280;
+    const double s = r.width() / W;
+    return QPointF(r.left() + p.x * s, r.top() + p.y * s);
+}
+
+Point FrogCanvas::toScene(const QPointF& w) const
+{
+    const QRectF r = sceneRectIn(QRectF(rect()));
+    const double W = m_sim ? m_sim->scene().params.width : 1280;
+    const double s = r.width() / W;
+    if (!(s > 0))
+        return Point(0, 0);
+    return Point((w.x() - r.left()) / s, (w.y() - r.top()) / s);
+}
+
+// ---------------------------------------------------------------- drawing
+
+void FrogCanvas::paintEvent(QPaintEvent*)
+{
+    const qint64 t0 = m_clock.nsecsElapsed();
+    QPainter p(this);
+    render(p, QRectF(rect()));
+    m_drawNsSum += double(m_clock.nsecsElapsed() - t0);
+    ++m_draws;
+}
+
+void FrogCanvas::render(QPainter& p, const QRectF& target)
+{
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setRenderHint(QPainter::SmoothPixmapTransform, true);
+    p.fillRect(target, kLetterbox);
+    const QRectF r = sceneRectIn(target);
+    if (!m_sim || r.width() < 1 || r.height() < 1) {
+        p.restore();
+        return;
+    }
+    const double W = m_sim->scene().params.width, H = m_sim->scene().params.height;
+    // Bars above and below continue the sky and the mud; the frame's edge stays visible.
+    if (r.top() > target.top() + 0.5) {
+        p.fillRect(QRectF(target.left(), target.top(), target.width(), r.top() - target.top()), kSkyTop);
+        p.fillRect(QRectF(target.left(), r.bottom(), target.width(), target.bottom() - r.bottom()), kMudBottom);
+    }
+    p.save();
+    p.setPen(m_framePen);
+    p.setBrush(Qt::NoBrush);
+    p.drawRect(r.adjusted(-0.5, -0.5, 0.5, 0.5));
+    p.restore();
+    p.setClipRect(r, Qt::IntersectClip);
+
+    // The background: cached as a pixmap on screen, painted as vectors in every export.
+    if (p.device() == this) {
+        const double dpr = devicePixelRatioF();
+        const QSize px(std::max(1, int(std::ceil(r.width() * dpr))), std::max(1, int(std::ceil(r.height() * dpr))));
+        if (px != m_backgroundSize) {
+            m_background = QPixmap(px);
+            m_background.setDevicePixelRatio(dpr);
+            QPainter bp(&m_background);
+            bp.setRenderHint(QPainter::Antialiasing, true);
+            bp.scale(px.width() / dpr / W, px.height() / dpr / H);
+            m_art.paintBackground(bp, W, H);
+            m_backgroundSize = px;
+        }
+        p.drawPixmap(r, m_background, QRectF(QPointF(0, 0), QSizeF(m_background.size())));
+    } else {
+        p.save();
+        p.translate(r.topLeft());
+        p.scale(r.width() / W, r.height() / H);
+        m_art.paintBackground(p, W, H);
+        p.restore();
+    }
+
+    const QTransform base = p.worldTransform();
+    p.save();
+    p.translate(r.topLeft());
+    const double s = r.width() / W;
+    p.scale(s, s);
+    const double pixel = 1 / s; // one widget pixel in scene pixels
+    drawScene(p, pixel);
+    drawOverlays(p, pixel);
+    p.restore();
+    p.setWorldTransform(base);
+    drawTextPanel(p, r);
+    p.restore();
+}
+
+void FrogCanvas::fillPath(const std::vector<Point>& points, bool close)
+{
+    m_path.clear();
+    m_path.setFillRule(Qt::WindingFill);
+    m_path.reserve(static_cast<int>(points.size()) + 1);
+    bool started = false;
+    for (const Point& pt : points) {
+        if (!isFinite(pt))
+            continue;
+        if (started) {
+            m_path.lineTo(pt.x, pt.y);
+        } else {
+            m_path.moveTo(pt.x, pt.y);
+            started = true;
+        }
+    }
+    if (close && started)
+        m_path.closeSubpath();
+}
+
+void FrogCanvas::drawScene(QPainter& p, double pixel)
+{
+    const SceneSpec& scene = m_sim->scene();
+    if (scene.has("obstacles"))
+        drawObstacles(p);
+    if (scene.model == SceneModel::Pendulum) {
+        drawPendulum(p, pixel);
+        return;
+    }
+    // Annex II, Granota.dibuixar: back legs, body, front legs, head.
+    const bool frog = scene.model == SceneModel::Frog && m_sim->chainCount() >= 4;
+    if (frog) {
+        drawLeg(p, 2, pixel);
+        drawLeg(p, 3, pixel);
+    }
+    for (int i = 0; i < m_sim->bodyCount(); ++i)
+        drawBody(p, i, pixel);
+    if (frog) {
+        drawLeg(p, 0, pixel);
+        drawLeg(p, 1, pixel);
+    }
+    if (scene.model == SceneModel::Frog && scene.has("head") && m_sim->bodyCount() > 0) {
+        m_sim->bodyVertices(0, m_vertices);
+        drawHead(p, 0);
+    }
+}
+
+void FrogCanvas::drawHead(QPainter& p, int body)
+{
+    const std::size_t n = m_vertices.size();
+    if (n < 3 || !isFinite(m_vertices[0]) || !isFinite(m_vertices[1]) || !isFinite(m_vertices[n - 1]))
+        return;
+    // Annex II: image(cap, vert[0] − size/2, size) — centred on vertex 0; here also turned
+    // with the body, along v_{N−1} → v_1.
+    const Point along = m_vertices[1] - m_vertices[n - 1];
+    const double angle = norm(along) > 1e-9 ? std::atan2(along.y, along.x) : 0.0;
+    double target = m_sim->bodyTargetArea(body);
+    if (!(target > 0))
+        target = m_sim->bodyArea(body);
+    const double scale = std::clamp(std::sqrt(std::max(target, 0.0) / kSeedTargetArea), 0.12, 3.0);
+    const QPointF at = q(m_vertices[0]);
+    const QPointF look = m_mouseKnown ? q(m_mouse) : at + QPointF(0, 200);
+    m_art.paintHead(p, at, angle, scale, look);
+}
+
+const std::vector<Point>& FrogCanvas::bodyOutline(int body)
+{
+    const SceneSpec& scene = m_sim->scene();
+    m_sim->bodyVertices(body, m_vertices);
+    const std::size_t n = m_vertices.size();
+    if (scene.has("outline-bezier") && m_bezier == BezierOutline::Fit && n >= 3) {
+        // §4.9, the abandoned option: every frame, the least-squares Bézier curve through the
+        // closed outline (M⁺ computed once per vertex count), then sampled by De Casteljau.
+        const int degree = std::clamp(scene.bezierFitDegree, 1, static_cast<int>(n));
+        if (!m_fitter || m_fitter->vertexCount() != static_cast<int>(n) || m_fitter->degree() != degree)
+            m_fitter = std::make_unique<OutlineFitter>(static_cast<int>(n), degree);
+        const qint64 t0 = m_clock.nsecsElapsed();
+        m_fitter->fit(m_vertices, m_fitControl);
+        sampleBezierCurve(m_fitControl, kFitSamples, m_work, m_fitCurve);
+        m_fitNsSum += double(m_clock.nsecsElapsed() - t0);
+        ++m_fits;
+        return m_fitCurve;
+    }
+    if (scene.has("outline-catmull-rom") && n >= 3) {
+        // The seed's curveVertex outline (Annex II, Poligon.dibuixar) for §4.12 and the frog;
+        // the future work of §5.2 draws the smooth closed curve of Def 2.10.
+        const int samples = samplesPerSegment(n);
+        if (scene.model == SceneModel::Frog || scene.section == "4.12")
+            sampleSeedBodyOutline(m_vertices, samples, m_outline);
+        else
+            sampleClosedCatmullRomOutline(m_vertices, samples, 0.5, m_outline);
+        return m_outline;
+    }
+    return m_vertices; // §4.1–4.8 and the precomputed Bézier points: the polygon itself
+}
+
+void FrogCanvas::drawBody(QPainter& p, int body, double)
+{
+    const SceneSpec& scene = m_sim->scene();
+    const std::vector<Point>& outline = bodyOutline(body);
+    if (m_vertices.size() < 2)
+        return;
+    fillPath(outline, true);
+    if (scene.has("fill")) {
+        p.setBrush(m_art.skin(body));
+        p.setPen(m_art.bodyPen());
+    } else {
+        p.setBrush(Qt::NoBrush);
+        p.setPen(m_art.inkPen());
+    }
+    p.drawPath(m_path);
+    if (scene.has("head") && scene.model != SceneModel::Frog)
+        drawHead(p, body);
+}
+
+void FrogCanvas::drawLeg(QPainter& p, int chain, double)
+{
+    m_sim->chainJoints(chain, m_joints);
+    if (m_joints.size() < 3)
+        return;
+    const Point &m = m_joints[0], &e = m_joints[1], &w = m_joints[2];
+    if (!isFinite(m) || !isFinite(e) || !isFinite(w))
+        return;
+    const Point bone = w - e;
+    const double footAngle = norm(bone) > 1e-9 ? std::atan2(bone.y, bone.x) : M_PI / 2;
+    m_art.paintFoot(p, q(w), footAngle, chain < 2 ? 0.8 : 1.0);
+    sampleLegOutline(m, e, w, kLegFactor, 6, m_outline);
+    fillPath(m_outline, true);
+    p.setBrush(m_art.skin(0));
+    p.setPen(m_art.legPen());
+    p.drawPath(m_path);
+}
+
+void FrogCanvas::drawPendulum(QPainter& p, double)
+{
+    for (int c = 0; c < m_sim->chainCount(); ++c) {
+        m_sim->chainJoints(c, m_joints);
+        if (m_joints.empty())
+            continue;
+        fillPath(m_joints, false);
+        p.setBrush(Qt::NoBrush);
+        p.setPen(m_art.rodPen());
+        p.drawPath(m_path);
+        p.setPen(m_art.jointPen());
+        for (std::size_t k = 1; k < m_joints.size(); ++k) {
+            if (!isFinite(m_joints[k]))
+                continue;
+            p.setBrush(m_art.jointBrush());
+            p.drawEllipse(q(m_joints[k]), 10 * m_style.scale, 10 * m_style.scale);
+        }
+        if (isFinite(m_joints[0])) { // the clau the pendulum hangs from (§4.14)
+            p.setBrush(m_art.pinBrush());
+            p.drawEllipse(q(m_joints[0]), 8 * m_style.scale, 8 * m_style.scale);
+            p.setBrush(m_art.whiteBrush());
+            p.setPen(Qt::NoPen);
+            p.drawEllipse(q(m_joints[0]), 3 * m_style.scale, 3 * m_style.scale);
+        }
+    }
+}
+
+void FrogCanvas::drawObstacles(QPainter& p)
+{
+    for (const ObstacleSpec& o : m_sim->obstacles()) {
+        fillPath(o.points, o.closed);
+        if (o.closed) {
+            p.setBrush(m_art.stoneBrush());
+            p.setPen(m_art.stonePen());
+            p.drawPath(m_path);
+        } else {
+            p.setBrush(Qt::NoBrush);
+            p.setPen(m_art.logPen());
+            p.drawPath(m_path);
+            p.setPen(m_art.logHighlightPen());
+            p.drawPath(m_path);
+        }
+    }
+}
+
+void FrogCanvas::drawOverlays(QPainter& p, double pixel)
+{
+    const Overlays& o = m_overlays;
+    if (!o.vertices && !o.springs && !o.velocities)
+        return;
+    const double k = m_style.scale;
+    const double dot = 3.5 * k * pixel;
+
+    const auto drawPoints = [&](const std::vector<Point>& pts, bool closed) {
+        if (o.springs) {
+            fillPath(pts, closed);
+            p.setBrush(Qt::NoBrush);
+            p.setPen(m_edgePen);
+            p.drawPath(m_path);
+        }
+    };
+    for (int i = 0; i < m_sim->bodyCount(); ++i) {
+        m_sim->bodyVertices(i, m_vertices);
+        drawPoints(m_vertices, true);
+        if (o.velocities && m_previousValid && std::size_t(i) + 1 < m_previousOffset.size() &&
+            m_previousOffset[std::size_t(i) + 1] - m_previousOffset[std::size_t(i)] == m_vertices.size()) {
+            p.setPen(m_velocityPen);
+            const Point* prev = m_previous.data() + m_previousOffset[std::size_t(i)];
+            for (std::size_t v = 0; v < m_vertices.size(); ++v) {
+                const Point tip = m_vertices[v] + kVelocityScale * (m_vertices[v] - prev[v]);
+                if (isFinite(tip) && isFinite(m_vertices[v]))
+                    p.drawLine(q(m_vertices[v]), q(tip));
+            }
+        }
+        if (o.vertices) {
+            p.setPen(m_ringPen);
+            p.setBrush(m_art.whiteBrush());
+            for (const Point& v : m_vertices)
+                if (isFinite(v))
+                    p.drawEllipse(q(v), dot, dot);
+            if (m_vertices.size() <= 40) { // numbered as in Annex II's arrays, v_0 first
+                while (m_numbers.size() < m_vertices.size())
+                    m_numbers.push_back(QString::number(m_numbers.size()));
+                p.setPen(m_numberPen);
+                p.save();
+                const QTransform world = p.worldTransform();
+                p.resetTransform();
+                p.setFont(m_numberFont);
+                for (std::size_t v = 0; v < m_vertices.size(); ++v)
+                    if (isFinite(m_vertices[v]))
+                        p.drawText(world.map(q(m_vertices[v])) + QPointF(5 * k, -5 * k), m_numbers[v]);
+                p.restore();
+            }
+        }
+    }
+    for (int c = 0; c < m_sim->chainCount(); ++c) {
+        m_sim->chainJoints(c, m_joints);
+        drawPoints(m_joints, false);
+        if (o.vertices) {
+            p.setPen(m_ringPen);
+            p.setBrush(m_jointDotBrush);
+            for (const Point& v : m_joints)
+                if (isFinite(v))
+                    p.drawEllipse(q(v), dot, dot);
+        }
+    }
+}
+
+void FrogCanvas::drawTextPanel(QPainter& p, const QRectF& sceneRect)
+{
+    const bool bar = m_overlays.area && m_sim->bodyCount() > 0;
+    if (m_lines.empty() && !bar)
+        return;
+    const double k = m_style.scale, margin = 8 * k, pad = 6 * k;
+    double width = 0, height = 0;
+    for (const QStaticText& t : m_lines) {
+        width = std::max(width, t.size().width());
+        height += t.size().height();
+    }
+    const double barHeight = bar ? 10 * k : 0, barWidth = 220 * k;
+    if (bar) {
+        width = std::max(width, barWidth);
+        height += barHeight + pad;
+    }
+    const QRectF box(sceneRect.left() + margin, sceneRect.top() + margin, width + 2 * pad, height + 2 * pad);
+    p.setPen(Qt::NoPen);
+    p.setBrush(m_panelBrush);
+    p.drawRoundedRect(box, 6 * k, 6 * k);
+    p.setPen(QColor(0xf6, 0xf7, 0xf2));
+    p.setFont(m_font);
+    double y = box.top() + pad;
+    for (const QStaticText& t : m_lines) {
+        p.drawStaticText(QPointF(box.left() + pad, y), t);
+        y += t.size().height();
+    }
+    if (bar) { // area against target (§4.5): the bar spans 0 … 2 A₀, the mark is A₀
+        const double area = m_sim->bodyArea(0), target = m_sim->bodyTargetArea(0);
+        const double share = target > 0 && std::isfinite(area) ? std::clamp(area / (2 * target), 0.0, 1.0) : 0.0;
+        const QRectF track(box.left() + pad, y + pad, barWidth, barHeight);
+        p.setBrush(m_trackBrush);
+        p.drawRect(track);
+        p.setBrush(std::abs(share - 0.5) < 0.05 ? m_goodBrush : m_offBrush);
+        p.drawRect(QRectF(track.left(), track.top(), track.width() * share, track.height()));
+        p.setPen(m_markPen);
+        p.drawLine(QPointF(track.center().x(), track.top() - 2 * k), QPointF(track.center().x(), track.bottom() + 2 * k));
+    }
+}
+
+// ---------------------------------------------------------------- mouse and keys
+
+void FrogCanvas::mousePressEvent(QMouseEvent* event)
+{
+    if (!m_sim)
+        return;
+    setFocus(Qt::MouseFocusReason);
+    m_mouse = toScene(event->position());
+    m_mouseKnown = true;
+    if (event->button() != Qt::LeftButton)
+        return;
+    // Annex II, mousePressed: grab when the cursor is inside the body.
+    m_sim->move(m_mouse);
+    m_pressed = true;
+    const bool held = m_sim->press(m_mouse);
+    if (held && m_sim->grabbing())
+        setCursor(Qt::ClosedHandCursor);
+    else if (!held && m_sim->scene().has("grab"))
+        emit statusMessage(tr("Press inside the body to grab it."));
+    update();
+}
+
+void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
+{
+    if (!m_sim)
+        return;
+    m_mouse = toScene(event->position());
+    m_mouseKnown = true;
+    m_sim->move(m_mouse);
+    if (!m_pressed && m_sim->scene().has("grab")) {
+        bool inside = false;
+        for (int i = 0; i < m_sim->bodyCount() && !inside; ++i) {
+            m_sim->bodyVertices(i, m_vertices);
+            inside = pointInPolygon(m_mouse, m_vertices);
+        }
+        if (inside)
+            setCursor(Qt::OpenHandCursor);
+        else
+            unsetCursor();
+    }
+    if (!m_running)
+        update(); // the eyes follow the mouse even when paused
+}
+
+void FrogCanvas::mouseReleaseEvent(QMouseEvent* event)
+{
+    if (!m_sim || event->button() != Qt::LeftButton || !m_pressed)
+        return;
+    m_sim->release(); // Annex II, mouseReleased
+    m_pressed = false;
+    unsetCursor();
+    update();
+}
+
+void FrogCanvas::keyPressEvent(QKeyEvent* event)
+{
+    if (event->key() != Qt::Key_Space) {
+        QWidget::keyPressEvent(event);
+        return;
+    }
+    event->accept();
+    if (event->isAutoRepeat() || !m_sim || m_spawnHeld)
+        return;
+    // Annex II, keyPressed(' '): a new frog at the mouse, held until the key is released.
+    if (!m_mouseKnown) {
+        m_mouse = toScene(mapFromGlobal(QCursor::pos()));
+        m_mouseKnown = true;
+    }
+    m_sim->spawn(m_mouse);
+    m_stepWork = m_sim->workPerStep();
+    m_spawnHeld = true;
+    update();
+}
+
+void FrogCanvas::keyReleaseEvent(QKeyEvent* event)
+{
+    if (event->key() != Qt::Key_Space) {
+        QWidget::keyReleaseEvent(event);
+        return;
+    }
+    event->accept();
+    if (event->isAutoRepeat() || !m_spawnHeld)
+        return;
+    m_spawnHeld = false;
+    if (m_sim)
+        m_sim->releaseSpawn(); // Annex II, keyReleased(' ')
+    update();
+}
+
+void FrogCanvas::enterEvent(QEnterEvent* event)
+{
+    // The space bar belongs to the canvas as soon as the mouse is over it (unless a number
+    // is being typed in a field).
+    if (!qobject_cast<QAbstractSpinBox*>(QApplication::focusWidget()))
+        setFocus(Qt::MouseFocusReason);
+    QWidget::enterEvent(event);
+}
+
+void FrogCanvas::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    updateTimer();
+}
+
+void FrogCanvas::hideEvent(QHideEvent* event)
+{
+    QWidget::hideEvent(event); // a hidden tab costs nothing
+    updateTimer();
+}
+
+void FrogCanvas::focusOutEvent(QFocusEvent* event)
+{
+    // The key release would go elsewhere: let go of a frog held by the space bar now.
+    if (m_spawnHeld && m_sim)
+        m_sim->releaseSpawn();
+    m_spawnHeld = false;
+    QWidget::focusOutEvent(event);
+}
+
+void FrogCanvas::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::FontChange)
+        buildPens();
+    if (event->type() == QEvent::LanguageChange || event->type() == QEvent::FontChange)
+        refreshTexts();
+    QWidget::changeEvent(event);
+}
+
+} // namespace granota::ui

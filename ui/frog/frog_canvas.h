@@ -1,0 +1,189 @@
+#pragma once
+/// \file frog_canvas.h
+/// The live soft-body canvas of the frog lab (docs/scenes.md): one Simulation, stepped once per
+/// frame by a 60 Hz timer as Processing's draw(), drawn in the thesis's order (background,
+/// back legs, body, front legs, head) in the scene's own Processing pixels, letterboxed into
+/// the widget. The mouse grabs and the space bar spawns as in Annex II. Drawing reuses
+/// member buffers: a frame allocates nothing in this class once warm.
+
+#include "core/softbody/simulation.h"
+#include "ui/common/canvas_style.h"
+#include "ui/common/drawable.h"
+#include "ui/frog/frog_art.h"
+
+#include <QElapsedTimer>
+#include <QPainterPath>
+#include <QPixmap>
+#include <QStaticText>
+#include <QTimer>
+#include <QWidget>
+
+#include <memory>
+#include <vector>
+
+namespace granota {
+class OutlineFitter;
+}
+
+namespace granota::ui {
+
+class FrogCanvas : public QWidget, public Drawable {
+    Q_OBJECT
+public:
+    /// What is drawn over the scene (the tab's Overlays checkboxes).
+    struct Overlays {
+        bool vertices = false;   ///< body vertices and joints, numbered
+        bool springs = false;    ///< the polygon's edges (the springs of §4.4)
+        bool area = false;       ///< area against the target area (§4.5), text and bar
+        bool velocities = false; ///< each vertex's displacement over the last step (Verlet's x − x_prev)
+        bool readouts = false;   ///< the Readouts of the solver: area error, stretch, forces, energies
+        bool frameTime = false;  ///< frame, step and drawing time
+        bool operator==(const Overlays& o) const
+        {
+            return vertices == o.vertices && springs == o.springs && area == o.area && velocities == o.velocities &&
+                   readouts == o.readouts && frameTime == o.frameTime;
+        }
+    };
+    /// §4.9/4.10: how a Bézier scene draws its body.
+    enum class BezierOutline {
+        Precomputed, ///< the thesis's choice: the body's vertices are the precomputed Bézier points
+        Fit,         ///< the option it abandoned: a least-squares Bézier curve fitted every frame
+    };
+
+    /// Frames (and steps) per second, as Processing's default frameRate.
+    static constexpr int kFramesPerSecond = 60;
+    /// The most counted work (Simulation::workPerStep: points × substeps) stepped in one
+    /// frame: 3000 vertices on the stable solver (8 substeps), about 3 ms a step on the
+    /// reference machine. A scene whose step is more work steps once every framesPerStep()
+    /// frames, slower than real time, and says so, rather than blocking the event loop
+    /// frame after frame (a body of 10000 sides: 39 ms a step, one step every 4 frames).
+    static constexpr long kFrameWork = 24000;
+
+    explicit FrogCanvas(QWidget* parent = nullptr);
+    ~FrogCanvas() override;
+
+    /// Takes over a freshly built simulation (the previous one, and any grab, are dropped).
+    void setSimulation(std::unique_ptr<Simulation> simulation);
+    Simulation* simulation() const { return m_sim.get(); }
+
+    /// Running: the timer steps once per frame. Paused: only step() advances.
+    void setRunning(bool running);
+    bool running() const { return m_running; }
+    /// Whether the frame timer is on (off while paused or hidden: a hidden tab costs nothing).
+    bool animating() const { return m_timer.isActive(); }
+    /// One fixed step (the Step button, and each exported frame).
+    void step();
+    /// Frames between two steps while running: 1 (real time) unless a step is more work
+    /// than kFrameWork, then ⌈work / kFrameWork⌉.
+    int framesPerStep() const;
+    /// Frames the timer has run since the simulation was set.
+    long frameCount() const { return m_frameCount; }
+    /// The lines of the text panel drawn over the scene, as last refreshed.
+    QStringList textLines() const;
+
+    void setOverlays(const Overlays& overlays);
+    const Overlays& overlays() const { return m_overlays; }
+    void setBezierOutline(BezierOutline mode);
+    BezierOutline bezierOutline() const { return m_bezier; }
+    /// Average cost of the per-frame least-squares fit and its sampling, µs (0 before any).
+    double fitMicroseconds() const { return m_fitShownUs; }
+
+    void setPresentation(bool on);
+
+    /// The outline drawn for body `body`, in scene pixels: the polygon, the seed's
+    /// curveVertex outline, the closed Catmull-Rom curve or the fitted Bézier curve, as the
+    /// scene's components say. Valid until the next call.
+    const std::vector<Point>& bodyOutline(int body);
+
+    /// The letterbox transform of the widget: scene pixels ↔ widget pixels.
+    QPointF toWidget(const Point& scenePoint) const;
+    Point toScene(const QPointF& widgetPoint) const;
+
+    QSizeF exportSize() const override { return size(); }
+    void render(QPainter& painter, const QRectF& target) override;
+
+    QSize sizeHint() const override { return {960, 540}; }
+    QSize minimumSizeHint() const override { return {80, 45}; }
+
+signals:
+    /// About four times a second: the fit cost (µs) for the side panel.
+    void fitCostChanged(double microseconds);
+    /// Hints for the status bar.
+    void statusMessage(const QString& text);
+
+protected:
+    void paintEvent(QPaintEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+    void keyReleaseEvent(QKeyEvent* event) override;
+    void enterEvent(QEnterEvent* event) override;
+    void showEvent(QShowEvent* event) override;
+    void hideEvent(QHideEvent* event) override;
+    void changeEvent(QEvent* event) override;
+    void focusOutEvent(QFocusEvent* event) override;
+
+private:
+    void tick();
+    void advance();
+    void updateTimer();
+    void refreshTexts();
+    QRectF sceneRectIn(const QRectF& target) const;
+
+    void drawScene(QPainter& p, double pixel);
+    void drawBody(QPainter& p, int body, double pixel);
+    void drawHead(QPainter& p, int body);
+    void drawLeg(QPainter& p, int chain, double pixel);
+    void drawPendulum(QPainter& p, double pixel);
+    void drawObstacles(QPainter& p);
+    void drawOverlays(QPainter& p, double pixel);
+    void drawTextPanel(QPainter& p, const QRectF& sceneRect);
+    void fillPath(const std::vector<Point>& points, bool close);
+
+    std::unique_ptr<Simulation> m_sim;
+    FrogArt m_art;
+    CanvasStyle m_style;
+    Overlays m_overlays;
+    BezierOutline m_bezier = BezierOutline::Precomputed;
+
+    QTimer m_timer;
+    int m_tick = 0;
+    long m_stepWork = 0;       // m_sim->workPerStep(), again after a spawn
+    long m_frameCount = 0;
+    int m_framesSinceStep = 0;
+    bool m_running = true;
+
+    // Interaction (Annex II: mousePressed, mouseReleased, keyPressed, keyReleased).
+    Point m_mouse{0, 0};
+    bool m_mouseKnown = false;
+    bool m_pressed = false;
+    bool m_spawnHeld = false;
+
+    // Buffers reused every frame.
+    std::vector<Point> m_vertices, m_outline, m_joints, m_previous, m_fitControl, m_fitCurve, m_work;
+    std::vector<std::size_t> m_previousOffset;
+    QPainterPath m_path;
+    std::unique_ptr<OutlineFitter> m_fitter;
+    bool m_previousValid = false;
+
+    // Background art, cached for the screen at the size last drawn.
+    QPixmap m_background;
+    QSize m_backgroundSize;
+
+    // Timing, averaged and shown a few times a second.
+    QElapsedTimer m_clock, m_textClock;
+    qint64 m_lastFrameNs = -1;
+    double m_frameNsSum = 0, m_stepNsSum = 0, m_drawNsSum = 0, m_fitNsSum = 0;
+    int m_frames = 0, m_steps = 0, m_draws = 0, m_fits = 0;
+    double m_frameShownMs = 0, m_stepShownMs = 0, m_drawShownMs = 0, m_fitShownUs = 0;
+    std::vector<QStaticText> m_lines;
+    std::vector<QString> m_numbers;
+    // Pens, brushes and fonts of the overlays, made once per presentation scale.
+    QPen m_framePen, m_edgePen, m_velocityPen, m_ringPen, m_numberPen, m_markPen;
+    QBrush m_panelBrush, m_trackBrush, m_goodBrush, m_offBrush, m_jointDotBrush;
+    QFont m_font, m_numberFont;
+    void buildPens(); ///< "0", "1", … for the vertex overlay, made once
+};
+
+} // namespace granota::ui

@@ -1,0 +1,828 @@
+#include "ui/frog/frog_tab.h"
+#include "ui/common/number_text.h"
+
+#include "core/softbody/outline.h"
+#include "ui/frog/frog_canvas.h"
+#include "ui/frog/frog_json.h"
+#include "ui/frog/frog_parameters_panel.h"
+#include "ui/shell/tikz_writer.h"
+
+#include <QButtonGroup>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDir>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QImage>
+#include <QJsonArray>
+#include <QLabel>
+#include <QLocale>
+#include <QPainter>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QShortcut>
+#include <QSplitter>
+#include <QTextStream>
+#include <QUndoCommand>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+namespace granota::ui {
+
+namespace {
+
+void setError(QString* error, const QString& text)
+{
+    if (error)
+        *error = text;
+}
+
+QString fromStd(const std::string& s) { return QString::fromStdString(s); }
+
+/// A parameter edit (Edit ▸ Undo): consecutive edits of the same parameter merge, so that
+/// spinning an arrow is one step.
+class ParameterCommand : public QUndoCommand {
+public:
+    ParameterCommand(FrogTab* tab, QString key, QJsonValue before, QJsonValue after, const QString& text)
+        : QUndoCommand(text), m_tab(tab), m_key(std::move(key)), m_before(std::move(before)), m_after(std::move(after))
+    {
+    }
+    void redo() override
+    {
+        if (m_applied) { // the tab applied it already, to validate it
+            m_applied = false;
+            return;
+        }
+        m_tab->applyParameter(m_key, m_after, nullptr);
+    }
+    void undo() override { m_tab->applyParameter(m_key, m_before, nullptr); }
+    int id() const override { return 0x4652; }
+    bool mergeWith(const QUndoCommand* other) override
+    {
+        const auto* o = static_cast<const ParameterCommand*>(other);
+        if (o->m_key != m_key)
+            return false;
+        m_after = o->m_after;
+        return true;
+    }
+
+private:
+    FrogTab* m_tab;
+    QString m_key;
+    QJsonValue m_before, m_after;
+    bool m_applied = true;
+};
+
+QJsonValue paramValue(const SceneSpec& scene, const QString& key)
+{
+    const Json doc = sceneToJson(scene);
+    const Json* v = doc.find("params")->find(key.toStdString());
+    return v ? toQJson(*v) : QJsonValue();
+}
+
+/// Flips Processing's y (down) for TikZ (up).
+std::vector<Point> flipped(const std::vector<Point>& points, double height)
+{
+    std::vector<Point> out;
+    out.reserve(points.size());
+    for (const Point& p : points)
+        out.emplace_back(p.x, height - p.y);
+    return out;
+}
+
+} // namespace
+
+FrogTab::FrogTab(QWidget* parent)
+    : TabPage(parent), m_undo(new QUndoStack(this)), m_canvas(new FrogCanvas(this)), m_params(new FrogParametersPanel(this))
+{
+    auto* side = new QWidget(this);
+    auto* column = new QVBoxLayout(side);
+
+    // Scene, solver, pause / step / reset.
+    m_sceneBox = new QGroupBox(side);
+    auto* sceneGrid = new QGridLayout(m_sceneBox);
+    m_sceneLabel = new QLabel(m_sceneBox);
+    m_sceneCombo = new QComboBox(m_sceneBox);
+    m_sceneCombo->setObjectName(QStringLiteral("frogScene"));
+    m_sceneCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_sceneCombo->setMinimumContentsLength(14);
+    m_sceneCombo->setMaxVisibleItems(18);
+    for (const std::string& name : sceneNames())
+        m_sceneCombo->addItem(QString(), fromStd(name));
+    m_description = new QLabel(m_sceneBox);
+    m_description->setWordWrap(true);
+    m_description->setTextFormat(Qt::PlainText);
+    m_solverLabel = new QLabel(m_sceneBox);
+    m_solverCombo = new QComboBox(m_sceneBox);
+    m_solverCombo->setObjectName(QStringLiteral("frogSolver"));
+    m_solverCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_solverCombo->setMinimumContentsLength(10);
+    m_solverCombo->addItem(QString(), QStringLiteral("seed"));
+    m_solverCombo->addItem(QString(), QStringLiteral("stable"));
+    m_pause = new QPushButton(m_sceneBox);
+    m_pause->setObjectName(QStringLiteral("frogPause"));
+    m_pause->setCheckable(true);
+    m_step = new QPushButton(m_sceneBox);
+    m_step->setObjectName(QStringLiteral("frogStep"));
+    m_reset = new QPushButton(m_sceneBox);
+    m_reset->setObjectName(QStringLiteral("frogReset"));
+    for (QPushButton* b : {m_pause, m_step, m_reset})
+        b->setFocusPolicy(Qt::NoFocus); // the space bar stays with the canvas (Annex II's spawn)
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_pause);
+    buttons->addWidget(m_step);
+    buttons->addWidget(m_reset);
+    sceneGrid->addWidget(m_sceneLabel, 0, 0);
+    sceneGrid->addWidget(m_sceneCombo, 0, 1);
+    sceneGrid->addWidget(m_description, 1, 0, 1, 2);
+    sceneGrid->addWidget(m_solverLabel, 2, 0);
+    sceneGrid->addWidget(m_solverCombo, 2, 1);
+    sceneGrid->addLayout(buttons, 3, 0, 1, 2);
+    sceneGrid->setColumnStretch(1, 1);
+    column->addWidget(m_sceneBox);
+
+    // §4.9/4.10: precomputed points or the per-frame fit.
+    m_bezierBox = new QGroupBox(side);
+    auto* bezierLayout = new QVBoxLayout(m_bezierBox);
+    m_precomputed = new QRadioButton(m_bezierBox);
+    m_precomputed->setObjectName(QStringLiteral("frogBezierPrecomputed"));
+    m_fit = new QRadioButton(m_bezierBox);
+    m_fit->setObjectName(QStringLiteral("frogBezierFit"));
+    m_precomputed->setChecked(true);
+    auto* bezierGroup = new QButtonGroup(m_bezierBox);
+    bezierGroup->addButton(m_precomputed);
+    bezierGroup->addButton(m_fit);
+    m_fitCost = new QLabel(m_bezierBox);
+    m_fitCost->setWordWrap(true);
+    bezierLayout->addWidget(m_precomputed);
+    bezierLayout->addWidget(m_fit);
+    bezierLayout->addWidget(m_fitCost);
+    column->addWidget(m_bezierBox);
+
+    m_paramBox = new QGroupBox(side);
+    auto* paramLayout = new QVBoxLayout(m_paramBox);
+    paramLayout->addWidget(m_params);
+    column->addWidget(m_paramBox);
+
+    m_overlayBox = new QGroupBox(side);
+    auto* overlayGrid = new QGridLayout(m_overlayBox);
+    m_showVertices = new QCheckBox(m_overlayBox);
+    m_showSprings = new QCheckBox(m_overlayBox);
+    m_showArea = new QCheckBox(m_overlayBox);
+    m_showVelocities = new QCheckBox(m_overlayBox);
+    m_showReadouts = new QCheckBox(m_overlayBox);
+    m_showFrameTime = new QCheckBox(m_overlayBox);
+    const QCheckBox* boxes[] = {m_showVertices, m_showSprings, m_showArea, m_showVelocities, m_showReadouts, m_showFrameTime};
+    int i = 0;
+    for (const QCheckBox* c : boxes) {
+        auto* box = const_cast<QCheckBox*>(c);
+        box->setObjectName(QStringLiteral("frogOverlay%1").arg(i));
+        overlayGrid->addWidget(box, i / 2, i % 2);
+        connect(box, &QCheckBox::toggled, this, &FrogTab::overlaysChanged);
+        ++i;
+    }
+    column->addWidget(m_overlayBox);
+
+    m_hint = new QLabel(side);
+    m_hint->setWordWrap(true);
+    m_note = new QLabel(side);
+    m_note->setWordWrap(true);
+    m_note->setStyleSheet(QStringLiteral("color: #a4431b;"));
+    m_note->hide();
+    column->addWidget(m_hint);
+    column->addWidget(m_note);
+    column->addStretch(1);
+
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(side);
+    scroll->setWidgetResizable(true);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setFrameShape(QFrame::NoFrame);
+    m_scroll = scroll;
+    m_side = side;
+    side->installEventFilter(this); // its layout changes with the scene: keep it unclipped
+
+    auto* splitter = new QSplitter(Qt::Horizontal, this);
+    splitter->addWidget(m_canvas);
+    splitter->addWidget(scroll);
+    splitter->setStretchFactor(0, 1);
+    splitter->setStretchFactor(1, 0);
+    splitter->setCollapsible(0, false);
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(splitter);
+
+    connect(m_sceneCombo, &QComboBox::activated, this, &FrogTab::sceneChosen);
+    connect(m_solverCombo, &QComboBox::activated, this, &FrogTab::solverChosen);
+    connect(m_pause, &QPushButton::toggled, this, &FrogTab::setPaused);
+    connect(m_step, &QPushButton::clicked, this, &FrogTab::stepOnce);
+    connect(m_reset, &QPushButton::clicked, this, &FrogTab::reset);
+    connect(m_fit, &QRadioButton::toggled, this, [this](bool fit) {
+        m_canvas->setBezierOutline(fit ? FrogCanvas::BezierOutline::Fit : FrogCanvas::BezierOutline::Precomputed);
+        retranslate();
+        emit documentChanged();
+    });
+    connect(m_canvas, &FrogCanvas::fitCostChanged, this, [this](double us) {
+        if (m_fit->isChecked())
+            m_fitCost->setText(tr("Cost of the fit: %1 µs per frame.").arg(displayFixed(us, 1)));
+    });
+    connect(m_canvas, &FrogCanvas::statusMessage, this, &TabPage::statusMessage);
+    connect(m_params, &FrogParametersPanel::edited, this, [this](const QString& key, const QJsonValue& value) {
+        QString error;
+        if (!editParameter(key, value, &error)) {
+            m_params->setValues(m_scene); // the field shows the value in force again
+            showRefusal(error);
+        }
+    });
+
+    // Single keys, while the focus is in the tab (the space bar is the canvas's spawn key).
+    const auto shortcut = [this](QKeySequence keys, auto slot) {
+        auto* s = new QShortcut(keys, this);
+        s->setContext(Qt::WidgetWithChildrenShortcut);
+        connect(s, &QShortcut::activated, this, slot);
+    };
+    shortcut(QKeySequence(Qt::Key_P), [this] { m_pause->toggle(); });
+    shortcut(QKeySequence(Qt::Key_S), [this] { stepOnce(); });
+    shortcut(QKeySequence(Qt::Key_Period), [this] { stepOnce(); });
+    shortcut(QKeySequence(Qt::Key_R), [this] { reset(); });
+
+    QString error;
+    auto frog = loadScene("frog");
+    if (frog)
+        rebuild(*frog, SolverKind::Seed, &error);
+    showScene();
+}
+
+// ---------------------------------------------------------------- scene and solver
+
+bool FrogTab::rebuild(const SceneSpec& scene, SolverKind solver, QString* error)
+{
+    auto sim = Simulation::create(scene, solver);
+    if (!sim) {
+        setError(error, tr("The simulation cannot be built with these values: %1").arg(fromStd(sim.error().message)));
+        return false;
+    }
+    m_scene = scene;
+    m_solver = solver;
+    m_canvas->setSimulation(std::move(sim).value());
+    return true;
+}
+
+QString FrogTab::sceneLoadError(const QString& name, const std::string& coreMessage)
+{
+    QStringList names;
+    for (const std::string& n : sceneNames())
+        names << fromStd(n);
+    // A known scene that fails to load is a fault in its file (or in how it is read):
+    // the core's own message says which, and hiding it behind "unknown" hides the cause.
+    if (names.contains(name))
+        return tr("The scene “%1” cannot be loaded: %2").arg(name, fromStd(coreMessage));
+    return tr("Unknown scene “%1”. The scenes are: %2.").arg(name, names.join(QStringLiteral(", ")));
+}
+
+bool FrogTab::setScene(const QString& name, QString* error)
+{
+    auto spec = loadScene(name.toStdString());
+    if (!spec) {
+        setError(error, sceneLoadError(name, spec.error().message));
+        return false;
+    }
+    // The seed never had collisions (§5.2 is future work): those scenes start on the stable
+    // solver, as in granota-cli; the solver box switches back to compare.
+    SolverKind solver = m_solver;
+    const bool collisions = spec->has("collisions") || spec->has("obstacles");
+    if (collisions)
+        solver = SolverKind::Stable;
+    if (!rebuild(*spec, solver, error))
+        return false;
+    m_undo->clear();
+    m_note->hide();
+    showScene();
+    emit documentChanged();
+    return true;
+}
+
+bool FrogTab::setSolver(SolverKind solver, QString* error)
+{
+    if (!rebuild(m_scene, solver, error))
+        return false;
+    m_note->hide();
+    showScene();
+    emit documentChanged();
+    return true;
+}
+
+void FrogTab::sceneChosen(int index)
+{
+    QString error;
+    if (!setScene(m_sceneCombo->itemData(index).toString(), &error))
+        showRefusal(error);
+}
+
+void FrogTab::solverChosen(int index)
+{
+    QString error;
+    if (!setSolver(index == 1 ? SolverKind::Stable : SolverKind::Seed, &error)) {
+        showScene();
+        showRefusal(error);
+    }
+}
+
+void FrogTab::reset()
+{
+    QString error;
+    if (!rebuild(m_scene, m_solver, &error))
+        showRefusal(error);
+    else
+        emit statusMessage(tr("The scene starts again."));
+}
+
+void FrogTab::showScene()
+{
+    const QString name = fromStd(m_scene.name);
+    const QSignalBlocker b1(m_sceneCombo), b2(m_solverCombo);
+    m_sceneCombo->setCurrentIndex(std::max(0, m_sceneCombo->findData(name)));
+    m_solverCombo->setCurrentIndex(m_solver == SolverKind::Stable ? 1 : 0);
+    m_params->setScene(m_scene);
+    m_bezierBox->setVisible(m_scene.has("outline-bezier"));
+    retranslate();
+    fitSidePanel();
+}
+
+void FrogTab::fitSidePanel()
+{
+    // Wide enough for the parameters' rows (they change with the scene and the font), so
+    // that nothing is clipped; the canvas takes the rest.
+    if (!m_scroll)
+        return;
+    const int comfortable = m_side->fontMetrics().averageCharWidth() * 50;
+    const int needed = m_side->minimumSizeHint().width() + m_scroll->verticalScrollBar()->sizeHint().width() + 4;
+    m_scroll->setMinimumWidth(std::max(comfortable, needed));
+}
+
+bool FrogTab::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == m_side && event->type() == QEvent::LayoutRequest)
+        QMetaObject::invokeMethod(this, &FrogTab::fitSidePanel, Qt::QueuedConnection);
+    return TabPage::eventFilter(watched, event);
+}
+
+void FrogTab::changeEvent(QEvent* event)
+{
+    TabPage::changeEvent(event);
+    if (event->type() == QEvent::FontChange)
+        fitSidePanel();
+}
+
+void FrogTab::showRefusal(const QString& message)
+{
+    m_note->setText(message);
+    m_note->show();
+    emit statusMessage(message);
+}
+
+// ---------------------------------------------------------------- parameters
+
+bool FrogTab::applyParameter(const QString& key, const QJsonValue& value, QString* error)
+{
+    if (!m_scene.hasParam(key.toStdString())) {
+        setError(error, tr("Scene “%1” has no parameter “%2”.").arg(fromStd(m_scene.name), key));
+        return false;
+    }
+    Json doc = sceneToJson(m_scene);
+    Json params = *doc.find("params");
+    params.set(key.toStdString(), fromQJson(value));
+    doc.set("params", params);
+    auto spec = parseScene(doc);
+    if (!spec) {
+        setError(error, tr("This value was refused: %1").arg(fromStd(spec.error().message)));
+        return false;
+    }
+    // The core has no setter on a running Simulation: the scene is built again with the new
+    // value (the bodies start again; pause, overlays, solver and outline stay).
+    if (!rebuild(*spec, m_solver, error))
+        return false;
+    m_params->setValues(m_scene);
+    m_note->hide();
+    emit documentChanged();
+    return true;
+}
+
+bool FrogTab::editParameter(const QString& key, const QJsonValue& value, QString* error)
+{
+    const QJsonValue before = paramValue(m_scene, key);
+    if (!applyParameter(key, value, error))
+        return false;
+    m_undo->push(new ParameterCommand(this, key, before, value, tr("Change %1").arg(key)));
+    return true;
+}
+
+// ---------------------------------------------------------------- run controls
+
+void FrogTab::setPaused(bool paused)
+{
+    m_canvas->setRunning(!paused);
+    retranslate();
+}
+
+void FrogTab::stepOnce()
+{
+    if (!m_pause->isChecked())
+        m_pause->setChecked(true); // a single step pauses first
+    m_canvas->step();
+}
+
+void FrogTab::overlaysChanged()
+{
+    FrogCanvas::Overlays o;
+    o.vertices = m_showVertices->isChecked();
+    o.springs = m_showSprings->isChecked();
+    o.area = m_showArea->isChecked();
+    o.velocities = m_showVelocities->isChecked();
+    o.readouts = m_showReadouts->isChecked();
+    o.frameTime = m_showFrameTime->isChecked();
+    m_canvas->setOverlays(o);
+    emit documentChanged();
+}
+
+void FrogTab::setPresentation(bool on) { m_canvas->setPresentation(on); }
+
+// ---------------------------------------------------------------- texts
+
+QString FrogTab::sceneTitle(const QString& name) const
+{
+    if (name == QLatin1String("polygon")) return tr("4.1 Polygon and mouse");
+    if (name == QLatin1String("gravity")) return tr("4.2 Gravity");
+    if (name == QLatin1String("bounce")) return tr("4.3 Bounce");
+    if (name == QLatin1String("springs")) return tr("4.4 Springs");
+    if (name == QLatin1String("area")) return tr("4.5 Area");
+    if (name == QLatin1String("verlet")) return tr("4.6 Verlet and grabbing");
+    if (name == QLatin1String("tuned")) return tr("4.7 Tuned parameters");
+    if (name == QLatin1String("color")) return tr("4.8 Colour fill");
+    if (name == QLatin1String("bezier")) return tr("4.9 Bézier outline");
+    if (name == QLatin1String("bezier-revised")) return tr("4.10 Revised Bézier");
+    if (name == QLatin1String("catmull-rom")) return tr("4.12 Catmull-Rom outline");
+    if (name == QLatin1String("pendulum")) return tr("4.13 Pendulum");
+    if (name == QLatin1String("pendulum-chain")) return tr("4.14 Chain of joints");
+    if (name == QLatin1String("pendulum-limits")) return tr("4.15 Angle limits");
+    if (name == QLatin1String("frog")) return tr("4.16 The frog");
+    if (name == QLatin1String("obstacles")) return tr("5.2.1 Obstacles");
+    if (name == QLatin1String("many-bodies")) return tr("5.2.2 Many bodies");
+    if (name == QLatin1String("shapes")) return tr("5.2.3 Other shapes");
+    return name;
+}
+
+QString FrogTab::sceneDescription(const QString& name) const
+{
+    if (name == QLatin1String("polygon"))
+        return tr("A regular polygon drawn with straight lines; its radius follows the mouse, r = |mouseY − h/2|.");
+    if (name == QLatin1String("gravity"))
+        return tr("Every vertex falls with constant acceleration (MRUA) and stops at the edge of the frame.");
+    if (name == QLatin1String("bounce"))
+        return tr("At the frame the velocity turns round and keeps a share f of itself; a click starts the polygon "
+                  "again at the mouse.");
+    if (name == QLatin1String("springs"))
+        return tr("Springs along the edges pull each pair of neighbours back towards their rest length.");
+    if (name == QLatin1String("area"))
+        return tr("The area, by the trapezoid rule, is pushed back towards the target along the edge normals.");
+    if (name == QLatin1String("verlet"))
+        return tr("Verlet integration (Def 3.1). Press inside the body to grab it: every vertex is tied to the mouse.");
+    if (name == QLatin1String("tuned"))
+        return tr("Only the vertices above the grab point hold on to the mouse.");
+    if (name == QLatin1String("color"))
+        return tr("The same body, filled with colour.");
+    if (name == QLatin1String("bezier"))
+        return tr("The polygon's vertices are the control points of one Bézier curve, sampled once. Beside it, the "
+                  "per-frame least-squares fit that the thesis abandoned, with its cost.");
+    if (name == QLatin1String("bezier-revised"))
+        return tr("Tuned constants, and fixed anchors for grabbing, on the precomputed Bézier points.");
+    if (name == QLatin1String("catmull-rom"))
+        return tr("The outline is a Catmull-Rom curve through the vertices (τ = 1/2, Processing's curveVertex).");
+    if (name == QLatin1String("pendulum"))
+        return tr("A double pendulum hanging from the mouse; its lengths are restored at once.");
+    if (name == QLatin1String("pendulum-chain"))
+        return tr("A chain of joints following its first joint: each joint is put back at its distance from the "
+                  "previous one.");
+    if (name == QLatin1String("pendulum-limits"))
+        return tr("A leg: two links with gravity, the frame, and limits on the angles at its joints.");
+    if (name == QLatin1String("frog"))
+        return tr("Body, four legs and head: the final program of Annex II.");
+    if (name == QLatin1String("obstacles"))
+        return tr("Fixed segments and polygons that the bodies collide with (future work, §5.2).");
+    if (name == QLatin1String("many-bodies"))
+        return tr("Several bodies collide with each other; a broad phase keeps the cost close to linear.");
+    if (name == QLatin1String("shapes"))
+        return tr("Bodies that are not regular polygons, kept in shape by angle constraints between their edges.");
+    return {};
+}
+
+QString FrogTab::sceneHint() const
+{
+    if (m_scene.model == SceneModel::Pendulum)
+        return tr("The pendulum hangs from the mouse: move the mouse over the picture.");
+    if (m_scene.model == SceneModel::Stage) {
+        if (m_scene.components.empty())
+            return tr("Move the mouse up and down: the radius is r = |mouseY − h/2| (§4.1).");
+        if (m_scene.has("bounce"))
+            return tr("Click to start the polygon again at the mouse (§4.3).");
+        return tr("Reset (R) drops the polygon again.");
+    }
+    return tr("Drag the body with the left button. Space drops a new one at the mouse and holds it until you let go "
+              "(Annex II).");
+}
+
+void FrogTab::retranslate()
+{
+    m_sceneBox->setTitle(tr("Scene"));
+    m_sceneLabel->setText(tr("Stage"));
+    for (int i = 0; i < m_sceneCombo->count(); ++i)
+        m_sceneCombo->setItemText(i, sceneTitle(m_sceneCombo->itemData(i).toString()));
+    m_sceneCombo->setToolTip(tr("The stages of chapter 4, in the thesis's order, and the future work of §5.2. "
+                                "Each scene builds, draws and shows only its own components."));
+    m_description->setText(sceneDescription(fromStd(m_scene.name)));
+    m_solverLabel->setText(tr("Solver"));
+    m_solverCombo->setItemText(0, tr("Seed (Annex II)"));
+    m_solverCombo->setItemText(1, tr("Stable (XPBD)"));
+    m_solverCombo->setToolTip(tr("Seed: the thesis's own schemes, reproduced faithfully (Annex II). Stable: beyond the "
+                                 "thesis, position-based constraints with compliance (XPBD) that hold the target "
+                                 "area and stay stable on stiff and extreme settings. Switching starts the scene again."));
+    m_pause->setText(m_pause->isChecked() ? tr("Run") : tr("Pause"));
+    m_pause->setToolTip(tr("Pause or run the animation, one fixed step per frame at 60 frames per second (P)."));
+    m_step->setText(tr("Step"));
+    m_step->setToolTip(tr("One fixed step, as one call of actualitza() in Annex II; pauses first (S or .)."));
+    m_reset->setText(tr("Reset"));
+    m_reset->setToolTip(tr("Start the scene again with the current parameters (R)."));
+
+    m_bezierBox->setTitle(tr("Bézier outline (§4.9)"));
+    m_precomputed->setText(tr("Precomputed points"));
+    m_precomputed->setToolTip(tr("The thesis's choice (§4.9, §4.10): the polygon is the control polygon of a Bézier "
+                                 "curve sampled once by De Casteljau (Def 2.4); the samples are the body's vertices."));
+    m_fit->setText(tr("Least-squares fit every frame"));
+    m_fit->setToolTip(tr("The option §4.9 abandoned as too costly for Processing: every frame, the least-squares "
+                         "Bézier curve through the outline (Lemma 2.2, Prop 2.2). With M⁺ computed once, a frame "
+                         "costs one small matrix product; the curve need not pass through the vertices (Nota 2.3)."));
+    if (!m_fit->isChecked())
+        m_fitCost->setText(tr("Precomputed points: nothing to compute per frame."));
+    else
+        m_fitCost->setText(tr("Cost of the fit: %1 µs per frame.").arg(displayFixed(m_canvas->fitMicroseconds(), 1)));
+
+    m_paramBox->setTitle(tr("Parameters"));
+    m_paramBox->setToolTip(tr("Only this scene's parameters, with the names of Annex II. Changes apply at once: the "
+                              "scene starts again with them."));
+    m_params->retranslate();
+
+    m_overlayBox->setTitle(tr("Overlays"));
+    m_showVertices->setText(tr("Vertices"));
+    m_showVertices->setToolTip(tr("The body's vertices, numbered as in Annex II's arrays (v₀ under the head), and the "
+                                  "joints of the legs."));
+    m_showSprings->setText(tr("Springs"));
+    m_showSprings->setToolTip(tr("The polygon's edges: the springs of §4.4 that keep neighbours at their length."));
+    m_showArea->setText(tr("Area vs target"));
+    m_showArea->setToolTip(tr("The body's area by the trapezoid rule against the target area (§4.5); the bar's "
+                              "mark is the target."));
+    m_showVelocities->setText(tr("Velocities"));
+    m_showVelocities->setToolTip(tr("Each vertex's move in the last step, x − x_prev (Verlet, Def 3.1), drawn four "
+                                    "times longer."));
+    m_showReadouts->setText(tr("Readouts"));
+    m_showReadouts->setToolTip(tr("What the solver measures: area error, largest stretch of an edge, largest "
+                                  "correction or constraint force, kinetic and potential energy."));
+    m_showFrameTime->setText(tr("Frame time"));
+    m_showFrameTime->setToolTip(tr("Time per frame and per simulation step, in milliseconds, averaged a few times a "
+                                   "second."));
+    m_hint->setText(sceneHint());
+}
+
+// ---------------------------------------------------------------- document
+
+QJsonObject FrogTab::saveState() const
+{
+    QJsonObject state;
+    state.insert(QStringLiteral("scene"), fromStd(m_scene.name));
+    state.insert(QStringLiteral("solver"), fromStd(solverName(m_solver)));
+    state.insert(QStringLiteral("params"), toQJson(*sceneToJson(m_scene).find("params")));
+    const FrogCanvas::Overlays& o = m_canvas->overlays();
+    QJsonObject overlays;
+    overlays.insert(QStringLiteral("vertices"), o.vertices);
+    overlays.insert(QStringLiteral("springs"), o.springs);
+    overlays.insert(QStringLiteral("area"), o.area);
+    overlays.insert(QStringLiteral("velocities"), o.velocities);
+    overlays.insert(QStringLiteral("readouts"), o.readouts);
+    overlays.insert(QStringLiteral("frame_time"), o.frameTime);
+    state.insert(QStringLiteral("overlays"), overlays);
+    state.insert(QStringLiteral("bezier_outline"), m_fit->isChecked() ? QStringLiteral("fit") : QStringLiteral("precomputed"));
+    state.insert(QStringLiteral("paused"), !m_canvas->running());
+    return state;
+}
+
+bool FrogTab::loadState(const QJsonObject& state, QString* error)
+{
+    if (state.isEmpty())
+        return true; // a document without the frog's state: keep the tab as it is
+    const QString name = state.value(QStringLiteral("scene")).toString();
+    auto spec = loadScene(name.toStdString());
+    if (!spec) {
+        setError(error, sceneLoadError(name, spec.error().message));
+        return false;
+    }
+    SolverKind solver = SolverKind::Seed;
+    if (state.contains(QStringLiteral("solver"))) {
+        const QString s = state.value(QStringLiteral("solver")).toString();
+        auto kind = parseSolverKind(s.toStdString());
+        if (!kind) {
+            setError(error, tr("Unknown solver “%1” (seed or stable).").arg(s));
+            return false;
+        }
+        solver = *kind;
+    }
+    if (state.contains(QStringLiteral("params"))) {
+        const QJsonValue params = state.value(QStringLiteral("params"));
+        if (!params.isObject()) {
+            setError(error, tr("The frog's parameters must be an object."));
+            return false;
+        }
+        Json doc = sceneToJson(*spec);
+        Json merged = *doc.find("params");
+        const QJsonObject p = params.toObject();
+        for (auto it = p.begin(); it != p.end(); ++it) {
+            if (!spec->hasParam(it.key().toStdString())) {
+                setError(error, tr("Scene “%1” has no parameter “%2”.").arg(name, it.key()));
+                return false;
+            }
+            merged.set(it.key().toStdString(), fromQJson(it.value()));
+        }
+        doc.set("params", merged);
+        auto parsed = parseScene(doc);
+        if (!parsed) {
+            setError(error, tr("This value was refused: %1").arg(fromStd(parsed.error().message)));
+            return false;
+        }
+        spec = std::move(parsed);
+    }
+    FrogCanvas::Overlays overlays = m_canvas->overlays();
+    if (state.contains(QStringLiteral("overlays"))) {
+        const QJsonValue v = state.value(QStringLiteral("overlays"));
+        if (!v.isObject()) {
+            setError(error, tr("The frog's overlays must be an object."));
+            return false;
+        }
+        const QJsonObject o = v.toObject();
+        const std::pair<const char*, bool*> flags[] = {
+            {"vertices", &overlays.vertices}, {"springs", &overlays.springs},       {"area", &overlays.area},
+            {"velocities", &overlays.velocities}, {"readouts", &overlays.readouts}, {"frame_time", &overlays.frameTime}};
+        for (const auto& [key, flag] : flags) {
+            const QJsonValue f = o.value(QLatin1String(key));
+            if (f.isUndefined())
+                continue;
+            if (!f.isBool()) {
+                setError(error, tr("The overlay “%1” must be true or false.").arg(QLatin1String(key)));
+                return false;
+            }
+            *flag = f.toBool();
+        }
+    }
+    bool fit = m_fit->isChecked();
+    if (state.contains(QStringLiteral("bezier_outline"))) {
+        const QString b = state.value(QStringLiteral("bezier_outline")).toString();
+        if (b != QLatin1String("fit") && b != QLatin1String("precomputed")) {
+            setError(error, tr("The Bézier outline must be “precomputed” or “fit”, not “%1”.").arg(b));
+            return false;
+        }
+        fit = b == QLatin1String("fit");
+    }
+    bool paused = m_pause->isChecked();
+    if (state.contains(QStringLiteral("paused"))) {
+        if (!state.value(QStringLiteral("paused")).isBool()) {
+            setError(error, tr("“paused” must be true or false."));
+            return false;
+        }
+        paused = state.value(QStringLiteral("paused")).toBool();
+    }
+    if (!rebuild(*spec, solver, error))
+        return false;
+    // Everything is valid: show it.
+    {
+        const QCheckBox* boxes[] = {m_showVertices, m_showSprings, m_showArea, m_showVelocities, m_showReadouts, m_showFrameTime};
+        const bool values[] = {overlays.vertices, overlays.springs, overlays.area, overlays.velocities, overlays.readouts, overlays.frameTime};
+        for (int i = 0; i < 6; ++i) {
+            auto* box = const_cast<QCheckBox*>(boxes[i]);
+            const QSignalBlocker block(box);
+            box->setChecked(values[i]);
+        }
+        m_canvas->setOverlays(overlays);
+        const QSignalBlocker b1(m_fit), b2(m_precomputed);
+        (fit ? m_fit : m_precomputed)->setChecked(true);
+        m_canvas->setBezierOutline(fit ? FrogCanvas::BezierOutline::Fit : FrogCanvas::BezierOutline::Precomputed);
+        const QSignalBlocker b3(m_pause);
+        m_pause->setChecked(paused);
+        m_canvas->setRunning(!paused);
+    }
+    m_undo->clear();
+    m_note->hide();
+    showScene();
+    return true;
+}
+
+bool FrogTab::loadExample(const granota::WorkedExample&) { return false; } // chapter 2 has no frog examples
+
+Drawable* FrogTab::exportView() { return m_canvas; }
+
+QString FrogTab::csv() const
+{
+    QString out;
+    QTextStream s(&out);
+    const Simulation* sim = m_canvas->simulation();
+    s << "# scene " << fromStd(m_scene.name) << " (" << fromStd(m_scene.section) << "), solver "
+      << fromStd(solverName(m_solver)) << ", step " << (sim ? sim->stepCount() : 0) << "\n";
+    s << "kind,index,point,x,y\n";
+    if (!sim)
+        return out;
+    std::vector<Point> pts;
+    const auto write = [&](const char* kind, int index) {
+        for (std::size_t k = 0; k < pts.size(); ++k)
+            s << kind << ',' << index << ',' << k << ',' << QString::number(pts[k].x, 'g', 12) << ','
+              << QString::number(pts[k].y, 'g', 12) << '\n';
+    };
+    for (int i = 0; i < sim->bodyCount(); ++i) {
+        sim->bodyVertices(i, pts);
+        write("body", i);
+    }
+    for (int c = 0; c < sim->chainCount(); ++c) {
+        sim->chainJoints(c, pts);
+        write("chain", c);
+    }
+    return out;
+}
+
+QString FrogTab::tikz() const
+{
+    TikzWriter w(12.0);
+    const Simulation* sim = m_canvas->simulation();
+    if (!sim)
+        return w.str();
+    const double H = m_scene.params.height;
+    w.comment(QStringLiteral("Granota: scene %1 (%2), solver %3, step %4")
+                  .arg(fromStd(m_scene.name), fromStd(m_scene.section), fromStd(solverName(m_solver)))
+                  .arg(sim->stepCount()));
+    // The frame, so that the picture keeps the scene's proportions.
+    const double W = m_scene.params.width;
+    w.polyline({{0, 0}, {W, 0}, {W, H}, {0, H}}, QColor(0x9a, 0x9a, 0x9a), 0.4, false, true);
+    for (const ObstacleSpec& o : sim->obstacles())
+        w.polyline(flipped(o.points, H), QColor(0x6e, 0x4b, 0x2c), 1.2, false, o.closed);
+    std::vector<Point> pts;
+    const QColor green(48, 161, 48);
+    const auto leg = [&](int c) {
+        sim->chainJoints(c, pts);
+        if (pts.size() >= 3)
+            w.polyline(flipped(legOutline(pts[0], pts[1], pts[2], 7, 6), H), green, 1.0, false, true);
+    };
+    const bool frog = m_scene.model == SceneModel::Frog && sim->chainCount() >= 4;
+    if (frog) {
+        leg(2);
+        leg(3);
+    }
+    for (int i = 0; i < sim->bodyCount(); ++i)
+        w.polyline(flipped(m_canvas->bodyOutline(i), H), green, 1.2, false, true);
+    if (frog) {
+        leg(0);
+        leg(1);
+    }
+    if (m_scene.model == SceneModel::Pendulum)
+        for (int c = 0; c < sim->chainCount(); ++c) {
+            sim->chainJoints(c, pts);
+            w.polyline(flipped(pts, H), QColor(0x37, 0x47, 0x4f), 1.5);
+            for (const Point& p : pts)
+                w.point(Point(p.x, H - p.y), QColor(0xf2, 0xb1, 0x34));
+        }
+    return w.str();
+}
+
+QString FrogTab::exportFrames(const QString& directory, int frames)
+{
+    if (frames < 1)
+        return tr("The number of frames must be at least 1.");
+    if (directory.isEmpty() || (!QDir(directory).exists() && !QDir().mkpath(directory)))
+        return tr("Cannot create the folder “%1”.").arg(directory);
+    const QDir dir(directory);
+    QSize size = m_canvas->size();
+    if (size.width() < 16 || size.height() < 16)
+        size = QSize(1280, 720); // a canvas never shown: the seed's own frame
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    for (int i = 0; i < frames; ++i) {
+        image.fill(Qt::white);
+        {
+            QPainter p(&image);
+            m_canvas->render(p, QRectF(QPointF(0, 0), QSizeF(size)));
+        }
+        const QString file = dir.filePath(QStringLiteral("frame_%1.png").arg(i, 4, 10, QLatin1Char('0')));
+        if (!image.save(file, "PNG"))
+            return tr("Cannot write “%1”.").arg(file);
+        if (i + 1 < frames)
+            m_canvas->step(); // the canvas's fixed step: one per frame, 60 per second
+    }
+    return {};
+}
+
+} // namespace granota::ui

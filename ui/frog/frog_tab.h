@@ -1,0 +1,102 @@
+#pragma once
+/// \file frog_tab.h
+/// The soft-body lab (frog) tab (docs/scenes.md): the live canvas, the scene picker (every
+/// stage of chapter 4 and the future work of §5.2), the solver, pause / step / reset, the
+/// active scene's parameters applied live, and the overlays.
+
+#include "core/softbody/scenes/scene.h"
+#include "core/softbody/simulation.h"
+#include "ui/shell/tab_page.h"
+
+#include <QJsonValue>
+
+class QCheckBox;
+class QComboBox;
+class QGroupBox;
+class QLabel;
+class QPushButton;
+class QRadioButton;
+class QScrollArea;
+class QUndoStack;
+
+namespace granota::ui {
+
+class FrogCanvas;
+class FrogParametersPanel;
+
+class FrogTab : public TabPage {
+    Q_OBJECT
+public:
+    explicit FrogTab(QWidget* parent = nullptr);
+
+    QString key() const override { return QStringLiteral("frog"); }
+    QString title() const override { return tr("Frog"); }
+    void retranslate() override;
+    QJsonObject saveState() const override;
+    bool loadState(const QJsonObject& state, QString* error) override;
+    bool loadExample(const granota::WorkedExample& example) override;
+    QUndoStack* undoStack() const override { return m_undo; }
+    Drawable* exportView() override;
+    QString csv() const override;
+    QString tikz() const override;
+    void setPresentation(bool on) override;
+
+    /// Opens scene `name` (docs/scenes.md) (`--scene`). False with a message for an unknown name.
+    bool setScene(const QString& name, QString* error);
+    /// Why the scene `name` did not load: unknown, or the core's own message for a known one.
+    static QString sceneLoadError(const QString& name, const std::string& coreMessage);
+    /// Writes `frames` frames of the running scene as frame_0000.png … into `directory`,
+    /// stepping the simulation at the canvas's fixed step. Empty on success, else a message.
+    QString exportFrames(const QString& directory, int frames);
+
+    /// The solver (rebuilds the scene on it). False with a message when the core refuses.
+    bool setSolver(SolverKind solver, QString* error);
+    SolverKind solver() const { return m_solver; }
+    QString sceneName() const { return QString::fromStdString(m_scene.name); }
+    const SceneSpec& scene() const { return m_scene; }
+    /// Edits parameter `key` (docs/scenes.md name) to `value` in the scene file's form, live and
+    /// undoable (the parameter panel does this). False with a message when the core refuses.
+    bool editParameter(const QString& key, const QJsonValue& value, QString* error);
+    /// Sets `key` without an undo step (the undo commands call it).
+    bool applyParameter(const QString& key, const QJsonValue& value, QString* error);
+    /// Builds the scene again from its parameters (Reset).
+    void reset();
+
+    FrogCanvas* canvas() const { return m_canvas; }
+    FrogParametersPanel* parametersPanel() const { return m_params; }
+
+protected:
+    void changeEvent(QEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    void fitSidePanel();
+    bool rebuild(const SceneSpec& scene, SolverKind solver, QString* error);
+    void showScene();
+    void sceneChosen(int index);
+    void solverChosen(int index);
+    void overlaysChanged();
+    void setPaused(bool paused);
+    void stepOnce();
+    void showRefusal(const QString& message);
+    QString sceneTitle(const QString& name) const;
+    QString sceneDescription(const QString& name) const;
+    QString sceneHint() const;
+
+    QUndoStack* m_undo;
+    FrogCanvas* m_canvas;
+    FrogParametersPanel* m_params;
+    SceneSpec m_scene;
+    SolverKind m_solver = SolverKind::Seed;
+
+    QScrollArea* m_scroll = nullptr;
+    QWidget* m_side = nullptr;
+    QGroupBox *m_sceneBox, *m_bezierBox, *m_paramBox, *m_overlayBox;
+    QLabel *m_sceneLabel, *m_description, *m_solverLabel, *m_hint, *m_note, *m_fitCost;
+    QComboBox *m_sceneCombo, *m_solverCombo;
+    QPushButton *m_pause, *m_step, *m_reset;
+    QRadioButton *m_precomputed, *m_fit;
+    QCheckBox *m_showVertices, *m_showSprings, *m_showArea, *m_showVelocities, *m_showReadouts, *m_showFrameTime;
+};
+
+} // namespace granota::ui

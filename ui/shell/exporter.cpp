@@ -1,0 +1,114 @@
+#include "ui/shell/exporter.h"
+
+#include "ui/common/drawable.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QImage>
+#include <QPageSize>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QSaveFile>
+#include <QSvgGenerator>
+#include <QTextStream>
+
+#include <cmath>
+
+namespace granota::ui {
+
+namespace {
+constexpr double kScreenDpi = 96.0;
+
+
+QString cannotWrite(const QString& file) { return QCoreApplication::translate("granota::ui::Exporter", "Cannot write “%1”.").arg(file); }
+} // namespace
+
+QSize pngPixelSize(const QSizeF& logical, int dpi)
+{
+    const double f = dpi / kScreenDpi;
+    return {std::max(1, static_cast<int>(std::lround(logical.width() * f))),
+            std::max(1, static_cast<int>(std::lround(logical.height() * f)))};
+}
+
+QString exportPng(Drawable& view, const QString& file, int dpi)
+{
+    if (dpi < 24 || dpi > 1200)
+        return QCoreApplication::translate("granota::ui::Exporter", "The resolution must be between 24 and 1200 DPI.");
+    const QSizeF logical = view.exportSize();
+    const QSize pixels = pngPixelSize(logical, dpi);
+    if (static_cast<qint64>(pixels.width()) * pixels.height() > 400LL * 1000 * 1000)
+        return QCoreApplication::translate("granota::ui::Exporter", "The image would be too large: choose a lower resolution.");
+    QImage image(pixels, QImage::Format_ARGB32_Premultiplied);
+    if (image.isNull())
+        return QCoreApplication::translate("granota::ui::Exporter", "Not enough memory for an image of %1×%2 pixels.").arg(pixels.width()).arg(pixels.height());
+    image.fill(Qt::white);
+    const int dotsPerMeter = static_cast<int>(std::lround(dpi / 0.0254));
+    image.setDotsPerMeterX(dotsPerMeter);
+    image.setDotsPerMeterY(dotsPerMeter);
+    {
+        QPainter painter(&image);
+        painter.scale(dpi / kScreenDpi, dpi / kScreenDpi);
+        view.render(painter, QRectF(QPointF(0, 0), logical));
+    }
+    return image.save(file, "PNG") ? QString() : cannotWrite(file);
+}
+
+QString exportSvg(Drawable& view, const QString& file, const QString& title)
+{
+    const QSizeF logical = view.exportSize();
+    QSvgGenerator svg;
+    svg.setFileName(file);
+    svg.setSize(logical.toSize());
+    svg.setViewBox(QRectF(QPointF(0, 0), logical));
+    svg.setTitle(title);
+    svg.setDescription(QCoreApplication::translate("granota::ui::Exporter", "Made with Granota"));
+    svg.setResolution(static_cast<int>(kScreenDpi));
+    {
+        QFile probe(file);
+        if (!probe.open(QIODevice::WriteOnly))
+            return cannotWrite(file);
+    }
+    QPainter painter;
+    if (!painter.begin(&svg))
+        return cannotWrite(file);
+    view.render(painter, QRectF(QPointF(0, 0), logical));
+    painter.end();
+    return QString();
+}
+
+QString exportPdf(Drawable& view, const QString& file, const QString& title)
+{
+    const QSizeF logical = view.exportSize();
+    {
+        QFile probe(file);
+        if (!probe.open(QIODevice::WriteOnly))
+            return cannotWrite(file);
+    }
+    QPdfWriter pdf(file);
+    pdf.setTitle(title);
+    pdf.setCreator(QStringLiteral("Granota"));
+    pdf.setResolution(static_cast<int>(kScreenDpi));
+    // One page the size of the view, in points (1/72 in): the figure is the page.
+    pdf.setPageSize(QPageSize(QSizeF(logical.width() * 72.0 / kScreenDpi, logical.height() * 72.0 / kScreenDpi),
+                              QPageSize::Point, QString(), QPageSize::ExactMatch));
+    pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
+    QPainter painter;
+    if (!painter.begin(&pdf))
+        return cannotWrite(file);
+    const QRectF page = painter.viewport();
+    painter.scale(page.width() / logical.width(), page.height() / logical.height());
+    view.render(painter, QRectF(QPointF(0, 0), logical));
+    painter.end();
+    return QString();
+}
+
+QString writeTextFile(const QString& file, const QString& text)
+{
+    QSaveFile out(file);
+    if (!out.open(QIODevice::WriteOnly | QIODevice::Text))
+        return cannotWrite(file);
+    out.write(text.toUtf8());
+    return out.commit() ? QString() : cannotWrite(file);
+}
+
+} // namespace granota::ui

@@ -1,0 +1,806 @@
+#include "ui/shell/main_window.h"
+
+#include "core/io/worked_examples.h"
+#include "ui/bernstein/bernstein_tab.h"
+#include "ui/catmull_rom/catmull_rom_tab.h"
+#include "ui/decasteljau/decasteljau_tab.h"
+#include "ui/shell/document.h"
+#include "ui/shell/exporter.h"
+#include "ui/fit/fit_tab.h"
+#include "ui/frog/frog_tab.h"
+#include "ui/shell/language.h"
+#include "ui/shell/tab_page.h"
+#include "ui/shell/user_file.h"
+#include "ui/common/work_precision_panel.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QInputDialog>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QPushButton>
+#include <QSaveFile>
+#include <QSettings>
+#include <QSplitter>
+#include <QStandardPaths>
+#include <QStatusBar>
+#include <QTabWidget>
+#include <QTimer>
+#include <QUndoGroup>
+#include <QUndoStack>
+
+namespace granota::ui {
+
+namespace {
+/// Which work-precision reports (work_precision.h) belong to which tab.
+std::vector<std::string> reportsOf(const QString& key)
+{
+    if (key == QLatin1String("decasteljau"))
+        return {"curve-sampling", "bezier-evaluation"};
+    if (key == QLatin1String("bernstein"))
+        return {"bezier-evaluation"};
+    if (key == QLatin1String("fit"))
+        return {"least-squares"};
+    if (key == QLatin1String("catmull-rom"))
+        return {"curve-sampling"};
+    return {"integrators", "soft-body"};
+}
+
+constexpr int kMaxRecent = 8;
+constexpr int kAutosaveMs = 20000;
+constexpr double kPresentationFont = 1.5; ///< font scale in presentation mode
+const char* const kExampleIds[] = {"2.1", "2.2", "2.3", "2.4", "2.5", "2.6", "2.7",
+                                   "2.8", "2.9", "2.10", "2.11", "2.12", "2.13"};
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWidget(this))
+{
+    setObjectName(QStringLiteral("MainWindow"));
+    m_normalFont = QApplication::font();
+    auto* deCasteljau = new DeCasteljauTab(this);
+    m_pages = {deCasteljau, new BernsteinTab(deCasteljau, this), new FitTab(this), new CatmullRomTab(this),
+               new FrogTab(this)};
+    m_undoGroup = new QUndoGroup(this);
+    for (TabPage* page : m_pages) {
+        // Below every tab, its work-precision section (docs/work-precision.md), collapsed until View ▸ Error
+        // against run time opens it.
+        auto* splitter = new QSplitter(Qt::Vertical, this);
+        auto* report = new WorkPrecisionPanel(reportsOf(page->key()), splitter);
+        splitter->addWidget(page);
+        splitter->addWidget(report);
+        splitter->setCollapsible(0, false);
+        splitter->setStretchFactor(0, 3);
+        splitter->setStretchFactor(1, 2);
+        report->hide();
+        m_splitters.push_back(splitter);
+        m_reports.push_back(report);
+        m_tabs->addTab(splitter, page->title());
+        m_undoGroup->addStack(page->undoStack());
+        connect(page, &TabPage::documentChanged, this, [this] { setModified(true); });
+        connect(page, &TabPage::statusMessage, this, &MainWindow::showMessage);
+    }
+    m_tabs->setDocumentMode(true);
+    connect(m_tabs, &QTabWidget::currentChanged, this, [this](int index) {
+        if (index >= 0 && index < m_pages.size()) {
+            m_undoGroup->setActiveStack(m_pages[index]->undoStack());
+            if (m_reportsAction)
+                m_reportsAction->setChecked(!m_reports[index]->isHidden());
+        }
+    });
+    m_undoGroup->setActiveStack(m_pages.front()->undoStack());
+    setCentralWidget(m_tabs);
+
+    m_cursorLabel = new QLabel(this);
+    statusBar()->addPermanentWidget(m_cursorLabel);
+
+    createActions();
+    createMenus();
+    rebuildRecentMenu();
+
+    m_autosaveWarning = new QLabel(this);
+    m_autosaveWarning->setStyleSheet(QStringLiteral("QLabel { color: #b00020; font-weight: bold; }"));
+    m_autosaveWarning->hide();
+    statusBar()->addPermanentWidget(m_autosaveWarning);
+    m_autosave = std::make_unique<Autosave>();
+    m_autosaveTimer = new QTimer(this);
+    m_autosaveTimer->setInterval(kAutosaveMs);
+    connect(m_autosaveTimer, &QTimer::timeout, this, [this] {
+        if (m_autosaveDirty)
+            autosave();
+    });
+    m_autosaveTimer->start();
+
+    resize(1280, 800);
+    retranslate();
+}
+
+MainWindow::~MainWindow() = default;
+
+// ---------------------------------------------------------------- tabs and examples
+
+bool MainWindow::showTab(const QString& key)
+{
+    for (int i = 0; i < m_pages.size(); ++i)
+        if (m_pages[i]->key() == key) {
+            m_tabs->setCurrentIndex(i);
+            return true;
+        }
+    return false;
+}
+
+TabPage* MainWindow::tab(const QString& key) const
+{
+    for (TabPage* page : m_pages)
+        if (page->key() == key)
+            return page;
+    return nullptr;
+}
+
+TabPage* MainWindow::currentTab() const
+{
+    const int index = m_tabs->currentIndex();
+    return index >= 0 && index < m_pages.size() ? m_pages[index] : nullptr;
+}
+
+FrogTab* MainWindow::frogTab() const { return qobject_cast<FrogTab*>(tab(QStringLiteral("frog"))); }
+
+bool MainWindow::loadExample(const QString& id)
+{
+    const WorkedExample* example = findWorkedExample(id.toStdString());
+    if (!example)
+        return false;
+    TabPage* page = tab(QString::fromStdString(example->tab));
+    if (!page || !page->loadExample(*example))
+        return false;
+    showTab(page->key());
+    showMessage(tr("Loaded Ex %1 of the thesis.").arg(id));
+    return true;
+}
+
+// ---------------------------------------------------------------- actions and menus
+
+void MainWindow::createActions()
+{
+    m_new = new QAction(this);
+    m_new->setShortcut(QKeySequence::New);
+    connect(m_new, &QAction::triggered, this, &MainWindow::newDocument);
+    m_open = new QAction(this);
+    m_open->setShortcut(QKeySequence::Open);
+    connect(m_open, &QAction::triggered, this, &MainWindow::openDialog);
+    m_save = new QAction(this);
+    m_save->setShortcut(QKeySequence::Save);
+    connect(m_save, &QAction::triggered, this, [this] { saveDialog(false); });
+    m_saveAs = new QAction(this);
+    m_saveAs->setShortcut(QKeySequence::SaveAs);
+    connect(m_saveAs, &QAction::triggered, this, [this] { saveDialog(true); });
+    m_quit = new QAction(this);
+    m_quit->setShortcut(QKeySequence::Quit);
+    connect(m_quit, &QAction::triggered, this, &QWidget::close);
+
+    m_exportPng = new QAction(this);
+    m_exportPng->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+    connect(m_exportPng, &QAction::triggered, this, [this] { exportDialog(QStringLiteral("png")); });
+    m_exportSvg = new QAction(this);
+    connect(m_exportSvg, &QAction::triggered, this, [this] { exportDialog(QStringLiteral("svg")); });
+    m_exportPdf = new QAction(this);
+    connect(m_exportPdf, &QAction::triggered, this, [this] { exportDialog(QStringLiteral("pdf")); });
+    m_exportCsv = new QAction(this);
+    connect(m_exportCsv, &QAction::triggered, this, [this] { exportDialog(QStringLiteral("csv")); });
+    m_exportTikz = new QAction(this);
+    connect(m_exportTikz, &QAction::triggered, this, [this] { exportDialog(QStringLiteral("tikz")); });
+    m_exportFrames = new QAction(this);
+    connect(m_exportFrames, &QAction::triggered, this, &MainWindow::exportFramesDialog);
+
+    m_undo = m_undoGroup->createUndoAction(this);
+    m_undo->setShortcut(QKeySequence::Undo);
+    m_redo = m_undoGroup->createRedoAction(this);
+    m_redo->setShortcuts({QKeySequence::Redo, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)});
+
+    m_reportsAction = new QAction(this);
+    m_reportsAction->setCheckable(true);
+    m_reportsAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
+    connect(m_reportsAction, &QAction::toggled, this, &MainWindow::setWorkPrecisionVisible);
+
+    m_presentationAction = new QAction(this);
+    m_presentationAction->setCheckable(true);
+    m_presentationAction->setShortcuts({QKeySequence(Qt::Key_F11), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P)});
+    connect(m_presentationAction, &QAction::toggled, this, [this](bool on) { setPresentation(on); });
+    m_zoomIn = new QAction(this);
+    m_zoomIn->setShortcuts({QKeySequence::ZoomIn, QKeySequence(Qt::CTRL | Qt::Key_Equal)});
+    connect(m_zoomIn, &QAction::triggered, this, [this] {
+        if (TabPage* t = currentTab())
+            t->zoom(1.25);
+    });
+    m_zoomOut = new QAction(this);
+    m_zoomOut->setShortcut(QKeySequence::ZoomOut);
+    connect(m_zoomOut, &QAction::triggered, this, [this] {
+        if (TabPage* t = currentTab())
+            t->zoom(1 / 1.25);
+    });
+    m_fit = new QAction(this);
+    m_fit->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_0));
+    connect(m_fit, &QAction::triggered, this, [this] {
+        if (TabPage* t = currentTab())
+            t->fitView();
+    });
+    for (int i = 0; i < m_pages.size(); ++i) {
+        auto* a = new QAction(this);
+        a->setShortcut(QKeySequence(Qt::CTRL | (Qt::Key_1 + i)));
+        connect(a, &QAction::triggered, this, [this, i] { m_tabs->setCurrentIndex(i); });
+        m_tabActions.push_back(a);
+    }
+
+    auto* languages = new QActionGroup(this);
+    m_catalan = new QAction(QStringLiteral("Català"), languages);
+    m_english = new QAction(QStringLiteral("English"), languages);
+    for (QAction* a : {m_catalan, m_english})
+        a->setCheckable(true);
+    (currentLanguage() == QLatin1String("ca") ? m_catalan : m_english)->setChecked(true);
+    connect(m_catalan, &QAction::triggered, this, [] { setLanguage(QStringLiteral("ca")); });
+    connect(m_english, &QAction::triggered, this, [] { setLanguage(QStringLiteral("en")); });
+
+    for (const char* id : kExampleIds) {
+        auto* a = new QAction(this);
+        const QString key = QString::fromLatin1(id);
+        a->setData(key);
+        connect(a, &QAction::triggered, this, [this, key] {
+            if (!loadExample(key))
+                showMessage(tr("Ex %1 could not be loaded.").arg(key));
+        });
+        m_exampleActions.push_back(a);
+    }
+
+    m_guide = new QAction(this);
+    m_guide->setShortcut(QKeySequence::HelpContents);
+    connect(m_guide, &QAction::triggered, this, &MainWindow::showGuide);
+    m_about = new QAction(this);
+    connect(m_about, &QAction::triggered, this, &MainWindow::showAbout);
+}
+
+void MainWindow::createMenus()
+{
+    m_fileMenu = menuBar()->addMenu(QString());
+    m_fileMenu->addAction(m_new);
+    m_fileMenu->addAction(m_open);
+    m_recentMenu = m_fileMenu->addMenu(QString());
+    m_fileMenu->addAction(m_save);
+    m_fileMenu->addAction(m_saveAs);
+    m_fileMenu->addSeparator();
+    m_exportMenu = m_fileMenu->addMenu(QString());
+    for (QAction* a : {m_exportPng, m_exportSvg, m_exportPdf, m_exportCsv, m_exportTikz})
+        m_exportMenu->addAction(a);
+    m_exportMenu->addSeparator();
+    m_exportMenu->addAction(m_exportFrames);
+    m_fileMenu->addSeparator();
+    m_fileMenu->addAction(m_quit);
+
+    m_editMenu = menuBar()->addMenu(QString());
+    m_editMenu->addAction(m_undo);
+    m_editMenu->addAction(m_redo);
+
+    m_viewMenu = menuBar()->addMenu(QString());
+    m_viewMenu->addAction(m_presentationAction);
+    m_viewMenu->addAction(m_reportsAction);
+    m_viewMenu->addSeparator();
+    m_viewMenu->addAction(m_zoomIn);
+    m_viewMenu->addAction(m_zoomOut);
+    m_viewMenu->addAction(m_fit);
+    m_viewMenu->addSeparator();
+    for (QAction* a : m_tabActions)
+        m_viewMenu->addAction(a);
+    m_viewMenu->addSeparator();
+    m_languageMenu = m_viewMenu->addMenu(QString());
+    m_languageMenu->addAction(m_catalan);
+    m_languageMenu->addAction(m_english);
+
+    m_examplesMenu = menuBar()->addMenu(QString());
+    for (QAction* a : m_exampleActions)
+        m_examplesMenu->addAction(a);
+
+    m_helpMenu = menuBar()->addMenu(QString());
+    m_helpMenu->addAction(m_guide);
+    m_helpMenu->addAction(m_about);
+}
+
+void MainWindow::retranslate()
+{
+    m_fileMenu->setTitle(tr("&File"));
+    m_new->setText(tr("&New"));
+    m_open->setText(tr("&Open…"));
+    m_recentMenu->setTitle(tr("Open &Recent"));
+    m_save->setText(tr("&Save"));
+    m_saveAs->setText(tr("Save &As…"));
+    m_exportMenu->setTitle(tr("&Export"));
+    m_exportPng->setText(tr("PNG image…"));
+    m_exportSvg->setText(tr("SVG drawing…"));
+    m_exportPdf->setText(tr("PDF document…"));
+    m_exportCsv->setText(tr("CSV data…"));
+    m_exportTikz->setText(tr("TikZ picture for LaTeX…"));
+    m_exportFrames->setText(tr("Frog animation as PNG frames…"));
+    m_quit->setText(tr("&Quit"));
+    m_editMenu->setTitle(tr("&Edit"));
+    m_undo->setText(tr("&Undo"));
+    m_redo->setText(tr("&Redo"));
+    m_viewMenu->setTitle(tr("&View"));
+    m_presentationAction->setText(tr("&Presentation mode"));
+    m_presentationAction->setToolTip(tr("Full screen, larger text and thicker lines for the classroom."));
+    m_reportsAction->setText(tr("&Error against run time"));
+    m_reportsAction->setToolTip(tr("Show, below the tab, how accurate each numerical method is for the time it "
+                                   "takes (work-precision plot)."));
+    m_zoomIn->setText(tr("Zoom &in"));
+    m_zoomOut->setText(tr("Zoom &out"));
+    m_fit->setText(tr("&Fit to view"));
+    for (int i = 0; i < m_pages.size(); ++i) {
+        m_tabActions[i]->setText(tr("Show %1").arg(m_pages[i]->title()));
+        m_tabs->setTabText(i, m_pages[i]->title());
+    }
+    m_languageMenu->setTitle(tr("&Language"));
+    m_examplesMenu->setTitle(tr("E&xamples"));
+    const QString exampleTitles[] = {
+        tr("Ex 2.1 — Cubic spline through four points (Def 2.3)"),
+        tr("Ex 2.2 — De Casteljau, degree 4"),
+        tr("Ex 2.3 — De Casteljau, a closed curve of degree 4"),
+        tr("Ex 2.4 — Bernstein polynomials up to degree 5"),
+        tr("Ex 2.5 — Ex 2.2's curve in the Bernstein basis"),
+        tr("Ex 2.6 — Ex 2.3's curve in the Bernstein basis"),
+        tr("Ex 2.7 — Least squares, degree 2, uniform parameters"),
+        tr("Ex 2.8 — Least squares, degree 3, uniform parameters"),
+        tr("Ex 2.9 — Least squares, degree 2, chord lengths"),
+        tr("Ex 2.10 — Least squares, degree 3, chord lengths"),
+        tr("Ex 2.11 — A Catmull-Rom segment for τ = 0, 1/2, 2"),
+        tr("Ex 2.12 — Blending functions for several tensions"),
+        tr("Ex 2.13 — Catmull-Rom curve, cyclic and open"),
+    };
+    for (int i = 0; i < m_exampleActions.size(); ++i)
+        m_exampleActions[i]->setText(exampleTitles[i]);
+    m_helpMenu->setTitle(tr("&Help"));
+    m_guide->setText(tr("&User guide"));
+    m_about->setText(tr("&About Granota"));
+    m_cursorLabel->setToolTip(tr("Position of the mouse in the plane"));
+    updateTitle();
+    rebuildRecentMenu();
+}
+
+void MainWindow::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) {
+        retranslate();
+        const bool catalan = currentLanguage() == QLatin1String("ca");
+        m_catalan->setChecked(catalan);
+        m_english->setChecked(!catalan);
+    }
+    QMainWindow::changeEvent(event);
+}
+
+// ---------------------------------------------------------------- documents
+
+void MainWindow::setModified(bool modified)
+{
+    m_modified = modified;
+    if (modified)
+        m_autosaveDirty = true;
+    updateTitle();
+}
+
+void MainWindow::updateTitle()
+{
+    const QString name = m_file.isEmpty() ? tr("Untitled") : QFileInfo(m_file).fileName();
+    setWindowTitle(tr("%1%2 — Granota").arg(name, m_modified ? QStringLiteral("*") : QString()));
+}
+
+bool MainWindow::maybeSave()
+{
+    if (!m_modified)
+        return true;
+    const auto answer = QMessageBox::warning(this, tr("Unsaved changes"),
+                                             tr("The document has unsaved changes. Save them?"),
+                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save)
+        return saveDialog(false);
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::newDocument()
+{
+    if (!maybeSave())
+        return;
+    // A fresh window's state is the blank document: every tab back to its defaults.
+    MainWindow blank;
+    const QByteArray defaults = serializeDocument(blank.tabs(), QStringLiteral("decasteljau"));
+    QString error, current;
+    if (loadDocument(defaults, m_pages, &error, &current)) {
+        for (TabPage* page : m_pages)
+            page->undoStack()->clear();
+        m_file.clear();
+        setModified(false);
+        showTab(current);
+    }
+}
+
+bool MainWindow::openFile(const QString& file, QString* error)
+{
+    const std::optional<QByteArray> bytes = readUserFile(file, error);
+    if (!bytes)
+        return false;
+    QString current;
+    QApplication::setOverrideCursor(Qt::WaitCursor); // the largest documents take a second or two
+    const bool loaded = loadDocument(*bytes, m_pages, error, &current);
+    QApplication::restoreOverrideCursor();
+    if (!loaded)
+        return false;
+    for (TabPage* page : m_pages)
+        page->undoStack()->clear();
+    m_file = QFileInfo(file).absoluteFilePath();
+    setModified(false);
+    m_autosaveDirty = false;
+    m_autosave->remove(); // the window's work is now the file's
+    showTab(current);
+    rememberRecent(file);
+    return true;
+}
+
+bool MainWindow::saveFile(const QString& file, QString* error)
+{
+    const TabPage* current = currentTab();
+    const QByteArray bytes = serializeDocument(m_pages, current ? current->key() : QString());
+    QSaveFile out(file);
+    if (!out.open(QIODevice::WriteOnly) || out.write(bytes) != bytes.size() || !out.commit()) {
+        *error = tr("Cannot write “%1”.").arg(file);
+        return false;
+    }
+    m_file = QFileInfo(file).absoluteFilePath();
+    setModified(false);
+    m_autosaveDirty = false;
+    m_autosave->remove();
+    rememberRecent(file);
+    return true;
+}
+
+void MainWindow::openDialog()
+{
+    if (!maybeSave())
+        return;
+    const QString file = QFileDialog::getOpenFileName(this, tr("Open document"), QString(),
+                                                      tr("Granota documents (*.granota);;All files (*)"));
+    if (file.isEmpty())
+        return;
+    QString error;
+    if (!openFile(file, &error))
+        QMessageBox::warning(this, tr("Open document"), error);
+}
+
+bool MainWindow::saveDialog(bool saveAs)
+{
+    QString file = m_file;
+    if (saveAs || file.isEmpty()) {
+        file = QFileDialog::getSaveFileName(this, tr("Save document"), QString(),
+                                            tr("Granota documents (*.granota)"));
+        if (file.isEmpty())
+            return false;
+        if (!file.endsWith(QLatin1String(".granota")))
+            file += QLatin1String(".granota");
+    }
+    QString error;
+    if (!saveFile(file, &error)) {
+        QMessageBox::warning(this, tr("Save document"), error);
+        return false;
+    }
+    showMessage(tr("Saved %1").arg(QFileInfo(file).fileName()));
+    return true;
+}
+
+void MainWindow::rememberRecent(const QString& file)
+{
+    QSettings settings;
+    QStringList recent = settings.value(QStringLiteral("recentFiles")).toStringList();
+    const QString path = QFileInfo(file).absoluteFilePath();
+    recent.removeAll(path);
+    recent.prepend(path);
+    while (recent.size() > kMaxRecent)
+        recent.removeLast();
+    settings.setValue(QStringLiteral("recentFiles"), recent);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu()
+{
+    if (!m_recentMenu)
+        return;
+    m_recentMenu->clear();
+    const QStringList recent = QSettings().value(QStringLiteral("recentFiles")).toStringList();
+    for (const QString& file : recent) {
+        m_recentMenu->addAction(QFileInfo(file).fileName(), this, [this, file] {
+            if (!maybeSave())
+                return;
+            QString error;
+            if (!openFile(file, &error))
+                QMessageBox::warning(this, tr("Open document"), error);
+        })->setToolTip(file);
+    }
+    m_recentMenu->setEnabled(!recent.isEmpty());
+}
+
+QString MainWindow::autosaveFile() const { return m_autosave->path(); }
+
+bool MainWindow::autosave()
+{
+    const TabPage* current = currentTab();
+    const QByteArray bytes = serializeAutosave(m_pages, current ? current->key() : QString(), m_file);
+    QString error;
+    if (m_autosave->write(bytes, &error)) {
+        m_autosaveDirty = false;
+        if (!m_autosaveError.isEmpty()) {
+            m_autosaveError.clear();
+            m_autosaveWarning->hide();
+            showMessage(tr("The autosave works again."));
+        }
+        return true;
+    }
+    const bool first = m_autosaveError.isEmpty();
+    m_autosaveError = error;
+    m_autosaveWarning->setText(tr("⚠ Not autosaved: save your work"));
+    m_autosaveWarning->setToolTip(error);
+    m_autosaveWarning->show();
+    if (first) { // say it once, without stopping the lesson: a window that does not block
+        auto* box = new QMessageBox(QMessageBox::Warning, tr("Autosave failed"),
+                                    tr("Granota cannot keep a copy of your unsaved changes: %1\n\n"
+                                       "Save the document (Ctrl+S) to keep them. Granota will keep trying.")
+                                        .arg(error),
+                                    QMessageBox::Ok, this);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->setObjectName(QStringLiteral("autosaveFailed"));
+        box->open();
+    }
+    return false;
+}
+
+QVector<Orphan> MainWindow::recoverableAutosaves() const
+{
+    QVector<Orphan> out;
+    for (const Orphan& orphan : m_autosave->orphans())
+        if (m_file.isEmpty() || orphan.documentFile == m_file)
+            out.push_back(orphan);
+    return out;
+}
+
+MainWindow::RecoveryOutcome MainWindow::recoverAutosave(const QString& orphanPath)
+{
+    RecoveryOutcome outcome;
+    QString error;
+    const std::optional<QByteArray> bytes = readUserFile(orphanPath, &error);
+    Recovery r;
+    if (bytes)
+        r = recoverDocument(*bytes, m_pages);
+    else
+        r.error = error;
+    if (!r.readable || r.recovered.isEmpty()) {
+        // Nothing to take: the file is kept, out of the way of later autosaves.
+        const QString kept = m_autosave->keepAside(orphanPath);
+        const QString reason = r.error.isEmpty() ? tr("no tab's part could be read.") + QLatin1Char('\n') + r.refused.join(QLatin1Char('\n')) : r.error;
+        outcome.message = tr("The autosave could not be recovered: %1\n\nIt is kept as “%2”.")
+                              .arg(reason, QDir::toNativeSeparators(kept.isEmpty() ? orphanPath : kept));
+        return outcome;
+    }
+    for (TabPage* page : m_pages)
+        page->undoStack()->clear();
+    if (!r.documentFile.isEmpty())
+        m_file = r.documentFile; // the work goes back to the document it belongs to
+    setModified(true);
+    showTab(r.currentTab);
+    outcome.recovered = true;
+    // The work is in this window now: write this window's autosave before letting go of the
+    // orphan, and keep the orphan whole if some of it was refused or the write failed.
+    const bool written = autosave();
+    if (r.refused.isEmpty() && written) {
+        Autosave::discard(orphanPath);
+        outcome.complete = true;
+        outcome.message = tr("Recovered the unsaved work of the last session.");
+        return outcome;
+    }
+    const QString kept = m_autosave->keepAside(orphanPath);
+    const QString where = QDir::toNativeSeparators(kept.isEmpty() ? orphanPath : kept);
+    if (r.refused.isEmpty())
+        outcome.message = tr("Recovered the unsaved work of the last session. The autosave is kept as “%1”.").arg(where);
+    else
+        outcome.message = tr("Recovered %1. Not recovered:\n%2\n\nThe whole autosave is kept as “%3”.")
+                              .arg(QLocale().createSeparatedList(r.recovered), r.refused.join(QLatin1Char('\n')), where);
+    return outcome;
+}
+
+void MainWindow::offerRecovery()
+{
+    for (const Orphan& orphan : recoverableAutosaves()) {
+        const QString when = QLocale().toString(orphan.written, QLocale::ShortFormat);
+        const QString question =
+            orphan.documentFile.isEmpty()
+                ? tr("A Granota session was closed without saving its Untitled document (autosaved %1). Recover it?").arg(when)
+                : tr("A Granota session was closed without saving its changes to “%1” (autosaved %2). Recover them?")
+                      .arg(QFileInfo(orphan.documentFile).fileName(), when);
+        QMessageBox box(QMessageBox::Question, tr("Recover unsaved work"), question,
+                        QMessageBox::NoButton, this);
+        QPushButton* recover = box.addButton(tr("&Recover"), QMessageBox::AcceptRole);
+        QPushButton* later = box.addButton(tr("&Keep for later"), QMessageBox::RejectRole);
+        QPushButton* discard = box.addButton(tr("&Discard"), QMessageBox::DestructiveRole);
+        box.setDefaultButton(recover);
+        box.setEscapeButton(later);
+        box.exec();
+        if (box.clickedButton() == discard) {
+            Autosave::discard(orphan.path);
+            continue;
+        }
+        if (box.clickedButton() != recover)
+            continue;
+        const RecoveryOutcome outcome = recoverAutosave(orphan.path);
+        if (outcome.complete)
+            showMessage(outcome.message);
+        else
+            QMessageBox::warning(this, tr("Recover unsaved work"), outcome.message);
+        if (outcome.recovered)
+            return; // the window holds a document now; other autosaves wait for another window
+    }
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    if (!maybeSave()) {
+        event->ignore();
+        return;
+    }
+    m_autosave->remove(); // saved or discarded: this window's copy has done its work
+    event->accept();
+}
+
+// ---------------------------------------------------------------- exports
+
+QString MainWindow::exportCurrent(const QString& format, const QString& file, int dpi)
+{
+    TabPage* page = currentTab();
+    if (!page)
+        return tr("No tab is shown.");
+    const QString title = tr("Granota — %1").arg(page->title());
+    if (format == QLatin1String("png"))
+        return exportPng(*page->exportView(), file, dpi);
+    if (format == QLatin1String("svg"))
+        return exportSvg(*page->exportView(), file, title);
+    if (format == QLatin1String("pdf"))
+        return exportPdf(*page->exportView(), file, title);
+    if (format == QLatin1String("csv"))
+        return writeTextFile(file, page->csv());
+    if (format == QLatin1String("tikz"))
+        return writeTextFile(file, page->tikz());
+    return tr("Unknown export format “%1”.").arg(format);
+}
+
+void MainWindow::exportDialog(const QString& format)
+{
+    TabPage* page = currentTab();
+    if (!page)
+        return;
+    int dpi = 96;
+    if (format == QLatin1String("png")) {
+        bool ok = false;
+        const QStringList choices = {QStringLiteral("96"), QStringLiteral("150"), QStringLiteral("300"),
+                                     QStringLiteral("600")};
+        const QString choice = QInputDialog::getItem(this, tr("Export PNG"),
+                                                     tr("Resolution (dots per inch; 300 for print):"), choices, 2,
+                                                     false, &ok);
+        if (!ok)
+            return;
+        dpi = choice.toInt();
+    }
+    const QString extension = format == QLatin1String("tikz") ? QStringLiteral("tex") : format;
+    const QString file = QFileDialog::getSaveFileName(
+        this, tr("Export"), page->key() + QLatin1Char('.') + extension,
+        tr("%1 files (*.%2)").arg(format.toUpper(), extension));
+    if (file.isEmpty())
+        return;
+    const QString error = exportCurrent(format, file, dpi);
+    if (error.isEmpty())
+        showMessage(tr("Exported %1").arg(QFileInfo(file).fileName()));
+    else
+        QMessageBox::warning(this, tr("Export"), error);
+}
+
+void MainWindow::exportFramesDialog()
+{
+    FrogTab* frog = frogTab();
+    bool ok = false;
+    const int frames = QInputDialog::getInt(this, tr("Frog animation"), tr("Number of frames (60 per second):"),
+                                            120, 1, 3600, 1, &ok);
+    if (!ok)
+        return;
+    const QString directory = QFileDialog::getExistingDirectory(this, tr("Folder for the frames"));
+    if (directory.isEmpty())
+        return;
+    const QString error = frog->exportFrames(directory, frames);
+    if (error.isEmpty())
+        showMessage(tr("Wrote %n frames.", nullptr, frames));
+    else
+        QMessageBox::warning(this, tr("Frog animation"), error);
+}
+
+// ---------------------------------------------------------------- classroom
+
+void MainWindow::setPresentation(bool on, bool fullScreen)
+{
+    if (on == m_presentation)
+        return;
+    m_presentation = on;
+    if (m_presentationAction->isChecked() != on)
+        m_presentationAction->setChecked(on);
+    QFont font = m_normalFont;
+    if (on)
+        font.setPointSizeF(m_normalFont.pointSizeF() * kPresentationFont);
+    QApplication::setFont(font);
+    for (TabPage* page : m_pages)
+        page->setPresentation(on);
+    for (WorkPrecisionPanel* report : m_reports)
+        report->setPresentation(on);
+    if (on && fullScreen)
+        showFullScreen();
+    else if (!on && isFullScreen())
+        showNormal();
+}
+
+WorkPrecisionPanel* MainWindow::workPrecisionPanel(const QString& key) const
+{
+    for (int i = 0; i < m_pages.size(); ++i)
+        if (m_pages[i]->key() == key)
+            return m_reports[i];
+    return nullptr;
+}
+
+void MainWindow::setWorkPrecisionVisible(bool visible)
+{
+    const int index = m_tabs->currentIndex();
+    if (index < 0)
+        return;
+    m_reports[index]->setVisible(visible);
+    if (visible) {
+        const int total = m_splitters[index]->height();
+        m_splitters[index]->setSizes({total * 3 / 5, total * 2 / 5});
+    }
+    if (m_reportsAction->isChecked() != visible)
+        m_reportsAction->setChecked(visible);
+}
+
+bool MainWindow::workPrecisionVisible() const
+{
+    const int index = m_tabs->currentIndex();
+    return index >= 0 && !m_reports[index]->isHidden();
+}
+
+void MainWindow::showMessage(const QString& text) { statusBar()->showMessage(text, 8000); }
+
+void MainWindow::showGuide()
+{
+    QMessageBox box(this);
+    box.setWindowTitle(tr("User guide"));
+    box.setTextFormat(Qt::RichText);
+    box.setText(tr("<h3>Granota in five tabs</h3>"
+                   "<p><b>De Casteljau</b> (§2.1.1): drag the control points, move t, watch every level.</p>"
+                   "<p><b>Bernstein</b> (§2.1.2): the basis polynomials and their weights at the same t.</p>"
+                   "<p><b>Fitting</b> (§2.1.3): a Bézier curve through data by least squares.</p>"
+                   "<p><b>Catmull-Rom</b> (§2.2): curves through the points, one per tension τ.</p>"
+                   "<p><b>Frog</b> (chapter 4): the soft body, stage by stage.</p>"
+                   "<p>Double-click to add a point, Delete to remove it, arrows to nudge it, "
+                   "Ctrl+Z to undo. The Examples menu loads every worked example of chapter 2. "
+                   "F11 switches presentation mode.</p>"));
+    box.exec();
+}
+
+void MainWindow::showAbout()
+{
+    QMessageBox::about(this, tr("About Granota"),
+                       tr("<h3>Granota</h3><p>Splines and soft bodies for the classroom, from the thesis "
+                          "“Animació procedimental per a cossos tous”.</p>"));
+}
+
+} // namespace granota::ui
