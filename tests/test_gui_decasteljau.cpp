@@ -5,7 +5,7 @@
 #include "cli_runner.h"
 
 #include "core/curves/bezier/de_casteljau.h"
-#include "core/exact/polynomial_text.h"
+#include "core/base/number_format.h"
 #include "core/exact/rational.h"
 #include "core/io/worked_examples.h"
 #include "ui/common/curve_canvas.h"

@@ -4,7 +4,7 @@
 #include "app/cli/command.h"
 #include "app/cli/scene_options.h"
 
-#include "core/exact/polynomial_text.h"
+#include "core/base/number_format.h"
 
 #include <chrono>
 #include <cmath>

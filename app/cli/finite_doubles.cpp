@@ -1,6 +1,6 @@
 #include "app/cli/finite_doubles.h"
 
-#include "core/exact/polynomial_text.h"
+#include "core/base/number_format.h"
 
 #include <cmath>
 

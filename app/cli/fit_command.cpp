@@ -4,7 +4,7 @@
 #include "app/cli/finite_doubles.h"
 
 #include "core/curves/fitting/least_squares_fit.h"
-#include "core/exact/polynomial_text.h"
+#include "core/base/number_format.h"
 
 #include <sstream>
 

@@ -4,7 +4,7 @@
 #include "app/cli/scene_options.h"
 
 #include "core/base/display_text.h"
-#include "core/exact/polynomial_text.h"
+#include "core/base/number_format.h"
 #include "core/softbody/simulation_trace.h"
 
 #include <cerrno>

@@ -5,6 +5,7 @@
 
 #include "core/exact/polynomial.h"
 #include "core/exact/rational.h"
+#include "core/base/number_format.h"
 
 #include <optional>
 #include <string>
@@ -24,13 +25,5 @@ std::string toText(const Vec2<Polynomial<double>>& p, const std::string& var = "
 /// integers, fractions or decimals ("2 - 6t - t^2", "-7/2 s^3 + 6s^2", "t^4"), in any order,
 /// repeated powers added. nullopt for anything else.
 std::optional<Polynomial<Rational>> parsePolynomial(std::string_view text, char var = 't');
-
-/// Shortest text that reads back as the same double ("0.1", "1e-09", "-3").
-/// Every number formatter here ignores the C locale (LC_NUMERIC): a point, always.
-std::string formatDouble(double v);
-/// `digits` significant digits, as printf's "%.*g" writes them in the C locale ("1.5e-08").
-std::string formatSignificant(double v, int digits);
-/// `decimals` digits after the point, as printf's "%.*f" writes them in the C locale.
-std::string formatFixed(double v, int decimals);
 
 } // namespace granota

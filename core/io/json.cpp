@@ -1,6 +1,6 @@
 #include "core/io/json.h"
 
-#include "core/exact/polynomial_text.h"
+#include "core/base/number_format.h"
 
 #include <nlohmann/json.hpp>
 

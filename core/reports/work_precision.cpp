@@ -1,7 +1,7 @@
 #include "core/reports/work_precision.h"
 #include "core/base/display_text.h"
 
-#include "core/exact/polynomial_text.h"
+#include "core/base/number_format.h"
 #include "core/reports/work_precision_reports.h"
 
 #include <cmath>

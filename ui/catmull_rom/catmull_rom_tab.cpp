@@ -1,7 +1,7 @@
 #include "ui/catmull_rom/catmull_rom_tab.h"
 #include "ui/common/number_text.h"
 
-#include "core/exact/polynomial_text.h"
+#include "core/base/number_format.h"
 #include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
 #include "ui/catmull_rom/catmull_rom_commands.h"

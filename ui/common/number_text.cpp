@@ -1,6 +1,6 @@
 #include "ui/common/number_text.h"
 
-#include "core/exact/polynomial_text.h"
+#include "core/base/number_format.h"
 #include "ui/shell/language.h"
 
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "ui/common/point_table.h"
 
-#include "core/exact/polynomial_text.h"
+#include "core/base/number_format.h"
 #include "core/exact/rational.h"
 #include "core/exact/rational_approximation.h"
 #include "ui/common/number_text.h"

@@ -1,7 +1,7 @@
 #include "core/curves/fitting/least_squares_fit.h"
 
 #include "core/curves/fitting/bernstein_block.h"
-#include "core/exact/polynomial_text.h"
+#include "core/base/number_format.h"
 #include "core/curves/fitting/tall_skinny_qr.h"
 
 #include <Eigen/Cholesky>

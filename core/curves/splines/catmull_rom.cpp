@@ -1,6 +1,6 @@
 #include "core/curves/splines/catmull_rom.h"
 
-#include "core/exact/polynomial_text.h"
+#include "core/base/number_format.h"
 
 #include <algorithm>
 #include <cassert>

@@ -1,6 +1,6 @@
 #include "core/curves/splines/continuity_check.h"
 
-#include "core/exact/polynomial_text.h"
+#include "core/base/number_format.h"
 
 namespace granota {
 

@@ -3,7 +3,7 @@
 #include "core/base/display_text.h"
 #include "core/exact/rational.h"
 #include "core/softbody/scenes/scene_files.h"
-#include "core/exact/polynomial_text.h"
+#include "core/base/number_format.h"
 #include "core/softbody/scenes/scene_layout.h"
 #include "core/softbody/seed/stage_body.h"
 

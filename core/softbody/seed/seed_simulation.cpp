@@ -2,7 +2,7 @@
 // §4.16, and §5.2 without collisions, which the seed never had), and its pendulums
 // (§4.13–4.15). Single precision, as Processing computes: with the thesis's constants the
 // frog reproduces the reference trace bit for bit.
-#include "core/softbody/seed/joint_chain.h"
+#include "core/softbody/seed/follow_chain.h"
 #include "core/softbody/polygon_area.h"
 #include "core/softbody/regular_polygon.h"
 #include "core/softbody/seed/seed_frog.h"
@@ -205,7 +205,7 @@ public:
         if (s.chain.empty())
             return makeError(ErrorCode::InvalidInput, "scene '" + s.name + "' needs a chain of link lengths");
         if (!s.has("gravity")) { // §4.14: kinematic
-            m_chain = std::make_unique<JointChain>(m_clau, s.chain);
+            m_chain = std::make_unique<FollowChain>(m_clau, s.chain);
             return true;
         }
         if (s.chain.size() != 2)
@@ -278,7 +278,7 @@ protected:
 private:
     Point m_clau;
     std::unique_ptr<SeedLeg<Real>> m_leg;
-    std::unique_ptr<JointChain> m_chain;
+    std::unique_ptr<FollowChain> m_chain;
 };
 
 } // namespace

@@ -1,5 +1,5 @@
 #pragma once
-/// \file joint_chain.h
+/// \file follow_chain.h
 /// The revised pendulum of §4.14: a chain of joints whose first joint (the "clau") is put
 /// where it is wanted each step; then, one by one from the clau outwards, each joint is
 /// put back at its distance from the previous (already corrected) joint, along the line
@@ -11,10 +11,10 @@
 
 namespace granota {
 
-class JointChain {
+class FollowChain {
 public:
     /// Joints start in a horizontal line to the right of `clau`; lengths ≥ 0.
-    JointChain(Point clau, std::vector<double> lengths);
+    FollowChain(Point clau, std::vector<double> lengths);
     /// §4.14: move the clau, then correct every following joint in order.
     void follow(Point clau);
     const std::vector<Point>& joints() const { return m_joints; }

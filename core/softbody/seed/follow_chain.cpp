@@ -1,17 +1,17 @@
-#include "core/softbody/seed/joint_chain.h"
+#include "core/softbody/seed/follow_chain.h"
 
 #include <cmath>
 
 namespace granota {
 
-JointChain::JointChain(Point clau, std::vector<double> lengths) : m_lengths(std::move(lengths))
+FollowChain::FollowChain(Point clau, std::vector<double> lengths) : m_lengths(std::move(lengths))
 {
     m_joints.push_back(clau);
     for (double l : m_lengths)
         m_joints.emplace_back(m_joints.back().x + l, m_joints.back().y);
 }
 
-void JointChain::follow(Point clau)
+void FollowChain::follow(Point clau)
 {
     if (!std::isfinite(clau.x) || !std::isfinite(clau.y))
         return;
