@@ -4,20 +4,17 @@
 #include "ui/bernstein/bernstein_tab.h"
 #include "ui/catmull_rom/catmull_rom_tab.h"
 #include "ui/decasteljau/decasteljau_tab.h"
-#include "ui/shell/document.h"
 #include "ui/shell/exporter.h"
 #include "ui/fit/fit_tab.h"
 #include "ui/frog/frog_tab.h"
 #include "ui/shell/language.h"
 #include "ui/shell/tab_page.h"
-#include "ui/shell/user_file.h"
 #include "ui/common/work_precision_panel.h"
 
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
-#include <QDir>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -25,14 +22,10 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QPushButton>
-#include <QSaveFile>
-#include <QSettings>
 #include <QSplitter>
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTabWidget>
-#include <QTimer>
 #include <QUndoGroup>
 #include <QUndoStack>
 
@@ -53,8 +46,6 @@ std::vector<std::string> reportsOf(const QString& key)
     return {"integrators", "soft-body"};
 }
 
-constexpr int kMaxRecent = 8;
-constexpr int kAutosaveMs = 20000;
 constexpr double kPresentationFont = 1.5; ///< font scale in presentation mode
 const char* const kExampleIds[] = {"2.1", "2.2", "2.3", "2.4", "2.5", "2.6", "2.7",
                                    "2.8", "2.9", "2.10", "2.11", "2.12", "2.13"};
@@ -83,7 +74,6 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
         m_reports.push_back(report);
         m_tabs->addTab(splitter, page->title());
         m_undoGroup->addStack(page->undoStack());
-        connect(page, &TabPage::documentChanged, this, [this] { setModified(true); });
         connect(page, &TabPage::statusMessage, this, &MainWindow::showMessage);
     }
     m_tabs->setDocumentMode(true);
@@ -102,20 +92,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
 
     createActions();
     createMenus();
-    rebuildRecentMenu();
 
-    m_autosaveWarning = new QLabel(this);
-    m_autosaveWarning->setStyleSheet(QStringLiteral("QLabel { color: #b00020; font-weight: bold; }"));
-    m_autosaveWarning->hide();
-    statusBar()->addPermanentWidget(m_autosaveWarning);
-    m_autosave = std::make_unique<Autosave>();
-    m_autosaveTimer = new QTimer(this);
-    m_autosaveTimer->setInterval(kAutosaveMs);
-    connect(m_autosaveTimer, &QTimer::timeout, this, [this] {
-        if (m_autosaveDirty)
-            autosave();
-    });
-    m_autosaveTimer->start();
+    m_document = new DocumentController(this, m_recentMenu);
+    connect(m_document, &DocumentController::message, this, &MainWindow::showMessage);
 
     resize(1280, 800);
     retranslate();
@@ -170,16 +149,16 @@ void MainWindow::createActions()
 {
     m_new = new QAction(this);
     m_new->setShortcut(QKeySequence::New);
-    connect(m_new, &QAction::triggered, this, &MainWindow::newDocument);
+    connect(m_new, &QAction::triggered, this, [this] { m_document->newDocument(); });
     m_open = new QAction(this);
     m_open->setShortcut(QKeySequence::Open);
-    connect(m_open, &QAction::triggered, this, &MainWindow::openDialog);
+    connect(m_open, &QAction::triggered, this, [this] { m_document->openDialog(); });
     m_save = new QAction(this);
     m_save->setShortcut(QKeySequence::Save);
-    connect(m_save, &QAction::triggered, this, [this] { saveDialog(false); });
+    connect(m_save, &QAction::triggered, this, [this] { m_document->saveDialog(false); });
     m_saveAs = new QAction(this);
     m_saveAs->setShortcut(QKeySequence::SaveAs);
-    connect(m_saveAs, &QAction::triggered, this, [this] { saveDialog(true); });
+    connect(m_saveAs, &QAction::triggered, this, [this] { m_document->saveDialog(true); });
     m_quit = new QAction(this);
     m_quit->setShortcut(QKeySequence::Quit);
     connect(m_quit, &QAction::triggered, this, &QWidget::close);
@@ -364,8 +343,7 @@ void MainWindow::retranslate()
     m_guide->setText(tr("&User guide"));
     m_about->setText(tr("&About Granota"));
     m_cursorLabel->setToolTip(tr("Position of the mouse in the plane"));
-    updateTitle();
-    rebuildRecentMenu();
+    m_document->retranslate();
 }
 
 void MainWindow::changeEvent(QEvent* event)
@@ -379,281 +357,14 @@ void MainWindow::changeEvent(QEvent* event)
     QMainWindow::changeEvent(event);
 }
 
-// ---------------------------------------------------------------- documents
-
-void MainWindow::setModified(bool modified)
-{
-    m_modified = modified;
-    if (modified)
-        m_autosaveDirty = true;
-    updateTitle();
-}
-
-void MainWindow::updateTitle()
-{
-    const QString name = m_file.isEmpty() ? tr("Untitled") : QFileInfo(m_file).fileName();
-    setWindowTitle(tr("%1%2 — Granota").arg(name, m_modified ? QStringLiteral("*") : QString()));
-}
-
-bool MainWindow::maybeSave()
-{
-    if (!m_modified)
-        return true;
-    const auto answer = QMessageBox::warning(this, tr("Unsaved changes"),
-                                             tr("The document has unsaved changes. Save them?"),
-                                             QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
-    if (answer == QMessageBox::Save)
-        return saveDialog(false);
-    return answer == QMessageBox::Discard;
-}
-
-void MainWindow::newDocument()
-{
-    if (!maybeSave())
-        return;
-    // A fresh window's state is the blank document: every tab back to its defaults.
-    MainWindow blank;
-    const QByteArray defaults = serializeDocument(blank.tabs(), QStringLiteral("decasteljau"));
-    QString error, current;
-    if (loadDocument(defaults, m_pages, &error, &current)) {
-        for (TabPage* page : m_pages)
-            page->undoStack()->clear();
-        m_file.clear();
-        setModified(false);
-        showTab(current);
-    }
-}
-
-bool MainWindow::openFile(const QString& file, QString* error)
-{
-    const std::optional<QByteArray> bytes = readUserFile(file, error);
-    if (!bytes)
-        return false;
-    QString current;
-    QApplication::setOverrideCursor(Qt::WaitCursor); // the largest documents take a second or two
-    const bool loaded = loadDocument(*bytes, m_pages, error, &current);
-    QApplication::restoreOverrideCursor();
-    if (!loaded)
-        return false;
-    for (TabPage* page : m_pages)
-        page->undoStack()->clear();
-    m_file = QFileInfo(file).absoluteFilePath();
-    setModified(false);
-    m_autosaveDirty = false;
-    m_autosave->remove(); // the window's work is now the file's
-    showTab(current);
-    rememberRecent(file);
-    return true;
-}
-
-bool MainWindow::saveFile(const QString& file, QString* error)
-{
-    const TabPage* current = currentTab();
-    const QByteArray bytes = serializeDocument(m_pages, current ? current->key() : QString());
-    QSaveFile out(file);
-    if (!out.open(QIODevice::WriteOnly) || out.write(bytes) != bytes.size() || !out.commit()) {
-        *error = tr("Cannot write “%1”.").arg(file);
-        return false;
-    }
-    m_file = QFileInfo(file).absoluteFilePath();
-    setModified(false);
-    m_autosaveDirty = false;
-    m_autosave->remove();
-    rememberRecent(file);
-    return true;
-}
-
-void MainWindow::openDialog()
-{
-    if (!maybeSave())
-        return;
-    const QString file = QFileDialog::getOpenFileName(this, tr("Open document"), QString(),
-                                                      tr("Granota documents (*.granota);;All files (*)"));
-    if (file.isEmpty())
-        return;
-    QString error;
-    if (!openFile(file, &error))
-        QMessageBox::warning(this, tr("Open document"), error);
-}
-
-bool MainWindow::saveDialog(bool saveAs)
-{
-    QString file = m_file;
-    if (saveAs || file.isEmpty()) {
-        file = QFileDialog::getSaveFileName(this, tr("Save document"), QString(),
-                                            tr("Granota documents (*.granota)"));
-        if (file.isEmpty())
-            return false;
-        if (!file.endsWith(QLatin1String(".granota")))
-            file += QLatin1String(".granota");
-    }
-    QString error;
-    if (!saveFile(file, &error)) {
-        QMessageBox::warning(this, tr("Save document"), error);
-        return false;
-    }
-    showMessage(tr("Saved %1").arg(QFileInfo(file).fileName()));
-    return true;
-}
-
-void MainWindow::rememberRecent(const QString& file)
-{
-    QSettings settings;
-    QStringList recent = settings.value(QStringLiteral("recentFiles")).toStringList();
-    const QString path = QFileInfo(file).absoluteFilePath();
-    recent.removeAll(path);
-    recent.prepend(path);
-    while (recent.size() > kMaxRecent)
-        recent.removeLast();
-    settings.setValue(QStringLiteral("recentFiles"), recent);
-    rebuildRecentMenu();
-}
-
-void MainWindow::rebuildRecentMenu()
-{
-    if (!m_recentMenu)
-        return;
-    m_recentMenu->clear();
-    const QStringList recent = QSettings().value(QStringLiteral("recentFiles")).toStringList();
-    for (const QString& file : recent) {
-        m_recentMenu->addAction(QFileInfo(file).fileName(), this, [this, file] {
-            if (!maybeSave())
-                return;
-            QString error;
-            if (!openFile(file, &error))
-                QMessageBox::warning(this, tr("Open document"), error);
-        })->setToolTip(file);
-    }
-    m_recentMenu->setEnabled(!recent.isEmpty());
-}
-
-QString MainWindow::autosaveFile() const { return m_autosave->path(); }
-
-bool MainWindow::autosave()
-{
-    const TabPage* current = currentTab();
-    const QByteArray bytes = serializeAutosave(m_pages, current ? current->key() : QString(), m_file);
-    QString error;
-    if (m_autosave->write(bytes, &error)) {
-        m_autosaveDirty = false;
-        if (!m_autosaveError.isEmpty()) {
-            m_autosaveError.clear();
-            m_autosaveWarning->hide();
-            showMessage(tr("The autosave works again."));
-        }
-        return true;
-    }
-    const bool first = m_autosaveError.isEmpty();
-    m_autosaveError = error;
-    m_autosaveWarning->setText(tr("⚠ Not autosaved: save your work"));
-    m_autosaveWarning->setToolTip(error);
-    m_autosaveWarning->show();
-    if (first) { // say it once, without stopping the lesson: a window that does not block
-        auto* box = new QMessageBox(QMessageBox::Warning, tr("Autosave failed"),
-                                    tr("Granota cannot keep a copy of your unsaved changes: %1\n\n"
-                                       "Save the document (Ctrl+S) to keep them. Granota will keep trying.")
-                                        .arg(error),
-                                    QMessageBox::Ok, this);
-        box->setAttribute(Qt::WA_DeleteOnClose);
-        box->setObjectName(QStringLiteral("autosaveFailed"));
-        box->open();
-    }
-    return false;
-}
-
-QVector<Orphan> MainWindow::recoverableAutosaves() const
-{
-    QVector<Orphan> out;
-    for (const Orphan& orphan : m_autosave->orphans())
-        if (m_file.isEmpty() || orphan.documentFile == m_file)
-            out.push_back(orphan);
-    return out;
-}
-
-MainWindow::RecoveryOutcome MainWindow::recoverAutosave(const QString& orphanPath)
-{
-    RecoveryOutcome outcome;
-    QString error;
-    const std::optional<QByteArray> bytes = readUserFile(orphanPath, &error);
-    Recovery r;
-    if (bytes)
-        r = recoverDocument(*bytes, m_pages);
-    else
-        r.error = error;
-    if (!r.readable || r.recovered.isEmpty()) {
-        // Nothing to take: the file is kept, out of the way of later autosaves.
-        const QString kept = m_autosave->keepAside(orphanPath);
-        const QString reason = r.error.isEmpty() ? tr("no tab's part could be read.") + QLatin1Char('\n') + r.refused.join(QLatin1Char('\n')) : r.error;
-        outcome.message = tr("The autosave could not be recovered: %1\n\nIt is kept as “%2”.")
-                              .arg(reason, QDir::toNativeSeparators(kept.isEmpty() ? orphanPath : kept));
-        return outcome;
-    }
-    for (TabPage* page : m_pages)
-        page->undoStack()->clear();
-    if (!r.documentFile.isEmpty())
-        m_file = r.documentFile; // the work goes back to the document it belongs to
-    setModified(true);
-    showTab(r.currentTab);
-    outcome.recovered = true;
-    // The work is in this window now: write this window's autosave before letting go of the
-    // orphan, and keep the orphan whole if some of it was refused or the write failed.
-    const bool written = autosave();
-    if (r.refused.isEmpty() && written) {
-        Autosave::discard(orphanPath);
-        outcome.complete = true;
-        outcome.message = tr("Recovered the unsaved work of the last session.");
-        return outcome;
-    }
-    const QString kept = m_autosave->keepAside(orphanPath);
-    const QString where = QDir::toNativeSeparators(kept.isEmpty() ? orphanPath : kept);
-    if (r.refused.isEmpty())
-        outcome.message = tr("Recovered the unsaved work of the last session. The autosave is kept as “%1”.").arg(where);
-    else
-        outcome.message = tr("Recovered %1. Not recovered:\n%2\n\nThe whole autosave is kept as “%3”.")
-                              .arg(QLocale().createSeparatedList(r.recovered), r.refused.join(QLatin1Char('\n')), where);
-    return outcome;
-}
-
-void MainWindow::offerRecovery()
-{
-    for (const Orphan& orphan : recoverableAutosaves()) {
-        const QString when = QLocale().toString(orphan.written, QLocale::ShortFormat);
-        const QString question =
-            orphan.documentFile.isEmpty()
-                ? tr("A Granota session was closed without saving its Untitled document (autosaved %1). Recover it?").arg(when)
-                : tr("A Granota session was closed without saving its changes to “%1” (autosaved %2). Recover them?")
-                      .arg(QFileInfo(orphan.documentFile).fileName(), when);
-        QMessageBox box(QMessageBox::Question, tr("Recover unsaved work"), question,
-                        QMessageBox::NoButton, this);
-        QPushButton* recover = box.addButton(tr("&Recover"), QMessageBox::AcceptRole);
-        QPushButton* later = box.addButton(tr("&Keep for later"), QMessageBox::RejectRole);
-        QPushButton* discard = box.addButton(tr("&Discard"), QMessageBox::DestructiveRole);
-        box.setDefaultButton(recover);
-        box.setEscapeButton(later);
-        box.exec();
-        if (box.clickedButton() == discard) {
-            Autosave::discard(orphan.path);
-            continue;
-        }
-        if (box.clickedButton() != recover)
-            continue;
-        const RecoveryOutcome outcome = recoverAutosave(orphan.path);
-        if (outcome.complete)
-            showMessage(outcome.message);
-        else
-            QMessageBox::warning(this, tr("Recover unsaved work"), outcome.message);
-        if (outcome.recovered)
-            return; // the window holds a document now; other autosaves wait for another window
-    }
-}
+// ---------------------------------------------------------------- the document (document_controller.h)
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
-    if (!maybeSave()) {
+    if (!m_document->maybeClose()) {
         event->ignore();
         return;
     }
-    m_autosave->remove(); // saved or discarded: this window's copy has done its work
     event->accept();
 }
 

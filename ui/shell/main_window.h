@@ -1,16 +1,15 @@
 #pragma once
 /// \file main_window.h
-/// Granota's main window: one tab per part of the thesis (docs/tabs.md), the document (save,
-/// open, recent files, autosave and recovery), exports (docs/tabs.md), the Examples menu,
-/// languages and presentation mode (docs/classroom.md).
+/// Granota's main window: one tab per part of the thesis (docs/tabs.md), the menus, exports
+/// (docs/tabs.md), the Examples menu, languages and presentation mode (docs/classroom.md). The
+/// document (save, open, recent files, autosave and recovery) is its DocumentController
+/// (document_controller.h); the window wires the File menu to it.
 
 #include <QFont>
 #include <QMainWindow>
 #include <QVector>
 
-#include "ui/shell/autosave.h"
-
-#include <memory>
+#include "ui/shell/document_controller.h"
 
 class QAction;
 class QActionGroup;
@@ -18,7 +17,6 @@ class QLabel;
 class QMenu;
 class QSplitter;
 class QTabWidget;
-class QTimer;
 class QUndoGroup;
 
 namespace granota::ui {
@@ -43,11 +41,15 @@ public:
     /// Loads worked example `id` ("2.7") into its tab and shows the tab. False if unknown.
     bool loadExample(const QString& id);
 
+    /// The window's document: its file, unsaved changes, autosave and recovery
+    /// (document_controller.h). The members below that speak of the document call it.
+    DocumentController* document() const { return m_document; }
+
     /// File operations without dialogs (the menu actions and the tests use them).
-    bool openFile(const QString& file, QString* error);
-    bool saveFile(const QString& file, QString* error);
-    QString currentFile() const { return m_file; }
-    bool isModified() const { return m_modified; }
+    bool openFile(const QString& file, QString* error) { return m_document->openFile(file, error); }
+    bool saveFile(const QString& file, QString* error) { return m_document->saveFile(file, error); }
+    QString currentFile() const { return m_document->currentFile(); }
+    bool isModified() const { return m_document->isModified(); }
 
     /// Exports the current tab's view: format png, svg, pdf, csv or tikz. Empty or a message.
     QString exportCurrent(const QString& format, const QString& file, int dpi = 96);
@@ -62,29 +64,15 @@ public:
     bool workPrecisionVisible() const;
     bool presentation() const { return m_presentation; }
 
-    /// This window's autosave (ui/shell/autosave.h: one file per window, locked while it lives).
-    QString autosaveFile() const;
-    /// Writes the autosave now (the timer does it every 20 s while there are unsaved edits).
-    /// If it cannot be written the window says so, once, and keeps a warning in the status
-    /// bar until a write succeeds. False if it failed.
-    bool autosave();
-    /// The last autosave failure, empty once a write succeeded.
-    QString autosaveError() const { return m_autosaveError; }
-    /// The autosaves of ended sessions this window may recover: those of its document if it
-    /// has one, else all of them. Newest first.
-    QVector<Orphan> recoverableAutosaves() const;
-    /// What recovering an autosave did, and the message shown to the user.
-    struct RecoveryOutcome {
-        bool recovered = false; ///< some tab took its part; the window is modified
-        bool complete = false;  ///< every tab did, and the orphan's work is now this window's
-        QString message;
-    };
-    /// Recovers an orphan autosave into this window: every valid tab, under the name of the
-    /// document it belongs to. What could not be taken stays on disk, moved aside.
-    RecoveryOutcome recoverAutosave(const QString& orphanPath);
-    /// Asks, for each recoverable autosave, whether to recover it, keep it for later or
-    /// discard it.
-    void offerRecovery();
+    /// This window's autosave, written every 20 s while there are unsaved edits, and the
+    /// recovery of ended sessions' autosaves: see DocumentController.
+    QString autosaveFile() const { return m_document->autosaveFile(); }
+    bool autosave() { return m_document->autosave(); }
+    QString autosaveError() const { return m_document->autosaveError(); }
+    QVector<Orphan> recoverableAutosaves() const { return m_document->recoverableAutosaves(); }
+    using RecoveryOutcome = DocumentController::RecoveryOutcome;
+    RecoveryOutcome recoverAutosave(const QString& orphanPath) { return m_document->recoverAutosave(orphanPath); }
+    void offerRecovery() { m_document->offerRecovery(); }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -94,16 +82,8 @@ private:
     void createActions();
     void createMenus();
     void retranslate();
-    void setModified(bool modified);
-    void updateTitle();
-    bool maybeSave();
-    void newDocument();
-    void openDialog();
-    bool saveDialog(bool saveAs);
     void exportDialog(const QString& format);
     void exportFramesDialog();
-    void rememberRecent(const QString& file);
-    void rebuildRecentMenu();
     void showMessage(const QString& text);
     void showGuide();
     void showAbout();
@@ -114,13 +94,7 @@ private:
     QVector<QSplitter*> m_splitters;
     QUndoGroup* m_undoGroup = nullptr;
     QLabel* m_cursorLabel = nullptr;
-    QTimer* m_autosaveTimer = nullptr;
-    std::unique_ptr<Autosave> m_autosave;
-    QString m_autosaveError;
-    QLabel* m_autosaveWarning = nullptr;
-    QString m_file;
-    bool m_modified = false;
-    bool m_autosaveDirty = false;
+    DocumentController* m_document = nullptr;
     bool m_presentation = false;
     QFont m_normalFont;
 

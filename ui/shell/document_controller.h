@@ -1,0 +1,105 @@
+#pragma once
+/// \file document_controller.h
+/// The document of one window (docs/documents-and-autosave.md): which file it is, whether it
+/// has unsaved changes, New, Open, Save and Save As with their dialogs, the recent files, the
+/// autosave every 20 s with its warning, and the recovery of what ended sessions left.
+///
+/// The main window owns one (a child QObject) and keeps the menus, the tabs and the wiring:
+/// its File actions call this class, its title and status bar show what this class says.
+/// The controller reads and fills the window's tabs through the window (tabs(), currentTab(),
+/// showTab()); the bytes themselves are written and read by document.h, the autosave file
+/// and its lock are autosave.h.
+
+#include "ui/shell/autosave.h"
+
+#include <QObject>
+#include <QString>
+#include <QVector>
+
+#include <memory>
+
+class QLabel;
+class QMenu;
+class QTimer;
+
+namespace granota::ui {
+
+class MainWindow;
+
+class DocumentController : public QObject {
+    Q_OBJECT
+public:
+    /// Starts `window`'s autosave (a red warning in its status bar while it fails), fills
+    /// `recentMenu` from the settings, and follows every tab's documentChanged().
+    DocumentController(MainWindow* window, QMenu* recentMenu);
+    ~DocumentController() override;
+
+    /// The document's file (absolute), empty for Untitled.
+    QString currentFile() const { return m_file; }
+    /// Unsaved changes: the title shows “*”.
+    bool isModified() const { return m_modified; }
+    void setModified(bool modified);
+
+    /// File operations without dialogs (the menu actions and the tests use them).
+    bool openFile(const QString& file, QString* error);
+    bool saveFile(const QString& file, QString* error);
+
+    /// File ▸ New, Open…, Save and Save As…, with their dialogs.
+    void newDocument();
+    void openDialog();
+    bool saveDialog(bool saveAs);
+    /// If there are unsaved changes, asks whether to save them: true if the caller may go
+    /// on (nothing unsaved, saved, or discarded), false if the user cancelled or the save failed.
+    bool maybeSave();
+    /// The window is about to close: maybeSave(), and then this window's autosave has done
+    /// its work and is removed. False: the window stays open.
+    bool maybeClose();
+
+    /// The window's title and the recent files again, in the current language.
+    void retranslate();
+
+    /// This window's autosave (ui/shell/autosave.h: one file per window, locked while it lives).
+    QString autosaveFile() const;
+    /// Writes the autosave now (the timer does it every 20 s while there are unsaved edits).
+    /// If it cannot be written the window says so, once, and keeps a warning in the status
+    /// bar until a write succeeds. False if it failed.
+    bool autosave();
+    /// The last autosave failure, empty once a write succeeded.
+    QString autosaveError() const { return m_autosaveError; }
+    /// The autosaves of ended sessions this window may recover: those of its document if it
+    /// has one, else all of them. Newest first.
+    QVector<Orphan> recoverableAutosaves() const;
+    /// What recovering an autosave did, and the message shown to the user.
+    struct RecoveryOutcome {
+        bool recovered = false; ///< some tab took its part; the window is modified
+        bool complete = false;  ///< every tab did, and the orphan's work is now this window's
+        QString message;
+    };
+    /// Recovers an orphan autosave into the window: every valid tab, under the name of the
+    /// document it belongs to. What could not be taken stays on disk, moved aside.
+    RecoveryOutcome recoverAutosave(const QString& orphanPath);
+    /// Asks, for each recoverable autosave, whether to recover it, keep it for later or
+    /// discard it.
+    void offerRecovery();
+
+signals:
+    /// A message for the window's status bar.
+    void message(const QString& text);
+
+private:
+    void updateTitle();
+    void rememberRecent(const QString& file);
+    void rebuildRecentMenu();
+
+    MainWindow* m_window;
+    QMenu* m_recentMenu;
+    QTimer* m_autosaveTimer = nullptr;
+    std::unique_ptr<Autosave> m_autosave;
+    QString m_autosaveError;
+    QLabel* m_autosaveWarning = nullptr;
+    QString m_file;
+    bool m_modified = false;
+    bool m_autosaveDirty = false;
+};
+
+} // namespace granota::ui
