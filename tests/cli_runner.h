@@ -4,6 +4,7 @@
 #include <QJsonObject>
 #include <QProcess>
 #include <QStringList>
+#include <QTest>
 #include <QtGlobal>
 
 struct CliRun {
@@ -65,4 +66,20 @@ inline CliRun runCliWith(const QStringList& env, const QStringList& args, int ti
 inline CliRun runCliToFile(const QString& stdoutFile, const QStringList& args, int timeoutMs)
 {
     return cli_runner_detail::run({}, stdoutFile, args, timeoutMs);
+}
+
+/// What granota-cli does with bad input (docs/cli.md): exit 2 and "error: …" on standard
+/// error; with OutputOnRefusal::Empty, nothing on standard output either.
+enum class OutputOnRefusal { Any, Empty };
+
+/// For a data-driven test whose column "args" holds argument lists granota-cli must refuse:
+/// runs the current row and checks that it was refused.
+inline void verifyRowIsRefused(OutputOnRefusal output = OutputOnRefusal::Any)
+{
+    QFETCH(QStringList, args);
+    const CliRun run = runCli(args);
+    QCOMPARE(run.exitCode, 2);
+    QVERIFY2(run.err.startsWith("error: "), run.err.constData());
+    if (output == OutputOnRefusal::Empty)
+        QVERIFY(run.out.isEmpty());
 }

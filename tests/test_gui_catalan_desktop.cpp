@@ -3,6 +3,7 @@
 // and what the window shows a person uses the decimal comma — in spin boxes, tables,
 // readouts and plot axes — while a typed point is still accepted.
 #include "catalan_locale.h"
+#include "main_window_steps.h"
 
 #include "ui/common/decimal_spin_box.h"
 #include "ui/shell/document.h"
@@ -117,28 +118,25 @@ private slots:
 
     void documentRoundTripsExactly()
     {
-        QTemporaryDir dir;
-        const QString file = dir.filePath(QStringLiteral("lliçó.granota"));
+        const TemporaryDocument file(QStringLiteral("lliçó.granota"));
         QByteArray saved;
         {
             MainWindow window;
-            QVERIFY(window.loadExample(QStringLiteral("2.3")));
-            QVERIFY(window.loadExample(QStringLiteral("2.9")));
-            QVERIFY(window.loadExample(QStringLiteral("2.12")));
+            QVERIFY(loadExamples(window, {"2.3", "2.9", "2.12"}));
             QString error;
             QVERIFY2(window.frogTab()->setScene(QStringLiteral("pendulum-limits"), &error), qPrintable(error));
             QVERIFY2(window.frogTab()->setScene(QStringLiteral("frog"), &error), qPrintable(error));
             QVERIFY2(window.frogTab()->editParameter(QStringLiteral("area_factor"), QJsonValue(0.035), &error), qPrintable(error));
-            QVERIFY2(window.saveFile(file, &error), qPrintable(error));
-            saved = granota::ui::serializeDocument(window.tabs(), window.currentTab()->key());
+            QVERIFY2(window.saveFile(file.path(), &error), qPrintable(error));
+            saved = documentOf(window);
         }
-        const QByteArray bytes = readFile(file);
+        const QByteArray bytes = readFile(file.path());
         QVERIFY(bytes.contains("0.035"));
         QVERIFY(!bytes.contains("0,035"));
         MainWindow reopened;
         QString error;
-        QVERIFY2(reopened.openFile(file, &error), qPrintable(error));
-        QCOMPARE(granota::ui::serializeDocument(reopened.tabs(), reopened.currentTab()->key()), saved);
+        QVERIFY2(reopened.openFile(file.path(), &error), qPrintable(error));
+        QCOMPARE(documentOf(reopened), saved);
     }
 
     void everyExportReadsInTheCLocale()

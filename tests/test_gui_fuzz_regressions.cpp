@@ -19,22 +19,10 @@ class TestGuiFuzzRegressions : public QObject {
 private slots:
     void initTestCase() { granota::fuzz::initUi(); }
 
-    void everyTargetHasSeeds()
-    {
-        for (const char* target : kTargets)
-            QVERIFY2(granota::fuzz::inputsOf(QLatin1String(target)).size() >= 3, target);
-    }
+    void everyTargetHasSeeds() { granota::fuzz::verifyEveryTargetHasSeeds(kTargets); }
 
     void replay_data() { granota::fuzz::addInputRows(kTargets); }
-    void replay()
-    {
-        QFETCH(QString, target);
-        QFETCH(QString, file);
-        const auto bytes = granota::fuzz::readInput(file);
-        QVERIFY2(bytes, qPrintable(file));
-        const std::string finding = granota::fuzz::checkUi(target.toStdString(), granota::fuzz::view(*bytes));
-        QVERIFY2(finding.empty(), finding.c_str());
-    }
+    void replay() { granota::fuzz::replayInputRow(granota::fuzz::checkUi); }
 };
 
 QTEST_MAIN(TestGuiFuzzRegressions)

@@ -10,6 +10,8 @@
 #include "ui/shell/tab_page.h"
 #include "ui/common/work_precision_panel.h"
 
+#include "main_window_steps.h"
+
 #include <QAbstractButton>
 #include <QAction>
 #include <QApplication>
@@ -164,22 +166,19 @@ private slots:
 
     void documentRoundTrip()
     {
-        QTemporaryDir dir;
-        const QString file = dir.filePath(QStringLiteral("lesson.granota"));
+        const TemporaryDocument file(QStringLiteral("lesson.granota"));
         QByteArray saved;
         {
             MainWindow window;
-            QVERIFY(window.loadExample(QStringLiteral("2.3")));
-            QVERIFY(window.loadExample(QStringLiteral("2.8")));
-            QVERIFY(window.loadExample(QStringLiteral("2.13")));
+            QVERIFY(loadExamples(window, {"2.3", "2.8", "2.13"}));
             QVERIFY(window.isModified());
             QString error;
-            QVERIFY2(window.saveFile(file, &error), qPrintable(error));
+            QVERIFY2(window.saveFile(file.path(), &error), qPrintable(error));
             QVERIFY(!window.isModified());
-            saved = granota::ui::serializeDocument(window.tabs(), window.currentTab()->key());
+            saved = documentOf(window);
         }
         const QJsonDocument json = QJsonDocument::fromJson([&] {
-            QFile f(file);
+            QFile f(file.path());
             f.open(QIODevice::ReadOnly);
             return f.readAll();
         }());
@@ -191,10 +190,10 @@ private slots:
         const QByteArray fresh = granota::ui::serializeDocument(reopened.tabs(), QStringLiteral("catmull-rom"));
         QVERIFY(fresh != saved); // the examples changed the document
         QString error;
-        QVERIFY2(reopened.openFile(file, &error), qPrintable(error));
+        QVERIFY2(reopened.openFile(file.path(), &error), qPrintable(error));
         QCOMPARE(reopened.currentTab()->key(), QStringLiteral("catmull-rom"));
-        QCOMPARE(granota::ui::serializeDocument(reopened.tabs(), reopened.currentTab()->key()), saved);
-        QCOMPARE(reopened.currentFile(), file);
+        QCOMPARE(documentOf(reopened), saved);
+        QCOMPARE(reopened.currentFile(), file.path());
     }
 
     void badDocumentsAreRefusedAndLoseNothing_data()
@@ -238,10 +237,7 @@ private slots:
     {
         QFETCH(QString, tab);
         MainWindow window;
-        window.resize(1280, 800);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.showTab(tab));
+        QVERIFY(showOnTab(window, tab));
         QTemporaryDir dir;
         // PNG at 300 DPI: the view's size scaled by 300/96, and the DPI recorded in the file.
         const QString png = dir.filePath(QStringLiteral("view.png"));
@@ -378,10 +374,7 @@ private slots:
         QFETCH(QString, tab);
         QFETCH(int, methods);
         MainWindow window;
-        window.resize(1280, 800);
-        window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
-        QVERIFY(window.showTab(tab));
+        QVERIFY(showOnTab(window, tab));
         QVERIFY(!window.workPrecisionVisible());
         window.setWorkPrecisionVisible(true);
         QVERIFY(window.workPrecisionVisible());

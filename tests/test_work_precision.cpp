@@ -4,6 +4,7 @@
 
 #include <QTest>
 
+#include <array>
 #include <cmath>
 
 using namespace granota;
@@ -19,6 +20,13 @@ WorkPrecisionReport quickReport(const char* name)
     if (!report)
         qFatal("%s: %s", name, report.error().message.c_str());
     return *report;
+}
+
+/// The series of `report` for each of `methods`, in that order; nullptr for one it lacks.
+template <typename... Names>
+std::array<const WorkPrecisionSeries*, sizeof...(Names)> seriesOf(const WorkPrecisionReport& report, Names... methods)
+{
+    return {report.find(methods)...};
 }
 
 double errorAt(const WorkPrecisionSeries& s, double knob)
@@ -86,8 +94,7 @@ private slots:
     {
         // Both cost one evaluation of the acceleration per step: compare at equal h.
         const auto r = quickReport("integrators");
-        const auto* euler = r.find("explicit Euler");
-        const auto* verlet = r.find("Verlet");
+        const auto [euler, verlet] = seriesOf(r, "explicit Euler", "Verlet");
         for (const auto& p : euler->samples)
             if (p.knob <= 0.25)
                 QVERIFY2(errorAt(*verlet, p.knob) * 10 < p.error, qPrintable(QString::number(p.knob)));
@@ -96,9 +103,7 @@ private slots:
     void hornerLosesDigitsWhereDeCasteljauDoesNot()
     {
         const auto r = quickReport("bezier-evaluation");
-        const auto* casteljau = r.find("De Casteljau");
-        const auto* bernstein = r.find("Bernstein sum");
-        const auto* horner = r.find("Horner (power basis)");
+        const auto [casteljau, bernstein, horner] = seriesOf(r, "De Casteljau", "Bernstein sum", "Horner (power basis)");
         QVERIFY(casteljau && bernstein && horner);
         for (const auto& p : casteljau->samples) {
             QVERIFY2(p.error < 1e-13, qPrintable(QString::number(p.knob)));
@@ -113,9 +118,7 @@ private slots:
     void normalEquationsBreakWhereQrHolds()
     {
         const auto r = quickReport("least-squares");
-        const auto* normal = r.find("normal equations");
-        const auto* qr = r.find("QR");
-        const auto* svd = r.find("SVD");
+        const auto [normal, qr, svd] = seriesOf(r, "normal equations", "QR", "SVD");
         QVERIFY(normal && qr && svd);
         for (double n : {2.0, 6.0})
             QVERIFY(errorAt(*normal, n) < 1e-10 && errorAt(*qr, n) < 1e-12);
@@ -131,8 +134,7 @@ private slots:
     void samplingErrorFallsLikeOneOverNSquared()
     {
         const auto r = quickReport("curve-sampling");
-        const auto* uniform = r.find("uniform");
-        const auto* adaptive = r.find("adaptive");
+        const auto [uniform, adaptive] = seriesOf(r, "uniform", "adaptive");
         QVERIFY(uniform && adaptive);
         const double p = observedOrder(*uniform, 17, 1e9);
         QVERIFY2(std::fabs(p + 2) < 0.2, qPrintable(QString::number(p)));
@@ -154,9 +156,7 @@ private slots:
     void substepsTightenTheConstraints()
     {
         const auto r = quickReport("soft-body");
-        const auto* area = r.find("XPBD area");
-        const auto* edges = r.find("XPBD edge lengths");
-        const auto* seed = r.find("seed area (Annex II)");
+        const auto [area, edges, seed] = seriesOf(r, "XPBD area", "XPBD edge lengths", "seed area (Annex II)");
         QVERIFY(area && edges && seed);
         QVERIFY(errorAt(*area, 8) < errorAt(*area, 1));
         QVERIFY(errorAt(*edges, 8) < errorAt(*edges, 1) / 4);
