@@ -472,15 +472,15 @@ private slots:
     void grabMovesReleasesAndKeepsVertices_data()
     {
         QTest::addColumn<int>("anchors");
-        QTest::newRow("above the grab point (§4.7)") << int(GrabAnchors::AboveGrabPoint);
-        QTest::newRow("frog anchors {0, 1, N-1}") << int(GrabAnchors::FrogAnchors);
-        QTest::newRow("all vertices (§4.6)") << int(GrabAnchors::AllVertices);
+        QTest::newRow("above the grab point (§4.7)") << int(GrabMode::Above);
+        QTest::newRow("frog anchors {0, 1, N-1}") << int(GrabMode::Anchors);
+        QTest::newRow("all vertices (§4.6)") << int(GrabMode::All);
     }
     void grabMovesReleasesAndKeepsVertices()
     {
         QFETCH(int, anchors);
         XpbdParams p;
-        p.grabAnchors = GrabAnchors(anchors);
+        p.grabMode = GrabMode(anchors);
         XpbdWorld w = makeWorld(p);
         const int b = addRegular(w, {400, 500}, 80, 10, 14000);
         for (int i = 0; i < 200; ++i)

@@ -10,13 +10,6 @@
 
 namespace granota {
 
-/// Which vertices hold on to the mouse when a body is grabbed.
-enum class GrabMode {
-    All,     ///< §4.6: every vertex, at its distance from the grab point
-    Above,   ///< §4.7: the vertices above the grab point
-    Anchors, ///< §4.10, §4.16: Annex II's fixed anchors {0, 1, N−1, N}
-};
-
 /// One leg: the two segment lengths and the angle limits of Annex II (radians).
 struct LegParams {
     double upper = 40;        ///< shoulder–elbow length (longit[..].x)

@@ -7,6 +7,7 @@
 
 #include "core/base/expected.h"
 #include "core/softbody/scenes/frog_params.h"
+#include "core/softbody/scenes/grab_mode.h"
 #include "core/io/json.h"
 
 #include <string>

@@ -15,6 +15,7 @@
 
 #include "core/base/expected.h"
 #include "core/softbody/scenes/frog_params.h"
+#include "core/softbody/scenes/grab_mode.h"
 #include "core/softbody/seed/seed_lanes_avx2.h"
 #include "core/base/vec2.h"
 

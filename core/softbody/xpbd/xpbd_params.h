@@ -12,21 +12,12 @@
 
 #include "core/base/expected.h"
 #include "core/softbody/scenes/frog_params.h"
+#include "core/softbody/scenes/grab_mode.h"
 #include "core/base/vec2.h"
 
 #include <limits>
 
 namespace granota {
-
-/// Which vertices of a grabbed body are tied to the mouse.
-enum class GrabAnchors {
-    /// The vertices above the grab point (smaller screen y), §4.7.
-    AboveGrabPoint,
-    /// Vertices {0, 1, N−1}: Annex II l. 361–372's {0, 1, N−1, N}, vertex N being vertex 0.
-    FrogAnchors,
-    /// Every vertex, as the first grab of §4.6.
-    AllVertices,
-};
 
 struct XpbdParams {
     /// g, acceleration, px/step² (gravetat).
@@ -62,7 +53,7 @@ struct XpbdParams {
     /// Skin, px: vertices closer than this to a body or obstacle are pushed out to it.
     double contactMargin = 0;
     /// Which vertices follow the mouse.
-    GrabAnchors grabAnchors = GrabAnchors::AboveGrabPoint;
+    GrabMode grabMode = GrabMode::Above;
     /// α of each mouse tie, step²/mass.
     double grabCompliance = 0.02;
     /// Largest pull of one mouse tie, mass·px/step² (infinity = no cap).

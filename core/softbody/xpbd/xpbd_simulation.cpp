@@ -34,8 +34,7 @@ XpbdParams paramsOf(const SceneSpec& s)
         p.edgeCompliance = kNoConstraint;
     if (!s.has("area"))
         p.areaCompliance = kNoConstraint;
-    p.grabAnchors = s.grab == GrabMode::All ? GrabAnchors::AllVertices
-                    : s.grab == GrabMode::Above ? GrabAnchors::AboveGrabPoint : GrabAnchors::FrogAnchors;
+    p.grabMode = s.grab;
     return p;
 }
 

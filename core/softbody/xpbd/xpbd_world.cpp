@@ -732,8 +732,8 @@ bool XpbdWorld::press(Point p)
             continue;
         m_grabIdx.clear();
         m_grabRest.clear();
-        switch (m_params.grabAnchors) {
-        case GrabAnchors::AboveGrabPoint: // §4.7: "els vèrtexs situats per damunt del punt"
+        switch (m_params.grabMode) {
+        case GrabMode::Above: // §4.7: "els vèrtexs situats per damunt del punt"
             for (int i = 0; i < b.count; ++i)
                 if (x[i].y < p.y)
                     m_grabIdx.push_back(b.first + i);
@@ -745,10 +745,10 @@ bool XpbdWorld::press(Point p)
                 m_grabIdx.push_back(b.first + nearest);
             }
             break;
-        case GrabAnchors::FrogAnchors: // Annex II l. 363–367
+        case GrabMode::Anchors: // Annex II l. 363–367
             m_grabIdx = {b.first, b.first + 1, b.first + b.count - 1};
             break;
-        case GrabAnchors::AllVertices:
+        case GrabMode::All:
             for (int i = 0; i < b.count; ++i)
                 m_grabIdx.push_back(b.first + i);
             break;

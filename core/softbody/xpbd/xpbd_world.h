@@ -103,7 +103,7 @@ public:
 
     // --- Grabbing (the GUI's mouse; §4.6, §4.7, Annex II l. 34–53) ---
     /// Grabs the topmost body whose polygon contains p (§4.6's test): the anchor vertices
-    /// (XpbdParams::grabAnchors) are tied to the mouse by compliant ropes of their present
+    /// (XpbdParams::grabMode) are tied to the mouse by compliant ropes of their present
     /// length, each pulling with at most grabMaxForce. Returns false (and grabs nothing) when
     /// no body contains p, p is not finite, or a body is already held.
     bool press(Point p);
