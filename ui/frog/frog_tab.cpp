@@ -2,6 +2,7 @@
 #include "ui/common/number_text.h"
 
 #include "core/softbody/outline.h"
+#include "core/softbody/scenes/scene_texts.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_json.h"
 #include "ui/frog/frog_parameters_panel.h"
@@ -10,6 +11,7 @@
 #include <QButtonGroup>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDir>
 #include <QGridLayout>
 #include <QGroupBox>
@@ -454,69 +456,14 @@ void FrogTab::setPresentation(bool on) { m_canvas->setPresentation(on); }
 
 QString FrogTab::sceneTitle(const QString& name) const
 {
-    if (name == QLatin1String("polygon")) return tr("4.1 Polygon and mouse");
-    if (name == QLatin1String("gravity")) return tr("4.2 Gravity");
-    if (name == QLatin1String("bounce")) return tr("4.3 Bounce");
-    if (name == QLatin1String("springs")) return tr("4.4 Springs");
-    if (name == QLatin1String("area")) return tr("4.5 Area");
-    if (name == QLatin1String("verlet")) return tr("4.6 Verlet and grabbing");
-    if (name == QLatin1String("tuned")) return tr("4.7 Tuned parameters");
-    if (name == QLatin1String("color")) return tr("4.8 Colour fill");
-    if (name == QLatin1String("bezier")) return tr("4.9 Bézier outline");
-    if (name == QLatin1String("bezier-revised")) return tr("4.10 Revised Bézier");
-    if (name == QLatin1String("catmull-rom")) return tr("4.12 Catmull-Rom outline");
-    if (name == QLatin1String("pendulum")) return tr("4.13 Pendulum");
-    if (name == QLatin1String("pendulum-chain")) return tr("4.14 Chain of joints");
-    if (name == QLatin1String("pendulum-limits")) return tr("4.15 Angle limits");
-    if (name == QLatin1String("frog")) return tr("4.16 The frog");
-    if (name == QLatin1String("obstacles")) return tr("5.2.1 Obstacles");
-    if (name == QLatin1String("many-bodies")) return tr("5.2.2 Many bodies");
-    if (name == QLatin1String("shapes")) return tr("5.2.3 Other shapes");
-    return name;
+    const SceneText* text = findSceneText(name.toStdString());
+    return text ? QCoreApplication::translate(kSceneTextContext, text->title) : name;
 }
 
 QString FrogTab::sceneDescription(const QString& name) const
 {
-    if (name == QLatin1String("polygon"))
-        return tr("A regular polygon drawn with straight lines; its radius follows the mouse, r = |mouseY − h/2|.");
-    if (name == QLatin1String("gravity"))
-        return tr("Every vertex falls with constant acceleration (MRUA) and stops at the edge of the frame.");
-    if (name == QLatin1String("bounce"))
-        return tr("At the frame the velocity turns round and keeps a share f of itself; a click starts the polygon "
-                  "again at the mouse.");
-    if (name == QLatin1String("springs"))
-        return tr("Springs along the edges pull each pair of neighbours back towards their rest length.");
-    if (name == QLatin1String("area"))
-        return tr("The area, by the trapezoid rule, is pushed back towards the target along the edge normals.");
-    if (name == QLatin1String("verlet"))
-        return tr("Verlet integration (Def 3.1). Press inside the body to grab it: every vertex is tied to the mouse.");
-    if (name == QLatin1String("tuned"))
-        return tr("Only the vertices above the grab point hold on to the mouse.");
-    if (name == QLatin1String("color"))
-        return tr("The same body, filled with colour.");
-    if (name == QLatin1String("bezier"))
-        return tr("The polygon's vertices are the control points of one Bézier curve, sampled once. Beside it, the "
-                  "per-frame least-squares fit that the thesis abandoned, with its cost.");
-    if (name == QLatin1String("bezier-revised"))
-        return tr("Tuned constants, and fixed anchors for grabbing, on the precomputed Bézier points.");
-    if (name == QLatin1String("catmull-rom"))
-        return tr("The outline is a Catmull-Rom curve through the vertices (τ = 1/2, Processing's curveVertex).");
-    if (name == QLatin1String("pendulum"))
-        return tr("A double pendulum hanging from the mouse; its lengths are restored at once.");
-    if (name == QLatin1String("pendulum-chain"))
-        return tr("A chain of joints following its first joint: each joint is put back at its distance from the "
-                  "previous one.");
-    if (name == QLatin1String("pendulum-limits"))
-        return tr("A leg: two links with gravity, the frame, and limits on the angles at its joints.");
-    if (name == QLatin1String("frog"))
-        return tr("Body, four legs and head: the final program of Annex II.");
-    if (name == QLatin1String("obstacles"))
-        return tr("Fixed segments and polygons that the bodies collide with (future work, §5.2).");
-    if (name == QLatin1String("many-bodies"))
-        return tr("Several bodies collide with each other; a broad phase keeps the cost close to linear.");
-    if (name == QLatin1String("shapes"))
-        return tr("Bodies that are not regular polygons, kept in shape by angle constraints between their edges.");
-    return {};
+    const SceneText* text = findSceneText(name.toStdString());
+    return text ? QCoreApplication::translate(kSceneTextContext, text->description) : QString();
 }
 
 QString FrogTab::sceneHint() const

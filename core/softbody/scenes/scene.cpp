@@ -5,6 +5,7 @@
 #include "core/softbody/scenes/scene_files.h"
 #include "core/base/number_format.h"
 #include "core/softbody/scenes/scene_layout.h"
+#include "core/softbody/scenes/scene_parameters.h"
 #include "core/softbody/seed/stage_body.h"
 
 #include <algorithm>
@@ -15,8 +16,6 @@ namespace granota {
 
 namespace {
 
-constexpr int kMaxBodies = 5000;
-constexpr int kMaxBezierSamples = 2000;
 /// The largest magnitude of any number of a scene (lengths, coordinates, areas, factors),
 /// the seed's own limit: beyond it a body's area or a chain's reach overflows to infinity.
 constexpr double kMaxMagnitude = 1e15;
@@ -93,160 +92,139 @@ Json pointJson(Point p)
     return a;
 }
 
+/// `obstacles`: segments and polygons (§5.2.1).
+Expected<bool> setObstacles(SceneSpec& s, const Json& v)
+{
+    const auto* list = v.asArray();
+    if (!list)
+        return bad(s.name, "obstacles must be a list");
+    s.obstacles.clear();
+    for (const Json& o : *list) {
+        ObstacleSpec spec;
+        if (const Json* seg = o.find("segment")) {
+            auto pts = pointsOf(*seg);
+            if (!pts || pts->size() != 2)
+                return bad(s.name, "a segment obstacle has two points");
+            spec.points = *pts;
+        } else if (const Json* poly = o.find("polygon")) {
+            auto pts = pointsOf(*poly);
+            if (!pts || pts->size() < 3)
+                return bad(s.name, "a polygon obstacle has at least three points");
+            spec.points = *pts;
+            spec.closed = true;
+        } else {
+            return bad(s.name, "an obstacle is {\"segment\": …} or {\"polygon\": …}");
+        }
+        s.obstacles.push_back(std::move(spec));
+    }
+    return true;
+}
+
+/// `shapes`: the bodies' rest shapes and starts (§5.2.3).
+Expected<bool> setShapes(SceneSpec& s, const Json& v)
+{
+    const auto* list = v.asArray();
+    if (!list)
+        return bad(s.name, "shapes must be a list");
+    s.shapes.clear();
+    for (const Json& o : *list) {
+        ShapeSpec spec;
+        spec.name = o.find("name") && o.find("name")->asString() ? *o.find("name")->asString() : "shape";
+        auto pts = o.find("points") ? pointsOf(*o.find("points")) : std::nullopt;
+        auto at = o.find("at") ? pointOf(*o.find("at")) : std::nullopt;
+        if (!pts || pts->size() < 3 || !at)
+            return bad(s.name, "a shape needs \"points\" (at least 3) and \"at\"");
+        spec.points = *pts;
+        spec.at = *at;
+        s.shapes.push_back(std::move(spec));
+    }
+    return true;
+}
+
 /// Reads one parameter from its JSON value into the scene. Shared by the file reader
 /// and by --set (which first turns "0,0.75" into [0,0.75]).
 Expected<bool> setParam(SceneSpec& s, const std::string& key, const Json& v)
 {
-    FrogParams& p = s.params;
-    const auto number = [&](double& out) -> Expected<bool> {
-        if (!v.isNumber())
-            return bad(s.name, key + " must be a number");
-        out = *v.asNumber();
-        return true;
-    };
-    const auto integer = [&](int& out, int lo, int hi) -> Expected<bool> {
+    const SceneParameter* param = findSceneParameter(key);
+    if (!param)
+        return bad(s.name, "unknown parameter '" + key + "'");
+    switch (param->type) {
+    case ParameterType::Integer: {
         if (!v.isNumber() || *v.asNumber() != std::trunc(*v.asNumber()))
             return bad(s.name, key + " must be a whole number");
-        const auto n = wholeNumber(v, lo, hi);
+        const auto n = wholeNumber(v, param->min, param->max);
         if (!n)
             return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': " + key + " must be between " +
-                                                        std::to_string(lo) + " and " + std::to_string(hi));
-        out = *n;
+                                                        std::to_string(param->min) + " and " + std::to_string(param->max));
+        param->integer(s) = *n;
         return true;
-    };
-    const auto point = [&](Point& out) -> Expected<bool> {
+    }
+    case ParameterType::Number:
+        if (!v.isNumber())
+            return bad(s.name, key + " must be a number");
+        param->number(s) = *v.asNumber();
+        return true;
+    case ParameterType::Pair: {
         auto q = pointOf(v);
         if (!q)
             return bad(s.name, key + " must be a pair x,y");
-        out = *q;
-        return true;
-    };
-    if (key == "sides")
-        return integer(p.sides, 3, 10000);
-    if (key == "radius")
-        return number(p.radius);
-    if (key == "center")
-        return point(p.center);
-    if (key == "width")
-        return number(p.width);
-    if (key == "height")
-        return number(p.height);
-    if (key == "gravity")
-        return point(p.gravity);
-    if (key == "v0")
-        return point(p.v0);
-    if (key == "friction")
-        return point(p.friction);
-    if (key == "velmax")
-        return number(p.velmax);
-    if (key == "spring_length")
-        return number(p.springLength);
-    if (key == "target_area")
-        return number(p.targetArea);
-    if (key == "area_factor")
-        return number(p.areaFactor);
-    if (key == "bodies")
-        return integer(s.bodies, 1, kMaxBodies);
-    if (key == "bezier_samples")
-        return integer(s.bezierSamples, 3, kMaxBezierSamples);
-    if (key == "bezier_fit_degree")
-        return integer(s.bezierFitDegree, 1, 30);
-    if (key == "grab") {
-        const auto g = v.asString();
-        if (g == "all")
-            s.grab = GrabMode::All;
-        else if (g == "above")
-            s.grab = GrabMode::Above;
-        else if (g == "anchors")
-            s.grab = GrabMode::Anchors;
-        else
-            return bad(s.name, "grab must be all, above or anchors");
+        param->pair(s) = *q;
         return true;
     }
-    if (key == "chain") {
+    case ParameterType::Choice: {
+        const auto g = v.asString();
+        std::string names;
+        const auto& choices = grabChoices();
+        for (std::size_t i = 0; i < choices.size(); ++i) {
+            if (g == choices[i].name) {
+                s.grab = choices[i].mode;
+                return true;
+            }
+            names += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + std::string(choices[i].name);
+        }
+        return bad(s.name, key + " must be " + names);
+    }
+    case ParameterType::Chain: {
         auto lengths = numbersOf(v);
         if (!lengths || lengths->size() < 1 || lengths->size() > 100)
             return bad(s.name, "chain must list 1 to 100 link lengths");
         s.chain = *lengths;
         return true;
     }
-    if (key == "legs") {
-        const Json* front = v.find("front");
-        const Json* back = v.find("back");
-        auto f = front ? pointOf(*front) : std::nullopt;
-        auto b = back ? pointOf(*back) : std::nullopt;
-        if (!f || !b)
-            return bad(s.name, "legs must be {\"front\": [upper, lower], \"back\": [upper, lower]}");
-        for (int i = 0; i < 4; ++i) {
-            const Point l = i < 2 ? *f : *b;
-            p.legs[static_cast<std::size_t>(i)].upper = l.x;
-            p.legs[static_cast<std::size_t>(i)].lower = l.y;
+    case ParameterType::Legs: {
+        std::vector<Point> lengths; // upper, lower of each part: front (legs 0, 1), back (legs 2, 3)
+        for (const ParameterPart& part : legParts()) {
+            const Json* given = v.find(part.name);
+            auto l = given ? pointOf(*given) : std::nullopt;
+            if (!l)
+                return bad(s.name, "legs must be {\"front\": [upper, lower], \"back\": [upper, lower]}");
+            lengths.push_back(*l);
+        }
+        for (std::size_t i = 0; i < s.params.legs.size(); ++i) {
+            s.params.legs[i].upper = lengths[i / 2].x;
+            s.params.legs[i].lower = lengths[i / 2].y;
         }
         return true;
     }
-    if (key == "angle_limits") {
+    case ParameterType::AngleLimits: {
         if (!v.isObject())
             return bad(s.name, "angle_limits must be an object");
         for (const auto& [name, value] : *v.asObject()) {
             auto q = pointOf(value);
             if (!q)
                 return bad(s.name, "angle_limits." + name + " must be a pair min,max");
-            auto& L = p.legs;
-            if (name == "shoulder_front_right") { L[0].shoulderMin = q->x; L[0].shoulderMax = q->y; }
-            else if (name == "shoulder_front_left") { L[1].shoulderMin = q->x; L[1].shoulderMax = q->y; }
-            else if (name == "shoulder_back_right") { L[2].shoulderMin = q->x; L[2].shoulderMax = q->y; }
-            else if (name == "shoulder_back_left") { L[3].shoulderMin = q->x; L[3].shoulderMax = q->y; }
-            else if (name == "elbow_front") { for (int i : {0, 1}) { L[i].elbowMin = q->x; L[i].elbowMax = q->y; } }
-            else if (name == "elbow_back") { for (int i : {2, 3}) { L[i].elbowMin = q->x; L[i].elbowMax = q->y; } }
-            else if (name == "shoulder") { s.chainShoulderMin = q->x; s.chainShoulderMax = q->y; }
-            else if (name == "elbow") { s.chainElbowMin = q->x; s.chainElbowMax = q->y; }
-            else
+            const auto& limits = angleLimits();
+            const auto limit = std::find_if(limits.begin(), limits.end(), [&](const AngleLimit& l) { return name == l.name; });
+            if (limit == limits.end())
                 return bad(s.name, "unknown angle limit '" + name + "'");
+            limit->set(s, *q);
         }
         return true;
     }
-    if (key == "obstacles") {
-        const auto* list = v.asArray();
-        if (!list)
-            return bad(s.name, "obstacles must be a list");
-        s.obstacles.clear();
-        for (const Json& o : *list) {
-            ObstacleSpec spec;
-            if (const Json* seg = o.find("segment")) {
-                auto pts = pointsOf(*seg);
-                if (!pts || pts->size() != 2)
-                    return bad(s.name, "a segment obstacle has two points");
-                spec.points = *pts;
-            } else if (const Json* poly = o.find("polygon")) {
-                auto pts = pointsOf(*poly);
-                if (!pts || pts->size() < 3)
-                    return bad(s.name, "a polygon obstacle has at least three points");
-                spec.points = *pts;
-                spec.closed = true;
-            } else {
-                return bad(s.name, "an obstacle is {\"segment\": …} or {\"polygon\": …}");
-            }
-            s.obstacles.push_back(std::move(spec));
-        }
-        return true;
-    }
-    if (key == "shapes") {
-        const auto* list = v.asArray();
-        if (!list)
-            return bad(s.name, "shapes must be a list");
-        s.shapes.clear();
-        for (const Json& o : *list) {
-            ShapeSpec spec;
-            spec.name = o.find("name") && o.find("name")->asString() ? *o.find("name")->asString() : "shape";
-            auto pts = o.find("points") ? pointsOf(*o.find("points")) : std::nullopt;
-            auto at = o.find("at") ? pointOf(*o.find("at")) : std::nullopt;
-            if (!pts || pts->size() < 3 || !at)
-                return bad(s.name, "a shape needs \"points\" (at least 3) and \"at\"");
-            spec.points = *pts;
-            spec.at = *at;
-            s.shapes.push_back(std::move(spec));
-        }
-        return true;
+    case ParameterType::Obstacles:
+        return setObstacles(s, v);
+    case ParameterType::Shapes:
+        return setShapes(s, v);
     }
     return bad(s.name, "unknown parameter '" + key + "'");
 }
@@ -255,16 +233,18 @@ Expected<bool> setParam(SceneSpec& s, const std::string& key, const Json& v)
 std::optional<std::string> tooLarge(const SceneSpec& s)
 {
     const FrogParams& p = s.params;
-    const std::pair<const char*, double> numbers[] = {
-        {"gravity", p.gravity.x}, {"gravity", p.gravity.y}, {"friction", p.friction.x}, {"friction", p.friction.y},
-        {"v0", p.v0.x}, {"v0", p.v0.y}, {"center", p.center.x}, {"center", p.center.y},
-        {"area_factor", p.areaFactor}, {"target_area", p.targetArea}, {"spring_length", p.springLength},
-        {"velmax", p.velmax}, {"radius", p.radius}, {"width", p.width}, {"height", p.height},
-        {"angle_limits", s.chainShoulderMin}, {"angle_limits", s.chainShoulderMax},
-        {"angle_limits", s.chainElbowMin}, {"angle_limits", s.chainElbowMax}};
-    for (const auto& [name, v] : numbers)
+    // Only read: the table's accessors take a SceneSpec& for the reader's sake.
+    SceneSpec& values = const_cast<SceneSpec&>(s);
+    for (const SceneParameter& param : sceneParameters()) {
+        if (param.type == ParameterType::Number && !(std::fabs(param.number(values)) <= kMaxMagnitude))
+            return std::string(param.key);
+        if (param.type == ParameterType::Pair &&
+            !(std::fabs(param.pair(values).x) <= kMaxMagnitude && std::fabs(param.pair(values).y) <= kMaxMagnitude))
+            return std::string(param.key);
+    }
+    for (double v : {s.chainShoulderMin, s.chainShoulderMax, s.chainElbowMin, s.chainElbowMax})
         if (!(std::fabs(v) <= kMaxMagnitude))
-            return name;
+            return "angle_limits";
     for (const LegParams& l : p.legs) {
         for (double v : {l.upper, l.lower})
             if (!(std::fabs(v) <= kMaxMagnitude))
@@ -434,11 +414,12 @@ Expected<bool> applySetting(SceneSpec& scene, const std::string& keyValue)
         return makeError(ErrorCode::InvalidInput,
                          "scene '" + scene.name + "' has no parameter " + quotedForDisplay(key) + " (it has: " + keys + ")");
     }
-    if (key == "legs" || key == "angle_limits" || key == "obstacles" || key == "shapes" || key == "chain")
+    const SceneParameter* param = findSceneParameter(key);
+    if (param && !param->settable())
         return makeError(ErrorCode::InvalidInput, quotedForDisplay(key) + " is set in the scene file, not with --set");
     // "0,0.75" → [0, 0.75]; "all" → "all"; numbers may be fractions.
     Json json;
-    if (key == "grab") {
+    if (param && param->type == ParameterType::Choice) {
         json = Json(value);
     } else {
         Json list = Json::array();
@@ -473,7 +454,7 @@ Expected<SceneSpec> withBodies(SceneSpec scene, int bodies)
 {
     if (!scene.hasParam("bodies"))
         return makeError(ErrorCode::InvalidInput, "scene '" + scene.name + "' has a single body");
-    if (bodies >= 1 && bodies <= kMaxBodies) { // out of range: applySetting says so
+    if (const SceneParameter* count = findSceneParameter("bodies"); bodies >= count->min && bodies <= count->max) { // out of range: applySetting says so
         const FrameSize f = frameForBodies(scene, bodies);
         scene.params.width = f.width;
         scene.params.height = f.height;
@@ -488,47 +469,49 @@ Json sceneToJson(const SceneSpec& s)
 {
     const FrogParams& p = s.params;
     Json params = Json::object();
+    SceneSpec& values = const_cast<SceneSpec&>(s); // only read, as in tooLarge
     for (const std::string& key : s.paramKeys) {
-        if (key == "sides") params.set(key, p.sides);
-        else if (key == "radius") params.set(key, p.radius);
-        else if (key == "center") params.set(key, pointJson(p.center));
-        else if (key == "width") params.set(key, p.width);
-        else if (key == "height") params.set(key, p.height);
-        else if (key == "gravity") params.set(key, pointJson(p.gravity));
-        else if (key == "v0") params.set(key, pointJson(p.v0));
-        else if (key == "friction") params.set(key, pointJson(p.friction));
-        else if (key == "velmax") params.set(key, p.velmax);
-        else if (key == "spring_length") params.set(key, p.springLength);
-        else if (key == "target_area") params.set(key, p.targetArea);
-        else if (key == "area_factor") params.set(key, p.areaFactor);
-        else if (key == "bodies") params.set(key, s.bodies);
-        else if (key == "bezier_samples") params.set(key, s.bezierSamples);
-        else if (key == "bezier_fit_degree") params.set(key, s.bezierFitDegree);
-        else if (key == "grab") params.set(key, s.grab == GrabMode::All ? "all" : s.grab == GrabMode::Above ? "above" : "anchors");
-        else if (key == "chain") {
+        const SceneParameter* param = findSceneParameter(key);
+        if (!param)
+            continue;
+        switch (param->type) {
+        case ParameterType::Integer:
+            params.set(key, param->integer(values));
+            break;
+        case ParameterType::Number:
+            params.set(key, param->number(values));
+            break;
+        case ParameterType::Pair:
+            params.set(key, pointJson(param->pair(values)));
+            break;
+        case ParameterType::Choice:
+            for (const GrabChoice& c : grabChoices())
+                if (c.mode == s.grab)
+                    params.set(key, c.name);
+            break;
+        case ParameterType::Chain: {
             Json a = Json::array();
             for (double l : s.chain)
                 a.push(l);
             params.set(key, a);
-        } else if (key == "legs") {
+            break;
+        }
+        case ParameterType::Legs: {
             Json legs = Json::object();
-            legs.set("front", pointJson(Point(p.legs[0].upper, p.legs[0].lower)));
-            legs.set("back", pointJson(Point(p.legs[2].upper, p.legs[2].lower)));
+            for (std::size_t i = 0; i < legParts().size(); ++i)
+                legs.set(legParts()[i].name, pointJson(Point(p.legs[2 * i].upper, p.legs[2 * i].lower)));
             params.set(key, legs);
-        } else if (key == "angle_limits") {
+            break;
+        }
+        case ParameterType::AngleLimits: {
             Json limits = Json::object();
-            if (s.model == SceneModel::Pendulum) {
-                limits.set("shoulder", pointJson(Point(s.chainShoulderMin, s.chainShoulderMax)));
-                limits.set("elbow", pointJson(Point(s.chainElbowMin, s.chainElbowMax)));
-            } else {
-                const char* names[] = {"shoulder_front_right", "shoulder_front_left", "shoulder_back_right", "shoulder_back_left"};
-                for (int i = 0; i < 4; ++i)
-                    limits.set(names[i], pointJson(Point(p.legs[static_cast<std::size_t>(i)].shoulderMin, p.legs[static_cast<std::size_t>(i)].shoulderMax)));
-                limits.set("elbow_front", pointJson(Point(p.legs[0].elbowMin, p.legs[0].elbowMax)));
-                limits.set("elbow_back", pointJson(Point(p.legs[2].elbowMin, p.legs[2].elbowMax)));
-            }
+            for (const AngleLimit& l : angleLimits())
+                if (l.pendulum == (s.model == SceneModel::Pendulum))
+                    limits.set(l.name, pointJson(l.get(s)));
             params.set(key, limits);
-        } else if (key == "obstacles") {
+            break;
+        }
+        case ParameterType::Obstacles: {
             Json list = Json::array();
             for (const auto& o : s.obstacles) {
                 Json pts = Json::array();
@@ -539,7 +522,9 @@ Json sceneToJson(const SceneSpec& s)
                 list.push(item);
             }
             params.set(key, list);
-        } else if (key == "shapes") {
+            break;
+        }
+        case ParameterType::Shapes: {
             Json list = Json::array();
             for (const auto& sh : s.shapes) {
                 Json pts = Json::array();
@@ -550,6 +535,8 @@ Json sceneToJson(const SceneSpec& s)
                 list.push(item);
             }
             params.set(key, list);
+            break;
+        }
         }
     }
     Json components = Json::array();

@@ -1,0 +1,100 @@
+#pragma once
+/// \file scene_parameters.h
+/// Every parameter a scene file may hold (docs/scenes.md, "Parameters"), in one table: its key,
+/// its type, where its value lives in a SceneSpec, the whole numbers the core accepts, the
+/// thesis's name (Annex II, chapter 4), and what the Frog tab's parameter panel shows — the unit,
+/// the spin box's range and step, an English label and tooltip. The scene reader and `--set`
+/// (scene.cpp: setParam, applySetting, the magnitude check), the scene writer (sceneToJson) and
+/// the panel (ui/frog/frog_parameters_panel.cpp) all read it; no other list of keys exists.
+///
+/// The labels and tooltips are marked with QT_TRANSLATE_NOOP in the panel's context,
+/// kParameterPanelContext, so the panel's translate() finds the Catalan texts of
+/// translations/granota_ca.ts under "granota::ui::FrogParametersPanel".
+
+#include "core/base/vec2.h"
+#include "core/softbody/scenes/grab_mode.h"
+
+#include <string>
+#include <vector>
+
+namespace granota {
+
+struct SceneSpec;
+
+/// The translation context of the table's labels and tooltips: the panel that shows them.
+inline constexpr const char* kParameterPanelContext = "granota::ui::FrogParametersPanel";
+
+/// What a parameter's value is in the scene file; `--set` takes the first four.
+enum class ParameterType {
+    Integer,     ///< a whole number in [min, max]; --set N
+    Number,      ///< a number; --set x
+    Pair,        ///< [x, y]; --set x,y
+    Choice,      ///< a name of grabChoices(); --set name
+    Chain,       ///< [length, …]: the pendulum's links, 1 to 100
+    Legs,        ///< {"front": [upper, lower], "back": [upper, lower]} (legParts())
+    AngleLimits, ///< {"name": [min, max], …} (angleLimits()), radians
+    Obstacles,   ///< [{"segment": [p, q]} or {"polygon": [p, …]}, …]
+    Shapes,      ///< [{"name", "points", "at"}, …]
+};
+
+/// The panel's spin box for a parameter, in the unit it shows (degrees for angle limits).
+struct SpinRange {
+    double min = 0, max = 0;
+    int decimals = 0;
+    double step = 0;
+};
+
+struct SceneParameter {
+    const char* key = "";        ///< the scene file's and --set's key, e.g. "spring_length"
+    ParameterType type = ParameterType::Number;
+    const char* thesisName = ""; ///< Annex II's or chapter 4's name, e.g. "molls"; "" if none
+    const char* unit = "";       ///< the unit the panel shows (translated there), "" if none
+    int min = 0, max = 0;        ///< Integer: the values the core accepts
+    SpinRange spin;              ///< the panel's spin boxes (Integer, Number, Pair, Chain, Legs, AngleLimits)
+    const char* label = "";      ///< the panel's row (Chain: "Link %1"; Legs, AngleLimits: per part)
+    const char* tip = "";        ///< the panel's tooltip (AngleLimits: per limit)
+    const char* fileNote = "";   ///< Obstacles, Shapes: the panel's note that the file gives them
+    /// Where the value lives (the one of the type: Integer, Number or Pair; others: null).
+    int& (*integer)(SceneSpec&) = nullptr;
+    double& (*number)(SceneSpec&) = nullptr;
+    Point& (*pair)(SceneSpec&) = nullptr;
+
+    /// Integer, Number, Pair and Choice are set with --set; the others only in the file.
+    bool settable() const;
+};
+
+/// Every parameter. The order is that of the core's magnitude check (its first number beyond
+/// 1e15 names the error); the file writer and the panel follow the scene file's order.
+const std::vector<SceneParameter>& sceneParameters();
+/// The parameter `key`, or nullptr.
+const SceneParameter* findSceneParameter(const std::string& key);
+
+/// A named part of a parameter's value, with the panel's label.
+struct ParameterPart {
+    const char* name;
+    const char* label;
+};
+/// `legs`: "front" (legs 0 and 1 of FrogParams::legs) and "back" (legs 2 and 3).
+const std::vector<ParameterPart>& legParts();
+
+/// One limit of `angle_limits` (§4.15), [min, max] in radians.
+struct AngleLimit {
+    const char* name;  ///< e.g. "shoulder_front_right"
+    const char* label; ///< the panel's row
+    const char* tip;   ///< shoulder limits are Annex II's anglesc, elbow limits its angles
+    bool pendulum;     ///< the pendulum's (chain) limits, not the frog's legs'
+    Point (*get)(const SceneSpec&);
+    void (*set)(SceneSpec&, Point);
+};
+/// The frog's six (four shoulders, two elbow pairs), then the pendulum's two, in the panel's order.
+const std::vector<AngleLimit>& angleLimits();
+
+/// One value of `grab`.
+struct GrabChoice {
+    const char* name;  ///< the file's and --set's value: all, above, anchors
+    GrabMode mode;
+    const char* label; ///< the panel's list
+};
+const std::vector<GrabChoice>& grabChoices();
+
+} // namespace granota
