@@ -68,7 +68,7 @@ void FrogParametersPanel::addRow(const QString& key, const QString& sub, int cou
     const SpinRange r = parameter(key).spin;
     for (int i = 0; i < count; ++i) {
         auto* spin = new DecimalSpinBox(this);
-        spin->setRange(r.min, r.max);
+        spin->setRange(r.lowest(), r.max);
         spin->setDecimals(r.decimals);
         spin->setSingleStep(r.step);
         spin->setKeyboardTracking(false); // apply on Enter or when leaving the field, not per digit

@@ -92,52 +92,53 @@ Json pointJson(Point p)
     return a;
 }
 
-/// `obstacles`: segments and polygons (§5.2.1).
-Expected<bool> setObstacles(SceneSpec& s, const Json& v)
+/// A list parameter (obstacles, shapes): `out` becomes the items `one` reads from the list `v`.
+template <typename Item, typename ReadOne>
+Expected<bool> setList(SceneSpec& s, const std::string& key, const Json& v, std::vector<Item>& out, ReadOne one)
 {
     const auto* list = v.asArray();
     if (!list)
-        return bad(s.name, "obstacles must be a list");
-    s.obstacles.clear();
+        return bad(s.name, key + " must be a list");
+    out.clear();
     for (const Json& o : *list) {
-        ObstacleSpec spec;
-        if (const Json* seg = o.find("segment")) {
-            auto pts = pointsOf(*seg);
-            if (!pts || pts->size() != 2)
-                return bad(s.name, "a segment obstacle has two points");
-            spec.points = *pts;
-        } else if (const Json* poly = o.find("polygon")) {
-            auto pts = pointsOf(*poly);
-            if (!pts || pts->size() < 3)
-                return bad(s.name, "a polygon obstacle has at least three points");
-            spec.points = *pts;
-            spec.closed = true;
-        } else {
-            return bad(s.name, "an obstacle is {\"segment\": …} or {\"polygon\": …}");
-        }
-        s.obstacles.push_back(std::move(spec));
+        Item item;
+        if (auto ok = one(o, item); !ok)
+            return ok;
+        out.push_back(std::move(item));
     }
     return true;
 }
 
-/// `shapes`: the bodies' rest shapes and starts (§5.2.3).
-Expected<bool> setShapes(SceneSpec& s, const Json& v)
+/// One of `obstacles`: a segment or a polygon (§5.2.1).
+Expected<bool> readObstacle(const SceneSpec& s, const Json& o, ObstacleSpec& spec)
 {
-    const auto* list = v.asArray();
-    if (!list)
-        return bad(s.name, "shapes must be a list");
-    s.shapes.clear();
-    for (const Json& o : *list) {
-        ShapeSpec spec;
-        spec.name = o.find("name") && o.find("name")->asString() ? *o.find("name")->asString() : "shape";
-        auto pts = o.find("points") ? pointsOf(*o.find("points")) : std::nullopt;
-        auto at = o.find("at") ? pointOf(*o.find("at")) : std::nullopt;
-        if (!pts || pts->size() < 3 || !at)
-            return bad(s.name, "a shape needs \"points\" (at least 3) and \"at\"");
+    if (const Json* seg = o.find("segment")) {
+        auto pts = pointsOf(*seg);
+        if (!pts || pts->size() != 2)
+            return bad(s.name, "a segment obstacle has two points");
         spec.points = *pts;
-        spec.at = *at;
-        s.shapes.push_back(std::move(spec));
+    } else if (const Json* poly = o.find("polygon")) {
+        auto pts = pointsOf(*poly);
+        if (!pts || pts->size() < 3)
+            return bad(s.name, "a polygon obstacle has at least three points");
+        spec.points = *pts;
+        spec.closed = true;
+    } else {
+        return bad(s.name, "an obstacle is {\"segment\": …} or {\"polygon\": …}");
     }
+    return true;
+}
+
+/// One of `shapes`: a body's rest shape and start (§5.2.3).
+Expected<bool> readShape(const SceneSpec& s, const Json& o, ShapeSpec& spec)
+{
+    spec.name = o.find("name") && o.find("name")->asString() ? *o.find("name")->asString() : "shape";
+    auto pts = o.find("points") ? pointsOf(*o.find("points")) : std::nullopt;
+    auto at = o.find("at") ? pointOf(*o.find("at")) : std::nullopt;
+    if (!pts || pts->size() < 3 || !at)
+        return bad(s.name, "a shape needs \"points\" (at least 3) and \"at\"");
+    spec.points = *pts;
+    spec.at = *at;
     return true;
 }
 
@@ -156,19 +157,19 @@ Expected<bool> setParam(SceneSpec& s, const std::string& key, const Json& v)
         if (!n)
             return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': " + key + " must be between " +
                                                         std::to_string(param->min) + " and " + std::to_string(param->max));
-        param->integer(s) = *n;
+        param->integerIn(s) = *n;
         return true;
     }
     case ParameterType::Number:
         if (!v.isNumber())
             return bad(s.name, key + " must be a number");
-        param->number(s) = *v.asNumber();
+        param->numberIn(s) = *v.asNumber();
         return true;
     case ParameterType::Pair: {
         auto q = pointOf(v);
         if (!q)
             return bad(s.name, key + " must be a pair x,y");
-        param->pair(s) = *q;
+        param->pairIn(s) = *q;
         return true;
     }
     case ParameterType::Choice: {
@@ -217,14 +218,14 @@ Expected<bool> setParam(SceneSpec& s, const std::string& key, const Json& v)
             const auto limit = std::find_if(limits.begin(), limits.end(), [&](const AngleLimit& l) { return name == l.name; });
             if (limit == limits.end())
                 return bad(s.name, "unknown angle limit '" + name + "'");
-            limit->set(s, *q);
+            limit->setIn(s, *q);
         }
         return true;
     }
     case ParameterType::Obstacles:
-        return setObstacles(s, v);
+        return setList(s, key, v, s.obstacles, [&](const Json& o, ObstacleSpec& spec) { return readObstacle(s, o, spec); });
     case ParameterType::Shapes:
-        return setShapes(s, v);
+        return setList(s, key, v, s.shapes, [&](const Json& o, ShapeSpec& spec) { return readShape(s, o, spec); });
     }
     return bad(s.name, "unknown parameter '" + key + "'");
 }
@@ -236,10 +237,10 @@ std::optional<std::string> tooLarge(const SceneSpec& s)
     // Only read: the table's accessors take a SceneSpec& for the reader's sake.
     SceneSpec& values = const_cast<SceneSpec&>(s);
     for (const SceneParameter& param : sceneParameters()) {
-        if (param.type == ParameterType::Number && !(std::fabs(param.number(values)) <= kMaxMagnitude))
+        if (param.type == ParameterType::Number && !(std::fabs(param.numberIn(values)) <= kMaxMagnitude))
             return std::string(param.key);
         if (param.type == ParameterType::Pair &&
-            !(std::fabs(param.pair(values).x) <= kMaxMagnitude && std::fabs(param.pair(values).y) <= kMaxMagnitude))
+            !(std::fabs(param.pairIn(values).x) <= kMaxMagnitude && std::fabs(param.pairIn(values).y) <= kMaxMagnitude))
             return std::string(param.key);
     }
     for (double v : {s.chainShoulderMin, s.chainShoulderMax, s.chainElbowMin, s.chainElbowMax})
@@ -476,13 +477,13 @@ Json sceneToJson(const SceneSpec& s)
             continue;
         switch (param->type) {
         case ParameterType::Integer:
-            params.set(key, param->integer(values));
+            params.set(key, param->integerIn(values));
             break;
         case ParameterType::Number:
-            params.set(key, param->number(values));
+            params.set(key, param->numberIn(values));
             break;
         case ParameterType::Pair:
-            params.set(key, pointJson(param->pair(values)));
+            params.set(key, pointJson(param->pairIn(values)));
             break;
         case ParameterType::Choice:
             for (const GrabChoice& c : grabChoices())
@@ -506,8 +507,8 @@ Json sceneToJson(const SceneSpec& s)
         case ParameterType::AngleLimits: {
             Json limits = Json::object();
             for (const AngleLimit& l : angleLimits())
-                if (l.pendulum == (s.model == SceneModel::Pendulum))
-                    limits.set(l.name, pointJson(l.get(s)));
+                if (l.pendulum() == (s.model == SceneModel::Pendulum))
+                    limits.set(l.name, pointJson(l.in(s)));
             params.set(key, limits);
             break;
         }

@@ -12,6 +12,7 @@
 /// translations/granota_ca.ts under "granota::ui::FrogParametersPanel".
 
 #include "core/base/vec2.h"
+#include "core/softbody/scenes/frog_params.h"
 #include "core/softbody/scenes/grab_mode.h"
 
 #include <string>
@@ -37,11 +38,23 @@ enum class ParameterType {
     Shapes,      ///< [{"name", "points", "at"}, …]
 };
 
-/// The panel's spin box for a parameter, in the unit it shows (degrees for angle limits).
+/// The panel's spin box for a parameter, in the unit it shows (degrees for angle limits). Wide
+/// ranges on purpose: docs/extreme-cases.md lists huge gravity, target area 0 or huge, 3 to 200
+/// sides and more; the core refuses what makes no sense, with a message.
 struct SpinRange {
+    bool symmetric = false; ///< from −max to max (min unused), else from min
     double min = 0, max = 0;
     int decimals = 0;
     double step = 0;
+    double lowest() const { return symmetric ? -max : min; }
+};
+
+/// Where an Integer, Number or Pair parameter's value lives: the one member pointer of its type.
+struct ParameterField {
+    int FrogParams::*frogInteger = nullptr;
+    int SceneSpec::*sceneInteger = nullptr;
+    double FrogParams::*number = nullptr;
+    Point FrogParams::*pair = nullptr;
 };
 
 struct SceneParameter {
@@ -51,14 +64,15 @@ struct SceneParameter {
     const char* unit = "";       ///< the unit the panel shows (translated there), "" if none
     int min = 0, max = 0;        ///< Integer: the values the core accepts
     SpinRange spin;              ///< the panel's spin boxes (Integer, Number, Pair, Chain, Legs, AngleLimits)
+    ParameterField field;        ///< Integer, Number, Pair: where the value lives
     const char* label = "";      ///< the panel's row (Chain: "Link %1"; Legs, AngleLimits: per part)
     const char* tip = "";        ///< the panel's tooltip (AngleLimits: per limit)
     const char* fileNote = "";   ///< Obstacles, Shapes: the panel's note that the file gives them
-    /// Where the value lives (the one of the type: Integer, Number or Pair; others: null).
-    int& (*integer)(SceneSpec&) = nullptr;
-    double& (*number)(SceneSpec&) = nullptr;
-    Point& (*pair)(SceneSpec&) = nullptr;
 
+    /// The value in `s`, as the type says (integerIn for Integer, …).
+    int& integerIn(SceneSpec& s) const;
+    double& numberIn(SceneSpec& s) const;
+    Point& pairIn(SceneSpec& s) const;
     /// Integer, Number, Pair and Choice are set with --set; the others only in the file.
     bool settable() const;
 };
@@ -79,12 +93,22 @@ const std::vector<ParameterPart>& legParts();
 
 /// One limit of `angle_limits` (§4.15), [min, max] in radians.
 struct AngleLimit {
+    enum class Joint {
+        Shoulder, ///< the upper segment's angle (Annex II's anglesc)
+        Elbow,    ///< the angle between the two segments (Annex II's angles)
+    };
+    static constexpr int kChain = -1; ///< `leg` of the pendulum's limits
+
     const char* name;  ///< e.g. "shoulder_front_right"
     const char* label; ///< the panel's row
-    const char* tip;   ///< shoulder limits are Annex II's anglesc, elbow limits its angles
-    bool pendulum;     ///< the pendulum's (chain) limits, not the frog's legs'
-    Point (*get)(const SceneSpec&);
-    void (*set)(SceneSpec&, Point);
+    const char* tip;   ///< the panel's tooltip
+    Joint joint;
+    int leg;           ///< FrogParams::legs index (an elbow limit: this leg and the next), or kChain
+
+    bool pendulum() const { return leg == kChain; }
+    /// The limit's [min, max] in `s`; setIn writes it (an elbow limit to both legs of its pair).
+    Point in(const SceneSpec& s) const;
+    void setIn(SceneSpec& s, Point q) const;
 };
 /// The frog's six (four shoulders, two elbow pairs), then the pendulum's two, in the panel's order.
 const std::vector<AngleLimit>& angleLimits();

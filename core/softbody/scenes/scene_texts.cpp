@@ -2,6 +2,8 @@
 
 #include "core/softbody/scenes/translatable_text.h"
 
+#include <algorithm>
+
 namespace granota {
 
 const std::vector<SceneText>& sceneTexts()
@@ -9,71 +11,85 @@ const std::vector<SceneText>& sceneTexts()
     static const std::vector<SceneText> texts = {
         {"polygon", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "4.1 Polygon and mouse"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "A regular polygon drawn with straight lines; its radius follows the mouse, r = |mouseY − h/2|.")},
+                           "A regular polygon drawn with straight lines; its "
+                           "radius follows the mouse, r = |mouseY − h/2|.")},
         {"gravity", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "4.2 Gravity"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "Every vertex falls with constant acceleration (MRUA) and stops at the edge of the frame.")},
+                           "Every vertex falls with constant acceleration "
+                           "(MRUA) and stops at the edge of the frame.")},
         {"bounce", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "4.3 Bounce"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "At the frame the velocity turns round and keeps a share f of itself; a click starts the polygon "
-                           "again at the mouse.")},
+                           "At the frame the velocity turns round and keeps a share f "
+                           "of itself; a click starts the polygon again at the mouse.")},
         {"springs", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "4.4 Springs"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "Springs along the edges pull each pair of neighbours back towards their rest length.")},
+                           "Springs along the edges pull each pair of "
+                           "neighbours back towards their rest length.")},
         {"area", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "4.5 Area"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "The area, by the trapezoid rule, is pushed back towards the target along the edge normals.")},
+                           "The area, by the trapezoid rule, is pushed back "
+                           "towards the target along the edge normals.")},
         {"verlet", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "4.6 Verlet and grabbing"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "Verlet integration (Def 3.1). Press inside the body to grab it: every vertex is tied to the mouse.")},
+                           "Verlet integration (Def 3.1). Press inside the body "
+                           "to grab it: every vertex is tied to the mouse.")},
         {"tuned", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "4.7 Tuned parameters"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "Only the vertices above the grab point hold on to the mouse.")},
+                           "Only the vertices above the grab "
+                           "point hold on to the mouse.")},
         {"color", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "4.8 Colour fill"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "The same body, filled with colour.")},
+                           "The same body, "
+                           "filled with colour.")},
         {"bezier", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "4.9 Bézier outline"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "The polygon's vertices are the control points of one Bézier curve, sampled once. Beside it, the "
-                           "per-frame least-squares fit that the thesis abandoned, with its cost.")},
+                           "The polygon's vertices are the control points of one Bézier curve, sampled once. "
+                           "Beside it, the per-frame least-squares fit that the thesis abandoned, with its cost.")},
         {"bezier-revised", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "4.10 Revised Bézier"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "Tuned constants, and fixed anchors for grabbing, on the precomputed Bézier points.")},
+                           "Tuned constants, and fixed anchors for "
+                           "grabbing, on the precomputed Bézier points.")},
         {"catmull-rom", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "4.12 Catmull-Rom outline"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "The outline is a Catmull-Rom curve through the vertices (τ = 1/2, Processing's curveVertex).")},
+                           "The outline is a Catmull-Rom curve through the "
+                           "vertices (τ = 1/2, Processing's curveVertex).")},
         {"pendulum", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "4.13 Pendulum"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "A double pendulum hanging from the mouse; its lengths are restored at once.")},
+                           "A double pendulum hanging from the "
+                           "mouse; its lengths are restored at once.")},
         {"pendulum-chain", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "4.14 Chain of joints"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "A chain of joints following its first joint: each joint is put back at its distance from the "
-                           "previous one.")},
+                           "A chain of joints following its first joint: each joint "
+                           "is put back at its distance from the previous one.")},
         {"pendulum-limits", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "4.15 Angle limits"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "A leg: two links with gravity, the frame, and limits on the angles at its joints.")},
+                           "A leg: two links with gravity, the frame, "
+                           "and limits on the angles at its joints.")},
         {"frog", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "4.16 The frog"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "Body, four legs and head: the final program of Annex II.")},
+                           "Body, four legs and head: the "
+                           "final program of Annex II.")},
         {"obstacles", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "5.2.1 Obstacles"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "Fixed segments and polygons that the bodies collide with (future work, §5.2).")},
+                           "Fixed segments and polygons that the "
+                           "bodies collide with (future work, §5.2).")},
         {"many-bodies", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "5.2.2 Many bodies"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "Several bodies collide with each other; a broad phase keeps the cost close to linear.")},
+                           "Several bodies collide with each other; a "
+                           "broad phase keeps the cost close to linear.")},
         {"shapes", QT_TRANSLATE_NOOP("granota::ui::FrogTab", "5.2.3 Other shapes"),
          QT_TRANSLATE_NOOP("granota::ui::FrogTab",
-                           "Bodies that are not regular polygons, kept in shape by angle constraints between their edges.")},
+                           "Bodies that are not regular polygons, kept in "
+                           "shape by angle constraints between their edges.")},
     };
     return texts;
 }
 
 const SceneText* findSceneText(const std::string& name)
 {
-    for (const SceneText& t : sceneTexts())
-        if (name == t.name)
-            return &t;
-    return nullptr;
+    const auto& all = sceneTexts();
+    const auto it = std::find_if(all.begin(), all.end(), [&](const SceneText& x) { return name == x.name; });
+    return it == all.end() ? nullptr : &*it;
 }
 
 } // namespace granota
