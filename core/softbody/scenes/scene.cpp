@@ -92,6 +92,14 @@ Json pointJson(Point p)
     return a;
 }
 
+Json pointsJson(const std::vector<Point>& points)
+{
+    Json a = Json::array();
+    for (Point q : points)
+        a.push(pointJson(q));
+    return a;
+}
+
 /// A list parameter (obstacles, shapes): `out` becomes the items `one` reads from the list `v`.
 template <typename Item, typename ReadOne>
 Expected<bool> setList(SceneSpec& s, const std::string& key, const Json& v, std::vector<Item>& out, ReadOne one)
@@ -514,27 +522,15 @@ Json sceneToJson(const SceneSpec& s)
         }
         case ParameterType::Obstacles: {
             Json list = Json::array();
-            for (const auto& o : s.obstacles) {
-                Json pts = Json::array();
-                for (Point q : o.points)
-                    pts.push(pointJson(q));
-                Json item = Json::object();
-                item.set(o.closed ? "polygon" : "segment", pts);
-                list.push(item);
-            }
+            for (const auto& o : s.obstacles)
+                list.push(Json::object().set(o.closed ? "polygon" : "segment", pointsJson(o.points)));
             params.set(key, list);
             break;
         }
         case ParameterType::Shapes: {
             Json list = Json::array();
-            for (const auto& sh : s.shapes) {
-                Json pts = Json::array();
-                for (Point q : sh.points)
-                    pts.push(pointJson(q));
-                Json item = Json::object();
-                item.set("name", sh.name).set("points", pts).set("at", pointJson(sh.at));
-                list.push(item);
-            }
+            for (const auto& sh : s.shapes)
+                list.push(Json::object().set("name", sh.name).set("points", pointsJson(sh.points)).set("at", pointJson(sh.at)));
             params.set(key, list);
             break;
         }
