@@ -58,7 +58,7 @@ class StableSimulation final : public Simulation {
 public:
     StableSimulation(const SceneSpec& scene, XpbdWorld world) : Simulation(scene, SolverKind::Stable), m_world(std::move(world)) {}
 
-    Expected<bool> build()
+    Expected<void> build()
     {
         const SceneSpec& s = scene();
         if (s.model == SceneModel::Pendulum) {
@@ -77,7 +77,7 @@ public:
             auto c = m_world.addChain(chain);
             if (!c)
                 return c.error();
-            return true;
+            return {};
         }
         const auto starts = bodyStarts(s);
         BodyOptions options;
@@ -104,7 +104,7 @@ public:
                 if (!ok)
                     return ok.error();
             }
-        return true;
+        return {};
     }
 
     int substeps() const override { return m_world.params().substeps; }

@@ -55,13 +55,13 @@ Expected<XpbdWorld> XpbdWorld::create(const XpbdParams& params)
     return world;
 }
 
-Expected<bool> XpbdWorld::setParams(const XpbdParams& params)
+Expected<void> XpbdWorld::setParams(const XpbdParams& params)
 {
     const Expected<XpbdParams> checked = validateXpbdParams(params);
     if (!checked)
         return checked.error();
     m_params = params;
-    return true;
+    return {};
 }
 
 Point XpbdWorld::clampToFrame(Point p) const
@@ -205,7 +205,7 @@ Expected<int> XpbdWorld::addRegularBody(Point centre, double radius, int sides, 
     return addBody(regularPolygon(centre, radius, sides), targetArea, velocity, options);
 }
 
-Expected<bool> XpbdWorld::setTargetArea(int body, double targetArea)
+Expected<void> XpbdWorld::setTargetArea(int body, double targetArea)
 {
     if (body < 0 || body >= bodyCount())
         return outOfRange("no such body");
@@ -214,10 +214,10 @@ Expected<bool> XpbdWorld::setTargetArea(int body, double targetArea)
     Body& b = m_bodies[at(body)];
     b.target = targetArea;
     rescaleRest(b); // bending offsets are angles: a change of scale leaves them as they are
-    return true;
+    return {};
 }
 
-Expected<bool> XpbdWorld::setBodyVertices(int body, const std::vector<Point>& vertices)
+Expected<void> XpbdWorld::setBodyVertices(int body, const std::vector<Point>& vertices)
 {
     if (body < 0 || body >= bodyCount())
         return outOfRange("no such body");
@@ -230,10 +230,10 @@ Expected<bool> XpbdWorld::setBodyVertices(int body, const std::vector<Point>& ve
         m_x[at(b.first + i)] = m_xPrev[at(b.first + i)] = clampToFrame(vertices[at(i)]);
         m_v[at(b.first + i)] = Point();
     }
-    return true;
+    return {};
 }
 
-Expected<bool> XpbdWorld::setBodyVelocity(int body, Point velocity)
+Expected<void> XpbdWorld::setBodyVelocity(int body, Point velocity)
 {
     if (body < 0 || body >= bodyCount())
         return outOfRange("no such body");
@@ -242,10 +242,10 @@ Expected<bool> XpbdWorld::setBodyVelocity(int body, Point velocity)
     const Body& b = m_bodies[at(body)];
     for (int i = 0; i < b.count; ++i)
         m_v[at(b.first + i)] = velocity;
-    return true;
+    return {};
 }
 
-Expected<bool> XpbdWorld::setBodyVelocities(int body, const std::vector<Point>& velocities)
+Expected<void> XpbdWorld::setBodyVelocities(int body, const std::vector<Point>& velocities)
 {
     if (body < 0 || body >= bodyCount())
         return outOfRange("no such body");
@@ -256,7 +256,7 @@ Expected<bool> XpbdWorld::setBodyVelocities(int body, const std::vector<Point>& 
         return invalid("velocities must be finite");
     for (int i = 0; i < b.count; ++i)
         m_v[at(b.first + i)] = velocities[at(i)];
-    return true;
+    return {};
 }
 
 Point XpbdWorld::anchorPoint(const ChainAnchor& a) const
