@@ -1,6 +1,7 @@
 #include "core/curves/splines/catmull_rom.h"
 
 #include "core/base/number_format.h"
+#include "core/base/text.h"
 
 #include <algorithm>
 #include <cassert>
@@ -10,13 +11,7 @@ namespace granota {
 
 std::optional<CatmullRomMode> parseCatmullRomMode(std::string_view text)
 {
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front())))
-        text.remove_prefix(1);
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
-        text.remove_suffix(1);
-    std::string lower(text);
-    std::transform(lower.begin(), lower.end(), lower.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string lower = lowerCase(trim(text));
     if (lower == "open")
         return CatmullRomMode::Open;
     if (lower == "cyclic")
