@@ -1,6 +1,7 @@
 #include "core/curves/fitting/least_squares_fit.h"
 
 #include "core/curves/fitting/bernstein_block.h"
+#include "core/base/enum_names.h"
 #include "core/base/number_format.h"
 #include "core/curves/fitting/tall_skinny_qr.h"
 
@@ -279,32 +280,22 @@ std::vector<double> project(const std::vector<Point>& q, const std::vector<Point
 
 } // namespace
 
+namespace {
+
+constexpr std::array<EnumName<LeastSquaresSolver>, 3> kSolverNames{{
+    {LeastSquaresSolver::Qr, "qr"},
+    {LeastSquaresSolver::Normal, "normal"},
+    {LeastSquaresSolver::Svd, "svd"},
+}};
+
+} // namespace
+
 std::optional<LeastSquaresSolver> parseLeastSquaresSolver(std::string_view text)
 {
-    std::string lower(text);
-    std::transform(lower.begin(), lower.end(), lower.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (lower == "qr")
-        return LeastSquaresSolver::Qr;
-    if (lower == "normal")
-        return LeastSquaresSolver::Normal;
-    if (lower == "svd")
-        return LeastSquaresSolver::Svd;
-    return std::nullopt;
+    return parseName(kSolverNames, text, NameMatch::IgnoreCase);
 }
 
-std::string toString(LeastSquaresSolver s)
-{
-    switch (s) {
-    case LeastSquaresSolver::Qr:
-        return "qr";
-    case LeastSquaresSolver::Normal:
-        return "normal";
-    case LeastSquaresSolver::Svd:
-        return "svd";
-    }
-    return "qr";
-}
+std::string toString(LeastSquaresSolver s) { return std::string(nameOf(kSolverNames, s, "qr")); }
 
 Eigen::MatrixXd bernsteinMatrix(const std::vector<double>& t, int n)
 {

@@ -1,7 +1,7 @@
 #include "core/curves/splines/catmull_rom.h"
 
 #include "core/base/number_format.h"
-#include "core/base/text.h"
+#include "core/base/enum_names.h"
 
 #include <algorithm>
 #include <cassert>
@@ -9,30 +9,22 @@
 
 namespace granota {
 
+namespace {
+
+constexpr std::array<EnumName<CatmullRomMode>, 3> kModeNames{{
+    {CatmullRomMode::Open, "open"},
+    {CatmullRomMode::Cyclic, "cyclic"},
+    {CatmullRomMode::Closed, "closed"},
+}};
+
+} // namespace
+
 std::optional<CatmullRomMode> parseCatmullRomMode(std::string_view text)
 {
-    const std::string lower = lowerCase(trim(text));
-    if (lower == "open")
-        return CatmullRomMode::Open;
-    if (lower == "cyclic")
-        return CatmullRomMode::Cyclic;
-    if (lower == "closed")
-        return CatmullRomMode::Closed;
-    return std::nullopt;
+    return parseName(kModeNames, text, NameMatch::IgnoreCaseTrim);
 }
 
-std::string toString(CatmullRomMode mode)
-{
-    switch (mode) {
-    case CatmullRomMode::Open:
-        return "open";
-    case CatmullRomMode::Cyclic:
-        return "cyclic";
-    case CatmullRomMode::Closed:
-        return "closed";
-    }
-    return "open";
-}
+std::string toString(CatmullRomMode mode) { return std::string(nameOf(kModeNames, mode, "open")); }
 
 Expected<std::vector<std::array<int, 4>>> catmullRomQuadruples(std::size_t count, CatmullRomMode mode)
 {
