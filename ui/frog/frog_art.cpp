@@ -1,4 +1,5 @@
 #include "ui/frog/frog_art.h"
+#include "core/base/math_constants.h"
 
 #include <QLinearGradient>
 #include <QPaintEngine>
@@ -182,7 +183,7 @@ void FrogArt::paintBackground(QPainter& p, double W, double H) const
         p.setPen(Qt::NoPen);
         p.setBrush(QColor(0xf4, 0xb6, 0xc6));
         for (int k = 0; k < 6; ++k) {
-            const double a = k * M_PI / 3;
+            const double a = k * kPi / 3;
             p.drawEllipse(c + QPointF(1.2 * r * std::cos(a), 0.8 * r * std::sin(a)), r, 0.7 * r);
         }
         p.setBrush(QColor(0xf7, 0xd9, 0x6b));
@@ -307,7 +308,7 @@ void FrogArt::paintHead(QPainter& p, QPointF at, double angle, double scale, QPo
 
     p.save();
     p.translate(at);
-    p.rotate(angle * 180 / M_PI);
+    p.rotate(angle * 180 / kPi);
     p.scale(scale, scale);
     if (fromImage) {
         // A crowd of small heads: one image each (made once per size), then the pupils.
@@ -329,7 +330,7 @@ void FrogArt::paintFoot(QPainter& p, QPointF wrist, double angle, double scale) 
 {
     p.save();
     p.translate(wrist);
-    p.rotate(angle * 180 / M_PI);
+    p.rotate(angle * 180 / kPi);
     p.scale(scale, scale);
     p.setPen(m_footEdgePen);
     p.setBrush(Qt::NoBrush);

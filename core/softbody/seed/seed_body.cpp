@@ -1,4 +1,5 @@
 #include "core/softbody/seed/seed_body.h"
+#include "core/base/math_constants.h"
 
 #include "core/softbody/point_in_polygon.h"
 #include "core/softbody/seed/seed_lanes.h"
@@ -126,7 +127,7 @@ template <class R> void SeedBody<R>::initialise(const Vec& centre, const Vec& vI
 {
     // Annex II, Poligon.inicialitza. PI, HALF_PI and TWO_PI are Processing's float
     // constants (HALF_PI = PI/2 and TWO_PI = 2·PI exactly).
-    const R pi = R(3.14159265358979323846);
+    const R pi = R(kPi);
     const R halfPi = pi / R(2), twoPi = R(2) * pi;
     const int N = m_n;
     m_grabbed = false;

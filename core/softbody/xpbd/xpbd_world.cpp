@@ -1,4 +1,5 @@
 #include "core/softbody/xpbd/xpbd_world.h"
+#include "core/base/math_constants.h"
 
 #include "core/softbody/regular_polygon.h"
 #include "core/softbody/xpbd/xpbd_recovery.h"
@@ -282,7 +283,7 @@ Expected<int> XpbdWorld::addChain(const ChainDef& def)
     if (!def.limits.empty() && static_cast<int>(def.limits.size()) != joints - 1)
         return invalid("give one angle limit per link, or none");
     for (const AngleLimit& l : def.limits)
-        if (!(l.min >= -M_PI - 1e-9 && l.max <= M_PI + 1e-9 && l.min <= l.max))
+        if (!(l.min >= -kPi - 1e-9 && l.max <= kPi + 1e-9 && l.min <= l.max))
             return outOfRange("angle limits must satisfy −π ≤ min ≤ max ≤ π");
     if (!(std::isfinite(def.jointMass) && def.jointMass > 0))
         return outOfRange("the joints' mass must be positive and finite");
@@ -338,8 +339,8 @@ Expected<int> XpbdWorld::addChain(const ChainDef& def)
         AngleConstraint ac;
         ac.b0 = c.first + k;
         ac.b1 = c.first + k + 1;
-        ac.lo = std::max(lim.min, -M_PI);
-        ac.hi = std::min(lim.max, M_PI);
+        ac.lo = std::max(lim.min, -kPi);
+        ac.hi = std::min(lim.max, kPi);
         ac.kind = ConstraintKind::Rigid;
         if (lim.reference == AngleReference::Parent && k > 0) {
             ac.a0 = c.first + k - 1;
