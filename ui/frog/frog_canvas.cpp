@@ -4,7 +4,7 @@
 
 #include "core/softbody/outline.h"
 #include "core/softbody/outline_sampling.h"
-#include "core/softbody/point_in_polygon.h"
+#include "core/softbody/polygon_geometry.h"
 
 #include <QAbstractSpinBox>
 #include <QApplication>

@@ -1,7 +1,7 @@
 #include "core/softbody/seed/seed_body.h"
 #include "core/base/math_constants.h"
 
-#include "core/softbody/point_in_polygon.h"
+#include "core/softbody/polygon_geometry.h"
 #include "core/softbody/seed/seed_lanes.h"
 #include "core/softbody/seed/seed_leg_lanes.h"
 
@@ -217,7 +217,9 @@ template <class R> const std::vector<typename SeedBody<R>::Vec>& SeedBody<R>::co
 template <class R> R SeedBody<R>::area() const
 {
     // Annex II, calculaarea: trapezoids between each edge and the x axis (§4.5),
-    // L = x_i − x_{i+1}, W = (y_i + y_{i+1})/2, summed in this order.
+    // L = x_i − x_{i+1}, W = (y_i + y_{i+1})/2, summed in this order. Not trapezoidArea
+    // (polygon_geometry.h), which halves once at the end: the seed halves every term, in
+    // its float lanes, as the thesis's program does, so that its traces are reproduced.
     const R* const x = lanes(X);
     const R* const y = lanes(Y);
     R area = 0;

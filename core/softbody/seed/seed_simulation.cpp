@@ -3,7 +3,7 @@
 // (§4.13–4.15). Single precision, as Processing computes: with the thesis's constants the
 // frog reproduces the reference trace bit for bit.
 #include "core/softbody/seed/follow_chain.h"
-#include "core/softbody/polygon_area.h"
+#include "core/softbody/polygon_geometry.h"
 #include "core/softbody/regular_polygon.h"
 #include "core/softbody/seed/seed_frog.h"
 #include "core/softbody/scenes/scene_layout.h"
@@ -21,10 +21,7 @@ using Real = float;
 SeedComponents componentsOf(const SceneSpec& s)
 {
     SeedComponents c;
-    c.gravity = s.has("gravity");
-    c.bounds = s.has("bounds");
-    c.springs = s.has("springs");
-    c.area = s.has("area");
+    setSharedComponents(c, s);
     c.legs = s.has("legs");
     c.grab = s.has("grab");
     c.angleLimits = s.has("angle-limits");

@@ -1,6 +1,6 @@
 #include "core/softbody/seed/stage_body.h"
 
-#include "core/softbody/polygon_area.h"
+#include "core/softbody/polygon_geometry.h"
 #include "core/softbody/regular_polygon.h"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // §4.1–4.5 on the seed's explicit scheme.
-#include "core/softbody/polygon_area.h"
+#include "core/softbody/polygon_geometry.h"
 #include "core/base/math_constants.h"
 #include "core/softbody/simulation_backends.h"
 #include "core/softbody/seed/stage_body.h"
@@ -73,11 +73,8 @@ private:
 Expected<std::unique_ptr<Simulation>> makeStageSimulation(const SceneSpec& scene)
 {
     StageComponents c;
-    c.gravity = scene.has("gravity");
-    c.bounds = scene.has("bounds");
+    setSharedComponents(c, scene);
     c.bounce = scene.has("bounce");
-    c.springs = scene.has("springs");
-    c.area = scene.has("area");
     FrogParams params = scene.params;
     if (!scene.hasParam("v0"))
         params.v0 = Point(0, 0); // §4.1's polygon does not move

@@ -17,23 +17,6 @@ double wrapAngle(double a)
     return r <= -kPi ? r + 2 * kPi : r;
 }
 
-double signedArea(const Point* x, int n)
-{
-    // ½ Σ (xᵢ − xᵢ₊₁)(yᵢ + yᵢ₊₁) of §4.5 equals ½ Σ xᵢ × xᵢ₊₁ (the xᵢyᵢ terms telescope).
-    // Taken relative to x[0] so that a small polygon far from the origin loses no digits.
-    if (n < 3)
-        return 0;
-    const Point o = x[0];
-    double twice = 0;
-    Point prev = x[1] - o;
-    for (int i = 2; i < n; ++i) {
-        const Point cur = x[i] - o;
-        twice += cross(prev, cur);
-        prev = cur;
-    }
-    return 0.5 * twice;
-}
-
 void solveEdgeRing(DistanceConstraint* e, int n, Point* x, const double* w, double alphaTildePerLength, Point* delta)
 {
     constexpr double omega = 0.5; // each vertex lies on two edges: apply their mean

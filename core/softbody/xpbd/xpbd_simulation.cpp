@@ -3,7 +3,7 @@
 // the springs and area of §4.1–4.3, one so compliant that it does nothing).
 #include "core/softbody/scenes/scene_layout.h"
 #include "core/base/math_constants.h"
-#include "core/softbody/polygon_area.h"
+#include "core/softbody/polygon_geometry.h"
 #include "core/softbody/regular_polygon.h"
 #include "core/softbody/simulation_backends.h"
 #include "core/softbody/xpbd/xpbd_world.h"
