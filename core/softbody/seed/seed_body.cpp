@@ -320,7 +320,7 @@ template <class R> bool SeedBody<R>::press(const Point& mouse)
     m_mouse = clampMouse(mouse);
     // mousePressed: `if (!ocupat) if (estadins(mouseX, mouseY))`. The inside test is the
     // crossing test of §4.6 with the vertex double-count of estadins fixed
-    // (core/softbody/point_in_polygon.h): estadins misses every click on the vertical through a
+    // (core/softbody/polygon_geometry.h): estadins misses every click on the vertical through a
     // vertex — the centre of the initial body among them.
     if (!m_components.grab || m_grabbed)
         return false;
