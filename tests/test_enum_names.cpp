@@ -19,6 +19,17 @@ constexpr std::array<EnumName<Colour>, 2> kColours{{{Colour::Red, "red"}, {Colou
 
 static_assert(nameOf(kColours, Colour::Green) == "green", "nameOf is constexpr");
 
+/// Every value's name reads back as that value.
+template <class E, class Parse, class Name> bool roundTrips(std::initializer_list<E> values, Parse parse, Name name)
+{
+    for (E v : values)
+        if (!(parse(name(v)) == std::optional<E>(v)))
+            return false;
+    return true;
+}
+
+const auto anyToString = [](auto v) { return toString(v); };
+
 } // namespace
 
 class TestEnumNames : public QObject {
@@ -45,25 +56,24 @@ private slots:
 
     void integratorsAndSolversAreExactLowerCase()
     {
-        for (Integrator i : {Integrator::ExplicitEuler, Integrator::SemiImplicitEuler, Integrator::Verlet, Integrator::Rk4})
-            QVERIFY(parseIntegrator(integratorName(i)) == std::optional<Integrator>(i));
+        QVERIFY(roundTrips({Integrator::ExplicitEuler, Integrator::SemiImplicitEuler, Integrator::Verlet, Integrator::Rk4},
+                           parseIntegrator, integratorName));
         QCOMPARE(integratorName(Integrator::SemiImplicitEuler), std::string("semi-implicit-euler"));
         QVERIFY(parseIntegrator("RK4") == std::optional<Integrator>());
         QVERIFY(parseIntegrator(" rk4") == std::optional<Integrator>());
-        for (SolverKind s : {SolverKind::Seed, SolverKind::Stable})
-            QVERIFY(parseSolverKind(solverName(s)) == std::optional<SolverKind>(s));
+        QVERIFY(roundTrips({SolverKind::Seed, SolverKind::Stable}, parseSolverKind, solverName));
         QVERIFY(parseSolverKind("Seed") == std::optional<SolverKind>());
         QVERIFY(parseSolverKind("stable ") == std::optional<SolverKind>());
     }
 
     void fittingNamesIgnoreCaseButNotSpaces()
     {
-        for (LeastSquaresSolver s : {LeastSquaresSolver::Qr, LeastSquaresSolver::Normal, LeastSquaresSolver::Svd})
-            QVERIFY(parseLeastSquaresSolver(toString(s)) == std::optional<LeastSquaresSolver>(s));
+        QVERIFY(roundTrips({LeastSquaresSolver::Qr, LeastSquaresSolver::Normal, LeastSquaresSolver::Svd},
+                           parseLeastSquaresSolver, anyToString));
         QVERIFY(parseLeastSquaresSolver("SVD") == std::optional<LeastSquaresSolver>(LeastSquaresSolver::Svd));
         QVERIFY(parseLeastSquaresSolver(" qr") == std::optional<LeastSquaresSolver>());
-        for (Parametrization p : {Parametrization::Uniform, Parametrization::ChordLength, Parametrization::Centripetal})
-            QVERIFY(parseParametrization(toString(p)) == std::optional<Parametrization>(p));
+        QVERIFY(roundTrips({Parametrization::Uniform, Parametrization::ChordLength, Parametrization::Centripetal},
+                           parseParametrization, anyToString));
         QVERIFY(parseParametrization("Chord") == std::optional<Parametrization>(Parametrization::ChordLength));
         QVERIFY(parseParametrization("chordal") == std::optional<Parametrization>());
         QVERIFY(parseParametrization("uniform ") == std::optional<Parametrization>());
@@ -71,8 +81,8 @@ private slots:
 
     void catmullRomModesIgnoreCaseAndSpaces()
     {
-        for (CatmullRomMode m : {CatmullRomMode::Open, CatmullRomMode::Cyclic, CatmullRomMode::Closed})
-            QVERIFY(parseCatmullRomMode(toString(m)) == std::optional<CatmullRomMode>(m));
+        QVERIFY(roundTrips({CatmullRomMode::Open, CatmullRomMode::Cyclic, CatmullRomMode::Closed}, parseCatmullRomMode,
+                           anyToString));
         QVERIFY(parseCatmullRomMode("  Closed\t") == std::optional<CatmullRomMode>(CatmullRomMode::Closed));
         QVERIFY(parseCatmullRomMode("loop") == std::optional<CatmullRomMode>());
     }

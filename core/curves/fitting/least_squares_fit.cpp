@@ -282,10 +282,6 @@ std::vector<double> project(const std::vector<Point>& q, const std::vector<Point
     return out;
 }
 
-} // namespace
-
-namespace {
-
 constexpr std::array<EnumName<LeastSquaresSolver>, 3> kSolverNames{{
     {LeastSquaresSolver::Qr, "qr"},
     {LeastSquaresSolver::Normal, "normal"},

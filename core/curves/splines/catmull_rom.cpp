@@ -9,19 +9,13 @@
 
 namespace granota {
 
-namespace {
-
-constexpr std::array<EnumName<CatmullRomMode>, 3> kModeNames{{
-    {CatmullRomMode::Open, "open"},
-    {CatmullRomMode::Cyclic, "cyclic"},
-    {CatmullRomMode::Closed, "closed"},
-}};
-
-} // namespace
+// Def 2.10's options, by the names the CLI and the saved documents use.
+constexpr std::array<EnumName<CatmullRomMode>, 3> kModeNames{
+    {{CatmullRomMode::Open, "open"}, {CatmullRomMode::Cyclic, "cyclic"}, {CatmullRomMode::Closed, "closed"}}};
 
 std::optional<CatmullRomMode> parseCatmullRomMode(std::string_view text)
 {
-    return parseName(kModeNames, text, NameMatch::IgnoreCaseTrim);
+    return parseName(kModeNames, text, NameMatch::IgnoreCaseTrim); // "  Closed " is closed
 }
 
 std::string toString(CatmullRomMode mode) { return std::string(nameOf(kModeNames, mode, "open")); }
