@@ -578,8 +578,7 @@ void FitTab::updateReadouts()
         case FitWarningCode::HighDegree:
             warnings << tr("⚠ High degree n = %1: the Bernstein basis grows ill-conditioned (cond₂(M) ≈ %2); a "
                            "lower degree or a spline is usually the better model.")
-                            .arg(w.degree)
-                            .arg(number(w.cond));
+                            .arg(w.degree).arg(number(w.cond));
             break;
         case FitWarningCode::NormalEquationsSquare:
             warnings << tr("⚠ The normal equations square the condition number: cond₂(MᵀM) ≈ %1, so about %2 of "
