@@ -1,7 +1,6 @@
 // Geometry of chapter 4: the regular polygon (§4.1), the trapezoid-rule area (§4.5) and
 // the point-in-polygon crossing test (§4.6).
-#include "core/softbody/point_in_polygon.h"
-#include "core/softbody/polygon_area.h"
+#include "core/softbody/polygon_geometry.h"
 #include "core/softbody/regular_polygon.h"
 #include "core/exact/rational.h"
 

@@ -2,8 +2,7 @@
 // legs, the thesis's precomputed Bézier points and the per-frame least-squares fit.
 #include "core/curves/fitting/least_squares_fit.h"
 #include "core/softbody/outline.h"
-#include "core/softbody/polygon_area.h"
-#include "core/softbody/point_in_polygon.h"
+#include "core/softbody/polygon_geometry.h"
 #include "core/softbody/regular_polygon.h"
 
 #include <QtTest>

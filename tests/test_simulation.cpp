@@ -1,8 +1,7 @@
 // Every scene on both solvers through the one Simulation interface: finite and in the
 // frame for 1000 steps, deterministic, the seed trace through the facade, grabs that move
 // bodies, stable area at rest, and the stiff and extreme settings of docs/extreme-cases.md.
-#include "core/softbody/point_in_polygon.h"
-#include "core/softbody/polygon_area.h"
+#include "core/softbody/polygon_geometry.h"
 #include "core/softbody/seed/seed_trace.h"
 #include "core/softbody/simulation.h"
 #include "core/softbody/simulation_trace.h"

@@ -1,8 +1,7 @@
 // The `stable` solver (XPBD with substeps): exact area, stiff and extreme settings,
 // recovery, grabbing, obstacles, many bodies, chains, determinism and energy.
 #include "core/softbody/scenes/frog_params.h"
-#include "core/softbody/point_in_polygon.h"
-#include "core/softbody/polygon_area.h"
+#include "core/softbody/polygon_geometry.h"
 #include "core/softbody/regular_polygon.h"
 #include "core/softbody/xpbd/xpbd_broad_phase.h"
 #include "core/softbody/xpbd/xpbd_chain.h"

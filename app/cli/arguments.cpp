@@ -7,6 +7,18 @@
 
 namespace granota::cli {
 
+namespace {
+
+/// An option that was not given: its fallback, or the error that it is required.
+template <class T> Expected<T> absent(const std::string& name, const std::optional<T>& fallback)
+{
+    if (fallback)
+        return *fallback;
+    return makeError(ErrorCode::InvalidInput, "--" + name + " is required");
+}
+
+} // namespace
+
 Expected<Arguments> Arguments::parse(const std::vector<std::string>& args, const CommandSyntax& syntax)
 {
     Arguments a;
@@ -66,11 +78,8 @@ std::vector<std::string> Arguments::values(const std::string& name) const
 Expected<Rational> Arguments::rational(const std::string& name, std::optional<Rational> fallback) const
 {
     auto v = value(name);
-    if (!v) {
-        if (fallback)
-            return *fallback;
-        return makeError(ErrorCode::InvalidInput, "--" + name + " is required");
-    }
+    if (!v)
+        return absent(name, fallback);
     auto q = parseRational(*v);
     if (!q)
         return makeError(ErrorCode::InvalidInput,
@@ -81,11 +90,8 @@ Expected<Rational> Arguments::rational(const std::string& name, std::optional<Ra
 Expected<int> Arguments::integer(const std::string& name, int min, int max, std::optional<int> fallback) const
 {
     auto v = value(name);
-    if (!v) {
-        if (fallback)
-            return *fallback;
-        return makeError(ErrorCode::InvalidInput, "--" + name + " is required");
-    }
+    if (!v)
+        return absent(name, fallback);
     auto q = parseRational(*v);
     if (!q || q->get_den() != 1)
         return makeError(ErrorCode::InvalidInput, "--" + name + " " + quotedForDisplay(*v) + " is not a whole number");
@@ -99,11 +105,8 @@ Expected<std::string> Arguments::choice(const std::string& name, const std::vect
                                         std::optional<std::string> fallback) const
 {
     auto v = value(name);
-    if (!v) {
-        if (fallback)
-            return *fallback;
-        return makeError(ErrorCode::InvalidInput, "--" + name + " is required");
-    }
+    if (!v)
+        return absent(name, fallback);
     for (const auto& c : choices)
         if (*v == c)
             return *v;

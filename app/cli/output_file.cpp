@@ -14,7 +14,7 @@ Error writeError(const std::string& what, int errnoValue)
                      "cannot write " + what + ": " + (errnoValue != 0 ? systemErrorText(errnoValue) : "the write failed"));
 }
 
-Expected<bool> writeFile(const std::string& path, std::string_view bytes)
+Expected<void> writeFile(const std::string& path, std::string_view bytes)
 {
     const std::string name = quotedForDisplay(path);
     errno = 0;
@@ -30,7 +30,7 @@ Expected<bool> writeFile(const std::string& path, std::string_view bytes)
         return writeError(name, writeErrno);
     if (!closed)
         return writeError(name, errno);
-    return true;
+    return {};
 }
 
 } // namespace granota::cli

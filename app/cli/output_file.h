@@ -15,6 +15,6 @@ namespace granota::cli {
 Error writeError(const std::string& what, int errnoValue);
 
 /// Writes `bytes` to the file at `path`, replacing it; the error names the file.
-Expected<bool> writeFile(const std::string& path, std::string_view bytes);
+Expected<void> writeFile(const std::string& path, std::string_view bytes);
 
 } // namespace granota::cli

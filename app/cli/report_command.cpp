@@ -57,7 +57,7 @@ std::vector<std::string> context()
 /// Renders the report's plot to SVG and PNG with QCustomPlot. Needs a QApplication: the
 /// command makes one on the offscreen platform (no display needed). The images are drawn
 /// in memory and written by writeFile(), so that a failed write says which file and why.
-Expected<bool> writePlots(const WorkPrecisionReport& report, const std::string& base)
+Expected<void> writePlots(const WorkPrecisionReport& report, const std::string& base)
 {
     QCustomPlot plot;
     plot.resize(900, 600);

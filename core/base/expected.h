@@ -3,8 +3,10 @@
 /// Errors a user can cause are values, not crashes: a function that can fail on user
 /// input returns Expected<T>, holding either the result or an Error with a message.
 /// (C++17 has no std::expected; this is the small part of it Granota needs.)
+/// Expected<void> is a check or an action that has no result: success is `return {};`.
 
 #include <cassert>
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -48,6 +50,24 @@ public:
 
 private:
     std::variant<T, Error> m_v;
+};
+
+/// A check or an action that yields nothing but may fail: `return {};` on success, an Error
+/// otherwise. Tested as the general one (ok(), operator bool, error()).
+template <> class Expected<void> {
+public:
+    Expected() = default;
+    Expected(Error error) : m_error(std::move(error)) {}
+
+    bool ok() const { return !m_error.has_value(); }
+    explicit operator bool() const { return ok(); }
+
+    void value() const { assert(ok()); }
+
+    const Error& error() const { assert(!ok()); return *m_error; }
+
+private:
+    std::optional<Error> m_error;
 };
 
 inline Error makeError(ErrorCode code, std::string message) { return Error{code, std::move(message)}; }

@@ -1,5 +1,7 @@
 #include "core/exact/rational.h"
 
+#include "core/base/text.h"
+
 #include <cctype>
 #include <cfloat>
 #include <charconv>
@@ -19,15 +21,6 @@ bool allDigits(std::string_view s)
         if (!std::isdigit(static_cast<unsigned char>(c)))
             return false;
     return true;
-}
-
-std::string_view trim(std::string_view s)
-{
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front())))
-        s.remove_prefix(1);
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back())))
-        s.remove_suffix(1);
-    return s;
 }
 
 // Largest |exponent| accepted in "1e…": keeps a typo like 1e999999999 from eating memory.

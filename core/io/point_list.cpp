@@ -2,23 +2,14 @@
 
 #include "core/base/display_text.h"
 #include "core/base/input_limits.h"
+#include "core/base/text.h"
 #include "core/io/json.h"
 
-#include <cctype>
 #include <string>
 
 namespace granota {
 
 namespace {
-
-std::string_view trim(std::string_view s)
-{
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front())))
-        s.remove_prefix(1);
-    while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back())))
-        s.remove_suffix(1);
-    return s;
-}
 
 /// Text from a file or typed by a user inside a message: quoted, control characters escaped.
 std::string quoted(std::string_view s) { return quotedForDisplay(s, 40); }

@@ -2,7 +2,7 @@
 // work spent on them. XPBD (the `stable` solver) with rigid edges and an exact area
 // constraint (§4.4, §4.5 made hard constraints) over more and more substeps; the seed's
 // soft corrections (Annex II) for comparison.
-#include "core/softbody/polygon_area.h"
+#include "core/softbody/polygon_geometry.h"
 #include "core/softbody/regular_polygon.h"
 #include "core/softbody/scenes/scene.h"
 #include "core/softbody/simulation.h"

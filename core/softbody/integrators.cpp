@@ -1,30 +1,23 @@
 #include "core/softbody/integrators.h"
 
+#include "core/base/enum_names.h"
+
 namespace granota {
 
-std::optional<Integrator> parseIntegrator(std::string_view name)
-{
-    if (name == "euler")
-        return Integrator::ExplicitEuler;
-    if (name == "semi-implicit-euler")
-        return Integrator::SemiImplicitEuler;
-    if (name == "verlet")
-        return Integrator::Verlet;
-    if (name == "rk4")
-        return Integrator::Rk4;
-    return std::nullopt;
-}
+namespace {
 
-std::string integratorName(Integrator i)
-{
-    switch (i) {
-    case Integrator::ExplicitEuler: return "euler";
-    case Integrator::SemiImplicitEuler: return "semi-implicit-euler";
-    case Integrator::Verlet: return "verlet";
-    case Integrator::Rk4: return "rk4";
-    }
-    return {};
-}
+constexpr std::array<EnumName<Integrator>, 4> kIntegratorNames{{
+    {Integrator::ExplicitEuler, "euler"},
+    {Integrator::SemiImplicitEuler, "semi-implicit-euler"},
+    {Integrator::Verlet, "verlet"},
+    {Integrator::Rk4, "rk4"},
+}};
+
+} // namespace
+
+std::optional<Integrator> parseIntegrator(std::string_view name) { return parseName(kIntegratorNames, name); }
+
+std::string integratorName(Integrator i) { return std::string(nameOf(kIntegratorNames, i)); }
 
 int evaluationsPerStep(Integrator i) { return i == Integrator::Rk4 ? 4 : 1; }
 

@@ -21,7 +21,8 @@ namespace granota {
 
 enum class Integrator { ExplicitEuler, SemiImplicitEuler, Verlet, Rk4 };
 
-/// "euler", "semi-implicit-euler", "verlet", "rk4".
+/// "euler", "semi-implicit-euler", "verlet", "rk4", exactly (case and blanks count);
+/// nullopt for anything else.
 std::optional<Integrator> parseIntegrator(std::string_view name);
 std::string integratorName(Integrator i);
 /// Evaluations of the acceleration per step (what a step costs).

@@ -1,4 +1,5 @@
 #include "core/softbody/regular_polygon.h"
+#include "core/base/math_constants.h"
 
 #include <cassert>
 #include <cmath>
@@ -10,7 +11,7 @@ std::vector<Point> regularPolygon(const Point& centre, double radius, int sides,
     assert(sides >= 3 && radius >= 0);
     std::vector<Point> v;
     v.reserve(static_cast<std::size_t>(sides));
-    const double step = 2.0 * M_PI / sides; // α = 2π/n
+    const double step = 2.0 * kPi / sides; // α = 2π/n
     for (int i = 0; i < sides; ++i) {
         const double a = startAngle + i * step;
         v.emplace_back(centre.x + radius * std::cos(a), centre.y + radius * std::sin(a));

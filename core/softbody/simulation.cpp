@@ -1,21 +1,22 @@
 #include "core/softbody/simulation.h"
 
+#include "core/base/enum_names.h"
+
 #include "core/softbody/simulation_backends.h"
 
 #include <cmath>
 
 namespace granota {
 
-std::optional<SolverKind> parseSolverKind(std::string_view name)
-{
-    if (name == "seed")
-        return SolverKind::Seed;
-    if (name == "stable")
-        return SolverKind::Stable;
-    return std::nullopt;
-}
+namespace {
 
-std::string solverName(SolverKind s) { return s == SolverKind::Seed ? "seed" : "stable"; }
+constexpr std::array<EnumName<SolverKind>, 2> kSolverNames{{{SolverKind::Seed, "seed"}, {SolverKind::Stable, "stable"}}};
+
+} // namespace
+
+std::optional<SolverKind> parseSolverKind(std::string_view name) { return parseName(kSolverNames, name); }
+
+std::string solverName(SolverKind s) { return std::string(nameOf(kSolverNames, s, "stable")); }
 
 Expected<std::unique_ptr<Simulation>> Simulation::create(const SceneSpec& scene, SolverKind solver)
 {

@@ -18,6 +18,7 @@
 namespace granota {
 
 enum class SolverKind { Seed, Stable };
+/// "seed", "stable", exactly (case and blanks count); nullopt for anything else.
 std::optional<SolverKind> parseSolverKind(std::string_view name);
 std::string solverName(SolverKind s);
 

@@ -6,6 +6,17 @@
 
 namespace granota {
 
+/// The parts of chapter 4 both of the seed's schemes (StageComponents, SeedComponents)
+/// switch on from the scene's components (docs/scenes.md): gravity and the frame (§4.2),
+/// the springs (§4.4), the area (§4.5).
+template <class Components> void setSharedComponents(Components& c, const SceneSpec& scene)
+{
+    c.gravity = scene.has("gravity");
+    c.bounds = scene.has("bounds");
+    c.springs = scene.has("springs");
+    c.area = scene.has("area");
+}
+
 /// §4.1–4.5 on the seed's explicit scheme (StageBody).
 Expected<std::unique_ptr<Simulation>> makeStageSimulation(const SceneSpec& scene);
 /// §4.6–4.12, §4.16 and §5.2 on Annex II's Verlet body and legs.

@@ -1,7 +1,7 @@
 #include "ui/fit/fit_tab.h"
 #include "ui/common/number_text.h"
 
-#include "core/curves/fitting/data_shape.h"
+#include "core/curves/fitting/fit_warning.h"
 #include "core/curves/bezier/de_casteljau.h"
 #include "core/curves/fitting/fit_error_by_degree.h"
 #include "core/base/input_limits.h"
@@ -553,31 +553,6 @@ void FitTab::updateReadouts()
                                  : tr("Condition number cond₂(M): %1").arg(number(m_fit->cond)));
         m_correctionsLabel->setVisible(m_settings.correctParameters);
         m_correctionsLabel->setText(tr("Parameter corrections that lowered the error: %1").arg(m_fit->corrections));
-        const int n = fittedDegree();
-        if (m_fit->cond > kIllConditioned)
-            warnings << tr("⚠ Ill-conditioned: cond₂(M) ≈ %1. The control points are very sensitive to the data; "
-                           "lower the degree.")
-                            .arg(number(m_fit->cond));
-        else if (n > kHighDegree)
-            warnings << tr("⚠ High degree n = %1: the Bernstein basis grows ill-conditioned (cond₂(M) ≈ %2); a "
-                           "lower degree or a spline is usually the better model.")
-                            .arg(n)
-                            .arg(number(m_fit->cond));
-        if (m_settings.solver == LeastSquaresSolver::Normal && m_fit->cond > 1e5) {
-            const double squared = m_fit->cond * m_fit->cond;
-            warnings << tr("⚠ The normal equations square the condition number: cond₂(MᵀM) ≈ %1, so about %2 of "
-                           "the 16 significant digits may be lost. Choose QR.")
-                            .arg(number(squared))
-                            .arg(std::min(16, static_cast<int>(std::log10(squared))));
-        }
-        std::vector<double> sorted = m_fit->params;
-        std::sort(sorted.begin(), sorted.end());
-        const auto distinct = std::unique(sorted.begin(), sorted.end()) - sorted.begin();
-        if (distinct < n + 1)
-            warnings << tr("⚠ Only %1 distinct parameters t_i for %2 control points: M is rank deficient, and the "
-                           "control points shown are the minimum-norm least-squares solution.")
-                            .arg(distinct)
-                            .arg(n + 1);
     } else {
         m_sseLabel->setText(tr("No fit: %1").arg(m_fitError));
         m_rmsLabel->clear();
@@ -588,21 +563,56 @@ void FitTab::updateReadouts()
     m_rmsLabel->setVisible(m_fit.has_value());
     m_maxLabel->setVisible(m_fit.has_value());
     m_condLabel->setVisible(m_fit.has_value());
-    // The shape of the data: explain degenerate input rather than draw something odd.
-    const DataShape shape = analyseDataShape(q);
-    const bool byDistance = m_settings.parametrization != Parametrization::Uniform;
-    if (q.size() >= 2 && shape.allCoincide)
-        warnings << (byDistance ? tr("All the data points coincide: the chord lengths are all zero, so uniform "
-                                     "parameters are used instead.")
-                                : tr("All the data points coincide: the curve is that point."));
-    else if (byDistance && shape.zeroChords > 0)
-        warnings << tr("Q%1 and Q%2 coincide: a zero chord length gives them the same parameter t_i (%n such "
-                       "pair(s)).",
-                       nullptr, shape.zeroChords)
-                        .arg(shape.firstZeroChord - 1)
-                        .arg(shape.firstZeroChord);
-    if (q.size() >= 2 && shape.collinear && !shape.allCoincide)
-        warnings << tr("The data points are collinear: the fitted curve and its control points lie on their line.");
+    // The core decides what to warn about (fit_warning.h); the tab only words it.
+    FitOptions options;
+    options.degree = fittedDegree();
+    options.parametrization = m_settings.parametrization;
+    options.solver = m_settings.solver;
+    for (const FitWarning& w : fitWarnings(m_fit ? &*m_fit : nullptr, q, options)) {
+        switch (w.code) {
+        case FitWarningCode::IllConditioned:
+            warnings << tr("⚠ Ill-conditioned: cond₂(M) ≈ %1. The control points are very sensitive to the data; "
+                           "lower the degree.")
+                            .arg(number(w.cond));
+            break;
+        case FitWarningCode::HighDegree:
+            warnings << tr("⚠ High degree n = %1: the Bernstein basis grows ill-conditioned (cond₂(M) ≈ %2); a "
+                           "lower degree or a spline is usually the better model.")
+                            .arg(w.degree).arg(number(w.cond));
+            break;
+        case FitWarningCode::NormalEquationsSquare:
+            warnings << tr("⚠ The normal equations square the condition number: cond₂(MᵀM) ≈ %1, so about %2 of "
+                           "the 16 significant digits may be lost. Choose QR.")
+                            .arg(number(w.cond * w.cond))
+                            .arg(normalEquationsDigitsLost(w.cond));
+            break;
+        case FitWarningCode::RepeatedParameters:
+            warnings << tr("⚠ Only %1 distinct parameters t_i for %2 control points: M is rank deficient, and the "
+                           "control points shown are the minimum-norm least-squares solution.")
+                            .arg(w.distinct)
+                            .arg(w.degree + 1);
+            break;
+        case FitWarningCode::AllCoincide:
+            warnings << (w.byDistance ? tr("All the data points coincide: the chord lengths are all zero, so uniform "
+                                           "parameters are used instead.")
+                                      : tr("All the data points coincide: the curve is that point."));
+            break;
+        case FitWarningCode::ZeroChords:
+            warnings << tr("Q%1 and Q%2 coincide: a zero chord length gives them the same parameter t_i (%n such "
+                           "pair(s)).",
+                           nullptr, w.pairs)
+                            .arg(w.first - 1)
+                            .arg(w.first);
+            break;
+        case FitWarningCode::Collinear:
+            warnings << tr("The data points are collinear: the fitted curve and its control points lie on their line.");
+            break;
+        case FitWarningCode::CoincidentFallback:
+        case FitWarningCode::CorrectionStopped:
+        case FitWarningCode::RankDeficient:
+            break; // fitBezier's notes for the CLI; fitWarnings() does not list them
+        }
+    }
     m_warningLabel->setText(warnings.join(QLatin1Char('\n')));
     m_warningLabel->setVisible(!warnings.isEmpty());
 }

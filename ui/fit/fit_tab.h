@@ -83,10 +83,6 @@ public:
     static constexpr int kTableLimit = 5000;
     /// The error-against-degree plot goes up to this degree (docs/tabs.md).
     static constexpr int kPlotMaxDegree = 30;
-    /// Degrees above this get a warning even when M is still well conditioned.
-    static constexpr int kHighDegree = 20;
-    /// cond₂(M) above this gets a warning (docs/extreme-cases.md).
-    static constexpr double kIllConditioned = 1e10;
 
 protected:
     void showEvent(QShowEvent* event) override;

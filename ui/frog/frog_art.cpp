@@ -1,4 +1,5 @@
 #include "ui/frog/frog_art.h"
+#include "core/base/math_constants.h"
 
 #include <QLinearGradient>
 #include <QPaintEngine>
@@ -7,6 +8,7 @@
 #include <QTransform>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace granota::ui {
@@ -130,25 +132,23 @@ void FrogArt::paintBackground(QPainter& p, double W, double H) const
         p.drawEllipse(QPointF(X(c.x()) + 0.9 * r, Y(c.y()) - 0.5 * r), 1.3 * r, 0.9 * r);
     }
 
-    // Far hills, two layers.
-    QPainterPath far;
-    far.moveTo(0, Y(0.56));
-    far.cubicTo(X(0.15), Y(0.44), X(0.30), Y(0.47), X(0.45), Y(0.53));
-    far.cubicTo(X(0.60), Y(0.58), X(0.75), Y(0.42), X(1.0), Y(0.50));
-    far.lineTo(W, Y(0.64));
-    far.lineTo(0, Y(0.64));
-    far.closeSubpath();
-    p.setBrush(QColor(0xb7, 0xd3, 0xa8));
-    p.drawPath(far);
-    QPainterPath near;
-    near.moveTo(0, Y(0.60));
-    near.cubicTo(X(0.20), Y(0.53), X(0.38), Y(0.60), X(0.55), Y(0.58));
-    near.cubicTo(X(0.72), Y(0.56), X(0.86), Y(0.55), X(1.0), Y(0.59));
-    near.lineTo(W, Y(0.66));
-    near.lineTo(0, Y(0.66));
-    near.closeSubpath();
-    p.setBrush(QColor(0x96, 0xbf, 0x8a));
-    p.drawPath(near);
+    // Far hills, two layers: a ridge of two cubic arcs from the left edge at `start` to the
+    // right edge, filled down to `base` (fractions of the size, as X and Y take them).
+    const auto hill = [&](double start, const std::array<QPointF, 6>& ridge, double base, const QColor& colour) {
+        QPainterPath path;
+        path.moveTo(0, Y(start));
+        path.cubicTo(X(ridge[0].x()), Y(ridge[0].y()), X(ridge[1].x()), Y(ridge[1].y()), X(ridge[2].x()), Y(ridge[2].y()));
+        path.cubicTo(X(ridge[3].x()), Y(ridge[3].y()), X(ridge[4].x()), Y(ridge[4].y()), X(ridge[5].x()), Y(ridge[5].y()));
+        path.lineTo(W, Y(base));
+        path.lineTo(0, Y(base));
+        path.closeSubpath();
+        p.setBrush(colour);
+        p.drawPath(path);
+    };
+    hill(0.56, {{{0.15, 0.44}, {0.30, 0.47}, {0.45, 0.53}, {0.60, 0.58}, {0.75, 0.42}, {1.0, 0.50}}}, 0.64,
+         QColor(0xb7, 0xd3, 0xa8));
+    hill(0.60, {{{0.20, 0.53}, {0.38, 0.60}, {0.55, 0.58}, {0.72, 0.56}, {0.86, 0.55}, {1.0, 0.59}}}, 0.66,
+         QColor(0x96, 0xbf, 0x8a));
 
     // The pond.
     QLinearGradient water(0, Y(0.62), 0, Y(0.97));
@@ -182,7 +182,7 @@ void FrogArt::paintBackground(QPainter& p, double W, double H) const
         p.setPen(Qt::NoPen);
         p.setBrush(QColor(0xf4, 0xb6, 0xc6));
         for (int k = 0; k < 6; ++k) {
-            const double a = k * M_PI / 3;
+            const double a = k * kPi / 3;
             p.drawEllipse(c + QPointF(1.2 * r * std::cos(a), 0.8 * r * std::sin(a)), r, 0.7 * r);
         }
         p.setBrush(QColor(0xf7, 0xd9, 0x6b));
@@ -307,7 +307,7 @@ void FrogArt::paintHead(QPainter& p, QPointF at, double angle, double scale, QPo
 
     p.save();
     p.translate(at);
-    p.rotate(angle * 180 / M_PI);
+    p.rotate(angle * 180 / kPi);
     p.scale(scale, scale);
     if (fromImage) {
         // A crowd of small heads: one image each (made once per size), then the pupils.
@@ -329,7 +329,7 @@ void FrogArt::paintFoot(QPainter& p, QPointF wrist, double angle, double scale) 
 {
     p.save();
     p.translate(wrist);
-    p.rotate(angle * 180 / M_PI);
+    p.rotate(angle * 180 / kPi);
     p.scale(scale, scale);
     p.setPen(m_footEdgePen);
     p.setBrush(Qt::NoBrush);

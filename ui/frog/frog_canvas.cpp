@@ -1,9 +1,10 @@
 #include "ui/frog/frog_canvas.h"
+#include "core/base/math_constants.h"
 #include "ui/common/number_text.h"
 
 #include "core/softbody/outline.h"
 #include "core/softbody/outline_sampling.h"
-#include "core/softbody/point_in_polygon.h"
+#include "core/softbody/polygon_geometry.h"
 
 #include <QAbstractSpinBox>
 #include <QApplication>
@@ -516,7 +517,7 @@ void FrogCanvas::drawLeg(QPainter& p, int chain, double)
     if (!isFinite(m) || !isFinite(e) || !isFinite(w))
         return;
     const Point bone = w - e;
-    const double footAngle = norm(bone) > 1e-9 ? std::atan2(bone.y, bone.x) : M_PI / 2;
+    const double footAngle = norm(bone) > 1e-9 ? std::atan2(bone.y, bone.x) : kPi / 2;
     m_art.paintFoot(p, q(w), footAngle, chain < 2 ? 0.8 : 1.0);
     sampleLegOutline(m, e, w, kLegFactor, 6, m_outline);
     fillPath(m_outline, true);

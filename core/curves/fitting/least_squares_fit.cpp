@@ -1,6 +1,7 @@
 #include "core/curves/fitting/least_squares_fit.h"
 
 #include "core/curves/fitting/bernstein_block.h"
+#include "core/base/enum_names.h"
 #include "core/base/number_format.h"
 #include "core/curves/fitting/tall_skinny_qr.h"
 
@@ -20,8 +21,6 @@
 namespace granota {
 
 namespace {
-
-constexpr double kIllConditioned = 1e10;
 
 /// B_0^n(t)..B_n^n(t) into b[0..n] by the recursion of Lemma 2.1,
 /// B_j^r(t) = (1 − t) B_j^{r−1}(t) + t B_{j−1}^{r−1}(t), for double and for Rational.
@@ -118,7 +117,7 @@ struct Solution {
     std::vector<Point> P;
     double cond = 1;
     double sse = -1; ///< Σ‖Q_i − α(t_i)‖² in the working frame, or −1 when not computed
-    std::vector<std::string> warnings;
+    std::vector<FitWarning> warnings;
 };
 
 /// Solves min ‖MP − Q‖ for M = bernsteinMatrix(t, n) with the chosen solver.
@@ -187,11 +186,12 @@ Expected<Solution> solve(const ScaledPoints& data, const std::vector<double>& t,
         if (!P.allFinite())
             return makeError(ErrorCode::Singular, "the normal equations gave a non-finite solution (cond₂(MᵀM) ≈ "
                                                       + sci(s.cond * s.cond) + "). Use the qr or svd solver.");
-        if (s.cond > 1e5)
-            s.warnings.push_back("the normal equations square the condition number: cond₂(MᵀM) ≈ "
-                                 + sci(s.cond * s.cond) + ", so about "
-                                 + std::to_string(std::min(16, static_cast<int>(std::log10(s.cond * s.cond))))
-                                 + " of the 16 significant digits may be lost");
+        if (s.cond > kNormalEquationsCond) {
+            FitWarning w;
+            w.code = FitWarningCode::NormalEquationsSquare;
+            w.cond = s.cond;
+            s.warnings.push_back(w);
+        }
     } else {
         // R P = c, from Householder or from the blocked factorisation.
         if (solver == LeastSquaresSolver::Qr) {
@@ -203,18 +203,23 @@ Expected<Solution> solve(const ScaledPoints& data, const std::vector<double>& t,
             rank = svd.rank();
         }
         if (rank < m) {
-            const bool repeated = distinct() < m;
-            const std::string what = repeated ? "M is rank deficient (rank " : "M is numerically rank deficient (rank ";
-            const std::string why = repeated ? "only " + std::to_string(distinct())
-                                                       + " of the parameters t_i are distinct (coincident points?)"
-                                                 : "cond₂(M) ≈ " + sci(s.cond);
-            s.warnings.push_back(what + std::to_string(rank) + " < n + 1 = " + std::to_string(m) + ": " + why
-                                 + "); the control points are the minimum-norm least-squares solution");
+            FitWarning w;
+            w.code = FitWarningCode::RankDeficient;
+            w.degree = n;
+            w.rank = static_cast<int>(rank);
+            w.repeated = distinct() < m;
+            if (w.repeated)
+                w.distinct = distinct();
+            w.cond = s.cond;
+            s.warnings.push_back(w);
         }
     }
-    if (s.cond > kIllConditioned)
-        s.warnings.push_back("ill-conditioned: cond₂(M) ≈ " + sci(s.cond)
-                             + "; the control points are very sensitive to the data (lower the degree?)");
+    if (s.cond > kIllConditionedCond) {
+        FitWarning w;
+        w.code = FitWarningCode::IllConditioned;
+        w.cond = s.cond;
+        s.warnings.push_back(w);
+    }
     if (!P.allFinite())
         return makeError(ErrorCode::Singular, "the least-squares solve gave a non-finite result");
     if (rank == m)
@@ -277,34 +282,20 @@ std::vector<double> project(const std::vector<Point>& q, const std::vector<Point
     return out;
 }
 
+constexpr std::array<EnumName<LeastSquaresSolver>, 3> kSolverNames{{
+    {LeastSquaresSolver::Qr, "qr"},
+    {LeastSquaresSolver::Normal, "normal"},
+    {LeastSquaresSolver::Svd, "svd"},
+}};
+
 } // namespace
 
 std::optional<LeastSquaresSolver> parseLeastSquaresSolver(std::string_view text)
 {
-    std::string lower(text);
-    std::transform(lower.begin(), lower.end(), lower.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (lower == "qr")
-        return LeastSquaresSolver::Qr;
-    if (lower == "normal")
-        return LeastSquaresSolver::Normal;
-    if (lower == "svd")
-        return LeastSquaresSolver::Svd;
-    return std::nullopt;
+    return parseName(kSolverNames, text, NameMatch::IgnoreCase);
 }
 
-std::string toString(LeastSquaresSolver s)
-{
-    switch (s) {
-    case LeastSquaresSolver::Qr:
-        return "qr";
-    case LeastSquaresSolver::Normal:
-        return "normal";
-    case LeastSquaresSolver::Svd:
-        return "svd";
-    }
-    return "qr";
-}
+std::string toString(LeastSquaresSolver s) { return std::string(nameOf(kSolverNames, s, "qr")); }
 
 Eigen::MatrixXd bernsteinMatrix(const std::vector<double>& t, int n)
 {
@@ -332,9 +323,12 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
     FitResult result;
     bool fellBack = false;
     std::vector<double> t = parameters(q, options.parametrization, &fellBack);
-    if (fellBack)
-        result.warnings.push_back("all the points coincide: " + toString(options.parametrization)
-                                  + " parameters are undefined, uniform ones are used");
+    if (fellBack) {
+        FitWarning w;
+        w.code = FitWarningCode::CoincidentFallback;
+        w.parametrization = toString(options.parametrization);
+        result.warningCodes.push_back(w);
+    }
 
     // Work in a centred, scaled frame: the fit is affine-invariant (the rows of M sum to 1,
     // Prop 2.1), and data around 1e9 or 1e−9 keep their relative accuracy.
@@ -367,7 +361,10 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
             std::vector<double> corrected = project(local, best.P, t);
             Expected<Solution> next = solve(data, corrected, n, options.solver);
             if (!next) {
-                result.warnings.push_back("parameter correction stopped: " + next.error().message);
+                FitWarning w;
+                w.code = FitWarningCode::CorrectionStopped;
+                w.reason = next.error().message;
+                result.warningCodes.push_back(w);
                 break;
             }
             const double sse = sumOfSquares(local, next->P, corrected);
@@ -385,7 +382,9 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
 
     // Back to the user's frame.
     result.cond = best.cond;
-    result.warnings.insert(result.warnings.end(), best.warnings.begin(), best.warnings.end());
+    result.warningCodes.insert(result.warningCodes.end(), best.warnings.begin(), best.warnings.end());
+    for (const FitWarning& w : result.warningCodes)
+        result.warnings.push_back(fitWarningText(w));
     result.controlPoints.reserve(best.P.size());
     for (const Point& p : best.P)
         result.controlPoints.push_back(Point(centre.x + scale * p.x, centre.y + scale * p.y));

@@ -10,6 +10,7 @@
 /// reproduces the matrices of Ex 2.7 and Ex 2.8.
 
 #include "core/base/expected.h"
+#include "core/curves/fitting/fit_warning.h"
 #include "core/curves/fitting/parametrization.h"
 #include "core/exact/exact_cost.h"
 #include "core/exact/rational.h"
@@ -58,7 +59,8 @@ struct FitResult {
     double maxError = 0;               ///< max ‖Q_i − α(t_i)‖
     double cond = 1;                   ///< cond₂(M) = σ_max/σ_min (DBL_MAX when M is exactly singular)
     int corrections = 0;               ///< parameter corrections that lowered the error
-    std::vector<std::string> warnings; ///< ill-conditioning, rank deficiency, fallbacks
+    std::vector<FitWarning> warningCodes; ///< ill-conditioning, rank deficiency, fallbacks (fit_warning.h)
+    std::vector<std::string> warnings;    ///< their English text, fitWarningText(), as the CLI prints it
 };
 
 /// The highest degree fitBezier and fitBezierExact accept: beyond it the Bernstein basis

@@ -1,5 +1,7 @@
 #include "core/curves/fitting/parametrization.h"
 
+#include "core/base/enum_names.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -8,6 +10,12 @@
 namespace granota {
 
 namespace {
+
+constexpr std::array<EnumName<Parametrization>, 3> kParametrizationNames{{
+    {Parametrization::Uniform, "uniform"},
+    {Parametrization::ChordLength, "chord"},
+    {Parametrization::Centripetal, "centripetal"},
+}};
 
 std::vector<double> uniformParameters(std::size_t count)
 {
@@ -37,30 +45,10 @@ std::vector<Rational> uniformExact(std::size_t count)
 
 std::optional<Parametrization> parseParametrization(std::string_view text)
 {
-    std::string lower(text);
-    std::transform(lower.begin(), lower.end(), lower.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (lower == "uniform")
-        return Parametrization::Uniform;
-    if (lower == "chord")
-        return Parametrization::ChordLength;
-    if (lower == "centripetal")
-        return Parametrization::Centripetal;
-    return std::nullopt;
+    return parseName(kParametrizationNames, text, NameMatch::IgnoreCase);
 }
 
-std::string toString(Parametrization p)
-{
-    switch (p) {
-    case Parametrization::Uniform:
-        return "uniform";
-    case Parametrization::ChordLength:
-        return "chord";
-    case Parametrization::Centripetal:
-        return "centripetal";
-    }
-    return "uniform";
-}
+std::string toString(Parametrization p) { return std::string(nameOf(kParametrizationNames, p, "uniform")); }
 
 std::vector<double> parameters(const std::vector<Point>& q, Parametrization p, bool* fellBackToUniform)
 {

@@ -1,6 +1,7 @@
 #include "core/curves/splines/catmull_rom.h"
 
 #include "core/base/number_format.h"
+#include "core/base/enum_names.h"
 
 #include <algorithm>
 #include <cassert>
@@ -8,36 +9,16 @@
 
 namespace granota {
 
+// Def 2.10's options, by the names the CLI and the saved documents use.
+constexpr std::array<EnumName<CatmullRomMode>, 3> kModeNames{
+    {{CatmullRomMode::Open, "open"}, {CatmullRomMode::Cyclic, "cyclic"}, {CatmullRomMode::Closed, "closed"}}};
+
 std::optional<CatmullRomMode> parseCatmullRomMode(std::string_view text)
 {
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front())))
-        text.remove_prefix(1);
-    while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
-        text.remove_suffix(1);
-    std::string lower(text);
-    std::transform(lower.begin(), lower.end(), lower.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (lower == "open")
-        return CatmullRomMode::Open;
-    if (lower == "cyclic")
-        return CatmullRomMode::Cyclic;
-    if (lower == "closed")
-        return CatmullRomMode::Closed;
-    return std::nullopt;
+    return parseName(kModeNames, text, NameMatch::IgnoreCaseTrim); // "  Closed " is closed
 }
 
-std::string toString(CatmullRomMode mode)
-{
-    switch (mode) {
-    case CatmullRomMode::Open:
-        return "open";
-    case CatmullRomMode::Cyclic:
-        return "cyclic";
-    case CatmullRomMode::Closed:
-        return "closed";
-    }
-    return "open";
-}
+std::string toString(CatmullRomMode mode) { return std::string(nameOf(kModeNames, mode, "open")); }
 
 Expected<std::vector<std::array<int, 4>>> catmullRomQuadruples(std::size_t count, CatmullRomMode mode)
 {

@@ -54,6 +54,38 @@ template <class S> bool nearlyEqual(const Vec2<S>& a, const Vec2<S>& b, double t
 {
     return nearlyEqual(a.x, b.x, tolerance) && nearlyEqual(a.y, b.y, tolerance);
 }
+
+/// What ContinuityReport and JoinReport share. The highest k below the order of every
+/// defect that `counts`, capped at maxOrder (−1: not even continuous).
+template <class Defects, class Counts> int continuityOrder(const Defects& defects, int maxOrder, Counts counts)
+{
+    int k = maxOrder;
+    for (const auto& d : defects)
+        if (counts(d))
+            k = std::min(k, d.order - 1);
+    return k;
+}
+/// The first line of a report on order c: `broken` when c < 0, "<subject> is C^c but not
+/// C^(c+1)<where>" below maxOrder, else "<subject> is C^c<everywhere> (derivatives checked
+/// up to order maxOrder)".
+inline std::string continuitySummary(int c, int maxOrder, const std::string& broken, const std::string& subject,
+                                     const std::string& where, const std::string& everywhere)
+{
+    if (c < 0)
+        return broken;
+    if (c < maxOrder)
+        return subject + " is C^" + std::to_string(c) + " but not C^" + std::to_string(c + 1) + where;
+    return subject + " is C^" + std::to_string(c) + everywhere + " (derivatives checked up to order " +
+           std::to_string(maxOrder) + ")";
+}
+/// One line per defect, each starting with a newline and ending with a full stop.
+template <class Defects> std::string defectLines(const Defects& defects)
+{
+    std::string out;
+    for (const auto& d : defects)
+        out += "\n" + d.describe() + ".";
+    return out;
+}
 } // namespace detail
 
 enum class DefectKind {
@@ -115,31 +147,18 @@ template <class S> struct ContinuityReport {
     /// continuous. Capped at maxOrder: nothing above it was looked at.
     int continuityOrder() const
     {
-        int k = maxOrder;
-        for (const auto& d : defects)
-            if (d.kind == DefectKind::Jump)
-                k = std::min(k, d.order - 1);
-        return k;
+        return detail::continuityOrder(defects, maxOrder,
+                                       [](const ContinuityDefect<S>& d) { return d.kind == DefectKind::Jump; });
     }
     /// A summary line, then one line per defect.
     std::string describe() const
     {
-        const int c = continuityOrder();
-        std::string out;
-        if (c < 0)
-            out = "s is not continuous";
-        else if (c < maxOrder)
-            out = "s is C^" + std::to_string(c) + " but not C^" + std::to_string(c + 1);
-        else
-            out = "s is C^" + std::to_string(c) + " at every knot (derivatives checked up to order " +
-                  std::to_string(maxOrder) + ")";
+        std::string out = detail::continuitySummary(continuityOrder(), maxOrder, "s is not continuous", "s", "",
+                                                    " at every knot");
         if (dataPoints > 0)
             out += interpolates() ? "; it interpolates all " + std::to_string(dataPoints) + " points"
                                   : "; it does not interpolate every point";
-        out += ".";
-        for (const auto& d : defects)
-            out += "\n" + d.describe() + ".";
-        return out;
+        return out + "." + detail::defectLines(defects);
     }
 };
 
@@ -245,26 +264,13 @@ template <class S> struct JoinReport {
     /// (−1: some segments do not even meet). Capped at maxOrder.
     int continuityOrder() const
     {
-        int k = maxOrder;
-        for (const auto& d : defects)
-            k = std::min(k, d.order - 1);
-        return k;
+        return detail::continuityOrder(defects, maxOrder, [](const JoinDefect<S>&) { return true; });
     }
     std::string describe() const
     {
-        const int c = continuityOrder();
-        std::string out;
-        if (c < 0)
-            out = "the segments do not join up";
-        else if (c < maxOrder)
-            out = "the curve is C^" + std::to_string(c) + " but not C^" + std::to_string(c + 1) + " at its joins";
-        else
-            out = "the curve is C^" + std::to_string(c) + " at all " + std::to_string(joins) +
-                  " joins (derivatives checked up to order " + std::to_string(maxOrder) + ")";
-        out += ".";
-        for (const auto& d : defects)
-            out += "\n" + d.describe() + ".";
-        return out;
+        return detail::continuitySummary(continuityOrder(), maxOrder, "the segments do not join up", "the curve",
+                                         " at its joins", " at all " + std::to_string(joins) + " joins") +
+               "." + detail::defectLines(defects);
     }
 };
 

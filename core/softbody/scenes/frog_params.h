@@ -5,6 +5,7 @@
 /// frames (one call of `actualitza()` is one step). Screen coordinates: y grows downwards.
 
 #include "core/base/vec2.h"
+#include "core/base/math_constants.h"
 
 #include <array>
 
@@ -35,10 +36,10 @@ struct FrogParams {
     double height = 720;         ///< frame height, px (vertices stay in [0, height − 1])
     /// Front right, front left, back right, back left (the order of Annex II's arrays).
     std::array<LegParams, 4> legs{{
-        {40, 40, 0, 3.14159265358979323846, -3.14159265358979323846 / 12, 3.14159265358979323846 / 12},
-        {40, 40, -3.14159265358979323846, 0, -3.14159265358979323846 / 12, 3.14159265358979323846 / 12},
-        {80, 80, 0, 3.14159265358979323846, -3.14159265358979323846 / 3, 3.14159265358979323846 / 3},
-        {80, 80, -3.14159265358979323846, 0, -3.14159265358979323846 / 3, 3.14159265358979323846 / 3},
+        {40, 40, 0, kPi, -kPi / 12, kPi / 12},
+        {40, 40, -kPi, 0, -kPi / 12, kPi / 12},
+        {80, 80, 0, kPi, -kPi / 3, kPi / 3},
+        {80, 80, -kPi, 0, -kPi / 3, kPi / 3},
     }};
 };
 

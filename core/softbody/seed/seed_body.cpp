@@ -1,6 +1,7 @@
 #include "core/softbody/seed/seed_body.h"
+#include "core/base/math_constants.h"
 
-#include "core/softbody/point_in_polygon.h"
+#include "core/softbody/polygon_geometry.h"
 #include "core/softbody/seed/seed_lanes.h"
 #include "core/softbody/seed/seed_leg_lanes.h"
 
@@ -126,7 +127,7 @@ template <class R> void SeedBody<R>::initialise(const Vec& centre, const Vec& vI
 {
     // Annex II, Poligon.inicialitza. PI, HALF_PI and TWO_PI are Processing's float
     // constants (HALF_PI = PI/2 and TWO_PI = 2·PI exactly).
-    const R pi = R(3.14159265358979323846);
+    const R pi = R(kPi);
     const R halfPi = pi / R(2), twoPi = R(2) * pi;
     const int N = m_n;
     m_grabbed = false;
@@ -216,7 +217,9 @@ template <class R> const std::vector<typename SeedBody<R>::Vec>& SeedBody<R>::co
 template <class R> R SeedBody<R>::area() const
 {
     // Annex II, calculaarea: trapezoids between each edge and the x axis (§4.5),
-    // L = x_i − x_{i+1}, W = (y_i + y_{i+1})/2, summed in this order.
+    // L = x_i − x_{i+1}, W = (y_i + y_{i+1})/2, summed in this order. Not trapezoidArea
+    // (polygon_geometry.h), which halves once at the end: the seed halves every term, in
+    // its float lanes, as the thesis's program does, so that its traces are reproduced.
     const R* const x = lanes(X);
     const R* const y = lanes(Y);
     R area = 0;
@@ -317,7 +320,7 @@ template <class R> bool SeedBody<R>::press(const Point& mouse)
     m_mouse = clampMouse(mouse);
     // mousePressed: `if (!ocupat) if (estadins(mouseX, mouseY))`. The inside test is the
     // crossing test of §4.6 with the vertex double-count of estadins fixed
-    // (core/softbody/point_in_polygon.h): estadins misses every click on the vertical through a
+    // (core/softbody/polygon_geometry.h): estadins misses every click on the vertical through a
     // vertex — the centre of the initial body among them.
     if (!m_components.grab || m_grabbed)
         return false;

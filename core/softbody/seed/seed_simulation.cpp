@@ -3,7 +3,7 @@
 // (§4.13–4.15). Single precision, as Processing computes: with the thesis's constants the
 // frog reproduces the reference trace bit for bit.
 #include "core/softbody/seed/follow_chain.h"
-#include "core/softbody/polygon_area.h"
+#include "core/softbody/polygon_geometry.h"
 #include "core/softbody/regular_polygon.h"
 #include "core/softbody/seed/seed_frog.h"
 #include "core/softbody/scenes/scene_layout.h"
@@ -21,10 +21,7 @@ using Real = float;
 SeedComponents componentsOf(const SceneSpec& s)
 {
     SeedComponents c;
-    c.gravity = s.has("gravity");
-    c.bounds = s.has("bounds");
-    c.springs = s.has("springs");
-    c.area = s.has("area");
+    setSharedComponents(c, s);
     c.legs = s.has("legs");
     c.grab = s.has("grab");
     c.angleLimits = s.has("angle-limits");
@@ -54,7 +51,7 @@ class SeedBodySimulation final : public Simulation {
 public:
     SeedBodySimulation(const SceneSpec& scene) : Simulation(scene, SolverKind::Seed) {}
 
-    Expected<bool> build()
+    Expected<void> build()
     {
         const SceneSpec& s = scene();
         const SeedComponents c = componentsOf(s);
@@ -64,7 +61,7 @@ public:
                 return frog.error();
             m_frog = std::make_unique<SeedFrog<Real>>(std::move(frog).value());
             m_rest.push_back(edgeLengths(m_frog->body().vertices()));
-            return true;
+            return {};
         }
         const auto at = bodyStarts(s);
         for (std::size_t i = 0; i < at.size(); ++i) {
@@ -77,7 +74,7 @@ public:
             m_rest.push_back(edgeLengths(body->vertices()));
             m_bodies.push_back(std::move(body).value());
         }
-        return true;
+        return {};
     }
 
     int bodyCount() const override { return m_frog ? 1 : static_cast<int>(m_bodies.size()); }
@@ -199,14 +196,14 @@ class SeedPendulumSimulation final : public Simulation {
 public:
     SeedPendulumSimulation(const SceneSpec& scene) : Simulation(scene, SolverKind::Seed), m_clau(scene.params.center) {}
 
-    Expected<bool> build()
+    Expected<void> build()
     {
         const SceneSpec& s = scene();
         if (s.chain.empty())
             return makeError(ErrorCode::InvalidInput, "scene '" + s.name + "' needs a chain of link lengths");
         if (!s.has("gravity")) { // §4.14: kinematic
             m_chain = std::make_unique<FollowChain>(m_clau, s.chain);
-            return true;
+            return {};
         }
         if (s.chain.size() != 2)
             return makeError(ErrorCode::OutOfRange, "the seed's pendulum (Annex II's Pota) has exactly two links");
@@ -222,7 +219,7 @@ public:
         if (!pendulum)
             return pendulum.error();
         m_leg = std::make_unique<SeedLeg<Real>>(std::move(pendulum).value());
-        return true;
+        return {};
     }
 
     int bodyCount() const override { return 0; }

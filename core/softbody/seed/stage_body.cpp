@@ -1,6 +1,6 @@
 #include "core/softbody/seed/stage_body.h"
 
-#include "core/softbody/polygon_area.h"
+#include "core/softbody/polygon_geometry.h"
 #include "core/softbody/regular_polygon.h"
 
 #include <algorithm>
@@ -12,7 +12,7 @@ namespace {
 bool finite(Point p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 } // namespace
 
-Expected<bool> validateFrogParams(const FrogParams& p)
+Expected<void> validateFrogParams(const FrogParams& p)
 {
     if (p.sides < 3)
         return makeError(ErrorCode::OutOfRange, "sides must be at least 3 (a polygon), got " + std::to_string(p.sides));
@@ -37,7 +37,7 @@ Expected<bool> validateFrogParams(const FrogParams& p)
         if (!(l.upper >= 0) || !(l.lower >= 0) || !std::isfinite(l.upper) || !std::isfinite(l.lower) ||
             !std::isfinite(l.shoulderMin + l.shoulderMax + l.elbowMin + l.elbowMax))
             return makeError(ErrorCode::OutOfRange, "leg lengths must be finite and ≥ 0, angle limits finite");
-    return true;
+    return {};
 }
 
 Expected<StageBody> StageBody::create(const FrogParams& params, StageComponents components)

@@ -63,6 +63,6 @@ private:
 };
 
 /// The checks every body scene shares: the parameters a frog scene accepts.
-Expected<bool> validateFrogParams(const FrogParams& p);
+Expected<void> validateFrogParams(const FrogParams& p);
 
 } // namespace granota

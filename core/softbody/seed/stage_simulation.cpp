@@ -1,5 +1,6 @@
 // §4.1–4.5 on the seed's explicit scheme.
-#include "core/softbody/polygon_area.h"
+#include "core/softbody/polygon_geometry.h"
+#include "core/base/math_constants.h"
 #include "core/softbody/simulation_backends.h"
 #include "core/softbody/seed/stage_body.h"
 
@@ -44,7 +45,7 @@ public:
         const double target = bodyTargetArea(0);
         if (target > 0)
             r.areaErrorPercent = 100 * (polygonArea(x) - target) / target;
-        const double rest = scene().has("springs") ? scene().params.springLength : 2 * m_body.radius() * std::sin(M_PI / x.size());
+        const double rest = scene().has("springs") ? scene().params.springLength : 2 * m_body.radius() * std::sin(kPi / x.size());
         for (std::size_t i = 0; i < x.size(); ++i)
             if (rest > 0)
                 r.maxStretch = std::max(r.maxStretch, std::abs(distance(x[i], x[(i + 1) % x.size()]) / rest - 1));
@@ -62,7 +63,7 @@ private:
     double restArea() const
     {
         const double n = scene().params.sides, r = m_body.radius();
-        return 0.5 * n * r * r * std::sin(2 * M_PI / n);
+        return 0.5 * n * r * r * std::sin(2 * kPi / n);
     }
     StageBody m_body;
 };
@@ -72,11 +73,8 @@ private:
 Expected<std::unique_ptr<Simulation>> makeStageSimulation(const SceneSpec& scene)
 {
     StageComponents c;
-    c.gravity = scene.has("gravity");
-    c.bounds = scene.has("bounds");
+    setSharedComponents(c, scene);
     c.bounce = scene.has("bounce");
-    c.springs = scene.has("springs");
-    c.area = scene.has("area");
     FrogParams params = scene.params;
     if (!scene.hasParam("v0"))
         params.v0 = Point(0, 0); // §4.1's polygon does not move

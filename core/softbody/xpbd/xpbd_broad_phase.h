@@ -9,27 +9,11 @@
 /// size the work grows linearly with the number of bodies instead of quadratically.
 
 #include "core/base/vec2.h"
+#include "core/softbody/polygon_geometry.h" // Aabb, boundingBox
 
 #include <vector>
 
 namespace granota {
-
-/// Axis-aligned box; a box with min > max is empty.
-struct Aabb {
-    double minX = 0;
-    double minY = 0;
-    double maxX = -1;
-    double maxY = -1;
-
-    bool overlaps(const Aabb& o) const { return minX <= o.maxX && o.minX <= maxX && minY <= o.maxY && o.minY <= maxY; }
-    bool contains(const Point& p, double margin = 0) const
-    {
-        return p.x >= minX - margin && p.x <= maxX + margin && p.y >= minY - margin && p.y <= maxY + margin;
-    }
-};
-
-/// The box of n points.
-Aabb boundingBox(const Point* x, int n);
 
 /// Two bodies whose boxes overlap, first < second.
 struct BodyPair {

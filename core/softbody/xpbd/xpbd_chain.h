@@ -7,6 +7,7 @@
 /// limits (§4.15).
 
 #include "core/softbody/scenes/frog_params.h"
+#include "core/base/math_constants.h"
 #include "core/base/vec2.h"
 
 #include <vector>
@@ -24,8 +25,8 @@ enum class AngleReference {
 };
 
 struct AngleLimit {
-    double min = -M_PI; ///< rad, in [−π, π]
-    double max = M_PI;  ///< rad, in [min, π]
+    double min = -kPi; ///< rad, in [−π, π]
+    double max = kPi;  ///< rad, in [min, π]
     AngleReference reference = AngleReference::Parent;
 };
 

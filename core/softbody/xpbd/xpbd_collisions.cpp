@@ -1,42 +1,12 @@
 #include "core/softbody/xpbd/xpbd_collisions.h"
 
+#include "core/softbody/polygon_geometry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace granota {
-
-bool pointInPolygon(const Point* poly, int n, const Point& p) { return pointInPolygon(poly, n, p, nullptr); }
-
-bool pointInPolygon(const Point* poly, int n, const Point& p, int* nearestCrossing)
-{
-    // §4.6 as in point_in_polygon.cpp: x interval half-open, vertical edges skipped. "p
-    // lies above the edge" (p.y ≤ y of the edge at p.x) is tested without a division:
-    // (p.y − a.y)(b.x − a.x) ≤ (p.x − a.x)(b.y − a.y), the inequality flipping when b.x < a.x.
-    // Written without branches on the data: in a pile nearly every vertex is near an edge,
-    // so which edges straddle p is a coin toss that a branch predictor keeps losing.
-    bool inside = false;
-    double closest = std::numeric_limits<double>::infinity();
-    for (int i = 0, j = n - 1; i < n; j = i++) {
-        const Point& a = poly[j];
-        const Point& b = poly[i];
-        // Half-open on both orders: a.x ≤ p.x < b.x or b.x ≤ p.x < a.x.
-        const bool straddles = (a.x <= p.x) != (b.x <= p.x);
-        const double lhs = (p.y - a.y) * (b.x - a.x);
-        const double rhs = (p.x - a.x) * (b.y - a.y);
-        const bool above = b.x > a.x ? lhs <= rhs : lhs >= rhs;
-        const bool crosses = straddles && above;
-        inside ^= crosses;
-        if (nearestCrossing && crosses) { // the crossed edge closest along the ray: edge j → i
-            const double gap = (rhs - lhs) / (b.x - a.x);
-            if (gap < closest) {
-                closest = gap;
-                *nearestCrossing = j;
-            }
-        }
-    }
-    return inside;
-}
 
 BoundaryPoint nearestBoundaryPoint(const Point* poly, int n, const Point& p, int hint)
 {
@@ -102,15 +72,6 @@ void staticSurfaceFriction(Point& x, const Point& xPrev, const Point& n, double 
     const double limit = mu * depth;
     const double k = lt <= limit ? 1.0 : limit / lt;
     x -= Point(k * t.x, k * t.y);
-}
-
-/// Sign of a polygon's signed area: +1 for regularPolygon's order on screen.
-double signedAreaSign(const Point* poly, int n)
-{
-    double twice = 0;
-    for (int i = 0, j = n - 1; i < n; j = i++)
-        twice += cross(poly[j], poly[i]);
-    return twice < 0 ? -1.0 : 1.0;
 }
 
 Point unit(const Point& d)

@@ -29,12 +29,6 @@ struct XpbdObstacle {
     Aabb box;          ///< bounding box, grown by the radius
 };
 
-/// Crossing test of §4.6 on a flat array (the same half-open rule as pointInPolygon).
-bool pointInPolygon(const Point* poly, int n, const Point& p);
-/// The same, also giving the crossed edge nearest to p along the test's ray (−1 if none):
-/// a good first guess for nearestBoundaryPoint.
-bool pointInPolygon(const Point* poly, int n, const Point& p, int* nearestCrossing);
-
 /// The nearest point of a closed polygon's boundary to p.
 struct BoundaryPoint {
     int edge = -1;   ///< edge from vertex edge to vertex edge + 1 (mod n)

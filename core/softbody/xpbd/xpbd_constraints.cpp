@@ -1,4 +1,5 @@
 #include "core/softbody/xpbd/xpbd_constraints.h"
+#include "core/base/math_constants.h"
 
 namespace granota {
 
@@ -7,30 +8,13 @@ double wrapAngle(double a)
     // Nearly every angle met in a step is a difference of two angles in (−π, π], so within
     // one turn of the answer: one add instead of std::remainder, which costs as much as a
     // whole constraint projection (it was a fifth of a frog step's time).
-    if (a > -M_PI && a <= M_PI)
+    if (a > -kPi && a <= kPi)
         return a;
-    if (a > -3 * M_PI && a <= 3 * M_PI)
-        return a > 0 ? a - 2 * M_PI : a + 2 * M_PI;
+    if (a > -3 * kPi && a <= 3 * kPi)
+        return a > 0 ? a - 2 * kPi : a + 2 * kPi;
     // std::remainder returns a − 2π·k with k the nearest integer: a value in [−π, π].
-    const double r = std::remainder(a, 2 * M_PI);
-    return r <= -M_PI ? r + 2 * M_PI : r;
-}
-
-double signedArea(const Point* x, int n)
-{
-    // ½ Σ (xᵢ − xᵢ₊₁)(yᵢ + yᵢ₊₁) of §4.5 equals ½ Σ xᵢ × xᵢ₊₁ (the xᵢyᵢ terms telescope).
-    // Taken relative to x[0] so that a small polygon far from the origin loses no digits.
-    if (n < 3)
-        return 0;
-    const Point o = x[0];
-    double twice = 0;
-    Point prev = x[1] - o;
-    for (int i = 2; i < n; ++i) {
-        const Point cur = x[i] - o;
-        twice += cross(prev, cur);
-        prev = cur;
-    }
-    return 0.5 * twice;
+    const double r = std::remainder(a, 2 * kPi);
+    return r <= -kPi ? r + 2 * kPi : r;
 }
 
 void solveEdgeRing(DistanceConstraint* e, int n, Point* x, const double* w, double alphaTildePerLength, Point* delta)

@@ -14,6 +14,7 @@
 /// or allocation: these run thousands of times per step.
 
 #include "core/base/vec2.h"
+#include "core/softbody/polygon_geometry.h" // signedArea
 
 #include <cmath>
 #include <cstdint>
@@ -85,10 +86,6 @@ inline Point seedDirection(double a) { return {-std::sin(a), std::cos(a)}; }
 
 /// Wraps an angle into (−π, π].
 double wrapAngle(double a);
-
-/// Signed shoelace area ½ Σ xᵢ × xᵢ₊₁ of n points — the trapezoid sum of §4.5 rewritten,
-/// positive for regularPolygon's order in screen coordinates.
-double signedArea(const Point* x, int n);
 
 /// ∇ᵢA = ½·perp(xᵢ₊₁ − xᵢ₋₁), perp(d) = (d.y, −d.x): the direction in which Annex II
 /// l. 292 pushes a vertex to grow the area, here with its exact length.

@@ -1,4 +1,5 @@
 #include "core/softbody/xpbd/xpbd_params.h"
+#include "core/base/math_constants.h"
 
 #include <cmath>
 #include <string>
@@ -18,7 +19,7 @@ XpbdParams xpbdParamsFrom(const FrogParams& frog)
 
 double complianceForPeriod(double periodSteps, double mass)
 {
-    const double omega = 2 * M_PI / periodSteps;
+    const double omega = 2 * kPi / periodSteps;
     return 1.0 / (mass * omega * omega);
 }
 

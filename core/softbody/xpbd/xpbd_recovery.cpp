@@ -1,19 +1,12 @@
 #include "core/softbody/xpbd/xpbd_recovery.h"
 
+#include "core/softbody/polygon_geometry.h"
 #include "core/softbody/xpbd/xpbd_collisions.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace granota {
-
-Point vertexCentroid(const Point* x, int n)
-{
-    Point c;
-    for (int i = 0; i < n; ++i)
-        c += x[i];
-    return n > 0 ? Point(c.x / n, c.y / n) : c;
-}
 
 double bestFitRotation(const Point* x, const Point* rest, int n, const Point& centroid)
 {

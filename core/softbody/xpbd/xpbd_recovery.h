@@ -8,11 +8,9 @@
 /// the vertices are pulled towards them until the body is valid again.
 
 #include "core/base/vec2.h"
+#include "core/softbody/polygon_geometry.h" // vertexCentroid
 
 namespace granota {
-
-/// Mean of n points (the centre of mass of equal masses).
-Point vertexCentroid(const Point* x, int n);
 
 /// The rotation angle R(θ) that best maps the centred rest shape onto x − centroid:
 /// the rotation part of A_pq = Σ (xᵢ − c) restᵢᵀ (Müller et al. 2005, eq. 7), which in 2D

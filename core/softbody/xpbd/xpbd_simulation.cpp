@@ -2,7 +2,8 @@
 // mapped onto constraints. A component the scene lacks is a constraint left out (or, for
 // the springs and area of §4.1–4.3, one so compliant that it does nothing).
 #include "core/softbody/scenes/scene_layout.h"
-#include "core/softbody/polygon_area.h"
+#include "core/base/math_constants.h"
+#include "core/softbody/polygon_geometry.h"
 #include "core/softbody/regular_polygon.h"
 #include "core/softbody/simulation_backends.h"
 #include "core/softbody/xpbd/xpbd_world.h"
@@ -46,7 +47,7 @@ std::vector<Point> shapeAt(const SceneSpec& s, std::size_t i, Point centre)
         // takes the regular polygon of the target area (or of 1 px² when that is 0 too).
         const double n = std::max<std::size_t>(3, shape.size());
         const double area = std::max(1.0, s.has("area") ? s.params.targetArea : 1.0);
-        shape = regularPolygon(Point(0, 0), std::sqrt(2 * area / (n * std::sin(2 * M_PI / n))), static_cast<int>(n));
+        shape = regularPolygon(Point(0, 0), std::sqrt(2 * area / (n * std::sin(2 * kPi / n))), static_cast<int>(n));
     }
     for (Point& p : shape)
         p += centre;
@@ -57,7 +58,7 @@ class StableSimulation final : public Simulation {
 public:
     StableSimulation(const SceneSpec& scene, XpbdWorld world) : Simulation(scene, SolverKind::Stable), m_world(std::move(world)) {}
 
-    Expected<bool> build()
+    Expected<void> build()
     {
         const SceneSpec& s = scene();
         if (s.model == SceneModel::Pendulum) {
@@ -76,7 +77,7 @@ public:
             auto c = m_world.addChain(chain);
             if (!c)
                 return c.error();
-            return true;
+            return {};
         }
         const auto starts = bodyStarts(s);
         BodyOptions options;
@@ -103,7 +104,7 @@ public:
                 if (!ok)
                     return ok.error();
             }
-        return true;
+        return {};
     }
 
     int substeps() const override { return m_world.params().substeps; }

@@ -1,4 +1,5 @@
 #include "core/softbody/xpbd/xpbd_world.h"
+#include "core/base/math_constants.h"
 
 #include "core/softbody/regular_polygon.h"
 #include "core/softbody/xpbd/xpbd_recovery.h"
@@ -55,13 +56,13 @@ Expected<XpbdWorld> XpbdWorld::create(const XpbdParams& params)
     return world;
 }
 
-Expected<bool> XpbdWorld::setParams(const XpbdParams& params)
+Expected<void> XpbdWorld::setParams(const XpbdParams& params)
 {
     const Expected<XpbdParams> checked = validateXpbdParams(params);
     if (!checked)
         return checked.error();
     m_params = params;
-    return true;
+    return {};
 }
 
 Point XpbdWorld::clampToFrame(Point p) const
@@ -205,7 +206,7 @@ Expected<int> XpbdWorld::addRegularBody(Point centre, double radius, int sides, 
     return addBody(regularPolygon(centre, radius, sides), targetArea, velocity, options);
 }
 
-Expected<bool> XpbdWorld::setTargetArea(int body, double targetArea)
+Expected<void> XpbdWorld::setTargetArea(int body, double targetArea)
 {
     if (body < 0 || body >= bodyCount())
         return outOfRange("no such body");
@@ -214,10 +215,10 @@ Expected<bool> XpbdWorld::setTargetArea(int body, double targetArea)
     Body& b = m_bodies[at(body)];
     b.target = targetArea;
     rescaleRest(b); // bending offsets are angles: a change of scale leaves them as they are
-    return true;
+    return {};
 }
 
-Expected<bool> XpbdWorld::setBodyVertices(int body, const std::vector<Point>& vertices)
+Expected<void> XpbdWorld::setBodyVertices(int body, const std::vector<Point>& vertices)
 {
     if (body < 0 || body >= bodyCount())
         return outOfRange("no such body");
@@ -230,10 +231,10 @@ Expected<bool> XpbdWorld::setBodyVertices(int body, const std::vector<Point>& ve
         m_x[at(b.first + i)] = m_xPrev[at(b.first + i)] = clampToFrame(vertices[at(i)]);
         m_v[at(b.first + i)] = Point();
     }
-    return true;
+    return {};
 }
 
-Expected<bool> XpbdWorld::setBodyVelocity(int body, Point velocity)
+Expected<void> XpbdWorld::setBodyVelocity(int body, Point velocity)
 {
     if (body < 0 || body >= bodyCount())
         return outOfRange("no such body");
@@ -242,10 +243,10 @@ Expected<bool> XpbdWorld::setBodyVelocity(int body, Point velocity)
     const Body& b = m_bodies[at(body)];
     for (int i = 0; i < b.count; ++i)
         m_v[at(b.first + i)] = velocity;
-    return true;
+    return {};
 }
 
-Expected<bool> XpbdWorld::setBodyVelocities(int body, const std::vector<Point>& velocities)
+Expected<void> XpbdWorld::setBodyVelocities(int body, const std::vector<Point>& velocities)
 {
     if (body < 0 || body >= bodyCount())
         return outOfRange("no such body");
@@ -256,7 +257,7 @@ Expected<bool> XpbdWorld::setBodyVelocities(int body, const std::vector<Point>& 
         return invalid("velocities must be finite");
     for (int i = 0; i < b.count; ++i)
         m_v[at(b.first + i)] = velocities[at(i)];
-    return true;
+    return {};
 }
 
 Point XpbdWorld::anchorPoint(const ChainAnchor& a) const
@@ -282,7 +283,7 @@ Expected<int> XpbdWorld::addChain(const ChainDef& def)
     if (!def.limits.empty() && static_cast<int>(def.limits.size()) != joints - 1)
         return invalid("give one angle limit per link, or none");
     for (const AngleLimit& l : def.limits)
-        if (!(l.min >= -M_PI - 1e-9 && l.max <= M_PI + 1e-9 && l.min <= l.max))
+        if (!(l.min >= -kPi - 1e-9 && l.max <= kPi + 1e-9 && l.min <= l.max))
             return outOfRange("angle limits must satisfy −π ≤ min ≤ max ≤ π");
     if (!(std::isfinite(def.jointMass) && def.jointMass > 0))
         return outOfRange("the joints' mass must be positive and finite");
@@ -338,8 +339,8 @@ Expected<int> XpbdWorld::addChain(const ChainDef& def)
         AngleConstraint ac;
         ac.b0 = c.first + k;
         ac.b1 = c.first + k + 1;
-        ac.lo = std::max(lim.min, -M_PI);
-        ac.hi = std::min(lim.max, M_PI);
+        ac.lo = std::max(lim.min, -kPi);
+        ac.hi = std::min(lim.max, kPi);
         ac.kind = ConstraintKind::Rigid;
         if (lim.reference == AngleReference::Parent && k > 0) {
             ac.a0 = c.first + k - 1;

@@ -60,7 +60,7 @@ public:
     const XpbdParams& params() const { return m_params; }
     /// Changes the parameters live (stiffness, gravity, frame size, …); bad values are
     /// rejected and nothing changes.
-    Expected<bool> setParams(const XpbdParams& params);
+    Expected<void> setParams(const XpbdParams& params);
 
     /// Adds a body: any simple polygon (regularPolygon's, or another shape). The rest shape
     /// is scaled about its centroid to `targetArea` (px², ≥ 0; the seed's Areal), which
@@ -85,14 +85,14 @@ public:
     Expected<int> addPolygonObstacle(const std::vector<Point>& polygon);
 
     /// Changes a body's target area live (rescales its rest shape).
-    Expected<bool> setTargetArea(int body, double targetArea);
+    Expected<void> setTargetArea(int body, double targetArea);
 
     /// Moves a body's vertices (teleport: velocity 0), for tests and editors.
-    Expected<bool> setBodyVertices(int body, const std::vector<Point>& vertices);
+    Expected<void> setBodyVertices(int body, const std::vector<Point>& vertices);
     /// Sets the velocity of every vertex of a body, px/step.
-    Expected<bool> setBodyVelocity(int body, Point velocity);
+    Expected<void> setBodyVelocity(int body, Point velocity);
     /// Sets each vertex's velocity (a spin, a wobble), px/step.
-    Expected<bool> setBodyVelocities(int body, const std::vector<Point>& velocities);
+    Expected<void> setBodyVelocities(int body, const std::vector<Point>& velocities);
 
     /// Moves the fixed first joint of a chain (the seed's nail following the mouse, §4.14);
     /// the joint travels there during the next step. Ignored for body-anchored chains.
