@@ -1,6 +1,7 @@
 #include "ui/frog/frog_parameters_panel.h"
 #include "ui/common/decimal_spin_box.h"
 
+#include "core/base/math_constants.h"
 #include "core/softbody/scenes/scene.h"
 #include "core/softbody/scenes/scene_parameters.h"
 #include "ui/frog/frog_json.h"
@@ -34,7 +35,7 @@ QString translated(const char* text)
     return QCoreApplication::translate(kParameterPanelContext, text);
 }
 
-constexpr double kDegrees = 180.0 / M_PI;
+constexpr double kDegrees = 180.0 / kPi;
 
 } // namespace
 

@@ -102,7 +102,7 @@ Json pointsJson(const std::vector<Point>& points)
 
 /// A list parameter (obstacles, shapes): `out` becomes the items `one` reads from the list `v`.
 template <typename Item, typename ReadOne>
-Expected<bool> setList(SceneSpec& s, const std::string& key, const Json& v, std::vector<Item>& out, ReadOne one)
+Expected<void> setList(SceneSpec& s, const std::string& key, const Json& v, std::vector<Item>& out, ReadOne one)
 {
     const auto* list = v.asArray();
     if (!list)
@@ -114,11 +114,11 @@ Expected<bool> setList(SceneSpec& s, const std::string& key, const Json& v, std:
             return ok;
         out.push_back(std::move(item));
     }
-    return true;
+    return {};
 }
 
 /// One of `obstacles`: a segment or a polygon (§5.2.1).
-Expected<bool> readObstacle(const SceneSpec& s, const Json& o, ObstacleSpec& spec)
+Expected<void> readObstacle(const SceneSpec& s, const Json& o, ObstacleSpec& spec)
 {
     if (const Json* seg = o.find("segment")) {
         auto pts = pointsOf(*seg);
@@ -134,11 +134,11 @@ Expected<bool> readObstacle(const SceneSpec& s, const Json& o, ObstacleSpec& spe
     } else {
         return bad(s.name, "an obstacle is {\"segment\": …} or {\"polygon\": …}");
     }
-    return true;
+    return {};
 }
 
 /// One of `shapes`: a body's rest shape and start (§5.2.3).
-Expected<bool> readShape(const SceneSpec& s, const Json& o, ShapeSpec& spec)
+Expected<void> readShape(const SceneSpec& s, const Json& o, ShapeSpec& spec)
 {
     spec.name = o.find("name") && o.find("name")->asString() ? *o.find("name")->asString() : "shape";
     auto pts = o.find("points") ? pointsOf(*o.find("points")) : std::nullopt;
@@ -147,12 +147,12 @@ Expected<bool> readShape(const SceneSpec& s, const Json& o, ShapeSpec& spec)
         return bad(s.name, "a shape needs \"points\" (at least 3) and \"at\"");
     spec.points = *pts;
     spec.at = *at;
-    return true;
+    return {};
 }
 
 /// Reads one parameter from its JSON value into the scene. Shared by the file reader
 /// and by --set (which first turns "0,0.75" into [0,0.75]).
-Expected<bool> setParam(SceneSpec& s, const std::string& key, const Json& v)
+Expected<void> setParam(SceneSpec& s, const std::string& key, const Json& v)
 {
     const SceneParameter* param = findSceneParameter(key);
     if (!param)
@@ -166,19 +166,19 @@ Expected<bool> setParam(SceneSpec& s, const std::string& key, const Json& v)
             return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': " + key + " must be between " +
                                                         std::to_string(param->min) + " and " + std::to_string(param->max));
         param->integerIn(s) = *n;
-        return true;
+        return {};
     }
     case ParameterType::Number:
         if (!v.isNumber())
             return bad(s.name, key + " must be a number");
         param->numberIn(s) = *v.asNumber();
-        return true;
+        return {};
     case ParameterType::Pair: {
         auto q = pointOf(v);
         if (!q)
             return bad(s.name, key + " must be a pair x,y");
         param->pairIn(s) = *q;
-        return true;
+        return {};
     }
     case ParameterType::Choice: {
         const auto g = v.asString();
@@ -187,7 +187,7 @@ Expected<bool> setParam(SceneSpec& s, const std::string& key, const Json& v)
         for (std::size_t i = 0; i < choices.size(); ++i) {
             if (g == choices[i].name) {
                 s.grab = choices[i].mode;
-                return true;
+                return {};
             }
             names += (i == 0 ? "" : i + 1 == choices.size() ? " or " : ", ") + std::string(choices[i].name);
         }
@@ -198,7 +198,7 @@ Expected<bool> setParam(SceneSpec& s, const std::string& key, const Json& v)
         if (!lengths || lengths->size() < 1 || lengths->size() > 100)
             return bad(s.name, "chain must list 1 to 100 link lengths");
         s.chain = *lengths;
-        return true;
+        return {};
     }
     case ParameterType::Legs: {
         std::vector<Point> lengths; // upper, lower of each part: front (legs 0, 1), back (legs 2, 3)
@@ -213,7 +213,7 @@ Expected<bool> setParam(SceneSpec& s, const std::string& key, const Json& v)
             s.params.legs[i].upper = lengths[i / 2].x;
             s.params.legs[i].lower = lengths[i / 2].y;
         }
-        return true;
+        return {};
     }
     case ParameterType::AngleLimits: {
         if (!v.isObject())
@@ -228,7 +228,7 @@ Expected<bool> setParam(SceneSpec& s, const std::string& key, const Json& v)
                 return bad(s.name, "unknown angle limit '" + name + "'");
             limit->setIn(s, *q);
         }
-        return true;
+        return {};
     }
     case ParameterType::Obstacles:
         return setList(s, key, v, s.obstacles, [&](const Json& o, ObstacleSpec& spec) { return readObstacle(s, o, spec); });
@@ -277,7 +277,7 @@ std::optional<std::string> tooLarge(const SceneSpec& s)
     return std::nullopt;
 }
 
-Expected<bool> validate(const SceneSpec& s)
+Expected<void> validate(const SceneSpec& s)
 {
     auto ok = validateFrogParams(s.params);
     if (!ok)
@@ -314,7 +314,7 @@ Expected<bool> validate(const SceneSpec& s)
         for (Point q : o.points)
             if (!std::isfinite(q.x) || !std::isfinite(q.y))
                 return bad(s.name, "obstacle coordinates must be finite");
-    return true;
+    return {};
 }
 
 } // namespace
@@ -410,7 +410,7 @@ Expected<SceneSpec> parseScene(const Json& doc)
     return s;
 }
 
-Expected<bool> applySetting(SceneSpec& scene, const std::string& keyValue)
+Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
 {
     const auto eq = keyValue.find('=');
     if (eq == std::string::npos || eq == 0)
@@ -456,7 +456,7 @@ Expected<bool> applySetting(SceneSpec& scene, const std::string& keyValue)
     if (!ok)
         return ok;
     scene = std::move(changed);
-    return true;
+    return {};
 }
 
 Expected<SceneSpec> withBodies(SceneSpec scene, int bodies)

@@ -70,7 +70,7 @@ Expected<SceneSpec> parseScene(const Json& doc);
 /// A key the scene does not have, a malformed value, or a value that makes no sense
 /// (negative sides, a frame of zero size, more bodies than the frame holds side by side)
 /// is an error with a message.
-Expected<bool> applySetting(SceneSpec& scene, const std::string& keyValue);
+Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue);
 
 /// `bodies` bodies at the scene's density: where the scene's frame was drawn for fewer,
 /// it grows as frameForBodies() says (core/softbody/scenes/scene_layout.h) so that the bodies fit (a
