@@ -2,6 +2,9 @@
 // the components it needs, its parameters only, and --set checked.
 #include "core/softbody/scenes/scene.h"
 #include "core/softbody/scenes/scene_layout.h"
+#include "core/softbody/scenes/scene_files.h"
+#include "core/softbody/scenes/scene_texts.h"
+#include "core/io/json.h"
 
 #include <QtTest>
 
@@ -27,6 +30,35 @@ private slots:
             QCOMPARE(s->section, sections[i]);
             QVERIFY(!s->title.empty() && !s->description.empty());
         }
+    }
+
+    // Each built-in scene's section, title and description are written once, in
+    // scene_texts.cpp: the scene files do not repeat them, and the reader fills them in.
+    void sceneTextsAreWrittenOnce()
+    {
+        QCOMPARE(sceneTexts().size(), sceneNames().size());
+        for (const auto& [name, text] : sceneFiles()) {
+            const auto doc = Json::parse(text);
+            QVERIFY(doc.ok());
+            for (const char* key : {"section", "title", "description"})
+                QVERIFY2(!doc->find(key), (std::string(name) + " repeats " + key).c_str());
+            const SceneText* written = findSceneText(std::string(name));
+            QVERIFY2(written, std::string(name).c_str());
+            const auto s = loadScene(std::string(name));
+            QVERIFY(s.ok());
+            QCOMPARE(s->section, std::string(written->section));
+            QCOMPARE(s->title, std::string(written->title));
+            QCOMPARE(s->description, std::string(written->description));
+        }
+        // A scene file of the user's own keeps its own texts.
+        auto own = Json::parse(R"({"name": "polygon", "section": "9.9", "title": "Mine", "description": "My own.",
+                                   "model": "stage", "params": {"sides": 5, "radius": 50}})");
+        QVERIFY(own.ok());
+        const auto mine = parseScene(*own);
+        QVERIFY2(mine.ok(), mine.ok() ? "" : mine.error().message.c_str());
+        QCOMPARE(mine->section, std::string("9.9"));
+        QCOMPARE(mine->title, std::string("Mine"));
+        QCOMPARE(mine->description, std::string("My own."));
     }
 
     void components_data()

@@ -2063,93 +2063,93 @@
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="447" />
-            <source>4.1 Polygon and mouse</source>
-            <translation>4.1 Polígon i ratolí</translation>
+            <source>Polygon and mouse</source>
+            <translation>Polígon i ratolí</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="448" />
-            <source>4.2 Gravity</source>
-            <translation>4.2 Gravetat</translation>
+            <source>Gravity</source>
+            <translation>Gravetat</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="449" />
-            <source>4.3 Bounce</source>
-            <translation>4.3 Rebot</translation>
+            <source>Bounce</source>
+            <translation>Rebot</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="450" />
-            <source>4.4 Springs</source>
-            <translation>4.4 Molls</translation>
+            <source>Springs</source>
+            <translation>Molls</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="451" />
-            <source>4.5 Area</source>
-            <translation>4.5 Àrea</translation>
+            <source>Area</source>
+            <translation>Àrea</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="452" />
-            <source>4.6 Verlet and grabbing</source>
-            <translation>4.6 Verlet i agafar el cos</translation>
+            <source>Verlet and grabbing</source>
+            <translation>Verlet i agafar el cos</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="453" />
-            <source>4.7 Tuned parameters</source>
-            <translation>4.7 Ajust de paràmetres</translation>
+            <source>Tuned parameters</source>
+            <translation>Ajust de paràmetres</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="454" />
-            <source>4.8 Colour fill</source>
-            <translation>4.8 Color</translation>
+            <source>Colour fill</source>
+            <translation>Color</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="455" />
-            <source>4.9 Bézier outline</source>
-            <translation>4.9 Silueta de Bézier</translation>
+            <source>Bézier outline</source>
+            <translation>Silueta de Bézier</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="456" />
-            <source>4.10 Revised Bézier</source>
-            <translation>4.10 Revisió de Bézier</translation>
+            <source>Revised Bézier</source>
+            <translation>Revisió de Bézier</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="457" />
-            <source>4.12 Catmull-Rom outline</source>
-            <translation>4.12 Silueta de Catmull-Rom</translation>
+            <source>Catmull-Rom outline</source>
+            <translation>Silueta de Catmull-Rom</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="458" />
-            <source>4.13 Pendulum</source>
-            <translation>4.13 Pèndol</translation>
+            <source>Pendulum</source>
+            <translation>Pèndol</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="459" />
-            <source>4.14 Chain of joints</source>
-            <translation>4.14 Cadena d'articulacions</translation>
+            <source>Chain of joints</source>
+            <translation>Cadena d'articulacions</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="460" />
-            <source>4.15 Angle limits</source>
-            <translation>4.15 Restriccions angulars</translation>
+            <source>Angle limits</source>
+            <translation>Restriccions angulars</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="461" />
-            <source>4.16 The frog</source>
-            <translation>4.16 La granota</translation>
+            <source>The frog</source>
+            <translation>La granota</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="462" />
-            <source>5.2.1 Obstacles</source>
-            <translation>5.2.1 Obstacles</translation>
+            <source>Obstacles</source>
+            <translation>Obstacles</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="463" />
-            <source>5.2.2 Many bodies</source>
-            <translation>5.2.2 Diversos cossos</translation>
+            <source>Many bodies</source>
+            <translation>Diversos cossos</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="464" />
-            <source>5.2.3 Other shapes</source>
-            <translation>5.2.3 Altres formes</translation>
+            <source>Other shapes</source>
+            <translation>Altres formes</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="471" />

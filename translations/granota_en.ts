@@ -2063,93 +2063,93 @@
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="447" />
-            <source>4.1 Polygon and mouse</source>
-            <translation>4.1 Polygon and mouse</translation>
+            <source>Polygon and mouse</source>
+            <translation>Polygon and mouse</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="448" />
-            <source>4.2 Gravity</source>
-            <translation>4.2 Gravity</translation>
+            <source>Gravity</source>
+            <translation>Gravity</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="449" />
-            <source>4.3 Bounce</source>
-            <translation>4.3 Bounce</translation>
+            <source>Bounce</source>
+            <translation>Bounce</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="450" />
-            <source>4.4 Springs</source>
-            <translation>4.4 Springs</translation>
+            <source>Springs</source>
+            <translation>Springs</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="451" />
-            <source>4.5 Area</source>
-            <translation>4.5 Area</translation>
+            <source>Area</source>
+            <translation>Area</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="452" />
-            <source>4.6 Verlet and grabbing</source>
-            <translation>4.6 Verlet and grabbing</translation>
+            <source>Verlet and grabbing</source>
+            <translation>Verlet and grabbing</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="453" />
-            <source>4.7 Tuned parameters</source>
-            <translation>4.7 Tuned parameters</translation>
+            <source>Tuned parameters</source>
+            <translation>Tuned parameters</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="454" />
-            <source>4.8 Colour fill</source>
-            <translation>4.8 Colour fill</translation>
+            <source>Colour fill</source>
+            <translation>Colour fill</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="455" />
-            <source>4.9 Bézier outline</source>
-            <translation>4.9 Bézier outline</translation>
+            <source>Bézier outline</source>
+            <translation>Bézier outline</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="456" />
-            <source>4.10 Revised Bézier</source>
-            <translation>4.10 Revised Bézier</translation>
+            <source>Revised Bézier</source>
+            <translation>Revised Bézier</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="457" />
-            <source>4.12 Catmull-Rom outline</source>
-            <translation>4.12 Catmull-Rom outline</translation>
+            <source>Catmull-Rom outline</source>
+            <translation>Catmull-Rom outline</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="458" />
-            <source>4.13 Pendulum</source>
-            <translation>4.13 Pendulum</translation>
+            <source>Pendulum</source>
+            <translation>Pendulum</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="459" />
-            <source>4.14 Chain of joints</source>
-            <translation>4.14 Chain of joints</translation>
+            <source>Chain of joints</source>
+            <translation>Chain of joints</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="460" />
-            <source>4.15 Angle limits</source>
-            <translation>4.15 Angle limits</translation>
+            <source>Angle limits</source>
+            <translation>Angle limits</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="461" />
-            <source>4.16 The frog</source>
-            <translation>4.16 The frog</translation>
+            <source>The frog</source>
+            <translation>The frog</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="462" />
-            <source>5.2.1 Obstacles</source>
-            <translation>5.2.1 Obstacles</translation>
+            <source>Obstacles</source>
+            <translation>Obstacles</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="463" />
-            <source>5.2.2 Many bodies</source>
-            <translation>5.2.2 Many bodies</translation>
+            <source>Many bodies</source>
+            <translation>Many bodies</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="464" />
-            <source>5.2.3 Other shapes</source>
-            <translation>5.2.3 Other shapes</translation>
+            <source>Other shapes</source>
+            <translation>Other shapes</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="471" />

@@ -457,7 +457,9 @@ void FrogTab::setPresentation(bool on) { m_canvas->setPresentation(on); }
 QString FrogTab::sceneTitle(const QString& name) const
 {
     const SceneText* text = findSceneText(name.toStdString());
-    return text ? QCoreApplication::translate(kSceneTextContext, text->title) : name;
+    return text ? QString::fromLatin1(text->section) + QLatin1Char(' ') +
+                      QCoreApplication::translate(kSceneTextContext, text->title)
+                : name;
 }
 
 QString FrogTab::sceneDescription(const QString& name) const

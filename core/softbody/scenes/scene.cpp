@@ -6,6 +6,7 @@
 #include "core/base/number_format.h"
 #include "core/softbody/scenes/scene_layout.h"
 #include "core/softbody/scenes/scene_parameters.h"
+#include "core/softbody/scenes/scene_texts.h"
 #include "core/softbody/seed/stage_body.h"
 
 #include <algorithm>
@@ -371,6 +372,14 @@ Expected<SceneSpec> parseScene(const Json& doc)
     s.section = text("section");
     s.title = text("title");
     s.description = text("description");
+    if (const SceneText* builtIn = findSceneText(s.name)) { // a built-in scene's texts live in scene_texts.cpp
+        if (s.section.empty())
+            s.section = builtIn->section;
+        if (s.title.empty())
+            s.title = builtIn->title;
+        if (s.description.empty())
+            s.description = builtIn->description;
+    }
     if (s.name.empty())
         return bad("?", "a scene needs a \"name\"");
     const std::string model = text("model");

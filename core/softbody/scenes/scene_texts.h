@@ -1,13 +1,13 @@
 #pragma once
 /// \file scene_texts.h
-/// The scenes' titles and descriptions as the Frog tab shows them, one place for all: each
-/// scene's English title (its section first, "4.10 Revised Bézier") and one-sentence
-/// description, marked with QT_TRANSLATE_NOOP in the tab's context, kSceneTextContext, so the
-/// tab's translate() finds the Catalan texts of translations/granota_ca.ts under
-/// "granota::ui::FrogTab".
-///
-/// The scene files (resources/scenes/*.json) keep their own `title` and `description`: the
-/// file's data, which `simulate` prints and sceneToJson writes back.
+/// What each built-in scene is called, in one place: its section of the thesis ("4.10"), its
+/// English title ("Revised Bézier") and a one-sentence description. The scene files
+/// (resources/scenes/*.json) hold only the scene's data; the reader (scene.h) takes these texts
+/// for a built-in scene, the CLI prints them, and the Frog tab shows "4.10 Revised Bézier"
+/// translated. The texts are marked with QT_TRANSLATE_NOOP in the tab's context,
+/// kSceneTextContext, so translate() finds the Catalan of translations/granota_ca.ts under
+/// "granota::ui::FrogTab". A scene file of the user's own may carry its own "section",
+/// "title" and "description"; those are its data and are not translated.
 
 #include <string>
 #include <vector>
@@ -19,7 +19,8 @@ inline constexpr const char* kSceneTextContext = "granota::ui::FrogTab";
 
 struct SceneText {
     const char* name;        ///< the scene's name, e.g. "bezier-revised"
-    const char* title;       ///< e.g. "4.10 Revised Bézier"
+    const char* section;     ///< the thesis's section, e.g. "4.10"
+    const char* title;       ///< e.g. "Revised Bézier"
     const char* description; ///< one sentence
 };
 
