@@ -298,16 +298,8 @@ JoinReport<S> checkSegmentJoins(const std::vector<Vec2<Polynomial<S>>>& segments
             const auto& pt = d[static_cast<std::size_t>(to)];
             const Vec2<S> left(pf.x(one), pf.y(one));
             const Vec2<S> right(pt.x(zero), pt.y(zero));
-            if (!detail::nearlyEqual(left, right, tolerance)) {
-                JoinDefect<S> defect;
-                defect.join = j;
-                defect.fromSegment = from;
-                defect.toSegment = to;
-                defect.order = order;
-                defect.left = left;
-                defect.right = right;
-                report.defects.push_back(std::move(defect));
-            }
+            if (!detail::nearlyEqual(left, right, tolerance))
+                report.defects.push_back(JoinDefect<S>{j, from, to, order, left, right});
         }
         if (order < maxOrder)
             for (auto& p : d)
