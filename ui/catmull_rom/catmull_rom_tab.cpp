@@ -4,12 +4,12 @@
 #include "core/base/number_format.h"
 #include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
-#include "ui/catmull_rom/catmull_rom_commands.h"
 #include "ui/catmull_rom/catmull_rom_report.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
 #include "ui/common/point_table.h"
+#include "ui/common/value_command.h"
 #include "ui/shell/tikz_writer.h"
 
 #include <QCheckBox>
@@ -41,6 +41,7 @@ namespace {
 
 constexpr int kSliderSteps = 20;          ///< slider units per unit of τ: steps of 0.05
 constexpr double kPresentationScale = 1.6; ///< lines and handles in presentation mode
+constexpr int kSliderMergeIdBase = 0x43520000; ///< "CR": the merge ids of the τ slider's moves
 constexpr int kPlotSamples = 101;         ///< t = 0, 0.01, …, 1 (the Matlab linspace(0,1))
 const QColor kBezierColor(0x6a, 0x3d, 0x9a);
 const QColor kSplineColor(0x33, 0x33, 0x33);
@@ -400,8 +401,11 @@ void CatmullRomTab::changeSettings(const CatmullRomSettings& after, const QStrin
 {
     if (after == m_settings)
         return;
-    m_undo->push(new CatmullRomSettingsCommand([this](const CatmullRomSettings& s) { applySettings(s); }, m_settings,
-                                               after, undoText, mergeable));
+    // Slider moves merge while they drag the same τ of the same list.
+    const int mergeId = mergeable ? kSliderMergeIdBase + (after.selectedTau + 1) * 32 + static_cast<int>(after.taus.size())
+                                  : -1;
+    m_undo->push(new ValueCommand<CatmullRomSettings>([this](const CatmullRomSettings& s) { applySettings(s); },
+                                                      m_settings, after, undoText, mergeId));
 }
 
 void CatmullRomTab::applySettings(const CatmullRomSettings& s)

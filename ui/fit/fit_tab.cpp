@@ -12,6 +12,7 @@
 #include "ui/fit/fit_exact_view.h"
 #include "ui/common/point_editor.h"
 #include "ui/common/point_table.h"
+#include "ui/common/value_command.h"
 #include "ui/shell/tikz_writer.h"
 #include "ui/shell/user_file.h"
 
@@ -52,8 +53,9 @@ constexpr int kMaxLabelledControls = 30;   ///< control points labelled P0… up
 constexpr double kPresentationScale = 1.6; ///< canvas and plot scale in presentation mode
 constexpr int kMaxDegree = kMaxFitDegree;  ///< the core's limit
 constexpr int kMaxIterations = 1000;
-/// Undo-merge fields of FitSettingsCommand.
+/// Undo-merge fields of the settings' ValueCommand (changes of the same field merge).
 enum Field { DegreeField, ParametrizationField, SolverField, CorrectionField };
+constexpr int kFieldMergeIdBase = 0x46490000; ///< "FI": the merge id of field f is this + f
 
 /// The degree spin box: refuses n > k with a reason instead of silently (docs/tabs.md).
 class DegreeSpinBox : public QSpinBox {
@@ -459,8 +461,9 @@ void FitTab::changeSettings(const FitSettings& after, const QString& undoText, i
 {
     if (after == m_settings)
         return;
-    m_undo->push(new FitSettingsCommand([this](const FitSettings& s) { applySettings(s); }, m_settings, after,
-                                        undoText, field));
+    const int mergeId = field < 0 ? -1 : kFieldMergeIdBase + field;
+    m_undo->push(new ValueCommand<FitSettings>([this](const FitSettings& s) { applySettings(s); }, m_settings, after,
+                                               undoText, mergeId, {/*dropWhenUnchanged=*/true}));
 }
 
 void FitTab::applySettings(const FitSettings& s)
@@ -717,8 +720,8 @@ bool FitTab::loadExample(const granota::WorkedExample& example)
     m_loading = true;
     m_undo->beginMacro(tr("Load Ex %1").arg(id));
     m_editor->setPoints(toDouble(example.points), tr("Ex %1 data").arg(id));
-    m_undo->push(new FitSettingsCommand([this](const FitSettings& s) { applySettings(s); }, m_settings, after,
-                                        tr("Ex %1 settings").arg(id)));
+    m_undo->push(new ValueCommand<FitSettings>([this](const FitSettings& s) { applySettings(s); }, m_settings, after,
+                                               tr("Ex %1 settings").arg(id)));
     m_undo->endMacro();
     m_loading = false;
     m_canvas->fitToContent();

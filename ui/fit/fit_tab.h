@@ -9,7 +9,7 @@
 /// (core/curves/fitting/least_squares_fit.h, core/curves/fitting/fit_error_by_degree.h); the tab draws and explains.
 
 #include "core/curves/fitting/least_squares_fit.h"
-#include "ui/fit/fit_settings_command.h"
+#include "ui/fit/fit_settings.h"
 #include "ui/shell/tab_page.h"
 
 #include <optional>
