@@ -12,6 +12,7 @@
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
+#include "ui/common/presentation_scale.h"
 #include "ui/shell/tikz_writer.h"
 
 #include <QCheckBox>
@@ -39,6 +40,10 @@ constexpr int kMaxLegendEntries = 12;       ///< more graphs than this: no legen
 constexpr int kMaxReadoutLines = 12;        ///< values listed in the hover readout
 constexpr int kMaxBarLabels = 20;           ///< more bars than this: label every k-th
 constexpr int kCsvSamples = 101;            ///< rows of the CSV export: t = 0, 0.01, …, 1
+constexpr double kBasisWidth = 2.0;         ///< line width of the graphs B_i^n(t)
+/// Their width in presentation mode: a line width of its own, thicker than kBasisWidth ×
+/// kPresentationScale (3.2), so that the graphs stand out from the axes from the back of the room.
+constexpr double kPresentationBasisWidth = 3.6;
 
 const char* const kSubscripts[] = {"₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉"};
 const char* const kSuperscripts[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
@@ -253,7 +258,7 @@ void BernsteinTab::rebuildBasisPlot()
     for (int j = 0; j < kPlotSamples; ++j)
         ts[j] = static_cast<double>(j) / (kPlotSamples - 1);
     const int first = m_allDegrees ? 0 : m_degree;
-    const double width = (m_presentation ? 1.8 : 1.0) * 2.0;
+    const double width = m_presentation ? kPresentationBasisWidth : kBasisWidth;
     int legendEntries = 0;
     for (int n = first; n <= m_degree; ++n) {
         // Every graph of one degree at once through Lemma 2.1 (core/curves/bezier/bernstein.h).
@@ -368,7 +373,7 @@ void BernsteinTab::applyPlotStyle()
 {
     // Fonts follow the application font (the main window enlarges it in presentation
     // mode); lines are thickened here.
-    const double s = m_presentation ? 1.6 : 1.0;
+    const double s = presentationScale(m_presentation);
     QFont tickFont;
     tickFont.setPointSizeF(tickFont.pointSizeF() * 0.9);
     const QFont labelFont;

@@ -9,6 +9,7 @@
 #include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
 #include "ui/common/point_table.h"
+#include "ui/common/presentation_scale.h"
 #include "ui/common/value_command.h"
 #include "ui/shell/tikz_writer.h"
 
@@ -40,7 +41,6 @@ namespace granota::ui {
 namespace {
 
 constexpr int kSliderSteps = 20;          ///< slider units per unit of τ: steps of 0.05
-constexpr double kPresentationScale = 1.6; ///< lines and handles in presentation mode
 constexpr int kSliderMergeIdBase = 0x43520000; ///< "CR": the merge ids of the τ slider's moves
 constexpr int kPlotSamples = 101;         ///< t = 0, 0.01, …, 1 (the Matlab linspace(0,1))
 const QColor kBezierColor(0x6a, 0x3d, 0x9a);
@@ -558,7 +558,7 @@ void CatmullRomTab::recompute()
 
 void CatmullRomTab::updatePlot()
 {
-    const double scale = m_presentation ? kPresentationScale : 1.0;
+    const double scale = presentationScale(m_presentation);
     m_plot->clearGraphs();
     QFont font = this->font();
     m_plot->legend->setFont(font);
@@ -911,7 +911,7 @@ QString CatmullRomTab::tikz() const
 void CatmullRomTab::setPresentation(bool on)
 {
     m_presentation = on;
-    m_canvas->setStyleScale(on ? kPresentationScale : 1.0);
+    m_canvas->setStyleScale(presentationScale(on));
     m_panel->setPresentation(on);
     syncControls();
     updatePlot();

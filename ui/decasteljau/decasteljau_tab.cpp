@@ -14,6 +14,7 @@
 #include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
 #include "ui/common/point_table.h"
+#include "ui/common/presentation_scale.h"
 #include "ui/shell/tikz_writer.h"
 
 #include <QCheckBox>
@@ -852,7 +853,7 @@ QString DeCasteljauTab::tikz() const
 
 void DeCasteljauTab::setPresentation(bool on)
 {
-    m_canvas->setStyleScale(on ? 1.8 : 1.0);
+    m_canvas->setStyleScale(presentationScale(on));
     m_exact->setPresentation(on);
     updateExactPanel();
 }

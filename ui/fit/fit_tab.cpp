@@ -12,6 +12,7 @@
 #include "ui/fit/fit_exact_view.h"
 #include "ui/common/point_editor.h"
 #include "ui/common/point_table.h"
+#include "ui/common/presentation_scale.h"
 #include "ui/common/value_command.h"
 #include "ui/shell/tikz_writer.h"
 #include "ui/shell/user_file.h"
@@ -50,7 +51,6 @@ namespace {
 constexpr int kCurveSamples = 400;         ///< De Casteljau samples of the fitted curve
 constexpr std::size_t kDrawLimit = 5000;   ///< beyond this many points, residuals are drawn decimated
 constexpr int kMaxLabelledControls = 30;   ///< control points labelled P0… up to this degree
-constexpr double kPresentationScale = 1.6; ///< canvas and plot scale in presentation mode
 constexpr int kMaxDegree = kMaxFitDegree;  ///< the core's limit
 constexpr int kMaxIterations = 1000;
 /// Undo-merge fields of the settings' ValueCommand (changes of the same field merge).
@@ -936,7 +936,7 @@ QString FitTab::tikz() const
 void FitTab::setPresentation(bool on)
 {
     m_presentation = on;
-    const double scale = on ? kPresentationScale : 1.0;
+    const double scale = presentationScale(on);
     m_canvas->setStyleScale(scale);
     m_exact->setPresentation(on);
     const QFont tickFont; // the application's font, which presentation mode enlarges
