@@ -84,13 +84,14 @@ QString pointText(const RPoint& p)
 } // namespace
 
 BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
-    : TabPage(parent), m_deCasteljau(deCasteljau), m_undo(new QUndoStack(this)), m_basisPlot(new QCustomPlot(this)),
+    : TabPage(QStringLiteral("bernstein"), QT_TR_NOOP("Bernstein"), parent), m_deCasteljau(deCasteljau), m_basisPlot(new QCustomPlot(this)),
       m_weightsPlot(new QCustomPlot(this)), m_drawable(std::make_unique<PlotDrawable>(m_basisPlot)),
       m_exact(new ExactPanel(this)), m_parameter(new DeCasteljauParameterControl(this)), m_degreeLabel(new QLabel(this)),
       m_degreeBox(new QSpinBox(this)), m_allBox(new QCheckBox(this)), m_checksGroup(new QGroupBox(this)),
       m_checkLabels{new QLabel(this), new QLabel(this), new QLabel(this)}, m_weightsGroup(new QGroupBox(this)),
       m_curveLabel(new QLabel(this))
 {
+    setExportView(m_drawable.get());
     m_exact->setWordWrapMode(QTextOption::WordWrap); // break between terms, never inside "t^5"
     m_degreeBox->setRange(0, kMaxDegree);
     m_degreeBox->setValue(m_degree);
@@ -565,8 +566,6 @@ bool BernsteinTab::loadExample(const granota::WorkedExample& example)
     }
     return false;
 }
-
-Drawable* BernsteinTab::exportView() { return m_drawable.get(); }
 
 QString BernsteinTab::csv() const
 {

@@ -102,8 +102,9 @@ QRectF pointBounds(const std::vector<Point>& points)
 } // namespace
 
 CatmullRomTab::CatmullRomTab(QWidget* parent)
-    : TabPage(parent), m_undo(new QUndoStack(this)), m_canvas(new CurveCanvas(this))
+    : TabPage(QStringLiteral("catmull-rom"), QT_TR_NOOP("Catmull-Rom"), parent), m_canvas(new CurveCanvas(this))
 {
+    setExportView(m_canvas);
     // Curves under the handles, the legend on top.
     m_canvas->addLayer([this](QPainter& p, const ViewTransform& v, const CanvasStyle& s) { drawCurves(p, v, s); });
     m_editor = new PointEditor(m_canvas, m_undo, this);
@@ -860,8 +861,6 @@ bool CatmullRomTab::loadState(const QJsonObject& state, QString* error)
 }
 
 // ---------------------------------------------------------------- exports and view
-
-Drawable* CatmullRomTab::exportView() { return m_canvas; }
 
 QString CatmullRomTab::csv() const
 {

@@ -38,14 +38,10 @@ class CatmullRomTab : public TabPage {
 public:
     explicit CatmullRomTab(QWidget* parent = nullptr);
 
-    QString key() const override { return QStringLiteral("catmull-rom"); }
-    QString title() const override { return tr("Catmull-Rom"); }
     void retranslate() override;
     QJsonObject saveState() const override;
     bool loadState(const QJsonObject& state, QString* error) override;
     bool loadExample(const granota::WorkedExample& example) override;
-    QUndoStack* undoStack() const override { return m_undo; }
-    Drawable* exportView() override;
     QString csv() const override;
     QString tikz() const override;
     void setPresentation(bool on) override;
@@ -94,7 +90,6 @@ private:
     void drawLegend(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const;
     QString tensionItemText(const Rational& tau) const;
 
-    QUndoStack* m_undo;
     CurveCanvas* m_canvas;
     PointEditor* m_editor = nullptr;
     PointTable* m_table = nullptr;

@@ -172,8 +172,9 @@ std::optional<bool> optionalBool(const QJsonObject& state, const char* key, bool
 } // namespace
 
 DeCasteljauTab::DeCasteljauTab(QWidget* parent)
-    : TabPage(parent), m_undo(new QUndoStack(this)), m_canvas(new CurveCanvas(this))
+    : TabPage(QStringLiteral("decasteljau"), QT_TR_NOOP("De Casteljau"), parent), m_canvas(new CurveCanvas(this))
 {
+    setExportView(m_canvas);
     buildLayers(); // under the handles: the editor adds its own layer on top
     m_editor = new PointEditor(m_canvas, m_undo, this);
     m_editor->setCountLimits(1, kMaxPoints);
@@ -814,8 +815,6 @@ bool DeCasteljauTab::loadExample(const granota::WorkedExample& example)
     emit statusMessage(tr("Ex %1: the tables of the thesis are in the panel on the right at t = 1/2.").arg(id));
     return true;
 }
-
-Drawable* DeCasteljauTab::exportView() { return m_canvas; }
 
 QString DeCasteljauTab::csv() const
 {

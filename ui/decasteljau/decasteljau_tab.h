@@ -35,14 +35,10 @@ class DeCasteljauTab : public TabPage {
 public:
     explicit DeCasteljauTab(QWidget* parent = nullptr);
 
-    QString key() const override { return QStringLiteral("decasteljau"); }
-    QString title() const override { return tr("De Casteljau"); }
     void retranslate() override;
     QJsonObject saveState() const override;
     bool loadState(const QJsonObject& state, QString* error) override;
     bool loadExample(const granota::WorkedExample& example) override;
-    QUndoStack* undoStack() const override { return m_undo; }
-    Drawable* exportView() override;
     QString csv() const override;
     QString tikz() const override;
     void setPresentation(bool on) override;
@@ -107,7 +103,6 @@ private:
     QRectF pointBounds() const;
     void setToggle(bool& flag, QCheckBox* box, bool on);
 
-    QUndoStack* m_undo;
     CurveCanvas* m_canvas;
     PointEditor* m_editor = nullptr;
     PointTable* m_table = nullptr;

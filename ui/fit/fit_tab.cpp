@@ -130,8 +130,9 @@ QJsonArray pointsJson(const std::vector<Point>& points)
 
 } // namespace
 
-FitTab::FitTab(QWidget* parent) : TabPage(parent), m_undo(new QUndoStack(this)), m_canvas(new CurveCanvas(this))
+FitTab::FitTab(QWidget* parent) : TabPage(QStringLiteral("fit"), QT_TR_NOOP("Fitting"), parent), m_canvas(new CurveCanvas(this))
 {
+    setExportView(m_canvas);
     addLayers(); // under the data handles, which the editor draws last
     m_editor = new PointEditor(m_canvas, m_undo, this);
     m_editor->setLabelPrefix(QStringLiteral("Q"));
@@ -873,8 +874,6 @@ bool FitTab::loadState(const QJsonObject& state, QString* error)
     m_canvas->fitToContent();
     return true;
 }
-
-Drawable* FitTab::exportView() { return m_canvas; }
 
 QString FitTab::csv() const
 {

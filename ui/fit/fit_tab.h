@@ -36,14 +36,10 @@ class FitTab : public TabPage {
 public:
     explicit FitTab(QWidget* parent = nullptr);
 
-    QString key() const override { return QStringLiteral("fit"); }
-    QString title() const override { return tr("Fitting"); }
     void retranslate() override;
     QJsonObject saveState() const override;
     bool loadState(const QJsonObject& state, QString* error) override;
     bool loadExample(const granota::WorkedExample& example) override;
-    QUndoStack* undoStack() const override { return m_undo; }
-    Drawable* exportView() override;
     QString csv() const override;
     QString tikz() const override;
     void setPresentation(bool on) override;
@@ -101,7 +97,6 @@ private:
     void importDialog();
     QString errorText(const Error& error) const;
 
-    QUndoStack* m_undo;
     CurveCanvas* m_canvas;
     PointEditor* m_editor = nullptr;
     PointTable* m_table = nullptr;

@@ -66,8 +66,9 @@ std::vector<Point> flipped(const std::vector<Point>& points, double height)
 } // namespace
 
 FrogTab::FrogTab(QWidget* parent)
-    : TabPage(parent), m_undo(new QUndoStack(this)), m_canvas(new FrogCanvas(this)), m_params(new FrogParametersPanel(this))
+    : TabPage(QStringLiteral("frog"), QT_TR_NOOP("Frog"), parent), m_canvas(new FrogCanvas(this)), m_params(new FrogParametersPanel(this))
 {
+    setExportView(m_canvas);
     auto* side = new QWidget(this);
     auto* column = new QVBoxLayout(side);
 
@@ -645,8 +646,6 @@ bool FrogTab::loadState(const QJsonObject& state, QString* error)
 }
 
 bool FrogTab::loadExample(const granota::WorkedExample&) { return false; } // chapter 2 has no frog examples
-
-Drawable* FrogTab::exportView() { return m_canvas; }
 
 QString FrogTab::csv() const
 {
