@@ -59,14 +59,16 @@ public:
 
 protected:
     void changeEvent(QEvent* event) override;
-    PointListMessages pointMessages() const override;
-    void writeSettings(QJsonObject& state) const override;
-    bool loadSettings(const QJsonObject& state, const std::vector<Point>& points, QString& error) override;
-    /// The points' box and the curves drawn inside one box size around it (large |τ| overshoots).
-    QRectF contentBounds() const override;
-    void presentationChanged(bool on) override;
 
 private:
+    // What CurveTab asks of this tab: the settings of the document (catmull_rom_settings.h),
+    // its refusals of the points, the view's box, presentation mode (controls and plot).
+    bool loadSettings(const QJsonObject& state, const std::vector<Point>& points, QString& error) override;
+    void writeSettings(QJsonObject& state) const override;
+    PointListMessages pointMessages() const override;
+    void presentationChanged(bool on) override;
+    /// The points' box and the curves drawn inside one box size around it (large |τ| overshoots).
+    QRectF contentBounds() const override;
     void buildUi();
     /// Pushes an undo step from the current settings to `after` (nothing if equal).
     void changeSettings(const CatmullRomSettings& after, const QString& undoText, bool mergeable = false);

@@ -77,14 +77,18 @@ signals:
 
 protected:
     void showEvent(QShowEvent* event) override;
-    PointListMessages pointMessages() const override;
-    void writeSettings(QJsonObject& state) const override;
-    bool loadSettings(const QJsonObject& state, const std::vector<Point>& points, QString& error) override;
-    /// The control points with a margin of 5 % (a lone point gets a box around it).
-    QRectF contentBounds() const override;
-    void presentationChanged(bool on) override;
 
 private:
+    // What CurveTab asks of this tab.
+    /// The document's t, samples and display options (CurveTab writes and checks the points).
+    void writeSettings(QJsonObject& state) const override;
+    bool loadSettings(const QJsonObject& state, const std::vector<Point>& points, QString& error) override;
+    PointListMessages pointMessages() const override;
+    /// The control points with a margin of 5 % (a lone point gets a box around it).
+    QRectF contentBounds() const override;
+    /// The exact panel is typeset again at its new size.
+    void presentationChanged(bool on) override;
+
     void buildLayers();
     void pointsChanged();
     void parameterChanged();

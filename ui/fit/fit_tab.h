@@ -67,14 +67,18 @@ public:
 
 protected:
     void showEvent(QShowEvent* event) override;
+
+private:
+    // What CurveTab asks of this tab.
     PointListMessages pointMessages() const override;
+    /// The document's settings: degree, parametrization, solver, corrections, showMatrices.
     void writeSettings(QJsonObject& state) const override;
+    /// Applies them without an undo step: opening a document starts a new history.
     bool loadSettings(const QJsonObject& state, const std::vector<Point>& points, QString& error) override;
     /// The data and the curve, and the control points unless they fly far off.
     QRectF contentBounds() const override;
+    /// The plot's fonts, pens and the splitters follow the new scale.
     void presentationChanged(bool on) override;
-
-private:
     void buildUi();
     void addLayers();
     void applySettings(const FitSettings& s);
