@@ -645,8 +645,6 @@ bool FrogTab::loadState(const QJsonObject& state, QString* error)
     return true;
 }
 
-bool FrogTab::loadExample(const granota::WorkedExample&) { return false; } // chapter 2 has no frog examples
-
 QString FrogTab::csv() const
 {
     QString out;

@@ -32,7 +32,6 @@ public:
     void retranslate() override;
     QJsonObject saveState() const override;
     bool loadState(const QJsonObject& state, QString* error) override;
-    bool loadExample(const granota::WorkedExample& example) override;
     QString csv() const override;
     QString tikz() const override;
     void setPresentation(bool on) override;

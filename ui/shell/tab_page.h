@@ -43,8 +43,13 @@ public:
     /// Restores what saveState() wrote. On bad data returns false with a translated message
     /// in `error`, and leaves the tab as it was.
     virtual bool loadState(const QJsonObject& state, QString* error) = 0;
-    /// Loads a worked example of the thesis whose `tab` is this tab's key (undoable).
-    virtual bool loadExample(const granota::WorkedExample& example) = 0;
+    /// Loads a worked example of the thesis whose `tab` is this tab's key (undoable). A tab
+    /// without worked examples (the frog: chapter 2 has none) keeps this one: false.
+    virtual bool loadExample(const granota::WorkedExample& example)
+    {
+        (void)example;
+        return false;
+    }
 
     /// The undo stack of the tab's edits (the main window's Edit menu follows the current tab).
     QUndoStack* undoStack() const { return m_undo; }
