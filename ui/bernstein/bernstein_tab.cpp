@@ -12,6 +12,7 @@
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
+#include "ui/common/presentation_scale.h"
 #include "ui/shell/tikz_writer.h"
 
 #include <QCheckBox>
@@ -39,6 +40,10 @@ constexpr int kMaxLegendEntries = 12;       ///< more graphs than this: no legen
 constexpr int kMaxReadoutLines = 12;        ///< values listed in the hover readout
 constexpr int kMaxBarLabels = 20;           ///< more bars than this: label every k-th
 constexpr int kCsvSamples = 101;            ///< rows of the CSV export: t = 0, 0.01, …, 1
+constexpr double kBasisWidth = 2.0;         ///< line width of the graphs B_i^n(t)
+/// Their width in presentation mode: a line width of its own, thicker than kBasisWidth ×
+/// kPresentationScale (3.2), so that the graphs stand out from the axes from the back of the room.
+constexpr double kPresentationBasisWidth = 3.6;
 
 const char* const kSubscripts[] = {"₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉"};
 const char* const kSuperscripts[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
@@ -79,13 +84,14 @@ QString pointText(const RPoint& p)
 } // namespace
 
 BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
-    : TabPage(parent), m_deCasteljau(deCasteljau), m_undo(new QUndoStack(this)), m_basisPlot(new QCustomPlot(this)),
+    : TabPage(QStringLiteral("bernstein"), QT_TR_NOOP("Bernstein"), parent), m_deCasteljau(deCasteljau), m_basisPlot(new QCustomPlot(this)),
       m_weightsPlot(new QCustomPlot(this)), m_drawable(std::make_unique<PlotDrawable>(m_basisPlot)),
       m_exact(new ExactPanel(this)), m_parameter(new DeCasteljauParameterControl(this)), m_degreeLabel(new QLabel(this)),
       m_degreeBox(new QSpinBox(this)), m_allBox(new QCheckBox(this)), m_checksGroup(new QGroupBox(this)),
       m_checkLabels{new QLabel(this), new QLabel(this), new QLabel(this)}, m_weightsGroup(new QGroupBox(this)),
       m_curveLabel(new QLabel(this))
 {
+    setExportView(m_drawable.get());
     m_exact->setWordWrapMode(QTextOption::WordWrap); // break between terms, never inside "t^5"
     m_degreeBox->setRange(0, kMaxDegree);
     m_degreeBox->setValue(m_degree);
@@ -253,7 +259,7 @@ void BernsteinTab::rebuildBasisPlot()
     for (int j = 0; j < kPlotSamples; ++j)
         ts[j] = static_cast<double>(j) / (kPlotSamples - 1);
     const int first = m_allDegrees ? 0 : m_degree;
-    const double width = (m_presentation ? 1.8 : 1.0) * 2.0;
+    const double width = m_presentation ? kPresentationBasisWidth : kBasisWidth;
     int legendEntries = 0;
     for (int n = first; n <= m_degree; ++n) {
         // Every graph of one degree at once through Lemma 2.1 (core/curves/bezier/bernstein.h).
@@ -368,7 +374,7 @@ void BernsteinTab::applyPlotStyle()
 {
     // Fonts follow the application font (the main window enlarges it in presentation
     // mode); lines are thickened here.
-    const double s = m_presentation ? 1.6 : 1.0;
+    const double s = presentationScale(m_presentation);
     QFont tickFont;
     tickFont.setPointSizeF(tickFont.pointSizeF() * 0.9);
     const QFont labelFont;
@@ -560,8 +566,6 @@ bool BernsteinTab::loadExample(const granota::WorkedExample& example)
     }
     return false;
 }
-
-Drawable* BernsteinTab::exportView() { return m_drawable.get(); }
 
 QString BernsteinTab::csv() const
 {

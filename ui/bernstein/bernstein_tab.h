@@ -42,14 +42,10 @@ public:
     explicit BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent = nullptr);
     ~BernsteinTab() override;
 
-    QString key() const override { return QStringLiteral("bernstein"); }
-    QString title() const override { return tr("Bernstein"); }
     void retranslate() override;
     QJsonObject saveState() const override;
     bool loadState(const QJsonObject& state, QString* error) override;
     bool loadExample(const granota::WorkedExample& example) override;
-    QUndoStack* undoStack() const override { return m_undo; }
-    Drawable* exportView() override;
     QString csv() const override;
     QString tikz() const override;
     void setPresentation(bool on) override;
@@ -98,7 +94,6 @@ private:
     void plotMousePress(QMouseEvent* event);
 
     DeCasteljauTab* m_deCasteljau;
-    QUndoStack* m_undo;
     QCustomPlot* m_basisPlot;
     QCustomPlot* m_weightsPlot;
     std::unique_ptr<PlotDrawable> m_drawable;

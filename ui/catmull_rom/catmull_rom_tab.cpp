@@ -4,12 +4,14 @@
 #include "core/base/number_format.h"
 #include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
-#include "ui/catmull_rom/catmull_rom_commands.h"
 #include "ui/catmull_rom/catmull_rom_report.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
+#include "ui/common/point_extent.h"
 #include "ui/common/point_table.h"
+#include "ui/common/presentation_scale.h"
+#include "ui/common/value_command.h"
 #include "ui/shell/tikz_writer.h"
 
 #include <QCheckBox>
@@ -17,7 +19,6 @@
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
-#include <QJsonArray>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
@@ -40,7 +41,7 @@ namespace granota::ui {
 namespace {
 
 constexpr int kSliderSteps = 20;          ///< slider units per unit of τ: steps of 0.05
-constexpr double kPresentationScale = 1.6; ///< lines and handles in presentation mode
+constexpr int kSliderMergeIdBase = 0x43520000; ///< "CR": the merge ids of the τ slider's moves
 constexpr int kPlotSamples = 101;         ///< t = 0, 0.01, …, 1 (the Matlab linspace(0,1))
 const QColor kBezierColor(0x6a, 0x3d, 0x9a);
 const QColor kSplineColor(0x33, 0x33, 0x33);
@@ -78,30 +79,25 @@ void drawPolyline(QPainter& p, const ViewTransform& view, const std::vector<Poin
 /// The rectangle holding the points, never empty (one point or coincident points get a unit box).
 QRectF pointBounds(const std::vector<Point>& points)
 {
-    if (points.empty())
+    const std::optional<PointExtent> box = finiteExtent(points);
+    if (!box)
         return {-1, -1, 2, 2};
-    double x0 = points[0].x, x1 = x0, y0 = points[0].y, y1 = y0;
-    for (const Point& p : points) {
-        x0 = std::min(x0, p.x);
-        x1 = std::max(x1, p.x);
-        y0 = std::min(y0, p.y);
-        y1 = std::max(y1, p.y);
-    }
-    double w = x1 - x0, h = y1 - y0;
+    const double x0 = box->minX, y0 = box->minY;
+    double w = box->width(), h = box->height();
     const double size = std::max({w, h, 0.0});
     const double pad = size > 0 ? 0.0 : std::max(1e-9, std::max(std::fabs(x0), std::fabs(y0)) * 0.1 + (x0 == 0 && y0 == 0 ? 1.0 : 0.0));
     if (w < size * 0.05 || w == 0)
         w = std::max(size * 0.05, pad);
     if (h < size * 0.05 || h == 0)
         h = std::max(size * 0.05, pad);
-    const QPointF c((x0 + x1) / 2, (y0 + y1) / 2);
+    const QPointF c((box->minX + box->maxX) / 2, (box->minY + box->maxY) / 2);
     return QRectF(c.x() - w / 2, c.y() - h / 2, w, h);
 }
 
 } // namespace
 
 CatmullRomTab::CatmullRomTab(QWidget* parent)
-    : TabPage(parent), m_undo(new QUndoStack(this)), m_canvas(new CurveCanvas(this))
+    : CurveTab(QStringLiteral("catmull-rom"), QT_TR_NOOP("Catmull-Rom"), parent)
 {
     // Curves under the handles, the legend on top.
     m_canvas->addLayer([this](QPainter& p, const ViewTransform& v, const CanvasStyle& s) { drawCurves(p, v, s); });
@@ -236,10 +232,10 @@ void CatmullRomTab::buildUi()
     });
 
     // Exact results and the points table.
-    m_panel = new ExactPanel(this);
+    m_exact = new ExactPanel(this);
     m_table = new PointTable(m_editor, this);
     m_sideTabs = new QTabWidget(this);
-    m_sideTabs->addTab(m_panel, QString());
+    m_sideTabs->addTab(m_exact, QString());
     m_sideTabs->addTab(m_table, QString());
 
     auto* controls = new QWidget;
@@ -333,13 +329,13 @@ void CatmullRomTab::retranslate()
     m_allTausCheck->setToolTip(tr("Plot the blending functions of every tension in the list (one line style per τ), "
                                   "as Ex 2.12 does for τ = −2, 0, 1/2 and 2."));
     m_plot->setToolTip(tr("The blending functions w_0…w_3 of Cor 2.1 on t ∈ [0, 1]."));
-    m_panel->setToolTip(tr("Exact results: segment polynomials (Lemma 2.3, Def 2.10), tangents at the knots "
+    m_exact->setToolTip(tr("Exact results: segment polynomials (Lemma 2.3, Def 2.10), tangents at the knots "
                            "(Prop 2.3), blending functions (Cor 2.1), and the comparisons of §2.3."));
     m_canvas->setToolTip(tr("Drag a point to move it; double-click to add one; Delete removes the selected point; "
                             "drag the paper to pan, wheel to zoom."));
     m_sideTabs->setTabText(0, tr("Exact results"));
     m_sideTabs->setTabText(1, tr("Points"));
-    m_sideTabs->setTabToolTip(0, m_panel->toolTip());
+    m_sideTabs->setTabToolTip(0, m_exact->toolTip());
     m_sideTabs->setTabToolTip(1, tr("The points q0…qn as numbers; fractions such as 1/3 are accepted."));
     m_table->retranslate();
     syncControls();
@@ -400,8 +396,11 @@ void CatmullRomTab::changeSettings(const CatmullRomSettings& after, const QStrin
 {
     if (after == m_settings)
         return;
-    m_undo->push(new CatmullRomSettingsCommand([this](const CatmullRomSettings& s) { applySettings(s); }, m_settings,
-                                               after, undoText, mergeable));
+    // Slider moves merge while they drag the same τ of the same list.
+    const int mergeId = mergeable ? kSliderMergeIdBase + (after.selectedTau + 1) * 32 + static_cast<int>(after.taus.size())
+                                  : -1;
+    m_undo->push(new ValueCommand<CatmullRomSettings>([this](const CatmullRomSettings& s) { applySettings(s); },
+                                                      m_settings, after, undoText, mergeId));
 }
 
 void CatmullRomTab::applySettings(const CatmullRomSettings& s)
@@ -540,7 +539,7 @@ void CatmullRomTab::pointsEdited()
 void CatmullRomTab::recompute()
 {
     m_scene = computeScene(m_editor->points(), m_settings);
-    m_panel->setContent(CatmullRomReport::html(m_editor->points(), m_settings, m_scene));
+    m_exact->setContent(CatmullRomReport::html(m_editor->points(), m_settings, m_scene));
     updatePlot();
     m_canvas->update();
     for (const CatmullRomCurve& c : m_scene.curves)
@@ -554,7 +553,7 @@ void CatmullRomTab::recompute()
 
 void CatmullRomTab::updatePlot()
 {
-    const double scale = m_presentation ? kPresentationScale : 1.0;
+    const double scale = presentationScale(presentation());
     m_plot->clearGraphs();
     QFont font = this->font();
     m_plot->legend->setFont(font);
@@ -612,10 +611,9 @@ void CatmullRomTab::updatePlot()
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
 
-void CatmullRomTab::updateContentBounds(bool force)
+QRectF CatmullRomTab::contentBounds() const
 {
-    const auto& points = m_editor->points();
-    const QRectF box = pointBounds(points);
+    const QRectF box = pointBounds(m_editor->points());
     // The curves overshoot the points for large |τ|; include them, up to one box size around.
     const QRectF limit = box.adjusted(-box.width(), -box.height(), box.width(), box.height());
     double x0 = box.left(), x1 = box.right(), y0 = box.top(), y1 = box.bottom();
@@ -634,8 +632,13 @@ void CatmullRomTab::updateContentBounds(bool force)
         include(c.samples);
     include(m_scene.spline);
     include(m_scene.bezier);
-    const QRectF bounds(QPointF(x0, y0), QPointF(x1, y1));
+    return QRectF(QPointF(x0, y0), QPointF(x1, y1));
+}
+
+void CatmullRomTab::updateContentBounds(bool force)
+{
     if (!force) {
+        const auto& points = m_editor->points();
         // Edits keep the view unless a point leaves it (never during a drag: the handle must
         // stay under the mouse).
         if (QGuiApplication::mouseButtons() != Qt::NoButton)
@@ -647,7 +650,7 @@ void CatmullRomTab::updateContentBounds(bool force)
         if (!outside)
             return;
     }
-    m_canvas->setContentBounds(bounds);
+    m_canvas->setContentBounds(contentBounds());
 }
 
 void CatmullRomTab::drawCurves(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const
@@ -804,60 +807,40 @@ bool CatmullRomTab::loadExample(const WorkedExample& example)
     return true;
 }
 
-QJsonObject CatmullRomTab::saveState() const
+void CatmullRomTab::writeSettings(QJsonObject& state) const { ui::writeSettings(m_settings, state); }
+
+PointListMessages CatmullRomTab::pointMessages() const
 {
-    QJsonObject state;
-    QJsonArray points;
-    for (const Point& p : m_editor->points())
-        points.append(QJsonArray{p.x, p.y});
-    state.insert(QStringLiteral("points"), points);
-    writeSettings(m_settings, state);
-    return state;
+    PointListMessages say;
+    say.notAList = tr("The Catmull-Rom points are missing or not a list.");
+    say.badCount = [](int count) {
+        return tr("A Catmull-Rom curve needs between 2 and %1 points; the file has %2.")
+            .arg(CatmullRomSettings::kMaxPoints)
+            .arg(count);
+    };
+    say.notAPair = [](int i) { return tr("Point %1 of the Catmull-Rom tab is not a pair of numbers.").arg(i); };
+    say.notFinite = [](int i) { return tr("Point %1 of the Catmull-Rom tab is not a finite number.").arg(i); };
+    return say;
 }
 
-bool CatmullRomTab::loadState(const QJsonObject& state, QString* error)
+bool CatmullRomTab::loadSettings(const QJsonObject& state, const std::vector<Point>& points, QString& error)
 {
-    auto fail = [error](const QString& message) {
-        if (error)
-            *error = message;
-        return false;
-    };
-    const QJsonValue pointsValue = state.value(QStringLiteral("points"));
-    if (!pointsValue.isArray())
-        return fail(tr("The Catmull-Rom points are missing or not a list."));
-    const QJsonArray array = pointsValue.toArray();
-    if (array.size() < 2 || array.size() > CatmullRomSettings::kMaxPoints)
-        return fail(tr("A Catmull-Rom curve needs between 2 and %1 points; the file has %2.")
-                        .arg(CatmullRomSettings::kMaxPoints)
-                        .arg(array.size()));
-    std::vector<Point> points;
-    for (int i = 0; i < array.size(); ++i) {
-        const QJsonArray xy = array.at(i).toArray();
-        if (xy.size() != 2 || !xy.at(0).isDouble() || !xy.at(1).isDouble())
-            return fail(tr("Point %1 of the Catmull-Rom tab is not a pair of numbers.").arg(i));
-        const Point p{xy.at(0).toDouble(), xy.at(1).toDouble()};
-        if (!isFinite(p))
-            return fail(tr("Point %1 of the Catmull-Rom tab is not a finite number.").arg(i));
-        points.push_back(p);
-    }
     QString problem;
     const auto settings = readSettings(state, &problem);
-    if (!settings)
-        return fail(tr("The Catmull-Rom settings are not valid (“%1”): tensions must be numbers in [−10, 10], "
-                       "at most %2 of them, without repeats.")
-                        .arg(problem)
-                        .arg(CatmullRomSettings::kMaxTensions));
+    if (!settings) {
+        error = tr("The Catmull-Rom settings are not valid (“%1”): tensions must be numbers in [−10, 10], "
+                   "at most %2 of them, without repeats.")
+                    .arg(problem)
+                    .arg(CatmullRomSettings::kMaxTensions);
+        return false;
+    }
     // All checked: now change the tab.
     m_editor->applyPoints(points);
     applySettings(*settings);
-    updateContentBounds(true);
-    m_canvas->fitToContent();
     return true;
 }
 
 // ---------------------------------------------------------------- exports and view
-
-Drawable* CatmullRomTab::exportView() { return m_canvas; }
 
 QString CatmullRomTab::csv() const
 {
@@ -904,29 +887,18 @@ QString CatmullRomTab::tikz() const
     return w.str();
 }
 
-void CatmullRomTab::setPresentation(bool on)
+void CatmullRomTab::presentationChanged(bool)
 {
-    m_presentation = on;
-    m_canvas->setStyleScale(on ? kPresentationScale : 1.0);
-    m_panel->setPresentation(on);
     syncControls();
     updatePlot();
 }
 
 void CatmullRomTab::changeEvent(QEvent* event)
 {
-    TabPage::changeEvent(event);
+    CurveTab::changeEvent(event);
     // Presentation mode changes the application font: the plot's legend and axes follow.
     if (event->type() == QEvent::FontChange && m_plot)
         updatePlot();
-}
-
-void CatmullRomTab::zoom(double factor) { m_canvas->zoom(factor); }
-
-void CatmullRomTab::fitView()
-{
-    updateContentBounds(true);
-    m_canvas->fitToContent();
 }
 
 } // namespace granota::ui

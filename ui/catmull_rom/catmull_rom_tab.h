@@ -9,7 +9,7 @@
 
 #include "ui/catmull_rom/catmull_rom_curves.h"
 #include "ui/catmull_rom/catmull_rom_settings.h"
-#include "ui/shell/tab_page.h"
+#include "ui/common/curve_tab.h"
 
 class QCheckBox;
 class QComboBox;
@@ -22,40 +22,23 @@ class QPainter;
 class QPushButton;
 class QSlider;
 class QTabWidget;
-class QUndoStack;
 
 namespace granota::ui {
 
-class CurveCanvas;
-class ExactPanel;
-class PointEditor;
-class PointTable;
 class ViewTransform;
 struct CanvasStyle;
 
-class CatmullRomTab : public TabPage {
+class CatmullRomTab : public CurveTab {
     Q_OBJECT
 public:
     explicit CatmullRomTab(QWidget* parent = nullptr);
 
-    QString key() const override { return QStringLiteral("catmull-rom"); }
-    QString title() const override { return tr("Catmull-Rom"); }
     void retranslate() override;
-    QJsonObject saveState() const override;
-    bool loadState(const QJsonObject& state, QString* error) override;
     bool loadExample(const granota::WorkedExample& example) override;
-    QUndoStack* undoStack() const override { return m_undo; }
-    Drawable* exportView() override;
     QString csv() const override;
     QString tikz() const override;
-    void setPresentation(bool on) override;
-    void zoom(double factor) override;
-    void fitView() override;
 
     // The model and the views, for the main window's neighbours and for tests.
-    PointEditor* pointEditor() const { return m_editor; }
-    CurveCanvas* canvas() const { return m_canvas; }
-    ExactPanel* exactPanel() const { return m_panel; }
     QCustomPlot* blendingPlot() const { return m_plot; }
     const CatmullRomSettings& settings() const { return m_settings; }
     const CatmullRomScene& scene() const { return m_scene; }
@@ -78,6 +61,14 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
+    // What CurveTab asks of this tab: the settings of the document (catmull_rom_settings.h),
+    // its refusals of the points, the view's box, presentation mode (controls and plot).
+    bool loadSettings(const QJsonObject& state, const std::vector<Point>& points, QString& error) override;
+    void writeSettings(QJsonObject& state) const override;
+    PointListMessages pointMessages() const override;
+    void presentationChanged(bool on) override;
+    /// The points' box and the curves drawn inside one box size around it (large |τ| overshoots).
+    QRectF contentBounds() const override;
     void buildUi();
     /// Pushes an undo step from the current settings to `after` (nothing if equal).
     void changeSettings(const CatmullRomSettings& after, const QString& undoText, bool mergeable = false);
@@ -94,11 +85,6 @@ private:
     void drawLegend(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const;
     QString tensionItemText(const Rational& tau) const;
 
-    QUndoStack* m_undo;
-    CurveCanvas* m_canvas;
-    PointEditor* m_editor = nullptr;
-    PointTable* m_table = nullptr;
-    ExactPanel* m_panel = nullptr;
     QCustomPlot* m_plot = nullptr;
     QTabWidget* m_sideTabs = nullptr;
     QGroupBox* m_tensionBox = nullptr;
@@ -123,7 +109,6 @@ private:
     CatmullRomScene m_scene;
     QString m_lastMessage;
     bool m_syncing = false;
-    bool m_presentation = false;
 };
 
 } // namespace granota::ui

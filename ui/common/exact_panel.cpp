@@ -1,5 +1,6 @@
 #include "ui/common/exact_panel.h"
 #include "ui/common/number_text.h"
+#include "ui/common/presentation_scale.h"
 
 #include <QRegularExpression>
 #include <QScrollBar>
@@ -42,7 +43,7 @@ void ExactPanel::setPresentation(bool on)
 {
     m_presentation = on;
     QFont f = font();
-    f.setPointSizeF(QFont().pointSizeF() * (on ? 1.6 : 1.0));
+    f.setPointSizeF(QFont().pointSizeF() * presentationScale(on));
     document()->setDefaultFont(f);
 }
 

@@ -1,5 +1,6 @@
 #include "ui/common/work_precision_panel.h"
 
+#include "ui/common/presentation_scale.h"
 #include "ui/common/work_precision_plot.h"
 
 #include <QComboBox>
@@ -125,7 +126,7 @@ void WorkPrecisionPanel::showReport()
 
 void WorkPrecisionPanel::setPresentation(bool on)
 {
-    m_styleScale = on ? 1.6 : 1.0;
+    m_styleScale = presentationScale(on);
     showReport();
 }
 

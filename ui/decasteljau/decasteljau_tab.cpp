@@ -13,12 +13,12 @@
 #include "ui/decasteljau/decasteljau_parameter_control.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
+#include "ui/common/point_extent.h"
 #include "ui/common/point_table.h"
 #include "ui/shell/tikz_writer.h"
 
 #include <QCheckBox>
 #include <QHBoxLayout>
-#include <QJsonArray>
 #include <QLabel>
 #include <QPainter>
 #include <QPainterPath>
@@ -171,7 +171,7 @@ std::optional<bool> optionalBool(const QJsonObject& state, const char* key, bool
 } // namespace
 
 DeCasteljauTab::DeCasteljauTab(QWidget* parent)
-    : TabPage(parent), m_undo(new QUndoStack(this)), m_canvas(new CurveCanvas(this))
+    : CurveTab(QStringLiteral("decasteljau"), QT_TR_NOOP("De Casteljau"), parent)
 {
     buildLayers(); // under the handles: the editor adds its own layer on top
     m_editor = new PointEditor(m_canvas, m_undo, this);
@@ -277,7 +277,7 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent)
 
     m_editor->applyPoints(defaultPoints());
     m_parameter->setValue(m_t);
-    m_canvas->setContentBounds(pointBounds());
+    m_canvas->setContentBounds(contentBounds());
     retranslate();
 }
 
@@ -410,7 +410,7 @@ void DeCasteljauTab::buildLayers()
 
 void DeCasteljauTab::pointsChanged()
 {
-    m_canvas->setDataExtent(pointBounds()); // points near ±1e308 get a notice, not a blank canvas
+    m_canvas->setDataExtent(contentBounds()); // points near ±1e308 get a notice, not a blank canvas
     const auto& points = m_editor->points();
     if (points.empty())
         return;
@@ -652,22 +652,15 @@ void DeCasteljauTab::updateExactPanel()
     m_exact->setContent(html);
 }
 
-QRectF DeCasteljauTab::pointBounds() const
+QRectF DeCasteljauTab::contentBounds() const
 {
-    const auto& points = m_editor->points();
-    if (points.empty())
+    const std::optional<PointExtent> box = finiteExtent(m_editor->points());
+    if (!box)
         return {-1, -1, 2, 2};
-    double x0 = points[0].x, x1 = x0, y0 = points[0].y, y1 = y0;
-    for (const Point& p : points) {
-        x0 = std::min(x0, p.x);
-        x1 = std::max(x1, p.x);
-        y0 = std::min(y0, p.y);
-        y1 = std::max(y1, p.y);
-    }
-    double pad = 0.05 * std::max(x1 - x0, y1 - y0);
+    double pad = 0.05 * std::max(box->width(), box->height());
     if (!(pad > 0))
-        pad = 0.5 * std::max({std::fabs(x0), std::fabs(y0), 1e-9}); // one point, or all coincident
-    return QRectF(QPointF(x0 - pad, y0 - pad), QPointF(x1 + pad, y1 + pad));
+        pad = 0.5 * std::max({std::fabs(box->minX), std::fabs(box->minY), 1e-9}); // one point, or all coincident
+    return QRectF(QPointF(box->minX - pad, box->minY - pad), QPointF(box->maxX + pad, box->maxY + pad));
 }
 
 // ---------------------------------------------------------------- TabPage
@@ -711,13 +704,8 @@ void DeCasteljauTab::retranslate()
     updateExactPanel();
 }
 
-QJsonObject DeCasteljauTab::saveState() const
+void DeCasteljauTab::writeSettings(QJsonObject& state) const
 {
-    QJsonArray points;
-    for (const Point& p : m_editor->points())
-        points.append(QJsonArray{p.x, p.y});
-    QJsonObject state;
-    state.insert(QStringLiteral("points"), points);
     state.insert(QStringLiteral("t"), m_t);
     state.insert(QStringLiteral("samples"), m_samples);
     state.insert(QStringLiteral("construction"), m_showConstruction);
@@ -725,33 +713,27 @@ QJsonObject DeCasteljauTab::saveState() const
     state.insert(QStringLiteral("tangent"), m_showTangent);
     state.insert(QStringLiteral("split"), m_showSplit);
     state.insert(QStringLiteral("snap"), m_editor->snapEnabled());
-    return state;
 }
 
-bool DeCasteljauTab::loadState(const QJsonObject& state, QString* error)
+PointListMessages DeCasteljauTab::pointMessages() const
 {
-    auto fail = [error](const QString& message) {
-        if (error)
-            *error = message;
+    PointListMessages say;
+    say.notAList = tr("The De Casteljau points are missing or not a list.");
+    say.badCount = [](int count) {
+        return tr("The De Casteljau tab needs between 1 and %1 control points; the document has %2.")
+            .arg(kMaxPoints)
+            .arg(count);
+    };
+    say.notAPair = [](int i) { return tr("Control point %1 is not a pair of finite numbers.").arg(i); };
+    return say;
+}
+
+bool DeCasteljauTab::loadSettings(const QJsonObject& state, const std::vector<Point>& points, QString& error)
+{
+    auto fail = [&error](const QString& message) {
+        error = message;
         return false;
     };
-    // Validate everything first: a bad document changes nothing.
-    const QJsonValue pointsValue = state.value(QStringLiteral("points"));
-    if (!pointsValue.isArray())
-        return fail(tr("The De Casteljau points are missing or not a list."));
-    const QJsonArray array = pointsValue.toArray();
-    if (array.isEmpty() || array.size() > kMaxPoints)
-        return fail(tr("The De Casteljau tab needs between 1 and %1 control points; the document has %2.")
-                        .arg(kMaxPoints)
-                        .arg(array.size()));
-    std::vector<Point> points;
-    for (int i = 0; i < array.size(); ++i) {
-        const QJsonArray xy = array[i].toArray();
-        if (!array[i].isArray() || xy.size() != 2 || !xy[0].isDouble() || !xy[1].isDouble()
-            || !std::isfinite(xy[0].toDouble()) || !std::isfinite(xy[1].toDouble()))
-            return fail(tr("Control point %1 is not a pair of finite numbers.").arg(i));
-        points.push_back({xy[0].toDouble(), xy[1].toDouble()});
-    }
     double t = 0.5;
     if (const QJsonValue v = state.value(QStringLiteral("t")); !v.isUndefined()) {
         if (!v.isDouble() || !std::isfinite(v.toDouble()) || v.toDouble() < 0 || v.toDouble() > 1)
@@ -797,7 +779,6 @@ bool DeCasteljauTab::loadState(const QJsonObject& state, QString* error)
     m_t = t;
     m_parameter->setValue(t);
     m_editor->applyPoints(points); // recomputes everything at the new t and samples
-    fitView();
     emit tChanged(m_t);
     return true;
 }
@@ -813,8 +794,6 @@ bool DeCasteljauTab::loadExample(const granota::WorkedExample& example)
     emit statusMessage(tr("Ex %1: the tables of the thesis are in the panel on the right at t = 1/2.").arg(id));
     return true;
 }
-
-Drawable* DeCasteljauTab::exportView() { return m_canvas; }
 
 QString DeCasteljauTab::csv() const
 {
@@ -850,24 +829,11 @@ QString DeCasteljauTab::tikz() const
     return w.str();
 }
 
-void DeCasteljauTab::setPresentation(bool on)
-{
-    m_canvas->setStyleScale(on ? 1.8 : 1.0);
-    m_exact->setPresentation(on);
-    updateExactPanel();
-}
-
-void DeCasteljauTab::zoom(double factor) { m_canvas->zoom(factor); }
-
-void DeCasteljauTab::fitView()
-{
-    m_canvas->setContentBounds(pointBounds());
-    m_canvas->fitToContent();
-}
+void DeCasteljauTab::presentationChanged(bool) { updateExactPanel(); }
 
 void DeCasteljauTab::showEvent(QShowEvent* event)
 {
-    TabPage::showEvent(event);
+    CurveTab::showEvent(event);
     emit statusMessage(tr("Drag a point; double-click to add one; Delete removes the selected point; move t with the slider."));
 }
 

@@ -7,7 +7,7 @@
 /// The Bernstein tab shares this tab's control points and its t.
 
 #include "core/curves/bezier/de_casteljau.h"
-#include "ui/shell/tab_page.h"
+#include "ui/common/curve_tab.h"
 
 #include <QString>
 
@@ -20,39 +20,21 @@ class QSpinBox;
 class QSplitter;
 class QTimer;
 class QToolButton;
-class QUndoStack;
 
 namespace granota::ui {
 
-class CurveCanvas;
 class DeCasteljauParameterControl;
-class ExactPanel;
-class PointEditor;
-class PointTable;
 
-class DeCasteljauTab : public TabPage {
+class DeCasteljauTab : public CurveTab {
     Q_OBJECT
 public:
     explicit DeCasteljauTab(QWidget* parent = nullptr);
 
-    QString key() const override { return QStringLiteral("decasteljau"); }
-    QString title() const override { return tr("De Casteljau"); }
     void retranslate() override;
-    QJsonObject saveState() const override;
-    bool loadState(const QJsonObject& state, QString* error) override;
     bool loadExample(const granota::WorkedExample& example) override;
-    QUndoStack* undoStack() const override { return m_undo; }
-    Drawable* exportView() override;
     QString csv() const override;
     QString tikz() const override;
-    void setPresentation(bool on) override;
-    void zoom(double factor) override;
-    void fitView() override;
 
-    PointEditor* pointEditor() const { return m_editor; }
-    CurveCanvas* canvas() const { return m_canvas; }
-    ExactPanel* exactPanel() const { return m_exact; }
-    PointTable* pointTable() const { return m_table; }
     DeCasteljauParameterControl* parameterControl() const { return m_parameter; }
 
     /// The parameter t ∈ [0, 1], shared with the Bernstein tab.
@@ -97,6 +79,16 @@ protected:
     void showEvent(QShowEvent* event) override;
 
 private:
+    // What CurveTab asks of this tab.
+    /// The document's t, samples and display options (CurveTab writes and checks the points).
+    void writeSettings(QJsonObject& state) const override;
+    bool loadSettings(const QJsonObject& state, const std::vector<Point>& points, QString& error) override;
+    PointListMessages pointMessages() const override;
+    /// The control points with a margin of 5 % (a lone point gets a box around it).
+    QRectF contentBounds() const override;
+    /// The exact panel is typeset again at its new size.
+    void presentationChanged(bool on) override;
+
     void buildLayers();
     void pointsChanged();
     void parameterChanged();
@@ -104,14 +96,8 @@ private:
     void updateExactPanel();
     void updateWarning();
     void advanceAnimation();
-    QRectF pointBounds() const;
     void setToggle(bool& flag, QCheckBox* box, bool on);
 
-    QUndoStack* m_undo;
-    CurveCanvas* m_canvas;
-    PointEditor* m_editor = nullptr;
-    PointTable* m_table = nullptr;
-    ExactPanel* m_exact = nullptr;
     QSplitter* m_mainSplitter = nullptr;
     QSplitter* m_sideSplitter = nullptr;
 

@@ -9,7 +9,7 @@
 
 #include "core/exact/exact_cost.h"
 #include "core/curves/fitting/least_squares_fit.h"
-#include "ui/fit/fit_settings_command.h"
+#include "ui/fit/fit_settings.h"
 
 #include <QCoreApplication>
 #include <QString>

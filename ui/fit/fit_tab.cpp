@@ -11,7 +11,10 @@
 #include "ui/common/exact_panel.h"
 #include "ui/fit/fit_exact_view.h"
 #include "ui/common/point_editor.h"
+#include "ui/common/point_extent.h"
 #include "ui/common/point_table.h"
+#include "ui/common/presentation_scale.h"
+#include "ui/common/value_command.h"
 #include "ui/shell/tikz_writer.h"
 #include "ui/shell/user_file.h"
 
@@ -24,7 +27,6 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
-#include <QJsonArray>
 #include <QLabel>
 #include <QMessageBox>
 #include <QPainter>
@@ -49,11 +51,11 @@ namespace {
 constexpr int kCurveSamples = 400;         ///< De Casteljau samples of the fitted curve
 constexpr std::size_t kDrawLimit = 5000;   ///< beyond this many points, residuals are drawn decimated
 constexpr int kMaxLabelledControls = 30;   ///< control points labelled P0… up to this degree
-constexpr double kPresentationScale = 1.6; ///< canvas and plot scale in presentation mode
 constexpr int kMaxDegree = kMaxFitDegree;  ///< the core's limit
 constexpr int kMaxIterations = 1000;
-/// Undo-merge fields of FitSettingsCommand.
+/// Undo-merge fields of the settings' ValueCommand (changes of the same field merge).
 enum Field { DegreeField, ParametrizationField, SolverField, CorrectionField };
+constexpr int kFieldMergeIdBase = 0x46490000; ///< "FI": the merge id of field f is this + f
 
 /// The degree spin box: refuses n > k with a reason instead of silently (docs/tabs.md).
 class DegreeSpinBox : public QSpinBox {
@@ -94,41 +96,25 @@ QString number(double v) { return displaySignificant(v, 6); }
 
 QRectF boundsOf(const std::vector<Point>& a, const std::vector<Point>& b)
 {
-    double minX = std::numeric_limits<double>::infinity(), maxX = -minX, minY = minX, maxY = -minX;
-    for (const auto* list : {&a, &b})
-        for (const Point& p : *list)
-            if (isFinite(p)) {
-                minX = std::min(minX, p.x);
-                maxX = std::max(maxX, p.x);
-                minY = std::min(minY, p.y);
-                maxY = std::max(maxY, p.y);
-            }
-    if (!(minX <= maxX))
+    const std::optional<PointExtent> box = finiteExtent(a, b);
+    if (!box)
         return QRectF(-1, -1, 2, 2);
-    double w = maxX - minX, h = maxY - minY;
-    const double size = std::max({w, h, std::fabs(minX) * 1e-12, std::fabs(minY) * 1e-12, 1e-300});
+    double w = box->width(), h = box->height();
+    const double size = std::max({w, h, std::fabs(box->minX) * 1e-12, std::fabs(box->minY) * 1e-12, 1e-300});
     if (w < size * 1e-3)
         w = size * 1e-3;
     if (h < size * 1e-3)
         h = size * 1e-3;
-    const double cx = 0.5 * minX + 0.5 * maxX, cy = 0.5 * minY + 0.5 * maxY;
+    const double cx = 0.5 * box->minX + 0.5 * box->maxX, cy = 0.5 * box->minY + 0.5 * box->maxY;
     return QRectF(cx - 0.5 * w, cy - 0.5 * h, w, h);
 }
 
 /// Every `stride`-th index so that at most `limit` items are drawn (all of them below it).
 std::size_t strideFor(std::size_t count, std::size_t limit) { return count > limit ? (count + limit - 1) / limit : 1; }
 
-QJsonArray pointsJson(const std::vector<Point>& points)
-{
-    QJsonArray array;
-    for (const Point& p : points)
-        array.append(QJsonArray{p.x, p.y});
-    return array;
-}
-
 } // namespace
 
-FitTab::FitTab(QWidget* parent) : TabPage(parent), m_undo(new QUndoStack(this)), m_canvas(new CurveCanvas(this))
+FitTab::FitTab(QWidget* parent) : CurveTab(QStringLiteral("fit"), QT_TR_NOOP("Fitting"), parent)
 {
     addLayers(); // under the data handles, which the editor draws last
     m_editor = new PointEditor(m_canvas, m_undo, this);
@@ -459,8 +445,9 @@ void FitTab::changeSettings(const FitSettings& after, const QString& undoText, i
 {
     if (after == m_settings)
         return;
-    m_undo->push(new FitSettingsCommand([this](const FitSettings& s) { applySettings(s); }, m_settings, after,
-                                        undoText, field));
+    const int mergeId = field < 0 ? -1 : kFieldMergeIdBase + field;
+    m_undo->push(new ValueCommand<FitSettings>([this](const FitSettings& s) { applySettings(s); }, m_settings, after,
+                                               undoText, mergeId, {/*dropWhenUnchanged=*/true}));
 }
 
 void FitTab::applySettings(const FitSettings& s)
@@ -521,9 +508,18 @@ void FitTab::refit()
         m_fitError = errorText(fit.error());
         m_curve.clear();
     }
+    m_canvas->setContentBounds(contentBounds());
+    m_canvas->update();
+    updateReadouts();
+    updatePlot();
+    updateExact();
+}
+
+QRectF FitTab::contentBounds() const
+{
     // The view shows the data and the curve, and the control points unless they fly far off
     // (high degrees put them orders of magnitude away: then the data would shrink to a dot).
-    QRectF bounds = boundsOf(q, m_curve);
+    QRectF bounds = boundsOf(m_editor->points(), m_curve);
     if (m_fit) {
         const QRectF control = boundsOf(m_fit->controlPoints, {});
         const double size = std::max(bounds.width(), bounds.height());
@@ -531,11 +527,7 @@ void FitTab::refit()
         if (near.contains(control))
             bounds = bounds.united(control);
     }
-    m_canvas->setContentBounds(bounds);
-    m_canvas->update();
-    updateReadouts();
-    updatePlot();
-    updateExact();
+    return bounds;
 }
 
 void FitTab::updateReadouts()
@@ -717,8 +709,8 @@ bool FitTab::loadExample(const granota::WorkedExample& example)
     m_loading = true;
     m_undo->beginMacro(tr("Load Ex %1").arg(id));
     m_editor->setPoints(toDouble(example.points), tr("Ex %1 data").arg(id));
-    m_undo->push(new FitSettingsCommand([this](const FitSettings& s) { applySettings(s); }, m_settings, after,
-                                        tr("Ex %1 settings").arg(id)));
+    m_undo->push(new ValueCommand<FitSettings>([this](const FitSettings& s) { applySettings(s); }, m_settings, after,
+                                               tr("Ex %1 settings").arg(id)));
     m_undo->endMacro();
     m_loading = false;
     m_canvas->fitToContent();
@@ -771,52 +763,37 @@ void FitTab::importDialog()
     }
 }
 
-QJsonObject FitTab::saveState() const
+void FitTab::writeSettings(QJsonObject& state) const
 {
-    QJsonObject state;
-    state.insert(QStringLiteral("points"), pointsJson(m_editor->points()));
     state.insert(QStringLiteral("degree"), m_settings.degree);
     state.insert(QStringLiteral("parametrization"), QString::fromStdString(toString(m_settings.parametrization)));
     state.insert(QStringLiteral("solver"), QString::fromStdString(toString(m_settings.solver)));
     state.insert(QStringLiteral("correctParameters"), m_settings.correctParameters);
     state.insert(QStringLiteral("iterations"), m_settings.iterations);
     state.insert(QStringLiteral("showMatrices"), m_showMatrices->isChecked());
-    return state;
 }
 
-bool FitTab::loadState(const QJsonObject& state, QString* error)
+PointListMessages FitTab::pointMessages() const
 {
-    // Validate everything first: all or nothing.
-    const QJsonValue pointsValue = state.value(QStringLiteral("points"));
-    if (!pointsValue.isArray()) {
-        *error = tr("The fitting tab's data points are missing or not a list.");
-        return false;
-    }
-    std::vector<Point> points;
-    const QJsonArray array = pointsValue.toArray();
-    if (static_cast<std::size_t>(array.size()) > kMaxDataPoints) {
-        *error = tr("The fitting tab holds %1 data points; Granota reads at most %2.").arg(array.size()).arg(kMaxDataPoints);
-        return false;
-    }
-    for (int i = 0; i < array.size(); ++i) {
-        const QJsonArray p = array.at(i).toArray();
-        if (p.size() != 2 || !p.at(0).isDouble() || !p.at(1).isDouble() || !std::isfinite(p.at(0).toDouble())
-            || !std::isfinite(p.at(1).toDouble())) {
-            *error = tr("Data point Q%1 is not a pair of finite numbers.").arg(i);
-            return false;
-        }
-        points.emplace_back(p.at(0).toDouble(), p.at(1).toDouble());
-    }
-    if (points.size() < 2) {
-        *error = tr("The fitting tab needs at least 2 data points.");
-        return false;
-    }
+    PointListMessages say;
+    say.notAList = tr("The fitting tab's data points are missing or not a list.");
+    say.badCount = [](int count) {
+        return tr("The fitting tab holds %1 data points; Granota reads at most %2.").arg(count).arg(kMaxDataPoints);
+    };
+    say.notAPair = [](int i) { return tr("Data point Q%1 is not a pair of finite numbers.").arg(i); };
+    say.tooFewAfterPoints = [] { return tr("The fitting tab needs at least 2 data points."); };
+    return say;
+}
+
+bool FitTab::loadSettings(const QJsonObject& state, const std::vector<Point>& points, QString& error)
+{
+    // The points are checked: now the settings, all or nothing.
     FitSettings s;
     const QJsonValue degree = state.value(QStringLiteral("degree"));
     if (!degree.isUndefined()) {
         const double d = degree.toDouble(-1);
         if (!degree.isDouble() || d != std::floor(d) || d < 0 || d > kMaxDegree) {
-            *error = tr("The degree must be a whole number from 0 to %1.").arg(kMaxDegree);
+            error = tr("The degree must be a whole number from 0 to %1.").arg(kMaxDegree);
             return false;
         }
         s.degree = static_cast<int>(d);
@@ -825,7 +802,7 @@ bool FitTab::loadState(const QJsonObject& state, QString* error)
     if (!param.isUndefined()) {
         const auto p = parseParametrization(param.toString().toStdString());
         if (!p) {
-            *error = tr("Unknown parametrization “%1”.").arg(param.toVariant().toString());
+            error = tr("Unknown parametrization “%1”.").arg(param.toVariant().toString());
             return false;
         }
         s.parametrization = *p;
@@ -834,14 +811,14 @@ bool FitTab::loadState(const QJsonObject& state, QString* error)
     if (!solver.isUndefined()) {
         const auto p = parseLeastSquaresSolver(solver.toString().toStdString());
         if (!p) {
-            *error = tr("Unknown solver “%1”.").arg(solver.toVariant().toString());
+            error = tr("Unknown solver “%1”.").arg(solver.toVariant().toString());
             return false;
         }
         s.solver = *p;
     }
     const QJsonValue correct = state.value(QStringLiteral("correctParameters"));
     if (!correct.isUndefined() && !correct.isBool()) {
-        *error = tr("“correctParameters” must be true or false.");
+        error = tr("“correctParameters” must be true or false.");
         return false;
     }
     s.correctParameters = correct.toBool(false);
@@ -849,14 +826,14 @@ bool FitTab::loadState(const QJsonObject& state, QString* error)
     if (!iterations.isUndefined()) {
         const double d = iterations.toDouble(-1);
         if (!iterations.isDouble() || d != std::floor(d) || d < 1 || d > kMaxIterations) {
-            *error = tr("The number of parameter corrections must be a whole number from 1 to %1.").arg(kMaxIterations);
+            error = tr("The number of parameter corrections must be a whole number from 1 to %1.").arg(kMaxIterations);
             return false;
         }
         s.iterations = static_cast<int>(d);
     }
     const QJsonValue matrices = state.value(QStringLiteral("showMatrices"));
     if (!matrices.isUndefined() && !matrices.isBool()) {
-        *error = tr("“showMatrices” must be true or false.");
+        error = tr("“showMatrices” must be true or false.");
         return false;
     }
 
@@ -867,11 +844,8 @@ bool FitTab::loadState(const QJsonObject& state, QString* error)
     m_editor->applyPoints(points); // refits once, with the new settings
     m_loading = false;
     m_showMatrices->setChecked(matrices.toBool(false));
-    m_canvas->fitToContent();
     return true;
 }
-
-Drawable* FitTab::exportView() { return m_canvas; }
 
 QString FitTab::csv() const
 {
@@ -930,12 +904,9 @@ QString FitTab::tikz() const
 
 // ---------------------------------------------------------------- view
 
-void FitTab::setPresentation(bool on)
+void FitTab::presentationChanged(bool on)
 {
-    m_presentation = on;
-    const double scale = on ? kPresentationScale : 1.0;
-    m_canvas->setStyleScale(scale);
-    m_exact->setPresentation(on);
+    const double scale = presentationScale(on);
     const QFont tickFont; // the application's font, which presentation mode enlarges
     for (QCPAxis* axis : {m_plot->xAxis, m_plot->yAxis}) {
         axis->setTickLabelFont(tickFont);
@@ -955,13 +926,9 @@ void FitTab::setPresentation(bool on)
     m_canvas->fitToContent();
 }
 
-void FitTab::zoom(double factor) { m_canvas->zoom(factor); }
-
-void FitTab::fitView() { m_canvas->fitToContent(); }
-
 void FitTab::showEvent(QShowEvent* event)
 {
-    TabPage::showEvent(event);
+    CurveTab::showEvent(event);
     emit statusMessage(tr("Drag a data point Q_i and the curve is refitted; double-click adds a point, Delete "
                           "removes it."));
 }

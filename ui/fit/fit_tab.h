@@ -9,8 +9,8 @@
 /// (core/curves/fitting/least_squares_fit.h, core/curves/fitting/fit_error_by_degree.h); the tab draws and explains.
 
 #include "core/curves/fitting/least_squares_fit.h"
-#include "ui/fit/fit_settings_command.h"
-#include "ui/shell/tab_page.h"
+#include "ui/fit/fit_settings.h"
+#include "ui/common/curve_tab.h"
 
 #include <optional>
 
@@ -22,33 +22,18 @@ class QLabel;
 class QPushButton;
 class QSpinBox;
 class QSplitter;
-class QUndoStack;
 
 namespace granota::ui {
 
-class CurveCanvas;
-class ExactPanel;
-class PointEditor;
-class PointTable;
-
-class FitTab : public TabPage {
+class FitTab : public CurveTab {
     Q_OBJECT
 public:
     explicit FitTab(QWidget* parent = nullptr);
 
-    QString key() const override { return QStringLiteral("fit"); }
-    QString title() const override { return tr("Fitting"); }
     void retranslate() override;
-    QJsonObject saveState() const override;
-    bool loadState(const QJsonObject& state, QString* error) override;
     bool loadExample(const granota::WorkedExample& example) override;
-    QUndoStack* undoStack() const override { return m_undo; }
-    Drawable* exportView() override;
     QString csv() const override;
     QString tikz() const override;
-    void setPresentation(bool on) override;
-    void zoom(double factor) override;
-    void fitView() override;
 
     /// Reads data points from a CSV or JSON file (core/io/point_list.h) as one undo step. On a
     /// bad file returns false with a translated message in `error` and changes nothing.
@@ -67,10 +52,6 @@ public:
     QString warningText() const;
 
     // The parts, for the tests.
-    PointEditor* pointEditor() const { return m_editor; }
-    CurveCanvas* canvas() const { return m_canvas; }
-    PointTable* pointTable() const { return m_table; }
-    ExactPanel* exactPanel() const { return m_exact; }
     QCustomPlot* errorPlot() const { return m_plot; }
     QSpinBox* degreeBox() const { return m_degree; }
     QComboBox* parametrizationBox() const { return m_parametrization; }
@@ -88,6 +69,16 @@ protected:
     void showEvent(QShowEvent* event) override;
 
 private:
+    // What CurveTab asks of this tab.
+    PointListMessages pointMessages() const override;
+    /// The document's settings: degree, parametrization, solver, corrections, showMatrices.
+    void writeSettings(QJsonObject& state) const override;
+    /// Applies them without an undo step: opening a document starts a new history.
+    bool loadSettings(const QJsonObject& state, const std::vector<Point>& points, QString& error) override;
+    /// The data and the curve, and the control points unless they fly far off.
+    QRectF contentBounds() const override;
+    /// The plot's fonts, pens and the splitters follow the new scale.
+    void presentationChanged(bool on) override;
     void buildUi();
     void addLayers();
     void applySettings(const FitSettings& s);
@@ -101,12 +92,7 @@ private:
     void importDialog();
     QString errorText(const Error& error) const;
 
-    QUndoStack* m_undo;
-    CurveCanvas* m_canvas;
-    PointEditor* m_editor = nullptr;
-    PointTable* m_table = nullptr;
     QLabel* m_tableNote = nullptr;
-    ExactPanel* m_exact = nullptr;
     QCustomPlot* m_plot = nullptr;
     QSplitter* m_mainSplitter = nullptr;
     QSplitter* m_leftSplitter = nullptr;
@@ -139,7 +125,6 @@ private:
     int m_lastFittedDegree = -1;      ///< to say when too few points lower the degree
     bool m_updatingControls = false;
     bool m_loading = false;           ///< examples and documents: no "degree lowered" message
-    bool m_presentation = false;
 };
 
 } // namespace granota::ui

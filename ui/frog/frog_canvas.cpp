@@ -1,6 +1,7 @@
 #include "ui/frog/frog_canvas.h"
 #include "core/base/math_constants.h"
 #include "ui/common/number_text.h"
+#include "ui/common/presentation_scale.h"
 
 #include "core/softbody/outline.h"
 #include "core/softbody/outline_sampling.h"
@@ -121,7 +122,7 @@ void FrogCanvas::setBezierOutline(BezierOutline mode)
 
 void FrogCanvas::setPresentation(bool on)
 {
-    m_style.scale = on ? 1.6 : 1.0;
+    m_style.scale = presentationScale(on);
     buildPens();
     refreshTexts();
     update();

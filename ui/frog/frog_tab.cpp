@@ -3,6 +3,7 @@
 
 #include "core/softbody/outline.h"
 #include "core/softbody/scenes/scene_texts.h"
+#include "ui/common/value_command.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_json.h"
 #include "ui/frog/frog_parameters_panel.h"
@@ -28,7 +29,6 @@
 #include <QShortcut>
 #include <QSplitter>
 #include <QTextStream>
-#include <QUndoCommand>
 #include <QUndoStack>
 #include <QVBoxLayout>
 
@@ -44,39 +44,7 @@ void setError(QString* error, const QString& text)
 
 QString fromStd(const std::string& s) { return QString::fromStdString(s); }
 
-/// A parameter edit (Edit ▸ Undo): consecutive edits of the same parameter merge, so that
-/// spinning an arrow is one step.
-class ParameterCommand : public QUndoCommand {
-public:
-    ParameterCommand(FrogTab* tab, QString key, QJsonValue before, QJsonValue after, const QString& text)
-        : QUndoCommand(text), m_tab(tab), m_key(std::move(key)), m_before(std::move(before)), m_after(std::move(after))
-    {
-    }
-    void redo() override
-    {
-        if (m_applied) { // the tab applied it already, to validate it
-            m_applied = false;
-            return;
-        }
-        m_tab->applyParameter(m_key, m_after, nullptr);
-    }
-    void undo() override { m_tab->applyParameter(m_key, m_before, nullptr); }
-    int id() const override { return 0x4652; }
-    bool mergeWith(const QUndoCommand* other) override
-    {
-        const auto* o = static_cast<const ParameterCommand*>(other);
-        if (o->m_key != m_key)
-            return false;
-        m_after = o->m_after;
-        return true;
-    }
-
-private:
-    FrogTab* m_tab;
-    QString m_key;
-    QJsonValue m_before, m_after;
-    bool m_applied = true;
-};
+constexpr int kParameterMergeIdBase = 0x46520000; ///< "FR": a parameter's edits merge (valueMergeId)
 
 QJsonValue paramValue(const SceneSpec& scene, const QString& key)
 {
@@ -98,8 +66,9 @@ std::vector<Point> flipped(const std::vector<Point>& points, double height)
 } // namespace
 
 FrogTab::FrogTab(QWidget* parent)
-    : TabPage(parent), m_undo(new QUndoStack(this)), m_canvas(new FrogCanvas(this)), m_params(new FrogParametersPanel(this))
+    : TabPage(QStringLiteral("frog"), QT_TR_NOOP("Frog"), parent), m_canvas(new FrogCanvas(this)), m_params(new FrogParametersPanel(this))
 {
+    setExportView(m_canvas);
     auto* side = new QWidget(this);
     auto* column = new QVBoxLayout(side);
 
@@ -418,7 +387,11 @@ bool FrogTab::editParameter(const QString& key, const QJsonValue& value, QString
     const QJsonValue before = paramValue(m_scene, key);
     if (!applyParameter(key, value, error))
         return false;
-    m_undo->push(new ParameterCommand(this, key, before, value, tr("Change %1").arg(key)));
+    // Consecutive edits of the same parameter merge, so that spinning an arrow is one step.
+    m_undo->push(new ValueCommand<QJsonValue>([this, key](const QJsonValue& v) { applyParameter(key, v, nullptr); },
+                                              before, value, tr("Change %1").arg(key),
+                                              valueMergeId(kParameterMergeIdBase, key),
+                                              {/*dropWhenUnchanged=*/false, /*appliedAlready=*/true}));
     return true;
 }
 
@@ -673,10 +646,6 @@ bool FrogTab::loadState(const QJsonObject& state, QString* error)
     showScene();
     return true;
 }
-
-bool FrogTab::loadExample(const granota::WorkedExample&) { return false; } // chapter 2 has no frog examples
-
-Drawable* FrogTab::exportView() { return m_canvas; }
 
 QString FrogTab::csv() const
 {

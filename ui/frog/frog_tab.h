@@ -29,14 +29,9 @@ class FrogTab : public TabPage {
 public:
     explicit FrogTab(QWidget* parent = nullptr);
 
-    QString key() const override { return QStringLiteral("frog"); }
-    QString title() const override { return tr("Frog"); }
     void retranslate() override;
     QJsonObject saveState() const override;
     bool loadState(const QJsonObject& state, QString* error) override;
-    bool loadExample(const granota::WorkedExample& example) override;
-    QUndoStack* undoStack() const override { return m_undo; }
-    Drawable* exportView() override;
     QString csv() const override;
     QString tikz() const override;
     void setPresentation(bool on) override;
@@ -83,7 +78,6 @@ private:
     QString sceneDescription(const QString& name) const;
     QString sceneHint() const;
 
-    QUndoStack* m_undo;
     FrogCanvas* m_canvas;
     FrogParametersPanel* m_params;
     SceneSpec m_scene;

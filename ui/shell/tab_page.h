@@ -2,13 +2,16 @@
 /// \file tab_page.h
 /// What every tab gives the main window: its part of the document, its undo stack, its
 /// view for the exports, its data as CSV and TikZ, the worked examples it can load, and
-/// its texts again after a language switch.
+/// its texts again after a language switch. The main window speaks to every tab through
+/// this interface only; what the tabs say alike (key, title, undo stack, export view) is
+/// held here once, what each says in its own way is virtual.
 
 #include <QEvent>
 #include <QJsonObject>
+#include <QUndoStack>
 #include <QWidget>
 
-class QUndoStack;
+#include <utility>
 
 namespace granota {
 struct WorkedExample;
@@ -21,12 +24,17 @@ class Drawable;
 class TabPage : public QWidget {
     Q_OBJECT
 public:
-    using QWidget::QWidget;
+    /// `key`: see key(); `title`: the tab's title untranslated, marked QT_TR_NOOP in the tab's
+    /// own class, whose translation context title() uses.
+    TabPage(QString key, const char* title, QWidget* parent = nullptr)
+        : QWidget(parent), m_undo(new QUndoStack(this)), m_key(std::move(key)), m_title(title)
+    {
+    }
 
     /// The key (docs/classroom.md) (`--tab`): decasteljau, bernstein, fit, catmull-rom, frog.
-    virtual QString key() const = 0;
-    /// The tab's title, translated.
-    virtual QString title() const = 0;
+    QString key() const { return m_key; }
+    /// The tab's title, translated (in the context of the tab's class, e.g. granota::ui::FitTab).
+    QString title() const { return metaObject()->tr(m_title, nullptr); }
     /// Sets every visible text again (menus, labels, tooltips) in the current language.
     virtual void retranslate() = 0;
 
@@ -35,13 +43,18 @@ public:
     /// Restores what saveState() wrote. On bad data returns false with a translated message
     /// in `error`, and leaves the tab as it was.
     virtual bool loadState(const QJsonObject& state, QString* error) = 0;
-    /// Loads a worked example of the thesis whose `tab` is this tab's key (undoable).
-    virtual bool loadExample(const granota::WorkedExample& example) = 0;
+    /// Loads a worked example of the thesis whose `tab` is this tab's key (undoable). A tab
+    /// without worked examples (the frog: chapter 2 has none) keeps this one: false.
+    virtual bool loadExample(const granota::WorkedExample& example)
+    {
+        (void)example;
+        return false;
+    }
 
     /// The undo stack of the tab's edits (the main window's Edit menu follows the current tab).
-    virtual QUndoStack* undoStack() const = 0;
-    /// The view that File ▸ Export draws (the main canvas or plot of the tab).
-    virtual Drawable* exportView() = 0;
+    QUndoStack* undoStack() const { return m_undo; }
+    /// The view that File ▸ Export draws (the main canvas or plot of the tab, setExportView()).
+    Drawable* exportView() const { return m_exportView; }
     /// The tab's data as CSV (points, samples, table) and as a TikZ picture for LaTeX slides.
     virtual QString csv() const = 0;
     virtual QString tikz() const = 0;
@@ -59,12 +72,22 @@ signals:
     void statusMessage(const QString& text);
 
 protected:
+    /// The tab's view for File ▸ Export (it stays the tab's; set in the constructor).
+    void setExportView(Drawable* view) { m_exportView = view; }
+
     void changeEvent(QEvent* event) override
     {
         if (event->type() == QEvent::LanguageChange)
             retranslate();
         QWidget::changeEvent(event);
     }
+
+    QUndoStack* const m_undo; ///< the tab's edits (its parent is the tab)
+
+private:
+    const QString m_key;
+    const char* const m_title;
+    Drawable* m_exportView = nullptr;
 };
 
 } // namespace granota::ui
