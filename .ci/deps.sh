@@ -10,6 +10,7 @@ PKGS=(
   qt6-translations-l10n libqcustomplot-dev libeigen3-dev libgmp-dev
   libbenchmark-dev libgl-dev appstream desktop-file-utils nlohmann-json3-dev
   locales clang libclang-rt-14-dev
+  xvfb xauth x11-utils openbox xdotool
 )
 missing=()
 for p in "${PKGS[@]}"; do

@@ -2,6 +2,7 @@
 // example loads into its tab, documents round-trip, exports are valid files, a live
 // language switch retranslates every visible text, autosave and presentation mode, and the
 // command-line options of docs/classroom.md on the real binary.
+#include "ui/common/curve_canvas.h"
 #include "ui/common/drawable.h"
 #include "ui/shell/exporter.h"
 #include "ui/shell/document.h"
@@ -139,6 +140,61 @@ private slots:
             QCOMPARE(window.currentTab()->key(), kTabs[i]);
         }
         QVERIFY(!window.showTab(QStringLiteral("nope")));
+    }
+
+    // Redo from the keyboard: Ctrl+Shift+Z and Ctrl+Y each redo what Ctrl+Z undid, as real key
+    // events through the window's shortcuts.
+    void redoFromTheKeyboard_data()
+    {
+        QTest::addColumn<int>("key");
+        QTest::addColumn<int>("modifiers");
+        QTest::newRow("Ctrl+Shift+Z") << int(Qt::Key_Z) << int(Qt::ControlModifier | Qt::ShiftModifier);
+        QTest::newRow("Ctrl+Y") << int(Qt::Key_Y) << int(Qt::ControlModifier);
+    }
+
+    void redoFromTheKeyboard()
+    {
+        QFETCH(int, key);
+        QFETCH(int, modifiers);
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        window.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&window));
+        QVERIFY(loadExamples(window, {"2.3"}));
+        QUndoStack* stack = window.currentTab()->undoStack();
+        QVERIFY(stack->canUndo());
+        const int done = stack->index();
+        QWidget* target = window.currentTab()->findChild<granota::ui::CurveCanvas*>();
+        QVERIFY(target);
+        target->setFocus(Qt::OtherFocusReason);
+        QTest::keyClick(target, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(stack->index(), done - 1);
+        QTest::keyClick(target, Qt::Key(key), Qt::KeyboardModifiers(modifiers));
+        QCOMPARE(stack->index(), done);
+    }
+
+    // No key is given twice, to one action or to two actions of the window: Qt then calls the
+    // shortcut ambiguous and runs neither.
+    void noTwoActionsShareAKey()
+    {
+        MainWindow window;
+        QHash<QString, QString> owner;
+        for (const QAction* action : window.findChildren<QAction*>()) {
+            if (action->shortcutContext() == Qt::WidgetShortcut)
+                continue;
+            const QString name = action->text().isEmpty() ? action->objectName() : action->text();
+            QSet<QString> own;
+            for (const QKeySequence& key : action->shortcuts()) {
+                const QString k = key.toString(QKeySequence::PortableText);
+                QVERIFY2(!own.contains(k), qPrintable(name + QStringLiteral(" has ") + k + QStringLiteral(" twice")));
+                own.insert(k);
+                QVERIFY2(!owner.contains(k) || owner[k] == name,
+                         qPrintable(k + QStringLiteral(": ") + owner.value(k) + QStringLiteral(" and ") + name));
+                owner.insert(k, name);
+            }
+        }
+        QVERIFY(owner.contains(QStringLiteral("Ctrl+Shift+Z")));
+        QVERIFY(owner.contains(QStringLiteral("Ctrl+Y")));
     }
 
     void everyExampleLoads_data()

@@ -180,7 +180,13 @@ void MainWindow::createActions()
     m_undo = m_undoGroup->createUndoAction(this);
     m_undo->setShortcut(QKeySequence::Undo);
     m_redo = m_undoGroup->createRedoAction(this);
-    m_redo->setShortcuts({QKeySequence::Redo, QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)});
+    // The platform's Redo keys (Ctrl+Shift+Z on a Linux desktop, Ctrl+Y elsewhere) and both
+    // of those, each once: a key given twice is an ambiguous shortcut, and Qt runs neither.
+    QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
+    for (const QKeySequence& key : {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)})
+        if (!redoKeys.contains(key))
+            redoKeys << key;
+    m_redo->setShortcuts(redoKeys);
 
     m_reportsAction = new QAction(this);
     m_reportsAction->setCheckable(true);
