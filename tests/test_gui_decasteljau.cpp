@@ -444,6 +444,22 @@ private slots:
         QVERIFY(samePoints(tab.pointEditor()->points(), before));
     }
 
+    // The status bar and the Undo entry name the same, new degree: Ex 2.2 is of degree 4, so
+    // one raise makes it degree 5.
+    void raiseDegreeSaysTheNewDegree()
+    {
+        DeCasteljauTab tab;
+        QVERIFY(tab.loadExample(*granota::findWorkedExample("2.2")));
+        QCOMPARE(tab.pointEditor()->points().size(), std::size_t(5));
+        QSignalSpy status(&tab, &DeCasteljauTab::statusMessage);
+        tab.raiseDegree();
+        QCOMPARE(tab.pointEditor()->points().size(), std::size_t(6));
+        QCOMPARE(status.size(), 1);
+        QVERIFY2(status.at(0).at(0).toString().startsWith(QStringLiteral("Degree raised to 5:")),
+                 qPrintable(status.at(0).at(0).toString()));
+        QCOMPARE(tab.undoStack()->undoText(), QStringLiteral("Raise degree to 5"));
+    }
+
     // Degree 60 draws, warns, and shows no NaN; 200 points cannot be raised further.
     void highDegree()
     {

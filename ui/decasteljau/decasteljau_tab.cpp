@@ -534,11 +534,13 @@ void DeCasteljauTab::raiseDegree()
         emit statusMessage(tr("At most %1 control points: the degree cannot be raised further.").arg(kMaxPoints));
         return;
     }
+    // n + 1 control points make a curve of degree n; one point more is degree n + 1.
+    const int raisedDegree = static_cast<int>(points.size());
     // Small fractions are elevated exactly, so that the exact tables survive the step.
     const auto exact = smallRationalPoints(points);
     m_editor->setPoints(exact ? toDouble(elevateDegree(*exact)) : elevateDegree(points),
-                        tr("Raise degree to %1").arg(points.size()));
-    emit statusMessage(tr("Degree raised to %1: the same curve with one control point more.").arg(points.size()));
+                        tr("Raise degree to %1").arg(raisedDegree));
+    emit statusMessage(tr("Degree raised to %1: the same curve with one control point more.").arg(raisedDegree));
 }
 
 void DeCasteljauTab::updateWarning()
