@@ -6,6 +6,9 @@
 
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QFile>
+#include <QSettings>
+#include <QTemporaryDir>
 #include <QTextStream>
 
 namespace {
@@ -52,10 +55,23 @@ int main(int argc, char* argv[])
         if (!granota::ui::availableLanguages().contains(language))
             return fail(QStringLiteral("unknown language '%1' (ca, en)").arg(language));
     }
-    granota::ui::setLanguage(language, parser.isSet(langOption));
+    const bool screenshot = parser.isSet(screenshotOption);
+    // A screenshot is a one-off render: what it changes (the language it was asked for, the
+    // document in Open Recent, its autosave) goes to a scratch folder removed on exit, and the
+    // user's settings and data stay as they were. The saved language was read above.
+    QTemporaryDir scratch;
+    if (screenshot) {
+        if (!scratch.isValid())
+            return fail(QStringLiteral("cannot make a scratch folder for the screenshot run"));
+        QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, scratch.filePath(QStringLiteral("config")));
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, scratch.filePath(QStringLiteral("config")));
+        qputenv("XDG_CONFIG_HOME", QFile::encodeName(scratch.filePath(QStringLiteral("config"))));
+        qputenv("XDG_DATA_HOME", QFile::encodeName(scratch.filePath(QStringLiteral("data"))));
+        qputenv("XDG_CACHE_HOME", QFile::encodeName(scratch.filePath(QStringLiteral("cache"))));
+    }
+    granota::ui::setLanguage(language, parser.isSet(langOption) && !screenshot);
 
     granota::ui::MainWindow window;
-    const bool screenshot = parser.isSet(screenshotOption);
     if (!parser.positionalArguments().isEmpty()) {
         QString error;
         if (!window.openFile(parser.positionalArguments().first(), &error))

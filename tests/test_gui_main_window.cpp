@@ -510,6 +510,49 @@ private slots:
             QVERIFY(!QFile::exists(png));
         }
     }
+
+    // A screenshot is a one-off render: it opens a document in another language and leaves
+    // the user's saved language, recent files and data folder exactly as they were.
+    void aScreenshotRunWritesNoSettings()
+    {
+        QTemporaryDir dir;
+        const QString config = dir.filePath(QStringLiteral("config"));
+        const QString data = dir.filePath(QStringLiteral("data"));
+        QVERIFY(QDir().mkpath(config + QStringLiteral("/Granota")));
+        const QString settingsFile = config + QStringLiteral("/Granota/Granota.conf");
+        const QByteArray saved = "[General]\nlanguage=en\n";
+        {
+            QFile f(settingsFile);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(saved);
+        }
+        MainWindow source;
+        QVERIFY(loadExamples(source, {"2.2"}));
+        const QString document = dir.filePath(QStringLiteral("lesson.granota"));
+        {
+            QFile f(document);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(documentOf(source));
+        }
+        QProcess process;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+        env.insert(QStringLiteral("XDG_CONFIG_HOME"), config);
+        env.insert(QStringLiteral("XDG_DATA_HOME"), data);
+        process.setProcessEnvironment(env);
+        const QString png = dir.filePath(QStringLiteral("shot.png"));
+        process.start(QStringLiteral(GRANOTA_GUI_PATH), {QStringLiteral("--lang"), QStringLiteral("ca"),
+                                                         QStringLiteral("--presentation"), QStringLiteral("--screenshot"),
+                                                         png, document});
+        QVERIFY(process.waitForFinished(120000));
+        QCOMPARE(process.exitCode(), 0);
+        QVERIFY(QFile::exists(png));
+        QFile after(settingsFile);
+        QVERIFY(after.open(QIODevice::ReadOnly));
+        QCOMPARE(after.readAll(), saved);
+        QCOMPARE(QDir(config + QStringLiteral("/Granota")).entryList(QDir::Files), QStringList{QStringLiteral("Granota.conf")});
+        QVERIFY2(!QFileInfo::exists(data + QStringLiteral("/Granota")), "the screenshot run wrote into the data folder");
+    }
 };
 
 QTEST_MAIN(TestGuiMainWindow)
