@@ -158,6 +158,29 @@ private slots:
         QVERIFY(!r.contains(QStringLiteral("B₃")));
     }
 
+    // The readout's values are those of the t it names (t to three decimals), and it leaves
+    // the plot when t changes.
+    void hoverReadoutMatchesItsT()
+    {
+        Tabs tabs;
+        tabs.bernstein.setAllDegrees(false);
+        tabs.bernstein.setDegree(4);
+        const QString r = tabs.bernstein.readout(0.29963);
+        QVERIFY2(r.contains(QStringLiteral("t = 0.300")), qPrintable(r));
+        QVERIFY2(r.contains(QStringLiteral("B₀⁴ = 0.2401")), qPrintable(r)); // 0.7⁴
+        QVERIFY2(r.contains(QStringLiteral("B₄⁴ = 0.0081")), qPrintable(r)); // 0.3⁴
+
+        tabs.bernstein.resize(900, 700);
+        tabs.bernstein.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&tabs.bernstein));
+        QCustomPlot* plot = tabs.bernstein.basisPlot();
+        const QPoint at(static_cast<int>(plot->xAxis->coordToPixel(0.6)), static_cast<int>(plot->yAxis->coordToPixel(0.5)));
+        QTest::mouseMove(plot, at);
+        QTRY_VERIFY(tabs.bernstein.readoutShown());
+        tabs.bernstein.setT(0.1);
+        QVERIFY(!tabs.bernstein.readoutShown());
+    }
+
     // Ex 2.5 and Ex 2.6: the points go to the De Casteljau tab (undoable there) and the
     // curve comes out in powers of t exactly as printed.
     void examples25and26_data()

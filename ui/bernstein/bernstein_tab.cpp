@@ -293,11 +293,14 @@ void BernsteinTab::rebuildBasisPlot()
 
 void BernsteinTab::updateMarker()
 {
+    m_readout->setVisible(false); // it named the t under the mouse; the next move shows it again
     const double tt = t();
     m_marker->point1->setCoords(tt, 0);
     m_marker->point2->setCoords(tt, 1);
     m_basisPlot->replot(QCustomPlot::rpQueuedReplot);
 }
+
+bool BernsteinTab::readoutShown() const { return m_readout->visible(); }
 
 double BernsteinTab::markerT() const { return m_marker->point1->coords().x(); }
 
@@ -361,8 +364,11 @@ void BernsteinTab::plotMousePress(QMouseEvent* event)
 
 QString BernsteinTab::readout(double tt) const
 {
-    const std::vector<double> b = bernsteinAll(m_degree, tt);
-    QStringList lines{QStringLiteral("t = %1").arg(displayFixed(tt, 3))};
+    // The values at the t the readout names: t to three decimals, as shown, so that
+    // "t = 0.300" comes with B₀⁴ = 0.7⁴ = 0.2401, not the values a fraction of a pixel away.
+    const double shown = std::round(tt * 1000) / 1000;
+    const std::vector<double> b = bernsteinAll(m_degree, shown);
+    QStringList lines{QStringLiteral("t = %1").arg(displayFixed(shown, 3))};
     for (int i = 0; i <= m_degree && i < kMaxReadoutLines; ++i)
         lines << QStringLiteral("%1 = %2").arg(basisName(i, m_degree)).arg(displayFixed(b[static_cast<std::size_t>(i)], 4));
     if (m_degree + 1 > kMaxReadoutLines)

@@ -73,6 +73,8 @@ public:
     QString curvePointText() const;
     /// The hover readout for a parameter value (what the plot shows under the mouse).
     QString readout(double t) const;
+    /// Whether the hover readout is on the plot.
+    bool readoutShown() const;
     /// The x position (t) of the vertical line marking the current t.
     double markerT() const;
 
