@@ -457,6 +457,38 @@ private slots:
         QVERIFY(!window.workPrecisionVisible());
     }
 
+    // Another report chosen, then a measurement cancelled: the plot is empty, with no axis
+    // title and no legend left from the report before.
+    void aCancelledReportLeavesNothingOfTheLastOne()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        window.setWorkPrecisionVisible(true);
+        auto* panel = window.workPrecisionPanel(QStringLiteral("decasteljau"));
+        QVERIFY(panel);
+        panel->setQuick(true);
+        panel->selectReport("curve-sampling");
+        QSignalSpy done(panel, &granota::ui::WorkPrecisionPanel::finished);
+        panel->measure();
+        QVERIFY(done.wait(60000));
+        QVERIFY(!panel->plot()->yAxis->label().isEmpty());
+        QVERIFY(panel->plot()->legend->visible());
+        const auto isEmpty = [panel] {
+            return panel->plot()->graphCount() == 0 && panel->plot()->xAxis->label().isEmpty() &&
+                   panel->plot()->yAxis->label().isEmpty() && !panel->plot()->legend->visible();
+        };
+        panel->selectReport("bezier-evaluation");
+        QVERIFY(!panel->report().has_value());
+        QVERIFY(isEmpty());
+        panel->setQuick(false);
+        QSignalSpy cancelled(panel, &granota::ui::WorkPrecisionPanel::finished);
+        panel->measure();
+        panel->cancel();
+        QVERIFY(cancelled.wait(60000));
+        QCOMPARE(cancelled.first().first().toBool(), false);
+        QVERIFY(isEmpty());
+    }
+
     void presentationModeEnlargesText()
     {
         MainWindow window;

@@ -114,9 +114,7 @@ void WorkPrecisionPanel::showReport()
         plotWorkPrecision(m_plot, *m_report, m_styleScale);
         m_lesson->setText(reportLesson(*m_report));
     } else {
-        m_plot->clearGraphs();
-        m_plot->clearItems();
-        m_plot->replot();
+        clearWorkPrecisionPlot(m_plot);
         m_lesson->setText(m_result && !m_result->ok() && m_result->error().code == ErrorCode::Cancelled
                               ? tr("Cancelled. Press Measure to start again.")
                               : tr("Press Measure: each method runs over a range of its setting, and the plot "

@@ -114,6 +114,16 @@ QString reportError(const WorkPrecisionReport& r)
     return QString::fromStdString(r.error);
 }
 
+void clearWorkPrecisionPlot(QCustomPlot* plot)
+{
+    plot->clearGraphs();
+    plot->clearItems();
+    plot->xAxis->setLabel(QString());
+    plot->yAxis->setLabel(QString());
+    plot->legend->setVisible(false);
+    plot->replot();
+}
+
 void plotWorkPrecision(QCustomPlot* plot, const WorkPrecisionReport& report, double styleScale)
 {
     plot->clearGraphs();

@@ -22,5 +22,7 @@ QString reportError(const WorkPrecisionReport& report);
 /// Replaces the plot's content by the report: log–log axes (run time in seconds, error),
 /// a graph with markers per method, a legend and the knob values as labels.
 void plotWorkPrecision(QCustomPlot* plot, const WorkPrecisionReport& report, double styleScale = 1.0);
+/// Empties the plot: no graph, no label, no axis title, no legend (no report to show yet).
+void clearWorkPrecisionPlot(QCustomPlot* plot);
 
 } // namespace granota::ui
