@@ -132,6 +132,32 @@ private slots:
         QCOMPARE(combo->currentData().toString(), QStringLiteral("frog"));
     }
 
+    // With several bodies the readouts say whose figure each is: the area line is the first
+    // body's, the solver's area error the mean of all; with one body they say neither.
+    void manyBodiesReadoutsSayWhoseFigureItIs()
+    {
+        FrogCanvas* canvas = tab().canvas();
+        FrogCanvas::Overlays overlays;
+        overlays.area = true;
+        overlays.readouts = true;
+        canvas->setOverlays(overlays);
+        QVERIFY(tab().setScene("many-bodies", nullptr));
+        const int bodies = canvas->simulation()->bodyCount();
+        QVERIFY(bodies > 1);
+        const QString first = QStringLiteral("Body 1 of %1: area").arg(bodies);
+        const QString mean = QStringLiteral("Area error, mean of the %1 bodies,").arg(bodies);
+        QTRY_VERIFY2(canvas->textLines().join('\n').contains(first), qPrintable(canvas->textLines().join('\n')));
+        const QString lines = canvas->textLines().join('\n');
+        QVERIFY2(lines.contains(mean), qPrintable(lines));
+        QVERIFY2(!lines.contains(QStringLiteral("Area error ")), qPrintable(lines));
+
+        QVERIFY(tab().setScene("frog", nullptr));
+        QCOMPARE(canvas->simulation()->bodyCount(), 1);
+        QTRY_VERIFY2(canvas->textLines().join('\n').contains(QStringLiteral("Area error ")),
+                     qPrintable(canvas->textLines().join('\n')));
+        QVERIFY(!canvas->textLines().join('\n').contains(QStringLiteral("Body 1 of")));
+    }
+
     void stepButtonAdvancesExactlyOneStep()
     {
         QVERIFY(tab().setScene("gravity", nullptr));

@@ -1679,6 +1679,18 @@
     </context>
     <context>
         <name>granota::ui::FrogCanvas</name>
+        <message>
+            <source>Area error, mean of the %1 bodies, %2 % · largest stretch %3 %</source>
+            <translation>Area error, mean of the %1 bodies, %2 % · largest stretch %3 %</translation>
+        </message>
+        <message>
+            <source>Body 1 of %1: area %2 px² · target %3 px²</source>
+            <translation>Body 1 of %1: area %2 px² · target %3 px²</translation>
+        </message>
+        <message>
+            <source>Body 1 of %1: area %2 px² · target %3 px² (%4 %)</source>
+            <translation>Body 1 of %1: area %2 px² · target %3 px² (%4 %)</translation>
+        </message>
         <message numerus="yes">
             <location filename="../ui/frog_canvas.cpp" line="232" />
             <source>Running %n× slower than real time: a step of this scene is more work than a frame holds</source>

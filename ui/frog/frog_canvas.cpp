@@ -257,9 +257,18 @@ void FrogCanvas::refreshTexts()
             else
                 lines << tr("Precomputed Bézier points (§4.9): computed once, nothing per frame");
         }
-        if (m_overlays.area && m_sim->bodyCount() > 0) {
+        // With several bodies each figure says whose it is: the area line is the first body's,
+        // the solver's area error the mean over all of them.
+        const int bodies = m_sim->bodyCount();
+        if (m_overlays.area && bodies > 0) {
             const double area = m_sim->bodyArea(0), target = m_sim->bodyTargetArea(0);
-            if (target > 0)
+            if (bodies > 1 && target > 0)
+                lines << tr("Body 1 of %1: area %2 px² · target %3 px² (%4 %)")
+                             .arg(bodies)
+                             .arg(num(area, 0), num(target, 0), num(100 * (area - target) / target, 1));
+            else if (bodies > 1)
+                lines << tr("Body 1 of %1: area %2 px² · target %3 px²").arg(bodies).arg(num(area, 0), num(target, 0));
+            else if (target > 0)
                 lines << tr("Area %1 px² · target %2 px² (%3 %)")
                              .arg(num(area, 0), num(target, 0), num(100 * (area - target) / target, 1));
             else
@@ -267,8 +276,13 @@ void FrogCanvas::refreshTexts()
         }
         if (m_overlays.readouts) {
             const Readouts r = m_sim->readouts();
-            lines << tr("Area error %1 % · largest stretch %2 %")
-                         .arg(num(r.areaErrorPercent, 2), num(100 * r.maxStretch, 1));
+            if (bodies > 1)
+                lines << tr("Area error, mean of the %1 bodies, %2 % · largest stretch %3 %")
+                             .arg(bodies)
+                             .arg(num(r.areaErrorPercent, 2), num(100 * r.maxStretch, 1));
+            else
+                lines << tr("Area error %1 % · largest stretch %2 %")
+                             .arg(num(r.areaErrorPercent, 2), num(100 * r.maxStretch, 1));
             lines << tr("Largest correction %1 · kinetic energy %2 · potential energy %3")
                          .arg(num(r.constraintForce, 3), num(r.kineticEnergy, 1), num(r.potentialEnergy, 0));
         }
