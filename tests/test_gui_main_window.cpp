@@ -283,6 +283,45 @@ private slots:
         QVERIFY(!window.openFile(dir.filePath(QStringLiteral("missing.granota")), &error));
     }
 
+    // A PNG for print is the screen's picture, only sharper: the 300 DPI image, brought down
+    // to 96 DPI, matches the 96 DPI image (text drawn three times too large would not).
+    void pngForPrintIsTheScreensPicture_data()
+    {
+        QTest::addColumn<QString>("tab");
+        for (const QString& key : kTabs)
+            if (key != QLatin1String("frog")) // it moves between two exports
+                QTest::newRow(qPrintable(key)) << key;
+    }
+    void pngForPrintIsTheScreensPicture()
+    {
+        QFETCH(QString, tab);
+        MainWindow window;
+        QVERIFY(showOnTab(window, tab));
+        QVERIFY(loadExamples(window, {"2.2"}));
+        QVERIFY(window.showTab(tab));
+        QTemporaryDir dir;
+        const QString screen = dir.filePath(QStringLiteral("96.png")), print = dir.filePath(QStringLiteral("300.png"));
+        QCOMPARE(window.exportCurrent(QStringLiteral("png"), screen, 96), QString());
+        QCOMPARE(window.exportCurrent(QStringLiteral("png"), print, 300), QString());
+        const QImage a = QImage(screen).convertToFormat(QImage::Format_Grayscale8);
+        const QImage b = QImage(print).scaled(a.size(), Qt::IgnoreAspectRatio, Qt::SmoothTransformation)
+                             .convertToFormat(QImage::Format_Grayscale8);
+        QVERIFY(!a.isNull() && !b.isNull());
+        // Ink (dark pixels) in each, and how much of it the two share.
+        long inkA = 0, inkB = 0, both = 0;
+        for (int y = 0; y < a.height(); ++y)
+            for (int x = 0; x < a.width(); ++x) {
+                const bool da = qGray(a.pixel(x, y)) < 110, db = qGray(b.pixel(x, y)) < 110;
+                inkA += da;
+                inkB += db;
+                both += da && db;
+            }
+        QVERIFY(inkA > 100);
+        const double ratio = double(inkB) / double(inkA), shared = double(both) / double(std::max(inkA, inkB));
+        QVERIFY2(ratio > 0.7 && ratio < 1.4 && shared > 0.5,
+                 qPrintable(QStringLiteral("ink 96 DPI %1, 300 DPI %2, shared %3").arg(inkA).arg(inkB).arg(shared)));
+    }
+
     void exportsAreValidFiles_data()
     {
         QTest::addColumn<QString>("tab");

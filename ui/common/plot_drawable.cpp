@@ -12,6 +12,10 @@ void PlotDrawable::render(QPainter& painter, const QRectF& target)
     QPicture picture;
     {
         QCPPainter recorder(&picture);
+        // Pens as wide as on screen whatever the scale of the target (a 300 DPI PNG): a
+        // cosmetic pen would stay one device pixel wide, a third of the screen's line.
+        recorder.setMode(QCPPainter::pmVectorized);
+        recorder.setMode(QCPPainter::pmNonCosmetic);
         m_plot->toPainter(&recorder, static_cast<int>(target.width()), static_cast<int>(target.height()));
     }
     painter.save();

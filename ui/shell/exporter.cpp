@@ -42,14 +42,20 @@ QString exportPng(Drawable& view, const QString& file, int dpi)
     if (image.isNull())
         return QCoreApplication::translate("granota::ui::Exporter", "Not enough memory for an image of %1×%2 pixels.").arg(pixels.width()).arg(pixels.height());
     image.fill(Qt::white);
-    const int dotsPerMeter = static_cast<int>(std::lround(dpi / 0.0254));
-    image.setDotsPerMeterX(dotsPerMeter);
-    image.setDotsPerMeterY(dotsPerMeter);
+    // Drawn as the screen draws it, at 96 DPI, only scaled: fonts given in points would
+    // otherwise take the image's DPI as well and come out dpi/96 times too large again.
+    const auto setDpi = [&image](double d) {
+        const int dotsPerMeter = static_cast<int>(std::lround(d / 0.0254));
+        image.setDotsPerMeterX(dotsPerMeter);
+        image.setDotsPerMeterY(dotsPerMeter);
+    };
+    setDpi(kScreenDpi);
     {
         QPainter painter(&image);
         painter.scale(dpi / kScreenDpi, dpi / kScreenDpi);
         view.render(painter, QRectF(QPointF(0, 0), logical));
     }
+    setDpi(dpi); // what the file says: printed at this resolution, it has the screen's size
     return image.save(file, "PNG") ? QString() : cannotWrite(file);
 }
 
