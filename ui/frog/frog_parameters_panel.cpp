@@ -134,7 +134,7 @@ void FrogParametersPanel::setScene(const SceneSpec& scene)
             break;
         case ParameterType::AngleLimits: {
             const QJsonObject limits = value.toObject();
-            for (const AngleLimit& limit : angleLimits())
+            for (const AngleLimitParameter& limit : angleLimits())
                 if (limits.contains(QLatin1String(limit.name)))
                     addRow(key, QString::fromLatin1(limit.name), 2, kDegrees);
             break;
@@ -275,7 +275,7 @@ QString FrogParametersPanel::labelFor(const QString& key, const QString& sub) co
                 return translated(part.label);
         break;
     case ParameterType::AngleLimits:
-        for (const AngleLimit& limit : angleLimits())
+        for (const AngleLimitParameter& limit : angleLimits())
             if (sub == QLatin1String(limit.name))
                 return translated(limit.label);
         break;
@@ -290,7 +290,7 @@ QString FrogParametersPanel::tipFor(const QString& key, const QString& sub) cons
 {
     const SceneParameter& p = parameter(key);
     if (p.type == ParameterType::AngleLimits) {
-        for (const AngleLimit& limit : angleLimits())
+        for (const AngleLimitParameter& limit : angleLimits())
             if (sub == QLatin1String(limit.name))
                 return translated(limit.tip);
         return {};

@@ -224,7 +224,7 @@ Expected<void> setParam(SceneSpec& s, const std::string& key, const Json& v)
             if (!q)
                 return bad(s.name, "angle_limits." + name + " must be a pair min,max");
             const auto& limits = angleLimits();
-            const auto limit = std::find_if(limits.begin(), limits.end(), [&](const AngleLimit& l) { return name == l.name; });
+            const auto limit = std::find_if(limits.begin(), limits.end(), [&](const AngleLimitParameter& l) { return name == l.name; });
             if (limit == limits.end())
                 return bad(s.name, "unknown angle limit '" + name + "'");
             limit->setIn(s, *q);
@@ -523,7 +523,7 @@ Json sceneToJson(const SceneSpec& s)
         }
         case ParameterType::AngleLimits: {
             Json limits = Json::object();
-            for (const AngleLimit& l : angleLimits())
+            for (const AngleLimitParameter& l : angleLimits())
                 if (l.pendulum() == (s.model == SceneModel::Pendulum))
                     limits.set(l.name, pointJson(l.in(s)));
             params.set(key, limits);

@@ -168,23 +168,23 @@ const std::vector<ParameterPart>& legParts()
     return parts;
 }
 
-const std::vector<AngleLimit>& angleLimits()
+const std::vector<AngleLimitParameter>& angleLimits()
 {
-    using J = AngleLimit::Joint;
-    static const std::vector<AngleLimit> limits = {
+    using J = AngleLimitParameter::Joint;
+    static const std::vector<AngleLimitParameter> limits = {
         {"shoulder_front_right", QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Front right shoulder (min, max)"), kShoulderTip, J::Shoulder, 0},
         {"shoulder_front_left", QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Front left shoulder (min, max)"), kShoulderTip, J::Shoulder, 1},
         {"shoulder_back_right", QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Back right shoulder (min, max)"), kShoulderTip, J::Shoulder, 2},
         {"shoulder_back_left", QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Back left shoulder (min, max)"), kShoulderTip, J::Shoulder, 3},
         {"elbow_front", QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Front elbows (min, max)"), kElbowTip, J::Elbow, 0},
         {"elbow_back", QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Back elbows (min, max)"), kElbowTip, J::Elbow, 2},
-        {"shoulder", QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Shoulder (min, max)"), kShoulderTip, J::Shoulder, AngleLimit::kChain},
-        {"elbow", QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Elbow (min, max)"), kElbowTip, J::Elbow, AngleLimit::kChain},
+        {"shoulder", QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Shoulder (min, max)"), kShoulderTip, J::Shoulder, AngleLimitParameter::kChain},
+        {"elbow", QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Elbow (min, max)"), kElbowTip, J::Elbow, AngleLimitParameter::kChain},
     };
     return limits;
 }
 
-Point AngleLimit::in(const SceneSpec& s) const
+Point AngleLimitParameter::in(const SceneSpec& s) const
 {
     if (leg == kChain)
         return joint == Joint::Shoulder ? Point(s.chainShoulderMin, s.chainShoulderMax)
@@ -193,7 +193,7 @@ Point AngleLimit::in(const SceneSpec& s) const
     return joint == Joint::Shoulder ? Point(l.shoulderMin, l.shoulderMax) : Point(l.elbowMin, l.elbowMax);
 }
 
-void AngleLimit::setIn(SceneSpec& s, Point q) const
+void AngleLimitParameter::setIn(SceneSpec& s, Point q) const
 {
     if (leg == kChain) {
         (joint == Joint::Shoulder ? s.chainShoulderMin : s.chainElbowMin) = q.x;

@@ -92,7 +92,7 @@ struct ParameterPart {
 const std::vector<ParameterPart>& legParts();
 
 /// One limit of `angle_limits` (§4.15), [min, max] in radians.
-struct AngleLimit {
+struct AngleLimitParameter {
     enum class Joint {
         Shoulder, ///< the upper segment's angle (Annex II's anglesc)
         Elbow,    ///< the angle between the two segments (Annex II's angles)
@@ -111,7 +111,7 @@ struct AngleLimit {
     void setIn(SceneSpec& s, Point q) const;
 };
 /// The frog's six (four shoulders, two elbow pairs), then the pendulum's two, in the panel's order.
-const std::vector<AngleLimit>& angleLimits();
+const std::vector<AngleLimitParameter>& angleLimits();
 
 /// One value of `grab`.
 struct GrabChoice {
