@@ -400,6 +400,41 @@ private slots:
         QVERIFY(!window.exportCurrent(QStringLiteral("png"), png, 5).isEmpty());
     }
 
+    // Edit ▸ Undo and Redo speak the interface's language whatever the history holds: empty,
+    // with a step, and after a live switch from English to Catalan and back.
+    void undoAndRedoSpeakTheLanguage()
+    {
+        granota::ui::setLanguage(QStringLiteral("en"), false);
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        QAction* undo = nullptr;
+        QAction* redo = nullptr;
+        for (QAction* a : window.findChildren<QAction*>()) {
+            if (a->shortcuts().contains(QKeySequence(QKeySequence::Undo)))
+                undo = a;
+            if (a->shortcuts().contains(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)))
+                redo = a;
+        }
+        QVERIFY(undo && redo);
+        QCOMPARE(undo->text(), QStringLiteral("&Undo"));
+        QVERIFY(granota::ui::setLanguage(QStringLiteral("ca"), false));
+        QCoreApplication::processEvents();
+        for (const QString& key : kTabs) { // every tab's history is empty: the plain words
+            QVERIFY(window.showTab(key));
+            QCOMPARE(undo->text(), QStringLiteral("&Desfés"));
+            QCOMPARE(redo->text(), QStringLiteral("&Refés"));
+        }
+        QVERIFY(window.showTab(QStringLiteral("decasteljau")));
+        QVERIFY(loadExamples(window, {"2.2"}));
+        QVERIFY2(undo->text().startsWith(QStringLiteral("&Desfés ")), qPrintable(undo->text()));
+        window.currentTab()->undoStack()->undo();
+        QVERIFY2(redo->text().startsWith(QStringLiteral("&Refés ")), qPrintable(redo->text()));
+        QVERIFY(granota::ui::setLanguage(QStringLiteral("en"), false));
+        QCoreApplication::processEvents();
+        QVERIFY2(redo->text().startsWith(QStringLiteral("&Redo ")), qPrintable(redo->text()));
+        QCOMPARE(undo->text(), QStringLiteral("&Undo"));
+    }
+
     void languageSwitchRetranslatesEveryText()
     {
         granota::ui::setLanguage(QStringLiteral("en"), false);

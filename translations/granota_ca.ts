@@ -2512,6 +2512,14 @@
     <context>
         <name>granota::ui::MainWindow</name>
         <message>
+            <source>&amp;Redo %1</source>
+            <translation>&amp;Refés %1</translation>
+        </message>
+        <message>
+            <source>&amp;Undo %1</source>
+            <translation>&amp;Desfés %1</translation>
+        </message>
+        <message>
             <source>A Granota session was closed without saving its changes to “%1” (autosaved %2). Recover them?</source>
             <translation>Una sessió del Granota es va tancar sense desar els canvis de «%1» (còpia automàtica del %2). Els voleu recuperar?</translation>
         </message>

@@ -2512,6 +2512,14 @@
     <context>
         <name>granota::ui::MainWindow</name>
         <message>
+            <source>&amp;Redo %1</source>
+            <translation>&amp;Redo %1</translation>
+        </message>
+        <message>
+            <source>&amp;Undo %1</source>
+            <translation>&amp;Undo %1</translation>
+        </message>
+        <message>
             <source>A Granota session was closed without saving its changes to “%1” (autosaved %2). Recover them?</source>
             <translation>A Granota session was closed without saving its changes to “%1” (autosaved %2). Recover them?</translation>
         </message>

@@ -177,9 +177,19 @@ void MainWindow::createActions()
     m_exportFrames = new QAction(this);
     connect(m_exportFrames, &QAction::triggered, this, &MainWindow::exportFramesDialog);
 
-    m_undo = m_undoGroup->createUndoAction(this);
+    // Our own actions rather than QUndoGroup's: those keep the words they were made with
+    // ("Undo" in English) for an empty history, whatever the language is now.
+    m_undo = new QAction(this);
     m_undo->setShortcut(QKeySequence::Undo);
-    m_redo = m_undoGroup->createRedoAction(this);
+    m_undo->setEnabled(false);
+    connect(m_undo, &QAction::triggered, m_undoGroup, &QUndoGroup::undo);
+    connect(m_undoGroup, &QUndoGroup::canUndoChanged, m_undo, &QAction::setEnabled);
+    connect(m_undoGroup, &QUndoGroup::undoTextChanged, this, &MainWindow::retranslateUndoRedo);
+    m_redo = new QAction(this);
+    m_redo->setEnabled(false);
+    connect(m_redo, &QAction::triggered, m_undoGroup, &QUndoGroup::redo);
+    connect(m_undoGroup, &QUndoGroup::canRedoChanged, m_redo, &QAction::setEnabled);
+    connect(m_undoGroup, &QUndoGroup::redoTextChanged, this, &MainWindow::retranslateUndoRedo);
     // The platform's Redo keys (Ctrl+Shift+Z on a Linux desktop, Ctrl+Y elsewhere) and both
     // of those, each once: a key given twice is an ambiguous shortcut, and Qt runs neither.
     QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
@@ -294,6 +304,15 @@ void MainWindow::createMenus()
     m_helpMenu->addAction(m_about);
 }
 
+void MainWindow::retranslateUndoRedo()
+{
+    const QString undo = m_undoGroup->undoText(), redo = m_undoGroup->redoText();
+    m_undo->setText(undo.isEmpty() ? tr("&Undo") : tr("&Undo %1").arg(undo));
+    m_redo->setText(redo.isEmpty() ? tr("&Redo") : tr("&Redo %1").arg(redo));
+    m_undo->setEnabled(m_undoGroup->canUndo());
+    m_redo->setEnabled(m_undoGroup->canRedo());
+}
+
 void MainWindow::retranslate()
 {
     m_fileMenu->setTitle(tr("&File"));
@@ -311,8 +330,7 @@ void MainWindow::retranslate()
     m_exportFrames->setText(tr("Frog animation as PNG frames…"));
     m_quit->setText(tr("&Quit"));
     m_editMenu->setTitle(tr("&Edit"));
-    m_undo->setText(tr("&Undo"));
-    m_redo->setText(tr("&Redo"));
+    retranslateUndoRedo();
     m_viewMenu->setTitle(tr("&View"));
     m_presentationAction->setText(tr("&Presentation mode"));
     m_presentationAction->setToolTip(tr("Full screen, larger text and thicker lines for the classroom."));

@@ -82,6 +82,8 @@ private:
     void createActions();
     void createMenus();
     void retranslate();
+    /// Edit ▸ Undo and Redo: "Undo" or "Undo <step>", in the current language.
+    void retranslateUndoRedo();
     void exportDialog(const QString& format);
     void exportFramesDialog();
     void showMessage(const QString& text);
