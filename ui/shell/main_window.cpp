@@ -100,7 +100,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
     retranslate();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // The tabs' undo stacks leave the group as the widgets below are deleted, and the group
+    // says so: not to this window any more, which is half destroyed by then.
+    disconnect(m_undoGroup, nullptr, this, nullptr);
+}
 
 // ---------------------------------------------------------------- tabs and examples
 
