@@ -224,7 +224,9 @@ Expected<void> setParam(SceneSpec& s, const std::string& key, const Json& v)
             if (!q)
                 return bad(s.name, "angle_limits." + name + " must be a pair min,max");
             const auto& limits = angleLimits();
-            const auto limit = std::find_if(limits.begin(), limits.end(), [&](const AngleLimitParameter& l) { return name == l.name; });
+            const std::string& limitName = name; // C++17 lambdas cannot capture a structured binding
+            const auto limit = std::find_if(limits.begin(), limits.end(),
+                                            [&](const AngleLimitParameter& l) { return limitName == l.name; });
             if (limit == limits.end())
                 return bad(s.name, "unknown angle limit '" + name + "'");
             limit->setIn(s, *q);
