@@ -47,7 +47,7 @@ std::optional<std::vector<Point>> CurveTab::readPoints(const QJsonValue& value, 
     for (int i = 0; i < count; ++i) {
         const QJsonArray xy = array.at(i).toArray();
         const bool pair = xy.size() == 2 && xy.at(0).isDouble() && xy.at(1).isDouble();
-        const Point p(xy.at(0).toDouble(), xy.at(1).toDouble());
+        const Point p = pair ? Point(xy.at(0).toDouble(), xy.at(1).toDouble()) : Point();
         if (!pair || (!say.notFinite && !isFinite(p))) {
             error = say.notAPair(i);
             return std::nullopt;
