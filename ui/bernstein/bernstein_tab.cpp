@@ -13,6 +13,7 @@
 #include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
 #include "ui/common/presentation_scale.h"
+#include "ui/common/value_command.h"
 #include "ui/shell/tikz_writer.h"
 
 #include <QCheckBox>
@@ -84,7 +85,8 @@ QString pointText(const RPoint& p)
 } // namespace
 
 BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
-    : TabPage(QStringLiteral("bernstein"), QT_TR_NOOP("Bernstein"), parent), m_deCasteljau(deCasteljau), m_basisPlot(new QCustomPlot(this)),
+    : TabPage(QStringLiteral("bernstein"), QT_TR_NOOP("Bernstein"), deCasteljau->undoStack(), parent),
+      m_deCasteljau(deCasteljau), m_basisPlot(new QCustomPlot(this)),
       m_weightsPlot(new QCustomPlot(this)), m_drawable(std::make_unique<PlotDrawable>(m_basisPlot)),
       m_exact(new ExactPanel(this)), m_parameter(new DeCasteljauParameterControl(this)), m_degreeLabel(new QLabel(this)),
       m_degreeBox(new QSpinBox(this)), m_allBox(new QCheckBox(this)), m_checksGroup(new QGroupBox(this)),
@@ -127,7 +129,10 @@ BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
     m_basisPlot->setMouseTracking(true);
     connect(m_basisPlot, &QCustomPlot::mouseMove, this, &BernsteinTab::plotMouseMove);
     connect(m_basisPlot, &QCustomPlot::mousePress, this, &BernsteinTab::plotMousePress);
-    connect(m_basisPlot, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) { m_dragging = false; });
+    connect(m_basisPlot, &QCustomPlot::mouseRelease, this, [this](QMouseEvent*) {
+        m_dragging = false;
+        ++m_plotDrags;
+    });
 
     // The weights B_i^n(t) applied to the De Casteljau tab's points (Def 2.6).
     m_bars = new QCPBars(m_weightsPlot->xAxis, m_weightsPlot->yAxis);
@@ -187,10 +192,15 @@ BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_mainSplitter);
 
-    connect(m_degreeBox, &QSpinBox::valueChanged, this, &BernsteinTab::setDegree);
-    connect(m_allBox, &QCheckBox::toggled, this, &BernsteinTab::setAllDegrees);
+    constexpr int kDegreeMergeId = 0x42450001; // "BE": a spin box held down is one step
+    connect(m_degreeBox, &QSpinBox::valueChanged, this, [this](int n) {
+        userChangedView({n, m_allDegrees}, tr("Degree n = %1").arg(n), kDegreeMergeId);
+    });
+    connect(m_allBox, &QCheckBox::toggled, this,
+            [this](bool on) { userChangedView({m_degree, on}, tr("All degrees up to n")); });
     // One t for both tabs: this tab's slider moves the De Casteljau tab's t, and back.
-    connect(m_parameter, &DeCasteljauParameterControl::valueChanged, this, &BernsteinTab::setT);
+    connect(m_parameter, &DeCasteljauParameterControl::valueChanged, this,
+            [this](double t) { userMovedT(t, m_parameter->gestureMergeId()); });
     connect(m_deCasteljau, &DeCasteljauTab::tChanged, this, [this](double t) {
         m_parameter->setValue(t);
         updateMarker();
@@ -218,6 +228,44 @@ void BernsteinTab::setT(double t)
 {
     m_deCasteljau->setT(t); // comes back through tChanged
     m_parameter->setValue(m_deCasteljau->t());
+}
+
+int BernsteinTab::plotDragMergeId() const
+{
+    constexpr int kBase = 0x42500000; // "BP": far from the slider's gesture ids
+    return kBase + (m_plotDrags & 0xffff);
+}
+
+void BernsteinTab::userMovedT(double t, int mergeId)
+{
+    const double before = this->t();
+    setT(t);
+    const double after = this->t();
+    if (after == before)
+        return;
+    auto apply = [this](double v) {
+        setT(v);
+        emit documentChanged();
+    };
+    m_undo->push(new ValueCommand<double>(apply, before, after, tr("Move t"), mergeId,
+                                          {/*dropWhenUnchanged=*/true, /*appliedAlready=*/true}));
+    emit documentChanged();
+}
+
+void BernsteinTab::applyView(const View& v)
+{
+    setAllDegrees(v.second);
+    setDegree(v.first);
+}
+
+void BernsteinTab::userChangedView(const View& after, const QString& undoText, int mergeId)
+{
+    const View before = view();
+    applyView(after);
+    if (view() == before)
+        return;
+    m_undo->push(new ValueCommand<View>([this](const View& v) { applyView(v); }, before, view(), undoText, mergeId,
+                                        {true, true}));
 }
 
 void BernsteinTab::setDegree(int n)
@@ -345,7 +393,7 @@ void BernsteinTab::plotMouseMove(QMouseEvent* event)
 {
     const double tt = std::clamp(m_basisPlot->xAxis->pixelToCoord(event->position().x()), 0.0, 1.0);
     if (m_dragging && (event->buttons() & Qt::LeftButton)) {
-        setT(tt);
+        userMovedT(tt, plotDragMergeId());
         return;
     }
     m_readout->setText(readout(tt));
@@ -359,7 +407,7 @@ void BernsteinTab::plotMousePress(QMouseEvent* event)
     if (event->button() != Qt::LeftButton)
         return;
     m_dragging = true;
-    setT(std::clamp(m_basisPlot->xAxis->pixelToCoord(event->position().x()), 0.0, 1.0));
+    userMovedT(std::clamp(m_basisPlot->xAxis->pixelToCoord(event->position().x()), 0.0, 1.0), plotDragMergeId());
 }
 
 QString BernsteinTab::readout(double tt) const
@@ -554,20 +602,22 @@ bool BernsteinTab::loadExample(const granota::WorkedExample& example)
     const QString id = QString::fromStdString(example.id);
     if (example.kind == "bernstein" && example.degree >= 0 && example.degree <= kMaxDegree) {
         // Ex 2.4: every degree up to 5, as the thesis lists them.
-        setAllDegrees(true);
-        setDegree(example.degree);
+        userChangedView({example.degree, true}, tr("Load Ex %1").arg(id));
         emit statusMessage(tr("Ex %1: the Bernstein polynomials of every degree up to %2.").arg(id).arg(example.degree));
         return true;
     }
     if (example.kind == "bezier" && !example.points.empty()
         && static_cast<int>(example.points.size()) <= kMaxDegree + 1) {
         // Ex 2.5, Ex 2.6: the curves of Ex 2.2 and Ex 2.3 through Def 2.6.
-        m_deCasteljau->pointEditor()->setPoints(toDouble(example.points), tr("Load Ex %1").arg(id));
-        m_deCasteljau->fitView();
-        setAllDegrees(false);
-        setDegree(static_cast<int>(example.points.size()) - 1);
-        setT(0.5);
-        emit statusMessage(tr("Ex %1: the curve written in the Bernstein basis is in the panel on the right.").arg(id));
+        // The points and t are the De Casteljau tab's (one history for both tabs): the status
+        // bar says so, as for every example that changes another tab than the one shown.
+        m_undo->beginMacro(tr("Load Ex %1").arg(id));
+        m_deCasteljau->loadCurve(toDouble(example.points), tr("Load Ex %1").arg(id));
+        userChangedView({static_cast<int>(example.points.size()) - 1, false}, tr("Load Ex %1").arg(id));
+        m_undo->endMacro();
+        emit statusMessage(tr("Ex %1: the curve written in the Bernstein basis is in the panel on the right. Its "
+                              "control points are now the De Casteljau tab's too (Ctrl+Z on either tab gives the old ones back).")
+                               .arg(id));
         return true;
     }
     return false;

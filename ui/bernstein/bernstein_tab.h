@@ -6,8 +6,8 @@
 /// symmetry and Lemma 2.1, and the weights B_i^n(t) that Def 2.6 applies to the De
 /// Casteljau tab's control points at the shared parameter t.
 ///
-/// Settings (degree, mode) are not undoable: this tab's QUndoStack stays empty. Loading
-/// Ex 2.5 or Ex 2.6 changes the De Casteljau tab's points, one step on that tab's stack.
+/// The tab shares the De Casteljau tab's history (one curve, one t): its degree, mode and t
+/// are steps on it, and loading Ex 2.5 or Ex 2.6 (the points, t and the degree) is one step.
 
 #include "core/curves/bezier/bernstein_properties.h"
 #include "ui/common/plot_drawable.h"
@@ -16,6 +16,7 @@
 #include <QString>
 
 #include <memory>
+#include <utility>
 
 class QCheckBox;
 class QCPBars;
@@ -92,6 +93,14 @@ private:
     void updateChecks();
     void updateExactPanel();
     void applyPlotStyle();
+    /// What the document keeps of this tab besides t: the degree and the all-degrees view.
+    using View = std::pair<int, bool>;
+    View view() const { return {m_degree, m_allDegrees}; }
+    void applyView(const View& v);
+    /// The user's changes: each is one undo step on this tab (docs/tabs.md, "Undo").
+    void userChangedView(const View& after, const QString& undoText, int mergeId = -1);
+    void userMovedT(double t, int mergeId);
+    int plotDragMergeId() const;
     void plotMouseMove(QMouseEvent* event);
     void plotMousePress(QMouseEvent* event);
 
@@ -117,6 +126,7 @@ private:
     bool m_allDegrees = false;
     bool m_presentation = false;
     bool m_dragging = false;
+    int m_plotDrags = 0; ///< drags of t on the basis plot so far: one drag is one undo step
     BernsteinChecks m_checks;
 };
 

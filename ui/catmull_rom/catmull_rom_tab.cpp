@@ -459,10 +459,10 @@ void CatmullRomTab::setSelectedTension(int index)
 {
     if (index < 0 || index >= static_cast<int>(m_settings.taus.size()) || index == m_settings.selectedTau)
         return;
-    // Choosing which τ to look at is not an edit: no undo step.
-    m_settings.selectedTau = index;
-    syncControls();
-    recompute();
+    // The document keeps which τ is selected (the slider edits it): one undo step.
+    CatmullRomSettings after = m_settings;
+    after.selectedTau = index;
+    changeSettings(after, tr("Select τ = %1").arg(tauString(after.taus[static_cast<std::size_t>(index)])));
 }
 
 void CatmullRomTab::sliderMoved(int value)

@@ -85,11 +85,19 @@ DeCasteljauParameterControl::DeCasteljauParameterControl(QWidget* parent)
     layout->addWidget(m_spin);
     connect(m_slider, &QSlider::valueChanged, this, &DeCasteljauParameterControl::fromSlider);
     connect(m_spin, &QDoubleSpinBox::valueChanged, this, &DeCasteljauParameterControl::fromSpinBox);
+    connect(m_slider, &QSlider::sliderReleased, this, [this] { ++m_gesture; });
+    connect(m_spin, &QDoubleSpinBox::editingFinished, this, [this] { ++m_gesture; });
     setValue(m_value);
     retranslate();
 }
 
 QDoubleSpinBox* DeCasteljauParameterControl::spinBox() const { return m_spin; }
+
+int DeCasteljauParameterControl::gestureMergeId() const
+{
+    constexpr int kBase = 0x74000000; // "t": far from the tabs' other merge ids
+    return kBase + (m_gesture & 0xffff);
+}
 
 void DeCasteljauParameterControl::retranslate()
 {

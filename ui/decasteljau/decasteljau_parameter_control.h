@@ -28,6 +28,11 @@ public:
     QSlider* slider() const { return m_slider; }
     QDoubleSpinBox* spinBox() const;
 
+    /// The undo merge id of the current gesture: the moves of one slider drag (or one run of
+    /// arrow keys, or one spin box held down) share it and make one undo step; releasing the
+    /// slider or finishing a typed value starts a new gesture with a new id.
+    int gestureMergeId() const;
+
 signals:
     /// The user moved the slider or typed a value.
     void valueChanged(double t);
@@ -40,6 +45,7 @@ private:
     QSlider* m_slider;
     ParameterSpinBox* m_spin;
     double m_value = 0.5;
+    int m_gesture = 0;
 };
 
 } // namespace granota::ui

@@ -15,6 +15,7 @@
 #include "ui/common/point_editor.h"
 #include "ui/common/point_extent.h"
 #include "ui/common/point_table.h"
+#include "ui/common/value_command.h"
 #include "ui/shell/tikz_writer.h"
 
 #include <QCheckBox>
@@ -256,23 +257,26 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent)
     connect(m_editor, &PointEditor::pointsChanged, this, &DeCasteljauTab::pointsChanged);
     connect(m_editor, &PointEditor::message, this, &TabPage::statusMessage);
     connect(m_table, &PointTable::message, this, &TabPage::statusMessage);
-    connect(m_parameter, &DeCasteljauParameterControl::valueChanged, this, [this](double t) {
-        m_t = t;
-        parameterChanged();
-        if (!isPlaying())
-            emit documentChanged();
-    });
+    connect(m_parameter, &DeCasteljauParameterControl::valueChanged, this, &DeCasteljauTab::userMovedT);
     connect(m_play, &QToolButton::toggled, this, &DeCasteljauTab::setPlaying);
     connect(m_timer, &QTimer::timeout, this, &DeCasteljauTab::advanceAnimation);
-    connect(m_samplesBox, &QSpinBox::valueChanged, this, &DeCasteljauTab::setSamples);
+    connect(m_samplesBox, &QSpinBox::valueChanged, this, &DeCasteljauTab::userSetSamples);
     connect(m_raise, &QPushButton::clicked, this, &DeCasteljauTab::raiseDegree);
-    connect(m_construction, &QCheckBox::toggled, this, &DeCasteljauTab::setConstructionVisible);
-    connect(m_steps, &QCheckBox::toggled, this, &DeCasteljauTab::setStepByStep);
-    connect(m_tangent, &QCheckBox::toggled, this, &DeCasteljauTab::setTangentVisible);
-    connect(m_split, &QCheckBox::toggled, this, &DeCasteljauTab::setSplitVisible);
+    connect(m_construction, &QCheckBox::toggled, this,
+            [this](bool on) { userToggled(m_showConstruction, m_construction, on, tr("Construction")); });
+    connect(m_steps, &QCheckBox::toggled, this,
+            [this](bool on) { userToggled(m_showSteps, m_steps, on, tr("Step by step")); });
+    connect(m_tangent, &QCheckBox::toggled, this,
+            [this](bool on) { userToggled(m_showTangent, m_tangent, on, tr("Tangent")); });
+    connect(m_split, &QCheckBox::toggled, this, [this](bool on) { userToggled(m_showSplit, m_split, on, tr("Split at t")); });
     connect(m_snap, &QCheckBox::toggled, this, [this](bool on) {
-        m_editor->setSnapEnabled(on);
-        emit documentChanged();
+        auto apply = [this](bool v) {
+            const QSignalBlocker block(m_snap);
+            m_snap->setChecked(v);
+            m_editor->setSnapEnabled(v);
+            emit documentChanged();
+        };
+        m_undo->push(new ValueCommand<bool>(apply, !on, on, tr("Snap to grid")));
     });
 
     m_editor->applyPoints(defaultPoints());
@@ -498,6 +502,57 @@ void DeCasteljauTab::setToggle(bool& flag, QCheckBox* box, bool on)
     pointsChanged(); // recomputes what the toggle needs (step curves, split list in the panel)
 }
 
+void DeCasteljauTab::pushT(double before, double after, int mergeId, const QString& undoText)
+{
+    if (before == after)
+        return;
+    auto apply = [this](double v) {
+        setT(v);
+        emit documentChanged();
+    };
+    m_undo->push(new ValueCommand<double>(apply, before, after, undoText, mergeId,
+                                          {/*dropWhenUnchanged=*/true, /*appliedAlready=*/true}));
+    emit documentChanged();
+}
+
+void DeCasteljauTab::userMovedT(double t)
+{
+    const double before = m_t;
+    m_t = t;
+    parameterChanged();
+    if (!isPlaying()) // while playing, Pause makes the step
+        pushT(before, m_t, m_parameter->gestureMergeId(), tr("Move t"));
+}
+
+void DeCasteljauTab::userToggled(bool& flag, QCheckBox* box, bool on, const QString& undoText)
+{
+    if (flag == on)
+        return;
+    auto apply = [this, &flag, box](bool v) {
+        setToggle(flag, box, v);
+        emit documentChanged();
+    };
+    setToggle(flag, box, on);
+    m_undo->push(new ValueCommand<bool>(apply, !on, on, undoText, -1, {false, /*appliedAlready=*/true}));
+    emit documentChanged();
+}
+
+void DeCasteljauTab::userSetSamples(int part)
+{
+    const int before = m_samples;
+    setSamples(part);
+    if (m_samples == before)
+        return;
+    auto apply = [this](int v) {
+        setSamples(v);
+        emit documentChanged();
+    };
+    constexpr int kSamplesMergeId = 0x44430001; // "DC": a spin box held down is one step
+    m_undo->push(new ValueCommand<int>(apply, before, m_samples, tr("Samples: %1").arg(m_samples), kSamplesMergeId,
+                                       {true, true}));
+    emit documentChanged();
+}
+
 void DeCasteljauTab::setConstructionVisible(bool on) { setToggle(m_showConstruction, m_construction, on); }
 void DeCasteljauTab::setStepByStep(bool on) { setToggle(m_showSteps, m_steps, on); }
 void DeCasteljauTab::setTangentVisible(bool on) { setToggle(m_showTangent, m_tangent, on); }
@@ -507,10 +562,13 @@ bool DeCasteljauTab::isPlaying() const { return m_timer->isActive(); }
 
 void DeCasteljauTab::setPlaying(bool on)
 {
-    if (on && !m_timer->isActive())
+    if (on && !m_timer->isActive()) {
+        m_playStartT = m_t;
         m_timer->start();
-    else if (!on)
+    } else if (!on && m_timer->isActive()) {
         m_timer->stop();
+        pushT(m_playStartT, m_t, -1, tr("Play t"));
+    }
     if (m_play->isChecked() != on) {
         const QSignalBlocker block(m_play);
         m_play->setChecked(on);
@@ -758,6 +816,7 @@ bool DeCasteljauTab::loadSettings(const QJsonObject& state, const std::vector<Po
     if (!ok)
         return fail(tr("A De Casteljau display option is not true or false."));
 
+    m_playStartT = m_t; // a document replaces t: stopping the animation is no step of its own
     setPlaying(false);
     m_showConstruction = construction.value_or(true);
     m_showSteps = steps.value_or(false);
@@ -785,14 +844,24 @@ bool DeCasteljauTab::loadSettings(const QJsonObject& state, const std::vector<Po
     return true;
 }
 
+void DeCasteljauTab::loadCurve(const std::vector<Point>& points, const QString& undoText)
+{
+    setPlaying(false);
+    m_undo->beginMacro(undoText);
+    m_editor->setPoints(points, undoText);
+    const double before = m_t;
+    setT(0.5);
+    pushT(before, m_t, -1, undoText);
+    m_undo->endMacro();
+    fitView();
+}
+
 bool DeCasteljauTab::loadExample(const granota::WorkedExample& example)
 {
     if (example.kind != "bezier" || example.points.empty())
         return false;
     const QString id = QString::fromStdString(example.id);
-    m_editor->setPoints(toDouble(example.points), tr("Load Ex %1").arg(id));
-    fitView();
-    setT(0.5);
+    loadCurve(toDouble(example.points), tr("Load Ex %1").arg(id));
     emit statusMessage(tr("Ex %1: the tables of the thesis are in the panel on the right at t = 1/2.").arg(id));
     return true;
 }

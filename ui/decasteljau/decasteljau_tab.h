@@ -60,6 +60,10 @@ public:
     /// Degree elevation: one control point more, the same curve (undoable).
     void raiseDegree();
 
+    /// Loads a worked example's curve: its points, the view around them and t = 1/2, as one
+    /// undo step named `undoText` on this tab (also when another tab loads it: Ex 2.5).
+    void loadCurve(const std::vector<Point>& points, const QString& undoText);
+
     /// The De Casteljau table at the current t (every level P_i^r(t)).
     const DeCasteljauTable<double>& table() const { return m_levels; }
     /// The sampled curve (samples() + 1 points).
@@ -97,6 +101,12 @@ private:
     void updateWarning();
     void advanceAnimation();
     void setToggle(bool& flag, QCheckBox* box, bool on);
+    /// The user's changes (docs/tabs.md, "Undo"): each is one undo step that gives the
+    /// document's value back; the programmatic setters above push nothing.
+    void userMovedT(double t);
+    void userToggled(bool& flag, QCheckBox* box, bool on, const QString& undoText);
+    void userSetSamples(int part);
+    void pushT(double before, double after, int mergeId, const QString& undoText);
 
     QSplitter* m_mainSplitter = nullptr;
     QSplitter* m_sideSplitter = nullptr;
@@ -118,6 +128,7 @@ private:
     void schedulePanel();
 
     double m_t = 0.5;
+    double m_playStartT = 0.5; ///< where t was when Play was pressed: Pause makes one step from there
     int m_samples = 200;
     bool m_showConstruction = true;
     bool m_showSteps = false;

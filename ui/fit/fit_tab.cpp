@@ -306,9 +306,20 @@ void FitTab::buildUi()
         after.iterations = n;
         changeSettings(after, tr("Parameter correction"), CorrectionField);
     });
-    connect(m_showMatrices, &QCheckBox::toggled, this, [this] {
+    connect(m_showMatrices, &QCheckBox::toggled, this, [this](bool on) {
         updateExact();
         emit documentChanged();
+        if (m_loading)
+            return; // a document's value: no step
+        auto apply = [this](bool v) {
+            {
+                const QSignalBlocker block(m_showMatrices);
+                m_showMatrices->setChecked(v);
+            }
+            updateExact();
+            emit documentChanged();
+        };
+        m_undo->push(new ValueCommand<bool>(apply, !on, on, tr("Show matrices"), -1, {false, /*appliedAlready=*/true}));
     });
     connect(m_import, &QPushButton::clicked, this, &FitTab::importDialog);
 }
@@ -842,8 +853,8 @@ bool FitTab::loadSettings(const QJsonObject& state, const std::vector<Point>& po
     m_loading = true;
     m_settings = s;
     m_editor->applyPoints(points); // refits once, with the new settings
-    m_loading = false;
     m_showMatrices->setChecked(matrices.toBool(false));
+    m_loading = false;
     return true;
 }
 

@@ -192,9 +192,14 @@ FrogTab::FrogTab(QWidget* parent)
     connect(m_step, &QPushButton::clicked, this, &FrogTab::stepOnce);
     connect(m_reset, &QPushButton::clicked, this, &FrogTab::reset);
     connect(m_fit, &QRadioButton::toggled, this, [this](bool fit) {
-        m_canvas->setBezierOutline(fit ? FrogCanvas::BezierOutline::Fit : FrogCanvas::BezierOutline::Precomputed);
-        retranslate();
-        emit documentChanged();
+        auto apply = [this](bool on) {
+            const QSignalBlocker b1(m_fit), b2(m_precomputed);
+            (on ? m_fit : m_precomputed)->setChecked(true);
+            m_canvas->setBezierOutline(on ? FrogCanvas::BezierOutline::Fit : FrogCanvas::BezierOutline::Precomputed);
+            retranslate();
+            emit documentChanged();
+        };
+        m_undo->push(new ValueCommand<bool>(apply, !fit, fit, (fit ? m_fit : m_precomputed)->text()));
     });
     connect(m_canvas, &FrogCanvas::fitCostChanged, this, [this](double us) {
         if (m_fit->isChecked())
@@ -256,6 +261,14 @@ QString FrogTab::sceneLoadError(const QString& name, const std::string& coreMess
 
 bool FrogTab::setScene(const QString& name, QString* error)
 {
+    if (!switchScene(name, error))
+        return false;
+    m_undo->clear(); // a scene set from outside (a document, the command line) starts a history
+    return true;
+}
+
+bool FrogTab::switchScene(const QString& name, QString* error)
+{
     auto spec = loadScene(name.toStdString());
     if (!spec) {
         setError(error, sceneLoadError(name, spec.error().message));
@@ -269,7 +282,6 @@ bool FrogTab::setScene(const QString& name, QString* error)
         solver = SolverKind::Stable;
     if (!rebuild(*spec, solver, error))
         return false;
-    m_undo->clear();
     m_note->hide();
     showScene();
     emit documentChanged();
@@ -286,20 +298,51 @@ bool FrogTab::setSolver(SolverKind solver, QString* error)
     return true;
 }
 
+QJsonObject FrogTab::sceneState() const
+{
+    const QJsonObject state = saveState();
+    QJsonObject scene;
+    for (const char* key : {"scene", "solver", "params"})
+        scene.insert(QLatin1String(key), state.value(QLatin1String(key)));
+    return scene;
+}
+
+void FrogTab::pushSceneStep(const QJsonObject& before, const QString& undoText)
+{
+    const QJsonObject after = sceneState();
+    if (after == before)
+        return;
+    auto apply = [this](const QJsonObject& state) {
+        QString error;
+        if (!applyState(state, &error)) // states this tab wrote itself: cannot be refused
+            showRefusal(error);
+        emit documentChanged();
+    };
+    m_undo->push(new ValueCommand<QJsonObject>(apply, before, after, undoText, -1, {false, /*appliedAlready=*/true}));
+}
+
 void FrogTab::sceneChosen(int index)
 {
+    const QJsonObject before = sceneState();
     QString error;
-    if (!setScene(m_sceneCombo->itemData(index).toString(), &error))
+    if (!switchScene(m_sceneCombo->itemData(index).toString(), &error)) {
+        showScene();
         showRefusal(error);
+        return;
+    }
+    pushSceneStep(before, tr("Stage: %1").arg(m_sceneCombo->itemText(index)));
 }
 
 void FrogTab::solverChosen(int index)
 {
+    const QJsonObject before = sceneState();
     QString error;
     if (!setSolver(index == 1 ? SolverKind::Stable : SolverKind::Seed, &error)) {
         showScene();
         showRefusal(error);
+        return;
     }
+    pushSceneStep(before, tr("Solver: %1").arg(m_solverCombo->itemText(index)));
 }
 
 void FrogTab::reset()
@@ -410,8 +453,19 @@ void FrogTab::stepOnce()
     m_canvas->step();
 }
 
-void FrogTab::overlaysChanged()
+FrogTab::OverlayFlags FrogTab::overlayFlags() const
 {
+    return {m_showVertices->isChecked(), m_showSprings->isChecked(),    m_showArea->isChecked(),
+            m_showVelocities->isChecked(), m_showReadouts->isChecked(), m_showFrameTime->isChecked()};
+}
+
+void FrogTab::applyOverlayFlags(const OverlayFlags& flags)
+{
+    QCheckBox* boxes[] = {m_showVertices, m_showSprings, m_showArea, m_showVelocities, m_showReadouts, m_showFrameTime};
+    for (std::size_t i = 0; i < flags.size(); ++i) {
+        const QSignalBlocker block(boxes[i]);
+        boxes[i]->setChecked(flags[i]);
+    }
     FrogCanvas::Overlays o;
     o.vertices = m_showVertices->isChecked();
     o.springs = m_showSprings->isChecked();
@@ -421,6 +475,18 @@ void FrogTab::overlaysChanged()
     o.frameTime = m_showFrameTime->isChecked();
     m_canvas->setOverlays(o);
     emit documentChanged();
+}
+
+void FrogTab::overlaysChanged()
+{
+    auto* box = qobject_cast<QCheckBox*>(sender());
+    OverlayFlags before = overlayFlags();
+    QCheckBox* boxes[] = {m_showVertices, m_showSprings, m_showArea, m_showVelocities, m_showReadouts, m_showFrameTime};
+    for (std::size_t i = 0; i < before.size(); ++i)
+        if (boxes[i] == box)
+            before[i] = !before[i]; // the box has toggled already
+    m_undo->push(new ValueCommand<OverlayFlags>([this](const OverlayFlags& f) { applyOverlayFlags(f); }, before,
+                                                overlayFlags(), box ? box->text().remove(QLatin1Char('&')) : tr("Overlays")));
 }
 
 void FrogTab::setPresentation(bool on) { m_canvas->setPresentation(on); }
@@ -543,6 +609,14 @@ bool FrogTab::loadState(const QJsonObject& state, QString* error)
 {
     if (state.isEmpty())
         return true; // a document without the frog's state: keep the tab as it is
+    if (!applyState(state, error))
+        return false;
+    m_undo->clear();
+    return true;
+}
+
+bool FrogTab::applyState(const QJsonObject& state, QString* error)
+{
     const QString name = state.value(QStringLiteral("scene")).toString();
     auto spec = loadScene(name.toStdString());
     if (!spec) {
@@ -641,7 +715,6 @@ bool FrogTab::loadState(const QJsonObject& state, QString* error)
         m_pause->setChecked(paused);
         m_canvas->setRunning(!paused);
     }
-    m_undo->clear();
     m_note->hide();
     showScene();
     return true;

@@ -71,6 +71,19 @@ private:
     void sceneChosen(int index);
     void solverChosen(int index);
     void overlaysChanged();
+    /// loadState without clearing the undo history: what an undo step of the stage or the
+    /// solver applies. Keys the state lacks keep their current values.
+    bool applyState(const QJsonObject& state, QString* error);
+    /// The stage, the solver and the stage's parameters: what choosing a stage or a solver
+    /// changes, and one undo step gives back.
+    QJsonObject sceneState() const;
+    void pushSceneStep(const QJsonObject& before, const QString& undoText);
+    /// The scene `name` on the current solver (or the stable one, for collisions).
+    bool switchScene(const QString& name, QString* error);
+    /// The overlay boxes' states as an undo step restores them.
+    using OverlayFlags = std::array<bool, 6>;
+    OverlayFlags overlayFlags() const;
+    void applyOverlayFlags(const OverlayFlags& flags);
     void setPaused(bool paused);
     void stepOnce();
     void showRefusal(const QString& message);

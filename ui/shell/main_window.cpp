@@ -141,11 +141,12 @@ bool MainWindow::loadExample(const QString& id)
     if (!example)
         return false;
     TabPage* page = tab(QString::fromStdString(example->tab));
-    if (!page || !page->loadExample(*example))
+    if (!page)
         return false;
+    // The tab first, so that its hint does not replace what the example says about itself.
     showTab(page->key());
     showMessage(tr("Loaded Ex %1 of the thesis.").arg(id));
-    return true;
+    return page->loadExample(*example); // its own message, when it has one, follows
 }
 
 // ---------------------------------------------------------------- actions and menus

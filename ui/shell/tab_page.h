@@ -30,6 +30,12 @@ public:
         : QWidget(parent), m_undo(new QUndoStack(this)), m_key(std::move(key)), m_title(title)
     {
     }
+    /// A tab that shows another tab's data shares its history (`sharedUndo`, owned by that
+    /// tab): the Bernstein tab and the De Casteljau tab, one curve and one t.
+    TabPage(QString key, const char* title, QUndoStack* sharedUndo, QWidget* parent)
+        : QWidget(parent), m_undo(sharedUndo), m_key(std::move(key)), m_title(title)
+    {
+    }
 
     /// The key (docs/classroom.md) (`--tab`): decasteljau, bernstein, fit, catmull-rom, frog.
     QString key() const { return m_key; }
@@ -52,6 +58,7 @@ public:
     }
 
     /// The undo stack of the tab's edits (the main window's Edit menu follows the current tab).
+    /// Every change the document keeps is one step on it (docs/tabs.md, "Undo").
     QUndoStack* undoStack() const { return m_undo; }
     /// The view that File ▸ Export draws (the main canvas or plot of the tab, setExportView()).
     Drawable* exportView() const { return m_exportView; }
@@ -82,7 +89,7 @@ protected:
         QWidget::changeEvent(event);
     }
 
-    QUndoStack* const m_undo; ///< the tab's edits (its parent is the tab)
+    QUndoStack* const m_undo; ///< the tab's edits (its parent is the tab, or the tab it shares it with)
 
 private:
     const QString m_key;

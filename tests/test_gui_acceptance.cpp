@@ -1,0 +1,283 @@
+// The classroom pass (docs/classroom.md): what a teacher and a student do in the shown main
+// window, driven as they drive it — with the widgets' own signals as a mouse gives them and
+// real key events on the top-level window, so that shortcuts, focus and menus are exercised
+// as a user's keyboard would. The same executable runs offscreen and, through
+// tests/real_window/run.sh, under Xvfb with a window manager.
+#include "ui/bernstein/bernstein_tab.h"
+#include "ui/decasteljau/decasteljau_parameter_control.h"
+#include "ui/decasteljau/decasteljau_tab.h"
+#include "ui/shell/language.h"
+#include "ui/shell/main_window.h"
+#include "ui/shell/tab_page.h"
+
+#include "main_window_steps.h"
+
+#include <QAbstractButton>
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QListWidget>
+#include <QPointer>
+#include <QJsonObject>
+#include <QSlider>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QTest>
+#include <QToolButton>
+#include <QUndoStack>
+
+#include <functional>
+
+using granota::ui::BernsteinTab;
+using granota::ui::DeCasteljauTab;
+using granota::ui::MainWindow;
+using granota::ui::TabPage;
+
+namespace {
+
+/// The check box of `page` whose (English) text is `text`, or nullptr.
+QCheckBox* checkBox(QWidget* page, const QString& text)
+{
+    for (QCheckBox* box : page->findChildren<QCheckBox*>())
+        if (box->text().remove(QLatin1Char('&')) == text)
+            return box;
+    return nullptr;
+}
+
+/// A change of a setting as the user makes it on a tab, by name.
+struct SettingChange {
+    const char* tab;
+    const char* name;
+    std::function<bool(TabPage*)> change; ///< false when the control was not found
+};
+
+std::vector<SettingChange> settingChanges()
+{
+    auto toggle = [](const char* text) {
+        return [text](TabPage* page) {
+            QCheckBox* box = checkBox(page, QString::fromUtf8(text));
+            if (!box)
+                return false;
+            box->click();
+            return true;
+        };
+    };
+    auto moveT = [](TabPage* page) {
+        QSlider* slider = page->findChild<granota::ui::DeCasteljauParameterControl*>()->slider();
+        slider->triggerAction(QAbstractSlider::SliderPageStepAdd);
+        return true;
+    };
+    auto stepSpin = [](int nth) {
+        return [nth](TabPage* page) {
+            const auto boxes = page->findChildren<QSpinBox*>();
+            if (boxes.size() <= nth)
+                return false;
+            boxes[nth]->stepUp();
+            return true;
+        };
+    };
+    return {
+        {"decasteljau", "t", moveT},
+        {"decasteljau", "samples", [](TabPage* page) {
+             for (QSpinBox* box : page->findChildren<QSpinBox*>())
+                 if (box->maximum() > 100) { // the samples box (t's box is a double spin box)
+                     box->stepUp();
+                     return true;
+                 }
+             return false;
+         }},
+        {"decasteljau", "construction", toggle("Construction")},
+        {"decasteljau", "step by step", toggle("Step by step")},
+        {"decasteljau", "tangent", toggle("Tangent")},
+        {"decasteljau", "split", toggle("Split at t")},
+        {"decasteljau", "snap", toggle("Snap to grid")},
+        {"bernstein", "degree", stepSpin(0)},
+        {"bernstein", "all degrees", toggle("All degrees up to n")},
+        {"bernstein", "t", moveT},
+    };
+}
+
+template <class W>
+QList<QPointer<W>> guarded(const QList<W*>& widgets)
+{
+    QList<QPointer<W>> out;
+    for (W* w : widgets)
+        out << QPointer<W>(w);
+    return out;
+}
+
+} // namespace
+
+class TestGuiAcceptance : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        QApplication::setApplicationName(QStringLiteral("granota-test-acceptance"));
+        granota::ui::setLanguage(QStringLiteral("en"), false); // the controls are found by their English text
+    }
+
+    // Item 10: every change a saved document keeps is one undo step on the tab it changes,
+    // and Ctrl+Z on that tab gives the saved state back exactly; Ctrl+Shift+Z redoes it.
+    void everySavedSettingIsOneUndoStep_data()
+    {
+        QTest::addColumn<int>("index");
+        const auto changes = settingChanges();
+        for (int i = 0; i < static_cast<int>(changes.size()); ++i)
+            QTest::newRow(qPrintable(QStringLiteral("%1 %2").arg(QLatin1String(changes[i].tab),
+                                                                  QLatin1String(changes[i].name))))
+                << i;
+    }
+    void everySavedSettingIsOneUndoStep()
+    {
+        QFETCH(int, index);
+        const SettingChange change = settingChanges()[static_cast<std::size_t>(index)];
+        MainWindow window;
+        QVERIFY(showOnTab(window, QString::fromLatin1(change.tab)));
+        TabPage* page = window.currentTab();
+        QUndoStack* stack = page->undoStack();
+        const int steps = stack->count();
+        const QJsonObject saved = page->saveState();
+        QVERIFY2(change.change(page), "the control was not found");
+        const QJsonObject changed = page->saveState();
+        QVERIFY2(changed != saved, "the change does not reach the document");
+        QCOMPARE(stack->count(), steps + 1);
+        QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(page->saveState(), saved);
+        QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QCOMPARE(page->saveState(), changed);
+    }
+
+    // Item 10, for every tab at once: each check box, radio button and choice list whose
+    // change the document keeps is one undo step, given back exactly by Ctrl+Z. The only
+    // exception is the Frog tab's Pause (the clock of a running simulation, docs/tabs.md).
+    void everyToggleAndChoiceIsOneUndoStep_data()
+    {
+        QTest::addColumn<QString>("tab");
+        for (const char* key : {"decasteljau", "bernstein", "fit", "catmull-rom", "frog"})
+            QTest::newRow(key) << QString::fromLatin1(key);
+    }
+    void everyToggleAndChoiceIsOneUndoStep()
+    {
+        QFETCH(QString, tab);
+        MainWindow window;
+        QVERIFY(showOnTab(window, tab));
+        TabPage* page = window.currentTab();
+        QUndoStack* stack = page->undoStack();
+        QStringList checked, failures;
+        auto probe = [&](const QString& what, const std::function<void()>& change) {
+            const QJsonObject saved = page->saveState();
+            const int steps = stack->index(); // the steps Ctrl+Z can take back
+            change();
+            const QJsonObject changed = page->saveState();
+            if (changed == saved)
+                return; // not something the document keeps
+            checked << what;
+            if (stack->index() != steps + 1) {
+                failures << QStringLiteral("%1: %2 undo steps").arg(what).arg(stack->index() - steps);
+                return;
+            }
+            QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier);
+            if (page->saveState() != saved)
+                failures << what + QStringLiteral(": Ctrl+Z does not give the document back");
+            QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+            if (page->saveState() != changed)
+                failures << what + QStringLiteral(": Ctrl+Shift+Z does not redo it");
+            stack->undo();
+        };
+        // A change may rebuild part of the tab (a Frog stage has its own parameter fields):
+        // the controls are held as QPointers, and those gone are skipped.
+        for (QPointer<QAbstractButton> button : guarded(page->findChildren<QAbstractButton*>())) {
+            if (!button || !button->isCheckable() || !button->isEnabled() || !button->isVisibleTo(&window)
+                || button->objectName() == QLatin1String("frogPause"))
+                continue;
+            probe(button->text(), [button] { button->click(); });
+        }
+        for (QPointer<QComboBox> combo : guarded(page->findChildren<QComboBox*>())) {
+            if (!combo || !combo->isEnabled() || !combo->isVisibleTo(&window) || combo->count() < 2)
+                continue;
+            const int next = (combo->currentIndex() + 1) % combo->count();
+            probe(combo->itemText(next), [combo, next] {
+                combo->setCurrentIndex(next);
+                emit combo->activated(next); // as a choice from the list does
+            });
+        }
+        for (QPointer<QListWidget> list : guarded(page->findChildren<QListWidget*>())) {
+            if (!list || !list->isEnabled() || !list->isVisibleTo(&window) || list->count() < 2)
+                continue;
+            probe(QStringLiteral("row of %1").arg(list->objectName()),
+                  [list] { list->setCurrentRow((list->currentRow() + 1) % list->count()); });
+        }
+        QVERIFY2(!checked.isEmpty(), "no control of the tab changes its document");
+        QVERIFY2(failures.isEmpty(), qPrintable(failures.join(QStringLiteral("; "))));
+    }
+
+    // Item 10: a slider dragged in one gesture is one step, however many values it passed.
+    void oneDragOfTIsOneStep()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        auto* tab = qobject_cast<DeCasteljauTab*>(window.currentTab());
+        QSlider* slider = tab->parameterControl()->slider();
+        const double t0 = tab->t();
+        const int steps = tab->undoStack()->count();
+        for (int gesture = 0; gesture < 2; ++gesture) {
+            slider->setSliderDown(true);
+            for (int i = 0; i < 5; ++i)
+                slider->triggerAction(QAbstractSlider::SliderSingleStepAdd);
+            slider->setSliderDown(false);
+        }
+        QCOMPARE(tab->undoStack()->count(), steps + 2);
+        tab->undoStack()->undo();
+        tab->undoStack()->undo();
+        QCOMPARE(tab->t(), t0);
+    }
+
+    // Item 10: playing t and pausing is one step from where it started to where it stopped.
+    void playingAndPausingIsOneStep()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        auto* tab = qobject_cast<DeCasteljauTab*>(window.currentTab());
+        const double t0 = tab->t();
+        const int steps = tab->undoStack()->count();
+        tab->setPlaying(true);
+        QTRY_VERIFY(tab->t() != t0);
+        tab->setPlaying(false);
+        const double stopped = tab->t();
+        QCOMPARE(tab->undoStack()->count(), steps + 1);
+        tab->undoStack()->undo();
+        QCOMPARE(tab->t(), t0);
+        tab->undoStack()->redo();
+        QCOMPARE(tab->t(), stopped);
+    }
+
+    // Item 10: loading an example is one step on each tab it changes, and when it changes
+    // another tab than the one shown the status bar says which.
+    void anExampleSaysWhichOtherTabItChanged()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("bernstein")));
+        TabPage* deCasteljau = window.tab(QStringLiteral("decasteljau"));
+        auto* bernstein = qobject_cast<BernsteinTab*>(window.tab(QStringLiteral("bernstein")));
+        const QJsonObject deCasteljauBefore = deCasteljau->saveState();
+        const QJsonObject bernsteinBefore = bernstein->saveState();
+        const int deCasteljauSteps = deCasteljau->undoStack()->count();
+        QVERIFY(window.loadExample(QStringLiteral("2.5")));
+        QCOMPARE(window.currentTab(), bernstein);
+        const QString message = window.statusBar()->currentMessage();
+        QVERIFY2(message.contains(QStringLiteral("De Casteljau")), qPrintable(message));
+        QVERIFY2(message.contains(QStringLiteral("2.5")), qPrintable(message));
+        // The two tabs show one curve at one t: they share one history, and the example is one
+        // step on it, which Ctrl+Z on the Bernstein tab takes back on both.
+        QCOMPARE(bernstein->undoStack(), deCasteljau->undoStack());
+        QCOMPARE(deCasteljau->undoStack()->count(), deCasteljauSteps + 1);
+        QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(bernstein->saveState(), bernsteinBefore);
+        QCOMPARE(deCasteljau->saveState(), deCasteljauBefore);
+    }
+};
+
+QTEST_MAIN(TestGuiAcceptance)
+#include "test_gui_acceptance.moc"
