@@ -324,6 +324,18 @@
     <context>
         <name>granota::ui::BernsteinTab</name>
         <message>
+            <source>Ex %1: the curve written in the Bernstein basis is in the panel on the right. Its control points are now the De Casteljau tab's too (Ctrl+Z on either tab gives the old ones back).</source>
+            <translation>Ex %1: la corba escrita en la base de Bernstein és al quadre de la dreta. Els seus punts de control ara també són els de la pestanya De Casteljau (Ctrl+Z en qualsevol de les dues torna els anteriors).</translation>
+        </message>
+        <message>
+            <source>Degree n = %1</source>
+            <translation>Grau n = %1</translation>
+        </message>
+        <message>
+            <source>Move t</source>
+            <translation>Mou t</translation>
+        </message>
+        <message>
             <location filename="../ui/bernstein_tab.cpp" line="326" />
             <source>At t = %1 the weights sum to %2.&lt;br&gt;Def 2.6: %3 = %4&lt;br&gt;De Casteljau: %5 = %6 (difference %7)</source>
             <translation>A t = %1 els pesos sumen %2.&lt;br&gt;Def 2.6: %3 = %4&lt;br&gt;De Casteljau: %5 = %6 (diferència %7)</translation>
@@ -509,6 +521,10 @@
     </context>
     <context>
         <name>granota::ui::CatmullRomTab</name>
+        <message>
+            <source>Select τ = %1</source>
+            <translation>Tria τ = %1</translation>
+        </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="286" />
             <source>Tensions τ (Def 2.8)</source>
@@ -871,6 +887,18 @@
     </context>
     <context>
         <name>granota::ui::DeCasteljauTab</name>
+        <message>
+            <source>Samples: %1</source>
+            <translation>Mostres: %1</translation>
+        </message>
+        <message>
+            <source>Play t</source>
+            <translation>Reprodueix t</translation>
+        </message>
+        <message>
+            <source>Move t</source>
+            <translation>Mou t</translation>
+        </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="502" />
             <source>Pause</source>
@@ -1238,6 +1266,10 @@
     </context>
     <context>
         <name>granota::ui::FitTab</name>
+        <message>
+            <source>Show matrices</source>
+            <translation>Mostra les matrius</translation>
+        </message>
         <message>
             <source>The fitting tab holds %1 data points; Granota reads at most %2.</source>
             <translation>La pestanya d'ajust té %1 punts de dades; el Granota en llegeix com a màxim %2.</translation>
@@ -2035,6 +2067,14 @@
     </context>
     <context>
         <name>granota::ui::FrogTab</name>
+        <message>
+            <source>Solver: %1</source>
+            <translation>Mètode: %1</translation>
+        </message>
+        <message>
+            <source>Stage: %1</source>
+            <translation>Etapa: %1</translation>
+        </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="229" />
             <location filename="../ui/frog_tab.cpp" line="560" />

@@ -324,6 +324,18 @@
     <context>
         <name>granota::ui::BernsteinTab</name>
         <message>
+            <source>Ex %1: the curve written in the Bernstein basis is in the panel on the right. Its control points are now the De Casteljau tab's too (Ctrl+Z on either tab gives the old ones back).</source>
+            <translation>Ex %1: the curve written in the Bernstein basis is in the panel on the right. Its control points are now the De Casteljau tab's too (Ctrl+Z on either tab gives the old ones back).</translation>
+        </message>
+        <message>
+            <source>Degree n = %1</source>
+            <translation>Degree n = %1</translation>
+        </message>
+        <message>
+            <source>Move t</source>
+            <translation>Move t</translation>
+        </message>
+        <message>
             <location filename="../ui/bernstein_tab.cpp" line="326" />
             <source>At t = %1 the weights sum to %2.&lt;br&gt;Def 2.6: %3 = %4&lt;br&gt;De Casteljau: %5 = %6 (difference %7)</source>
             <translation>At t = %1 the weights sum to %2.&lt;br&gt;Def 2.6: %3 = %4&lt;br&gt;De Casteljau: %5 = %6 (difference %7)</translation>
@@ -509,6 +521,10 @@
     </context>
     <context>
         <name>granota::ui::CatmullRomTab</name>
+        <message>
+            <source>Select τ = %1</source>
+            <translation>Select τ = %1</translation>
+        </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="286" />
             <source>Tensions τ (Def 2.8)</source>
@@ -871,6 +887,18 @@
     </context>
     <context>
         <name>granota::ui::DeCasteljauTab</name>
+        <message>
+            <source>Samples: %1</source>
+            <translation>Samples: %1</translation>
+        </message>
+        <message>
+            <source>Play t</source>
+            <translation>Play t</translation>
+        </message>
+        <message>
+            <source>Move t</source>
+            <translation>Move t</translation>
+        </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="502" />
             <source>Pause</source>
@@ -1238,6 +1266,10 @@
     </context>
     <context>
         <name>granota::ui::FitTab</name>
+        <message>
+            <source>Show matrices</source>
+            <translation>Show matrices</translation>
+        </message>
         <message>
             <source>The fitting tab holds %1 data points; Granota reads at most %2.</source>
             <translation>The fitting tab holds %1 data points; Granota reads at most %2.</translation>
@@ -2035,6 +2067,14 @@
     </context>
     <context>
         <name>granota::ui::FrogTab</name>
+        <message>
+            <source>Solver: %1</source>
+            <translation>Solver: %1</translation>
+        </message>
+        <message>
+            <source>Stage: %1</source>
+            <translation>Stage: %1</translation>
+        </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="229" />
             <location filename="../ui/frog_tab.cpp" line="560" />
