@@ -13,6 +13,10 @@
 
 namespace {
 
+/// A text of the command line, in the interface's language (translations/, context
+/// "granota::CommandLine").
+QString say(const char* text) { return QCoreApplication::translate("granota::CommandLine", text); }
+
 int fail(const QString& message)
 {
     QTextStream(stderr) << "error: " << message << '\n';
@@ -29,31 +33,47 @@ int main(int argc, char* argv[])
     QApplication::setApplicationVersion(QStringLiteral("1.0"));
     QApplication::setDesktopFileName(QStringLiteral("org.granota.Granota"));
 
+    // The language of the messages below, and of --help: the one asked for with --lang when
+    // it is one, else the saved or the desktop's (docs/classroom.md). Read before the parser,
+    // which needs its texts translated.
+    const QStringList arguments = QApplication::arguments();
+    QString asked;
+    for (int i = 1; i < arguments.size(); ++i) {
+        if (arguments[i] == QLatin1String("--lang") && i + 1 < arguments.size())
+            asked = arguments[i + 1];
+        else if (arguments[i].startsWith(QLatin1String("--lang=")))
+            asked = arguments[i].mid(7);
+    }
+    QString language = granota::ui::preferredLanguage();
+    granota::ui::setLanguage(granota::ui::availableLanguages().contains(asked) ? asked : language, false);
+
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Splines and soft bodies, for the classroom."));
-    parser.addHelpOption();
-    parser.addVersionOption();
-    QCommandLineOption tabOption(QStringLiteral("tab"), QStringLiteral("Open on tab KEY: decasteljau, bernstein, fit, catmull-rom, frog."),
+    parser.setApplicationDescription(say("Splines and soft bodies, for the classroom."));
+    const QCommandLineOption helpOption = parser.addHelpOption();
+    const QCommandLineOption versionOption = parser.addVersionOption();
+    QCommandLineOption tabOption(QStringLiteral("tab"), say("Open on tab KEY: decasteljau, bernstein, fit, catmull-rom, frog."),
                                  QStringLiteral("KEY"));
-    QCommandLineOption langOption(QStringLiteral("lang"), QStringLiteral("Interface language: ca or en."),
-                                  QStringLiteral("LANG"));
-    QCommandLineOption exampleOption(QStringLiteral("example"), QStringLiteral("Load worked example ID (2.1 … 2.13)."),
+    QCommandLineOption langOption(QStringLiteral("lang"), say("Interface language: ca or en."), QStringLiteral("LANG"));
+    QCommandLineOption exampleOption(QStringLiteral("example"), say("Load worked example ID (2.1 … 2.13)."),
                                      QStringLiteral("ID"));
-    QCommandLineOption sceneOption(QStringLiteral("scene"), QStringLiteral("Open the frog tab on scene NAME."),
-                                   QStringLiteral("NAME"));
-    QCommandLineOption presentOption(QStringLiteral("presentation"), QStringLiteral("Start in presentation mode."));
-    QCommandLineOption screenshotOption(QStringLiteral("screenshot"),
-                                        QStringLiteral("Render the window (1280x800) to FILE.png and exit."),
+    QCommandLineOption sceneOption(QStringLiteral("scene"), say("Open the frog tab on scene NAME."), QStringLiteral("NAME"));
+    QCommandLineOption presentOption(QStringLiteral("presentation"), say("Start in presentation mode."));
+    QCommandLineOption screenshotOption(QStringLiteral("screenshot"), say("Render the window (1280x800) to FILE.png and exit."),
                                         QStringLiteral("FILE"));
     parser.addOptions({tabOption, langOption, exampleOption, sceneOption, presentOption, screenshotOption});
-    parser.addPositionalArgument(QStringLiteral("document"), QStringLiteral("A .granota document to open."));
-    parser.process(app);
+    parser.addPositionalArgument(QStringLiteral("document"), say("A .granota document to open."));
+    // Bad arguments are errors as granota-cli's are (status 2, "error: "), in the language above.
+    if (!parser.parse(arguments))
+        return fail(parser.errorText());
+    if (parser.isSet(helpOption))
+        parser.showHelp(0);
+    if (parser.isSet(versionOption))
+        parser.showVersion();
 
-    QString language = granota::ui::preferredLanguage();
     if (parser.isSet(langOption)) {
         language = parser.value(langOption);
         if (!granota::ui::availableLanguages().contains(language))
-            return fail(QStringLiteral("unknown language '%1' (ca, en)").arg(language));
+            return fail(say("unknown language “%1” (ca, en)").arg(language));
     }
     const bool screenshot = parser.isSet(screenshotOption);
     // A screenshot is a one-off render: what it changes (the language it was asked for, the
@@ -62,7 +82,7 @@ int main(int argc, char* argv[])
     QTemporaryDir scratch;
     if (screenshot) {
         if (!scratch.isValid())
-            return fail(QStringLiteral("cannot make a scratch folder for the screenshot run"));
+            return fail(say("cannot make a scratch folder for the screenshot run"));
         QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, scratch.filePath(QStringLiteral("config")));
         QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, scratch.filePath(QStringLiteral("config")));
         qputenv("XDG_CONFIG_HOME", QFile::encodeName(scratch.filePath(QStringLiteral("config"))));
@@ -84,10 +104,9 @@ int main(int argc, char* argv[])
         window.showTab(QStringLiteral("frog"));
     }
     if (parser.isSet(exampleOption) && !window.loadExample(parser.value(exampleOption)))
-        return fail(QStringLiteral("unknown example '%1' (2.1 … 2.13)").arg(parser.value(exampleOption)));
+        return fail(say("unknown example “%1” (2.1 … 2.13)").arg(parser.value(exampleOption)));
     if (parser.isSet(tabOption) && !window.showTab(parser.value(tabOption)))
-        return fail(QStringLiteral("unknown tab '%1' (decasteljau, bernstein, fit, catmull-rom, frog)")
-                        .arg(parser.value(tabOption)));
+        return fail(say("unknown tab “%1” (decasteljau, bernstein, fit, catmull-rom, frog)").arg(parser.value(tabOption)));
 
     if (screenshot) {
         window.resize(1280, 800);
@@ -98,7 +117,7 @@ int main(int argc, char* argv[])
             QApplication::processEvents();
         const QString file = parser.value(screenshotOption);
         if (!window.grab().save(file, "PNG"))
-            return fail(QStringLiteral("cannot write '%1'").arg(file));
+            return fail(say("cannot write “%1”").arg(file));
         return 0;
     }
     if (parser.isSet(presentOption))

@@ -18,6 +18,9 @@
 #include <QComboBox>
 #include <QListWidget>
 #include <QPointer>
+#include <QProcess>
+#include <QProcessEnvironment>
+#include <QTemporaryDir>
 #include <QJsonObject>
 #include <QSlider>
 #include <QSpinBox>
@@ -276,6 +279,53 @@ private slots:
         QTest::keyClick(&window, Qt::Key_Z, Qt::ControlModifier);
         QCOMPARE(bernstein->saveState(), bernsteinBefore);
         QCOMPARE(deCasteljau->saveState(), deCasteljauBefore);
+    }
+
+    // Item 18: the desktop program's own command-line errors speak the interface's language
+    // (the one asked for with --lang, else the saved or the desktop's), exit with status 2 and
+    // start with "error: " as granota-cli's do; a bad option is one of them.
+    void commandLineErrorsSpeakTheLanguage_data()
+    {
+        QTest::addColumn<QStringList>("arguments");
+        QTest::addColumn<QString>("desktop");
+        QTest::addColumn<QString>("says");
+        QTest::newRow("tab, ca") << QStringList{"--lang", "ca", "--tab", "nowhere"} << "C.UTF-8" << "pestanya";
+        QTest::newRow("tab, en") << QStringList{"--lang", "en", "--tab", "nowhere"} << "ca_ES.UTF-8" << "unknown tab";
+        QTest::newRow("example, ca desktop") << QStringList{"--example", "9.9"} << "ca_ES.UTF-8" << "exemple";
+        QTest::newRow("language, ca desktop") << QStringList{"--lang", "xx"} << "ca_ES.UTF-8" << "idioma";
+        QTest::newRow("option, ca") << QStringList{"--lang=ca", "--bogus"} << "C.UTF-8" << "bogus";
+        QTest::newRow("missing value, ca") << QStringList{"--lang", "ca", "--tab"} << "C.UTF-8" << "tab";
+    }
+    void commandLineErrorsSpeakTheLanguage()
+    {
+        QFETCH(QStringList, arguments);
+        QFETCH(QString, desktop);
+        QFETCH(QString, says);
+        QTemporaryDir home;
+        QProcess process;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("HOME"), home.path());
+        env.insert(QStringLiteral("XDG_CONFIG_HOME"), home.filePath(QStringLiteral("config")));
+        env.insert(QStringLiteral("XDG_DATA_HOME"), home.filePath(QStringLiteral("data")));
+        env.insert(QStringLiteral("LANG"), desktop);
+        env.insert(QStringLiteral("LC_ALL"), desktop);
+        env.remove(QStringLiteral("LANGUAGE"));
+        process.setProcessEnvironment(env);
+        process.start(QStringLiteral(GRANOTA_GUI_PATH), arguments);
+        QVERIFY(process.waitForFinished(60000));
+        // Qt's own warnings (a missing runtime folder) may come first: the program's is one line.
+        QString err;
+        for (const QString& line : QString::fromUtf8(process.readAllStandardError()).split(QLatin1Char('\n')))
+            if (line.startsWith(QStringLiteral("error: ")))
+                err += line;
+        QCOMPARE(process.exitCode(), 2);
+        QVERIFY2(!err.isEmpty(), "no line starts with \"error: \"");
+        QVERIFY2(err.contains(says, Qt::CaseInsensitive), qPrintable(err));
+        const bool catalan = arguments.contains(QStringLiteral("ca")) || arguments.contains(QStringLiteral("--lang=ca"))
+                             || (desktop.startsWith(QStringLiteral("ca")) && !arguments.contains(QStringLiteral("en")));
+        if (catalan)
+            for (const char* english : {"unknown", "Unknown", "missing", "Missing"})
+                QVERIFY2(!err.contains(QLatin1String(english)), qPrintable(err));
     }
 };
 

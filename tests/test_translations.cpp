@@ -1,11 +1,14 @@
 // Catalan and English (docs/classroom.md): no untranslated string in either language, and every
 // translation keeps the placeholders (%1, %2, %n) of its source, so no message ever shows
 // a raw "%1" or loses a number.
+#include <QDebug>
 #include <QFile>
 #include <QRegularExpression>
 #include <QSet>
 #include <QTest>
 #include <QXmlStreamReader>
+
+#include <algorithm>
 
 namespace {
 
@@ -101,6 +104,83 @@ private slots:
         QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
         if (language == QLatin1String("ca"))
             QVERIFY(differing > messages.size() * 3 / 4); // Catalan really is Catalan
+    }
+
+    // Item 18 of the classroom pass: one word per concept (translations/GLOSSARY.md). Every
+    // Catalan message whose source names a concept of the glossary uses the glossary's word
+    // for it and none of the words it replaced; the English interface shows no Catalan word.
+    void glossaryIsFollowed()
+    {
+        QFile file(QStringLiteral(GRANOTA_SOURCE_DIR "/translations/GLOSSARY.md"));
+        QVERIFY(file.open(QIODevice::ReadOnly | QIODevice::Text));
+        struct Row {
+            QString english;
+            QStringList catalan, notCatalan, notEnglish;
+        };
+        QList<Row> rows;
+        bool inTable = false;
+        const auto split = [](const QString& cell) {
+            QStringList out;
+            for (const QString& part : cell.split(QLatin1Char('/'), Qt::SkipEmptyParts))
+                if (!part.trimmed().isEmpty())
+                    out << part.trimmed();
+            return out;
+        };
+        for (const QString& line : QString::fromUtf8(file.readAll()).split(QLatin1Char('\n'))) {
+            if (!line.startsWith(QLatin1Char('|'))) {
+                inTable = false;
+                continue;
+            }
+            const QStringList cells = line.split(QLatin1Char('|'));
+            if (cells.size() < 6 || cells[1].trimmed() == QLatin1String("English"))
+                continue;
+            if (cells[1].trimmed().startsWith(QLatin1String("---"))) {
+                inTable = true;
+                continue;
+            }
+            if (inTable)
+                rows << Row{cells[1].trimmed(), split(cells[2]), split(cells[3]), split(cells[4])};
+        }
+        QVERIFY2(rows.size() >= 10, "the glossary's table was not read");
+
+        QStringList failures;
+        const auto catalan = readTs(QStringLiteral(GRANOTA_SOURCE_DIR "/translations/granota_ca.ts"));
+        for (const Row& row : rows) {
+            const QRegularExpression term(QStringLiteral("\\b") + QRegularExpression::escape(row.english),
+                                          QRegularExpression::CaseInsensitiveOption);
+            int uses = 0;
+            for (const Message& m : catalan) {
+                if (m.type == QLatin1String("obsolete") || m.type == QLatin1String("vanished"))
+                    continue;
+                for (QString t : m.translations) {
+                    t.remove(QLatin1Char('&')); // accelerators: "Mode de &presentació"
+                    for (const QString& banned : row.notCatalan)
+                        if (t.contains(banned))
+                            failures << QStringLiteral("%1: “%2” in “%3”").arg(m.context, banned, t.left(80));
+                    if (!QString(m.source).remove(QLatin1Char('&')).contains(term))
+                        continue;
+                    ++uses;
+                    const bool named = std::any_of(row.catalan.begin(), row.catalan.end(), [&t](const QString& word) {
+                        return t.contains(word, Qt::CaseInsensitive);
+                    });
+                    if (!named)
+                        failures << QStringLiteral("%1: “%2” is not “%3” in “%4”")
+                                        .arg(m.context, row.english, row.catalan.join(QStringLiteral(" / ")), t.left(80));
+                }
+            }
+            if (uses == 0)
+                failures << QStringLiteral("the glossary's “%1” names nothing the interface says").arg(row.english);
+        }
+        const auto english = readTs(QStringLiteral(GRANOTA_SOURCE_DIR "/translations/granota_en.ts"));
+        for (const Row& row : rows)
+            for (const QString& banned : row.notEnglish)
+                for (const Message& m : english)
+                    for (const QString& t : m.translations)
+                        if (t.contains(banned))
+                            failures << QStringLiteral("English %1: “%2” in “%3”").arg(m.context, banned, t.left(80));
+        for (const QString& failure : failures) // QVERIFY2 cuts long messages: each on its own line
+            qWarning().noquote() << failure;
+        QVERIFY2(failures.isEmpty(), qPrintable(QStringLiteral("%1 messages break the glossary").arg(failures.size())));
     }
 };
 

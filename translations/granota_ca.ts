@@ -1224,7 +1224,7 @@
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="136" />
-            <source>Matrices (Lemma 2.2, Nota 2.2)</source>
+            <source>Matrices (Lemma 2.2, Note 2.2)</source>
             <translation>Matrius (Lema 2.2, Nota 2.2)</translation>
         </message>
         <message>
@@ -1297,7 +1297,7 @@
         <message>
             <location filename="../ui/fit_tab.cpp" line="305" />
             <source>Solver</source>
-            <translation>Resolució</translation>
+            <translation>Mètode</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="312" />
@@ -1407,7 +1407,7 @@
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="406" />
-            <source>Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Nota 2.2), in fractions when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8.</source>
+            <source>Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Note 2.2), in fractions when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8.</source>
             <translation>Mostra M (Lema 2.2), MᵀM, (MᵀM)⁻¹ i M⁺ = (MᵀM)⁻¹Mᵀ (Nota 2.2), en fraccions quan les dades i els paràmetres són racionals, com a l'Ex 2.7 i l'Ex 2.8.</translation>
         </message>
         <message>
@@ -1947,7 +1947,7 @@
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="316" />
             <source>N (costats): the vertices of the body, a regular polygon built from the top (§4.1). Annex II's frog has N = 10; try 3 to 200. Up to 10000, 100000 vertices in all: beyond about 3000 the stable solver runs slower than real time.</source>
-            <translation>N (costats): els vèrtexs del cos, un polígon regular construït des de dalt (§4.1). La granota de l'Annex II en té N = 10; proveu de 3 a 200. Fins a 10000, 100000 vèrtexs en total: per sobre d'uns 3000 el resolutor estable va més lent que el temps real.</translation>
+            <translation>N (costats): els vèrtexs del cos, un polígon regular construït des de dalt (§4.1). La granota de l'Annex II en té N = 10; proveu de 3 a 200. Fins a 10000, 100000 vèrtexs en total: per sobre d'uns 3000 el mètode estable va més lent que el temps real.</translation>
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="319" />
@@ -2336,7 +2336,7 @@
         <message>
             <location filename="../ui/frog_tab.cpp" line="536" />
             <source>Solver</source>
-            <translation>Resolució</translation>
+            <translation>Mètode</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="537" />
@@ -2410,7 +2410,7 @@
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="554" />
-            <source>The option §4.9 abandoned as too costly for Processing: every frame, the least-squares Bézier curve through the outline (Lemma 2.2, Prop 2.2). With M⁺ computed once, a frame costs one small matrix product; the curve need not pass through the vertices (Nota 2.3).</source>
+            <source>The option §4.9 abandoned as too costly for Processing: every frame, the least-squares Bézier curve through the outline (Lemma 2.2, Prop 2.2). With M⁺ computed once, a frame costs one small matrix product; the curve need not pass through the vertices (Note 2.3).</source>
             <translation>L'opció que §4.9 va descartar per massa costosa per a Processing: a cada fotograma, la corba de Bézier d'ajust per mínims quadrats de la silueta (Lema 2.2, Prop 2.2). Amb M⁺ calculada una sola vegada, cada fotograma costa un petit producte de matrius; la corba no té per què passar pels vèrtexs (Nota 2.3).</translation>
         </message>
         <message>
@@ -2481,7 +2481,7 @@
         <message>
             <location filename="../ui/frog_tab.cpp" line="580" />
             <source>What the solver measures: area error, largest stretch of an edge, largest correction or constraint force, kinetic and potential energy.</source>
-            <translation>El que mesura la resolució: error d'àrea, estirament màxim d'un costat, correcció o força de restricció màxima, energia cinètica i potencial.</translation>
+            <translation>El que mesura el mètode: error d'àrea, estirament màxim d'un costat, correcció o força de restricció màxima, energia cinètica i potencial.</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="582" />
@@ -2501,7 +2501,7 @@
         <message>
             <location filename="../ui/frog_tab.cpp" line="625" />
             <source>Unknown solver “%1” (seed or stable).</source>
-            <translation>Resolució desconeguda «%1» (seed o stable).</translation>
+            <translation>Mètode desconegut «%1» (seed o stable).</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="633" />
@@ -2728,7 +2728,7 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
         <message>
             <location filename="../ui/main_window.cpp" line="325" />
             <source>&amp;Presentation mode</source>
-            <translation>Mode &amp;presentació</translation>
+            <translation>Mode de &amp;presentació</translation>
         </message>
         <message>
             <location filename="../ui/main_window.cpp" line="326" />
@@ -2833,7 +2833,7 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
         <message>
             <location filename="../ui/main_window.cpp" line="351" />
             <source>Ex 2.12 — Blending functions for several tensions</source>
-            <translation>Ex 2.12 — Funcions de combinació per a diverses tensions</translation>
+            <translation>Ex 2.12 — Funcions de mescla per a diverses tensions</translation>
         </message>
         <message>
             <location filename="../ui/main_window.cpp" line="352" />
@@ -3017,7 +3017,7 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
         <message>
             <location filename="../ui/main_window.cpp" line="702" />
             <source>&lt;h3&gt;Granota in five tabs&lt;/h3&gt;&lt;p&gt;&lt;b&gt;De Casteljau&lt;/b&gt; (§2.1.1): drag the control points, move t, watch every level.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bernstein&lt;/b&gt; (§2.1.2): the basis polynomials and their weights at the same t.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Fitting&lt;/b&gt; (§2.1.3): a Bézier curve through data by least squares.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Catmull-Rom&lt;/b&gt; (§2.2): curves through the points, one per tension τ.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Frog&lt;/b&gt; (chapter 4): the soft body, stage by stage.&lt;/p&gt;&lt;p&gt;Double-click to add a point, Delete to remove it, arrows to nudge it, Ctrl+Z to undo. The Examples menu loads every worked example of chapter 2. F11 switches presentation mode.&lt;/p&gt;</source>
-            <translation>&lt;h3&gt;El Granota en cinc pestanyes&lt;/h3&gt;&lt;p&gt;&lt;b&gt;De Casteljau&lt;/b&gt; (§2.1.1): arrossegueu els punts de control, moveu t i mireu cada nivell.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bernstein&lt;/b&gt; (§2.1.2): els polinomis de la base i els seus pesos al mateix t.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Ajust&lt;/b&gt; (§2.1.3): una corba de Bézier que s'ajusta a les dades per mínims quadrats.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Catmull-Rom&lt;/b&gt; (§2.2): corbes que passen pels punts, una per cada tensió τ.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Granota&lt;/b&gt; (capítol 4): el cos tou, etapa a etapa.&lt;/p&gt;&lt;p&gt;Feu doble clic per afegir un punt, Supr per treure'l, les fletxes per moure'l i Ctrl+Z per desfer. El menú Exemples carrega tots els exemples resolts del capítol 2. F11 activa el mode presentació.&lt;/p&gt;</translation>
+            <translation>&lt;h3&gt;El Granota en cinc pestanyes&lt;/h3&gt;&lt;p&gt;&lt;b&gt;De Casteljau&lt;/b&gt; (§2.1.1): arrossegueu els punts de control, moveu t i mireu cada nivell.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Bernstein&lt;/b&gt; (§2.1.2): els polinomis de la base i els seus pesos al mateix t.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Ajust&lt;/b&gt; (§2.1.3): una corba de Bézier que s'ajusta a les dades per mínims quadrats.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Catmull-Rom&lt;/b&gt; (§2.2): corbes que passen pels punts, una per cada tensió τ.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Granota&lt;/b&gt; (capítol 4): el cos tou, etapa a etapa.&lt;/p&gt;&lt;p&gt;Feu doble clic per afegir un punt, Supr per treure'l, les fletxes per moure'l i Ctrl+Z per desfer. El menú Exemples carrega tots els exemples resolts del capítol 2. F11 activa el mode de presentació.&lt;/p&gt;</translation>
         </message>
         <message>
             <location filename="../ui/main_window.cpp" line="716" />
@@ -3375,6 +3375,61 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
         <message>
             <source>These points are too large to draw: the canvas shows coordinates up to about ±%1. Their values are in the table; bring them closer to the origin to see the curve.</source>
             <translation>Aquests punts són massa grans per dibuixar-los: el llenç mostra coordenades fins a uns ±%1. Els seus valors són a la taula; acosteu-los a l'origen per veure la corba.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::CommandLine</name>
+        <message>
+            <source>cannot write “%1”</source>
+            <translation>no es pot escriure «%1»</translation>
+        </message>
+        <message>
+            <source>unknown tab “%1” (decasteljau, bernstein, fit, catmull-rom, frog)</source>
+            <translation>pestanya desconeguda «%1» (decasteljau, bernstein, fit, catmull-rom, frog)</translation>
+        </message>
+        <message>
+            <source>unknown example “%1” (2.1 … 2.13)</source>
+            <translation>exemple desconegut «%1» (2.1 … 2.13)</translation>
+        </message>
+        <message>
+            <source>cannot make a scratch folder for the screenshot run</source>
+            <translation>no es pot crear una carpeta temporal per a la captura</translation>
+        </message>
+        <message>
+            <source>unknown language “%1” (ca, en)</source>
+            <translation>idioma desconegut «%1» (ca, en)</translation>
+        </message>
+        <message>
+            <source>A .granota document to open.</source>
+            <translation>Un document .granota per obrir.</translation>
+        </message>
+        <message>
+            <source>Render the window (1280x800) to FILE.png and exit.</source>
+            <translation>Dibuixa la finestra (1280x800) a FILE.png i surt.</translation>
+        </message>
+        <message>
+            <source>Start in presentation mode.</source>
+            <translation>Comença en mode de presentació.</translation>
+        </message>
+        <message>
+            <source>Open the frog tab on scene NAME.</source>
+            <translation>Obre la pestanya Granota a l'escena NAME.</translation>
+        </message>
+        <message>
+            <source>Load worked example ID (2.1 … 2.13).</source>
+            <translation>Carrega l'exemple resolt ID (2.1 … 2.13).</translation>
+        </message>
+        <message>
+            <source>Interface language: ca or en.</source>
+            <translation>Idioma de la interfície: ca o en.</translation>
+        </message>
+        <message>
+            <source>Open on tab KEY: decasteljau, bernstein, fit, catmull-rom, frog.</source>
+            <translation>Obre a la pestanya KEY: decasteljau, bernstein, fit, catmull-rom, frog.</translation>
+        </message>
+        <message>
+            <source>Splines and soft bodies, for the classroom.</source>
+            <translation>Splines i cossos tous, per a l'aula.</translation>
         </message>
     </context>
 </TS>

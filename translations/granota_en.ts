@@ -1224,8 +1224,8 @@
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="136" />
-            <source>Matrices (Lemma 2.2, Nota 2.2)</source>
-            <translation>Matrices (Lemma 2.2, Nota 2.2)</translation>
+            <source>Matrices (Lemma 2.2, Note 2.2)</source>
+            <translation>Matrices (Lemma 2.2, Note 2.2)</translation>
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="142" />
@@ -1407,8 +1407,8 @@
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="406" />
-            <source>Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Nota 2.2), in fractions when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8.</source>
-            <translation>Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Nota 2.2), in fractions when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8.</translation>
+            <source>Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Note 2.2), in fractions when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8.</source>
+            <translation>Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Note 2.2), in fractions when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="408" />
@@ -2410,8 +2410,8 @@
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="554" />
-            <source>The option §4.9 abandoned as too costly for Processing: every frame, the least-squares Bézier curve through the outline (Lemma 2.2, Prop 2.2). With M⁺ computed once, a frame costs one small matrix product; the curve need not pass through the vertices (Nota 2.3).</source>
-            <translation>The option §4.9 abandoned as too costly for Processing: every frame, the least-squares Bézier curve through the outline (Lemma 2.2, Prop 2.2). With M⁺ computed once, a frame costs one small matrix product; the curve need not pass through the vertices (Nota 2.3).</translation>
+            <source>The option §4.9 abandoned as too costly for Processing: every frame, the least-squares Bézier curve through the outline (Lemma 2.2, Prop 2.2). With M⁺ computed once, a frame costs one small matrix product; the curve need not pass through the vertices (Note 2.3).</source>
+            <translation>The option §4.9 abandoned as too costly for Processing: every frame, the least-squares Bézier curve through the outline (Lemma 2.2, Prop 2.2). With M⁺ computed once, a frame costs one small matrix product; the curve need not pass through the vertices (Note 2.3).</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="558" />
@@ -3375,6 +3375,61 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
         <message>
             <source>These points are too large to draw: the canvas shows coordinates up to about ±%1. Their values are in the table; bring them closer to the origin to see the curve.</source>
             <translation>These points are too large to draw: the canvas shows coordinates up to about ±%1. Their values are in the table; bring them closer to the origin to see the curve.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::CommandLine</name>
+        <message>
+            <source>cannot write “%1”</source>
+            <translation>cannot write “%1”</translation>
+        </message>
+        <message>
+            <source>unknown tab “%1” (decasteljau, bernstein, fit, catmull-rom, frog)</source>
+            <translation>unknown tab “%1” (decasteljau, bernstein, fit, catmull-rom, frog)</translation>
+        </message>
+        <message>
+            <source>unknown example “%1” (2.1 … 2.13)</source>
+            <translation>unknown example “%1” (2.1 … 2.13)</translation>
+        </message>
+        <message>
+            <source>cannot make a scratch folder for the screenshot run</source>
+            <translation>cannot make a scratch folder for the screenshot run</translation>
+        </message>
+        <message>
+            <source>unknown language “%1” (ca, en)</source>
+            <translation>unknown language “%1” (ca, en)</translation>
+        </message>
+        <message>
+            <source>A .granota document to open.</source>
+            <translation>A .granota document to open.</translation>
+        </message>
+        <message>
+            <source>Render the window (1280x800) to FILE.png and exit.</source>
+            <translation>Render the window (1280x800) to FILE.png and exit.</translation>
+        </message>
+        <message>
+            <source>Start in presentation mode.</source>
+            <translation>Start in presentation mode.</translation>
+        </message>
+        <message>
+            <source>Open the frog tab on scene NAME.</source>
+            <translation>Open the frog tab on scene NAME.</translation>
+        </message>
+        <message>
+            <source>Load worked example ID (2.1 … 2.13).</source>
+            <translation>Load worked example ID (2.1 … 2.13).</translation>
+        </message>
+        <message>
+            <source>Interface language: ca or en.</source>
+            <translation>Interface language: ca or en.</translation>
+        </message>
+        <message>
+            <source>Open on tab KEY: decasteljau, bernstein, fit, catmull-rom, frog.</source>
+            <translation>Open on tab KEY: decasteljau, bernstein, fit, catmull-rom, frog.</translation>
+        </message>
+        <message>
+            <source>Splines and soft bodies, for the classroom.</source>
+            <translation>Splines and soft bodies, for the classroom.</translation>
         </message>
     </context>
 </TS>

@@ -137,7 +137,7 @@ QString FitExactView::html(const Input& in)
                                                 QString::fromStdString(toString(exact->params[i])));
         html += QStringLiteral("<p>%1</p>").arg(ts.join(QStringLiteral(", ")));
         if (in.showMatrices) {
-            html += ExactPanel::heading(tr("Matrices (Lemma 2.2, Nota 2.2)"));
+            html += ExactPanel::heading(tr("Matrices (Lemma 2.2, Note 2.2)"));
             html += ExactPanel::matrix(QStringLiteral("M"), entries(exact->M));
             html += ExactPanel::matrix(QStringLiteral("MᵀM"), entries(exact->MtM));
             html += ExactPanel::matrix(QStringLiteral("(MᵀM)⁻¹"), entries(exact->MtMinv));

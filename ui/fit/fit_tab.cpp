@@ -402,7 +402,7 @@ void FitTab::retranslate()
     m_import->setText(tr("&Import CSV…"));
     m_import->setToolTip(tr("Read the data points Q_i from a CSV file (one “x,y” per line) or a JSON list [[x,y],…]."));
     m_showMatrices->setText(tr("Show &matrices"));
-    m_showMatrices->setToolTip(tr("Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Nota 2.2), in fractions "
+    m_showMatrices->setToolTip(tr("Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Note 2.2), in fractions "
                                   "when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8."));
     m_readoutGroup->setTitle(tr("Quality of the fit (Prop 2.2)"));
     m_readoutGroup->setToolTip(tr("The error that the least-squares curve minimises, and how sensitive the "

@@ -551,7 +551,7 @@ void FrogTab::retranslate()
     m_fit->setText(tr("Least-squares fit every frame"));
     m_fit->setToolTip(tr("The option §4.9 abandoned as too costly for Processing: every frame, the least-squares "
                          "Bézier curve through the outline (Lemma 2.2, Prop 2.2). With M⁺ computed once, a frame "
-                         "costs one small matrix product; the curve need not pass through the vertices (Nota 2.3)."));
+                         "costs one small matrix product; the curve need not pass through the vertices (Note 2.3)."));
     if (!m_fit->isChecked())
         m_fitCost->setText(tr("Precomputed points: nothing to compute per frame."));
     else
