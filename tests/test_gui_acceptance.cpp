@@ -7,6 +7,8 @@
 #include "ui/decasteljau/decasteljau_parameter_control.h"
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/shell/language.h"
+#include "ui/common/canvas_style.h"
+#include "ui/common/curve_canvas.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/tab_page.h"
 
@@ -16,6 +18,7 @@
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QImage>
 #include <QListWidget>
 #include <QPointer>
 #include <QProcess>
@@ -326,6 +329,80 @@ private slots:
         if (catalan)
             for (const char* english : {"unknown", "Unknown", "missing", "Missing"})
                 QVERIFY2(!err.contains(QLatin1String(english)), qPrintable(err));
+    }
+
+    // Item 17: the colours of the De Casteljau canvas have a key — each level of the
+    // construction, each step-by-step curve, each half of the split — and it lists only what
+    // is drawn.
+    void theDeCasteljauColoursHaveALegend()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        QVERIFY(window.loadExample(QStringLiteral("2.2"))); // degree 4: levels 1, 2 and 3
+        auto* tab = qobject_cast<DeCasteljauTab*>(window.currentTab());
+        tab->setConstructionVisible(true);
+        tab->setStepByStep(false);
+        tab->setSplitVisible(false);
+        auto legend = tab->legend();
+        QCOMPARE(int(legend.entries.size()), 3);
+        for (int r = 1; r <= 3; ++r) {
+            QCOMPARE(legend.entries[std::size_t(r - 1)].color, granota::ui::CanvasStyle::series(r));
+            QVERIFY2(legend.entries[std::size_t(r - 1)].text.contains(QString::number(r)),
+                     qPrintable(legend.entries[std::size_t(r - 1)].text));
+        }
+        tab->setStepByStep(true);
+        QCOMPARE(int(tab->legend().entries.size()), 3 + 5); // the curves of P0, P0…P1, …, P0…P4
+        tab->setSplitVisible(true);
+        QCOMPARE(int(tab->legend().entries.size()), 3 + 5 + 2);
+        tab->setConstructionVisible(false);
+        tab->setStepByStep(false);
+        tab->setSplitVisible(false);
+        QVERIFY(tab->legend().entries.empty());
+        // Drawn: the canvas shows level 1's colour in its top-left corner, where the key is.
+        tab->setConstructionVisible(true);
+        const QImage shot = tab->canvas()->grab().toImage();
+        bool swatch = false;
+        for (int y = 0; y < 80 && !swatch; ++y)
+            for (int x = 0; x < 60 && !swatch; ++x)
+                swatch = shot.pixelColor(x, y) == granota::ui::CanvasStyle::series(1);
+        QVERIFY2(swatch, "no swatch of level 1 in the canvas's corner");
+    }
+
+    // Item 17: the halves of the split at t are drawn where the construction is, and must
+    // not disappear under it: the outline of each half's square shows in the half's colour at
+    // every control point of that half, construction on.
+    void theSplitHalvesShowOverTheConstruction()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        QVERIFY(window.loadExample(QStringLiteral("2.2")));
+        auto* tab = qobject_cast<DeCasteljauTab*>(window.currentTab());
+        tab->setConstructionVisible(true);
+        tab->setSplitVisible(true);
+        const auto legend = tab->legend();
+        const QColor left = legend.entries[legend.entries.size() - 2].color;
+        const QImage shot = tab->canvas()->grab().toImage();
+        const auto& view = tab->canvas()->view();
+        const double half = DeCasteljauTab::splitSquareSide(tab->canvas()->style()) / 2;
+        const auto halfPoints = tab->table().leftHalf();
+        int seen = 0;
+        // The inner points of the half (its ends are c(0) and c(t), drawn over by handles).
+        for (std::size_t i = 1; i + 1 < halfPoints.size(); ++i) {
+            const QPointF s = view.toScreen(halfPoints[i]);
+            // The square's bottom edge, below the point, where no level's line passes straight
+            // (a pixel of it, or of its antialiased neighbours, in the half's colour).
+            bool found = false;
+            for (int dy = -1; dy <= 1 && !found; ++dy)
+                for (int dx = -1; dx <= 1 && !found; ++dx) {
+                    const QColor c = shot.pixelColor(QPoint(qRound(s.x()) + dx, qRound(s.y() + half) + dy));
+                    found = std::abs(c.red() - left.red()) + std::abs(c.green() - left.green())
+                                + std::abs(c.blue() - left.blue())
+                            < 60;
+                }
+            seen += found ? 1 : 0;
+        }
+        QVERIFY2(seen == int(halfPoints.size()) - 2,
+                 qPrintable(QStringLiteral("%1 of %2 squares seen").arg(seen).arg(halfPoints.size() - 2)));
     }
 };
 

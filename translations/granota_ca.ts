@@ -888,6 +888,30 @@
     <context>
         <name>granota::ui::DeCasteljauTab</name>
         <message>
+            <source>polygon of the half on [t, 1]</source>
+            <translation>polígon de la meitat a [t, 1]</translation>
+        </message>
+        <message>
+            <source>polygon of the half on [0, t]</source>
+            <translation>polígon de la meitat a [0, t]</translation>
+        </message>
+        <message>
+            <source>… %1 more, one colour each</source>
+            <translation>… %1 més, cadascun del seu color</translation>
+        </message>
+        <message>
+            <source>the curve of P₀…P%1</source>
+            <translation>la corba de P₀…P%1</translation>
+        </message>
+        <message>
+            <source>the point P₀ alone</source>
+            <translation>el punt P₀ tot sol</translation>
+        </message>
+        <message>
+            <source>level %1: the points %2(t)</source>
+            <translation>nivell %1: els punts %2(t)</translation>
+        </message>
+        <message>
             <source>Samples: %1</source>
             <translation>Mostres: %1</translation>
         </message>

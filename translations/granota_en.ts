@@ -888,6 +888,30 @@
     <context>
         <name>granota::ui::DeCasteljauTab</name>
         <message>
+            <source>polygon of the half on [t, 1]</source>
+            <translation>polygon of the half on [t, 1]</translation>
+        </message>
+        <message>
+            <source>polygon of the half on [0, t]</source>
+            <translation>polygon of the half on [0, t]</translation>
+        </message>
+        <message>
+            <source>… %1 more, one colour each</source>
+            <translation>… %1 more, one colour each</translation>
+        </message>
+        <message>
+            <source>the curve of P₀…P%1</source>
+            <translation>the curve of P₀…P%1</translation>
+        </message>
+        <message>
+            <source>the point P₀ alone</source>
+            <translation>the point P₀ alone</translation>
+        </message>
+        <message>
+            <source>level %1: the points %2(t)</source>
+            <translation>level %1: the points %2(t)</translation>
+        </message>
+        <message>
             <source>Samples: %1</source>
             <translation>Samples: %1</translation>
         </message>

@@ -46,19 +46,9 @@ constexpr double kBasisWidth = 2.0;         ///< line width of the graphs B_i^n(
 /// kPresentationScale (3.2), so that the graphs stand out from the axes from the back of the room.
 constexpr double kPresentationBasisWidth = 3.6;
 
-const char* const kSubscripts[] = {"₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉"};
-const char* const kSuperscripts[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
-
-QString digits(int v, const char* const* table)
-{
-    QString out;
-    for (QChar c : QString::number(v))
-        out += QString::fromUtf8(table[c.digitValue()]);
-    return out;
-}
 
 /// B_i^n in plain Unicode (legend, readout): B₂⁵.
-QString basisName(int i, int n) { return QStringLiteral("B") + digits(i, kSubscripts) + digits(n, kSuperscripts); }
+QString basisName(int i, int n) { return QStringLiteral("B") + subscriptDigits(i) + superscriptDigits(n); }
 /// B_i^n(t) in HTML.
 QString basisHtml(const QString& i, const QString& n, const QString& arg = QStringLiteral("t"))
 {

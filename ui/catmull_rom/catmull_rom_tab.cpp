@@ -5,6 +5,7 @@
 #include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
 #include "ui/catmull_rom/catmull_rom_report.h"
+#include "ui/common/canvas_legend.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
@@ -677,66 +678,25 @@ void CatmullRomTab::drawCurves(QPainter& p, const ViewTransform& view, const Can
 
 void CatmullRomTab::drawLegend(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const
 {
-    struct Entry {
-        QColor color;
-        Qt::PenStyle pen;
-        QString text;
-    };
-    std::vector<Entry> entries;
+    CanvasLegend legend;
+    legend.alertColor = kErrorColor;
     for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
         const auto& c = m_scene.curves[i];
-        entries.push_back({CanvasStyle::series(static_cast<int>(i)), c.error.isEmpty() ? Qt::SolidLine : Qt::NoPen,
-                           QStringLiteral("τ = %1").arg(tauString(c.tau))});
+        legend.entries.push_back({CanvasStyle::series(static_cast<int>(i)), c.error.isEmpty() ? Qt::SolidLine : Qt::NoPen,
+                                  QStringLiteral("τ = %1").arg(tauString(c.tau))});
     }
     if (!m_scene.otherEnds.empty())
-        entries.push_back({QColor(0x77, 0x77, 0x77), Qt::DashLine,
-                           tr("dashed: %1 ends").arg(CatmullRomReport::endsName(comparedEnds(m_settings.ends)))});
+        legend.entries.push_back({QColor(0x77, 0x77, 0x77), Qt::DashLine,
+                                  tr("dashed: %1 ends").arg(CatmullRomReport::endsName(comparedEnds(m_settings.ends)))});
     if (!m_scene.bezier.empty())
-        entries.push_back({kBezierColor, Qt::DashDotLine, tr("Bézier curve of the same points")});
+        legend.entries.push_back({kBezierColor, Qt::DashDotLine, tr("Bézier curve of the same points")});
     if (m_settings.spline)
-        entries.push_back({kSplineColor, m_scene.spline.empty() ? Qt::NoPen : Qt::SolidLine,
-                           m_scene.spline.empty() ? tr("no cubic spline: x must increase") : tr("cubic spline C²")});
-    QString error;
+        legend.entries.push_back({kSplineColor, m_scene.spline.empty() ? Qt::NoPen : Qt::SolidLine,
+                                  m_scene.spline.empty() ? tr("no cubic spline: x must increase") : tr("cubic spline C²")});
     for (const auto& c : m_scene.curves)
         if (!c.error.isEmpty())
-            error = c.error;
-
-    // The application font (already larger in presentation mode), a little smaller: the
-    // legend must not hide the points.
-    QFont font;
-    font.setPointSizeF(font.pointSizeF() * 0.9);
-    p.setFont(font);
-    const QFontMetricsF fm(font);
-    const double line = fm.height() * 1.15, swatch = 26 * style.scale, pad = 6 * style.scale;
-    double width = 0;
-    for (const auto& e : entries)
-        width = std::max(width, fm.horizontalAdvance(e.text));
-    const double maxErrorWidth = std::max(120.0, view.viewport().width() * 0.6);
-    QRectF errorRect;
-    if (!error.isEmpty())
-        errorRect = fm.boundingRect(QRectF(0, 0, maxErrorWidth, 1000), Qt::TextWordWrap, error);
-    const double boxW = std::max(swatch + pad + width, errorRect.width()) + 2 * pad;
-    const double boxH = entries.size() * line + (error.isEmpty() ? 0 : errorRect.height() + pad) + 2 * pad;
-    const QRectF box(view.viewport().left() + 8 * style.scale, view.viewport().top() + 8 * style.scale, boxW, boxH);
-    p.setPen(QPen(style.gridMajor, style.thinLine()));
-    p.setBrush(QColor(255, 255, 255, 180));
-    p.drawRoundedRect(box, 4, 4);
-    double y = box.top() + pad;
-    for (const auto& e : entries) {
-        const double mid = y + line / 2;
-        if (e.pen != Qt::NoPen) {
-            p.setPen(QPen(e.color, style.lineWidth(), e.pen));
-            p.drawLine(QPointF(box.left() + pad, mid), QPointF(box.left() + pad + swatch, mid));
-        }
-        p.setPen(e.pen == Qt::NoPen ? kErrorColor : style.text);
-        p.drawText(QRectF(box.left() + 2 * pad + swatch, y, width + pad, line), Qt::AlignVCenter | Qt::AlignLeft, e.text);
-        y += line;
-    }
-    if (!error.isEmpty()) {
-        p.setPen(kErrorColor);
-        p.drawText(QRectF(box.left() + pad, y + pad / 2, errorRect.width() + 1, errorRect.height() + 1),
-                   Qt::TextWordWrap, error);
-    }
+            legend.note = c.error;
+    drawCanvasLegend(p, view, style, legend);
 }
 
 // ---------------------------------------------------------------- examples and documents

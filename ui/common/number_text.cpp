@@ -71,4 +71,28 @@ std::optional<double> parseTypedNumber(const QString& text)
     return v;
 }
 
+namespace {
+
+QString unicodeDigits(int v, const char* const* table)
+{
+    QString out;
+    for (QChar c : QString::number(v))
+        out += c.isDigit() ? QString::fromUtf8(table[c.digitValue()]) : QString(c);
+    return out;
+}
+
+} // namespace
+
+QString subscriptDigits(int v)
+{
+    static const char* const table[] = {"₀", "₁", "₂", "₃", "₄", "₅", "₆", "₇", "₈", "₉"};
+    return unicodeDigits(v, table);
+}
+
+QString superscriptDigits(int v)
+{
+    static const char* const table[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+    return unicodeDigits(v, table);
+}
+
 } // namespace granota::ui

@@ -42,6 +42,11 @@ QString displayPair(const QString& x, const QString& y);
 /// displayPair of two doubles, each the shortest round-trip text.
 QString displayPoint(double x, double y);
 
+/// A whole number ≥ 0 in Unicode subscript or superscript digits, for names in plain text
+/// (legends, readouts): "B" + subscriptDigits(2) + superscriptDigits(5) is B₂⁵.
+QString subscriptDigits(int v);
+QString superscriptDigits(int v);
+
 /// A person's typed text with the number in the C form the core reads: in Catalan a
 /// decimal comma becomes a point; the Unicode minus that the window shows becomes '-'.
 QString typedToC(const QString& text);

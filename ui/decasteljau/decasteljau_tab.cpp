@@ -8,6 +8,7 @@
 #include "core/exact/rational.h"
 #include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
+#include "ui/common/canvas_legend.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/decasteljau/decasteljau_flow_layout.h"
 #include "ui/decasteljau/decasteljau_parameter_control.h"
@@ -34,6 +35,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <optional>
 
@@ -156,6 +158,11 @@ QPainterPath polylinePath(const std::vector<Point>& points, const ViewTransform&
     }
     return path;
 }
+
+/// The halves of the split at t: [0, t] and [t, 1].
+const QColor kSplitColours[2] = {QColor(0xc0, 0x39, 0x8b), QColor(0x1b, 0x9e, 0x77)};
+/// At most this many lines of levels (or of step curves) in the legend; the rest is one line.
+constexpr int kMaxLegendLines = 6;
 
 std::optional<bool> optionalBool(const QJsonObject& state, const char* key, bool* ok)
 {
@@ -325,22 +332,6 @@ void DeCasteljauTab::buildLayers()
         p.setPen(QPen(style.curve, style.lineWidth() * 1.8, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
         p.drawPath(polylinePath(traced, view));
     });
-    // Split at t: the halves' control polygons are the triangle's two edges.
-    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
-        if (!m_showSplit || m_levels.levels.size() < 2)
-            return;
-        const std::vector<Point> halves[2] = {m_levels.leftHalf(), m_levels.rightHalf()};
-        const QColor colours[2] = {QColor(0xc0, 0x39, 0x8b), QColor(0x1b, 0x9e, 0x77)};
-        for (int h = 0; h < 2; ++h) {
-            p.setPen(QPen(colours[h], style.lineWidth(), Qt::DashDotLine));
-            p.setBrush(Qt::NoBrush);
-            p.drawPath(polylinePath(halves[h], view));
-            p.setPen(Qt::NoPen);
-            p.setBrush(colours[h]);
-            for (const Point& q : halves[h])
-                p.drawRect(QRectF(view.toScreen(q) - QPointF(3.5, 3.5) * style.scale, QSizeF(7, 7) * style.scale));
-        }
-    });
     // The construction of Def 2.4: every level r ≥ 1, points and segments, one colour each.
     m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
         if (!m_showConstruction || m_levels.levels.size() < 2)
@@ -364,6 +355,26 @@ void DeCasteljauTab::buildLayers()
             p.setPen(QPen(Qt::white, style.thinLine()));
             p.setBrush(c);
             p.drawPath(dots);
+        }
+    });
+    // Split at t: the halves' control polygons are the triangle's two edges. Drawn over the
+    // construction, on a white halo, with hollow squares larger than the level's dots: both
+    // the halves and the construction under them stay visible.
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (!m_showSplit || m_levels.levels.size() < 2)
+            return;
+        const std::vector<Point> halves[2] = {m_levels.leftHalf(), m_levels.rightHalf()};
+        p.setBrush(Qt::NoBrush);
+        for (int h = 0; h < 2; ++h) {
+            const QPainterPath path = polylinePath(halves[h], view);
+            p.setPen(QPen(QColor(255, 255, 255, 200), style.lineWidth() * 2.6, Qt::SolidLine, Qt::RoundCap));
+            p.drawPath(path);
+            p.setPen(QPen(kSplitColours[h], style.lineWidth() * 1.3, Qt::DashLine, Qt::RoundCap));
+            p.drawPath(path);
+            p.setPen(QPen(kSplitColours[h], style.thinLine() * 2));
+            const double side = splitSquareSide(style);
+            for (const Point& q : halves[h])
+                p.drawRect(QRectF(view.toScreen(q) - QPointF(side, side) / 2, QSizeF(side, side)));
         }
     });
     // The tangent c′(t), from the last level but one.
@@ -408,9 +419,40 @@ void DeCasteljauTab::buildLayers()
         p.setFont(f);
         p.drawText(s + QPointF(r + 4 * style.scale, r + 12 * style.scale), QStringLiteral("c(t)"));
     });
+    // The key to the colours: which level, which step curve, which half.
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        drawCanvasLegend(p, view, style, legend());
+    });
 }
 
 // ---------------------------------------------------------------- updates
+
+double DeCasteljauTab::splitSquareSide(const CanvasStyle& style) { return style.handleRadius() * 1.2 + 6 * style.scale; }
+
+CanvasLegend DeCasteljauTab::legend() const
+{
+    CanvasLegend legend;
+    const int n = m_levels.degree();
+    const auto lines = [&legend](int first, int last, const std::function<QString(int)>& text) {
+        for (int r = first; r <= last; ++r) {
+            if (r - first == kMaxLegendLines - 1 && r < last) {
+                legend.entries.push_back({CanvasStyle::series(r), Qt::DotLine, tr("… %1 more, one colour each").arg(last - r + 1)});
+                return;
+            }
+            legend.entries.push_back({CanvasStyle::series(r), Qt::SolidLine, text(r)});
+        }
+    };
+    if (m_showConstruction && n >= 2)
+        lines(1, n - 1, [](int r) { return tr("level %1: the points %2(t)").arg(r).arg(QStringLiteral("Pᵢ") + superscriptDigits(r)); });
+    if (m_showSteps && !m_stepCurves.empty())
+        lines(0, static_cast<int>(m_stepCurves.size()) - 1,
+              [](int k) { return k == 0 ? tr("the point P₀ alone") : tr("the curve of P₀…P%1").arg(subscriptDigits(k)); });
+    if (m_showSplit && n >= 1) {
+        legend.entries.push_back({kSplitColours[0], Qt::DashLine, tr("polygon of the half on [0, t]")});
+        legend.entries.push_back({kSplitColours[1], Qt::DashLine, tr("polygon of the half on [t, 1]")});
+    }
+    return legend;
+}
 
 void DeCasteljauTab::pointsChanged()
 {

@@ -7,6 +7,7 @@
 /// The Bernstein tab shares this tab's control points and its t.
 
 #include "core/curves/bezier/de_casteljau.h"
+#include "ui/common/canvas_legend.h"
 #include "ui/common/curve_tab.h"
 
 #include <QString>
@@ -68,6 +69,10 @@ public:
     const DeCasteljauTable<double>& table() const { return m_levels; }
     /// The sampled curve (samples() + 1 points).
     const std::vector<Point>& curve() const { return m_curve; }
+    /// The key in the canvas's corner: the levels', step curves' and halves' colours.
+    CanvasLegend legend() const;
+    /// The side of the squares that mark the halves' control points (over the level's dots).
+    static double splitSquareSide(const CanvasStyle& style);
     /// The warning shown for high degrees; empty when there is none.
     QString warning() const { return m_warningText; }
 
