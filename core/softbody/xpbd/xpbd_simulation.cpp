@@ -151,6 +151,15 @@ public:
         if (m_world.grabbedBody() >= 0 || bodyCount() == 0)
             return;
         respawnAt(p);
+        if (scene().has("grab") && scene().grab == GrabMode::Anchors) {
+            // Annex II keeps vertex 0 10 px above the mouse and the body hanging below it
+            // (seed_body_step.inc): spawn it there, so that the short ropes hold it hanging,
+            // not balanced upside down on ropes as long as its height.
+            const double y = std::clamp(p.y, 0.0, scene().params.height - 1);
+            const double below = (y - 10) - m_world.bodyVertices(0).front().y;
+            if (below > 0 && y + below <= scene().params.height - 1)
+                respawnAt(Point(p.x, y + below));
+        }
         if (scene().has("grab")) {
             m_world.press(p);
             m_spawned = true;
