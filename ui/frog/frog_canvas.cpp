@@ -11,6 +11,7 @@
 #include <QApplication>
 #include <QCursor>
 #include <QEnterEvent>
+#include <QFontMetricsF>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
@@ -35,6 +36,7 @@ constexpr qint64 kTextRefreshNs = 250'000'000;
 
 const QColor kLetterbox(0x26, 0x30, 0x36);
 const QColor kSkyTop(0xb9, 0xdc, 0xee);   // FrogArt's sky, top
+const QColor kFrameCaptionColour(0x26, 0x30, 0x36, 190); // the frame's caption, over the sky
 const QColor kMudBottom(0x86, 0x6a, 0x44); // FrogArt's bank, bottom
 const QColor kEdgeColour(0xff, 0x8a, 0x1e);
 const QColor kVelocityColour(0x1f, 0x5f, 0xd8);
@@ -79,6 +81,9 @@ void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
     m_backgroundSize = QSize(); // the frame may have another size
     if (m_sim && m_mouseKnown && underMouse())
         m_sim->move(m_mouse); // Processing's mouseX/mouseY hold from the first frame (§4.1, §4.13)
+    m_reportedRadius = -1;
+    reportMouseRadius();
+    m_startAreaError = m_sim && m_sim->bodyCount() > 0 ? m_sim->readouts().areaErrorPercent : 0;
     unsetCursor();
     refreshTexts();
     updateTimer();
@@ -245,6 +250,13 @@ void FrogCanvas::refreshTexts()
     const auto num = [](double v, int decimals) { return displayFixed(v, decimals); };
     if (m_sim) {
         const SceneSpec& scene = m_sim->scene();
+        if (m_sim->solver() == SolverKind::Seed && m_sim->bodyCount() > 0) {
+            const double error = m_sim->readouts().areaErrorPercent;
+            if (blownUp(error, m_startAreaError))
+                lines << tr("The body has blown up (area error %1 %): press Reset (R), or switch to the Stable solver")
+                             .arg(!std::isfinite(error) ? QStringLiteral("∞")
+                                  : (error > 0 ? QStringLiteral("+") : QString()) + displayFixed(error, 0));
+        }
         if (const int slower = framesPerStep(); slower > 1)
             lines << tr("Running %n× slower than real time: a step of this scene is more work than a frame holds", "",
                         slower);
@@ -369,6 +381,10 @@ void FrogCanvas::render(QPainter& p, const QRectF& target)
     p.setPen(m_framePen);
     p.setBrush(Qt::NoBrush);
     p.drawRect(r.adjusted(-0.5, -0.5, 0.5, 0.5));
+    // The frame's top edge, a thin line across the sky: say what it is.
+    p.setPen(kFrameCaptionColour);
+    p.setFont(m_numberFont);
+    p.drawText(frameCaptionRect(target), Qt::AlignRight | Qt::AlignVCenter, frameCaption());
     p.restore();
     p.setClipRect(r, Qt::IntersectClip);
 
@@ -406,6 +422,20 @@ void FrogCanvas::render(QPainter& p, const QRectF& target)
     p.setWorldTransform(base);
     drawTextPanel(p, r);
     p.restore();
+}
+
+QString FrogCanvas::frameCaption() const
+{
+    return tr("Top of the frame: the scene's upper wall (y = 0)");
+}
+
+QRectF FrogCanvas::frameCaptionRect(const QRectF& target) const
+{
+    // Just above the line when the sky bar over the frame has room for it, else just below.
+    const QRectF r = sceneRectIn(target);
+    const double h = QFontMetricsF(m_numberFont).height() + 2, margin = 6 * m_style.scale;
+    const double top = r.top() - target.top() >= h + 2 ? r.top() - h - 1 : r.top() + 1;
+    return QRectF(r.left() + margin, top, r.width() - 2 * margin, h);
 }
 
 void FrogCanvas::fillPath(const std::vector<Point>& points, bool close)
@@ -702,6 +732,7 @@ void FrogCanvas::mousePressEvent(QMouseEvent* event)
         return;
     // Annex II, mousePressed: grab when the cursor is inside the body.
     m_sim->move(m_mouse);
+    reportMouseRadius();
     m_pressed = true;
     const bool held = m_sim->press(m_mouse);
     if (held && m_sim->grabbing())
@@ -718,6 +749,7 @@ void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
     m_mouse = toScene(event->position());
     m_mouseKnown = true;
     m_sim->move(m_mouse);
+    reportMouseRadius();
     if (!m_pressed && m_sim->scene().has("grab")) {
         bool inside = false;
         for (int i = 0; i < m_sim->bodyCount() && !inside; ++i) {
@@ -731,6 +763,15 @@ void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
     }
     if (!m_running)
         update(); // the eyes follow the mouse even when paused
+}
+
+void FrogCanvas::reportMouseRadius()
+{
+    const std::optional<double> r = m_sim ? m_sim->mouseRadius() : std::nullopt;
+    if (r && *r != m_reportedRadius) {
+        m_reportedRadius = *r;
+        emit mouseRadiusChanged(*r);
+    }
 }
 
 void FrogCanvas::mouseReleaseEvent(QMouseEvent* event)

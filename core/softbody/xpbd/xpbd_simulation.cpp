@@ -141,6 +141,7 @@ public:
             const auto shape = regularPolygon(scene().params.center, r, scene().params.sides);
             m_world.setTargetArea(0, polygonArea(shape));
             m_world.setBodyVertices(0, shape);
+            m_mouseRadius = r;
             return;
         }
         m_world.move(p);
@@ -172,6 +173,12 @@ public:
         m_spawned = false;
     }
     bool grabbing() const override { return m_world.grabbedBody() >= 0; }
+    std::optional<double> mouseRadius() const override
+    {
+        if (!(scene().components.empty() && bodyCount() == 1))
+            return std::nullopt;
+        return m_mouseRadius.value_or(scene().params.radius);
+    }
 
     Readouts readouts() const override
     {
@@ -209,6 +216,7 @@ private:
 
     XpbdWorld m_world;
     bool m_spawned = false;
+    std::optional<double> m_mouseRadius; // §4.1, once the mouse has moved
 };
 
 } // namespace
