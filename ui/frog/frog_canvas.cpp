@@ -37,6 +37,8 @@ constexpr qint64 kTextRefreshNs = 250'000'000;
 const QColor kLetterbox(0x26, 0x30, 0x36);
 const QColor kSkyTop(0xb9, 0xdc, 0xee);   // FrogArt's sky, top
 const QColor kFrameCaptionColour(0x26, 0x30, 0x36, 190); // the frame's caption, over the sky
+constexpr double kPanelMargin = 8; // the text panel: from the frame's corner, px (× presentation scale)
+constexpr double kPanelPad = 6;    // and inside it
 const QColor kMudBottom(0x86, 0x6a, 0x44); // FrogArt's bank, bottom
 const QColor kEdgeColour(0xff, 0x8a, 0x1e);
 const QColor kVelocityColour(0x1f, 0x5f, 0xd8);
@@ -248,11 +250,12 @@ void FrogCanvas::refreshTexts()
 
     QStringList lines;
     const auto num = [](double v, int decimals) { return displayFixed(v, decimals); };
+    bool blownUpLine = false; // lines[0], wrapped to the canvas: it must be read whole
     if (m_sim) {
         const SceneSpec& scene = m_sim->scene();
         if (m_sim->solver() == SolverKind::Seed && m_sim->bodyCount() > 0) {
             const double error = m_sim->readouts().areaErrorPercent;
-            if (blownUp(error, m_startAreaError))
+            if ((blownUpLine = blownUp(error, m_startAreaError)))
                 lines << tr("The body has blown up (area error %1 %): press Reset (R), or switch to the Stable solver")
                              .arg(!std::isfinite(error) ? QStringLiteral("∞")
                                   : (error > 0 ? QStringLiteral("+") : QString()) + displayFixed(error, 0));
@@ -316,6 +319,9 @@ void FrogCanvas::refreshTexts()
         QStaticText& t = m_lines[static_cast<std::size_t>(i)];
         t.setTextFormat(Qt::PlainText);
         t.setText(lines[i]);
+        // What the text panel's margins and padding leave of the canvas.
+        const double room = sceneRectIn(QRectF(rect())).width() - 2 * (kPanelMargin + kPanelPad) * m_style.scale;
+        t.setTextWidth(i == 0 && blownUpLine ? std::max(120.0, room) : -1);
         t.prepare(QTransform(), font);
     }
 }
@@ -384,7 +390,9 @@ void FrogCanvas::render(QPainter& p, const QRectF& target)
     // The frame's top edge, a thin line across the sky: say what it is.
     p.setPen(kFrameCaptionColour);
     p.setFont(m_numberFont);
-    p.drawText(frameCaptionRect(target), Qt::AlignRight | Qt::AlignVCenter, frameCaption());
+    const QRectF caption = frameCaptionRect(target);
+    p.drawText(caption, Qt::AlignRight | Qt::AlignVCenter,
+               QFontMetricsF(m_numberFont).elidedText(frameCaption(), Qt::ElideRight, caption.width()));
     p.restore();
     p.setClipRect(r, Qt::IntersectClip);
 
@@ -684,7 +692,7 @@ void FrogCanvas::drawTextPanel(QPainter& p, const QRectF& sceneRect)
     const bool bar = m_overlays.area && m_sim->bodyCount() > 0;
     if (m_lines.empty() && !bar)
         return;
-    const double k = m_style.scale, margin = 8 * k, pad = 6 * k;
+    const double k = m_style.scale, margin = kPanelMargin * k, pad = kPanelPad * k;
     double width = 0, height = 0;
     for (const QStaticText& t : m_lines) {
         width = std::max(width, t.size().width());
