@@ -12,6 +12,7 @@
 #include <QDoubleSpinBox>
 #include <QImage>
 #include <QJsonArray>
+#include <QLabel>
 #include <QPainter>
 #include <QPicture>
 #include <QPushButton>
@@ -527,6 +528,102 @@ private slots:
         QVERIFY(!tab().loadState(fewerSides, &error));
         QVERIFY2(error.contains("raise width and height"), qPrintable(error));
         QCOMPARE(tab().saveState(), before);
+    }
+
+    // Issue 14, item 17: the seed solver says when it cannot keep the scene's shapes.
+    void seedSaysItRoundsOtherShapes()
+    {
+        auto* note = tab().findChild<QLabel*>("frogSolverNote");
+        QVERIFY(note);
+        QVERIFY(tab().setScene("shapes", nullptr));
+        QVERIFY(tab().setSolver(SolverKind::Seed, nullptr));
+        QVERIFY(note->isVisible());
+        QVERIFY2(note->text().contains("angle constraints") && note->text().contains("Stable"), qPrintable(note->text()));
+        QVERIFY(tab().setSolver(SolverKind::Stable, nullptr)); // the stable solver keeps the shapes
+        QVERIFY(!note->isVisible());
+        QVERIFY(tab().setSolver(SolverKind::Seed, nullptr));
+        QVERIFY(tab().setScene("frog", nullptr)); // a regular polygon: nothing to say
+        QVERIFY(!note->isVisible());
+    }
+
+    // A seed that blows up (area error past ±100 %) says to press Reset or switch solver,
+    // with or without the readouts overlay; the stable solver on the same values does not.
+    void seedExplosionSaysPressReset()
+    {
+        QVERIFY(tab().setScene("area", nullptr));
+        QVERIFY(tab().setSolver(SolverKind::Seed, nullptr));
+        QVERIFY(tab().editParameter("velmax", QJsonValue(1000), nullptr));
+        FrogCanvas* canvas = tab().canvas();
+        tab().findChild<QPushButton*>("frogPause")->click();
+        steps(tab(), 300);
+        QVERIFY(std::abs(canvas->simulation()->readouts().areaErrorPercent) > 100);
+        QString lines = canvas->textLines().join('\n');
+        QVERIFY2(lines.contains("Reset (R)") && lines.contains("Stable solver"), qPrintable(lines));
+        QVERIFY(tab().setSolver(SolverKind::Stable, nullptr));
+        steps(tab(), 300);
+        lines = canvas->textLines().join('\n');
+        QVERIFY2(!lines.contains("Reset (R)"), qPrintable(lines));
+        tab().reset(); // and once started again, the seed's hint is gone too
+        QVERIFY(tab().setSolver(SolverKind::Seed, nullptr));
+        QVERIFY2(!canvas->textLines().join('\n').contains("Reset (R)"), qPrintable(canvas->textLines().join('\n')));
+    }
+
+    // §4.1: the mouse sets the polygon's radius, and the panel's radius field shows it.
+    void polygonRadiusFieldFollowsTheMouse_data()
+    {
+        QTest::addColumn<SolverKind>("solver");
+        QTest::newRow("seed") << SolverKind::Seed;
+        QTest::newRow("stable") << SolverKind::Stable;
+    }
+    void polygonRadiusFieldFollowsTheMouse()
+    {
+        QFETCH(SolverKind, solver);
+        QVERIFY(tab().setScene("polygon", nullptr));
+        QVERIFY(tab().setSolver(solver, nullptr));
+        FrogCanvas* canvas = tab().canvas();
+        QDoubleSpinBox* radius = tab().parametersPanel()->spinBox("radius");
+        QVERIFY(radius);
+        QCOMPARE(radius->value(), 120.0);
+        const double h = tab().scene().params.height;
+        for (double y : {h / 2 + 200, h / 2 - 50}) {
+            const QPoint at = canvas->toWidget(Point(640, y)).toPoint();
+            QTest::mouseMove(canvas, at);
+            const double expected = std::abs(canvas->toScene(QPointF(at)).y - h / 2); // r = |mouseY − h/2|
+            QVERIFY2(std::abs(radius->value() - expected) < 0.051,
+                     qPrintable(QString("field %1, mouse radius %2").arg(radius->value()).arg(expected)));
+            std::vector<Point> v;
+            canvas->simulation()->bodyVertices(0, v);
+            QVERIFY(std::abs(distance(v[0], Point(640, h / 2)) - expected) < 0.01); // the polygon is that size
+        }
+        QVERIFY(!tab().undoStack()->canUndo()); // the mouse is not an edit
+    }
+
+    // The thin line across the sky is the frame's top edge: a caption says so, in the sky
+    // bar above it when the canvas is taller than the scene, else just under it.
+    void frameTopLineIsCaptioned()
+    {
+        FrogCanvas* canvas = tab().canvas();
+        QVERIFY(canvas->height() * 16 > canvas->width() * 9 + 160); // a sky bar above the frame
+        const int top = int(std::floor(canvas->toWidget(Point(0, 0)).y())) - 2;
+        QVERIFY(top > 10);
+        QImage image(canvas->size(), QImage::Format_ARGB32);
+        image.fill(Qt::white);
+        {
+            QPainter p(&image);
+            canvas->render(p, QRectF(QPointF(0, 0), QSizeF(canvas->size())));
+        }
+        const QRgb sky = image.pixel(2, 2); // the bar's plain colour
+        int ink = 0;
+        for (int y = 0; y < top; ++y)
+            for (int x = 0; x < image.width(); ++x)
+                if (qGray(image.pixel(x, y)) < qGray(sky) - 60)
+                    ++ink;
+        QVERIFY2(ink > 50, qPrintable(QString("%1 dark pixels above the frame").arg(ink)));
+        QVERIFY(canvas->frameCaption().contains("frame"));
+        // A wide canvas has no bar: the caption sits inside the frame, under its top edge.
+        const QRectF wide(0, 0, 1600, 400);
+        const QRectF caption = canvas->frameCaptionRect(wide);
+        QVERIFY(caption.top() >= 0 && caption.bottom() < wide.height() / 4);
     }
 
     void tinyWindowIsSafe()

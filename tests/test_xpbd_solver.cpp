@@ -803,6 +803,46 @@ private slots:
         QVERIFY(std::abs(w.areaErrorPercent(b)) < 1.0);
     }
 
+    void frogLegsNeverActOnTheBody()
+    {
+        // Annex II (§4.16): the legs hang from the body and never act on it. On the stable
+        // solver too: the frog's body moves bit for bit as the same body without legs, landing,
+        // resting and dragged — legs that carried it would stand it up and tip it over.
+        const FrogParams frog;
+        const auto run = [&frog](bool legs) {
+            XpbdWorld w = makeWorld(xpbdParamsFrom(frog));
+            const int b = addRegular(w, frog.center, frog.radius, frog.sides, frog.targetArea, frog.v0);
+            for (int leg = 0; legs && leg < 4; ++leg) {
+                const ChainAnchor a = frogLegAnchor(b, leg, frog.sides);
+                if (!w.addChain(frogLegChain(frog.legs[std::size_t(leg)], a, w.anchorPoint(a))).ok())
+                    return std::vector<Point>{};
+            }
+            for (int i = 0; i < 600; ++i) {
+                if (i == 300)
+                    w.press(w.centroid(b) + Point(30, 10)); // off centre: a turning drag
+                if (i > 300 && i < 400)
+                    w.move({640 + 3.0 * (i - 300), 300});
+                if (i == 400)
+                    w.release();
+                w.step();
+            }
+            return w.bodyVertices(b);
+        };
+        const auto with = run(true), without = run(false);
+        QCOMPARE(with.size(), std::size_t(frog.sides));
+        QCOMPARE(without.size(), with.size());
+        QVERIFY(std::memcmp(with.data(), without.data(), with.size() * sizeof(Point)) == 0);
+
+        // Such a chain cannot measure its first limit from the body it does not act on.
+        XpbdWorld w = makeWorld();
+        const int b = addRegular(w, {640, 360}, 80, 10);
+        ChainDef tail = frogLegChain(frog.legs[0], frogLegAnchor(b, 0, 10), w.anchorPoint(frogLegAnchor(b, 0, 10)));
+        tail.limits[0].reference = AngleReference::Parent;
+        QVERIFY(!w.addChain(tail).ok());
+        tail.pullsBody = true;
+        QVERIFY(w.addChain(tail).ok());
+    }
+
     void bendingKeepsOtherShapes()
     {
         // §5.2.3: a body that is not a regular polygon — an L — keeps its form when the

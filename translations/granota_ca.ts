@@ -1736,6 +1736,14 @@
     <context>
         <name>granota::ui::FrogCanvas</name>
         <message>
+            <source>Top of the frame: the scene's upper wall (y = 0)</source>
+            <translation>Dalt del marc: la paret superior de l'escena (y = 0)</translation>
+        </message>
+        <message>
+            <source>The body has blown up (area error %1 %): press Reset (R), or switch to the Stable solver</source>
+            <translation>El cos ha explotat (error d'àrea %1 %): premeu Reinicia (R) o canvieu a la resolució Estable</translation>
+        </message>
+        <message>
             <source>Area error, mean of the %1 bodies, %2 % · largest stretch %3 %</source>
             <translation>Error d'àrea, mitjana dels %1 cossos, %2 % · estirament màxim %3 %</translation>
         </message>
@@ -2098,6 +2106,8 @@
         <message>
             <source>Stage: %1</source>
             <translation>Etapa: %1</translation>
+            <source>The seed solver has no angle constraints: these shapes round into blobs. The Stable solver keeps their form.</source>
+            <translation>La resolució Llavor no té restriccions d'angle: aquestes formes s'arrodoneixen fins a semblar bombolles. La resolució Estable en manté la forma.</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="229" />

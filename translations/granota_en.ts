@@ -1736,6 +1736,14 @@
     <context>
         <name>granota::ui::FrogCanvas</name>
         <message>
+            <source>Top of the frame: the scene's upper wall (y = 0)</source>
+            <translation>Top of the frame: the scene's upper wall (y = 0)</translation>
+        </message>
+        <message>
+            <source>The body has blown up (area error %1 %): press Reset (R), or switch to the Stable solver</source>
+            <translation>The body has blown up (area error %1 %): press Reset (R), or switch to the Stable solver</translation>
+        </message>
+        <message>
             <source>Area error, mean of the %1 bodies, %2 % · largest stretch %3 %</source>
             <translation>Area error, mean of the %1 bodies, %2 % · largest stretch %3 %</translation>
         </message>
@@ -2098,6 +2106,8 @@
         <message>
             <source>Stage: %1</source>
             <translation>Stage: %1</translation>
+            <source>The seed solver has no angle constraints: these shapes round into blobs. The Stable solver keeps their form.</source>
+            <translation>The seed solver has no angle constraints: these shapes round into blobs. The Stable solver keeps their form.</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="229" />

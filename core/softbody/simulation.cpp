@@ -80,6 +80,8 @@ bool Simulation::inBounds(double slack) const
     return allPoints(*this, [&](const Point& p) { return p.x >= -slack && p.x <= w + slack && p.y >= -slack && p.y <= h + slack; });
 }
 
+bool seedRoundsShapes(const SceneSpec& scene) { return !scene.shapes.empty(); }
+
 double potentialEnergy(const std::vector<Point>& points, Point g, double width, double height)
 {
     // Measured from the edge gravity pulls towards: x = W−1 when g.x > 0, x = 0 when g.x < 0.

@@ -11,6 +11,7 @@
 #include "core/base/expected.h"
 #include "core/softbody/scenes/scene.h"
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -81,6 +82,10 @@ public:
     virtual bool grabbing() const { return false; }
 
     virtual Readouts readouts() const = 0;
+    /// §4.1's polygon (the `polygon` stage, no components): the radius the mouse has set,
+    /// r = |mouseY − h/2|, or the scene's radius before the mouse has moved; nullopt in every
+    /// other scene. The Frog tab's radius field shows it.
+    virtual std::optional<double> mouseRadius() const { return std::nullopt; }
 
     /// Every coordinate finite, every body vertex and joint inside [0, W−1] × [0, H−1]
     /// (within `slack` px).
@@ -96,6 +101,23 @@ private:
     SolverKind m_solver;
     long m_steps = 0;
 };
+
+/// An area error past ±100 % (Readouts::areaErrorPercent) that is also 100 points away from
+/// the error the scene started with: the body has blown up, as the seed's explicit schemes
+/// can on extreme settings (a +9096 % was seen). The Frog tab then says to press Reset or to
+/// switch to the stable solver. (§4.5's `area` stage starts at +112 %, a polygon twice its
+/// target area, and shrinks: that is no explosion.) Not finite: blown up.
+inline constexpr double kBlownUpAreaErrorPercent = 100;
+inline bool blownUp(double areaErrorPercent, double startAreaErrorPercent)
+{
+    const double k = kBlownUpAreaErrorPercent;
+    return !(std::abs(areaErrorPercent) <= k || std::abs(areaErrorPercent - startAreaErrorPercent) <= k);
+}
+
+/// Whether the seed solver cannot keep the form of `scene`'s bodies: it has no angle
+/// constraints, so the `shapes` of §5.2.3 (a star, a rectangle, an L) round into blobs under
+/// its springs and area (docs/solvers.md). The Frog tab says so.
+bool seedRoundsShapes(const SceneSpec& scene);
 
 /// Potential energy of unit masses at `points` under gravity g, measured from the frame
 /// edge that gravity points to (so it is ≥ 0 inside the frame).

@@ -11,6 +11,7 @@
 #include <QApplication>
 #include <QCursor>
 #include <QEnterEvent>
+#include <QFontMetricsF>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
@@ -35,6 +36,9 @@ constexpr qint64 kTextRefreshNs = 250'000'000;
 
 const QColor kLetterbox(0x26, 0x30, 0x36);
 const QColor kSkyTop(0xb9, 0xdc, 0xee);   // FrogArt's sky, top
+const QColor kFrameCaptionColour(0x26, 0x30, 0x36, 190); // the frame's caption, over the sky
+constexpr double kPanelMargin = 8; // the text panel: from the frame's corner, px (× presentation scale)
+constexpr double kPanelPad = 6;    // and inside it
 const QColor kMudBottom(0x86, 0x6a, 0x44); // FrogArt's bank, bottom
 const QColor kEdgeColour(0xff, 0x8a, 0x1e);
 const QColor kVelocityColour(0x1f, 0x5f, 0xd8);
@@ -79,6 +83,9 @@ void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
     m_backgroundSize = QSize(); // the frame may have another size
     if (m_sim && m_mouseKnown && underMouse())
         m_sim->move(m_mouse); // Processing's mouseX/mouseY hold from the first frame (§4.1, §4.13)
+    m_reportedRadius = -1;
+    reportMouseRadius();
+    m_startAreaError = m_sim && m_sim->bodyCount() > 0 ? m_sim->readouts().areaErrorPercent : 0;
     unsetCursor();
     refreshTexts();
     updateTimer();
@@ -243,8 +250,16 @@ void FrogCanvas::refreshTexts()
 
     QStringList lines;
     const auto num = [](double v, int decimals) { return displayFixed(v, decimals); };
+    bool blownUpLine = false; // lines[0], wrapped to the canvas: it must be read whole
     if (m_sim) {
         const SceneSpec& scene = m_sim->scene();
+        if (m_sim->solver() == SolverKind::Seed && m_sim->bodyCount() > 0) {
+            const double error = m_sim->readouts().areaErrorPercent;
+            if ((blownUpLine = blownUp(error, m_startAreaError)))
+                lines << tr("The body has blown up (area error %1 %): press Reset (R), or switch to the Stable solver")
+                             .arg(!std::isfinite(error) ? QStringLiteral("∞")
+                                  : (error > 0 ? QStringLiteral("+") : QString()) + displayFixed(error, 0));
+        }
         if (const int slower = framesPerStep(); slower > 1)
             lines << tr("Running %n× slower than real time: a step of this scene is more work than a frame holds", "",
                         slower);
@@ -304,6 +319,9 @@ void FrogCanvas::refreshTexts()
         QStaticText& t = m_lines[static_cast<std::size_t>(i)];
         t.setTextFormat(Qt::PlainText);
         t.setText(lines[i]);
+        // What the text panel's margins and padding leave of the canvas.
+        const double room = sceneRectIn(QRectF(rect())).width() - 2 * (kPanelMargin + kPanelPad) * m_style.scale;
+        t.setTextWidth(i == 0 && blownUpLine ? std::max(120.0, room) : -1);
         t.prepare(QTransform(), font);
     }
 }
@@ -369,6 +387,12 @@ void FrogCanvas::render(QPainter& p, const QRectF& target)
     p.setPen(m_framePen);
     p.setBrush(Qt::NoBrush);
     p.drawRect(r.adjusted(-0.5, -0.5, 0.5, 0.5));
+    // The frame's top edge, a thin line across the sky: say what it is.
+    p.setPen(kFrameCaptionColour);
+    p.setFont(m_numberFont);
+    const QRectF caption = frameCaptionRect(target);
+    p.drawText(caption, Qt::AlignRight | Qt::AlignVCenter,
+               QFontMetricsF(m_numberFont).elidedText(frameCaption(), Qt::ElideRight, caption.width()));
     p.restore();
     p.setClipRect(r, Qt::IntersectClip);
 
@@ -406,6 +430,20 @@ void FrogCanvas::render(QPainter& p, const QRectF& target)
     p.setWorldTransform(base);
     drawTextPanel(p, r);
     p.restore();
+}
+
+QString FrogCanvas::frameCaption() const
+{
+    return tr("Top of the frame: the scene's upper wall (y = 0)");
+}
+
+QRectF FrogCanvas::frameCaptionRect(const QRectF& target) const
+{
+    // Just above the line when the sky bar over the frame has room for it, else just below.
+    const QRectF r = sceneRectIn(target);
+    const double h = QFontMetricsF(m_numberFont).height() + 2, margin = 6 * m_style.scale;
+    const double top = r.top() - target.top() >= h + 2 ? r.top() - h - 1 : r.top() + 1;
+    return QRectF(r.left() + margin, top, r.width() - 2 * margin, h);
 }
 
 void FrogCanvas::fillPath(const std::vector<Point>& points, bool close)
@@ -654,7 +692,7 @@ void FrogCanvas::drawTextPanel(QPainter& p, const QRectF& sceneRect)
     const bool bar = m_overlays.area && m_sim->bodyCount() > 0;
     if (m_lines.empty() && !bar)
         return;
-    const double k = m_style.scale, margin = 8 * k, pad = 6 * k;
+    const double k = m_style.scale, margin = kPanelMargin * k, pad = kPanelPad * k;
     double width = 0, height = 0;
     for (const QStaticText& t : m_lines) {
         width = std::max(width, t.size().width());
@@ -702,6 +740,7 @@ void FrogCanvas::mousePressEvent(QMouseEvent* event)
         return;
     // Annex II, mousePressed: grab when the cursor is inside the body.
     m_sim->move(m_mouse);
+    reportMouseRadius();
     m_pressed = true;
     const bool held = m_sim->press(m_mouse);
     if (held && m_sim->grabbing())
@@ -718,6 +757,7 @@ void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
     m_mouse = toScene(event->position());
     m_mouseKnown = true;
     m_sim->move(m_mouse);
+    reportMouseRadius();
     if (!m_pressed && m_sim->scene().has("grab")) {
         bool inside = false;
         for (int i = 0; i < m_sim->bodyCount() && !inside; ++i) {
@@ -731,6 +771,15 @@ void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
     }
     if (!m_running)
         update(); // the eyes follow the mouse even when paused
+}
+
+void FrogCanvas::reportMouseRadius()
+{
+    const std::optional<double> r = m_sim ? m_sim->mouseRadius() : std::nullopt;
+    if (r && *r != m_reportedRadius) {
+        m_reportedRadius = *r;
+        emit mouseRadiusChanged(*r);
+    }
 }
 
 void FrogCanvas::mouseReleaseEvent(QMouseEvent* event)

@@ -104,12 +104,18 @@ public:
 
     QSize sizeHint() const override { return {960, 540}; }
     QSize minimumSizeHint() const override { return {80, 45}; }
+    /// The caption of the thin line drawn along the frame's top edge (the scene's upper wall),
+    /// and where it is drawn in `target` (the widget's rect on screen).
+    QString frameCaption() const;
+    QRectF frameCaptionRect(const QRectF& target) const;
 
 signals:
     /// About four times a second: the fit cost (µs) for the side panel.
     void fitCostChanged(double microseconds);
     /// Hints for the status bar.
     void statusMessage(const QString& text);
+    /// §4.1's polygon: the mouse has set the radius to `radius` px (Simulation::mouseRadius).
+    void mouseRadiusChanged(double radius);
 
 protected:
     void paintEvent(QPaintEvent* event) override;
@@ -129,6 +135,7 @@ private:
     void advance();
     void updateTimer();
     void refreshTexts();
+    void reportMouseRadius();
     QRectF sceneRectIn(const QRectF& target) const;
 
     void drawScene(QPainter& p, double pixel);
@@ -159,6 +166,8 @@ private:
     bool m_mouseKnown = false;
     bool m_pressed = false;
     bool m_spawnHeld = false;
+    double m_reportedRadius = -1; // last mouseRadiusChanged, −1 before any
+    double m_startAreaError = 0;  // the area error the simulation started with (blownUp)
 
     // Buffers reused every frame.
     std::vector<Point> m_vertices, m_outline, m_joints, m_previous, m_fitControl, m_fitCurve, m_work;

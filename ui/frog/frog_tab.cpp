@@ -102,6 +102,11 @@ FrogTab::FrogTab(QWidget* parent)
     m_reset->setObjectName(QStringLiteral("frogReset"));
     for (QPushButton* b : {m_pause, m_step, m_reset})
         b->setFocusPolicy(Qt::NoFocus); // the space bar stays with the canvas (Annex II's spawn)
+    m_solverNote = new QLabel(m_sceneBox);
+    m_solverNote->setObjectName(QStringLiteral("frogSolverNote"));
+    m_solverNote->setWordWrap(true);
+    m_solverNote->setStyleSheet(QStringLiteral("color: #a4431b;"));
+    m_solverNote->hide();
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(m_pause);
     buttons->addWidget(m_step);
@@ -111,7 +116,8 @@ FrogTab::FrogTab(QWidget* parent)
     sceneGrid->addWidget(m_description, 1, 0, 1, 2);
     sceneGrid->addWidget(m_solverLabel, 2, 0);
     sceneGrid->addWidget(m_solverCombo, 2, 1);
-    sceneGrid->addLayout(buttons, 3, 0, 1, 2);
+    sceneGrid->addWidget(m_solverNote, 3, 0, 1, 2);
+    sceneGrid->addLayout(buttons, 4, 0, 1, 2);
     sceneGrid->setColumnStretch(1, 1);
     column->addWidget(m_sceneBox);
 
@@ -206,6 +212,13 @@ FrogTab::FrogTab(QWidget* parent)
             m_fitCost->setText(tr("Cost of the fit: %1 µs per frame.").arg(displayFixed(us, 1)));
     });
     connect(m_canvas, &FrogCanvas::statusMessage, this, &TabPage::statusMessage);
+    connect(m_canvas, &FrogCanvas::mouseRadiusChanged, this, [this](double radius) {
+        // §4.1: the mouse sets the radius; the field shows it (no undo step, nothing rebuilt).
+        if (!m_scene.hasParam("radius") || m_scene.params.radius == radius)
+            return;
+        m_scene.params.radius = radius;
+        m_params->setValues(m_scene);
+    });
     connect(m_params, &FrogParametersPanel::edited, this, [this](const QString& key, const QJsonValue& value) {
         QString error;
         if (!editParameter(key, value, &error)) {
@@ -543,6 +556,9 @@ void FrogTab::retranslate()
     m_step->setToolTip(tr("One fixed step, as one call of actualitza() in Annex II; pauses first (S or .)."));
     m_reset->setText(tr("Reset"));
     m_reset->setToolTip(tr("Start the scene again with the current parameters (R)."));
+    m_solverNote->setText(tr("The seed solver has no angle constraints: these shapes round into blobs. The Stable "
+                             "solver keeps their form."));
+    m_solverNote->setVisible(m_solver == SolverKind::Seed && seedRoundsShapes(m_scene));
 
     m_bezierBox->setTitle(tr("Bézier outline (§4.9)"));
     m_precomputed->setText(tr("Precomputed points"));

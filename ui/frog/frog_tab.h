@@ -100,6 +100,7 @@ private:
     QWidget* m_side = nullptr;
     QGroupBox *m_sceneBox, *m_bezierBox, *m_paramBox, *m_overlayBox;
     QLabel *m_sceneLabel, *m_description, *m_solverLabel, *m_hint, *m_note, *m_fitCost;
+    QLabel* m_solverNote; ///< what the chosen solver cannot show of this scene (seedRoundsShapes)
     QComboBox *m_sceneCombo, *m_solverCombo;
     QPushButton *m_pause, *m_step, *m_reset;
     QRadioButton *m_precomputed, *m_fit;

@@ -37,6 +37,10 @@ public:
         if (scene().components.empty())
             m_body.followMouse(p);
     }
+    std::optional<double> mouseRadius() const override
+    {
+        return scene().components.empty() ? std::optional<double>(m_body.radius()) : std::nullopt;
+    }
 
     Readouts readouts() const override
     {

@@ -31,6 +31,7 @@ ChainDef frogLegChain(const LegParams& leg, const ChainAnchor& anchor, Point sho
     def.limits = {{leg.shoulderMin, leg.shoulderMax, AngleReference::World},
                   {leg.elbowMin, leg.elbowMax, AngleReference::World}};
     def.jointMass = jointMass;
+    def.pullsBody = false; // §4.16: the legs hang from the body and never act on it
     return def;
 }
 

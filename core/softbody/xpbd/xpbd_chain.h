@@ -48,6 +48,11 @@ struct ChainDef {
     /// One limit per link (joints.size() − 1 entries), or empty for free links.
     std::vector<AngleLimit> limits;
     double jointMass = 1; ///< mass of each joint, mass units (> 0)
+    /// Whether a chain hanging from a body pulls it (its first link acts on the body's two
+    /// vertices). false: the chain follows the body and never acts on it, as Annex II's legs
+    /// (§4.16, Granota.actualitza places the shoulders, then steps the legs); its first
+    /// limit may then not be measured from the body (AngleReference::Parent).
+    bool pullsBody = true;
 };
 
 /// The shoulder of leg `leg` (FrogParams::legs order: front right, front left, back right,
@@ -57,7 +62,9 @@ struct ChainDef {
 ChainAnchor frogLegAnchor(int body, int leg, int sides);
 
 /// A two-link leg hanging straight down from `shoulder`, with the seed's lengths and its
-/// absolute angle limits (AngleReference::World), Annex II l. 411–423.
+/// absolute angle limits (AngleReference::World), Annex II l. 411–423. Like the seed's, it
+/// hangs from the body without acting on it (pullsBody = false): a frog whose rigid legs
+/// carried its body would land standing on them, a balance it tips over from onto its side.
 ChainDef frogLegChain(const LegParams& leg, const ChainAnchor& anchor, Point shoulder, double jointMass = 0.25);
 
 } // namespace granota

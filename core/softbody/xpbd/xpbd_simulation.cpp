@@ -141,6 +141,7 @@ public:
             const auto shape = regularPolygon(scene().params.center, r, scene().params.sides);
             m_world.setTargetArea(0, polygonArea(shape));
             m_world.setBodyVertices(0, shape);
+            m_mouseRadius = r;
             return;
         }
         m_world.move(p);
@@ -151,6 +152,15 @@ public:
         if (m_world.grabbedBody() >= 0 || bodyCount() == 0)
             return;
         respawnAt(p);
+        if (scene().has("grab") && scene().grab == GrabMode::Anchors) {
+            // Annex II keeps vertex 0 10 px above the mouse and the body hanging below it
+            // (seed_body_step.inc): spawn it there, so that the short ropes hold it hanging,
+            // not balanced upside down on ropes as long as its height.
+            const double y = std::clamp(p.y, 0.0, scene().params.height - 1);
+            const double below = (y - 10) - m_world.bodyVertices(0).front().y;
+            if (below > 0 && y + below <= scene().params.height - 1)
+                respawnAt(Point(p.x, y + below));
+        }
         if (scene().has("grab")) {
             m_world.press(p);
             m_spawned = true;
@@ -163,6 +173,12 @@ public:
         m_spawned = false;
     }
     bool grabbing() const override { return m_world.grabbedBody() >= 0; }
+    std::optional<double> mouseRadius() const override
+    {
+        if (!(scene().components.empty() && bodyCount() == 1))
+            return std::nullopt;
+        return m_mouseRadius.value_or(scene().params.radius);
+    }
 
     Readouts readouts() const override
     {
@@ -200,6 +216,7 @@ private:
 
     XpbdWorld m_world;
     bool m_spawned = false;
+    std::optional<double> m_mouseRadius; // §4.1, once the mouse has moved
 };
 
 } // namespace

@@ -296,6 +296,8 @@ Expected<int> XpbdWorld::addChain(const ChainDef& def)
             return outOfRange("the chain's anchor vertices are not vertices of the body");
         if (!(a.t >= 0 && a.t <= 1))
             return outOfRange("the chain's anchor parameter t must lie in [0, 1]");
+        if (!def.pullsBody && !def.limits.empty() && def.limits[0].reference == AngleReference::Parent)
+            return invalid("a chain that does not pull its body cannot measure its first angle from the body");
     } else if (!isFinite(a.point)) {
         return invalid("the chain's fixed anchor must be finite");
     }
@@ -308,11 +310,12 @@ Expected<int> XpbdWorld::addChain(const ChainDef& def)
     const Point shift = root - def.joints[0];
     const double invMass = 1 / def.jointMass;
     // The first joint (the seed's nail) is moved by the program only (w = 0): onto the
-    // fixed point, or onto the body's point, through which the first link pulls the body.
+    // fixed point, or onto the body's point, through which the first link pulls the body
+    // (pullsBody; otherwise the first link is an ordinary one from that joint).
     addParticle(root, Point(), 0.0);
     for (int k = 1; k < joints; ++k)
         addParticle(clampToFrame(def.joints[at(k)] + shift), Point(), invMass);
-    if (a.body >= 0) {
+    if (a.body >= 0 && def.pullsBody) {
         const Body& b = m_bodies[at(a.body)];
         AnchoredDistanceConstraint link;
         link.joint = c.first + 1;
@@ -652,9 +655,12 @@ void XpbdWorld::solveSubstep(double h, double fraction)
                 }
             }
             // The frame inside the passes, so that links and floor agree (§4.15: "s'han de
-            // revisar les col·lisions amb els extrems del marc").
+            // revisar les col·lisions amb els extrems del marc"). Without friction, as the
+            // seed's joints (a wrist below the floor is lifted, the elbow slides, §4.16):
+            // a joint held by friction, rammed into the floor by its link, would pin the
+            // leg folded past its limits.
             solveWalls(x + c.first, xPrev + c.first, w + c.first, m_contact.data() + c.first, c.count, p.width,
-                       p.height, p.wallFriction);
+                       p.height, 0.0);
         }
     }
 
