@@ -8,6 +8,7 @@
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QJsonValue>
+#include <QTimer>
 
 namespace granota::ui {
 
@@ -97,6 +98,17 @@ void CurveTab::setPresentation(bool on)
     m_canvas->setStyleScale(presentationScale(on));
     m_exact->setPresentation(on);
     presentationChanged(on);
+}
+
+void CurveTab::showEvent(QShowEvent* event)
+{
+    TabPage::showEvent(event);
+    // Queued: the tab's showEvent emits its hint after this one returns.
+    QTimer::singleShot(0, this, [this] {
+        if (isVisible())
+            if (const QString note = m_editor->labelsHiddenNote(); !note.isEmpty())
+                emit statusMessage(note);
+    });
 }
 
 void CurveTab::zoom(double factor) { m_canvas->zoom(factor); }

@@ -294,6 +294,7 @@ void PointEditor::nudge(int dx, int dy, bool tenTimes)
 void PointEditor::showContextMenu(const QPointF& screen, const QPoint& global)
 {
     QMenu menu(m_canvas);
+    menu.setToolTipsVisible(true);
     const int hit = pick(screen);
     const Point at = snapped(m_canvas->view().toModel(screen));
     if (hit >= 0) {
