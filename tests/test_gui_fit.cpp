@@ -438,6 +438,14 @@ private slots:
         // The selected point keeps its label.
         editor->setSelected(7);
         QCOMPARE(paintedCanvas(tab).labels, QStringList{QStringLiteral("Q7")});
+        // And the one under the mouse, while it is there.
+        const QPoint over = tab.canvas()->view().toScreen(editor->points()[100]).toPoint();
+        QTest::mouseMove(tab.canvas(), over);
+        QCOMPARE(editor->pick(over), 100);
+        QCOMPARE(paintedCanvas(tab).labels, (QStringList{QStringLiteral("Q7"), QStringLiteral("Q100")}));
+        QEvent leave(QEvent::Leave);
+        QCoreApplication::sendEvent(tab.canvas(), &leave);
+        QCOMPARE(paintedCanvas(tab).labels, QStringList{QStringLiteral("Q7")});
         // Show point labels: all of them, at full size; one undo step; kept in the document.
         const int steps = tab.undoStack()->count();
         editor->chooseLabels(true);

@@ -59,7 +59,8 @@ PointEditor::PointEditor(CurveCanvas* canvas, QUndoStack* undoStack, QObject* pa
             p.setPen(QPen(Qt::white, style.thinLine()));
             p.setBrush(sel ? style.handleSelected : m_color);
             p.drawEllipse(s, sel ? r * 1.3 : small, sel ? r * 1.3 : small);
-            if (stride <= 1 && (labels || (sel && !m_prefix.isEmpty()))) {
+            const bool named = sel || static_cast<int>(i) == m_hovered; // labelled even when labels step aside
+            if (stride <= 1 && (labels || (named && !m_prefix.isEmpty()))) {
                 // Coincident points (Ex 2.3 closes its curve: P4 = P0) stack their labels.
                 int below = 0;
                 for (std::size_t j = 0; j < i && labels && m_points.size() <= kStackLabelsUpTo; ++j) {
@@ -72,6 +73,15 @@ PointEditor::PointEditor(CurveCanvas* canvas, QUndoStack* undoStack, QObject* pa
             }
         }
     });
+}
+
+void PointEditor::setHovered(int index)
+{
+    if (index == m_hovered)
+        return;
+    m_hovered = index;
+    if (!labelsShown())
+        m_canvas->update(); // its label comes and goes
 }
 
 bool PointEditor::labelsShown() const { return m_labelChoice.value_or(m_points.size() <= kLabelledPointsUpTo); }
@@ -337,7 +347,9 @@ bool PointEditor::eventFilter(QObject* watched, QEvent* event)
     case QEvent::MouseMove: {
         auto* e = static_cast<QMouseEvent*>(event);
         if (m_dragging < 0) {
-            m_canvas->setCursor(pick(e->position()) >= 0 ? Qt::OpenHandCursor : Qt::ArrowCursor);
+            const int hit = pick(e->position());
+            m_canvas->setCursor(hit >= 0 ? Qt::OpenHandCursor : Qt::ArrowCursor);
+            setHovered(hit);
             return false;
         }
         const Point p = snapped(m_canvas->view().toModel(e->position()));
@@ -363,6 +375,9 @@ bool PointEditor::eventFilter(QObject* watched, QEvent* event)
         insertPoint(insertionIndex(p), p);
         return true;
     }
+    case QEvent::Leave:
+        setHovered(-1);
+        return false;
     case QEvent::ContextMenu: {
         auto* e = static_cast<QContextMenuEvent*>(event);
         showContextMenu(e->pos(), e->globalPos());

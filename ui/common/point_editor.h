@@ -12,7 +12,7 @@
 /// through the QUndoStack given to the constructor; successive nudges of one point are one step.
 ///
 /// Past kLabelledPointsUpTo points the handles are drawn small and unlabelled (the selected one
-/// keeps its size and label) unless the user chooses "Show point labels" (the canvas's menu).
+/// keeps its size and label, the one under the mouse its label) unless the user chooses "Show point labels" (the canvas's menu).
 
 #include "core/base/vec2.h"
 #include "core/exact/rational.h"
@@ -120,6 +120,8 @@ private:
     /// point is dragged: the drag so far becomes its undo step, and the drag ends.
     void finishDrag();
     void showContextMenu(const QPointF& screen, const QPoint& global);
+    /// The handle under the mouse (−1: none): labelled when the labels step aside.
+    void setHovered(int index);
 
     CurveCanvas* m_canvas;
     QUndoStack* m_undo;
@@ -127,6 +129,7 @@ private:
     std::vector<Point> m_dragStart; ///< the points when a drag began: one undo step per drag
     int m_selected = -1;
     int m_dragging = -1;
+    int m_hovered = -1;
     bool m_snap = false;
     double m_gridStep = 0.5;
     int m_min = 1;
