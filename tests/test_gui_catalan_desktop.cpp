@@ -235,14 +235,14 @@ private slots:
                 ++decimals;
         }
         QVERIFY(decimals > 0);
-        // The point table: 0.5 as "1/2", 0.05688 as "0,05688".
+        // The point table: a typed 0.05688 as "0,05688", 1.25 as "1,25" (a column of short decimals).
         QVERIFY(window.showTab(QStringLiteral("fit")));
         auto* table = window.currentTab()->findChild<QTableWidget*>();
         QVERIFY(table);
         table->item(0, 0)->setText(QStringLiteral("0,05688"));
         QCOMPARE(table->item(0, 0)->text(), QStringLiteral("0,05688"));
         table->item(0, 1)->setText(QStringLiteral("1.25")); // a typed point is accepted too
-        QCOMPARE(table->item(0, 1)->text(), QStringLiteral("5/4"));
+        QCOMPARE(table->item(0, 1)->text(), QStringLiteral("1,25"));
         // Plot axes.
         for (QCustomPlot* plot : window.findChildren<QCustomPlot*>())
             QCOMPARE(plot->locale().decimalPoint(), QStringLiteral(","));

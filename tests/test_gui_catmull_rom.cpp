@@ -429,6 +429,20 @@ private slots:
         QCOMPARE(int(other.scene().bezier.size()), CatmullRomScene::kBezierSamples);
     }
 
+    // A tension written as a JSON number by hand is the decimal written: 0.1 is 1/10 (the
+    // shortest decimal of the double), not 10000000000000001/100000000000000000.
+    void numericTensionIsTheDecimalWritten()
+    {
+        CatmullRomTab tab;
+        QString error;
+        const QJsonObject state =
+            QJsonDocument::fromJson("{\"points\": [[0, 0], [1, 1], [2, 0]], \"taus\": [0.1, 0.05688]}").object();
+        QVERIFY2(tab.loadState(state, &error), qPrintable(error));
+        QCOMPARE(int(tab.settings().taus.size()), 2);
+        QCOMPARE(granota::toString(tab.settings().taus[0]), std::string("1/10"));
+        QCOMPARE(granota::toString(tab.settings().taus[1]), std::string("711/12500"));
+    }
+
     void loadStateRejectsGarbage_data()
     {
         QTest::addColumn<QByteArray>("json");

@@ -7,6 +7,7 @@
 #include "core/curves/bezier/de_casteljau.h"
 #include "core/base/number_format.h"
 #include "core/exact/rational.h"
+#include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/decasteljau/decasteljau_parameter_control.h"
@@ -27,6 +28,7 @@
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QSpinBox>
+#include <QTableWidget>
 #include <QTest>
 #include <QUndoStack>
 
@@ -237,7 +239,8 @@ private slots:
         QVERIFY2(clock.elapsed() < 20000, qPrintable(QString::number(clock.elapsed())));
     }
 
-    // Arrow keys nudge the selected point: one grid step with Snap to grid on.
+    // Arrow keys nudge the selected point: one grid step with Snap to grid on; the nudges of one
+    // point are one undo step, as a drag is.
     void keyboardNudge()
     {
         DeCasteljauTab tab;
@@ -248,18 +251,137 @@ private slots:
         QVERIFY(tab.pointEditor()->snapEnabled());
         tab.pointEditor()->setSelected(0);
         tab.canvas()->setFocus();
+        const std::vector<Point> before = tab.pointEditor()->points();
         const int steps = tab.undoStack()->count();
         QTest::keyClick(tab.canvas(), Qt::Key_Right);
         QTest::keyClick(tab.canvas(), Qt::Key_Up);
         QTest::keyClick(tab.canvas(), Qt::Key_Up);
         const Point p = tab.pointEditor()->points()[0];
-        QCOMPARE(p.x, tab.pointEditor()->gridStep());
-        QCOMPARE(p.y, 2 * tab.pointEditor()->gridStep());
-        QCOMPARE(tab.undoStack()->count(), steps + 3);
-        // Without snapping, one pixel.
-        snap->setChecked(false);
+        QCOMPARE(p.x, before[0].x + tab.pointEditor()->gridStep());
+        QCOMPARE(p.y, before[0].y + 2 * tab.pointEditor()->gridStep());
+        QCOMPARE(tab.undoStack()->count(), steps + 1);
+        tab.undoStack()->undo();
+        QVERIFY(samePoints(tab.pointEditor()->points(), before));
+        // Another point, after another edit: steps of their own.
+        tab.undoStack()->redo();
+        tab.pointEditor()->setSelected(1);
         QTest::keyClick(tab.canvas(), Qt::Key_Left);
-        QVERIFY(std::fabs(tab.pointEditor()->points()[0].x - (p.x - 1.0 / tab.canvas()->view().scale())) < 1e-12);
+        QCOMPARE(tab.undoStack()->count(), steps + 2);
+        // Nudged back to where it began: no step at all.
+        QTest::keyClick(tab.canvas(), Qt::Key_Right);
+        QCOMPARE(tab.undoStack()->count(), steps + 1);
+        QCOMPARE(tab.pointEditor()->points()[1], before[1]);
+    }
+
+    // Without snapping, a nudge is the largest round step (1, 2 or 5 × 10^k) worth at most
+    // kNudgePixels at the zoom, whatever the zoom; Shift is ten times that.
+    void nudgeStepsAreRound_data()
+    {
+        QTest::addColumn<double>("scale"); // px per unit
+        QTest::addColumn<QString>("step");
+        QTest::newRow("Ex 2.2's zoom") << 40.0 << "1/10";
+        QTest::newRow("ten times closer") << 400.0 << "1/100";
+        QTest::newRow("far out") << 13.0 << "1/5";
+        QTest::newRow("a pixel per unit") << 1.0 << "2";
+    }
+    void nudgeStepsAreRound()
+    {
+        QFETCH(double, scale);
+        QFETCH(QString, step);
+        DeCasteljauTab tab;
+        showTab(tab);
+        granota::ui::PointEditor* editor = tab.pointEditor();
+        tab.canvas()->zoom(1.0); // the user's zoom: points that move no longer refit the view
+        tab.canvas()->view().setScale(scale);
+        const granota::Rational s = editor->nudgeStep(false);
+        QCOMPARE(QString::fromStdString(granota::toString(s)), step);
+        // Round: 1, 2 or 5 times a power of ten, at most kNudgePixels, and the next round step is more.
+        const double px = s.get_d() * scale;
+        QVERIFY2(px <= granota::ui::PointEditor::kNudgePixels && px * 2.5 > granota::ui::PointEditor::kNudgePixels,
+                 qPrintable(QString::number(px)));
+        QVERIFY(editor->nudgeStep(true) == granota::Rational(s * 10));
+        editor->setSelected(0); // at (0, 0)
+        tab.canvas()->setFocus();
+        QTest::keyClick(tab.canvas(), Qt::Key_Right);
+        QCOMPARE(editor->points()[0].x, granota::toDouble(s));
+        QTest::keyClick(tab.canvas(), Qt::Key_Up, Qt::ShiftModifier);
+        QCOMPARE(editor->points()[0].y, granota::toDouble(granota::Rational(10 * s)));
+        QTest::keyClick(tab.canvas(), Qt::Key_Right, Qt::ShiftModifier); // from s to the next multiple of 10s
+        QCOMPARE(editor->points()[0].x, granota::toDouble(granota::Rational(10 * s)));
+    }
+
+    // A point at exact fractions stays at exact fractions however it is nudged: -9/5 nudged right
+    // twice by 1/10 is -8/5, not -1.5999999999999999; the exact panel still shows the triangle in
+    // fractions, the undo brings -9/5 back, and a document keeps the point.
+    void nudgesKeepExactPointsExact()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        granota::ui::PointEditor* editor = tab.pointEditor();
+        tab.pointTable()->item(1, 0)->setText(QStringLiteral("-9/5"));
+        tab.pointTable()->item(1, 1)->setText(QStringLiteral("1/3"));
+        const std::vector<Point> typed = editor->points();
+        QCOMPARE(typed[1], Point(-1.8, 1.0 / 3));
+        tab.canvas()->zoom(1.0); // the user's zoom: points that move no longer refit the view
+        tab.canvas()->view().setScale(40.0); // steps of 1/10
+        editor->setSelected(1);
+        tab.canvas()->setFocus();
+        for (Qt::Key key : {Qt::Key_Right, Qt::Key_Right, Qt::Key_Right, Qt::Key_Left, Qt::Key_Up})
+            QTest::keyClick(tab.canvas(), key);
+        QTest::keyClick(tab.canvas(), Qt::Key_Down, Qt::ShiftModifier); // 2/5 down by 1: 0
+        const Point p = editor->points()[1];
+        QCOMPARE(p, Point(granota::toDouble(granota::frac(-8, 5)), 0.0));
+        QCOMPARE(granota::toString(granota::meantRational(p.x)), std::string("-8/5"));
+        QVERIFY2(tab.exactPanel()->plainText().contains(QStringLiteral("(-8/5, 0)")), qPrintable(tab.exactPanel()->plainText()));
+        QCOMPARE(tab.pointTable()->item(1, 0)->text(), QStringLiteral("-1.6"));
+        // Up from 1/3 goes to the next multiple of 1/10, 2/5: exact too.
+        tab.undoStack()->undo();
+        QVERIFY(samePoints(editor->points(), typed));
+        editor->setSelected(1);
+        QTest::keyClick(tab.canvas(), Qt::Key_Up);
+        QCOMPARE(granota::toString(granota::meantRational(editor->points()[1].y)), std::string("2/5"));
+        // From a dragged, unround value the first press lands on the step's grid.
+        editor->movePoint(1, Point(-6.937088388214905, 0.5));
+        QTest::keyClick(tab.canvas(), Qt::Key_Right);
+        QCOMPARE(editor->points()[1].x, -6.9);
+        QTest::keyClick(tab.canvas(), Qt::Key_Left);
+        QCOMPARE(editor->points()[1].x, -7.0);
+        // A document keeps the nudged point as it is.
+        DeCasteljauTab other;
+        QString error;
+        QVERIFY2(other.loadState(tab.saveState(), &error), qPrintable(error));
+        QVERIFY(samePoints(other.pointEditor()->points(), editor->points()));
+    }
+
+    // The table: a typed decimal shows as typed, and a column is all fractions or all decimals.
+    void tableColumnsHaveOneNotation()
+    {
+        DeCasteljauTab tab;
+        granota::ui::PointEditor* editor = tab.pointEditor();
+        QTableWidget* table = tab.pointTable();
+        table->item(1, 0)->setText(QStringLiteral("0.05688"));
+        QCOMPARE(table->item(1, 0)->text(), QStringLiteral("0.05688"));
+        table->item(2, 0)->setText(QStringLiteral("1.25"));
+        QCOMPARE(table->item(2, 0)->text(), QStringLiteral("1.25")); // not 5/4
+        // A repeating fraction among short decimals: fractions for all.
+        table->item(1, 1)->setText(QStringLiteral("-9/5"));
+        table->item(2, 1)->setText(QStringLiteral("1/3"));
+        const auto column = [table](int c) {
+            QStringList texts;
+            for (int r = 0; r < table->rowCount(); ++r)
+                texts << table->item(r, c)->text();
+            return texts;
+        };
+        QCOMPARE(column(1), (QStringList{"0", "-9/5", "1/3", "0"}));
+        // A dragged value that is no small fraction: decimals for all, each read back exactly.
+        editor->movePoint(3, Point(4, 1.0000000000000007));
+        QCOMPARE(column(1), (QStringList{"0", "-1.8", "0.3333333333333333", "1.0000000000000007"}));
+        for (int r = 0; r < table->rowCount(); ++r)
+            QCOMPARE(granota::toDouble(*granota::parseRational(column(1)[r].toStdString())), editor->points()[r].y);
+        // Undone, the column is fractions again.
+        tab.undoStack()->undo();
+        QCOMPARE(column(1), (QStringList{"0", "-9/5", "1/3", "0"}));
+        QCOMPARE(column(0), (QStringList{"0", "0.05688", "1.25", "4"}));
     }
 
     // Ex 2.2 and Ex 2.3: every P_i^r(t) of the thesis's tables, and c(t).

@@ -2,6 +2,7 @@
 // (with its slips corrected and noted), dragging and undo, the readouts against the core,
 // the normal equations breaking where QR does not, the degree limit n ≤ k, CSV import,
 // documents, and the error-against-degree plot (LS optimality over nested spaces).
+#include "core/base/number_format.h"
 #include "core/exact/exact_cost.h"
 #include "core/curves/fitting/least_squares_fit.h"
 #include "core/exact/rational.h"
@@ -22,6 +23,10 @@
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTemporaryDir>
+#include <QPaintEngine>
+#include <QPainter>
+#include <QRegularExpression>
+#include <QJsonObject>
 #include <QTest>
 #include <QUndoStack>
 #include <qcustomplot.h>
@@ -65,6 +70,78 @@ FitOptions optionsOf(const FitTab& tab)
 }
 
 QString number(double v) { return QString::number(v, 'g', 6); }
+
+/// What a canvas paints, as a reader of the picture would see it: every text, every ellipse
+/// (a handle). A paint device whose engine records instead of drawing.
+class PaintRecorder : public QPaintDevice {
+public:
+    explicit PaintRecorder(QSize size) : m_size(size) {}
+    QPaintEngine* paintEngine() const override { return &m_engine; }
+    const QStringList& texts() const { return m_engine.texts; }
+    const std::vector<QRectF>& ellipses() const { return m_engine.ellipses; }
+
+protected:
+    int metric(PaintDeviceMetric metric) const override
+    {
+        switch (metric) {
+        case PdmWidth: return m_size.width();
+        case PdmHeight: return m_size.height();
+        case PdmWidthMM: return m_size.width() * 254 / 960;
+        case PdmHeightMM: return m_size.height() * 254 / 960;
+        case PdmNumColors: return std::numeric_limits<int>::max();
+        case PdmDepth: return 32;
+        case PdmDpiX:
+        case PdmDpiY:
+        case PdmPhysicalDpiX:
+        case PdmPhysicalDpiY: return 96;
+        case PdmDevicePixelRatio: return 1;
+        case PdmDevicePixelRatioScaled: return static_cast<int>(devicePixelRatioFScale());
+        }
+        return 0;
+    }
+
+private:
+    struct Engine : QPaintEngine {
+        Engine() : QPaintEngine(AllFeatures) {}
+        bool begin(QPaintDevice*) override { return true; }
+        bool end() override { return true; }
+        void updateState(const QPaintEngineState&) override {}
+        void drawPixmap(const QRectF&, const QPixmap&, const QRectF&) override {}
+        void drawPath(const QPainterPath&) override {}
+        void drawPolygon(const QPointF*, int, PolygonDrawMode) override {}
+        void drawEllipse(const QRectF& r) override { ellipses.push_back(r); }
+        void drawTextItem(const QPointF&, const QTextItem& item) override { texts << item.text(); }
+        Type type() const override { return User; }
+        QStringList texts;
+        std::vector<QRectF> ellipses;
+    };
+    mutable Engine m_engine;
+    QSize m_size;
+};
+
+/// What the canvas of `tab` paints now.
+struct CanvasPicture {
+    QStringList labels; ///< the point labels ("Q0", …)
+    int fullHandles = 0, smallHandles = 0;
+};
+CanvasPicture paintedCanvas(FitTab& tab)
+{
+    PaintRecorder device(tab.canvas()->size());
+    {
+        QPainter painter(&device);
+        tab.canvas()->render(painter, QRectF(tab.canvas()->rect()));
+    }
+    CanvasPicture picture;
+    for (const QString& text : device.texts())
+        if (QRegularExpression(QStringLiteral("^Q[0-9]+$")).match(text).hasMatch())
+            picture.labels << text;
+    const double r = tab.canvas()->style().handleRadius();
+    for (const QRectF& e : device.ellipses()) {
+        picture.fullHandles += std::fabs(e.width() - 2 * r) < 1e-9;
+        picture.smallHandles += e.width() < 2 * r - 1e-9;
+    }
+    return picture;
+}
 
 } // namespace
 
@@ -323,6 +400,72 @@ private slots:
         QCOMPARE(tab.undoStack()->index(), steps + 1);
         tab.undoStack()->undo();
         QCOMPARE(tab.settings(), before);
+    }
+
+    // 200 imported points do not bury the curve under 200 labels: past kLabelledPointsUpTo the
+    // handles are small and unlabelled (the selected one excepted), the status bar says so, and
+    // Show point labels brings them back (one undo step, kept in the document).
+    void manyPointsStepAside()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("many.csv"));
+        {
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            for (const Point& p : smoothSamples(200))
+                f.write(QByteArray::fromStdString(formatDouble(p.x) + "," + formatDouble(p.y) + "\n"));
+        }
+        FitTab tab;
+        tab.resize(1280, 760);
+        tab.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&tab));
+        granota::ui::PointEditor* editor = tab.pointEditor();
+        // A few points: every one labelled, at full size.
+        CanvasPicture picture = paintedCanvas(tab);
+        QCOMPARE(picture.labels.size(), static_cast<int>(editor->points().size()));
+        QSignalSpy said(&tab, &granota::ui::TabPage::statusMessage);
+        QString error;
+        QVERIFY2(tab.importFile(path, &error), qPrintable(error));
+        QCOMPARE(editor->points().size(), std::size_t(200));
+        QVERIFY(editor->points().size() > granota::ui::PointEditor::kLabelledPointsUpTo);
+        picture = paintedCanvas(tab);
+        QVERIFY2(picture.labels.isEmpty(), qPrintable(picture.labels.mid(0, 5).join(QLatin1Char(' '))));
+        QCOMPARE(picture.fullHandles, 0);
+        QCOMPARE(picture.smallHandles, 200);
+        QVERIFY(!said.isEmpty());
+        QVERIFY(!editor->labelsHiddenNote().isEmpty());
+        QVERIFY2(said.last().at(0).toString().contains(editor->labelsHiddenNote()), qPrintable(said.last().at(0).toString()));
+        // The selected point keeps its label.
+        editor->setSelected(7);
+        QCOMPARE(paintedCanvas(tab).labels, QStringList{QStringLiteral("Q7")});
+        // And the one under the mouse, while it is there.
+        const QPoint over = tab.canvas()->view().toScreen(editor->points()[100]).toPoint();
+        QTest::mouseMove(tab.canvas(), over);
+        QCOMPARE(editor->pick(over), 100);
+        QCOMPARE(paintedCanvas(tab).labels, (QStringList{QStringLiteral("Q7"), QStringLiteral("Q100")}));
+        QEvent leave(QEvent::Leave);
+        QCoreApplication::sendEvent(tab.canvas(), &leave);
+        QCOMPARE(paintedCanvas(tab).labels, QStringList{QStringLiteral("Q7")});
+        // Show point labels: all of them, at full size; one undo step; kept in the document.
+        const int steps = tab.undoStack()->count();
+        editor->chooseLabels(true);
+        QCOMPARE(tab.undoStack()->count(), steps + 1);
+        picture = paintedCanvas(tab);
+        QCOMPARE(picture.labels.size(), 200);
+        QCOMPARE(picture.fullHandles, 199); // and the selected one, larger
+        FitTab other;
+        QVERIFY2(other.loadState(tab.saveState(), &error), qPrintable(error));
+        QCOMPARE(other.pointEditor()->labelChoice(), std::optional<bool>(true));
+        tab.undoStack()->undo();
+        QCOMPARE(editor->labelChoice(), std::optional<bool>());
+        QCOMPARE(paintedCanvas(tab).labels, QStringList{QStringLiteral("Q7")});
+        QVERIFY(!tab.saveState().contains(QStringLiteral("pointLabels")));
+        // A document whose choice is not a bool is refused whole.
+        QJsonObject bad = tab.saveState();
+        bad.insert(QStringLiteral("pointLabels"), QStringLiteral("yes"));
+        QVERIFY(!other.loadState(bad, &error));
+        QVERIFY(error.contains(QStringLiteral("pointLabels")));
+        QCOMPARE(other.pointEditor()->labelChoice(), std::optional<bool>(true));
     }
 
     void csvImport()

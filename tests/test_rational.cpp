@@ -2,7 +2,9 @@
 #include "core/exact/polynomial.h"
 #include "core/exact/polynomial_text.h"
 #include "core/exact/rational.h"
+#include "core/exact/number_column.h"
 #include "core/exact/rational_approximation.h"
+#include "core/exact/round_step.h"
 
 #include <QtTest>
 
@@ -156,6 +158,50 @@ private slots:
         // p(t + 1) = t^2
         QCOMPARE(p.shifted(Rational(1)), (P{Rational(0), Rational(0), Rational(1)}));
         QCOMPARE((p - p).degree(), -1);
+    }
+    // Round steps (round_step.h): 1, 2 or 5 × 10^k, exactly, on both sides of a power of ten.
+    void roundSteps()
+    {
+        const auto text = [](RoundStep s) { return QString::fromStdString(toString(s.exact())); };
+        QCOMPARE(text(roundStepAtMost(0.1)), QStringLiteral("1/10"));
+        QCOMPARE(text(roundStepAtMost(0.09999)), QStringLiteral("1/20"));
+        QCOMPARE(text(roundStepAtMost(0.3)), QStringLiteral("1/5"));
+        QCOMPARE(text(roundStepAtMost(7)), QStringLiteral("5"));
+        QCOMPARE(text(roundStepAtMost(1000)), QStringLiteral("1000"));
+        QCOMPARE(text(roundStepAtLeast(0.1)), QStringLiteral("1/10"));
+        QCOMPARE(text(roundStepAtLeast(0.10001)), QStringLiteral("1/5"));
+        QCOMPARE(text(roundStepAtLeast(1.5)), QStringLiteral("2"));
+        QCOMPARE(text(roundStepAtMost(4e-9)), QStringLiteral("1/500000000"));
+        QCOMPARE(roundStepAtMost(0.1).timesTen().value(), 1.0);
+        for (double bad : {0.0, -1.0, std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()})
+            QCOMPARE(text(roundStepAtMost(bad)), QStringLiteral("1"));
+        // Next multiples, either way, exactly; a value on the grid moves one step.
+        const Rational tenth = frac(1, 10);
+        QCOMPARE(toString(nextMultiple(frac(-9, 5), tenth, 1)), std::string("-17/10"));
+        QCOMPARE(toString(nextMultiple(frac(-9, 5), tenth, -1)), std::string("-19/10"));
+        QCOMPARE(toString(nextMultiple(frac(1, 3), tenth, 1)), std::string("2/5"));
+        QCOMPARE(toString(nextMultiple(frac(1, 3), tenth, -1)), std::string("3/10"));
+        QCOMPARE(toString(nextMultiple(exactRational(-6.937088388214905), tenth, 1)), std::string("-69/10"));
+        QCOMPARE(toString(nearestMultiple(frac(1, 3), frac(1, 2))), std::string("1/2"));
+        QCOMPARE(toString(nearestMultiple(frac(-1, 4), frac(1, 2))), std::string("0"));
+        QCOMPARE(toString(meantRational(0.1)), std::string("1/10"));
+        QCOMPARE(meantRational(0.1 + 0.2) == exactRational(0.1 + 0.2), true);
+    }
+
+    // One notation per column (number_column.h).
+    void columnNotations()
+    {
+        using V = std::vector<double>;
+        QCOMPARE(columnNotation(V{0, 2.5, 0.05688}), ColumnNotation::Decimals);
+        QCOMPARE(columnNotation(V{0, -1.8, 1.0 / 3}), ColumnNotation::Fractions);
+        QCOMPARE(columnNotation(V{-1.8, 1.0 / 3, 1.0000000000000007}), ColumnNotation::Decimals);
+        QCOMPARE(columnNotation(V{1.0 / 1024}), ColumnNotation::Decimals);
+        QCOMPARE(columnNotation(V{}), ColumnNotation::Decimals);
+        QCOMPARE(columnEntry(-1.8, ColumnNotation::Fractions), std::string("-9/5"));
+        QCOMPARE(columnEntry(-1.8, ColumnNotation::Decimals), std::string("-1.8"));
+        QCOMPARE(columnEntry(0.05688, ColumnNotation::Decimals), std::string("0.05688"));
+        QCOMPARE(columnEntry(-0.0, ColumnNotation::Decimals), std::string("0"));
+        QCOMPARE(columnEntry(1.0 / 3, ColumnNotation::Decimals), std::string("0.3333333333333333"));
     }
 };
 

@@ -3067,6 +3067,25 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
     <context>
         <name>granota::ui::PointEditor</name>
         <message>
+            <source>Past %1 points the labels are hidden and the handles small, unless this is on.</source>
+            <translation>A partir de %1 punts les etiquetes s'amaguen i els marcadors es fan petits, si no s'activa això.</translation>
+        </message>
+        <message>
+            <source>Hide point labels</source>
+            <translation>Amaga les etiquetes dels punts</translation>
+        </message>
+        <message>
+            <source>Show point labels</source>
+            <translation>Mostra les etiquetes dels punts</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n points: their labels are hidden and their handles small, so that the curve shows; right-click the canvas ▸ Show point labels to see them.</source>
+            <translation>
+                <numerusform>%n punt: les etiquetes s'amaguen i els marcadors es dibuixen petits perquè es vegi la corba; feu clic amb el botó dret al llenç ▸ Mostra les etiquetes dels punts per veure-les.</numerusform>
+                <numerusform>%n punts: les etiquetes s'amaguen i els marcadors es dibuixen petits perquè es vegi la corba; feu clic amb el botó dret al llenç ▸ Mostra les etiquetes dels punts per veure-les.</numerusform>
+            </translation>
+        </message>
+        <message>
             <location filename="../ui/point_editor.cpp" line="81" />
             <source>Refused: a point is not a finite number.</source>
             <translation>Refusat: un punt no és un nombre finit.</translation>
@@ -3464,6 +3483,13 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
         <message>
             <source>Splines and soft bodies, for the classroom.</source>
             <translation>Splines i cossos tous, per a l'aula.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::CurveTab</name>
+        <message>
+            <source>“pointLabels” is not true or false.</source>
+            <translation>«pointLabels» no és ni true ni false.</translation>
         </message>
     </context>
 </TS>

@@ -3067,6 +3067,25 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
     <context>
         <name>granota::ui::PointEditor</name>
         <message>
+            <source>Past %1 points the labels are hidden and the handles small, unless this is on.</source>
+            <translation>Past %1 points the labels are hidden and the handles small, unless this is on.</translation>
+        </message>
+        <message>
+            <source>Hide point labels</source>
+            <translation>Hide point labels</translation>
+        </message>
+        <message>
+            <source>Show point labels</source>
+            <translation>Show point labels</translation>
+        </message>
+        <message numerus="yes">
+            <source>%n points: their labels are hidden and their handles small, so that the curve shows; right-click the canvas ▸ Show point labels to see them.</source>
+            <translation>
+                <numerusform>%n points: their labels are hidden and their handles small, so that the curve shows; right-click the canvas ▸ Show point labels to see them.</numerusform>
+                <numerusform>%n points: their labels are hidden and their handles small, so that the curve shows; right-click the canvas ▸ Show point labels to see them.</numerusform>
+            </translation>
+        </message>
+        <message>
             <location filename="../ui/point_editor.cpp" line="81" />
             <source>Refused: a point is not a finite number.</source>
             <translation>Refused: a point is not a finite number.</translation>
@@ -3464,6 +3483,13 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
         <message>
             <source>Splines and soft bodies, for the classroom.</source>
             <translation>Splines and soft bodies, for the classroom.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::CurveTab</name>
+        <message>
+            <source>“pointLabels” is not true or false.</source>
+            <translation>“pointLabels” is not true or false.</translation>
         </message>
     </context>
 </TS>

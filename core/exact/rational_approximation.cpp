@@ -35,6 +35,13 @@ std::optional<Rational> smallRational(double d, long maxDenominator)
     return std::nullopt;
 }
 
+Rational meantRational(double d, long maxDenominator)
+{
+    if (auto q = smallRational(d, maxDenominator))
+        return *q;
+    return exactRational(d);
+}
+
 std::optional<std::vector<RPoint>> smallRationalPoints(const std::vector<Point>& points, long maxDenominator)
 {
     std::vector<RPoint> out;

@@ -15,6 +15,11 @@ namespace granota {
 /// (continued fractions), or nullopt when there is none (d not finite, or |d| > 1e15).
 std::optional<Rational> smallRational(double d, long maxDenominator = 100000);
 
+/// The value a stored coordinate stands for: the small fraction it was typed or loaded as
+/// (smallRational with the same bound), else the double's own exact value (exactRational).
+/// Finite `d` only.
+Rational meantRational(double d, long maxDenominator = 100000);
+
 /// Every point as small fractions, or nullopt if one coordinate has none.
 std::optional<std::vector<RPoint>> smallRationalPoints(const std::vector<Point>& points,
                                                        long maxDenominator = 100000);

@@ -1,5 +1,7 @@
 #include "ui/catmull_rom/catmull_rom_settings.h"
 
+#include "core/base/number_format.h"
+
 #include <QJsonArray>
 
 #include <cmath>
@@ -123,7 +125,7 @@ std::optional<CatmullRomSettings> readSettings(const QJsonObject& json, QString*
         if (v.isString())
             tau = parseTension(v.toString());
         else if (v.isDouble())
-            tau = parseTension(QString::number(v.toDouble(), 'g', 17));
+            tau = parseTension(QString::fromStdString(formatDouble(v.toDouble()))); // 0.1 is 1/10, not 0.10000000000000001
         if (!tau)
             return fail(QStringLiteral("tau"));
         for (const Rational& t : s.taus)

@@ -1,4 +1,5 @@
 #include "ui/common/curve_canvas.h"
+#include "core/exact/round_step.h"
 #include "ui/common/number_text.h"
 
 #include <QMouseEvent>
@@ -11,15 +12,13 @@ namespace granota::ui {
 
 namespace {
 
-/// A "nice" grid step (1, 2 or 5 × 10^k model units) giving about `targetPx` pixels.
+/// A round grid step (1, 2 or 5 × 10^k model units) giving at least `targetPx` pixels.
 double niceStep(double scale, double targetPx)
 {
     const double raw = targetPx / scale;
-    const double p = std::pow(10.0, std::floor(std::log10(raw)));
-    for (double m : {1.0, 2.0, 5.0, 10.0})
-        if (m * p >= raw)
-            return m * p;
-    return 10.0 * p;
+    if (!(raw > 0) || !std::isfinite(raw))
+        return raw;
+    return roundStepAtLeast(raw).value();
 }
 
 QString axisLabel(double v, double step)

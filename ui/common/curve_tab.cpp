@@ -8,6 +8,7 @@
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QJsonValue>
+#include <QTimer>
 
 namespace granota::ui {
 
@@ -24,6 +25,8 @@ QJsonObject CurveTab::saveState() const
         points.append(QJsonArray{p.x, p.y});
     QJsonObject state;
     state.insert(QStringLiteral("points"), points);
+    if (const std::optional<bool> labels = m_editor->labelChoice())
+        state.insert(QStringLiteral("pointLabels"), *labels);
     writeSettings(state);
     return state;
 }
@@ -71,7 +74,16 @@ bool CurveTab::loadState(const QJsonObject& state, QString* error)
     // settings before it applies anything).
     QString message;
     const std::optional<std::vector<Point>> points = readPoints(state.value(QStringLiteral("points")), message);
-    if (!points || !loadSettings(state, *points, message)) {
+    const QJsonValue labels = state.value(QStringLiteral("pointLabels"));
+    if (points && !labels.isUndefined() && !labels.isBool())
+        message = tr("“pointLabels” is not true or false.");
+    // The choice of labels is made first, so that the points arrive under it (no note that
+    // their labels are hidden when the document shows them); a refused document restores it.
+    const std::optional<bool> labelsBefore = m_editor->labelChoice();
+    if (points && message.isEmpty())
+        m_editor->setLabelChoice(labels.isBool() ? std::optional<bool>(labels.toBool()) : std::nullopt);
+    if (!points || !message.isEmpty() || !loadSettings(state, *points, message)) {
+        m_editor->setLabelChoice(labelsBefore);
         if (error)
             *error = message;
         return false;
@@ -86,6 +98,17 @@ void CurveTab::setPresentation(bool on)
     m_canvas->setStyleScale(presentationScale(on));
     m_exact->setPresentation(on);
     presentationChanged(on);
+}
+
+void CurveTab::showEvent(QShowEvent* event)
+{
+    TabPage::showEvent(event);
+    // Queued: the tab's showEvent emits its hint after this one returns.
+    QTimer::singleShot(0, this, [this] {
+        if (isVisible())
+            if (const QString note = m_editor->labelsHiddenNote(); !note.isEmpty())
+                emit statusMessage(note);
+    });
 }
 
 void CurveTab::zoom(double factor) { m_canvas->zoom(factor); }

@@ -73,6 +73,9 @@ protected:
     virtual QRectF contentBounds() const = 0;
     /// What else presentation mode changes in the tab (plots, panels).
     virtual void presentationChanged(bool on) { (void)on; }
+    /// Once shown (after the tab's own hint), the status bar says when the point labels are
+    /// hidden because there are many points (PointEditor::labelsHiddenNote()).
+    void showEvent(QShowEvent* event) override;
 
     CurveCanvas* const m_canvas;
     PointEditor* m_editor = nullptr;

@@ -2,6 +2,10 @@
 
 #include "ui/common/curve_canvas.h"
 #include "ui/common/point_commands.h"
+#include "ui/common/value_command.h"
+
+#include "core/exact/rational_approximation.h"
+#include "core/exact/round_step.h"
 
 #include <QContextMenuEvent>
 #include <QKeyEvent>
@@ -11,6 +15,7 @@
 #include <QPainterPath>
 #include <QUndoStack>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -37,7 +42,11 @@ PointEditor::PointEditor(CurveCanvas* canvas, QUndoStack* undoStack, QObject* pa
             p.drawPath(path);
         }
         p.setFont(style.labelFont());
+        // Past kLabelledPointsUpTo points (unless the user asks for labels) the handles are small
+        // and unlabelled, so that the curve stays visible; the selected one keeps both.
+        const bool labels = labelsShown() && !m_prefix.isEmpty();
         const double r = style.handleRadius();
+        const double small = m_points.size() > kLabelledPointsUpTo && !m_labelChoice.value_or(false) ? r * 0.5 : r;
         // Huge data sets (up to kMaxDataPoints in the fitting tab, docs/extreme-cases.md): draw every stride-th
         // handle and no labels, so that painting stays fast; the selected one always.
         constexpr std::size_t kMaxDrawnHandles = 5000;
@@ -49,11 +58,12 @@ PointEditor::PointEditor(CurveCanvas* canvas, QUndoStack* undoStack, QObject* pa
             const QPointF s = view.toScreen(m_points[i]);
             p.setPen(QPen(Qt::white, style.thinLine()));
             p.setBrush(sel ? style.handleSelected : m_color);
-            p.drawEllipse(s, sel ? r * 1.3 : r, sel ? r * 1.3 : r);
-            if (!m_prefix.isEmpty() && stride <= 1) {
+            p.drawEllipse(s, sel ? r * 1.3 : small, sel ? r * 1.3 : small);
+            const bool named = sel || static_cast<int>(i) == m_hovered; // labelled even when labels step aside
+            if (stride <= 1 && (labels || (named && !m_prefix.isEmpty()))) {
                 // Coincident points (Ex 2.3 closes its curve: P4 = P0) stack their labels.
                 int below = 0;
-                for (std::size_t j = 0; j < i && m_points.size() <= kStackLabelsUpTo; ++j) {
+                for (std::size_t j = 0; j < i && labels && m_points.size() <= kStackLabelsUpTo; ++j) {
                     const QPointF d = view.toScreen(m_points[j]) - s;
                     below += d.x() * d.x() + d.y() * d.y() < r * r;
                 }
@@ -65,12 +75,58 @@ PointEditor::PointEditor(CurveCanvas* canvas, QUndoStack* undoStack, QObject* pa
     });
 }
 
+void PointEditor::setHovered(int index)
+{
+    if (index == m_hovered)
+        return;
+    m_hovered = index;
+    if (!labelsShown())
+        m_canvas->update(); // its label comes and goes
+}
+
+bool PointEditor::labelsShown() const { return m_labelChoice.value_or(m_points.size() <= kLabelledPointsUpTo); }
+
+bool PointEditor::labelsHiddenAutomatically() const
+{
+    return !m_labelChoice && m_points.size() > kLabelledPointsUpTo;
+}
+
+QString PointEditor::labelsHiddenNote() const
+{
+    if (!labelsHiddenAutomatically())
+        return QString();
+    return tr("%n points: their labels are hidden and their handles small, so that the curve shows; "
+              "right-click the canvas ▸ Show point labels to see them.",
+              nullptr, static_cast<int>(std::min<std::size_t>(m_points.size(), std::numeric_limits<int>::max())));
+}
+
+void PointEditor::setLabelChoice(std::optional<bool> choice)
+{
+    if (choice == m_labelChoice)
+        return;
+    m_labelChoice = choice;
+    m_canvas->update();
+    emit labelChoiceChanged();
+}
+
+void PointEditor::chooseLabels(bool shown)
+{
+    if (shown == labelsShown() && m_labelChoice)
+        return;
+    const auto apply = [this](const std::optional<bool>& choice) { setLabelChoice(choice); };
+    m_undo->push(new ValueCommand<std::optional<bool>>(apply, m_labelChoice, shown,
+                                                       shown ? tr("Show point labels") : tr("Hide point labels")));
+}
+
 void PointEditor::applyPoints(const std::vector<Point>& points)
 {
     // Undo, redo or a document in the middle of a drag: the points are no longer the drag's,
     // and its index may be past their end. The drag ends here (the release finds none).
     m_dragging = -1;
+    const bool hiddenBefore = labelsHiddenAutomatically();
     m_points = points;
+    if (!hiddenBefore && labelsHiddenAutomatically())
+        emit message(labelsHiddenNote());
     if (m_selected >= static_cast<int>(m_points.size()))
         setSelected(static_cast<int>(m_points.size()) - 1);
     m_canvas->update();
@@ -211,19 +267,44 @@ int PointEditor::insertionIndex(Point p) const
     return index;
 }
 
-void PointEditor::nudge(double dx, double dy)
+Rational PointEditor::nudgeStep(bool tenTimes) const
 {
-    if (m_selected < 0)
+    const Rational step = m_snap ? meantRational(m_gridStep)
+                                 : roundStepAtMost(kNudgePixels / m_canvas->view().scale()).exact();
+    return tenTimes ? Rational(step * 10) : step;
+}
+
+void PointEditor::nudge(int dx, int dy, bool tenTimes)
+{
+    if (m_selected < 0 || m_selected >= static_cast<int>(m_points.size()))
         return;
-    Point p = m_points[m_selected];
-    p.x += dx;
-    p.y += dy;
-    movePoint(m_selected, m_snap ? snapped(p) : p);
+    finishDrag();
+    const Rational step = nudgeStep(tenTimes);
+    const Point from = m_points[static_cast<std::size_t>(m_selected)];
+    // The moved coordinate goes to the next multiple of the step; with snapping the other one
+    // to the nearest, as a dragged point would. Exactly: -9/5 + 1/10 is -17/10, not -1.7000000000000002.
+    const auto moved = [&](double v, int sign) {
+        if (sign == 0 && !m_snap)
+            return v;
+        const Rational meant = meantRational(v);
+        return toDouble(sign == 0 ? nearestMultiple(meant, step) : nextMultiple(meant, step, sign));
+    };
+    const Point to(moved(from.x, dx), moved(from.y, dy));
+    if (!isFinite(to)) {
+        emit message(tr("Refused: a coordinate must be a finite number."));
+        return;
+    }
+    if (to == from)
+        return; // too far from the origin for this step to change the double
+    auto after = m_points;
+    after[static_cast<std::size_t>(m_selected)] = to;
+    m_undo->push(new PointsCommand(this, m_points, after, tr("Move point %1").arg(m_selected), m_selected));
 }
 
 void PointEditor::showContextMenu(const QPointF& screen, const QPoint& global)
 {
     QMenu menu(m_canvas);
+    menu.setToolTipsVisible(true);
     const int hit = pick(screen);
     const Point at = snapped(m_canvas->view().toModel(screen));
     if (hit >= 0) {
@@ -236,6 +317,12 @@ void PointEditor::showContextMenu(const QPointF& screen, const QPoint& global)
     snap->setCheckable(true);
     snap->setChecked(m_snap);
     connect(snap, &QAction::toggled, this, [this](bool on) { setSnapEnabled(on); });
+    QAction* labels = menu.addAction(tr("Show point labels"));
+    labels->setCheckable(true);
+    labels->setChecked(labelsShown());
+    labels->setToolTip(tr("Past %1 points the labels are hidden and the handles small, unless this is on.")
+                           .arg(kLabelledPointsUpTo));
+    connect(labels, &QAction::toggled, this, [this](bool on) { chooseLabels(on); });
     menu.addAction(tr("Fit view"), m_canvas, &CurveCanvas::fitToContent);
     menu.exec(global);
 }
@@ -260,7 +347,9 @@ bool PointEditor::eventFilter(QObject* watched, QEvent* event)
     case QEvent::MouseMove: {
         auto* e = static_cast<QMouseEvent*>(event);
         if (m_dragging < 0) {
-            m_canvas->setCursor(pick(e->position()) >= 0 ? Qt::OpenHandCursor : Qt::ArrowCursor);
+            const int hit = pick(e->position());
+            m_canvas->setCursor(hit >= 0 ? Qt::OpenHandCursor : Qt::ArrowCursor);
+            setHovered(hit);
             return false;
         }
         const Point p = snapped(m_canvas->view().toModel(e->position()));
@@ -286,6 +375,9 @@ bool PointEditor::eventFilter(QObject* watched, QEvent* event)
         insertPoint(insertionIndex(p), p);
         return true;
     }
+    case QEvent::Leave:
+        setHovered(-1);
+        return false;
     case QEvent::ContextMenu: {
         auto* e = static_cast<QContextMenuEvent*>(event);
         showContextMenu(e->pos(), e->globalPos());
@@ -293,17 +385,16 @@ bool PointEditor::eventFilter(QObject* watched, QEvent* event)
     }
     case QEvent::KeyPress: {
         auto* e = static_cast<QKeyEvent*>(event);
-        const double px = 1.0 / m_canvas->view().scale();
-        const double step = (m_snap ? m_gridStep : px) * ((e->modifiers() & Qt::ShiftModifier) ? 10.0 : 1.0);
+        const bool tenTimes = e->modifiers() & Qt::ShiftModifier;
         switch (e->key()) {
         case Qt::Key_Delete:
         case Qt::Key_Backspace:
             removePoint(m_selected);
             return true;
-        case Qt::Key_Left: nudge(-step, 0); return m_selected >= 0;
-        case Qt::Key_Right: nudge(step, 0); return m_selected >= 0;
-        case Qt::Key_Up: nudge(0, step); return m_selected >= 0;
-        case Qt::Key_Down: nudge(0, -step); return m_selected >= 0;
+        case Qt::Key_Left: nudge(-1, 0, tenTimes); return m_selected >= 0;
+        case Qt::Key_Right: nudge(1, 0, tenTimes); return m_selected >= 0;
+        case Qt::Key_Up: nudge(0, 1, tenTimes); return m_selected >= 0;
+        case Qt::Key_Down: nudge(0, -1, tenTimes); return m_selected >= 0;
         case Qt::Key_Tab:
             if (!m_points.empty()) {
                 setSelected((m_selected + 1) % static_cast<int>(m_points.size()));

@@ -6,16 +6,23 @@
 ///
 /// Mouse: drag a handle (one undo step per drag); double-click empty paper to add a point
 /// on the nearest edge of the polygon (or at an end); right-click for a menu.
-/// Keys: Delete removes the selected point, arrows nudge it (one grid step when snapping,
-/// one pixel otherwise; Shift ×10), Tab selects the next point. Every edit goes through the
-/// QUndoStack given to the constructor.
+/// Keys: Delete removes the selected point, arrows nudge it to the next multiple of a round
+/// step (the grid step when snapping, else 1, 2 or 5 × 10^k worth at most kNudgePixels on
+/// screen; Shift ×10), exactly (round_step.h), Tab selects the next point. Every edit goes
+/// through the QUndoStack given to the constructor; successive nudges of one point are one step.
+///
+/// Past kLabelledPointsUpTo points the handles are drawn small and unlabelled (the selected one
+/// keeps its size and label, the one under the mouse its label) unless the user chooses "Show point labels" (the canvas's menu).
 
 #include "core/base/vec2.h"
+#include "core/exact/rational.h"
 
 #include <QColor>
 #include <QObject>
 #include <QString>
 
+#include <cstddef>
+#include <optional>
 #include <vector>
 
 class QUndoStack;
@@ -55,6 +62,30 @@ public:
     /// Rounds to the grid when snapping is on.
     Point snapped(Point p) const;
 
+    /// What one arrow key press moves a coordinate by: the grid step when snapping, else the
+    /// largest round step (1, 2 or 5 × 10^k) of at most kNudgePixels at the current zoom;
+    /// ten times that with `tenTimes` (Shift).
+    Rational nudgeStep(bool tenTimes) const;
+    static constexpr double kNudgePixels = 4.0;
+    /// The arrow keys: moves the selected point's coordinate along (dx, dy), each −1, 0 or 1, to
+    /// the next multiple of nudgeStep() in that direction, computed exactly from the fraction the
+    /// coordinate stands for (meantRational), so that an exact point stays exact.
+    void nudge(int dx, int dy, bool tenTimes);
+
+    /// Past this many points, labels and full-size handles step aside unless chosen (see above).
+    static constexpr std::size_t kLabelledPointsUpTo = 40;
+    /// The user's choice of labels: nullopt for automatic (shown up to kLabelledPointsUpTo points).
+    std::optional<bool> labelChoice() const { return m_labelChoice; }
+    /// Makes a choice current, without an undo step (documents, the undo step itself).
+    void setLabelChoice(std::optional<bool> choice);
+    /// The user's "Show point labels": one undo step.
+    void chooseLabels(bool shown);
+    bool labelsShown() const;
+    /// The labels are hidden because there are many points and the user chose nothing.
+    bool labelsHiddenAutomatically() const;
+    /// What the status bar says then ("200 points: labels hidden …"); empty otherwise.
+    QString labelsHiddenNote() const;
+
     /// Deleting below `minimum` or adding above `maximum` is refused with a message.
     void setCountLimits(int minimum, int maximum);
     int minimumCount() const { return m_min; }
@@ -78,16 +109,19 @@ signals:
     void selectionChanged(int index);
     /// A refused edit (too few points, not a number…): the tab shows it in the status bar.
     void message(const QString& text);
+    /// The labels were chosen on or off, or back to automatic (for the tab's document).
+    void labelChoiceChanged();
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-    void nudge(double dx, double dy);
     /// Before an edit of the editor's own (Delete, a nudge, an example, the table) while a
     /// point is dragged: the drag so far becomes its undo step, and the drag ends.
     void finishDrag();
     void showContextMenu(const QPointF& screen, const QPoint& global);
+    /// The handle under the mouse (−1: none): labelled when the labels step aside.
+    void setHovered(int index);
 
     CurveCanvas* m_canvas;
     QUndoStack* m_undo;
@@ -95,6 +129,7 @@ private:
     std::vector<Point> m_dragStart; ///< the points when a drag began: one undo step per drag
     int m_selected = -1;
     int m_dragging = -1;
+    int m_hovered = -1;
     bool m_snap = false;
     double m_gridStep = 0.5;
     int m_min = 1;
@@ -103,6 +138,7 @@ private:
     QColor m_color;
     bool m_polygonVisible = true;
     bool m_enabled = true;
+    std::optional<bool> m_labelChoice;
 };
 
 } // namespace granota::ui

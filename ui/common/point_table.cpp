@@ -1,8 +1,7 @@
 #include "ui/common/point_table.h"
 
-#include "core/base/number_format.h"
+#include "core/exact/number_column.h"
 #include "core/exact/rational.h"
-#include "core/exact/rational_approximation.h"
 #include "ui/common/number_text.h"
 #include "ui/common/point_editor.h"
 
@@ -11,18 +10,6 @@
 #include <cmath>
 
 namespace granota::ui {
-
-namespace {
-
-/// A fraction when the value is one with a small denominator, else the shortest decimal.
-QString coordinateText(double v)
-{
-    if (auto q = smallRational(v, 1000))
-        return QString::fromStdString(toString(*q));
-    return displayNumber(v);
-}
-
-} // namespace
 
 PointTable::PointTable(PointEditor* editor, QWidget* parent) : QTableWidget(parent), m_editor(editor)
 {
@@ -54,22 +41,43 @@ void PointTable::retranslate()
     refresh();
 }
 
+ColumnNotation PointTable::notation(int column) const
+{
+    std::vector<double> values;
+    values.reserve(m_editor->points().size());
+    for (const Point& p : m_editor->points())
+        values.push_back(column == 0 ? p.x : p.y);
+    return columnNotation(values);
+}
+
+QString PointTable::cellText(int row, int column) const
+{
+    const Point& p = m_editor->points()[static_cast<std::size_t>(row)];
+    return displayText(columnEntry(column == 0 ? p.x : p.y, m_notation[column]));
+}
+
 void PointTable::refresh()
 {
     m_refreshing = true;
     const auto& points = m_editor->points();
-    // During a drag only the dragged point changes: refresh its row alone.
+    // One notation per column (number_column.h): fractions for all, or decimals for all.
+    const ColumnNotation notations[2] = {notation(0), notation(1)};
+    const bool sameNotation = notations[0] == m_notation[0] && notations[1] == m_notation[1];
+    m_notation[0] = notations[0];
+    m_notation[1] = notations[1];
+    // During a drag only the dragged point changes: refresh its row alone (unless its column
+    // changes notation).
     const int dragged = m_editor->dragging() ? m_editor->selected() : -1;
-    if (dragged >= 0 && rowCount() == static_cast<int>(points.size()) && item(dragged, 0) && item(dragged, 1)) {
-        item(dragged, 0)->setText(coordinateText(points[static_cast<std::size_t>(dragged)].x));
-        item(dragged, 1)->setText(coordinateText(points[static_cast<std::size_t>(dragged)].y));
+    if (dragged >= 0 && sameNotation && rowCount() == static_cast<int>(points.size()) && item(dragged, 0)
+        && item(dragged, 1)) {
+        item(dragged, 0)->setText(cellText(dragged, 0));
+        item(dragged, 1)->setText(cellText(dragged, 1));
         m_refreshing = false;
         return;
     }
     setRowCount(static_cast<int>(points.size()));
     for (int i = 0; i < static_cast<int>(points.size()); ++i) {
         setVerticalHeaderItem(i, new QTableWidgetItem(QStringLiteral("%1%2").arg(m_editor->labelPrefix()).arg(i)));
-        const double values[2] = {points[i].x, points[i].y};
         for (int c = 0; c < 2; ++c) {
             QTableWidgetItem* cell = item(i, c);
             if (!cell) {
@@ -77,7 +85,7 @@ void PointTable::refresh()
                 cell->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
                 setItem(i, c, cell);
             }
-            cell->setText(coordinateText(values[c]));
+            cell->setText(cellText(i, c));
         }
     }
     m_refreshing = false;

@@ -3,6 +3,11 @@
 /// The numeric table beside a canvas: one row per point of a PointEditor, x and y editable.
 /// It edits the same points through the same undo stack; fractions ("1/3") and decimals are
 /// accepted, anything else is refused with a message and the cell shows the old value.
+/// Each column has one notation (core/exact/number_column.h): fractions for all when some
+/// entry is a repeating small fraction such as 1/3 and all are small fractions, else decimals
+/// for all, each the shortest that reads back as the stored double (a typed 0.05688 is 0.05688).
+
+#include "core/exact/number_column.h"
 
 #include <QTableWidget>
 
@@ -15,6 +20,8 @@ class PointTable : public QTableWidget {
 public:
     explicit PointTable(PointEditor* editor, QWidget* parent = nullptr);
     void retranslate();
+    /// The notation column 0 (x) or 1 (y) is shown in.
+    ColumnNotation columnShown(int column) const { return m_notation[column]; }
 
 signals:
     void message(const QString& text);
@@ -22,9 +29,12 @@ signals:
 private:
     void refresh();
     void cellEdited(int row, int column);
+    ColumnNotation notation(int column) const;
+    QString cellText(int row, int column) const;
 
     PointEditor* m_editor;
     bool m_refreshing = false;
+    ColumnNotation m_notation[2] = {ColumnNotation::Decimals, ColumnNotation::Decimals};
 };
 
 } // namespace granota::ui

@@ -757,7 +757,10 @@ bool FitTab::importFile(const QString& path, QString* error)
     m_editor->setPoints(points, tr("Import %1").arg(name));
     QApplication::restoreOverrideCursor();
     m_canvas->fitToContent();
-    emit statusMessage(tr("Imported %n data points from “%1”.", nullptr, static_cast<int>(points.size())).arg(name));
+    QString imported = tr("Imported %n data points from “%1”.", nullptr, static_cast<int>(points.size())).arg(name);
+    if (const QString note = m_editor->labelsHiddenNote(); !note.isEmpty())
+        imported += QLatin1Char(' ') + note; // the editor said so first: this message replaces that one
+    emit statusMessage(imported);
     return true;
 }
 
