@@ -640,6 +640,17 @@ private slots:
             QVERIFY(!tex.contains(QRegularExpression(QStringLiteral("[0-9],[0-9]+,"))));
             QVERIFY(!tex.contains(QRegularExpression(QStringLiteral("\\$-?[0-9]+,[0-9]"))));
         }
+        // Points as far apart, or as close, as doubles allow: numbers still, never nan or inf.
+        for (const std::vector<Point>& points :
+             {std::vector<Point>{{-1e308, 0}, {1e308, 1e308}, {0, -1e308}}, std::vector<Point>{{0, 0}, {1e-320, 5e-321}},
+              std::vector<Point>{{1e300, 1e300}, {1e300, 1e300}}}) {
+            tab.pointEditor()->setPoints(points, QStringLiteral("extreme"));
+            for (const granota::ui::TikzOptions& o : {defaults, small}) {
+                const QString tex = tab.tikz(o);
+                QVERIFY2(!tex.contains(QStringLiteral("nan")) && !tex.contains(QStringLiteral("inf")), qPrintable(tex));
+                QVERIFY(tex.contains(QStringLiteral("\\end{tikzpicture}")));
+            }
+        }
         QLocale::setDefault(saved);
     }
 };

@@ -23,6 +23,8 @@ constexpr double kTickPadCm = 0.35;     // the y tick, the label's padding and a
 constexpr double kTickHalfHeightCm = 0.2; // half a y tick label, above the top tick
 constexpr double kMinAreaCm = 0.5;      // the smallest drawing area whatever the margins
 constexpr int kMaxTicks = 100;
+/// Below this half-span (in model units) the scale, cm per unit, would overflow a double.
+constexpr double kMinHalfSpan = 1e-290;
 
 /// A length in cm as TikZ reads it: three decimals (0.01 mm), a point, no "-0".
 QString cm(double v)
@@ -115,8 +117,10 @@ QString TikzWriter::str() const
     for (Interval* r : {&x, &y}) {
         if (!(r->lo <= r->hi))
             *r = {0, 1}; // nothing drawn
-        else if (!(r->half() > 0))
-            *r = {r->lo - 0.5, r->lo + 0.5}; // a single point, or points on one line
+        else if (!(r->half() >= kMinHalfSpan)) { // a single point, or points on one line
+            const double pad = std::max(0.5, std::fabs(r->lo) * 1e-9);
+            *r = {r->lo - pad, r->lo + pad};
+        }
     }
     const bool scaleShown = m_options.axes || m_options.grid;
     const double step = roundStep(2 * std::max(x.half(), y.half()));
