@@ -11,6 +11,10 @@ PKGS=(
   libbenchmark-dev libgl-dev appstream desktop-file-utils nlohmann-json3-dev
   locales clang libclang-rt-14-dev
   xvfb xauth x11-utils openbox xdotool
+  # test_gui_tikz_latex compiles the TikZ exports with pdflatex, in an article and in beamer:
+  # LaTeX, beamer (latex-recommended) and pgf/TikZ (pictures). About 64 MB to download,
+  # 235 MB installed, 75 s on a Debian 12 runner.
+  texlive-latex-base texlive-latex-recommended texlive-pictures
 )
 missing=()
 for p in "${PKGS[@]}"; do

@@ -16,6 +16,7 @@
 #include "ui/common/point_editor.h"
 #include "ui/common/point_table.h"
 #include "ui/common/view_transform.h"
+#include "ui/shell/tikz_options.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
@@ -25,13 +26,16 @@
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QLineEdit>
+#include <QLocale>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QTest>
 #include <QUndoStack>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -706,6 +710,70 @@ private slots:
         QVERIFY(tex.contains(QStringLiteral("\\begin{tikzpicture}")));
         QVERIFY(tex.contains(QStringLiteral("P_{4}")));
         QVERIFY(!tex.contains(QStringLiteral("nan")));
+    }
+
+    // Issue 14, item 15: Ex 2.2 exported as TikZ fits a beamer frame (text 10.80 cm wide; at
+    // most TikzOptions::kDefaultMaxHeightCm tall under a frame title), measured on the
+    // coordinates written; a width chosen is the width drawn; every number has a point for
+    // its decimals, in Catalan too (docs/numbers-and-locales.md).
+    void tikzFitsTheWidthAndHeightChosen()
+    {
+        DeCasteljauTab tab;
+        QVERIFY(tab.loadExample(*granota::findWorkedExample("2.2")));
+        const QLocale saved;
+        QLocale::setDefault(QLocale(QLocale::Catalan, QLocale::Spain));
+        // The drawing's width and height in cm, from the coordinates (and a scale, if any).
+        const auto extent = [](const QString& tex) {
+            const QRegularExpression coordinate(QStringLiteral("\\((-?[0-9]+(?:\\.[0-9]+)?),(-?[0-9]+(?:\\.[0-9]+)?)\\)"));
+            const QRegularExpressionMatch scale = QRegularExpression(QStringLiteral("x=([0-9.]+)cm")).match(tex);
+            const double cm = scale.hasMatch() ? scale.captured(1).toDouble() : 1.0;
+            double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+            for (auto it = coordinate.globalMatch(tex); it.hasNext();) {
+                const auto m = it.next();
+                x0 = std::min(x0, m.captured(1).toDouble() * cm);
+                x1 = std::max(x1, m.captured(1).toDouble() * cm);
+                y0 = std::min(y0, m.captured(2).toDouble() * cm);
+                y1 = std::max(y1, m.captured(2).toDouble() * cm);
+            }
+            return std::pair<double, double>(x1 - x0, y1 - y0);
+        };
+        const granota::ui::TikzOptions defaults;
+        const auto [w, h] = extent(tab.tikz());
+        QVERIFY2(w > 1 && w <= defaults.widthCm && h <= defaults.maxHeightCm,
+                 qPrintable(QStringLiteral("%1 × %2 cm").arg(w).arg(h)));
+        // Ex 2.2 is taller than wide: the height limits it; a lower limit makes it smaller.
+        QVERIFY(h > defaults.maxHeightCm - 1.5);
+        granota::ui::TikzOptions small;
+        small.maxHeightCm = 3.5;
+        small.axes = small.grid = true;
+        const QString smallTex = tab.tikz(small);
+        QVERIFY(extent(smallTex).second <= 3.5 && extent(smallTex).second > 1.5);
+        QVERIFY(smallTex.contains(QStringLiteral("black!15")) && smallTex.contains(QStringLiteral("node[below")));
+        QVERIFY(smallTex.contains(QStringLiteral("3.5 cm tall at most")));
+        // Wide and short: the width is what limits, and the tick labels keep their decimal point.
+        granota::ui::TikzOptions wide;
+        wide.widthCm = 4.5;
+        wide.maxHeightCm = 40;
+        wide.axes = true;
+        const QString wideTex = tab.tikz(wide);
+        QVERIFY(extent(wideTex).first <= 4.5 && extent(wideTex).first > 2);
+        // No number written with a decimal comma: every "(" with a digit is a pair of plain numbers.
+        for (const QString& tex : {tab.tikz(), smallTex, wideTex}) {
+            QVERIFY(!tex.contains(QRegularExpression(QStringLiteral("[0-9],[0-9]+,"))));
+            QVERIFY(!tex.contains(QRegularExpression(QStringLiteral("\\$-?[0-9]+,[0-9]"))));
+        }
+        // Points as far apart, or as close, as doubles allow: numbers still, never nan or inf.
+        for (const std::vector<Point>& points :
+             {std::vector<Point>{{-1e308, 0}, {1e308, 1e308}, {0, -1e308}}, std::vector<Point>{{0, 0}, {1e-320, 5e-321}},
+              std::vector<Point>{{1e300, 1e300}, {1e300, 1e300}}}) {
+            tab.pointEditor()->setPoints(points, QStringLiteral("extreme"));
+            for (const granota::ui::TikzOptions& o : {defaults, small}) {
+                const QString tex = tab.tikz(o);
+                QVERIFY2(!tex.contains(QStringLiteral("nan")) && !tex.contains(QStringLiteral("inf")), qPrintable(tex));
+                QVERIFY(tex.contains(QStringLiteral("\\end{tikzpicture}")));
+            }
+        }
+        QLocale::setDefault(saved);
     }
 };
 

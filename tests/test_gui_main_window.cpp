@@ -9,6 +9,7 @@
 #include "ui/shell/language.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/tab_page.h"
+#include "ui/shell/tikz_options_dialog.h"
 #include "ui/common/work_precision_panel.h"
 
 #include "main_window_steps.h"
@@ -17,6 +18,10 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QTimer>
+#include <QSettings>
+#include <QDoubleSpinBox>
+#include <QCheckBox>
 #include <QDir>
 #include <QFile>
 #include <QGroupBox>
@@ -331,6 +336,54 @@ private slots:
         const double ratio = double(inkB) / double(inkA), shared = double(both) / double(std::max(inkA, inkB));
         QVERIFY2(ratio > 0.7 && ratio < 1.4 && shared > 0.5,
                  qPrintable(QStringLiteral("ink 96 DPI %1, 300 DPI %2, shared %3").arg(inkA).arg(inkB).arg(shared)));
+    }
+
+    // File ▸ Export ▸ TikZ asks for the width, the greatest height, axes and grid (issue 14,
+    // item 15), starting from the last choice, which OK keeps and Cancel does not; the
+    // dialog speaks Catalan in Catalan.
+    void tikzOptionsDialogKeepsTheLastChoice()
+    {
+        using granota::ui::TikzOptions;
+        using granota::ui::TikzOptionsDialog;
+        QSettings().remove(QStringLiteral("tikz"));
+        QCOMPARE(TikzOptions::load().widthCm, TikzOptions::kDefaultWidthCm);
+        QCOMPARE(TikzOptions::load().axes, false);
+        // The teacher sets 7.5 cm, 5 cm and axes, and presses OK.
+        const auto answer = [](double width, double height, bool axes, bool accept) {
+            QTimer::singleShot(0, [=] {
+                auto* dialog = qobject_cast<TikzOptionsDialog*>(QApplication::activeModalWidget());
+                QVERIFY(dialog);
+                dialog->findChild<QDoubleSpinBox*>(QStringLiteral("tikzWidth"))->setValue(width);
+                dialog->findChild<QDoubleSpinBox*>(QStringLiteral("tikzHeight"))->setValue(height);
+                dialog->findChild<QCheckBox*>(QStringLiteral("tikzAxes"))->setChecked(axes);
+                accept ? dialog->accept() : dialog->reject();
+            });
+        };
+        TikzOptions chosen;
+        answer(7.5, 5, true, true);
+        QVERIFY(TikzOptionsDialog::ask(nullptr, &chosen));
+        QCOMPARE(chosen.widthCm, 7.5);
+        QCOMPARE(chosen.maxHeightCm, 5.0);
+        QVERIFY(chosen.axes && !chosen.grid);
+        QCOMPARE(TikzOptions::load().widthCm, 7.5);
+        QVERIFY(TikzOptions::load().axes);
+        // Cancel keeps the last choice.
+        answer(20, 20, false, false);
+        QVERIFY(!TikzOptionsDialog::ask(nullptr, &chosen));
+        QCOMPARE(TikzOptions::load().widthCm, 7.5);
+        // A setting out of range (edited by hand) comes back inside it.
+        QSettings().setValue(QStringLiteral("tikz/widthCm"), 1000);
+        QCOMPARE(TikzOptions::load().widthCm, TikzOptions::kMaxCm);
+        // In Catalan, every text of the dialog is Catalan.
+        granota::ui::setLanguage(QStringLiteral("ca"), false);
+        {
+            TikzOptionsDialog dialog(TikzOptions{});
+            QCOMPARE(dialog.windowTitle(), QStringLiteral("Figura TikZ"));
+            QCOMPARE(dialog.findChild<QCheckBox*>(QStringLiteral("tikzGrid"))->text(), QStringLiteral("Quadrícula"));
+            QVERIFY(dialog.findChild<QDoubleSpinBox*>(QStringLiteral("tikzHeight"))->toolTip().contains(QStringLiteral("6,5 cm")));
+        }
+        granota::ui::setLanguage(QStringLiteral("en"), false);
+        QSettings().remove(QStringLiteral("tikz"));
     }
 
     void exportsAreValidFiles_data()

@@ -3492,4 +3492,47 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
             <translation>«pointLabels» no és ni true ni false.</translation>
         </message>
     </context>
+    <context>
+        <name>granota::ui::TikzOptionsDialog</name>
+        <message>
+            <source>The defaults fit a beamer frame; the picture needs \usepackage{tikz}.</source>
+            <translation>Els valors per defecte caben en una diapositiva de beamer; la figura necessita \usepackage{tikz}.</translation>
+        </message>
+        <message>
+            <source>Height at most:</source>
+            <translation>Altura màxima:</translation>
+        </message>
+        <message>
+            <source>Width:</source>
+            <translation>Amplada:</translation>
+        </message>
+        <message>
+            <source>Grid</source>
+            <translation>Quadrícula</translation>
+        </message>
+        <message>
+            <source>Axes with tick labels</source>
+            <translation>Eixos amb marques i valors</translation>
+        </message>
+        <message>
+            <source>Height at most</source>
+            <translation>Altura màxima</translation>
+        </message>
+        <message>
+            <source>A taller picture is made smaller until it is this tall. %1 cm fits a beamer frame with a title.</source>
+            <translation>Una figura més alta es redueix fins a tenir aquesta altura. %1 cm caben en una diapositiva de beamer amb títol.</translation>
+        </message>
+        <message>
+            <source>Width</source>
+            <translation>Amplada</translation>
+        </message>
+        <message>
+            <source>The picture's width on the page, labels included. %1 cm fits a beamer frame.</source>
+            <translation>L'amplada de la figura a la pàgina, amb les etiquetes. %1 cm caben en una diapositiva de beamer.</translation>
+        </message>
+        <message>
+            <source>TikZ picture</source>
+            <translation>Figura TikZ</translation>
+        </message>
+    </context>
 </TS>

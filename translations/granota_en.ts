@@ -3492,4 +3492,47 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
             <translation>“pointLabels” is not true or false.</translation>
         </message>
     </context>
+    <context>
+        <name>granota::ui::TikzOptionsDialog</name>
+        <message>
+            <source>The defaults fit a beamer frame; the picture needs \usepackage{tikz}.</source>
+            <translation>The defaults fit a beamer frame; the picture needs \usepackage{tikz}.</translation>
+        </message>
+        <message>
+            <source>Height at most:</source>
+            <translation>Height at most:</translation>
+        </message>
+        <message>
+            <source>Width:</source>
+            <translation>Width:</translation>
+        </message>
+        <message>
+            <source>Grid</source>
+            <translation>Grid</translation>
+        </message>
+        <message>
+            <source>Axes with tick labels</source>
+            <translation>Axes with tick labels</translation>
+        </message>
+        <message>
+            <source>Height at most</source>
+            <translation>Height at most</translation>
+        </message>
+        <message>
+            <source>A taller picture is made smaller until it is this tall. %1 cm fits a beamer frame with a title.</source>
+            <translation>A taller picture is made smaller until it is this tall. %1 cm fits a beamer frame with a title.</translation>
+        </message>
+        <message>
+            <source>Width</source>
+            <translation>Width</translation>
+        </message>
+        <message>
+            <source>The picture's width on the page, labels included. %1 cm fits a beamer frame.</source>
+            <translation>The picture's width on the page, labels included. %1 cm fits a beamer frame.</translation>
+        </message>
+        <message>
+            <source>TikZ picture</source>
+            <translation>TikZ picture</translation>
+        </message>
+    </context>
 </TS>

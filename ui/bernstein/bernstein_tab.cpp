@@ -629,9 +629,8 @@ QString BernsteinTab::csv() const
     return out;
 }
 
-QString BernsteinTab::tikz() const
+void BernsteinTab::drawTikz(TikzWriter& w) const
 {
-    TikzWriter w;
     w.comment(QStringLiteral("Bernstein polynomials of degree %1 (Def 2.5) on [0, 1]").arg(m_degree));
     w.polyline({{0, 0}, {1, 0}}, Qt::black, 0.6);
     w.polyline({{0, 0}, {0, 1}}, Qt::black, 0.6);
@@ -647,7 +646,6 @@ QString BernsteinTab::tikz() const
             w.polyline(curves[static_cast<std::size_t>(i)], CanvasStyle::series(m_allDegrees ? n : i), 1.0);
     }
     w.polyline({{t(), 0}, {t(), 1}}, QColor(0x33, 0x33, 0x33), 0.6, true);
-    return w.str();
 }
 
 void BernsteinTab::setPresentation(bool on)

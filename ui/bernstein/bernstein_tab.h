@@ -48,7 +48,6 @@ public:
     bool loadState(const QJsonObject& state, QString* error) override;
     bool loadExample(const granota::WorkedExample& example) override;
     QString csv() const override;
-    QString tikz() const override;
     void setPresentation(bool on) override;
 
     /// The degree n of the basis shown (the largest degree N in all-degrees mode).
@@ -84,6 +83,7 @@ public:
     static constexpr int kPlotSamples = 201;     ///< t samples per graph (Matlab linspace(0, 1, 200))
 
 protected:
+    void drawTikz(TikzWriter& w) const override;
     void showEvent(QShowEvent* event) override;
 
 private:

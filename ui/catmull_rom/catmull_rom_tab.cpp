@@ -827,9 +827,8 @@ QString CatmullRomTab::csv() const
     return out;
 }
 
-QString CatmullRomTab::tikz() const
+void CatmullRomTab::drawTikz(TikzWriter& w) const
 {
-    TikzWriter w;
     w.comment(QStringLiteral("Catmull-Rom curves (thesis §2.2), mode %1").arg(endsKey(m_settings.ends)));
     if (!m_scene.bezier.empty())
         w.polyline(m_scene.bezier, kBezierColor, 1.0, true);
@@ -844,7 +843,6 @@ QString CatmullRomTab::tikz() const
     const auto& points = m_editor->points();
     for (std::size_t i = 0; i < points.size(); ++i)
         w.point(points[i], CanvasStyle().handle, QStringLiteral("q_{%1}").arg(i));
-    return w.str();
 }
 
 void CatmullRomTab::presentationChanged(bool)

@@ -36,7 +36,6 @@ public:
     void retranslate() override;
     bool loadExample(const granota::WorkedExample& example) override;
     QString csv() const override;
-    QString tikz() const override;
 
     // The model and the views, for the main window's neighbours and for tests.
     QCustomPlot* blendingPlot() const { return m_plot; }
@@ -58,6 +57,7 @@ public:
     void setAllTausInPlot(bool on);
 
 protected:
+    void drawTikz(TikzWriter& w) const override;
     void changeEvent(QEvent* event) override;
 
 private:

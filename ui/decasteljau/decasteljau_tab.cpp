@@ -924,9 +924,8 @@ QString DeCasteljauTab::csv() const
     return out;
 }
 
-QString DeCasteljauTab::tikz() const
+void DeCasteljauTab::drawTikz(TikzWriter& w) const
 {
-    TikzWriter w;
     const CanvasStyle style;
     const auto& points = m_editor->points();
     w.comment(QStringLiteral("Bezier curve of degree %1 (De Casteljau, Def 2.4) at t = %2").arg(points.size() - 1).arg(m_t));
@@ -939,7 +938,6 @@ QString DeCasteljauTab::tikz() const
         w.point(points[i], style.handle, QStringLiteral("P_{%1}").arg(i));
     if (!m_levels.levels.empty())
         w.point(m_levels.point(), style.curve, QStringLiteral("c(t)"));
-    return w.str();
 }
 
 void DeCasteljauTab::presentationChanged(bool) { updateExactPanel(); }

@@ -34,7 +34,6 @@ public:
     void retranslate() override;
     bool loadExample(const granota::WorkedExample& example) override;
     QString csv() const override;
-    QString tikz() const override;
 
     DeCasteljauParameterControl* parameterControl() const { return m_parameter; }
 
@@ -85,6 +84,7 @@ signals:
     void tChanged(double t);
 
 protected:
+    void drawTikz(TikzWriter& w) const override;
     void showEvent(QShowEvent* event) override;
 
 private:

@@ -893,9 +893,8 @@ QString FitTab::csv() const
     return out;
 }
 
-QString FitTab::tikz() const
+void FitTab::drawTikz(TikzWriter& tikz) const
 {
-    TikzWriter tikz;
     const std::vector<Point>& q = m_editor->points();
     const CanvasStyle style;
     tikz.comment(QStringLiteral("Granota: least-squares Bézier fit of degree %1 (%2 parameters), %3 data points")
@@ -907,13 +906,12 @@ QString FitTab::tikz() const
         tikz.polyline(m_curve, style.curve, 1.2);
         for (std::size_t j = 0; j < m_fit->controlPoints.size(); ++j)
             tikz.point(m_fit->controlPoints[j], style.curve,
-                       m_fit->controlPoints.size() <= kMaxLabelledControls + 1 ? QStringLiteral("$P_{%1}$").arg(j)
+                       m_fit->controlPoints.size() <= kMaxLabelledControls + 1 ? QStringLiteral("P_{%1}").arg(j)
                                                                               : QString());
     }
     const std::size_t stride = strideFor(q.size(), 2000);
     for (std::size_t i = 0; i < q.size(); i += stride)
-        tikz.point(q[i], style.handle, q.size() <= 30 ? QStringLiteral("$Q_{%1}$").arg(i) : QString());
-    return tikz.str();
+        tikz.point(q[i], style.handle, q.size() <= 30 ? QStringLiteral("Q_{%1}").arg(i) : QString());
 }
 
 // ---------------------------------------------------------------- view

@@ -33,7 +33,6 @@ public:
     void retranslate() override;
     bool loadExample(const granota::WorkedExample& example) override;
     QString csv() const override;
-    QString tikz() const override;
 
     /// Reads data points from a CSV or JSON file (core/io/point_list.h) as one undo step. On a
     /// bad file returns false with a translated message in `error` and changes nothing.
@@ -66,6 +65,7 @@ public:
     static constexpr int kPlotMaxDegree = 30;
 
 protected:
+    void drawTikz(TikzWriter& w) const override;
     void showEvent(QShowEvent* event) override;
 
 private:

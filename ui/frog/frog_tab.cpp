@@ -763,12 +763,11 @@ QString FrogTab::csv() const
     return out;
 }
 
-QString FrogTab::tikz() const
+void FrogTab::drawTikz(TikzWriter& w) const
 {
-    TikzWriter w(12.0);
     const Simulation* sim = m_canvas->simulation();
     if (!sim)
-        return w.str();
+        return;
     const double H = m_scene.params.height;
     w.comment(QStringLiteral("Granota: scene %1 (%2), solver %3, step %4")
                   .arg(fromStd(m_scene.name), fromStd(m_scene.section), fromStd(solverName(m_solver)))
@@ -803,7 +802,6 @@ QString FrogTab::tikz() const
             for (const Point& p : pts)
                 w.point(Point(p.x, H - p.y), QColor(0xf2, 0xb1, 0x34));
         }
-    return w.str();
 }
 
 QString FrogTab::exportFrames(const QString& directory, int frames)

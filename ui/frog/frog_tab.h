@@ -33,7 +33,6 @@ public:
     QJsonObject saveState() const override;
     bool loadState(const QJsonObject& state, QString* error) override;
     QString csv() const override;
-    QString tikz() const override;
     void setPresentation(bool on) override;
 
     /// Opens scene `name` (docs/scenes.md) (`--scene`). False with a message for an unknown name.
@@ -61,6 +60,7 @@ public:
     FrogParametersPanel* parametersPanel() const { return m_params; }
 
 protected:
+    void drawTikz(TikzWriter& w) const override;
     void changeEvent(QEvent* event) override;
     bool eventFilter(QObject* watched, QEvent* event) override;
 

@@ -9,6 +9,7 @@
 #include "ui/frog/frog_tab.h"
 #include "ui/shell/language.h"
 #include "ui/shell/tab_page.h"
+#include "ui/shell/tikz_options_dialog.h"
 #include "ui/common/work_precision_panel.h"
 
 #include <QAction>
@@ -400,7 +401,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
 
 // ---------------------------------------------------------------- exports
 
-QString MainWindow::exportCurrent(const QString& format, const QString& file, int dpi)
+QString MainWindow::exportCurrent(const QString& format, const QString& file, int dpi, const TikzOptions& tikz)
 {
     TabPage* page = currentTab();
     if (!page)
@@ -415,7 +416,7 @@ QString MainWindow::exportCurrent(const QString& format, const QString& file, in
     if (format == QLatin1String("csv"))
         return writeTextFile(file, page->csv());
     if (format == QLatin1String("tikz"))
-        return writeTextFile(file, page->tikz());
+        return writeTextFile(file, page->tikz(tikz));
     return tr("Unknown export format “%1”.").arg(format);
 }
 
@@ -436,13 +437,16 @@ void MainWindow::exportDialog(const QString& format)
             return;
         dpi = choice.toInt();
     }
+    TikzOptions tikz;
+    if (format == QLatin1String("tikz") && !TikzOptionsDialog::ask(this, &tikz))
+        return;
     const QString extension = format == QLatin1String("tikz") ? QStringLiteral("tex") : format;
     const QString file = QFileDialog::getSaveFileName(
         this, tr("Export"), page->key() + QLatin1Char('.') + extension,
         tr("%1 files (*.%2)").arg(format.toUpper(), extension));
     if (file.isEmpty())
         return;
-    const QString error = exportCurrent(format, file, dpi);
+    const QString error = exportCurrent(format, file, dpi, tikz);
     if (error.isEmpty())
         showMessage(tr("Exported %1").arg(QFileInfo(file).fileName()));
     else

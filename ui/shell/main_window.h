@@ -10,6 +10,7 @@
 #include <QVector>
 
 #include "ui/shell/document_controller.h"
+#include "ui/shell/tikz_options.h"
 
 class QAction;
 class QActionGroup;
@@ -51,8 +52,10 @@ public:
     QString currentFile() const { return m_document->currentFile(); }
     bool isModified() const { return m_document->isModified(); }
 
-    /// Exports the current tab's view: format png, svg, pdf, csv or tikz. Empty or a message.
-    QString exportCurrent(const QString& format, const QString& file, int dpi = 96);
+    /// Exports the current tab's view: format png, svg, pdf, csv or tikz (drawn as `tikz`
+    /// asks). Empty or a message.
+    QString exportCurrent(const QString& format, const QString& file, int dpi = 96,
+                          const TikzOptions& tikz = TikzOptions());
 
     /// Presentation mode: larger text and lines; `fullScreen` false keeps the window's size
     /// (screenshots of presentation mode at 1280×800).

@@ -6,6 +6,8 @@
 /// this interface only; what the tabs say alike (key, title, undo stack, export view) is
 /// held here once, what each says in its own way is virtual.
 
+#include "ui/shell/tikz_writer.h"
+
 #include <QEvent>
 #include <QJsonObject>
 #include <QUndoStack>
@@ -62,9 +64,16 @@ public:
     QUndoStack* undoStack() const { return m_undo; }
     /// The view that File ▸ Export draws (the main canvas or plot of the tab, setExportView()).
     Drawable* exportView() const { return m_exportView; }
-    /// The tab's data as CSV (points, samples, table) and as a TikZ picture for LaTeX slides.
+    /// The tab's data as CSV (points, samples, table).
     virtual QString csv() const = 0;
-    virtual QString tikz() const = 0;
+    /// The tab's picture as TikZ for LaTeX slides, at the size and with the axes and grid
+    /// `options` ask for (File ▸ Export ▸ TikZ).
+    QString tikz(const TikzOptions& options = TikzOptions()) const
+    {
+        TikzWriter writer(options);
+        drawTikz(writer);
+        return writer.str();
+    }
 
     /// Presentation mode: larger lines, handles and labels (docs/classroom.md).
     virtual void setPresentation(bool on) { (void)on; }
@@ -79,6 +88,9 @@ signals:
     void statusMessage(const QString& text);
 
 protected:
+    /// What tikz() draws: the tab's curves, polygons and labelled points in model coordinates.
+    virtual void drawTikz(TikzWriter& writer) const = 0;
+
     /// The tab's view for File ▸ Export (it stays the tab's; set in the constructor).
     void setExportView(Drawable* view) { m_exportView = view; }
 

@@ -1,12 +1,85 @@
 #include "ui/shell/tikz_writer.h"
 
+#include "core/base/number_format.h"
+
 #include <QMap>
+#include <QStringList>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace granota::ui {
+
+namespace {
+
+// The room the layout keeps around the points, in cm (at most 11 pt text, as in beamer).
+constexpr double kEdgeCm = 0.12;        // a dot's radius (2 pt) and the thickest line
+constexpr double kLabelRightCm = 1.0;   // a label above right of its dot: "P_{10}", "c(t)"
+constexpr double kLabelTopCm = 0.75;
+constexpr double kTickBelowCm = 0.6;    // tick (2 pt) and the x tick labels below the axis
+constexpr double kTickDigitCm = 0.21;   // one character of a y tick label, left of the axis
+constexpr double kTickPadCm = 0.35;     // the y tick, the label's padding and a minus sign
+constexpr double kTickHalfHeightCm = 0.2; // half a y tick label, above the top tick
+constexpr double kMinAreaCm = 0.5;      // the smallest drawing area whatever the margins
+constexpr int kMaxTicks = 100;
+/// Below this half-span (in model units) the scale, cm per unit, would overflow a double.
+constexpr double kMinHalfSpan = 1e-290;
+
+/// A length in cm as TikZ reads it: three decimals (0.01 mm), a point, no "-0".
+QString cm(double v)
+{
+    QString s = QString::fromStdString(formatFixed(v, 3));
+    if (s.contains(QLatin1Char('.'))) {
+        while (s.endsWith(QLatin1Char('0')))
+            s.chop(1);
+        if (s.endsWith(QLatin1Char('.')))
+            s.chop(1);
+    }
+    return s == QLatin1String("-0") ? QStringLiteral("0") : s;
+}
+
+/// 1, 2 or 5 times a power of ten, about an eighth of `span`: the step of ticks and grid.
+double roundStep(double span)
+{
+    const double raw = span / 8;
+    const double power = std::pow(10.0, std::floor(std::log10(raw)));
+    const double m = raw / power;
+    return (m <= 1 ? 1 : m <= 2 ? 2 : m <= 5 ? 5 : 10) * power;
+}
+
+/// The interval a picture shows on one axis; `half` is half its length, which stays finite
+/// for points as far apart as doubles allow.
+struct Interval {
+    double lo = 0, hi = 0;
+    double half() const { return hi / 2 - lo / 2; }
+    bool contains(double v) const { return lo <= v && v <= hi; }
+};
+
+/// The tick values of `r` at `step` (a multiple of `step` each), at most kMaxTicks.
+std::vector<double> ticks(const Interval& r, double step)
+{
+    std::vector<double> out;
+    const double first = std::ceil(r.lo / step - 1e-9);
+    for (int k = 0; k < kMaxTicks; ++k) {
+        const double v = (first + k) * step;
+        if (!std::isfinite(v) || v > r.hi + step * 1e-9)
+            break;
+        out.push_back(v == 0 ? 0.0 : v);
+    }
+    return out;
+}
+
+/// A tick label: as many decimals as the step has, in TeX math.
+QString tickLabel(double v, double step)
+{
+    const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
+    const std::string text =
+        (decimals <= 6 && std::fabs(v) < 1e7) ? formatFixed(v, decimals) : formatSignificant(v, 3);
+    return QStringLiteral("$%1$").arg(QString::fromStdString(text));
+}
+
+} // namespace
 
 void TikzWriter::polyline(const std::vector<Point>& points, const QColor& color, double widthPt, bool dashed,
                           bool closed)
@@ -21,19 +94,64 @@ void TikzWriter::point(Point p, const QColor& color, const QString& label)
     m_items.push_back({Item::Dot, {p}, color, 1.0, false, false, label});
 }
 
-void TikzWriter::comment(const QString& text) { m_items.push_back({Item::Comment, {}, {}, 0, false, false, text}); }
+void TikzWriter::comment(const QString& text)
+{
+    QString line = text;
+    line.replace(QLatin1Char('\n'), QLatin1Char(' ')).replace(QLatin1Char('\r'), QLatin1Char(' '));
+    m_items.push_back({Item::Comment, {}, {}, 0, false, false, line});
+}
 
 QString TikzWriter::str() const
 {
-    double minX = std::numeric_limits<double>::infinity(), maxX = -minX;
-    for (const Item& item : m_items)
+    // What the points span, and whether any dot has a label.
+    Interval x{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}, y = x;
+    bool labels = false;
+    for (const Item& item : m_items) {
+        labels = labels || (item.kind == Item::Dot && !item.text.isEmpty());
         for (const Point& p : item.points)
             if (isFinite(p)) {
-                minX = std::min(minX, p.x);
-                maxX = std::max(maxX, p.x);
+                x = {std::min(x.lo, p.x), std::max(x.hi, p.x)};
+                y = {std::min(y.lo, p.y), std::max(y.hi, p.y)};
             }
-    const double span = (maxX > minX) ? maxX - minX : 1.0;
-    const double scale = m_widthCm / span;
+    }
+    for (Interval* r : {&x, &y}) {
+        if (!(r->lo <= r->hi))
+            *r = {0, 1}; // nothing drawn
+        else if (!(r->half() >= kMinHalfSpan)) { // a single point, or points on one line
+            const double pad = std::max(0.5, std::fabs(r->lo) * 1e-9);
+            *r = {r->lo - pad, r->lo + pad};
+        }
+    }
+    const bool scaleShown = m_options.axes || m_options.grid;
+    const double step = roundStep(2 * std::max(x.half(), y.half()));
+    std::vector<double> xTicks, yTicks;
+    const auto longest = [step](const std::vector<double>& values) {
+        int chars = 0;
+        for (double v : values)
+            chars = std::max(chars, static_cast<int>(tickLabel(v, step).size()) - 2); // without the $s
+        return chars;
+    };
+    if (scaleShown) {
+        xTicks = ticks(x, step);
+        yTicks = ticks(y, step);
+    }
+
+    // The margins (labels; tick labels left of the y axis, below the x axis, and half of one
+    // beyond each end) and one scale for both axes: the width asked for, or narrower when the
+    // picture would be taller than allowed.
+    const double yLabels = m_options.axes ? kTickPadCm + kTickDigitCm * longest(yTicks) : 0.0;
+    const double xLabelHalf = m_options.axes ? kTickDigitCm * longest(xTicks) / 2 : 0.0;
+    const double left = kEdgeCm + std::max(yLabels, xLabelHalf);
+    const double right = kEdgeCm + std::max(labels ? kLabelRightCm : 0.0, xLabelHalf);
+    const double bottom = kEdgeCm + (m_options.axes ? kTickBelowCm : 0.0);
+    const double top = kEdgeCm + std::max(labels ? kLabelTopCm : 0.0, m_options.axes ? kTickHalfHeightCm : 0.0);
+    const double areaW = std::max(kMinAreaCm, m_options.widthCm - left - right);
+    const double areaH = std::max(kMinAreaCm, m_options.maxHeightCm - bottom - top);
+    const double perHalf = std::min(areaW / x.half(), areaH / y.half()); // cm per two model units
+    const auto cx = [&](double v) { return (v / 2 - x.lo / 2) * perHalf; };
+    const auto cy = [&](double v) { return (v / 2 - y.lo / 2) * perHalf; };
+    const auto coord = [&](double px, double py) { return QStringLiteral("(%1,%2)").arg(cm(cx(px)), cm(cy(py))); };
+
     QMap<QString, QString> colours; // name → hex
     auto colourName = [&colours](const QColor& c) {
         const QString hex = c.name().mid(1).toUpper();
@@ -42,7 +160,27 @@ QString TikzWriter::str() const
         return name;
     };
     QString body;
-    auto coord = [](Point p) { return QStringLiteral("(%1,%2)").arg(p.x, 0, 'g', 8).arg(p.y, 0, 'g', 8); };
+    if (m_options.grid) {
+        QStringList lines;
+        for (double v : xTicks)
+            lines << coord(v, y.lo) + QStringLiteral(" -- ") + coord(v, y.hi);
+        for (double v : yTicks)
+            lines << coord(x.lo, v) + QStringLiteral(" -- ") + coord(x.hi, v);
+        body += QStringLiteral("  \\draw[black!15, line width=0.3pt] %1;\n").arg(lines.join(QLatin1Char(' ')));
+    }
+    if (m_options.axes) {
+        // Through the origin when it is in the picture, else along the picture's edge.
+        const double ax = x.contains(0) ? 0.0 : x.lo, ay = y.contains(0) ? 0.0 : y.lo;
+        body += QStringLiteral("  \\draw[black, line width=0.5pt] %1 -- %2 %3 -- %4;\n")
+                    .arg(coord(x.lo, ay), coord(x.hi, ay), coord(ax, y.lo), coord(ax, y.hi));
+        for (double v : xTicks)
+            body += QStringLiteral("  \\draw[black, line width=0.5pt] %1 -- ++(0,-2pt) node[below, inner sep=1pt] {%2};\n")
+                        .arg(coord(v, ay), tickLabel(v, step));
+        for (double v : yTicks)
+            body += QStringLiteral("  \\draw[black, line width=0.5pt] %1 -- ++(-2pt,0) node[left, inner sep=1pt] {%2};\n")
+                        .arg(coord(ax, v), tickLabel(v, step));
+    }
+    const auto at = [&](const Point& p) { return coord(p.x, p.y); };
     for (const Item& item : m_items) {
         switch (item.kind) {
         case Item::Comment:
@@ -50,31 +188,36 @@ QString TikzWriter::str() const
             break;
         case Item::Line: {
             body += QStringLiteral("  \\draw[%1, line width=%2pt%3] ")
-                        .arg(colourName(item.color))
-                        .arg(item.width, 0, 'g', 3)
-                        .arg(item.dashed ? QStringLiteral(", dashed") : QString());
+                        .arg(colourName(item.color), QString::fromStdString(formatSignificant(item.width, 3)),
+                             item.dashed ? QStringLiteral(", dashed") : QString());
             QStringList parts;
             for (const Point& p : item.points)
                 if (isFinite(p))
-                    parts << coord(p);
+                    parts << at(p);
             body += parts.join(QStringLiteral(" -- "));
             body += item.closed ? QStringLiteral(" -- cycle;\n") : QStringLiteral(";\n");
             break;
         }
         case Item::Dot:
-            body += QStringLiteral("  \\fill[%1] %2 circle[radius=2pt]").arg(colourName(item.color), coord(item.points[0]));
+            if (!isFinite(item.points[0]))
+                break;
+            body += QStringLiteral("  \\fill[%1] %2 circle[radius=2pt]").arg(colourName(item.color), at(item.points[0]));
             if (!item.text.isEmpty())
                 body += QStringLiteral(" node[above right] {$%1$}").arg(item.text);
             body += QStringLiteral(";\n");
             break;
         }
     }
-    QString out = QStringLiteral("%% Made with Granota. Needs \\usepackage{tikz}.\n");
+    // Every line outside the picture ends in a comment, so that \input adds no space.
+    QString out = QStringLiteral("%% Made with Granota. Needs \\usepackage{tikz}.\n"
+                                 "%% %1 cm wide at most, %2 cm tall at most; 1 model unit = %3 cm.\n")
+                      .arg(cm(m_options.widthCm), cm(m_options.maxHeightCm),
+                           QString::fromStdString(formatSignificant(perHalf / 2, 6)));
     for (auto it = colours.cbegin(); it != colours.cend(); ++it)
-        out += QStringLiteral("\\definecolor{%1}{HTML}{%2}\n").arg(it.key(), it.value());
-    out += QStringLiteral("\\begin{tikzpicture}[x=%1cm, y=%1cm]\n").arg(scale, 0, 'g', 6);
+        out += QStringLiteral("\\definecolor{%1}{HTML}{%2}%\n").arg(it.key(), it.value());
+    out += QStringLiteral("\\begin{tikzpicture}\n");
     out += body;
-    out += QStringLiteral("\\end{tikzpicture}\n");
+    out += QStringLiteral("\\end{tikzpicture}%\n");
     return out;
 }
 

@@ -1,9 +1,12 @@
 #pragma once
 /// \file tikz_writer.h
-/// A TikZ picture for LaTeX slides (docs/tabs.md): polylines, points and labels in model
-/// coordinates, scaled to a given width. Tabs add what they draw; str() is the file.
+/// A TikZ picture for LaTeX slides (docs/tabs.md): polylines, points and labels that a tab
+/// adds in model coordinates; str() lays them out at the size TikzOptions asks for (the
+/// width, labels included, and at most the height), with optional axes and grid, and writes
+/// them in centimetres, always with a decimal point (docs/numbers-and-locales.md).
 
 #include "core/base/vec2.h"
+#include "ui/shell/tikz_options.h"
 
 #include <QColor>
 #include <QString>
@@ -14,11 +17,11 @@ namespace granota::ui {
 
 class TikzWriter {
 public:
-    /// `widthCm`: the picture's width on the slide; the scale follows from the content.
-    explicit TikzWriter(double widthCm = 10.0) : m_widthCm(widthCm) {}
+    explicit TikzWriter(const TikzOptions& options = TikzOptions()) : m_options(options) {}
 
     void polyline(const std::vector<Point>& points, const QColor& color, double widthPt = 1.0, bool dashed = false,
                   bool closed = false);
+    /// A dot, labelled above right by `label`, which is TeX math ("P_{0}", without $).
     void point(Point p, const QColor& color, const QString& label = QString());
     void comment(const QString& text);
 
@@ -34,7 +37,7 @@ private:
         bool dashed = false, closed = false;
         QString text;
     };
-    double m_widthCm;
+    TikzOptions m_options;
     std::vector<Item> m_items;
 };
 
