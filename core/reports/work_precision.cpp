@@ -16,15 +16,19 @@ const WorkPrecisionSeries* WorkPrecisionReport::find(std::string_view method) co
     return nullptr;
 }
 
+const char* toString(WorkPrecisionAxis axis) { return axis == WorkPrecisionAxis::Knob ? "knob" : "seconds"; }
+
 std::vector<std::string> workPrecisionReportNames()
 {
-    return {"curve-sampling", "bezier-evaluation", "least-squares", "integrators", "soft-body"};
+    return {"curve-sampling", "catmull-rom-sampling", "bezier-evaluation", "least-squares", "integrators", "soft-body"};
 }
 
 Expected<WorkPrecisionReport> runWorkPrecisionReport(std::string_view name, const WorkPrecisionOptions& options)
 {
     if (name == "curve-sampling")
         return reports::curveSampling(options);
+    if (name == "catmull-rom-sampling")
+        return reports::catmullRomSampling(options);
     if (name == "bezier-evaluation")
         return reports::bezierEvaluation(options);
     if (name == "least-squares")
@@ -66,6 +70,7 @@ std::string workPrecisionCsv(const WorkPrecisionReport& report, const std::vecto
     out += "# error: " + report.error + "\n";
     out += "# reference: " + report.reference + "\n";
     out += "# lesson: " + report.lesson + "\n";
+    out += std::string("# x axis: ") + toString(report.xAxis) + "\n";
     for (const auto& line : context)
         out += "# " + line + "\n";
     out += "method,knob,error,seconds\n";

@@ -1,6 +1,6 @@
 #pragma once
 /// \file work_precision_reports.h
-/// The five reports of docs/work-precision.md, one file each (report_*.cpp); run through
+/// The six reports of docs/work-precision.md, one file each (report_*.cpp); run through
 /// runWorkPrecisionReport(), which checks the name and handles cancelling.
 
 #include "core/base/vec2.h"
@@ -25,6 +25,7 @@ private:
 };
 
 Expected<WorkPrecisionReport> curveSampling(const WorkPrecisionOptions& options);
+Expected<WorkPrecisionReport> catmullRomSampling(const WorkPrecisionOptions& options);
 Expected<WorkPrecisionReport> bezierEvaluation(const WorkPrecisionOptions& options);
 Expected<WorkPrecisionReport> leastSquares(const WorkPrecisionOptions& options);
 Expected<WorkPrecisionReport> integrators(const WorkPrecisionOptions& options);

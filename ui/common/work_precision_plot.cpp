@@ -27,6 +27,8 @@ QString reportTitle(const WorkPrecisionReport& r)
 {
     if (r.name == "curve-sampling")
         return QCoreApplication::translate("granota::ui::WorkPrecision", "Curve sampling: polyline against curve");
+    if (r.name == "catmull-rom-sampling")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "Catmull-Rom sampling: polyline against curve");
     if (r.name == "bezier-evaluation")
         return QCoreApplication::translate("granota::ui::WorkPrecision", "Evaluating a Bézier curve of degree n");
     if (r.name == "least-squares")
@@ -41,8 +43,13 @@ QString reportTitle(const WorkPrecisionReport& r)
 QString reportLesson(const WorkPrecisionReport& r)
 {
     if (r.name == "curve-sampling")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "Both errors fall like 1/N² (twice the points, a quarter of the error); adaptive subdivision "
-                  "puts its points where the curve bends and needs fewer for the same error.");
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "Against the number of points, both errors fall like 1/N² (twice the points, a quarter of "
+                  "the error), and adaptive subdivision, which puts its points where the curve bends, needs "
+                  "fewer for the same error. Its run time per point is higher: each point costs a flatness test.");
+    if (r.name == "catmull-rom-sampling")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "The same number of points on every segment wastes them on the short, gentle ones; adaptive "
+                  "subdivision of each segment puts them where the curve bends and needs fewer for the same "
+                  "error. Both errors fall like 1/N².");
     if (r.name == "bezier-evaluation")
         return QCoreApplication::translate("granota::ui::WorkPrecision", "De Casteljau and the Bernstein sum stay at rounding level at every degree; Horner on the power "
                   "basis loses digits as the degree grows, because its coefficients are huge alternating sums "
@@ -66,6 +73,7 @@ QString reportMethod(const std::string& m)
     static const std::pair<const char*, const char*> names[] = {
         {"uniform", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "uniform")},
         {"adaptive", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "adaptive")},
+        {"uniform t per segment", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "uniform t per segment")},
         {"De Casteljau", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "De Casteljau")},
         {"Bernstein sum", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Bernstein sum")},
         {"Horner (power basis)", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Horner (power basis)")},
@@ -101,7 +109,7 @@ QString reportKnob(const WorkPrecisionReport& r)
 
 QString reportError(const WorkPrecisionReport& r)
 {
-    if (r.name == "curve-sampling")
+    if (r.name == "curve-sampling" || r.name == "catmull-rom-sampling")
         return QCoreApplication::translate("granota::ui::WorkPrecision", "max distance between curve and polyline");
     if (r.name == "bezier-evaluation")
         return QCoreApplication::translate("granota::ui::WorkPrecision", "max |c(t) − exact| / max |Pᵢ|");
@@ -114,6 +122,15 @@ QString reportError(const WorkPrecisionReport& r)
     return QString::fromStdString(r.error);
 }
 
+QString reportAxisTitle(const WorkPrecisionReport& r, WorkPrecisionAxis axis)
+{
+    if (axis == WorkPrecisionAxis::Seconds)
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "run time per call (s)");
+    if (r.knob == "points")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "points of the polyline (evaluations of the curve)");
+    return reportKnob(r);
+}
+
 void clearWorkPrecisionPlot(QCustomPlot* plot)
 {
     plot->clearGraphs();
@@ -124,8 +141,11 @@ void clearWorkPrecisionPlot(QCustomPlot* plot)
     plot->replot();
 }
 
-void plotWorkPrecision(QCustomPlot* plot, const WorkPrecisionReport& report, double styleScale)
+void plotWorkPrecision(QCustomPlot* plot, const WorkPrecisionReport& report, double styleScale,
+                       std::optional<WorkPrecisionAxis> axis)
 {
+    const WorkPrecisionAxis xAxis = axis.value_or(report.xAxis);
+    const bool againstKnob = xAxis == WorkPrecisionAxis::Knob;
     plot->clearGraphs();
     plot->clearItems();
     plot->plotLayout()->setAutoMargins(QCP::msAll);
@@ -140,7 +160,7 @@ void plotWorkPrecision(QCustomPlot* plot, const WorkPrecisionReport& report, dou
         axis->setLabelFont(f);
         axis->setTickLabelFont(f);
     }
-    plot->xAxis->setLabel(QCoreApplication::translate("granota::ui::WorkPrecision", "run time per call (s)"));
+    plot->xAxis->setLabel(reportAxisTitle(report, xAxis));
     plot->yAxis->setLabel(reportError(report));
     double xmin = 1e300, xmax = 0, ymin = 1e300, ymax = 0;
     int index = 0;
@@ -155,19 +175,21 @@ void plotWorkPrecision(QCustomPlot* plot, const WorkPrecisionReport& report, dou
         graph->setScatterStyle(QCPScatterStyle(shapes[index % 5], colour, colour.lighter(150), 7 * styleScale));
         QVector<double> x, y;
         for (const auto& p : series.samples) {
-            if (!(p.seconds > 0) || !(p.error > 0))
+            const double px = againstKnob ? p.knob : p.seconds;
+            if (!(px > 0) || !(p.error > 0))
                 continue;
-            x << p.seconds;
+            x << px;
             y << p.error;
-            xmin = std::min(xmin, p.seconds);
-            xmax = std::max(xmax, p.seconds);
+            xmin = std::min(xmin, px);
+            xmax = std::max(xmax, px);
             ymin = std::min(ymin, p.error);
             ymax = std::max(ymax, p.error);
         }
         graph->setData(x, y, true);
-        // The knob at the first and last marker: which end is coarse, which is fine.
+        // Against run time, the knob at the first and last marker: which end is coarse, which
+        // is fine. (Against the knob the axis says it.)
         for (std::size_t k : {std::size_t(0), series.samples.size() - 1}) {
-            if (series.samples.empty() || (k > 0 && series.samples.size() < 2))
+            if (againstKnob || series.samples.empty() || (k > 0 && series.samples.size() < 2))
                 continue;
             const auto& p = series.samples[k];
             auto* label = new QCPItemText(plot);

@@ -1,0 +1,109 @@
+// docs/work-precision.md, Catmull-Rom sampling: the polyline drawn for a Catmull-Rom curve (§2.2, Def 2.10)
+// against the curve itself, the same number of points on every segment (the Matlab
+// `SegmentCatmullRom`, uniform in each segment's t) against adaptive subdivision of each segment.
+#include "core/base/stopwatch.h"
+#include "core/curves/bezier/adaptive_sampling.h"
+#include "core/curves/splines/catmull_rom.h"
+#include "core/reports/work_precision_reports.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace granota::reports {
+
+namespace {
+
+/// Each segment of the open curve through `q` as a cubic Bézier curve: Def 2.8 gives
+/// p(0) = p_1, p(1) = p_2, p′(0) = τ(p_2 − p_0), p′(1) = τ(p_3 − p_1), and a cubic's
+/// inner control points are its ends moved by a third of the end tangents.
+std::vector<std::vector<Point>> bezierSegments(const std::vector<Point>& q, double tau)
+{
+    std::vector<std::vector<Point>> out;
+    const auto quadruples = catmullRomQuadruples(q.size(), CatmullRomMode::Open);
+    if (!quadruples)
+        return out;
+    for (const auto& k : *quadruples) {
+        const auto at = [&q](int i) { return q[static_cast<std::size_t>(i)]; };
+        const Point p1 = at(k[1]), p2 = at(k[2]);
+        out.push_back({p1, p1 + (tau / 3) * (p2 - at(k[0])), p2 - (tau / 3) * (at(k[3]) - p1), p2});
+    }
+    return out;
+}
+
+/// Every segment at the parameters `t` of its own (all in [0, 1]).
+double deviation(const std::vector<std::vector<Point>>& beziers, const std::vector<std::vector<double>>& t)
+{
+    double worst = 0;
+    for (std::size_t i = 0; i < beziers.size(); ++i)
+        worst = std::max(worst, polylineDeviation(beziers[i], t[i]));
+    return worst;
+}
+
+} // namespace
+
+Expected<WorkPrecisionReport> catmullRomSampling(const WorkPrecisionOptions& options)
+{
+    WorkPrecisionReport r;
+    r.name = "catmull-rom-sampling";
+    r.title = "Catmull-Rom sampling: polyline against curve";
+    r.knob = "points";
+    r.error = "max distance between curve and polyline";
+    r.reference = "each segment as a cubic Bézier curve, evaluated in long double between the samples";
+    r.lesson = "The same number of points on every segment wastes them on the short, gentle ones; adaptive "
+               "subdivision of each segment puts them where the curve bends and needs fewer for the same "
+               "error. Both errors fall like 1/N^2.";
+    r.xAxis = WorkPrecisionAxis::Knob;
+    // Ex 2.13's points with one far point: segments of very different length and bend.
+    const std::vector<Point> q = {{3, 5}, {2, 2}, {6, 0}, {8, 3}, {7, 5}, {30, 6}};
+    const double tau = 0.5;
+    const auto segments = catmullRomSegments(q, tau, CatmullRomMode::Open); // Lemma 2.3
+    if (!segments)
+        return segments.error();
+    const std::vector<std::vector<Point>> beziers = bezierSegments(q, tau);
+    const std::size_t count = beziers.size();
+    const Progress progress(options);
+    double sink = 0;
+
+    WorkPrecisionSeries uniform{"uniform t per segment", {}};
+    const int maxLevel = options.quick ? 7 : 11;
+    WorkPrecisionSeries adaptive{"adaptive", {}};
+    const int maxTolerance = options.quick ? 5 : 8;
+    const double total = maxLevel + maxTolerance;
+    for (int level = 1; level <= maxLevel; ++level) {
+        const int perSegment = (1 << level) + 1;
+        std::vector<double> t(static_cast<std::size_t>(perSegment));
+        for (int j = 0; j < perSegment; ++j)
+            t[static_cast<std::size_t>(j)] = j == perSegment - 1 ? 1.0 : j / double(perSegment - 1);
+        const double seconds = secondsPerCall([&] { return sampleSegments(*segments, perSegment).back().x; },
+                                              options.minSecondsPerPoint, &sink);
+        const double points = double(count) * (perSegment - 1) + 1; // the joins are shared
+        uniform.samples.push_back({points, deviation(beziers, std::vector<std::vector<double>>(count, t)), seconds});
+        if (!progress.tick(level, total))
+            return cancelled();
+    }
+    for (int k = 1; k <= maxTolerance; ++k) {
+        const double tolerance = std::pow(10.0, -k);
+        std::vector<std::vector<double>> t;
+        double points = 1;
+        for (const auto& b : beziers) {
+            t.push_back(sampleBezierAdaptive(b, tolerance).t);
+            points += double(t.back().size()) - 1;
+        }
+        const double seconds = secondsPerCall(
+            [&] {
+                double last = 0;
+                for (const auto& b : beziers)
+                    last += sampleBezierAdaptive(b, tolerance).points.back().x;
+                return last;
+            },
+            options.minSecondsPerPoint, &sink);
+        adaptive.samples.push_back({points, deviation(beziers, t), seconds});
+        if (!progress.tick(maxLevel + k, total))
+            return cancelled();
+    }
+    r.series = {std::move(uniform), std::move(adaptive)};
+    (void)sink;
+    return r;
+}
+
+} // namespace granota::reports
