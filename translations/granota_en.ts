@@ -1243,8 +1243,12 @@
     <context>
         <name>granota::ui::FitTab</name>
         <message>
-            <source>Plotted up to n = %1 of %2: each degree is a fit of its own, and refitting all of them for %3 data points on every change would slow the window.</source>
-            <translation>Plotted up to n = %1 of %2: each degree is a fit of its own, and refitting all of them for %3 data points on every change would slow the window.</translation>
+            <source>Plotted up to n = %1 of %2:
+refitting every degree for %3 points
+on each change would slow the window.</source>
+            <translation>Plotted up to n = %1 of %2:
+refitting every degree for %3 points
+on each change would slow the window.</translation>
         </message>
         <message>
             <source>Degree %1 is refused: the highest is %2, beyond which the Bernstein basis is too ill-conditioned for any solver.</source>

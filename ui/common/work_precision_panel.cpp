@@ -28,6 +28,8 @@ WorkPrecisionPanel::WorkPrecisionPanel(std::vector<std::string> reports, QWidget
     auto* row = new QHBoxLayout;
     row->addWidget(m_choice, 1);
     row->addWidget(m_axis);
+    if (m_names.size() <= 1)
+        row->addStretch(1); // the choice is hidden: keep the axis box its own width
     row->addWidget(m_measure);
     row->addWidget(m_cancel);
     layout->addLayout(row);

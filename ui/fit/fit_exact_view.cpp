@@ -184,8 +184,9 @@ QString FitExactView::html(const Input& in)
         html += ExactPanel::heading(tr("Matrix M (Lemma 2.2), in decimals"));
         const std::size_t allRows = fit.params.size();
         const int allCols = n + 1;
-        const std::size_t rows = std::min<std::size_t>(allRows, kMaxListedPoints);
-        const int cols = std::min(allCols, kMaxListedPoints);
+        const bool whole = allRows <= std::size_t(kMaxListedPoints) && allCols <= kMaxListedPoints;
+        const std::size_t rows = whole ? allRows : std::min<std::size_t>(allRows, kMatrixCorner);
+        const int cols = whole ? allCols : std::min(allCols, kMatrixCorner);
         // Only the rows shown are computed: the data may have a million points.
         const std::vector<double> shownParams(fit.params.begin(), fit.params.begin() + static_cast<std::ptrdiff_t>(rows));
         const Eigen::MatrixXd M = bernsteinMatrix(shownParams, n);

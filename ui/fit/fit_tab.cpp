@@ -687,8 +687,7 @@ void FitTab::updatePlot()
     // Where the plot stops short of the highest degree allowed, it says why, on the plot.
     m_plotNote.clear();
     if (!errors.empty() && errors.back().degree < highest)
-        m_plotNote = tr("Plotted up to n = %1 of %2: each degree is a fit of its own, and refitting all of them "
-                        "for %3 data points on every change would slow the window.")
+        m_plotNote = tr("Plotted up to n = %1 of %2:\nrefitting every degree for %3 points\non each change would slow the window.")
                          .arg(errors.back().degree)
                          .arg(highest)
                          .arg(q.size());

@@ -67,7 +67,7 @@ public:
     /// The error-against-degree plot goes up to the highest degree the tab allows,
     /// min(k, kMaxFitDegree), as long as refitting every degree on each change stays quick:
     /// Σ (k + 1)(n + 1)² over the degrees plotted (the QR factorisations' work) at most this.
-    /// 60 points reach n = 59, 200 points n = 48 (docs/tabs.md).
+    /// 60 points reach n = 59, 200 points n = 47 (docs/tabs.md).
     static constexpr double kPlotWorkBudget = 8e6;
     /// What the plot says about where it stops (empty when it reaches the highest degree).
     QString plotNote() const;
