@@ -121,6 +121,23 @@ bool languageNeutral(const QString& text)
 
 /// Starts a full (not quick) measurement and cancels it at once: true when the panel then
 /// finishes, within a minute, and says it did not complete.
+/// The work-precision panel of `tab`, shown, after measuring `report` (quick settings);
+/// nullptr when it could not be measured.
+granota::ui::WorkPrecisionPanel* measuredPanel(MainWindow& window, const QString& tab, const std::string& report)
+{
+    if (!showOnTab(window, tab))
+        return nullptr;
+    window.setWorkPrecisionVisible(true);
+    auto* panel = window.workPrecisionPanel(tab);
+    if (!panel)
+        return nullptr;
+    panel->setQuick(true);
+    panel->selectReport(report);
+    QSignalSpy done(panel, &granota::ui::WorkPrecisionPanel::finished);
+    panel->measure();
+    return done.wait(60000) && panel->report() ? panel : nullptr;
+}
+
 bool measureAndCancel(granota::ui::WorkPrecisionPanel* panel)
 {
     panel->setQuick(false);
@@ -543,15 +560,8 @@ private slots:
     void aCancelledReportLeavesNothingOfTheLastOne()
     {
         MainWindow window;
-        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
-        window.setWorkPrecisionVisible(true);
-        auto* panel = window.workPrecisionPanel(QStringLiteral("decasteljau"));
+        auto* panel = measuredPanel(window, QStringLiteral("decasteljau"), "curve-sampling");
         QVERIFY(panel);
-        panel->setQuick(true);
-        panel->selectReport("curve-sampling");
-        QSignalSpy done(panel, &granota::ui::WorkPrecisionPanel::finished);
-        panel->measure();
-        QVERIFY(done.wait(60000));
         QVERIFY(!panel->plot()->yAxis->label().isEmpty());
         QVERIFY(panel->plot()->legend->visible());
         const auto isEmpty = [panel] {
@@ -571,15 +581,8 @@ private slots:
     void curveSamplingIsPlottedAgainstPoints()
     {
         MainWindow window;
-        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
-        window.setWorkPrecisionVisible(true);
-        auto* panel = window.workPrecisionPanel(QStringLiteral("decasteljau"));
+        auto* panel = measuredPanel(window, QStringLiteral("decasteljau"), "curve-sampling");
         QVERIFY(panel);
-        panel->setQuick(true);
-        panel->selectReport("curve-sampling");
-        QSignalSpy done(panel, &granota::ui::WorkPrecisionPanel::finished);
-        panel->measure();
-        QVERIFY(done.wait(60000));
         QVERIFY(panel->report().has_value());
         QVERIFY(panel->axis() == granota::WorkPrecisionAxis::Knob);
         QCustomPlot* plot = panel->plot();
@@ -615,18 +618,12 @@ private slots:
     void catmullRomTabHasItsOwnReport()
     {
         MainWindow window;
-        QVERIFY(showOnTab(window, QStringLiteral("catmull-rom")));
-        window.setWorkPrecisionVisible(true);
-        auto* panel = window.workPrecisionPanel(QStringLiteral("catmull-rom"));
+        auto* panel = measuredPanel(window, QStringLiteral("catmull-rom"), "catmull-rom-sampling");
         QVERIFY(panel);
         const auto& names = panel->reportNames();
         QVERIFY(std::find(names.begin(), names.end(), "catmull-rom-sampling") != names.end());
         QVERIFY(std::find(names.begin(), names.end(), "curve-sampling") == names.end());
         QVERIFY(std::find(names.begin(), names.end(), "bezier-evaluation") == names.end());
-        panel->setQuick(true);
-        QSignalSpy done(panel, &granota::ui::WorkPrecisionPanel::finished);
-        panel->measure();
-        QVERIFY(done.wait(60000));
         QCOMPARE(QString::fromStdString(panel->report()->name), QStringLiteral("catmull-rom-sampling"));
         QCOMPARE(panel->plot()->graph(0)->name(), granota::ui::reportMethod("uniform t per segment"));
     }

@@ -43,16 +43,12 @@ double deviation(const std::vector<std::vector<Point>>& beziers, const std::vect
 
 Expected<WorkPrecisionReport> catmullRomSampling(const WorkPrecisionOptions& options)
 {
-    WorkPrecisionReport r;
-    r.name = "catmull-rom-sampling";
-    r.title = "Catmull-Rom sampling: polyline against curve";
-    r.knob = "points";
-    r.error = "max distance between curve and polyline";
-    r.reference = "each segment as a cubic Bézier curve, evaluated in long double between the samples";
-    r.lesson = "The same number of points on every segment wastes them on the short, gentle ones; adaptive "
-               "subdivision of each segment puts them where the curve bends and needs fewer for the same "
-               "error. Both errors fall like 1/N^2.";
-    r.xAxis = WorkPrecisionAxis::Knob;
+    const WorkPrecisionReport r = samplingReport(
+        "catmull-rom-sampling", "Catmull-Rom sampling: polyline against curve",
+        "each segment as a cubic Bézier curve, evaluated in long double between the samples",
+        "The same number of points on every segment wastes them on the short, gentle ones; adaptive "
+        "subdivision of each segment puts them where the curve bends and needs fewer for the same "
+        "error. Both errors fall like 1/N^2.");
     // Ex 2.13's points with one far point: segments of very different length and bend.
     const std::vector<Point> q = {{3, 5}, {2, 2}, {6, 0}, {8, 3}, {7, 5}, {30, 6}};
     const double tau = 0.5;
@@ -61,49 +57,33 @@ Expected<WorkPrecisionReport> catmullRomSampling(const WorkPrecisionOptions& opt
         return segments.error();
     const std::vector<std::vector<Point>> beziers = bezierSegments(q, tau);
     const std::size_t count = beziers.size();
-    const Progress progress(options);
     double sink = 0;
-
-    WorkPrecisionSeries uniform{"uniform t per segment", {}};
-    const int maxLevel = options.quick ? 7 : 11;
-    WorkPrecisionSeries adaptive{"adaptive", {}};
-    const int maxTolerance = options.quick ? 5 : 8;
-    const double total = maxLevel + maxTolerance;
-    for (int level = 1; level <= maxLevel; ++level) {
-        const int perSegment = (1 << level) + 1;
-        std::vector<double> t(static_cast<std::size_t>(perSegment));
-        for (int j = 0; j < perSegment; ++j)
-            t[static_cast<std::size_t>(j)] = j == perSegment - 1 ? 1.0 : j / double(perSegment - 1);
-        const double seconds = secondsPerCall([&] { return sampleSegments(*segments, perSegment).back().x; },
-                                              options.minSecondsPerPoint, &sink);
-        const double points = double(count) * (perSegment - 1) + 1; // the joins are shared
-        uniform.samples.push_back({points, deviation(beziers, std::vector<std::vector<double>>(count, t)), seconds});
-        if (!progress.tick(level, total))
-            return cancelled();
-    }
-    for (int k = 1; k <= maxTolerance; ++k) {
-        const double tolerance = std::pow(10.0, -k);
-        std::vector<std::vector<double>> t;
-        double points = 1;
-        for (const auto& b : beziers) {
-            t.push_back(sampleBezierAdaptive(b, tolerance).t);
-            points += double(t.back().size()) - 1;
-        }
-        const double seconds = secondsPerCall(
-            [&] {
-                double last = 0;
-                for (const auto& b : beziers)
-                    last += sampleBezierAdaptive(b, tolerance).points.back().x;
-                return last;
-            },
-            options.minSecondsPerPoint, &sink);
-        adaptive.samples.push_back({points, deviation(beziers, t), seconds});
-        if (!progress.tick(maxLevel + k, total))
-            return cancelled();
-    }
-    r.series = {std::move(uniform), std::move(adaptive)};
-    (void)sink;
-    return r;
+    return withSamplingSeries(
+        r, options, "uniform t per segment", options.quick ? 7 : 11,
+        [&](int perSegment, const std::vector<double>& t) {
+            const double seconds = secondsPerCall([&] { return sampleSegments(*segments, perSegment).back().x; },
+                                                  options.minSecondsPerPoint, &sink);
+            const double points = double(count) * (perSegment - 1) + 1; // the joins are shared
+            return WorkPrecisionSample{points, deviation(beziers, std::vector<std::vector<double>>(count, t)), seconds};
+        },
+        options.quick ? 5 : 8,
+        [&](double tolerance) {
+            std::vector<std::vector<double>> t;
+            double points = 1;
+            for (const auto& b : beziers) {
+                t.push_back(sampleBezierAdaptive(b, tolerance).t);
+                points += double(t.back().size()) - 1;
+            }
+            const double seconds = secondsPerCall(
+                [&] {
+                    double last = 0;
+                    for (const auto& b : beziers)
+                        last += sampleBezierAdaptive(b, tolerance).points.back().x;
+                    return last;
+                },
+                options.minSecondsPerPoint, &sink);
+            return WorkPrecisionSample{points, deviation(beziers, t), seconds};
+        });
 }
 
 } // namespace granota::reports

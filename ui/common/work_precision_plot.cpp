@@ -21,56 +21,57 @@ QString knobLabel(double knob)
     }
     return QLocale().toString(knob, 'g', 4); // the interface's decimal sign (C in granota-cli)
 }
+/// English text by key, translated; `fallback` as it is for a key the table lacks.
+using Texts = std::pair<const char*, const char*>;
+template <std::size_t N> QString translated(const Texts (&table)[N], const std::string& key, const std::string& fallback)
+{
+    for (const auto& [k, text] : table)
+        if (key == k)
+            return QCoreApplication::translate("granota::ui::WorkPrecision", text);
+    return QString::fromStdString(fallback);
+}
 } // namespace
 
 QString reportTitle(const WorkPrecisionReport& r)
 {
-    if (r.name == "curve-sampling")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "Curve sampling: polyline against curve");
-    if (r.name == "catmull-rom-sampling")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "Catmull-Rom sampling: polyline against curve");
-    if (r.name == "bezier-evaluation")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "Evaluating a Bézier curve of degree n");
-    if (r.name == "least-squares")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "Least-squares Bézier fit: normal equations, QR, SVD");
-    if (r.name == "integrators")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "Integrators: global error against run time");
-    if (r.name == "soft-body")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "Soft body: constraint error against substeps");
-    return QString::fromStdString(r.title);
+    static const Texts titles[] = {
+        {"curve-sampling", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Curve sampling: polyline against curve")},
+        {"catmull-rom-sampling", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Catmull-Rom sampling: polyline against curve")},
+        {"bezier-evaluation", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Evaluating a Bézier curve of degree n")},
+        {"least-squares", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Least-squares Bézier fit: normal equations, QR, SVD")},
+        {"integrators", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Integrators: global error against run time")},
+        {"soft-body", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Soft body: constraint error against substeps")},
+    };
+    return translated(titles, r.name, r.title);
 }
 
 QString reportLesson(const WorkPrecisionReport& r)
 {
-    if (r.name == "curve-sampling")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "Against the number of points, both errors fall like 1/N² (twice the points, a quarter of "
-                  "the error), and adaptive subdivision, which puts its points where the curve bends, needs "
-                  "fewer for the same error. Its run time per point is higher: each point costs a flatness test.");
-    if (r.name == "catmull-rom-sampling")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "The same number of points on every segment wastes them on the short, gentle ones; adaptive "
-                  "subdivision of each segment puts them where the curve bends and needs fewer for the same "
-                  "error. Both errors fall like 1/N².");
-    if (r.name == "bezier-evaluation")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "De Casteljau and the Bernstein sum stay at rounding level at every degree; Horner on the power "
-                  "basis loses digits as the degree grows, because its coefficients are huge alternating sums "
-                  "that cancel.");
-    if (r.name == "least-squares")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "The normal equations square the condition number of M: near degree 25 they have lost almost "
-                  "every digit and by degree 30 the curve is wrong, while QR and SVD still hold about seven "
-                  "digits.");
-    if (r.name == "integrators")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "Halving h halves Euler's error but quarters Verlet's (order 1 against 2): at equal run time "
-                  "Verlet is orders of magnitude more accurate. RK4 (order 4) costs four evaluations per step "
-                  "and wins when high accuracy is needed.");
-    if (r.name == "soft-body")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "XPBD's constraint error falls as the substeps grow, at a cost proportional to their number; "
-                  "the seed's per-step corrections leave a lasting area deficit.");
-    return QString::fromStdString(r.lesson);
+    static const Texts lessons[] = {
+        {"curve-sampling", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Against the number of points, both errors fall like 1/N² (twice the points, a quarter of "
+            "the error), and adaptive subdivision, which puts its points where the curve bends, needs "
+            "fewer for the same error. Its run time per point is higher: each point costs a flatness test.")},
+        {"catmull-rom-sampling", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "The same number of points on every segment wastes them on the short, gentle ones; adaptive "
+            "subdivision of each segment puts them where the curve bends and needs fewer for the same "
+            "error. Both errors fall like 1/N².")},
+        {"bezier-evaluation", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "De Casteljau and the Bernstein sum stay at rounding level at every degree; Horner on the power "
+            "basis loses digits as the degree grows, because its coefficients are huge alternating sums "
+            "that cancel.")},
+        {"least-squares", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "The normal equations square the condition number of M: near degree 25 they have lost almost "
+            "every digit and by degree 30 the curve is wrong, while QR and SVD still hold about seven "
+            "digits.")},
+        {"integrators", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Halving h halves Euler's error but quarters Verlet's (order 1 against 2): at equal run time "
+            "Verlet is orders of magnitude more accurate. RK4 (order 4) costs four evaluations per step "
+            "and wins when high accuracy is needed.")},
+        {"soft-body", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "XPBD's constraint error falls as the substeps grow, at a cost proportional to their number; "
+            "the seed's per-step corrections leave a lasting area deficit.")},
+    };
+    return translated(lessons, r.name, r.lesson);
 }
 
 QString reportMethod(const std::string& m)
 {
-    static const std::pair<const char*, const char*> names[] = {
+    static const Texts names[] = {
         {"uniform", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "uniform")},
         {"adaptive", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "adaptive")},
         {"uniform t per segment", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "uniform t per segment")},
@@ -88,10 +89,7 @@ QString reportMethod(const std::string& m)
         {"XPBD edge lengths", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "XPBD edge lengths")},
         {"seed area (Annex II)", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "seed area (Annex II)")},
     };
-    for (const auto& [key, text] : names)
-        if (m == key)
-            return QCoreApplication::translate("granota::ui::WorkPrecision", text);
-    return QString::fromStdString(m);
+    return translated(names, m, m);
 }
 
 QString reportKnob(const WorkPrecisionReport& r)
