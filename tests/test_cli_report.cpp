@@ -19,12 +19,16 @@ private slots:
         const CliRun run = runCli({"report", "all", "--quick", "--out", dir.path()});
         QCOMPARE(run.exitCode, 0);
         QVERIFY2(run.err.isEmpty(), run.err.constData());
-        for (const char* name : {"curve-sampling", "bezier-evaluation", "least-squares", "integrators", "soft-body"}) {
+        for (const char* name : {"curve-sampling", "catmull-rom-sampling", "bezier-evaluation", "least-squares",
+                                 "integrators", "soft-body"}) {
             const QString base = QDir(dir.path()).filePath(QString::fromLatin1(name));
             QFile csv(base + QStringLiteral(".csv"));
             QVERIFY2(csv.open(QIODevice::ReadOnly | QIODevice::Text), name);
             const QStringList lines = QString::fromUtf8(csv.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
             QVERIFY(lines.first().startsWith(QStringLiteral("# report: %1").arg(QString::fromLatin1(name))));
+            // The sampling reports are plotted against their points, the others against run time.
+            const bool sampling = QByteArray(name).endsWith("sampling");
+            QVERIFY2(lines.contains(sampling ? QStringLiteral("# x axis: knob") : QStringLiteral("# x axis: seconds")), name);
             bool machine = false, build = false;
             int rows = 0;
             for (const QString& line : lines) {

@@ -599,17 +599,70 @@ private slots:
         QCOMPARE(tab.errorPlot()->graph(1)->data()->at(0)->key, 2.0);
         QCOMPARE(graph->data()->at(1)->value, tab.currentFit()->sse); // the current n is on the curve
 
-        tab.pointEditor()->setPoints(smoothSamples(200), QStringLiteral("samples"));
+        tab.pointEditor()->setPoints(smoothSamples(60), QStringLiteral("samples"));
         tab.degreeBox()->setValue(5);
-        QCOMPARE(graph->dataCount(), 30); // n = 1..30
+        // Up to the highest degree the spin box allows, k = 59.
+        QCOMPARE(tab.degreeBox()->maximum(), 59);
+        QCOMPARE(graph->dataCount(), 59); // n = 1..59
+        QVERIFY(tab.plotNote().isEmpty());
         QCOMPARE(tab.errorPlot()->graph(1)->data()->at(0)->key, 5.0);
         for (int i = 0; i < graph->dataCount(); ++i) {
             QCOMPARE(graph->data()->at(i)->key, double(i + 1));
-            if (i > 0) // nested spaces: the optimum cannot grow with n
+            if (i > 0 && i < 30) // nested spaces: the optimum cannot grow with n (until rounding)
                 QVERIFY2(graph->data()->at(i)->value <= graph->data()->at(i - 1)->value * (1 + 1e-9),
                          qPrintable(QString::number(i + 1)));
         }
         QVERIFY(graph->data()->at(29)->value < graph->data()->at(0)->value);
+
+        // 200 points allow n = 100, too many fits to redo on every change: where the plot
+        // stops, it says so, naming the last degree plotted and the highest allowed.
+        tab.pointEditor()->setPoints(smoothSamples(200), QStringLiteral("samples"));
+        QCOMPARE(tab.degreeBox()->maximum(), kMaxFitDegree);
+        const int last = static_cast<int>(graph->data()->at(graph->dataCount() - 1)->key);
+        QVERIFY(last > 30 && last < kMaxFitDegree);
+        QVERIFY2(tab.plotNote().contains(QStringLiteral("n = %1 of %2").arg(last).arg(kMaxFitDegree)),
+                 qPrintable(tab.plotNote()));
+    }
+
+    // "Show matrices" with more points than are listed shows the top of M and says how large M is.
+    void showMatricesWithManyPointsSaysWhatItShows()
+    {
+        FitTab tab;
+        tab.pointEditor()->setPoints(smoothSamples(200), QStringLiteral("samples"));
+        tab.degreeBox()->setValue(5);
+        const QString without = tab.exactPanel()->plainText();
+        tab.showMatricesBox()->setChecked(true);
+        const QString with = tab.exactPanel()->plainText();
+        QVERIFY(with != without);
+        QVERIFY2(with.contains(QStringLiteral("200 × 6")), qPrintable(with));
+        QVERIFY(with.contains(QStringLiteral("Lemma 2.2")));
+    }
+
+    // At the highest degree the up arrow (key, button) still answers: why no higher degree.
+    void degreeAboveTheLimitIsRefusedAloud()
+    {
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.7")); // k = 4
+        tab.degreeBox()->setValue(4);
+        QCOMPARE(tab.degreeBox()->value(), 4);
+        QSignalSpy messages(&tab, &FitTab::statusMessage);
+        QTest::keyClick(tab.degreeBox(), Qt::Key_Up);
+        QCOMPARE(tab.degreeBox()->value(), 4);
+        QVERIFY(!messages.isEmpty());
+        const QString said = messages.last().at(0).toString();
+        QVERIFY2(said.contains(QStringLiteral("n ≤ 4")) && said.contains(QStringLiteral("there are 5")), qPrintable(said));
+        // …and the panel keeps saying it until the next fit.
+        QVERIFY2(tab.warningText().contains(said), qPrintable(tab.warningText()));
+        tab.degreeBox()->setValue(3);
+        QVERIFY(!tab.warningText().contains(said));
+
+        // With more points than the highest degree needs, the reason is that limit.
+        tab.pointEditor()->setPoints(smoothSamples(200), QStringLiteral("samples"));
+        tab.degreeBox()->setValue(kMaxFitDegree);
+        QTest::keyClick(tab.degreeBox(), Qt::Key_Up);
+        QCOMPARE(tab.degreeBox()->value(), kMaxFitDegree);
+        QVERIFY2(messages.last().at(0).toString().contains(QStringLiteral("the highest is %1").arg(kMaxFitDegree)),
+                 qPrintable(messages.last().at(0).toString()));
     }
 
     void degenerateData()

@@ -11,6 +11,7 @@
 #include "ui/shell/tab_page.h"
 #include "ui/shell/tikz_options_dialog.h"
 #include "ui/common/work_precision_panel.h"
+#include "ui/common/work_precision_plot.h"
 
 #include "main_window_steps.h"
 
@@ -125,6 +126,23 @@ bool languageNeutral(const QString& text)
 
 /// Starts a full (not quick) measurement and cancels it at once: true when the panel then
 /// finishes, within a minute, and says it did not complete.
+/// The work-precision panel of `tab`, shown, after measuring `report` (quick settings);
+/// nullptr when it could not be measured.
+granota::ui::WorkPrecisionPanel* measuredPanel(MainWindow& window, const QString& tab, const std::string& report)
+{
+    if (!showOnTab(window, tab))
+        return nullptr;
+    window.setWorkPrecisionVisible(true);
+    auto* panel = window.workPrecisionPanel(tab);
+    if (!panel)
+        return nullptr;
+    panel->setQuick(true);
+    panel->selectReport(report);
+    QSignalSpy done(panel, &granota::ui::WorkPrecisionPanel::finished);
+    panel->measure();
+    return done.wait(60000) && panel->report() ? panel : nullptr;
+}
+
 bool measureAndCancel(granota::ui::WorkPrecisionPanel* panel)
 {
     panel->setQuick(false);
@@ -595,15 +613,8 @@ private slots:
     void aCancelledReportLeavesNothingOfTheLastOne()
     {
         MainWindow window;
-        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
-        window.setWorkPrecisionVisible(true);
-        auto* panel = window.workPrecisionPanel(QStringLiteral("decasteljau"));
+        auto* panel = measuredPanel(window, QStringLiteral("decasteljau"), "curve-sampling");
         QVERIFY(panel);
-        panel->setQuick(true);
-        panel->selectReport("curve-sampling");
-        QSignalSpy done(panel, &granota::ui::WorkPrecisionPanel::finished);
-        panel->measure();
-        QVERIFY(done.wait(60000));
         QVERIFY(!panel->plot()->yAxis->label().isEmpty());
         QVERIFY(panel->plot()->legend->visible());
         const auto isEmpty = [panel] {
@@ -615,6 +626,59 @@ private slots:
         QVERIFY(isEmpty());
         QVERIFY(measureAndCancel(panel));
         QVERIFY(isEmpty());
+    }
+
+    // Curve sampling's lesson is "fewer points for the same error": it is plotted against the
+    // points, where adaptive's markers lie left of uniform's at each error; the choice box
+    // switches to run time and back.
+    void curveSamplingIsPlottedAgainstPoints()
+    {
+        MainWindow window;
+        auto* panel = measuredPanel(window, QStringLiteral("decasteljau"), "curve-sampling");
+        QVERIFY(panel);
+        QVERIFY(panel->report().has_value());
+        QVERIFY(panel->axis() == granota::WorkPrecisionAxis::Knob);
+        QCustomPlot* plot = panel->plot();
+        QCOMPARE(plot->xAxis->label(), granota::ui::reportAxisTitle(*panel->report(), granota::WorkPrecisionAxis::Knob));
+        QVERIFY(plot->xAxis->label().contains(QStringLiteral("points")));
+        QCOMPARE(plot->graphCount(), 2);
+        QCPGraph* uniform = plot->graph(0);
+        QCPGraph* adaptive = plot->graph(1);
+        QCOMPARE(uniform->name(), granota::ui::reportMethod("uniform"));
+        QCOMPARE(adaptive->name(), granota::ui::reportMethod("adaptive"));
+        // The plotted keys are the points of the report, and adaptive needs fewer at each error.
+        const auto& samples = panel->report()->find("uniform")->samples;
+        QCOMPARE(uniform->dataCount(), static_cast<int>(samples.size()));
+        for (int i = 0; i < uniform->dataCount(); ++i)
+            QCOMPARE(uniform->data()->at(i)->key, samples[static_cast<std::size_t>(i)].knob);
+        int compared = 0;
+        for (int i = 0; i < adaptive->dataCount(); ++i) {
+            const double error = adaptive->data()->at(i)->value;
+            for (int j = 0; j + 1 < uniform->dataCount(); ++j)
+                if (uniform->data()->at(j)->value >= error && error > uniform->data()->at(j + 1)->value) {
+                    QVERIFY2(adaptive->data()->at(i)->key < uniform->data()->at(j + 1)->key,
+                             qPrintable(QString::number(error)));
+                    ++compared;
+                }
+        }
+        QVERIFY(compared >= 3);
+        panel->setAxis(granota::WorkPrecisionAxis::Seconds);
+        QCOMPARE(plot->xAxis->label(), granota::ui::reportAxisTitle(*panel->report(), granota::WorkPrecisionAxis::Seconds));
+        QCOMPARE(plot->graph(0)->data()->at(0)->key, samples.front().seconds);
+    }
+
+    // The Catmull-Rom tab measures a Catmull-Rom curve, not the De Casteljau tab's Bézier curve.
+    void catmullRomTabHasItsOwnReport()
+    {
+        MainWindow window;
+        auto* panel = measuredPanel(window, QStringLiteral("catmull-rom"), "catmull-rom-sampling");
+        QVERIFY(panel);
+        const auto& names = panel->reportNames();
+        QVERIFY(std::find(names.begin(), names.end(), "catmull-rom-sampling") != names.end());
+        QVERIFY(std::find(names.begin(), names.end(), "curve-sampling") == names.end());
+        QVERIFY(std::find(names.begin(), names.end(), "bezier-evaluation") == names.end());
+        QCOMPARE(QString::fromStdString(panel->report()->name), QStringLiteral("catmull-rom-sampling"));
+        QCOMPARE(panel->plot()->graph(0)->name(), granota::ui::reportMethod("uniform t per segment"));
     }
 
     void presentationModeEnlargesText()

@@ -153,6 +153,65 @@ private slots:
         }
     }
 
+    // The sampling reports teach "fewer points for the same error": their plot is against the
+    // number of points, and there adaptive's line lies left of uniform's at every error they share.
+    void samplingReportsPlotAdaptiveLeftOfUniform_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<QString>("uniformMethod");
+        QTest::newRow("curve-sampling") << QStringLiteral("curve-sampling") << QStringLiteral("uniform");
+        QTest::newRow("catmull-rom-sampling") << QStringLiteral("catmull-rom-sampling")
+                                              << QStringLiteral("uniform t per segment");
+    }
+    void samplingReportsPlotAdaptiveLeftOfUniform()
+    {
+        QFETCH(QString, name);
+        QFETCH(QString, uniformMethod);
+        const auto r = quickReport(name.toStdString().c_str());
+        QVERIFY(r.xAxis == WorkPrecisionAxis::Knob);
+        QCOMPARE(QString::fromStdString(r.knob), QStringLiteral("points"));
+        const auto* uniform = r.find(uniformMethod.toStdString());
+        const auto* adaptive = r.find("adaptive");
+        QVERIFY(uniform && adaptive);
+        int compared = 0;
+        for (const auto& a : adaptive->samples) {
+            // Uniform's points at adaptive's error, interpolated log–log between its markers.
+            for (std::size_t i = 0; i + 1 < uniform->samples.size(); ++i) {
+                const auto& u0 = uniform->samples[i];
+                const auto& u1 = uniform->samples[i + 1];
+                if (!(u0.error >= a.error && a.error > u1.error))
+                    continue;
+                const double s = std::log(u0.error / a.error) / std::log(u0.error / u1.error);
+                const double uniformPoints = u0.knob * std::pow(u1.knob / u0.knob, s);
+                QVERIFY2(a.knob < uniformPoints,
+                         qPrintable(QStringLiteral("error %1: adaptive %2 points, uniform %3").arg(a.error).arg(a.knob).arg(uniformPoints)));
+                ++compared;
+            }
+        }
+        QVERIFY(compared >= 3);
+        // The CSV says which column the plot's x axis is.
+        const std::string csv = workPrecisionCsv(r, {});
+        QVERIFY(csv.find("\n# x axis: knob\n") != std::string::npos);
+        QVERIFY(workPrecisionCsv(quickReport("integrators"), {}).find("\n# x axis: seconds\n") != std::string::npos);
+    }
+
+    // The Catmull-Rom report: more points, smaller error, for both methods; uniform falls like 1/N².
+    void catmullRomSamplingErrorFallsAsPointsGrow()
+    {
+        const auto r = quickReport("catmull-rom-sampling");
+        QCOMPARE(r.series.size(), std::size_t(2));
+        for (const auto& s : r.series) {
+            QVERIFY(s.samples.size() >= 5);
+            for (std::size_t i = 1; i < s.samples.size(); ++i) {
+                QVERIFY2(s.samples[i].knob > s.samples[i - 1].knob, s.method.c_str());
+                QVERIFY2(s.samples[i].error < s.samples[i - 1].error,
+                         qPrintable(QStringLiteral("%1 at %2 points").arg(QString::fromStdString(s.method)).arg(s.samples[i].knob)));
+            }
+        }
+        const double p = observedOrder(*r.find("uniform t per segment"), 40, 1e9);
+        QVERIFY2(std::fabs(p + 2) < 0.2, qPrintable(QString::number(p)));
+    }
+
     void substepsTightenTheConstraints()
     {
         const auto r = quickReport("soft-body");

@@ -1196,6 +1196,10 @@
     <context>
         <name>granota::ui::FitExactView</name>
         <message>
+            <source>M has %1 × %2 entries (a row per data point, a column per control point); the first %3 rows and %4 columns are shown.</source>
+            <translation>M té %1 × %2 entrades (una fila per punt de dades, una columna per punt de control); se'n mostren les primeres %3 files i %4 columnes.</translation>
+        </message>
+        <message>
             <location filename="../ui/fit_exact_view.cpp" line="80" />
             <source>Chord lengths d_i = dist(Q_i−1, Q_i)</source>
             <translation>Longituds de corda d_i = dist(Q_i−1, Q_i)</translation>
@@ -1293,6 +1297,18 @@
         <message>
             <source>Show matrices</source>
             <translation>Mostra les matrius</translation>
+        </message>
+        <message>
+            <source>Plotted up to n = %1 of %2:
+refitting every degree for %3 points
+on each change would slow the window.</source>
+            <translation>Representat fins a n = %1 de %2:
+tornar a ajustar cada grau per a %3 punts
+a cada canvi alentiria la finestra.</translation>
+        </message>
+        <message>
+            <source>Degree %1 is refused: the highest is %2, beyond which the Bernstein basis is too ill-conditioned for any solver.</source>
+            <translation>Es rebutja el grau %1: el màxim és %2, més enllà del qual la base de Bernstein està massa mal condicionada per a qualsevol mètode de resolució.</translation>
         </message>
         <message>
             <source>The fitting tab holds %1 data points; Granota reads at most %2.</source>
@@ -3174,6 +3190,26 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
     <context>
         <name>granota::ui::WorkPrecision</name>
         <message>
+            <source>points of the polyline (evaluations of the curve)</source>
+            <translation>punts de la poligonal (avaluacions de la corba)</translation>
+        </message>
+        <message>
+            <source>uniform t per segment</source>
+            <translation>t uniforme per segment</translation>
+        </message>
+        <message>
+            <source>The same number of points on every segment wastes them on the short, gentle ones; adaptive subdivision of each segment puts them where the curve bends and needs fewer for the same error. Both errors fall like 1/N².</source>
+            <translation>El mateix nombre de punts a cada segment en malbarata als segments curts i suaus; la subdivisió adaptativa de cada segment els posa on la corba es corba i en necessita menys per al mateix error. Tots dos errors baixen com 1/N².</translation>
+        </message>
+        <message>
+            <source>Against the number of points, both errors fall like 1/N² (twice the points, a quarter of the error), and adaptive subdivision, which puts its points where the curve bends, needs fewer for the same error. Its run time per point is higher: each point costs a flatness test.</source>
+            <translation>Respecte del nombre de punts, tots dos errors baixen com 1/N² (el doble de punts, una quarta part de l'error), i la subdivisió adaptativa, que posa els punts on la corba es corba, en necessita menys per al mateix error. El seu temps d'execució per punt és més alt: cada punt costa una prova de planor.</translation>
+        </message>
+        <message>
+            <source>Catmull-Rom sampling: polyline against curve</source>
+            <translation>Mostreig de Catmull-Rom: poligonal respecte de la corba</translation>
+        </message>
+        <message>
             <location filename="../ui/work_precision_plot.cpp" line="28" />
             <source>Curve sampling: polyline against curve</source>
             <translation>Mostreig de corbes: poligonal respecte de la corba</translation>
@@ -3197,11 +3233,6 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
             <location filename="../ui/work_precision_plot.cpp" line="36" />
             <source>Soft body: constraint error against substeps</source>
             <translation>Cos tou: error de les restriccions respecte dels subpassos</translation>
-        </message>
-        <message>
-            <location filename="../ui/work_precision_plot.cpp" line="43" />
-            <source>Both errors fall like 1/N² (twice the points, a quarter of the error); adaptive subdivision puts its points where the curve bends and needs fewer for the same error.</source>
-            <translation>Tots dos errors baixen com 1/N² (el doble de punts, una quarta part de l'error); la subdivisió adaptativa posa els punts on la corba es corba i en necessita menys per al mateix error.</translation>
         </message>
         <message>
             <location filename="../ui/work_precision_plot.cpp" line="46" />
@@ -3352,14 +3383,33 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
     <context>
         <name>granota::ui::WorkPrecisionPanel</name>
         <message>
+            <source>Work-precision plot: each marker is one setting of a method; lower is more accurate, left is cheaper (faster, or fewer points).</source>
+            <translation>Gràfic de treball-precisió: cada marca és un valor del paràmetre d'un mètode; més avall és més precís, més a l'esquerra és més barat (més ràpid, o menys punts).</translation>
+        </message>
+        <message>
+            <source>Press Measure: each method runs over a range of its setting, and the plot shows its error against its run time or against the setting itself (lower left is better).</source>
+            <translation>Premeu Mesura: cada mètode s'executa amb tot un ventall de valors del seu paràmetre, i el gràfic en mostra l'error respecte del temps d'execució o del mateix paràmetre (com més avall i a l'esquerra, millor).</translation>
+        </message>
+        <message>
+            <source>The x axis: the run time per call, or the method's setting itself (the number of points, the degree, the step…), which counts the cost without the clock.</source>
+            <translation>L'eix x: el temps d'execució per crida, o el mateix paràmetre del mètode (el nombre de punts, el grau, el pas…), que compta el cost sense rellotge.</translation>
+        </message>
+        <message>
+            <source>against the setting</source>
+            <translation>respecte del paràmetre</translation>
+        </message>
+        <message>
+            <source>against %1</source>
+            <translation>respecte de: %1</translation>
+        </message>
+        <message>
+            <source>against run time</source>
+            <translation>respecte del temps d'execució</translation>
+        </message>
+        <message>
             <location filename="../ui/work_precision_panel.cpp" line="120" />
             <source>Cancelled. Press Measure to start again.</source>
             <translation>S'ha cancel·lat. Premeu Mesura per tornar a començar.</translation>
-        </message>
-        <message>
-            <location filename="../ui/work_precision_panel.cpp" line="121" />
-            <source>Press Measure: each method runs over a range of its setting, and the plot shows its error against its run time (lower left is better).</source>
-            <translation>Premeu Mesura: cada mètode s'executa amb tot un ventall de valors del seu paràmetre, i el gràfic en mostra l'error respecte del temps d'execució (com més avall i a l'esquerra, millor).</translation>
         </message>
         <message>
             <location filename="../ui/work_precision_panel.cpp" line="142" />
@@ -3390,11 +3440,6 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
             <location filename="../ui/work_precision_panel.cpp" line="147" />
             <source>Measuring…</source>
             <translation>Mesurant…</translation>
-        </message>
-        <message>
-            <location filename="../ui/work_precision_panel.cpp" line="148" />
-            <source>Work-precision plot: each marker is one setting of a method; lower is more accurate, left is faster.</source>
-            <translation>Gràfic de treball-precisió: cada marca és un valor del paràmetre d'un mètode; més avall és més precís, més a l'esquerra és més ràpid.</translation>
         </message>
     </context>
     <context>

@@ -1196,6 +1196,10 @@
     <context>
         <name>granota::ui::FitExactView</name>
         <message>
+            <source>M has %1 × %2 entries (a row per data point, a column per control point); the first %3 rows and %4 columns are shown.</source>
+            <translation>M has %1 × %2 entries (a row per data point, a column per control point); the first %3 rows and %4 columns are shown.</translation>
+        </message>
+        <message>
             <location filename="../ui/fit_exact_view.cpp" line="80" />
             <source>Chord lengths d_i = dist(Q_i−1, Q_i)</source>
             <translation>Chord lengths d_i = dist(Q_i−1, Q_i)</translation>
@@ -1293,6 +1297,18 @@
         <message>
             <source>Show matrices</source>
             <translation>Show matrices</translation>
+        </message>
+        <message>
+            <source>Plotted up to n = %1 of %2:
+refitting every degree for %3 points
+on each change would slow the window.</source>
+            <translation>Plotted up to n = %1 of %2:
+refitting every degree for %3 points
+on each change would slow the window.</translation>
+        </message>
+        <message>
+            <source>Degree %1 is refused: the highest is %2, beyond which the Bernstein basis is too ill-conditioned for any solver.</source>
+            <translation>Degree %1 is refused: the highest is %2, beyond which the Bernstein basis is too ill-conditioned for any solver.</translation>
         </message>
         <message>
             <source>The fitting tab holds %1 data points; Granota reads at most %2.</source>
@@ -3174,6 +3190,26 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
     <context>
         <name>granota::ui::WorkPrecision</name>
         <message>
+            <source>points of the polyline (evaluations of the curve)</source>
+            <translation>points of the polyline (evaluations of the curve)</translation>
+        </message>
+        <message>
+            <source>uniform t per segment</source>
+            <translation>uniform t per segment</translation>
+        </message>
+        <message>
+            <source>The same number of points on every segment wastes them on the short, gentle ones; adaptive subdivision of each segment puts them where the curve bends and needs fewer for the same error. Both errors fall like 1/N².</source>
+            <translation>The same number of points on every segment wastes them on the short, gentle ones; adaptive subdivision of each segment puts them where the curve bends and needs fewer for the same error. Both errors fall like 1/N².</translation>
+        </message>
+        <message>
+            <source>Against the number of points, both errors fall like 1/N² (twice the points, a quarter of the error), and adaptive subdivision, which puts its points where the curve bends, needs fewer for the same error. Its run time per point is higher: each point costs a flatness test.</source>
+            <translation>Against the number of points, both errors fall like 1/N² (twice the points, a quarter of the error), and adaptive subdivision, which puts its points where the curve bends, needs fewer for the same error. Its run time per point is higher: each point costs a flatness test.</translation>
+        </message>
+        <message>
+            <source>Catmull-Rom sampling: polyline against curve</source>
+            <translation>Catmull-Rom sampling: polyline against curve</translation>
+        </message>
+        <message>
             <location filename="../ui/work_precision_plot.cpp" line="28" />
             <source>Curve sampling: polyline against curve</source>
             <translation>Curve sampling: polyline against curve</translation>
@@ -3197,11 +3233,6 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
             <location filename="../ui/work_precision_plot.cpp" line="36" />
             <source>Soft body: constraint error against substeps</source>
             <translation>Soft body: constraint error against substeps</translation>
-        </message>
-        <message>
-            <location filename="../ui/work_precision_plot.cpp" line="43" />
-            <source>Both errors fall like 1/N² (twice the points, a quarter of the error); adaptive subdivision puts its points where the curve bends and needs fewer for the same error.</source>
-            <translation>Both errors fall like 1/N² (twice the points, a quarter of the error); adaptive subdivision puts its points where the curve bends and needs fewer for the same error.</translation>
         </message>
         <message>
             <location filename="../ui/work_precision_plot.cpp" line="46" />
@@ -3352,14 +3383,33 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
     <context>
         <name>granota::ui::WorkPrecisionPanel</name>
         <message>
+            <source>Work-precision plot: each marker is one setting of a method; lower is more accurate, left is cheaper (faster, or fewer points).</source>
+            <translation>Work-precision plot: each marker is one setting of a method; lower is more accurate, left is cheaper (faster, or fewer points).</translation>
+        </message>
+        <message>
+            <source>Press Measure: each method runs over a range of its setting, and the plot shows its error against its run time or against the setting itself (lower left is better).</source>
+            <translation>Press Measure: each method runs over a range of its setting, and the plot shows its error against its run time or against the setting itself (lower left is better).</translation>
+        </message>
+        <message>
+            <source>The x axis: the run time per call, or the method's setting itself (the number of points, the degree, the step…), which counts the cost without the clock.</source>
+            <translation>The x axis: the run time per call, or the method's setting itself (the number of points, the degree, the step…), which counts the cost without the clock.</translation>
+        </message>
+        <message>
+            <source>against the setting</source>
+            <translation>against the setting</translation>
+        </message>
+        <message>
+            <source>against %1</source>
+            <translation>against %1</translation>
+        </message>
+        <message>
+            <source>against run time</source>
+            <translation>against run time</translation>
+        </message>
+        <message>
             <location filename="../ui/work_precision_panel.cpp" line="120" />
             <source>Cancelled. Press Measure to start again.</source>
             <translation>Cancelled. Press Measure to start again.</translation>
-        </message>
-        <message>
-            <location filename="../ui/work_precision_panel.cpp" line="121" />
-            <source>Press Measure: each method runs over a range of its setting, and the plot shows its error against its run time (lower left is better).</source>
-            <translation>Press Measure: each method runs over a range of its setting, and the plot shows its error against its run time (lower left is better).</translation>
         </message>
         <message>
             <location filename="../ui/work_precision_panel.cpp" line="142" />
@@ -3390,11 +3440,6 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
             <location filename="../ui/work_precision_panel.cpp" line="147" />
             <source>Measuring…</source>
             <translation>Measuring…</translation>
-        </message>
-        <message>
-            <location filename="../ui/work_precision_panel.cpp" line="148" />
-            <source>Work-precision plot: each marker is one setting of a method; lower is more accurate, left is faster.</source>
-            <translation>Work-precision plot: each marker is one setting of a method; lower is more accurate, left is faster.</translation>
         </message>
     </context>
     <context>

@@ -100,8 +100,8 @@ Expected<CommandOutput> run(const Arguments& args)
 {
     const std::string name = args.positional().empty() ? "" : args.positional().front();
     if (name.empty())
-        return makeError(ErrorCode::InvalidInput, "report needs a NAME (curve-sampling, bezier-evaluation, "
-                                                  "least-squares, integrators, soft-body, all)");
+        return makeError(ErrorCode::InvalidInput, "report needs a NAME (curve-sampling, catmull-rom-sampling, "
+                                                  "bezier-evaluation, least-squares, integrators, soft-body, all)");
     const auto out = args.value("out");
     if (!out || out->empty())
         return makeError(ErrorCode::InvalidInput, "report needs --out DIR");
@@ -170,7 +170,7 @@ Expected<CommandOutput> run(const Arguments& args)
 Command reportCommand()
 {
     return {"report", "NAME|all --out DIR [--quick] [--json]",
-            "error against run time as CSV, SVG and PNG: curve-sampling, bezier-evaluation, "
+            "error against run time as CSV, SVG and PNG: curve-sampling, catmull-rom-sampling, bezier-evaluation, "
             "least-squares, integrators, soft-body",
             CommandSyntax{{"out"}, {"quick", "json"}, {}, 1},
             run};

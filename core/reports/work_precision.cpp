@@ -16,15 +16,19 @@ const WorkPrecisionSeries* WorkPrecisionReport::find(std::string_view method) co
     return nullptr;
 }
 
+const char* toString(WorkPrecisionAxis axis) { return axis == WorkPrecisionAxis::Knob ? "knob" : "seconds"; }
+
 std::vector<std::string> workPrecisionReportNames()
 {
-    return {"curve-sampling", "bezier-evaluation", "least-squares", "integrators", "soft-body"};
+    return {"curve-sampling", "catmull-rom-sampling", "bezier-evaluation", "least-squares", "integrators", "soft-body"};
 }
 
 Expected<WorkPrecisionReport> runWorkPrecisionReport(std::string_view name, const WorkPrecisionOptions& options)
 {
     if (name == "curve-sampling")
         return reports::curveSampling(options);
+    if (name == "catmull-rom-sampling")
+        return reports::catmullRomSampling(options);
     if (name == "bezier-evaluation")
         return reports::bezierEvaluation(options);
     if (name == "least-squares")
@@ -66,6 +70,7 @@ std::string workPrecisionCsv(const WorkPrecisionReport& report, const std::vecto
     out += "# error: " + report.error + "\n";
     out += "# reference: " + report.reference + "\n";
     out += "# lesson: " + report.lesson + "\n";
+    out += std::string("# x axis: ") + toString(report.xAxis) + "\n";
     for (const auto& line : context)
         out += "# " + line + "\n";
     out += "method,knob,error,seconds\n";
@@ -94,6 +99,45 @@ double observedOrder(const WorkPrecisionSeries& series, double knobMin, double k
 
 namespace reports {
 Error cancelled() { return makeError(ErrorCode::Cancelled, "cancelled"); }
+
+WorkPrecisionReport samplingReport(std::string name, std::string title, std::string reference, std::string lesson)
+{
+    WorkPrecisionReport r;
+    r.name = std::move(name);
+    r.title = std::move(title);
+    r.knob = "points";
+    r.error = "max distance between curve and polyline";
+    r.reference = std::move(reference);
+    r.lesson = std::move(lesson);
+    r.xAxis = WorkPrecisionAxis::Knob;
+    return r;
+}
+
+Expected<WorkPrecisionReport> withSamplingSeries(
+    WorkPrecisionReport report, const WorkPrecisionOptions& options, const std::string& uniformName, int maxLevel,
+    const std::function<WorkPrecisionSample(int, const std::vector<double>&)>& uniformAt, int maxTolerance,
+    const std::function<WorkPrecisionSample(double)>& adaptiveAt)
+{
+    const Progress progress(options);
+    WorkPrecisionSeries uniform{uniformName, {}}, adaptive{"adaptive", {}};
+    const double total = maxLevel + maxTolerance;
+    for (int level = 1; level <= maxLevel; ++level) {
+        const int samples = (1 << level) + 1;
+        std::vector<double> t(static_cast<std::size_t>(samples));
+        for (int j = 0; j < samples; ++j)
+            t[static_cast<std::size_t>(j)] = j == samples - 1 ? 1.0 : j / double(samples - 1);
+        uniform.samples.push_back(uniformAt(samples, t));
+        if (!progress.tick(level, total))
+            return cancelled();
+    }
+    for (int k = 1; k <= maxTolerance; ++k) {
+        adaptive.samples.push_back(adaptiveAt(std::pow(10.0, -k)));
+        if (!progress.tick(maxLevel + k, total))
+            return cancelled();
+    }
+    report.series = {std::move(uniform), std::move(adaptive)};
+    return report;
+}
 } // namespace reports
 
 } // namespace granota

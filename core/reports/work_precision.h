@@ -26,13 +26,25 @@ struct WorkPrecisionSeries {
     std::vector<WorkPrecisionSample> samples;
 };
 
+/// What a report's plot puts on its x axis (the y axis is always the error).
+enum class WorkPrecisionAxis {
+    Seconds, ///< the run time per call: the work-precision plot proper
+    Knob,    ///< the knob itself, e.g. the number of points: what the cost is counted in
+};
+
+/// "seconds" or "knob": the CSV column the x axis is drawn from (the `# x axis:` line).
+const char* toString(WorkPrecisionAxis axis);
+
 struct WorkPrecisionReport {
-    std::string name;      ///< curve-sampling, bezier-evaluation, least-squares, integrators, soft-body
+    std::string name;      ///< curve-sampling, catmull-rom-sampling, bezier-evaluation, least-squares, integrators, soft-body
     std::string title;     ///< English; the GUI translates it
     std::string knob;      ///< what the knob is: "samples", "degree", "step h", "substeps"
     std::string error;     ///< what the error is: "max distance to the curve", …
     std::string reference; ///< what the error is measured against
     std::string lesson;    ///< the one sentence the plot teaches
+    /// The x axis the lesson reads from. The sampling reports count their cost in points
+    /// (evaluations of the curve): their run time also pays for choosing the points.
+    WorkPrecisionAxis xAxis = WorkPrecisionAxis::Seconds;
     std::vector<WorkPrecisionSeries> series;
 
     const WorkPrecisionSeries* find(std::string_view method) const;
@@ -48,14 +60,14 @@ struct WorkPrecisionOptions {
     std::function<bool(double)> progress;
 };
 
-/// curve-sampling, bezier-evaluation, least-squares, integrators, soft-body.
+/// curve-sampling, catmull-rom-sampling, bezier-evaluation, least-squares, integrators, soft-body.
 std::vector<std::string> workPrecisionReportNames();
 
 /// Runs a report. Errors: an unknown name, or "cancelled" when `progress` returned false.
 Expected<WorkPrecisionReport> runWorkPrecisionReport(std::string_view name, const WorkPrecisionOptions& options = {});
 
-/// The report as CSV: `# key: value` header lines (title, knob, error, reference, lesson and
-/// each line of `context`, e.g. machine and build type), then `method,knob,error,seconds`.
+/// The report as CSV: `# key: value` header lines (title, knob, error, reference, lesson,
+/// x axis and each line of `context`, e.g. machine and build type), then `method,knob,error,seconds`.
 std::string workPrecisionCsv(const WorkPrecisionReport& report, const std::vector<std::string>& context);
 
 /// Least-squares slope of log(error) against log(knob) over the samples with knob in

@@ -1,11 +1,13 @@
 #pragma once
 /// \file work_precision_reports.h
-/// The five reports of docs/work-precision.md, one file each (report_*.cpp); run through
+/// The six reports of docs/work-precision.md, one file each (report_*.cpp); run through
 /// runWorkPrecisionReport(), which checks the name and handles cancelling.
 
 #include "core/base/vec2.h"
 #include "core/reports/work_precision.h"
 
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace granota::reports {
@@ -25,6 +27,7 @@ private:
 };
 
 Expected<WorkPrecisionReport> curveSampling(const WorkPrecisionOptions& options);
+Expected<WorkPrecisionReport> catmullRomSampling(const WorkPrecisionOptions& options);
 Expected<WorkPrecisionReport> bezierEvaluation(const WorkPrecisionOptions& options);
 Expected<WorkPrecisionReport> leastSquares(const WorkPrecisionOptions& options);
 Expected<WorkPrecisionReport> integrators(const WorkPrecisionOptions& options);
@@ -35,5 +38,18 @@ std::vector<Point> reportControlPoints(int count, unsigned seed);
 
 /// The error every report returns when cancelled.
 Error cancelled();
+
+/// A sampling report's description: knob "points", error "max distance between curve and
+/// polyline", plotted against the points (its lesson is about points, not seconds).
+WorkPrecisionReport samplingReport(std::string name, std::string title, std::string reference, std::string lesson);
+
+/// `report` with the two series of a sampling report: `uniformAt(N, t)` measures uniform
+/// sampling with N = 2^L + 1 equally spaced parameters t (t.back() exactly 1), L = 1 … maxLevel;
+/// `adaptiveAt(tolerance)` adaptive subdivision to tolerance 10^-1 … 10^-maxTolerance. Ticks
+/// the progress after each; cancelled() when it says stop.
+Expected<WorkPrecisionReport> withSamplingSeries(
+    WorkPrecisionReport report, const WorkPrecisionOptions& options, const std::string& uniformName, int maxLevel,
+    const std::function<WorkPrecisionSample(int, const std::vector<double>&)>& uniformAt, int maxTolerance,
+    const std::function<WorkPrecisionSample(double)>& adaptiveAt);
 
 } // namespace granota::reports

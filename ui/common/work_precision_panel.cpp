@@ -14,16 +14,22 @@
 #include <QVBoxLayout>
 #include <qcustomplot.h>
 
+#include <algorithm>
+
 namespace granota::ui {
 
 WorkPrecisionPanel::WorkPrecisionPanel(std::vector<std::string> reports, QWidget* parent)
-    : QWidget(parent), m_names(std::move(reports)), m_choice(new QComboBox(this)), m_measure(new QPushButton(this)),
+    : QWidget(parent), m_names(std::move(reports)), m_choice(new QComboBox(this)), m_axis(new QComboBox(this)),
+      m_measure(new QPushButton(this)),
       m_cancel(new QPushButton(this)), m_progress(new QProgressBar(this)), m_lesson(new QLabel(this)),
       m_plot(new QCustomPlot(this))
 {
     auto* layout = new QVBoxLayout(this);
     auto* row = new QHBoxLayout;
     row->addWidget(m_choice, 1);
+    row->addWidget(m_axis);
+    if (m_names.size() <= 1)
+        row->addStretch(1); // the choice is hidden: keep the axis box its own width
     row->addWidget(m_measure);
     row->addWidget(m_cancel);
     layout->addLayout(row);
@@ -39,6 +45,7 @@ WorkPrecisionPanel::WorkPrecisionPanel(std::vector<std::string> reports, QWidget
     m_plot->setMinimumHeight(180);
     connect(m_measure, &QPushButton::clicked, this, &WorkPrecisionPanel::measure);
     connect(m_cancel, &QPushButton::clicked, this, &WorkPrecisionPanel::cancel);
+    connect(m_axis, &QComboBox::activated, this, [this] { showReport(); });
     connect(m_choice, &QComboBox::currentIndexChanged, this, [this] {
         if (m_report && m_choice->currentIndex() >= 0 &&
             m_report->name != m_names[static_cast<std::size_t>(m_choice->currentIndex())]) {
@@ -66,6 +73,17 @@ void WorkPrecisionPanel::selectReport(const std::string& name)
             m_choice->setCurrentIndex(static_cast<int>(i));
 }
 
+WorkPrecisionAxis WorkPrecisionPanel::axis() const
+{
+    return static_cast<WorkPrecisionAxis>(m_axis->currentData().toInt());
+}
+
+void WorkPrecisionPanel::setAxis(WorkPrecisionAxis axis)
+{
+    m_axis->setCurrentIndex(std::max(0, m_axis->findData(static_cast<int>(axis))));
+    showReport();
+}
+
 void WorkPrecisionPanel::measure()
 {
     if (m_thread || m_choice->currentIndex() < 0)
@@ -91,8 +109,10 @@ void WorkPrecisionPanel::measure()
         m_thread->deleteLater();
         m_thread = nullptr;
         const bool ok = m_result && m_result->ok();
-        if (ok)
+        if (ok) {
             m_report = m_result->value();
+            m_axis->setCurrentIndex(std::max(0, m_axis->findData(static_cast<int>(m_report->xAxis))));
+        }
         m_measure->setEnabled(true);
         m_cancel->setEnabled(false);
         m_progress->setVisible(false);
@@ -110,15 +130,20 @@ void WorkPrecisionPanel::cancel() { m_cancelRequested = true; }
 
 void WorkPrecisionPanel::showReport()
 {
+    m_axis->setEnabled(m_report.has_value());
     if (m_report) {
-        plotWorkPrecision(m_plot, *m_report, m_styleScale);
+        // The knob's own name in the choice ("against points", "against degree").
+        m_axis->setItemText(1, tr("against %1").arg(reportKnob(*m_report)));
+        plotWorkPrecision(m_plot, *m_report, m_styleScale, axis());
         m_lesson->setText(reportLesson(*m_report));
     } else {
+        m_axis->setItemText(1, tr("against the setting"));
         clearWorkPrecisionPlot(m_plot);
         m_lesson->setText(m_result && !m_result->ok() && m_result->error().code == ErrorCode::Cancelled
                               ? tr("Cancelled. Press Measure to start again.")
                               : tr("Press Measure: each method runs over a range of its setting, and the plot "
-                                   "shows its error against its run time (lower left is better)."));
+                                   "shows its error against its run time or against the setting itself (lower "
+                                   "left is better)."));
     }
 }
 
@@ -138,6 +163,13 @@ void WorkPrecisionPanel::retranslate()
         m_choice->addItem(reportTitle(r));
     }
     m_choice->setCurrentIndex(current < 0 ? 0 : current);
+    const int axis = m_axis->currentIndex();
+    m_axis->clear();
+    m_axis->addItem(tr("against run time"), static_cast<int>(WorkPrecisionAxis::Seconds));
+    m_axis->addItem(QString(), static_cast<int>(WorkPrecisionAxis::Knob)); // named by showReport()
+    m_axis->setCurrentIndex(axis < 0 ? 0 : axis);
+    m_axis->setToolTip(tr("The x axis: the run time per call, or the method's setting itself (the number of "
+                          "points, the degree, the step…), which counts the cost without the clock."));
     m_choice->setToolTip(tr("Which numerical method to measure: its error against its run time."));
     m_measure->setText(tr("Measure"));
     m_measure->setToolTip(tr("Run every method over a range of its setting and plot error against run time."));
@@ -145,7 +177,7 @@ void WorkPrecisionPanel::retranslate()
     m_cancel->setToolTip(tr("Stop the measurement."));
     m_progress->setToolTip(tr("Measuring…"));
     m_plot->setToolTip(tr("Work-precision plot: each marker is one setting of a method; lower is more accurate, "
-                          "left is faster."));
+                          "left is cheaper (faster, or fewer points)."));
     showReport();
 }
 

@@ -1,8 +1,9 @@
 #pragma once
 /// \file work_precision_panel.h
 /// The work-precision section of a tab (docs/work-precision.md): pick a report, Measure, watch the
-/// progress, Cancel at any time; the plot (error against run time, log–log) and the lesson
-/// it teaches. The measurement runs in a worker thread, so the window never freezes.
+/// progress, Cancel at any time; the plot (error against run time or against the knob — the
+/// number of points, the degree… —, log–log; the report chooses, the user may switch) and the
+/// lesson it teaches. The measurement runs in a worker thread, so the window never freezes.
 
 #include "core/reports/work_precision.h"
 
@@ -36,6 +37,11 @@ public:
     /// The last report measured, if any.
     const std::optional<WorkPrecisionReport>& report() const { return m_report; }
     QCustomPlot* plot() const { return m_plot; }
+    /// The names of the reports offered, in the order of the choice box.
+    const std::vector<std::string>& reportNames() const { return m_names; }
+    /// What the x axis shows: run time or the knob. A new report starts with its own choice.
+    WorkPrecisionAxis axis() const;
+    void setAxis(WorkPrecisionAxis axis);
     void selectReport(const std::string& name);
     void setPresentation(bool on);
     /// Tests: measure with the quick settings and no repetition of the timings.
@@ -53,6 +59,7 @@ private:
 
     std::vector<std::string> m_names;
     QComboBox* m_choice;
+    QComboBox* m_axis; ///< data: WorkPrecisionAxis
     QPushButton* m_measure;
     QPushButton* m_cancel;
     QProgressBar* m_progress;

@@ -21,51 +21,60 @@ QString knobLabel(double knob)
     }
     return QLocale().toString(knob, 'g', 4); // the interface's decimal sign (C in granota-cli)
 }
+/// English text by key, translated; `fallback` as it is for a key the table lacks.
+using Texts = std::pair<const char*, const char*>;
+template <std::size_t N> QString translated(const Texts (&table)[N], const std::string& key, const std::string& fallback)
+{
+    for (const auto& [k, text] : table)
+        if (key == k)
+            return QCoreApplication::translate("granota::ui::WorkPrecision", text);
+    return QString::fromStdString(fallback);
+}
 } // namespace
 
 QString reportTitle(const WorkPrecisionReport& r)
 {
-    if (r.name == "curve-sampling")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "Curve sampling: polyline against curve");
-    if (r.name == "bezier-evaluation")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "Evaluating a Bézier curve of degree n");
-    if (r.name == "least-squares")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "Least-squares Bézier fit: normal equations, QR, SVD");
-    if (r.name == "integrators")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "Integrators: global error against run time");
-    if (r.name == "soft-body")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "Soft body: constraint error against substeps");
-    return QString::fromStdString(r.title);
+    static const Texts titles[] = {
+        {"curve-sampling", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Curve sampling: polyline against curve")},
+        {"catmull-rom-sampling", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Catmull-Rom sampling: polyline against curve")},
+        {"bezier-evaluation", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Evaluating a Bézier curve of degree n")},
+        {"least-squares", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Least-squares Bézier fit: normal equations, QR, SVD")},
+        {"integrators", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Integrators: global error against run time")},
+        {"soft-body", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Soft body: constraint error against substeps")},
+    };
+    return translated(titles, r.name, r.title);
 }
 
 QString reportLesson(const WorkPrecisionReport& r)
 {
-    if (r.name == "curve-sampling")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "Both errors fall like 1/N² (twice the points, a quarter of the error); adaptive subdivision "
-                  "puts its points where the curve bends and needs fewer for the same error.");
-    if (r.name == "bezier-evaluation")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "De Casteljau and the Bernstein sum stay at rounding level at every degree; Horner on the power "
-                  "basis loses digits as the degree grows, because its coefficients are huge alternating sums "
-                  "that cancel.");
-    if (r.name == "least-squares")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "The normal equations square the condition number of M: near degree 25 they have lost almost "
-                  "every digit and by degree 30 the curve is wrong, while QR and SVD still hold about seven "
-                  "digits.");
-    if (r.name == "integrators")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "Halving h halves Euler's error but quarters Verlet's (order 1 against 2): at equal run time "
-                  "Verlet is orders of magnitude more accurate. RK4 (order 4) costs four evaluations per step "
-                  "and wins when high accuracy is needed.");
-    if (r.name == "soft-body")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "XPBD's constraint error falls as the substeps grow, at a cost proportional to their number; "
-                  "the seed's per-step corrections leave a lasting area deficit.");
-    return QString::fromStdString(r.lesson);
+    static const Texts lessons[] = {
+        {"curve-sampling", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Against the number of points, both errors fall like 1/N² (twice the points, a quarter of "
+            "the error), and adaptive subdivision, which puts its points where the curve bends, needs "
+            "fewer for the same error. Its run time per point is higher: each point costs a flatness test.")},
+        {"catmull-rom-sampling", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "The same number of points on every segment wastes them on the short, gentle ones; adaptive "
+            "subdivision of each segment puts them where the curve bends and needs fewer for the same "
+            "error. Both errors fall like 1/N².")},
+        {"bezier-evaluation", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "De Casteljau and the Bernstein sum stay at rounding level at every degree; Horner on the power "
+            "basis loses digits as the degree grows, because its coefficients are huge alternating sums "
+            "that cancel.")},
+        {"least-squares", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "The normal equations square the condition number of M: near degree 25 they have lost almost "
+            "every digit and by degree 30 the curve is wrong, while QR and SVD still hold about seven "
+            "digits.")},
+        {"integrators", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Halving h halves Euler's error but quarters Verlet's (order 1 against 2): at equal run time "
+            "Verlet is orders of magnitude more accurate. RK4 (order 4) costs four evaluations per step "
+            "and wins when high accuracy is needed.")},
+        {"soft-body", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "XPBD's constraint error falls as the substeps grow, at a cost proportional to their number; "
+            "the seed's per-step corrections leave a lasting area deficit.")},
+    };
+    return translated(lessons, r.name, r.lesson);
 }
 
 QString reportMethod(const std::string& m)
 {
-    static const std::pair<const char*, const char*> names[] = {
+    static const Texts names[] = {
         {"uniform", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "uniform")},
         {"adaptive", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "adaptive")},
+        {"uniform t per segment", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "uniform t per segment")},
         {"De Casteljau", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "De Casteljau")},
         {"Bernstein sum", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Bernstein sum")},
         {"Horner (power basis)", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Horner (power basis)")},
@@ -80,10 +89,7 @@ QString reportMethod(const std::string& m)
         {"XPBD edge lengths", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "XPBD edge lengths")},
         {"seed area (Annex II)", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "seed area (Annex II)")},
     };
-    for (const auto& [key, text] : names)
-        if (m == key)
-            return QCoreApplication::translate("granota::ui::WorkPrecision", text);
-    return QString::fromStdString(m);
+    return translated(names, m, m);
 }
 
 QString reportKnob(const WorkPrecisionReport& r)
@@ -101,7 +107,7 @@ QString reportKnob(const WorkPrecisionReport& r)
 
 QString reportError(const WorkPrecisionReport& r)
 {
-    if (r.name == "curve-sampling")
+    if (r.name == "curve-sampling" || r.name == "catmull-rom-sampling")
         return QCoreApplication::translate("granota::ui::WorkPrecision", "max distance between curve and polyline");
     if (r.name == "bezier-evaluation")
         return QCoreApplication::translate("granota::ui::WorkPrecision", "max |c(t) − exact| / max |Pᵢ|");
@@ -114,6 +120,15 @@ QString reportError(const WorkPrecisionReport& r)
     return QString::fromStdString(r.error);
 }
 
+QString reportAxisTitle(const WorkPrecisionReport& r, WorkPrecisionAxis axis)
+{
+    if (axis == WorkPrecisionAxis::Seconds)
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "run time per call (s)");
+    if (r.knob == "points")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "points of the polyline (evaluations of the curve)");
+    return reportKnob(r);
+}
+
 void clearWorkPrecisionPlot(QCustomPlot* plot)
 {
     plot->clearGraphs();
@@ -124,8 +139,11 @@ void clearWorkPrecisionPlot(QCustomPlot* plot)
     plot->replot();
 }
 
-void plotWorkPrecision(QCustomPlot* plot, const WorkPrecisionReport& report, double styleScale)
+void plotWorkPrecision(QCustomPlot* plot, const WorkPrecisionReport& report, double styleScale,
+                       std::optional<WorkPrecisionAxis> axis)
 {
+    const WorkPrecisionAxis xAxis = axis.value_or(report.xAxis);
+    const bool againstKnob = xAxis == WorkPrecisionAxis::Knob;
     plot->clearGraphs();
     plot->clearItems();
     plot->plotLayout()->setAutoMargins(QCP::msAll);
@@ -140,7 +158,7 @@ void plotWorkPrecision(QCustomPlot* plot, const WorkPrecisionReport& report, dou
         axis->setLabelFont(f);
         axis->setTickLabelFont(f);
     }
-    plot->xAxis->setLabel(QCoreApplication::translate("granota::ui::WorkPrecision", "run time per call (s)"));
+    plot->xAxis->setLabel(reportAxisTitle(report, xAxis));
     plot->yAxis->setLabel(reportError(report));
     double xmin = 1e300, xmax = 0, ymin = 1e300, ymax = 0;
     int index = 0;
@@ -155,19 +173,21 @@ void plotWorkPrecision(QCustomPlot* plot, const WorkPrecisionReport& report, dou
         graph->setScatterStyle(QCPScatterStyle(shapes[index % 5], colour, colour.lighter(150), 7 * styleScale));
         QVector<double> x, y;
         for (const auto& p : series.samples) {
-            if (!(p.seconds > 0) || !(p.error > 0))
+            const double px = againstKnob ? p.knob : p.seconds;
+            if (!(px > 0) || !(p.error > 0))
                 continue;
-            x << p.seconds;
+            x << px;
             y << p.error;
-            xmin = std::min(xmin, p.seconds);
-            xmax = std::max(xmax, p.seconds);
+            xmin = std::min(xmin, px);
+            xmax = std::max(xmax, px);
             ymin = std::min(ymin, p.error);
             ymax = std::max(ymax, p.error);
         }
         graph->setData(x, y, true);
-        // The knob at the first and last marker: which end is coarse, which is fine.
+        // Against run time, the knob at the first and last marker: which end is coarse, which
+        // is fine. (Against the knob the axis says it.)
         for (std::size_t k : {std::size_t(0), series.samples.size() - 1}) {
-            if (series.samples.empty() || (k > 0 && series.samples.size() < 2))
+            if (againstKnob || series.samples.empty() || (k > 0 && series.samples.size() < 2))
                 continue;
             const auto& p = series.samples[k];
             auto* label = new QCPItemText(plot);

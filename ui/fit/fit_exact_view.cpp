@@ -10,6 +10,8 @@
 
 #include <QStringList>
 
+#include <algorithm>
+#include <cstddef>
 #include <optional>
 
 namespace granota::ui {
@@ -175,15 +177,31 @@ QString FitExactView::html(const Input& in)
         for (std::size_t i = 0; i < fit.params.size(); ++i)
             ts << QStringLiteral("%1 = %2").arg(sub(QStringLiteral("t"), static_cast<int>(i)), decimal(fit.params[i]));
         html += QStringLiteral("<p>%1</p>").arg(ts.join(QStringLiteral(", ")));
-        if (in.showMatrices) {
-            html += ExactPanel::heading(tr("Matrix M (Lemma 2.2), in decimals"));
-            const Eigen::MatrixXd M = bernsteinMatrix(fit.params, n);
-            std::vector<std::vector<std::string>> e(static_cast<std::size_t>(M.rows()));
-            for (Eigen::Index r = 0; r < M.rows(); ++r)
-                for (Eigen::Index c = 0; c < M.cols(); ++c)
-                    e[static_cast<std::size_t>(r)].push_back(decimalText(M(r, c), 4));
-            html += ExactPanel::matrix(QStringLiteral("M"), e);
-        }
+    }
+    if (in.showMatrices) {
+        // M is (k + 1) × (n + 1): beyond kMaxListedPoints rows (or columns) only its top-left
+        // corner is shown, and the note says how large it is — never nothing.
+        html += ExactPanel::heading(tr("Matrix M (Lemma 2.2), in decimals"));
+        const std::size_t allRows = fit.params.size();
+        const int allCols = n + 1;
+        const bool whole = allRows <= std::size_t(kMaxListedPoints) && allCols <= kMaxListedPoints;
+        const std::size_t rows = whole ? allRows : std::min<std::size_t>(allRows, kMatrixCorner);
+        const int cols = whole ? allCols : std::min(allCols, kMatrixCorner);
+        // Only the rows shown are computed: the data may have a million points.
+        const std::vector<double> shownParams(fit.params.begin(), fit.params.begin() + static_cast<std::ptrdiff_t>(rows));
+        const Eigen::MatrixXd M = bernsteinMatrix(shownParams, n);
+        if (rows < allRows || cols < allCols)
+            html += ExactPanel::note(tr("M has %1 × %2 entries (a row per data point, a column per control point); "
+                                        "the first %3 rows and %4 columns are shown.")
+                                         .arg(allRows)
+                                         .arg(allCols)
+                                         .arg(rows)
+                                         .arg(cols));
+        std::vector<std::vector<std::string>> e(rows);
+        for (std::size_t r = 0; r < rows; ++r)
+            for (int c = 0; c < cols; ++c)
+                e[r].push_back(decimalText(M(static_cast<Eigen::Index>(r), c), 4));
+        html += ExactPanel::matrix(QStringLiteral("M"), e);
     }
     html += ExactPanel::heading(tr("Control points P"));
     for (std::size_t j = 0; j < fit.controlPoints.size(); ++j)

@@ -25,6 +25,9 @@ public:
     static constexpr int kMaxExactPoints = 13;
     /// Parameters, chord lengths and decimal matrices are listed up to this many points.
     static constexpr int kMaxListedPoints = 40;
+    /// A matrix M with more rows or columns than kMaxListedPoints is shown as its top-left
+    /// corner of at most this many rows and columns, with its size stated.
+    static constexpr int kMatrixCorner = 8;
 
     struct Input {
         const std::vector<Point>* points = nullptr; ///< Q_0..Q_k as the editor holds them

@@ -63,6 +63,16 @@ public:
     using QSpinBox::QSpinBox;
     std::function<void(int)> refused; ///< called with the degree that was asked for
 
+    /// Up stays enabled at the maximum (arrow, key, wheel), so that asking for more is
+    /// answered with the reason rather than a greyed-out arrow that does nothing.
+    StepEnabled stepEnabled() const override
+    {
+        StepEnabled e = QSpinBox::stepEnabled();
+        if (isEnabled() && !isReadOnly() && refused)
+            e |= StepUpEnabled;
+        return e;
+    }
+
     void stepBy(int steps) override
     {
         if (steps > 0 && value() + steps > maximum() && refused)
@@ -158,12 +168,9 @@ void FitTab::buildUi()
     form->setRowWrapPolicy(QFormLayout::WrapLongRows); // narrow (presentation, Catalan): labels above the fields
     auto* degree = new DegreeSpinBox(m_settingsGroup);
     degree->refused = [this](int asked) {
-        const int count = static_cast<int>(m_editor->points().size());
-        emit statusMessage(tr("Degree %1 needs %2 data points (n + 1 ≤ k + 1); there are %3, so n ≤ %4.")
-                               .arg(asked)
-                               .arg(asked + 1)
-                               .arg(count)
-                               .arg(std::min(count - 1, kMaxDegree)));
+        m_refusal = refusalText(asked);
+        emit statusMessage(m_refusal);
+        updateReadouts();
     };
     m_degree = degree;
     m_degree->setRange(0, kMaxDegree);
@@ -221,7 +228,7 @@ void FitTab::buildUi()
     // The error against the degree.
     m_plot = new QCustomPlot(this);
     m_plot->setMinimumHeight(120);
-    m_plot->addGraph(); // Σ‖Q_i − α(t_i)‖² for n = 1..min(k, 30)
+    m_plot->addGraph(); // Σ‖Q_i − α(t_i)‖² for n = 1..min(k, kMaxFitDegree)
     m_plot->graph(0)->setPen(QPen(CanvasStyle::series(0), 1.5));
     m_plot->graph(0)->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 5));
     m_plot->addGraph(); // the current n
@@ -236,6 +243,14 @@ void FitTab::buildUi()
     integers->setTickStep(1);
     integers->setScaleStrategy(QCPAxisTickerFixed::ssMultiples);
     m_plot->xAxis->setTicker(integers);
+    m_plotText = new QCPItemText(m_plot);
+    m_plotText->position->setType(QCPItemPosition::ptAxisRectRatio);
+    m_plotText->position->setCoords(0.98, 0.04);
+    m_plotText->setPositionAlignment(Qt::AlignRight | Qt::AlignTop);
+    m_plotText->setTextAlignment(Qt::AlignRight);
+    m_plotText->setColor(QColor(0x8a, 0x3a, 0x00)); // the warnings' colour
+    m_plotText->setClipToAxisRect(true);
+    m_plotText->setVisible(false);
 
     auto* tableBox = new QWidget(this);
     auto* tableLayout = new QVBoxLayout(tableBox);
@@ -444,6 +459,21 @@ QString FitTab::errorText(const Error& error) const
     }
 }
 
+QString FitTab::refusalText(int asked) const
+{
+    const int count = static_cast<int>(m_editor->points().size());
+    if (asked > kMaxDegree)
+        return tr("Degree %1 is refused: the highest is %2, beyond which the Bernstein basis is too "
+                  "ill-conditioned for any solver.")
+            .arg(asked)
+            .arg(kMaxDegree);
+    return tr("Degree %1 needs %2 data points (n + 1 ≤ k + 1); there are %3, so n ≤ %4.")
+        .arg(asked)
+        .arg(asked + 1)
+        .arg(count)
+        .arg(std::min(count - 1, kMaxDegree));
+}
+
 // ---------------------------------------------------------------- settings
 
 int FitTab::fittedDegree() const
@@ -509,6 +539,7 @@ void FitTab::refit()
     options.correctParameters = m_settings.correctParameters;
     options.maxCorrections = m_settings.iterations;
     m_lastFittedDegree = options.degree;
+    m_refusal.clear();
     Expected<FitResult> fit = fitBezier(q, options);
     if (fit) {
         m_fit = std::move(fit).value();
@@ -547,6 +578,8 @@ void FitTab::updateReadouts()
         return;
     const std::vector<Point>& q = m_editor->points();
     QStringList warnings;
+    if (!m_refusal.isEmpty())
+        warnings << m_refusal;
     if (m_fit) {
         m_sseLabel->setText(tr("Squared error Σ‖Q_i − α(t_i)‖²: %1").arg(number(m_fit->sse)));
         m_rmsLabel->setText(tr("RMS error √(Σ/(k+1)): %1").arg(number(m_fit->rms)));
@@ -628,8 +661,15 @@ void FitTab::updatePlot()
     options.parametrization = m_settings.parametrization;
     options.solver = m_settings.solver;
     const std::vector<Point>& q = m_editor->points();
-    bool truncated = false;
-    const std::vector<DegreeError> errors = fitErrorByDegree(q, options, kPlotMaxDegree, 4000000, &truncated);
+    // Every degree allowed, unless that would be too much work to redo on each change.
+    const int highest = std::clamp(static_cast<int>(q.size()) - 1, 0, kMaxDegree);
+    int plotted = 0;
+    for (double work = 0; plotted < highest; ++plotted) {
+        work += static_cast<double>(q.size()) * (plotted + 2) * (plotted + 2);
+        if (work > kPlotWorkBudget)
+            break;
+    }
+    const std::vector<DegreeError> errors = fitErrorByDegree(q, options, plotted);
     // Log scale: an interpolating fit has error ~0; show it at a floor far below the rest.
     double largest = 0;
     for (const DegreeError& e : errors)
@@ -655,9 +695,19 @@ void FitTab::updatePlot()
         const auto [lo, hi] = std::minmax_element(y.begin(), y.end());
         m_plot->yAxis->setRange(*lo / 3, *hi * 3);
     }
+    // Where the plot stops short of the highest degree allowed, it says why, on the plot.
+    m_plotNote.clear();
+    if (!errors.empty() && errors.back().degree < highest)
+        m_plotNote = tr("Plotted up to n = %1 of %2:\nrefitting every degree for %3 points\non each change would slow the window.")
+                         .arg(errors.back().degree)
+                         .arg(highest)
+                         .arg(q.size());
+    m_plotText->setText(m_plotNote);
+    m_plotText->setVisible(!m_plotNote.isEmpty());
     m_plot->replot(QCustomPlot::rpQueuedReplot); // not now: a synchronous repaint would flush the canvas too
-    Q_UNUSED(truncated);
 }
+
+QString FitTab::plotNote() const { return m_plotNote; }
 
 void FitTab::updateExact()
 {

@@ -12,10 +12,12 @@
 #include "ui/fit/fit_settings.h"
 #include "ui/common/curve_tab.h"
 
+#include <cstddef>
 #include <optional>
 
 class QCheckBox;
 class QComboBox;
+class QCPItemText;
 class QCustomPlot;
 class QGroupBox;
 class QLabel;
@@ -61,8 +63,13 @@ public:
 
     /// The table lists the points up to this many; beyond, a note says how many there are.
     static constexpr int kTableLimit = 5000;
-    /// The error-against-degree plot goes up to this degree (docs/tabs.md).
-    static constexpr int kPlotMaxDegree = 30;
+    /// The error-against-degree plot goes up to the highest degree the tab allows,
+    /// min(k, kMaxFitDegree), as long as refitting every degree on each change stays quick:
+    /// Σ (k + 1)(n + 1)² over the degrees plotted (the QR factorisations' work) at most this.
+    /// 60 points reach n = 59, 200 points n = 47 (docs/tabs.md).
+    static constexpr double kPlotWorkBudget = 8e6;
+    /// What the plot says about where it stops (empty when it reaches the highest degree).
+    QString plotNote() const;
 
 protected:
     void drawTikz(TikzWriter& w) const override;
@@ -91,9 +98,13 @@ private:
     void updateTable();
     void importDialog();
     QString errorText(const Error& error) const;
+    /// Why the degree `asked` is refused (more than k, or more than kMaxFitDegree).
+    QString refusalText(int asked) const;
 
     QLabel* m_tableNote = nullptr;
     QCustomPlot* m_plot = nullptr;
+    QCPItemText* m_plotText = nullptr; ///< on the plot: why it stops before the highest degree
+    QString m_plotNote;
     QSplitter* m_mainSplitter = nullptr;
     QSplitter* m_leftSplitter = nullptr;
     QSplitter* m_bottomSplitter = nullptr;
@@ -117,6 +128,7 @@ private:
     QLabel* m_condLabel = nullptr;
     QLabel* m_correctionsLabel = nullptr;
     QLabel* m_warningLabel = nullptr;
+    QString m_refusal; ///< the last refused degree's reason, shown until the next fit
 
     FitSettings m_settings;
     std::optional<FitResult> m_fit;

@@ -43,7 +43,7 @@ std::vector<std::string> reportsOf(const QString& key)
     if (key == QLatin1String("fit"))
         return {"least-squares"};
     if (key == QLatin1String("catmull-rom"))
-        return {"curve-sampling"};
+        return {"catmull-rom-sampling"};
     return {"integrators", "soft-body"};
 }
 
