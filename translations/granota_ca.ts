@@ -1757,7 +1757,7 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <source>The body has blown up (area error %1 %): press Reset (R), or switch to the Stable solver</source>
-            <translation>El cos ha explotat (error d'àrea %1 %): premeu Reinicia (R) o canvieu a la resolució Estable</translation>
+            <translation>El cos ha explotat (error d'àrea %1 %): premeu Reinicia (R) o canvieu al mètode Estable</translation>
         </message>
         <message>
             <source>Area error, mean of the %1 bodies, %2 % · largest stretch %3 %</source>
@@ -2122,8 +2122,10 @@ a cada canvi alentiria la finestra.</translation>
         <message>
             <source>Stage: %1</source>
             <translation>Etapa: %1</translation>
+        </message>
+        <message>
             <source>The seed solver has no angle constraints: these shapes round into blobs. The Stable solver keeps their form.</source>
-            <translation>La resolució Llavor no té restriccions d'angle: aquestes formes s'arrodoneixen fins a semblar bombolles. La resolució Estable en manté la forma.</translation>
+            <translation>El mètode Llavor no té restriccions d'angle: aquestes formes s'arrodoneixen fins a semblar bombolles. El mètode Estable en manté la forma.</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="229" />

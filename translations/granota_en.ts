@@ -2122,6 +2122,8 @@ on each change would slow the window.</translation>
         <message>
             <source>Stage: %1</source>
             <translation>Stage: %1</translation>
+        </message>
+        <message>
             <source>The seed solver has no angle constraints: these shapes round into blobs. The Stable solver keeps their form.</source>
             <translation>The seed solver has no angle constraints: these shapes round into blobs. The Stable solver keeps their form.</translation>
         </message>
