@@ -11,6 +11,7 @@
 #include "ui/common/point_editor.h"
 #include "ui/common/point_extent.h"
 #include "ui/common/point_table.h"
+#include "ui/common/plot_title_room.h"
 #include "ui/common/presentation_scale.h"
 #include "ui/common/value_command.h"
 #include "ui/shell/tikz_writer.h"
@@ -606,6 +607,7 @@ void CatmullRomTab::updatePlot()
     if (shown.size() == 1) // the plot alone tells which tension it shows
         m_plot->yAxis->setLabel(
             QStringLiteral("w_j(t, %1)").arg(tauString(m_settings.taus[static_cast<std::size_t>(shown[0])])));
+    keepAxisTitlesWhole(m_plot);
     const double pad = (hi - lo) * 0.05;
     m_plot->xAxis->setRange(0, 1);
     m_plot->yAxis->setRange(lo - pad, hi + pad);

@@ -13,6 +13,7 @@
 #include "ui/common/point_editor.h"
 #include "ui/common/point_extent.h"
 #include "ui/common/point_table.h"
+#include "ui/common/plot_title_room.h"
 #include "ui/common/presentation_scale.h"
 #include "ui/common/value_command.h"
 #include "ui/shell/tikz_writer.h"
@@ -33,6 +34,7 @@
 #include <QPainterPath>
 #include <QPushButton>
 #include <QSpinBox>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -224,6 +226,11 @@ void FitTab::buildUi()
     sideLayout->addWidget(m_settingsGroup);
     sideLayout->addWidget(m_readoutGroup);
     sideLayout->addWidget(m_exact, 1);
+    // On a small screen (800×600, presentation mode at 1024×768) the side scrolls rather than squeezing its rows.
+    auto* sideArea = new QScrollArea(this);
+    sideArea->setWidget(side);
+    sideArea->setWidgetResizable(true);
+    sideArea->setFrameShape(QFrame::NoFrame);
 
     // The error against the degree.
     m_plot = new QCustomPlot(this);
@@ -276,7 +283,7 @@ void FitTab::buildUi()
     m_leftSplitter->setSizes({500, 220});
     m_mainSplitter = new QSplitter(Qt::Horizontal, this);
     m_mainSplitter->addWidget(m_leftSplitter);
-    m_mainSplitter->addWidget(side);
+    m_mainSplitter->addWidget(sideArea);
     m_mainSplitter->setStretchFactor(0, 2);
     m_mainSplitter->setStretchFactor(1, 1);
     m_mainSplitter->setSizes({830, 450});
@@ -431,6 +438,7 @@ void FitTab::retranslate()
                           "t_i it can only go down as n grows, unless the solver loses accuracy."));
     m_plot->xAxis->setLabel(tr("degree n"));
     m_plot->yAxis->setLabel(tr("squared error (log)"));
+    keepAxisTitlesWhole(m_plot);
     m_table->retranslate();
     m_tableNote->setToolTip(tr("Large data sets are fitted and drawn, but not listed."));
     updateTable();
@@ -974,6 +982,7 @@ void FitTab::presentationChanged(bool on)
         axis->setTickLabelFont(tickFont);
         axis->setLabelFont(tickFont);
     }
+    keepAxisTitlesWhole(m_plot);
     m_plot->graph(0)->setPen(QPen(CanvasStyle::series(0), 1.5 * scale));
     m_plot->graph(0)->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 5 * scale));
     m_plot->graph(1)->setScatterStyle(

@@ -23,6 +23,8 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -63,16 +65,23 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
     for (TabPage* page : m_pages) {
         // Below every tab, its work-precision section (docs/work-precision.md), collapsed until View ▸ Error
         // against run time opens it.
+        // The section scrolls rather than pushing the window past a small screen (800×600).
         auto* splitter = new QSplitter(Qt::Vertical, this);
-        auto* report = new WorkPrecisionPanel(reportsOf(page->key()), splitter);
+        auto* reportArea = new QScrollArea(splitter);
+        auto* report = new WorkPrecisionPanel(reportsOf(page->key()), reportArea);
+        reportArea->setWidget(report);
+        reportArea->setWidgetResizable(true);
+        reportArea->setFrameShape(QFrame::NoFrame);
+        reportArea->setMinimumHeight(reportArea->fontMetrics().height() * 2);
         splitter->addWidget(page);
-        splitter->addWidget(report);
+        splitter->addWidget(reportArea);
         splitter->setCollapsible(0, false);
         splitter->setStretchFactor(0, 3);
         splitter->setStretchFactor(1, 2);
-        report->hide();
+        reportArea->hide();
         m_splitters.push_back(splitter);
         m_reports.push_back(report);
+        m_reportAreas.push_back(reportArea);
         m_tabs->addTab(splitter, page->title());
         m_undoGroup->addStack(page->undoStack());
         connect(page, &TabPage::statusMessage, this, &MainWindow::showMessage);
@@ -82,7 +91,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
         if (index >= 0 && index < m_pages.size()) {
             m_undoGroup->setActiveStack(m_pages[index]->undoStack());
             if (m_reportsAction)
-                m_reportsAction->setChecked(!m_reports[index]->isHidden());
+                m_reportsAction->setChecked(!m_reportAreas[index]->isHidden());
         }
     });
     m_undoGroup->setActiveStack(m_pages.front()->undoStack());
@@ -97,7 +106,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
     m_document = new DocumentController(this, m_recentMenu);
     connect(m_document, &DocumentController::message, this, &MainWindow::showMessage);
 
-    resize(1280, 800);
+    // The classroom size, but never larger than the screen (an 800×600 projector).
+    QSize size(1280, 800);
+    if (const QScreen* screen = this->screen())
+        size = size.boundedTo(screen->availableGeometry().size());
+    resize(size);
     retranslate();
 }
 
@@ -507,7 +520,7 @@ void MainWindow::setWorkPrecisionVisible(bool visible)
     const int index = m_tabs->currentIndex();
     if (index < 0)
         return;
-    m_reports[index]->setVisible(visible);
+    m_reportAreas[index]->setVisible(visible);
     if (visible) {
         const int total = m_splitters[index]->height();
         m_splitters[index]->setSizes({total * 3 / 5, total * 2 / 5});
@@ -519,7 +532,7 @@ void MainWindow::setWorkPrecisionVisible(bool visible)
 bool MainWindow::workPrecisionVisible() const
 {
     const int index = m_tabs->currentIndex();
-    return index >= 0 && !m_reports[index]->isHidden();
+    return index >= 0 && !m_reportAreas[index]->isHidden();
 }
 
 void MainWindow::showMessage(const QString& text) { statusBar()->showMessage(text, 8000); }

@@ -16,6 +16,7 @@ class QAction;
 class QActionGroup;
 class QLabel;
 class QMenu;
+class QScrollArea;
 class QSplitter;
 class QTabWidget;
 class QUndoGroup;
@@ -96,6 +97,7 @@ private:
     QTabWidget* m_tabs = nullptr;
     QVector<TabPage*> m_pages;
     QVector<WorkPrecisionPanel*> m_reports; ///< one per tab, below it in a splitter
+    QVector<QScrollArea*> m_reportAreas; ///< each report's scroll area, shown or hidden with it
     QVector<QSplitter*> m_splitters;
     QUndoGroup* m_undoGroup = nullptr;
     QLabel* m_cursorLabel = nullptr;

@@ -1,0 +1,351 @@
+// The layout on small screens (docs/classroom.md): every tab, in Catalan and in English, at
+// 800×600 (a window of 800×570, the screen less a title bar), at the classroom size 1280×800,
+// and in presentation mode at 1024×768 (1024×738), with the reports panel closed and open.
+// Nothing may be elided or clipped — a label's, button's, group box's, combo box's or spin
+// box's text fits its widget, a plot's axis titles fit the plot — and no widget lies outside
+// the window (or outside the viewport of the scroll area that scrolls it); the window's
+// minimumSizeHint fits the size, so a window manager lets the window be that small.
+#include "ui/shell/language.h"
+#include "ui/shell/main_window.h"
+#include "ui/shell/tab_page.h"
+
+#include <QAbstractButton>
+#include <QAbstractScrollArea>
+#include <QAbstractSpinBox>
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QGroupBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QRegularExpression>
+#include <QScreen>
+#include <QScrollArea>
+#include <QStandardPaths>
+#include <QStyleOptionComboBox>
+#include <QTest>
+#include <QTextDocument>
+
+#include <qcustomplot.h>
+
+using granota::ui::MainWindow;
+
+namespace {
+
+/// A window the size of a screen less its title bar (a window manager's frame is ~30 px).
+constexpr int kTitleBar = 30;
+
+QString describe(const QWidget* w)
+{
+    QString text;
+    if (auto* l = qobject_cast<const QLabel*>(w))
+        text = l->text();
+    else if (auto* b = qobject_cast<const QAbstractButton*>(w))
+        text = b->text();
+    else if (auto* g = qobject_cast<const QGroupBox*>(w))
+        text = g->title();
+    else if (auto* c = qobject_cast<const QComboBox*>(w))
+        text = c->currentText();
+    else if (auto* e = qobject_cast<const QLineEdit*>(w))
+        text = e->text();
+    if (text.size() > 60)
+        text = text.left(57) + QStringLiteral("…");
+    QString path;
+    for (const QWidget* p = w->parentWidget(); p && !p->isWindow(); p = p->parentWidget())
+        if (!p->objectName().isEmpty() && !p->objectName().startsWith(QLatin1String("qt_"))) {
+            path = p->objectName();
+            break;
+        }
+    return QStringLiteral("%1 \"%2\" [%3] in %4 at %5,%6 %7×%8")
+        .arg(QString::fromLatin1(w->metaObject()->className()), w->objectName(), text, path)
+        .arg(w->mapTo(w->window(), QPoint()).x())
+        .arg(w->mapTo(w->window(), QPoint()).y())
+        .arg(w->width())
+        .arg(w->height());
+}
+
+/// The scroll area viewport that `w` is scrolled in, if any.
+const QWidget* scrollingViewport(const QWidget* w)
+{
+    for (const QWidget* p = w->parentWidget(); p && !p->isWindow(); p = p->parentWidget())
+        if (auto* area = qobject_cast<const QAbstractScrollArea*>(p->parentWidget()))
+            if (area->viewport() == p)
+                return p;
+    return nullptr;
+}
+
+QString plainOf(const QString& text, Qt::TextFormat format)
+{
+    if (format == Qt::RichText || (format == Qt::AutoText && Qt::mightBeRichText(text))) {
+        QTextDocument doc;
+        doc.setHtml(text);
+        return doc.toPlainText();
+    }
+    return text;
+}
+
+/// The problems of one widget's text: what is elided or clipped.
+void checkText(QWidget* w, QStringList& problems)
+{
+    const QFontMetrics fm = w->fontMetrics();
+    if (auto* l = qobject_cast<QLabel*>(w)) {
+        if (l->text().isEmpty() || l->width() == 0)
+            return;
+        const QRect content = l->contentsRect();
+        if (l->wordWrap()) {
+            const int needed = l->heightForWidth(l->width());
+            if (needed > l->height() + 1)
+                problems << QStringLiteral("wrapped label needs height %1: %2").arg(needed).arg(describe(w));
+        } else {
+            const QSize hint = l->sizeHint();
+            QString plain = plainOf(l->text(), l->textFormat());
+            if (l->buddy()) // the mnemonic's & is not shown
+                plain.replace(QRegularExpression(QStringLiteral("&(.)")), QStringLiteral("\\1"));
+            int textWidth = 0;
+            for (const QString& line : plain.split(QLatin1Char('\n')))
+                textWidth = std::max(textWidth, fm.horizontalAdvance(line));
+            if (textWidth > content.width() + 1 || hint.height() > l->height() + 1)
+                problems << QStringLiteral("label text %1×%2 clipped: %3")
+                                .arg(textWidth)
+                                .arg(hint.height())
+                                .arg(describe(w));
+        }
+    } else if (auto* b = qobject_cast<QAbstractButton*>(w)) {
+        if (b->text().isEmpty())
+            return;
+        const QSize hint = b->sizeHint();
+        QString text = b->text();
+        text.remove(QLatin1Char('&'));
+        const int textWidth = fm.horizontalAdvance(text);
+        const bool plain = qobject_cast<QPushButton*>(w) != nullptr;
+        // A push button's hint has a minimum width of its own; its text is what must fit.
+        const bool fits = hint.width() <= b->width() || (plain && textWidth + 6 <= b->width());
+        if (!fits || fm.height() > b->height())
+            problems << QStringLiteral("button needs %1×%2: %3").arg(hint.width()).arg(hint.height()).arg(describe(w));
+    } else if (auto* g = qobject_cast<QGroupBox*>(w)) {
+        if (g->title().isEmpty())
+            return;
+        QString title = g->title();
+        title.remove(QLatin1Char('&'));
+        const int needed = fm.horizontalAdvance(title) + (g->isCheckable() ? fm.height() + 8 : 4);
+        if (needed > g->width())
+            problems << QStringLiteral("group box title needs width %1: %2").arg(needed).arg(describe(w));
+    } else if (auto* c = qobject_cast<QComboBox*>(w)) {
+        if (c->currentText().isEmpty())
+            return;
+        QStyleOptionComboBox option;
+        option.initFrom(c);
+        option.editable = c->isEditable();
+        const QRect field = c->style()->subControlRect(QStyle::CC_ComboBox, &option, QStyle::SC_ComboBoxEditField, c);
+        const int textWidth = fm.horizontalAdvance(c->currentText()) + (c->itemIcon(c->currentIndex()).isNull() ? 0 : c->iconSize().width() + 4);
+        if (textWidth > field.width() && c->width() < c->minimumSizeHint().width())
+            problems << QStringLiteral("combo text needs %1 in a field of %2: %3").arg(textWidth).arg(field.width()).arg(describe(w));
+    } else if (auto* e = qobject_cast<QLineEdit*>(w)) {
+        // A spin box's field: its value and suffix ("100.00 px/step²") must show whole.
+        if (!qobject_cast<QAbstractSpinBox*>(w->parentWidget()) || e->text().isEmpty())
+            return;
+        const int textWidth = fm.horizontalAdvance(e->text());
+        if (textWidth > e->contentsRect().width() - 2)
+            problems << QStringLiteral("spin box text needs %1: %2").arg(textWidth).arg(describe(w));
+    }
+}
+
+/// The problems of one plot: axis titles and tick labels outside the plot.
+void checkPlot(QCustomPlot* plot, QStringList& problems)
+{
+    for (QCPAxisRect* axisRect : plot->axisRects()) {
+        if (!axisRect->visible())
+            continue;
+        const QRect inner = axisRect->rect();
+        if (inner.width() < 20 || inner.height() < 20)
+            problems << QStringLiteral("plot area %1×%2 is too small: %3").arg(inner.width()).arg(inner.height()).arg(describe(plot));
+        for (QCPAxis* axis : axisRect->axes()) {
+            if (!axis->visible())
+                continue;
+            const QFontMetrics labelMetrics(axis->labelFont());
+            const QFontMetrics tickMetrics(axis->tickLabelFont());
+            const bool horizontal = axis->orientation() == Qt::Horizontal;
+            // What sits outside the axis rect on this side: ticks, their labels and the title.
+            int needed = axis->offset() + axis->tickLengthOut();
+            if (axis->tickLabels()) {
+                int widest = 0;
+                for (const QString& tick : axis->tickVectorLabels())
+                    widest = std::max(widest, tickMetrics.horizontalAdvance(tick));
+                needed += axis->tickLabelPadding() + (horizontal ? tickMetrics.height() : widest);
+            }
+            if (!axis->label().isEmpty()) {
+                needed += axis->labelPadding() + labelMetrics.height();
+                // The title runs along the axis, centred on it: it must fit the plot that way too.
+                const int length = labelMetrics.horizontalAdvance(axis->label());
+                const int centre = horizontal ? inner.center().x() : inner.center().y();
+                const int extent = horizontal ? plot->width() : plot->height();
+                if (centre - length / 2 < 0 || centre + length / 2 > extent)
+                    problems << QStringLiteral("axis title \"%1\" (%2 px) does not fit along the plot: %3")
+                                    .arg(axis->label())
+                                    .arg(length)
+                                    .arg(describe(plot));
+            }
+            int margin = 0;
+            int room = 0;
+            switch (axis->axisType()) {
+            case QCPAxis::atLeft:
+                margin = axisRect->margins().left();
+                room = inner.left();
+                break;
+            case QCPAxis::atRight:
+                margin = axisRect->margins().right();
+                room = plot->width() - inner.right();
+                break;
+            case QCPAxis::atTop:
+                margin = axisRect->margins().top();
+                room = inner.top();
+                break;
+            case QCPAxis::atBottom:
+                margin = axisRect->margins().bottom();
+                room = plot->height() - inner.bottom();
+                break;
+            }
+            if (axis->label().isEmpty() && !axis->tickLabels())
+                continue;
+            if (std::min(margin, room) < needed)
+                problems << QStringLiteral("axis %1 \"%2\" needs %3 px beside the plot area, has %4: %5")
+                                .arg(int(axis->axisType()))
+                                .arg(axis->label())
+                                .arg(needed)
+                                .arg(std::min(margin, room))
+                                .arg(describe(plot));
+        }
+    }
+}
+
+/// Everything wrong with the window as shown now.
+QStringList layoutProblems(MainWindow& window, QSize size)
+{
+    QStringList problems;
+    const QRect frame(QPoint(), size);
+    if (window.size() != size)
+        problems << QStringLiteral("the window is %1×%2, not %3×%4 (its minimum size is %5×%6)")
+                        .arg(window.width())
+                        .arg(window.height())
+                        .arg(size.width())
+                        .arg(size.height())
+                        .arg(window.minimumSize().width())
+                        .arg(window.minimumSize().height());
+    const QSize minimum = window.minimumSizeHint();
+    if (minimum.width() > frame.width() || minimum.height() > frame.height())
+        problems << QStringLiteral("the window's minimumSizeHint %1×%2 exceeds %3×%4")
+                        .arg(minimum.width())
+                        .arg(minimum.height())
+                        .arg(frame.width())
+                        .arg(frame.height());
+    for (QWidget* w : window.findChildren<QWidget*>()) {
+        if (!w->isVisible() || w->isWindow() || w->window() != &window)
+            continue;
+        const QRect inWindow(w->mapTo(&window, QPoint()), w->size());
+        const QWidget* viewport = scrollingViewport(w);
+        if (!viewport && !frame.contains(inWindow))
+            problems << QStringLiteral("outside the window %1×%2: %3").arg(frame.width()).arg(frame.height()).arg(describe(w));
+        // In a scroll area a widget may be scrolled out of view; what is in view must be whole.
+        checkText(w, problems);
+        if (auto* plot = qobject_cast<QCustomPlot*>(w))
+            checkPlot(plot, problems);
+        // A scroll area that cannot scroll a way cuts off what is wider (or taller) than it.
+        if (auto* area = qobject_cast<QScrollArea*>(w); area && area->widget()) {
+            const QSize content = area->widget()->size(), view = area->viewport()->size();
+            if ((area->horizontalScrollBarPolicy() == Qt::ScrollBarAlwaysOff && content.width() > view.width())
+                || (area->verticalScrollBarPolicy() == Qt::ScrollBarAlwaysOff && content.height() > view.height()))
+                problems << QStringLiteral("scroll area cuts its %1×%2 content to %3×%4: %5")
+                                .arg(content.width())
+                                .arg(content.height())
+                                .arg(view.width())
+                                .arg(view.height())
+                                .arg(describe(w));
+        }
+    }
+    return problems;
+}
+
+} // namespace
+
+class TestGuiLayout : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName(QStringLiteral("GranotaTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("GranotaTest"));
+    }
+    void cleanupTestCase() { granota::ui::setLanguage(QStringLiteral("en"), false); }
+
+    /// The window opens no larger than the screen it is on.
+    void opensWithinTheScreen()
+    {
+        MainWindow window;
+        const QRect available = window.screen()->availableGeometry();
+        QVERIFY2(window.width() <= available.width() && window.height() <= available.height(),
+                 qPrintable(QStringLiteral("%1×%2 on a screen of %3×%4")
+                                .arg(window.width())
+                                .arg(window.height())
+                                .arg(available.width())
+                                .arg(available.height())));
+    }
+
+    void everyTabFits_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QSize>("size");
+        QTest::addColumn<bool>("presentation");
+        QTest::addColumn<bool>("reports");
+        for (const char* language : {"en", "ca"})
+            for (bool reports : {false, true}) {
+                const char* r = reports ? " reports" : "";
+                QTest::addRow("%s 800x600%s", language, r) << QString::fromLatin1(language) << QSize(800, 600 - kTitleBar) << false << reports;
+                QTest::addRow("%s 1280x800%s", language, r) << QString::fromLatin1(language) << QSize(1280, 800 - kTitleBar) << false << reports;
+                QTest::addRow("%s 1024x768 presentation%s", language, r) << QString::fromLatin1(language) << QSize(1024, 768 - kTitleBar) << true << reports;
+            }
+    }
+
+    void everyTabFits()
+    {
+        QFETCH(QString, language);
+        QFETCH(QSize, size);
+        QFETCH(bool, presentation);
+        QFETCH(bool, reports);
+        QVERIFY(granota::ui::setLanguage(language, false));
+        QStringList problems;
+        {
+            MainWindow window;
+            if (presentation)
+                window.setPresentation(true, false);
+            window.resize(size);
+            window.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            // Every tab visited first: a tab once shown keeps its widgets' sizes in the hint.
+            for (granota::ui::TabPage* page : window.tabs()) {
+                QVERIFY(window.showTab(page->key()));
+                if (reports)
+                    window.setWorkPrecisionVisible(true);
+                QApplication::processEvents();
+            }
+            for (granota::ui::TabPage* page : window.tabs()) {
+                QVERIFY(window.showTab(page->key()));
+                window.resize(size);
+                QApplication::processEvents();
+                QApplication::processEvents();
+                for (const QString& problem : layoutProblems(window, size))
+                    problems << page->key() + QStringLiteral(": ") + problem;
+            }
+            if (presentation)
+                window.setPresentation(false, false);
+        }
+        problems.removeDuplicates();
+        QVERIFY2(problems.isEmpty(), qPrintable(QStringLiteral("\n") + problems.join(QLatin1Char('\n'))));
+    }
+};
+
+QTEST_MAIN(TestGuiLayout)
+#include "test_gui_layout.moc"
