@@ -8,6 +8,7 @@
 #include <QCommandLineParser>
 #include <QFile>
 #include <QSettings>
+#include <QSize>
 #include <QTemporaryDir>
 #include <QTextStream>
 
@@ -60,7 +61,9 @@ int main(int argc, char* argv[])
     QCommandLineOption presentOption(QStringLiteral("presentation"), say("Start in presentation mode."));
     QCommandLineOption screenshotOption(QStringLiteral("screenshot"), say("Render the window (1280x800) to FILE.png and exit."),
                                         QStringLiteral("FILE"));
-    parser.addOptions({tabOption, langOption, exampleOption, sceneOption, presentOption, screenshotOption});
+    QCommandLineOption sizeOption(QStringLiteral("size"), say("Window size WxH (a screenshot's, else the window's), e.g. 800x570."),
+                                  QStringLiteral("WxH"));
+    parser.addOptions({tabOption, langOption, exampleOption, sceneOption, presentOption, screenshotOption, sizeOption});
     parser.addPositionalArgument(QStringLiteral("document"), say("A .granota document to open."));
     // Bad arguments are errors as granota-cli's are (status 2, "error: "), in the language above.
     if (!parser.parse(arguments))
@@ -108,8 +111,17 @@ int main(int argc, char* argv[])
     if (parser.isSet(tabOption) && !window.showTab(parser.value(tabOption)))
         return fail(say("unknown tab “%1” (decasteljau, bernstein, fit, catmull-rom, frog)").arg(parser.value(tabOption)));
 
+    QSize size = screenshot ? QSize(1280, 800) : window.size();
+    if (parser.isSet(sizeOption)) {
+        const QStringList wh = parser.value(sizeOption).split(QLatin1Char('x'));
+        bool okW = false, okH = false;
+        const int w = wh.size() == 2 ? wh[0].toInt(&okW) : 0, h = wh.size() == 2 ? wh[1].toInt(&okH) : 0;
+        if (!okW || !okH || w < 100 || h < 100 || w > 10000 || h > 10000)
+            return fail(say("bad size “%1” (WxH, e.g. 800x570)").arg(parser.value(sizeOption)));
+        size = QSize(w, h);
+    }
+    window.resize(size);
     if (screenshot) {
-        window.resize(1280, 800);
         if (parser.isSet(presentOption))
             window.setPresentation(true, false);
         window.show();

@@ -251,10 +251,11 @@ QStringList layoutProblems(MainWindow& window, QSize size)
         checkText(w, problems);
         if (auto* plot = qobject_cast<QCustomPlot*>(w))
             checkPlot(plot, problems);
-        // A scroll area that cannot scroll a way cuts off what is wider (or taller) than it.
+        // A scroll area cuts off what is wider than it (or taller, if it cannot scroll that way).
         if (auto* area = qobject_cast<QScrollArea*>(w); area && area->widget()) {
             const QSize content = area->widget()->size(), view = area->viewport()->size();
-            if ((area->horizontalScrollBarPolicy() == Qt::ScrollBarAlwaysOff && content.width() > view.width())
+            // Side panels scroll up and down only: a row cut at the side is a row nobody reads.
+            if (content.width() > view.width()
                 || (area->verticalScrollBarPolicy() == Qt::ScrollBarAlwaysOff && content.height() > view.height()))
                 problems << QStringLiteral("scroll area cuts its %1×%2 content to %3×%4: %5")
                                 .arg(content.width())

@@ -3480,6 +3480,14 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
     <context>
         <name>granota::CommandLine</name>
         <message>
+            <source>bad size “%1” (WxH, e.g. 800x570)</source>
+            <translation>mida «%1» incorrecta (AxB, p. ex. 800x570)</translation>
+        </message>
+        <message>
+            <source>Window size WxH (a screenshot's, else the window's), e.g. 800x570.</source>
+            <translation>Mida de la finestra AxB (la de la captura o, si no, la de la finestra), p. ex. 800x570.</translation>
+        </message>
+        <message>
             <source>cannot write “%1”</source>
             <translation>no es pot escriure «%1»</translation>
         </message>

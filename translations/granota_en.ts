@@ -3480,6 +3480,14 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
     <context>
         <name>granota::CommandLine</name>
         <message>
+            <source>bad size “%1” (WxH, e.g. 800x570)</source>
+            <translation>bad size “%1” (WxH, e.g. 800x570)</translation>
+        </message>
+        <message>
+            <source>Window size WxH (a screenshot's, else the window's), e.g. 800x570.</source>
+            <translation>Window size WxH (a screenshot's, else the window's), e.g. 800x570.</translation>
+        </message>
+        <message>
             <source>cannot write “%1”</source>
             <translation>cannot write “%1”</translation>
         </message>

@@ -25,6 +25,7 @@ WorkPrecisionPanel::WorkPrecisionPanel(std::vector<std::string> reports, QWidget
       m_plot(new QCustomPlot(this))
 {
     auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4); // its row of choices fits an 800×600 screen in Catalan
     auto* row = new QHBoxLayout;
     row->addWidget(m_choice, 1);
     row->addWidget(m_axis);

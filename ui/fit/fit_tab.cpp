@@ -15,6 +15,7 @@
 #include "ui/common/point_table.h"
 #include "ui/common/plot_title_room.h"
 #include "ui/common/presentation_scale.h"
+#include "ui/common/vertical_scroll_area.h"
 #include "ui/common/value_command.h"
 #include "ui/shell/tikz_writer.h"
 #include "ui/shell/user_file.h"
@@ -34,7 +35,6 @@
 #include <QPainterPath>
 #include <QPushButton>
 #include <QSpinBox>
-#include <QScrollArea>
 #include <QSplitter>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -227,10 +227,7 @@ void FitTab::buildUi()
     sideLayout->addWidget(m_readoutGroup);
     sideLayout->addWidget(m_exact, 1);
     // On a small screen (800×600, presentation mode at 1024×768) the side scrolls rather than squeezing its rows.
-    auto* sideArea = new QScrollArea(this);
-    sideArea->setWidget(side);
-    sideArea->setWidgetResizable(true);
-    sideArea->setFrameShape(QFrame::NoFrame);
+    auto* sideArea = new VerticalScrollArea(side, this);
 
     // The error against the degree.
     m_plot = new QCustomPlot(this);

@@ -10,6 +10,7 @@
 #include "ui/shell/language.h"
 #include "ui/shell/tab_page.h"
 #include "ui/shell/tikz_options_dialog.h"
+#include "ui/common/vertical_scroll_area.h"
 #include "ui/common/work_precision_panel.h"
 
 #include <QAction>
@@ -24,7 +25,6 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QScreen>
-#include <QScrollArea>
 #include <QSplitter>
 #include <QStandardPaths>
 #include <QStatusBar>
@@ -67,12 +67,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
         // against run time opens it.
         // The section scrolls rather than pushing the window past a small screen (800×600).
         auto* splitter = new QSplitter(Qt::Vertical, this);
-        auto* reportArea = new QScrollArea(splitter);
-        auto* report = new WorkPrecisionPanel(reportsOf(page->key()), reportArea);
-        reportArea->setWidget(report);
-        reportArea->setWidgetResizable(true);
-        reportArea->setFrameShape(QFrame::NoFrame);
-        reportArea->setMinimumHeight(reportArea->fontMetrics().height() * 2);
+        auto* report = new WorkPrecisionPanel(reportsOf(page->key()));
+        auto* reportArea = new VerticalScrollArea(report, splitter);
         splitter->addWidget(page);
         splitter->addWidget(reportArea);
         splitter->setCollapsible(0, false);
