@@ -18,7 +18,7 @@ inline void keepAxisTitlesWhole(QCustomPlot* plot)
             continue;
         const QFontMetrics metrics(axis->labelFont());
         // The title along the axis, and the margins beside the axis rect (ticks, tick labels, titles).
-        const int room = metrics.horizontalAdvance(axis->label()) + 5 * metrics.height();
+        const int room = metrics.horizontalAdvance(axis->label()) + 3 * metrics.height();
         int& along = axis->orientation() == Qt::Vertical ? height : width;
         along = std::max(along, room);
     }

@@ -940,7 +940,13 @@ void DeCasteljauTab::drawTikz(TikzWriter& w) const
         w.point(m_levels.point(), style.curve, QStringLiteral("c(t)"));
 }
 
-void DeCasteljauTab::presentationChanged(bool) { updateExactPanel(); }
+void DeCasteljauTab::presentationChanged(bool on)
+{
+    const int total = m_mainSplitter->width();
+    if (total > 0) // the triangle's columns grow with the font: give the side panel half
+        m_mainSplitter->setSizes({total * (on ? 50 : 62) / 100, total * (on ? 50 : 38) / 100});
+    updateExactPanel();
+}
 
 void DeCasteljauTab::showEvent(QShowEvent* event)
 {
