@@ -7,11 +7,22 @@
 #include "ui/shell/tab_page.h"
 
 #include <QByteArray>
+#include <QCoreApplication>
+#include <QStandardPaths>
 #include <QString>
 #include <QTemporaryDir>
 #include <QTest>
 
 #include <initializer_list>
+
+/// Settings and autosaves of a GUI test in QStandardPaths' test folders, under a name of
+/// their own: a test never reads or writes the user's.
+inline void useTestSettings()
+{
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("GranotaTest"));
+    QCoreApplication::setApplicationName(QStringLiteral("GranotaTest"));
+}
 
 /// Loads the worked examples `ids` ("2.3") into `window`, in order, as the Examples menu
 /// does: false at the first that does not load.

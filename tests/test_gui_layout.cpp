@@ -5,6 +5,7 @@
 // box's text fits its widget, a plot's axis titles fit the plot — and no widget lies outside
 // the window (or outside the viewport of the scroll area that scrolls it); the window's
 // minimumSizeHint fits the size, so a window manager lets the window be that small.
+#include "main_window_steps.h"
 #include "ui/shell/language.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/tab_page.h"
@@ -23,7 +24,6 @@
 #include <QRegularExpression>
 #include <QScreen>
 #include <QScrollArea>
-#include <QStandardPaths>
 #include <QStyleOptionComboBox>
 #include <QTest>
 #include <QTextDocument>
@@ -274,12 +274,7 @@ class TestGuiLayout : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase()
-    {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName(QStringLiteral("GranotaTest"));
-        QCoreApplication::setApplicationName(QStringLiteral("GranotaTest"));
-    }
+    void initTestCase() { useTestSettings(); }
     void cleanupTestCase() { granota::ui::setLanguage(QStringLiteral("en"), false); }
 
     /// The window opens no larger than the screen it is on.
