@@ -948,10 +948,9 @@ void DeCasteljauTab::presentationChanged(bool on)
     updateExactPanel();
 }
 
-void DeCasteljauTab::showEvent(QShowEvent* event)
+QString DeCasteljauTab::hint() const
 {
-    CurveTab::showEvent(event);
-    emit statusMessage(tr("Drag a point; double-click to add one; Delete removes the selected point; move t with the slider."));
+    return tr("Drag a point; double-click to add one; Delete removes the selected point; move t with the slider.");
 }
 
 } // namespace granota::ui

@@ -100,6 +100,7 @@ private:
     QVector<QScrollArea*> m_reportAreas; ///< each report's scroll area, shown or hidden with it
     QVector<QSplitter*> m_splitters;
     QUndoGroup* m_undoGroup = nullptr;
+    QLabel* m_hintLabel = nullptr; ///< the shown tab's hint (TabPage::hint)
     QLabel* m_cursorLabel = nullptr;
     DocumentController* m_document = nullptr;
     bool m_presentation = false;
