@@ -523,7 +523,7 @@
         <name>granota::ui::CatmullRomTab</name>
         <message>
             <source>Drag a point; double-click to add one; pick a τ in the list and move its slider, or type one and press Enter.</source>
-            <translation>Arrossegueu un punt; feu doble clic per afegir-ne un; trieu una τ de la llista i moveu-ne el control lliscant, o escriviu-ne una i premeu Retorn.</translation>
+            <translation>Arrossegueu un punt; doble clic n’afegeix un; trieu una τ a la llista i moveu-ne el control, o escriviu-ne una i premeu Retorn.</translation>
         </message>
         <message>
             <source>Select τ = %1</source>

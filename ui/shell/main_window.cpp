@@ -50,6 +50,8 @@ std::vector<std::string> reportsOf(const QString& key)
 }
 
 constexpr double kPresentationFont = 1.5; ///< font scale in presentation mode
+/// The status bar's, smaller: its hints are for the one at the keyboard, and a whole hint fits 1024 px.
+constexpr double kPresentationStatusFont = 1.25;
 const char* const kExampleIds[] = {"2.1", "2.2", "2.3", "2.4", "2.5", "2.6", "2.7",
                                    "2.8", "2.9", "2.10", "2.11", "2.12", "2.13"};
 } // namespace
@@ -507,6 +509,10 @@ void MainWindow::setPresentation(bool on, bool fullScreen)
     if (on)
         font.setPointSizeF(m_normalFont.pointSizeF() * kPresentationFont);
     QApplication::setFont(font);
+    QFont statusFont = m_normalFont;
+    if (on)
+        statusFont.setPointSizeF(m_normalFont.pointSizeF() * kPresentationStatusFont);
+    statusBar()->setFont(statusFont);
     for (TabPage* page : m_pages)
         page->setPresentation(on);
     for (WorkPrecisionPanel* report : m_reports)
