@@ -120,9 +120,8 @@ private slots:
         QVERIFY(QApplication::focusWidget());
         QVERIFY(QApplication::focusWidget() != canvas);
         QCOMPARE(editor->selected(), 1); // Tab selected nothing on its way out
-        QWidget* next = QApplication::focusWidget();
         press(window, Qt::Key_Backtab, Qt::ShiftModifier);
-        QVERIFY2(canvas->hasFocus(), qPrintable(next->metaObject()->className() + QStringLiteral(" ") + next->objectName() + QStringLiteral(" → ") + (QApplication::focusWidget() ? QApplication::focusWidget()->metaObject()->className() : "none")));
+        QVERIFY(canvas->hasFocus());
     }
 
     // The canvas draws a frame while it has the focus: its pixels differ with and without.
@@ -173,6 +172,10 @@ private slots:
         curveCanvas(window)->setFocus(Qt::OtherFocusReason);
         press(window, Qt::Key_5, Qt::ControlModifier);
         QCOMPARE(window.currentTab()->key(), QStringLiteral("frog"));
+        // Nothing in the tab has the focus, as when the tab was chosen on the tab bar.
+        QTabBar* bar = window.findChild<QTabWidget*>()->tabBar();
+        bar->setFocus(Qt::TabFocusReason);
+        QTRY_VERIFY(bar->hasFocus());
         auto* canvas = window.frogTab()->findChild<FrogCanvas*>();
         QVERIFY(canvas && canvas->running());
         press(window, Qt::Key_P);
