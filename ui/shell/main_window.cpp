@@ -560,8 +560,8 @@ void MainWindow::showGuide()
                    "<p><b>Frog</b> (chapter 4): the soft body, stage by stage.</p>"
                    "<p>Double-click to add a point, Delete to remove it, arrows to nudge it, "
                    "Ctrl+Z to undo. The Examples menu loads every worked example of chapter 2. "
-                   "F11 switches presentation mode.</p>"
-                   "<p>Everything can be done with the keyboard alone: Help ▸ Keyboard shortcuts lists every key.</p>"));
+                   "F11 switches presentation mode.</p>")
+                + tr("<p>Everything can be done with the keyboard alone: Help ▸ Keyboard shortcuts lists every key.</p>"));
     box.exec();
 }
 
