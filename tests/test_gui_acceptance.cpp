@@ -19,6 +19,7 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QImage>
+#include <QLabel>
 #include <QListWidget>
 #include <QPointer>
 #include <QProcess>
@@ -403,6 +404,34 @@ private slots:
         }
         QVERIFY2(seen == int(halfPoints.size()) - 2,
                  qPrintable(QStringLiteral("%1 of %2 squares seen").arg(seen).arg(halfPoints.size() - 2)));
+    }
+
+    // Item 17: the status bar's hint is the shown tab's: switching tabs (Ctrl+1…Ctrl+5, as a
+    // keyboard does) replaces the last tab's hint and clears its passing messages, every tab
+    // has one, and a live language switch translates it.
+    void theHintIsTheShownTabs()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        auto* hint = window.statusBar()->findChild<QLabel*>(QStringLiteral("tabHint"));
+        QVERIFY2(hint, "the status bar has no hint of the tab shown");
+        QStringList hints;
+        for (int i = 0; i < int(window.tabs().size()); ++i) {
+            QTest::keyClick(&window, Qt::Key(Qt::Key_1 + i), Qt::ControlModifier);
+            QCOMPARE(window.currentTab(), window.tabs()[std::size_t(i)]);
+            QVERIFY2(window.statusBar()->currentMessage().isEmpty(),
+                     qPrintable(QStringLiteral("a message of the last tab stays: ") + window.statusBar()->currentMessage()));
+            QVERIFY2(!hint->text().isEmpty(), qPrintable(window.currentTab()->key()));
+            QVERIFY2(!hints.contains(hint->text()), qPrintable(hint->text()));
+            QCOMPARE(hint->text(), window.currentTab()->hint());
+            hints << hint->text();
+            window.statusBar()->showMessage(QStringLiteral("a passing message of this tab"), 8000);
+        }
+        QVERIFY(granota::ui::setLanguage(QStringLiteral("ca"), false));
+        QTRY_VERIFY2(hint->text() != hints.last(), qPrintable(hint->text())); // the Frog tab's, in Catalan
+        QCOMPARE(hint->text(), window.currentTab()->hint());
+        QVERIFY(granota::ui::setLanguage(QStringLiteral("en"), false));
+        QTRY_COMPARE(hint->text(), hints.last());
     }
 };
 

@@ -545,6 +545,10 @@
             <translation>Llenç de Catmull-Rom</translation>
         </message>
         <message>
+            <source>Drag a point; double-click to add one; pick a τ in the list and move its slider, or type one and press Enter.</source>
+            <translation>Arrossegueu un punt; feu doble clic per afegir-ne un; trieu una τ de la llista i moveu-ne el control lliscant, o escriviu-ne una i premeu Retorn.</translation>
+        </message>
+        <message>
             <source>Select τ = %1</source>
             <translation>Tria τ = %1</translation>
         </message>
@@ -2187,6 +2191,10 @@ a cada canvi alentiria la finestra.</translation>
         <message>
             <source>Frog canvas</source>
             <translation>Llenç de la granota</translation>
+        </message>
+        <message>
+            <source>Drag the body with the mouse; Space on the canvas spawns one at the mouse. P pauses, S steps, R resets.</source>
+            <translation>Arrossegueu el cos amb el ratolí; l'espai sobre el llenç en fa aparèixer un on és el ratolí. P atura, S avança un pas, R reinicia.</translation>
         </message>
         <message>
             <source>Solver: %1</source>

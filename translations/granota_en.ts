@@ -545,6 +545,10 @@
             <translation>Catmull-Rom canvas</translation>
         </message>
         <message>
+            <source>Drag a point; double-click to add one; pick a τ in the list and move its slider, or type one and press Enter.</source>
+            <translation>Drag a point; double-click to add one; pick a τ in the list and move its slider, or type one and press Enter.</translation>
+        </message>
+        <message>
             <source>Select τ = %1</source>
             <translation>Select τ = %1</translation>
         </message>
@@ -2187,6 +2191,10 @@ on each change would slow the window.</translation>
         <message>
             <source>Frog canvas</source>
             <translation>Frog canvas</translation>
+        </message>
+        <message>
+            <source>Drag the body with the mouse; Space on the canvas spawns one at the mouse. P pauses, S steps, R resets.</source>
+            <translation>Drag the body with the mouse; Space on the canvas spawns one at the mouse. P pauses, S steps, R resets.</translation>
         </message>
         <message>
             <source>Solver: %1</source>

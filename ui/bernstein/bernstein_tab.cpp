@@ -656,10 +656,9 @@ void BernsteinTab::setPresentation(bool on)
     updateExactPanel();
 }
 
-void BernsteinTab::showEvent(QShowEvent* event)
+QString BernsteinTab::hint() const
 {
-    TabPage::showEvent(event);
-    emit statusMessage(tr("Move the mouse over the plot to read B_i^n(t); click or drag to move t."));
+    return tr("Move the mouse over the plot to read B_i^n(t); click or drag to move t.");
 }
 
 } // namespace granota::ui

@@ -44,6 +44,7 @@ public:
     ~BernsteinTab() override;
 
     void retranslate() override;
+    QString hint() const override;
     QJsonObject saveState() const override;
     bool loadState(const QJsonObject& state, QString* error) override;
     bool loadExample(const granota::WorkedExample& example) override;
@@ -84,7 +85,6 @@ public:
 
 protected:
     void drawTikz(TikzWriter& w) const override;
-    void showEvent(QShowEvent* event) override;
 
 private:
     void rebuildBasisPlot();

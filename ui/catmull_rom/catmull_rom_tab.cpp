@@ -280,6 +280,11 @@ void CatmullRomTab::buildUi()
     layout->addWidget(split);
 }
 
+QString CatmullRomTab::hint() const
+{
+    return tr("Drag a point; double-click to add one; pick a τ in the list and move its slider, or type one and press Enter.");
+}
+
 void CatmullRomTab::retranslate()
 {
     updateCanvasSummary();

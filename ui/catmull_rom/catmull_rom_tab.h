@@ -34,6 +34,7 @@ public:
     explicit CatmullRomTab(QWidget* parent = nullptr);
 
     void retranslate() override;
+    QString hint() const override;
     bool loadExample(const granota::WorkedExample& example) override;
     QString csv() const override;
 

@@ -960,10 +960,9 @@ void DeCasteljauTab::drawTikz(TikzWriter& w) const
 
 void DeCasteljauTab::presentationChanged(bool) { updateExactPanel(); }
 
-void DeCasteljauTab::showEvent(QShowEvent* event)
+QString DeCasteljauTab::hint() const
 {
-    CurveTab::showEvent(event);
-    emit statusMessage(tr("Drag a point; double-click to add one; Delete removes the selected point; move t with the slider."));
+    return tr("Drag a point; double-click to add one; Delete removes the selected point; move t with the slider.");
 }
 
 } // namespace granota::ui

@@ -32,6 +32,7 @@ public:
     explicit DeCasteljauTab(QWidget* parent = nullptr);
 
     void retranslate() override;
+    QString hint() const override;
     bool loadExample(const granota::WorkedExample& example) override;
     QString csv() const override;
 
@@ -85,7 +86,6 @@ signals:
 
 protected:
     void drawTikz(TikzWriter& w) const override;
-    void showEvent(QShowEvent* event) override;
 
 private:
     // What CurveTab asks of this tab.

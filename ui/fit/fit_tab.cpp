@@ -996,11 +996,10 @@ void FitTab::presentationChanged(bool on)
     m_canvas->fitToContent();
 }
 
-void FitTab::showEvent(QShowEvent* event)
+QString FitTab::hint() const
 {
-    CurveTab::showEvent(event);
-    emit statusMessage(tr("Drag a data point Q_i and the curve is refitted; double-click adds a point, Delete "
-                          "removes it."));
+    return tr("Drag a data point Q_i and the curve is refitted; double-click adds a point, Delete "
+                          "removes it.");
 }
 
 } // namespace granota::ui

@@ -33,6 +33,7 @@ public:
     explicit FitTab(QWidget* parent = nullptr);
 
     void retranslate() override;
+    QString hint() const override;
     bool loadExample(const granota::WorkedExample& example) override;
     QString csv() const override;
 
@@ -73,7 +74,6 @@ public:
 
 protected:
     void drawTikz(TikzWriter& w) const override;
-    void showEvent(QShowEvent* event) override;
 
 private:
     // What CurveTab asks of this tab.

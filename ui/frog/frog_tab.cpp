@@ -538,6 +538,11 @@ QString FrogTab::sceneHint() const
               "(Annex II).");
 }
 
+QString FrogTab::hint() const
+{
+    return tr("Drag the body with the mouse; Space on the canvas spawns one at the mouse. P pauses, S steps, R resets.");
+}
+
 void FrogTab::retranslate()
 {
     m_sceneBox->setTitle(tr("Scene"));

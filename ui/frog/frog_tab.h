@@ -30,6 +30,7 @@ public:
     explicit FrogTab(QWidget* parent = nullptr);
 
     void retranslate() override;
+    QString hint() const override;
     QJsonObject saveState() const override;
     bool loadState(const QJsonObject& state, QString* error) override;
     QString csv() const override;

@@ -76,12 +76,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
         m_reports.push_back(report);
         m_tabs->addTab(splitter, page->title());
         m_undoGroup->addStack(page->undoStack());
-        connect(page, &TabPage::statusMessage, this, &MainWindow::showMessage);
+        // Only the tab shown speaks: a hidden tab's message would belong to another screen.
+        connect(page, &TabPage::statusMessage, this, [this, page](const QString& text) {
+            if (page == currentTab())
+                showMessage(text);
+        });
     }
     m_tabs->setDocumentMode(true);
     connect(m_tabs, &QTabWidget::currentChanged, this, [this](int index) {
         if (index >= 0 && index < m_pages.size()) {
             m_undoGroup->setActiveStack(m_pages[index]->undoStack());
+            statusBar()->clearMessage(); // the last tab's passing message is not about this one
+            m_hintLabel->setText(m_pages[index]->hint());
             if (m_reportsAction)
                 m_reportsAction->setChecked(!m_reports[index]->isHidden());
         }
@@ -89,6 +95,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
     m_undoGroup->setActiveStack(m_pages.front()->undoStack());
     setCentralWidget(m_tabs);
 
+    // The shown tab's hint, under the passing messages (QStatusBar hides it while one shows).
+    m_hintLabel = new QLabel(this);
+    m_hintLabel->setObjectName(QStringLiteral("tabHint"));
+    m_hintLabel->setMinimumWidth(0);
+    m_hintLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
+    statusBar()->addWidget(m_hintLabel, 1);
     m_cursorLabel = new QLabel(this);
     statusBar()->addPermanentWidget(m_cursorLabel);
 
@@ -342,6 +354,8 @@ void MainWindow::retranslateUndoRedo()
 void MainWindow::retranslate()
 {
     m_tabs->setAccessibleName(tr("Tabs"));
+    if (TabPage* page = currentTab())
+        m_hintLabel->setText(page->hint());
     m_fileMenu->setTitle(tr("&File"));
     m_new->setText(tr("&New"));
     m_open->setText(tr("&Open…"));

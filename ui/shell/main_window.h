@@ -102,6 +102,7 @@ private:
     QVector<WorkPrecisionPanel*> m_reports; ///< one per tab, below it in a splitter
     QVector<QSplitter*> m_splitters;
     QUndoGroup* m_undoGroup = nullptr;
+    QLabel* m_hintLabel = nullptr; ///< the shown tab's hint (TabPage::hint)
     QLabel* m_cursorLabel = nullptr;
     DocumentController* m_document = nullptr;
     bool m_presentation = false;

@@ -59,6 +59,10 @@ public:
         return false;
     }
 
+    /// What the user can do here, in a line, in the current language: the main window's status
+    /// bar shows the hint of the tab shown (passing messages cover it for a few seconds).
+    virtual QString hint() const = 0;
+
     /// The undo stack of the tab's edits (the main window's Edit menu follows the current tab).
     /// Every change the document keeps is one step on it (docs/tabs.md, "Undo").
     QUndoStack* undoStack() const { return m_undo; }
