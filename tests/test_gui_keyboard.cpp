@@ -34,9 +34,7 @@ using granota::Point;
 using granota::ui::CurveCanvas;
 using granota::ui::DeCasteljauTab;
 using granota::ui::FrogCanvas;
-using granota::ui::FrogTab;
 using granota::ui::MainWindow;
-using granota::ui::TabPage;
 
 namespace {
 
@@ -202,7 +200,7 @@ private slots:
     {
         MainWindow window;
         QVERIFY(showOnTab(window, QStringLiteral("frog")));
-        FrogTab* tab = window.frogTab();
+        auto* tab = window.frogTab();
         QVERIFY(tab->setScene(QStringLiteral("frog"), nullptr));
         auto* canvas = tab->findChild<FrogCanvas*>();
         QVERIFY(canvas);
@@ -231,7 +229,7 @@ private slots:
         MainWindow window;
         QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
         QStringList unnamed;
-        for (TabPage* page : window.tabs()) {
+        for (const auto* page : window.tabs()) {
             QVERIFY(window.showTab(page->key()));
             for (QWidget* w : window.findChildren<QWidget*>())
                 if (w->isVisible() && isOwnControl(w) && accessibleText(w, QAccessible::Name).trimmed().isEmpty())

@@ -781,12 +781,7 @@ void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
     m_sim->move(m_mouse);
     reportMouseRadius();
     if (!m_pressed && m_sim->scene().has("grab")) {
-        bool inside = false;
-        for (int i = 0; i < m_sim->bodyCount() && !inside; ++i) {
-            m_sim->bodyVertices(i, m_vertices);
-            inside = pointInPolygon(m_mouse, m_vertices);
-        }
-        if (inside)
+        if (insideABody(m_mouse))
             setCursor(Qt::OpenHandCursor);
         else
             unsetCursor();
@@ -835,6 +830,16 @@ void FrogCanvas::drawKeyboardCursor(QPainter& p) const
     p.restore();
 }
 
+bool FrogCanvas::insideABody(Point at)
+{
+    for (int i = 0; i < m_sim->bodyCount(); ++i) {
+        m_sim->bodyVertices(i, m_vertices);
+        if (pointInPolygon(at, m_vertices))
+            return true;
+    }
+    return false;
+}
+
 int FrogCanvas::nearestBody(Point at)
 {
     int best = -1;
@@ -861,12 +866,7 @@ bool FrogCanvas::keyboardGrab()
         m_mouseKnown = true;
     }
     // Outside every body, the cursor first jumps to the centre of the nearest one.
-    bool inside = false;
-    for (int i = 0; i < m_sim->bodyCount() && !inside; ++i) {
-        m_sim->bodyVertices(i, m_vertices);
-        inside = pointInPolygon(m_mouse, m_vertices);
-    }
-    if (const int body = inside ? -1 : nearestBody(m_mouse); body >= 0) {
+    if (const int body = insideABody(m_mouse) ? -1 : nearestBody(m_mouse); body >= 0) {
         m_sim->bodyVertices(body, m_vertices);
         Point sum{0, 0};
         for (const Point& v : m_vertices)

@@ -151,6 +151,7 @@ private:
     bool keyboardGrab();
     void keyboardRelease();
     int nearestBody(Point at);
+    bool insideABody(Point at); ///< inside the polygon of some body (reuses m_vertices)
     void drawKeyboardCursor(QPainter& p) const;
 
     void drawScene(QPainter& p, double pixel);
