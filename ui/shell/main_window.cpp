@@ -261,7 +261,7 @@ void MainWindow::createActions()
     connect(m_nextTab, &QAction::triggered, this, [cycle] { cycle(1); });
     m_previousTab = new QAction(this);
     m_previousTab->setShortcuts(
-        {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Backtab), QKeySequence(Qt::CTRL | Qt::Key_PageUp)});
+        {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Tab), QKeySequence(Qt::CTRL | Qt::Key_PageUp)});
     connect(m_previousTab, &QAction::triggered, this, [cycle] { cycle(-1); });
 
     auto* languages = new QActionGroup(this);
