@@ -522,6 +522,29 @@
     <context>
         <name>granota::ui::CatmullRomTab</name>
         <message>
+            <source>Exact results and points</source>
+            <translation>Resultats exactes i punts</translation>
+        </message>
+        <message>
+            <source>Tensions τ</source>
+            <translation>Tensions τ</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>cap</translation>
+        </message>
+        <message numerus="yes">
+            <source>Catmull-Rom curves through %n point(s), tensions τ = %1.</source>
+            <translation>
+                <numerusform>Corbes de Catmull-Rom per %n punt, tensions τ = %1.</numerusform>
+                <numerusform>Corbes de Catmull-Rom per %n punts, tensions τ = %1.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Catmull-Rom canvas</source>
+            <translation>Llenç de Catmull-Rom</translation>
+        </message>
+        <message>
             <source>Drag a point; double-click to add one; pick a τ in the list and move its slider, or type one and press Enter.</source>
             <translation>Arrossegueu un punt; doble clic n’afegeix un; trieu una τ a la llista i moveu-ne el control, o escriviu-ne una i premeu Retorn.</translation>
         </message>
@@ -884,6 +907,10 @@
     <context>
         <name>granota::ui::DeCasteljauParameterControl</name>
         <message>
+            <source>Parameter t</source>
+            <translation>Paràmetre t</translation>
+        </message>
+        <message>
             <location filename="../ui/decasteljau_parameter_control.cpp" line="95" />
             <source>The parameter t ∈ [0, 1] of the curve c(t) (Def 2.4). Type a decimal or a fraction such as 1/3.</source>
             <translation>El paràmetre t ∈ [0, 1] de la corba c(t) (Def 2.4). Escriviu un decimal o una fracció com ara 1/3.</translation>
@@ -891,6 +918,21 @@
     </context>
     <context>
         <name>granota::ui::DeCasteljauTab</name>
+        <message numerus="yes">
+            <source>Bézier curve of degree %1 with %n control point(s); t = %2, c(t) = %3.</source>
+            <translation>
+                <numerusform>Corba de Bézier de grau %1 amb %n punt de control; t = %2, c(t) = %3.</numerusform>
+                <numerusform>Corba de Bézier de grau %1 amb %n punts de control; t = %2, c(t) = %3.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>No control points.</source>
+            <translation>Cap punt de control.</translation>
+        </message>
+        <message>
+            <source>De Casteljau canvas</source>
+            <translation>Llenç de De Casteljau</translation>
+        </message>
         <message>
             <source>polygon of the half on [t, 1]</source>
             <translation>polígon de la meitat a [t, 1]</translation>
@@ -1298,6 +1340,17 @@
     </context>
     <context>
         <name>granota::ui::FitTab</name>
+        <message numerus="yes">
+            <source>Least-squares Bézier curve of degree %1 through %n data point(s); squared error %2.</source>
+            <translation>
+                <numerusform>Corba de Bézier per mínims quadrats de grau %1 per %n punt de dades; error quadràtic %2.</numerusform>
+                <numerusform>Corba de Bézier per mínims quadrats de grau %1 per %n punts de dades; error quadràtic %2.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Fitting canvas</source>
+            <translation>Llenç de l'ajust</translation>
+        </message>
         <message>
             <source>Show matrices</source>
             <translation>Mostra les matrius</translation>
@@ -1756,6 +1809,14 @@ a cada canvi alentiria la finestra.</translation>
     <context>
         <name>granota::ui::FrogCanvas</name>
         <message>
+            <source>%1; area error %2 %.</source>
+            <translation>%1; error d'àrea %2 %.</translation>
+        </message>
+        <message>
+            <source>Nothing to grab here: move the cursor inside the body with the arrows.</source>
+            <translation>Aquí no hi ha res per agafar: porteu el cursor dins del cos amb les fletxes.</translation>
+        </message>
+        <message>
             <source>Top of the frame: the scene's upper wall (y = 0)</source>
             <translation>Dalt del marc: la paret superior de l'escena (y = 0)</translation>
         </message>
@@ -1841,6 +1902,10 @@ a cada canvi alentiria la finestra.</translation>
     </context>
     <context>
         <name>granota::ui::FrogParametersPanel</name>
+        <message>
+            <source>%1, %2</source>
+            <translation>%1, %2</translation>
+        </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="267" />
             <source>px</source>
@@ -2119,6 +2184,14 @@ a cada canvi alentiria la finestra.</translation>
     </context>
     <context>
         <name>granota::ui::FrogTab</name>
+        <message>
+            <source>Scene %1, %2 solver</source>
+            <translation>Escena %1, mètode %2</translation>
+        </message>
+        <message>
+            <source>Frog canvas</source>
+            <translation>Llenç de la granota</translation>
+        </message>
         <message>
             <source>Drag the body with the mouse; Space on the canvas spawns one at the mouse. P pauses, S steps, R resets.</source>
             <translation>Arrossegueu el cos amb el ratolí; l'espai sobre el llenç en fa aparèixer un on és el ratolí. P atura, S avança un pas, R reinicia.</translation>
@@ -2611,6 +2684,30 @@ a cada canvi alentiria la finestra.</translation>
     </context>
     <context>
         <name>granota::ui::MainWindow</name>
+        <message>
+            <source>&lt;p&gt;Everything can be done with the keyboard alone: Help ▸ Keyboard shortcuts lists every key.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;Tot es pot fer només amb el teclat: Ajuda ▸ Dreceres de teclat llista totes les tecles.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Tabs</source>
+            <translation>Pestanyes</translation>
+        </message>
+        <message>
+            <source>Keyboard shortcuts</source>
+            <translation>Dreceres de teclat</translation>
+        </message>
+        <message>
+            <source>&amp;Keyboard shortcuts</source>
+            <translation>&amp;Dreceres de teclat</translation>
+        </message>
+        <message>
+            <source>Pre&amp;vious tab</source>
+            <translation>Pestanya &amp;anterior</translation>
+        </message>
+        <message>
+            <source>&amp;Next tab</source>
+            <translation>Pestanya &amp;següent</translation>
+        </message>
         <message>
             <source>&amp;Redo %1</source>
             <translation>&amp;Refés %1</translation>
@@ -3177,6 +3274,10 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
     <context>
         <name>granota::ui::PointTable</name>
         <message>
+            <source>Points</source>
+            <translation>Punts</translation>
+        </message>
+        <message>
             <location filename="../ui/point_table.cpp" line="51" />
             <source>x</source>
             <translation>x</translation>
@@ -3596,6 +3697,120 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
         <message>
             <source>TikZ picture</source>
             <translation>Figura TikZ</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::ShortcutsHelp</name>
+        <message>
+            <source>Frog tab (P, S and R whenever the tab is shown, unless a field is being typed in)</source>
+            <translation>Pestanya Granota (P, S i R sempre que es mostra la pestanya, tret que s'estigui escrivint en un camp)</translation>
+        </message>
+        <message>
+            <source>De Casteljau, Fitting and Catmull-Rom canvases</source>
+            <translation>Llenços de De Casteljau, Ajust i Catmull-Rom</translation>
+        </message>
+        <message>
+            <source>The window</source>
+            <translation>La finestra</translation>
+        </message>
+        <message>
+            <source>On the canvas: a new body at the cursor, held until released</source>
+            <translation>Al llenç: un cos nou al cursor, agafat fins que es deixa anar la tecla</translation>
+        </message>
+        <message>
+            <source>Space</source>
+            <translation>Espai</translation>
+        </message>
+        <message>
+            <source>On the canvas: let go</source>
+            <translation>Al llenç: el deixa anar</translation>
+        </message>
+        <message>
+            <source>Esc</source>
+            <translation>Esc</translation>
+        </message>
+        <message>
+            <source>On the canvas: grab the body at the cursor (or the nearest one), again to let go</source>
+            <translation>Al llenç: agafa el cos que hi ha al cursor (o el més proper); un altre cop, el deixa anar</translation>
+        </message>
+        <message>
+            <source>G or Enter</source>
+            <translation>G o Retorn</translation>
+        </message>
+        <message>
+            <source>On the canvas: move the keyboard cursor, and what it holds</source>
+            <translation>Al llenç: mou el cursor del teclat, i el que agafa</translation>
+        </message>
+        <message>
+            <source>Arrows (Shift: five times further)</source>
+            <translation>Fletxes (Maj: cinc vegades més lluny)</translation>
+        </message>
+        <message>
+            <source>Reset the scene</source>
+            <translation>Reinicia l'escena</translation>
+        </message>
+        <message>
+            <source>R</source>
+            <translation>R</translation>
+        </message>
+        <message>
+            <source>One step (pausing first)</source>
+            <translation>Un pas (primer fa una pausa)</translation>
+        </message>
+        <message>
+            <source>S or .</source>
+            <translation>S o .</translation>
+        </message>
+        <message>
+            <source>Pause and run</source>
+            <translation>Pausa i continua</translation>
+        </message>
+        <message>
+            <source>P</source>
+            <translation>P</translation>
+        </message>
+        <message>
+            <source>Remove the selected point</source>
+            <translation>Elimina el punt seleccionat</translation>
+        </message>
+        <message>
+            <source>Delete, Backspace</source>
+            <translation>Supr, Retrocés</translation>
+        </message>
+        <message>
+            <source>Nudge the selected point by a round step</source>
+            <translation>Desplaça el punt seleccionat un pas rodó</translation>
+        </message>
+        <message>
+            <source>Arrows (Shift: ten times more)</source>
+            <translation>Fletxes (Maj: deu vegades més)</translation>
+        </message>
+        <message>
+            <source>Select the next or the previous point</source>
+            <translation>Selecciona el punt següent o l'anterior</translation>
+        </message>
+        <message>
+            <source>] and [</source>
+            <translation>] i [</translation>
+        </message>
+        <message>
+            <source>Move the focus into and out of the canvas, to the next or previous control</source>
+            <translation>Porta el focus al llenç i el treu cap al control següent o l'anterior</translation>
+        </message>
+        <message>
+            <source>Tab, Shift+Tab</source>
+            <translation>Tab, Maj+Tab</translation>
+        </message>
+        <message>
+            <source>, </source>
+            <translation>, </translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::ExactPanel</name>
+        <message>
+            <source>Exact computation</source>
+            <translation>Càlcul exacte</translation>
         </message>
     </context>
 </TS>

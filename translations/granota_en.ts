@@ -522,6 +522,29 @@
     <context>
         <name>granota::ui::CatmullRomTab</name>
         <message>
+            <source>Exact results and points</source>
+            <translation>Exact results and points</translation>
+        </message>
+        <message>
+            <source>Tensions τ</source>
+            <translation>Tensions τ</translation>
+        </message>
+        <message>
+            <source>none</source>
+            <translation>none</translation>
+        </message>
+        <message numerus="yes">
+            <source>Catmull-Rom curves through %n point(s), tensions τ = %1.</source>
+            <translation>
+                <numerusform>Catmull-Rom curves through %n point, tensions τ = %1.</numerusform>
+                <numerusform>Catmull-Rom curves through %n points, tensions τ = %1.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Catmull-Rom canvas</source>
+            <translation>Catmull-Rom canvas</translation>
+        </message>
+        <message>
             <source>Drag a point; double-click to add one; pick a τ in the list and move its slider, or type one and press Enter.</source>
             <translation>Drag a point; double-click to add one; pick a τ in the list and move its slider, or type one and press Enter.</translation>
         </message>
@@ -884,6 +907,10 @@
     <context>
         <name>granota::ui::DeCasteljauParameterControl</name>
         <message>
+            <source>Parameter t</source>
+            <translation>Parameter t</translation>
+        </message>
+        <message>
             <location filename="../ui/decasteljau_parameter_control.cpp" line="95" />
             <source>The parameter t ∈ [0, 1] of the curve c(t) (Def 2.4). Type a decimal or a fraction such as 1/3.</source>
             <translation>The parameter t ∈ [0, 1] of the curve c(t) (Def 2.4). Type a decimal or a fraction such as 1/3.</translation>
@@ -891,6 +918,21 @@
     </context>
     <context>
         <name>granota::ui::DeCasteljauTab</name>
+        <message numerus="yes">
+            <source>Bézier curve of degree %1 with %n control point(s); t = %2, c(t) = %3.</source>
+            <translation>
+                <numerusform>Bézier curve of degree %1 with %n control point; t = %2, c(t) = %3.</numerusform>
+                <numerusform>Bézier curve of degree %1 with %n control points; t = %2, c(t) = %3.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>No control points.</source>
+            <translation>No control points.</translation>
+        </message>
+        <message>
+            <source>De Casteljau canvas</source>
+            <translation>De Casteljau canvas</translation>
+        </message>
         <message>
             <source>polygon of the half on [t, 1]</source>
             <translation>polygon of the half on [t, 1]</translation>
@@ -1298,6 +1340,17 @@
     </context>
     <context>
         <name>granota::ui::FitTab</name>
+        <message numerus="yes">
+            <source>Least-squares Bézier curve of degree %1 through %n data point(s); squared error %2.</source>
+            <translation>
+                <numerusform>Least-squares Bézier curve of degree %1 through %n data point; squared error %2.</numerusform>
+                <numerusform>Least-squares Bézier curve of degree %1 through %n data points; squared error %2.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Fitting canvas</source>
+            <translation>Fitting canvas</translation>
+        </message>
         <message>
             <source>Show matrices</source>
             <translation>Show matrices</translation>
@@ -1756,6 +1809,14 @@ on each change would slow the window.</translation>
     <context>
         <name>granota::ui::FrogCanvas</name>
         <message>
+            <source>%1; area error %2 %.</source>
+            <translation>%1; area error %2 %.</translation>
+        </message>
+        <message>
+            <source>Nothing to grab here: move the cursor inside the body with the arrows.</source>
+            <translation>Nothing to grab here: move the cursor inside the body with the arrows.</translation>
+        </message>
+        <message>
             <source>Top of the frame: the scene's upper wall (y = 0)</source>
             <translation>Top of the frame: the scene's upper wall (y = 0)</translation>
         </message>
@@ -1841,6 +1902,10 @@ on each change would slow the window.</translation>
     </context>
     <context>
         <name>granota::ui::FrogParametersPanel</name>
+        <message>
+            <source>%1, %2</source>
+            <translation>%1, %2</translation>
+        </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="267" />
             <source>px</source>
@@ -2119,6 +2184,14 @@ on each change would slow the window.</translation>
     </context>
     <context>
         <name>granota::ui::FrogTab</name>
+        <message>
+            <source>Scene %1, %2 solver</source>
+            <translation>Scene %1, %2 solver</translation>
+        </message>
+        <message>
+            <source>Frog canvas</source>
+            <translation>Frog canvas</translation>
+        </message>
         <message>
             <source>Drag the body with the mouse; Space on the canvas spawns one at the mouse. P pauses, S steps, R resets.</source>
             <translation>Drag the body with the mouse; Space on the canvas spawns one at the mouse. P pauses, S steps, R resets.</translation>
@@ -2611,6 +2684,30 @@ on each change would slow the window.</translation>
     </context>
     <context>
         <name>granota::ui::MainWindow</name>
+        <message>
+            <source>&lt;p&gt;Everything can be done with the keyboard alone: Help ▸ Keyboard shortcuts lists every key.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;Everything can be done with the keyboard alone: Help ▸ Keyboard shortcuts lists every key.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>Tabs</source>
+            <translation>Tabs</translation>
+        </message>
+        <message>
+            <source>Keyboard shortcuts</source>
+            <translation>Keyboard shortcuts</translation>
+        </message>
+        <message>
+            <source>&amp;Keyboard shortcuts</source>
+            <translation>&amp;Keyboard shortcuts</translation>
+        </message>
+        <message>
+            <source>Pre&amp;vious tab</source>
+            <translation>Pre&amp;vious tab</translation>
+        </message>
+        <message>
+            <source>&amp;Next tab</source>
+            <translation>&amp;Next tab</translation>
+        </message>
         <message>
             <source>&amp;Redo %1</source>
             <translation>&amp;Redo %1</translation>
@@ -3177,6 +3274,10 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
     <context>
         <name>granota::ui::PointTable</name>
         <message>
+            <source>Points</source>
+            <translation>Points</translation>
+        </message>
+        <message>
             <location filename="../ui/point_table.cpp" line="51" />
             <source>x</source>
             <translation>x</translation>
@@ -3596,6 +3697,120 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
         <message>
             <source>TikZ picture</source>
             <translation>TikZ picture</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::ShortcutsHelp</name>
+        <message>
+            <source>Frog tab (P, S and R whenever the tab is shown, unless a field is being typed in)</source>
+            <translation>Frog tab (P, S and R whenever the tab is shown, unless a field is being typed in)</translation>
+        </message>
+        <message>
+            <source>De Casteljau, Fitting and Catmull-Rom canvases</source>
+            <translation>De Casteljau, Fitting and Catmull-Rom canvases</translation>
+        </message>
+        <message>
+            <source>The window</source>
+            <translation>The window</translation>
+        </message>
+        <message>
+            <source>On the canvas: a new body at the cursor, held until released</source>
+            <translation>On the canvas: a new body at the cursor, held until released</translation>
+        </message>
+        <message>
+            <source>Space</source>
+            <translation>Space</translation>
+        </message>
+        <message>
+            <source>On the canvas: let go</source>
+            <translation>On the canvas: let go</translation>
+        </message>
+        <message>
+            <source>Esc</source>
+            <translation>Esc</translation>
+        </message>
+        <message>
+            <source>On the canvas: grab the body at the cursor (or the nearest one), again to let go</source>
+            <translation>On the canvas: grab the body at the cursor (or the nearest one), again to let go</translation>
+        </message>
+        <message>
+            <source>G or Enter</source>
+            <translation>G or Enter</translation>
+        </message>
+        <message>
+            <source>On the canvas: move the keyboard cursor, and what it holds</source>
+            <translation>On the canvas: move the keyboard cursor, and what it holds</translation>
+        </message>
+        <message>
+            <source>Arrows (Shift: five times further)</source>
+            <translation>Arrows (Shift: five times further)</translation>
+        </message>
+        <message>
+            <source>Reset the scene</source>
+            <translation>Reset the scene</translation>
+        </message>
+        <message>
+            <source>R</source>
+            <translation>R</translation>
+        </message>
+        <message>
+            <source>One step (pausing first)</source>
+            <translation>One step (pausing first)</translation>
+        </message>
+        <message>
+            <source>S or .</source>
+            <translation>S or .</translation>
+        </message>
+        <message>
+            <source>Pause and run</source>
+            <translation>Pause and run</translation>
+        </message>
+        <message>
+            <source>P</source>
+            <translation>P</translation>
+        </message>
+        <message>
+            <source>Remove the selected point</source>
+            <translation>Remove the selected point</translation>
+        </message>
+        <message>
+            <source>Delete, Backspace</source>
+            <translation>Delete, Backspace</translation>
+        </message>
+        <message>
+            <source>Nudge the selected point by a round step</source>
+            <translation>Nudge the selected point by a round step</translation>
+        </message>
+        <message>
+            <source>Arrows (Shift: ten times more)</source>
+            <translation>Arrows (Shift: ten times more)</translation>
+        </message>
+        <message>
+            <source>Select the next or the previous point</source>
+            <translation>Select the next or the previous point</translation>
+        </message>
+        <message>
+            <source>] and [</source>
+            <translation>] and [</translation>
+        </message>
+        <message>
+            <source>Move the focus into and out of the canvas, to the next or previous control</source>
+            <translation>Move the focus into and out of the canvas, to the next or previous control</translation>
+        </message>
+        <message>
+            <source>Tab, Shift+Tab</source>
+            <translation>Tab, Shift+Tab</translation>
+        </message>
+        <message>
+            <source>, </source>
+            <translation>, </translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::ExactPanel</name>
+        <message>
+            <source>Exact computation</source>
+            <translation>Exact computation</translation>
         </message>
     </context>
 </TS>

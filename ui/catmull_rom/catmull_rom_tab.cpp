@@ -247,6 +247,7 @@ void CatmullRomTab::buildUi()
     controlsLayout->addWidget(m_curveBox);
     controlsLayout->addStretch(1);
     auto* scroll = new QScrollArea(this);
+    scroll->setFocusPolicy(Qt::NoFocus); // Tab goes to its controls, and it scrolls to the one focused
     scroll->setWidget(controls);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
@@ -287,10 +288,12 @@ QString CatmullRomTab::hint() const
 
 void CatmullRomTab::retranslate()
 {
+    updateCanvasSummary();
     m_tensionBox->setTitle(tr("Tensions τ (Def 2.8)"));
     m_tensionBox->setToolTip(tr("The tension τ scales the tangents p′(0) = τ(p2 − p0), p′(1) = τ(p3 − p1) of every "
                                 "segment (Def 2.8): 0 gives straight segments, 1/2 is the usual value, negative "
                                 "values turn the tangents round (Ex 2.12). One curve per τ, in its colour."));
+    m_tauList->setAccessibleName(tr("Tensions τ"));
     m_tauList->setToolTip(tr("The tensions drawn, each with its colour and Processing's curveTightness(s), "
                              "τ = (1 − s)/2. Select one for the slider, the blending plot and the tangent table."));
     m_tauEdit->setPlaceholderText(tr("τ, e.g. 1/2 or -0.5"));
@@ -340,6 +343,7 @@ void CatmullRomTab::retranslate()
                            "(Prop 2.3), blending functions (Cor 2.1), and the comparisons of §2.3."));
     m_canvas->setToolTip(tr("Drag a point to move it; double-click to add one; Delete removes the selected point; "
                             "drag the paper to pan, wheel to zoom."));
+    m_sideTabs->setAccessibleName(tr("Exact results and points"));
     m_sideTabs->setTabText(0, tr("Exact results"));
     m_sideTabs->setTabText(1, tr("Points"));
     m_sideTabs->setTabToolTip(0, m_exact->toolTip());
@@ -549,6 +553,7 @@ void CatmullRomTab::recompute()
     m_exact->setContent(CatmullRomReport::html(m_editor->points(), m_settings, m_scene));
     updatePlot();
     m_canvas->update();
+    updateCanvasSummary();
     for (const CatmullRomCurve& c : m_scene.curves)
         if (!c.error.isEmpty()) {
             refuse(c.error);
@@ -556,6 +561,17 @@ void CatmullRomTab::recompute()
         }
     if (m_settings.spline && !m_scene.splineError.isEmpty())
         refuse(m_scene.splineError);
+}
+
+void CatmullRomTab::updateCanvasSummary()
+{
+    QStringList taus;
+    for (const Rational& tau : m_settings.taus)
+        taus << displayText(toString(tau));
+    m_canvas->setAccessibleName(tr("Catmull-Rom canvas"));
+    m_canvas->setAccessibleDescription(
+        tr("Catmull-Rom curves through %n point(s), tensions τ = %1.", nullptr, static_cast<int>(m_editor->points().size()))
+            .arg(taus.isEmpty() ? tr("none") : taus.join(QStringLiteral("; "))));
 }
 
 void CatmullRomTab::updatePlot()

@@ -77,6 +77,8 @@ private:
     void applySettings(const CatmullRomSettings& s);
     void pointsEdited();
     void recompute();
+    /// The canvas's accessible name and description: the tensions and the points (screen readers).
+    void updateCanvasSummary();
     void syncControls();
     void updatePlot();
     void updateContentBounds(bool force);

@@ -1,7 +1,9 @@
 #include "ui/common/curve_canvas.h"
 #include "core/exact/round_step.h"
+#include "ui/common/focus_frame.h"
 #include "ui/common/number_text.h"
 
+#include <QFocusEvent>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QWheelEvent>
@@ -210,6 +212,8 @@ void CurveCanvas::paintEvent(QPaintEvent*)
 {
     QPainter painter(this);
     render(painter, rect());
+    if (hasFocus())
+        drawFocusFrame(painter, rect(), palette(), m_style.scale); // on screen only, never exported
 }
 
 void CurveCanvas::resizeEvent(QResizeEvent* event)
@@ -248,6 +252,18 @@ void CurveCanvas::mouseReleaseEvent(QMouseEvent*)
         m_panning = false;
         unsetCursor();
     }
+}
+
+void CurveCanvas::focusInEvent(QFocusEvent* event)
+{
+    update(); // the focus frame
+    QWidget::focusInEvent(event);
+}
+
+void CurveCanvas::focusOutEvent(QFocusEvent* event)
+{
+    update();
+    QWidget::focusOutEvent(event);
 }
 
 void CurveCanvas::wheelEvent(QWheelEvent* event)

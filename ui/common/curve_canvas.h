@@ -2,7 +2,8 @@
 /// \file curve_canvas.h
 /// A QPainter canvas in model coordinates: paper, grid and axes, then the layers a tab adds
 /// (curves, constructions, handles). Pan with a drag on empty paper or the middle button,
-/// zoom with the wheel. The same render() draws the screen and every export.
+/// zoom with the wheel. While it has the focus it draws a focus frame (focus_frame.h) on
+/// screen. The same render() draws the screen and every export.
 
 #include "ui/common/canvas_style.h"
 #include "ui/common/drawable.h"
@@ -68,6 +69,8 @@ protected:
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
+    void focusInEvent(QFocusEvent* event) override;
+    void focusOutEvent(QFocusEvent* event) override;
 
 private:
     void drawGrid(QPainter& painter, const ViewTransform& view) const;

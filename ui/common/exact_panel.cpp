@@ -2,6 +2,7 @@
 #include "ui/common/number_text.h"
 #include "ui/common/presentation_scale.h"
 
+#include <QEvent>
 #include <QRegularExpression>
 #include <QScrollBar>
 #include <QTextDocument>
@@ -11,6 +12,8 @@ namespace granota::ui {
 ExactPanel::ExactPanel(QWidget* parent) : QTextBrowser(parent)
 {
     setOpenLinks(false);
+    setTabChangesFocus(true); // Tab leaves the panel
+    setAccessibleName(tr("Exact computation"));
     setMinimumWidth(280);
     document()->setDefaultStyleSheet(QStringLiteral(
         "h3 { margin-top: 10px; margin-bottom: 4px; }"
@@ -89,6 +92,13 @@ QString ExactPanel::matrix(const QString& name, const std::vector<std::vector<st
 QString ExactPanel::note(const QString& text)
 {
     return QStringLiteral("<p class=\"note\">%1</p>").arg(text.toHtmlEscaped());
+}
+
+void ExactPanel::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        setAccessibleName(tr("Exact computation"));
+    QTextBrowser::changeEvent(event);
 }
 
 } // namespace granota::ui

@@ -37,6 +37,10 @@ public:
     /// A note (a slip of the thesis, a warning), set apart.
     static QString note(const QString& text);
 
+protected:
+    /// The accessible name, again in the new language.
+    void changeEvent(QEvent* event) override;
+
 private:
     QString m_plain;
     bool m_presentation = false;

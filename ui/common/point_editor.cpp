@@ -395,9 +395,13 @@ bool PointEditor::eventFilter(QObject* watched, QEvent* event)
         case Qt::Key_Right: nudge(1, 0, tenTimes); return m_selected >= 0;
         case Qt::Key_Up: nudge(0, 1, tenTimes); return m_selected >= 0;
         case Qt::Key_Down: nudge(0, -1, tenTimes); return m_selected >= 0;
-        case Qt::Key_Tab:
+        // ] and [ select the next and the previous point; Tab is left to move the focus on.
+        case Qt::Key_BracketRight:
+        case Qt::Key_BracketLeft:
             if (!m_points.empty()) {
-                setSelected((m_selected + 1) % static_cast<int>(m_points.size()));
+                const int n = static_cast<int>(m_points.size());
+                const int step = e->key() == Qt::Key_BracketRight ? 1 : n - 1;
+                setSelected(m_selected < 0 ? (step == 1 ? 0 : n - 1) : (m_selected + step) % n);
                 return true;
             }
             return false;

@@ -8,7 +8,8 @@
 /// on the nearest edge of the polygon (or at an end); right-click for a menu.
 /// Keys: Delete removes the selected point, arrows nudge it to the next multiple of a round
 /// step (the grid step when snapping, else 1, 2 or 5 × 10^k worth at most kNudgePixels on
-/// screen; Shift ×10), exactly (round_step.h), Tab selects the next point. Every edit goes
+/// screen; Shift ×10), exactly (round_step.h), ] and [ select the next and the previous point (Tab moves the
+/// focus on, as everywhere). Every edit goes
 /// through the QUndoStack given to the constructor; successive nudges of one point are one step.
 ///
 /// Past kLabelledPointsUpTo points the handles are drawn small and unlabelled (the selected one

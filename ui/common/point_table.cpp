@@ -5,6 +5,7 @@
 #include "ui/common/number_text.h"
 #include "ui/common/point_editor.h"
 
+#include <QEvent>
 #include <QHeaderView>
 
 #include <cmath>
@@ -18,6 +19,8 @@ PointTable::PointTable(PointEditor* editor, QWidget* parent) : QTableWidget(pare
     verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     setSelectionBehavior(QAbstractItemView::SelectRows);
     setSelectionMode(QAbstractItemView::SingleSelection);
+    setTabKeyNavigation(false); // Tab leaves the table (the arrows move between cells)
+    setAccessibleName(tr("Points"));
     connect(m_editor, &PointEditor::pointsChanged, this, &PointTable::refresh);
     connect(m_editor, &PointEditor::selectionChanged, this, [this](int index) {
         if (index >= 0 && index < rowCount())
@@ -106,6 +109,13 @@ void PointTable::cellEdited(int row, int column)
     Point p = m_editor->points()[row];
     (column == 0 ? p.x : p.y) = v;
     m_editor->movePoint(row, p);
+}
+
+void PointTable::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange)
+        setAccessibleName(tr("Points"));
+    QTableWidget::changeEvent(event);
 }
 
 } // namespace granota::ui

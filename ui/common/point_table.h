@@ -26,6 +26,10 @@ public:
 signals:
     void message(const QString& text);
 
+protected:
+    /// The accessible name, again in the new language.
+    void changeEvent(QEvent* event) override;
+
 private:
     void refresh();
     void cellEdited(int row, int column);

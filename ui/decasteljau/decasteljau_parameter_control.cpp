@@ -106,6 +106,8 @@ void DeCasteljauParameterControl::retranslate()
     m_label->setToolTip(tip);
     m_slider->setToolTip(tip);
     m_spin->setToolTip(tip);
+    m_slider->setAccessibleName(tr("Parameter t"));
+    m_spin->setAccessibleName(tr("Parameter t"));
 }
 
 void DeCasteljauParameterControl::setValue(double t)

@@ -472,6 +472,7 @@ void DeCasteljauTab::pointsChanged()
                                                          part + 1));
     }
     m_levels = deCasteljau(points, m_t);
+    updateCanvasSummary();
     if (m_editor->dragging() || isPlaying()) {
         schedulePanel();
     } else {
@@ -499,6 +500,7 @@ void DeCasteljauTab::parameterChanged()
 {
     if (!m_editor->points().empty())
         m_levels = deCasteljau(m_editor->points(), m_t);
+    updateCanvasSummary();
     if (isPlaying() || m_editor->dragging())
         schedulePanel(); // the triangle at t, a few times a second while t runs
     else
@@ -767,8 +769,24 @@ QRectF DeCasteljauTab::contentBounds() const
 
 // ---------------------------------------------------------------- TabPage
 
+void DeCasteljauTab::updateCanvasSummary()
+{
+    m_canvas->setAccessibleName(tr("De Casteljau canvas"));
+    const auto& points = m_editor->points();
+    if (points.empty() || m_levels.levels.empty()) {
+        m_canvas->setAccessibleDescription(tr("No control points."));
+        return;
+    }
+    const Point c = m_levels.point();
+    m_canvas->setAccessibleDescription(tr("Bézier curve of degree %1 with %n control point(s); t = %2, c(t) = %3.",
+                                          nullptr, static_cast<int>(points.size()))
+                                           .arg(static_cast<int>(points.size()) - 1)
+                                           .arg(displayNumber(m_t), displayPoint(c.x, c.y)));
+}
+
 void DeCasteljauTab::retranslate()
 {
+    updateCanvasSummary();
     m_parameter->retranslate();
     setPlaying(isPlaying()); // the button's text
     m_play->setToolTip(tr("Animate t from 0 to 1 and around again: watch c(t) trace the curve (Def 2.4)."));

@@ -104,6 +104,8 @@ private:
     void updateExactSymbolic();
     void updateExactPanel();
     void updateWarning();
+    /// The canvas's accessible name and description: the curve, t and c(t) (screen readers).
+    void updateCanvasSummary();
     void advanceAnimation();
     void setToggle(bool& flag, QCheckBox* box, bool on);
     /// The user's changes (docs/tabs.md, "Undo"): each is one undo step that gives the

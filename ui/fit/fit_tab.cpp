@@ -603,6 +603,14 @@ void FitTab::updateReadouts()
     }
     m_rmsLabel->setVisible(m_fit.has_value());
     m_maxLabel->setVisible(m_fit.has_value());
+    // The canvas, for screen readers: the degree, the data and the error.
+    canvas()->setAccessibleName(tr("Fitting canvas"));
+    canvas()->setAccessibleDescription(
+        m_fit ? tr("Least-squares Bézier curve of degree %1 through %n data point(s); squared error %2.", nullptr,
+                   static_cast<int>(q.size()))
+                    .arg(m_settings.degree)
+                    .arg(number(m_fit->sse))
+              : tr("No fit: %1").arg(m_fitError));
     m_condLabel->setVisible(m_fit.has_value());
     // The core decides what to warn about (fit_warning.h); the tab only words it.
     FitOptions options;

@@ -1,5 +1,6 @@
 #include "ui/frog/frog_canvas.h"
 #include "core/base/math_constants.h"
+#include "ui/common/focus_frame.h"
 #include "ui/common/number_text.h"
 #include "ui/common/presentation_scale.h"
 
@@ -76,6 +77,7 @@ void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
     m_fitter.reset();
     m_previousValid = false;
     m_pressed = false;
+    m_keyboardHeld = false;
     m_spawnHeld = false;
     m_fitNsSum = 0;
     m_fits = 0;
@@ -229,9 +231,25 @@ void FrogCanvas::advance()
     ++m_steps;
 }
 
+void FrogCanvas::setSceneSummary(const QString& summary)
+{
+    m_sceneSummary = summary;
+    updateAccessibleDescription();
+}
+
+void FrogCanvas::updateAccessibleDescription()
+{
+    if (!m_sim || m_sim->bodyCount() == 0) {
+        setAccessibleDescription(m_sceneSummary);
+        return;
+    }
+    setAccessibleDescription(tr("%1; area error %2 %.").arg(m_sceneSummary, displayFixed(m_sim->readouts().areaErrorPercent, 1)));
+}
+
 void FrogCanvas::refreshTexts()
 {
     m_textClock.restart();
+    updateAccessibleDescription();
     const auto mean = [](double& sum, int& count, double unit) {
         const double v = count > 0 ? sum / count / unit : 0;
         sum = 0;
@@ -362,6 +380,10 @@ void FrogCanvas::paintEvent(QPaintEvent*)
     const qint64 t0 = m_clock.nsecsElapsed();
     QPainter p(this);
     render(p, QRectF(rect()));
+    if (hasFocus()) { // on screen only: the keyboard cursor and the focus frame
+        drawKeyboardCursor(p);
+        drawFocusFrame(p, QRectF(rect()), palette(), m_style.scale);
+    }
     m_drawNsSum += double(m_clock.nsecsElapsed() - t0);
     ++m_draws;
 }
@@ -759,12 +781,7 @@ void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
     m_sim->move(m_mouse);
     reportMouseRadius();
     if (!m_pressed && m_sim->scene().has("grab")) {
-        bool inside = false;
-        for (int i = 0; i < m_sim->bodyCount() && !inside; ++i) {
-            m_sim->bodyVertices(i, m_vertices);
-            inside = pointInPolygon(m_mouse, m_vertices);
-        }
-        if (inside)
+        if (insideABody(m_mouse))
             setCursor(Qt::OpenHandCursor);
         else
             unsetCursor();
@@ -786,14 +803,139 @@ void FrogCanvas::mouseReleaseEvent(QMouseEvent* event)
 {
     if (!m_sim || event->button() != Qt::LeftButton || !m_pressed)
         return;
+    m_keyboardHeld = false;
     m_sim->release(); // Annex II, mouseReleased
     m_pressed = false;
     unsetCursor();
     update();
 }
 
+void FrogCanvas::drawKeyboardCursor(QPainter& p) const
+{
+    if (!m_sim)
+        return;
+    const QPointF c = toWidget(m_mouse);
+    const double k = m_style.scale, r = 9 * k;
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing, true);
+    p.setBrush(Qt::NoBrush);
+    for (const auto& [colour, width] : {std::pair{QColor(Qt::white), 4.0 * k}, std::pair{palette().color(QPalette::Highlight), 2.0 * k}}) {
+        p.setPen(QPen(colour, width));
+        p.drawEllipse(c, r, r);
+        p.drawLine(c - QPointF(2 * r, 0), c - QPointF(r, 0));
+        p.drawLine(c + QPointF(r, 0), c + QPointF(2 * r, 0));
+        p.drawLine(c - QPointF(0, 2 * r), c - QPointF(0, r));
+        p.drawLine(c + QPointF(0, r), c + QPointF(0, 2 * r));
+    }
+    p.restore();
+}
+
+bool FrogCanvas::insideABody(Point at)
+{
+    for (int i = 0; i < m_sim->bodyCount(); ++i) {
+        m_sim->bodyVertices(i, m_vertices);
+        if (pointInPolygon(at, m_vertices))
+            return true;
+    }
+    return false;
+}
+
+int FrogCanvas::nearestBody(Point at)
+{
+    int best = -1;
+    double bestDistance = 0;
+    for (int i = 0; i < m_sim->bodyCount(); ++i) {
+        m_sim->bodyVertices(i, m_vertices);
+        for (const Point& v : m_vertices) {
+            const double d = std::hypot(v.x - at.x, v.y - at.y);
+            if (best < 0 || d < bestDistance) {
+                best = i;
+                bestDistance = d;
+            }
+        }
+    }
+    return best;
+}
+
+bool FrogCanvas::keyboardGrab()
+{
+    if (!m_sim || m_pressed)
+        return false;
+    if (!m_mouseKnown) {
+        m_mouse = toScene(QPointF(rect().center()));
+        m_mouseKnown = true;
+    }
+    // Outside every body, the cursor first jumps to the centre of the nearest one.
+    if (const int body = insideABody(m_mouse) ? -1 : nearestBody(m_mouse); body >= 0) {
+        m_sim->bodyVertices(body, m_vertices);
+        Point sum{0, 0};
+        for (const Point& v : m_vertices)
+            sum = {sum.x + v.x / double(m_vertices.size()), sum.y + v.y / double(m_vertices.size())};
+        m_mouse = sum;
+    }
+    m_sim->move(m_mouse);
+    reportMouseRadius();
+    m_pressed = m_sim->press(m_mouse);
+    m_keyboardHeld = m_pressed;
+    if (!m_pressed && m_sim->scene().has("grab"))
+        emit statusMessage(tr("Nothing to grab here: move the cursor inside the body with the arrows."));
+    update();
+    return m_pressed;
+}
+
+void FrogCanvas::keyboardRelease()
+{
+    if (!m_sim || !m_keyboardHeld)
+        return;
+    m_sim->release();
+    m_pressed = false;
+    m_keyboardHeld = false;
+    update();
+}
+
+void FrogCanvas::moveKeyboardCursor(double dx, double dy)
+{
+    if (!m_sim)
+        return;
+    if (!m_mouseKnown) {
+        m_mouse = toScene(QPointF(rect().center()));
+        m_mouseKnown = true;
+    }
+    const double W = m_sim->scene().params.width, H = m_sim->scene().params.height;
+    m_mouse = {std::clamp(m_mouse.x + dx, 0.0, W - 1), std::clamp(m_mouse.y + dy, 0.0, H - 1)};
+    m_sim->move(m_mouse);
+    reportMouseRadius();
+    update();
+}
+
 void FrogCanvas::keyPressEvent(QKeyEvent* event)
 {
+    // The keyboard's grab (docs/classroom.md): the arrows move the cursor (Shift: five times
+    // further), G or Enter grabs at it and lets go, Esc lets go.
+    const double step = kKeyboardStep * (event->modifiers() & Qt::ShiftModifier ? 5 : 1);
+    switch (event->key()) {
+    case Qt::Key_Left: moveKeyboardCursor(-step, 0); return;
+    case Qt::Key_Right: moveKeyboardCursor(step, 0); return;
+    case Qt::Key_Up: moveKeyboardCursor(0, -step); return;
+    case Qt::Key_Down: moveKeyboardCursor(0, step); return;
+    case Qt::Key_G:
+    case Qt::Key_Return:
+    case Qt::Key_Enter:
+        if (event->isAutoRepeat())
+            return;
+        if (m_keyboardHeld)
+            keyboardRelease();
+        else
+            keyboardGrab();
+        return;
+    case Qt::Key_Escape:
+        if (m_keyboardHeld) {
+            keyboardRelease();
+            return;
+        }
+        break;
+    default: break;
+    }
     if (event->key() != Qt::Key_Space) {
         QWidget::keyPressEvent(event);
         return;
@@ -848,8 +990,16 @@ void FrogCanvas::hideEvent(QHideEvent* event)
     updateTimer();
 }
 
+void FrogCanvas::focusInEvent(QFocusEvent* event)
+{
+    update(); // the focus frame and the keyboard cursor
+    QWidget::focusInEvent(event);
+}
+
 void FrogCanvas::focusOutEvent(QFocusEvent* event)
 {
+    keyboardRelease();
+    update();
     // The key release would go elsewhere: let go of a frog held by the space bar now.
     if (m_spawnHeld && m_sim)
         m_sim->releaseSpawn();

@@ -3,7 +3,8 @@
 /// The live soft-body canvas of the frog lab (docs/scenes.md): one Simulation, stepped once per
 /// frame by a 60 Hz timer as Processing's draw(), drawn in the thesis's order (background,
 /// back legs, body, front legs, head) in the scene's own Processing pixels, letterboxed into
-/// the widget. The mouse grabs and the space bar spawns as in Annex II. Drawing reuses
+/// the widget. The mouse grabs and the space bar spawns as in Annex II; the keyboard grabs too (arrows, G
+/// or Enter, Esc: docs/classroom.md), and a focus frame shows when the keys go here. Drawing reuses
 /// member buffers: a frame allocates nothing in this class once warm.
 
 #include "core/softbody/simulation.h"
@@ -58,6 +59,8 @@ public:
     /// frames, slower than real time, and says so, rather than blocking the event loop
     /// frame after frame (a body of 10000 sides: 39 ms a step, one step every 4 frames).
     static constexpr long kFrameWork = 24000;
+    /// Scene pixels one arrow key moves the keyboard cursor (Shift: five times that).
+    static constexpr double kKeyboardStep = 10.0;
 
     explicit FrogCanvas(QWidget* parent = nullptr);
     ~FrogCanvas() override;
@@ -89,6 +92,9 @@ public:
     double fitMicroseconds() const { return m_fitShownUs; }
 
     void setPresentation(bool on);
+    /// What the canvas shows, for screen readers (the tab gives the scene and the solver): its
+    /// accessible description is this and the area error, refreshed with the text panel.
+    void setSceneSummary(const QString& summary);
 
     /// The outline drawn for body `body`, in scene pixels: the polygon, the seed's
     /// curveVertex outline, the closed Catmull-Rom curve or the fitted Bézier curve, as the
@@ -128,6 +134,7 @@ protected:
     void showEvent(QShowEvent* event) override;
     void hideEvent(QHideEvent* event) override;
     void changeEvent(QEvent* event) override;
+    void focusInEvent(QFocusEvent* event) override;
     void focusOutEvent(QFocusEvent* event) override;
 
 private:
@@ -135,8 +142,17 @@ private:
     void advance();
     void updateTimer();
     void refreshTexts();
+    void updateAccessibleDescription();
     void reportMouseRadius();
     QRectF sceneRectIn(const QRectF& target) const;
+    /// The keyboard's grab: the cursor (the simulation's mouse) moved by the arrows, drawn
+    /// while the canvas has the focus; G or Enter grabs at it, again or Esc lets go.
+    void moveKeyboardCursor(double dx, double dy);
+    bool keyboardGrab();
+    void keyboardRelease();
+    int nearestBody(Point at);
+    bool insideABody(Point at); ///< inside the polygon of some body (reuses m_vertices)
+    void drawKeyboardCursor(QPainter& p) const;
 
     void drawScene(QPainter& p, double pixel);
     void drawBody(QPainter& p, int body, double pixel);
@@ -166,6 +182,8 @@ private:
     bool m_mouseKnown = false;
     bool m_pressed = false;
     bool m_spawnHeld = false;
+    bool m_keyboardHeld = false; // the grab was made with G or Enter
+    QString m_sceneSummary;      // setSceneSummary
     double m_reportedRadius = -1; // last mouseRadiusChanged, −1 before any
     double m_startAreaError = 0;  // the area error the simulation started with (blownUp)
 

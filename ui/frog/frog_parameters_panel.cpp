@@ -14,6 +14,7 @@
 #include <QEvent>
 #include <QLabel>
 
+#include <algorithm>
 #include <cmath>
 
 namespace granota::ui {
@@ -305,6 +306,13 @@ void FrogParametersPanel::retranslate()
         r.label->setToolTip(tipFor(r.key, r.sub));
     }
     for (const Field& f : m_fields) {
+        // The name a screen reader gives the field: its row's label, and which coordinate.
+        const auto parts = std::count_if(m_fields.begin(), m_fields.end(),
+                                         [&f](const Field& g) { return g.key == f.key && g.sub == f.sub; });
+        const QString label = labelFor(f.key, f.sub);
+        f.spin->setAccessibleName(parts == 2 ? tr("%1, %2").arg(label, f.index == 0 ? QStringLiteral("x") : QStringLiteral("y"))
+                                  : parts > 2 ? tr("%1, %2").arg(label).arg(f.index + 1)
+                                              : label);
         const QString unit = unitFor(f.key);
         f.spin->setSuffix(unit.isEmpty() ? QString() : QStringLiteral(" ") + unit);
         f.spin->setToolTip(tipFor(f.key, f.sub));
@@ -313,6 +321,7 @@ void FrogParametersPanel::retranslate()
         for (int i = 0; i < m_grab->count(); ++i)
             m_grab->setItemText(i, translated(grabChoices()[static_cast<std::size_t>(i)].label));
         m_grab->setToolTip(tipFor(m_grab->property("key").toString(), QString()));
+        m_grab->setAccessibleName(labelFor(m_grab->property("key").toString(), QString()));
     }
     if (m_fileOnly) {
         // One note: that of the first file-only key in the table's order (obstacles before shapes).

@@ -101,7 +101,7 @@ FrogTab::FrogTab(QWidget* parent)
     m_reset = new QPushButton(m_sceneBox);
     m_reset->setObjectName(QStringLiteral("frogReset"));
     for (QPushButton* b : {m_pause, m_step, m_reset})
-        b->setFocusPolicy(Qt::NoFocus); // the space bar stays with the canvas (Annex II's spawn)
+        b->setFocusPolicy(Qt::TabFocus); // Tab reaches them; a click leaves the space bar with the canvas (Annex II's spawn)
     m_solverNote = new QLabel(m_sceneBox);
     m_solverNote->setObjectName(QStringLiteral("frogSolverNote"));
     m_solverNote->setWordWrap(true);
@@ -174,6 +174,7 @@ FrogTab::FrogTab(QWidget* parent)
     column->addStretch(1);
 
     auto* scroll = new QScrollArea(this);
+    scroll->setFocusPolicy(Qt::NoFocus); // Tab goes to its controls, and it scrolls to the one focused
     scroll->setWidget(side);
     scroll->setWidgetResizable(true);
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
@@ -227,10 +228,12 @@ FrogTab::FrogTab(QWidget* parent)
         }
     });
 
-    // Single keys, while the focus is in the tab (the space bar is the canvas's spawn key).
+    // Single keys, whenever the tab is shown (a hidden widget's shortcut never fires), even
+    // before anything in it was clicked; a text field being typed in keeps its letters (it
+    // takes them first, as ShortcutOverride). The space bar is the canvas's spawn key.
     const auto shortcut = [this](QKeySequence keys, auto slot) {
         auto* s = new QShortcut(keys, this);
-        s->setContext(Qt::WidgetWithChildrenShortcut);
+        s->setContext(Qt::WindowShortcut);
         connect(s, &QShortcut::activated, this, slot);
     };
     shortcut(QKeySequence(Qt::Key_P), [this] { m_pause->toggle(); });
@@ -555,6 +558,9 @@ void FrogTab::retranslate()
     m_solverCombo->setToolTip(tr("Seed: the thesis's own schemes, reproduced faithfully (Annex II). Stable: beyond the "
                                  "thesis, position-based constraints with compliance (XPBD) that hold the target "
                                  "area and stay stable on stiff and extreme settings. Switching starts the scene again."));
+    m_canvas->setAccessibleName(tr("Frog canvas"));
+    m_canvas->setSceneSummary(tr("Scene %1, %2 solver")
+                                  .arg(sceneTitle(fromStd(m_scene.name)), m_solverCombo->itemText(m_solver == SolverKind::Stable ? 1 : 0)));
     m_pause->setText(m_pause->isChecked() ? tr("Run") : tr("Pause"));
     m_pause->setToolTip(tr("Pause or run the animation, one fixed step per frame at 60 frames per second (P)."));
     m_step->setText(tr("Step"));

@@ -8,6 +8,7 @@
 #include "ui/fit/fit_tab.h"
 #include "ui/frog/frog_tab.h"
 #include "ui/shell/language.h"
+#include "ui/shell/shortcuts_help.h"
 #include "ui/shell/tab_page.h"
 #include "ui/shell/tikz_options_dialog.h"
 #include "ui/common/vertical_scroll_area.h"
@@ -261,6 +262,18 @@ void MainWindow::createActions()
         connect(a, &QAction::triggered, this, [this, i] { m_tabs->setCurrentIndex(i); });
         m_tabActions.push_back(a);
     }
+    // Ctrl+Tab and Ctrl+Page Down, Ctrl+Shift+Tab and Ctrl+Page Up, wherever the focus is
+    // (QTabWidget's own only while the focus is inside it, and never Page Up/Down).
+    const auto cycle = [this](int by) {
+        m_tabs->setCurrentIndex((m_tabs->currentIndex() + by + m_tabs->count()) % m_tabs->count());
+    };
+    m_nextTab = new QAction(this);
+    m_nextTab->setShortcuts({QKeySequence(Qt::CTRL | Qt::Key_Tab), QKeySequence(Qt::CTRL | Qt::Key_PageDown)});
+    connect(m_nextTab, &QAction::triggered, this, [cycle] { cycle(1); });
+    m_previousTab = new QAction(this);
+    m_previousTab->setShortcuts(
+        {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Tab), QKeySequence(Qt::CTRL | Qt::Key_PageUp)});
+    connect(m_previousTab, &QAction::triggered, this, [cycle] { cycle(-1); });
 
     auto* languages = new QActionGroup(this);
     m_catalan = new QAction(QStringLiteral("Català"), languages);
@@ -285,6 +298,9 @@ void MainWindow::createActions()
     m_guide = new QAction(this);
     m_guide->setShortcut(QKeySequence::HelpContents);
     connect(m_guide, &QAction::triggered, this, &MainWindow::showGuide);
+    m_shortcutsAction = new QAction(this);
+    m_shortcutsAction->setObjectName(QStringLiteral("keyboardShortcuts"));
+    connect(m_shortcutsAction, &QAction::triggered, this, &MainWindow::showShortcuts);
     m_about = new QAction(this);
     connect(m_about, &QAction::triggered, this, &MainWindow::showAbout);
 }
@@ -320,6 +336,8 @@ void MainWindow::createMenus()
     m_viewMenu->addSeparator();
     for (QAction* a : m_tabActions)
         m_viewMenu->addAction(a);
+    m_viewMenu->addAction(m_nextTab);
+    m_viewMenu->addAction(m_previousTab);
     m_viewMenu->addSeparator();
     m_languageMenu = m_viewMenu->addMenu(QString());
     m_languageMenu->addAction(m_catalan);
@@ -331,6 +349,7 @@ void MainWindow::createMenus()
 
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->addAction(m_guide);
+    m_helpMenu->addAction(m_shortcutsAction);
     m_helpMenu->addAction(m_about);
 }
 
@@ -345,6 +364,7 @@ void MainWindow::retranslateUndoRedo()
 
 void MainWindow::retranslate()
 {
+    m_tabs->setAccessibleName(tr("Tabs"));
     if (TabPage* page = currentTab())
         m_hintLabel->setText(page->hint());
     m_fileMenu->setTitle(tr("&File"));
@@ -376,6 +396,8 @@ void MainWindow::retranslate()
         m_tabActions[i]->setText(tr("Show %1").arg(m_pages[i]->title()));
         m_tabs->setTabText(i, m_pages[i]->title());
     }
+    m_nextTab->setText(tr("&Next tab"));
+    m_previousTab->setText(tr("Pre&vious tab"));
     m_languageMenu->setTitle(tr("&Language"));
     m_examplesMenu->setTitle(tr("E&xamples"));
     const QString exampleTitles[] = {
@@ -397,6 +419,7 @@ void MainWindow::retranslate()
         m_exampleActions[i]->setText(exampleTitles[i]);
     m_helpMenu->setTitle(tr("&Help"));
     m_guide->setText(tr("&User guide"));
+    m_shortcutsAction->setText(tr("&Keyboard shortcuts"));
     m_about->setText(tr("&About Granota"));
     m_cursorLabel->setToolTip(tr("Position of the mouse in the plane"));
     m_document->retranslate();
@@ -566,7 +589,29 @@ void MainWindow::showGuide()
                    "<p><b>Frog</b> (chapter 4): the soft body, stage by stage.</p>"
                    "<p>Double-click to add a point, Delete to remove it, arrows to nudge it, "
                    "Ctrl+Z to undo. The Examples menu loads every worked example of chapter 2. "
-                   "F11 switches presentation mode.</p>"));
+                   "F11 switches presentation mode.</p>")
+                + tr("<p>Everything can be done with the keyboard alone: Help ▸ Keyboard shortcuts lists every key.</p>"));
+    box.exec();
+}
+
+QString MainWindow::shortcutsHelp() const
+{
+    QList<QAction*> actions;
+    for (QMenu* menu : {m_fileMenu, m_editMenu, m_viewMenu, m_examplesMenu, m_helpMenu})
+        for (QAction* a : menu->actions())
+            if (a->menu())
+                actions += a->menu()->actions();
+            else
+                actions += a;
+    return ShortcutsHelp::html(actions);
+}
+
+void MainWindow::showShortcuts()
+{
+    QMessageBox box(this);
+    box.setWindowTitle(tr("Keyboard shortcuts"));
+    box.setTextFormat(Qt::RichText);
+    box.setText(shortcutsHelp());
     box.exec();
 }
 

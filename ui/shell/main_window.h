@@ -37,6 +37,9 @@ public:
     bool showTab(const QString& key);
     TabPage* tab(const QString& key) const;
     TabPage* currentTab() const;
+    /// Help ▸ Keyboard shortcuts, as rich text: every action's keys, then the canvases' and
+    /// the Frog tab's (shortcuts_help.h).
+    QString shortcutsHelp() const;
     const QVector<TabPage*>& tabs() const { return m_pages; }
     FrogTab* frogTab() const;
 
@@ -92,6 +95,7 @@ private:
     void exportFramesDialog();
     void showMessage(const QString& text);
     void showGuide();
+    void showShortcuts();
     void showAbout();
 
     QTabWidget* m_tabs = nullptr;
@@ -115,7 +119,8 @@ private:
     QAction* m_reportsAction = nullptr;
     QAction *m_presentationAction = nullptr, *m_zoomIn = nullptr, *m_zoomOut = nullptr, *m_fit = nullptr;
     QAction *m_catalan = nullptr, *m_english = nullptr;
-    QAction *m_guide = nullptr, *m_about = nullptr;
+    QAction *m_guide = nullptr, *m_about = nullptr, *m_shortcutsAction = nullptr;
+    QAction *m_nextTab = nullptr, *m_previousTab = nullptr;
     QVector<QAction*> m_tabActions;
     QVector<QAction*> m_exampleActions;
 };

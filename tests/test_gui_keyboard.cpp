@@ -1,0 +1,291 @@
+// The keyboard and accessibility pass (docs/classroom.md, "Keyboard"): a projector remote or
+// a keyboard alone drives every tab of the shown main window, with real key events on the
+// widget that has the focus (QTest::keyClick), and a screen reader finds a name for every
+// control and a summary of every canvas. The same executable runs offscreen and, through
+// tests/real_window/run.sh, under Xvfb with a window manager.
+#include "core/curves/bezier/de_casteljau.h"
+#include "ui/common/curve_canvas.h"
+#include "ui/common/number_text.h"
+#include "ui/common/point_editor.h"
+#include "ui/decasteljau/decasteljau_tab.h"
+#include "ui/frog/frog_canvas.h"
+#include "ui/frog/frog_tab.h"
+#include "ui/shell/language.h"
+#include "ui/shell/main_window.h"
+#include "ui/shell/tab_page.h"
+
+#include "main_window_steps.h"
+
+#include <QAbstractButton>
+#include <QAbstractScrollArea>
+#include <QAbstractSpinBox>
+#include <QAccessible>
+#include <QAction>
+#include <QApplication>
+#include <QComboBox>
+#include <QImage>
+#include <QPushButton>
+#include <QScrollBar>
+#include <QTabBar>
+#include <QTabWidget>
+#include <QTest>
+
+using granota::Point;
+using granota::ui::CurveCanvas;
+using granota::ui::DeCasteljauTab;
+using granota::ui::FrogCanvas;
+using granota::ui::MainWindow;
+
+namespace {
+
+/// A key as the user presses it: on the widget that has the focus, else on the window.
+void press(MainWindow& window, Qt::Key key, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
+{
+    QWidget* target = QApplication::focusWidget() ? QApplication::focusWidget() : &window;
+    QTest::keyClick(target, key, modifiers);
+}
+
+/// The curve canvas of the tab shown.
+CurveCanvas* curveCanvas(MainWindow& window) { return window.currentTab()->findChild<CurveCanvas*>(); }
+
+Point centroid(const granota::Simulation& sim)
+{
+    std::vector<Point> v;
+    sim.bodyVertices(0, v);
+    Point c{0, 0};
+    for (const Point& p : v)
+        c = {c.x + p.x / double(v.size()), c.y + p.y / double(v.size())};
+    return c;
+}
+
+QString accessibleText(QWidget* w, QAccessible::Text t)
+{
+    QAccessibleInterface* a = QAccessible::queryAccessibleInterface(w);
+    return a ? a->text(t) : QString();
+}
+
+/// Widgets a screen reader does not present as controls of their own: those that take no
+/// keyboard focus and show nothing to read (containers, layouts' frames), the parts of a
+/// composite control (a spin box's or a combo box's line edit, a scroll area's viewport and
+/// its scroll bars, a tab widget's scroll buttons), which the control itself names.
+bool isOwnControl(QWidget* w)
+{
+    if (!(w->focusPolicy() & Qt::TabFocus))
+        return false;
+    if (qobject_cast<QScrollBar*>(w))
+        return false;
+    for (QWidget* p = w->parentWidget(); p; p = p->parentWidget())
+        if (qobject_cast<QAbstractSpinBox*>(p) || qobject_cast<QComboBox*>(p))
+            return false;
+    if (auto* area = qobject_cast<QAbstractScrollArea*>(w->parentWidget()); area && area->viewport() == w)
+        return false;
+    if (qobject_cast<QTabBar*>(w->parentWidget()))
+        return false; // QTabBar's scroll buttons
+    return true;
+}
+
+} // namespace
+
+class TestGuiKeyboard : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        QApplication::setApplicationName(QStringLiteral("granota-test-keyboard"));
+        granota::ui::setLanguage(QStringLiteral("en"), false);
+    }
+
+    // Tab moves the focus out of a curve canvas to the next control (it used to select the
+    // next point and keep the focus for ever); ] selects the next point instead.
+    void tabLeavesACurveCanvas()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        QVERIFY(window.loadExample(QStringLiteral("2.2")));
+        CurveCanvas* canvas = curveCanvas(window);
+        QVERIFY(canvas);
+        canvas->setFocus(Qt::OtherFocusReason);
+        QTRY_VERIFY(canvas->hasFocus());
+        auto* editor = window.currentTab()->findChild<granota::ui::PointEditor*>();
+        QVERIFY(editor);
+        editor->setSelected(0);
+        press(window, Qt::Key_BracketRight);
+        QCOMPARE(editor->selected(), 1);
+        QVERIFY(canvas->hasFocus());
+        press(window, Qt::Key_Tab);
+        QVERIFY(!canvas->hasFocus());
+        QVERIFY(QApplication::focusWidget());
+        QVERIFY(QApplication::focusWidget() != canvas);
+        QCOMPARE(editor->selected(), 1); // Tab selected nothing on its way out
+        press(window, Qt::Key_Backtab, Qt::ShiftModifier);
+        QVERIFY(canvas->hasFocus());
+    }
+
+    // The canvas draws a frame while it has the focus: its pixels differ with and without.
+    void aFocusedCanvasShowsItsFocus()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        CurveCanvas* canvas = curveCanvas(window);
+        QVERIFY(canvas);
+        window.currentTab()->findChild<QAbstractButton*>()->setFocus(Qt::OtherFocusReason);
+        QTRY_VERIFY(!canvas->hasFocus());
+        const QImage without = canvas->grab().toImage();
+        canvas->setFocus(Qt::TabFocusReason);
+        QTRY_VERIFY(canvas->hasFocus());
+        const QImage with = canvas->grab().toImage();
+        QCOMPARE(with.size(), without.size());
+        // The frame runs along the edge: the corner pixel changes, the middle does not.
+        QVERIFY(with.pixel(1, 1) != without.pixel(1, 1));
+        QVERIFY(with.pixel(with.width() / 2, 1) != without.pixel(with.width() / 2, 1));
+    }
+
+    // Ctrl+Tab and Ctrl+Page Down go to the next tab, Ctrl+Shift+Tab and Ctrl+Page Up back,
+    // from a canvas as from anywhere.
+    void ctrlTabCyclesTabs()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        curveCanvas(window)->setFocus(Qt::OtherFocusReason);
+        const auto index = [&] { return window.tabs().indexOf(window.currentTab()); };
+        const int n = static_cast<int>(window.tabs().size());
+        press(window, Qt::Key_Tab, Qt::ControlModifier);
+        QCOMPARE(index(), 1);
+        press(window, Qt::Key_PageDown, Qt::ControlModifier);
+        QCOMPARE(index(), 2);
+        press(window, Qt::Key_Backtab, Qt::ControlModifier | Qt::ShiftModifier);
+        QCOMPARE(index(), 1);
+        press(window, Qt::Key_PageUp, Qt::ControlModifier);
+        press(window, Qt::Key_PageUp, Qt::ControlModifier);
+        QCOMPARE(index(), n - 1); // round again
+    }
+
+    // Ctrl+5 shows the Frog tab; P, S and R work at once, without a click; Tab reaches
+    // Pause, Step and Reset.
+    void frogKeysWorkWithoutAClick()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        curveCanvas(window)->setFocus(Qt::OtherFocusReason);
+        press(window, Qt::Key_5, Qt::ControlModifier);
+        QCOMPARE(window.currentTab()->key(), QStringLiteral("frog"));
+        // Nothing in the tab has the focus, as when the tab was chosen on the tab bar.
+        QTabBar* bar = window.findChild<QTabWidget*>()->tabBar();
+        bar->setFocus(Qt::TabFocusReason);
+        QTRY_VERIFY(bar->hasFocus());
+        auto* canvas = window.frogTab()->findChild<FrogCanvas*>();
+        QVERIFY(canvas && canvas->running());
+        press(window, Qt::Key_P);
+        QVERIFY(!canvas->running());
+        const long before = canvas->simulation()->stepCount();
+        press(window, Qt::Key_S);
+        QCOMPARE(canvas->simulation()->stepCount(), before + 1);
+        press(window, Qt::Key_R);
+        QCOMPARE(canvas->simulation()->stepCount(), 0L);
+
+        QSet<QString> reached;
+        for (int i = 0; i < 60 && reached.size() < 3; ++i) {
+            press(window, Qt::Key_Tab);
+            if (QWidget* f = QApplication::focusWidget())
+                if (f->objectName().startsWith(QStringLiteral("frog")) && qobject_cast<QPushButton*>(f))
+                    reached.insert(f->objectName());
+        }
+        QCOMPARE(reached, (QSet<QString>{QStringLiteral("frogPause"), QStringLiteral("frogStep"), QStringLiteral("frogReset")}));
+    }
+
+    // The keyboard's grab: G grabs the body at the keyboard cursor, the arrows drag it, Esc
+    // lets go. The body's centroid follows the presses.
+    void aKeyboardGrabMovesTheBody()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("frog")));
+        auto* tab = window.frogTab();
+        QVERIFY(tab->setScene(QStringLiteral("frog"), nullptr));
+        auto* canvas = tab->findChild<FrogCanvas*>();
+        QVERIFY(canvas);
+        canvas->setRunning(false);
+        canvas->setFocus(Qt::TabFocusReason);
+        QTRY_VERIFY(canvas->hasFocus());
+        for (int i = 0; i < 30; ++i) // let it settle
+            canvas->step();
+        const Point start = centroid(*canvas->simulation());
+        press(window, Qt::Key_G);
+        QVERIFY(canvas->simulation()->grabbing());
+        for (int i = 0; i < 8; ++i)
+            press(window, Qt::Key_Right);
+        for (int i = 0; i < 60; ++i)
+            canvas->step();
+        const Point moved = centroid(*canvas->simulation());
+        QVERIFY2(moved.x > start.x + 0.5 * 8 * FrogCanvas::kKeyboardStep,
+                 qPrintable(QStringLiteral("%1 → %2").arg(start.x).arg(moved.x)));
+        press(window, Qt::Key_Escape);
+        QVERIFY(!canvas->simulation()->grabbing());
+    }
+
+    // Every control of every tab has a name for a screen reader (the rule: isOwnControl).
+    void everyControlHasAnAccessibleName()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        QStringList unnamed;
+        for (const auto* page : window.tabs()) {
+            QVERIFY(window.showTab(page->key()));
+            for (QWidget* w : window.findChildren<QWidget*>())
+                if (w->isVisible() && isOwnControl(w) && accessibleText(w, QAccessible::Name).trimmed().isEmpty())
+                    unnamed << QStringLiteral("%1: %2 (%3)").arg(page->key(), w->objectName(), QString::fromLatin1(w->metaObject()->className()));
+        }
+        unnamed.removeDuplicates();
+        QVERIFY2(unnamed.isEmpty(), qPrintable(unnamed.join(QStringLiteral(", "))));
+    }
+
+    // The De Casteljau canvas tells a screen reader the curve, t and c(t), and follows t.
+    void theDeCasteljauCanvasDescribesTAndCOfT()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        auto* tab = qobject_cast<DeCasteljauTab*>(window.currentTab());
+        QVERIFY(tab);
+        CurveCanvas* canvas = curveCanvas(window);
+        for (double t : {0.25, 0.75}) {
+            tab->setT(t);
+            const Point c = granota::deCasteljau(tab->findChild<granota::ui::PointEditor*>()->points(), t).point();
+            const QString text = accessibleText(canvas, QAccessible::Description);
+            QVERIFY2(text.contains(granota::ui::displayNumber(t)), qPrintable(text));
+            QVERIFY2(text.contains(granota::ui::displayPoint(c.x, c.y)), qPrintable(text));
+        }
+        QVERIFY(!accessibleText(canvas, QAccessible::Name).isEmpty());
+    }
+
+    // The Frog canvas tells the scene, the solver and the area error.
+    void theFrogCanvasDescribesTheAreaError()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("frog")));
+        auto* canvas = window.frogTab()->findChild<FrogCanvas*>();
+        canvas->setRunning(false);
+        canvas->step();
+        const QString text = accessibleText(canvas, QAccessible::Description);
+        const QString error = granota::ui::displayFixed(canvas->simulation()->readouts().areaErrorPercent, 1);
+        QVERIFY2(text.contains(QStringLiteral("area error ") + error), qPrintable(text));
+    }
+
+    // Help ▸ Keyboard shortcuts lists every key of every action of the window.
+    void theShortcutsHelpListsEveryShortcut()
+    {
+        MainWindow window;
+        const QString help = window.shortcutsHelp();
+        int keys = 0;
+        for (const QAction* a : window.findChildren<QAction*>())
+            for (const QKeySequence& k : a->shortcuts()) {
+                ++keys;
+                QVERIFY2(help.contains(k.toString(QKeySequence::NativeText).toHtmlEscaped()),
+                         qPrintable(k.toString(QKeySequence::NativeText)));
+            }
+        QVERIFY(keys > 20);
+        QVERIFY(help.contains(QStringLiteral("Ctrl+Tab")));
+    }
+};
+
+QTEST_MAIN(TestGuiKeyboard)
+#include "test_gui_keyboard.moc"

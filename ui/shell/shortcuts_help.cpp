@@ -1,0 +1,48 @@
+#include "ui/shell/shortcuts_help.h"
+
+#include <QAction>
+#include <QKeySequence>
+
+namespace granota::ui {
+
+namespace {
+
+QString row(const QString& keys, const QString& what)
+{
+    return QStringLiteral("<tr><td><b>%1</b></td><td>%2</td></tr>").arg(keys.toHtmlEscaped(), what.toHtmlEscaped());
+}
+
+QString table(const QString& title, const QString& rows)
+{
+    return QStringLiteral("<h4>%1</h4><table cellspacing=\"2\" cellpadding=\"3\">%2</table>").arg(title.toHtmlEscaped(), rows);
+}
+
+} // namespace
+
+QString ShortcutsHelp::html(const QList<QAction*>& actions)
+{
+    QString window;
+    for (const QAction* a : actions) {
+        if (a->shortcuts().isEmpty())
+            continue;
+        QStringList keys;
+        for (const QKeySequence& k : a->shortcuts())
+            keys << k.toString(QKeySequence::NativeText);
+        window += row(keys.join(tr(", ")), QString(a->text()).remove(QLatin1Char('&')));
+    }
+    const QString curves = row(tr("Tab, Shift+Tab"), tr("Move the focus into and out of the canvas, to the next or previous control"))
+                           + row(tr("] and ["), tr("Select the next or the previous point"))
+                           + row(tr("Arrows (Shift: ten times more)"), tr("Nudge the selected point by a round step"))
+                           + row(tr("Delete, Backspace"), tr("Remove the selected point"));
+    const QString frog = row(tr("P"), tr("Pause and run"))
+                         + row(tr("S or ."), tr("One step (pausing first)"))
+                         + row(tr("R"), tr("Reset the scene"))
+                         + row(tr("Arrows (Shift: five times further)"), tr("On the canvas: move the keyboard cursor, and what it holds"))
+                         + row(tr("G or Enter"), tr("On the canvas: grab the body at the cursor (or the nearest one), again to let go"))
+                         + row(tr("Esc"), tr("On the canvas: let go"))
+                         + row(tr("Space"), tr("On the canvas: a new body at the cursor, held until released"));
+    return table(tr("The window"), window) + table(tr("De Casteljau, Fitting and Catmull-Rom canvases"), curves)
+           + table(tr("Frog tab (P, S and R whenever the tab is shown, unless a field is being typed in)"), frog);
+}
+
+} // namespace granota::ui
