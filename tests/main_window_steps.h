@@ -5,6 +5,7 @@
 #include "ui/shell/document.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/tab_page.h"
+#include "gui_timeouts.h"
 
 #include <QByteArray>
 #include <QCoreApplication>
@@ -46,7 +47,7 @@ inline bool showOnTab(granota::ui::MainWindow& window, const QString& key)
 {
     window.resize(1280, 800);
     window.show();
-    return QTest::qWaitForWindowExposed(&window) && window.showTab(key);
+    return waitExposed(&window) && window.showTab(key);
 }
 
 /// A document file `name` in a fresh temporary folder, removed with it: where a round trip

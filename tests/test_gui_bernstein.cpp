@@ -8,6 +8,7 @@
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
+#include "gui_timeouts.h"
 
 #include <QCheckBox>
 #include <QJsonObject>
@@ -136,7 +137,7 @@ private slots:
         // And so does a click on the basis plot.
         tabs.bernstein.resize(1280, 760);
         tabs.bernstein.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&tabs.bernstein));
+        QVERIFY(waitExposed(&tabs.bernstein));
         QCustomPlot* plot = tabs.bernstein.basisPlot();
         const int x = static_cast<int>(plot->xAxis->coordToPixel(0.25));
         const int y = static_cast<int>(plot->yAxis->coordToPixel(0.5));
@@ -172,7 +173,7 @@ private slots:
 
         tabs.bernstein.resize(900, 700);
         tabs.bernstein.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&tabs.bernstein));
+        QVERIFY(waitExposed(&tabs.bernstein));
         QCustomPlot* plot = tabs.bernstein.basisPlot();
         const QPoint at(static_cast<int>(plot->xAxis->coordToPixel(0.6)), static_cast<int>(plot->yAxis->coordToPixel(0.5)));
         QTest::mouseMove(plot, at);

@@ -4,6 +4,7 @@
 // readouts and plot axes — while a typed point is still accepted.
 #include "catalan_locale.h"
 #include "main_window_steps.h"
+#include "gui_timeouts.h"
 
 #include "ui/common/decimal_spin_box.h"
 #include "ui/shell/document.h"
@@ -87,7 +88,7 @@ private slots:
         MainWindow window;
         window.resize(1024, 768);
         window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(waitExposed(&window));
         QVERIFY(window.showTab(QStringLiteral("frog")));
         granota::ui::FrogTab* frog = window.frogTab();
         QTemporaryDir dir;
@@ -144,7 +145,7 @@ private slots:
         MainWindow window;
         window.resize(1024, 768);
         window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(waitExposed(&window));
         QVERIFY(window.loadExample(QStringLiteral("2.9"))); // decimals in the fit
         QTemporaryDir dir;
         for (const QString& key : kTabs) {
@@ -218,7 +219,7 @@ private slots:
         MainWindow window;
         window.resize(1024, 768);
         window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(waitExposed(&window));
         QCOMPARE(granota::ui::displayNumber(0.25), QStringLiteral("0,25"));
         QCOMPARE(granota::ui::displayPoint(1.5, -2), QStringLiteral("(1,5; -2)"));
         QCOMPARE(granota::ui::displayText("(0.5 - 1.25t, 3)"), QStringLiteral("(0,5 - 1,25t; 3)"));

@@ -9,6 +9,7 @@
 #include "ui/common/curve_canvas.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
+#include "gui_timeouts.h"
 
 #include <QComboBox>
 #include <QJsonArray>
@@ -60,7 +61,7 @@ void showTab(CatmullRomTab& tab)
 {
     tab.resize(1280, 760);
     tab.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&tab));
+    QVERIFY(waitExposed(&tab));
 }
 
 bool allFinite(const CatmullRomScene& scene)

@@ -3,6 +3,7 @@
 // exact panel (checked against the thesis text and against granota-cli), degree
 // elevation, the shared parameter t, and documents that round-trip or are refused whole.
 #include "cli_runner.h"
+#include "gui_timeouts.h"
 
 #include "core/curves/bezier/de_casteljau.h"
 #include "core/base/number_format.h"
@@ -58,7 +59,7 @@ void showTab(DeCasteljauTab& tab)
 {
     tab.resize(1280, 760);
     tab.show();
-    QVERIFY(QTest::qWaitForWindowExposed(&tab));
+    QVERIFY(waitExposed(&tab));
 }
 
 QPoint screenOf(DeCasteljauTab& tab, Point p) { return tab.canvas()->view().toScreen(p).toPoint(); }

@@ -13,6 +13,7 @@
 #include "ui/fit/fit_tab.h"
 #include "ui/common/point_editor.h"
 #include "ui/common/point_table.h"
+#include "gui_timeouts.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -166,7 +167,7 @@ private slots:
         FitTab tab;
         tab.resize(1280, 760);
         tab.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&tab));
+        QVERIFY(waitExposed(&tab));
         tab.pointTable()->item(0, 0)->setText(QStringLiteral("1e-320"));
         QCOMPARE(tab.pointEditor()->points()[0].x, 1e-320);
         QCOMPARE(tab.undoStack()->count(), 1);
@@ -243,7 +244,7 @@ private slots:
         FitTab tab;
         tab.resize(1280, 760);
         tab.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&tab));
+        QVERIFY(waitExposed(&tab));
         QVERIFY(loadEx(tab, "2.8"));
         QCoreApplication::processEvents();
         const std::vector<Point> pointsBefore = tab.pointEditor()->points();
@@ -418,7 +419,7 @@ private slots:
         FitTab tab;
         tab.resize(1280, 760);
         tab.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&tab));
+        QVERIFY(waitExposed(&tab));
         granota::ui::PointEditor* editor = tab.pointEditor();
         // A few points: every one labelled, at full size.
         CanvasPicture picture = paintedCanvas(tab);
@@ -512,7 +513,7 @@ private slots:
         FitTab tab;
         tab.resize(1280, 760);
         tab.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&tab));
+        QVERIFY(waitExposed(&tab));
         QElapsedTimer timer;
         timer.start();
         tab.pointEditor()->setPoints(q, QStringLiteral("many"));

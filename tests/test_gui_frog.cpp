@@ -6,6 +6,7 @@
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_parameters_panel.h"
 #include "ui/frog/frog_tab.h"
+#include "gui_timeouts.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -72,7 +73,7 @@ private slots:
         m_tab = std::make_unique<FrogTab>();
         m_tab->resize(1280, 760);
         m_tab->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_tab.get()));
+        QVERIFY(waitExposed(m_tab.get()));
     }
     void cleanup() { m_tab.reset(); }
 

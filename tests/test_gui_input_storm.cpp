@@ -19,6 +19,7 @@
 #include "ui/shell/main_window.h"
 #include "ui/common/point_editor.h"
 #include "ui/shell/tab_page.h"
+#include "gui_timeouts.h"
 
 #include <QAbstractButton>
 #include <QAbstractItemView>
@@ -1004,7 +1005,7 @@ private slots:
         MainWindow window;
         window.resize(1280, 800);
         window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(waitExposed(&window));
         QVERIFY(nonFiniteTexts(window).isEmpty());
         QVERIFY(window.showTab(QStringLiteral("catmull-rom")));
         QLineEdit* tau = nullptr;

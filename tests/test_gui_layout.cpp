@@ -9,6 +9,7 @@
 #include "ui/shell/language.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/tab_page.h"
+#include "gui_timeouts.h"
 
 #include <QAbstractButton>
 #include <QAbstractScrollArea>
@@ -319,7 +320,7 @@ private slots:
                 window.setPresentation(true, false);
             window.resize(size);
             window.show();
-            QVERIFY(QTest::qWaitForWindowExposed(&window));
+            QVERIFY(waitExposed(&window));
             // Every tab visited first: a tab once shown keeps its widgets' sizes in the hint.
             for (granota::ui::TabPage* page : window.tabs()) {
                 QVERIFY(window.showTab(page->key()));

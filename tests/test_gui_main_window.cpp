@@ -12,6 +12,7 @@
 #include "ui/shell/tikz_options_dialog.h"
 #include "ui/common/work_precision_panel.h"
 #include "ui/common/work_precision_plot.h"
+#include "gui_timeouts.h"
 
 #include "main_window_steps.h"
 
@@ -523,7 +524,7 @@ private slots:
         MainWindow window;
         window.resize(1280, 800);
         window.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QVERIFY(waitExposed(&window));
         for (const QString& id : {QStringLiteral("2.2"), QStringLiteral("2.4"), QStringLiteral("2.8"), QStringLiteral("2.13")})
             QVERIFY(window.loadExample(id));
         const auto english = visibleTexts(window);

@@ -10,6 +10,9 @@ exec xvfb-run -a -s "-screen 0 1280x1024x24" bash -c '
   openbox >/dev/null 2>&1 &
   wm=$!
   for _ in $(seq 50); do xprop -root _NET_SUPPORTING_WM_CHECK 2>/dev/null | grep -q window && break; sleep 0.1; done
+  # openbox announces itself before it manages new windows: a window mapped in that moment
+  # may never be exposed (tests/gui_timeouts.h shows it again if so).
+  sleep 1
   "$@"
   rc=$?
   kill "$wm" 2>/dev/null || true

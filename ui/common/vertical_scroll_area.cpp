@@ -10,6 +10,9 @@ VerticalScrollArea::VerticalScrollArea(QWidget* content, QWidget* parent) : QScr
     setWidgetResizable(true);
     setFrameShape(QFrame::NoFrame);
     setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    // Tab goes straight to the controls inside (docs/classroom.md, "Keyboard"); the wheel
+    // and the scroll bar still scroll it.
+    setFocusPolicy(Qt::NoFocus);
 }
 
 QSize VerticalScrollArea::minimumSizeHint() const
