@@ -427,6 +427,17 @@ private slots:
             hints << hint->text();
             window.statusBar()->showMessage(QStringLiteral("a passing message of this tab"), 8000);
         }
+        // A message given before the window is shown (granota --example 2.2) covers the hint
+        // too, and the hint comes back when it goes.
+        MainWindow fresh;
+        QVERIFY(fresh.loadExample(QStringLiteral("2.2")));
+        QVERIFY(showOnTab(fresh, QStringLiteral("decasteljau")));
+        auto* freshHint = fresh.statusBar()->findChild<QLabel*>(QStringLiteral("tabHint"));
+        QVERIFY(!fresh.statusBar()->currentMessage().isEmpty());
+        QVERIFY2(!freshHint->isVisible(), "the hint is drawn under the example's message");
+        fresh.statusBar()->clearMessage();
+        QVERIFY(freshHint->isVisible());
+
         QVERIFY(granota::ui::setLanguage(QStringLiteral("ca"), false));
         QTRY_VERIFY2(hint->text() != hints.last(), qPrintable(hint->text())); // the Frog tab's, in Catalan
         QCOMPARE(hint->text(), window.currentTab()->hint());

@@ -108,6 +108,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
     m_hintLabel->setMinimumWidth(0);
     m_hintLabel->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
     statusBar()->addWidget(m_hintLabel, 1);
+    // QStatusBar hides its widgets under a message only if they are visible then: a message
+    // given before the window is shown (--example) would be drawn over the hint.
+    connect(statusBar(), &QStatusBar::messageChanged, m_hintLabel,
+            [this](const QString& message) { m_hintLabel->setVisible(message.isEmpty()); });
     m_cursorLabel = new QLabel(this);
     statusBar()->addPermanentWidget(m_cursorLabel);
 
