@@ -140,9 +140,16 @@ void checkText(QWidget* w, QStringList& problems)
         option.initFrom(c);
         option.editable = c->isEditable();
         const QRect field = c->style()->subControlRect(QStyle::CC_ComboBox, &option, QStyle::SC_ComboBoxEditField, c);
-        const int textWidth = fm.horizontalAdvance(c->currentText()) + (c->itemIcon(c->currentIndex()).isNull() ? 0 : c->iconSize().width() + 4);
-        if (textWidth > field.width() && c->width() < c->minimumSizeHint().width())
-            problems << QStringLiteral("combo text needs %1 in a field of %2: %3").arg(textWidth).arg(field.width()).arg(describe(w));
+        // Every choice, not only the current one: any of them may be chosen and then shown.
+        for (int i = 0; i < c->count(); ++i) {
+            const int textWidth = fm.horizontalAdvance(c->itemText(i)) + (c->itemIcon(i).isNull() ? 0 : c->iconSize().width() + 4);
+            if (textWidth > field.width())
+                problems << QStringLiteral("combo item “%1” needs %2 in a field of %3: %4")
+                                .arg(c->itemText(i))
+                                .arg(textWidth)
+                                .arg(field.width())
+                                .arg(describe(w));
+        }
     } else if (auto* e = qobject_cast<QLineEdit*>(w)) {
         // A spin box's field: its value and suffix ("100.00 px/step²") must show whole.
         if (!qobject_cast<QAbstractSpinBox*>(w->parentWidget()) || e->text().isEmpty())

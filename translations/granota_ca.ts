@@ -625,7 +625,7 @@
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="304" />
             <source>closed (n + 1 segments)</source>
-            <translation>tancada (n + 1 segments)</translation>
+            <translation>tancada (n+1 segments)</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="305" />
@@ -655,7 +655,7 @@
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="313" />
             <source>chordal (α = 1)</source>
-            <translation>per longitud de corda (α = 1)</translation>
+            <translation>de corda (α = 1)</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="314" />
@@ -2163,13 +2163,13 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="376" />
-            <source>Vertices above the mouse (§4.7)</source>
-            <translation>Vèrtexs per damunt del ratolí (§4.7)</translation>
+            <source>Above the mouse (§4.7)</source>
+            <translation>Per damunt del ratolí (§4.7)</translation>
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="377" />
-            <source>Fixed anchors {0, 1, N−1, N} (§4.10)</source>
-            <translation>Àncores fixes {0, 1, N−1, N} (§4.10)</translation>
+            <source>Anchors {0, 1, N−1, N} (§4.10)</source>
+            <translation>Àncores {0, 1, N−1, N} (§4.10)</translation>
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="383" />
@@ -3338,12 +3338,12 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
         <message>
             <location filename="../ui/work_precision_plot.cpp" line="34" />
             <source>Integrators: global error against run time</source>
-            <translation>Integradors: error global respecte del temps d'execució</translation>
+            <translation>Integradors: error global segons el temps d'execució</translation>
         </message>
         <message>
             <location filename="../ui/work_precision_plot.cpp" line="36" />
             <source>Soft body: constraint error against substeps</source>
-            <translation>Cos tou: error de les restriccions respecte dels subpassos</translation>
+            <translation>Cos tou: error de restriccions segons els subpassos</translation>
         </message>
         <message>
             <location filename="../ui/work_precision_plot.cpp" line="46" />

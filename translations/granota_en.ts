@@ -2163,13 +2163,13 @@ on each change would slow the window.</translation>
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="376" />
-            <source>Vertices above the mouse (§4.7)</source>
-            <translation>Vertices above the mouse (§4.7)</translation>
+            <source>Above the mouse (§4.7)</source>
+            <translation>Above the mouse (§4.7)</translation>
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="377" />
-            <source>Fixed anchors {0, 1, N−1, N} (§4.10)</source>
-            <translation>Fixed anchors {0, 1, N−1, N} (§4.10)</translation>
+            <source>Anchors {0, 1, N−1, N} (§4.10)</source>
+            <translation>Anchors {0, 1, N−1, N} (§4.10)</translation>
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="383" />

@@ -212,9 +212,9 @@ const std::vector<GrabChoice>& grabChoices()
 {
     static const std::vector<GrabChoice> choices = {
         {"all", GrabMode::All, QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "All vertices (§4.6)")},
-        {"above", GrabMode::Above, QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Vertices above the mouse (§4.7)")},
+        {"above", GrabMode::Above, QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Above the mouse (§4.7)")},
         {"anchors", GrabMode::Anchors,
-         QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Fixed anchors {0, 1, N−1, N} (§4.10)")},
+         QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Anchors {0, 1, N−1, N} (§4.10)")},
     };
     return choices;
 }
