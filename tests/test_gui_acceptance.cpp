@@ -6,6 +6,7 @@
 #include "ui/bernstein/bernstein_tab.h"
 #include "ui/decasteljau/decasteljau_parameter_control.h"
 #include "ui/decasteljau/decasteljau_tab.h"
+#include "ui/frog/frog_canvas.h"
 #include "ui/shell/language.h"
 #include "ui/common/canvas_style.h"
 #include "ui/common/curve_canvas.h"
@@ -443,6 +444,34 @@ private slots:
         QCOMPARE(hint->text(), window.currentTab()->hint());
         QVERIFY(granota::ui::setLanguage(QStringLiteral("en"), false));
         QTRY_COMPARE(hint->text(), hints.last());
+    }
+
+    // Item 14: in presentation mode on a 1024 × 768 projector the Frog tab's readouts wrap to
+    // the canvas instead of running off it (they were cut after "· estirame").
+    void theFrogReadoutsFitThePresentationCanvas()
+    {
+        MainWindow window;
+        window.setPresentation(true, false);
+        window.resize(1024, 738);
+        window.show();
+        QVERIFY(waitExposed(&window));
+        QVERIFY(window.showTab(QStringLiteral("frog")));
+        for (const char* name : {"frogOverlay2", "frogOverlay4"}) { // area vs target, readouts
+            auto* box = window.currentTab()->findChild<QCheckBox*>(QString::fromLatin1(name));
+            QVERIFY2(box, name);
+            if (!box->isChecked())
+                box->click();
+        }
+        auto* canvas = window.currentTab()->findChild<granota::ui::FrogCanvas*>();
+        QVERIFY(canvas);
+        QTRY_VERIFY(canvas->textLines().size() >= 3);
+        QTRY_VERIFY2(canvas->textPanelWidth() <= canvas->textPanelRoom(),
+                     qPrintable(QStringLiteral("%1 > %2").arg(canvas->textPanelWidth()).arg(canvas->textPanelRoom())));
+        // And at once when the canvas narrows (a side panel dragged wider), not at the next refresh.
+        canvas->resize(canvas->width() * 3 / 4, canvas->height());
+        QVERIFY2(canvas->textPanelWidth() <= canvas->textPanelRoom(),
+                 qPrintable(QStringLiteral("%1 > %2").arg(canvas->textPanelWidth()).arg(canvas->textPanelRoom())));
+        window.setPresentation(false, false);
     }
 };
 

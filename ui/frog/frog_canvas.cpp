@@ -333,15 +333,34 @@ void FrogCanvas::refreshTexts()
     }
     const QFont& font = m_font;
     m_lines.resize(static_cast<std::size_t>(lines.size()));
+    const double room = std::max(120.0, textPanelRoom());
     for (int i = 0; i < lines.size(); ++i) {
         QStaticText& t = m_lines[static_cast<std::size_t>(i)];
         t.setTextFormat(Qt::PlainText);
         t.setText(lines[i]);
-        // What the text panel's margins and padding leave of the canvas.
-        const double room = sceneRectIn(QRectF(rect())).width() - 2 * (kPanelMargin + kPanelPad) * m_style.scale;
-        t.setTextWidth(i == 0 && blownUpLine ? std::max(120.0, room) : -1);
+        t.setTextWidth(i == 0 && blownUpLine ? room : -1);
         t.prepare(QTransform(), font);
+        // A line wider than the canvas leaves (large text in presentation mode, a narrow
+        // window) wraps at its spaces instead of running off the canvas.
+        if (t.size().width() > room) {
+            t.setTextWidth(room);
+            t.prepare(QTransform(), font);
+        }
     }
+}
+
+double FrogCanvas::textPanelRoom() const
+{
+    // What the text panel's margins and padding leave of the scene's width.
+    return sceneRectIn(QRectF(rect())).width() - 2 * (kPanelMargin + kPanelPad) * m_style.scale;
+}
+
+double FrogCanvas::textPanelWidth() const
+{
+    double width = 0;
+    for (const QStaticText& t : m_lines)
+        width = std::max(width, t.size().width());
+    return width;
 }
 
 // ---------------------------------------------------------------- coordinates
@@ -450,6 +469,9 @@ void FrogCanvas::render(QPainter& p, const QRectF& target)
     drawOverlays(p, pixel);
     p.restore();
     p.setWorldTransform(base);
+    // The text panel may run below a small scene (presentation mode on a narrow canvas): it
+    // is clipped to the canvas, not to the scene.
+    p.setClipRect(target);
     drawTextPanel(p, r);
     p.restore();
 }
@@ -982,6 +1004,13 @@ void FrogCanvas::showEvent(QShowEvent* event)
 {
     QWidget::showEvent(event);
     updateTimer();
+}
+
+void FrogCanvas::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    if (m_sim)
+        refreshTexts();
 }
 
 void FrogCanvas::hideEvent(QHideEvent* event)

@@ -83,6 +83,11 @@ public:
     long frameCount() const { return m_frameCount; }
     /// The lines of the text panel drawn over the scene, as last refreshed.
     QStringList textLines() const;
+    /// The width the text panel takes (its widest line, wrapped to the canvas), and the most
+    /// the canvas leaves it: the first never exceeds the second (presentation mode on a
+    /// 1024 × 768 projector wraps the readouts instead of cutting them).
+    double textPanelWidth() const;
+    double textPanelRoom() const;
 
     void setOverlays(const Overlays& overlays);
     const Overlays& overlays() const { return m_overlays; }
@@ -132,6 +137,8 @@ protected:
     void keyReleaseEvent(QKeyEvent* event) override;
     void enterEvent(QEnterEvent* event) override;
     void showEvent(QShowEvent* event) override;
+    /// The text panel wraps to the new width at once, not at the next refresh.
+    void resizeEvent(QResizeEvent* event) override;
     void hideEvent(QHideEvent* event) override;
     void changeEvent(QEvent* event) override;
     void focusInEvent(QFocusEvent* event) override;
