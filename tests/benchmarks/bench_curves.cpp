@@ -2,6 +2,8 @@
 // work — degree, samples, data points — is printed by the Complexity() fits.
 //   build/bin/granota-bench --benchmark_filter='Fit|Outline|DeCasteljau'
 #include "core/curves/bezier/bernstein.h"
+#include "core/curves/bezier/closest_point.h"
+#include "core/curves/bezier/curve_features.h"
 #include "core/curves/splines/catmull_rom.h"
 #include "core/curves/bezier/de_casteljau.h"
 #include "core/curves/fitting/least_squares_fit.h"
@@ -104,8 +106,35 @@ void BM_OutlineFit(benchmark::State& state)
     }
 }
 
+/// Extrema of x and y, the tight box, inflections and cusps of a wavy degree-n curve: the
+/// roots of three Bernstein polynomials (degrees n − 1, n − 1, 2n − 4) and of the cusp test.
+void BM_CurveFeatures(benchmark::State& state)
+{
+    auto control = wavyPoints(static_cast<int>(state.range(0)) + 1);
+    for (auto _ : state) {
+        control[2].y += 1e-12; // a new drag position
+        benchmark::DoNotOptimize(curveFeatures(control));
+    }
+    state.SetComplexityN(state.range(0));
+}
+
+/// The global closest point on a wavy degree-n curve to a point that moves over its box.
+void BM_ClosestPoint(benchmark::State& state)
+{
+    const auto control = wavyPoints(static_cast<int>(state.range(0)) + 1);
+    int k = 0;
+    for (auto _ : state) {
+        const Point p(0.37 * (k % 29), -1.5 + 0.11 * (k % 31));
+        ++k;
+        benchmark::DoNotOptimize(closestPoint(control, p));
+    }
+    state.SetComplexityN(state.range(0));
+}
+
 } // namespace
 
+BENCHMARK(BM_CurveFeatures)->Arg(3)->Arg(10)->Arg(30)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ClosestPoint)->Arg(3)->Arg(10)->Arg(30)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_DeCasteljauPoint)->DenseRange(3, 30, 9)->Arg(60)->Complexity(benchmark::oNSquared);
 BENCHMARK(BM_BernsteinPoint)->DenseRange(3, 30, 9)->Arg(60)->Complexity(benchmark::oN);
 BENCHMARK(BM_HornerPoint)->DenseRange(3, 30, 9)->Arg(60)->Complexity(benchmark::oN);

@@ -108,6 +108,7 @@ double polishRoot(const double* b, int n, double a, double w, int leftSign)
         if (guess > 0.0 && guess < 1.0)
             u = guess;
     }
+    double previousStep = std::numeric_limits<double>::infinity();
     for (int iteration = 0; iteration < 200; ++iteration) {
         const double f = value(b, n, u);
         if (f == 0.0)
@@ -117,14 +118,27 @@ double polishRoot(const double* b, int n, double a, double w, int leftSign)
         else
             hi = u;
         const double d = derivative(b, n, u);
-        double next = (d != 0.0) ? u - f / d : 0.5 * (lo + hi);
-        if (!(next > lo && next < hi))
-            next = 0.5 * (lo + hi);
         const double t = a + u * w;
         const double spacing = kEps * std::max(std::fabs(t), std::numeric_limits<double>::min());
-        if (std::fabs(next - u) * w <= spacing || (hi - lo) * w <= 2.0 * spacing)
-            return a + next * w;
-        u = next;
+        if (d != 0.0) {
+            const double newton = u - f / d;
+            const double step = std::fabs(newton - u) * w;
+            // Converged: the correction is below the spacing of doubles at t.
+            if (step <= 2.0 * spacing)
+                return a + std::min(std::max(newton, lo), hi) * w;
+            // Newton converges quadratically: a step near rounding noise that does not
+            // shrink the one before is that noise (it could wander by ulps for ever).
+            if (step >= previousStep && step <= 64.0 * spacing)
+                return t;
+            previousStep = step;
+            if (newton > lo && newton < hi) {
+                u = newton;
+                continue;
+            }
+        }
+        if ((hi - lo) * w <= 2.0 * spacing)
+            return a + 0.5 * (lo + hi) * w;
+        u = 0.5 * (lo + hi);
     }
     return a + u * w;
 }
@@ -133,7 +147,10 @@ struct FoundRoot {
     double t = 0;
     double uncertainty = 0; ///< how far the true root may be (for merging)
     bool crossing = false;
-    bool known = false;     ///< crossing is known (polished simple roots, ends)
+    bool known = false;     ///< crossing is known without looking (the ends: no other side)
+    /// Which of two reports of one root is the better position: 4 an end, 3 a bracketed
+    /// simple root, 2 the zero of p′ at a touching zero, 1 a halving point, 0 a midpoint.
+    int rank = 0;
 };
 
 class Solver {
@@ -162,7 +179,7 @@ public:
                 int left = 0;
                 for (int i = 0; i <= n && left == 0; ++i)
                     left = signOf(b[i]);
-                found.push_back({polishRoot(b, n, a, w, left), 0.0, true, true});
+                found.push_back({polishRoot(b, n, a, w, left), 0.0, true, false, 3});
                 return;
             }
             double maxAbs = 0.0;
@@ -183,17 +200,19 @@ public:
                     b[i] = 0.5 * (b[i] + b[i + 1]);
                 left[r] = b[0];
             }
+            // p(mid) is the coefficient both halves share. When it is 0 within rounding,
+            // mid is a root (to the precision the coefficients allow) and is made exactly 0
+            // in both halves: otherwise its rounding could put a simple root just inside one
+            // half, where Descartes' count would no longer see the root next to it.
             const double pm = b[0];
-            if (pm != 0.0 && signChanges(left, n) == 0 && signChanges(b, n) == 0) {
-                // The control polygon dipped across 0 but neither half's does: a zero
-                // touched at the midpoint, if p is 0 there within rounding.
-                if (std::fabs(pm) <= localTolerance(mid, mid))
-                    found.push_back({mid, 0.5 * w, false, false});
-                return;
+            if (pm == 0.0 || (std::fabs(pm) <= globalTolerance_ && std::fabs(pm) <= localTolerance(mid, mid))) {
+                left[n] = 0.0;
+                b[0] = 0.0;
+                run(left, a, 0.5 * w, depth + 1);
+                found.push_back({nearbySimpleRoot(mid, 0.5 * w), 0.0, false, false, 1});
+            } else {
+                run(left, a, 0.5 * w, depth + 1);
             }
-            run(left, a, 0.5 * w, depth + 1);
-            if (pm == 0.0)
-                found.push_back({mid, 0.0, false, false});
             a = mid;
             w *= 0.5;
             ++depth;
@@ -203,6 +222,28 @@ public:
     std::vector<FoundRoot> found;
 
 private:
+    /// Newton steps on the original polynomial from t, where p(t) is 0 within rounding: a
+    /// simple root next to it to full precision; t itself for a multiple root (p′ ≈ 0, the
+    /// step would leave the neighbourhood `reach`).
+    double nearbySimpleRoot(double t, double reach) const
+    {
+        const double* b = original_.data();
+        double x = t;
+        for (int i = 0; i < 3; ++i) {
+            const double f = value(b, n_, x);
+            const double d = derivative(b, n_, x);
+            if (f == 0.0 || d == 0.0)
+                break;
+            const double next = x - f / d;
+            if (!(std::fabs(next - t) <= 1e-3 * reach) || next < 0.0 || next > 1.0)
+                break;
+            if (next == x)
+                break;
+            x = next;
+        }
+        return x;
+    }
+
     /// The largest rounding error of p on [t0, t1]: the Bernstein coefficients of
     /// Σ |b_i| B_i^n restricted to the interval (all positive: no cancellation).
     double localTolerance(double t0, double t1)
@@ -238,7 +279,7 @@ private:
         const int s0 = signOf(b[0]);
         const int sn = signOf(b[n]);
         if (s0 * sn < 0) {
-            found.push_back({polishRoot(b, n, a, w, s0), w, true, true});
+            found.push_back({polishRoot(b, n, a, w, s0), w, false, false, 2}); // end signs are noise here
             return;
         }
         if (n >= 2) {
@@ -248,11 +289,11 @@ private:
                 scratch_.resize(static_cast<std::size_t>(n));
                 for (int i = 0; i < n; ++i)
                     scratch_[static_cast<std::size_t>(i)] = b[i + 1] - b[i];
-                found.push_back({polishRoot(scratch_.data(), n - 1, a, w, signOf(d0)), w, false, false});
+                found.push_back({polishRoot(scratch_.data(), n - 1, a, w, signOf(d0)), w, false, false, 2});
                 return;
             }
         }
-        found.push_back({a + 0.5 * w, 0.5 * w, false, false});
+        found.push_back({a + 0.5 * w, 0.5 * w, false, false, 0});
     }
 
     const std::vector<double>& original_;
@@ -315,22 +356,35 @@ BernsteinRoots bernsteinRoots(const std::vector<double>& coefficients)
 
     Solver solver(coefficients, scratch);
     if (coefficients.front() == 0.0)
-        solver.found.push_back({0.0, 0.0, false, true});
+        solver.found.push_back({0.0, 0.0, false, true, 4});
     solver.run(work.data(), 0.0, 1.0, 0);
     if (n > 0 && coefficients.back() == 0.0)
-        solver.found.push_back({1.0, 0.0, false, true});
+        solver.found.push_back({1.0, 0.0, false, true, 4});
 
     std::vector<FoundRoot>& found = solver.found;
     std::sort(found.begin(), found.end(), [](const FoundRoot& x, const FoundRoot& y) { return x.t < y.t; });
-    // One root where two reports overlap within their uncertainty (a touching zero met
-    // from both halves, a zero on a halving point).
+    // One root where two reports are not separated: p does not rise above its rounding
+    // error (the magnitude Σ |b_i| B_i^n scaled as in toleranceFor) between them (a touching
+    // zero met from a halving point and from its own interval, a cluster too tight for
+    // doubles). The better placed report stays.
+    std::vector<double> magnitude(coefficients.size());
+    for (std::size_t i = 0; i < coefficients.size(); ++i)
+        magnitude[i] = std::fabs(coefficients[i]);
     std::vector<FoundRoot> merged;
     for (const FoundRoot& r : found) {
         if (!merged.empty()) {
             FoundRoot& last = merged.back();
             const double gap = r.t - last.t;
-            if (gap <= std::max(r.uncertainty, last.uncertainty) + 4.0 * kEps * std::max(1e-300, r.t)) {
-                if (r.uncertainty < last.uncertainty || (r.known && !last.known))
+            bool same = gap <= std::max(r.uncertainty, last.uncertainty) + 4.0 * kEps * std::max(1e-300, r.t);
+            // Only close neighbours (a touching zero is blurred over about √ε, not more): a wide
+            // stretch where p is below rounding must not swallow the roots beyond it.
+            if (!same && !(last.known && r.known) && gap <= 1e-5) {
+                const double between = 0.5 * (last.t + r.t);
+                same = std::fabs(bernsteinValue(coefficients, between))
+                       <= solver.toleranceFor(bernsteinValue(magnitude, between));
+            }
+            if (same) {
+                if (r.rank > last.rank)
                     last = r;
                 continue;
             }
