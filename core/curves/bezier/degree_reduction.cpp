@@ -60,23 +60,6 @@ Error nothingToReduce()
     return makeError(ErrorCode::TooFewPoints, "degree reduction needs at least two control points (degree 0 has nothing to reduce)");
 }
 
-/// The curve whose elevation P is, if there is one: R_0 = P_0, R_i = (P_i − (i/n) R_{i−1}) / (1 − i/n)
-/// from degree_elevation.h's formula, then checked against P.
-std::optional<std::vector<RPoint>> unelevate(const std::vector<RPoint>& P)
-{
-    const int n = static_cast<int>(P.size()) - 1;
-    std::vector<RPoint> R{P[0]};
-    for (int i = 1; i < n; ++i) {
-        const Rational a = frac(i, n);
-        const Rational b = Rational(1) - a;
-        const RPoint prev = R.back();
-        R.push_back(Rational(1 / b) * (P[static_cast<std::size_t>(i)] - a * prev));
-    }
-    if (elevateDegree(R) != P)
-        return std::nullopt;
-    return R;
-}
-
 } // namespace
 
 Expected<DegreeReduction<Rational>> reduceDegree(const std::vector<RPoint>& P)
@@ -109,26 +92,15 @@ Expected<DegreeReduction<double>> reduceDegree(const std::vector<Point>& P)
     for (const Point& p : P)
         if (!isFinite(p))
             return makeError(ErrorCode::InvalidInput, "degree reduction needs finite control points");
-    const std::vector<RPoint> exactP = toRational(P);
+    // Every double is a rational: reduce exactly and round once, so the points are the
+    // correctly rounded optimum and the error is that of the rounded points.
+    auto r = reduceDegree(toRational(P));
+    if (!r)
+        return r.error();
     DegreeReduction<double> out;
-    if (const auto R = unelevate(exactP)) {
-        out.points = toDouble(*R);
-        out.exact = true;
-        return out;
-    }
-    auto M = reductionOperator(n);
-    if (!M)
-        return M.error();
-    const Eigen::MatrixXd Md = M->toDouble();
-    for (int i = 0; i < n; ++i) {
-        Point q(0, 0);
-        for (int k = 0; k <= n; ++k) {
-            q.x += Md(i, k) * P[static_cast<std::size_t>(k)].x;
-            q.y += Md(i, k) * P[static_cast<std::size_t>(k)].y;
-        }
-        out.points.push_back(q);
-    }
-    out.error = l2Error(exactP, toRational(out.points));
+    out.points = toDouble(r->points);
+    out.exact = r->exact;
+    out.error = r->exact ? 0.0 : l2Error(toRational(P), toRational(out.points));
     return out;
 }
 

@@ -28,9 +28,11 @@ template <class S> struct DegreeReduction {
 /// Exact for rationals. An Error (TooFewPoints) for a single point: degree 0 has nothing to
 /// reduce.
 Expected<DegreeReduction<Rational>> reduceDegree(const std::vector<RPoint>& P);
-/// For doubles: the exact rational operator G⁻¹H rounded to doubles and applied to P; when P
-/// is exactly (in rationals) the elevation of some curve, that curve, with exact = true.
-/// Degrees above 40 are refused (OutOfRange): G's condition number grows like 16^n.
+/// For doubles: each double is the rational it denotes, reduced exactly and rounded once (the
+/// correctly rounded optimum; G's condition number grows too fast with n for a floating-point
+/// solve). exact = true when P is exactly the elevation of a curve (its points then need not be
+/// doubles and are rounded). Degrees above 40 are refused (OutOfRange), and non-finite points
+/// (InvalidInput).
 Expected<DegreeReduction<double>> reduceDegree(const std::vector<Point>& P);
 
 } // namespace granota
