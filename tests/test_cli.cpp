@@ -4,6 +4,8 @@
 
 #include <QtTest>
 
+#include <cmath>
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -69,6 +71,42 @@ private slots:
         QCOMPARE(p[0].toDouble(), -27.0 / 16);
         QCOMPARE(p[1].toDouble(), 15.0 / 16);
         QCOMPARE(r.json()["poly"].toObject()["x"].toArray()[4].toDouble(), -43.0);
+    }
+
+    // --reduce: the closest quadratic in L² to (0,0),(0,1),(1,1),(1,0) removes the cubic's
+    // shifted-Legendre component: x = 3t² − 2t³ + (1/10)(20t³ − 30t² + 12t − 1) = −1/10 + 6t/5,
+    // so the x's are −1/10, 1/2, 11/10; y = 3t − 3t² is already quadratic (0, 3/2, 0). The
+    // error is |−2/20|·‖L̃_3‖ = (1/10)/√7 = √(1/700).
+    void bezierReduce()
+    {
+        const Run r = cli({"bezier", "--points", "0,0;0,1;1,1;1,0", "--reduce", "--exact", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray q = r.json()["reduced"].toArray();
+        QCOMPARE(q.size(), 3);
+        QCOMPARE(strings(q[0].toArray()), QStringList({"-1/10", "0"}));
+        QCOMPARE(strings(q[1].toArray()), QStringList({"1/2", "3/2"}));
+        QCOMPARE(strings(q[2].toArray()), QStringList({"11/10", "0"}));
+        QVERIFY(std::abs(r.json()["reduction_error"].toDouble() - std::sqrt(1.0 / 700)) < 1e-15);
+        QVERIFY(!r.json().contains("levels")); // no --t: only the reduction
+
+        // Doubles, with --t: the construction and the reduction, correctly rounded.
+        const Run d = cli({"bezier", "--points", "0,0;0,1;1,1;1,0", "--t", "0.5", "--reduce", "--json"});
+        QCOMPARE(d.exitCode, 0);
+        QVERIFY(d.json().contains("levels"));
+        QCOMPARE(d.json()["reduced"].toArray()[2].toArray()[0].toDouble(), 1.1);
+        QVERIFY(d.out.contains("\"reduction_error\":0.0377964473009227"));
+
+        // Ex 2.2's quartic elevated to degree 5 (exactly, as fractions) comes back exactly.
+        const Run e = cli({"bezier", "--points", "2,3;-2/5,7;-17/5,7/5;-9/5,-9/5;1,-2/5;-7,-2", "--reduce", "--exact", "--json"});
+        QCOMPARE(e.exitCode, 0);
+        const QJsonArray back = e.json()["reduced"].toArray();
+        QCOMPARE(back.size(), 5);
+        QCOMPARE(strings(back[1].toArray()), QStringList({"-1", "8"}));
+        QCOMPARE(strings(back[2].toArray()), QStringList({"-5", "-3"}));
+        QCOMPARE(strings(back[3].toArray()), QStringList({"3", "0"}));
+        QCOMPARE(e.json()["reduction_error"].toDouble(), 0.0);
+        const Run t = cli({"bezier", "--points", "0,0;0,1;1,1;1,0", "--reduce"});
+        QVERIFY(t.out.contains("L2 distance: 0.03779644730092272"));
     }
 
     void bernsteinExact()
@@ -235,6 +273,9 @@ private slots:
         QTest::newRow("unknown command") << QStringList{"frobnicate"};
         QTest::newRow("unknown option") << QStringList{"bezier", "--points", "0,0;1,1", "--t", "0", "--colour", "red"};
         QTest::newRow("missing t") << QStringList{"bezier", "--points", "0,0;1,1"};
+        QTest::newRow("reduce one point") << QStringList{"bezier", "--points", "1,1", "--reduce"};
+        QTest::newRow("reduce degree 41") << QStringList{"bezier", "--points", QString("0,0;").repeated(41) + "1,1", "--reduce"};
+        QTest::newRow("reduce NaN") << QStringList{"bezier", "--points", "0,0;nan,1", "--reduce"};
         QTest::newRow("missing value") << QStringList{"bezier", "--points", "0,0;1,1", "--t"};
         QTest::newRow("NaN point") << QStringList{"bezier", "--points", "0,0;nan,1", "--t", "0.5"};
         QTest::newRow("inf point") << QStringList{"bezier", "--points", "0,0;1,inf", "--t", "0.5"};

@@ -1,6 +1,8 @@
 // The work-precision reports of docs/work-precision.md teach what theory says: the numbers are checked
 // here (orders of convergence, who loses digits where), never the times.
+#include "core/curves/bezier/arc_length.h"
 #include "core/reports/work_precision.h"
+#include "core/reports/work_precision_reports.h"
 
 #include <QTest>
 
@@ -252,6 +254,42 @@ private slots:
             samples += s.samples.size();
         QCOMPARE(static_cast<std::size_t>(lines.size() - header - 1), samples);
         QVERIFY(lines.last().startsWith(QStringLiteral("RK4,")));
+    }
+
+    // arc-length: the adaptive rule meets its requested tolerance on every curve (and 1e-12 on
+    // the cusp); one 24-point rule is off by far more than 1e-12 on the cusp curve; every
+    // method's error falls from its coarsest to its finest setting.
+    void arcLengthAdaptiveBeatsFixedRules()
+    {
+        const auto r = quickReport("arc-length");
+        const auto* adaptive = r.find("adaptive Gauss–Legendre");
+        QVERIFY(adaptive && adaptive->samples.size() >= 10);
+        for (const auto& s : adaptive->samples)
+            QVERIFY2(s.error <= std::max(10 * s.knob, 1e-14), qPrintable(QString::number(s.knob)));
+        for (const char* m : {"adaptive Gauss–Legendre", "Gauss–Legendre 24 points", "Simpson", "polyline"}) {
+            const auto* series = r.find(m);
+            QVERIFY(series && series->samples.size() >= 5);
+            QVERIFY2(series->samples.back().error < series->samples.front().error / 100, m);
+        }
+        // Polyline: O(1/m²), so the last doublings each gain about 4 (between 3 and 5).
+        const auto* polyline = r.find("polyline");
+        const auto& ps = polyline->samples;
+        const double ratio = ps[ps.size() - 2].error / ps.back().error;
+        QVERIFY2(ratio > 3 && ratio < 5, qPrintable(QString::number(ratio)));
+
+        for (const auto& c : reports::arcLengthReportCurves()) {
+            if (c.name != "cusp")
+                continue;
+            QCOMPARE(c.length, 2 * std::sqrt(2.0) - 1);
+            QVERIFY(std::abs(arcLength(c.points) - c.length) <= 1e-12 * c.length);
+            const double one = reports::gaussLegendre24Length(c.points, 1);
+            QVERIFY(std::abs(one - c.length) > 1e-4 * c.length); // bezier-js's error, about 1e-3
+            QVERIFY(std::abs(reports::gaussLegendre24Length(c.points, 15) - c.length) > 1e-12 * c.length);
+        }
+        // The adaptive rule at 1e-15 agrees with every reference: the exact lengths and the long
+        // double one of the degree-10 curve.
+        for (const auto& c : reports::arcLengthReportCurves())
+            QVERIFY(std::abs(arcLength(c.points, 0, 1, 1e-15) - c.length) <= 1e-14 * c.length);
     }
 };
 

@@ -3490,6 +3490,46 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
             <source>run time per call (s)</source>
             <translation>run time per call (s)</translation>
         </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="1" />
+            <source>Arc length: adaptive Gauss–Legendre, one 24-point rule, Simpson, polyline</source>
+            <translation>Arc length: adaptive Gauss–Legendre, one 24-point rule, Simpson, polyline</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="1" />
+            <source>The adaptive rule, split at the cusp, reaches rounding level in about two microseconds; one 24-point Gauss rule is off by 1e-3 on the cusp and, repeated on pieces that do not end there, gains only a factor 4 per doubling (the kink, not the rule, sets the pace); Simpson gains 16 per halving, the polyline 4.</source>
+            <translation>The adaptive rule, split at the cusp, reaches rounding level in about two microseconds; one 24-point Gauss rule is off by 1e-3 on the cusp and, repeated on pieces that do not end there, gains only a factor 4 per doubling (the kink, not the rule, sets the pace); Simpson gains 16 per halving, the polyline 4.</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="1" />
+            <source>adaptive Gauss–Legendre</source>
+            <translation>adaptive Gauss–Legendre</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="1" />
+            <source>Gauss–Legendre 24 points</source>
+            <translation>Gauss–Legendre 24 points</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="1" />
+            <source>Simpson</source>
+            <translation>Simpson</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="1" />
+            <source>polyline</source>
+            <translation>polyline</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="1" />
+            <source>setting (tolerance, pieces, intervals or segments)</source>
+            <translation>setting (tolerance, pieces, intervals or segments)</translation>
+        </message>
+        <message>
+            <location filename="../ui/work_precision_plot.cpp" line="1" />
+            <source>max relative error of L over four curves, one with a cusp</source>
+            <translation>max relative error of L over four curves, one with a cusp</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::WorkPrecisionPanel</name>

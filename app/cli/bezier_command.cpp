@@ -1,9 +1,12 @@
 // granota-cli bezier: De Casteljau's construction (Def 2.4) at one t, every level, and
-// the curve in powers of t (Ex 2.2, Ex 2.3).
+// the curve in powers of t (Ex 2.2, Ex 2.3); with --reduce, the L²-closest curve of one degree
+// less (degree_reduction.h).
 #include "app/cli/command.h"
 #include "app/cli/finite_doubles.h"
 
+#include "core/base/number_format.h"
 #include "core/curves/bezier/de_casteljau.h"
+#include "core/curves/bezier/degree_reduction.h"
 #include "core/exact/exact_cost.h"
 #include "core/curves/bezier/power_basis.h"
 #include "core/exact/polynomial_text.h"
@@ -14,6 +17,50 @@ namespace granota::cli {
 
 namespace {
 
+/// The largest degree --reduce takes: the exact normal equations grow like n³ in size of
+/// numbers, and the double operator loses digits beyond (degree_reduction.h).
+constexpr int kMaxReductionDegree = 40;
+
+/// --reduce: "reduced" (n control points) and "reduction_error" (the L² distance), and the
+/// same as text.
+Expected<void> addReduction(const std::vector<RPoint>& points, bool exact, Json& json, std::ostringstream& txt)
+{
+    const int n = static_cast<int>(points.size()) - 1;
+    if (n < 1)
+        return makeError(ErrorCode::TooFewPoints, "--reduce needs at least two control points (degree 0 has nothing to reduce)");
+    if (n > kMaxReductionDegree)
+        return makeError(ErrorCode::DegreeTooHigh, "--reduce takes at most degree " + std::to_string(kMaxReductionDegree));
+    Json reduced = Json::array();
+    std::string line;
+    double error = 0;
+    if (exact) {
+        auto r = reduceDegree(points);
+        if (!r)
+            return r.error();
+        for (const RPoint& q : r->points) {
+            reduced.push(point(q, true));
+            line += "  " + text(q);
+        }
+        error = r->error;
+    } else {
+        auto d = finiteDoubles(points, true);
+        if (!d)
+            return d.error();
+        auto r = reduceDegree(*d);
+        if (!r)
+            return r.error();
+        for (const Point& q : r->points) {
+            reduced.push(point(q));
+            line += "  " + text(q);
+        }
+        error = r->error;
+    }
+    txt << "Reduced to degree " << n - 1 << " (closest in L2[0,1]):" << line << "\n";
+    txt << "L2 distance: " << formatDouble(error) << "\n";
+    json.set("reduced", std::move(reduced)).set("reduction_error", number(error));
+    return {};
+}
+
 Expected<CommandOutput> run(const Arguments& args)
 {
     auto points = args.points();
@@ -22,6 +69,19 @@ Expected<CommandOutput> run(const Arguments& args)
     if (static_cast<int>(points->size()) > kMaxDegree + 1)
         return makeError(ErrorCode::DegreeTooHigh,
                          "at most " + std::to_string(kMaxDegree + 1) + " control points (degree " + std::to_string(kMaxDegree) + ")");
+    if (args.flag("reduce") && !args.has("t")) {
+        // Only the reduction: no De Casteljau construction was asked for.
+        CommandOutput out;
+        std::ostringstream txt;
+        const int n = static_cast<int>(points->size()) - 1;
+        txt << "Bézier curve of degree " << n << "\n";
+        out.json.set("degree", n);
+        auto r = addReduction(*points, args.flag("exact"), out.json, txt);
+        if (!r)
+            return r.error();
+        out.text = txt.str();
+        return out;
+    }
     auto t = args.rational("t", std::nullopt);
     if (!t)
         return t.error();
@@ -119,6 +179,11 @@ Expected<CommandOutput> run(const Arguments& args)
         .set("poly", std::move(polyJson))
         .set("tangent", std::move(tangentJson))
         .set("degree", n);
+    if (args.flag("reduce")) {
+        auto r = addReduction(*points, exact, out.json, txt);
+        if (!r)
+            return r.error();
+    }
     out.text = txt.str();
     return out;
 }
@@ -127,9 +192,10 @@ Expected<CommandOutput> run(const Arguments& args)
 
 Command bezierCommand()
 {
-    return {"bezier", "--points P | --points-file F  --t T  [--exact] [--json]",
-            "De Casteljau's construction at t: every level P_i^r(t), c(t), c'(t), c(t) in powers of t",
-            {{"points", "points-file", "t"}, {"exact", "json"}, {}}, &run};
+    return {"bezier", "--points P | --points-file F  --t T  [--reduce] [--exact] [--json]",
+            "De Casteljau's construction at t: every level P_i^r(t), c(t), c'(t), c(t) in powers of t; "
+            "--reduce: the closest curve of one degree less (--t then optional)",
+            {{"points", "points-file", "t"}, {"exact", "json", "reduce"}, {}}, &run};
 }
 
 } // namespace granota::cli

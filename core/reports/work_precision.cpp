@@ -20,7 +20,7 @@ const char* toString(WorkPrecisionAxis axis) { return axis == WorkPrecisionAxis:
 
 std::vector<std::string> workPrecisionReportNames()
 {
-    return {"curve-sampling", "catmull-rom-sampling", "bezier-evaluation", "least-squares", "integrators", "soft-body"};
+    return {"curve-sampling", "catmull-rom-sampling", "bezier-evaluation", "least-squares", "integrators", "soft-body", "arc-length"};
 }
 
 Expected<WorkPrecisionReport> runWorkPrecisionReport(std::string_view name, const WorkPrecisionOptions& options)
@@ -37,6 +37,8 @@ Expected<WorkPrecisionReport> runWorkPrecisionReport(std::string_view name, cons
         return reports::integrators(options);
     if (name == "soft-body")
         return reports::softBody(options);
+    if (name == "arc-length")
+        return reports::arcLength(options);
     std::string known;
     for (const auto& n : workPrecisionReportNames())
         known += (known.empty() ? "" : ", ") + n;

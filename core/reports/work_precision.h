@@ -60,7 +60,8 @@ struct WorkPrecisionOptions {
     std::function<bool(double)> progress;
 };
 
-/// curve-sampling, catmull-rom-sampling, bezier-evaluation, least-squares, integrators, soft-body.
+/// curve-sampling, catmull-rom-sampling, bezier-evaluation, least-squares, integrators, soft-body,
+/// arc-length.
 std::vector<std::string> workPrecisionReportNames();
 
 /// Runs a report. Errors: an unknown name, or "cancelled" when `progress` returned false.

@@ -1,6 +1,6 @@
 #pragma once
 /// \file work_precision_reports.h
-/// The six reports of docs/work-precision.md, one file each (report_*.cpp); run through
+/// The reports of docs/work-precision.md, one file each (report_*.cpp); run through
 /// runWorkPrecisionReport(), which checks the name and handles cancelling.
 
 #include "core/base/vec2.h"
@@ -32,6 +32,18 @@ Expected<WorkPrecisionReport> bezierEvaluation(const WorkPrecisionOptions& optio
 Expected<WorkPrecisionReport> leastSquares(const WorkPrecisionOptions& options);
 Expected<WorkPrecisionReport> integrators(const WorkPrecisionOptions& options);
 Expected<WorkPrecisionReport> softBody(const WorkPrecisionOptions& options);
+Expected<WorkPrecisionReport> arcLength(const WorkPrecisionOptions& options);
+
+/// The arc-length report's curves with their reference lengths (exact where known).
+struct ArcLengthCurve {
+    std::string name;
+    std::vector<Point> points;
+    double length = 0;
+};
+std::vector<ArcLengthCurve> arcLengthReportCurves();
+/// One 24-point Gauss–Legendre rule on each of `pieces` equal pieces of [0, 1] (1 piece: what
+/// bezier-js computes).
+double gaussLegendre24Length(const std::vector<Point>& p, int pieces);
 
 /// Reproducible control points with small integer coordinates in [−10, 10].
 std::vector<Point> reportControlPoints(int count, unsigned seed);

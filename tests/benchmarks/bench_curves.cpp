@@ -1,6 +1,7 @@
 // Google Benchmark: the curve hot paths (issue: speed). How cost grows with the size of the
 // work — degree, samples, data points — is printed by the Complexity() fits.
 //   build/bin/granota-bench --benchmark_filter='Fit|Outline|DeCasteljau'
+#include "core/curves/bezier/arc_length.h"
 #include "core/curves/bezier/bernstein.h"
 #include "core/curves/bezier/closest_point.h"
 #include "core/curves/bezier/curve_features.h"
@@ -131,10 +132,34 @@ void BM_ClosestPoint(benchmark::State& state)
     state.SetComplexityN(state.range(0));
 }
 
+/// The length of a degree-n curve (wavy control points) to the default 1e-13 relative
+/// tolerance. Targets: cubic < 1 µs, degree 10 < 5 µs.
+void BM_ArcLength(benchmark::State& state)
+{
+    const auto p = wavyPoints(static_cast<int>(state.range(0)) + 1);
+    for (auto _ : state)
+        benchmark::DoNotOptimize(arcLength(p));
+}
+
+/// t(s) on a built parametrization: constant-speed playback asks for one per frame.
+void BM_ArcLengthInverse(benchmark::State& state)
+{
+    const ArcLengthParametrization a(wavyPoints(static_cast<int>(state.range(0)) + 1));
+    double s = 0;
+    for (auto _ : state) {
+        s += 0.618 * a.total();
+        if (s > a.total())
+            s -= a.total();
+        benchmark::DoNotOptimize(a.parameterAt(s));
+    }
+}
+
 } // namespace
 
 BENCHMARK(BM_CurveFeatures)->Arg(3)->Arg(10)->Arg(30)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ClosestPoint)->Arg(3)->Arg(10)->Arg(30)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ArcLength)->Arg(3)->Arg(10)->Arg(30)->Unit(benchmark::kNanosecond);
+BENCHMARK(BM_ArcLengthInverse)->Arg(3)->Arg(10)->Unit(benchmark::kNanosecond);
 BENCHMARK(BM_DeCasteljauPoint)->DenseRange(3, 30, 9)->Arg(60)->Complexity(benchmark::oNSquared);
 BENCHMARK(BM_BernsteinPoint)->DenseRange(3, 30, 9)->Arg(60)->Complexity(benchmark::oN);
 BENCHMARK(BM_HornerPoint)->DenseRange(3, 30, 9)->Arg(60)->Complexity(benchmark::oN);

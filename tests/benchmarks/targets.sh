@@ -31,12 +31,14 @@ outline_us=$(bench 'BM_OutlineFit/3$' us)
 fit_ms=$(bench 'BM_FitBezier/1000000/10$' ms)
 drag_ms=$(bench 'BM_GuiDragDegree30/1$' ms)
 frogs_ms=$(bench 'BM_GuiFrog200$' ms)
+length3_us=$(bench 'BM_ArcLength/3$' us)
+length10_us=$(bench 'BM_ArcLength/10$' us)
 features_us=$(bench 'BM_CurveFeatures/10$' us)
 closest_us=$(bench 'BM_ClosestPoint/10$' us)
 
-python3 - "$java_ns" "$seed_ns" "$stable_us" "$pile_ms" "$spread_ms" "$outline_us" "$fit_ms" "$drag_ms" "$frogs_ms" "$features_us" "$closest_us" <<'PY'
+python3 - "$java_ns" "$seed_ns" "$stable_us" "$pile_ms" "$spread_ms" "$outline_us" "$fit_ms" "$drag_ms" "$frogs_ms" "$length3_us" "$length10_us" "$features_us" "$closest_us" <<'PY'
 import sys, platform, subprocess
-java, seed, stable, pile, spread, outline, fit, drag, frogs, features, closest = map(float, sys.argv[1:])
+java, seed, stable, pile, spread, outline, fit, drag, frogs, length3, length10, features, closest = map(float, sys.argv[1:])
 cpu = next((l.split(':',1)[1].strip() for l in open('/proc/cpuinfo') if l.startswith('model name')), '?')
 print(f"Machine: {cpu}, {subprocess.check_output(['nproc']).decode().strip()} cores; release build.\n")
 print("| target | measured | goal | met |")
@@ -49,6 +51,8 @@ rows = [
   ("degree-10 fit of 10⁶ points", f"{fit:.0f} ms", "< 100 ms", fit < 100),
   ("drag on a degree-30 curve: recompute + repaint", f"{drag:.1f} ms", "< 16.7 ms (one frame)", drag < 16.7),
   ("200 frogs on the canvas: step + paint", f"{frogs:.1f} ms", "< 16.7 ms (60 fps)", frogs < 16.7),
+  ("arc length of a cubic to 1e-13 relative", f"{length3:.2f} µs", "< 1 µs", length3 < 1),
+  ("arc length of a degree-10 curve to 1e-13 relative", f"{length10:.2f} µs", "< 5 µs", length10 < 5),
   ("extrema, tight box, inflections and cusps of a degree-10 curve", f"{features:.2f} µs", "< 5 µs", features < 5),
   ("global closest point on a degree-10 curve", f"{closest:.2f} µs", "< 5 µs", closest < 5),
   ("one `stable` frog step", f"{stable:.1f} µs", "—", True),

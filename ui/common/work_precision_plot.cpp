@@ -41,6 +41,7 @@ QString reportTitle(const WorkPrecisionReport& r)
         {"least-squares", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Least-squares Bézier fit: normal equations, QR, SVD")},
         {"integrators", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Integrators: global error against run time")},
         {"soft-body", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Soft body: constraint error against substeps")},
+        {"arc-length", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Arc length: adaptive Gauss–Legendre, one 24-point rule, Simpson, polyline")},
     };
     return translated(titles, r.name, r.title);
 }
@@ -65,6 +66,10 @@ QString reportLesson(const WorkPrecisionReport& r)
             "and wins when high accuracy is needed.")},
         {"soft-body", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "XPBD's constraint error falls as the substeps grow, at a cost proportional to their number; "
             "the seed's per-step corrections leave a lasting area deficit.")},
+        {"arc-length", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "The adaptive rule, split at the cusp, reaches rounding level in about two microseconds; one "
+            "24-point Gauss rule is off by 1e-3 on the cusp and, repeated on pieces that do not end "
+            "there, gains only a factor 4 per doubling (the kink, not the rule, sets the pace); Simpson "
+            "gains 16 per halving, the polyline 4.")},
     };
     return translated(lessons, r.name, r.lesson);
 }
@@ -88,6 +93,10 @@ QString reportMethod(const std::string& m)
         {"XPBD area", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "XPBD area")},
         {"XPBD edge lengths", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "XPBD edge lengths")},
         {"seed area (Annex II)", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "seed area (Annex II)")},
+        {"adaptive Gauss–Legendre", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "adaptive Gauss–Legendre")},
+        {"Gauss–Legendre 24 points", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Gauss–Legendre 24 points")},
+        {"Simpson", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Simpson")},
+        {"polyline", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "polyline")},
     };
     return translated(names, m, m);
 }
@@ -102,6 +111,8 @@ QString reportKnob(const WorkPrecisionReport& r)
         return QCoreApplication::translate("granota::ui::WorkPrecision", "step h");
     if (r.knob == "substeps")
         return QCoreApplication::translate("granota::ui::WorkPrecision", "substeps");
+    if (r.knob == "setting")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "setting (tolerance, pieces, intervals or segments)");
     return QString::fromStdString(r.knob);
 }
 
@@ -117,6 +128,8 @@ QString reportError(const WorkPrecisionReport& r)
         return QCoreApplication::translate("granota::ui::WorkPrecision", "|x(T) − exact| at T = 10");
     if (r.name == "soft-body")
         return QCoreApplication::translate("granota::ui::WorkPrecision", "RMS relative constraint violation");
+    if (r.name == "arc-length")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "max relative error of L over four curves, one with a cusp");
     return QString::fromStdString(r.error);
 }
 

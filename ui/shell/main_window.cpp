@@ -40,7 +40,7 @@ namespace {
 std::vector<std::string> reportsOf(const QString& key)
 {
     if (key == QLatin1String("decasteljau"))
-        return {"curve-sampling", "bezier-evaluation"};
+        return {"curve-sampling", "bezier-evaluation", "arc-length"};
     if (key == QLatin1String("bernstein"))
         return {"bezier-evaluation"};
     if (key == QLatin1String("fit"))
