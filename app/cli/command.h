@@ -36,6 +36,7 @@ Command benchCommand();
 Command demoCommand();
 Command reportCommand();
 Command projectCommand();
+Command analyzeCommand();
 
 /// Number output: exact "p/q" strings with --exact, doubles otherwise (docs/cli.md).
 Json number(const Rational& q, bool exact);
