@@ -3492,8 +3492,8 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
         </message>
         <message>
             <location filename="../ui/work_precision_plot.cpp" line="1" />
-            <source>Arc length: adaptive Gauss–Legendre, one 24-point rule, Simpson, polyline</source>
-            <translation>Longitud d'arc: Gauss–Legendre adaptatiu, una regla de 24 punts, Simpson, poligonal</translation>
+            <source>Arc length: Gauss–Legendre, Simpson, polyline</source>
+            <translation>Longitud d'arc: Gauss–Legendre, Simpson, poligonal</translation>
         </message>
         <message>
             <location filename="../ui/work_precision_plot.cpp" line="1" />

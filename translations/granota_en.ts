@@ -3492,8 +3492,8 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
         </message>
         <message>
             <location filename="../ui/work_precision_plot.cpp" line="1" />
-            <source>Arc length: adaptive Gauss–Legendre, one 24-point rule, Simpson, polyline</source>
-            <translation>Arc length: adaptive Gauss–Legendre, one 24-point rule, Simpson, polyline</translation>
+            <source>Arc length: Gauss–Legendre, Simpson, polyline</source>
+            <translation>Arc length: Gauss–Legendre, Simpson, polyline</translation>
         </message>
         <message>
             <location filename="../ui/work_precision_plot.cpp" line="1" />

@@ -148,7 +148,7 @@ Expected<WorkPrecisionReport> arcLength(const WorkPrecisionOptions& options)
 {
     WorkPrecisionReport r;
     r.name = "arc-length";
-    r.title = "Arc length: adaptive Gauss–Legendre, one 24-point rule, Simpson, polyline";
+    r.title = "Arc length: Gauss–Legendre, Simpson, polyline";
     r.knob = "setting";
     r.error = "max relative error of L over four curves, one with a cusp";
     r.reference = "exact lengths (2, (2√5 + asinh 2)/4, 2√2 − 1) and long double Gauss–Legendre split at the cusp";

@@ -41,7 +41,7 @@ QString reportTitle(const WorkPrecisionReport& r)
         {"least-squares", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Least-squares Bézier fit: normal equations, QR, SVD")},
         {"integrators", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Integrators: global error against run time")},
         {"soft-body", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Soft body: constraint error against substeps")},
-        {"arc-length", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Arc length: adaptive Gauss–Legendre, one 24-point rule, Simpson, polyline")},
+        {"arc-length", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Arc length: Gauss–Legendre, Simpson, polyline")},
     };
     return translated(titles, r.name, r.title);
 }
