@@ -10,6 +10,7 @@
 #include "core/io/worked_examples.h"
 #include "ui/common/canvas_legend.h"
 #include "ui/common/curve_canvas.h"
+#include "ui/decasteljau/decasteljau_construction_drawing.h"
 #include "ui/decasteljau/decasteljau_flow_layout.h"
 #include "ui/decasteljau/decasteljau_parameter_control.h"
 #include "ui/common/exact_panel.h"
@@ -140,23 +141,6 @@ void drawArrow(QPainter& p, const QPointF& from, const QPointF& to, double head)
     tip << to << to - head * u + 0.45 * head * n << to - head * u - 0.45 * head * n;
     p.setBrush(p.pen().color());
     p.drawPolygon(tip);
-}
-
-QPainterPath polylinePath(const std::vector<Point>& points, const ViewTransform& view)
-{
-    QPainterPath path;
-    bool first = true;
-    for (const Point& q : points) {
-        if (!isFinite(q))
-            continue;
-        const QPointF s = view.toScreen(q);
-        if (first)
-            path.moveTo(s);
-        else
-            path.lineTo(s);
-        first = false;
-    }
-    return path;
 }
 
 /// The halves of the split at t: [0, t] and [t, 1].
@@ -334,28 +318,8 @@ void DeCasteljauTab::buildLayers()
     });
     // The construction of Def 2.4: every level r ≥ 1, points and segments, one colour each.
     m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
-        if (!m_showConstruction || m_levels.levels.size() < 2)
-            return;
-        const int n = m_levels.degree();
-        for (int r = 1; r < n; ++r) {
-            const auto& level = m_levels.levels[static_cast<std::size_t>(r)];
-            const QColor c = CanvasStyle::series(r);
-            // Beyond degree 10 the levels crowd each other: hairlines keep them apart, and a
-            // one-pixel line is drawn by Qt's fast stroker — a 1.4 px one costs the outline
-            // of every segment, three quarters of a frame at degree 30.
-            p.setPen(QPen(c, style.thinLine() * (n > 10 ? 1.0 : 1.4)));
-            p.setBrush(Qt::NoBrush);
-            p.drawPath(polylinePath(level, view));
-            // All the level's points as one path: one fill and one stroke instead of one per
-            // point keeps a drag at degree 30 (465 points) within a frame.
-            const double rad = style.handleRadius() * 0.6;
-            QPainterPath dots;
-            for (const Point& q : level)
-                dots.addEllipse(view.toScreen(q), rad, rad);
-            p.setPen(QPen(Qt::white, style.thinLine()));
-            p.setBrush(c);
-            p.drawPath(dots);
-        }
+        if (m_showConstruction && m_levels.levels.size() >= 2)
+            drawDeCasteljauConstruction(p, view, style, m_levels);
     });
     // Split at t: the halves' control polygons are the triangle's two edges. Drawn over the
     // construction, on a white halo, with hollow squares larger than the level's dots: both
