@@ -1,0 +1,119 @@
+#include "core/curves/bezier/curvature.h"
+
+#include "core/curves/bezier/de_casteljau.h"
+#include "core/curves/bezier/hodograph.h"
+#include "core/exact/square_root.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+namespace granota {
+
+namespace {
+
+bool finite(double v) { return std::isfinite(v); }
+
+} // namespace
+
+CurvatureAt curvatureAt(const std::vector<Point>& P, double t)
+{
+    assert(!P.empty());
+    CurvatureAt out;
+    t = std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0);
+    out.t = t;
+    out.point = deCasteljauPoint(P, t);
+    const int n = static_cast<int>(P.size()) - 1;
+    if (n == 0)
+        return out; // a single point: c′ ≡ 0, nothing is defined
+
+    // Scale by a power of two (exact) so that every coordinate is at most 1 in magnitude.
+    double m = 0;
+    for (const Point& p : P)
+        m = std::max({m, std::abs(p.x), std::abs(p.y)});
+    int e = 0;
+    if (m > 0 && finite(m))
+        std::frexp(m, &e);
+    std::vector<Point> Q(P);
+    for (Point& q : Q)
+        q = Point(std::ldexp(q.x, -e), std::ldexp(q.y, -e));
+    double h = 0; // largest coordinate difference between control points (scaled)
+    {
+        double xmin = Q[0].x, xmax = Q[0].x, ymin = Q[0].y, ymax = Q[0].y;
+        for (const Point& q : Q) {
+            xmin = std::min(xmin, q.x), xmax = std::max(xmax, q.x);
+            ymin = std::min(ymin, q.y), ymax = std::max(ymax, q.y);
+        }
+        h = std::max(xmax - xmin, ymax - ymin);
+    }
+    const std::vector<Point> d1 = hodograph(Q);
+    const std::vector<Point> d2 = hodograph(d1);
+    const Point v = deCasteljauPoint(d1, t);
+    const Point a = deCasteljauPoint(d2, t);
+    out.tangent = Point(std::ldexp(v.x, e), std::ldexp(v.y, e));
+    const double speed = norm(v);
+    if (!(speed > 1e-12 * n * h))
+        return out; // c′ = 0 relative to the curve's size: κ undefined
+    const Point unit(v.x / speed, v.y / speed);
+    out.normal = Point(-unit.y, unit.x);
+    const double c = cross(v, a);
+    const double roundoff = 4.0 * (n + 1) * std::numeric_limits<double>::epsilon() * speed * norm(a);
+    if (std::abs(c) <= roundoff) {
+        out.curvature = 0.0; // straight here: radius and centre infinite
+        return out;
+    }
+    // κ of the scaled curve, then of the curve itself: κ scales as 1/length.
+    const double kScaled = c / (speed * speed * speed);
+    const double k = std::ldexp(kScaled, -e);
+    if (!finite(k) || k == 0.0) {
+        // Beyond the range of doubles (|κ| > 1e308 or < 1e-308): say "undefined" rather than
+        // a false infinity or a false zero.
+        out.normal.reset();
+        return out;
+    }
+    out.curvature = k;
+    const double r = std::ldexp(1.0 / std::abs(kScaled), e);
+    if (finite(r)) {
+        out.radius = r;
+        const double s = k > 0 ? r : -r;
+        const Point centre(out.point.x + s * out.normal->x, out.point.y + s * out.normal->y);
+        if (isFinite(centre))
+            out.center = centre;
+        else
+            out.radius.reset();
+    }
+    return out;
+}
+
+ExactCurvature exactCurvatureAt(const std::vector<RPoint>& P, const Rational& t)
+{
+    assert(!P.empty());
+    const std::vector<RPoint> d1 = hodograph(P);
+    const std::vector<RPoint> d2 = hodograph(d1);
+    const RPoint v = deCasteljauPoint(d1, t);
+    const RPoint a = deCasteljauPoint(d2, t);
+    ExactCurvature k;
+    k.numerator = v.x * a.y - v.y * a.x;
+    k.speedSquared = v.x * v.x + v.y * v.y;
+    return k;
+}
+
+std::optional<std::string> exactCurvatureText(const ExactCurvature& k)
+{
+    if (k.speedSquared == 0)
+        return std::nullopt;
+    if (k.numerator == 0)
+        return std::string("0");
+    // κ = N / (D √D) with √D = a√b:  κ = N / (D a √b) = (N / (D a b)) √b.
+    const auto root = simplifySquareRoot(k.speedSquared);
+    if (!root)
+        return toString(k.numerator) + "/" + toString(k.speedSquared) + "^(3/2)";
+    Rational q = k.numerator / (k.speedSquared * root->coefficient * Rational(root->radicand));
+    const bool negative = q < 0;
+    if (negative)
+        q = -q;
+    return (negative ? "-" : "") + toString(SimplifiedSquareRoot{q, root->radicand});
+}
+
+} // namespace granota
