@@ -1,0 +1,376 @@
+#include "core/curves/bezier/bernstein_roots.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+
+namespace granota {
+
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+/// Deepest halving: 2⁻¹⁰⁰ is below the spacing of doubles anywhere but right next to 0.
+constexpr int kMaxDepth = 100;
+/// Above this degree C(n, i) could overflow in the Horner-like scheme: De Casteljau instead.
+constexpr int kHornerMaxDegree = 500;
+
+int signOf(double v) { return (v > 0) - (v < 0); }
+
+/// Descartes' rule for the Bernstein form: sign changes of b_0 … b_n, zeros skipped.
+int signChanges(const double* b, int n)
+{
+    int changes = 0;
+    int last = 0;
+    for (int i = 0; i <= n; ++i) {
+        const int s = signOf(b[i]);
+        if (s == 0)
+            continue;
+        if (last != 0 && s != last)
+            ++changes;
+        last = s;
+    }
+    return changes;
+}
+
+/// Σ b_i B_i^n(t) by Volk–Schumaker's scheme: Horner in s = 1 − t with the powers of t and
+/// the binomials carried along; only products of nonnegative factors besides the b_i.
+double hornerValue(const double* b, int n, double t)
+{
+    if (n == 0)
+        return b[0];
+    const double s = 1.0 - t;
+    double tn = 1.0;
+    double binomial = 1.0;
+    double sum = b[0] * s;
+    for (int i = 1; i < n; ++i) {
+        tn *= t;
+        binomial = binomial * static_cast<double>(n - i + 1) / static_cast<double>(i);
+        sum = (sum + tn * binomial * b[i]) * s;
+    }
+    return sum + tn * t * b[n];
+}
+
+double deCasteljauValue(const double* b, int n, double t)
+{
+    std::vector<double> w(b, b + n + 1);
+    for (int r = 1; r <= n; ++r)
+        for (int i = 0; i <= n - r; ++i)
+            w[static_cast<std::size_t>(i)] =
+                (1.0 - t) * w[static_cast<std::size_t>(i)] + t * w[static_cast<std::size_t>(i + 1)];
+    return w[0];
+}
+
+double value(const double* b, int n, double t)
+{
+    return n <= kHornerMaxDegree ? hornerValue(b, n, t) : deCasteljauValue(b, n, t);
+}
+
+/// p′(t) = n Σ (b_{i+1} − b_i) B_i^{n−1}(t), the differences formed on the fly.
+double derivative(const double* b, int n, double t)
+{
+    if (n == 0)
+        return 0.0;
+    const int m = n - 1;
+    if (m > kHornerMaxDegree) {
+        std::vector<double> d(static_cast<std::size_t>(n));
+        for (int i = 0; i < n; ++i)
+            d[static_cast<std::size_t>(i)] = b[i + 1] - b[i];
+        return n * deCasteljauValue(d.data(), m, t);
+    }
+    if (m == 0)
+        return n * (b[1] - b[0]);
+    const double s = 1.0 - t;
+    double tn = 1.0;
+    double binomial = 1.0;
+    double sum = (b[1] - b[0]) * s;
+    for (int i = 1; i < m; ++i) {
+        tn *= t;
+        binomial = binomial * static_cast<double>(m - i + 1) / static_cast<double>(i);
+        sum = (sum + tn * binomial * (b[i + 1] - b[i])) * s;
+    }
+    return n * (sum + tn * t * (b[m + 1] - b[m]));
+}
+
+/// The one root in (0, 1) of the local polynomial b (degree n) of an interval [a, a + w],
+/// where p has sign `leftSign` just right of 0 and the opposite sign just left of 1:
+/// Newton steps, each replaced by a bisection when it leaves the bracket, until the step
+/// is below the spacing of doubles at the global parameter a + u w.
+double polishRoot(const double* b, int n, double a, double w, int leftSign)
+{
+    double lo = 0.0;
+    double hi = 1.0;
+    // Start from the secant of the end values (regula falsi), a good guess for a short
+    // interval where p is nearly linear.
+    double u = 0.5;
+    if (b[0] != 0.0 && b[n] != 0.0) {
+        const double guess = b[0] / (b[0] - b[n]);
+        if (guess > 0.0 && guess < 1.0)
+            u = guess;
+    }
+    for (int iteration = 0; iteration < 200; ++iteration) {
+        const double f = value(b, n, u);
+        if (f == 0.0)
+            return a + u * w;
+        if (signOf(f) == leftSign)
+            lo = u;
+        else
+            hi = u;
+        const double d = derivative(b, n, u);
+        double next = (d != 0.0) ? u - f / d : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi))
+            next = 0.5 * (lo + hi);
+        const double t = a + u * w;
+        const double spacing = kEps * std::max(std::fabs(t), std::numeric_limits<double>::min());
+        if (std::fabs(next - u) * w <= spacing || (hi - lo) * w <= 2.0 * spacing)
+            return a + next * w;
+        u = next;
+    }
+    return a + u * w;
+}
+
+struct FoundRoot {
+    double t = 0;
+    double uncertainty = 0; ///< how far the true root may be (for merging)
+    bool crossing = false;
+    bool known = false;     ///< crossing is known (polished simple roots, ends)
+};
+
+class Solver {
+public:
+    Solver(const std::vector<double>& original, std::vector<double>& scratch)
+        : original_(original), n_(static_cast<int>(original.size()) - 1), scratch_(scratch)
+    {
+        double maxAbs = 0.0;
+        for (double c : original)
+            maxAbs = std::max(maxAbs, std::fabs(c));
+        globalTolerance_ = toleranceFor(maxAbs);
+    }
+
+    /// The rounding error of a value of p formed from coefficients at most `magnitude`:
+    /// n + 1 roundings per level of De Casteljau, with a safety factor 4.
+    double toleranceFor(double magnitude) const { return 4.0 * (n_ + 1) * kEps * magnitude; }
+
+    void run(double* b, double a, double w, int depth)
+    {
+        const int n = n_;
+        for (;;) {
+            const int v = signChanges(b, n);
+            if (v == 0)
+                return;
+            if (v == 1) {
+                int left = 0;
+                for (int i = 0; i <= n && left == 0; ++i)
+                    left = signOf(b[i]);
+                found.push_back({polishRoot(b, n, a, w, left), 0.0, true, true});
+                return;
+            }
+            double maxAbs = 0.0;
+            for (int i = 0; i <= n; ++i)
+                maxAbs = std::max(maxAbs, std::fabs(b[i]));
+            const double mid = a + 0.5 * w;
+            if ((maxAbs <= globalTolerance_ && maxAbs <= localTolerance(a, a + w)) || depth >= kMaxDepth
+                || !(mid > a && mid < a + w)) {
+                tangentialRoot(b, a, w);
+                return;
+            }
+            // De Casteljau at 1/2 in place (Def 2.4): b becomes the right half
+            // P_0^n, P_1^{n−1}, …, P_n^0 and `left` receives P_0^0, …, P_0^n.
+            double* left = b + (n + 1);
+            left[0] = b[0];
+            for (int r = 1; r <= n; ++r) {
+                for (int i = 0; i <= n - r; ++i)
+                    b[i] = 0.5 * (b[i] + b[i + 1]);
+                left[r] = b[0];
+            }
+            const double pm = b[0];
+            if (pm != 0.0 && signChanges(left, n) == 0 && signChanges(b, n) == 0) {
+                // The control polygon dipped across 0 but neither half's does: a zero
+                // touched at the midpoint, if p is 0 there within rounding.
+                if (std::fabs(pm) <= localTolerance(mid, mid))
+                    found.push_back({mid, 0.5 * w, false, false});
+                return;
+            }
+            run(left, a, 0.5 * w, depth + 1);
+            if (pm == 0.0)
+                found.push_back({mid, 0.0, false, false});
+            a = mid;
+            w *= 0.5;
+            ++depth;
+        }
+    }
+
+    std::vector<FoundRoot> found;
+
+private:
+    /// The largest rounding error of p on [t0, t1]: the Bernstein coefficients of
+    /// Σ |b_i| B_i^n restricted to the interval (all positive: no cancellation).
+    double localTolerance(double t0, double t1)
+    {
+        const int n = n_;
+        scratch_.resize(static_cast<std::size_t>(n + 1));
+        double* m = scratch_.data();
+        for (int i = 0; i <= n; ++i)
+            m[i] = std::fabs(original_[static_cast<std::size_t>(i)]);
+        if (t1 <= t0)
+            return toleranceFor(value(m, n, t0));
+        // Right part from t0: after the in-place pass m[k] = P_k^{n−k}(t0).
+        for (int r = 1; r <= n; ++r)
+            for (int i = 0; i <= n - r; ++i)
+                m[i] = (1.0 - t0) * m[i] + t0 * m[i + 1];
+        // Left part up to s = (t1 − t0)/(1 − t0) of that: keep P_0^r at each level.
+        const double s = t0 < 1.0 ? std::min(1.0, (t1 - t0) / (1.0 - t0)) : 1.0;
+        double largest = m[0];
+        for (int r = 1; r <= n; ++r) {
+            for (int i = n; i >= r; --i)
+                m[i] = (1.0 - s) * m[i - 1] + s * m[i];
+            largest = std::max(largest, m[r]);
+        }
+        return toleranceFor(largest);
+    }
+
+    /// p is 0 within rounding on all of [a, a + w] (or the interval cannot be halved): one
+    /// root here, at the sign change of p if its ends differ in sign, else at the zero of
+    /// p′ (the bottom of the touching zero), else in the middle.
+    void tangentialRoot(const double* b, double a, double w)
+    {
+        const int n = n_;
+        const int s0 = signOf(b[0]);
+        const int sn = signOf(b[n]);
+        if (s0 * sn < 0) {
+            found.push_back({polishRoot(b, n, a, w, s0), w, true, true});
+            return;
+        }
+        if (n >= 2) {
+            const double d0 = b[1] - b[0];
+            const double dn = b[n] - b[n - 1];
+            if (signOf(d0) * signOf(dn) < 0) {
+                scratch_.resize(static_cast<std::size_t>(n));
+                for (int i = 0; i < n; ++i)
+                    scratch_[static_cast<std::size_t>(i)] = b[i + 1] - b[i];
+                found.push_back({polishRoot(scratch_.data(), n - 1, a, w, signOf(d0)), w, false, false});
+                return;
+            }
+        }
+        found.push_back({a + 0.5 * w, 0.5 * w, false, false});
+    }
+
+    const std::vector<double>& original_;
+    int n_;
+    std::vector<double>& scratch_;
+    double globalTolerance_ = 0;
+};
+
+} // namespace
+
+double bernsteinValue(const std::vector<double>& coefficients, double t)
+{
+    return value(coefficients.data(), static_cast<int>(coefficients.size()) - 1, t);
+}
+
+std::vector<double> bernsteinProduct(const std::vector<double>& a, const std::vector<double>& b)
+{
+    if (a.empty() || b.empty())
+        return {};
+    const int m = static_cast<int>(a.size()) - 1;
+    const int n = static_cast<int>(b.size()) - 1;
+    // Binomials as doubles (exact up to 2⁵³, then correctly scaled to ~1e-16 relative);
+    // C(400, 200) ≈ 1e119 is far from overflow.
+    auto binomials = [](int k) {
+        std::vector<double> c(static_cast<std::size_t>(k + 1), 1.0);
+        for (int i = 1; i <= k; ++i)
+            c[static_cast<std::size_t>(i)] =
+                c[static_cast<std::size_t>(i - 1)] * static_cast<double>(k - i + 1) / static_cast<double>(i);
+        return c;
+    };
+    const std::vector<double> cm = binomials(m), cn = binomials(n), cmn = binomials(m + n);
+    std::vector<double> c(static_cast<std::size_t>(m + n + 1), 0.0);
+    for (int i = 0; i <= m; ++i)
+        for (int j = 0; j <= n; ++j)
+            c[static_cast<std::size_t>(i + j)] += cm[static_cast<std::size_t>(i)] * cn[static_cast<std::size_t>(j)]
+                                                  * a[static_cast<std::size_t>(i)] * b[static_cast<std::size_t>(j)];
+    for (int k = 0; k <= m + n; ++k)
+        c[static_cast<std::size_t>(k)] /= cmn[static_cast<std::size_t>(k)];
+    return c;
+}
+
+BernsteinRoots bernsteinRoots(const std::vector<double>& coefficients)
+{
+    BernsteinRoots result;
+    if (std::all_of(coefficients.begin(), coefficients.end(), [](double c) { return c == 0.0; })) {
+        result.identicallyZero = true;
+        return result;
+    }
+    if (!std::all_of(coefficients.begin(), coefficients.end(), [](double c) { return std::isfinite(c); }))
+        return result;
+    const int n = static_cast<int>(coefficients.size()) - 1;
+
+    // One slot of n + 1 coefficients per level of halving, reused from call to call.
+    thread_local std::vector<double> work;
+    thread_local std::vector<double> scratch;
+    const std::size_t need = static_cast<std::size_t>(kMaxDepth + 2) * static_cast<std::size_t>(n + 1);
+    if (work.size() < need)
+        work.resize(need);
+    std::copy(coefficients.begin(), coefficients.end(), work.begin());
+
+    Solver solver(coefficients, scratch);
+    if (coefficients.front() == 0.0)
+        solver.found.push_back({0.0, 0.0, false, true});
+    solver.run(work.data(), 0.0, 1.0, 0);
+    if (n > 0 && coefficients.back() == 0.0)
+        solver.found.push_back({1.0, 0.0, false, true});
+
+    std::vector<FoundRoot>& found = solver.found;
+    std::sort(found.begin(), found.end(), [](const FoundRoot& x, const FoundRoot& y) { return x.t < y.t; });
+    // One root where two reports overlap within their uncertainty (a touching zero met
+    // from both halves, a zero on a halving point).
+    std::vector<FoundRoot> merged;
+    for (const FoundRoot& r : found) {
+        if (!merged.empty()) {
+            FoundRoot& last = merged.back();
+            const double gap = r.t - last.t;
+            if (gap <= std::max(r.uncertainty, last.uncertainty) + 4.0 * kEps * std::max(1e-300, r.t)) {
+                if (r.uncertainty < last.uncertainty || (r.known && !last.known))
+                    last = r;
+                continue;
+            }
+        }
+        merged.push_back(r);
+    }
+
+    // Whether p changes sign at the roots found without a bracket: compare p on either side,
+    // stepping out until both values are above rounding (and staying short of the neighbours).
+    double maxAbs = 0.0;
+    for (double c : coefficients)
+        maxAbs = std::max(maxAbs, std::fabs(c));
+    const double tolerance = 4.0 * (n + 1) * kEps * maxAbs;
+    for (std::size_t k = 0; k < merged.size(); ++k) {
+        FoundRoot& r = merged[k];
+        if (r.known)
+            continue;
+        if (r.t <= 0.0 || r.t >= 1.0) {
+            r.crossing = false;
+            continue;
+        }
+        const double leftRoom = k > 0 ? 0.5 * (r.t - merged[k - 1].t) : r.t;
+        const double rightRoom = k + 1 < merged.size() ? 0.5 * (merged[k + 1].t - r.t) : 1.0 - r.t;
+        const double room = std::min(leftRoom, rightRoom);
+        for (double h = std::max(2.0 * r.uncertainty, 64.0 * kEps * std::max(r.t, 1e-300)); h <= room; h *= 4.0) {
+            const double fl = bernsteinValue(coefficients, r.t - h);
+            const double fr = bernsteinValue(coefficients, r.t + h);
+            if (std::fabs(fl) > tolerance && std::fabs(fr) > tolerance) {
+                r.crossing = signOf(fl) != signOf(fr);
+                break;
+            }
+        }
+    }
+    result.roots.reserve(merged.size());
+    result.crossing.reserve(merged.size());
+    for (const FoundRoot& r : merged) {
+        result.roots.push_back(r.t);
+        result.crossing.push_back(r.crossing);
+    }
+    return result;
+}
+
+} // namespace granota

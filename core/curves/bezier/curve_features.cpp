@@ -1,0 +1,229 @@
+#include "core/curves/bezier/curve_features.h"
+
+#include "core/curves/bezier/bernstein_roots.h"
+#include "core/curves/bezier/hodograph.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace granota {
+
+namespace {
+
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+/// |c′(t)| below this fraction of the hodograph's size counts as c′ = 0 (a cusp).
+constexpr double kCuspTolerance = 1e-9;
+
+std::vector<double> coordinate(const std::vector<Point>& P, int which)
+{
+    std::vector<double> out;
+    out.reserve(P.size());
+    for (const Point& p : P)
+        out.push_back(which == 0 ? p.x : p.y);
+    return out;
+}
+
+std::vector<double> openInterval(std::vector<double> roots)
+{
+    roots.erase(std::remove_if(roots.begin(), roots.end(), [](double t) { return !(t > 0.0 && t < 1.0); }),
+                roots.end());
+    return roots;
+}
+
+double hodographSize(const std::vector<Point>& A)
+{
+    double size = 0.0;
+    for (const Point& a : A)
+        size = std::max(size, norm(a));
+    return size;
+}
+
+Point pointAt(const std::vector<double>& xs, const std::vector<double>& ys, double t)
+{
+    return {bernsteinValue(xs, t), bernsteinValue(ys, t)};
+}
+
+} // namespace
+
+std::vector<double> extremaParameters(const std::vector<Point>& P, int which)
+{
+    if (P.size() < 2)
+        return {};
+    const BernsteinRoots r = bernsteinRoots(coordinate(hodograph(P), which));
+    return openInterval(r.roots);
+}
+
+CurveBox tightBoundingBox(const std::vector<Point>& P)
+{
+    if (P.empty())
+        return {};
+    CurveBox box{P.front(), P.front()};
+    auto include = [&box](const Point& p) {
+        box.min.x = std::min(box.min.x, p.x);
+        box.min.y = std::min(box.min.y, p.y);
+        box.max.x = std::max(box.max.x, p.x);
+        box.max.y = std::max(box.max.y, p.y);
+    };
+    include(P.back());
+    const std::vector<double> xs = coordinate(P, 0), ys = coordinate(P, 1);
+    for (double t : extremaParameters(P, 0)) {
+        const double x = bernsteinValue(xs, t);
+        box.min.x = std::min(box.min.x, x);
+        box.max.x = std::max(box.max.x, x);
+    }
+    for (double t : extremaParameters(P, 1)) {
+        const double y = bernsteinValue(ys, t);
+        box.min.y = std::min(box.min.y, y);
+        box.max.y = std::max(box.max.y, y);
+    }
+    return box;
+}
+
+std::vector<double> cuspParameters(const std::vector<Point>& P)
+{
+    if (P.size() < 2)
+        return {};
+    const std::vector<Point> A = hodograph(P);
+    const double size = hodographSize(A);
+    if (size == 0.0)
+        return {}; // stationary: c′ ≡ 0 (see CurveFeatures::stationary)
+    const std::vector<double> ax = coordinate(A, 0), ay = coordinate(A, 1);
+    struct Candidate {
+        double t;
+        double speed;
+    };
+    std::vector<Candidate> candidates;
+    for (const auto* coefficients : {&ax, &ay}) {
+        const BernsteinRoots r = bernsteinRoots(*coefficients);
+        for (double t : r.roots) {
+            const double speed = norm(pointAt(ax, ay, t));
+            if (speed <= kCuspTolerance * size)
+                candidates.push_back({t, speed});
+        }
+    }
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.t < b.t; });
+    // The same cusp from x′ and from y′ (one of them often a double zero, known only to
+    // about √ε): keep the t where |c′| is smaller.
+    std::vector<Candidate> merged;
+    for (const Candidate& c : candidates) {
+        if (!merged.empty() && c.t - merged.back().t <= 1e-6) {
+            if (c.speed < merged.back().speed)
+                merged.back() = c;
+            continue;
+        }
+        merged.push_back(c);
+    }
+    std::vector<double> out;
+    for (const Candidate& c : merged)
+        out.push_back(c.t);
+    return out;
+}
+
+std::vector<double> curvatureNumerator(const std::vector<Point>& P)
+{
+    if (P.size() < 3)
+        return {};
+    const std::vector<Point> A = hodograph(P);
+    const int m = static_cast<int>(A.size()) - 1;
+    auto binomials = [](int k) {
+        std::vector<double> c(static_cast<std::size_t>(k + 1), 1.0);
+        for (int i = 1; i <= k; ++i)
+            c[static_cast<std::size_t>(i)] =
+                c[static_cast<std::size_t>(i - 1)] * static_cast<double>(k - i + 1) / static_cast<double>(i);
+        return c;
+    };
+    const std::vector<double> cm = binomials(m), c2 = binomials(2 * m - 2);
+    std::vector<double> D(static_cast<std::size_t>(2 * m - 1), 0.0);
+    for (int i = 0; i <= m; ++i)
+        for (int j = i + 1; j <= m; ++j) {
+            const int k = i + j - 1;
+            D[static_cast<std::size_t>(k)] += (j - i) * cm[static_cast<std::size_t>(i)] * cm[static_cast<std::size_t>(j)]
+                                              * cross(A[static_cast<std::size_t>(i)], A[static_cast<std::size_t>(j)]);
+        }
+    for (int k = 0; k <= 2 * m - 2; ++k)
+        D[static_cast<std::size_t>(k)] /= c2[static_cast<std::size_t>(k)];
+    return D;
+}
+
+namespace {
+
+/// Whether x′y″ − y′x″ is 0 up to the rounding of its coefficients (collinear control
+/// points given as decimals are rarely collinear in binary).
+bool straightWithinRounding(const std::vector<Point>& P, const std::vector<double>& D)
+{
+    if (D.empty())
+        return true;
+    const std::vector<Point> A = hodograph(P);
+    const double size = hodographSize(A);
+    const int m = static_cast<int>(A.size()) - 1;
+    // A generous bound: (m + 1)² terms of size at most |A_i||A_j| ≤ size², each rounded.
+    const double bound = 64.0 * (m + 1) * (m + 1) * kEps * size * size;
+    return std::all_of(D.begin(), D.end(), [bound](double d) { return std::fabs(d) <= bound; });
+}
+
+std::vector<double> signChangesOf(const std::vector<double>& D);
+
+} // namespace
+
+std::vector<double> inflectionParameters(const std::vector<Point>& P)
+{
+    const std::vector<double> D = curvatureNumerator(P);
+    if (straightWithinRounding(P, D))
+        return {};
+    return signChangesOf(D);
+}
+
+namespace {
+
+std::vector<double> signChangesOf(const std::vector<double>& D)
+{
+    const BernsteinRoots r = bernsteinRoots(D);
+    std::vector<double> out;
+    for (std::size_t k = 0; k < r.roots.size(); ++k)
+        if (r.crossing[k] && r.roots[k] > 0.0 && r.roots[k] < 1.0)
+            out.push_back(r.roots[k]);
+    return out;
+}
+
+} // namespace
+
+CurveFeatures curveFeatures(const std::vector<Point>& P)
+{
+    CurveFeatures f;
+    if (P.empty()) {
+        f.stationary = f.straight = true;
+        return f;
+    }
+    const std::vector<Point> A = hodograph(P);
+    f.stationary = hodographSize(A) == 0.0;
+    const std::vector<double> D = curvatureNumerator(P);
+    f.straight = straightWithinRounding(P, D);
+    if (!f.stationary) {
+        f.extremaX = extremaParameters(P, 0);
+        f.extremaY = extremaParameters(P, 1);
+        f.cusps = cuspParameters(P);
+    }
+    // The box from the extrema already found (tightBoundingBox would find them again).
+    f.bbox = {P.front(), P.front()};
+    const std::vector<double> xs = coordinate(P, 0), ys = coordinate(P, 1);
+    auto includeX = [&f](double x) {
+        f.bbox.min.x = std::min(f.bbox.min.x, x);
+        f.bbox.max.x = std::max(f.bbox.max.x, x);
+    };
+    auto includeY = [&f](double y) {
+        f.bbox.min.y = std::min(f.bbox.min.y, y);
+        f.bbox.max.y = std::max(f.bbox.max.y, y);
+    };
+    includeX(P.back().x);
+    includeY(P.back().y);
+    for (double t : f.extremaX)
+        includeX(bernsteinValue(xs, t));
+    for (double t : f.extremaY)
+        includeY(bernsteinValue(ys, t));
+    if (!f.straight)
+        f.inflections = signChangesOf(D);
+    return f;
+}
+
+} // namespace granota
