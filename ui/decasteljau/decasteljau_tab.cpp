@@ -1050,24 +1050,20 @@ QString DeCasteljauTab::exactCurvatureHtml() const
     if (exactPoints && exactT && n >= 1 && n <= kMaxExactDegree) {
         const auto H = hodograph(*exactPoints);
         const RPoint d1 = deCasteljauPoint(H, *exactT), d2 = deCasteljauPoint(hodograph(H), *exactT);
-        const Rational cross = d1.x * d2.y - d1.y * d2.x, speed2 = d1.x * d1.x + d1.y * d1.y;
+        const ExactCurvature k = exactCurvatureAt(*exactPoints, *exactT);
         const auto small = [](const Rational& q) {
             return abs(q.get_num()) <= kExactCurvatureDenominator && q.get_den() <= kExactCurvatureDenominator;
         };
-        if (speed2 == 0)
+        const auto text = [](const Rational& q) { return QString::fromStdString(toString(q)); };
+        if (k.speedSquared == 0)
             exact = tr("κ(t) is undefined: c′(t) = 0 (a cusp, or coincident control points), so there is no normal "
                        "and no osculating circle.");
-        else if (small(cross) && small(speed2)) {
-            const auto text = [](const Rational& q) { return QString::fromStdString(toString(q)); };
-            // |c′|² a square of a fraction: κ is itself a fraction.
-            const mpz_class rn = sqrt(speed2.get_num()), rd = sqrt(speed2.get_den());
-            const bool square = rn * rn == speed2.get_num() && rd * rd == speed2.get_den();
-            const QString value = square ? text(cross / (speed2 * Rational(rn, rd)))
-                                         : QStringLiteral("(%1)·(%2)<sup>−3/2</sup>").arg(text(cross), text(speed2));
-            exact = tr("c′(t) = %1, c″(t) = %2<br>x′y″ − y′x″ = %3, |c′(t)|² = %4<br>κ(t) = (x′y″ − y′x″)/|c′|³ = %5 ≈ %6")
-                        .arg(pointText(d1), pointText(d2), text(cross), text(speed2), value,
-                             number(cross.get_d() / std::pow(speed2.get_d(), 1.5)));
-        }
+        else if (small(k.numerator) && small(k.speedSquared))
+            if (const auto value = exactCurvatureText(k))
+                exact = tr("c′(t) = %1, c″(t) = %2<br>x′y″ − y′x″ = %3, |c′(t)|² = %4<br>κ(t) = (x′y″ − y′x″)/|c′|³ = %5 ≈ %6")
+                            .arg(pointText(d1), pointText(d2), text(k.numerator), text(k.speedSquared),
+                                 QString::fromStdString(*value),
+                                 number(k.numerator.get_d() / std::pow(k.speedSquared.get_d(), 1.5)));
     }
     if (exact)
         html += QStringLiteral("<p>%1</p>").arg(*exact);
