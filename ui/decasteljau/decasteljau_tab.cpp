@@ -588,9 +588,9 @@ QRectF DeCasteljauTab::hodographInset(const QRectF& viewport, const CanvasStyle&
     if (!m_showHodograph || m_hodoLevels.levels.empty())
         return {};
     const double margin = 8 * style.scale;
-    const double w = std::clamp(viewport.width() * 0.32, std::min(150.0 * style.scale, viewport.width() * 0.5),
-                                std::max(150.0 * style.scale, 320.0 * style.scale));
-    const double h = std::min(w * 0.8, viewport.height() * 0.45);
+    // A corner of the canvas, small enough to leave the curve its room (in presentation mode too).
+    const double w = std::min(viewport.width() * 0.3, 260.0 * style.scale);
+    const double h = std::min(w * 0.75, viewport.height() * 0.32);
     return QRectF(viewport.right() - margin - w, viewport.bottom() - margin - h, w, h);
 }
 
