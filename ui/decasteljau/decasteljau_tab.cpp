@@ -1134,7 +1134,7 @@ void DeCasteljauTab::retranslate()
     m_osculating->setToolTip(tr("The circle that fits the curve best at c(t): centre c(t) + N(t)/κ(t), radius 1/|κ(t)|. "
                                 "None where κ = 0 (the radius is infinite) or where κ is undefined (c′(t) = 0)."));
     m_combBox->setText(tr("Curvature comb"));
-    m_combBox->setToolTip(tr("Teeth along the normal, as long as |κ| times the scale given in the key, and the outline "
+    m_combBox->setToolTip(tr("Teeth along the normal, as long as |κ| times the scale given in the key, and the line "
                              "through their tips: where the comb jumps, so does the curvature. No tooth where κ is undefined."));
     m_box->setText(tr("Bounding box"));
     m_box->setToolTip(tr("The tight axis-aligned box of the curve (not of its control points), from the extrema of x(t) "

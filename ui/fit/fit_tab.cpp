@@ -459,7 +459,7 @@ void FitTab::retranslate()
     m_showMatrices->setText(tr("Show &matrices"));
     m_combBox->setText(tr("Curvature com&b"));
     m_combBox->setToolTip(tr("The curvature comb of the fitted curve (beyond the thesis): teeth along the normal as long "
-                             "as |κ| times the scale in the key, and their outline; where the comb wiggles, so does the fit."));
+                             "as |κ| times the scale in the key, and the line through their tips; where the comb wiggles, so does the fit."));
     m_showMatrices->setToolTip(tr("Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Note 2.2), in fractions "
                                   "when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8."));
     m_readoutGroup->setTitle(tr("Quality of the fit (Prop 2.2)"));
