@@ -967,8 +967,8 @@
             <translation>Longitud d'arc i curvatura a t</translation>
         </message>
         <message>
-            <source>κ(t) = %1, radius 1/|κ| = %2</source>
-            <translation>κ(t) = %1, radi 1/|κ| = %2</translation>
+            <source>κ(t) = %1 (radius %2)</source>
+            <translation>κ(t) = %1 (radi %2)</translation>
         </message>
         <message>
             <source>κ(t) = 0: straight here, the radius is infinite</source>
@@ -983,8 +983,8 @@
             <translation>s(t) = %1 de L = %2</translation>
         </message>
         <message>
-            <source>hodograph c′ (degree %1)</source>
-            <translation>hodògraf c′ (grau %1)</translation>
+            <source>hodograph c′</source>
+            <translation>hodògraf c′</translation>
         </message>
         <message>
             <source>× cusps: %1</source>

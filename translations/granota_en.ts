@@ -967,8 +967,8 @@
             <translation>Arc length and curvature at t</translation>
         </message>
         <message>
-            <source>κ(t) = %1, radius 1/|κ| = %2</source>
-            <translation>κ(t) = %1, radius 1/|κ| = %2</translation>
+            <source>κ(t) = %1 (radius %2)</source>
+            <translation>κ(t) = %1 (radius %2)</translation>
         </message>
         <message>
             <source>κ(t) = 0: straight here, the radius is infinite</source>
@@ -983,8 +983,8 @@
             <translation>s(t) = %1 of L = %2</translation>
         </message>
         <message>
-            <source>hodograph c′ (degree %1)</source>
-            <translation>hodograph c′ (degree %1)</translation>
+            <source>hodograph c′</source>
+            <translation>hodograph c′</translation>
         </message>
         <message>
             <source>× cusps: %1</source>

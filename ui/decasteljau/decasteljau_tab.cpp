@@ -607,7 +607,7 @@ void DeCasteljauTab::drawHodographInset(QPainter& p, const ViewTransform& view, 
     p.setFont(font);
     const QFontMetricsF fm(font);
     const double pad = 6 * style.scale;
-    const QString title = tr("hodograph c′ (degree %1)").arg(std::max(0, m_levels.degree() - 1));
+    const QString title = tr("hodograph c′");
     p.setPen(style.text);
     p.drawText(QRectF(inset.left() + pad, inset.top() + pad / 2, inset.width() - 2 * pad, fm.height()),
                Qt::AlignLeft | Qt::AlignVCenter, fm.elidedText(title, Qt::ElideRight, inset.width() - 2 * pad));
@@ -708,7 +708,7 @@ QString DeCasteljauTab::readout() const
     else if (*m_curvature.curvature == 0.0)
         kappa = tr("κ(t) = 0: straight here, the radius is infinite");
     else
-        kappa = tr("κ(t) = %1, radius 1/|κ| = %2").arg(number(*m_curvature.curvature), number(m_curvature.radius.value_or(0)));
+        kappa = tr("κ(t) = %1 (radius %2)").arg(number(*m_curvature.curvature), number(m_curvature.radius.value_or(0)));
     return lengths + QStringLiteral(" · ") + kappa;
 }
 
