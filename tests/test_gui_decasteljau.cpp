@@ -24,6 +24,10 @@
 #include "ui/shell/tikz_options.h"
 
 #include <QCheckBox>
+#include <QFile>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QImage>
@@ -920,6 +924,37 @@ private slots:
         QJsonObject bad = all;
         bad.insert(QStringLiteral("curvatureComb"), QStringLiteral("yes"));
         QVERIFY(!other.loadState(bad, &error));
+    }
+
+    // The TikZ picture with every overlay on (circle, comb, box, inflections, tangent, normal)
+    // is a picture LaTeX compiles, with the overlays' colours in it.
+    void tikzWithEveryOverlayCompiles()
+    {
+        DeCasteljauTab tab;
+        tab.pointEditor()->setPoints({{0, 0}, {1, 0.25}, {0, 1}, {1, 0}}, QStringLiteral("s"));
+        tab.setT(0.3);
+        for (auto set : {&DeCasteljauTab::setTangentVisible, &DeCasteljauTab::setNormalVisible,
+                         &DeCasteljauTab::setOsculatingCircleVisible, &DeCasteljauTab::setCombVisible,
+                         &DeCasteljauTab::setBoundingBoxVisible, &DeCasteljauTab::setInflectionsVisible,
+                         &DeCasteljauTab::setHodographVisible})
+            (tab.*set)(true);
+        const QString tex = tab.tikz();
+        QVERIFY(tex.contains(QStringLiteral("osculating circle")));
+        const QString pdflatex = QStandardPaths::findExecutable(QStringLiteral("pdflatex"));
+        if (pdflatex.isEmpty())
+            QSKIP("pdflatex not found (test_gui_tikz_latex requires it)");
+        QTemporaryDir dir;
+        QFile file(dir.filePath(QStringLiteral("all.tex")));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(QStringLiteral("\\documentclass{article}\n\\usepackage{tikz}\n\\begin{document}\n%1\n\\end{document}\n")
+                       .arg(tex)
+                       .toUtf8());
+        file.close();
+        QProcess p;
+        p.setWorkingDirectory(dir.path());
+        p.start(pdflatex, {QStringLiteral("-interaction=nonstopmode"), QStringLiteral("-halt-on-error"), QStringLiteral("all.tex")});
+        QVERIFY(p.waitForFinished(120000));
+        QVERIFY2(p.exitCode() == 0, p.readAllStandardOutput().right(2000).constData());
     }
 
     void loadStateRejectsGarbage_data()
