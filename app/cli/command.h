@@ -35,6 +35,7 @@ Command simulateCommand();
 Command benchCommand();
 Command demoCommand();
 Command reportCommand();
+Command projectCommand();
 
 /// Number output: exact "p/q" strings with --exact, doubles otherwise (docs/cli.md).
 Json number(const Rational& q, bool exact);

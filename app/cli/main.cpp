@@ -22,7 +22,7 @@ constexpr int kFailed = 2; ///< every error: bad input, or an answer that cannot
 
 std::vector<Command> commands()
 {
-    return {bezierCommand(), bernsteinCommand(), fitCommand(), catmullRomCommand(), simulateCommand(), benchCommand(),
+    return {bezierCommand(), bernsteinCommand(), projectCommand(), fitCommand(), catmullRomCommand(), simulateCommand(), benchCommand(),
 #ifdef GRANOTA_HAS_REPORTS
             reportCommand(),
 #endif

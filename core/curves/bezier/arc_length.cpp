@@ -1,0 +1,315 @@
+#include "core/curves/bezier/arc_length.h"
+
+#include "core/curves/bezier/hodograph.h"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+namespace granota {
+
+namespace {
+
+constexpr int kGaussPoints = 16;
+constexpr int kMaxDepth = 48;
+constexpr std::size_t kFixedHodograph = 64; // arcLength() allocates nothing up to degree 63
+
+/// The nodes (on [−1, 1], the positive half) and weights of the 16-point Gauss–Legendre rule,
+/// computed once by Newton's method on P_16 in long double (Golub–Welsch would do as well).
+struct GaussLegendre {
+    std::array<double, kGaussPoints / 2> x{}, w{};
+    GaussLegendre()
+    {
+        const int n = kGaussPoints;
+        const long double pi = 3.141592653589793238462643383279502884L;
+        for (int i = 0; i < n / 2; ++i) {
+            long double z = std::cos(pi * (i + 0.75L) / (n + 0.5L)), dp = 0;
+            for (int it = 0; it < 100; ++it) {
+                long double p0 = 1, p1 = z;
+                for (int k = 2; k <= n; ++k) {
+                    const long double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
+                    p0 = p1, p1 = p2;
+                }
+                dp = n * (z * p1 - p0) / (z * z - 1);
+                const long double dz = p1 / dp;
+                z -= dz;
+                if (std::abs(dz) < 1e-19L)
+                    break;
+            }
+            x[static_cast<std::size_t>(i)] = static_cast<double>(z);
+            w[static_cast<std::size_t>(i)] = static_cast<double>(2 / ((1 - z * z) * dp * dp));
+        }
+    }
+};
+
+const GaussLegendre& gauss()
+{
+    static const GaussLegendre g;
+    return g;
+}
+
+/// |Σ_i w_i t^i (1−t)^{m−i}| with w_i = C(m,i) D_i: the nested form of the Bernstein sum
+/// (Schumaker & Volk, 1986), O(m), all weights positive, so as accurate as De Casteljau.
+struct Speed {
+    const Point* w = nullptr;
+    int m = 0;
+    double operator()(double t) const
+    {
+        const double u = 1 - t;
+        if (m == 0)
+            return std::sqrt(w[0].x * w[0].x + w[0].y * w[0].y);
+        double tn = 1, x = w[0].x * u, y = w[0].y * u;
+        for (int i = 1; i < m; ++i) {
+            tn *= t;
+            x = (x + tn * w[i].x) * u;
+            y = (y + tn * w[i].y) * u;
+        }
+        tn *= t;
+        x += tn * w[m].x;
+        y += tn * w[m].y;
+        return std::sqrt(x * x + y * y); // no overflow: the curve is scaled to coordinates ≤ 1
+    }
+};
+
+/// The 16-point rule on [a, b]. The 16 speeds are evaluated in lockstep (one nested loop
+/// over the control points, the nodes innermost) so that the compiler can vectorise them:
+/// one Horner chain alone is latency-bound.
+double gaussRule(const Speed& f, double a, double b)
+{
+    const GaussLegendre& g = gauss();
+    const double h = 0.5 * (b - a), c = 0.5 * (a + b);
+    constexpr int K = kGaussPoints, H = kGaussPoints / 2;
+    double t[K], u[K], tn[K], x[K], y[K];
+    for (int j = 0; j < H; ++j) {
+        t[j] = c - h * g.x[static_cast<std::size_t>(j)];
+        t[K - 1 - j] = c + h * g.x[static_cast<std::size_t>(j)];
+    }
+    const Point* w = f.w;
+    const int m = f.m;
+    for (int j = 0; j < K; ++j) {
+        u[j] = 1 - t[j];
+        tn[j] = 1;
+        x[j] = w[0].x;
+        y[j] = w[0].y;
+    }
+    for (int i = 1; i <= m; ++i) {
+        const double wx = w[i].x, wy = w[i].y;
+        for (int j = 0; j < K; ++j) {
+            tn[j] *= t[j];
+            x[j] = x[j] * u[j] + tn[j] * wx;
+            y[j] = y[j] * u[j] + tn[j] * wy;
+        }
+    }
+    double sum = 0;
+    for (int j = 0; j < H; ++j)
+        sum += g.w[static_cast<std::size_t>(j)] * (std::sqrt(x[j] * x[j] + y[j] * y[j]) +
+                                                   std::sqrt(x[K - 1 - j] * x[K - 1 - j] + y[K - 1 - j] * y[K - 1 - j]));
+    return h * sum;
+}
+
+/// The largest |coordinate| rounded up to a power of two: dividing by it is exact.
+int scaleExponent(const std::vector<Point>& P)
+{
+    double m = 0;
+    for (const Point& p : P)
+        m = std::max({m, std::abs(p.x), std::abs(p.y)});
+    int e = 0;
+    if (m > 0 && std::isfinite(m))
+        std::frexp(m, &e);
+    return e;
+}
+
+/// C(m,i) · m (Q_{i+1} − Q_i) with Q = P / 2^e: the weights of the nested form.
+template <class Out> void speedWeights(const std::vector<Point>& P, int e, Out& w)
+{
+    const std::size_t n = P.size() - 1;
+    if (n == 0) {
+        w[0] = Point(0, 0);
+        return;
+    }
+    const std::size_t m = n - 1;
+    double binom = 1;
+    for (std::size_t i = 0; i <= m; ++i) {
+        const Point d(std::ldexp(P[i + 1].x, -e) - std::ldexp(P[i].x, -e),
+                      std::ldexp(P[i + 1].y, -e) - std::ldexp(P[i].y, -e));
+        const double k = binom * static_cast<double>(n);
+        w[i] = Point(k * d.x, k * d.y);
+        binom = binom * static_cast<double>(m - i) / static_cast<double>(i + 1);
+    }
+}
+
+/// Where to split before integrating: the zeros of |c′| in (0, 1). (Cusps: filled in from
+/// curve_features.h's cuspParameters.)
+template <class Out> int splitPoints(const std::vector<Point>& /*P*/, Out& /*t*/) { return 0; }
+
+/// The adaptive composite rule on [a, b] to an absolute tolerance `tol` for the whole of
+/// [a, b]; each accepted panel [l, r] is reported as panel(l, value). A panel is halved until
+/// the 16-point rule on it agrees with the sum over its two halves to its share of `tol`; the
+/// halves are kept, which are much better still. (Estimating the halves' error from the
+/// convergence ratio one level up would save a panel or two, but it fails where a zero of |c′|²
+/// lies near [0, 1] in the complex plane: the rule is not yet converging geometrically there.)
+template <class Panel> double adaptive(const Speed& f, double a, double b, double tol, Panel&& panel)
+{
+    struct Item { double a, b, g; int depth; };
+    std::array<Item, kMaxDepth + 2> stack;
+    std::size_t top = 0;
+    stack[top++] = {a, b, gaussRule(f, a, b), 0};
+    double total = 0;
+    const double width = b - a;
+    while (top > 0) {
+        const Item it = stack[--top];
+        const double mid = 0.5 * (it.a + it.b);
+        const double gl = gaussRule(f, it.a, mid), gr = gaussRule(f, mid, it.b);
+        const double diff = std::abs(gl + gr - it.g);
+        if (diff <= tol * (it.b - it.a) / width || it.depth >= kMaxDepth || !(it.a < mid && mid < it.b)) {
+            panel(it.a, gl);
+            panel(mid, gr);
+            total += gl + gr;
+            continue;
+        }
+        stack[top++] = {mid, it.b, gr, it.depth + 1}; // right below left: left first
+        stack[top++] = {it.a, mid, gl, it.depth + 1};
+    }
+    return total;
+}
+
+double clampedTolerance(double relativeTolerance)
+{
+    if (!(relativeTolerance >= 1e-15))
+        return 1e-15;
+    return std::min(relativeTolerance, 0.1);
+}
+
+/// The whole computation on [t0, t1] ⊂ [0, 1] (t0 ≤ t1), split at the cusps inside.
+template <class Panel>
+double integrate(const std::vector<Point>& P, const Speed& f, double t0, double t1, double rel, Panel&& panel)
+{
+    std::array<double, kFixedHodograph + 2> cuts{};
+    std::size_t count = 0;
+    cuts[count++] = t0;
+    std::array<double, kFixedHodograph> cusps{};
+    const int k = splitPoints(P, cusps);
+    for (int i = 0; i < k; ++i)
+        if (cusps[static_cast<std::size_t>(i)] > t0 && cusps[static_cast<std::size_t>(i)] < t1)
+            cuts[count++] = cusps[static_cast<std::size_t>(i)];
+    cuts[count++] = t1;
+    double estimate = 0;
+    for (std::size_t i = 0; i + 1 < count; ++i)
+        estimate += gaussRule(f, cuts[i], cuts[i + 1]);
+    if (!(estimate > 0))
+        return 0; // a single point, or a piece of zero length
+    double total = 0;
+    for (std::size_t i = 0; i + 1 < count; ++i)
+        total += adaptive(f, cuts[i], cuts[i + 1], rel * estimate * (cuts[i + 1] - cuts[i]) / (t1 - t0), panel);
+    return total;
+}
+
+double clampT(double t) { return std::isfinite(t) ? std::clamp(t, 0.0, 1.0) : 0.0; }
+
+} // namespace
+
+double arcLength(const std::vector<Point>& P, double t0, double t1, double relativeTolerance)
+{
+    assert(!P.empty());
+    t0 = clampT(t0), t1 = clampT(t1);
+    if (t1 < t0)
+        return -arcLength(P, t1, t0, relativeTolerance);
+    if (P.size() < 2 || t0 == t1)
+        return 0;
+    const int e = scaleExponent(P);
+    const double rel = clampedTolerance(relativeTolerance);
+    auto run = [&](Point* w) {
+        speedWeights(P, e, w);
+        const Speed f{w, static_cast<int>(P.size()) - 2};
+        return integrate(P, f, t0, t1, rel, [](double, double) {});
+    };
+    double scaled = 0;
+    if (P.size() - 1 <= kFixedHodograph) {
+        std::array<Point, kFixedHodograph> w;
+        scaled = run(w.data());
+    } else {
+        std::vector<Point> w(P.size() - 1);
+        scaled = run(w.data());
+    }
+    return std::ldexp(scaled, e);
+}
+
+ArcLengthParametrization::ArcLengthParametrization(const std::vector<Point>& P, double relativeTolerance)
+{
+    assert(!P.empty());
+    const int e = scaleExponent(P);
+    m_scale = std::ldexp(1.0, e);
+    m_w.resize(std::max<std::size_t>(1, P.size() - 1));
+    speedWeights(P, e, m_w);
+    const Speed f{m_w.data(), static_cast<int>(m_w.size()) - 1};
+    double s = 0;
+    const double scaled = P.size() < 2 ? 0.0
+        : integrate(P, f, 0.0, 1.0, clampedTolerance(relativeTolerance), [&](double a, double g) {
+              m_a.push_back(a);
+              m_s.push_back(s);
+              s += g;
+          });
+    if (m_a.empty()) { // length 0: one panel [0, 1] of zero length
+        m_a.push_back(0);
+        m_s.push_back(0);
+    }
+    m_total = std::ldexp(scaled, e);
+}
+
+double ArcLengthParametrization::speed(double t) const
+{
+    return Speed{m_w.data(), static_cast<int>(m_w.size()) - 1}(t);
+}
+
+double ArcLengthParametrization::panelLength(std::size_t k, double t) const
+{
+    return gaussRule(Speed{m_w.data(), static_cast<int>(m_w.size()) - 1}, m_a[k], t);
+}
+
+double ArcLengthParametrization::lengthAt(double t) const
+{
+    t = clampT(t);
+    if (m_total == 0)
+        return 0;
+    if (t == 1)
+        return m_total;
+    const auto it = std::upper_bound(m_a.begin(), m_a.end(), t);
+    const std::size_t k = static_cast<std::size_t>(it - m_a.begin()) - 1;
+    return std::min(m_total, (m_s[k] + panelLength(k, t)) * m_scale);
+}
+
+double ArcLengthParametrization::parameterAt(double s) const
+{
+    if (!(s > 0) || m_total == 0)
+        return 0;
+    if (s >= m_total)
+        return 1;
+    const double target = s / m_scale;
+    const auto it = std::upper_bound(m_s.begin(), m_s.end(), target);
+    const std::size_t k = static_cast<std::size_t>(it - m_s.begin()) - 1;
+    double lo = m_a[k], hi = k + 1 < m_a.size() ? m_a[k + 1] : 1.0;
+    const double want = target - m_s[k];
+    const double whole = (k + 1 < m_s.size() ? m_s[k + 1] : m_total / m_scale) - m_s[k];
+    double t = whole > 0 ? lo + (hi - lo) * std::clamp(want / whole, 0.0, 1.0) : lo;
+    for (int iteration = 0; iteration < 60; ++iteration) {
+        const double r = panelLength(k, t) - want;
+        if (r > 0)
+            hi = t;
+        else
+            lo = t;
+        const double v = speed(t);
+        double next = v > 0 ? t - r / v : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi))
+            next = 0.5 * (lo + hi);
+        if (std::abs(next - t) <= 2 * std::numeric_limits<double>::epsilon() * std::max(t, 1e-300) || hi - lo <= 0) {
+            t = next;
+            break;
+        }
+        t = next;
+    }
+    return std::clamp(t, 0.0, 1.0);
+}
+
+} // namespace granota
