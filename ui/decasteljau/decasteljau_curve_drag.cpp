@@ -99,8 +99,13 @@ bool DeCasteljauCurveDrag::eventFilter(QObject* watched, QEvent* event)
     case QEvent::MouseMove: {
         auto* e = static_cast<QMouseEvent*>(event);
         if (!m_molding) {
-            if (!(e->buttons() & (Qt::LeftButton | Qt::MiddleButton)) || m_editor->dragging())
-                updateHover(e->buttons() ? QPointF(-1e9, -1e9) : e->position());
+            if (!e->buttons()) {
+                updateHover(e->position());
+            } else if (m_hover) { // a control point dragged, or the paper panned: no hover meanwhile
+                m_hover.reset();
+                m_canvas->update();
+                emit hoverChanged();
+            }
             return false;
         }
         const Point target = m_canvas->view().toModel(e->position());
