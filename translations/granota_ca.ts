@@ -987,12 +987,8 @@
             <translation>hodògraf c′</translation>
         </message>
         <message>
-            <source>× cusps: %1</source>
-            <translation>× cúspides: %1</translation>
-        </message>
-        <message>
-            <source>○ inflections: %1</source>
-            <translation>○ punts d'inflexió: %1</translation>
+            <source>○ inflections: %1 · × cusps: %2</source>
+            <translation>○ punts d'inflexió: %1 · × cúspides: %2</translation>
         </message>
         <message>
             <source>bounding box, ◆ extrema of x and y</source>
@@ -1040,7 +1036,7 @@
         </message>
         <message>
             <source>Inflections and cusps</source>
-            <translation>Inflexions i cúspides</translation>
+            <translation>Punts d'inflexió i cúspides</translation>
         </message>
         <message>
             <source>Bounding box</source>

@@ -987,12 +987,8 @@
             <translation>hodograph c′</translation>
         </message>
         <message>
-            <source>× cusps: %1</source>
-            <translation>× cusps: %1</translation>
-        </message>
-        <message>
-            <source>○ inflections: %1</source>
-            <translation>○ inflections: %1</translation>
+            <source>○ inflections: %1 · × cusps: %2</source>
+            <translation>○ inflections: %1 · × cusps: %2</translation>
         </message>
         <message>
             <source>bounding box, ◆ extrema of x and y</source>

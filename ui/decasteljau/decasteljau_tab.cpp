@@ -577,8 +577,8 @@ CanvasLegend DeCasteljauTab::legend() const
         legend.entries.push_back({kBoxColour, Qt::DashDotLine,
                                   tr("bounding box, ◆ extrema of x and y")});
     if (m_showFeatures && n >= 1) {
-        legend.entries.push_back({kInflectionColour, Qt::SolidLine, tr("○ inflections: %1").arg(m_features.inflections.size())});
-        legend.entries.push_back({kCuspColour, Qt::SolidLine, tr("× cusps: %1").arg(m_features.cusps.size())});
+        legend.entries.push_back({kInflectionColour, Qt::SolidLine,
+                                  tr("○ inflections: %1 · × cusps: %2").arg(m_features.inflections.size()).arg(m_features.cusps.size())});
     }
     return legend;
 }
