@@ -1,5 +1,6 @@
 #include "core/curves/bezier/arc_length.h"
 
+#include "core/curves/bezier/curve_features.h"
 #include "core/curves/bezier/hodograph.h"
 
 #include <algorithm>
@@ -140,9 +141,77 @@ template <class Out> void speedWeights(const std::vector<Point>& P, int e, Out& 
     }
 }
 
-/// Where to split before integrating: the zeros of |c′| in (0, 1). (Cusps: filled in from
-/// curve_features.h's cuspParameters.)
-template <class Out> int splitPoints(const std::vector<Point>& /*P*/, Out& /*t*/) { return 0; }
+/// True when the hodograph's control points lie in an open half-plane through the origin:
+/// then c′ ≠ 0 on [0, 1] (c′(t) is a convex combination of positive multiples of them), and
+/// there is no cusp to look for. O(m): the cone of their directions grows while it is narrower
+/// than a half-turn.
+bool hodographAvoidsZero(const Point* w, int m)
+{
+    Point lo = w[0], hi = w[0];
+    if (lo.x == 0 && lo.y == 0)
+        return false;
+    for (int i = 1; i <= m; ++i) {
+        const Point d = w[i];
+        if (d.x == 0 && d.y == 0)
+            return false;
+        const double a = cross(lo, d), b = cross(d, hi);
+        if (a >= 0 && b >= 0 && (a > 0 || dot(lo, d) > 0) && (b > 0 || dot(d, hi) > 0))
+            continue; // inside the cone (not opposite to one of its edges)
+        if (cross(hi, d) > 0 && cross(lo, d) > 0)
+            hi = d;
+        else if (cross(d, lo) > 0 && cross(d, hi) > 0)
+            lo = d;
+        else
+            return false;
+    }
+    return true;
+}
+
+/// c′ ≠ 0 on the piece whose hodograph control points are d[0..m], tried on that piece and,
+/// failing that, on its halves (De Casteljau at 1/2) down to `depth` more levels.
+bool hodographPieceAvoidsZero(const Point* d, int m, int depth)
+{
+    if (hodographAvoidsZero(d, m))
+        return true;
+    if (depth == 0)
+        return false;
+    std::array<Point, kFixedHodograph> left, right;
+    std::copy(d, d + m + 1, right.begin());
+    for (int r = 0; r <= m; ++r) {
+        left[static_cast<std::size_t>(r)] = right[0];
+        for (int i = 0; i + r < m; ++i)
+            right[static_cast<std::size_t>(i)] =
+                Point(0.5 * (right[static_cast<std::size_t>(i)].x + right[static_cast<std::size_t>(i + 1)].x),
+                      0.5 * (right[static_cast<std::size_t>(i)].y + right[static_cast<std::size_t>(i + 1)].y));
+    }
+    // right[0..m] now holds the right half's points P_0^m, P_1^{m−1}, …, P_m^0.
+    return hodographPieceAvoidsZero(left.data(), m, depth - 1) && hodographPieceAvoidsZero(right.data(), m, depth - 1);
+}
+
+/// Where to split before integrating: the zeros of |c′| (cusps, curve_features.h), where
+/// |c′| has a kink |t − t_c|·|c″(t_c)| that no polynomial rule integrates fast. Looked for only
+/// when the hodograph's control polygon (on [0, 1], its halves or its quarters) does not rule
+/// them out: cheaply, with no allocation, for nearly every curve.
+int splitPoints(const std::vector<Point>& P, const Point* w, std::array<double, kFixedHodograph>& out)
+{
+    const int m = static_cast<int>(P.size()) - 2;
+    if (m < 1 || hodographAvoidsZero(w, m))
+        return 0;
+    if (m + 1 <= static_cast<int>(kFixedHodograph)) {
+        std::array<Point, kFixedHodograph> d;
+        for (int i = 0; i <= m; ++i) // directions only: halves avoid overflow
+            d[static_cast<std::size_t>(i)] = Point(0.5 * P[static_cast<std::size_t>(i + 1)].x - 0.5 * P[static_cast<std::size_t>(i)].x,
+                                                   0.5 * P[static_cast<std::size_t>(i + 1)].y - 0.5 * P[static_cast<std::size_t>(i)].y);
+        if (hodographPieceAvoidsZero(d.data(), m, 3))
+            return 0;
+    }
+    const std::vector<double> cusps = cuspParameters(P);
+    int k = 0;
+    for (double t : cusps)
+        if (k < static_cast<int>(out.size()))
+            out[static_cast<std::size_t>(k++)] = t;
+    return k;
+}
 
 /// The adaptive composite rule on [a, b] to an absolute tolerance `tol` for the whole of
 /// [a, b]; each accepted panel [l, r] is reported as panel(l, value). A panel is halved until
@@ -190,7 +259,7 @@ double integrate(const std::vector<Point>& P, const Speed& f, double t0, double 
     std::size_t count = 0;
     cuts[count++] = t0;
     std::array<double, kFixedHodograph> cusps{};
-    const int k = splitPoints(P, cusps);
+    const int k = splitPoints(P, f.w, cusps);
     for (int i = 0; i < k; ++i)
         if (cusps[static_cast<std::size_t>(i)] > t0 && cusps[static_cast<std::size_t>(i)] < t1)
             cuts[count++] = cusps[static_cast<std::size_t>(i)];
