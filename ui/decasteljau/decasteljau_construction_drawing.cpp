@@ -34,6 +34,8 @@ void drawDeCasteljauConstruction(QPainter& p, const ViewTransform& view, const C
         p.setPen(QPen(c, style.thinLine() * (n > 10 ? 1.0 : 1.4)));
         p.setBrush(Qt::NoBrush);
         p.drawPath(polylinePath(level, view));
+        if (dotScale <= 0)
+            continue; // lines only (a small view of a high degree)
         // All the level's points as one path: one fill and one stroke instead of one per
         // point keeps a drag at degree 30 (465 points) within a frame.
         const double rad = style.handleRadius() * dotScale;

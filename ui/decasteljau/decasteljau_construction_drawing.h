@@ -22,7 +22,7 @@ namespace granota::ui {
 QPainterPath polylinePath(const std::vector<Point>& points, const ViewTransform& view);
 
 /// Levels 1 … n − 1 of `table` (level 0 is the control polygon, level n the point c(t)),
-/// with dots of `dotScale` × the handle radius.
+/// with dots of `dotScale` × the handle radius (none when `dotScale` ≤ 0).
 void drawDeCasteljauConstruction(QPainter& p, const ViewTransform& view, const CanvasStyle& style,
                                  const DeCasteljauTable<double>& table, double dotScale = 0.6);
 

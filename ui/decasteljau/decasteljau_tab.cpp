@@ -642,7 +642,8 @@ void DeCasteljauTab::drawHodographInset(QPainter& p, const ViewTransform& view, 
     p.setPen(QPen(light, style.lineWidth() * 0.8));
     p.drawPath(polylinePath(m_hodoCurve, own));
     if (m_showConstruction)
-        drawDeCasteljauConstruction(p, own, style, m_hodoLevels, 0.45);
+        // In the small view a high degree's dots would only cover each other (and cost a frame).
+        drawDeCasteljauConstruction(p, own, style, m_hodoLevels, m_hodoLevels.degree() > 10 ? 0.0 : 0.45);
     p.setPen(QPen(Qt::white, style.thinLine()));
     p.setBrush(style.handle);
     for (const Point& q : H)
