@@ -857,6 +857,28 @@ private slots:
         QCOMPARE(moved[3], before[3]);
     }
 
+    // Undo in the middle of a mold ends it: the undone state stays, the release adds no step.
+    void undoWhileMoldingEndsTheMold()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        tab.pointEditor()->movePoint(0, {0, 0.5});
+        const auto moved = tab.pointEditor()->points();
+        const int steps = tab.undoStack()->count();
+        const QPoint start = screenOf(tab, granota::deCasteljauPoint(moved, 0.5));
+        QTest::mousePress(tab.canvas(), Qt::LeftButton, Qt::NoModifier, start);
+        QVERIFY(tab.curveDrag()->molding());
+        QTest::mouseMove(tab.canvas(), start + QPoint(10, -30));
+        tab.undoStack()->undo(); // the move of P0
+        QVERIFY(!tab.curveDrag()->molding());
+        const auto undone = tab.pointEditor()->points();
+        QTest::mouseMove(tab.canvas(), start + QPoint(20, -40));
+        QTest::mouseRelease(tab.canvas(), Qt::LeftButton, Qt::NoModifier, start + QPoint(20, -40));
+        QVERIFY(samePoints(tab.pointEditor()->points(), undone));
+        QCOMPARE(tab.undoStack()->count(), steps);
+        QCOMPARE(tab.undoStack()->index(), steps - 1);
+    }
+
     // Constant speed: each tick of Play moves c(t) by the same arc length, not the same t.
     void constantSpeedMovesByArcLength()
     {

@@ -21,6 +21,9 @@ DeCasteljauCurveDrag::DeCasteljauCurveDrag(CurveCanvas* canvas, PointEditor* edi
 {
     // Installed after the editor's filter: Qt asks the last one installed first.
     m_canvas->installEventFilter(this);
+    // Undo, redo or a document in the middle of a mold: the points are no longer the mold's,
+    // and the mold ends there (the release then finds none), as a point drag does.
+    connect(m_undo, &QUndoStack::indexChanged, this, [this] { m_molding = false; });
     m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
         if (!m_hover || !isFinite(m_hover->point))
             return;
