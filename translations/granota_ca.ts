@@ -1052,7 +1052,7 @@
         </message>
         <message>
             <source>Normal</source>
-            <translation>Normal</translation>
+            <translation>Vector normal</translation>
         </message>
         <message numerus="yes">
             <source>Bézier curve of degree %1 with %n control point(s); t = %2, c(t) = %3.</source>
