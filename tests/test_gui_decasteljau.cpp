@@ -5,12 +5,16 @@
 #include "cli_runner.h"
 #include "gui_timeouts.h"
 
+#include "core/curves/bezier/arc_length.h"
+#include "core/curves/bezier/curve_features.h"
 #include "core/curves/bezier/de_casteljau.h"
+#include "core/base/math_constants.h"
 #include "core/base/number_format.h"
 #include "core/exact/rational.h"
 #include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
 #include "ui/common/curve_canvas.h"
+#include "ui/decasteljau/decasteljau_curve_drag.h"
 #include "ui/decasteljau/decasteljau_parameter_control.h"
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/common/exact_panel.h"
@@ -20,6 +24,10 @@
 #include "ui/shell/tikz_options.h"
 
 #include <QCheckBox>
+#include <QFile>
+#include <QProcess>
+#include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QImage>
@@ -639,6 +647,338 @@ private slots:
         QCOMPARE(other.exactPanel()->plainText(), tab.exactPanel()->plainText());
     }
 
+    // ---------------------------------------------------------------- the curve's geometry (issue 15)
+
+    // κ(0) = −2/3 on (0,0),(0,1),(1,1),(1,0) (c′(0) = (0,3), c″(0) = (6,−6)): the osculating
+    // circle has radius 3/2 and centre c(0) + N/κ = (0,0) + (−1,0)/(−2/3) = (3/2, 0), and it is
+    // drawn there: the circle's colour on it, off the curve, where nothing else is drawn.
+    void osculatingCircleHasRadiusOneOverKappa()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        tab.pointEditor()->setPoints({{0, 0}, {0, 1}, {1, 1}, {1, 0}}, QStringLiteral("arc"));
+        tab.setConstructionVisible(false);
+        tab.setT(0);
+        tab.canvas()->zoom(0.3); // the whole circle on screen
+        const QImage off = tab.canvas()->grab().toImage();
+        tab.setOsculatingCircleVisible(true);
+        const auto& k = tab.curvatureAtT();
+        QVERIFY(k.curvature && k.radius && k.center);
+        QVERIFY(std::fabs(*k.curvature + 2.0 / 3.0) < 1e-12);
+        QVERIFY(std::fabs(*k.radius - 1.5) < 1e-12);
+        QVERIFY(std::fabs(k.center->x - 1.5) < 1e-12 && std::fabs(k.center->y) < 1e-12);
+        const QImage on = tab.canvas()->grab().toImage();
+        const double a = -granota::kPi / 4; // below right: off the curve, the axes and the key
+        const QPoint bottom = screenOf(tab, {1.5 + 1.5 * std::cos(a), 1.5 * std::sin(a)});
+        const auto greenish = [](QRgb c) { return qGreen(c) > qBlue(c) + 40 && qRed(c) > qBlue(c) + 20; };
+        bool found = false, before = false;
+        for (int dx = -2; dx <= 2; ++dx)
+            for (int dy = -2; dy <= 2; ++dy) {
+                found = found || greenish(on.pixel(bottom + QPoint(dx, dy)));
+                before = before || greenish(off.pixel(bottom + QPoint(dx, dy)));
+            }
+        QVERIFY(found && !before);
+        // In the key, with the radius.
+        bool named = false;
+        for (const auto& e : tab.legend().entries)
+            named = named || e.text.contains(QStringLiteral("1.5"));
+        QVERIFY(named);
+    }
+
+    // P0 = P2: c′(t) = 2(1 − 2t)(P1 − P0) vanishes at t = 1/2, a cusp. There κ is undefined:
+    // no normal, no circle, no comb tooth there, and the readouts say so — never NaN.
+    void aCuspHasNoCurvatureAndSaysSo()
+    {
+        DeCasteljauTab tab;
+        tab.pointEditor()->setPoints({{0, 0}, {1, 0}, {0, 0}}, QStringLiteral("cusp"));
+        for (auto set : {&DeCasteljauTab::setNormalVisible, &DeCasteljauTab::setOsculatingCircleVisible,
+                         &DeCasteljauTab::setCombVisible, &DeCasteljauTab::setInflectionsVisible})
+            (tab.*set)(true);
+        tab.setT(0.5);
+        QVERIFY(!tab.curvatureAtT().curvature && !tab.curvatureAtT().normal && !tab.curvatureAtT().radius);
+        QVERIFY(tab.readout().contains(QStringLiteral("undefined")));
+        QVERIFY(tab.exactPanel()->plainText().contains(QStringLiteral("undefined")));
+        QVERIFY(tab.comb().undefinedSamples >= 1);
+        QVERIFY(tab.features().cusps.size() == 1 && std::fabs(tab.features().cusps[0] - 0.5) < 1e-12);
+        for (const QString& text : {tab.readout(), tab.exactPanel()->plainText(), tab.csv(), tab.tikz()}) {
+            QVERIFY(!text.contains(QStringLiteral("nan"), Qt::CaseInsensitive));
+            QVERIFY(!text.contains(QStringLiteral("inf"), Qt::CaseInsensitive));
+        }
+    }
+
+    // A straight curve: every tooth of the comb has length 0, κ = 0, no circle.
+    void theCombIsZeroOnAStraightCurve()
+    {
+        DeCasteljauTab tab;
+        tab.pointEditor()->setPoints({{0, 0}, {1, 1}, {3, 3}, {4, 4}}, QStringLiteral("line"));
+        tab.setCombVisible(true);
+        QVERIFY(!tab.comb().empty());
+        for (const auto& tooth : tab.comb().teeth)
+            QVERIFY(granota::distance(tooth.base, tooth.tip) < 1e-12);
+        QVERIFY(tab.curvatureAtT().curvature && *tab.curvatureAtT().curvature == 0.0 && !tab.curvatureAtT().radius);
+        QVERIFY(tab.readout().contains(QStringLiteral("infinite")));
+    }
+
+    // The comb's teeth are |κ| × its scale long, on the side away from the centre of curvature.
+    void theCombsTeethAreKappaTimesTheScale()
+    {
+        DeCasteljauTab tab;
+        tab.pointEditor()->setPoints({{0, 0}, {0, 1}, {1, 1}, {1, 0}}, QStringLiteral("arc"));
+        tab.setCombVisible(true);
+        const auto& comb = tab.comb();
+        QVERIFY(comb.scale > 0);
+        // The first tooth is at t = 0, κ = −2/3: length 2/3 × scale, away from the centre (3/2, 0), i.e. towards −x.
+        QVERIFY(std::fabs(granota::distance(comb.teeth.front().base, comb.teeth.front().tip) - 2.0 / 3.0 * comb.scale) < 1e-9);
+        QVERIFY(comb.teeth.front().tip.x < 0);
+        bool named = false;
+        for (const auto& e : tab.legend().entries)
+            named = named || e.text.contains(QStringLiteral("curvature comb"));
+        QVERIFY(named);
+    }
+
+    // The box drawn is curveFeatures' tight box, and the inflections of (0,0),(1,1/4),(0,1),(1,0)
+    // are at t = 1/2 and 4/5.
+    void boundingBoxAndInflectionsAreTheCurves()
+    {
+        DeCasteljauTab tab;
+        const std::vector<Point> P{{0, 0}, {1, 0.25}, {0, 1}, {1, 0}};
+        tab.pointEditor()->setPoints(P, QStringLiteral("s"));
+        tab.setBoundingBoxVisible(true);
+        tab.setInflectionsVisible(true);
+        const granota::CurveFeatures expected = granota::curveFeatures(P);
+        QCOMPARE(tab.features().bbox.min, expected.bbox.min);
+        QCOMPARE(tab.features().bbox.max, expected.bbox.max);
+        QCOMPARE(tab.features().extremaX, expected.extremaX);
+        QCOMPARE(tab.features().extremaY, expected.extremaY);
+        // The box holds every sample of the curve, and touches it at its extrema.
+        for (const Point& q : tab.curve())
+            QVERIFY(q.x >= expected.bbox.min.x - 1e-12 && q.x <= expected.bbox.max.x + 1e-12 && q.y >= expected.bbox.min.y - 1e-12
+                    && q.y <= expected.bbox.max.y + 1e-12);
+        QCOMPARE(tab.features().inflections.size(), std::size_t(2));
+        QVERIFY(std::fabs(tab.features().inflections[0] - 0.5) < 1e-12);
+        QVERIFY(std::fabs(tab.features().inflections[1] - 0.8) < 1e-12);
+        const QString tex = tab.tikz();
+        QVERIFY(tex.contains(QStringLiteral("bounding box")) && tex.contains(QStringLiteral("infl.")));
+    }
+
+    // The hodograph's control points are n (P_{i+1} − P_i) and its own construction at t ends in c′(t).
+    void theHodographIsItsOwnBezierCurve()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        tab.setT(0.25);
+        tab.setHodographVisible(true);
+        const auto& H = tab.hodographTable();
+        const auto& P = tab.pointEditor()->points();
+        QCOMPARE(H.degree(), 2);
+        for (std::size_t i = 0; i + 1 < P.size(); ++i)
+            QCOMPARE(H.levels[0][i], 3.0 * (P[i + 1] - P[i]));
+        QVERIFY(granota::distance(H.point(), tab.table().tangent()) < 1e-12);
+        tab.setT(0.75); // the same t as the curve's
+        QVERIFY(granota::distance(tab.hodographTable().point(), tab.table().tangent()) < 1e-12);
+        const QRectF inset = tab.hodographInset(tab.canvas()->rect(), tab.canvas()->style());
+        QVERIFY(!inset.isEmpty() && tab.canvas()->rect().contains(inset.toRect()));
+        tab.setHodographVisible(false);
+        QVERIFY(tab.hodographInset(tab.canvas()->rect(), tab.canvas()->style()).isEmpty());
+    }
+
+    // s(t) and L: (0,0),(0,1),(1,1),(1,0) has length exactly 2; the readout and the CSV say it.
+    void readoutsGiveArcLengthAndCurvature()
+    {
+        DeCasteljauTab tab;
+        tab.pointEditor()->setPoints({{0, 0}, {0, 1}, {1, 1}, {1, 0}}, QStringLiteral("arc"));
+        tab.setT(0.5);
+        QVERIFY(std::fabs(tab.totalLength() - 2.0) < 1e-9);
+        QVERIFY(std::fabs(tab.arcLengthAtT() - 1.0) < 1e-9); // symmetric
+        QVERIFY(tab.readout().contains(QStringLiteral("L = 2")));
+        // Exact: c′(1/2) = (3/2, 0), c″(1/2) = (0, −6): κ = −9/(27/8) = −8/3.
+        QVERIFY2(tab.exactPanel()->plainText().contains(QStringLiteral("-8/3")), qPrintable(tab.exactPanel()->plainText()));
+        QVERIFY(tab.csv().contains(QStringLiteral("t,arc_length,length,curvature,radius")));
+    }
+
+    // Hovering near the curve shows its closest point and that point's t.
+    void hoverShowsTheClosestPointAndItsT()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        const auto& P = tab.pointEditor()->points();
+        const Point c = granota::deCasteljauPoint(P, 0.25);
+        QTest::mouseMove(tab.canvas(), screenOf(tab, c) + QPoint(0, 3));
+        const auto& hover = tab.curveDrag()->hover();
+        QVERIFY(hover.has_value());
+        QVERIFY2(std::fabs(hover->t - 0.25) < 0.01, qPrintable(QString::number(hover->t)));
+        // On a control point there is no hover: the point is the editor's.
+        QTest::mouseMove(tab.canvas(), screenOf(tab, P[1]));
+        QVERIFY(!tab.curveDrag()->hover().has_value());
+        // Far from the curve, none either.
+        QTest::mouseMove(tab.canvas(), screenOf(tab, {2, 5}));
+        QVERIFY(!tab.curveDrag()->hover().has_value());
+    }
+
+    // Dragging the curve molds it: the curve's point at the t grabbed ends where the mouse
+    // is; the whole drag is one undo step; a control point under the mouse is dragged instead.
+    void draggingTheCurveMoldsIt()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        const auto before = tab.pointEditor()->points();
+        const int steps = tab.undoStack()->count();
+        const QPoint start = screenOf(tab, granota::deCasteljauPoint(before, 0.5));
+        const QPoint end = start + QPoint(30, -40);
+        QTest::mousePress(tab.canvas(), Qt::LeftButton, Qt::NoModifier, start);
+        QVERIFY(tab.curveDrag()->molding());
+        const double t = tab.curveDrag()->moldT();
+        QVERIFY(std::fabs(t - 0.5) < 0.02);
+        for (int k = 1; k <= 4; ++k)
+            QTest::mouseMove(tab.canvas(), start + (end - start) * k / 4);
+        QTest::mouseRelease(tab.canvas(), Qt::LeftButton, Qt::NoModifier, end);
+        QVERIFY(!tab.curveDrag()->molding());
+        const auto after = tab.pointEditor()->points();
+        const Point target = tab.canvas()->view().toModel(QPointF(end));
+        QVERIFY(granota::distance(granota::deCasteljauPoint(after, t), target) < 1e-9);
+        QVERIFY(!samePoints(after, before));
+        QCOMPARE(tab.undoStack()->count(), steps + 1);
+        tab.undoStack()->undo();
+        QVERIFY(samePoints(tab.pointEditor()->points(), before));
+        tab.undoStack()->redo();
+        QVERIFY(samePoints(tab.pointEditor()->points(), after));
+
+        // P1 = (1, 2) is a control point: pressing on it drags P1, and only P1.
+        tab.undoStack()->undo();
+        const QPoint p1 = screenOf(tab, before[1]);
+        QTest::mousePress(tab.canvas(), Qt::LeftButton, Qt::NoModifier, p1);
+        QVERIFY(!tab.curveDrag()->molding());
+        QTest::mouseMove(tab.canvas(), p1 + QPoint(20, 0));
+        QTest::mouseRelease(tab.canvas(), Qt::LeftButton, Qt::NoModifier, p1 + QPoint(20, 0));
+        const auto moved = tab.pointEditor()->points();
+        QVERIFY(moved[1].x > before[1].x);
+        QCOMPARE(moved[0], before[0]);
+        QCOMPARE(moved[2], before[2]);
+        QCOMPARE(moved[3], before[3]);
+    }
+
+    // Undo in the middle of a mold ends it: the undone state stays, the release adds no step.
+    void undoWhileMoldingEndsTheMold()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        tab.pointEditor()->movePoint(0, {0, 0.5});
+        const auto moved = tab.pointEditor()->points();
+        const int steps = tab.undoStack()->count();
+        const QPoint start = screenOf(tab, granota::deCasteljauPoint(moved, 0.5));
+        QTest::mousePress(tab.canvas(), Qt::LeftButton, Qt::NoModifier, start);
+        QVERIFY(tab.curveDrag()->molding());
+        QTest::mouseMove(tab.canvas(), start + QPoint(10, -30));
+        tab.undoStack()->undo(); // the move of P0
+        QVERIFY(!tab.curveDrag()->molding());
+        const auto undone = tab.pointEditor()->points();
+        QTest::mouseMove(tab.canvas(), start + QPoint(20, -40));
+        QTest::mouseRelease(tab.canvas(), Qt::LeftButton, Qt::NoModifier, start + QPoint(20, -40));
+        QVERIFY(samePoints(tab.pointEditor()->points(), undone));
+        QCOMPARE(tab.undoStack()->count(), steps);
+        QCOMPARE(tab.undoStack()->index(), steps - 1);
+    }
+
+    // Constant speed: each tick of Play moves c(t) by the same arc length, not the same t.
+    void constantSpeedMovesByArcLength()
+    {
+        DeCasteljauTab tab;
+        tab.pointEditor()->setPoints({{0, 0}, {0.2, 3}, {0.4, 0}, {4, 0}}, QStringLiteral("uneven"));
+        tab.setConstantSpeed(true);
+        tab.setT(0.05);
+        std::vector<double> ts;
+        connect(&tab, &DeCasteljauTab::tChanged, &tab, [&ts](double t) { ts.push_back(t); });
+        tab.setPlaying(true);
+        QTRY_VERIFY(ts.size() >= 6);
+        tab.setPlaying(false);
+        const granota::ArcLengthParametrization arc(tab.pointEditor()->points());
+        double minDt = 1, maxDt = 0;
+        for (std::size_t i = 1; i < 5; ++i) {
+            if (ts[i] < ts[i - 1])
+                continue; // looped
+            QVERIFY(std::fabs(arc.lengthAt(ts[i]) - arc.lengthAt(ts[i - 1]) - 0.004 * arc.total()) < 1e-6 * arc.total());
+            minDt = std::min(minDt, ts[i] - ts[i - 1]);
+            maxDt = std::max(maxDt, ts[i] - ts[i - 1]);
+        }
+        QVERIFY(maxDt > 0);
+    }
+
+    // Every overlay is one undo step that gives the document back; older documents without
+    // their keys load with them off; a key that is not true or false is refused.
+    void overlaysAreSavedAndUndone()
+    {
+        DeCasteljauTab tab;
+        QVERIFY(tab.loadExample(*granota::findWorkedExample("2.2")));
+        const QStringList keys{QStringLiteral("normal"), QStringLiteral("osculatingCircle"), QStringLiteral("curvatureComb"),
+                               QStringLiteral("boundingBox"), QStringLiteral("inflections"), QStringLiteral("hodograph"),
+                               QStringLiteral("constantSpeed")};
+        for (const QString& key : keys) {
+            const QJsonObject saved = tab.saveState();
+            QCOMPARE(saved.value(key).toBool(true), false);
+            QCheckBox* box = nullptr;
+            for (QCheckBox* b : tab.findChildren<QCheckBox*>()) {
+                b->click();
+                if (tab.saveState().value(key).toBool(false)) {
+                    box = b;
+                    break;
+                }
+                tab.undoStack()->undo();
+            }
+            QVERIFY2(box, qPrintable(key));
+            QCOMPARE(tab.saveState().value(key).toBool(false), true);
+            tab.undoStack()->undo();
+            QCOMPARE(tab.saveState(), saved);
+            tab.undoStack()->redo();
+            QCOMPARE(tab.saveState().value(key).toBool(false), true);
+        }
+        const QJsonObject all = tab.saveState();
+        DeCasteljauTab other;
+        QString error;
+        QVERIFY2(other.loadState(all, &error), qPrintable(error));
+        QCOMPARE(other.saveState(), all);
+        QVERIFY(other.normalVisible() && other.osculatingCircleVisible() && other.combVisible() && other.boundingBoxVisible()
+                && other.inflectionsVisible() && other.hodographVisible() && other.constantSpeed());
+        QJsonObject old = all;
+        for (const QString& key : keys)
+            old.remove(key);
+        QVERIFY2(other.loadState(old, &error), qPrintable(error));
+        QVERIFY(!other.normalVisible() && !other.combVisible() && !other.hodographVisible() && !other.constantSpeed());
+        QJsonObject bad = all;
+        bad.insert(QStringLiteral("curvatureComb"), QStringLiteral("yes"));
+        QVERIFY(!other.loadState(bad, &error));
+    }
+
+    // The TikZ picture with every overlay on (circle, comb, box, inflections, tangent, normal)
+    // is a picture LaTeX compiles, with the overlays' colours in it.
+    void tikzWithEveryOverlayCompiles()
+    {
+        DeCasteljauTab tab;
+        tab.pointEditor()->setPoints({{0, 0}, {1, 0.25}, {0, 1}, {1, 0}}, QStringLiteral("s"));
+        tab.setT(0.3);
+        for (auto set : {&DeCasteljauTab::setTangentVisible, &DeCasteljauTab::setNormalVisible,
+                         &DeCasteljauTab::setOsculatingCircleVisible, &DeCasteljauTab::setCombVisible,
+                         &DeCasteljauTab::setBoundingBoxVisible, &DeCasteljauTab::setInflectionsVisible,
+                         &DeCasteljauTab::setHodographVisible})
+            (tab.*set)(true);
+        const QString tex = tab.tikz();
+        QVERIFY(tex.contains(QStringLiteral("osculating circle")));
+        const QString pdflatex = QStandardPaths::findExecutable(QStringLiteral("pdflatex"));
+        if (pdflatex.isEmpty())
+            QSKIP("pdflatex not found (test_gui_tikz_latex requires it)");
+        QTemporaryDir dir;
+        QFile file(dir.filePath(QStringLiteral("all.tex")));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(QStringLiteral("\\documentclass{article}\n\\usepackage{tikz}\n\\begin{document}\n%1\n\\end{document}\n")
+                       .arg(tex)
+                       .toUtf8());
+        file.close();
+        QProcess p;
+        p.setWorkingDirectory(dir.path());
+        p.start(pdflatex, {QStringLiteral("-interaction=nonstopmode"), QStringLiteral("-halt-on-error"), QStringLiteral("all.tex")});
+        QVERIFY(p.waitForFinished(120000));
+        QVERIFY2(p.exitCode() == 0, p.readAllStandardOutput().right(2000).constData());
+    }
+
     void loadStateRejectsGarbage_data()
     {
         QTest::addColumn<QJsonObject>("state");
@@ -705,8 +1045,9 @@ private slots:
         QCOMPARE(lines[0], QStringLiteral("i,x,y"));
         QCOMPARE(lines[1], QStringLiteral("0,2,3"));
         QCOMPARE(lines[6], QStringLiteral("t,x,y"));
-        QCOMPARE(lines.size(), 1 + 5 + 1 + 11);
-        QCOMPARE(lines.last(), QStringLiteral("1,-7,-2"));
+        QCOMPARE(lines.size(), 1 + 5 + 1 + 11 + 2);
+        QCOMPARE(lines[17], QStringLiteral("1,-7,-2"));
+        QCOMPARE(lines[18], QStringLiteral("t,arc_length,length,curvature,radius"));
         const QString tex = tab.tikz();
         QVERIFY(tex.contains(QStringLiteral("\\begin{tikzpicture}")));
         QVERIFY(tex.contains(QStringLiteral("P_{4}")));

@@ -3,6 +3,7 @@
 // the normal equations breaking where QR does not, the degree limit n ≤ k, CSV import,
 // documents, and the error-against-degree plot (LS optimality over nested spaces).
 #include "core/base/number_format.h"
+#include "core/curves/bezier/curvature.h"
 #include "core/exact/exact_cost.h"
 #include "core/curves/fitting/least_squares_fit.h"
 #include "core/exact/rational.h"
@@ -527,6 +528,43 @@ private slots:
         const QString csv = tab.csv();
         qInfo("10^6 points: CSV written in %lld ms", timer.elapsed());
         QCOMPARE(csv.count(QLatin1Char('\n')), 1000000 + 1 + 2 + tab.fittedDegree() + 1);
+    }
+
+    // The curvature comb of the fitted curve, on demand: off by default, one undo step, saved
+    // (older documents without the key load with it off), in the TikZ export; its teeth are
+    // |κ| × the scale long, with κ of the fitted control points.
+    void curvatureCombOnDemand()
+    {
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.8"));
+        QVERIFY(!tab.combBox()->isChecked() && tab.comb().empty());
+        const QJsonObject off = tab.saveState();
+        QCOMPARE(off.value(QStringLiteral("curvatureComb")).toBool(true), false);
+        const int steps = tab.undoStack()->count();
+        tab.combBox()->click();
+        QCOMPARE(tab.undoStack()->count(), steps + 1);
+        QVERIFY(!tab.comb().empty() && tab.comb().scale > 0);
+        const auto& P = tab.currentFit()->controlPoints;
+        const granota::CurvatureAt k0 = granota::curvatureAt(P, 0.0);
+        QVERIFY(k0.curvature);
+        QVERIFY(std::fabs(granota::distance(tab.comb().teeth.front().base, tab.comb().teeth.front().tip)
+                          - std::fabs(*k0.curvature) * tab.comb().scale) < 1e-9);
+        QVERIFY(tab.tikz().contains(QStringLiteral("curvature comb")));
+        const QJsonObject on = tab.saveState();
+        QCOMPARE(on.value(QStringLiteral("curvatureComb")).toBool(false), true);
+        tab.undoStack()->undo();
+        QCOMPARE(tab.saveState(), off);
+        QVERIFY(tab.comb().empty());
+        FitTab other;
+        QString error;
+        QVERIFY2(other.loadState(on, &error), qPrintable(error));
+        QVERIFY(other.combBox()->isChecked() && !other.comb().empty());
+        QJsonObject old = on;
+        old.remove(QStringLiteral("curvatureComb"));
+        QVERIFY2(other.loadState(old, &error), qPrintable(error));
+        QVERIFY(!other.combBox()->isChecked());
+        old.insert(QStringLiteral("curvatureComb"), 1);
+        QVERIFY(!other.loadState(old, &error));
     }
 
     void saveLoadRoundTrip()

@@ -918,6 +918,142 @@
     </context>
     <context>
         <name>granota::ui::DeCasteljauTab</name>
+        <message>
+            <source>The arc length s(t) from c(0) to c(t), the curve's length L, and the signed curvature κ(t) = (x′y″ − y′x″)/|c′|³ (positive when the curve turns left).</source>
+            <translation>La longitud d'arc s(t) de c(0) a c(t), la longitud L de la corba i la curvatura amb signe κ(t) = (x′y″ − y′x″)/|c′|³ (positiva quan la corba gira a l'esquerra).</translation>
+        </message>
+        <message>
+            <source>When playing, move c(t) by equal steps of arc length instead of equal steps of t: t is not distance along the curve.</source>
+            <translation>En reproduir, mou c(t) per passos iguals de longitud d'arc en lloc de passos iguals de t: t no és la distància al llarg de la corba.</translation>
+        </message>
+        <message>
+            <source>The hodograph c′ in the corner: a Bézier curve of degree n − 1 with control points n (P_(i+1) − P_i), with its own De Casteljau construction at the same t; its point is c′(t).</source>
+            <translation>L'hodògraf c′ a la cantonada: una corba de Bézier de grau n − 1 amb punts de control n (P_(i+1) − P_i), amb la seva pròpia construcció de De Casteljau al mateix t; el seu punt és c′(t).</translation>
+        </message>
+        <message>
+            <source>Inflection points ○, where x′y″ − y′x″ changes sign (the curve turns the other way), and cusps ×, where c′ = 0.</source>
+            <translation>Punts d'inflexió ○, on x′y″ − y′x″ canvia de signe (la corba gira cap a l'altre costat), i cúspides ×, on c′ = 0.</translation>
+        </message>
+        <message>
+            <source>The tight axis-aligned box of the curve (not of its control points), from the extrema of x(t) and y(t): the t where x′ = 0 or y′ = 0, marked ◆.</source>
+            <translation>La capsa ajustada de la corba alineada amb els eixos (no la dels seus punts de control), a partir dels extrems de x(t) i y(t): els t on x′ = 0 o y′ = 0, marcats ◆.</translation>
+        </message>
+        <message>
+            <source>Teeth along the normal, as long as |κ| times the scale given in the key, and the line through their tips: where the comb jumps, so does the curvature. No tooth where κ is undefined.</source>
+            <translation>Pues al llarg de la normal, tan llargues com |κ| per l'escala que indica la llegenda, i la línia que passa per les seves puntes: on la pinta salta, també salta la curvatura. Cap pua on κ no està definida.</translation>
+        </message>
+        <message>
+            <source>The circle that fits the curve best at c(t): centre c(t) + N(t)/κ(t), radius 1/|κ(t)|. None where κ = 0 (the radius is infinite) or where κ is undefined (c′(t) = 0).</source>
+            <translation>La circumferència que millor s'ajusta a la corba a c(t): centre c(t) + N(t)/κ(t), radi 1/|κ(t)|. No n'hi ha on κ = 0 (el radi és infinit) ni on κ no està definida (c′(t) = 0).</translation>
+        </message>
+        <message>
+            <source>The unit normal N(t) at c(t), the tangent turned a quarter turn to the left; drawn as long as the tangent's arrow. Undefined where c′(t) = 0.</source>
+            <translation>La normal unitària N(t) a c(t), la tangent girada un quart de volta cap a l'esquerra; dibuixada tan llarga com la fletxa de la tangent. No està definida on c′(t) = 0.</translation>
+        </message>
+        <message>
+            <source>c′(t) = %1, c″(t) = %2&lt;br&gt;x′y″ − y′x″ = %3, |c′(t)|² = %4&lt;br&gt;κ(t) = (x′y″ − y′x″)/|c′|³ = %5 ≈ %6</source>
+            <translation>c′(t) = %1, c″(t) = %2&lt;br&gt;x′y″ − y′x″ = %3, |c′(t)|² = %4&lt;br&gt;κ(t) = (x′y″ − y′x″)/|c′|³ = %5 ≈ %6</translation>
+        </message>
+        <message>
+            <source>κ(t) is undefined: c′(t) = 0 (a cusp, or coincident control points), so there is no normal and no osculating circle.</source>
+            <translation>κ(t) no està definida: c′(t) = 0 (una cúspide, o punts de control coincidents), de manera que no hi ha normal ni circumferència osculatriu.</translation>
+        </message>
+        <message>
+            <source>s(t) = %1, L = %2</source>
+            <translation>s(t) = %1, L = %2</translation>
+        </message>
+        <message>
+            <source>Arc length and curvature at t</source>
+            <translation>Longitud d'arc i curvatura a t</translation>
+        </message>
+        <message>
+            <source>κ(t) = %1 (radius %2)</source>
+            <translation>κ(t) = %1 (radi %2)</translation>
+        </message>
+        <message>
+            <source>κ(t) = 0: straight here, the radius is infinite</source>
+            <translation>κ(t) = 0: aquí és recta, el radi és infinit</translation>
+        </message>
+        <message>
+            <source>κ(t) undefined: c′(t) = 0 (a cusp, or coincident control points)</source>
+            <translation>κ(t) no definida: c′(t) = 0 (una cúspide, o punts de control coincidents)</translation>
+        </message>
+        <message>
+            <source>s(t) = %1 of L = %2</source>
+            <translation>s(t) = %1 de L = %2</translation>
+        </message>
+        <message>
+            <source>hodograph c′</source>
+            <translation>hodògraf c′</translation>
+        </message>
+        <message>
+            <source>○ inflections: %1 · × cusps: %2</source>
+            <translation>○ punts d'inflexió: %1 · × cúspides: %2</translation>
+        </message>
+        <message>
+            <source>bounding box, ◆ extrema of x and y</source>
+            <translation>capsa contenidora, ◆ extrems de x i de y</translation>
+        </message>
+        <message>
+            <source>curvature comb: teeth |κ| × %1</source>
+            <translation>pinta de curvatura: pues |κ| × %1</translation>
+        </message>
+        <message>
+            <source>no osculating circle: κ undefined</source>
+            <translation>sense circumferència osculatriu: κ no definida</translation>
+        </message>
+        <message>
+            <source>no osculating circle: κ(t) = 0</source>
+            <translation>sense circumferència osculatriu: κ(t) = 0</translation>
+        </message>
+        <message>
+            <source>osculating circle, r = 1/|κ| = %1</source>
+            <translation>circumferència osculatriu, r = 1/|κ| = %1</translation>
+        </message>
+        <message>
+            <source>no normal: c′(t) = 0</source>
+            <translation>sense normal: c′(t) = 0</translation>
+        </message>
+        <message>
+            <source>unit normal N(t)</source>
+            <translation>normal unitària N(t)</translation>
+        </message>
+        <message>
+            <source>tangent c′(t)/%1</source>
+            <translation>tangent c′(t)/%1</translation>
+        </message>
+        <message>
+            <source>tangent c′(t)</source>
+            <translation>tangent c′(t)</translation>
+        </message>
+        <message>
+            <source>Constant speed</source>
+            <translation>Velocitat constant</translation>
+        </message>
+        <message>
+            <source>Hodograph</source>
+            <translation>Hodògraf</translation>
+        </message>
+        <message>
+            <source>Inflections and cusps</source>
+            <translation>Punts d'inflexió i cúspides</translation>
+        </message>
+        <message>
+            <source>Bounding box</source>
+            <translation>Capsa contenidora</translation>
+        </message>
+        <message>
+            <source>Curvature comb</source>
+            <translation>Pinta de curvatura</translation>
+        </message>
+        <message>
+            <source>Osculating circle</source>
+            <translation>Circumferència osculatriu</translation>
+        </message>
+        <message>
+            <source>Normal</source>
+            <translation>Vector normal</translation>
+        </message>
         <message numerus="yes">
             <source>Bézier curve of degree %1 with %n control point(s); t = %2, c(t) = %3.</source>
             <translation>
@@ -1113,8 +1249,8 @@
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="680" />
-            <source>Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add one on the nearest edge, Delete removes the selected one, arrows nudge it.</source>
-            <translation>Punts de control P0…Pn de la corba de Bézier (Def 2.4): arrossegueu un punt, feu doble clic per afegir-ne un a l'aresta més propera, Supr elimina el seleccionat i les fletxes el desplacen.</translation>
+            <source>Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add one on the nearest edge, Delete removes the selected one, arrows nudge it. Drag the curve itself to mold it; near the curve its closest point and t are shown.</source>
+            <translation>Punts de control P0…Pn de la corba de Bézier (Def 2.4): arrossegueu un punt, feu doble clic per afegir-ne un a l'aresta més propera, Supr elimina el seleccionat i les fletxes el desplacen. Arrossegueu la corba mateixa per modelar-la; a prop de la corba se'n mostren el punt més proper i el seu t.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="682" />
@@ -1340,6 +1476,26 @@
     </context>
     <context>
         <name>granota::ui::FitTab</name>
+        <message>
+            <source>“curvatureComb” must be true or false.</source>
+            <translation>«curvatureComb» ha de ser true o false.</translation>
+        </message>
+        <message>
+            <source>The curvature comb of the fitted curve (beyond the thesis): teeth along the normal as long as |κ| times the scale in the key, and the line through their tips; where the comb wiggles, so does the fit.</source>
+            <translation>La pinta de curvatura de la corba ajustada (més enllà de la tesi): pues al llarg de la normal tan llargues com |κ| per l'escala de la llegenda, i la línia que passa per les seves puntes; on la pinta oscil·la, també ho fa l'ajust.</translation>
+        </message>
+        <message>
+            <source>Curvature com&amp;b</source>
+            <translation>Pinta de cur&amp;vatura</translation>
+        </message>
+        <message>
+            <source>curvature comb of the fit: teeth |κ| × %1</source>
+            <translation>pinta de curvatura de l'ajust: pues |κ| × %1</translation>
+        </message>
+        <message>
+            <source>Curvature comb</source>
+            <translation>Pinta de curvatura</translation>
+        </message>
         <message numerus="yes">
             <source>Least-squares Bézier curve of degree %1 through %n data point(s); squared error %2.</source>
             <translation>
@@ -3851,6 +4007,13 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
         <message>
             <source>Exact computation</source>
             <translation>Càlcul exacte</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::DeCasteljauCurveDrag</name>
+        <message>
+            <source>Mold the curve at t = %1</source>
+            <translation>Modela la corba a t = %1</translation>
         </message>
     </context>
 </TS>

@@ -918,6 +918,142 @@
     </context>
     <context>
         <name>granota::ui::DeCasteljauTab</name>
+        <message>
+            <source>The arc length s(t) from c(0) to c(t), the curve's length L, and the signed curvature κ(t) = (x′y″ − y′x″)/|c′|³ (positive when the curve turns left).</source>
+            <translation>The arc length s(t) from c(0) to c(t), the curve's length L, and the signed curvature κ(t) = (x′y″ − y′x″)/|c′|³ (positive when the curve turns left).</translation>
+        </message>
+        <message>
+            <source>When playing, move c(t) by equal steps of arc length instead of equal steps of t: t is not distance along the curve.</source>
+            <translation>When playing, move c(t) by equal steps of arc length instead of equal steps of t: t is not distance along the curve.</translation>
+        </message>
+        <message>
+            <source>The hodograph c′ in the corner: a Bézier curve of degree n − 1 with control points n (P_(i+1) − P_i), with its own De Casteljau construction at the same t; its point is c′(t).</source>
+            <translation>The hodograph c′ in the corner: a Bézier curve of degree n − 1 with control points n (P_(i+1) − P_i), with its own De Casteljau construction at the same t; its point is c′(t).</translation>
+        </message>
+        <message>
+            <source>Inflection points ○, where x′y″ − y′x″ changes sign (the curve turns the other way), and cusps ×, where c′ = 0.</source>
+            <translation>Inflection points ○, where x′y″ − y′x″ changes sign (the curve turns the other way), and cusps ×, where c′ = 0.</translation>
+        </message>
+        <message>
+            <source>The tight axis-aligned box of the curve (not of its control points), from the extrema of x(t) and y(t): the t where x′ = 0 or y′ = 0, marked ◆.</source>
+            <translation>The tight axis-aligned box of the curve (not of its control points), from the extrema of x(t) and y(t): the t where x′ = 0 or y′ = 0, marked ◆.</translation>
+        </message>
+        <message>
+            <source>Teeth along the normal, as long as |κ| times the scale given in the key, and the line through their tips: where the comb jumps, so does the curvature. No tooth where κ is undefined.</source>
+            <translation>Teeth along the normal, as long as |κ| times the scale given in the key, and the line through their tips: where the comb jumps, so does the curvature. No tooth where κ is undefined.</translation>
+        </message>
+        <message>
+            <source>The circle that fits the curve best at c(t): centre c(t) + N(t)/κ(t), radius 1/|κ(t)|. None where κ = 0 (the radius is infinite) or where κ is undefined (c′(t) = 0).</source>
+            <translation>The circle that fits the curve best at c(t): centre c(t) + N(t)/κ(t), radius 1/|κ(t)|. None where κ = 0 (the radius is infinite) or where κ is undefined (c′(t) = 0).</translation>
+        </message>
+        <message>
+            <source>The unit normal N(t) at c(t), the tangent turned a quarter turn to the left; drawn as long as the tangent's arrow. Undefined where c′(t) = 0.</source>
+            <translation>The unit normal N(t) at c(t), the tangent turned a quarter turn to the left; drawn as long as the tangent's arrow. Undefined where c′(t) = 0.</translation>
+        </message>
+        <message>
+            <source>c′(t) = %1, c″(t) = %2&lt;br&gt;x′y″ − y′x″ = %3, |c′(t)|² = %4&lt;br&gt;κ(t) = (x′y″ − y′x″)/|c′|³ = %5 ≈ %6</source>
+            <translation>c′(t) = %1, c″(t) = %2&lt;br&gt;x′y″ − y′x″ = %3, |c′(t)|² = %4&lt;br&gt;κ(t) = (x′y″ − y′x″)/|c′|³ = %5 ≈ %6</translation>
+        </message>
+        <message>
+            <source>κ(t) is undefined: c′(t) = 0 (a cusp, or coincident control points), so there is no normal and no osculating circle.</source>
+            <translation>κ(t) is undefined: c′(t) = 0 (a cusp, or coincident control points), so there is no normal and no osculating circle.</translation>
+        </message>
+        <message>
+            <source>s(t) = %1, L = %2</source>
+            <translation>s(t) = %1, L = %2</translation>
+        </message>
+        <message>
+            <source>Arc length and curvature at t</source>
+            <translation>Arc length and curvature at t</translation>
+        </message>
+        <message>
+            <source>κ(t) = %1 (radius %2)</source>
+            <translation>κ(t) = %1 (radius %2)</translation>
+        </message>
+        <message>
+            <source>κ(t) = 0: straight here, the radius is infinite</source>
+            <translation>κ(t) = 0: straight here, the radius is infinite</translation>
+        </message>
+        <message>
+            <source>κ(t) undefined: c′(t) = 0 (a cusp, or coincident control points)</source>
+            <translation>κ(t) undefined: c′(t) = 0 (a cusp, or coincident control points)</translation>
+        </message>
+        <message>
+            <source>s(t) = %1 of L = %2</source>
+            <translation>s(t) = %1 of L = %2</translation>
+        </message>
+        <message>
+            <source>hodograph c′</source>
+            <translation>hodograph c′</translation>
+        </message>
+        <message>
+            <source>○ inflections: %1 · × cusps: %2</source>
+            <translation>○ inflections: %1 · × cusps: %2</translation>
+        </message>
+        <message>
+            <source>bounding box, ◆ extrema of x and y</source>
+            <translation>bounding box, ◆ extrema of x and y</translation>
+        </message>
+        <message>
+            <source>curvature comb: teeth |κ| × %1</source>
+            <translation>curvature comb: teeth |κ| × %1</translation>
+        </message>
+        <message>
+            <source>no osculating circle: κ undefined</source>
+            <translation>no osculating circle: κ undefined</translation>
+        </message>
+        <message>
+            <source>no osculating circle: κ(t) = 0</source>
+            <translation>no osculating circle: κ(t) = 0</translation>
+        </message>
+        <message>
+            <source>osculating circle, r = 1/|κ| = %1</source>
+            <translation>osculating circle, r = 1/|κ| = %1</translation>
+        </message>
+        <message>
+            <source>no normal: c′(t) = 0</source>
+            <translation>no normal: c′(t) = 0</translation>
+        </message>
+        <message>
+            <source>unit normal N(t)</source>
+            <translation>unit normal N(t)</translation>
+        </message>
+        <message>
+            <source>tangent c′(t)/%1</source>
+            <translation>tangent c′(t)/%1</translation>
+        </message>
+        <message>
+            <source>tangent c′(t)</source>
+            <translation>tangent c′(t)</translation>
+        </message>
+        <message>
+            <source>Constant speed</source>
+            <translation>Constant speed</translation>
+        </message>
+        <message>
+            <source>Hodograph</source>
+            <translation>Hodograph</translation>
+        </message>
+        <message>
+            <source>Inflections and cusps</source>
+            <translation>Inflections and cusps</translation>
+        </message>
+        <message>
+            <source>Bounding box</source>
+            <translation>Bounding box</translation>
+        </message>
+        <message>
+            <source>Curvature comb</source>
+            <translation>Curvature comb</translation>
+        </message>
+        <message>
+            <source>Osculating circle</source>
+            <translation>Osculating circle</translation>
+        </message>
+        <message>
+            <source>Normal</source>
+            <translation>Normal</translation>
+        </message>
         <message numerus="yes">
             <source>Bézier curve of degree %1 with %n control point(s); t = %2, c(t) = %3.</source>
             <translation>
@@ -1113,8 +1249,8 @@
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="680" />
-            <source>Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add one on the nearest edge, Delete removes the selected one, arrows nudge it.</source>
-            <translation>Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add one on the nearest edge, Delete removes the selected one, arrows nudge it.</translation>
+            <source>Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add one on the nearest edge, Delete removes the selected one, arrows nudge it. Drag the curve itself to mold it; near the curve its closest point and t are shown.</source>
+            <translation>Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add one on the nearest edge, Delete removes the selected one, arrows nudge it. Drag the curve itself to mold it; near the curve its closest point and t are shown.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="682" />
@@ -1340,6 +1476,26 @@
     </context>
     <context>
         <name>granota::ui::FitTab</name>
+        <message>
+            <source>“curvatureComb” must be true or false.</source>
+            <translation>“curvatureComb” must be true or false.</translation>
+        </message>
+        <message>
+            <source>The curvature comb of the fitted curve (beyond the thesis): teeth along the normal as long as |κ| times the scale in the key, and the line through their tips; where the comb wiggles, so does the fit.</source>
+            <translation>The curvature comb of the fitted curve (beyond the thesis): teeth along the normal as long as |κ| times the scale in the key, and the line through their tips; where the comb wiggles, so does the fit.</translation>
+        </message>
+        <message>
+            <source>Curvature com&amp;b</source>
+            <translation>Curvature com&amp;b</translation>
+        </message>
+        <message>
+            <source>curvature comb of the fit: teeth |κ| × %1</source>
+            <translation>curvature comb of the fit: teeth |κ| × %1</translation>
+        </message>
+        <message>
+            <source>Curvature comb</source>
+            <translation>Curvature comb</translation>
+        </message>
         <message numerus="yes">
             <source>Least-squares Bézier curve of degree %1 through %n data point(s); squared error %2.</source>
             <translation>
@@ -3851,6 +4007,13 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
         <message>
             <source>Exact computation</source>
             <translation>Exact computation</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::DeCasteljauCurveDrag</name>
+        <message>
+            <source>Mold the curve at t = %1</source>
+            <translation>Mold the curve at t = %1</translation>
         </message>
     </context>
 </TS>

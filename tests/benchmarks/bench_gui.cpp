@@ -68,6 +68,46 @@ void BM_GuiDragDegree30(benchmark::State& state)
     state.counters["frame_budget_ms"] = 1000.0 / 60.0;
 }
 
+// Issue 15: the same drag with every overlay of the curve's geometry on (normal, osculating
+// circle, curvature comb, tight bounding box with its extrema, inflections and cusps, the
+// hodograph's inset, tangent, split) — recomputed and repainted within one frame.
+void BM_GuiDragDegree30AllOverlays(benchmark::State& state)
+{
+    ensureApplication();
+    DeCasteljauTab tab;
+    tab.resize(1280, 760);
+    tab.show();
+    QCoreApplication::processEvents();
+    std::vector<Point> points;
+    for (int i = 0; i <= 30; ++i)
+        points.emplace_back(i, 4 * std::sin(i * 0.7));
+    tab.pointEditor()->setPoints(points, QStringLiteral("bench"));
+    tab.setTangentVisible(true);
+    tab.setSplitVisible(true);
+    tab.setNormalVisible(true);
+    tab.setOsculatingCircleVisible(true);
+    tab.setCombVisible(true);
+    tab.setBoundingBoxVisible(true);
+    tab.setInflectionsVisible(true);
+    tab.setHodographVisible(true);
+    CurveCanvas* canvas = tab.canvas();
+    const QPointF start = canvas->view().toScreen(points[15]);
+    QMouseEvent press(QEvent::MouseButtonPress, start, canvas->mapToGlobal(start), Qt::LeftButton, Qt::LeftButton,
+                      Qt::NoModifier);
+    QCoreApplication::sendEvent(canvas, &press);
+    int frame = 0;
+    for (auto _ : state) {
+        const QPointF at = start + QPointF(0, (frame++ % 2) ? 3 : -3);
+        QMouseEvent move(QEvent::MouseMove, at, canvas->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(canvas, &move);
+        canvas->repaint();
+    }
+    QMouseEvent release(QEvent::MouseButtonRelease, start, canvas->mapToGlobal(start), Qt::LeftButton, Qt::NoButton,
+                        Qt::NoModifier);
+    QCoreApplication::sendEvent(canvas, &release);
+    state.counters["frame_budget_ms"] = 1000.0 / 60.0;
+}
+
 void BM_GuiFrog200(benchmark::State& state)
 {
     ensureApplication();
@@ -92,4 +132,5 @@ void BM_GuiFrog200(benchmark::State& state)
 } // namespace
 
 BENCHMARK(BM_GuiDragDegree30)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GuiDragDegree30AllOverlays)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GuiFrog200)->Unit(benchmark::kMillisecond);

@@ -30,15 +30,16 @@ spread_ms=$(bench 'BM_ManyBodiesSpread/1000$' ms)
 outline_us=$(bench 'BM_OutlineFit/3$' us)
 fit_ms=$(bench 'BM_FitBezier/1000000/10$' ms)
 drag_ms=$(bench 'BM_GuiDragDegree30/1$' ms)
+overlays_ms=$(bench 'BM_GuiDragDegree30AllOverlays$' ms)
 frogs_ms=$(bench 'BM_GuiFrog200$' ms)
 length3_us=$(bench 'BM_ArcLength/3$' us)
 length10_us=$(bench 'BM_ArcLength/10$' us)
 features_us=$(bench 'BM_CurveFeatures/10$' us)
 closest_us=$(bench 'BM_ClosestPoint/10$' us)
 
-python3 - "$java_ns" "$seed_ns" "$stable_us" "$pile_ms" "$spread_ms" "$outline_us" "$fit_ms" "$drag_ms" "$frogs_ms" "$length3_us" "$length10_us" "$features_us" "$closest_us" <<'PY'
+python3 - "$java_ns" "$seed_ns" "$stable_us" "$pile_ms" "$spread_ms" "$outline_us" "$fit_ms" "$drag_ms" "$frogs_ms" "$length3_us" "$length10_us" "$features_us" "$closest_us" "$overlays_ms" <<'PY'
 import sys, platform, subprocess
-java, seed, stable, pile, spread, outline, fit, drag, frogs, length3, length10, features, closest = map(float, sys.argv[1:])
+java, seed, stable, pile, spread, outline, fit, drag, frogs, length3, length10, features, closest, overlays = map(float, sys.argv[1:])
 cpu = next((l.split(':',1)[1].strip() for l in open('/proc/cpuinfo') if l.startswith('model name')), '?')
 print(f"Machine: {cpu}, {subprocess.check_output(['nproc']).decode().strip()} cores; release build.\n")
 print("| target | measured | goal | met |")
@@ -50,6 +51,7 @@ rows = [
   ("per-frame least-squares fit of the outline (§4.9)", f"{outline:.2f} µs", "< 5 µs", outline < 5),
   ("degree-10 fit of 10⁶ points", f"{fit:.0f} ms", "< 100 ms", fit < 100),
   ("drag on a degree-30 curve: recompute + repaint", f"{drag:.1f} ms", "< 16.7 ms (one frame)", drag < 16.7),
+  ("the same drag with every overlay on (comb, circle, box, inflections, hodograph…)", f"{overlays:.1f} ms", "< 16.7 ms (one frame)", overlays < 16.7),
   ("200 frogs on the canvas: step + paint", f"{frogs:.1f} ms", "< 16.7 ms (60 fps)", frogs < 16.7),
   ("arc length of a cubic to 1e-13 relative", f"{length3:.2f} µs", "< 1 µs", length3 < 1),
   ("arc length of a degree-10 curve to 1e-13 relative", f"{length10:.2f} µs", "< 5 µs", length10 < 5),

@@ -1,8 +1,10 @@
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/common/number_text.h"
 
+#include "core/base/math_constants.h"
 #include "core/curves/bezier/bernstein_properties.h"
 #include "core/curves/bezier/degree_elevation.h"
+#include "core/curves/bezier/hodograph.h"
 #include "core/exact/polynomial.h"
 #include "core/exact/polynomial_text.h"
 #include "core/exact/rational.h"
@@ -10,6 +12,8 @@
 #include "core/io/worked_examples.h"
 #include "ui/common/canvas_legend.h"
 #include "ui/common/curve_canvas.h"
+#include "ui/decasteljau/decasteljau_construction_drawing.h"
+#include "ui/decasteljau/decasteljau_curve_drag.h"
 #include "ui/decasteljau/decasteljau_flow_layout.h"
 #include "ui/decasteljau/decasteljau_parameter_control.h"
 #include "ui/common/exact_panel.h"
@@ -57,6 +61,18 @@ constexpr long kExactTDenominator = 16;   ///< t = p/q with q ≤ 16 gives the t
 constexpr long kMaxShownDenominator = 10000; ///< larger denominators: the triangle at t in decimals
 constexpr int kLevelsPerTable = 3;        ///< symbolic table columns per block, as the thesis prints them
 constexpr int kNumericLevelsPerTable = 5;
+
+constexpr int kCombSamples = 160;        ///< teeth of the curvature comb
+constexpr int kHodographSamples = 120;    ///< the hodograph's curve in its inset
+constexpr int kCircleSegments = 96;       ///< the osculating circle as a polygon (TikZ)
+constexpr long kExactCurvatureDenominator = 1000000; ///< κ in fractions while they stay this small
+
+const QColor kTangentColour(0x6a, 0x3d, 0x9a);
+const QColor kNormalColour(0xb1, 0x59, 0x28);
+const QColor kCircleColour(0x7b, 0x8d, 0x2a);
+const QColor kBoxColour(0x5e, 0x6a, 0x78);
+const QColor kInflectionColour(0xd6, 0x27, 0x8b);
+const QColor kCuspColour(0xc0, 0x20, 0x20);
 
 /// Ex 2.2-like default: a cubic with four points.
 std::vector<Point> defaultPoints() { return {{0, 0}, {1, 2}, {3, 2}, {4, 0}}; }
@@ -142,23 +158,6 @@ void drawArrow(QPainter& p, const QPointF& from, const QPointF& to, double head)
     p.drawPolygon(tip);
 }
 
-QPainterPath polylinePath(const std::vector<Point>& points, const ViewTransform& view)
-{
-    QPainterPath path;
-    bool first = true;
-    for (const Point& q : points) {
-        if (!isFinite(q))
-            continue;
-        const QPointF s = view.toScreen(q);
-        if (first)
-            path.moveTo(s);
-        else
-            path.lineTo(s);
-        first = false;
-    }
-    return path;
-}
-
 /// The halves of the split at t: [0, t] and [t, 1].
 const QColor kSplitColours[2] = {QColor(0xc0, 0x39, 0x8b), QColor(0x1b, 0x9e, 0x77)};
 /// At most this many lines of levels (or of step curves) in the legend; the rest is one line.
@@ -186,6 +185,7 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent)
     m_editor->setCountLimits(1, kMaxPoints);
     m_editor->setLabelPrefix(QStringLiteral("P"));
     m_table = new PointTable(m_editor, this);
+    m_curveDrag = new DeCasteljauCurveDrag(m_canvas, m_editor, m_undo, this); // after the editor: sees the mouse first
     m_exact = new ExactPanel(this);
     // Break lines only between words: wide tables scroll sideways instead of splitting "(1/2, 3)".
     m_exact->setWordWrapMode(QTextOption::WordWrap);
@@ -217,6 +217,16 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent)
     m_tangent = new QCheckBox(this);
     m_split = new QCheckBox(this);
     m_snap = new QCheckBox(this);
+    m_normal = new QCheckBox(this);
+    m_osculating = new QCheckBox(this);
+    m_combBox = new QCheckBox(this);
+    m_box = new QCheckBox(this);
+    m_featuresBox = new QCheckBox(this);
+    m_hodograph = new QCheckBox(this);
+    m_speed = new QCheckBox(this);
+    m_readout = new QLabel(this);
+    m_readout->setWordWrap(true);
+    m_readout->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_warningLabel = new QLabel(this);
     m_warningLabel->setWordWrap(true);
     m_warningLabel->setStyleSheet(QStringLiteral("color: #8a3a00;"));
@@ -232,7 +242,7 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent)
     samplesLayout->addWidget(m_samplesLabel);
     samplesLayout->addWidget(m_samplesBox);
     auto* row2 = new DeCasteljauFlowLayout;
-    for (QCheckBox* box : {m_construction, m_steps, m_tangent, m_split, m_snap})
+    for (QCheckBox* box : {m_construction, m_steps, m_tangent, m_split, m_speed, m_snap})
         row2->addWidget(box);
     row2->addWidget(samples);
     row2->addWidget(m_raise);
@@ -253,7 +263,22 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent)
     m_sideSplitter->setSizes({200, 560});
     m_mainSplitter = new QSplitter(Qt::Horizontal, this);
     m_mainSplitter->addWidget(left);
-    m_mainSplitter->addWidget(m_sideSplitter);
+    // Beside the canvas, above the table: the overlays of the curve's geometry and the readouts.
+    auto* geometry = new QWidget(this);
+    geometry->setObjectName(QStringLiteral("geometry"));
+    auto* geometryLayout = new QVBoxLayout(geometry);
+    geometryLayout->setContentsMargins(0, 0, 0, 0);
+    auto* overlays = new DeCasteljauFlowLayout(nullptr, 10, 2);
+    for (QCheckBox* box : {m_normal, m_osculating, m_combBox, m_box, m_featuresBox, m_hodograph})
+        overlays->addWidget(box);
+    geometryLayout->addLayout(overlays);
+    geometryLayout->addWidget(m_readout);
+    auto* side = new QWidget(this);
+    auto* sideLayout = new QVBoxLayout(side);
+    sideLayout->setContentsMargins(0, 0, 0, 0);
+    sideLayout->addWidget(geometry);
+    sideLayout->addWidget(m_sideSplitter, 1);
+    m_mainSplitter->addWidget(side);
     m_mainSplitter->setStretchFactor(0, 3);
     m_mainSplitter->setStretchFactor(1, 2);
     m_mainSplitter->setSizes({780, 480});
@@ -276,6 +301,18 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent)
     connect(m_tangent, &QCheckBox::toggled, this,
             [this](bool on) { userToggled(m_showTangent, m_tangent, on, tr("Tangent")); });
     connect(m_split, &QCheckBox::toggled, this, [this](bool on) { userToggled(m_showSplit, m_split, on, tr("Split at t")); });
+    connect(m_normal, &QCheckBox::toggled, this, [this](bool on) { userToggled(m_showNormal, m_normal, on, tr("Normal")); });
+    connect(m_osculating, &QCheckBox::toggled, this,
+            [this](bool on) { userToggled(m_showOsculating, m_osculating, on, tr("Osculating circle")); });
+    connect(m_combBox, &QCheckBox::toggled, this,
+            [this](bool on) { userToggled(m_showComb, m_combBox, on, tr("Curvature comb")); });
+    connect(m_box, &QCheckBox::toggled, this, [this](bool on) { userToggled(m_showBox, m_box, on, tr("Bounding box")); });
+    connect(m_featuresBox, &QCheckBox::toggled, this,
+            [this](bool on) { userToggled(m_showFeatures, m_featuresBox, on, tr("Inflections and cusps")); });
+    connect(m_hodograph, &QCheckBox::toggled, this,
+            [this](bool on) { userToggled(m_showHodograph, m_hodograph, on, tr("Hodograph")); });
+    connect(m_speed, &QCheckBox::toggled, this,
+            [this](bool on) { userToggled(m_constantSpeed, m_speed, on, tr("Constant speed")); });
     connect(m_snap, &QCheckBox::toggled, this, [this](bool on) {
         auto apply = [this](bool v) {
             const QSignalBlocker block(m_snap);
@@ -332,30 +369,37 @@ void DeCasteljauTab::buildLayers()
         p.setPen(QPen(style.curve, style.lineWidth() * 1.8, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
         p.drawPath(polylinePath(traced, view));
     });
+    // The curvature comb (beyond the thesis), under the construction.
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (m_showComb)
+            drawCurvatureComb(p, view, style, m_comb);
+    });
+    // The tight bounding box and the extrema of x (◇ on its left and right sides) and y (on top and bottom).
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (!m_showBox || m_editor->points().empty())
+            return;
+        const CurveBox& box = m_features.bbox;
+        if (!isFinite(box.min) || !isFinite(box.max))
+            return;
+        p.setPen(QPen(kBoxColour, style.thinLine() * 1.3, Qt::DashDotLine));
+        p.setBrush(Qt::NoBrush);
+        p.drawRect(QRectF(view.toScreen(box.min), view.toScreen(box.max)).normalized());
+        const double r = style.handleRadius() * 0.75;
+        p.setPen(QPen(Qt::white, style.thinLine()));
+        p.setBrush(kBoxColour);
+        const auto& points = m_editor->points();
+        for (const auto* list : {&m_features.extremaX, &m_features.extremaY})
+            for (double t : *list) {
+                const QPointF c = view.toScreen(deCasteljauPoint(points, t));
+                QPolygonF diamond;
+                diamond << c + QPointF(0, -r) << c + QPointF(r, 0) << c + QPointF(0, r) << c + QPointF(-r, 0);
+                p.drawPolygon(diamond);
+            }
+    });
     // The construction of Def 2.4: every level r ≥ 1, points and segments, one colour each.
     m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
-        if (!m_showConstruction || m_levels.levels.size() < 2)
-            return;
-        const int n = m_levels.degree();
-        for (int r = 1; r < n; ++r) {
-            const auto& level = m_levels.levels[static_cast<std::size_t>(r)];
-            const QColor c = CanvasStyle::series(r);
-            // Beyond degree 10 the levels crowd each other: hairlines keep them apart, and a
-            // one-pixel line is drawn by Qt's fast stroker — a 1.4 px one costs the outline
-            // of every segment, three quarters of a frame at degree 30.
-            p.setPen(QPen(c, style.thinLine() * (n > 10 ? 1.0 : 1.4)));
-            p.setBrush(Qt::NoBrush);
-            p.drawPath(polylinePath(level, view));
-            // All the level's points as one path: one fill and one stroke instead of one per
-            // point keeps a drag at degree 30 (465 points) within a frame.
-            const double rad = style.handleRadius() * 0.6;
-            QPainterPath dots;
-            for (const Point& q : level)
-                dots.addEllipse(view.toScreen(q), rad, rad);
-            p.setPen(QPen(Qt::white, style.thinLine()));
-            p.setBrush(c);
-            p.drawPath(dots);
-        }
+        if (m_showConstruction && m_levels.levels.size() >= 2)
+            drawDeCasteljauConstruction(p, view, style, m_levels);
     });
     // Split at t: the halves' control polygons are the triangle's two edges. Drawn over the
     // construction, on a white halo, with hollow squares larger than the level's dots: both
@@ -377,6 +421,61 @@ void DeCasteljauTab::buildLayers()
                 p.drawRect(QRectF(view.toScreen(q) - QPointF(side, side) / 2, QSizeF(side, side)));
         }
     });
+    // Inflections (hollow circles) and cusps (crosses).
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (!m_showFeatures || m_editor->points().empty())
+            return;
+        const auto& points = m_editor->points();
+        const double r = style.handleRadius() * 1.1;
+        p.setBrush(Qt::NoBrush);
+        p.setPen(QPen(kInflectionColour, style.thinLine() * 2.2));
+        for (double t : m_features.inflections)
+            p.drawEllipse(view.toScreen(deCasteljauPoint(points, t)), r, r);
+        p.setPen(QPen(kCuspColour, style.thinLine() * 2.5, Qt::SolidLine, Qt::RoundCap));
+        for (double t : m_features.cusps) {
+            const QPointF c = view.toScreen(deCasteljauPoint(points, t));
+            p.drawLine(c + QPointF(-r, -r), c + QPointF(r, r));
+            p.drawLine(c + QPointF(-r, r), c + QPointF(r, -r));
+        }
+    });
+    // The osculating circle at t: centre c(t) + N/κ, radius 1/|κ| (none where κ is 0 or undefined).
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (!m_showOsculating || !m_curvature.center || !m_curvature.radius)
+            return;
+        const QPointF c = view.toScreen(*m_curvature.center);
+        const double r = *m_curvature.radius * view.scale();
+        if (!std::isfinite(r) || !std::isfinite(c.x()) || !std::isfinite(c.y()) || r > 1e7)
+            return; // nearly straight: a circle larger than any screen
+        p.setPen(QPen(kCircleColour, style.lineWidth() * 0.8));
+        p.setBrush(Qt::NoBrush);
+        p.drawEllipse(c, r, r);
+        p.setPen(QPen(kCircleColour, style.thinLine(), Qt::DotLine));
+        p.drawLine(c, view.toScreen(m_curvature.point));
+        p.setPen(QPen(Qt::white, style.thinLine()));
+        p.setBrush(kCircleColour);
+        p.drawEllipse(c, style.handleRadius() * 0.5, style.handleRadius() * 0.5);
+    });
+    // The unit normal N(t), left of the tangent, drawn as long as the tangent's arrow c′(t)/n.
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (!m_showNormal || !m_curvature.normal || m_levels.degree() < 1)
+            return;
+        const double length = std::hypot(m_curvature.tangent.x, m_curvature.tangent.y) / m_levels.degree();
+        const Point c = m_curvature.point, d = length * *m_curvature.normal;
+        if (!isFinite(c) || !isFinite(d))
+            return;
+        p.setPen(QPen(kNormalColour, style.lineWidth()));
+        const QPointF from = view.toScreen(c), to = view.toScreen(c + d);
+        drawArrow(p, from, to, 11.0 * style.scale);
+        p.setFont(style.labelFont());
+        p.setPen(kNormalColour);
+        const QFontMetricsF fm(p.font());
+        const QPointF dir = to - from;
+        const double len = std::hypot(dir.x(), dir.y());
+        QPointF at = to + (len > 0 ? dir / len * (8.0 * style.scale) : QPointF()) + QPointF(0, fm.ascent() / 2);
+        if (dir.x() < 0)
+            at.rx() -= fm.horizontalAdvance(QStringLiteral("N(t)"));
+        p.drawText(at, QStringLiteral("N(t)"));
+    });
     // The tangent c′(t), from the last level but one.
     m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
         if (!m_showTangent || m_levels.degree() < 1)
@@ -387,7 +486,7 @@ void DeCasteljauTab::buildLayers()
         const Point c = m_levels.point(), d = (1.0 / n) * m_levels.tangent();
         if (!isFinite(c) || !isFinite(d))
             return;
-        const QColor colour(0x6a, 0x3d, 0x9a);
+        const QColor colour = kTangentColour;
         p.setPen(QPen(colour, style.lineWidth()));
         const QPointF from = view.toScreen(c), to = view.toScreen(c + d);
         drawArrow(p, from, to, 11.0 * style.scale);
@@ -418,6 +517,11 @@ void DeCasteljauTab::buildLayers()
         f.setBold(true);
         p.setFont(f);
         p.drawText(s + QPointF(r + 4 * style.scale, r + 12 * style.scale), QStringLiteral("c(t)"));
+    });
+    // The hodograph c′ in an inset of its own, with its own construction at t.
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (m_showHodograph)
+            drawHodographInset(p, view, style);
     });
     // The key to the colours: which level, which step curve, which half.
     m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
@@ -451,8 +555,165 @@ CanvasLegend DeCasteljauTab::legend() const
         legend.entries.push_back({kSplitColours[0], Qt::DashLine, tr("polygon of the half on [0, t]")});
         legend.entries.push_back({kSplitColours[1], Qt::DashLine, tr("polygon of the half on [t, 1]")});
     }
+    if (m_showTangent && n >= 1)
+        legend.entries.push_back({kTangentColour, Qt::SolidLine, n == 1 ? tr("tangent c′(t)") : tr("tangent c′(t)/%1").arg(n)});
+    if (m_showNormal && n >= 1)
+        legend.entries.push_back(m_curvature.normal
+                                     ? CanvasLegendEntry{kNormalColour, Qt::SolidLine, tr("unit normal N(t)")}
+                                     : CanvasLegendEntry{kNormalColour, Qt::NoPen, tr("no normal: c′(t) = 0")});
+    if (m_showOsculating && n >= 1) {
+        if (m_curvature.radius)
+            legend.entries.push_back({kCircleColour, Qt::SolidLine,
+                                      tr("osculating circle, r = 1/|κ| = %1").arg(number(*m_curvature.radius))});
+        else if (m_curvature.curvature)
+            legend.entries.push_back({kCircleColour, Qt::NoPen, tr("no osculating circle: κ(t) = 0")});
+        else
+            legend.entries.push_back({kCircleColour, Qt::NoPen, tr("no osculating circle: κ undefined")});
+    }
+    if (m_showComb && n >= 1 && !m_comb.empty())
+        legend.entries.push_back({curvatureCombColor(), Qt::SolidLine,
+                                  tr("curvature comb: teeth |κ| × %1").arg(number(m_comb.scale))});
+    if (m_showBox && n >= 0)
+        legend.entries.push_back({kBoxColour, Qt::DashDotLine,
+                                  tr("bounding box, ◆ extrema of x and y")});
+    if (m_showFeatures && n >= 1) {
+        legend.entries.push_back({kInflectionColour, Qt::SolidLine,
+                                  tr("○ inflections: %1 · × cusps: %2").arg(m_features.inflections.size()).arg(m_features.cusps.size())});
+    }
     return legend;
 }
+
+QRectF DeCasteljauTab::hodographInset(const QRectF& viewport, const CanvasStyle& style) const
+{
+    if (!m_showHodograph || m_hodoLevels.levels.empty())
+        return {};
+    const double margin = 8 * style.scale;
+    // A corner of the canvas, small enough to leave the curve its room (in presentation mode too).
+    const double w = std::min(viewport.width() * 0.3, 260.0 * style.scale);
+    const double h = std::min(w * 0.75, viewport.height() * 0.32);
+    return QRectF(viewport.right() - margin - w, viewport.bottom() - margin - h, w, h);
+}
+
+void DeCasteljauTab::drawHodographInset(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const
+{
+    const QRectF inset = hodographInset(view.viewport(), style);
+    if (inset.isEmpty())
+        return;
+    p.setPen(QPen(style.gridMajor, style.thinLine()));
+    p.setBrush(QColor(255, 255, 255, 230));
+    p.drawRoundedRect(inset, 4, 4);
+    QFont font;
+    font.setPointSizeF(font.pointSizeF() * 0.9);
+    p.setFont(font);
+    const QFontMetricsF fm(font);
+    const double pad = 6 * style.scale;
+    const QString title = tr("hodograph c′");
+    p.setPen(style.text);
+    p.drawText(QRectF(inset.left() + pad, inset.top() + pad / 2, inset.width() - 2 * pad, fm.height()),
+               Qt::AlignLeft | Qt::AlignVCenter, fm.elidedText(title, Qt::ElideRight, inset.width() - 2 * pad));
+    // Its own view: the hodograph's control points and the origin, fitted into the inset.
+    const QRectF area = inset.adjusted(pad, pad + fm.height(), -pad, -pad);
+    const auto& H = m_hodoLevels.levels.front();
+    double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+    for (const Point& q : H) {
+        if (!isFinite(q))
+            return;
+        x0 = std::min(x0, q.x);
+        x1 = std::max(x1, q.x);
+        y0 = std::min(y0, q.y);
+        y1 = std::max(y1, q.y);
+    }
+    ViewTransform own;
+    own.setViewport(area);
+    const double span = std::max({x1 - x0, y1 - y0, 1e-9});
+    own.fit(QRectF(QPointF(x0, y0), QPointF(x1, y1)).adjusted(-span * 0.05, -span * 0.05, span * 0.05, span * 0.05), 2.0);
+    p.save();
+    p.setClipRect(area, Qt::IntersectClip);
+    // The axes through the origin: c′(t) is a vector from there.
+    const QPointF origin = own.toScreen({0, 0});
+    p.setPen(QPen(style.axis, style.thinLine()));
+    p.drawLine(QPointF(area.left(), origin.y()), QPointF(area.right(), origin.y()));
+    p.drawLine(QPointF(origin.x(), area.top()), QPointF(origin.x(), area.bottom()));
+    p.setBrush(Qt::NoBrush);
+    p.setPen(QPen(style.polygon, style.thinLine(), Qt::DashLine));
+    p.drawPath(polylinePath(H, own));
+    QColor light = style.curve;
+    light.setAlpha(160);
+    p.setPen(QPen(light, style.lineWidth() * 0.8));
+    p.drawPath(polylinePath(m_hodoCurve, own));
+    if (m_showConstruction)
+        // In the small view a high degree's dots would only cover each other (and cost a frame).
+        drawDeCasteljauConstruction(p, own, style, m_hodoLevels, m_hodoLevels.degree() > 10 ? 0.0 : 0.45);
+    p.setPen(QPen(Qt::white, style.thinLine()));
+    p.setBrush(style.handle);
+    for (const Point& q : H)
+        p.drawEllipse(own.toScreen(q), style.handleRadius() * 0.55, style.handleRadius() * 0.55);
+    // c′(t) as the arrow from the origin, and the point itself.
+    const Point d = m_hodoLevels.point();
+    p.setPen(QPen(kTangentColour, style.thinLine() * 1.5));
+    drawArrow(p, origin, own.toScreen(d), 8.0 * style.scale);
+    p.setPen(QPen(Qt::white, style.thinLine()));
+    p.setBrush(style.curve);
+    p.drawEllipse(own.toScreen(d), style.handleRadius() * 0.8, style.handleRadius() * 0.8);
+    p.restore();
+}
+
+void DeCasteljauTab::updateCurvatureAtT()
+{
+    const auto& points = m_editor->points();
+    if (points.empty())
+        return;
+    m_curvature = curvatureAt(points, m_t);
+    if (m_showHodograph) {
+        const auto H = hodograph(points);
+        m_hodoLevels = deCasteljau(H, m_t);
+    }
+}
+
+void DeCasteljauTab::updateGeometry()
+{
+    const auto& points = m_editor->points();
+    if (points.empty())
+        return;
+    bool finite = true;
+    for (const Point& q : points)
+        finite = finite && isFinite(q);
+    m_features = CurveFeatures{};
+    m_comb = CurvatureComb{};
+    m_hodoCurve.clear();
+    m_hodoLevels = DeCasteljauTable<double>{};
+    m_arc.reset();
+    if (!finite)
+        return;
+    if (m_showBox || m_showFeatures)
+        m_features = curveFeatures(points);
+    if (m_showComb)
+        m_comb = curvatureComb(points, kCombSamples);
+    if (m_showHodograph)
+        m_hodoCurve = sampleBezier(hodograph(points), kHodographSamples + 1);
+    m_arc.emplace(points);
+    updateCurvatureAtT();
+}
+
+double DeCasteljauTab::arcLengthAtT() const { return m_arc ? m_arc->lengthAt(m_t) : 0.0; }
+double DeCasteljauTab::totalLength() const { return m_arc ? m_arc->total() : 0.0; }
+
+QString DeCasteljauTab::readout() const
+{
+    if (m_editor->points().empty() || !m_arc)
+        return QString();
+    const QString lengths = tr("s(t) = %1 of L = %2").arg(number(arcLengthAtT()), number(totalLength()));
+    QString kappa;
+    if (!m_curvature.curvature)
+        kappa = tr("κ(t) undefined: c′(t) = 0 (a cusp, or coincident control points)");
+    else if (*m_curvature.curvature == 0.0)
+        kappa = tr("κ(t) = 0: straight here, the radius is infinite");
+    else
+        kappa = tr("κ(t) = %1 (radius %2)").arg(number(*m_curvature.curvature), number(m_curvature.radius.value_or(0)));
+    return lengths + QStringLiteral(" · ") + kappa;
+}
+
+void DeCasteljauTab::updateReadout() { m_readout->setText(readout()); }
 
 void DeCasteljauTab::pointsChanged()
 {
@@ -472,8 +733,10 @@ void DeCasteljauTab::pointsChanged()
                                                          part + 1));
     }
     m_levels = deCasteljau(points, m_t);
+    updateGeometry();
+    updateReadout();
     updateCanvasSummary();
-    if (m_editor->dragging() || isPlaying()) {
+    if (m_editor->dragging() || isPlaying() || m_curveDrag->molding()) {
         schedulePanel();
     } else {
         m_panelTimer->stop();
@@ -500,8 +763,10 @@ void DeCasteljauTab::parameterChanged()
 {
     if (!m_editor->points().empty())
         m_levels = deCasteljau(m_editor->points(), m_t);
+    updateCurvatureAtT();
+    updateReadout();
     updateCanvasSummary();
-    if (isPlaying() || m_editor->dragging())
+    if (isPlaying() || m_editor->dragging() || m_curveDrag->molding())
         schedulePanel(); // the triangle at t, a few times a second while t runs
     else
         updateExactPanel();
@@ -601,6 +866,13 @@ void DeCasteljauTab::setConstructionVisible(bool on) { setToggle(m_showConstruct
 void DeCasteljauTab::setStepByStep(bool on) { setToggle(m_showSteps, m_steps, on); }
 void DeCasteljauTab::setTangentVisible(bool on) { setToggle(m_showTangent, m_tangent, on); }
 void DeCasteljauTab::setSplitVisible(bool on) { setToggle(m_showSplit, m_split, on); }
+void DeCasteljauTab::setNormalVisible(bool on) { setToggle(m_showNormal, m_normal, on); }
+void DeCasteljauTab::setOsculatingCircleVisible(bool on) { setToggle(m_showOsculating, m_osculating, on); }
+void DeCasteljauTab::setCombVisible(bool on) { setToggle(m_showComb, m_combBox, on); }
+void DeCasteljauTab::setBoundingBoxVisible(bool on) { setToggle(m_showBox, m_box, on); }
+void DeCasteljauTab::setInflectionsVisible(bool on) { setToggle(m_showFeatures, m_featuresBox, on); }
+void DeCasteljauTab::setHodographVisible(bool on) { setToggle(m_showHodograph, m_hodograph, on); }
+void DeCasteljauTab::setConstantSpeed(bool on) { setToggle(m_constantSpeed, m_speed, on); }
 
 bool DeCasteljauTab::isPlaying() const { return m_timer->isActive(); }
 
@@ -623,6 +895,13 @@ void DeCasteljauTab::setPlaying(bool on)
 
 void DeCasteljauTab::advanceAnimation()
 {
+    if (m_constantSpeed && m_arc && m_arc->total() > 0) {
+        // Equal steps of arc length: the point moves at constant speed, t does not.
+        const double L = m_arc->total();
+        const double s = m_arc->lengthAt(m_t) + kAnimationStep * L;
+        setT(s > L * (1.0 + 1e-12) ? 0.0 : m_arc->parameterAt(std::min(s, L)));
+        return;
+    }
     double t = m_t + kAnimationStep;
     if (t > 1.0 + 1e-12)
         t = 0.0; // loops
@@ -750,10 +1029,48 @@ void DeCasteljauTab::updateExactPanel()
             html += QStringLiteral("<p>%1</p>").arg(tr("Split at t: [0, t] has control points %1; [t, 1] has %2.")
                                                         .arg(joinPoints(m_levels.leftHalf()), joinPoints(m_levels.rightHalf())));
     }
+    html += exactCurvatureHtml();
     html += m_symbolicHtml;
     if (!m_warningText.isEmpty())
         html += ExactPanel::note(m_warningText);
     m_exact->setContent(html);
+}
+
+QString DeCasteljauTab::exactCurvatureHtml() const
+{
+    const auto& points = m_editor->points();
+    if (points.empty() || !m_arc)
+        return QString();
+    QString html = ExactPanel::heading(tr("Arc length and curvature at t"));
+    html += QStringLiteral("<p>%1</p>").arg(tr("s(t) = %1, L = %2").arg(number(arcLengthAtT()), number(totalLength())));
+    // κ = (x′y″ − y′x″)/|c′|³: exact as k/(d√d) with k and d = |c′|² fractions, for rational points and t.
+    const int n = static_cast<int>(points.size()) - 1;
+    const auto exactPoints = smallRationalPoints(points);
+    const auto exactT = smallRational(m_t, kExactTDenominator);
+    std::optional<QString> exact;
+    if (exactPoints && exactT && n >= 1 && n <= kMaxExactDegree) {
+        const auto H = hodograph(*exactPoints);
+        const RPoint d1 = deCasteljauPoint(H, *exactT), d2 = deCasteljauPoint(hodograph(H), *exactT);
+        const ExactCurvature k = exactCurvatureAt(*exactPoints, *exactT);
+        const auto small = [](const Rational& q) {
+            return abs(q.get_num()) <= kExactCurvatureDenominator && q.get_den() <= kExactCurvatureDenominator;
+        };
+        const auto text = [](const Rational& q) { return QString::fromStdString(toString(q)); };
+        if (k.speedSquared == 0)
+            exact = tr("κ(t) is undefined: c′(t) = 0 (a cusp, or coincident control points), so there is no normal "
+                       "and no osculating circle.");
+        else if (small(k.numerator) && small(k.speedSquared))
+            if (const auto value = exactCurvatureText(k))
+                exact = tr("c′(t) = %1, c″(t) = %2<br>x′y″ − y′x″ = %3, |c′(t)|² = %4<br>κ(t) = (x′y″ − y′x″)/|c′|³ = %5 ≈ %6")
+                            .arg(pointText(d1), pointText(d2), text(k.numerator), text(k.speedSquared),
+                                 QString::fromStdString(*value),
+                                 number(k.numerator.get_d() / std::pow(k.speedSquared.get_d(), 1.5)));
+    }
+    if (exact)
+        html += QStringLiteral("<p>%1</p>").arg(*exact);
+    else
+        html += QStringLiteral("<p>%1</p>").arg(readout().section(QStringLiteral(" · "), 1));
+    return html;
 }
 
 QRectF DeCasteljauTab::contentBounds() const
@@ -811,11 +1128,36 @@ void DeCasteljauTab::retranslate()
     m_split->setText(tr("Split at t"));
     m_split->setToolTip(tr("Split the curve at t: the two edges of De Casteljau's triangle are the control polygons "
                            "of the halves [0, t] and [t, 1]."));
+    m_normal->setText(tr("Normal"));
+    m_normal->setToolTip(tr("The unit normal N(t) at c(t), the tangent turned a quarter turn to the left; drawn as long "
+                            "as the tangent's arrow. Undefined where c′(t) = 0."));
+    m_osculating->setText(tr("Osculating circle"));
+    m_osculating->setToolTip(tr("The circle that fits the curve best at c(t): centre c(t) + N(t)/κ(t), radius 1/|κ(t)|. "
+                                "None where κ = 0 (the radius is infinite) or where κ is undefined (c′(t) = 0)."));
+    m_combBox->setText(tr("Curvature comb"));
+    m_combBox->setToolTip(tr("Teeth along the normal, as long as |κ| times the scale given in the key, and the line "
+                             "through their tips: where the comb jumps, so does the curvature. No tooth where κ is undefined."));
+    m_box->setText(tr("Bounding box"));
+    m_box->setToolTip(tr("The tight axis-aligned box of the curve (not of its control points), from the extrema of x(t) "
+                         "and y(t): the t where x′ = 0 or y′ = 0, marked ◆."));
+    m_featuresBox->setText(tr("Inflections and cusps"));
+    m_featuresBox->setToolTip(tr("Inflection points ○, where x′y″ − y′x″ changes sign (the curve turns the other way), "
+                                 "and cusps ×, where c′ = 0."));
+    m_hodograph->setText(tr("Hodograph"));
+    m_hodograph->setToolTip(tr("The hodograph c′ in the corner: a Bézier curve of degree n − 1 with control points "
+                               "n (P_(i+1) − P_i), with its own De Casteljau construction at the same t; its point is c′(t)."));
+    m_speed->setText(tr("Constant speed"));
+    m_speed->setToolTip(tr("When playing, move c(t) by equal steps of arc length instead of equal steps of t: t is not "
+                           "distance along the curve."));
+    m_readout->setToolTip(tr("The arc length s(t) from c(0) to c(t), the curve's length L, and the signed curvature "
+                             "κ(t) = (x′y″ − y′x″)/|c′|³ (positive when the curve turns left)."));
+    updateReadout();
     m_snap->setText(tr("Snap to grid"));
     m_snap->setToolTip(tr("Round dragged and added points to the grid, so that they stay small fractions and the "
                           "exact tables appear."));
     m_canvas->setToolTip(tr("Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add "
-                            "one on the nearest edge, Delete removes the selected one, arrows nudge it."));
+                            "one on the nearest edge, Delete removes the selected one, arrows nudge it. Drag the curve "
+                            "itself to mold it; near the curve its closest point and t are shown."));
     m_exact->setToolTip(tr("De Casteljau's triangle P_i^r(t) at the current t and, for rational points, every level "
                            "in powers of t, as in Ex 2.2 and Ex 2.3."));
     m_table->retranslate();
@@ -833,6 +1175,13 @@ void DeCasteljauTab::writeSettings(QJsonObject& state) const
     state.insert(QStringLiteral("tangent"), m_showTangent);
     state.insert(QStringLiteral("split"), m_showSplit);
     state.insert(QStringLiteral("snap"), m_editor->snapEnabled());
+    state.insert(QStringLiteral("normal"), m_showNormal);
+    state.insert(QStringLiteral("osculatingCircle"), m_showOsculating);
+    state.insert(QStringLiteral("curvatureComb"), m_showComb);
+    state.insert(QStringLiteral("boundingBox"), m_showBox);
+    state.insert(QStringLiteral("inflections"), m_showFeatures);
+    state.insert(QStringLiteral("hodograph"), m_showHodograph);
+    state.insert(QStringLiteral("constantSpeed"), m_constantSpeed);
 }
 
 PointListMessages DeCasteljauTab::pointMessages() const
@@ -873,6 +1222,13 @@ bool DeCasteljauTab::loadSettings(const QJsonObject& state, const std::vector<Po
     const auto tangent = optionalBool(state, "tangent", &ok);
     const auto split = optionalBool(state, "split", &ok);
     const auto snap = optionalBool(state, "snap", &ok);
+    const auto normal = optionalBool(state, "normal", &ok);
+    const auto osculating = optionalBool(state, "osculatingCircle", &ok);
+    const auto comb = optionalBool(state, "curvatureComb", &ok);
+    const auto box = optionalBool(state, "boundingBox", &ok);
+    const auto inflections = optionalBool(state, "inflections", &ok);
+    const auto hodographShown = optionalBool(state, "hodograph", &ok);
+    const auto speed = optionalBool(state, "constantSpeed", &ok);
     if (!ok)
         return fail(tr("A De Casteljau display option is not true or false."));
 
@@ -882,10 +1238,22 @@ bool DeCasteljauTab::loadSettings(const QJsonObject& state, const std::vector<Po
     m_showSteps = steps.value_or(false);
     m_showTangent = tangent.value_or(false);
     m_showSplit = split.value_or(false);
-    for (auto [box, on] : {std::pair{m_construction, m_showConstruction}, std::pair{m_steps, m_showSteps},
-                           std::pair{m_tangent, m_showTangent}, std::pair{m_split, m_showSplit}}) {
-        const QSignalBlocker block(box);
-        box->setChecked(on);
+    // Documents older than these overlays have none of their keys: all off.
+    m_showNormal = normal.value_or(false);
+    m_showOsculating = osculating.value_or(false);
+    m_showComb = comb.value_or(false);
+    m_showBox = box.value_or(false);
+    m_showFeatures = inflections.value_or(false);
+    m_showHodograph = hodographShown.value_or(false);
+    m_constantSpeed = speed.value_or(false);
+    for (auto [check, on] : {std::pair{m_construction, m_showConstruction}, std::pair{m_steps, m_showSteps},
+                             std::pair{m_tangent, m_showTangent}, std::pair{m_split, m_showSplit},
+                             std::pair{m_normal, m_showNormal}, std::pair{m_osculating, m_showOsculating},
+                             std::pair{m_combBox, m_showComb}, std::pair{m_box, m_showBox},
+                             std::pair{m_featuresBox, m_showFeatures}, std::pair{m_hodograph, m_showHodograph},
+                             std::pair{m_speed, m_constantSpeed}}) {
+        const QSignalBlocker block(check);
+        check->setChecked(on);
     }
     {
         const QSignalBlocker block(m_snap);
@@ -939,6 +1307,12 @@ QString DeCasteljauTab::csv() const
         out += QStringLiteral("%1,%2,%3\n")
                    .arg(QString::fromStdString(formatDouble(static_cast<double>(j) / part)),
                         QString::fromStdString(formatDouble(m_curve[j].x)), QString::fromStdString(formatDouble(m_curve[j].y)));
+    // The readouts at t (empty where undefined: a cusp has no curvature, a straight piece no radius).
+    const auto f = [](double v) { return QString::fromStdString(formatDouble(v)); };
+    const auto opt = [&f](const std::optional<double>& v) { return v ? f(*v) : QString(); };
+    out += QStringLiteral("\nt,arc_length,length,curvature,radius\n");
+    out += QStringLiteral("%1,%2,%3,%4,%5\n")
+               .arg(f(m_t), f(arcLengthAtT()), f(totalLength()), opt(m_curvature.curvature), opt(m_curvature.radius));
     return out;
 }
 
@@ -951,7 +1325,49 @@ void DeCasteljauTab::drawTikz(TikzWriter& w) const
     if (m_showConstruction)
         for (int r = 1; r < m_levels.degree(); ++r)
             w.polyline(m_levels.levels[static_cast<std::size_t>(r)], CanvasStyle::series(r), 0.6);
+    if (m_showComb) {
+        for (const auto& tooth : m_comb.teeth)
+            w.polyline({tooth.base, tooth.tip}, curvatureCombColor(), 0.3);
+        for (const auto& stretch : m_comb.outline)
+            w.polyline(stretch, curvatureCombColor(), 0.6);
+    }
+    if (m_showBox && isFinite(m_features.bbox.min) && isFinite(m_features.bbox.max)) {
+        const CurveBox& b = m_features.bbox;
+        w.comment(QStringLiteral("tight bounding box and the extrema of x and y"));
+        w.polyline({b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}}, kBoxColour, 0.6, true, true);
+        for (const auto* list : {&m_features.extremaX, &m_features.extremaY})
+            for (double t : *list)
+                w.point(deCasteljauPoint(points, t), kBoxColour);
+    }
     w.polyline(m_curve, style.curve, 1.2);
+    if (m_showFeatures && !points.empty()) {
+        for (double t : m_features.inflections)
+            w.point(deCasteljauPoint(points, t), kInflectionColour, QStringLiteral("\\mathrm{infl.}"));
+        for (double t : m_features.cusps)
+            w.point(deCasteljauPoint(points, t), kCuspColour, QStringLiteral("\\mathrm{cusp}"));
+    }
+    const int n = m_levels.degree();
+    if (m_showTangent && n >= 1 && isFinite(m_levels.point()) && isFinite(m_levels.tangent()))
+        w.polyline({m_levels.point(), m_levels.point() + (1.0 / n) * m_levels.tangent()}, kTangentColour, 1.0);
+    if (m_showNormal && n >= 1 && m_curvature.normal) {
+        const double length = std::hypot(m_curvature.tangent.x, m_curvature.tangent.y) / n;
+        const Point tip = m_curvature.point + length * *m_curvature.normal;
+        if (isFinite(tip))
+            w.polyline({m_curvature.point, tip}, kNormalColour, 1.0);
+    }
+    const QRectF content = contentBounds();
+    const double contentSize = std::max(content.width(), content.height());
+    // A nearly straight piece has a circle far larger than the picture: it would shrink it to nothing.
+    if (m_showOsculating && m_curvature.center && m_curvature.radius && isFinite(*m_curvature.center)
+        && *m_curvature.radius <= 4 * contentSize) {
+        std::vector<Point> circle;
+        for (int k = 0; k < kCircleSegments; ++k) {
+            const double a = 2 * kPi * k / kCircleSegments;
+            circle.push_back(*m_curvature.center + *m_curvature.radius * Point(std::cos(a), std::sin(a)));
+        }
+        w.comment(QStringLiteral("osculating circle at t, radius %1").arg(QString::fromStdString(formatDouble(*m_curvature.radius))));
+        w.polyline(circle, kCircleColour, 0.8, false, true);
+    }
     for (std::size_t i = 0; i < points.size(); ++i)
         w.point(points[i], style.handle, QStringLiteral("P_{%1}").arg(i));
     if (!m_levels.levels.empty())

@@ -4,14 +4,24 @@
 /// control points, the construction of c(t) level by level at a parameter t that can be
 /// animated, the Matlab Rep_Bezier "desglossar" view, the tangent, the split at t, degree
 /// elevation, and beside the canvas the point table and the exact triangle of P_i^r(t).
+/// Beyond the thesis (docs/tabs.md), the differential geometry of the curve as overlays,
+/// each a toggle: the normal at t, the osculating circle, the curvature comb, the tight
+/// bounding box with the extrema of x and y, the inflections and cusps, the hodograph c′
+/// in an inset of its own with its own construction at t; the readouts s(t), L and κ(t);
+/// playing at constant speed (by arc length); dragging the curve itself to mold it.
 /// The Bernstein tab shares this tab's control points and its t.
 
+#include "core/curves/bezier/arc_length.h"
+#include "core/curves/bezier/curvature.h"
+#include "core/curves/bezier/curve_features.h"
 #include "core/curves/bezier/de_casteljau.h"
+#include "ui/common/curvature_comb.h"
 #include "ui/common/canvas_legend.h"
 #include "ui/common/curve_tab.h"
 
 #include <QString>
 
+#include <optional>
 #include <vector>
 
 class QCheckBox;
@@ -24,6 +34,7 @@ class QToolButton;
 
 namespace granota::ui {
 
+class DeCasteljauCurveDrag;
 class DeCasteljauParameterControl;
 
 class DeCasteljauTab : public CurveTab {
@@ -54,6 +65,40 @@ public:
     void setStepByStep(bool on);
     void setTangentVisible(bool on);
     void setSplitVisible(bool on);
+
+    /// The overlays beyond the thesis, each a toggle the document keeps.
+    bool normalVisible() const { return m_showNormal; }
+    bool osculatingCircleVisible() const { return m_showOsculating; }
+    bool combVisible() const { return m_showComb; }
+    bool boundingBoxVisible() const { return m_showBox; }
+    bool inflectionsVisible() const { return m_showFeatures; }
+    bool hodographVisible() const { return m_showHodograph; }
+    /// Playing moves c(t) by equal steps of arc length instead of t.
+    bool constantSpeed() const { return m_constantSpeed; }
+    void setNormalVisible(bool on);
+    void setOsculatingCircleVisible(bool on);
+    void setCombVisible(bool on);
+    void setBoundingBoxVisible(bool on);
+    void setInflectionsVisible(bool on);
+    void setHodographVisible(bool on);
+    void setConstantSpeed(bool on);
+
+    /// κ, the normal and the osculating circle at the current t.
+    const CurvatureAt& curvatureAtT() const { return m_curvature; }
+    /// The comb drawn (computed while it is shown).
+    const CurvatureComb& comb() const { return m_comb; }
+    /// Extrema, box, inflections and cusps of the curve (computed while one of them is shown).
+    const CurveFeatures& features() const { return m_features; }
+    /// s(t) and L.
+    double arcLengthAtT() const;
+    double totalLength() const;
+    /// The readouts line under the canvas: s(t), L and κ(t).
+    QString readout() const;
+    /// The hodograph's control points n (P_{i+1} − P_i) and its construction at t.
+    const DeCasteljauTable<double>& hodographTable() const { return m_hodoLevels; }
+    /// Where the hodograph's inset is drawn in a viewport (empty when it is hidden).
+    QRectF hodographInset(const QRectF& viewport, const CanvasStyle& style) const;
+    DeCasteljauCurveDrag* curveDrag() const { return m_curveDrag; }
 
     bool isPlaying() const;
     void setPlaying(bool on);
@@ -107,6 +152,12 @@ private:
     /// The canvas's accessible name and description: the curve, t and c(t) (screen readers).
     void updateCanvasSummary();
     void advanceAnimation();
+    void updateReadout();
+    /// What the overlays shown need of the curve (features, comb, arc length, hodograph).
+    void updateGeometry();
+    void updateCurvatureAtT();
+    void drawHodographInset(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const;
+    QString exactCurvatureHtml() const;
     void setToggle(bool& flag, QCheckBox* box, bool on);
     /// The user's changes (docs/tabs.md, "Undo"): each is one undo step that gives the
     /// document's value back; the programmatic setters above push nothing.
@@ -125,6 +176,15 @@ private:
     QCheckBox* m_tangent = nullptr;
     QCheckBox* m_split = nullptr;
     QCheckBox* m_snap = nullptr;
+    QCheckBox* m_normal = nullptr;
+    QCheckBox* m_osculating = nullptr;
+    QCheckBox* m_combBox = nullptr;
+    QCheckBox* m_box = nullptr;
+    QCheckBox* m_featuresBox = nullptr;
+    QCheckBox* m_hodograph = nullptr;
+    QCheckBox* m_speed = nullptr;
+    QLabel* m_readout = nullptr;
+    DeCasteljauCurveDrag* m_curveDrag = nullptr;
     QLabel* m_samplesLabel = nullptr;
     QSpinBox* m_samplesBox = nullptr;
     QPushButton* m_raise = nullptr;
@@ -141,11 +201,24 @@ private:
     bool m_showSteps = false;
     bool m_showTangent = false;
     bool m_showSplit = false;
+    bool m_showNormal = false;
+    bool m_showOsculating = false;
+    bool m_showComb = false;
+    bool m_showBox = false;
+    bool m_showFeatures = false;
+    bool m_showHodograph = false;
+    bool m_constantSpeed = false;
 
     // Derived from the points (and t): recomputed on change, drawn from here.
     std::vector<Point> m_curve;
     std::vector<std::vector<Point>> m_stepCurves;
     DeCasteljauTable<double> m_levels;
+    CurvatureAt m_curvature;
+    CurvatureComb m_comb;
+    CurveFeatures m_features;
+    std::optional<ArcLengthParametrization> m_arc;
+    std::vector<Point> m_hodoCurve;        ///< the hodograph sampled (while it is shown)
+    DeCasteljauTable<double> m_hodoLevels; ///< its construction at t
     QString m_symbolicHtml; ///< the exact P_i^r(t) in powers of t (depends on the points only)
     QString m_warningText;
 };

@@ -1,4 +1,6 @@
 #include "ui/fit/fit_tab.h"
+#include "core/base/number_format.h"
+#include "ui/common/canvas_legend.h"
 #include "ui/common/number_text.h"
 
 #include "core/curves/fitting/fit_warning.h"
@@ -202,6 +204,8 @@ void FitTab::buildUi()
     m_showMatrices = new QCheckBox(m_settingsGroup);
     buttons->addWidget(m_import);
     buttons->addWidget(m_showMatrices);
+    m_combBox = new QCheckBox(m_settingsGroup);
+    buttons->addWidget(m_combBox);
     buttons->addStretch(1);
     form->addRow(buttons);
 
@@ -340,11 +344,43 @@ void FitTab::buildUi()
         };
         m_undo->push(new ValueCommand<bool>(apply, !on, on, tr("Show matrices"), -1, {false, /*appliedAlready=*/true}));
     });
+    connect(m_combBox, &QCheckBox::toggled, this, [this](bool on) {
+        updateComb();
+        emit documentChanged();
+        if (m_loading)
+            return; // a document's value: no step
+        auto apply = [this](bool v) {
+            {
+                const QSignalBlocker block(m_combBox);
+                m_combBox->setChecked(v);
+            }
+            updateComb();
+            emit documentChanged();
+        };
+        m_undo->push(new ValueCommand<bool>(apply, !on, on, tr("Curvature comb"), -1, {false, /*appliedAlready=*/true}));
+    });
     connect(m_import, &QPushButton::clicked, this, &FitTab::importDialog);
+}
+
+void FitTab::updateComb()
+{
+    constexpr int kCombSamples = 160;
+    m_comb = m_combBox->isChecked() && m_fit ? curvatureComb(m_fit->controlPoints, kCombSamples) : CurvatureComb{};
+    m_canvas->update();
 }
 
 void FitTab::addLayers()
 {
+    // The curvature comb of the fitted curve, under it, with its scale in the key.
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (!m_combBox->isChecked() || m_comb.empty())
+            return;
+        drawCurvatureComb(p, view, style, m_comb);
+        CanvasLegend legend;
+        legend.entries.push_back({curvatureCombColor(), Qt::SolidLine,
+                                  tr("curvature comb of the fit: teeth |κ| × %1").arg(displaySignificant(m_comb.scale, 6))});
+        drawCanvasLegend(p, view, style, legend);
+    });
     // Residual vectors Q_i − α(t_i): thin segments from α(t_i) to Q_i.
     m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
         if (!m_fit)
@@ -421,6 +457,9 @@ void FitTab::retranslate()
     m_import->setText(tr("&Import CSV…"));
     m_import->setToolTip(tr("Read the data points Q_i from a CSV file (one “x,y” per line) or a JSON list [[x,y],…]."));
     m_showMatrices->setText(tr("Show &matrices"));
+    m_combBox->setText(tr("Curvature com&b"));
+    m_combBox->setToolTip(tr("The curvature comb of the fitted curve (beyond the thesis): teeth along the normal as long "
+                             "as |κ| times the scale in the key, and the line through their tips; where the comb wiggles, so does the fit."));
     m_showMatrices->setToolTip(tr("Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Note 2.2), in fractions "
                                   "when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8."));
     m_readoutGroup->setTitle(tr("Quality of the fit (Prop 2.2)"));
@@ -555,6 +594,7 @@ void FitTab::refit()
         m_fitError = errorText(fit.error());
         m_curve.clear();
     }
+    updateComb();
     m_canvas->setContentBounds(contentBounds());
     m_canvas->update();
     updateReadouts();
@@ -848,6 +888,7 @@ void FitTab::writeSettings(QJsonObject& state) const
     state.insert(QStringLiteral("correctParameters"), m_settings.correctParameters);
     state.insert(QStringLiteral("iterations"), m_settings.iterations);
     state.insert(QStringLiteral("showMatrices"), m_showMatrices->isChecked());
+    state.insert(QStringLiteral("curvatureComb"), m_combBox->isChecked());
 }
 
 PointListMessages FitTab::pointMessages() const
@@ -913,6 +954,11 @@ bool FitTab::loadSettings(const QJsonObject& state, const std::vector<Point>& po
         error = tr("“showMatrices” must be true or false.");
         return false;
     }
+    const QJsonValue comb = state.value(QStringLiteral("curvatureComb")); // older documents: off
+    if (!comb.isUndefined() && !comb.isBool()) {
+        error = tr("“curvatureComb” must be true or false.");
+        return false;
+    }
 
     // Apply without an undo step: opening a document starts a new history (the main window
     // clears the stacks), and a refused document must leave the user's history as it was.
@@ -920,6 +966,7 @@ bool FitTab::loadSettings(const QJsonObject& state, const std::vector<Point>& po
     m_settings = s;
     m_editor->applyPoints(points); // refits once, with the new settings
     m_showMatrices->setChecked(matrices.toBool(false));
+    m_combBox->setChecked(comb.toBool(false));
     m_loading = false;
     return true;
 }
@@ -966,6 +1013,13 @@ void FitTab::drawTikz(TikzWriter& tikz) const
                      .arg(q.size()));
     if (m_fit) {
         tikz.polyline(m_fit->controlPoints, style.polygon, 0.6, true);
+        if (m_combBox->isChecked()) {
+            tikz.comment(QStringLiteral("curvature comb: teeth |kappa| x %1").arg(QString::fromStdString(formatDouble(m_comb.scale))));
+            for (const auto& tooth : m_comb.teeth)
+                tikz.polyline({tooth.base, tooth.tip}, curvatureCombColor(), 0.3);
+            for (const auto& stretch : m_comb.outline)
+                tikz.polyline(stretch, curvatureCombColor(), 0.6);
+        }
         tikz.polyline(m_curve, style.curve, 1.2);
         for (std::size_t j = 0; j < m_fit->controlPoints.size(); ++j)
             tikz.point(m_fit->controlPoints[j], style.curve,

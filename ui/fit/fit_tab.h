@@ -8,6 +8,7 @@
 /// degree" plot, and the exact matrices of Ex 2.7 and Ex 2.8. Every computation is the core's
 /// (core/curves/fitting/least_squares_fit.h, core/curves/fitting/fit_error_by_degree.h); the tab draws and explains.
 
+#include "ui/common/curvature_comb.h"
 #include "core/curves/fitting/least_squares_fit.h"
 #include "ui/fit/fit_settings.h"
 #include "ui/common/curve_tab.h"
@@ -61,6 +62,9 @@ public:
     QCheckBox* correctionBox() const { return m_correct; }
     QSpinBox* iterationsBox() const { return m_iterations; }
     QCheckBox* showMatricesBox() const { return m_showMatrices; }
+    /// The curvature comb of the fitted curve (ui/common/curvature_comb.h), on demand.
+    QCheckBox* combBox() const { return m_combBox; }
+    const CurvatureComb& comb() const { return m_comb; }
 
     /// The table lists the points up to this many; beyond, a note says how many there are.
     static constexpr int kTableLimit = 5000;
@@ -120,6 +124,9 @@ private:
     QSpinBox* m_iterations = nullptr;
     QPushButton* m_import = nullptr;
     QCheckBox* m_showMatrices = nullptr;
+    QCheckBox* m_combBox = nullptr;
+    CurvatureComb m_comb; ///< of the fitted curve, while the comb is shown
+    void updateComb();
 
     QGroupBox* m_readoutGroup = nullptr;
     QLabel* m_sseLabel = nullptr;

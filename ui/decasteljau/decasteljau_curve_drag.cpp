@@ -1,0 +1,149 @@
+#include "ui/decasteljau/decasteljau_curve_drag.h"
+
+#include "core/base/number_format.h"
+#include "core/curves/bezier/molding.h"
+#include "ui/common/curve_canvas.h"
+#include "ui/common/number_text.h"
+#include "ui/common/point_commands.h"
+#include "ui/common/point_editor.h"
+
+#include <QEvent>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QUndoStack>
+
+#include <cmath>
+
+namespace granota::ui {
+
+DeCasteljauCurveDrag::DeCasteljauCurveDrag(CurveCanvas* canvas, PointEditor* editor, QUndoStack* undoStack, QObject* parent)
+    : QObject(parent), m_canvas(canvas), m_editor(editor), m_undo(undoStack)
+{
+    // Installed after the editor's filter: Qt asks the last one installed first.
+    m_canvas->installEventFilter(this);
+    // Undo, redo or a document in the middle of a mold: the points are no longer the mold's,
+    // and the mold ends there (the release then finds none), as a point drag does.
+    connect(m_undo, &QUndoStack::indexChanged, this, [this] { m_molding = false; });
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        if (!m_hover || !isFinite(m_hover->point))
+            return;
+        const QPointF s = view.toScreen(m_hover->point);
+        const double r = style.handleRadius() * 0.8;
+        const QColor colour(0xe0, 0x7b, 0x00);
+        p.setPen(QPen(colour, style.thinLine() * 2));
+        p.setBrush(Qt::NoBrush);
+        p.drawEllipse(s, r, r);
+        p.setFont(style.labelFont());
+        const QString label = QStringLiteral("t = %1").arg(displaySignificant(m_hover->t, 4));
+        const QFontMetricsF fm(p.font());
+        // A white halo under the label: it stays readable over the construction.
+        const QRectF box(s + QPointF(r + 3 * style.scale, -r - fm.height()), QSizeF(fm.horizontalAdvance(label) + 4, fm.height()));
+        p.setPen(Qt::NoPen);
+        p.setBrush(QColor(255, 255, 255, 200));
+        p.drawRect(box);
+        p.setPen(colour);
+        p.drawText(box, Qt::AlignCenter, label);
+    });
+}
+
+void DeCasteljauCurveDrag::updateHover(const QPointF& screen)
+{
+    std::optional<ClosestPoint> next;
+    const auto& points = m_editor->points();
+    if (!points.empty() && m_editor->pick(screen) < 0) {
+        const Point at = m_canvas->view().toModel(screen);
+        if (isFinite(at)) {
+            const ClosestPoint c = closestPoint(points, at);
+            const QPointF d = m_canvas->view().toScreen(c.point) - screen;
+            if (std::hypot(d.x(), d.y()) <= kHoverPixels * m_canvas->style().scale)
+                next = c;
+        }
+    }
+    const bool changed = next.has_value() != m_hover.has_value()
+                         || (next && (next->t != m_hover->t || next->point != m_hover->point));
+    m_hover = next;
+    if (changed) {
+        m_canvas->update();
+        emit hoverChanged();
+    }
+}
+
+void DeCasteljauCurveDrag::finishMold()
+{
+    if (!m_molding)
+        return;
+    m_molding = false;
+    const auto now = m_editor->points();
+    if (now != m_moldStart)
+        m_undo->push(new PointsCommand(m_editor, m_moldStart, now,
+                                       tr("Mold the curve at t = %1").arg(displaySignificant(m_moldT, 4))));
+    else
+        m_editor->applyPoints(now); // the tab refreshes what it deferred while molding
+}
+
+bool DeCasteljauCurveDrag::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched != m_canvas)
+        return QObject::eventFilter(watched, event);
+    switch (event->type()) {
+    case QEvent::MouseButtonPress: {
+        auto* e = static_cast<QMouseEvent*>(event);
+        if (e->button() != Qt::LeftButton || m_editor->pick(e->position()) >= 0)
+            return false; // a control point: the editor drags it
+        updateHover(e->position());
+        if (!m_hover)
+            return false; // empty paper: the canvas pans
+        m_editor->setSelected(-1);
+        m_molding = true;
+        m_moldT = m_hover->t;
+        m_moldStart = m_editor->points();
+        return true;
+    }
+    case QEvent::MouseMove: {
+        auto* e = static_cast<QMouseEvent*>(event);
+        if (!m_molding) {
+            if (!e->buttons()) {
+                updateHover(e->position());
+            } else if (m_hover) { // a control point dragged, or the paper panned: no hover meanwhile
+                m_hover.reset();
+                m_canvas->update();
+                emit hoverChanged();
+            }
+            return false;
+        }
+        const Point target = m_canvas->view().toModel(e->position());
+        if (!isFinite(target))
+            return false;
+        // From the points the drag began with: the point at t is exactly where the mouse is.
+        const auto molded = moldCurve(m_moldStart, m_moldT, target);
+        bool finite = true;
+        for (const Point& q : molded)
+            finite = finite && isFinite(q);
+        if (finite && molded.size() == m_moldStart.size()) {
+            m_hover = ClosestPoint{m_moldT, target, 0.0};
+            m_editor->applyPoints(molded); // undone at the release, as one step
+            m_molding = true;              // applyPoints ends the editor's drags, not this one
+        }
+        return false; // the canvas still reports the cursor position
+    }
+    case QEvent::MouseButtonRelease: {
+        auto* e = static_cast<QMouseEvent*>(event);
+        if (e->button() != Qt::LeftButton || !m_molding)
+            return false;
+        finishMold();
+        updateHover(e->position());
+        return true;
+    }
+    case QEvent::Leave:
+        if (!m_molding && m_hover) {
+            m_hover.reset();
+            m_canvas->update();
+            emit hoverChanged();
+        }
+        return false;
+    default:
+        return QObject::eventFilter(watched, event);
+    }
+}
+
+} // namespace granota::ui
