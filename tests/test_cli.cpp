@@ -195,6 +195,42 @@ private slots:
         QCOMPARE(strings(samples[11].toArray()), QStringList({"7", "5"}));
     }
 
+    // "bezier": one entry per segment, b_0 and b_3 the segment's ends (q_i, q_{i+1}), and for
+    // the uniform curve b_1 = p_1 + τ(p_2 − p_0)/3, b_2 = p_2 − τ(p_3 − p_1)/3. Ex 2.13, τ = 1/2:
+    // p_2 from (q_0, q_1, q_2, q_3): b_1 = (2,2) + ((6,0) − (3,5))/6 = (5/2, 7/6),
+    // b_2 = (6,0) − ((8,3) − (2,2))/6 = (5, −1/6); p_1^n from (q_0, q_0, q_1, q_2): b_1 = (3,5) + ((2,2) − (3,5))/6.
+    void catmullRomBezier()
+    {
+        const Run r = cli({"catmull-rom", "--points", kEx213, "--tau", "1/2", "--mode", "closed", "--exact", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray segs = r.json()["segments"].toArray();
+        const QJsonArray bez = r.json()["bezier"].toArray();
+        QCOMPARE(segs.size(), 5);
+        QCOMPARE(bez.size(), segs.size());
+        const QList<QStringList> q{{"3", "5"}, {"2", "2"}, {"6", "0"}, {"8", "3"}, {"7", "5"}};
+        for (int i = 0; i < bez.size(); ++i) {
+            const QJsonArray b = bez[i].toArray();
+            QCOMPARE(b.size(), 4);
+            QCOMPARE(strings(b[0].toArray()), q[i]);
+            QCOMPARE(strings(b[3].toArray()), q[(i + 1) % 5]);
+        }
+        QCOMPARE(strings(bez[1].toArray()[1].toArray()), QStringList({"5/2", "7/6"}));
+        QCOMPARE(strings(bez[1].toArray()[2].toArray()), QStringList({"5", "-1/6"}));
+
+        const Run open = cli({"catmull-rom", "--points", kEx213, "--tau", "1/2", "--exact", "--json"});
+        QCOMPARE(open.exitCode, 0);
+        const QJsonArray first = open.json()["bezier"].toArray()[0].toArray();
+        QCOMPARE(strings(first[1].toArray()), QStringList({"17/6", "9/2"}));
+
+        // Doubles (centripetal here) give numbers, one entry per segment too.
+        const Run c = cli({"catmull-rom", "--points", kEx213, "--alpha", "1/2", "--json"});
+        QCOMPARE(c.exitCode, 0);
+        const QJsonArray cb = c.json()["bezier"].toArray();
+        QCOMPARE(cb.size(), 4);
+        QVERIFY(std::abs(cb[3].toArray()[3].toArray()[0].toDouble() - 7.0) < 1e-12); // ends at q_4
+        QVERIFY(std::abs(cb[3].toArray()[3].toArray()[1].toDouble() - 5.0) < 1e-12);
+    }
+
     void catmullRomModes_data()
     {
         QTest::addColumn<QString>("mode");

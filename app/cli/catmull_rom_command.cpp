@@ -3,6 +3,7 @@
 #include "app/cli/command.h"
 #include "app/cli/finite_doubles.h"
 
+#include "core/curves/splines/bezier_segments.h"
 #include "core/curves/splines/catmull_rom.h"
 #include "core/exact/polynomial_text.h"
 
@@ -25,6 +26,30 @@ template <class S> Json coefficients(const Polynomial<S>& p, bool exact)
             a.push(number(c));
     }
     return a;
+}
+
+/// Each segment's cubic Bézier control points b_0..b_3 (bezier_segments.h), segment order.
+Json bezierJson(const std::vector<Vec2<Polynomial<Rational>>>& segments)
+{
+    Json all = Json::array();
+    for (const auto& b : bezierSegments(segments)) {
+        Json controls = Json::array();
+        for (const RPoint& p : b)
+            controls.push(point(p, true));
+        all.push(std::move(controls));
+    }
+    return all;
+}
+Json bezierJson(const std::vector<Vec2<Polynomial<double>>>& segments)
+{
+    Json all = Json::array();
+    for (const auto& b : bezierSegments(segments)) {
+        Json controls = Json::array();
+        for (const Point& p : b)
+            controls.push(point(p));
+        all.push(std::move(controls));
+    }
+    return all;
 }
 
 Expected<CommandOutput> run(const Arguments& args)
@@ -58,7 +83,7 @@ Expected<CommandOutput> run(const Arguments& args)
     if (*alpha != 0)
         txt << ", α = " << toString(*alpha);
     txt << "; segments in powers of s ∈ [0,1]:\n";
-    Json segments = Json::array(), sampleJson = Json::array();
+    Json segments = Json::array(), sampleJson = Json::array(), bezier = Json::array();
     if (exact) {
         auto segs = catmullRomSegments(*points, *tau, mode);
         if (!segs)
@@ -74,6 +99,7 @@ Expected<CommandOutput> run(const Arguments& args)
                 sampleJson.push(point(RPoint(s.x(u), s.y(u)), true));
             }
         }
+        bezier = bezierJson(*segs);
     } else {
         // Exact coordinates beyond the doubles are named here; an overflow while computing
         // is the core's OutOfRange (it checks every coefficient, like fitting does).
@@ -97,9 +123,11 @@ Expected<CommandOutput> run(const Arguments& args)
         }
         for (const Point& p : sampleSegments(*segs, *samples))
             sampleJson.push(point(p));
+        bezier = bezierJson(*segs);
     }
     txt << "(" << *samples << " samples per segment with --json)\n";
-    out.json.set("segments", std::move(segments)).set("samples", std::move(sampleJson));
+    out.json.set("segments", std::move(segments)).set("samples", std::move(sampleJson))
+        .set("bezier", std::move(bezier));
     out.text = txt.str();
     return out;
 }
