@@ -10,7 +10,9 @@
 # warm-up; the Bezier object is built inside each call). Granota is timed as a loop of CLI_REPS
 # whole `granota-cli analyze|project --json` processes, nothing subtracted: its time is mostly
 # process start and JSON output, not the computation (tests/benchmarks/bench_curves.cpp's
-# BM_ArcLength, BM_CurveFeatures and BM_ClosestPoint measure the computation itself).
+# BM_ArcLength, BM_CurveFeatures and BM_ClosestPoint measure the computation itself: when
+# granota-bench is next to granota-cli, their medians for its degree-3 curve are printed under
+# the table — a different cubic from these, so a scale, not a row of the table).
 # Needs node + npm (npm ci is run if node_modules is missing) and python3 with mpmath.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
@@ -100,3 +102,24 @@ print(f"Errors: length relative; bbox the largest coordinate error; closest poin
       f"Granota: mean of {cli_reps} whole granota-cli processes (analyze gives length and box in one call), "
       f"so its time is mostly process start.")
 PY
+
+bench="$(dirname "$cli")/granota-bench"
+if [ -x "$bench" ]; then
+    QT_QPA_PLATFORM=offscreen "$bench" --benchmark_filter='BM_(ArcLength|CurveFeatures|ClosestPoint)/3$' \
+        --benchmark_repetitions=3 --benchmark_report_aggregates_only=true --benchmark_format=json \
+        >"$tmp/bench.json" 2>/dev/null
+    python3 - "$tmp/bench.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+scale = {"ns": 1e-3, "us": 1, "ms": 1e3, "s": 1e6}
+m = {b["run_name"].split("/")[0]: b["real_time"] * scale[b["time_unit"]]
+     for b in d["benchmarks"] if b.get("aggregate_name") == "median"}
+def us(name):
+    return f"{m[name]:.2f} µs" if name in m else "not measured"
+print()
+print("Granota in-process (granota-bench, bench_curves.cpp's own wavy cubic, median of 3): "
+      f"length {us('BM_ArcLength')} (BM_ArcLength/3), extrema + box + inflections + cusps "
+      f"{us('BM_CurveFeatures')} (BM_CurveFeatures/3), closest point {us('BM_ClosestPoint')} "
+      "(BM_ClosestPoint/3).")
+PY
+fi
