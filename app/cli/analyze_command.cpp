@@ -38,14 +38,11 @@ template <class T, class F> Json orNull(const std::optional<T>& v, F make) { ret
 
 Expected<CommandOutput> run(const Arguments& args)
 {
-    auto points = args.points();
+    auto points = controlPoints(args);
     if (!points)
         return points.error();
     if (points->size() < 2)
         return makeError(ErrorCode::TooFewPoints, "analyze needs at least 2 control points (a curve of degree ≥ 1)");
-    if (static_cast<int>(points->size()) > kMaxDegree + 1)
-        return makeError(ErrorCode::DegreeTooHigh,
-                         "at most " + std::to_string(kMaxDegree + 1) + " control points (degree " + std::to_string(kMaxDegree) + ")");
     auto P = finiteDoubles(*points, false);
     if (!P)
         return P.error();

@@ -63,12 +63,9 @@ Expected<void> addReduction(const std::vector<RPoint>& points, bool exact, Json&
 
 Expected<CommandOutput> run(const Arguments& args)
 {
-    auto points = args.points();
+    auto points = controlPoints(args);
     if (!points)
         return points.error();
-    if (static_cast<int>(points->size()) > kMaxDegree + 1)
-        return makeError(ErrorCode::DegreeTooHigh,
-                         "at most " + std::to_string(kMaxDegree + 1) + " control points (degree " + std::to_string(kMaxDegree) + ")");
     if (args.flag("reduce") && !args.has("t")) {
         // Only the reduction: no De Casteljau construction was asked for.
         CommandOutput out;

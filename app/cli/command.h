@@ -50,4 +50,8 @@ std::string text(const Point& p);
 /// lower maximum, the core's kMaxFitDegree.
 constexpr int kMaxDegree = 200;
 
+/// The control points of --points/--points-file for the curve commands (bezier, analyze,
+/// project): at most kMaxDegree + 1 of them.
+Expected<std::vector<RPoint>> controlPoints(const Arguments& args);
+
 } // namespace granota::cli

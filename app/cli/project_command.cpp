@@ -15,12 +15,9 @@ namespace {
 
 Expected<CommandOutput> run(const Arguments& args)
 {
-    auto points = args.points();
+    auto points = controlPoints(args);
     if (!points)
         return points.error();
-    if (static_cast<int>(points->size()) > kMaxDegree + 1)
-        return makeError(ErrorCode::DegreeTooHigh,
-                         "at most " + std::to_string(kMaxDegree + 1) + " control points (degree " + std::to_string(kMaxDegree) + ")");
     const auto atText = args.value("at");
     if (!atText)
         return makeError(ErrorCode::InvalidInput, "--at x,y is required (the point to project)");

@@ -3,6 +3,7 @@
 // polyline of m segments (what many drawing programs do), on four curves, one with a cusp.
 #include "core/curves/bezier/arc_length.h"
 #include "core/curves/bezier/de_casteljau.h"
+#include "core/curves/bezier/gauss_legendre.h"
 #include "core/base/stopwatch.h"
 #include "core/reports/work_precision_reports.h"
 
@@ -33,37 +34,9 @@ template <class T> T speedAt(const std::vector<Point>& p, T t)
     return std::sqrt(x[0] * x[0] + y[0] * y[0]);
 }
 
-/// Nodes and weights of the k-point Gauss–Legendre rule on [−1, 1], Newton on P_k in long double.
-struct Rule {
-    std::vector<long double> x, w;
-};
-Rule gaussLegendre(int k)
+const GaussLegendreRule& rule24()
 {
-    Rule r;
-    const long double pi = 3.141592653589793238462643383279502884L;
-    for (int i = 0; i < k; ++i) {
-        long double z = std::cos(pi * (i + 0.75L) / (k + 0.5L)), dp = 1;
-        for (int it = 0; it < 100; ++it) {
-            long double p0 = 1, p1 = z;
-            for (int j = 2; j <= k; ++j) {
-                const long double p2 = ((2 * j - 1) * z * p1 - (j - 1) * p0) / j;
-                p0 = p1, p1 = p2;
-            }
-            dp = k * (z * p1 - p0) / (z * z - 1);
-            const long double dz = p1 / dp;
-            z -= dz;
-            if (std::abs(dz) < 1e-19L)
-                break;
-        }
-        r.x.push_back(z);
-        r.w.push_back(2 / ((1 - z * z) * dp * dp));
-    }
-    return r;
-}
-
-const Rule& rule24()
-{
-    static const Rule r = gaussLegendre(24);
+    static const GaussLegendreRule r = gaussLegendreRule(24);
     return r;
 }
 
@@ -71,15 +44,15 @@ const Rule& rule24()
 /// smooth piece ([0, 1/2] and [1/2, 1]: the cusp curve's kink is at 1/2, the others are smooth).
 long double referenceLength(const std::vector<Point>& p)
 {
-    static const Rule r = gaussLegendre(20);
+    static const GaussLegendreRule r = gaussLegendreRule(20);
     long double total = 0;
     const int panels = 512;
     for (int half = 0; half < 2; ++half)
         for (int k = 0; k < panels; ++k) {
             const long double a = 0.5L * half + 0.5L * k / panels, b = 0.5L * half + 0.5L * (k + 1) / panels;
             const long double h = (b - a) / 2, c = (a + b) / 2;
-            for (std::size_t i = 0; i < r.x.size(); ++i)
-                total += h * r.w[i] * speedAt<long double>(p, c + h * r.x[i]);
+            for (std::size_t i = 0; i < r.nodes.size(); ++i)
+                total += h * r.weights[i] * speedAt<long double>(p, c + h * r.nodes[i]);
         }
     return total;
 }
@@ -117,14 +90,14 @@ struct Curve {
 
 double gaussLegendre24Length(const std::vector<Point>& p, int pieces)
 {
-    const Rule& r = rule24();
+    const GaussLegendreRule& r = rule24();
     double total = 0;
     for (int k = 0; k < pieces; ++k) {
         const double a = double(k) / pieces, b = double(k + 1) / pieces;
         const double h = (b - a) / 2, c = (a + b) / 2;
         double s = 0;
-        for (std::size_t i = 0; i < r.x.size(); ++i)
-            s += double(r.w[i]) * speedAt<double>(p, c + h * double(r.x[i]));
+        for (std::size_t i = 0; i < r.nodes.size(); ++i)
+            s += double(r.weights[i]) * speedAt<double>(p, c + h * double(r.nodes[i]));
         total += h * s;
     }
     return total;

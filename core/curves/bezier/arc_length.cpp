@@ -1,6 +1,7 @@
 #include "core/curves/bezier/arc_length.h"
 
 #include "core/curves/bezier/curve_features.h"
+#include "core/curves/bezier/gauss_legendre.h"
 #include "core/curves/bezier/hodograph.h"
 
 #include <algorithm>
@@ -17,30 +18,15 @@ constexpr int kGaussPoints = 16;
 constexpr int kMaxDepth = 48;
 constexpr std::size_t kFixedHodograph = 64; // arcLength() allocates nothing up to degree 63
 
-/// The nodes (on [−1, 1], the positive half) and weights of the 16-point Gauss–Legendre rule,
-/// computed once by Newton's method on P_16 in long double (Golub–Welsch would do as well).
+/// The positive half of the 16-point Gauss–Legendre rule's nodes, and their weights, as doubles.
 struct GaussLegendre {
     std::array<double, kGaussPoints / 2> x{}, w{};
     GaussLegendre()
     {
-        const int n = kGaussPoints;
-        const long double pi = 3.141592653589793238462643383279502884L;
-        for (int i = 0; i < n / 2; ++i) {
-            long double z = std::cos(pi * (i + 0.75L) / (n + 0.5L)), dp = 0;
-            for (int it = 0; it < 100; ++it) {
-                long double p0 = 1, p1 = z;
-                for (int k = 2; k <= n; ++k) {
-                    const long double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
-                    p0 = p1, p1 = p2;
-                }
-                dp = n * (z * p1 - p0) / (z * z - 1);
-                const long double dz = p1 / dp;
-                z -= dz;
-                if (std::abs(dz) < 1e-19L)
-                    break;
-            }
-            x[static_cast<std::size_t>(i)] = static_cast<double>(z);
-            w[static_cast<std::size_t>(i)] = static_cast<double>(2 / ((1 - z * z) * dp * dp));
+        const GaussLegendreRule rule = gaussLegendreRule(kGaussPoints);
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            x[i] = static_cast<double>(rule.nodes[i]);
+            w[i] = static_cast<double>(rule.weights[i]);
         }
     }
 };

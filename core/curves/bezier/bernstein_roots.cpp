@@ -309,22 +309,22 @@ double bernsteinValue(const std::vector<double>& coefficients, double t)
     return value(coefficients.data(), static_cast<int>(coefficients.size()) - 1, t);
 }
 
+std::vector<double> binomialRow(int k)
+{
+    std::vector<double> c(static_cast<std::size_t>(k + 1), 1.0);
+    for (int i = 1; i <= k; ++i)
+        c[static_cast<std::size_t>(i)] =
+            c[static_cast<std::size_t>(i - 1)] * static_cast<double>(k - i + 1) / static_cast<double>(i);
+    return c;
+}
+
 std::vector<double> bernsteinProduct(const std::vector<double>& a, const std::vector<double>& b)
 {
     if (a.empty() || b.empty())
         return {};
     const int m = static_cast<int>(a.size()) - 1;
     const int n = static_cast<int>(b.size()) - 1;
-    // Binomials as doubles (exact up to 2⁵³, then correctly scaled to ~1e-16 relative);
-    // C(400, 200) ≈ 1e119 is far from overflow.
-    auto binomials = [](int k) {
-        std::vector<double> c(static_cast<std::size_t>(k + 1), 1.0);
-        for (int i = 1; i <= k; ++i)
-            c[static_cast<std::size_t>(i)] =
-                c[static_cast<std::size_t>(i - 1)] * static_cast<double>(k - i + 1) / static_cast<double>(i);
-        return c;
-    };
-    const std::vector<double> cm = binomials(m), cn = binomials(n), cmn = binomials(m + n);
+    const std::vector<double> cm = binomialRow(m), cn = binomialRow(n), cmn = binomialRow(m + n);
     std::vector<double> c(static_cast<std::size_t>(m + n + 1), 0.0);
     for (int i = 0; i <= m; ++i)
         for (int j = 0; j <= n; ++j)

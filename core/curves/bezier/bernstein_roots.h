@@ -48,4 +48,8 @@ double bernsteinValue(const std::vector<double>& coefficients, double t);
 /// no degree elevation needed). Empty if either is empty.
 std::vector<double> bernsteinProduct(const std::vector<double>& a, const std::vector<double>& b);
 
+/// C(k, 0) … C(k, k) as doubles: exact up to 2⁵³, then correctly rounded to ~1e-16 relative
+/// (C(400, 200) ≈ 1e119 is far from overflow).
+std::vector<double> binomialRow(int k);
+
 } // namespace granota

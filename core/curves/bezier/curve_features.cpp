@@ -126,14 +126,7 @@ std::vector<double> curvatureNumerator(const std::vector<Point>& P)
         return {};
     const std::vector<Point> A = hodograph(P);
     const int m = static_cast<int>(A.size()) - 1;
-    auto binomials = [](int k) {
-        std::vector<double> c(static_cast<std::size_t>(k + 1), 1.0);
-        for (int i = 1; i <= k; ++i)
-            c[static_cast<std::size_t>(i)] =
-                c[static_cast<std::size_t>(i - 1)] * static_cast<double>(k - i + 1) / static_cast<double>(i);
-        return c;
-    };
-    const std::vector<double> cm = binomials(m), c2 = binomials(2 * m - 2);
+    const std::vector<double> cm = binomialRow(m), c2 = binomialRow(2 * m - 2);
     std::vector<double> D(static_cast<std::size_t>(2 * m - 1), 0.0);
     for (int i = 0; i <= m; ++i)
         for (int j = i + 1; j <= m; ++j) {
