@@ -19,3 +19,16 @@ inline bool waitExposed(QWidget* window)
     window->show();
     return QTest::qWaitForWindowExposed(window, kWindowExposedMs);
 }
+
+/// Waits until `window` is also the active window: only then do its shortcuts (Ctrl+Z, …)
+/// answer a key press, as on a desktop. Under a window manager on a loaded machine the
+/// activation can come well after the window is exposed.
+inline bool waitActive(QWidget* window)
+{
+    window->activateWindow();
+    if (QTest::qWaitForWindowActive(window, kWindowExposedMs / 3))
+        return true;
+    window->raise();
+    window->activateWindow();
+    return QTest::qWaitForWindowActive(window, kWindowExposedMs);
+}

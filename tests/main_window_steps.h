@@ -41,13 +41,13 @@ inline QByteArray documentOf(const granota::ui::MainWindow& window)
     return granota::ui::serializeDocument(window.tabs(), window.currentTab()->key());
 }
 
-/// Shows `window` at the classroom size 1280×800, waits until it is on screen and shows the
+/// Shows `window` at the classroom size 1280×800, waits until it is on screen and active and shows the
 /// tab `key`: false if the window never appeared or has no such tab.
 inline bool showOnTab(granota::ui::MainWindow& window, const QString& key)
 {
     window.resize(1280, 800);
     window.show();
-    return waitExposed(&window) && window.showTab(key);
+    return waitExposed(&window) && waitActive(&window) && window.showTab(key);
 }
 
 /// A document file `name` in a fresh temporary folder, removed with it: where a round trip
