@@ -13,6 +13,7 @@
 #include "core/exact/rational.h"
 #include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
+#include "ui/common/curvature_comb_scale_box.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/decasteljau/decasteljau_curve_drag.h"
 #include "ui/decasteljau/decasteljau_parameter_control.h"
@@ -30,6 +31,7 @@
 #include <QTemporaryDir>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
+#include <QFontMetricsF>
 #include <QImage>
 #include <QPainter>
 #include <QJsonArray>
@@ -780,6 +782,253 @@ private slots:
         QVERIFY(!inset.isEmpty() && tab.canvas()->rect().contains(inset.toRect()));
         tab.setHodographVisible(false);
         QVERIFY(tab.hodographInset(tab.canvas()->rect(), tab.canvas()->style()).isEmpty());
+    }
+
+    // The TikZ export carries the hodograph's inset too: its control points n (P_{i+1} − P_i)
+    // (computed here) in a comment, and its control polygon drawn as their image under one
+    // scale and shift, inside a frame in the picture's lower right corner, with its axes clipped to it.
+    void theHodographIsInTheTikz()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        tab.setT(0.25);
+        QVERIFY(!tab.tikz().contains(QStringLiteral("hodograph")));
+        tab.setHodographVisible(true);
+        const QString tex = tab.tikz();
+        const auto& P = tab.pointEditor()->points();
+        const double n = static_cast<double>(P.size() - 1);
+        std::vector<Point> H;
+        QStringList written;
+        for (std::size_t i = 0; i + 1 < P.size(); ++i) {
+            H.push_back({n * (P[i + 1].x - P[i].x), n * (P[i + 1].y - P[i].y)});
+            written << QStringLiteral("(%1, %2)").arg(QString::fromStdString(granota::formatDouble(H.back().x)),
+                                                      QString::fromStdString(granota::formatDouble(H.back().y)));
+        }
+        QCOMPARE(written.join(QStringLiteral(", ")), QStringLiteral("(3, 6), (6, 0), (3, -6)")); // Ex 2.2-like cubic, by hand
+        const QString comment = QStringLiteral("hodograph: control points n (P_{i+1} - P_i) = ") + written.join(QStringLiteral(", "));
+        QVERIFY2(tex.contains(comment), qPrintable(tex));
+        const QStringList lines = tex.split(QLatin1Char('\n'));
+        int at = -1;
+        for (int k = 0; k < lines.size(); ++k)
+            if (lines[k].contains(comment))
+                at = k;
+        QVERIFY(at >= 0 && at + 1 < lines.size());
+        const QRegularExpression pair(QStringLiteral("\\((-?[0-9.]+),(-?[0-9.]+)\\)"));
+        const auto pairsOf = [&pair](const QString& line) {
+            std::vector<Point> out;
+            for (auto it = pair.globalMatch(line); it.hasNext();) {
+                const auto m = it.next();
+                out.push_back({m.captured(1).toDouble(), m.captured(2).toDouble()});
+            }
+            return out;
+        };
+        const std::vector<Point> drawn = pairsOf(lines[at + 1]);
+        QCOMPARE(drawn.size(), H.size());
+        const double a = (drawn[1].x - drawn[0].x) / (H[1].x - H[0].x);
+        QVERIFY(a > 0);
+        for (std::size_t i = 0; i < H.size(); ++i) {
+            QVERIFY(std::fabs(drawn[i].x - (drawn[0].x + a * (H[i].x - H[0].x))) < 2e-3);
+            QVERIFY(std::fabs(drawn[i].y - (drawn[0].y + a * (H[i].y - H[0].y))) < 2e-3);
+        }
+        // The frame: lower right of the main picture, whose control polygon is the first \draw.
+        const QRegularExpression frame(QStringLiteral("\\\\filldraw\\[[^\\]]*\\] \\((-?[0-9.]+),(-?[0-9.]+)\\) rectangle \\((-?[0-9.]+),(-?[0-9.]+)\\)"));
+        const auto f = frame.match(tex);
+        QVERIFY(f.hasMatch());
+        const QRectF box(QPointF(f.captured(1).toDouble(), f.captured(2).toDouble()), QPointF(f.captured(3).toDouble(), f.captured(4).toDouble()));
+        for (const Point& q : drawn)
+            QVERIFY(box.contains(QPointF(q.x, q.y)));
+        std::vector<Point> main;
+        for (const QString& line : lines)
+            if (line.contains(QStringLiteral("\\draw[")) && main.empty())
+                main = pairsOf(line);
+        QCOMPARE(main.size(), P.size());
+        double right = 0, bottom = 1e9;
+        for (const Point& q : main) {
+            right = std::max(right, q.x);
+            bottom = std::min(bottom, q.y);
+        }
+        QVERIFY(std::fabs(box.right() - right) < 2e-3 && std::fabs(box.top() - bottom) < 2e-3); // QRectF's top is the lower y
+        QVERIFY(box.width() < 0.5 * right);
+        QVERIFY(tex.contains(QStringLiteral("\\clip")) && tex.contains(QStringLiteral("\\end{scope}")));
+        QVERIFY(tex.contains(QStringLiteral("$c'(t)$")));
+    }
+
+    // The comb's scale is the user's: automatic by default, a number typed or stepped in its
+    // box makes every tooth |κ| × that long (so proportional to it), one undo step, kept by
+    // the document; older documents are automatic, a negative scale is refused.
+    void theCombsScaleIsTheUsersChoice()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        tab.setCombVisible(true);
+        const granota::ui::CurvatureComb automatic = tab.comb();
+        QVERIFY(automatic.scale > 0);
+        QCOMPARE(tab.combScale(), 0.0);
+        auto* box = tab.combScaleBox();
+        QVERIFY(box->isEnabled());
+        QVERIFY(!box->specialValueText().isEmpty());
+        QCOMPARE(box->text(), box->specialValueText());
+        const int steps = tab.undoStack()->count();
+        // From the keyboard: Up starts at the automatic scale (rounded), then a typed 0.25.
+        box->setFocus(Qt::TabFocusReason);
+        QTest::keyClick(box, Qt::Key_Up);
+        QVERIFY2(std::fabs(tab.combScale() / automatic.scale - 1) < 0.05, qPrintable(QString::number(tab.combScale())));
+        box->selectAll();
+        QTest::keyClicks(box, QStringLiteral("0.25"));
+        QTest::keyClick(box, Qt::Key_Return);
+        QCOMPARE(tab.combScale(), 0.25);
+        QCOMPARE(tab.comb().scale, 0.25);
+        QCOMPARE(tab.undoStack()->count(), steps + 1);
+        const std::vector<granota::ui::CurvatureComb::Tooth> quarter = tab.comb().teeth;
+        QCOMPARE(quarter.size(), automatic.teeth.size());
+        tab.setCombScale(0.5);
+        const auto& half = tab.comb().teeth;
+        QCOMPARE(half.size(), quarter.size());
+        for (std::size_t k = 0; k < half.size(); ++k) {
+            const double l0 = granota::distance(automatic.teeth[k].base, automatic.teeth[k].tip);
+            const double l1 = granota::distance(quarter[k].base, quarter[k].tip);
+            const double l2 = granota::distance(half[k].base, half[k].tip);
+            QVERIFY(std::fabs(l2 - 2 * l1) < 1e-12);
+            QVERIFY(std::fabs(l1 - l0 * 0.25 / automatic.scale) < 1e-12);
+        }
+        bool named = false;
+        for (const auto& e : tab.legend().entries)
+            named = named || e.text.contains(QStringLiteral("× 0.5"));
+        QVERIFY(named);
+        // The document keeps it.
+        const QJsonObject saved = tab.saveState();
+        QCOMPARE(saved.value(QStringLiteral("curvatureCombScale")).toDouble(), 0.5);
+        DeCasteljauTab other;
+        QString error;
+        QVERIFY2(other.loadState(saved, &error), qPrintable(error));
+        QCOMPARE(other.combScale(), 0.5);
+        QCOMPARE(other.comb().scale, 0.5);
+        QCOMPARE(other.saveState(), saved);
+        QJsonObject old = saved;
+        old.remove(QStringLiteral("curvatureCombScale"));
+        QVERIFY2(other.loadState(old, &error), qPrintable(error));
+        QCOMPARE(other.combScale(), 0.0);
+        QCOMPARE(other.comb().scale, automatic.scale);
+        QJsonObject bad = saved;
+        bad.insert(QStringLiteral("curvatureCombScale"), -1);
+        QVERIFY(!other.loadState(bad, &error));
+        QCOMPARE(other.combScale(), 0.0);
+        // Undo gives automatic back (the programmatic 0.5 pushed nothing: undo goes to automatic).
+        tab.undoStack()->undo();
+        QCOMPARE(tab.combScale(), 0.0);
+        QCOMPARE(tab.comb().scale, automatic.scale);
+        QCOMPARE(box->text(), box->specialValueText());
+        tab.undoStack()->redo();
+        QCOMPARE(tab.combScale(), 0.25);
+    }
+
+    // The canvas draws its overlays (the key, the hodograph's inset) after every layer, the
+    // point editor's handles and labels included, whatever the order they were added in.
+    void overlaysAreDrawnOverEveryLayer()
+    {
+        granota::ui::CurveCanvas canvas;
+        canvas.resize(100, 80);
+        using granota::ui::CanvasStyle;
+        using granota::ui::ViewTransform;
+        canvas.addOverlay([](QPainter& p, const ViewTransform&, const CanvasStyle&) { p.fillRect(QRectF(0, 0, 50, 80), Qt::blue); });
+        canvas.addLayer([](QPainter& p, const ViewTransform&, const CanvasStyle&) { p.fillRect(QRectF(0, 0, 100, 80), Qt::red); });
+        QImage image(canvas.size(), QImage::Format_ARGB32);
+        QPainter painter(&image);
+        canvas.render(painter, QRectF(canvas.rect()));
+        painter.end();
+        QCOMPARE(QColor(image.pixel(10, 40)), QColor(Qt::blue));
+        QCOMPARE(QColor(image.pixel(90, 40)), QColor(Qt::red));
+    }
+
+    // At a projector's 800 × 600 the key goes where it covers no control point, label, c(t)
+    // or the hodograph's inset (compact if it must), and the fewest samples of the curve; in
+    // presentation mode at a larger size too. Where it cannot keep clear (presentation mode at
+    // 800 × 600), the labels under it are painted before it: the key's white stays on top.
+    // (The document of resources/screenshots/geometry.granota.)
+    void theKeyKeepsClearOfThePoints_data()
+    {
+        QTest::addColumn<bool>("presentation");
+        QTest::addColumn<int>("width");
+        QTest::addColumn<int>("height");
+        QTest::addColumn<bool>("clear");
+        QTest::newRow("800x600") << false << 800 << 520 << true;
+        QTest::newRow("presentation 1280x800") << true << 1280 << 760 << true;
+        QTest::newRow("presentation 800x600") << true << 800 << 520 << false;
+    }
+    void theKeyKeepsClearOfThePoints()
+    {
+        QFETCH(bool, presentation);
+        QFETCH(int, width);
+        QFETCH(int, height);
+        QFETCH(bool, clear);
+        DeCasteljauTab tab;
+        tab.resize(width, height);
+        tab.show();
+        QVERIFY(waitExposed(&tab));
+        tab.pointEditor()->setPoints({{0, 0}, {1, 2.2}, {2.6, -1.4}, {3.4, 1.6}, {4.2, 0.2}}, QStringLiteral("geometry"));
+        tab.setT(0.3);
+        tab.setConstructionVisible(false);
+        tab.setTangentVisible(true);
+        tab.setNormalVisible(true);
+        tab.setOsculatingCircleVisible(true);
+        tab.setCombVisible(true);
+        tab.setBoundingBoxVisible(true);
+        tab.setInflectionsVisible(true);
+        tab.setHodographVisible(true);
+        tab.setPresentation(presentation);
+        QCoreApplication::processEvents();
+        tab.fitView();
+        const auto& view = tab.canvas()->view();
+        const auto& style = tab.canvas()->style();
+        const QRectF key = tab.legendRect(view, style);
+        QVERIFY(!key.isEmpty());
+        QVERIFY(view.viewport().contains(key));
+        const QFontMetricsF fm(style.labelFont());
+        const auto& P = tab.pointEditor()->points();
+        const double r = style.handleRadius();
+        std::vector<QRectF> covered; // the labels under the key
+        for (std::size_t i = 0; i < P.size(); ++i) {
+            const QPointF s = view.toScreen(P[i]);
+            const QRectF marker(s - QPointF(r, r), QSizeF(2 * r, 2 * r));
+            const QRectF label(s.x() + r, s.y() - r - fm.ascent(), fm.horizontalAdvance(QStringLiteral("P%1").arg(i)) + 3 * style.scale,
+                               fm.height());
+            if (clear)
+                QVERIFY2(!key.intersects(marker) && !key.intersects(label), qPrintable(QStringLiteral("P%1 under the key").arg(i)));
+            else if (key.intersects(label))
+                covered.push_back(key.intersected(label));
+        }
+        if (clear) {
+            QVERIFY(!key.intersects(tab.hodographInset(view.viewport(), style)));
+            // The corner a fixed key would take covers at least as many samples of the curve.
+            const auto samplesIn = [&](const QRectF& box) {
+                int k = 0;
+                for (const Point& q : tab.curve())
+                    k += box.contains(view.toScreen(q));
+                return k;
+            };
+            const QRectF topLeft(view.viewport().topLeft() + QPointF(8, 8) * style.scale, key.size());
+            QVERIFY2(samplesIn(key) <= samplesIn(topLeft), qPrintable(QStringLiteral("%1 > %2").arg(samplesIn(key)).arg(samplesIn(topLeft))));
+            return;
+        }
+        // Too small to keep clear: the labels are under the key, not over it. With and without
+        // the labels, the pixels there differ by what shows through the key's white only.
+        QVERIFY(!covered.empty());
+        const auto render = [&tab] {
+            QImage image(tab.canvas()->size(), QImage::Format_ARGB32);
+            QPainter painter(&image);
+            tab.canvas()->render(painter, QRectF(tab.canvas()->rect()));
+            return image;
+        };
+        const QImage with = render();
+        tab.pointEditor()->setLabelChoice(false);
+        const QImage without = render();
+        int most = 0;
+        for (const QRectF& area : covered)
+            for (int y = static_cast<int>(area.top()) + 1; y < static_cast<int>(area.bottom()); ++y)
+                for (int x = static_cast<int>(area.left()) + 1; x < static_cast<int>(area.right()); ++x)
+                    most = std::max(most, std::abs(qGray(with.pixel(x, y)) - qGray(without.pixel(x, y))));
+        QVERIFY2(most > 0, "the labels were not drawn at all");
+        QVERIFY2(most < 60, qPrintable(QString::number(most))); // a label over the key: about 200
     }
 
     // s(t) and L: (0,0),(0,1),(1,1),(1,0) has length exactly 2; the readout and the CSV say it.

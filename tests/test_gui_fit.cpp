@@ -11,6 +11,7 @@
 #include "ui/common/curve_canvas.h"
 #include "ui/common/exact_panel.h"
 #include "ui/fit/fit_exact_view.h"
+#include "ui/common/curvature_comb_scale_box.h"
 #include "ui/fit/fit_tab.h"
 #include "ui/common/point_editor.h"
 #include "ui/common/point_table.h"
@@ -565,6 +566,70 @@ private slots:
         QVERIFY(!other.combBox()->isChecked());
         old.insert(QStringLiteral("curvatureComb"), 1);
         QVERIFY(!other.loadState(old, &error));
+    }
+
+    // The comb's scale beside it: automatic by default, then the user's number (typed in the
+    // box), which makes every tooth |κ| × that long; one undo step; kept by the document.
+    void curvatureCombScaleIsTheUsers()
+    {
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.8"));
+        QVERIFY(!tab.combScaleBox()->isEnabled());
+        tab.combBox()->click();
+        QVERIFY(tab.combScaleBox()->isEnabled());
+        const granota::ui::CurvatureComb automatic = tab.comb();
+        QVERIFY(automatic.scale > 0 && !automatic.empty());
+        QCOMPARE(tab.saveState().value(QStringLiteral("curvatureCombScale")).toDouble(-1), 0.0);
+        const int steps = tab.undoStack()->count();
+        auto* box = tab.combScaleBox();
+        box->setFocus(Qt::TabFocusReason);
+        box->selectAll();
+        QTest::keyClicks(box, QStringLiteral("0.125"));
+        QTest::keyClick(box, Qt::Key_Return);
+        QCOMPARE(tab.comb().scale, 0.125);
+        QCOMPARE(tab.undoStack()->count(), steps + 1);
+        QCOMPARE(tab.comb().teeth.size(), automatic.teeth.size());
+        QCOMPARE(automatic.undefinedSamples, 0); // tooth k at t = k/160
+        const auto& P = tab.currentFit()->controlPoints;
+        // A tooth is |κ| × the scale long, cut at the control polygon's size (curvature_comb.h).
+        double x0 = P[0].x, x1 = x0, y0 = P[0].y, y1 = y0;
+        for (const Point& q : P) {
+            x0 = std::min(x0, q.x);
+            x1 = std::max(x1, q.x);
+            y0 = std::min(y0, q.y);
+            y1 = std::max(y1, q.y);
+        }
+        const double size = std::hypot(x1 - x0, y1 - y0);
+        const double last = static_cast<double>(automatic.teeth.size() - 1);
+        int proportional = 0;
+        for (std::size_t k = 0; k < automatic.teeth.size(); ++k) {
+            const granota::CurvatureAt c = granota::curvatureAt(P, static_cast<double>(k) / last);
+            QVERIFY(c.curvature);
+            const double kappa = std::fabs(*c.curvature);
+            const double l0 = granota::distance(automatic.teeth[k].base, automatic.teeth[k].tip);
+            const double l1 = granota::distance(tab.comb().teeth[k].base, tab.comb().teeth[k].tip);
+            QVERIFY(std::fabs(l1 - std::min(kappa * 0.125, size)) <= 1e-9 * (1 + l1));
+            QVERIFY(std::fabs(l0 - std::min(kappa * automatic.scale, size)) <= 1e-9 * (1 + l0));
+            if (kappa * automatic.scale < size && kappa * 0.125 < size && l0 > 0) {
+                ++proportional;
+                QVERIFY(std::fabs(l1 / l0 - 0.125 / automatic.scale) < 1e-9);
+            }
+        }
+        QVERIFY(proportional > static_cast<int>(automatic.teeth.size()) / 2);
+        const QJsonObject saved = tab.saveState();
+        QCOMPARE(saved.value(QStringLiteral("curvatureCombScale")).toDouble(), 0.125);
+        FitTab other;
+        QString error;
+        QVERIFY2(other.loadState(saved, &error), qPrintable(error));
+        QCOMPARE(other.comb().scale, 0.125);
+        QCOMPARE(other.combScaleBox()->scale(), 0.125);
+        QCOMPARE(other.saveState(), saved);
+        QJsonObject bad = saved;
+        bad.insert(QStringLiteral("curvatureCombScale"), QStringLiteral("big"));
+        QVERIFY(!other.loadState(bad, &error));
+        tab.undoStack()->undo();
+        QCOMPARE(tab.comb().scale, automatic.scale);
+        QCOMPARE(box->text(), box->specialValueText());
     }
 
     void saveLoadRoundTrip()

@@ -4,6 +4,7 @@
 // control and a summary of every canvas. The same executable runs offscreen and, through
 // tests/real_window/run.sh, under Xvfb with a window manager.
 #include "core/curves/bezier/de_casteljau.h"
+#include "core/exact/rational.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/number_text.h"
 #include "ui/common/point_editor.h"
@@ -27,8 +28,12 @@
 #include <QPushButton>
 #include <QScrollBar>
 #include <QTabBar>
+#include <QUndoStack>
 #include <QTabWidget>
 #include <QTest>
+
+#include <cmath>
+#include <vector>
 
 using granota::Point;
 using granota::ui::CurveCanvas;
@@ -120,6 +125,68 @@ private slots:
         QCOMPARE(editor->selected(), 1); // Tab selected nothing on its way out
         press(window, Qt::Key_Backtab, Qt::ShiftModifier);
         QVERIFY(canvas->hasFocus());
+    }
+
+    // Alt+arrows mold the curve at the current t (the keyboard's drag of the curve): c(t) moves
+    // by one nudge step, the control points by the least change that does it,
+    //   ΔP_i = B_i^n(t) Δ / Σ_j B_j^n(t)²  (molding.h),
+    // a run of keys is one undo step, and Ctrl+Z gives the points back exactly. The plain
+    // arrows still nudge the selected control point; no window shortcut takes Alt+arrows.
+    void altArrowsMoldTheCurveAtT()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        auto* tab = qobject_cast<DeCasteljauTab*>(window.currentTab());
+        QVERIFY(tab);
+        tab->setT(0.25);
+        CurveCanvas* canvas = curveCanvas(window);
+        canvas->setFocus(Qt::OtherFocusReason);
+        QTRY_VERIFY(canvas->hasFocus());
+        auto* editor = tab->pointEditor();
+        const std::vector<Point> before = editor->points();
+        const int steps = tab->undoStack()->count();
+        const double h = granota::toDouble(editor->nudgeStep(false));
+        QVERIFY(h > 0);
+        const double t = 0.25;
+        // The cubic's Bernstein values at t, by hand: (1−t)³, 3t(1−t)², 3t²(1−t), t³.
+        const double B[4] = {std::pow(1 - t, 3), 3 * t * std::pow(1 - t, 2), 3 * t * t * (1 - t), std::pow(t, 3)};
+        const double sumSquares = B[0] * B[0] + B[1] * B[1] + B[2] * B[2] + B[3] * B[3];
+        QCOMPARE(before.size(), std::size_t(4));
+        const auto expectAfter = [&](Point delta) {
+            const auto& now = editor->points();
+            QCOMPARE(now.size(), before.size());
+            for (std::size_t i = 0; i < 4; ++i) {
+                const Point want = before[i] + (B[i] / sumSquares) * delta;
+                QVERIFY2(granota::distance(now[i], want) < 1e-12, qPrintable(QStringLiteral("P%1").arg(i)));
+            }
+            const Point c0 = granota::deCasteljauPoint(before, t), c1 = granota::deCasteljauPoint(now, t);
+            QVERIFY(granota::distance(c1 - c0, delta) < 1e-12);
+        };
+        press(window, Qt::Key_Right, Qt::AltModifier);
+        expectAfter({h, 0});
+        press(window, Qt::Key_Up, Qt::AltModifier);
+        press(window, Qt::Key_Up, Qt::AltModifier);
+        expectAfter({h, 2 * h});
+        QCOMPARE(tab->undoStack()->count(), steps + 1); // the run is one step
+        QCOMPARE(editor->selected(), -1);               // no control point was nudged
+        // Shift: ten steps.
+        press(window, Qt::Key_Left, Qt::AltModifier | Qt::ShiftModifier);
+        expectAfter({-9 * h, 2 * h});
+        QCOMPARE(tab->undoStack()->count(), steps + 1);
+        press(window, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(editor->points(), before);
+        // The plain arrow nudges the selected control point, as before.
+        editor->setSelected(1);
+        press(window, Qt::Key_Right);
+        QVERIFY(editor->points()[1].x > before[1].x);
+        QCOMPARE(editor->points()[0], before[0]);
+        QCOMPARE(editor->points()[2], before[2]);
+        // No action of the window has Alt with an arrow.
+        for (const QAction* a : window.findChildren<QAction*>())
+            for (const QKeySequence& k : a->shortcuts())
+                for (Qt::Key key : {Qt::Key_Left, Qt::Key_Right, Qt::Key_Up, Qt::Key_Down})
+                    for (Qt::KeyboardModifiers m : {Qt::KeyboardModifiers(Qt::AltModifier), Qt::AltModifier | Qt::ShiftModifier})
+                        QVERIFY2(k != QKeySequence(QKeyCombination(m, key)), qPrintable(a->text()));
     }
 
     // The canvas draws a frame while it has the focus: its pixels differ with and without.

@@ -3,6 +3,7 @@
 // beamer frame, and fits: no overfull box, no error, the picture no wider than the text and
 // its bottom above the frame's navigation bar. Without pdflatex this test fails (CI
 // installs it: .ci/deps.sh).
+#include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/tab_page.h"
 #include "ui/shell/tikz_options.h"
@@ -55,6 +56,11 @@ std::vector<Figure> exportFigures(MainWindow& window, const QDir& dir, const Tik
             figures.push_back({name, tab});
     };
     add(QStringLiteral("decasteljau"), "2.2");
+    // Ex 2.3 with the hodograph's inset (a scope of its own, clipped) and the comb.
+    if (auto* dc = window.findChild<granota::ui::DeCasteljauTab*>()) {
+        dc->setHodographVisible(true);
+        dc->setCombVisible(true);
+    }
     add(QStringLiteral("decasteljau"), "2.3");
     add(QStringLiteral("bernstein"), nullptr);
     add(QStringLiteral("bernstein"), "2.4");

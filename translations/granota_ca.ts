@@ -919,6 +919,18 @@
     <context>
         <name>granota::ui::DeCasteljauTab</name>
         <message>
+            <source>Comb scale</source>
+            <translation>Escala de la pinta</translation>
+        </message>
+        <message>
+            <source>scale:</source>
+            <translation>escala:</translation>
+        </message>
+        <message>
+            <source>The comb's scale must be 0 (automatic) or a positive number up to %1.</source>
+            <translation>L'escala de la pinta ha de ser 0 (automàtica) o un nombre positiu fins a %1.</translation>
+        </message>
+        <message>
             <source>The arc length s(t) from c(0) to c(t), the curve's length L, and the signed curvature κ(t) = (x′y″ − y′x″)/|c′|³ (positive when the curve turns left).</source>
             <translation>La longitud d'arc s(t) de c(0) a c(t), la longitud L de la corba i la curvatura amb signe κ(t) = (x′y″ − y′x″)/|c′|³ (positiva quan la corba gira a l'esquerra).</translation>
         </message>
@@ -1249,8 +1261,8 @@
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="680" />
-            <source>Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add one on the nearest edge, Delete removes the selected one, arrows nudge it. Drag the curve itself to mold it; near the curve its closest point and t are shown.</source>
-            <translation>Punts de control P0…Pn de la corba de Bézier (Def 2.4): arrossegueu un punt, feu doble clic per afegir-ne un a l'aresta més propera, Supr elimina el seleccionat i les fletxes el desplacen. Arrossegueu la corba mateixa per modelar-la; a prop de la corba se'n mostren el punt més proper i el seu t.</translation>
+            <source>Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add one on the nearest edge, Delete removes the selected one, arrows nudge it. Drag the curve itself to mold it, or mold it at t with Alt+arrows; near the curve its closest point and t are shown.</source>
+            <translation>Punts de control P0…Pn de la corba de Bézier (Def 2.4): arrossegueu un punt, feu doble clic per afegir-ne un a l'aresta més propera, Supr elimina el seleccionat i les fletxes el desplacen. Arrossegueu la corba mateixa per modelar-la, o modeleu-la a t amb Alt+fletxes; a prop de la corba se'n mostren el punt més proper i el seu t.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="682" />
@@ -1476,6 +1488,14 @@
     </context>
     <context>
         <name>granota::ui::FitTab</name>
+        <message>
+            <source>Comb scale</source>
+            <translation>Escala de la pinta</translation>
+        </message>
+        <message>
+            <source>“curvatureCombScale” must be 0 (automatic) or a positive number up to %1.</source>
+            <translation>«curvatureCombScale» ha de ser 0 (automàtica) o un nombre positiu fins a %1.</translation>
+        </message>
         <message>
             <source>“curvatureComb” must be true or false.</source>
             <translation>«curvatureComb» ha de ser true o false.</translation>
@@ -3898,6 +3918,14 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
     <context>
         <name>granota::ui::ShortcutsHelp</name>
         <message>
+            <source>Alt+arrows (Shift: ten times more)</source>
+            <translation>Alt+fletxes (Maj: deu vegades més)</translation>
+        </message>
+        <message>
+            <source>De Casteljau: mold the curve at t, c(t) moving by the same step</source>
+            <translation>De Casteljau: modela la corba a t; c(t) es mou el mateix pas</translation>
+        </message>
+        <message>
             <source>Frog tab (P, S and R whenever the tab is shown, unless a field is being typed in)</source>
             <translation>Pestanya Granota (P, S i R sempre que es mostra la pestanya, tret que s'estigui escrivint en un camp)</translation>
         </message>
@@ -4012,8 +4040,31 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
     <context>
         <name>granota::ui::DeCasteljauCurveDrag</name>
         <message>
+            <source>Refused: a coordinate must be a finite number.</source>
+            <translation>Refusat: una coordenada ha de ser un nombre finit.</translation>
+        </message>
+        <message>
+            <source>c(t) at t = %1 moved by %2: the control points changed the least that does it.</source>
+            <translation>c(t) a t = %1 s'ha mogut %2: els punts de control han canviat el mínim que cal.</translation>
+        </message>
+        <message>
             <source>Mold the curve at t = %1</source>
             <translation>Modela la corba a t = %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::CurvatureCombScaleBox</name>
+        <message>
+            <source>automatic</source>
+            <translation>automàtica</translation>
+        </message>
+        <message>
+            <source>The comb's scale: a tooth is |κ| × this long (in the curve's units). Automatic: the 90th percentile of |κ| gives teeth 15 % of the control polygon's size, and the teeth rescale as the curve changes; a number keeps them comparable. 0 is automatic.</source>
+            <translation>L'escala de la pinta: una pua fa |κ| × aquest valor (en les unitats de la corba). Automàtica: el percentil 90 de |κ| dona pues del 15 % de la mida del polígon de control, i les pues es reescalen quan la corba canvia; un nombre les manté comparables. 0 és automàtica.</translation>
+        </message>
+        <message>
+            <source>Comb scale</source>
+            <translation>Escala de la pinta</translation>
         </message>
     </context>
 </TS>

@@ -919,6 +919,18 @@
     <context>
         <name>granota::ui::DeCasteljauTab</name>
         <message>
+            <source>Comb scale</source>
+            <translation>Comb scale</translation>
+        </message>
+        <message>
+            <source>scale:</source>
+            <translation>scale:</translation>
+        </message>
+        <message>
+            <source>The comb's scale must be 0 (automatic) or a positive number up to %1.</source>
+            <translation>The comb's scale must be 0 (automatic) or a positive number up to %1.</translation>
+        </message>
+        <message>
             <source>The arc length s(t) from c(0) to c(t), the curve's length L, and the signed curvature κ(t) = (x′y″ − y′x″)/|c′|³ (positive when the curve turns left).</source>
             <translation>The arc length s(t) from c(0) to c(t), the curve's length L, and the signed curvature κ(t) = (x′y″ − y′x″)/|c′|³ (positive when the curve turns left).</translation>
         </message>
@@ -1249,8 +1261,8 @@
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="680" />
-            <source>Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add one on the nearest edge, Delete removes the selected one, arrows nudge it. Drag the curve itself to mold it; near the curve its closest point and t are shown.</source>
-            <translation>Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add one on the nearest edge, Delete removes the selected one, arrows nudge it. Drag the curve itself to mold it; near the curve its closest point and t are shown.</translation>
+            <source>Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add one on the nearest edge, Delete removes the selected one, arrows nudge it. Drag the curve itself to mold it, or mold it at t with Alt+arrows; near the curve its closest point and t are shown.</source>
+            <translation>Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add one on the nearest edge, Delete removes the selected one, arrows nudge it. Drag the curve itself to mold it, or mold it at t with Alt+arrows; near the curve its closest point and t are shown.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="682" />
@@ -1476,6 +1488,14 @@
     </context>
     <context>
         <name>granota::ui::FitTab</name>
+        <message>
+            <source>Comb scale</source>
+            <translation>Comb scale</translation>
+        </message>
+        <message>
+            <source>“curvatureCombScale” must be 0 (automatic) or a positive number up to %1.</source>
+            <translation>“curvatureCombScale” must be 0 (automatic) or a positive number up to %1.</translation>
+        </message>
         <message>
             <source>“curvatureComb” must be true or false.</source>
             <translation>“curvatureComb” must be true or false.</translation>
@@ -3898,6 +3918,14 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
     <context>
         <name>granota::ui::ShortcutsHelp</name>
         <message>
+            <source>Alt+arrows (Shift: ten times more)</source>
+            <translation>Alt+arrows (Shift: ten times more)</translation>
+        </message>
+        <message>
+            <source>De Casteljau: mold the curve at t, c(t) moving by the same step</source>
+            <translation>De Casteljau: mold the curve at t, c(t) moving by the same step</translation>
+        </message>
+        <message>
             <source>Frog tab (P, S and R whenever the tab is shown, unless a field is being typed in)</source>
             <translation>Frog tab (P, S and R whenever the tab is shown, unless a field is being typed in)</translation>
         </message>
@@ -4012,8 +4040,31 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
     <context>
         <name>granota::ui::DeCasteljauCurveDrag</name>
         <message>
+            <source>Refused: a coordinate must be a finite number.</source>
+            <translation>Refused: a coordinate must be a finite number.</translation>
+        </message>
+        <message>
+            <source>c(t) at t = %1 moved by %2: the control points changed the least that does it.</source>
+            <translation>c(t) at t = %1 moved by %2: the control points changed the least that does it.</translation>
+        </message>
+        <message>
             <source>Mold the curve at t = %1</source>
             <translation>Mold the curve at t = %1</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::CurvatureCombScaleBox</name>
+        <message>
+            <source>automatic</source>
+            <translation>automatic</translation>
+        </message>
+        <message>
+            <source>The comb's scale: a tooth is |κ| × this long (in the curve's units). Automatic: the 90th percentile of |κ| gives teeth 15 % of the control polygon's size, and the teeth rescale as the curve changes; a number keeps them comparable. 0 is automatic.</source>
+            <translation>The comb's scale: a tooth is |κ| × this long (in the curve's units). Automatic: the 90th percentile of |κ| gives teeth 15 % of the control polygon's size, and the teeth rescale as the curve changes; a number keeps them comparable. 0 is automatic.</translation>
+        </message>
+        <message>
+            <source>Comb scale</source>
+            <translation>Comb scale</translation>
         </message>
     </context>
 </TS>

@@ -9,6 +9,7 @@
 #include <QWheelEvent>
 
 #include <cmath>
+#include <initializer_list>
 
 namespace granota::ui {
 
@@ -44,6 +45,7 @@ CurveCanvas::CurveCanvas(QWidget* parent) : QWidget(parent)
 }
 
 void CurveCanvas::addLayer(Layer layer) { m_layers.push_back(std::move(layer)); }
+void CurveCanvas::addOverlay(Layer overlay) { m_overlays.push_back(std::move(overlay)); }
 
 void CurveCanvas::setStyleScale(double scale)
 {
@@ -142,11 +144,12 @@ void CurveCanvas::render(QPainter& painter, const QRectF& target)
     }
     if (m_gridVisible)
         drawGrid(painter, view);
-    for (const auto& layer : m_layers) {
-        painter.save();
-        layer(painter, view, m_style);
-        painter.restore();
-    }
+    for (const auto* layers : {&m_layers, &m_overlays})
+        for (const auto& layer : *layers) {
+            painter.save();
+            layer(painter, view, m_style);
+            painter.restore();
+        }
     painter.restore();
 }
 

@@ -26,6 +26,9 @@ public:
 
     /// Layers are drawn in the order added, after the grid.
     void addLayer(Layer layer);
+    /// Overlays are drawn after every layer, in the order added: a key or an inset stays clear
+    /// of the handles and labels that the point editor's layer draws last.
+    void addOverlay(Layer overlay);
 
     ViewTransform& view() { return m_view; }
     const ViewTransform& view() const { return m_view; }
@@ -78,6 +81,7 @@ private:
     ViewTransform m_view;
     CanvasStyle m_style;
     std::vector<Layer> m_layers;
+    std::vector<Layer> m_overlays;
     QRectF m_content{-1, -1, 2, 2};
     QRectF m_dataExtent{-1, -1, 2, 2};
     bool m_userMoved = false; ///< once the user pans or zooms, new content no longer refits

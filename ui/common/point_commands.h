@@ -19,6 +19,10 @@ class PointsCommand : public QUndoCommand {
 public:
     /// `nudged` ≥ 0: the step is an arrow-key nudge of that point, merged with the next nudge
     /// of the same point.
+    /// `nudged` of a keyboard mold of the curve (the De Casteljau tab's Alt+arrows): no control
+    /// point has this index, so its run merges only with itself.
+    static constexpr int kCurveNudge = 1 << 20;
+
     PointsCommand(PointEditor* editor, std::vector<Point> before, std::vector<Point> after, const QString& text,
                   int nudged = -1);
     void undo() override;

@@ -1,6 +1,7 @@
 #include "ui/decasteljau/decasteljau_curve_drag.h"
 
 #include "core/base/number_format.h"
+#include "core/curves/bezier/de_casteljau.h"
 #include "core/curves/bezier/molding.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/number_text.h"
@@ -8,6 +9,7 @@
 #include "ui/common/point_editor.h"
 
 #include <QEvent>
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QUndoStack>
@@ -81,6 +83,29 @@ void DeCasteljauCurveDrag::finishMold()
         m_editor->applyPoints(now); // the tab refreshes what it deferred while molding
 }
 
+void DeCasteljauCurveDrag::moldByKey(int dx, int dy, bool tenTimes)
+{
+    const auto& points = m_editor->points();
+    if (points.empty() || !m_parameter || m_molding)
+        return;
+    const double t = m_parameter();
+    const double step = toDouble(m_editor->nudgeStep(tenTimes));
+    const Point target = deCasteljauPoint(points, t) + step * Point(dx, dy);
+    const auto molded = moldCurve(points, t, target);
+    for (const Point& q : molded)
+        if (!isFinite(q)) {
+            emit message(tr("Refused: a coordinate must be a finite number."));
+            return;
+        }
+    if (molded == points)
+        return; // too far from the origin for this step to change the doubles
+    // Merged with the next key of the run, as the nudges of a control point are.
+    m_undo->push(new PointsCommand(m_editor, points, molded, tr("Mold the curve at t = %1").arg(displaySignificant(t, 4)),
+                                   PointsCommand::kCurveNudge));
+    emit message(tr("c(t) at t = %1 moved by %2: the control points changed the least that does it.")
+                     .arg(displaySignificant(t, 4), displayPair(displaySignificant(step * dx, 6), displaySignificant(step * dy, 6))));
+}
+
 bool DeCasteljauCurveDrag::eventFilter(QObject* watched, QEvent* event)
 {
     if (watched != m_canvas)
@@ -133,6 +158,19 @@ bool DeCasteljauCurveDrag::eventFilter(QObject* watched, QEvent* event)
         finishMold();
         updateHover(e->position());
         return true;
+    }
+    case QEvent::KeyPress: {
+        auto* e = static_cast<QKeyEvent*>(event);
+        if (!(e->modifiers() & Qt::AltModifier))
+            return false; // plain arrows: the editor nudges the selected control point
+        const bool tenTimes = e->modifiers() & Qt::ShiftModifier;
+        switch (e->key()) {
+        case Qt::Key_Left: moldByKey(-1, 0, tenTimes); return true;
+        case Qt::Key_Right: moldByKey(1, 0, tenTimes); return true;
+        case Qt::Key_Up: moldByKey(0, 1, tenTimes); return true;
+        case Qt::Key_Down: moldByKey(0, -1, tenTimes); return true;
+        default: return false;
+        }
     }
     case QEvent::Leave:
         if (!m_molding && m_hover) {

@@ -11,6 +11,7 @@
 #include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
 #include "ui/common/canvas_legend.h"
+#include "ui/common/curvature_comb_scale_box.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/decasteljau/decasteljau_construction_drawing.h"
 #include "ui/decasteljau/decasteljau_curve_drag.h"
@@ -40,6 +41,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <initializer_list>
 #include <cmath>
 #include <optional>
 
@@ -158,6 +160,25 @@ void drawArrow(QPainter& p, const QPointF& from, const QPointF& to, double head)
     p.drawPolygon(tip);
 }
 
+/// Text for TeX: its special characters written as TeX reads them literally.
+QString texText(const QString& text)
+{
+    QString out;
+    for (const QChar c : text) {
+        if (c == QLatin1Char('\\'))
+            out += QStringLiteral("\\textbackslash{}");
+        else if (c == QLatin1Char('~'))
+            out += QStringLiteral("\\textasciitilde{}");
+        else if (c == QLatin1Char('^'))
+            out += QStringLiteral("\\textasciicircum{}");
+        else if (QStringLiteral("&%$#_{}").contains(c))
+            out += QLatin1Char('\\') + QString(c);
+        else
+            out += c;
+    }
+    return out;
+}
+
 /// The halves of the split at t: [0, t] and [t, 1].
 const QColor kSplitColours[2] = {QColor(0xc0, 0x39, 0x8b), QColor(0x1b, 0x9e, 0x77)};
 /// At most this many lines of levels (or of step curves) in the legend; the rest is one line.
@@ -220,6 +241,9 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent)
     m_normal = new QCheckBox(this);
     m_osculating = new QCheckBox(this);
     m_combBox = new QCheckBox(this);
+    m_combScaleLabel = new QLabel(this);
+    m_combScaleBox = new CurvatureCombScaleBox(this);
+    m_combScaleLabel->setBuddy(m_combScaleBox);
     m_box = new QCheckBox(this);
     m_featuresBox = new QCheckBox(this);
     m_hodograph = new QCheckBox(this);
@@ -269,7 +293,14 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent)
     auto* geometryLayout = new QVBoxLayout(geometry);
     geometryLayout->setContentsMargins(0, 0, 0, 0);
     auto* overlays = new DeCasteljauFlowLayout(nullptr, 10, 2);
-    for (QCheckBox* box : {m_normal, m_osculating, m_combBox, m_box, m_featuresBox, m_hodograph})
+    // The comb's scale beside its toggle.
+    auto* comb = new QWidget(this);
+    auto* combLayout = new QHBoxLayout(comb);
+    combLayout->setContentsMargins(0, 0, 0, 0);
+    combLayout->addWidget(m_combBox);
+    combLayout->addWidget(m_combScaleLabel);
+    combLayout->addWidget(m_combScaleBox);
+    for (QWidget* box : std::initializer_list<QWidget*>{m_normal, m_osculating, comb, m_box, m_featuresBox, m_hodograph})
         overlays->addWidget(box);
     geometryLayout->addLayout(overlays);
     geometryLayout->addWidget(m_readout);
@@ -289,10 +320,13 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent)
     connect(m_editor, &PointEditor::pointsChanged, this, &DeCasteljauTab::pointsChanged);
     connect(m_editor, &PointEditor::message, this, &TabPage::statusMessage);
     connect(m_table, &PointTable::message, this, &TabPage::statusMessage);
+    connect(m_curveDrag, &DeCasteljauCurveDrag::message, this, &TabPage::statusMessage);
+    m_curveDrag->setParameterSource([this] { return m_t; });
     connect(m_parameter, &DeCasteljauParameterControl::valueChanged, this, &DeCasteljauTab::userMovedT);
     connect(m_play, &QToolButton::toggled, this, &DeCasteljauTab::setPlaying);
     connect(m_timer, &QTimer::timeout, this, &DeCasteljauTab::advanceAnimation);
     connect(m_samplesBox, &QSpinBox::valueChanged, this, &DeCasteljauTab::userSetSamples);
+    connect(m_combScaleBox, &QDoubleSpinBox::valueChanged, this, &DeCasteljauTab::userSetCombScale);
     connect(m_raise, &QPushButton::clicked, this, &DeCasteljauTab::raiseDegree);
     connect(m_construction, &QCheckBox::toggled, this,
             [this](bool on) { userToggled(m_showConstruction, m_construction, on, tr("Construction")); });
@@ -518,14 +552,15 @@ void DeCasteljauTab::buildLayers()
         p.setFont(f);
         p.drawText(s + QPointF(r + 4 * style.scale, r + 12 * style.scale), QStringLiteral("c(t)"));
     });
-    // The hodograph c′ in an inset of its own, with its own construction at t.
-    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+    // Over everything, the handles and their labels too: the hodograph c′ in an inset of its
+    // own, with its own construction at t, and the key to the colours (which level, which step
+    // curve, which half) in the corner where it covers least.
+    m_canvas->addOverlay([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
         if (m_showHodograph)
             drawHodographInset(p, view, style);
     });
-    // The key to the colours: which level, which step curve, which half.
-    m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
-        drawCanvasLegend(p, view, style, legend());
+    m_canvas->addOverlay([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
+        drawCanvasLegend(p, view, style, legend(), legendBox(view, style));
     });
 }
 
@@ -581,6 +616,43 @@ CanvasLegend DeCasteljauTab::legend() const
                                   tr("○ inflections: %1 · × cusps: %2").arg(m_features.inflections.size()).arg(m_features.cusps.size())});
     }
     return legend;
+}
+
+QRectF DeCasteljauTab::legendRect(const ViewTransform& view, const CanvasStyle& style) const
+{
+    return legendBox(view, style).box;
+}
+
+CanvasLegendBox DeCasteljauTab::legendBox(const ViewTransform& view, const CanvasStyle& style) const
+{
+    CanvasLegendObstacles avoid;
+    for (const Point& q : m_curve)
+        avoid.points.push_back(view.toScreen(q));
+    if (m_showConstruction)
+        for (const auto& level : m_levels.levels)
+            for (const Point& q : level)
+                avoid.points.push_back(view.toScreen(q));
+    // The handles and their labels (as the point editor draws them), c(t) and its label, the inset.
+    const QFontMetricsF fm(style.labelFont());
+    const double r = style.handleRadius() * 1.3;
+    const auto& points = m_editor->points();
+    const auto marked = [&](const Point& q, const QString& label) {
+        const QPointF s = view.toScreen(q);
+        const QRectF handle(s - QPointF(r, r), QSizeF(2 * r, 2 * r));
+        const QRectF text(s.x() + r + 3 * style.scale, s.y() - r - fm.ascent(), fm.horizontalAdvance(label), fm.height());
+        avoid.keepClear.push_back(handle.united(text));
+    };
+    for (std::size_t i = 0; i < points.size(); ++i)
+        marked(points[i], m_editor->labelPrefix() + QString::number(i));
+    if (!m_levels.levels.empty()) {
+        // c(t)'s label is below right of its dot.
+        const QPointF s = view.toScreen(m_levels.point());
+        avoid.keepClear.push_back(QRectF(s - QPointF(r, r), QSizeF(2 * r + 4 * style.scale + fm.horizontalAdvance(QStringLiteral("c(t)")),
+                                                                 2 * r + 12 * style.scale)));
+    }
+    if (const QRectF inset = hodographInset(view.viewport(), style); !inset.isEmpty())
+        avoid.keepClear.push_back(inset);
+    return canvasLegendRect(view, style, legend(), avoid);
 }
 
 QRectF DeCasteljauTab::hodographInset(const QRectF& viewport, const CanvasStyle& style) const
@@ -678,6 +750,8 @@ void DeCasteljauTab::updateGeometry()
     bool finite = true;
     for (const Point& q : points)
         finite = finite && isFinite(q);
+    m_combScaleBox->setEnabled(m_showComb);
+    m_combScaleLabel->setEnabled(m_showComb);
     m_features = CurveFeatures{};
     m_comb = CurvatureComb{};
     m_hodoCurve.clear();
@@ -687,8 +761,11 @@ void DeCasteljauTab::updateGeometry()
         return;
     if (m_showBox || m_showFeatures)
         m_features = curveFeatures(points);
-    if (m_showComb)
-        m_comb = curvatureComb(points, kCombSamples);
+    if (m_showComb) {
+        m_comb = curvatureComb(points, kCombSamples, m_combScale);
+        if (m_combScale == 0)
+            m_combScaleBox->setAutomaticScale(m_comb.scale);
+    }
     if (m_showHodograph)
         m_hodoCurve = sampleBezier(hodograph(points), kHodographSamples + 1);
     m_arc.emplace(points);
@@ -859,6 +936,31 @@ void DeCasteljauTab::userSetSamples(int part)
     constexpr int kSamplesMergeId = 0x44430001; // "DC": a spin box held down is one step
     m_undo->push(new ValueCommand<int>(apply, before, m_samples, tr("Samples: %1").arg(m_samples), kSamplesMergeId,
                                        {true, true}));
+    emit documentChanged();
+}
+
+void DeCasteljauTab::setCombScale(double scale)
+{
+    scale = std::isfinite(scale) ? std::clamp(scale, 0.0, CurvatureCombScaleBox::kMaxScale) : 0.0;
+    m_combScaleBox->setScale(scale);
+    if (scale == m_combScale)
+        return;
+    m_combScale = scale;
+    pointsChanged();
+}
+
+void DeCasteljauTab::userSetCombScale(double scale)
+{
+    const double before = m_combScale;
+    setCombScale(scale);
+    if (m_combScale == before)
+        return;
+    auto apply = [this](double v) {
+        setCombScale(v);
+        emit documentChanged();
+    };
+    constexpr int kCombScaleMergeId = 0x44430002; // "DC": a spin box held down is one step
+    m_undo->push(new ValueCommand<double>(apply, before, m_combScale, tr("Comb scale"), kCombScaleMergeId, {true, true}));
     emit documentChanged();
 }
 
@@ -1137,6 +1239,9 @@ void DeCasteljauTab::retranslate()
     m_combBox->setText(tr("Curvature comb"));
     m_combBox->setToolTip(tr("Teeth along the normal, as long as |κ| times the scale given in the key, and the line "
                              "through their tips: where the comb jumps, so does the curvature. No tooth where κ is undefined."));
+    m_combScaleLabel->setText(tr("scale:"));
+    m_combScaleBox->retranslate();
+    m_combScaleLabel->setToolTip(m_combScaleBox->toolTip());
     m_box->setText(tr("Bounding box"));
     m_box->setToolTip(tr("The tight axis-aligned box of the curve (not of its control points), from the extrema of x(t) "
                          "and y(t): the t where x′ = 0 or y′ = 0, marked ◆."));
@@ -1157,7 +1262,7 @@ void DeCasteljauTab::retranslate()
                           "exact tables appear."));
     m_canvas->setToolTip(tr("Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add "
                             "one on the nearest edge, Delete removes the selected one, arrows nudge it. Drag the curve "
-                            "itself to mold it; near the curve its closest point and t are shown."));
+                            "itself to mold it, or mold it at t with Alt+arrows; near the curve its closest point and t are shown."));
     m_exact->setToolTip(tr("De Casteljau's triangle P_i^r(t) at the current t and, for rational points, every level "
                            "in powers of t, as in Ex 2.2 and Ex 2.3."));
     m_table->retranslate();
@@ -1178,6 +1283,7 @@ void DeCasteljauTab::writeSettings(QJsonObject& state) const
     state.insert(QStringLiteral("normal"), m_showNormal);
     state.insert(QStringLiteral("osculatingCircle"), m_showOsculating);
     state.insert(QStringLiteral("curvatureComb"), m_showComb);
+    state.insert(QStringLiteral("curvatureCombScale"), m_combScale);
     state.insert(QStringLiteral("boundingBox"), m_showBox);
     state.insert(QStringLiteral("inflections"), m_showFeatures);
     state.insert(QStringLiteral("hodograph"), m_showHodograph);
@@ -1231,6 +1337,13 @@ bool DeCasteljauTab::loadSettings(const QJsonObject& state, const std::vector<Po
     const auto speed = optionalBool(state, "constantSpeed", &ok);
     if (!ok)
         return fail(tr("A De Casteljau display option is not true or false."));
+    double combScale = 0; // older documents: automatic
+    if (const QJsonValue v = state.value(QStringLiteral("curvatureCombScale")); !v.isUndefined()) {
+        if (!v.isDouble() || !std::isfinite(v.toDouble()) || v.toDouble() < 0 || v.toDouble() > CurvatureCombScaleBox::kMaxScale)
+            return fail(tr("The comb's scale must be 0 (automatic) or a positive number up to %1.")
+                            .arg(displayNumber(CurvatureCombScaleBox::kMaxScale)));
+        combScale = v.toDouble();
+    }
 
     m_playStartT = m_t; // a document replaces t: stopping the animation is no step of its own
     setPlaying(false);
@@ -1260,6 +1373,8 @@ bool DeCasteljauTab::loadSettings(const QJsonObject& state, const std::vector<Po
         m_snap->setChecked(snap.value_or(false));
         m_editor->setSnapEnabled(snap.value_or(false));
     }
+    m_combScale = combScale;
+    m_combScaleBox->setScale(combScale);
     m_samples = samples;
     {
         const QSignalBlocker block(m_samplesBox);
@@ -1372,6 +1487,27 @@ void DeCasteljauTab::drawTikz(TikzWriter& w) const
         w.point(points[i], style.handle, QStringLiteral("P_{%1}").arg(i));
     if (!m_levels.levels.empty())
         w.point(m_levels.point(), style.curve, QStringLiteral("c(t)"));
+    if (m_showHodograph && !m_hodoLevels.levels.empty() && fitsInDoubles(m_hodoLevels)) {
+        // The inset of the canvas: c′ with its control polygon, its curve, its construction at t
+        // and c′(t) as the vector from the origin.
+        const auto& H = m_hodoLevels.levels.front();
+        const QString title = texText(tr("hodograph c′")).replace(QStringLiteral("c′"), QStringLiteral("$c'$"));
+        w.beginInset(title);
+        QStringList coordinates;
+        for (const Point& q : H)
+            coordinates << QStringLiteral("(%1, %2)").arg(QString::fromStdString(formatDouble(q.x)), QString::fromStdString(formatDouble(q.y)));
+        w.comment(QStringLiteral("hodograph: control points n (P_{i+1} - P_i) = %1").arg(coordinates.join(QStringLiteral(", "))));
+        w.polyline(H, style.polygon, 0.4, true);
+        w.polyline(m_hodoCurve, style.curve, 0.8);
+        if (m_showConstruction)
+            for (int r = 1; r < m_hodoLevels.degree(); ++r)
+                w.polyline(m_hodoLevels.levels[static_cast<std::size_t>(r)], CanvasStyle::series(r), 0.4);
+        for (const Point& q : H)
+            w.point(q, style.handle);
+        w.polyline({{0, 0}, m_hodoLevels.point()}, kTangentColour, 0.8);
+        w.point(m_hodoLevels.point(), style.curve, QStringLiteral("c'(t)"));
+        w.endInset();
+    }
 }
 
 void DeCasteljauTab::presentationChanged(bool on)

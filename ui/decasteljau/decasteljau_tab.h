@@ -34,6 +34,7 @@ class QToolButton;
 
 namespace granota::ui {
 
+class CurvatureCombScaleBox;
 class DeCasteljauCurveDrag;
 class DeCasteljauParameterControl;
 
@@ -82,6 +83,10 @@ public:
     void setInflectionsVisible(bool on);
     void setHodographVisible(bool on);
     void setConstantSpeed(bool on);
+    /// The comb's scale (curvature_comb_scale_box.h): 0 is automatic, the default.
+    double combScale() const { return m_combScale; }
+    void setCombScale(double scale);
+    CurvatureCombScaleBox* combScaleBox() const { return m_combScaleBox; }
 
     /// κ, the normal and the osculating circle at the current t.
     const CurvatureAt& curvatureAtT() const { return m_curvature; }
@@ -116,6 +121,11 @@ public:
     const std::vector<Point>& curve() const { return m_curve; }
     /// The key in the canvas's corner: the levels', step curves' and halves' colours.
     CanvasLegend legend() const;
+    /// Where the key goes in a view: the corner that covers no handle, label, c(t) or inset if
+    /// one can, and the fewest samples of the curve and points of the construction.
+    QRectF legendRect(const ViewTransform& view, const CanvasStyle& style) const;
+    /// The same, and whether the key is compact (a small canvas).
+    CanvasLegendBox legendBox(const ViewTransform& view, const CanvasStyle& style) const;
     /// The side of the squares that mark the halves' control points (over the level's dots).
     static double splitSquareSide(const CanvasStyle& style);
     /// The warning shown for high degrees; empty when there is none.
@@ -164,6 +174,7 @@ private:
     void userMovedT(double t);
     void userToggled(bool& flag, QCheckBox* box, bool on, const QString& undoText);
     void userSetSamples(int part);
+    void userSetCombScale(double scale);
     void pushT(double before, double after, int mergeId, const QString& undoText);
 
     QSplitter* m_mainSplitter = nullptr;
@@ -179,6 +190,8 @@ private:
     QCheckBox* m_normal = nullptr;
     QCheckBox* m_osculating = nullptr;
     QCheckBox* m_combBox = nullptr;
+    QLabel* m_combScaleLabel = nullptr;
+    CurvatureCombScaleBox* m_combScaleBox = nullptr;
     QCheckBox* m_box = nullptr;
     QCheckBox* m_featuresBox = nullptr;
     QCheckBox* m_hodograph = nullptr;
@@ -208,6 +221,7 @@ private:
     bool m_showFeatures = false;
     bool m_showHodograph = false;
     bool m_constantSpeed = false;
+    double m_combScale = 0; ///< 0: automatic
 
     // Derived from the points (and t): recomputed on change, drawn from here.
     std::vector<Point> m_curve;

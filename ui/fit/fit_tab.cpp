@@ -1,6 +1,7 @@
 #include "ui/fit/fit_tab.h"
 #include "core/base/number_format.h"
 #include "ui/common/canvas_legend.h"
+#include "ui/common/curvature_comb_scale_box.h"
 #include "ui/common/number_text.h"
 
 #include "core/curves/fitting/fit_warning.h"
@@ -204,10 +205,13 @@ void FitTab::buildUi()
     m_showMatrices = new QCheckBox(m_settingsGroup);
     buttons->addWidget(m_import);
     buttons->addWidget(m_showMatrices);
-    m_combBox = new QCheckBox(m_settingsGroup);
-    buttons->addWidget(m_combBox);
     buttons->addStretch(1);
     form->addRow(buttons);
+    // The comb and its scale, as the correction and its count: a row of their own.
+    m_combBox = new QCheckBox(m_settingsGroup);
+    m_combScaleBox = new CurvatureCombScaleBox(m_settingsGroup);
+    m_combScaleBox->setEnabled(false);
+    form->addRow(m_combBox, m_combScaleBox);
 
     // Readouts.
     m_readoutGroup = new QGroupBox(this);
@@ -359,13 +363,32 @@ void FitTab::buildUi()
         };
         m_undo->push(new ValueCommand<bool>(apply, !on, on, tr("Curvature comb"), -1, {false, /*appliedAlready=*/true}));
     });
+    connect(m_combScaleBox, &QDoubleSpinBox::valueChanged, this, [this](double scale) {
+        const double before = m_combScale;
+        m_combScale = scale;
+        updateComb();
+        emit documentChanged();
+        if (m_loading || scale == before)
+            return;
+        auto apply = [this](double v) {
+            m_combScale = v;
+            m_combScaleBox->setScale(v);
+            updateComb();
+            emit documentChanged();
+        };
+        constexpr int kCombScaleMergeId = 0x46540001; // "FT": a spin box held down is one step
+        m_undo->push(new ValueCommand<double>(apply, before, scale, tr("Comb scale"), kCombScaleMergeId, {true, true}));
+    });
     connect(m_import, &QPushButton::clicked, this, &FitTab::importDialog);
 }
 
 void FitTab::updateComb()
 {
     constexpr int kCombSamples = 160;
-    m_comb = m_combBox->isChecked() && m_fit ? curvatureComb(m_fit->controlPoints, kCombSamples) : CurvatureComb{};
+    m_comb = m_combBox->isChecked() && m_fit ? curvatureComb(m_fit->controlPoints, kCombSamples, m_combScale) : CurvatureComb{};
+    m_combScaleBox->setEnabled(m_combBox->isChecked());
+    if (m_combScale == 0 && !m_comb.empty())
+        m_combScaleBox->setAutomaticScale(m_comb.scale);
     m_canvas->update();
 }
 
@@ -460,6 +483,7 @@ void FitTab::retranslate()
     m_combBox->setText(tr("Curvature com&b"));
     m_combBox->setToolTip(tr("The curvature comb of the fitted curve (beyond the thesis): teeth along the normal as long "
                              "as |κ| times the scale in the key, and the line through their tips; where the comb wiggles, so does the fit."));
+    m_combScaleBox->retranslate();
     m_showMatrices->setToolTip(tr("Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Note 2.2), in fractions "
                                   "when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8."));
     m_readoutGroup->setTitle(tr("Quality of the fit (Prop 2.2)"));
@@ -889,6 +913,7 @@ void FitTab::writeSettings(QJsonObject& state) const
     state.insert(QStringLiteral("iterations"), m_settings.iterations);
     state.insert(QStringLiteral("showMatrices"), m_showMatrices->isChecked());
     state.insert(QStringLiteral("curvatureComb"), m_combBox->isChecked());
+    state.insert(QStringLiteral("curvatureCombScale"), m_combScale);
 }
 
 PointListMessages FitTab::pointMessages() const
@@ -959,6 +984,14 @@ bool FitTab::loadSettings(const QJsonObject& state, const std::vector<Point>& po
         error = tr("“curvatureComb” must be true or false.");
         return false;
     }
+    const QJsonValue combScale = state.value(QStringLiteral("curvatureCombScale")); // older documents: automatic
+    if (!combScale.isUndefined()
+        && (!combScale.isDouble() || !std::isfinite(combScale.toDouble()) || combScale.toDouble() < 0
+            || combScale.toDouble() > CurvatureCombScaleBox::kMaxScale)) {
+        error = tr("“curvatureCombScale” must be 0 (automatic) or a positive number up to %1.")
+                    .arg(displayNumber(CurvatureCombScaleBox::kMaxScale));
+        return false;
+    }
 
     // Apply without an undo step: opening a document starts a new history (the main window
     // clears the stacks), and a refused document must leave the user's history as it was.
@@ -966,7 +999,10 @@ bool FitTab::loadSettings(const QJsonObject& state, const std::vector<Point>& po
     m_settings = s;
     m_editor->applyPoints(points); // refits once, with the new settings
     m_showMatrices->setChecked(matrices.toBool(false));
+    m_combScale = combScale.toDouble(0.0);
+    m_combScaleBox->setScale(m_combScale);
     m_combBox->setChecked(comb.toBool(false));
+    updateComb(); // the scale, also when the toggle did not change
     m_loading = false;
     return true;
 }

@@ -28,6 +28,8 @@ class QSplitter;
 
 namespace granota::ui {
 
+class CurvatureCombScaleBox;
+
 class FitTab : public CurveTab {
     Q_OBJECT
 public:
@@ -64,6 +66,8 @@ public:
     QCheckBox* showMatricesBox() const { return m_showMatrices; }
     /// The curvature comb of the fitted curve (ui/common/curvature_comb.h), on demand.
     QCheckBox* combBox() const { return m_combBox; }
+    /// The comb's scale beside it (curvature_comb_scale_box.h: 0 is automatic); undoable, in the document.
+    CurvatureCombScaleBox* combScaleBox() const { return m_combScaleBox; }
     const CurvatureComb& comb() const { return m_comb; }
 
     /// The table lists the points up to this many; beyond, a note says how many there are.
@@ -125,6 +129,8 @@ private:
     QPushButton* m_import = nullptr;
     QCheckBox* m_showMatrices = nullptr;
     QCheckBox* m_combBox = nullptr;
+    CurvatureCombScaleBox* m_combScaleBox = nullptr;
+    double m_combScale = 0; ///< 0: automatic
     CurvatureComb m_comb; ///< of the fitted curve, while the comb is shown
     void updateComb();
 

@@ -33,6 +33,8 @@ QString ShortcutsHelp::html(const QList<QAction*>& actions)
     const QString curves = row(tr("Tab, Shift+Tab"), tr("Move the focus into and out of the canvas, to the next or previous control"))
                            + row(tr("] and ["), tr("Select the next or the previous point"))
                            + row(tr("Arrows (Shift: ten times more)"), tr("Nudge the selected point by a round step"))
+                           + row(tr("Alt+arrows (Shift: ten times more)"),
+                                 tr("De Casteljau: mold the curve at t, c(t) moving by the same step"))
                            + row(tr("Delete, Backspace"), tr("Remove the selected point"));
     const QString frog = row(tr("P"), tr("Pause and run"))
                          + row(tr("S or ."), tr("One step (pausing first)"))

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 namespace granota::ui {
@@ -23,6 +24,8 @@ constexpr double kTickPadCm = 0.35;     // the y tick, the label's padding and a
 constexpr double kTickHalfHeightCm = 0.2; // half a y tick label, above the top tick
 constexpr double kMinAreaCm = 0.5;      // the smallest drawing area whatever the margins
 constexpr int kMaxTicks = 100;
+constexpr double kInsetPadCm = 0.1;     // inside the inset's frame
+constexpr double kInsetTitleCm = 0.3;   // its title's line (scriptsize)
 /// Below this half-span (in model units) the scale, cm per unit, would overflow a double.
 constexpr double kMinHalfSpan = 1e-290;
 
@@ -87,11 +90,13 @@ void TikzWriter::polyline(const std::vector<Point>& points, const QColor& color,
     if (points.size() < 2)
         return;
     m_items.push_back({Item::Line, points, color, widthPt, dashed, closed, {}});
+    m_items.back().inset = m_inInset;
 }
 
 void TikzWriter::point(Point p, const QColor& color, const QString& label)
 {
     m_items.push_back({Item::Dot, {p}, color, 1.0, false, false, label});
+    m_items.back().inset = m_inInset;
 }
 
 void TikzWriter::comment(const QString& text)
@@ -99,14 +104,28 @@ void TikzWriter::comment(const QString& text)
     QString line = text;
     line.replace(QLatin1Char('\n'), QLatin1Char(' ')).replace(QLatin1Char('\r'), QLatin1Char(' '));
     m_items.push_back({Item::Comment, {}, {}, 0, false, false, line});
+    m_items.back().inset = m_inInset;
 }
+
+void TikzWriter::beginInset(const QString& title)
+{
+    m_inInset = true;
+    m_insetTitle = title;
+}
+
+void TikzWriter::endInset() { m_inInset = false; }
 
 QString TikzWriter::str() const
 {
     // What the points span, and whether any dot has a label.
     Interval x{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()}, y = x;
     bool labels = false;
+    bool insetShown = false;
     for (const Item& item : m_items) {
+        if (item.inset) { // the inset has a scale of its own
+            insetShown = insetShown || item.kind != Item::Comment;
+            continue;
+        }
         labels = labels || (item.kind == Item::Dot && !item.text.isEmpty());
         for (const Point& p : item.points)
             if (isFinite(p)) {
@@ -180,33 +199,77 @@ QString TikzWriter::str() const
             body += QStringLiteral("  \\draw[black, line width=0.5pt] %1 -- ++(-2pt,0) node[left, inner sep=1pt] {%2};\n")
                         .arg(coord(ax, v), tickLabel(v, step));
     }
-    const auto at = [&](const Point& p) { return coord(p.x, p.y); };
-    for (const Item& item : m_items) {
-        switch (item.kind) {
-        case Item::Comment:
-            body += QStringLiteral("  % %1\n").arg(item.text);
-            break;
-        case Item::Line: {
-            body += QStringLiteral("  \\draw[%1, line width=%2pt%3] ")
-                        .arg(colourName(item.color), QString::fromStdString(formatSignificant(item.width, 3)),
-                             item.dashed ? QStringLiteral(", dashed") : QString());
-            QStringList parts;
-            for (const Point& p : item.points)
-                if (isFinite(p))
-                    parts << at(p);
-            body += parts.join(QStringLiteral(" -- "));
-            body += item.closed ? QStringLiteral(" -- cycle;\n") : QStringLiteral(";\n");
-            break;
-        }
-        case Item::Dot:
-            if (!isFinite(item.points[0]))
+    // The items of the main picture (inset false) or of the inset, through `at`.
+    const auto write = [&](bool inset, const std::function<QString(const Point&)>& at) {
+        const QString dotRadius = inset ? QStringLiteral("1.2pt") : QStringLiteral("2pt");
+        for (const Item& item : m_items) {
+            if (item.inset != inset)
+                continue;
+            switch (item.kind) {
+            case Item::Comment:
+                body += QStringLiteral("  % %1\n").arg(item.text);
                 break;
-            body += QStringLiteral("  \\fill[%1] %2 circle[radius=2pt]").arg(colourName(item.color), at(item.points[0]));
-            if (!item.text.isEmpty())
-                body += QStringLiteral(" node[above right] {$%1$}").arg(item.text);
-            body += QStringLiteral(";\n");
-            break;
+            case Item::Line: {
+                body += QStringLiteral("  \\draw[%1, line width=%2pt%3] ")
+                            .arg(colourName(item.color), QString::fromStdString(formatSignificant(item.width, 3)),
+                                 item.dashed ? QStringLiteral(", dashed") : QString());
+                QStringList parts;
+                for (const Point& p : item.points)
+                    if (isFinite(p))
+                        parts << at(p);
+                body += parts.join(QStringLiteral(" -- "));
+                body += item.closed ? QStringLiteral(" -- cycle;\n") : QStringLiteral(";\n");
+                break;
+            }
+            case Item::Dot:
+                if (!isFinite(item.points[0]))
+                    break;
+                body += QStringLiteral("  \\fill[%1] %2 circle[radius=%3]").arg(colourName(item.color), at(item.points[0]), dotRadius);
+                if (!item.text.isEmpty())
+                    body += QStringLiteral(" node[above right%1] {$%2$}")
+                                .arg(inset ? QStringLiteral(", font=\\scriptsize, inner sep=1pt") : QString(), item.text);
+                body += QStringLiteral(";\n");
+                break;
+            }
         }
+    };
+    write(false, [&](const Point& p) { return coord(p.x, p.y); });
+    if (insetShown) {
+        // The inset, like the canvas's: in the lower right corner of the drawing, kInsetShare
+        // of its width wide and at most three quarters of that tall, on white, framed.
+        const double W = cx(x.hi), H = cy(y.hi);
+        const double w = kInsetShare * W, h = std::min(0.75 * w, std::max(0.32 * H, 0.5 * w));
+        const double left = W - w, right = W, bottom = 0, top = h;
+        const auto c = [](double px, double py) { return QStringLiteral("(%1,%2)").arg(cm(px), cm(py)); };
+        body += QStringLiteral("  % inset: %1\n").arg(m_insetTitle);
+        body += QStringLiteral("  \\filldraw[fill=white, draw=black!30, line width=0.4pt, rounded corners=1.5pt] %1 rectangle %2;\n")
+                    .arg(c(left, bottom), c(right, top));
+        body += QStringLiteral("  \\node[anchor=north west, inner sep=1pt, font=\\scriptsize] at %1 {%2};\n")
+                    .arg(c(left + kInsetPadCm, top - kInsetPadCm / 2), m_insetTitle);
+        // Its own scale, one for both axes, fitting its items and the origin with a margin of 5 %.
+        Interval ix{0, 0}, iy{0, 0};
+        for (const Item& item : m_items)
+            if (item.inset)
+                for (const Point& p : item.points)
+                    if (isFinite(p)) {
+                        ix = {std::min(ix.lo, p.x), std::max(ix.hi, p.x)};
+                        iy = {std::min(iy.lo, p.y), std::max(iy.hi, p.y)};
+                    }
+        const double span = std::max({ix.half(), iy.half(), kMinHalfSpan});
+        const double areaL = left + kInsetPadCm, areaR = right - kInsetPadCm;
+        const double areaB = bottom + kInsetPadCm, areaT = top - kInsetPadCm - kInsetTitleCm;
+        const double perHalfInset = std::max(0.0, std::min((areaR - areaL) / (ix.half() + 0.1 * span),
+                                                           (areaT - areaB) / (iy.half() + 0.1 * span)));
+        // Centred in the area.
+        const double midX = ix.lo / 2 + ix.hi / 2, midY = iy.lo / 2 + iy.hi / 2;
+        const auto ux = [&](double v) { return (areaL + areaR) / 2 + (v / 2 - midX / 2) * perHalfInset; };
+        const auto uy = [&](double v) { return (areaB + areaT) / 2 + (v / 2 - midY / 2) * perHalfInset; };
+        body += QStringLiteral("  \\begin{scope}\n  \\clip %1 rectangle %2;\n").arg(c(areaL, areaB), c(areaR, areaT));
+        // The axes through the origin: the inset's points are vectors from there.
+        body += QStringLiteral("  \\draw[black!50, line width=0.3pt] %1 -- %2 %3 -- %4;\n")
+                    .arg(c(areaL, uy(0)), c(areaR, uy(0)), c(ux(0), areaB), c(ux(0), areaT));
+        write(true, [&](const Point& p) { return c(ux(p.x), uy(p.y)); });
+        body += QStringLiteral("  \\end{scope}\n");
     }
     // Every line outside the picture ends in a comment, so that \input adds no space.
     QString out = QStringLiteral("%% Made with Granota. Needs \\usepackage{tikz}.\n"

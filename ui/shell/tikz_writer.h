@@ -4,6 +4,9 @@
 /// adds in model coordinates; str() lays them out at the size TikzOptions asks for (the
 /// width, labels included, and at most the height), with optional axes and grid, and writes
 /// them in centimetres, always with a decimal point (docs/numbers-and-locales.md).
+/// Items added between beginInset() and endInset() form an inset instead: a small framed
+/// picture of their own, with their own scale, in the lower right corner (as the De Casteljau
+/// tab draws its hodograph).
 
 #include "core/base/vec2.h"
 #include "ui/shell/tikz_options.h"
@@ -25,6 +28,14 @@ public:
     void point(Point p, const QColor& color, const QString& label = QString());
     void comment(const QString& text);
 
+    /// What follows, up to endInset(), is drawn in the inset: a white framed box in the
+    /// picture's lower right corner, kInsetShare of its width wide, titled `title` (TeX text),
+    /// with its own scale that fits its items and the origin, and the axes through the origin.
+    /// The inset's items take no room in the main picture's layout. One inset per picture.
+    void beginInset(const QString& title);
+    void endInset();
+    static constexpr double kInsetShare = 0.3;
+
     /// The whole `tikzpicture` environment, with the colours defined.
     QString str() const;
 
@@ -36,9 +47,12 @@ private:
         double width = 1.0;
         bool dashed = false, closed = false;
         QString text;
+        bool inset = false;
     };
     TikzOptions m_options;
     std::vector<Item> m_items;
+    bool m_inInset = false;
+    QString m_insetTitle;
 };
 
 } // namespace granota::ui
