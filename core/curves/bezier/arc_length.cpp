@@ -63,7 +63,10 @@ struct Speed {
 /// The 16-point rule on [a, b]. The 16 speeds are evaluated in lockstep (one nested loop
 /// over the control points, the nodes innermost) so that the compiler can vectorise them:
 /// one Horner chain alone is latency-bound.
-double gaussRule(const Speed& f, double a, double b)
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+inline double gaussRuleBody(const Speed& f, double a, double b)
 {
     const GaussLegendre& g = gauss();
     const double h = 0.5 * (b - a), c = 0.5 * (a + b);
@@ -95,6 +98,29 @@ double gaussRule(const Speed& f, double a, double b)
                                                    std::sqrt(x[K - 1 - j] * x[K - 1 - j] + y[K - 1 - j] * y[K - 1 - j]));
     return h * sum;
 }
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+/// The same rule compiled for AVX2 (four nodes per instruction instead of two), chosen at
+/// run time where the processor has it. Only AVX2, not FMA: every product and sum is the
+/// same IEEE operation as in the plain build, so both give the same length to the bit.
+__attribute__((target("avx2"))) double gaussRuleAvx2(const Speed& f, double a, double b)
+{
+    return gaussRuleBody(f, a, b);
+}
+
+bool hasAvx2()
+{
+    static const bool yes = (__builtin_cpu_init(), __builtin_cpu_supports("avx2"));
+    return yes;
+}
+
+double gaussRule(const Speed& f, double a, double b)
+{
+    return hasAvx2() ? gaussRuleAvx2(f, a, b) : gaussRuleBody(f, a, b);
+}
+#else
+double gaussRule(const Speed& f, double a, double b) { return gaussRuleBody(f, a, b); }
+#endif
 
 /// The largest |coordinate| rounded up to a power of two: dividing by it is exact.
 int scaleExponent(const std::vector<Point>& P)
