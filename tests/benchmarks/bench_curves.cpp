@@ -5,6 +5,7 @@
 #include "core/curves/bezier/bernstein.h"
 #include "core/curves/bezier/closest_point.h"
 #include "core/curves/bezier/curve_features.h"
+#include "core/curves/bezier/degree_elevation.h"
 #include "core/curves/splines/catmull_rom.h"
 #include "core/curves/bezier/de_casteljau.h"
 #include "core/curves/fitting/least_squares_fit.h"
@@ -141,6 +142,36 @@ void BM_ArcLength(benchmark::State& state)
         benchmark::DoNotOptimize(arcLength(p));
 }
 
+/// Harder degree-10 curves than the wavy one, for the same kernels: 0 a curve that winds
+/// round a tight turn (|c′| small and curvature large there: many panels for the length),
+/// 1 the cusp cubic (0,0) (1,1) (0,1) (1,0) raised to degree 10 (c′ = 0 at t = 1/2: the
+/// length is split there, and x′, y′ and the curvature numerator have multiple roots).
+std::vector<Point> hardCurve(int which)
+{
+    if (which == 0)
+        return {{0, 0}, {4, 3}, {6, 5}, {5, 7}, {3, 6}, {2, 4}, {3, 2}, {5, 1}, {7, 2}, {9, 3}, {10, 0}};
+    std::vector<Point> p{{0, 0}, {1, 1}, {0, 1}, {1, 0}};
+    while (p.size() < 11)
+        p = elevateDegree(p);
+    return p;
+}
+
+void BM_ArcLengthHard(benchmark::State& state)
+{
+    const auto p = hardCurve(static_cast<int>(state.range(0)));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(arcLength(p));
+}
+
+void BM_CurveFeaturesHard(benchmark::State& state)
+{
+    auto control = hardCurve(static_cast<int>(state.range(0)));
+    for (auto _ : state) {
+        control[2].y += 1e-12; // a new drag position
+        benchmark::DoNotOptimize(curveFeatures(control));
+    }
+}
+
 /// t(s) on a built parametrization: constant-speed playback asks for one per frame.
 void BM_ArcLengthInverse(benchmark::State& state)
 {
@@ -159,6 +190,8 @@ void BM_ArcLengthInverse(benchmark::State& state)
 BENCHMARK(BM_CurveFeatures)->Arg(3)->Arg(10)->Arg(30)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ClosestPoint)->Arg(3)->Arg(10)->Arg(30)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ArcLength)->Arg(3)->Arg(10)->Arg(30)->Unit(benchmark::kNanosecond);
+BENCHMARK(BM_ArcLengthHard)->Arg(0)->Arg(1)->Unit(benchmark::kNanosecond);
+BENCHMARK(BM_CurveFeaturesHard)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_ArcLengthInverse)->Arg(3)->Arg(10)->Unit(benchmark::kNanosecond);
 BENCHMARK(BM_DeCasteljauPoint)->DenseRange(3, 30, 9)->Arg(60)->Complexity(benchmark::oNSquared);
 BENCHMARK(BM_BernsteinPoint)->DenseRange(3, 30, 9)->Arg(60)->Complexity(benchmark::oN);

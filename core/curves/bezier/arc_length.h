@@ -6,7 +6,9 @@
 /// "A Primer on Bézier Curves", §"Arc length", which uses one fixed 24-point rule instead).
 ///
 /// |c′| is the length of the hodograph (hodograph.h), evaluated in O(n) by the nested
-/// (Horner-like) form of the Bernstein sum. The integral is a composite 16-point
+/// (Horner-like) form of the Bernstein sum, at the 16 nodes of a panel at once (four per
+/// instruction where the processor has AVX2, chosen at run time; the same operations, so
+/// the same lengths to the bit as without). The integral is a composite 16-point
 /// Gauss–Legendre rule, halving each panel until the two halves agree with the whole to the
 /// requested share of relative tolerance × L, and split first at the zeros of |c′| (cusps),
 /// where the integrand has a kink that would slow the rule down. t(s) is Newton's method on

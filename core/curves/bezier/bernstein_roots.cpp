@@ -1,6 +1,7 @@
 #include "core/curves/bezier/bernstein_roots.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -33,20 +34,51 @@ int signChanges(const double* b, int n)
     return changes;
 }
 
+/// Rows C(k, 0) … C(k, k) of binomialRow(k) for k ≤ kTabledDegree, computed once: the
+/// evaluations below look them up instead of forming C(k, i) by a division per term.
+constexpr int kTabledDegree = 64;
+
+const double* tabledBinomials(int k)
+{
+    struct Table {
+        double c[(kTabledDegree + 1) * (kTabledDegree + 2) / 2];
+        Table()
+        {
+            for (int row = 0; row <= kTabledDegree; ++row) {
+                double* r = c + row * (row + 1) / 2;
+                r[0] = 1.0;
+                for (int i = 1; i <= row; ++i) // the recurrence of binomialRow, so the same values
+                    r[i] = r[i - 1] * static_cast<double>(row - i + 1) / static_cast<double>(i);
+            }
+        }
+    };
+    assert(k >= 0 && k <= kTabledDegree);
+    static const Table table;
+    return table.c + k * (k + 1) / 2;
+}
+
 /// Σ b_i B_i^n(t) by Volk–Schumaker's scheme: Horner in s = 1 − t with the powers of t and
 /// the binomials carried along; only products of nonnegative factors besides the b_i.
-double hornerValue(const double* b, int n, double t)
+/// `binomial` is the row C(n, ·), or null to form it on the way.
+double hornerValue(const double* b, int n, double t, const double* binomial)
 {
     if (n == 0)
         return b[0];
     const double s = 1.0 - t;
     double tn = 1.0;
-    double binomial = 1.0;
     double sum = b[0] * s;
-    for (int i = 1; i < n; ++i) {
-        tn *= t;
-        binomial = binomial * static_cast<double>(n - i + 1) / static_cast<double>(i);
-        sum = (sum + tn * binomial * b[i]) * s;
+    if (binomial) {
+        for (int i = 1; i < n; ++i) {
+            tn *= t;
+            sum = (sum + tn * binomial[i] * b[i]) * s;
+        }
+    } else {
+        double c = 1.0;
+        for (int i = 1; i < n; ++i) {
+            tn *= t;
+            c = c * static_cast<double>(n - i + 1) / static_cast<double>(i);
+            sum = (sum + tn * c * b[i]) * s;
+        }
     }
     return sum + tn * t * b[n];
 }
@@ -63,7 +95,9 @@ double deCasteljauValue(const double* b, int n, double t)
 
 double value(const double* b, int n, double t)
 {
-    return n <= kHornerMaxDegree ? hornerValue(b, n, t) : deCasteljauValue(b, n, t);
+    if (n > kHornerMaxDegree)
+        return deCasteljauValue(b, n, t);
+    return hornerValue(b, n, t, n <= kTabledDegree ? tabledBinomials(n) : nullptr);
 }
 
 /// p′(t) = n Σ (b_{i+1} − b_i) B_i^{n−1}(t), the differences formed on the fly.
@@ -82,14 +116,49 @@ double derivative(const double* b, int n, double t)
         return n * (b[1] - b[0]);
     const double s = 1.0 - t;
     double tn = 1.0;
-    double binomial = 1.0;
     double sum = (b[1] - b[0]) * s;
-    for (int i = 1; i < m; ++i) {
-        tn *= t;
-        binomial = binomial * static_cast<double>(m - i + 1) / static_cast<double>(i);
-        sum = (sum + tn * binomial * (b[i + 1] - b[i])) * s;
+    if (m <= kTabledDegree) {
+        const double* binomial = tabledBinomials(m);
+        for (int i = 1; i < m; ++i) {
+            tn *= t;
+            sum = (sum + tn * binomial[i] * (b[i + 1] - b[i])) * s;
+        }
+    } else {
+        double c = 1.0;
+        for (int i = 1; i < m; ++i) {
+            tn *= t;
+            c = c * static_cast<double>(m - i + 1) / static_cast<double>(i);
+            sum = (sum + tn * c * (b[i + 1] - b[i])) * s;
+        }
     }
     return n * (sum + tn * t * (b[m + 1] - b[m]));
+}
+
+/// p(t) and p′(t) together (Newton's step needs both): the two Horner chains of value() and
+/// derivative() in one loop, the same operations in the same order, so the same results.
+void valueAndDerivative(const double* b, int n, double t, double& f, double& d)
+{
+    if (n < 2 || n > kTabledDegree) {
+        f = value(b, n, t);
+        d = derivative(b, n, t);
+        return;
+    }
+    const int m = n - 1;
+    const double* cn = tabledBinomials(n);
+    const double* cm = tabledBinomials(m);
+    const double s = 1.0 - t;
+    double tn = 1.0;
+    double sum = b[0] * s;
+    double dsum = (b[1] - b[0]) * s;
+    for (int i = 1; i < m; ++i) {
+        tn *= t;
+        sum = (sum + tn * cn[i] * b[i]) * s;
+        dsum = (dsum + tn * cm[i] * (b[i + 1] - b[i])) * s;
+    }
+    // i = m: the last step of p's chain, the closing term of p′'s.
+    const double tm = tn * t;
+    d = n * (dsum + tm * (b[m + 1] - b[m]));
+    f = (sum + tm * cn[m] * b[m]) * s + tm * t * b[n];
 }
 
 /// The one root in (0, 1) of the local polynomial b (degree n) of an interval [a, a + w],
@@ -110,14 +179,14 @@ double polishRoot(const double* b, int n, double a, double w, int leftSign)
     }
     double previousStep = std::numeric_limits<double>::infinity();
     for (int iteration = 0; iteration < 200; ++iteration) {
-        const double f = value(b, n, u);
+        double f = 0.0, d = 0.0;
+        valueAndDerivative(b, n, u, f, d);
         if (f == 0.0)
             return a + u * w;
         if (signOf(f) == leftSign)
             lo = u;
         else
             hi = u;
-        const double d = derivative(b, n, u);
         const double t = a + u * w;
         const double spacing = kEps * std::max(std::fabs(t), std::numeric_limits<double>::min());
         if (d != 0.0) {
@@ -151,12 +220,16 @@ struct FoundRoot {
     /// Which of two reports of one root is the better position: 4 an end, 3 a bracketed
     /// simple root, 2 the zero of p′ at a touching zero, 1 a halving point, 0 a midpoint.
     int rank = 0;
+    /// Found alone in an interval whose end values have opposite signs well above rounding:
+    /// p changes sign there, so crossing is known too unless another report merges with it.
+    bool bracketed = false;
+    bool merged = false;    ///< another report of the same root was merged into this one
 };
 
 class Solver {
 public:
-    Solver(const std::vector<double>& original, std::vector<double>& scratch)
-        : original_(original), n_(static_cast<int>(original.size()) - 1), scratch_(scratch)
+    Solver(const std::vector<double>& original, std::vector<double>& scratch, std::vector<FoundRoot>& found)
+        : found(found), original_(original), n_(static_cast<int>(original.size()) - 1), scratch_(scratch)
     {
         double maxAbs = 0.0;
         for (double c : original)
@@ -179,7 +252,12 @@ public:
                 int left = 0;
                 for (int i = 0; i <= n && left == 0; ++i)
                     left = signOf(b[i]);
-                found.push_back({polishRoot(b, n, a, w, left), 0.0, true, false, 3});
+                // The end values b_0 = p(a), b_n = p(a + w) carry the rounding of `depth`
+                // halvings, each at most n + 1 roundings of values ≤ max |b_i|: far below
+                // 32 × globalTolerance_ for depth ≤ kMaxDepth.
+                const double clear = 32.0 * globalTolerance_;
+                const bool bracketed = b[0] * b[n] < 0.0 && std::fabs(b[0]) > clear && std::fabs(b[n]) > clear;
+                found.push_back({polishRoot(b, n, a, w, left), 0.0, true, false, 3, bracketed});
                 return;
             }
             double maxAbs = 0.0;
@@ -219,7 +297,7 @@ public:
         }
     }
 
-    std::vector<FoundRoot> found;
+    std::vector<FoundRoot>& found;
 
 private:
     /// Newton steps on the original polynomial from t, where p(t) is 0 within rounding: a
@@ -230,8 +308,8 @@ private:
         const double* b = original_.data();
         double x = t;
         for (int i = 0; i < 3; ++i) {
-            const double f = value(b, n_, x);
-            const double d = derivative(b, n_, x);
+            double f = 0.0, d = 0.0;
+            valueAndDerivative(b, n_, x, f, d);
             if (f == 0.0 || d == 0.0)
                 break;
             const double next = x - f / d;
@@ -346,31 +424,37 @@ BernsteinRoots bernsteinRoots(const std::vector<double>& coefficients)
         return result;
     const int n = static_cast<int>(coefficients.size()) - 1;
 
-    // One slot of n + 1 coefficients per level of halving, reused from call to call.
+    // No sign change and no zero at an end: no root at all (Descartes), nothing to subdivide.
+    if (coefficients.front() != 0.0 && coefficients.back() != 0.0 && signChanges(coefficients.data(), n) == 0)
+        return result;
+
+    // One slot of n + 1 coefficients per level of halving, and the reports, reused from call
+    // to call.
     thread_local std::vector<double> work;
     thread_local std::vector<double> scratch;
+    thread_local std::vector<FoundRoot> found;
+    thread_local std::vector<FoundRoot> merged;
+    thread_local std::vector<double> magnitude;
+    found.clear();
+    merged.clear();
+    magnitude.clear();
     const std::size_t need = static_cast<std::size_t>(kMaxDepth + 2) * static_cast<std::size_t>(n + 1);
     if (work.size() < need)
         work.resize(need);
     std::copy(coefficients.begin(), coefficients.end(), work.begin());
 
-    Solver solver(coefficients, scratch);
+    Solver solver(coefficients, scratch, found);
     if (coefficients.front() == 0.0)
         solver.found.push_back({0.0, 0.0, false, true, 4});
     solver.run(work.data(), 0.0, 1.0, 0);
     if (n > 0 && coefficients.back() == 0.0)
         solver.found.push_back({1.0, 0.0, false, true, 4});
 
-    std::vector<FoundRoot>& found = solver.found;
     std::sort(found.begin(), found.end(), [](const FoundRoot& x, const FoundRoot& y) { return x.t < y.t; });
     // One root where two reports are not separated: p does not rise above its rounding
     // error (the magnitude Σ |b_i| B_i^n scaled as in toleranceFor) between them (a touching
     // zero met from a halving point and from its own interval, a cluster too tight for
     // doubles). The better placed report stays.
-    std::vector<double> magnitude(coefficients.size());
-    for (std::size_t i = 0; i < coefficients.size(); ++i)
-        magnitude[i] = std::fabs(coefficients[i]);
-    std::vector<FoundRoot> merged;
     for (const FoundRoot& r : found) {
         if (!merged.empty()) {
             FoundRoot& last = merged.back();
@@ -380,12 +464,16 @@ BernsteinRoots bernsteinRoots(const std::vector<double>& coefficients)
             // stretch where p is below rounding must not swallow the roots beyond it.
             if (!same && !(last.known && r.known) && gap <= 1e-5) {
                 const double between = 0.5 * (last.t + r.t);
+                if (magnitude.empty())
+                    for (double c : coefficients)
+                        magnitude.push_back(std::fabs(c));
                 same = std::fabs(bernsteinValue(coefficients, between))
                        <= solver.toleranceFor(bernsteinValue(magnitude, between));
             }
             if (same) {
                 if (r.rank > last.rank)
                     last = r;
+                last.merged = true;
                 continue;
             }
         }
@@ -406,6 +494,8 @@ BernsteinRoots bernsteinRoots(const std::vector<double>& coefficients)
             r.crossing = false;
             continue;
         }
+        if (r.bracketed && !r.merged)
+            continue; // crossing: p has opposite signs at the ends of its interval
         const double leftRoom = k > 0 ? 0.5 * (r.t - merged[k - 1].t) : r.t;
         const double rightRoom = k + 1 < merged.size() ? 0.5 * (merged[k + 1].t - r.t) : 1.0 - r.t;
         const double room = std::min(leftRoom, rightRoom);

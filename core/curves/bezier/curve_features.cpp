@@ -80,23 +80,20 @@ CurveBox tightBoundingBox(const std::vector<Point>& P)
     return box;
 }
 
-std::vector<double> cuspParameters(const std::vector<Point>& P)
+namespace {
+
+/// The cusps among the zeros rx of x′ and ry of y′ (the coordinates ax, ay of the hodograph,
+/// of size `size` > 0): those where |c′| is 0 within kCuspTolerance.
+std::vector<double> cuspsAmong(const std::vector<double>& ax, const std::vector<double>& ay, const BernsteinRoots& rx,
+                               const BernsteinRoots& ry, double size)
 {
-    if (P.size() < 2)
-        return {};
-    const std::vector<Point> A = hodograph(P);
-    const double size = hodographSize(A);
-    if (size == 0.0)
-        return {}; // stationary: c′ ≡ 0 (see CurveFeatures::stationary)
-    const std::vector<double> ax = coordinate(A, 0), ay = coordinate(A, 1);
     struct Candidate {
         double t;
         double speed;
     };
     std::vector<Candidate> candidates;
-    for (const auto* coefficients : {&ax, &ay}) {
-        const BernsteinRoots r = bernsteinRoots(*coefficients);
-        for (double t : r.roots) {
+    for (const BernsteinRoots* r : {&rx, &ry}) {
+        for (double t : r->roots) {
             const double speed = norm(pointAt(ax, ay, t));
             if (speed <= kCuspTolerance * size)
                 candidates.push_back({t, speed});
@@ -120,11 +117,25 @@ std::vector<double> cuspParameters(const std::vector<Point>& P)
     return out;
 }
 
-std::vector<double> curvatureNumerator(const std::vector<Point>& P)
+} // namespace
+
+std::vector<double> cuspParameters(const std::vector<Point>& P)
 {
-    if (P.size() < 3)
+    if (P.size() < 2)
         return {};
     const std::vector<Point> A = hodograph(P);
+    const double size = hodographSize(A);
+    if (size == 0.0)
+        return {}; // stationary: c′ ≡ 0 (see CurveFeatures::stationary)
+    const std::vector<double> ax = coordinate(A, 0), ay = coordinate(A, 1);
+    return cuspsAmong(ax, ay, bernsteinRoots(ax), bernsteinRoots(ay), size);
+}
+
+namespace {
+
+/// curvatureNumerator from the hodograph A of P (P with at least 3 points).
+std::vector<double> curvatureNumeratorOf(const std::vector<Point>& A)
+{
     const int m = static_cast<int>(A.size()) - 1;
     const std::vector<double> cm = binomialRow(m), c2 = binomialRow(2 * m - 2);
     std::vector<double> D(static_cast<std::size_t>(2 * m - 1), 0.0);
@@ -139,16 +150,24 @@ std::vector<double> curvatureNumerator(const std::vector<Point>& P)
     return D;
 }
 
+} // namespace
+
+std::vector<double> curvatureNumerator(const std::vector<Point>& P)
+{
+    if (P.size() < 3)
+        return {};
+    return curvatureNumeratorOf(hodograph(P));
+}
+
 namespace {
 
 /// Whether x′y″ − y′x″ is 0 up to the rounding of its coefficients (collinear control
-/// points given as decimals are rarely collinear in binary).
-bool straightWithinRounding(const std::vector<Point>& P, const std::vector<double>& D)
+/// points given as decimals are rarely collinear in binary); A is the hodograph, `size`
+/// its hodographSize.
+bool straightWithinRounding(const std::vector<Point>& A, double size, const std::vector<double>& D)
 {
     if (D.empty())
         return true;
-    const std::vector<Point> A = hodograph(P);
-    const double size = hodographSize(A);
     const int m = static_cast<int>(A.size()) - 1;
     // A generous bound: (m + 1)² terms of size at most |A_i||A_j| ≤ size², each rounded.
     const double bound = 64.0 * (m + 1) * (m + 1) * kEps * size * size;
@@ -161,8 +180,11 @@ std::vector<double> signChangesOf(const std::vector<double>& D);
 
 std::vector<double> inflectionParameters(const std::vector<Point>& P)
 {
-    const std::vector<double> D = curvatureNumerator(P);
-    if (straightWithinRounding(P, D))
+    if (P.size() < 3)
+        return {};
+    const std::vector<Point> A = hodograph(P);
+    const std::vector<double> D = curvatureNumeratorOf(A);
+    if (straightWithinRounding(A, hodographSize(A), D))
         return {};
     return signChangesOf(D);
 }
@@ -189,13 +211,17 @@ CurveFeatures curveFeatures(const std::vector<Point>& P)
         return f;
     }
     const std::vector<Point> A = hodograph(P);
-    f.stationary = hodographSize(A) == 0.0;
-    const std::vector<double> D = curvatureNumerator(P);
-    f.straight = straightWithinRounding(P, D);
+    const double size = hodographSize(A);
+    f.stationary = size == 0.0;
+    const std::vector<double> D = P.size() < 3 ? std::vector<double>{} : curvatureNumeratorOf(A);
+    f.straight = straightWithinRounding(A, size, D);
     if (!f.stationary) {
-        f.extremaX = extremaParameters(P, 0);
-        f.extremaY = extremaParameters(P, 1);
-        f.cusps = cuspParameters(P);
+        // The zeros of x′ and y′ once, for the extrema and for the cusps.
+        const std::vector<double> ax = coordinate(A, 0), ay = coordinate(A, 1);
+        const BernsteinRoots rx = bernsteinRoots(ax), ry = bernsteinRoots(ay);
+        f.extremaX = openInterval(rx.roots);
+        f.extremaY = openInterval(ry.roots);
+        f.cusps = cuspsAmong(ax, ay, rx, ry, size);
     }
     // The box from the extrema already found (tightBoundingBox would find them again).
     f.bbox = {P.front(), P.front()};
