@@ -5,6 +5,7 @@
 #include "core/curves/bezier/degree_elevation.h"
 #include "core/curves/bezier/power_basis.h"
 #include "core/exact/polynomial_text.h"
+#include "rational_points.h"
 
 #include <QtTest>
 
@@ -12,20 +13,13 @@
 #include <random>
 
 using namespace granota;
+using granota::testing::pts;
 using RPoly = Polynomial<Rational>;
 using PolyPoint = Vec2<RPoly>;
 
 Q_DECLARE_METATYPE(std::vector<RPoint>)
 
 namespace {
-
-std::vector<RPoint> pts(std::initializer_list<std::pair<int, int>> list)
-{
-    std::vector<RPoint> out;
-    for (auto [x, y] : list)
-        out.emplace_back(Rational(x), Rational(y));
-    return out;
-}
 
 RPoly poly(const char* text)
 {

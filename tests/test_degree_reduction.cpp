@@ -3,6 +3,7 @@
 #include "core/curves/bezier/bernstein.h"
 #include "core/curves/bezier/degree_elevation.h"
 #include "core/curves/bezier/degree_reduction.h"
+#include "rational_points.h"
 
 #include <QtTest>
 
@@ -10,17 +11,9 @@
 #include <random>
 
 using namespace granota;
+using granota::testing::randomRational;
 
 namespace {
-
-std::vector<RPoint> randomRational(std::mt19937& rng, int n)
-{
-    std::uniform_int_distribution<int> num(-30, 30), den(1, 7);
-    std::vector<RPoint> p;
-    for (int i = 0; i <= n; ++i)
-        p.emplace_back(frac(num(rng), den(rng)), frac(num(rng), den(rng)));
-    return p;
-}
 
 /// √∫|c − r|² by composite Simpson on 2000 intervals (an independent check of the error).
 double numericL2(const std::vector<Point>& c, const std::vector<Point>& r)

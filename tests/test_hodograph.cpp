@@ -4,23 +4,17 @@
 #include "core/curves/bezier/hodograph.h"
 #include "core/curves/bezier/power_basis.h"
 #include "core/exact/rational.h"
+#include "rational_points.h"
 
 #include <QtTest>
 
 #include <random>
 
 using namespace granota;
+using granota::testing::pts;
 using RPoly = Polynomial<Rational>;
 
 namespace {
-
-std::vector<RPoint> pts(std::initializer_list<std::pair<int, int>> list)
-{
-    std::vector<RPoint> out;
-    for (auto [x, y] : list)
-        out.emplace_back(Rational(x), Rational(y));
-    return out;
-}
 
 Vec2<RPoly> derivative(const Vec2<RPoly>& c) { return Vec2<RPoly>(c.x.derivative(), c.y.derivative()); }
 

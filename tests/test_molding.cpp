@@ -2,23 +2,16 @@
 // control points.
 #include "core/curves/bezier/bernstein.h"
 #include "core/curves/bezier/molding.h"
+#include "rational_points.h"
 
 #include <QtTest>
 
 #include <random>
 
 using namespace granota;
+using granota::testing::randomRational;
 
 namespace {
-
-std::vector<RPoint> randomRational(std::mt19937& rng, int n)
-{
-    std::uniform_int_distribution<int> num(-30, 30), den(1, 7);
-    std::vector<RPoint> p;
-    for (int i = 0; i <= n; ++i)
-        p.emplace_back(frac(num(rng), den(rng)), frac(num(rng), den(rng)));
-    return p;
-}
 
 Rational squaredChange(const std::vector<RPoint>& a, const std::vector<RPoint>& b)
 {

@@ -37,7 +37,10 @@ void ensureApplication()
     }
 }
 
-void BM_GuiDragDegree30(benchmark::State& state)
+/// A real drag on a degree-30 curve: press on P15's handle, then mouse moves, each followed
+/// (when `repaint`) by a repaint into the window's backing store, as on screen. `overlays`
+/// switches the tab's options on before the drag starts.
+void dragDegree30(benchmark::State& state, bool repaint, void (*overlays)(DeCasteljauTab&))
 {
     ensureApplication();
     DeCasteljauTab tab;
@@ -48,7 +51,8 @@ void BM_GuiDragDegree30(benchmark::State& state)
     for (int i = 0; i <= 30; ++i)
         points.emplace_back(i, 4 * std::sin(i * 0.7));
     tab.pointEditor()->setPoints(points, QStringLiteral("bench"));
-    // A real drag: press on P15's handle, then mouse moves, each followed by a repaint.
+    if (overlays)
+        overlays(tab);
     CurveCanvas* canvas = tab.canvas();
     const QPointF start = canvas->view().toScreen(points[15]);
     QMouseEvent press(QEvent::MouseButtonPress, start, canvas->mapToGlobal(start), Qt::LeftButton, Qt::LeftButton,
@@ -59,8 +63,8 @@ void BM_GuiDragDegree30(benchmark::State& state)
         const QPointF at = start + QPointF(0, (frame++ % 2) ? 3 : -3); // the mouse moved
         QMouseEvent move(QEvent::MouseMove, at, canvas->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
         QCoreApplication::sendEvent(canvas, &move);
-        if (state.range(0))
-            canvas->repaint(); // painted now, into the window's backing store, as on screen
+        if (repaint)
+            canvas->repaint();
     }
     QMouseEvent release(QEvent::MouseButtonRelease, start, canvas->mapToGlobal(start), Qt::LeftButton, Qt::NoButton,
                         Qt::NoModifier);
@@ -68,44 +72,23 @@ void BM_GuiDragDegree30(benchmark::State& state)
     state.counters["frame_budget_ms"] = 1000.0 / 60.0;
 }
 
+void BM_GuiDragDegree30(benchmark::State& state) { dragDegree30(state, state.range(0) != 0, nullptr); }
+
 // Issue 15: the same drag with every overlay of the curve's geometry on (normal, osculating
 // circle, curvature comb, tight bounding box with its extrema, inflections and cusps, the
 // hodograph's inset, tangent, split) — recomputed and repainted within one frame.
 void BM_GuiDragDegree30AllOverlays(benchmark::State& state)
 {
-    ensureApplication();
-    DeCasteljauTab tab;
-    tab.resize(1280, 760);
-    tab.show();
-    QCoreApplication::processEvents();
-    std::vector<Point> points;
-    for (int i = 0; i <= 30; ++i)
-        points.emplace_back(i, 4 * std::sin(i * 0.7));
-    tab.pointEditor()->setPoints(points, QStringLiteral("bench"));
-    tab.setTangentVisible(true);
-    tab.setSplitVisible(true);
-    tab.setNormalVisible(true);
-    tab.setOsculatingCircleVisible(true);
-    tab.setCombVisible(true);
-    tab.setBoundingBoxVisible(true);
-    tab.setInflectionsVisible(true);
-    tab.setHodographVisible(true);
-    CurveCanvas* canvas = tab.canvas();
-    const QPointF start = canvas->view().toScreen(points[15]);
-    QMouseEvent press(QEvent::MouseButtonPress, start, canvas->mapToGlobal(start), Qt::LeftButton, Qt::LeftButton,
-                      Qt::NoModifier);
-    QCoreApplication::sendEvent(canvas, &press);
-    int frame = 0;
-    for (auto _ : state) {
-        const QPointF at = start + QPointF(0, (frame++ % 2) ? 3 : -3);
-        QMouseEvent move(QEvent::MouseMove, at, canvas->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
-        QCoreApplication::sendEvent(canvas, &move);
-        canvas->repaint();
-    }
-    QMouseEvent release(QEvent::MouseButtonRelease, start, canvas->mapToGlobal(start), Qt::LeftButton, Qt::NoButton,
-                        Qt::NoModifier);
-    QCoreApplication::sendEvent(canvas, &release);
-    state.counters["frame_budget_ms"] = 1000.0 / 60.0;
+    dragDegree30(state, true, [](DeCasteljauTab& tab) {
+        tab.setTangentVisible(true);
+        tab.setSplitVisible(true);
+        tab.setNormalVisible(true);
+        tab.setOsculatingCircleVisible(true);
+        tab.setCombVisible(true);
+        tab.setBoundingBoxVisible(true);
+        tab.setInflectionsVisible(true);
+        tab.setHodographVisible(true);
+    });
 }
 
 void BM_GuiFrog200(benchmark::State& state)
