@@ -625,6 +625,36 @@ private slots:
         QCOMPARE(plot->xAxis->label(), QStringLiteral("t"));
     }
 
+    // 200 points, 10 tensions, both end modes: 3980 segments, so many that even the minimum
+    // per segment (both ends and inside) exceeds the κ(s) sample budget: each gets just that;
+    // a short curve keeps 41 per segment.
+    void curvatureSamplesStayWithinTheBudget()
+    {
+        std::vector<Point> points;
+        for (int i = 0; i < CatmullRomSettings::kMaxPoints; ++i)
+            points.push_back({double(i), std::sin(i * 0.7)});
+        CatmullRomSettings s;
+        s.taus.clear();
+        for (int k = 0; k < CatmullRomSettings::kMaxTensions; ++k)
+            s.taus.push_back(frac(k, 4));
+        s.selectedTau = 0;
+        s.compareEnds = true;
+        s.curvaturePlot = true;
+        const CatmullRomScene scene = computeScene(points, s);
+        std::size_t segments = 0;
+        for (const auto* curves : {&scene.curves, &scene.otherEnds})
+            for (const CatmullRomCurve& c : *curves) {
+                QCOMPARE(c.curvature.samples.size(), c.segments.size());
+                segments += c.segments.size();
+                for (const auto& row : c.curvature.samples)
+                    QCOMPARE(int(row.size()), CatmullRomScene::kMinCurvatureSamples);
+            }
+        QCOMPARE(int(segments), 10 * 199 + 10 * 199); // open and cyclic: n segments each
+        QVERIFY(segments * CatmullRomScene::kMinCurvatureSamples > std::size_t(CatmullRomScene::kCurvatureSampleBudget));
+        const CatmullRomScene small = computeScene(ex213Points(), s);
+        QCOMPARE(int(small.curves[0].curvature.samples[0].size()), CatmullRomScene::kSamplesPerSegment);
+    }
+
     // Ex 2.13 (τ = 1/2, cyclic): κ jumps at each interior knot by what the printed segments
     // give on either side; the C² spline of Ex 2.1's points does not jump.
     void curvatureJumpsAtCatmullRomKnotsOnly()

@@ -4,6 +4,8 @@
 #include "core/curves/splines/cubic_spline.h"
 #include "core/curves/splines/function_spline_segments.h"
 
+#include <algorithm>
+
 namespace granota::ui {
 
 namespace {
@@ -80,6 +82,13 @@ CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomS
 {
     CatmullRomScene scene;
     const double alpha = spacingAlpha(settings.spacing);
+    // About as many segments as points per curve, one curve per τ and per compared end mode.
+    const std::size_t segmentsProfiled =
+        std::max<std::size_t>(1, settings.taus.size() * (settings.compareEnds ? 2 : 1) * points.size());
+    const int curvatureSamples =
+        static_cast<int>(std::clamp<std::size_t>(CatmullRomScene::kCurvatureSampleBudget / segmentsProfiled,
+                                                 CatmullRomScene::kMinCurvatureSamples,
+                                                 CatmullRomScene::kSamplesPerSegment));
     auto makeCurve = [&](const Rational& tau, CatmullRomEnds ends) {
         CatmullRomCurve curve;
         curve.tau = tau;
@@ -105,7 +114,7 @@ CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomS
                 hi = 1.0; // a segment between coincident points is constant: any length will do
         curve.intervals = std::move(h);
         if (settings.curvaturePlot)
-            curve.curvature = curvatureProfile(controlPolygons(curve.bezier), CatmullRomScene::kSamplesPerSegment);
+            curve.curvature = curvatureProfile(controlPolygons(curve.bezier), curvatureSamples);
         return curve;
     };
     for (const Rational& tau : settings.taus)

@@ -41,6 +41,11 @@ struct CatmullRomCurve {
 struct CatmullRomScene {
     static constexpr int kSamplesPerSegment = 41; ///< `part` = 40 in the Matlab SegmentCatmullRom
     static constexpr int kBezierSamples = 301;
+    /// κ(s) samples of all Catmull-Rom curves together: with many points and tensions each
+    /// segment gets fewer (at least 5, at most kSamplesPerSegment), so that the plot follows
+    /// a drag (a plot a few hundred pixels wide shows no more anyway).
+    static constexpr int kCurvatureSampleBudget = 8000;
+    static constexpr int kMinCurvatureSamples = 5;
     std::vector<CatmullRomCurve> curves;    ///< one per τ, in the order of the list
     std::vector<CatmullRomCurve> otherEnds; ///< compareEnds: one per τ in the other end mode
     std::vector<Point> bezier;              ///< the Bézier curve of the points (when shown)
