@@ -478,6 +478,47 @@ private slots:
         }
     }
 
+    // The knot spacing the tab hands to the knot-continuity check: one h_i per segment, from
+    // the chord lengths alone (a 3-4-5 triangle and a repeated point), and with it the
+    // derivatives in the global parameter, p_i′(1)/h_i and p_{i+1}′(0)/h_{i+1}, agree.
+    void intervalsPerSegment()
+    {
+        const std::vector<Point> triangle{{0, 0}, {3, 0}, {3, 4}};
+        using V = std::vector<double>;
+        QCOMPARE(catmullRomIntervals(triangle, CatmullRomMode::Open, 1.0), (V{3, 4}));
+        QCOMPARE(catmullRomIntervals(triangle, CatmullRomMode::Cyclic, 1.0), (V{3, 4}));
+        QCOMPARE(catmullRomIntervals(triangle, CatmullRomMode::Closed, 1.0), (V{3, 4, 5}));
+        const V centripetal = catmullRomIntervals(triangle, CatmullRomMode::Closed, 0.5);
+        QCOMPARE(centripetal.size(), std::size_t(3));
+        QCOMPARE(centripetal[0], std::sqrt(3.0));
+        QCOMPARE(centripetal[2], std::sqrt(5.0));
+        QCOMPARE(catmullRomIntervals(triangle, CatmullRomMode::Closed, 0.0), (V{1, 1, 1}));
+        const std::vector<Point> repeated{{0, 0}, {2, 0}, {2, 0}, {2, 1}};
+        QCOMPARE(catmullRomIntervals(repeated, CatmullRomMode::Open, 1.0), (V{2, 0, 1}));
+        // Refused as catmullRomSegments refuses them.
+        QVERIFY(catmullRomIntervals({{0, 0}}, CatmullRomMode::Open, 0.5).empty());
+        QVERIFY(catmullRomIntervals({{0, 0}, {1, 1}}, CatmullRomMode::Cyclic, 0.5).empty());
+        QVERIFY(catmullRomIntervals(triangle, CatmullRomMode::Open, 2.0).empty());
+        QVERIFY(catmullRomIntervals({{0, 0}, {std::numeric_limits<double>::quiet_NaN(), 1}}, CatmullRomMode::Open, 0.5).empty());
+
+        const auto pts = uneven();
+        for (auto mode : {CatmullRomMode::Open, CatmullRomMode::Closed})
+            for (double alpha : {0.5, 1.0}) {
+                const auto curve = catmullRomSegments(pts, 0.5, mode, alpha);
+                const V h = catmullRomIntervals(pts, mode, alpha);
+                QVERIFY(curve.ok());
+                QCOMPARE(h.size(), curve->size());
+                const std::size_t joins = mode == CatmullRomMode::Closed ? h.size() : h.size() - 1;
+                for (std::size_t i = 0; i < joins; ++i) {
+                    const std::size_t j = (i + 1) % h.size();
+                    const Point left = at(derivative((*curve)[i]), 1.0), right = at(derivative((*curve)[j]), 0.0);
+                    QVERIFY(near(Point(left.x / h[i], left.y / h[i]), Point(right.x / h[j], right.y / h[j]), 10));
+                    if (std::fabs(h[i] - h[j]) > 1e-3 * h[i]) // unequal spacing: the local tangents differ
+                        QVERIFY(!near(left, right, 10));
+                }
+            }
+    }
+
     void equalSpacingIsUniform()
     {
         // All chords equal (a square): every h_i is the same, so α changes nothing.

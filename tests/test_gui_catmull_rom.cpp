@@ -1,17 +1,27 @@
 // The Catmull-Rom tab (docs/tabs.md): Ex 2.11 and Ex 2.13 exactly as printed in the exact
 // panel, Ex 2.1's slip exposed, mouse drags with undo, the tension list and its refusals,
-// the segment counts of Def 2.10, Prop 2.3 at every knot, interpolation, documents, and the
-// stiff cases of docs/extreme-cases.md.
+// the segment counts of Def 2.10, Prop 2.3 at every knot, interpolation, documents, the
+// stiff cases of docs/extreme-cases.md, and §2.3 made visible: κ against arc length (jumping
+// at the Catmull-Rom knots, continuous along the C² spline), each segment's Bézier points and
+// the C/G order of every knot, and exports that write cubic paths.
 #include "core/curves/splines/catmull_rom.h"
 #include "core/curves/splines/segment_joins.h"
+#include "core/exact/polynomial_text.h"
 #include "core/io/worked_examples.h"
 #include "ui/catmull_rom/catmull_rom_tab.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
+#include "ui/shell/exporter.h"
+#include "ui/shell/language.h"
+#include "ui/shell/tikz_writer.h"
 #include "gui_timeouts.h"
 
+#include <QCheckBox>
 #include <QComboBox>
+#include <QGroupBox>
+#include <QLabel>
+#include <QTemporaryDir>
 #include <QJsonArray>
 #include <QSlider>
 #include <QJsonDocument>
@@ -77,6 +87,58 @@ bool allFinite(const CatmullRomScene& scene)
         if (!isFinite(p))
             return false;
     return true;
+}
+
+/// The graph of the plot named `name`, or nullptr.
+QCPGraph* graphNamed(QCustomPlot* plot, const QString& name)
+{
+    for (int i = 0; i < plot->graphCount(); ++i)
+        if (plot->graph(i)->name() == name)
+            return plot->graph(i);
+    return nullptr;
+}
+
+/// κ on both sides of each gap of a κ(s) graph: the last value before a NaN and the first
+/// after it, with their arc lengths.
+struct KnotSides {
+    double sLeft, kappaLeft, sRight, kappaRight;
+};
+std::vector<KnotSides> knotSides(const QCPGraph* g)
+{
+    std::vector<KnotSides> out;
+    const auto data = g->data();
+    for (auto it = data->constBegin(); it != data->constEnd(); ++it)
+        if (std::isnan(it->value) && it != data->constBegin() && it + 1 != data->constEnd() &&
+            !std::isnan((it - 1)->value) && !std::isnan((it + 1)->value))
+            out.push_back({(it - 1)->key, (it - 1)->value, (it + 1)->key, (it + 1)->value});
+    return out;
+}
+
+/// Signed curvature (x′y″ − y′x″)/|p′|³ of a printed segment at t, from its polynomials.
+double printedCurvature(const Json& segment, const Rational& t)
+{
+    const auto x = parsePolynomial(*segment.find("x")->asString());
+    const auto y = parsePolynomial(*segment.find("y")->asString());
+    if (!x || !y)
+        qFatal("unreadable printed segment");
+    const double dx = toDouble(x->derivative()(t)), dy = toDouble(y->derivative()(t));
+    const double ddx = toDouble(x->derivative().derivative()(t)), ddy = toDouble(y->derivative().derivative()(t));
+    return (dx * ddy - dy * ddx) / std::pow(dx * dx + dy * dy, 1.5);
+}
+
+/// The letter after each '&' of a control's text ("&&" is a literal &), lower case.
+QChar mnemonic(const QString& text)
+{
+    for (int i = 0; i + 1 < text.size(); ++i) {
+        if (text[i] != QLatin1Char('&'))
+            continue;
+        if (text[i + 1] == QLatin1Char('&')) {
+            ++i;
+            continue;
+        }
+        return text[i + 1].toLower();
+    }
+    return {};
 }
 
 } // namespace
@@ -460,6 +522,8 @@ private slots:
         QTest::newRow("bad selection")
             << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": [\"1/2\"], \"selected_tau\": 3}");
         QTest::newRow("bad flag") << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": [\"1/2\"], \"spline\": 2}");
+        QTest::newRow("bad curvature flag")
+            << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": [\"1/2\"], \"curvature_plot\": \"yes\"}");
     }
     void loadStateRejectsGarbage()
     {
@@ -524,6 +588,264 @@ private slots:
         QVERIFY(lines.contains(QStringLiteral("1/2,2,0,3,4")));
         const int rows = int(lines.filter(QRegularExpression(QStringLiteral("^(0|1/2|2),"))).size());
         QCOMPARE(rows, 3 * 3 * CatmullRomScene::kSamplesPerSegment);
+    }
+
+    // §2.3 made visible: one κ(s) graph per curve on the canvas, the axes say what they are.
+    void curvaturePlotHasOneGraphPerCurve()
+    {
+        CatmullRomTab tab;
+        QVERIFY(!tab.settings().curvaturePlot);
+        tab.setCurvaturePlot(true);
+        QCustomPlot* plot = tab.blendingPlot();
+        QCOMPARE(plot->graphCount(), 3); // τ = 0, 1/2, 2
+        QCOMPARE(plot->xAxis->label(), QStringLiteral("arc length s"));
+        QCOMPARE(plot->yAxis->label(), QStringLiteral("curvature κ"));
+        for (const char* tau : {"0", "1/2", "2"})
+            QVERIFY2(graphNamed(plot, QStringLiteral("τ = %1").arg(QLatin1String(tau))), tau);
+        tab.setBezierVisible(true);
+        QCOMPARE(plot->graphCount(), 4);
+        QVERIFY(graphNamed(plot, QStringLiteral("Bézier")));
+        tab.setCompareEnds(true);
+        QCOMPARE(plot->graphCount(), 7);
+        tab.setSplineVisible(true); // Ex 2.11's x are not increasing: no spline, no graph
+        QVERIFY(!tab.scene().splineError.isEmpty());
+        QCOMPARE(plot->graphCount(), 7);
+        QVERIFY(tab.loadExample(example("2.1"))); // τ = 1/2 and the spline; the plot stays κ(s)
+        QVERIFY(tab.settings().curvaturePlot);
+        QCOMPARE(plot->graphCount(), 2);
+        QVERIFY(graphNamed(plot, QStringLiteral("cubic spline C²")));
+        // Open, 4 points: 3 segments, so 2 knots marked for the selected τ.
+        QCOMPARE(plot->itemCount(), 2);
+        // The τ = 0 curve of Ex 2.11 is straight segments: κ = 0 wherever it is defined.
+        tab.undoStack()->undo();
+        for (const auto& d : *graphNamed(plot, QStringLiteral("τ = 0"))->data())
+            QVERIFY(std::isnan(d.value) || std::fabs(d.value) < 1e-9);
+        tab.setCurvaturePlot(false);
+        QCOMPARE(plot->itemCount(), 0);
+        QCOMPARE(plot->xAxis->label(), QStringLiteral("t"));
+    }
+
+    // 200 points, 10 tensions, both end modes: 3980 segments, so many that even the minimum
+    // per segment (both ends and inside) exceeds the κ(s) sample budget: each gets just that;
+    // a short curve keeps 41 per segment.
+    void curvatureSamplesStayWithinTheBudget()
+    {
+        std::vector<Point> points;
+        for (int i = 0; i < CatmullRomSettings::kMaxPoints; ++i)
+            points.push_back({double(i), std::sin(i * 0.7)});
+        CatmullRomSettings s;
+        s.taus.clear();
+        for (int k = 0; k < CatmullRomSettings::kMaxTensions; ++k)
+            s.taus.push_back(frac(k, 4));
+        s.selectedTau = 0;
+        s.compareEnds = true;
+        s.curvaturePlot = true;
+        const CatmullRomScene scene = computeScene(points, s);
+        std::size_t segments = 0;
+        for (const auto* curves : {&scene.curves, &scene.otherEnds})
+            for (const CatmullRomCurve& c : *curves) {
+                QCOMPARE(c.curvature.samples.size(), c.segments.size());
+                segments += c.segments.size();
+                for (const auto& row : c.curvature.samples)
+                    QCOMPARE(int(row.size()), CatmullRomScene::kMinCurvatureSamples);
+            }
+        QCOMPARE(int(segments), 10 * 199 + 10 * 199); // open and cyclic: n segments each
+        QVERIFY(segments * CatmullRomScene::kMinCurvatureSamples > std::size_t(CatmullRomScene::kCurvatureSampleBudget));
+        const CatmullRomScene small = computeScene(ex213Points(), s);
+        QCOMPARE(int(small.curves[0].curvature.samples[0].size()), CatmullRomScene::kSamplesPerSegment);
+    }
+
+    // Ex 2.13 (τ = 1/2, cyclic): κ jumps at each interior knot by what the printed segments
+    // give on either side; the C² spline of Ex 2.1's points does not jump.
+    void curvatureJumpsAtCatmullRomKnotsOnly()
+    {
+        CatmullRomTab tab;
+        QVERIFY(tab.loadExample(example("2.13")));
+        tab.setCurvaturePlot(true);
+        const QCPGraph* g = graphNamed(tab.blendingPlot(), QStringLiteral("τ = 1/2"));
+        QVERIFY(g);
+        const auto sides = knotSides(g);
+        const Json::Array& printed = *example("2.13").data.find("expected")->find("cyclic")->asArray();
+        QCOMPARE(sides.size(), printed.size() - 1); // 4 segments, 3 knots
+        for (std::size_t k = 0; k < sides.size(); ++k) {
+            QCOMPARE(sides[k].sLeft, sides[k].sRight); // the same point of the curve
+            const double left = printedCurvature(printed[k], Rational(1));
+            const double right = printedCurvature(printed[k + 1], Rational(0));
+            QVERIFY2(std::fabs(right - left) > 0.01, qPrintable(QString::number(right - left)));
+            QVERIFY2(std::fabs(sides[k].kappaLeft - left) < 1e-9 && std::fabs(sides[k].kappaRight - right) < 1e-9,
+                     qPrintable(QStringLiteral("knot %1: %2 → %3, printed %4 → %5")
+                                    .arg(k)
+                                    .arg(sides[k].kappaLeft)
+                                    .arg(sides[k].kappaRight)
+                                    .arg(left)
+                                    .arg(right)));
+        }
+
+        QVERIFY(tab.loadExample(example("2.1")));
+        const QCPGraph* spline = graphNamed(tab.blendingPlot(), QStringLiteral("cubic spline C²"));
+        QVERIFY(spline);
+        const auto splineSides = knotSides(spline);
+        QCOMPARE(int(splineSides.size()), 2); // 3 pieces
+        for (const auto& s : splineSides) {
+            QCOMPARE(s.sLeft, s.sRight);
+            QVERIFY(std::fabs(s.kappaLeft) > 0.05); // a real test: the spline bends at its knots (s″ = −32/5, 8/5)
+            QVERIFY2(std::fabs(s.kappaRight - s.kappaLeft) <= 1e-9 * std::max(1.0, std::fabs(s.kappaLeft)),
+                     qPrintable(QStringLiteral("%1 vs %2").arg(s.kappaLeft, 0, 'g', 17).arg(s.kappaRight, 0, 'g', 17)));
+        }
+    }
+
+    // The exact panel: Ex 2.13's p2 as a Bézier segment, b1 = p1 + τ(p2 − p0)/3 and
+    // b2 = p2 − τ(p3 − p1)/3 with p0…p3 = q0…q3, and every knot C¹, not C² (uniform).
+    void exactPanelGivesBezierPointsAndKnotOrders()
+    {
+        CatmullRomTab tab;
+        QVERIFY(tab.loadExample(example("2.13")));
+        QVERIFY(tab.settings().taus[std::size_t(tab.settings().selectedTau)] == frac(1, 2));
+        const auto& q = example("2.13").points;
+        const Rational tau = frac(1, 2), three(3);
+        const Rational third = tau / three;
+        const RPoint b1 = q[1] + third * (q[2] - q[0]);
+        const RPoint b2 = q[2] - third * (q[3] - q[1]);
+        const auto text = [](const RPoint& p) {
+            return QStringLiteral("(%1, %2)").arg(QString::fromStdString(toString(p.x)), QString::fromStdString(toString(p.y)));
+        };
+        QCOMPARE(text(b1), QStringLiteral("(5/2, 7/6)")); // the formula, by hand
+        const QString row = QStringLiteral("p2\t%1\t%2\t%3\t%4").arg(text(q[1]), text(b1), text(b2), text(q[2]));
+        const QString plain = tab.exactPanel()->plainText();
+        QVERIFY2(plain.contains(row), qPrintable(row));
+        // Cyclic, 5 points: 4 segments and 3 knots, each C¹ and G¹ only.
+        const QRegularExpression c1(QStringLiteral("^q\\d\tC\\^1\tG\\^1\tΔp″ = "), QRegularExpression::MultilineOption);
+        QCOMPARE(int(plain.count(c1)), 3);
+
+        // Ex 2.1: the C² spline's knots are C² and G²; the Catmull-Rom knots through the same points are not.
+        QVERIFY(tab.loadExample(example("2.1")));
+        const QString spline = tab.exactPanel()->plainText();
+        const QRegularExpression c2(QStringLiteral("^q\\d\tC\\^2\tG\\^2\t—\tκ = "), QRegularExpression::MultilineOption);
+        QCOMPARE(int(spline.count(c2)), 2);
+        QCOMPARE(int(spline.count(c1)), 2);
+    }
+
+    // SVG and PDF come from the canvas's painting: the curves are cubic paths there, so the
+    // SVG holds `C` commands; the TikZ text writes them as `.. controls .. and ..`.
+    void exportsWriteCubicSegments()
+    {
+        CatmullRomTab tab;
+        showTab(tab);
+        QTemporaryDir dir;
+        const QString file = dir.filePath(QStringLiteral("cr.svg"));
+        QVERIFY(exportSvg(*tab.exportView(), file, QStringLiteral("test")).isEmpty());
+        QFile svg(file);
+        QVERIFY(svg.open(QIODevice::ReadOnly));
+        const QString content = QString::fromUtf8(svg.readAll());
+        QVERIFY(content.contains(QRegularExpression(QStringLiteral("\\sd=\"M[^\"]*C"))));
+        const QString tikz = tab.tikz();
+        // One path per τ, each of three segments: at least 9 Bézier segments.
+        QVERIFY2(tikz.count(QStringLiteral(".. controls")) >= 9, qPrintable(tikz));
+        QVERIFY(tikz.contains(QRegularExpression(QStringLiteral("\\.\\. controls \\([0-9.-]+,[0-9.-]+\\) and \\([0-9.-]+,[0-9.-]+\\) \\.\\. \\("))));
+    }
+
+    // TikzWriter's cubic paths: the picture holds the curve, not its control polygon. The arch
+    // (0, 0), (0, 10), (10, 10), (10, 0) is 10 wide and, at t = 1/2, 3/4 · 10 high.
+    void tikzBezierPathKeepsTheCurvesExtent()
+    {
+        TikzWriter w;
+        w.bezierSegments({{Point(0, 0), Point(0, 10), Point(10, 10), Point(10, 0)}}, Qt::black, 1.0);
+        const QString tex = w.str();
+        const QRegularExpression box(QStringLiteral("\\\\path \\(([0-9.]+),([0-9.]+)\\) rectangle \\(([0-9.]+),([0-9.]+)\\);"));
+        const auto m = box.match(tex);
+        QVERIFY2(m.hasMatch(), qPrintable(tex));
+        const double width = m.captured(3).toDouble() - m.captured(1).toDouble();
+        const double height = m.captured(4).toDouble() - m.captured(2).toDouble();
+        QVERIFY2(std::fabs(height / width - 0.75) < 1e-3, qPrintable(tex));
+        QVERIFY(tex.contains(QStringLiteral(".. controls")));
+        QVERIFY(tex.contains(QStringLiteral("overlay")));
+        QCOMPARE(int(tex.count(QStringLiteral(".. controls"))), 1);
+    }
+
+    void curvaturePlotIsASavedUndoableSetting()
+    {
+        CatmullRomTab tab;
+        QCheckBox* box = nullptr;
+        for (QCheckBox* b : tab.findChildren<QCheckBox*>())
+            if (b->text().contains(QStringLiteral("κ(s)")))
+                box = b;
+        QVERIFY(box);
+        QVERIFY(box->focusPolicy() & Qt::TabFocus);
+        const int steps = tab.undoStack()->count();
+        box->click();
+        QVERIFY(tab.settings().curvaturePlot);
+        QCOMPARE(tab.undoStack()->count(), steps + 1);
+        const QJsonObject saved = tab.saveState();
+        QCOMPARE(saved.value(QStringLiteral("curvature_plot")), QJsonValue(true));
+        CatmullRomTab other;
+        QString error;
+        QVERIFY2(other.loadState(QJsonDocument::fromJson(QJsonDocument(saved).toJson()).object(), &error),
+                 qPrintable(error));
+        QVERIFY(other.settings().curvaturePlot);
+        QCOMPARE(other.blendingPlot()->graphCount(), 3);
+        tab.undoStack()->undo();
+        QVERIFY(!tab.settings().curvaturePlot);
+        QVERIFY(!box->isChecked());
+        QCOMPARE(tab.blendingPlot()->graphCount(), 4); // the blending functions again
+        // A document without the key (older files) keeps the blending functions.
+        QJsonObject old = saved;
+        old.remove(QStringLiteral("curvature_plot"));
+        QVERIFY(other.loadState(old, &error));
+        QVERIFY(!other.settings().curvaturePlot);
+    }
+
+    void csvHasTheCurvatureWhenPlotted()
+    {
+        CatmullRomTab tab;
+        QVERIFY(!tab.csv().contains(QStringLiteral("kappa")));
+        tab.setCurvaturePlot(true);
+        const QStringList lines = tab.csv().split(QLatin1Char('\n'));
+        const int header = int(lines.indexOf(QStringLiteral("curve,tau,ends,segment,s,kappa")));
+        QVERIFY(header > 0);
+        int rows = 0;
+        for (int i = header + 1; i < lines.size() && !lines[i].isEmpty(); ++i, ++rows)
+            QCOMPARE(int(lines[i].count(QLatin1Char(','))), 5); // no decimal commas, in any locale
+        QCOMPARE(rows, 3 * 3 * CatmullRomScene::kSamplesPerSegment);
+        QVERIFY(lines.contains(QStringLiteral("catmull-rom,1/2,open,1,0,%1")
+                                   .arg(QString::fromStdString(granota::formatDouble(
+                                       *tab.scene().curves[1].curvature.samples[0][0].kappa)))));
+    }
+
+    // Alt+letter: no two controls of the tab share one, in either language.
+    void mnemonicsDoNotClash_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("en") << QStringLiteral("en");
+        QTest::newRow("ca") << QStringLiteral("ca");
+    }
+    void mnemonicsDoNotClash()
+    {
+        QFETCH(QString, language);
+        QVERIFY(granota::ui::setLanguage(language, false));
+        {
+            CatmullRomTab tab;
+            tab.retranslate();
+            QMap<QChar, QString> seen;
+            QStringList clashes;
+            auto add = [&](const QString& text) {
+                const QChar m = mnemonic(text);
+                if (m.isNull())
+                    return;
+                if (seen.contains(m))
+                    clashes << QStringLiteral("%1: “%2” and “%3”").arg(m, seen[m], text);
+                seen[m] = text;
+            };
+            for (QAbstractButton* b : tab.findChildren<QAbstractButton*>())
+                add(b->text());
+            for (QLabel* l : tab.findChildren<QLabel*>())
+                if (l->buddy())
+                    add(l->text());
+            for (QGroupBox* g : tab.findChildren<QGroupBox*>())
+                add(g->title());
+            QVERIFY(seen.size() >= 8);
+            QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(QStringLiteral("; "))));
+        }
+        QVERIFY(granota::ui::setLanguage(QStringLiteral("en"), false));
     }
 };
 

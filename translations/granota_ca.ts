@@ -320,6 +320,82 @@
             <source>The Bézier curve only approaches the inner points: Catmull-Rom passes through all of them, which is why the thesis chose it for the frog (§2.3, §4.12).</source>
             <translation>La corba de Bézier només s'acosta als punts interiors: la de Catmull-Rom passa per tots, i per això el treball la va triar per a la granota (§2.3, §4.12).</translation>
         </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>broken</source>
+            <translation>trencada</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>At every knot at least C^%1 and G^%2 (of %n knots).</source>
+            <translation>
+                <numerusform>A cada nus, almenys C^%1 i G^%2 (d'%n nus).</numerusform>
+                <numerusform>A cada nus, almenys C^%1 i G^%2 (de %n nusos).</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>undefined: p′ = 0</source>
+            <translation>no definida: p′ = 0</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>the tangent turns by %1°</source>
+            <translation>la tangent gira %1°</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>C order</source>
+            <translation>ordre C</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>G order</source>
+            <translation>ordre G</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>jump</source>
+            <translation>salt</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>curvature κ left → right</source>
+            <translation>curvatura κ esquerra → dreta</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>… and %n more knots.</source>
+            <translation>
+                <numerusform>… i %n nus més.</numerusform>
+                <numerusform>… i %n nusos més.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>Bézier segments and the knots (§2.3)</source>
+            <translation>Segments de Bézier i els nusos (§2.3)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>Each segment as a cubic Bézier curve: b0 = p(0), b1 = b0 + p′(0)/3, b2 = b3 − p′(1)/3, b3 = p(1); for Def 2.8, b1 = p1 + τ(p2 − p0)/3 and b2 = p2 − τ(p3 − p1)/3. Cᵏ: equal derivatives up to order k at the knot; Gᵏ: the same tangent direction (G¹) and curvature (G²).</source>
+            <translation>Cada segment com una corba de Bézier cúbica: b0 = p(0), b1 = b0 + p′(0)/3, b2 = b3 − p′(1)/3, b3 = p(1); per a la Def. 2.8, b1 = p1 + τ(p2 − p0)/3 i b2 = p2 − τ(p3 − p1)/3. Cᵏ: derivades iguals fins a l'ordre k al nus; Gᵏ: la mateixa direcció tangent (G¹) i la mateixa curvatura (G²).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>Centripetal and chordal spacing: the derivatives are taken in the knot parameter u, in which segment i has length h_i = |q_{i+1} − q_i|^α. There the curve is C¹; in the local parameters the tangents are only parallel (G¹).</source>
+            <translation>Espaiat centrípet i de corda: les derivades es prenen en el paràmetre dels nusos u, en què el segment i té longitud h_i = |q_{i+1} − q_i|^α. En aquest paràmetre la corba és C¹; en els paràmetres locals les tangents només són paral·leles (G¹).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>Cubic spline C² (Def 2.3)</source>
+            <translation>Spline cúbic C² (Def. 2.3)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>Its graph (x, s(x)) piece by piece, x = x_i + h_i u, u ∈ [0, 1]; the derivatives in x.</source>
+            <translation>El seu gràfic (x, s(x)) tros a tros, x = x_i + h_i u, u ∈ [0, 1]; les derivades en x.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::BernsteinTab</name>
@@ -902,6 +978,61 @@
             <location filename="../ui/catmull_rom_tab.h" line="42" />
             <source>Catmull-Rom</source>
             <translation>Catmull-Rom</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>C&amp;urvature κ(s) in the plot</source>
+            <translation>C&amp;urvatura κ(s) al gràfic</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>Plot the signed curvature κ of every curve on the canvas against its arc length s instead of the blending functions: κ jumps at the knots of a Catmull-Rom curve (C¹, not C²) and is continuous along the C² cubic spline (§2.3).</source>
+            <translation>Dibuixa la curvatura amb signe κ de cada corba del llenç en funció de la seva longitud d'arc s, en lloc de les funcions de mescla: κ salta als nusos d'una corba de Catmull-Rom (C¹, no C²) i és contínua al llarg de l'spline cúbic C² (§2.3).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>Curvature κ against arc length s (§2.3)</source>
+            <translation>Curvatura κ segons la longitud d'arc s (§2.3)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>κ = (x′y″ − y′x″)/|p′|³, positive where the curve turns left. A Catmull-Rom curve is C¹ but not C²: p″ jumps at its knots and so does κ (a break in the line). The C² cubic spline's κ is continuous, and the Bézier curve is one polynomial (C^∞).</source>
+            <translation>κ = (x′y″ − y′x″)/|p′|³, positiva on la corba gira a l'esquerra. Una corba de Catmull-Rom és C¹ però no C²: p″ salta als seus nusos i κ també (un tall a la línia). La κ de l'spline cúbic C² és contínua, i la corba de Bézier és un sol polinomi (C^∞).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>κ(s) of every curve drawn, in its colour and line style as on the canvas; the light vertical lines are the knots of the selected τ.</source>
+            <translation>κ(s) de cada corba dibuixada, amb el color i el traç del llenç; les línies verticals clares són els nusos de la τ seleccionada.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>Plot the curvature</source>
+            <translation>Mostra la curvatura</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>Plot the blending functions</source>
+            <translation>Mostra les funcions de mescla</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>arc length s</source>
+            <translation>longitud d'arc s</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>curvature κ</source>
+            <translation>curvatura κ</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>τ = %1, %2 ends</source>
+            <translation>τ = %1, corba %2</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>Bézier</source>
+            <translation>Bézier</translation>
         </message>
     </context>
     <context>

@@ -320,6 +320,82 @@
             <source>The Bézier curve only approaches the inner points: Catmull-Rom passes through all of them, which is why the thesis chose it for the frog (§2.3, §4.12).</source>
             <translation>The Bézier curve only approaches the inner points: Catmull-Rom passes through all of them, which is why the thesis chose it for the frog (§2.3, §4.12).</translation>
         </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>broken</source>
+            <translation>broken</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>At every knot at least C^%1 and G^%2 (of %n knots).</source>
+            <translation>
+                <numerusform>At every knot at least C^%1 and G^%2 (of %n knots).</numerusform>
+                <numerusform>At every knot at least C^%1 and G^%2 (of %n knots).</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>undefined: p′ = 0</source>
+            <translation>undefined: p′ = 0</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>the tangent turns by %1°</source>
+            <translation>the tangent turns by %1°</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>C order</source>
+            <translation>C order</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>G order</source>
+            <translation>G order</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>jump</source>
+            <translation>jump</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>curvature κ left → right</source>
+            <translation>curvature κ left → right</translation>
+        </message>
+        <message numerus="yes">
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>… and %n more knots.</source>
+            <translation>
+                <numerusform>… and %n more knots.</numerusform>
+                <numerusform>… and %n more knots.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>Bézier segments and the knots (§2.3)</source>
+            <translation>Bézier segments and the knots (§2.3)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>Each segment as a cubic Bézier curve: b0 = p(0), b1 = b0 + p′(0)/3, b2 = b3 − p′(1)/3, b3 = p(1); for Def 2.8, b1 = p1 + τ(p2 − p0)/3 and b2 = p2 − τ(p3 − p1)/3. Cᵏ: equal derivatives up to order k at the knot; Gᵏ: the same tangent direction (G¹) and curvature (G²).</source>
+            <translation>Each segment as a cubic Bézier curve: b0 = p(0), b1 = b0 + p′(0)/3, b2 = b3 − p′(1)/3, b3 = p(1); for Def 2.8, b1 = p1 + τ(p2 − p0)/3 and b2 = p2 − τ(p3 − p1)/3. Cᵏ: equal derivatives up to order k at the knot; Gᵏ: the same tangent direction (G¹) and curvature (G²).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>Centripetal and chordal spacing: the derivatives are taken in the knot parameter u, in which segment i has length h_i = |q_{i+1} − q_i|^α. There the curve is C¹; in the local parameters the tangents are only parallel (G¹).</source>
+            <translation>Centripetal and chordal spacing: the derivatives are taken in the knot parameter u, in which segment i has length h_i = |q_{i+1} − q_i|^α. There the curve is C¹; in the local parameters the tangents are only parallel (G¹).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>Cubic spline C² (Def 2.3)</source>
+            <translation>Cubic spline C² (Def 2.3)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_report.cpp" line="1" />
+            <source>Its graph (x, s(x)) piece by piece, x = x_i + h_i u, u ∈ [0, 1]; the derivatives in x.</source>
+            <translation>Its graph (x, s(x)) piece by piece, x = x_i + h_i u, u ∈ [0, 1]; the derivatives in x.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::BernsteinTab</name>
@@ -902,6 +978,61 @@
             <location filename="../ui/catmull_rom_tab.h" line="42" />
             <source>Catmull-Rom</source>
             <translation>Catmull-Rom</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>C&amp;urvature κ(s) in the plot</source>
+            <translation>C&amp;urvature κ(s) in the plot</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>Plot the signed curvature κ of every curve on the canvas against its arc length s instead of the blending functions: κ jumps at the knots of a Catmull-Rom curve (C¹, not C²) and is continuous along the C² cubic spline (§2.3).</source>
+            <translation>Plot the signed curvature κ of every curve on the canvas against its arc length s instead of the blending functions: κ jumps at the knots of a Catmull-Rom curve (C¹, not C²) and is continuous along the C² cubic spline (§2.3).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>Curvature κ against arc length s (§2.3)</source>
+            <translation>Curvature κ against arc length s (§2.3)</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>κ = (x′y″ − y′x″)/|p′|³, positive where the curve turns left. A Catmull-Rom curve is C¹ but not C²: p″ jumps at its knots and so does κ (a break in the line). The C² cubic spline's κ is continuous, and the Bézier curve is one polynomial (C^∞).</source>
+            <translation>κ = (x′y″ − y′x″)/|p′|³, positive where the curve turns left. A Catmull-Rom curve is C¹ but not C²: p″ jumps at its knots and so does κ (a break in the line). The C² cubic spline's κ is continuous, and the Bézier curve is one polynomial (C^∞).</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>κ(s) of every curve drawn, in its colour and line style as on the canvas; the light vertical lines are the knots of the selected τ.</source>
+            <translation>κ(s) of every curve drawn, in its colour and line style as on the canvas; the light vertical lines are the knots of the selected τ.</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>Plot the curvature</source>
+            <translation>Plot the curvature</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>Plot the blending functions</source>
+            <translation>Plot the blending functions</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>arc length s</source>
+            <translation>arc length s</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>curvature κ</source>
+            <translation>curvature κ</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>τ = %1, %2 ends</source>
+            <translation>τ = %1, %2 ends</translation>
+        </message>
+        <message>
+            <location filename="../ui/catmull_rom_tab.cpp" line="1" />
+            <source>Bézier</source>
+            <translation>Bézier</translation>
         </message>
     </context>
     <context>

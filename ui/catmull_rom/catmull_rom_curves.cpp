@@ -1,13 +1,14 @@
 #include "ui/catmull_rom/catmull_rom_curves.h"
 
-#include "core/curves/splines/cubic_spline.h"
 #include "core/curves/bezier/de_casteljau.h"
+#include "core/curves/splines/cubic_spline.h"
+#include "core/curves/splines/function_spline_segments.h"
+
+#include <algorithm>
 
 namespace granota::ui {
 
 namespace {
-
-
 
 /// Segment mode: the open curve without its two end segments (those are the ones Def 2.10
 /// has to invent neighbours for); with 4 points, the single segment of Def 2.8.
@@ -24,6 +25,15 @@ Expected<std::vector<Vec2<Polynomial<S>>>> interiorOnly(Expected<std::vector<Vec
 }
 
 } // namespace
+
+std::vector<std::vector<Point>> controlPolygons(const std::vector<BezierSegment<double>>& segments)
+{
+    std::vector<std::vector<Point>> out;
+    out.reserve(segments.size());
+    for (const auto& b : segments)
+        out.push_back({b[0], b[1], b[2], b[3]});
+    return out;
+}
 
 CatmullRomEnds comparedEnds(CatmullRomEnds ends)
 {
@@ -72,6 +82,13 @@ CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomS
 {
     CatmullRomScene scene;
     const double alpha = spacingAlpha(settings.spacing);
+    // About as many segments as points per curve, one curve per τ and per compared end mode.
+    const std::size_t segmentsProfiled =
+        std::max<std::size_t>(1, settings.taus.size() * (settings.compareEnds ? 2 : 1) * points.size());
+    const int curvatureSamples =
+        static_cast<int>(std::clamp<std::size_t>(CatmullRomScene::kCurvatureSampleBudget / segmentsProfiled,
+                                                 CatmullRomScene::kMinCurvatureSamples,
+                                                 CatmullRomScene::kSamplesPerSegment));
     auto makeCurve = [&](const Rational& tau, CatmullRomEnds ends) {
         CatmullRomCurve curve;
         curve.tau = tau;
@@ -82,8 +99,22 @@ CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomS
             return curve;
         }
         curve.segments = std::move(*segs);
-        if (!curve.segments.empty())
-            curve.samples = sampleSegments(curve.segments, CatmullRomScene::kSamplesPerSegment);
+        if (curve.segments.empty())
+            return curve;
+        curve.samples = sampleSegments(curve.segments, CatmullRomScene::kSamplesPerSegment);
+        curve.bezier = bezierSegments(curve.segments);
+        // The knot spacing of the segments shown: Segment mode drops the open curve's first and last.
+        std::vector<double> h = catmullRomIntervals(points, coreMode(ends), alpha);
+        if (ends == CatmullRomEnds::Segment && h.size() >= 2)
+            h = std::vector<double>(h.begin() + 1, h.end() - 1);
+        if (h.size() != curve.segments.size())
+            h.assign(curve.segments.size(), 1.0);
+        for (double& hi : h)
+            if (!(hi > 0.0))
+                hi = 1.0; // a segment between coincident points is constant: any length will do
+        curve.intervals = std::move(h);
+        if (settings.curvaturePlot)
+            curve.curvature = curvatureProfile(controlPolygons(curve.bezier), curvatureSamples);
         return curve;
     };
     for (const Rational& tau : settings.taus)
@@ -91,8 +122,11 @@ CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomS
     if (settings.compareEnds)
         for (const Rational& tau : settings.taus)
             scene.otherEnds.push_back(makeCurve(tau, comparedEnds(settings.ends)));
-    if (settings.bezier && points.size() >= 2)
+    if (settings.bezier && points.size() >= 2) {
         scene.bezier = sampleBezier(points, CatmullRomScene::kBezierSamples);
+        if (settings.curvaturePlot)
+            scene.bezierCurvature = curvatureProfile({points}, CatmullRomScene::kBezierSamples);
+    }
     if (settings.spline) {
         const auto spline = naturalCubicSpline(points);
         if (!spline) {
@@ -106,6 +140,13 @@ CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomS
                     scene.spline.push_back({x, spline->evaluatePiece(i, x)});
                 }
             }
+            auto graph = functionSplineSegments(*spline);
+            scene.splineSegments = std::move(graph.segments);
+            scene.splineIntervals = std::move(graph.intervals);
+            scene.splineBezier = bezierSegments(scene.splineSegments);
+            if (settings.curvaturePlot)
+                scene.splineCurvature =
+                    curvatureProfile(controlPolygons(scene.splineBezier), CatmullRomScene::kSamplesPerSegment);
         }
     }
     return scene;

@@ -1,23 +1,30 @@
 #include "ui/catmull_rom/catmull_rom_report.h"
 
+#include "core/base/number_format.h"
+#include "core/curves/splines/bezier_segments.h"
 #include "core/curves/splines/continuity_check.h"
 #include "core/curves/splines/cubic_spline.h"
+#include "core/curves/splines/function_spline_segments.h"
+#include "core/curves/splines/knot_continuity.h"
 #include "core/exact/polynomial_text.h"
 #include "core/exact/rational_approximation.h"
 #include "core/curves/splines/segment_joins.h"
 #include "core/curves/splines/spline_offset_correction.h"
 #include "core/io/worked_examples.h"
 #include "ui/common/exact_panel.h"
+#include "ui/common/number_text.h"
 
 #include <QRegularExpression>
 
 #include <algorithm>
+#include <cmath>
 
 namespace granota::ui {
 
 namespace {
 
 constexpr double kTolerance = 1e-9; ///< relative, for comparisons in doubles (continuity_check.h)
+constexpr double kPi = 3.14159265358979323846;
 
 QString text(const std::string& s) { return QString::fromStdString(s); }
 QString tauText(const Rational& t) { return text(toString(t)); }
@@ -180,6 +187,163 @@ QString tangentSection(const std::vector<Vec2<Polynomial<S>>>& segs, const Ratio
     html += ExactPanel::table({CatmullRomReport::tr("knot"), CatmullRomReport::tr("end of the segment before"),
                                CatmullRomReport::tr("start of the segment after"), QString()},
                               rows);
+    return html;
+}
+
+/// A point as the panel shows it: exact fractions, or six significant digits, in the interface's decimals.
+QString shownPoint(const Vec2<Rational>& v) { return displayText(detail::scalarText(v)).toHtmlEscaped(); }
+QString shownPoint(const Vec2<double>& v)
+{
+    return displayPair(displaySignificant(v.x, 6), displaySignificant(v.y, 6)).toHtmlEscaped();
+}
+
+/// The control points b_0..b_3 of each segment (bezier_segments.h), `firstName` the index of
+/// the first segment's name (p_1, or s_1 for the spline's pieces).
+template <class S>
+QString bezierTable(const std::vector<BezierSegment<S>>& segments, const QString& name, int firstName)
+{
+    std::vector<QStringList> rows;
+    const int count = static_cast<int>(segments.size());
+    const int shown = std::min(count, CatmullRomReport::kMaxListedSegments);
+    for (int i = 0; i < shown; ++i) {
+        const auto& b = segments[static_cast<std::size_t>(i)];
+        rows.push_back({sub(name, i + firstName), shownPoint(b[0]), shownPoint(b[1]), shownPoint(b[2]), shownPoint(b[3])});
+    }
+    QString html = ExactPanel::table({QString(), sub(QStringLiteral("b"), 0), sub(QStringLiteral("b"), 1),
+                                      sub(QStringLiteral("b"), 2), sub(QStringLiteral("b"), 3)},
+                                     rows);
+    if (count > shown)
+        html += ExactPanel::note(CatmullRomReport::tr("… and %n more segments.", nullptr, count - shown));
+    return html;
+}
+
+QString orderText(const char* letter, int order)
+{
+    return order < 0 ? CatmullRomReport::tr("broken").toHtmlEscaped()
+                     : esc(QStringLiteral("%1^%2").arg(QLatin1String(letter)).arg(order));
+}
+
+/// One row per knot: its C and G order (knot_continuity.h), the jump of the first derivative
+/// in the knot parameter that differs (p″ at a C¹ knot), and κ on both sides where the knot
+/// is not G². `knotName(k)` names the point at the knot.
+template <class S, class Name>
+QString continuityTable(const std::vector<KnotContinuity<S>>& knots, const Name& knotName)
+{
+    if (knots.empty())
+        return para(CatmullRomReport::tr("no interior knot").toHtmlEscaped());
+    int lowestC = 2, lowestG = 2;
+    for (const auto& k : knots) {
+        lowestC = std::min(lowestC, k.parametricOrder());
+        lowestG = std::min(lowestG, k.geometricOrder());
+    }
+    QString html;
+    if (lowestC >= 0)
+        html += para(esc(CatmullRomReport::tr("At every knot at least C^%1 and G^%2 (of %n knots).", nullptr,
+                                              static_cast<int>(knots.size()))
+                             .arg(lowestC)
+                             .arg(lowestG)));
+    std::vector<QStringList> rows;
+    const int count = static_cast<int>(knots.size());
+    const int shown = std::min(count, CatmullRomReport::kMaxListedSegments);
+    const auto number = [](double v) { return displaySignificant(v, 6).toHtmlEscaped(); };
+    for (int i = 0; i < shown; ++i) {
+        const auto& k = knots[static_cast<std::size_t>(i)];
+        const int c = k.parametricOrder(), g = k.geometricOrder();
+        QString jump = QStringLiteral("—");
+        if (c >= 0 && c < 2) {
+            const char* name = c == 0 ? "p′" : "p″";
+            jump = QStringLiteral("Δ%1 = %2").arg(QString::fromUtf8(name), shownPoint(k.jump(c + 1)));
+        }
+        QString kappa = QStringLiteral("—");
+        if (g >= 0 && g < 2) {
+            if (k.curvatureLeft && k.curvatureRight)
+                kappa = QStringLiteral("%1 → %2 (Δκ = %3)")
+                            .arg(number(*k.curvatureLeft), number(*k.curvatureRight),
+                                 number(*k.curvatureRight - *k.curvatureLeft));
+            else
+                kappa = CatmullRomReport::tr("undefined: p′ = 0").toHtmlEscaped();
+            if (g == 0 && k.tangentTurn)
+                kappa += QStringLiteral("; ") + CatmullRomReport::tr("the tangent turns by %1°")
+                                                    .arg(displaySignificant(*k.tangentTurn * 180.0 / kPi, 4))
+                                                    .toHtmlEscaped();
+        } else if (g == 2 && k.curvatureLeft) {
+            kappa = QStringLiteral("κ = %1").arg(number(*k.curvatureLeft));
+        }
+        rows.push_back({knotName(k), orderText("C", c), orderText("G", g), jump, kappa});
+    }
+    html += ExactPanel::table({CatmullRomReport::tr("knot"), CatmullRomReport::tr("C order"),
+                               CatmullRomReport::tr("G order"), CatmullRomReport::tr("jump"),
+                               CatmullRomReport::tr("curvature κ left → right")},
+                              rows);
+    if (count > shown)
+        html += ExactPanel::note(CatmullRomReport::tr("… and %n more knots.", nullptr, count - shown));
+    return html;
+}
+
+/// §2.3 knot by knot for the selected τ (and the spline): its cubic Bézier segments and the
+/// continuity at every knot, exactly when the segment polynomials are exact.
+QString bezierSection(const std::vector<Point>& points, const std::optional<std::vector<RPoint>>& rational,
+                      const CatmullRomSettings& settings, const CatmullRomScene& scene, bool exact)
+{
+    const int selected = settings.selectedTau;
+    if (selected < 0 || selected >= static_cast<int>(settings.taus.size()))
+        return {};
+    const Rational& tau = settings.taus[static_cast<std::size_t>(selected)];
+    const CatmullRomEnds ends = settings.ends;
+    const bool closed = ends == CatmullRomEnds::Closed;
+    const int count = static_cast<int>(points.size());
+    QString html = ExactPanel::heading(CatmullRomReport::tr("Bézier segments and the knots (§2.3)"));
+    html += para(CatmullRomReport::tr("Each segment as a cubic Bézier curve: b0 = p(0), b1 = b0 + p′(0)/3, "
+                                      "b2 = b3 − p′(1)/3, b3 = p(1); for Def 2.8, b1 = p1 + τ(p2 − p0)/3 and "
+                                      "b2 = p2 − τ(p3 − p1)/3. Cᵏ: equal derivatives up to order k at the knot; "
+                                      "Gᵏ: the same tangent direction (G¹) and curvature (G²).")
+                     .toHtmlEscaped());
+    if (settings.spacing != CatmullRomSpacing::Uniform)
+        html += ExactPanel::note(CatmullRomReport::tr("Centripetal and chordal spacing: the derivatives are taken in "
+                                                      "the knot parameter u, in which segment i has length "
+                                                      "h_i = |q_{i+1} − q_i|^α. There the curve is C¹; in the local "
+                                                      "parameters the tangents are only parallel (G¹)."));
+    const auto knotName = [&](int fromSegment, int offset) {
+        return sub(QStringLiteral("q"), (fromSegment + offset + 1) % std::max(count, 1));
+    };
+    html += para(QStringLiteral("<b>τ = %1</b>, %2").arg(tauText(tau), CatmullRomReport::endsName(ends).toHtmlEscaped()));
+    const int offset = firstSegmentStart(ends);
+    if (exact) {
+        const auto segs = exactCurveSegments(*rational, tau, ends);
+        if (!segs)
+            return html + ExactPanel::note(translatedError(segs.error(), ends));
+        html += bezierTable(bezierSegments(*segs), QStringLiteral("p"), 1 + offset);
+        html += continuityTable(knotContinuity(*segs, {}, closed),
+                                [&](const KnotContinuity<Rational>& k) { return knotName(k.fromSegment, offset); });
+    } else if (selected < static_cast<int>(scene.curves.size())) {
+        const CatmullRomCurve& c = scene.curves[static_cast<std::size_t>(selected)];
+        if (!c.error.isEmpty())
+            return html + ExactPanel::note(c.error);
+        html += bezierTable(c.bezier, QStringLiteral("p"), 1 + offset);
+        html += continuityTable(knotContinuity(c.segments, c.intervals, closed, kTolerance),
+                                [&](const KnotContinuity<double>& k) { return knotName(k.fromSegment, offset); });
+    }
+    if (settings.spline && scene.splineError.isEmpty()) {
+        html += para(QStringLiteral("<b>%1</b>").arg(CatmullRomReport::tr("Cubic spline C² (Def 2.3)").toHtmlEscaped()));
+        html += para(CatmullRomReport::tr("Its graph (x, s(x)) piece by piece, x = x_i + h_i u, u ∈ [0, 1]; the "
+                                          "derivatives in x.")
+                         .toHtmlEscaped());
+        const auto splineKnot = [&](int fromSegment) { return sub(QStringLiteral("q"), fromSegment + 1); };
+        std::optional<PiecewisePolynomial<Rational>> exactSpline;
+        if (rational)
+            if (auto s = naturalCubicSpline(*rational))
+                exactSpline = std::move(*s);
+        if (exactSpline) {
+            const auto graph = functionSplineSegments(*exactSpline);
+            html += bezierTable(bezierSegments(graph.segments), QStringLiteral("s"), 1);
+            html += continuityTable(knotContinuity(graph.segments, graph.intervals),
+                                    [&](const KnotContinuity<Rational>& k) { return splineKnot(k.fromSegment); });
+        } else if (!scene.splineSegments.empty()) {
+            html += bezierTable(scene.splineBezier, QStringLiteral("s"), 1);
+            html += continuityTable(knotContinuity(scene.splineSegments, scene.splineIntervals, false, kTolerance),
+                                    [&](const KnotContinuity<double>& k) { return splineKnot(k.fromSegment); });
+        }
+    }
     return html;
 }
 
@@ -388,6 +552,9 @@ QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRo
                 selectedOrder = checkSegmentJoins(scene.curves[i].segments, 2, closed, kTolerance).continuityOrder();
         }
     }
+
+    // §2.3 knot by knot: Bézier segments, C and G orders, the jumps.
+    html += bezierSection(points, rational, settings, scene, exact);
 
     // §2.3: what each kind of curve guarantees.
     if (settings.bezier || settings.spline) {

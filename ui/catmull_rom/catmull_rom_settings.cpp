@@ -11,7 +11,8 @@ namespace granota::ui {
 bool CatmullRomSettings::operator==(const CatmullRomSettings& o) const
 {
     return taus == o.taus && selectedTau == o.selectedTau && ends == o.ends && spacing == o.spacing &&
-           bezier == o.bezier && spline == o.spline && compareEnds == o.compareEnds && allTausInPlot == o.allTausInPlot;
+           bezier == o.bezier && spline == o.spline && compareEnds == o.compareEnds && allTausInPlot == o.allTausInPlot &&
+           curvaturePlot == o.curvaturePlot;
 }
 
 QString endsKey(CatmullRomEnds ends)
@@ -106,6 +107,7 @@ void writeSettings(const CatmullRomSettings& s, QJsonObject& json)
     json.insert(QStringLiteral("spline"), s.spline);
     json.insert(QStringLiteral("compare_ends"), s.compareEnds);
     json.insert(QStringLiteral("all_taus_in_plot"), s.allTausInPlot);
+    json.insert(QStringLiteral("curvature_plot"), s.curvaturePlot);
 }
 
 std::optional<CatmullRomSettings> readSettings(const QJsonObject& json, QString* problem)
@@ -160,7 +162,8 @@ std::optional<CatmullRomSettings> readSettings(const QJsonObject& json, QString*
     const std::pair<const char*, bool*> flags[] = {{"bezier", &s.bezier},
                                                    {"spline", &s.spline},
                                                    {"compare_ends", &s.compareEnds},
-                                                   {"all_taus_in_plot", &s.allTausInPlot}};
+                                                   {"all_taus_in_plot", &s.allTausInPlot},
+                                                   {"curvature_plot", &s.curvaturePlot}};
     for (const auto& [key, target] : flags) {
         const QJsonValue v = json.value(QLatin1String(key));
         if (v.isUndefined())

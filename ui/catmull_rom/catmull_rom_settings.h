@@ -36,6 +36,7 @@ struct CatmullRomSettings {
     bool spline = false;       ///< Def 2.3: the natural C² cubic spline through the points
     bool compareEnds = false;  ///< Ex 2.13: the open and cyclic curves side by side
     bool allTausInPlot = false;///< Ex 2.12: the blending functions of every τ
+    bool curvaturePlot = false;///< §2.3: the plot shows κ against arc length instead
 
     bool operator==(const CatmullRomSettings& o) const;
     bool operator!=(const CatmullRomSettings& o) const { return !(*this == o); }

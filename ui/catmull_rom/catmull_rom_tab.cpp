@@ -37,6 +37,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace granota::ui {
 
@@ -76,6 +77,28 @@ void drawPolyline(QPainter& p, const ViewTransform& view, const std::vector<Poin
         if (isFinite(q))
             poly << view.toScreen(q);
     p.drawPolyline(poly);
+}
+
+/// Cubic Bézier segments as one path of cubicTo (SVG `C`, PDF `c`): the curve itself, not
+/// a polyline of samples. A segment with a point that is not finite is left out.
+void drawBezierSegments(QPainter& p, const ViewTransform& view, const std::vector<BezierSegment<double>>& segments)
+{
+    QPainterPath path;
+    bool open = false; // the path ends at the previous segment's end
+    for (const auto& b : segments) {
+        if (!isFinite(b[0]) || !isFinite(b[1]) || !isFinite(b[2]) || !isFinite(b[3])) {
+            open = false;
+            continue;
+        }
+        const QPointF start = view.toScreen(b[0]);
+        // A segment starts where the previous one ends (up to rounding): one path, with its joins.
+        if (!open || QLineF(path.currentPosition(), start).length() > 1e-6)
+            path.moveTo(start);
+        path.cubicTo(view.toScreen(b[1]), view.toScreen(b[2]), view.toScreen(b[3]));
+        open = true;
+    }
+    p.setBrush(Qt::NoBrush);
+    p.drawPath(path);
 }
 
 /// The rectangle holding the points, never empty (one point or coincident points get a unit box).
@@ -179,6 +202,7 @@ void CatmullRomTab::buildUi()
     m_bezierCheck = new QCheckBox(m_curveBox);
     m_splineCheck = new QCheckBox(m_curveBox);
     m_compareCheck = new QCheckBox(m_curveBox);
+    m_curvatureCheck = new QCheckBox(m_curveBox);
     auto* curveLayout = new QGridLayout(m_curveBox);
     curveLayout->addWidget(m_endsLabel, 0, 0);
     curveLayout->addWidget(m_endsCombo, 0, 1);
@@ -187,6 +211,7 @@ void CatmullRomTab::buildUi()
     curveLayout->addWidget(m_bezierCheck, 2, 0, 1, 2);
     curveLayout->addWidget(m_splineCheck, 3, 0, 1, 2);
     curveLayout->addWidget(m_compareCheck, 4, 0, 1, 2);
+    curveLayout->addWidget(m_curvatureCheck, 5, 0, 1, 2);
     curveLayout->setColumnStretch(1, 1);
     connect(m_endsCombo, &QComboBox::currentIndexChanged, this, [this](int i) {
         if (!m_syncing && i >= 0)
@@ -231,6 +256,10 @@ void CatmullRomTab::buildUi()
     connect(m_allTausCheck, &QCheckBox::toggled, this, [this](bool on) {
         if (!m_syncing)
             setAllTausInPlot(on);
+    });
+    connect(m_curvatureCheck, &QCheckBox::toggled, this, [this](bool on) {
+        if (!m_syncing)
+            setCurvaturePlot(on);
     });
 
     // Exact results and the points table.
@@ -332,13 +361,13 @@ void CatmullRomTab::retranslate()
     m_compareCheck->setText(tr("Compare open and &cyclic ends"));
     m_compareCheck->setToolTip(tr("Also draw (dashed) and list the curve with the other end mode, as Ex 2.13 compares "
                                   "the cyclic and the open curve through the same points."));
-    m_plotTitle->setText(tr("Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)"));
-    m_plotTitle->setToolTip(tr("p(t) = Σ w_j(t, τ) p_j: the weight of each of the four points along a segment. "
-                               "They always add up to 1."));
+    m_curvatureCheck->setText(tr("C&urvature κ(s) in the plot"));
+    m_curvatureCheck->setToolTip(tr("Plot the signed curvature κ of every curve on the canvas against its arc length s "
+                                    "instead of the blending functions: κ jumps at the knots of a Catmull-Rom curve "
+                                    "(C¹, not C²) and is continuous along the C² cubic spline (§2.3)."));
     m_allTausCheck->setText(tr("Every &τ"));
     m_allTausCheck->setToolTip(tr("Plot the blending functions of every tension in the list (one line style per τ), "
                                   "as Ex 2.12 does for τ = −2, 0, 1/2 and 2."));
-    m_plot->setToolTip(tr("The blending functions w_0…w_3 of Cor 2.1 on t ∈ [0, 1]."));
     m_exact->setToolTip(tr("Exact results: segment polynomials (Lemma 2.3, Def 2.10), tangents at the knots "
                            "(Prop 2.3), blending functions (Cor 2.1), and the comparisons of §2.3."));
     m_canvas->setToolTip(tr("Drag a point to move it; double-click to add one; Delete removes the selected point; "
@@ -351,6 +380,25 @@ void CatmullRomTab::retranslate()
     m_table->retranslate();
     syncControls();
     recompute();
+}
+
+/// The plot's title and tooltips follow what it shows (syncControls()).
+void CatmullRomTab::updatePlotTexts()
+{
+    if (m_settings.curvaturePlot) {
+        m_plotTitle->setText(tr("Curvature κ against arc length s (§2.3)"));
+        m_plotTitle->setToolTip(tr("κ = (x′y″ − y′x″)/|p′|³, positive where the curve turns left. A Catmull-Rom "
+                                   "curve is C¹ but not C²: p″ jumps at its knots and so does κ (a break in the "
+                                   "line). The C² cubic spline's κ is continuous, and the Bézier curve is one "
+                                   "polynomial (C^∞)."));
+        m_plot->setToolTip(tr("κ(s) of every curve drawn, in its colour and line style as on the canvas; the light "
+                              "vertical lines are the knots of the selected τ."));
+    } else {
+        m_plotTitle->setText(tr("Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)"));
+        m_plotTitle->setToolTip(tr("p(t) = Σ w_j(t, τ) p_j: the weight of each of the four points along a segment. "
+                                   "They always add up to 1."));
+        m_plot->setToolTip(tr("The blending functions w_0…w_3 of Cor 2.1 on t ∈ [0, 1]."));
+    }
 }
 
 QString CatmullRomTab::tensionItemText(const Rational& tau) const
@@ -390,6 +438,9 @@ void CatmullRomTab::syncControls()
     m_splineCheck->setChecked(m_settings.spline);
     m_compareCheck->setChecked(m_settings.compareEnds);
     m_allTausCheck->setChecked(m_settings.allTausInPlot);
+    m_allTausCheck->setEnabled(!m_settings.curvaturePlot); // the blending functions only
+    m_curvatureCheck->setChecked(m_settings.curvaturePlot);
+    updatePlotTexts();
     const int rows = std::clamp(count, 2, 6);
     m_tauList->setFixedHeight(rows * (m_tauList->fontMetrics().height() + 6) + 6);
     m_syncing = false;
@@ -538,6 +589,13 @@ void CatmullRomTab::setAllTausInPlot(bool on)
     changeSettings(after, tr("Blending functions of every τ"));
 }
 
+void CatmullRomTab::setCurvaturePlot(bool on)
+{
+    CatmullRomSettings after = m_settings;
+    after.curvaturePlot = on;
+    changeSettings(after, on ? tr("Plot the curvature") : tr("Plot the blending functions"));
+}
+
 void CatmullRomTab::pointsEdited()
 {
     recompute();
@@ -584,6 +642,13 @@ void CatmullRomTab::updatePlot()
     m_plot->yAxis->setTickLabelFont(font);
     m_plot->xAxis->setLabelFont(font);
     m_plot->yAxis->setLabelFont(font);
+    m_plot->clearItems(); // the knot marks of the κ plot
+    // κ(s) has the colours and line styles of the canvas, whose legend names them.
+    m_plot->legend->setVisible(!m_settings.curvaturePlot);
+    if (m_settings.curvaturePlot) {
+        updateCurvaturePlot(scale);
+        return;
+    }
     m_plot->xAxis->setLabel(QStringLiteral("t"));
     m_plot->yAxis->setLabel(QStringLiteral("w_j(t, τ)"));
     std::vector<int> shown;
@@ -635,6 +700,88 @@ void CatmullRomTab::updatePlot()
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
 
+void CatmullRomTab::updateCurvaturePlot(double scale)
+{
+    m_plot->xAxis->setLabel(tr("arc length s"));
+    m_plot->yAxis->setLabel(tr("curvature κ"));
+    std::vector<double> values; // every κ shown, for the range
+    double length = 0;
+    auto addProfile = [&](const CurvatureProfile& profile, const QPen& pen, const QString& name) {
+        if (profile.samples.empty())
+            return;
+        QVector<double> s, kappa;
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        for (std::size_t i = 0; i < profile.samples.size(); ++i) {
+            if (i > 0 && !profile.samples[i].empty()) { // a gap between segments: a jump of κ is a break, not a slope
+                s << profile.samples[i].front().s;
+                kappa << nan;
+            }
+            for (const CurvatureSample& sample : profile.samples[i]) {
+                s << sample.s;
+                kappa << (sample.kappa ? *sample.kappa : nan); // undefined (a cusp): a gap, never 0
+                if (sample.kappa)
+                    values.push_back(*sample.kappa);
+            }
+        }
+        length = std::max(length, profile.length());
+        QCPGraph* g = m_plot->addGraph();
+        g->setData(s, kappa, true); // in order: the two samples of a knot keep their sides
+        g->setPen(pen);
+        g->setName(name);
+    };
+    const double width = 2.0 * scale;
+    for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
+        const bool selected = static_cast<int>(i) == m_settings.selectedTau;
+        addProfile(m_scene.curves[i].curvature,
+                   QPen(CanvasStyle::series(static_cast<int>(i)), selected ? 1.5 * width : width),
+                   QStringLiteral("τ = %1").arg(tauString(m_scene.curves[i].tau)));
+    }
+    for (std::size_t i = 0; i < m_scene.otherEnds.size(); ++i)
+        addProfile(m_scene.otherEnds[i].curvature, QPen(CanvasStyle::series(static_cast<int>(i)), 0.75 * width, Qt::DashLine),
+                   tr("τ = %1, %2 ends")
+                       .arg(tauString(m_scene.otherEnds[i].tau), CatmullRomReport::endsName(m_scene.otherEnds[i].ends)));
+    addProfile(m_scene.bezierCurvature, QPen(kBezierColor, width, Qt::DashDotLine), tr("Bézier"));
+    addProfile(m_scene.splineCurvature, QPen(kSplineColor, width), tr("cubic spline C²"));
+
+    // The knots of the selected τ, where its κ may jump.
+    if (m_settings.selectedTau >= 0 && m_settings.selectedTau < static_cast<int>(m_scene.curves.size())) {
+        const CurvatureProfile& profile = m_scene.curves[static_cast<std::size_t>(m_settings.selectedTau)].curvature;
+        const bool closed = m_settings.ends == CatmullRomEnds::Closed;
+        for (std::size_t k = 0; k < profile.knots.size(); ++k) {
+            if (!closed && (k == 0 || k + 1 == profile.knots.size()))
+                continue; // the ends of an open curve are no knots
+            auto* line = new QCPItemStraightLine(m_plot);
+            line->point1->setCoords(profile.knots[k], 0);
+            line->point2->setCoords(profile.knots[k], 1);
+            line->setPen(QPen(QColor(0x60, 0x60, 0x60, 170), scale, Qt::DashLine));
+            line->setLayer(QStringLiteral("grid"));
+        }
+    }
+
+    // The range of most values: a near-cusp's spike would flatten every other curve.
+    double lo = -1, hi = 1;
+    if (!values.empty()) {
+        std::sort(values.begin(), values.end());
+        const auto at = [&values](double q) {
+            return values[static_cast<std::size_t>(std::lround(q * static_cast<double>(values.size() - 1)))];
+        };
+        lo = std::min(0.0, at(0.01));
+        hi = std::max(0.0, at(0.99));
+        const double spread = hi - lo;
+        if (!(spread > 0) || !std::isfinite(spread)) {
+            lo -= 1;
+            hi += 1;
+        } else {
+            lo -= 0.08 * spread;
+            hi += 0.08 * spread;
+        }
+    }
+    keepAxisTitlesWhole(m_plot);
+    m_plot->xAxis->setRange(0, length > 0 && std::isfinite(length) ? length : 1.0);
+    m_plot->yAxis->setRange(lo, hi);
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
 QRectF CatmullRomTab::contentBounds() const
 {
     const QRectF box = pointBounds(m_editor->points());
@@ -683,19 +830,19 @@ void CatmullRomTab::drawCurves(QPainter& p, const ViewTransform& view, const Can
         p.setPen(QPen(kBezierColor, style.lineWidth(), Qt::DashDotLine, Qt::RoundCap, Qt::RoundJoin));
         drawPolyline(p, view, m_scene.bezier);
     }
-    if (!m_scene.spline.empty()) {
+    if (!m_scene.splineBezier.empty()) {
         p.setPen(QPen(kSplineColor, style.lineWidth(), Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-        drawPolyline(p, view, m_scene.spline);
+        drawBezierSegments(p, view, m_scene.splineBezier);
     }
     for (std::size_t i = 0; i < m_scene.otherEnds.size(); ++i) {
         p.setPen(QPen(CanvasStyle::series(static_cast<int>(i)), style.lineWidth() * 0.75, Qt::DashLine));
-        drawPolyline(p, view, m_scene.otherEnds[i].samples);
+        drawBezierSegments(p, view, m_scene.otherEnds[i].bezier);
     }
     for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
         const bool selected = static_cast<int>(i) == m_settings.selectedTau;
         p.setPen(QPen(CanvasStyle::series(static_cast<int>(i)), style.lineWidth() * (selected ? 1.5 : 1.0),
                       Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-        drawPolyline(p, view, m_scene.curves[i].samples);
+        drawBezierSegments(p, view, m_scene.curves[i].bezier);
     }
 }
 
@@ -758,6 +905,7 @@ bool CatmullRomTab::loadExample(const WorkedExample& example)
         if (!useTaus(example.taus))
             return false;
         s.allTausInPlot = true;
+        s.curvaturePlot = false; // Ex 2.12 is about the blending functions
     } else if (example.kind == "catmull-rom") { // Ex 2.13
         points = toDouble(example.points);
         if (!useTaus(example.taus))
@@ -847,6 +995,28 @@ QString CatmullRomTab::csv() const
                             QString::fromStdString(formatDouble(c.samples[k].y)));
         }
     }
+    if (m_settings.curvaturePlot) {
+        // κ(s) as plotted: a knot appears twice, the end of one segment and the start of the next.
+        out += QStringLiteral("\ncurve,tau,ends,segment,s,kappa\n");
+        const auto number = [](double v) { return QString::fromStdString(formatDouble(v)); };
+        auto write = [&](const QString& curve, const QString& tau, const QString& ends, int firstSegment,
+                         const CurvatureProfile& profile) {
+            for (std::size_t i = 0; i < profile.samples.size(); ++i)
+                for (const CurvatureSample& sample : profile.samples[i])
+                    out += QStringLiteral("%1,%2,%3,%4,%5,%6\n")
+                               .arg(curve, tau, ends)
+                               .arg(static_cast<int>(i) + firstSegment)
+                               .arg(number(sample.s), sample.kappa ? number(*sample.kappa) : QString());
+        };
+        for (const CatmullRomCurve& c : m_scene.curves)
+            write(QStringLiteral("catmull-rom"), tauString(c.tau), endsKey(c.ends), 1 + firstSegmentStart(c.ends),
+                  c.curvature);
+        for (const CatmullRomCurve& c : m_scene.otherEnds)
+            write(QStringLiteral("catmull-rom"), tauString(c.tau), endsKey(c.ends), 1 + firstSegmentStart(c.ends),
+                  c.curvature);
+        write(QStringLiteral("bezier"), QString(), QString(), 1, m_scene.bezierCurvature);
+        write(QStringLiteral("spline"), QString(), QString(), 1, m_scene.splineCurvature);
+    }
     return out;
 }
 
@@ -855,13 +1025,14 @@ void CatmullRomTab::drawTikz(TikzWriter& w) const
     w.comment(QStringLiteral("Catmull-Rom curves (thesis §2.2), mode %1").arg(endsKey(m_settings.ends)));
     if (!m_scene.bezier.empty())
         w.polyline(m_scene.bezier, kBezierColor, 1.0, true);
-    if (!m_scene.spline.empty())
-        w.polyline(m_scene.spline, kSplineColor, 1.0);
+    // The Catmull-Rom segments and the spline's pieces are cubics: written as Bézier segments.
+    if (!m_scene.splineBezier.empty())
+        w.bezierSegments(m_scene.splineBezier, kSplineColor, 1.0);
     for (std::size_t i = 0; i < m_scene.otherEnds.size(); ++i)
-        w.polyline(m_scene.otherEnds[i].samples, CanvasStyle::series(static_cast<int>(i)), 0.8, true);
+        w.bezierSegments(m_scene.otherEnds[i].bezier, CanvasStyle::series(static_cast<int>(i)), 0.8, true);
     for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
         w.comment(QStringLiteral("tau = %1").arg(tauString(m_scene.curves[i].tau)));
-        w.polyline(m_scene.curves[i].samples, CanvasStyle::series(static_cast<int>(i)), 1.2);
+        w.bezierSegments(m_scene.curves[i].bezier, CanvasStyle::series(static_cast<int>(i)), 1.2);
     }
     const auto& points = m_editor->points();
     for (std::size_t i = 0; i < points.size(); ++i)

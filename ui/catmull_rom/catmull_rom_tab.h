@@ -5,7 +5,8 @@
 /// centripetal or chordal spacing, the blending functions (Cor 2.1), the exact segment
 /// polynomials (Lemma 2.3, Ex 2.11, Ex 2.13) and tangents at the knots (Prop 2.3), and the
 /// comparisons of §2.3 with the Bézier curve of the same points and the C² cubic spline
-/// (Def 2.3, Ex 2.1).
+/// (Def 2.3, Ex 2.1): every curve's curvature against arc length, and each segment as a cubic
+/// Bézier curve with the C/G order of every knot.
 
 #include "ui/catmull_rom/catmull_rom_curves.h"
 #include "ui/catmull_rom/catmull_rom_settings.h"
@@ -39,6 +40,7 @@ public:
     QString csv() const override;
 
     // The model and the views, for the main window's neighbours and for tests.
+    /// The plot under the canvas: the blending functions, or κ(s) when settings().curvaturePlot.
     QCustomPlot* blendingPlot() const { return m_plot; }
     const CatmullRomSettings& settings() const { return m_settings; }
     const CatmullRomScene& scene() const { return m_scene; }
@@ -56,6 +58,7 @@ public:
     void setSplineVisible(bool on);
     void setCompareEnds(bool on);
     void setAllTausInPlot(bool on);
+    void setCurvaturePlot(bool on);
 
 protected:
     void drawTikz(TikzWriter& w) const override;
@@ -80,7 +83,11 @@ private:
     /// The canvas's accessible name and description: the tensions and the points (screen readers).
     void updateCanvasSummary();
     void syncControls();
+    void updatePlotTexts();
     void updatePlot();
+    /// §2.3 made visible: signed κ against arc length s of every curve drawn, a gap at each
+    /// knot (so a jump of κ shows as a break) and the selected τ's knots marked.
+    void updateCurvaturePlot(double scale);
     void updateContentBounds(bool force);
     void sliderMoved(int value);
     void refuse(const QString& message);
@@ -106,6 +113,7 @@ private:
     QCheckBox* m_splineCheck = nullptr;
     QCheckBox* m_compareCheck = nullptr;
     QCheckBox* m_allTausCheck = nullptr;
+    QCheckBox* m_curvatureCheck = nullptr;
     QLabel* m_plotTitle = nullptr;
 
     CatmullRomSettings m_settings;

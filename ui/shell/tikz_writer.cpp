@@ -82,29 +82,72 @@ QString tickLabel(double v, double step)
     return QStringLiteral("$%1$").arg(QString::fromStdString(text));
 }
 
+/// The points of a cubic Bézier segment that bound it: its ends and where x′ or y′ is 0
+/// (the roots in (0, 1) of the quadratic derivative of each coordinate).
+void addExtremes(const std::array<Point, 4>& b, std::vector<Point>& out)
+{
+    const auto at = [&b](double t) {
+        const double u = 1 - t;
+        return u * u * u * b[0] + 3 * u * u * t * b[1] + 3 * u * t * t * b[2] + t * t * t * b[3];
+    };
+    out.push_back(b[0]);
+    out.push_back(b[3]);
+    for (int axis = 0; axis < 2; ++axis) {
+        const auto c = [&b, axis](int i) { return axis == 0 ? b[static_cast<std::size_t>(i)].x : b[static_cast<std::size_t>(i)].y; };
+        // c′(t)/3 = a t² + 2k t + d with d = c1 − c0, k = c2 − 2c1 + c0, a = c3 − 3c2 + 3c1 − c0.
+        const double d = c(1) - c(0), k = c(2) - 2 * c(1) + c(0), a = c(3) - 3 * c(2) + 3 * c(1) - c(0);
+        std::vector<double> roots;
+        if (std::fabs(a) <= 1e-12 * (std::fabs(k) + std::fabs(d))) {
+            if (k != 0)
+                roots.push_back(-d / (2 * k));
+        } else {
+            const double disc = k * k - a * d;
+            if (disc >= 0) {
+                const double r = std::sqrt(disc);
+                roots.push_back((-k + r) / a);
+                roots.push_back((-k - r) / a);
+            }
+        }
+        for (double t : roots)
+            if (t > 0 && t < 1 && std::isfinite(t))
+                out.push_back(at(t));
+    }
+}
+
 } // namespace
+
+void TikzWriter::bezierSegments(const std::vector<std::array<Point, 4>>& segments, const QColor& color, double widthPt,
+                                bool dashed)
+{
+    Item item{Item::Bezier, {}, color, widthPt, dashed, false, {}, m_inInset, {}};
+    for (const auto& b : segments) {
+        if (!std::all_of(b.begin(), b.end(), [](const Point& p) { return isFinite(p); }))
+            continue;
+        item.points.insert(item.points.end(), b.begin(), b.end());
+        addExtremes(b, item.extent);
+    }
+    if (!item.points.empty())
+        m_items.push_back(std::move(item));
+}
 
 void TikzWriter::polyline(const std::vector<Point>& points, const QColor& color, double widthPt, bool dashed,
                           bool closed)
 {
     if (points.size() < 2)
         return;
-    m_items.push_back({Item::Line, points, color, widthPt, dashed, closed, {}});
-    m_items.back().inset = m_inInset;
+    m_items.push_back({Item::Line, points, color, widthPt, dashed, closed, {}, m_inInset, {}});
 }
 
 void TikzWriter::point(Point p, const QColor& color, const QString& label)
 {
-    m_items.push_back({Item::Dot, {p}, color, 1.0, false, false, label});
-    m_items.back().inset = m_inInset;
+    m_items.push_back({Item::Dot, {p}, color, 1.0, false, false, label, m_inInset, {}});
 }
 
 void TikzWriter::comment(const QString& text)
 {
     QString line = text;
     line.replace(QLatin1Char('\n'), QLatin1Char(' ')).replace(QLatin1Char('\r'), QLatin1Char(' '));
-    m_items.push_back({Item::Comment, {}, {}, 0, false, false, line});
-    m_items.back().inset = m_inInset;
+    m_items.push_back({Item::Comment, {}, {}, 0, false, false, line, m_inInset, {}});
 }
 
 void TikzWriter::beginInset(const QString& title)
@@ -127,7 +170,7 @@ QString TikzWriter::str() const
             continue;
         }
         labels = labels || (item.kind == Item::Dot && !item.text.isEmpty());
-        for (const Point& p : item.points)
+        for (const Point& p : item.kind == Item::Bezier ? item.extent : item.points)
             if (isFinite(p)) {
                 x = {std::min(x.lo, p.x), std::max(x.hi, p.x)};
                 y = {std::min(y.lo, p.y), std::max(y.hi, p.y)};
@@ -219,6 +262,34 @@ QString TikzWriter::str() const
                         parts << at(p);
                 body += parts.join(QStringLiteral(" -- "));
                 body += item.closed ? QStringLiteral(" -- cycle;\n") : QStringLiteral(";\n");
+                break;
+            }
+            case Item::Bezier: {
+                // TikZ bounds a curve by its control points, which may lie far outside it:
+                // the curve is drawn as an overlay, and an invisible rectangle holds what it
+                // covers.
+                double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+                for (const Point& p : item.extent) {
+                    x0 = std::min(x0, p.x);
+                    y0 = std::min(y0, p.y);
+                    x1 = std::max(x1, p.x);
+                    y1 = std::max(y1, p.y);
+                }
+                if (x0 <= x1 && y0 <= y1)
+                    body += QStringLiteral("  \\path %1 rectangle %2;\n").arg(at(Point(x0, y0)), at(Point(x1, y1)));
+                body += QStringLiteral("  \\draw[%1, line width=%2pt%3, overlay] ")
+                            .arg(colourName(item.color), QString::fromStdString(formatSignificant(item.width, 3)),
+                                 item.dashed ? QStringLiteral(", dashed") : QString());
+                QString end; // where the path is, as written: a segment starting there continues it
+                for (std::size_t i = 0; i + 3 < item.points.size(); i += 4) {
+                    const Point* b = &item.points[i];
+                    const QString start = at(b[0]);
+                    if (start != end)
+                        body += (end.isEmpty() ? QString() : QStringLiteral(" ")) + start;
+                    end = at(b[3]);
+                    body += QStringLiteral(" .. controls %1 and %2 .. %3").arg(at(b[1]), at(b[2]), end);
+                }
+                body += QStringLiteral(";\n");
                 break;
             }
             case Item::Dot:

@@ -1,6 +1,6 @@
 #pragma once
 /// \file tikz_writer.h
-/// A TikZ picture for LaTeX slides (docs/tabs.md): polylines, points and labels that a tab
+/// A TikZ picture for LaTeX slides (docs/tabs.md): polylines, cubic Bézier paths, points and labels that a tab
 /// adds in model coordinates; str() lays them out at the size TikzOptions asks for (the
 /// width, labels included, and at most the height), with optional axes and grid, and writes
 /// them in centimetres, always with a decimal point (docs/numbers-and-locales.md).
@@ -14,6 +14,7 @@
 #include <QColor>
 #include <QString>
 
+#include <array>
 #include <vector>
 
 namespace granota::ui {
@@ -24,6 +25,12 @@ public:
 
     void polyline(const std::vector<Point>& points, const QColor& color, double widthPt = 1.0, bool dashed = false,
                   bool closed = false);
+    /// Cubic Bézier segments b_0..b_3 as one path `(b_0) .. controls (b_1) and (b_2) .. (b_3)`,
+    /// each segment continuing from the previous one's end (a new start where it does not
+    /// meet it). The picture's extent is the curve's (its extreme points), not the control
+    /// polygon's. Segments with a point that is not finite are left out.
+    void bezierSegments(const std::vector<std::array<Point, 4>>& segments, const QColor& color, double widthPt = 1.0,
+                        bool dashed = false);
     /// A dot, labelled above right by `label`, which is TeX math ("P_{0}", without $).
     void point(Point p, const QColor& color, const QString& label = QString());
     void comment(const QString& text);
@@ -41,13 +48,14 @@ public:
 
 private:
     struct Item {
-        enum Kind { Line, Dot, Comment } kind;
-        std::vector<Point> points;
+        enum Kind { Line, Dot, Comment, Bezier } kind;
+        std::vector<Point> points;  ///< Bezier: four per segment, b_0..b_3
         QColor color;
         double width = 1.0;
         bool dashed = false, closed = false;
         QString text;
         bool inset = false;
+        std::vector<Point> extent;  ///< Bezier: the points the picture must hold
     };
     TikzOptions m_options;
     std::vector<Item> m_items;

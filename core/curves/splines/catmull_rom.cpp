@@ -147,6 +147,30 @@ Expected<std::vector<Vec2<Polynomial<double>>>> catmullRomSegments(const std::ve
     return segments;
 }
 
+std::vector<double> catmullRomIntervals(const std::vector<Point>& q, CatmullRomMode mode, double alpha)
+{
+    if (!(alpha >= 0.0 && alpha <= 1.0))
+        return {};
+    for (const Point& p : q)
+        if (!isFinite(p))
+            return {};
+    const auto quads = catmullRomQuadruples(q.size(), mode);
+    if (!quads)
+        return {};
+    // Segment i runs from q_i to q_{i+1} (mod n + 1 for the closing one), as in catmullRomSegments().
+    std::vector<double> h;
+    h.reserve(quads->size());
+    for (std::size_t i = 0; i < quads->size(); ++i) {
+        if (alpha == 0.0) {
+            h.push_back(1.0);
+            continue;
+        }
+        const double length = norm(q[(i + 1) % q.size()] - q[i]);
+        h.push_back(length > 0.0 ? std::pow(length, alpha) : 0.0);
+    }
+    return h;
+}
+
 std::vector<Point> sampleSegments(const std::vector<Vec2<Polynomial<double>>>& segments, int samplesPerSegment)
 {
     assert(samplesPerSegment >= 2);

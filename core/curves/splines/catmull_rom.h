@@ -166,6 +166,16 @@ catmullRomSegments(const std::vector<Vec2<Rational>>&, const Rational&, CatmullR
 Expected<std::vector<Vec2<Polynomial<double>>>> catmullRomSegments(const std::vector<Point>& q, double tau,
                                                                    CatmullRomMode mode, double alpha);
 
+/// The knot spacing of the curve above, one h_i per segment in the order of its segments:
+/// segment i covers an interval of length h_i of the curve's global parameter u, so that
+/// s = (u − u_i)/h_i; the segments join with equal derivatives in u (C¹), which the local
+/// tangents, parallel but of unequal length (G¹), hide (knot_continuity.h takes these h_i).
+/// h_i = |q_{i+1} − q_i|^α (the closing segment of a closed curve: |q_0 − q_n|^α), all 1 for
+/// α = 0 (the thesis's uniform spacing), and 0 where q_{i+1} = q_i (that segment is a single
+/// point, whatever its length in u). Empty where catmullRomSegments() refuses the points
+/// (too few for the mode, α outside [0, 1], a point not finite).
+std::vector<double> catmullRomIntervals(const std::vector<Point>& q, CatmullRomMode mode, double alpha);
+
 /// `samplesPerSegment` points of each segment at s = j/(samplesPerSegment − 1), both ends
 /// included (so a join appears twice: at the end of one segment and the start of the
 /// next), segments in order. samplesPerSegment ≥ 2. The Matlab `SegmentCatmullRom` with
