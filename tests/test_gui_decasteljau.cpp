@@ -1294,13 +1294,50 @@ private slots:
         QCOMPARE(lines[0], QStringLiteral("i,x,y"));
         QCOMPARE(lines[1], QStringLiteral("0,2,3"));
         QCOMPARE(lines[6], QStringLiteral("t,x,y"));
-        QCOMPARE(lines.size(), 1 + 5 + 1 + 11 + 2);
         QCOMPARE(lines[17], QStringLiteral("1,-7,-2"));
         QCOMPARE(lines[18], QStringLiteral("t,arc_length,length,curvature,radius"));
+        QCOMPARE(lines[20], QStringLiteral("feature,t,x,y"));
+        for (int i = 21; i < lines.size(); ++i) // Ex 2.2's quartic has extrema (csvListsTheFeatures)
+            QVERIFY(QRegularExpression(QStringLiteral("^(extremum_x|extremum_y|inflection|cusp),[^,]+,[^,]+,[^,]+$"))
+                        .match(lines[i]).hasMatch());
+        QVERIFY(lines.size() > 21);
         const QString tex = tab.tikz();
         QVERIFY(tex.contains(QStringLiteral("\\begin{tikzpicture}")));
         QVERIFY(tex.contains(QStringLiteral("P_{4}")));
         QVERIFY(!tex.contains(QStringLiteral("nan")));
+    }
+
+    // The CSV lists the curve's features with their points, drawn or not: the inflections
+    // of (0,0),(1,1/4),(0,1),(1,0) at t = 1/2 and 4/5, the cusp of (0,0),(1,1),(0,1),(1,0)
+    // at t = 1/2, where c = (1/2, 3/4).
+    void csvListsTheFeatures()
+    {
+        DeCasteljauTab tab;
+        tab.pointEditor()->setPoints({{0, 0}, {1, 0.25}, {0, 1}, {1, 0}}, QStringLiteral("test"));
+        QVERIFY(!tab.csv().contains(QStringLiteral("cusp,")));
+        QList<double> inflections;
+        for (const QString& line : tab.csv().split(QLatin1Char('\n')))
+            if (line.startsWith(QStringLiteral("inflection,"))) {
+                const QStringList cells = line.split(QLatin1Char(','));
+                QCOMPARE(cells.size(), 4);
+                const double t = cells[1].toDouble();
+                inflections << t;
+                const double u = 1 - t; // c(t) by the Bernstein form of Def 2.6
+                QVERIFY(std::fabs(cells[2].toDouble() - (3 * u * u * t + t * t * t)) < 1e-12);
+                QVERIFY(std::fabs(cells[3].toDouble() - (0.75 * u * u * t + 3 * u * t * t)) < 1e-12);
+            }
+        QCOMPARE(inflections.size(), 2);
+        QVERIFY(std::fabs(inflections[0] - 0.5) < 1e-12);
+        QVERIFY(std::fabs(inflections[1] - 0.8) < 1e-12);
+
+        tab.pointEditor()->setPoints({{0, 0}, {1, 1}, {0, 1}, {1, 0}}, QStringLiteral("test"));
+        const QStringList lines = tab.csv().split(QLatin1Char('\n'));
+        const auto cusp = std::find_if(lines.begin(), lines.end(), [](const QString& l) { return l.startsWith(QStringLiteral("cusp,")); });
+        QVERIFY(cusp != lines.end());
+        const QStringList cells = cusp->split(QLatin1Char(','));
+        QVERIFY(std::fabs(cells[1].toDouble() - 0.5) < 1e-9);
+        QVERIFY(std::fabs(cells[2].toDouble() - 0.5) < 1e-9);
+        QVERIFY(std::fabs(cells[3].toDouble() - 0.75) < 1e-9);
     }
 
     // Issue 14, item 15: Ex 2.2 exported as TikZ fits a beamer frame (text 10.80 cm wide; at

@@ -3,6 +3,8 @@
 
 #include "core/base/math_constants.h"
 #include "core/curves/bezier/bernstein_properties.h"
+#include "core/curves/bezier/curve_features.h"
+#include "core/curves/bezier/de_casteljau.h"
 #include "core/curves/bezier/degree_elevation.h"
 #include "core/curves/bezier/hodograph.h"
 #include "core/exact/polynomial.h"
@@ -1428,6 +1430,23 @@ QString DeCasteljauTab::csv() const
     out += QStringLiteral("\nt,arc_length,length,curvature,radius\n");
     out += QStringLiteral("%1,%2,%3,%4,%5\n")
                .arg(f(m_t), f(arcLengthAtT()), f(totalLength()), opt(m_curvature.curvature), opt(m_curvature.radius));
+    // The features of the curve (curve_features.h), whether or not they are drawn: each t
+    // with its point, ascending within each kind.
+    out += QStringLiteral("\nfeature,t,x,y\n");
+    const bool finite = !points.empty() && std::all_of(points.begin(), points.end(), [](const Point& q) { return isFinite(q); });
+    if (finite) {
+        const CurveFeatures features = m_showBox || m_showFeatures ? m_features : curveFeatures(points);
+        const auto rows = [&](const char* kind, const std::vector<double>& ts) {
+            for (double t : ts) {
+                const Point c = deCasteljauPoint(points, t);
+                out += QStringLiteral("%1,%2,%3,%4\n").arg(QLatin1String(kind), f(t), f(c.x), f(c.y));
+            }
+        };
+        rows("extremum_x", features.extremaX);
+        rows("extremum_y", features.extremaY);
+        rows("inflection", features.inflections);
+        rows("cusp", features.cusps);
+    }
     return out;
 }
 
