@@ -194,6 +194,28 @@ private slots:
         QVERIFY(text.contains(QStringLiteral("3 - 1/2 t - 7/2 t^2 + 3t^3")));
     }
 
+    // The comparison of §2.3 gives the order in the knot parameter, as the knot table does:
+    // a centripetal curve is C¹ there (its local tangents are only parallel), a uniform one
+    // too; neither is C².
+    void smoothnessComparedIsInTheKnotParameter_data()
+    {
+        QTest::addColumn<int>("spacing");
+        QTest::newRow("uniform") << static_cast<int>(CatmullRomSpacing::Uniform);
+        QTest::newRow("centripetal") << static_cast<int>(CatmullRomSpacing::Centripetal);
+        QTest::newRow("chordal") << static_cast<int>(CatmullRomSpacing::Chordal);
+    }
+    void smoothnessComparedIsInTheKnotParameter()
+    {
+        QFETCH(int, spacing);
+        CatmullRomTab tab;
+        tab.pointEditor()->setPoints({{0, 0}, {1, 0}, {5, 2}, {6, 6}, {9, 7}}, QStringLiteral("test"));
+        tab.setSpacing(static_cast<CatmullRomSpacing>(spacing));
+        tab.setBezierVisible(true);
+        const QString text = tab.exactPanel()->plainText();
+        QVERIFY2(text.contains(QStringLiteral("C^1 at the joins (checked)")), qPrintable(text));
+        QVERIFY(!text.contains(QStringLiteral("C^0 at the joins")));
+    }
+
     void ex21ExposesTheSlip()
     {
         CatmullRomTab tab;

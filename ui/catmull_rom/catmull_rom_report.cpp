@@ -534,6 +534,13 @@ QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRo
     html += ExactPanel::heading(tr("Tangents at the knots (Prop 2.3)"));
     html += para(tr("Catmull-Rom curves are C¹: at every knot c_i′(1) = c_{i+1}′(0) = τ(q_{i+1} − q_{i−1}).")
                      .toHtmlEscaped());
+    // The lowest C order over the knots (2 when there are none: one polynomial, checked up to C²).
+    const auto lowestOrder = [](const auto& knots) {
+        int order = 2;
+        for (const auto& k : knots)
+            order = std::min(order, k.parametricOrder());
+        return order;
+    };
     int selectedOrder = -1;
     for (std::size_t i = 0; i < settings.taus.size(); ++i) {
         const Rational& tau = settings.taus[i];
@@ -545,11 +552,12 @@ QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRo
                 continue;
             html += tangentSection(*segs, tau, settings.ends, count, true, table);
             if (table)
-                selectedOrder = checkSegmentJoins(*segs, 2, closed).continuityOrder();
+                selectedOrder = lowestOrder(knotContinuity(*segs, {}, closed));
         } else if (i < scene.curves.size() && scene.curves[i].error.isEmpty()) {
             html += tangentSection(scene.curves[i].segments, tau, settings.ends, count, uniform, table);
-            if (table)
-                selectedOrder = checkSegmentJoins(scene.curves[i].segments, 2, closed, kTolerance).continuityOrder();
+            if (table) // in the knot parameter, as the knot table above: centripetal and chordal curves are C¹
+                selectedOrder = lowestOrder(knotContinuity(scene.curves[i].segments, scene.curves[i].intervals, closed,
+                                                           kTolerance));
         }
     }
 
