@@ -368,6 +368,34 @@ private slots:
         QCOMPARE(tab().undoStack()->count(), 1);
     }
 
+    void radiusFollowsTheFrameUntilSet()
+    {
+        // Annex II's r = |height/6|: the panel shows the derived value, a new height moves it,
+        // a number typed in holds, and undo gives the rule back.
+        QVERIFY(tab().setScene("frog", nullptr));
+        tab().findChild<QPushButton*>("frogPause")->click();
+        QDoubleSpinBox* radius = tab().parametersPanel()->spinBox("radius");
+        QDoubleSpinBox* height = tab().parametersPanel()->spinBox("height");
+        QDoubleSpinBox* cy = tab().parametersPanel()->spinBox("center", 1);
+        QVERIFY(radius && height && cy);
+        QCOMPARE(radius->value(), 120.0);
+        const int before = tab().undoStack()->count();
+        height->setValue(600);
+        QCOMPARE(tab().scene().params.radius, 100.0);
+        QCOMPARE(radius->value(), 100.0);
+        QCOMPARE(cy->value(), 300.0);
+        radius->setValue(90);
+        QVERIFY(!tab().scene().radiusFromFrame);
+        height->setValue(720);
+        QCOMPARE(tab().scene().params.radius, 90.0);
+        QCOMPARE(cy->value(), 360.0);
+        while (tab().undoStack()->count() > before && tab().undoStack()->canUndo())
+            tab().undoStack()->undo();
+        QVERIFY(tab().scene().radiusFromFrame);
+        QCOMPARE(tab().scene().params.radius, 120.0);
+        QCOMPARE(radius->value(), 120.0);
+    }
+
     void extremeValuesStayFinite_data()
     {
         QTest::addColumn<QString>("key");

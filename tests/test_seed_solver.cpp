@@ -3,6 +3,9 @@
 // on extreme settings (docs/extreme-cases.md), and for the interaction of Annex II (grab, respawn).
 #include "core/softbody/seed/seed_frog.h"
 #include "core/softbody/seed/seed_trace.h"
+#include "core/softbody/scenes/scene.h"
+#include "core/softbody/simulation.h"
+#include "core/softbody/simulation_trace.h"
 
 #include <QtTest>
 
@@ -278,6 +281,97 @@ private slots:
         for (std::size_t s = 0; s < states.size(); ++s)
             for (std::size_t k = 0; k < states[s].size(); ++k)
                 QCOMPARE(float(parsed->rows[s][k + 1]), float(states[s][k]));
+    }
+
+    // --- The frog scene on the seed solver is SeedFrog.java (issue 16) -------------------
+
+    void frogSceneIsTheSeed_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<QString>("keys");
+        // Made with `java SeedFrog trace 200 <keys>` (reference/SeedFrog.java), which derives
+        // r = |height/6| and the centre (width/2, height/2) from the frame as Annex II does.
+        // The scene gets the same keys through --set, so every row goes through the frog
+        // scene's file, applySetting, Simulation and the CLI's trace writer.
+        QTest::newRow("height 600: r = 100") << "seed_trace_height600.csv" << "height=600";
+        QTest::newRow("900 x 500 frame") << "seed_trace_frame900x500.csv" << "width=900 height=500";
+        QTest::newRow("gravity with an x part") << "seed_trace_gravity_x.csv" << "gravity=0.6,0.75";
+        QTest::newRow("friction per axis") << "seed_trace_friction_axes.csv" << "friction=0.8,0.97";
+        QTest::newRow("spring length 20") << "seed_trace_spring20.csv" << "spring_length=20";
+        QTest::newRow("the thesis's constants") << "seed_frog_trace.csv" << "";
+    }
+    void frogSceneIsTheSeed()
+    {
+        QFETCH(QString, file);
+        QFETCH(QString, keys);
+        QFile f(dataPath(qPrintable(file)));
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QList<QByteArray> seed = f.readAll().split('\n');
+        QVERIFY(seed.size() > 201);
+        SceneSpec scene = loadScene("frog").value();
+        for (const QString& kv : keys.split(QLatin1Char(' '), Qt::SkipEmptyParts))
+            QVERIFY(applySetting(scene, kv.toStdString()).ok());
+        auto sim = Simulation::create(scene, SolverKind::Seed).value();
+        QCOMPARE(QByteArray::fromStdString(simulationTraceHeader(*sim)), seed[0]);
+        for (int s = 0; s <= 200; ++s) {
+            if (s > 0)
+                sim->step();
+            // The whole row as the seed prints it: bit for bit, not within a tolerance.
+            QCOMPARE(QByteArray::fromStdString(simulationTraceRow(*sim)), seed[s + 1]);
+        }
+    }
+
+    void frameDerivedRadiusAndCentre()
+    {
+        SceneSpec scene = loadScene("frog").value();
+        QVERIFY(scene.radiusFromFrame && scene.centerFromFrame);
+        QCOMPARE(scene.params.radius, 120.0);
+        QCOMPARE(scene.params.center, Point(640, 360));
+        QVERIFY(applySetting(scene, "height=605").ok()); // 605/6 = 100 in whole numbers
+        QCOMPARE(scene.params.radius, 100.0);
+        QCOMPARE(scene.params.center, Point(640, 302.5));
+        QVERIFY(applySetting(scene, "width=901").ok());
+        QCOMPARE(scene.params.center, Point(450.5, 302.5));
+        // The file keeps the rule, not the number; reading it back derives again.
+        const Json doc = sceneToJson(scene);
+        QCOMPARE(QString::fromStdString(doc.find("params")->find("radius")->asString().value_or("")), QStringLiteral("frame"));
+        const SceneSpec back = parseScene(doc).value();
+        QCOMPARE(back.params.radius, 100.0);
+        QVERIFY(back.radiusFromFrame);
+        // A number set once is the scene's own from then on.
+        QVERIFY(applySetting(scene, "radius=90").ok());
+        QVERIFY(applySetting(scene, "height=300").ok());
+        QCOMPARE(scene.params.radius, 90.0);
+        QVERIFY(!scene.radiusFromFrame && scene.centerFromFrame);
+        QCOMPARE(sceneToJson(scene).find("params")->find("radius")->asNumber().value_or(0), 90.0);
+        QVERIFY(!parseScene(Json::parse(R"({"name":"x","model":"body","params":{"radius":"half"}})").value()).ok());
+    }
+
+    void legsLeaveTheFrameAsInAnnexII()
+    {
+        // With gravity pulling right the frog lies on the right wall, and a back leg reaches
+        // past it, as SeedFrog.java's own trace shows. The joints are kept in only where a
+        // scene names `legs-in-frame`, and then never past the wall.
+        SceneSpec scene = loadScene("frog").value();
+        QVERIFY(applySetting(scene, "gravity=0.6,0.75").ok());
+        QVERIFY(!scene.has("legs-in-frame"));
+        const auto furthest = [](const SceneSpec& sc) {
+            auto sim = Simulation::create(sc, SolverKind::Seed).value();
+            double x = 0;
+            std::vector<Point> joints;
+            for (int s = 0; s < 200; ++s) {
+                sim->step();
+                for (int c = 0; c < sim->chainCount(); ++c) {
+                    sim->chainJoints(c, joints);
+                    for (const Point& p : joints)
+                        x = std::max(x, p.x);
+                }
+            }
+            return x;
+        };
+        QVERIFY2(furthest(scene) > scene.params.width - 1 + 5, qPrintable(QString::number(furthest(scene))));
+        scene.components.push_back("legs-in-frame");
+        QCOMPARE(furthest(scene), scene.params.width - 1);
     }
 
     // --- The trace format -------------------------------------------------------------

@@ -2375,13 +2375,13 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="319" />
-            <source>r: distance from the centre to each vertex of the starting polygon (§4.1).</source>
-            <translation>r: distància del centre a cada vèrtex del polígon inicial (§4.1).</translation>
+            <source>r: distance from the centre to each vertex of the starting polygon (§4.1). Annex II takes r = |height/6| from the frame, and so does the scene until a value is set here.</source>
+            <translation>r: distància del centre a cada vèrtex del polígon inicial (§4.1). L’annex II pren r = |height/6| del marc, i l’escena també, fins que s’hi posa un valor.</translation>
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="321" />
-            <source>(c₁, c₂): where the first body starts, in pixels of the frame (y grows downwards).</source>
-            <translation>(c₁, c₂): on comença el primer cos, en píxels del marc (la y creix cap avall).</translation>
+            <source>(c₁, c₂): where the first body starts, in pixels of the frame (y grows downwards). Annex II starts at the frame’s centre, and so does the scene until a value is set here.</source>
+            <translation>(c₁, c₂): on comença el primer cos, en píxels del marc (la y creix cap avall). L’annex II comença al centre del marc, i l’escena també, fins que s’hi posa un valor.</translation>
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="323" />

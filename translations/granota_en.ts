@@ -2375,13 +2375,13 @@ on each change would slow the window.</translation>
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="319" />
-            <source>r: distance from the centre to each vertex of the starting polygon (§4.1).</source>
-            <translation>r: distance from the centre to each vertex of the starting polygon (§4.1).</translation>
+            <source>r: distance from the centre to each vertex of the starting polygon (§4.1). Annex II takes r = |height/6| from the frame, and so does the scene until a value is set here.</source>
+            <translation>r: distance from the centre to each vertex of the starting polygon (§4.1). Annex II takes r = |height/6| from the frame, and so does the scene until a value is set here.</translation>
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="321" />
-            <source>(c₁, c₂): where the first body starts, in pixels of the frame (y grows downwards).</source>
-            <translation>(c₁, c₂): where the first body starts, in pixels of the frame (y grows downwards).</translation>
+            <source>(c₁, c₂): where the first body starts, in pixels of the frame (y grows downwards). Annex II starts at the frame’s centre, and so does the scene until a value is set here.</source>
+            <translation>(c₁, c₂): where the first body starts, in pixels of the frame (y grows downwards). Annex II starts at the frame’s centre, and so does the scene until a value is set here.</translation>
         </message>
         <message>
             <location filename="../ui/frog_parameters_panel.cpp" line="323" />

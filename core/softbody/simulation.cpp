@@ -32,7 +32,7 @@ Expected<std::unique_ptr<Simulation>> Simulation::create(const SceneSpec& scene,
 }
 
 namespace {
-template <class F> bool allPoints(const Simulation& s, F pred)
+template <class F> bool allPoints(const Simulation& s, F pred, bool joints = true)
 {
     std::vector<Point> pts;
     for (int i = 0; i < s.bodyCount(); ++i) {
@@ -41,7 +41,7 @@ template <class F> bool allPoints(const Simulation& s, F pred)
             if (!pred(p))
                 return false;
     }
-    for (int i = 0; i < s.chainCount(); ++i) {
+    for (int i = 0; joints && i < s.chainCount(); ++i) {
         s.chainJoints(i, pts);
         for (const Point& p : pts)
             if (!pred(p))
@@ -77,7 +77,9 @@ bool Simulation::finite() const
 bool Simulation::inBounds(double slack) const
 {
     const double w = m_scene.params.width - 1, h = m_scene.params.height - 1;
-    return allPoints(*this, [&](const Point& p) { return p.x >= -slack && p.x <= w + slack && p.y >= -slack && p.y <= h + slack; });
+    return allPoints(
+        *this, [&](const Point& p) { return p.x >= -slack && p.x <= w + slack && p.y >= -slack && p.y <= h + slack; },
+        jointsKeptInFrame());
 }
 
 bool seedRoundsShapes(const SceneSpec& scene) { return !scene.shapes.empty(); }

@@ -87,10 +87,13 @@ public:
     /// other scene. The Frog tab's radius field shows it.
     virtual std::optional<double> mouseRadius() const { return std::nullopt; }
 
-    /// Every coordinate finite, every body vertex and joint inside [0, W−1] × [0, H−1]
-    /// (within `slack` px).
+    /// Every coordinate finite, every body vertex, and every joint where jointsKeptInFrame(),
+    /// inside [0, W−1] × [0, H−1] (within `slack` px).
     bool finite() const;
     bool inBounds(double slack = 1e-6) const;
+    /// False for the seed's frog, whose legs may reach past the frame as in Annex II
+    /// (only the wrists are kept above the floor) unless the scene names `legs-in-frame`.
+    virtual bool jointsKeptInFrame() const { return true; }
 
 protected:
     Simulation(SceneSpec scene, SolverKind solver) : m_scene(std::move(scene)), m_solver(solver) {}

@@ -174,8 +174,14 @@ void FrogParametersPanel::setValues(const SceneSpec& scene)
     m_updating = true;
     const Json doc = sceneToJson(scene);
     m_values = toQJson(*doc.find("params")).toObject();
+    SceneSpec values = scene; // the accessors take a SceneSpec&; only read
     for (Field& f : m_fields) {
         QJsonValue v = m_values.value(f.key);
+        if (v.isString()) { // "frame": derived from the frame as Annex II does (frame_derived.h)
+            const SceneParameter& p = parameter(f.key);
+            v = p.type == ParameterType::Pair ? QJsonValue(QJsonArray{p.pairIn(values).x, p.pairIn(values).y})
+                                              : QJsonValue(p.numberIn(values));
+        }
         if (parameter(f.key).type == ParameterType::Chain)
             v = v.toArray().at(f.sub.toInt());
         else if (!f.sub.isEmpty())

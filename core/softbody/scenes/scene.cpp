@@ -2,6 +2,7 @@
 
 #include "core/base/display_text.h"
 #include "core/exact/rational.h"
+#include "core/softbody/scenes/frame_derived.h"
 #include "core/softbody/scenes/scene_files.h"
 #include "core/base/number_format.h"
 #include "core/softbody/scenes/scene_layout.h"
@@ -169,16 +170,32 @@ Expected<void> setParam(SceneSpec& s, const std::string& key, const Json& v)
         param->integerIn(s) = *n;
         return {};
     }
-    case ParameterType::Number:
+    case ParameterType::Number: {
+        const bool radius = key == "radius";
+        if (radius && v.asString() == kFromFrame) {
+            s.radiusFromFrame = true;
+            return {};
+        }
         if (!v.isNumber())
-            return bad(s.name, key + " must be a number");
+            return bad(s.name, key + (radius ? " must be a number or \"frame\" (|height/6|, as Annex II)" : " must be a number"));
         param->numberIn(s) = *v.asNumber();
+        if (radius)
+            s.radiusFromFrame = false;
         return {};
+    }
     case ParameterType::Pair: {
+        const bool center = key == "center";
+        if (center && v.asString() == kFromFrame) {
+            s.centerFromFrame = true;
+            return {};
+        }
         auto q = pointOf(v);
         if (!q)
-            return bad(s.name, key + " must be a pair x,y");
+            return bad(s.name, key + (center ? " must be a pair x,y or \"frame\" (the frame's centre, as Annex II)"
+                                             : " must be a pair x,y"));
         param->pairIn(s) = *q;
+        if (center)
+            s.centerFromFrame = false;
         return {};
     }
     case ParameterType::Choice: {
@@ -415,6 +432,7 @@ Expected<SceneSpec> parseScene(const Json& doc)
             return ok.error();
         s.paramKeys.push_back(key);
     }
+    deriveFromFrame(s);
     auto ok = validate(s);
     if (!ok)
         return ok.error();
@@ -463,6 +481,7 @@ Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
     auto ok = setParam(changed, key, json);
     if (!ok)
         return ok;
+    deriveFromFrame(changed);
     ok = validate(changed);
     if (!ok)
         return ok;
@@ -499,10 +518,16 @@ Json sceneToJson(const SceneSpec& s)
             params.set(key, param->integerIn(values));
             break;
         case ParameterType::Number:
-            params.set(key, param->numberIn(values));
+            if (key == "radius" && s.radiusFromFrame)
+                params.set(key, kFromFrame);
+            else
+                params.set(key, param->numberIn(values));
             break;
         case ParameterType::Pair:
-            params.set(key, pointJson(param->pairIn(values)));
+            if (key == "center" && s.centerFromFrame)
+                params.set(key, kFromFrame);
+            else
+                params.set(key, pointJson(param->pairIn(values)));
             break;
         case ParameterType::Choice:
             for (const GrabChoice& c : grabChoices())

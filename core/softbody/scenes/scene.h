@@ -53,6 +53,12 @@ struct SceneSpec {
     double chainShoulderMin = 0, chainShoulderMax = 0, chainElbowMin = 0, chainElbowMax = 0;
     std::vector<ObstacleSpec> obstacles;
     std::vector<ShapeSpec> shapes;
+    /// Annex II derives the body from the frame: r = |height/6| in integer division (l. 175)
+    /// and the centre (width/2, height/2) (l. 15, as SeedFrog.java divides). A scene file
+    /// asks for that with "radius": "frame" and "center": "frame"; params then holds the
+    /// derived value, which follows width and height until a number is set.
+    bool radiusFromFrame = false;
+    bool centerFromFrame = false;
 
     bool has(const std::string& component) const;
     bool hasParam(const std::string& key) const;

@@ -83,8 +83,8 @@ const std::vector<SceneParameter>& sceneParameters()
         {"center", T::Pair, "(c₁, c₂)", kPx, 0, 0, {kSymmetric, 0, 1e6, 1, 10}, at(&FrogParams::center),
          QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Centre (x, y)"),
          QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel",
-                           "(c₁, c₂): where the first body starts, in "
-                           "pixels of the frame (y grows downwards)."), kNoNote},
+                           "(c₁, c₂): where the first body starts, in pixels of the frame (y grows downwards). Annex II "
+                           "starts at the frame’s centre, and so does the scene until a value is set here."), kNoNote},
         {"area_factor", T::Number, "C (reescala)", kNoUnit, 0, 0, {kSymmetric, 0, 1e6, 3, 0.01}, at(&FrogParams::areaFactor),
          QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Area factor C"),
          QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel",
@@ -108,8 +108,8 @@ const std::vector<SceneParameter>& sceneParameters()
         {"radius", T::Number, "r", kPx, 0, 0, {kFromMin, 0, 1e6, 1, 5}, at(&FrogParams::radius),
          QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Radius r"),
          QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel",
-                           "r: distance from the centre to each "
-                           "vertex of the starting polygon (§4.1)."), kNoNote},
+                           "r: distance from the centre to each vertex of the starting polygon (§4.1). Annex II takes "
+                           "r = |height/6| from the frame, and so does the scene until a value is set here."), kNoNote},
         {"width", T::Number, "", kPx, 0, 0, {kFromMin, 1, 100000, 0, 10}, at(&FrogParams::width),
          QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel", "Frame width"),
          QT_TRANSLATE_NOOP("granota::ui::FrogParametersPanel",

@@ -37,7 +37,8 @@ struct SeedComponents {
     bool angleLimits = true; ///< the acos angle clamps of the legs (§4.15)
     /// Beyond the seed: keep the legs' joints in the frame too (the seed keeps only the
     /// wrist above the floor, so with some constants a leg reaches past the side of the
-    /// window). Off by default, so that the seed's traces are reproduced exactly.
+    /// window). Only a scene naming the component `legs-in-frame` turns it on; the frog
+    /// scene does not, so that the seed's traces are reproduced exactly.
     bool clampLegs = false;
     /// Which vertices the grab holds (§4.6 all, §4.7 those above the mouse, Annex II's
     /// fixed anchors, which also get the extra anchor clamps of the final program).

@@ -25,7 +25,7 @@ SeedComponents componentsOf(const SceneSpec& s)
     c.legs = s.has("legs");
     c.grab = s.has("grab");
     c.angleLimits = s.has("angle-limits");
-    c.clampLegs = s.has("bounds");
+    c.clampLegs = s.has("legs-in-frame"); // Annex II keeps only the wrists above the floor
     c.grabMode = s.grab;
     return c;
 }
@@ -78,6 +78,7 @@ public:
     }
 
     int bodyCount() const override { return m_frog ? 1 : static_cast<int>(m_bodies.size()); }
+    bool jointsKeptInFrame() const override { return !m_frog || componentsOf(scene()).clampLegs; }
     // Written into the caller's vector (its capacity reused): no allocation per frame.
     void bodyVertices(int i, std::vector<Point>& out) const override
     {
