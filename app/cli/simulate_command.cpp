@@ -5,6 +5,7 @@
 
 #include "core/base/display_text.h"
 #include "core/base/number_format.h"
+#include "core/softbody/simulation_series.h"
 #include "core/softbody/simulation_trace.h"
 
 #include <cerrno>
@@ -20,6 +21,8 @@ constexpr int kMaxSteps = 10000000;
 /// of the stable solver costs about 250 ns a vertex (5000 bodies of 10 sides: 12 ms), the
 /// seed's less, so at most a few minutes. The frog's 600 default steps are 10 800.
 constexpr long long kMaxSimulatedPoints = 1000000000;
+/// The most rows `--series` writes: some 150 bytes a row, so at most about 300 MB.
+constexpr long long kMaxSeriesRows = 2000000;
 
 Expected<CommandOutput> run(const Arguments& args)
 {
@@ -52,6 +55,25 @@ Expected<CommandOutput> run(const Arguments& args)
             return writeError(traceName, errno);
         trace << simulationTraceHeader(s) << '\n' << simulationTraceRow(s) << '\n';
     }
+    // The series (docs/plots-over-time.md): one row a step, the state before the first too.
+    std::ofstream series;
+    const auto seriesPath = args.value("series");
+    const std::string seriesName = "the series to " + quotedForDisplay(seriesPath.value_or(""));
+    SeriesRecorder recorder(1);
+    if (seriesPath) {
+        if (*steps + 1LL > kMaxSeriesRows)
+            return makeError(ErrorCode::OutOfRange, "--series would write " + std::to_string(*steps + 1LL) +
+                                                        " rows (steps + 1), more than " + std::to_string(kMaxSeriesRows) +
+                                                        ": lower --steps");
+        if (tracePath && *seriesPath == *tracePath)
+            return makeError(ErrorCode::InvalidInput, "--series and --trace name the same file");
+        errno = 0;
+        series.open(*seriesPath, std::ios::binary | std::ios::trunc);
+        if (!series)
+            return writeError(seriesName, errno);
+        const SeriesSample& first = recorder.record(s);
+        series << seriesCsvHeader(recorder.phaseLinks()) << '\n' << seriesCsvRow(first, recorder.phaseLinks()) << '\n';
+    }
     for (int i = 0; i < *steps; ++i) {
         s.step();
         if (trace.is_open()) {
@@ -59,13 +81,21 @@ Expected<CommandOutput> run(const Arguments& args)
             if (!trace) // a full disk: stop at once, with the reason
                 return writeError(traceName, errno);
         }
+        if (series.is_open()) {
+            series << seriesCsvRow(recorder.record(s), recorder.phaseLinks()) << '\n';
+            if (!series)
+                return writeError(seriesName, errno);
+        }
     }
-    if (trace.is_open() && !trace.flush())
-        return writeError(traceName, errno);
-    if (trace.is_open()) {
-        trace.close();
-        if (!trace)
-            return writeError(traceName, errno);
+    for (auto* file : {&trace, &series}) {
+        if (!file->is_open())
+            continue;
+        const std::string& name = file == &trace ? traceName : seriesName;
+        if (!file->flush())
+            return writeError(name, errno);
+        file->close();
+        if (!*file)
+            return writeError(name, errno);
     }
 
     CommandOutput out;
@@ -107,7 +137,10 @@ Expected<CommandOutput> run(const Arguments& args)
         .set("max_stretch", r.maxStretch)
         .set("constraint_force", r.constraintForce)
         .set("kinetic_energy", r.kineticEnergy)
-        .set("potential_energy", r.potentialEnergy);
+        .set("potential_energy", r.potentialEnergy)
+        .set("elastic_energy", r.elasticEnergy ? Json(*r.elasticEnergy) : Json())
+        .set("damping_loss", r.dampingLoss ? Json(*r.dampingLoss) : Json())
+        .set("contacts", r.contacts);
     const bool finite = s.finite(), inBounds = s.inBounds();
     txt << "area error " << formatDouble(r.areaErrorPercent) << " %, max stretch " << formatDouble(r.maxStretch)
         << ", kinetic energy " << formatDouble(r.kineticEnergy) << "\n";
@@ -129,9 +162,10 @@ Expected<CommandOutput> run(const Arguments& args)
 
 Command simulateCommand()
 {
-    return {"simulate", "--scene NAME [--solver seed|stable] [--steps N] [--set key=value …] [--trace F.csv] [--json]",
-            "run a scene of chapter 4 or §5.2 headless; --trace writes the reference CSV layout",
-            {{"scene", "solver", "steps", "set", "trace"}, {"json"}, {"set"}},
+    return {"simulate", "--scene NAME [--solver seed|stable] [--steps N] [--set key=value …] [--trace F.csv] [--series F.csv] [--json]",
+            "run a scene of chapter 4 or §5.2 headless; --trace writes the reference CSV layout, --series the "
+            "energies, losses, area error, stretch and contacts of every step",
+            {{"scene", "solver", "steps", "set", "trace", "series"}, {"json"}, {"set"}},
             &run};
 }
 

@@ -84,14 +84,28 @@ bool Simulation::inBounds(double slack) const
 
 bool seedRoundsShapes(const SceneSpec& scene) { return !scene.shapes.empty(); }
 
+Point potentialOrigin(Point g, double width, double height)
+{
+    // The edge gravity pulls towards: x = W−1 when g.x > 0, x = 0 when g.x < 0.
+    return Point(g.x > 0 ? width - 1 : 0, g.y > 0 ? height - 1 : 0);
+}
+
 double potentialEnergy(const std::vector<Point>& points, Point g, double width, double height)
 {
-    // Measured from the edge gravity pulls towards: x = W−1 when g.x > 0, x = 0 when g.x < 0.
-    const double ex = g.x > 0 ? width - 1 : 0, ey = g.y > 0 ? height - 1 : 0;
+    const Point e = potentialOrigin(g, width, height);
     double u = 0;
     for (const Point& p : points)
-        u += g.x * (ex - p.x) + g.y * (ey - p.y);
+        u += g.x * (e.x - p.x) + g.y * (e.y - p.y);
     return u;
+}
+
+int pointsOnFrameEdge(const std::vector<Point>& points, double width, double height)
+{
+    int n = 0;
+    for (const Point& p : points)
+        if (!(p.x > 0 && p.x < width - 1 && p.y > 0 && p.y < height - 1))
+            ++n;
+    return n;
 }
 
 } // namespace granota

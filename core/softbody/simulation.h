@@ -28,9 +28,22 @@ struct Readouts {
     double areaErrorPercent = 0;  ///< mean over bodies of 100·(A − A₀)/A₀ (0 when A₀ = 0)
     double maxStretch = 0;        ///< largest |edge length / rest length − 1|
     double constraintForce = 0;   ///< largest constraint force (stable: |λ|/h²; seed: largest correction, px/step²)
-    double kineticEnergy = 0;     ///< Σ ½ |v|², unit masses, px²/step²
-    double potentialEnergy = 0;   ///< Σ g·(height above the frame edge gravity points to), px²/step²
+    double kineticEnergy = 0;     ///< Σ ½ m |v|², px²/step² (the seed: unit masses)
+    double potentialEnergy = 0;   ///< Σ m g·(height above the frame edge gravity points to), px²/step²
+    /// Σ ½ α F² over the compliant constraints (springs, area, bending; F = λ/h²), stable
+    /// solver only: the seed's springs and area are position corrections, not forces, so
+    /// they store no energy one could name (nullopt).
+    std::optional<double> elasticEnergy;
+    /// What damping (the seed's fregament, friction per axis) has taken from the kinetic
+    /// energy since the start, stable solver only (XpbdWorld::dampingLoss).
+    std::optional<double> dampingLoss;
+    /// Contacts now: the stable solver's (XpbdWorld::contactCount); for the seed, the
+    /// points lying on the frame's edge, where its walls hold them.
+    int contacts = 0;
 };
+
+/// Steps per second: one step is one frame of Processing's default 60 frames per second.
+inline constexpr int kStepsPerSecond = 60;
 
 class Simulation {
 public:
@@ -125,5 +138,9 @@ bool seedRoundsShapes(const SceneSpec& scene);
 /// Potential energy of unit masses at `points` under gravity g, measured from the frame
 /// edge that gravity points to (so it is ≥ 0 inside the frame).
 double potentialEnergy(const std::vector<Point>& points, Point gravity, double width, double height);
+/// The point of the frame edge gravity points to, from which potentialEnergy measures.
+Point potentialOrigin(Point gravity, double width, double height);
+/// How many of `points` lie on the frame [0, W−1] × [0, H−1]'s edge (or past it).
+int pointsOnFrameEdge(const std::vector<Point>& points, double width, double height);
 
 } // namespace granota

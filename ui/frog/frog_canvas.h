@@ -52,7 +52,7 @@ public:
     };
 
     /// Frames (and steps) per second, as Processing's default frameRate.
-    static constexpr int kFramesPerSecond = 60;
+    static constexpr int kFramesPerSecond = kStepsPerSecond;
     /// The most counted work (Simulation::workPerStep: points × substeps) stepped in one
     /// frame: 3000 vertices on the stable solver (8 substeps), about 3 ms a step on the
     /// reference machine. A scene whose step is more work steps once every framesPerStep()

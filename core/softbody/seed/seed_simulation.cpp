@@ -168,6 +168,8 @@ public:
         }
         if (scene().has("gravity"))
             r.potentialEnergy = potentialEnergy(all, scene().params.gravity, scene().params.width, scene().params.height);
+        if (scene().has("bounds"))
+            r.contacts = pointsOnFrameEdge(all, scene().params.width, scene().params.height);
         return r;
     }
 
@@ -261,6 +263,8 @@ public:
             joints.erase(joints.begin()); // the clau does not fall
             r.potentialEnergy = potentialEnergy(joints, scene().params.gravity, scene().params.width, scene().params.height);
         }
+        if (scene().has("bounds"))
+            r.contacts = pointsOnFrameEdge(joints, scene().params.width, scene().params.height);
         return r;
     }
 

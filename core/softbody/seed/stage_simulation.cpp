@@ -57,6 +57,8 @@ public:
             r.kineticEnergy += 0.5 * dot(v, v);
         if (scene().has("gravity"))
             r.potentialEnergy = potentialEnergy(x, scene().params.gravity, scene().params.width, scene().params.height);
+        if (scene().has("bounds"))
+            r.contacts = pointsOnFrameEdge(x, scene().params.width, scene().params.height);
         return r;
     }
 

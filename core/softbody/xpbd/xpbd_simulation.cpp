@@ -191,8 +191,13 @@ public:
         for (int c = 0; c < chainCount(); ++c)
             r.constraintForce = std::max(r.constraintForce, m_world.angleLimitTorque(c));
         r.kineticEnergy = m_world.kineticEnergy();
-        std::vector<Point> all = m_world.positions();
-        r.potentialEnergy = potentialEnergy(all, m_world.params().gravity, scene().params.width, scene().params.height);
+        // Σ m g·(e − x) = Σ m g·e − Σ m g·x, with the masses the kinetic energy counts.
+        const Point g = m_world.params().gravity;
+        const Point e = potentialOrigin(g, scene().params.width, scene().params.height);
+        r.potentialEnergy = m_world.gravityEnergy() + m_world.movingMass() * dot(g, e);
+        r.elasticEnergy = m_world.elasticEnergy();
+        r.dampingLoss = m_world.dampingLoss();
+        r.contacts = m_world.contactCount();
         return r;
     }
 

@@ -473,6 +473,7 @@ void XpbdWorld::step()
     const int n = m_params.substeps;
     const double h = m_params.dt / n;
     findContactPairs();
+    m_contactCount = 0;
     for (int s = 0; s < n; ++s)
         solveSubstep(h, double(s + 1) / n);
     updateValidity();
@@ -501,17 +502,21 @@ void XpbdWorld::solveSubstep(double h, double fraction)
     Point* xPrev = m_xPrev.data();
     Point* v = m_v.data();
     const double* w = m_w.data();
+    const Point lost(1 - keep.x * keep.x, 1 - keep.y * keep.y);
+    double dampingLoss = 0; // ×2m
     for (int i = 0; i < np; ++i) {
         xPrev[i] = x[i];
         m_contact[at(i)] = Point();
         if (!(w[i] > 0))
             continue;
+        dampingLoss += (lost.x * v[i].x * v[i].x + lost.y * v[i].y * v[i].y) / w[i];
         Point vi(keep.x * v[i].x + p.gravity.x * h, keep.y * v[i].y + p.gravity.y * h);
         vi.x = std::clamp(vi.x, -vCap, vCap);
         vi.y = std::clamp(vi.y, -vCap, vCap);
         v[i] = vi;
         x[i] += Point(vi.x * h, vi.y * h);
     }
+    m_dampingLoss += 0.5 * dampingLoss;
     placeChainRoots(fraction);
 
     // 2. Constraints, one pass, λ = 0 at the start (Macklin et al. 2019, alg. 1).
@@ -672,10 +677,12 @@ void XpbdWorld::solveSubstep(double h, double fraction)
     // the normal speed becomes −e times the one before the solve; slow hits (below 2|g|h)
     // do not bounce, so that resting contact stays at rest.
     const double slow = 2 * norm(p.gravity) * h;
+    int contacts = static_cast<int>(m_bodyContacts.size());
     for (int i = 0; i < np; ++i) {
         Point vi((x[i].x - xPrev[i].x) / h, (x[i].y - xPrev[i].y) / h);
         const Point n = m_contact[at(i)];
         if (n.x != 0 || n.y != 0) {
+            ++contacts;
             const double before = dot(v[i], n);
             if (before < 0) {
                 const double e = -before > slow ? p.restitution : 0.0;
@@ -686,6 +693,7 @@ void XpbdWorld::solveSubstep(double h, double fraction)
         }
         v[i] = vi;
     }
+    m_contactCount = std::max(m_contactCount, contacts);
     for (const BodyContact& c : m_bodyContacts)
         applyContactFriction(c, v, w, c.friction, h);
     for (int i = 0; i < np; ++i) {
@@ -921,6 +929,16 @@ double XpbdWorld::kineticEnergy() const
             e += 0.5 * dot(m_v[i], m_v[i]) / m_w[i];
     return e;
 }
+
+double XpbdWorld::movingMass() const
+{
+    double m = 0;
+    for (double w : m_w)
+        if (w > 0)
+            m += 1 / w;
+    return m;
+}
+
 
 double XpbdWorld::gravityEnergy() const
 {

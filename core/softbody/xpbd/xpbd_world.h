@@ -153,6 +153,17 @@ public:
     double gravityEnergy() const;             ///< Σ −m g·x (zero at the origin), mass·px²/step²
     double elasticEnergy() const;             ///< Σ ½ α F² (F = λ/h²) over compliant constraints, mass·px²/step²
     double potentialEnergy() const { return gravityEnergy() + elasticEnergy(); }
+    /// Σ m over the particles that move (inverse mass > 0), mass units.
+    double movingMass() const;
+    /// What the damping f^h of the predict step (the seed's fregament) has taken from the
+    /// kinetic energy since the world was made: Σ ½ m ((1 − k_x²) v_x² + (1 − k_y²) v_y²) over
+    /// every substep, k = f^h, mass·px²/step². Exact: the damping is the only thing the
+    /// predict step does to the velocities before gravity is added.
+    double dampingLoss() const { return m_dampingLoss; }
+    /// Contacts of the last step, the most of any of its substeps: particles a wall or an
+    /// obstacle pushed back, and points pushed out of a body (another body's vertices, an
+    /// obstacle's corners).
+    int contactCount() const { return m_contactCount; }
 
 private:
     XpbdWorld() = default;
@@ -194,6 +205,8 @@ private:
 
     XpbdParams m_params;
     long m_steps = 0;
+    double m_dampingLoss = 0;
+    int m_contactCount = 0;
 
     // Particles (structure of arrays).
     std::vector<Point> m_x;

@@ -1,0 +1,79 @@
+#pragma once
+/// \file simulation_series.h
+/// The plots over time of a running scene: one sample per step of its energies, what
+/// damping and the rest took, its area error, largest stretch and contacts, and for the
+/// pendulums each link's angle and angular velocity (the phase plot). The Frog tab's plot
+/// panel draws these samples and exports them; `granota-cli simulate --series F.csv`
+/// writes the same columns (docs/plots-over-time.md).
+
+#include "core/softbody/simulation.h"
+
+#include <cstddef>
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace granota {
+
+/// One row of the series. Energies in mass·px²/step² (the seed: unit masses).
+struct SeriesSample {
+    long step = 0;
+    double kinetic = 0;
+    double gravity = 0;             ///< Readouts::potentialEnergy
+    std::optional<double> elastic;  ///< stable solver only (Readouts::elasticEnergy)
+    double total = 0;               ///< kinetic + gravity + elastic (where known)
+    /// What damping took since the series began (stable solver only).
+    std::optional<double> dampingLoss;
+    /// The rest of the drop since the series began, total₀ − total − dampingLoss: what the
+    /// contacts (inelastic hits, wall and body friction), the velocity cap and the solver's
+    /// own dissipation took, less what the mouse put in (negative when it put in more).
+    std::optional<double> otherLoss;
+    double areaErrorPercent = 0;
+    double maxStretch = 0;
+    int contacts = 0;
+    /// Pendulum scenes: each link's angle from the downward vertical, growing towards −x
+    /// (as the seed's limits of §4.15 measure it), rad, in (−π, π].
+    std::vector<double> angles;
+    /// dθ/dt of each link, rad/step, from the sample before (empty in the first sample).
+    std::vector<double> angularVelocities;
+};
+
+/// The angle of the link from `from` to `to`: 0 straight down the screen, growing towards
+/// −x, in (−π, π] (Annex II: a joint at from + (−sin θ, cos θ)·L).
+double linkAngle(Point from, Point to);
+
+/// Records the samples of one run, from the state it is first given.
+class SeriesRecorder {
+public:
+    /// Keeps the last `capacity` samples (0: all of them).
+    explicit SeriesRecorder(std::size_t capacity = 0);
+
+    /// Samples the simulation's present state and appends it; a simulation at a step not
+    /// after the last sample's (a new run, a reset) starts the series again.
+    const SeriesSample& record(const Simulation& sim);
+    void clear();
+
+    const std::deque<SeriesSample>& samples() const { return m_samples; }
+    /// Links in the phase columns (0 outside the pendulum scenes).
+    int phaseLinks() const { return m_phaseLinks; }
+    std::size_t capacity() const { return m_capacity; }
+
+private:
+    std::size_t m_capacity;
+    std::deque<SeriesSample> m_samples;
+    int m_phaseLinks = 0;
+    bool m_started = false;
+    double m_firstTotal = 0;
+    std::optional<double> m_firstDamping;
+    long m_lastStep = 0;
+    std::vector<double> m_lastAngles;
+};
+
+/// The CSV header: step,time_s,kinetic,gravity,elastic,total,damping_loss,other_loss,
+/// area_error_percent,max_stretch,contacts, then angle_k,omega_k for each phase link.
+std::string seriesCsvHeader(int phaseLinks);
+/// One CSV row; an unknown value (the seed's elastic energy) is an empty field.
+std::string seriesCsvRow(const SeriesSample& sample, int phaseLinks);
+
+} // namespace granota
