@@ -211,7 +211,8 @@ private slots:
             probe(button->text(), [button] { button->click(); });
         }
         for (QPointer<QComboBox> combo : guarded(page->findChildren<QComboBox*>())) {
-            if (!combo || !combo->isEnabled() || !combo->isVisibleTo(&window) || combo->count() < 2)
+            if (!combo || !combo->isEnabled() || !combo->isVisibleTo(&window) || combo->count() < 2
+                || combo->objectName() == QLatin1String("frogSpeed")) // the clock, as Pause (docs/tabs.md)
                 continue;
             const int next = (combo->currentIndex() + 1) % combo->count();
             probe(combo->itemText(next), [combo, next] {

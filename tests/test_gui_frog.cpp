@@ -2,6 +2,7 @@
 // mouse and key events, the scene's own parameters applied live and undoably, every scene on
 // both solvers, the frame export and the document round trip.
 #include "core/softbody/simulation.h"
+#include "core/softbody/simulation_trace.h"
 #include "ui/frog/frog_art.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_parameters_panel.h"
@@ -221,6 +222,79 @@ private slots:
         const long realBefore = canvas->simulation()->stepCount(), realFrames = canvas->frameCount();
         QTRY_VERIFY(canvas->frameCount() >= realFrames + 10);
         QCOMPARE(canvas->simulation()->stepCount() - realBefore, canvas->frameCount() - realFrames);
+    }
+
+    // Issue 16: slow motion steps once every few frames, never with a smaller step, so at ⅛
+    // the seed's frog still goes through the rows of SeedFrog.java's trace, bit for bit.
+    void slowMotionKeepsTheSeedTrace()
+    {
+        QFile reference(QStringLiteral(GRANOTA_SOURCE_DIR "/tests/data/seed_frog_trace.csv"));
+        QVERIFY(reference.open(QIODevice::ReadOnly));
+        const QList<QByteArray> rows = reference.readAll().split('\n');
+        QVERIFY(tab().setScene("frog", nullptr));
+        QVERIFY(tab().setSolver(SolverKind::Seed, nullptr));
+        tab().findChild<QPushButton*>("frogPause")->setChecked(true); // the timer off: the test runs the frames
+        auto* speed = tab().findChild<QComboBox*>("frogSpeed");
+        QVERIFY(speed);
+        QCOMPARE(speed->count(), 6);
+        QCOMPARE(speed->itemText(0), QStringLiteral("⅛×"));
+        speed->setCurrentIndex(0);
+        emit speed->activated(0);
+        FrogCanvas* canvas = tab().canvas();
+        QCOMPARE(canvas->speed(), 0.125);
+        QCOMPARE(canvas->framesPerStep(), 8);
+        QVERIFY(canvas->textLines().join('\n').contains("Slow motion"));
+        Simulation* sim = canvas->simulation();
+        QCOMPARE(QByteArray::fromStdString(simulationTraceRow(*sim)), rows[1]);
+        for (int frame = 1; frame <= 1600; ++frame) {
+            const long before = sim->stepCount();
+            canvas->runFrame();
+            QCOMPARE(sim->stepCount() - before, frame % 8 == 0 ? 1L : 0L);
+            if (frame % 8 == 0)
+                QCOMPARE(QByteArray::fromStdString(simulationTraceRow(*sim)), rows[1 + frame / 8]);
+        }
+        // Fast: ] twice from 1× is 4×, four steps a frame, the same rows.
+        QVERIFY(tab().setScene("frog", nullptr));
+        sim = canvas->simulation();
+        tab().setSpeed(1);
+        QTest::keyClick(&tab(), Qt::Key_BracketRight);
+        QTest::keyClick(&tab(), Qt::Key_BracketRight);
+        QCOMPARE(canvas->speed(), 4.0);
+        QCOMPARE(speed->currentText(), QStringLiteral("4×"));
+        QCOMPARE(canvas->stepsPerFrame(), 4);
+        for (int frame = 1; frame <= 50; ++frame) {
+            canvas->runFrame();
+            QCOMPARE(sim->stepCount(), 4L * frame);
+            QCOMPARE(QByteArray::fromStdString(simulationTraceRow(*sim)), rows[1 + 4 * frame]);
+        }
+        QVERIFY(canvas->textLines().join('\n').contains("4 steps a frame"));
+        // The speed is kept with the document; a speed not offered is refused.
+        const QJsonObject saved = tab().saveState();
+        QCOMPARE(saved["speed"].toDouble(), 4.0);
+        tab().setSpeed(0.25);
+        QVERIFY(tab().loadState(saved, nullptr));
+        QCOMPARE(canvas->speed(), 4.0);
+        QJsonObject bad = saved;
+        bad["speed"] = 3;
+        QString error;
+        QVERIFY(!tab().loadState(bad, &error));
+        QVERIFY(error.contains("speed"));
+        QCOMPARE(canvas->speed(), 4.0);
+    }
+
+    // A heavy step at 4×: only the steps a frame holds run in it.
+    void fastRunsOnlyWhatAFrameHolds()
+    {
+        QVERIFY(tab().setScene("frog", nullptr));
+        QVERIFY(tab().setSolver(SolverKind::Stable, nullptr));
+        QString error;
+        QVERIFY2(tab().editParameter("sides", 1000, &error), qPrintable(error)); // 8000 work: 3 steps a frame
+        tab().setSpeed(4);
+        FrogCanvas* canvas = tab().canvas();
+        const long work = canvas->simulation()->workPerStep();
+        QCOMPARE(canvas->stepsPerFrame(), int(FrogCanvas::kFrameWork / work));
+        QVERIFY(canvas->stepsPerFrame() < 4);
+        QVERIFY(canvas->effectiveSpeed() < 4);
     }
 
     void hiddenTabStopsTheTimer()

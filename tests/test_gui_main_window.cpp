@@ -119,7 +119,7 @@ bool languageNeutral(const QString& text)
         return true;
     // Numbers, symbols, variable names, point labels, file names.
     static const QRegularExpression symbols(QStringLiteral(
-        "^[\\s0-9.,:;/+\\-−=×·²³⁴<>()\\[\\]{}|%…ταtnxyijkPQqBcwsW_′'^√∞≤≥✓✗µ]*$"));
+        "^[\\s0-9.,:;/+\\-−=×·²³⁴⅛¼½<>()\\[\\]{}|%…ταtnxyijkPQqBcwsW_′'^√∞≤≥✓✗µ]*$"));
     return symbols.match(text).hasMatch();
 }
 

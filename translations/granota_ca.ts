@@ -2115,6 +2115,20 @@ a cada canvi alentiria la finestra.</translation>
     </context>
     <context>
         <name>granota::ui::FrogCanvas</name>
+        <message numerus="yes">
+            <source>Fast, %1× real time: %n steps a frame</source>
+            <translation>
+                <numerusform>Ràpid, %1× el temps real: %n pas per fotograma</numerusform>
+                <numerusform>Ràpid, %1× el temps real: %n passos per fotograma</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Slow motion, %1× real time: one step every %n frames, the step itself unchanged</source>
+            <translation>
+                <numerusform>Càmera lenta, %1× el temps real: un pas cada %n fotogrames, amb el mateix pas</numerusform>
+                <numerusform>Càmera lenta, %1× el temps real: un pas cada %n fotogrames, amb el mateix pas</numerusform>
+            </translation>
+        </message>
         <message>
             <source>%1; area error %2 %.</source>
             <translation>%1; error d'àrea %2 %.</translation>
@@ -2491,6 +2505,18 @@ a cada canvi alentiria la finestra.</translation>
     </context>
     <context>
         <name>granota::ui::FrogTab</name>
+        <message>
+            <source>The speed must be one of 0.125, 0.25, 0.5, 1, 2 and 4.</source>
+            <translation>La velocitat ha de ser 0.125, 0.25, 0.5, 1, 2 o 4.</translation>
+        </message>
+        <message>
+            <source>Slow motion steps once every few frames and fast runs several steps a frame: the step itself never changes, so the seed goes through exactly the states of Annex II ([ slower, ] faster).</source>
+            <translation>La càmera lenta fa un pas cada pocs fotogrames i la ràpida en fa diversos per fotograma: el pas mateix no canvia mai, així que la llavor passa exactament pels estats de l’Annex II ([ més lent, ] més ràpid).</translation>
+        </message>
+        <message>
+            <source>Speed</source>
+            <translation>Velocitat</translation>
+        </message>
         <message>
             <source>Scene %1, %2 solver</source>
             <translation>Escena %1, mètode %2</translation>
@@ -4049,6 +4075,14 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
     <context>
         <name>granota::ui::ShortcutsHelp</name>
         <message>
+            <source>Slower and faster (⅛× to 4×)</source>
+            <translation>Més lent i més ràpid (de ⅛× a 4×)</translation>
+        </message>
+        <message>
+            <source>[ and ]</source>
+            <translation>[ i ]</translation>
+        </message>
+        <message>
             <source>Alt+arrows (Shift: ten times more)</source>
             <translation>Alt+fletxes (Maj: deu vegades més)</translation>
         </message>
@@ -4057,8 +4091,8 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
             <translation>De Casteljau: modela la corba a t; c(t) es mou el mateix pas</translation>
         </message>
         <message>
-            <source>Frog tab (P, S and R whenever the tab is shown, unless a field is being typed in)</source>
-            <translation>Pestanya Granota (P, S i R sempre que es mostra la pestanya, tret que s'estigui escrivint en un camp)</translation>
+            <source>Frog tab (P, S, R, [ and ] whenever the tab is shown, unless a field is being typed in)</source>
+            <translation>Pestanya Granota (P, S, R, [ i ] sempre que es mostra la pestanya, tret que s'estigui escrivint en un camp)</translation>
         </message>
         <message>
             <source>De Casteljau, Fitting and Catmull-Rom canvases</source>

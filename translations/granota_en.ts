@@ -2115,6 +2115,20 @@ on each change would slow the window.</translation>
     </context>
     <context>
         <name>granota::ui::FrogCanvas</name>
+        <message numerus="yes">
+            <source>Fast, %1× real time: %n steps a frame</source>
+            <translation>
+                <numerusform>Fast, %1× real time: %n step a frame</numerusform>
+                <numerusform>Fast, %1× real time: %n steps a frame</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>Slow motion, %1× real time: one step every %n frames, the step itself unchanged</source>
+            <translation>
+                <numerusform>Slow motion, %1× real time: one step every %n frame, the step itself unchanged</numerusform>
+                <numerusform>Slow motion, %1× real time: one step every %n frames, the step itself unchanged</numerusform>
+            </translation>
+        </message>
         <message>
             <source>%1; area error %2 %.</source>
             <translation>%1; area error %2 %.</translation>
@@ -2491,6 +2505,18 @@ on each change would slow the window.</translation>
     </context>
     <context>
         <name>granota::ui::FrogTab</name>
+        <message>
+            <source>The speed must be one of 0.125, 0.25, 0.5, 1, 2 and 4.</source>
+            <translation>The speed must be one of 0.125, 0.25, 0.5, 1, 2 and 4.</translation>
+        </message>
+        <message>
+            <source>Slow motion steps once every few frames and fast runs several steps a frame: the step itself never changes, so the seed goes through exactly the states of Annex II ([ slower, ] faster).</source>
+            <translation>Slow motion steps once every few frames and fast runs several steps a frame: the step itself never changes, so the seed goes through exactly the states of Annex II ([ slower, ] faster).</translation>
+        </message>
+        <message>
+            <source>Speed</source>
+            <translation>Speed</translation>
+        </message>
         <message>
             <source>Scene %1, %2 solver</source>
             <translation>Scene %1, %2 solver</translation>
@@ -4049,6 +4075,14 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
     <context>
         <name>granota::ui::ShortcutsHelp</name>
         <message>
+            <source>Slower and faster (⅛× to 4×)</source>
+            <translation>Slower and faster (⅛× to 4×)</translation>
+        </message>
+        <message>
+            <source>[ and ]</source>
+            <translation>[ and ]</translation>
+        </message>
+        <message>
             <source>Alt+arrows (Shift: ten times more)</source>
             <translation>Alt+arrows (Shift: ten times more)</translation>
         </message>
@@ -4057,8 +4091,8 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
             <translation>De Casteljau: mold the curve at t, c(t) moving by the same step</translation>
         </message>
         <message>
-            <source>Frog tab (P, S and R whenever the tab is shown, unless a field is being typed in)</source>
-            <translation>Frog tab (P, S and R whenever the tab is shown, unless a field is being typed in)</translation>
+            <source>Frog tab (P, S, R, [ and ] whenever the tab is shown, unless a field is being typed in)</source>
+            <translation>Frog tab (P, S, R, [ and ] whenever the tab is shown, unless a field is being typed in)</translation>
         </message>
         <message>
             <source>De Casteljau, Fitting and Catmull-Rom canvases</source>

@@ -73,7 +73,8 @@ void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
     m_sim = std::move(simulation);
     m_stepWork = m_sim ? m_sim->workPerStep() : 0;
     m_frameCount = 0;
-    m_framesSinceStep = 0;
+    m_pacer.setWork(m_stepWork, kFrameWork);
+    m_pacer.restart();
     m_fitter.reset();
     m_previousValid = false;
     m_pressed = false;
@@ -185,13 +186,7 @@ void FrogCanvas::tick()
         ++m_frames;
     }
     m_lastFrameNs = now;
-    ++m_frameCount;
-    // Processing's draw(): one actualitza() per frame, a fixed step — or, for a step that
-    // is more work than a frame holds, one every framesPerStep() frames.
-    if (++m_framesSinceStep >= framesPerStep()) {
-        m_framesSinceStep = 0;
-        advance();
-    }
+    runFrame();
     if (m_textClock.nsecsElapsed() >= kTextRefreshNs)
         refreshTexts();
     update();
@@ -205,9 +200,42 @@ QStringList FrogCanvas::textLines() const
     return lines;
 }
 
-int FrogCanvas::framesPerStep() const
+void FrogCanvas::runFrame()
+{
+    ++m_frameCount;
+    // Processing's draw(): one actualitza() per frame, a fixed step — slow motion waits a
+    // few frames between steps, fast runs several, and a step that is more work than a frame
+    // holds runs every few frames (StepPacer).
+    for (int n = m_pacer.stepsThisFrame(); n > 0; --n)
+        advance();
+}
+
+int FrogCanvas::framesPerStep() const { return m_pacer.framesPerStep(); }
+
+QString FrogCanvas::speedLabel(double speed)
+{
+    if (speed == 0.125)
+        return QStringLiteral("⅛");
+    if (speed == 0.25)
+        return QStringLiteral("¼");
+    if (speed == 0.5)
+        return QStringLiteral("½");
+    return QLocale().toString(speed, 'g', 3);
+}
+
+int FrogCanvas::workFramesPerStep() const
 {
     return static_cast<int>(std::max<long>(1, (m_stepWork + kFrameWork - 1) / kFrameWork));
+}
+
+bool FrogCanvas::setSpeed(double speed)
+{
+    if (!m_pacer.setSpeed(speed))
+        return false;
+    m_pacer.restart();
+    refreshTexts();
+    update();
+    return true;
 }
 
 void FrogCanvas::advance()
@@ -278,9 +306,16 @@ void FrogCanvas::refreshTexts()
                              .arg(!std::isfinite(error) ? QStringLiteral("∞")
                                   : (error > 0 ? QStringLiteral("+") : QString()) + displayFixed(error, 0));
         }
-        if (const int slower = framesPerStep(); slower > 1)
+        if (const int slower = workFramesPerStep(); slower > 1)
             lines << tr("Running %n× slower than real time: a step of this scene is more work than a frame holds", "",
                         slower);
+        if (m_pacer.speed() < 1)
+            lines << tr("Slow motion, %1× real time: one step every %n frames, the step itself unchanged", "",
+                        m_pacer.framesPerStep())
+                         .arg(speedLabel(m_pacer.speed()));
+        else if (m_pacer.speed() > 1)
+            lines << tr("Fast, %1× real time: %n steps a frame", "", m_pacer.stepsPerFrame())
+                         .arg(speedLabel(m_pacer.effectiveSpeed()));
         if (scene.has("outline-bezier")) {
             if (m_bezier == BezierOutline::Fit)
                 lines << tr("Least-squares Bézier fit, degree %1 through %2 points: %3 µs per frame")
@@ -972,6 +1007,7 @@ void FrogCanvas::keyPressEvent(QKeyEvent* event)
     }
     m_sim->spawn(m_mouse);
     m_stepWork = m_sim->workPerStep();
+    m_pacer.setWork(m_stepWork, kFrameWork);
     m_spawnHeld = true;
     update();
 }

@@ -8,6 +8,7 @@
 /// member buffers: a frame allocates nothing in this class once warm.
 
 #include "core/softbody/simulation.h"
+#include "core/softbody/step_pacer.h"
 #include "ui/common/canvas_style.h"
 #include "ui/common/drawable.h"
 #include "ui/frog/frog_art.h"
@@ -76,9 +77,20 @@ public:
     bool animating() const { return m_timer.isActive(); }
     /// One fixed step (the Step button, and each exported frame).
     void step();
-    /// Frames between two steps while running: 1 (real time) unless a step is more work
-    /// than kFrameWork, then ⌈work / kFrameWork⌉.
+    /// Frames between two steps while running: 1 at real time or faster, 8 at ⅛ (slow
+    /// motion), times ⌈work / kFrameWork⌉ for a step that is more work than a frame holds.
     int framesPerStep() const;
+    /// The speed, a multiple of real time: one of StepPacer::kSpeeds (false for others).
+    bool setSpeed(double speed);
+    double speed() const { return m_pacer.speed(); }
+    /// "⅛", "¼", "½", "1", "2", "4": a speed as the speed box and the text panel write it.
+    static QString speedLabel(double speed);
+    /// Steps per frame (1 unless fast) and the speed reached (below speed() for heavy steps).
+    int stepsPerFrame() const { return m_pacer.stepsPerFrame(); }
+    double effectiveSpeed() const { return m_pacer.effectiveSpeed(); }
+    /// One frame of the timer: the steps the speed gives it (none in the frames slow motion
+    /// waits). The timer calls it 60 times a second; tests call it to count frames exactly.
+    void runFrame();
     /// Frames the timer has run since the simulation was set.
     long frameCount() const { return m_frameCount; }
     /// The lines of the text panel drawn over the scene, as last refreshed.
@@ -147,6 +159,7 @@ protected:
 private:
     void tick();
     void advance();
+    int workFramesPerStep() const; ///< ⌈work / kFrameWork⌉: how much a heavy step slows real time
     void updateTimer();
     void refreshTexts();
     void updateAccessibleDescription();
@@ -181,7 +194,7 @@ private:
     int m_tick = 0;
     long m_stepWork = 0;       // m_sim->workPerStep(), again after a spawn
     long m_frameCount = 0;
-    int m_framesSinceStep = 0;
+    StepPacer m_pacer;
     bool m_running = true;
 
     // Interaction (Annex II: mousePressed, mouseReleased, keyPressed, keyReleased).

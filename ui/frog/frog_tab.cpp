@@ -107,6 +107,13 @@ FrogTab::FrogTab(QWidget* parent)
     m_solverNote->setWordWrap(true);
     m_solverNote->setStyleSheet(QStringLiteral("color: #a4431b;"));
     m_solverNote->hide();
+    m_speedLabel = new QLabel(m_sceneBox);
+    m_speedCombo = new QComboBox(m_sceneBox);
+    m_speedCombo->setObjectName(QStringLiteral("frogSpeed"));
+    for (double speed : StepPacer::kSpeeds)
+        m_speedCombo->addItem(FrogCanvas::speedLabel(speed) + QStringLiteral("×"), speed);
+    m_speedCombo->setCurrentIndex(m_speedCombo->findData(1.0));
+    m_speedLabel->setBuddy(m_speedCombo);
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(m_pause);
     buttons->addWidget(m_step);
@@ -118,6 +125,8 @@ FrogTab::FrogTab(QWidget* parent)
     sceneGrid->addWidget(m_solverCombo, 2, 1);
     sceneGrid->addWidget(m_solverNote, 3, 0, 1, 2);
     sceneGrid->addLayout(buttons, 4, 0, 1, 2);
+    sceneGrid->addWidget(m_speedLabel, 5, 0);
+    sceneGrid->addWidget(m_speedCombo, 5, 1);
     sceneGrid->setColumnStretch(1, 1);
     column->addWidget(m_sceneBox);
 
@@ -197,6 +206,7 @@ FrogTab::FrogTab(QWidget* parent)
     connect(m_solverCombo, &QComboBox::activated, this, &FrogTab::solverChosen);
     connect(m_pause, &QPushButton::toggled, this, &FrogTab::setPaused);
     connect(m_step, &QPushButton::clicked, this, &FrogTab::stepOnce);
+    connect(m_speedCombo, &QComboBox::activated, this, [this](int index) { setSpeed(m_speedCombo->itemData(index).toDouble()); });
     connect(m_reset, &QPushButton::clicked, this, &FrogTab::reset);
     connect(m_fit, &QRadioButton::toggled, this, [this](bool fit) {
         auto apply = [this](bool on) {
@@ -240,6 +250,13 @@ FrogTab::FrogTab(QWidget* parent)
     shortcut(QKeySequence(Qt::Key_S), [this] { stepOnce(); });
     shortcut(QKeySequence(Qt::Key_Period), [this] { stepOnce(); });
     shortcut(QKeySequence(Qt::Key_R), [this] { reset(); });
+    // Slower and faster: the speed box's neighbours.
+    const auto nudgeSpeed = [this](int by) {
+        const int i = std::clamp(m_speedCombo->currentIndex() + by, 0, m_speedCombo->count() - 1);
+        setSpeed(m_speedCombo->itemData(i).toDouble());
+    };
+    shortcut(QKeySequence(Qt::Key_BracketLeft), [nudgeSpeed] { nudgeSpeed(-1); });
+    shortcut(QKeySequence(Qt::Key_BracketRight), [nudgeSpeed] { nudgeSpeed(1); });
 
     QString error;
     auto frog = loadScene("frog");
@@ -565,6 +582,10 @@ void FrogTab::retranslate()
     m_pause->setToolTip(tr("Pause or run the animation, one fixed step per frame at 60 frames per second (P)."));
     m_step->setText(tr("Step"));
     m_step->setToolTip(tr("One fixed step, as one call of actualitza() in Annex II; pauses first (S or .)."));
+    m_speedLabel->setText(tr("Speed"));
+    m_speedCombo->setToolTip(tr("Slow motion steps once every few frames and fast runs several steps a frame: the "
+                                "step itself never changes, so the seed goes through exactly the states of Annex II "
+                                "([ slower, ] faster)."));
     m_reset->setText(tr("Reset"));
     m_reset->setToolTip(tr("Start the scene again with the current parameters (R)."));
     m_solverNote->setText(tr("The seed solver has no angle constraints: these shapes round into blobs. The Stable "
@@ -610,6 +631,14 @@ void FrogTab::retranslate()
     m_hint->setText(sceneHint());
 }
 
+void FrogTab::setSpeed(double speed)
+{
+    if (!m_canvas->setSpeed(speed))
+        return;
+    const QSignalBlocker block(m_speedCombo);
+    m_speedCombo->setCurrentIndex(m_speedCombo->findData(speed));
+}
+
 // ---------------------------------------------------------------- document
 
 QJsonObject FrogTab::saveState() const
@@ -629,6 +658,7 @@ QJsonObject FrogTab::saveState() const
     state.insert(QStringLiteral("overlays"), overlays);
     state.insert(QStringLiteral("bezier_outline"), m_fit->isChecked() ? QStringLiteral("fit") : QStringLiteral("precomputed"));
     state.insert(QStringLiteral("paused"), !m_canvas->running());
+    state.insert(QStringLiteral("speed"), m_canvas->speed());
     return state;
 }
 
@@ -723,8 +753,19 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
         }
         paused = state.value(QStringLiteral("paused")).toBool();
     }
+    double speed = m_canvas->speed();
+    if (state.contains(QStringLiteral("speed"))) {
+        const QJsonValue v = state.value(QStringLiteral("speed"));
+        const auto& speeds = StepPacer::kSpeeds;
+        if (!v.isDouble() || std::find(speeds.begin(), speeds.end(), v.toDouble()) == speeds.end()) {
+            setError(error, tr("The speed must be one of 0.125, 0.25, 0.5, 1, 2 and 4."));
+            return false;
+        }
+        speed = v.toDouble();
+    }
     if (!rebuild(*spec, solver, error))
         return false;
+    setSpeed(speed);
     // Everything is valid: show it.
     {
         const QCheckBox* boxes[] = {m_showVertices, m_showSprings, m_showArea, m_showVelocities, m_showReadouts, m_showFrameTime};

@@ -56,6 +56,8 @@ public:
     bool applyParameter(const QString& key, const QJsonValue& value, QString* error);
     /// Builds the scene again from its parameters (Reset).
     void reset();
+    /// The speed (StepPacer::kSpeeds; others are ignored), in the canvas and the speed box.
+    void setSpeed(double speed);
 
     FrogCanvas* canvas() const { return m_canvas; }
     FrogParametersPanel* parametersPanel() const { return m_params; }
@@ -102,7 +104,8 @@ private:
     QGroupBox *m_sceneBox, *m_bezierBox, *m_paramBox, *m_overlayBox;
     QLabel *m_sceneLabel, *m_description, *m_solverLabel, *m_hint, *m_note, *m_fitCost;
     QLabel* m_solverNote; ///< what the chosen solver cannot show of this scene (seedRoundsShapes)
-    QComboBox *m_sceneCombo, *m_solverCombo;
+    QComboBox *m_sceneCombo, *m_solverCombo, *m_speedCombo;
+    QLabel* m_speedLabel;
     QPushButton *m_pause, *m_step, *m_reset;
     QRadioButton *m_precomputed, *m_fit;
     QCheckBox *m_showVertices, *m_showSprings, *m_showArea, *m_showVelocities, *m_showReadouts, *m_showFrameTime;

@@ -39,12 +39,13 @@ QString ShortcutsHelp::html(const QList<QAction*>& actions)
     const QString frog = row(tr("P"), tr("Pause and run"))
                          + row(tr("S or ."), tr("One step (pausing first)"))
                          + row(tr("R"), tr("Reset the scene"))
+                         + row(tr("[ and ]"), tr("Slower and faster (⅛× to 4×)"))
                          + row(tr("Arrows (Shift: five times further)"), tr("On the canvas: move the keyboard cursor, and what it holds"))
                          + row(tr("G or Enter"), tr("On the canvas: grab the body at the cursor (or the nearest one), again to let go"))
                          + row(tr("Esc"), tr("On the canvas: let go"))
                          + row(tr("Space"), tr("On the canvas: a new body at the cursor, held until released"));
     return table(tr("The window"), window) + table(tr("De Casteljau, Fitting and Catmull-Rom canvases"), curves)
-           + table(tr("Frog tab (P, S and R whenever the tab is shown, unless a field is being typed in)"), frog);
+           + table(tr("Frog tab (P, S, R, [ and ] whenever the tab is shown, unless a field is being typed in)"), frog);
 }
 
 } // namespace granota::ui
