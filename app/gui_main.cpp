@@ -1,10 +1,13 @@
 // granota: the desktop application (docs/tabs.md, docs/classroom.md).
 #include "core/softbody/scenes/scene.h"
+#include "ui/frog/frog_canvas.h"
+#include "ui/frog/frog_plot_panel.h"
 #include "ui/frog/frog_tab.h"
 #include "ui/shell/language.h"
 #include "ui/shell/main_window.h"
 
 #include <QApplication>
+#include <algorithm>
 #include <QCommandLineParser>
 #include <QFile>
 #include <QSettings>
@@ -63,7 +66,15 @@ int main(int argc, char* argv[])
                                         QStringLiteral("FILE"));
     QCommandLineOption sizeOption(QStringLiteral("size"), say("Window size WxH (a screenshot's, else the window's), e.g. 800x570."),
                                   QStringLiteral("WxH"));
-    parser.addOptions({tabOption, langOption, exampleOption, sceneOption, presentOption, screenshotOption, sizeOption});
+    QCommandLineOption plotsOption(QStringLiteral("plots"),
+                                   say("Show the frog's plots over time: energy, area, stretch, contacts or phase."),
+                                   QStringLiteral("VIEW"));
+    QCommandLineOption solverOption(QStringLiteral("solver"), say("Run the frog's scene on SOLVER: seed or stable."),
+                                    QStringLiteral("SOLVER"));
+    QCommandLineOption stepsOption(QStringLiteral("steps"), say("Run the frog's scene N steps (0 … 100000) before showing it."),
+                                   QStringLiteral("N"));
+    parser.addOptions({tabOption, langOption, exampleOption, sceneOption, presentOption, screenshotOption, sizeOption,
+                       plotsOption, solverOption, stepsOption});
     parser.addPositionalArgument(QStringLiteral("document"), say("A .granota document to open."));
     // Bad arguments are errors as granota-cli's are (status 2, "error: "), in the language above.
     if (!parser.parse(arguments))
@@ -105,6 +116,40 @@ int main(int argc, char* argv[])
         if (!window.frogTab()->setScene(parser.value(sceneOption), &error))
             return fail(error);
         window.showTab(QStringLiteral("frog"));
+    }
+    if (parser.isSet(solverOption)) {
+        const auto solver = granota::parseSolverKind(parser.value(solverOption).toStdString());
+        if (!solver)
+            return fail(say("unknown solver “%1” (seed, stable)").arg(parser.value(solverOption)));
+        QString error;
+        if (!window.frogTab()->setSolver(*solver, &error))
+            return fail(error);
+        window.showTab(QStringLiteral("frog"));
+    }
+    if (parser.isSet(plotsOption)) {
+        using View = granota::ui::FrogPlotPanel::View;
+        const QString name = parser.value(plotsOption);
+        const std::pair<const char*, View> views[] = {{"energy", View::Energy},     {"area", View::AreaError},
+                                                      {"stretch", View::Stretch},   {"contacts", View::Contacts},
+                                                      {"phase", View::Phase}};
+        const auto found = std::find_if(std::begin(views), std::end(views),
+                                        [&](const auto& v) { return name == QLatin1String(v.first); });
+        if (found == std::end(views))
+            return fail(say("unknown plot “%1” (energy, area, stretch, contacts, phase)").arg(name));
+        window.frogTab()->setPlotsShown(true);
+        window.frogTab()->plotPanel()->setView(found->second);
+        if (window.frogTab()->plotPanel()->view() != found->second)
+            return fail(say("the phase plot is the pendulums' only (--scene pendulum, pendulum-limits)"));
+        window.showTab(QStringLiteral("frog"));
+    }
+    if (parser.isSet(stepsOption)) {
+        bool ok = false;
+        const int steps = parser.value(stepsOption).toInt(&ok);
+        if (!ok || steps < 0 || steps > 100000)
+            return fail(say("bad number of steps “%1” (0 … 100000)").arg(parser.value(stepsOption)));
+        for (int i = 0; i < steps; ++i)
+            window.frogTab()->canvas()->step();
+        window.frogTab()->plotPanel()->refresh(true);
     }
     if (parser.isSet(exampleOption) && !window.loadExample(parser.value(exampleOption)))
         return fail(say("unknown example “%1” (2.1 … 2.13)").arg(parser.value(exampleOption)));

@@ -6,7 +6,9 @@
 #include "ui/frog/frog_art.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_parameters_panel.h"
+#include "ui/frog/frog_plot_panel.h"
 #include "ui/frog/frog_tab.h"
+#include "cli_runner.h"
 #include "gui_timeouts.h"
 
 #include <QCheckBox>
@@ -23,6 +25,7 @@
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
+#include <qcustomplot.h>
 
 #include <QJsonDocument>
 
@@ -280,6 +283,95 @@ private slots:
         QVERIFY(!tab().loadState(bad, &error));
         QVERIFY(error.contains("speed"));
         QCOMPARE(canvas->speed(), 4.0);
+    }
+
+    // Issue 16: the plots over time under the canvas. They record only while shown, draw the
+    // last seconds, stand still while paused, and export exactly what simulate --series writes.
+    void plotsOverTime_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<SolverKind>("solver");
+        QTest::newRow("frog, seed") << "frog" << SolverKind::Seed;
+        QTest::newRow("frog, stable") << "frog" << SolverKind::Stable;
+        QTest::newRow("pendulum-limits, stable") << "pendulum-limits" << SolverKind::Stable;
+    }
+    void plotsOverTime()
+    {
+        QFETCH(QString, scene);
+        QFETCH(SolverKind, solver);
+        QVERIFY(tab().setScene(scene, nullptr));
+        QVERIFY(tab().setSolver(solver, nullptr));
+        tab().findChild<QPushButton*>("frogPause")->setChecked(true);
+        FrogCanvas* canvas = tab().canvas();
+        FrogPlotPanel* panel = tab().plotPanel();
+        QVERIFY(!panel->isVisible());
+        steps(tab(), 10);
+        QVERIFY(canvas->series().samples().empty()); // hidden: nothing recorded
+        tab().reset();
+        auto* box = tab().findChild<QCheckBox*>("frogShowPlots");
+        QVERIFY(box && !box->isChecked());
+        box->click();
+        QVERIFY(panel->isVisible() && canvas->recordingSeries());
+        QTRY_VERIFY(panel->height() >= 150);
+        QVERIFY(canvas->height() > panel->height()); // the canvas keeps most of the column
+        QCOMPARE(canvas->series().samples().size(), std::size_t(1));
+        steps(tab(), 240);
+        QCOMPARE(canvas->series().samples().size(), std::size_t(241));
+        panel->refresh(true);
+        QCustomPlot* plot = panel->plot();
+        QCOMPARE(panel->view(), FrogPlotPanel::View::Energy);
+        QCPGraph* total = plot->graph(3);
+        QCOMPARE(total->dataCount(), 241);
+        QCOMPARE(total->data()->at(240)->key, 4.0); // 240 steps at 60 a second
+        QCOMPARE(total->data()->at(240)->value, canvas->series().samples().back().total);
+        QCOMPARE(plot->graph(2)->visible(), solver == SolverKind::Stable); // elastic: the stable solver's only
+        QCOMPARE(plot->xAxis->range().lower, 0.0);
+        QCOMPARE(plot->xAxis->range().upper, 10.0);
+        // Paused, the timer steps nothing: the plot stands still.
+        QTest::qWait(350);
+        QCOMPARE(canvas->series().samples().size(), std::size_t(241));
+        QCOMPARE(total->dataCount(), 241);
+        // A window of 2 s scrolls: the last 2 s only.
+        panel->setWindowSeconds(2);
+        QCOMPARE(plot->xAxis->range().lower, 2.0);
+        QCOMPARE(total->data()->at(0)->key, 2.0);
+        // The other views.
+        const bool pendulum = scene.startsWith("pendulum");
+        panel->setView(FrogPlotPanel::View::Phase);
+        QCOMPARE(panel->view(), pendulum ? FrogPlotPanel::View::Phase : FrogPlotPanel::View::Energy);
+        if (pendulum) {
+            QCOMPARE(plot->plottableCount(), 6 + 2); // the energy graphs, hidden, and one orbit per link
+            QVERIFY(plot->itemCount() >= 2);        // the shoulder's two limits
+        }
+        panel->setView(FrogPlotPanel::View::AreaError);
+        QCOMPARE(plot->graph(0)->dataCount(), 121);
+        QCOMPARE(plot->graph(0)->data()->at(120)->value, canvas->series().samples().back().areaErrorPercent);
+        QVERIFY(!plot->graph(3)->visible());
+
+        // The CSV is granota-cli simulate --series, byte for byte.
+        QTemporaryDir dir;
+        const QString mine = dir.filePath("gui.csv"), theirs = dir.filePath("cli.csv");
+        QString error;
+        QVERIFY2(panel->exportCsv(mine, &error), qPrintable(error));
+        const CliRun run = runCli({"simulate", "--scene", scene, "--solver", QString::fromStdString(solverName(solver)),
+                                   "--steps", "240", "--series", theirs});
+        QCOMPARE(run.exitCode, 0);
+        QFile a(mine), b(theirs);
+        QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+        const QByteArray gui = a.readAll(), cli = b.readAll();
+        QCOMPARE(gui.count('\n'), 242);
+        QVERIFY(gui == cli);
+        QVERIFY(!panel->exportCsv(dir.filePath("no/such/folder/x.csv"), &error));
+        QVERIFY(!error.isEmpty());
+
+        // Hidden again: recording stops; a new run starts a new series.
+        box->click();
+        QVERIFY(!panel->isVisible() && !canvas->recordingSeries());
+        box->click();
+        QCOMPARE(canvas->series().samples().size(), std::size_t(1));
+        tab().reset();
+        QCOMPARE(canvas->series().samples().size(), std::size_t(1));
+        QCOMPARE(canvas->series().samples().front().step, 0L);
     }
 
     // A heavy step at 4×: only the steps a frame holds run in it.

@@ -2506,6 +2506,14 @@ a cada canvi alentiria la finestra.</translation>
     <context>
         <name>granota::ui::FrogTab</name>
         <message>
+            <source>Under the canvas: the energies, what damping and the rest took, the area error, the largest stretch and the contacts as the run goes on; the pendulums' phase plot. Pause freezes them; they export as CSV.</source>
+            <translation>Sota el llenç: les energies, el que s’han endut l’esmorteïment i la resta, l’error d’àrea, l’estirament màxim i els contactes al llarg de l’execució; el diagrama de fases dels pèndols. La pausa els atura; s’exporten en CSV.</translation>
+        </message>
+        <message>
+            <source>Plots over time</source>
+            <translation>Gràfics en el temps</translation>
+        </message>
+        <message>
             <source>The speed must be one of 0.125, 0.25, 0.5, 1, 2 and 4.</source>
             <translation>La velocitat ha de ser 0.125, 0.25, 0.5, 1, 2 o 4.</translation>
         </message>
@@ -4230,6 +4238,137 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
         <message>
             <source>Comb scale</source>
             <translation>Escala de la pinta</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FrogPlotPanel</name>
+        <message>
+            <source>|L/L₀ − 1|</source>
+            <translation>|L/L₀ − 1|</translation>
+        </message>
+        <message>
+            <source>total</source>
+            <translation>total</translation>
+        </message>
+        <message>
+            <source>time (s)</source>
+            <translation>temps (s)</translation>
+        </message>
+        <message>
+            <source>damping</source>
+            <translation>esmorteïment</translation>
+        </message>
+        <message>
+            <source>other losses</source>
+            <translation>altres pèrdues</translation>
+        </message>
+        <message>
+            <source>link %1</source>
+            <translation>segment %1</translation>
+        </message>
+        <message>
+            <source>largest stretch</source>
+            <translation>estirament màxim</translation>
+        </message>
+        <message>
+            <source>kinetic</source>
+            <translation>cinètica</translation>
+        </message>
+        <message>
+            <source>gravitational</source>
+            <translation>gravitatòria</translation>
+        </message>
+        <message>
+            <source>elastic</source>
+            <translation>elàstica</translation>
+        </message>
+        <message>
+            <source>dθ/dt (rad/step)</source>
+            <translation>dθ/dt (rad/pas)</translation>
+        </message>
+        <message>
+            <source>contacts</source>
+            <translation>contactes</translation>
+        </message>
+        <message>
+            <source>area error</source>
+            <translation>error d’àrea</translation>
+        </message>
+        <message>
+            <source>area error (%)</source>
+            <translation>error d’àrea (%)</translation>
+        </message>
+        <message>
+            <source>angle θ from the vertical (rad)</source>
+            <translation>angle θ des de la vertical (rad)</translation>
+        </message>
+        <message>
+            <source>What to plot against time: the energies and what damping and the rest took, the area error, the largest stretch, the contacts; or, for the pendulums, each link's angle against its angular velocity. The wheel zooms the window of seconds.</source>
+            <translation>Què es representa en el temps: les energies i el que s’han endut l’esmorteïment i la resta, l’error d’àrea, l’estirament màxim, els contactes; o, per als pèndols, l’angle de cada segment contra la seva velocitat angular. La roda del ratolí amplia o redueix la finestra de segons.</translation>
+        </message>
+        <message>
+            <source>Energies in px²/step², unit masses. The seed's springs and area are corrections, not forces: it stores no elastic energy and books no losses; total = kinetic + gravitational.</source>
+            <translation>Energies en px²/pas², masses unitàries. Els molls i l’àrea de la Llavor són correccions, no forces: no desa energia elàstica ni comptabilitza pèrdues; total = cinètica + gravitatòria.</translation>
+        </message>
+        <message>
+            <source>Plots over time</source>
+            <translation>Gràfics en el temps</translation>
+        </message>
+        <message>
+            <source>Phase plot of the last %1 s: each link's orbit; a small swing of a free link is an ellipse, with the period 2π√(L/g).</source>
+            <translation>Diagrama de fases dels darrers %1 s: l’òrbita de cada segment; una oscil·lació petita d’un segment lliure és una el·lipse, de període 2π√(L/g).</translation>
+        </message>
+        <message>
+            <source>Phase plot of the last %1 s: each link's orbit. The dashed lines are the first link's limits (§4.15): an orbit that reaches one is cut off.</source>
+            <translation>Diagrama de fases dels darrers %1 s: l’òrbita de cada segment. Les línies discontínues són els límits del primer segment (§4.15): una òrbita que n’arriba a un queda tallada.</translation>
+        </message>
+        <message>
+            <source>Phase plot (pendulums)</source>
+            <translation>Diagrama de fases (pèndols)</translation>
+        </message>
+        <message>
+            <source>Energies in mass·px²/step². Other losses: hits and friction at walls and between bodies, and the solver's own dissipation, less what the mouse put in.</source>
+            <translation>Energies en massa·px²/pas². Altres pèrdues: xocs i fregament a les parets i entre cossos, i la dissipació pròpia del mètode, menys el que hi ha posat el ratolí.</translation>
+        </message>
+        <message>
+            <source>Largest stretch</source>
+            <translation>Estirament màxim</translation>
+        </message>
+        <message>
+            <source>Exported %1</source>
+            <translation>S’ha exportat %1</translation>
+        </message>
+        <message>
+            <source>Export the series</source>
+            <translation>Exporta les sèries</translation>
+        </message>
+        <message>
+            <source>Export CSV…</source>
+            <translation>Exporta CSV…</translation>
+        </message>
+        <message>
+            <source>Every step kept (the last %1 minutes), in the columns of granota-cli simulate --series.</source>
+            <translation>Tots els passos desats (els darrers %1 minuts), amb les columnes de granota-cli simulate --series.</translation>
+        </message>
+        <message>
+            <source>Energy</source>
+            <translation>Energia</translation>
+        </message>
+        <message>
+            <source>energy</source>
+            <translation>energia</translation>
+        </message>
+        <message>
+            <source>Contacts</source>
+            <translation>Contactes</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>Fitxers CSV (*.csv)</translation>
+        </message>
+        <message>
+            <source>Area error</source>
+            <translation>Error d’àrea</translation>
         </message>
     </context>
 </TS>

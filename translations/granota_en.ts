@@ -2506,6 +2506,14 @@ on each change would slow the window.</translation>
     <context>
         <name>granota::ui::FrogTab</name>
         <message>
+            <source>Under the canvas: the energies, what damping and the rest took, the area error, the largest stretch and the contacts as the run goes on; the pendulums' phase plot. Pause freezes them; they export as CSV.</source>
+            <translation>Under the canvas: the energies, what damping and the rest took, the area error, the largest stretch and the contacts as the run goes on; the pendulums' phase plot. Pause freezes them; they export as CSV.</translation>
+        </message>
+        <message>
+            <source>Plots over time</source>
+            <translation>Plots over time</translation>
+        </message>
+        <message>
             <source>The speed must be one of 0.125, 0.25, 0.5, 1, 2 and 4.</source>
             <translation>The speed must be one of 0.125, 0.25, 0.5, 1, 2 and 4.</translation>
         </message>
@@ -4230,6 +4238,137 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
         <message>
             <source>Comb scale</source>
             <translation>Comb scale</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FrogPlotPanel</name>
+        <message>
+            <source>|L/L₀ − 1|</source>
+            <translation>|L/L₀ − 1|</translation>
+        </message>
+        <message>
+            <source>total</source>
+            <translation>total</translation>
+        </message>
+        <message>
+            <source>time (s)</source>
+            <translation>time (s)</translation>
+        </message>
+        <message>
+            <source>damping</source>
+            <translation>damping</translation>
+        </message>
+        <message>
+            <source>other losses</source>
+            <translation>other losses</translation>
+        </message>
+        <message>
+            <source>link %1</source>
+            <translation>link %1</translation>
+        </message>
+        <message>
+            <source>largest stretch</source>
+            <translation>largest stretch</translation>
+        </message>
+        <message>
+            <source>kinetic</source>
+            <translation>kinetic</translation>
+        </message>
+        <message>
+            <source>gravitational</source>
+            <translation>gravitational</translation>
+        </message>
+        <message>
+            <source>elastic</source>
+            <translation>elastic</translation>
+        </message>
+        <message>
+            <source>dθ/dt (rad/step)</source>
+            <translation>dθ/dt (rad/step)</translation>
+        </message>
+        <message>
+            <source>contacts</source>
+            <translation>contacts</translation>
+        </message>
+        <message>
+            <source>area error</source>
+            <translation>area error</translation>
+        </message>
+        <message>
+            <source>area error (%)</source>
+            <translation>area error (%)</translation>
+        </message>
+        <message>
+            <source>angle θ from the vertical (rad)</source>
+            <translation>angle θ from the vertical (rad)</translation>
+        </message>
+        <message>
+            <source>What to plot against time: the energies and what damping and the rest took, the area error, the largest stretch, the contacts; or, for the pendulums, each link's angle against its angular velocity. The wheel zooms the window of seconds.</source>
+            <translation>What to plot against time: the energies and what damping and the rest took, the area error, the largest stretch, the contacts; or, for the pendulums, each link's angle against its angular velocity. The wheel zooms the window of seconds.</translation>
+        </message>
+        <message>
+            <source>Energies in px²/step², unit masses. The seed's springs and area are corrections, not forces: it stores no elastic energy and books no losses; total = kinetic + gravitational.</source>
+            <translation>Energies in px²/step², unit masses. The seed's springs and area are corrections, not forces: it stores no elastic energy and books no losses; total = kinetic + gravitational.</translation>
+        </message>
+        <message>
+            <source>Plots over time</source>
+            <translation>Plots over time</translation>
+        </message>
+        <message>
+            <source>Phase plot of the last %1 s: each link's orbit; a small swing of a free link is an ellipse, with the period 2π√(L/g).</source>
+            <translation>Phase plot of the last %1 s: each link's orbit; a small swing of a free link is an ellipse, with the period 2π√(L/g).</translation>
+        </message>
+        <message>
+            <source>Phase plot of the last %1 s: each link's orbit. The dashed lines are the first link's limits (§4.15): an orbit that reaches one is cut off.</source>
+            <translation>Phase plot of the last %1 s: each link's orbit. The dashed lines are the first link's limits (§4.15): an orbit that reaches one is cut off.</translation>
+        </message>
+        <message>
+            <source>Phase plot (pendulums)</source>
+            <translation>Phase plot (pendulums)</translation>
+        </message>
+        <message>
+            <source>Energies in mass·px²/step². Other losses: hits and friction at walls and between bodies, and the solver's own dissipation, less what the mouse put in.</source>
+            <translation>Energies in mass·px²/step². Other losses: hits and friction at walls and between bodies, and the solver's own dissipation, less what the mouse put in.</translation>
+        </message>
+        <message>
+            <source>Largest stretch</source>
+            <translation>Largest stretch</translation>
+        </message>
+        <message>
+            <source>Exported %1</source>
+            <translation>Exported %1</translation>
+        </message>
+        <message>
+            <source>Export the series</source>
+            <translation>Export the series</translation>
+        </message>
+        <message>
+            <source>Export CSV…</source>
+            <translation>Export CSV…</translation>
+        </message>
+        <message>
+            <source>Every step kept (the last %1 minutes), in the columns of granota-cli simulate --series.</source>
+            <translation>Every step kept (the last %1 minutes), in the columns of granota-cli simulate --series.</translation>
+        </message>
+        <message>
+            <source>Energy</source>
+            <translation>Energy</translation>
+        </message>
+        <message>
+            <source>energy</source>
+            <translation>energy</translation>
+        </message>
+        <message>
+            <source>Contacts</source>
+            <translation>Contacts</translation>
+        </message>
+        <message>
+            <source>CSV files (*.csv)</source>
+            <translation>CSV files (*.csv)</translation>
+        </message>
+        <message>
+            <source>Area error</source>
+            <translation>Area error</translation>
         </message>
     </context>
 </TS>

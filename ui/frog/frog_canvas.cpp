@@ -75,6 +75,9 @@ void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
     m_frameCount = 0;
     m_pacer.setWork(m_stepWork, kFrameWork);
     m_pacer.restart();
+    m_series.clear();
+    if (m_sim && m_recording)
+        m_series.record(*m_sim);
     m_fitter.reset();
     m_previousValid = false;
     m_pressed = false;
@@ -228,6 +231,16 @@ int FrogCanvas::workFramesPerStep() const
     return static_cast<int>(std::max<long>(1, (m_stepWork + kFrameWork - 1) / kFrameWork));
 }
 
+void FrogCanvas::setRecordingSeries(bool on)
+{
+    if (on == m_recording)
+        return;
+    m_recording = on;
+    m_series.clear();
+    if (on && m_sim)
+        m_series.record(*m_sim);
+}
+
 bool FrogCanvas::setSpeed(double speed)
 {
     if (!m_pacer.setSpeed(speed))
@@ -255,6 +268,8 @@ void FrogCanvas::advance()
     }
     const qint64 t0 = m_clock.nsecsElapsed();
     m_sim->step();
+    if (m_recording)
+        m_series.record(*m_sim);
     m_stepNsSum += double(m_clock.nsecsElapsed() - t0);
     ++m_steps;
 }

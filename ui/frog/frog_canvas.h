@@ -8,6 +8,7 @@
 /// member buffers: a frame allocates nothing in this class once warm.
 
 #include "core/softbody/simulation.h"
+#include "core/softbody/simulation_series.h"
 #include "core/softbody/step_pacer.h"
 #include "ui/common/canvas_style.h"
 #include "ui/common/drawable.h"
@@ -100,6 +101,14 @@ public:
     /// 1024 × 768 projector wraps the readouts instead of cutting them).
     double textPanelWidth() const;
     double textPanelRoom() const;
+
+    /// The plots over time (docs/plots-over-time.md): while recording, every step appends a
+    /// sample, up to the last kSeriesSeconds; turning it on starts the series at the state
+    /// shown. Off, a step costs nothing more.
+    static constexpr int kSeriesSeconds = 600;
+    void setRecordingSeries(bool on);
+    bool recordingSeries() const { return m_recording; }
+    const SeriesRecorder& series() const { return m_series; }
 
     void setOverlays(const Overlays& overlays);
     const Overlays& overlays() const { return m_overlays; }
@@ -195,6 +204,8 @@ private:
     long m_stepWork = 0;       // m_sim->workPerStep(), again after a spawn
     long m_frameCount = 0;
     StepPacer m_pacer;
+    SeriesRecorder m_series{std::size_t(kSeriesSeconds) * kFramesPerSecond};
+    bool m_recording = false;
     bool m_running = true;
 
     // Interaction (Annex II: mousePressed, mouseReleased, keyPressed, keyReleased).

@@ -7,6 +7,7 @@
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_json.h"
 #include "ui/frog/frog_parameters_panel.h"
+#include "ui/frog/frog_plot_panel.h"
 #include "ui/shell/tikz_writer.h"
 
 #include <QButtonGroup>
@@ -127,6 +128,9 @@ FrogTab::FrogTab(QWidget* parent)
     sceneGrid->addLayout(buttons, 4, 0, 1, 2);
     sceneGrid->addWidget(m_speedLabel, 5, 0);
     sceneGrid->addWidget(m_speedCombo, 5, 1);
+    m_showPlots = new QCheckBox(m_sceneBox);
+    m_showPlots->setObjectName(QStringLiteral("frogShowPlots"));
+    sceneGrid->addWidget(m_showPlots, 6, 0, 1, 2);
     sceneGrid->setColumnStretch(1, 1);
     column->addWidget(m_sceneBox);
 
@@ -192,8 +196,18 @@ FrogTab::FrogTab(QWidget* parent)
     m_side = side;
     side->installEventFilter(this); // its layout changes with the scene: keep it unclipped
 
+    // The canvas, and under it the plots over time when they are shown.
+    m_plots = new FrogPlotPanel(this);
+    m_plots->hide();
+    auto* left = new QSplitter(Qt::Vertical, this);
+    left->addWidget(m_canvas);
+    left->addWidget(m_plots);
+    left->setStretchFactor(0, 1);
+    left->setStretchFactor(1, 0);
+    left->setCollapsible(0, false);
+    left->setCollapsible(1, false);
     auto* splitter = new QSplitter(Qt::Horizontal, this);
-    splitter->addWidget(m_canvas);
+    splitter->addWidget(left);
     splitter->addWidget(scroll);
     splitter->setStretchFactor(0, 1);
     splitter->setStretchFactor(1, 0);
@@ -206,6 +220,8 @@ FrogTab::FrogTab(QWidget* parent)
     connect(m_solverCombo, &QComboBox::activated, this, &FrogTab::solverChosen);
     connect(m_pause, &QPushButton::toggled, this, &FrogTab::setPaused);
     connect(m_step, &QPushButton::clicked, this, &FrogTab::stepOnce);
+    connect(m_showPlots, &QCheckBox::toggled, this, &FrogTab::setPlotsShown);
+    connect(m_plots, &FrogPlotPanel::statusMessage, this, &TabPage::statusMessage);
     connect(m_speedCombo, &QComboBox::activated, this, [this](int index) { setSpeed(m_speedCombo->itemData(index).toDouble()); });
     connect(m_reset, &QPushButton::clicked, this, &FrogTab::reset);
     connect(m_fit, &QRadioButton::toggled, this, [this](bool fit) {
@@ -277,6 +293,8 @@ bool FrogTab::rebuild(const SceneSpec& scene, SolverKind solver, QString* error)
     m_scene = scene;
     m_solver = solver;
     m_canvas->setSimulation(std::move(sim).value());
+    if (m_plots)
+        m_plots->refresh(true); // a new run: a new series
     return true;
 }
 
@@ -522,7 +540,11 @@ void FrogTab::overlaysChanged()
                                                 overlayFlags(), box ? box->text().remove(QLatin1Char('&')) : tr("Overlays")));
 }
 
-void FrogTab::setPresentation(bool on) { m_canvas->setPresentation(on); }
+void FrogTab::setPresentation(bool on)
+{
+    m_canvas->setPresentation(on);
+    m_plots->setPresentation(on);
+}
 
 // ---------------------------------------------------------------- texts
 
@@ -583,6 +605,10 @@ void FrogTab::retranslate()
     m_step->setText(tr("Step"));
     m_step->setToolTip(tr("One fixed step, as one call of actualitza() in Annex II; pauses first (S or .)."));
     m_speedLabel->setText(tr("Speed"));
+    m_showPlots->setText(tr("Plots over time"));
+    m_showPlots->setToolTip(tr("Under the canvas: the energies, what damping and the rest took, the area error, the "
+                               "largest stretch and the contacts as the run goes on; the pendulums' phase plot. "
+                               "Pause freezes them; they export as CSV."));
     m_speedCombo->setToolTip(tr("Slow motion steps once every few frames and fast runs several steps a frame: the "
                                 "step itself never changes, so the seed goes through exactly the states of Annex II "
                                 "([ slower, ] faster)."));
@@ -629,6 +655,17 @@ void FrogTab::retranslate()
     m_showFrameTime->setToolTip(tr("Time per frame and per simulation step, in milliseconds, averaged a few times a "
                                    "second."));
     m_hint->setText(sceneHint());
+}
+
+void FrogTab::setPlotsShown(bool on)
+{
+    if (m_showPlots->isChecked() != on) {
+        const QSignalBlocker block(m_showPlots);
+        m_showPlots->setChecked(on);
+    }
+    m_canvas->setRecordingSeries(on);
+    m_plots->setSeries(&m_canvas->series(), &m_scene);
+    m_plots->setVisible(on); // at the height it asks for (FrogPlotPanel::sizeHint), the canvas the rest
 }
 
 void FrogTab::setSpeed(double speed)

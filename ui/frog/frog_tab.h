@@ -23,6 +23,7 @@ namespace granota::ui {
 
 class FrogCanvas;
 class FrogParametersPanel;
+class FrogPlotPanel;
 
 class FrogTab : public TabPage {
     Q_OBJECT
@@ -58,6 +59,9 @@ public:
     void reset();
     /// The speed (StepPacer::kSpeeds; others are ignored), in the canvas and the speed box.
     void setSpeed(double speed);
+    /// Shows the plots over time under the canvas (the canvas records the series meanwhile).
+    void setPlotsShown(bool on);
+    FrogPlotPanel* plotPanel() const { return m_plots; }
 
     FrogCanvas* canvas() const { return m_canvas; }
     FrogParametersPanel* parametersPanel() const { return m_params; }
@@ -96,6 +100,8 @@ private:
 
     FrogCanvas* m_canvas;
     FrogParametersPanel* m_params;
+    FrogPlotPanel* m_plots = nullptr;
+    QCheckBox* m_showPlots = nullptr;
     SceneSpec m_scene;
     SolverKind m_solver = SolverKind::Seed;
 
