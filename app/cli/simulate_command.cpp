@@ -5,6 +5,9 @@
 
 #include "core/base/display_text.h"
 #include "core/base/number_format.h"
+#include "core/base/bounded_file.h"
+#include "core/base/input_limits.h"
+#include "core/softbody/recorded_run.h"
 #include "core/softbody/simulation_series.h"
 #include "core/softbody/simulation_trace.h"
 
@@ -24,15 +27,55 @@ constexpr long long kMaxSimulatedPoints = 1000000000;
 /// The most rows `--series` writes: some 150 bytes a row, so at most about 300 MB.
 constexpr long long kMaxSeriesRows = 2000000;
 
+/// --replay F: the recording's scene, solver and steps; otherwise --scene, --solver, --set
+/// and --steps. Either way the run records itself (for --record), with no snapshots but
+/// the first: a headless run never goes back.
+Expected<RecordedRun> runFromArguments(const Arguments& args, long* steps)
+{
+    constexpr int kNoSnapshots = static_cast<int>(kMaxRecordedSteps);
+    if (const auto replay = args.value("replay")) {
+        for (const char* other : {"scene", "solver", "set", "steps"})
+            if (args.has(other))
+                return makeError(ErrorCode::InvalidInput, std::string("--replay takes the scene, solver and steps from "
+                                                                      "the recording: leave out --") + other);
+        auto text = readBoundedFile(*replay, kMaxFileBytes);
+        if (!text)
+            return text.error();
+        auto doc = Json::parse(*text);
+        if (!doc)
+            return makeError(ErrorCode::InvalidInput, quotedForDisplay(*replay) + " is not JSON: " + doc.error().message);
+        auto recording = recordingFromJson(*doc);
+        if (!recording)
+            return makeError(ErrorCode::InvalidInput, quotedForDisplay(*replay) + ": " + recording.error().message);
+        if (recording->steps > kMaxSteps)
+            return makeError(ErrorCode::OutOfRange, "the recording has " + std::to_string(recording->steps) +
+                                                        " steps, more than simulate runs (" + std::to_string(kMaxSteps) + ")");
+        *steps = recording->steps;
+        return RecordedRun::load(*recording, kNoSnapshots);
+    }
+    auto scene = sceneFromArguments(args);
+    if (!scene)
+        return scene.error();
+    auto solver = solverFromArguments(args, *scene);
+    if (!solver)
+        return solver.error();
+    auto n = args.integer("steps", 0, kMaxSteps, 600);
+    if (!n)
+        return n.error();
+    *steps = *n;
+    return RecordedRun::start(*scene, *solver, kNoSnapshots);
+}
+
 Expected<CommandOutput> run(const Arguments& args)
 {
-    auto sim = buildSimulation(args);
-    if (!sim)
-        return sim.error();
-    Simulation& s = **sim;
-    auto steps = args.integer("steps", 0, kMaxSteps, 600);
-    if (!steps)
-        return steps.error();
+    long stepCount = 0;
+    auto recorded = runFromArguments(args, &stepCount);
+    if (!recorded)
+        return recorded.error();
+    RecordedRun& runner = *recorded;
+    Simulation& s = runner.simulation();
+    const std::optional<long> steps = stepCount;
+    const auto recordPath = args.value("record");
 
     const long long points = static_cast<long long>(simulationTracePoints(s));
     if (static_cast<long long>(*steps) * points > kMaxSimulatedPoints)
@@ -42,6 +85,8 @@ Expected<CommandOutput> run(const Arguments& args)
                                                     ": lower --steps, or bodies or sides");
     std::ofstream trace;
     const auto tracePath = args.value("trace");
+    if (tracePath && recordPath && *tracePath == *recordPath)
+        return makeError(ErrorCode::InvalidInput, "--trace and --record name the same file");
     const std::string traceName = "the trace to " + quotedForDisplay(tracePath.value_or(""));
     errno = 0;
     if (tracePath) {
@@ -65,6 +110,8 @@ Expected<CommandOutput> run(const Arguments& args)
             return makeError(ErrorCode::OutOfRange, "--series would write " + std::to_string(*steps + 1LL) +
                                                         " rows (steps + 1), more than " + std::to_string(kMaxSeriesRows) +
                                                         ": lower --steps");
+        if (recordPath && *seriesPath == *recordPath)
+            return makeError(ErrorCode::InvalidInput, "--series and --record name the same file");
         if (tracePath && *seriesPath == *tracePath)
             return makeError(ErrorCode::InvalidInput, "--series and --trace name the same file");
         errno = 0;
@@ -74,8 +121,8 @@ Expected<CommandOutput> run(const Arguments& args)
         const SeriesSample& first = recorder.record(s);
         series << seriesCsvHeader(recorder.phaseLinks()) << '\n' << seriesCsvRow(first, recorder.phaseLinks()) << '\n';
     }
-    for (int i = 0; i < *steps; ++i) {
-        s.step();
+    for (long i = 0; i < *steps; ++i) {
+        runner.step(); // a replay applies its events before their steps
         if (trace.is_open()) {
             trace << simulationTraceRow(s) << '\n';
             if (!trace) // a full disk: stop at once, with the reason
@@ -95,6 +142,16 @@ Expected<CommandOutput> run(const Arguments& args)
             return writeError(name, errno);
         file->close();
         if (!*file)
+            return writeError(name, errno);
+    }
+    if (recordPath) {
+        const std::string name = "the recording to " + quotedForDisplay(*recordPath);
+        errno = 0;
+        std::ofstream file(*recordPath, std::ios::binary | std::ios::trunc);
+        if (!file)
+            return writeError(name, errno);
+        file << recordingToJson(runner.recording()).dump(1) << '\n';
+        if (!file.flush())
             return writeError(name, errno);
     }
 
@@ -147,7 +204,7 @@ Expected<CommandOutput> run(const Arguments& args)
     txt << "finite: " << (finite ? "yes" : "no") << ", in bounds: " << (inBounds ? "yes" : "no") << "\n";
     out.json.set("scene", scene.name)
         .set("solver", solverName(s.solver()))
-        .set("steps", *steps)
+        .set("steps", double(*steps))
         .set("components", std::move(components))
         .set("bodies", std::move(bodies))
         .set("chains", std::move(chains))
@@ -162,10 +219,11 @@ Expected<CommandOutput> run(const Arguments& args)
 
 Command simulateCommand()
 {
-    return {"simulate", "--scene NAME [--solver seed|stable] [--steps N] [--set key=value …] [--trace F.csv] [--series F.csv] [--json]",
+    return {"simulate", "(--scene NAME [--solver seed|stable] [--steps N] [--set key=value …] | --replay F.json) [--trace F.csv] [--series F.csv] [--record F.json] [--json]",
             "run a scene of chapter 4 or §5.2 headless; --trace writes the reference CSV layout, --series the "
-            "energies, losses, area error, stretch and contacts of every step",
-            {{"scene", "solver", "steps", "set", "trace", "series"}, {"json"}, {"set"}},
+            "energies, losses, area error, stretch and contacts of every step; --record writes the run as a recording "
+            "(scene, solver, steps, events) and --replay runs one (docs/rewind.md)",
+            {{"scene", "solver", "steps", "set", "trace", "series", "record", "replay"}, {"json"}, {"set"}},
             &run};
 }
 

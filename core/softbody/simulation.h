@@ -51,6 +51,9 @@ public:
 
     /// Builds `scene` on `solver`. Errors: parameters that make no sense for it.
     static Expected<std::unique_ptr<Simulation>> create(const SceneSpec& scene, SolverKind solver);
+    /// An independent copy of the whole state, step count and grab included: stepped with the
+    /// same input it goes through the same bits (the snapshots of a recorded run).
+    virtual std::unique_ptr<Simulation> clone() const = 0;
 
     const SceneSpec& scene() const { return m_scene; }
     SolverKind solver() const { return m_solver; }
@@ -110,6 +113,8 @@ public:
 
 protected:
     Simulation(SceneSpec scene, SolverKind solver) : m_scene(std::move(scene)), m_solver(solver) {}
+    Simulation(const Simulation&) = default;
+    Simulation& operator=(const Simulation&) = delete;
     virtual void doStep() = 0;
 
 private:

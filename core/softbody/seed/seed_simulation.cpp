@@ -50,6 +50,12 @@ std::vector<double> edgeLengths(const std::vector<Point>& x)
 class SeedBodySimulation final : public Simulation {
 public:
     SeedBodySimulation(const SceneSpec& scene) : Simulation(scene, SolverKind::Seed) {}
+    SeedBodySimulation(const SeedBodySimulation& o)
+        : Simulation(o), m_frog(o.m_frog ? std::make_unique<SeedFrog<Real>>(*o.m_frog) : nullptr), m_bodies(o.m_bodies),
+          m_rest(o.m_rest), m_held(o.m_held), m_heldBody(o.m_heldBody)
+    {
+    }
+    std::unique_ptr<Simulation> clone() const override { return std::make_unique<SeedBodySimulation>(*this); }
 
     Expected<void> build()
     {
@@ -198,6 +204,12 @@ private:
 class SeedPendulumSimulation final : public Simulation {
 public:
     SeedPendulumSimulation(const SceneSpec& scene) : Simulation(scene, SolverKind::Seed), m_clau(scene.params.center) {}
+    SeedPendulumSimulation(const SeedPendulumSimulation& o)
+        : Simulation(o), m_clau(o.m_clau), m_leg(o.m_leg ? std::make_unique<SeedLeg<Real>>(*o.m_leg) : nullptr),
+          m_chain(o.m_chain ? std::make_unique<FollowChain>(*o.m_chain) : nullptr)
+    {
+    }
+    std::unique_ptr<Simulation> clone() const override { return std::make_unique<SeedPendulumSimulation>(*this); }
 
     Expected<void> build()
     {

@@ -14,6 +14,7 @@ namespace {
 class StageSimulation final : public Simulation {
 public:
     StageSimulation(const SceneSpec& scene, StageBody body) : Simulation(scene, SolverKind::Seed), m_body(std::move(body)) {}
+    std::unique_ptr<Simulation> clone() const override { return std::unique_ptr<Simulation>(new StageSimulation(*this)); }
 
     int bodyCount() const override { return 1; }
     void bodyVertices(int, std::vector<Point>& out) const override { out = m_body.vertices(); }

@@ -57,6 +57,7 @@ std::vector<Point> shapeAt(const SceneSpec& s, std::size_t i, Point centre)
 class StableSimulation final : public Simulation {
 public:
     StableSimulation(const SceneSpec& scene, XpbdWorld world) : Simulation(scene, SolverKind::Stable), m_world(std::move(world)) {}
+    std::unique_ptr<Simulation> clone() const override { return std::make_unique<StableSimulation>(*this); }
 
     Expected<void> build()
     {

@@ -1,0 +1,254 @@
+#include "core/softbody/recorded_run.h"
+
+#include "core/base/enum_names.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace granota {
+
+namespace {
+
+constexpr std::array<EnumName<InputKind>, 5> kInputNames{{{InputKind::Press, "press"},
+                                                          {InputKind::Move, "move"},
+                                                          {InputKind::Release, "release"},
+                                                          {InputKind::Spawn, "spawn"},
+                                                          {InputKind::ReleaseSpawn, "release-spawn"}}};
+
+bool hasPoint(InputKind k) { return k == InputKind::Press || k == InputKind::Move || k == InputKind::Spawn; }
+
+/// A whole number in [lo, hi] (a step), or nullopt.
+std::optional<long> wholeNumber(const Json& v, long lo, long hi)
+{
+    const auto d = v.asNumber();
+    if (!d || !(*d >= double(lo) && *d <= double(hi)) || std::floor(*d) != *d)
+        return std::nullopt;
+    return static_cast<long>(*d);
+}
+
+} // namespace
+
+Json recordingToJson(const Recording& r)
+{
+    Json events = Json::array();
+    for (const InputEvent& e : r.events) {
+        Json row = Json::array();
+        row.push(double(e.step)).push(std::string(nameOf(kInputNames, e.kind, "move")));
+        if (hasPoint(e.kind))
+            row.push(e.at.x).push(e.at.y);
+        events.push(std::move(row));
+    }
+    Json doc = Json::object();
+    doc.set("format", "granota-recording")
+        .set("version", 1)
+        .set("scene", sceneToJson(r.scene))
+        .set("solver", solverName(r.solver))
+        .set("steps", double(r.steps))
+        .set("events", std::move(events));
+    return doc;
+}
+
+Expected<Recording> recordingFromJson(const Json& doc)
+{
+    const auto bad = [](const std::string& what) { return makeError(ErrorCode::InvalidInput, "recording: " + what); };
+    if (!doc.isObject())
+        return bad("not a JSON object");
+    const Json* format = doc.find("format");
+    if (!format || format->asString() != std::optional<std::string>("granota-recording"))
+        return bad("\"format\" must be \"granota-recording\"");
+    const Json* version = doc.find("version");
+    if (!version || version->asNumber() != std::optional<double>(1))
+        return bad("\"version\" must be 1");
+    Recording r;
+    const Json* scene = doc.find("scene");
+    if (!scene)
+        return bad("no \"scene\"");
+    auto spec = parseScene(*scene);
+    if (!spec)
+        return bad("its scene: " + spec.error().message);
+    r.scene = std::move(spec).value();
+    const Json* solver = doc.find("solver");
+    const auto kind = solver && solver->asString() ? parseSolverKind(*solver->asString()) : std::nullopt;
+    if (!kind)
+        return bad("\"solver\" must be \"seed\" or \"stable\"");
+    r.solver = *kind;
+    const Json* steps = doc.find("steps");
+    const auto n = steps ? wholeNumber(*steps, 0, kMaxRecordedSteps) : std::nullopt;
+    if (!n)
+        return bad("\"steps\" must be a whole number from 0 to " + std::to_string(kMaxRecordedSteps));
+    r.steps = *n;
+    const Json* events = doc.find("events");
+    if (!events || !events->isArray())
+        return bad("\"events\" must be an array");
+    if (static_cast<long>(events->asArray()->size()) > kMaxRecordedEvents)
+        return bad("more than " + std::to_string(kMaxRecordedEvents) + " events");
+    r.events.reserve(events->asArray()->size());
+    long last = 0;
+    for (const Json& row : *events->asArray()) {
+        const std::string where = "event " + std::to_string(r.events.size() + 1);
+        const Json::Array* a = row.asArray();
+        if (!a || a->size() < 2)
+            return bad(where + " must be [step, kind, …]");
+        const auto step = wholeNumber((*a)[0], last, r.steps);
+        if (!step)
+            return bad(where + ": its step must be a whole number from " + std::to_string(last) + " (the event before) to " +
+                       std::to_string(r.steps) + " (the steps)");
+        const auto name = (*a)[1].asString();
+        const auto k = name ? parseName(kInputNames, *name) : std::nullopt;
+        if (!k)
+            return bad(where + ": the kind must be press, move, release, spawn or release-spawn");
+        InputEvent e{*step, *k, Point()};
+        if (hasPoint(*k)) {
+            const auto x = a->size() == 4 ? (*a)[2].asNumber() : std::nullopt;
+            const auto y = a->size() == 4 ? (*a)[3].asNumber() : std::nullopt;
+            if (!x || !y || !std::isfinite(*x) || !std::isfinite(*y))
+                return bad(where + ": " + *name + " needs finite x and y");
+            e.at = Point(*x, *y);
+        } else if (a->size() != 2) {
+            return bad(where + ": " + *name + " takes no point");
+        }
+        last = e.step;
+        r.events.push_back(e);
+    }
+    return r;
+}
+
+// ---------------------------------------------------------------- the run
+
+RecordedRun::RecordedRun(RecordedRun&&) noexcept = default;
+RecordedRun& RecordedRun::operator=(RecordedRun&&) noexcept = default;
+RecordedRun::~RecordedRun() = default;
+
+Expected<RecordedRun> RecordedRun::start(const SceneSpec& scene, SolverKind solver, int snapshotEvery)
+{
+    auto sim = Simulation::create(scene, solver);
+    if (!sim)
+        return sim.error();
+    RecordedRun run;
+    run.m_sim = std::move(sim).value();
+    run.m_recording.scene = scene;
+    run.m_recording.solver = solver;
+    run.m_every = std::max(1, snapshotEvery);
+    run.takeSnapshot();
+    return run;
+}
+
+Expected<RecordedRun> RecordedRun::load(const Recording& recording, int snapshotEvery)
+{
+    auto run = start(recording.scene, recording.solver, snapshotEvery);
+    if (!run)
+        return run.error();
+    run->m_recording = recording;
+    return run;
+}
+
+void RecordedRun::takeSnapshot()
+{
+    m_snapshots.push_back({m_sim->clone(), m_nextEvent});
+    if (m_snapshots.size() <= kMaxSnapshots)
+        return;
+    // Twice the steps between snapshots: keep those at multiples of the new interval.
+    m_every *= 2;
+    std::vector<Snapshot> kept;
+    for (Snapshot& s : m_snapshots)
+        if (s.sim->stepCount() % m_every == 0)
+            kept.push_back(std::move(s));
+    m_snapshots = std::move(kept);
+}
+
+void RecordedRun::apply(const InputEvent& e)
+{
+    switch (e.kind) {
+    case InputKind::Press: m_sim->press(e.at); break;
+    case InputKind::Move: m_sim->move(e.at); break;
+    case InputKind::Release: m_sim->release(); break;
+    case InputKind::Spawn: m_sim->spawn(e.at); break;
+    case InputKind::ReleaseSpawn: m_sim->releaseSpawn(); break;
+    }
+}
+
+void RecordedRun::live(const InputEvent& e)
+{
+    const long now = stepCount();
+    if (m_nextEvent < m_recording.events.size() || now < m_recording.steps) {
+        // A new branch from here: the recorded future is gone, and its snapshots.
+        m_recording.events.resize(m_nextEvent);
+        m_recording.steps = now;
+        while (!m_snapshots.empty() && m_snapshots.back().sim->stepCount() > now)
+            m_snapshots.pop_back();
+    }
+    m_recording.events.push_back(e);
+    m_nextEvent = m_recording.events.size();
+}
+
+bool RecordedRun::press(Point p)
+{
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        return false;
+    live({stepCount(), InputKind::Press, p});
+    return m_sim->press(p);
+}
+void RecordedRun::move(Point p)
+{
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        return;
+    live({stepCount(), InputKind::Move, p});
+    m_sim->move(p);
+}
+void RecordedRun::release()
+{
+    live({stepCount(), InputKind::Release, Point()});
+    m_sim->release();
+}
+void RecordedRun::spawn(Point p)
+{
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+        return;
+    live({stepCount(), InputKind::Spawn, p});
+    m_sim->spawn(p);
+}
+void RecordedRun::releaseSpawn()
+{
+    live({stepCount(), InputKind::ReleaseSpawn, Point()});
+    m_sim->releaseSpawn();
+}
+
+void RecordedRun::step()
+{
+    const auto& events = m_recording.events;
+    while (m_nextEvent < events.size() && events[m_nextEvent].step <= stepCount())
+        apply(events[m_nextEvent++]);
+    m_sim->step();
+    const long now = stepCount();
+    m_recording.steps = std::max(m_recording.steps, now);
+    if (now % m_every == 0 && (m_snapshots.empty() || m_snapshots.back().sim->stepCount() < now))
+        takeSnapshot();
+}
+
+void RecordedRun::runToEnd()
+{
+    while (stepCount() < m_recording.steps)
+        step();
+}
+
+Expected<void> RecordedRun::seek(long target)
+{
+    if (target < 0 || target > m_recording.steps)
+        return makeError(ErrorCode::OutOfRange, "step " + std::to_string(target) + " is outside the recording (0 to " +
+                                                    std::to_string(m_recording.steps) + ")");
+    // The latest snapshot at or before the target; from the present state instead when that
+    // is nearer (between the snapshot and the target).
+    const auto after = std::upper_bound(m_snapshots.begin(), m_snapshots.end(), target,
+                                        [](long t, const Snapshot& s) { return t < s.sim->stepCount(); });
+    const Snapshot& from = *(after - 1); // the one at step 0 is always there
+    if (!(stepCount() >= from.sim->stepCount() && stepCount() <= target)) {
+        m_sim = from.sim->clone();
+        m_nextEvent = from.nextEvent;
+    }
+    while (stepCount() < target)
+        step();
+    return {};
+}
+
+} // namespace granota

@@ -1,0 +1,109 @@
+#pragma once
+/// \file recorded_run.h
+/// Rewind (docs/rewind.md): a run of a scene that records what drives it — the scene as
+/// run, the solver, and every mouse and key event with the step it came before — so that it
+/// replays identically (both solvers are deterministic: same input, same bits) and can go
+/// back to any step it has been through. Going back restores the snapshot taken at or
+/// before that step (one every `snapshotEvery` steps) and steps forward from it, applying
+/// the recorded events again; running on from a step it has been through plays the
+/// recording back until a new event is made there, which cuts the recorded future off.
+
+#include "core/base/expected.h"
+#include "core/io/json.h"
+#include "core/softbody/simulation.h"
+
+#include <memory>
+#include <vector>
+
+namespace granota {
+
+/// Annex II's input: the left button's press, move and release, and the space bar's
+/// spawn (a new body at the mouse) and its release.
+enum class InputKind { Press, Move, Release, Spawn, ReleaseSpawn };
+
+struct InputEvent {
+    long step = 0;  ///< applied once the run has made this many steps, before the next
+    InputKind kind = InputKind::Move;
+    Point at;       ///< scene px (Press, Move, Spawn)
+    bool operator==(const InputEvent& o) const { return step == o.step && kind == o.kind && at == o.at; }
+};
+
+struct Recording {
+    SceneSpec scene;
+    SolverKind solver = SolverKind::Seed;
+    long steps = 0; ///< how far the run went
+    std::vector<InputEvent> events;
+};
+
+/// The most events and steps a recording may hold (a bound on what a file can ask for):
+/// ten events a step for a day of 60 steps a second is far below either.
+inline constexpr long kMaxRecordedEvents = 10000000;
+inline constexpr long kMaxRecordedSteps = 100000000;
+
+/// {"format": "granota-recording", "version": 1, "scene": {…scene file…}, "solver": …,
+///  "steps": N, "events": [[step, "press", x, y], [step, "release"], …]} (docs/file-formats.md).
+Json recordingToJson(const Recording& recording);
+/// Rejects a malformed recording with a message naming what is wrong: the scene as a scene
+/// file is checked, events in step order, inside [0, steps], finite coordinates.
+Expected<Recording> recordingFromJson(const Json& doc);
+
+class RecordedRun {
+public:
+    /// A new run of `scene` on `solver`, recording from step 0.
+    static Expected<RecordedRun> start(const SceneSpec& scene, SolverKind solver, int snapshotEvery = 100);
+    /// The recording ready to play back from step 0 (run() or seek() to go through it).
+    static Expected<RecordedRun> load(const Recording& recording, int snapshotEvery = 100);
+
+    RecordedRun(RecordedRun&&) noexcept;
+    RecordedRun& operator=(RecordedRun&&) noexcept;
+    ~RecordedRun();
+
+    Simulation& simulation() { return *m_sim; }
+    const Simulation& simulation() const { return *m_sim; }
+    long stepCount() const { return m_sim->stepCount(); }
+    /// The furthest step recorded: seek() reaches any step in [0, recordedSteps()].
+    long recordedSteps() const { return m_recording.steps; }
+    /// Whether step() will replay recorded steps (the run is behind its recorded end).
+    bool playingBack() const { return stepCount() < m_recording.steps; }
+    const Recording& recording() const { return m_recording; }
+
+    /// Live input: applied now and recorded at the present step. Made while playing back, it
+    /// cuts the recorded future off first (a new branch from here). A point that is not
+    /// finite is neither applied nor recorded (press returns false).
+    bool press(Point p);
+    void move(Point p);
+    void release();
+    void spawn(Point p);
+    void releaseSpawn();
+
+    /// One step: first the recorded events of this step (while playing back), then the step.
+    void step();
+    /// Steps until the recorded end (replays the whole recording from where it is).
+    void runToEnd();
+    /// Goes to `step`, in [0, recordedSteps()]: the state after that many steps, as the run
+    /// first went through it. Errors: a step outside that range.
+    Expected<void> seek(long step);
+    /// Snapshots held, and the steps between them (doubled when there would be more than
+    /// kMaxSnapshots, so memory stays bounded on long runs).
+    std::size_t snapshotCount() const { return m_snapshots.size(); }
+    int snapshotEvery() const { return m_every; }
+    static constexpr std::size_t kMaxSnapshots = 256;
+
+private:
+    RecordedRun() = default;
+    struct Snapshot {
+        std::unique_ptr<Simulation> sim;
+        std::size_t nextEvent = 0;
+    };
+    void live(const InputEvent& e);
+    void apply(const InputEvent& e);
+    void takeSnapshot();
+
+    std::unique_ptr<Simulation> m_sim;
+    Recording m_recording;
+    std::size_t m_nextEvent = 0; // the first recorded event not yet applied
+    std::vector<Snapshot> m_snapshots; // in step order; the first at step 0
+    int m_every = 100;
+};
+
+} // namespace granota

@@ -1,0 +1,270 @@
+// Rewind (docs/rewind.md): a recorded run replays to the same bits, going back and forth
+// gives the states of the run forward, a new event cuts the recorded future off, snapshots
+// stay bounded, and a malformed recording is refused with a message.
+#include "cli_runner.h"
+
+#include "core/softbody/recorded_run.h"
+#include "core/softbody/scenes/scene.h"
+#include "core/softbody/simulation_trace.h"
+
+#include <QtTest>
+
+#include <QFile>
+#include <QTemporaryDir>
+
+#include <random>
+
+using namespace granota;
+Q_DECLARE_METATYPE(SolverKind)
+
+namespace {
+
+SceneSpec scene(const std::string& name)
+{
+    auto spec = loadScene(name);
+    if (!spec)
+        qFatal("%s", spec.error().message.c_str());
+    return *spec;
+}
+
+Point centroid(const Simulation& s)
+{
+    if (s.bodyCount() == 0) // the pendulums: the nail
+        return s.scene().params.center;
+    std::vector<Point> v;
+    s.bodyVertices(0, v);
+    Point c;
+    for (const Point& p : v)
+        c += p;
+    return Point(c.x / double(v.size()), c.y / double(v.size()));
+}
+
+/// A student's minute: grab the frog, swing it round, throw it, spawn another, let go.
+/// Returns the trace row after every step (index = step).
+std::vector<std::string> drive(RecordedRun& run, int steps)
+{
+    std::vector<std::string> rows{simulationTraceRow(run.simulation())};
+    for (int i = 0; i < steps; ++i) {
+        if (i == 20)
+            run.press(centroid(run.simulation()));
+        if (i > 20 && i < 80)
+            run.move(Point(640 + 150 * std::cos(i / 8.0), 300 + 80 * std::sin(i / 8.0)));
+        if (i == 80)
+            run.release();
+        if (i == 150)
+            run.spawn(Point(400, 200));
+        if (i == 170)
+            run.releaseSpawn();
+        run.step();
+        rows.push_back(simulationTraceRow(run.simulation()));
+    }
+    return rows;
+}
+
+} // namespace
+
+class TestRecordedRun : public QObject {
+    Q_OBJECT
+private slots:
+    void replaysToTheSameBits_data()
+    {
+        QTest::addColumn<QString>("name");
+        QTest::addColumn<SolverKind>("solver");
+        QTest::newRow("frog, seed") << "frog" << SolverKind::Seed;
+        QTest::newRow("frog, stable") << "frog" << SolverKind::Stable;
+        QTest::newRow("tuned, stable") << "tuned" << SolverKind::Stable;
+        QTest::newRow("many-bodies, stable") << "many-bodies" << SolverKind::Stable;
+        QTest::newRow("bounce, seed") << "bounce" << SolverKind::Seed;
+        QTest::newRow("pendulum-limits, seed") << "pendulum-limits" << SolverKind::Seed;
+    }
+    void replaysToTheSameBits()
+    {
+        QFETCH(QString, name);
+        QFETCH(SolverKind, solver);
+        auto run = RecordedRun::start(scene(name.toStdString()), solver, 50);
+        QVERIFY(run.ok());
+        QVERIFY(!run->press(Point(std::nan(""), 3))); // not finite: neither applied nor recorded
+        QVERIFY(run->recording().events.empty());
+        const auto forward = drive(*run, 300);
+        QCOMPARE(run->recordedSteps(), 300L);
+        QVERIFY(run->recording().events.size() > 60);
+        // Through the file format and back.
+        const std::string text = recordingToJson(run->recording()).dump(1);
+        auto parsed = recordingFromJson(Json::parse(text).value());
+        QVERIFY2(parsed.ok(), parsed.ok() ? "" : parsed.error().message.c_str());
+        QVERIFY(parsed->events == run->recording().events);
+        auto replay = RecordedRun::load(*parsed);
+        QVERIFY(replay.ok());
+        QVERIFY(replay->playingBack());
+        QCOMPARE(simulationTraceRow(replay->simulation()), forward[0]);
+        for (long step = 1; step <= 300; ++step) {
+            replay->step();
+            QCOMPARE(simulationTraceRow(replay->simulation()), forward[std::size_t(step)]);
+        }
+        QVERIFY(!replay->playingBack());
+    }
+
+    void scrubbingGivesTheStatesOfTheRunForward_data() { replaysToTheSameBits_data(); }
+    void scrubbingGivesTheStatesOfTheRunForward()
+    {
+        QFETCH(QString, name);
+        QFETCH(SolverKind, solver);
+        auto run = RecordedRun::start(scene(name.toStdString()), solver, 50);
+        const auto forward = drive(*run, 300);
+        std::mt19937 random(16);
+        std::uniform_int_distribution<long> anyStep(0, 300);
+        std::vector<long> targets{299, 0, 300, 21, 20, 80, 81, 150, 151, 49, 50, 51, 1};
+        for (int i = 0; i < 30; ++i)
+            targets.push_back(anyStep(random));
+        for (long t : targets) {
+            QVERIFY(run->seek(t).ok());
+            QCOMPARE(run->stepCount(), t);
+            QCOMPARE(simulationTraceRow(run->simulation()), forward[std::size_t(t)]);
+        }
+        // From a step gone back to, running on plays the recording back.
+        QVERIFY(run->seek(137).ok());
+        for (long step = 138; step <= 300; ++step) {
+            run->step();
+            QCOMPARE(simulationTraceRow(run->simulation()), forward[std::size_t(step)]);
+        }
+        QVERIFY(!run->seek(301).ok());
+        QVERIFY(!run->seek(-1).ok());
+        QCOMPARE(run->stepCount(), 300L);
+    }
+
+    void aNewEventCutsTheFutureOff()
+    {
+        auto run = RecordedRun::start(scene("frog"), SolverKind::Stable, 50);
+        const auto forward = drive(*run, 300);
+        const std::size_t all = run->recording().events.size();
+        QVERIFY(run->seek(100).ok());
+        run->press(centroid(run->simulation()));
+        QCOMPARE(run->recordedSteps(), 100L);
+        QVERIFY(run->recording().events.size() < all);
+        QCOMPARE(run->recording().events.back().step, 100L);
+        QVERIFY(run->recording().events.back().kind == InputKind::Press);
+        for (const InputEvent& e : run->recording().events)
+            QVERIFY(e.step <= 100);
+        for (int i = 0; i < 40; ++i)
+            run->step();
+        QCOMPARE(run->recordedSteps(), 140L);
+        QVERIFY(simulationTraceRow(run->simulation()) != forward[140]); // a new branch
+        // The new branch replays too.
+        const std::string now = simulationTraceRow(run->simulation());
+        QVERIFY(run->seek(0).ok());
+        run->runToEnd();
+        QCOMPARE(simulationTraceRow(run->simulation()), now);
+    }
+
+    // A long run keeps at most kMaxSnapshots snapshots, farther apart, and still goes back right.
+    void snapshotsStayBounded()
+    {
+        auto run = RecordedRun::start(scene("frog"), SolverKind::Seed, 10);
+        std::vector<std::string> rows{simulationTraceRow(run->simulation())};
+        for (int i = 0; i < 6000; ++i) {
+            if (i % 500 == 100)
+                run->press(centroid(run->simulation()));
+            if (i % 500 == 200)
+                run->release();
+            run->step();
+            rows.push_back(simulationTraceRow(run->simulation()));
+            QVERIFY(run->snapshotCount() <= RecordedRun::kMaxSnapshots);
+        }
+        QVERIFY(run->snapshotEvery() > 10);
+        for (long t : {5999L, 3333L, 10L, 4500L, 0L, 6000L}) {
+            QVERIFY(run->seek(t).ok());
+            QCOMPARE(simulationTraceRow(run->simulation()), rows[std::size_t(t)]);
+        }
+    }
+
+    void badRecordingsAreRefused_data()
+    {
+        QTest::addColumn<QString>("change");
+        QTest::addColumn<QString>("message");
+        QTest::newRow("format") << R"("format": "granota")" << "format";
+        QTest::newRow("version") << R"("version": 2)" << "version";
+        QTest::newRow("solver") << R"("solver": "fast")" << "solver";
+        QTest::newRow("steps negative") << R"("steps": -1)" << "steps";
+        QTest::newRow("steps fraction") << R"("steps": 2.5)" << "steps";
+        QTest::newRow("events not an array") << R"("events": {})" << "events";
+        QTest::newRow("event after the end") << R"("events": [[11, "release"]])" << "event 1";
+        QTest::newRow("events out of order") << R"("events": [[5, "release"], [4, "release"]])" << "event 2";
+        QTest::newRow("unknown kind") << R"("events": [[1, "jump"]])" << "kind";
+        QTest::newRow("press without a point") << R"("events": [[1, "press"]])" << "x and y";
+        QTest::newRow("release with a point") << R"("events": [[1, "release", 3, 4]])" << "no point";
+        QTest::newRow("huge coordinate") << R"("events": [[1, "move", 1e999, 4]])" << "";
+        QTest::newRow("bad scene") << R"("scene": {"name": "frog"})" << "scene";
+    }
+    void badRecordingsAreRefused()
+    {
+        QFETCH(QString, change);
+        QFETCH(QString, message);
+        auto run = RecordedRun::start(scene("frog"), SolverKind::Seed);
+        for (int i = 0; i < 10; ++i)
+            run->step();
+        Json doc = recordingToJson(run->recording());
+        const auto changed = Json::parse("{" + change.toStdString() + "}");
+        if (!changed) { // 1e999 is no JSON number: refused as text already
+            QVERIFY(message.isEmpty());
+            return;
+        }
+        for (const auto& [key, value] : *changed->asObject())
+            doc.set(key, value);
+        auto parsed = recordingFromJson(doc);
+        QVERIFY(!parsed.ok());
+        QVERIFY2(QString::fromStdString(parsed.error().message).contains(message), parsed.error().message.c_str());
+        QVERIFY(QString::fromStdString(parsed.error().message).startsWith("recording: "));
+    }
+
+    // granota-cli: --record writes a run, --replay runs a recording (the GUI's, with its
+    // mouse) to the same trace bits.
+    void cliRecordsAndReplays()
+    {
+        QTemporaryDir dir;
+        auto run = RecordedRun::start(scene("frog"), SolverKind::Stable, 50);
+        const auto forward = drive(*run, 300);
+        const QString recording = dir.filePath("run.json"), trace = dir.filePath("trace.csv");
+        {
+            QFile f(recording);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QByteArray::fromStdString(recordingToJson(run->recording()).dump()));
+        }
+        const CliRun replay = runCli({"simulate", "--replay", recording, "--trace", trace, "--json"});
+        QCOMPARE(replay.exitCode, 0);
+        QCOMPARE(replay.json()["steps"].toInt(), 300);
+        QFile t(trace);
+        QVERIFY(t.open(QIODevice::ReadOnly));
+        const QList<QByteArray> rows = t.readAll().split('\n');
+        QCOMPARE(rows.size(), 303); // header, 301 rows, the last newline
+        for (int step = 0; step <= 300; ++step)
+            QCOMPARE(rows[step + 1], QByteArray::fromStdString(forward[std::size_t(step)]));
+        // --record, then --replay of that: the same final state as the plain run.
+        const QString mine = dir.filePath("mine.json");
+        const CliRun record = runCli({"simulate", "--scene", "frog", "--solver", "stable", "--steps", "120", "--set",
+                                      "gravity=0.2,0.75", "--record", mine, "--json"});
+        QCOMPARE(record.exitCode, 0);
+        const CliRun again = runCli({"simulate", "--replay", mine, "--json"});
+        QCOMPARE(again.exitCode, 0);
+        QCOMPARE(again.json()["bodies"], record.json()["bodies"]);
+        QCOMPARE(again.json()["chains"], record.json()["chains"]);
+        // Bad input: exit 2 with a message.
+        const CliRun both = runCli({"simulate", "--replay", mine, "--steps", "5"});
+        QCOMPARE(both.exitCode, 2);
+        QVERIFY(both.err.startsWith("error: --replay"));
+        const CliRun zero = runCli({"simulate", "--replay", "/dev/zero"});
+        QCOMPARE(zero.exitCode, 2);
+        QVERIFY(zero.err.startsWith("error: "));
+        const CliRun missing = runCli({"simulate", "--replay", dir.filePath("none.json")});
+        QCOMPARE(missing.exitCode, 2);
+        QFile broken(dir.filePath("broken.json"));
+        QVERIFY(broken.open(QIODevice::WriteOnly));
+        broken.write(R"({"format":"granota-recording","version":1,"scene":{},"solver":"seed","steps":3,"events":[]})");
+        broken.close();
+        const CliRun bad = runCli({"simulate", "--replay", broken.fileName()});
+        QCOMPARE(bad.exitCode, 2);
+        QVERIFY2(bad.err.contains("recording: its scene"), bad.err.constData());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRecordedRun)
+#include "test_recorded_run.moc"
