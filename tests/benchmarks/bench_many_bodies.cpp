@@ -13,7 +13,9 @@
 //    the broad phase and ~10 000 vertex contacts per substep, about one per vertex. Timed
 //    steps continue from that state (the pile stays a pile: nothing leaves it).
 //   build/bin/granota-bench --benchmark_filter=ManyBodies
+#include "core/softbody/recorded_run.h"
 #include "core/softbody/simulation.h"
+#include "core/softbody/simulation_series.h"
 
 #include <benchmark/benchmark.h>
 
@@ -78,3 +80,71 @@ void BM_ManyBodiesPile(benchmark::State& state)
 
 BENCHMARK(BM_ManyBodiesSpread)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_ManyBodiesPile)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Complexity();
+
+// Issue 16: what recording a run (RecordedRun: its snapshots every 100 steps) and the plots'
+// series (SeriesRecorder, one sample a step) add to a step of 1000 bodies. The same 200
+// steps from the same state with and without them: the ratio of the two is the overhead
+// (target: at most 5 %, tests/benchmarks/targets.sh).
+
+namespace {
+
+constexpr int kOverheadSteps = 200;
+
+void BM_ManyBodiesPlain(benchmark::State& state)
+{
+    const SceneSpec spec = spreadScene(static_cast<int>(state.range(0)));
+    for (auto _ : state) {
+        state.PauseTiming();
+        auto sim = std::move(Simulation::create(spec, SolverKind::Stable)).value();
+        for (int i = 0; i < kSpreadSettleSteps; ++i)
+            sim->step();
+        state.ResumeTiming();
+        for (int i = 0; i < kOverheadSteps; ++i)
+            sim->step();
+    }
+}
+
+void BM_ManyBodiesRecorded(benchmark::State& state)
+{
+    const SceneSpec spec = spreadScene(static_cast<int>(state.range(0)));
+    for (auto _ : state) {
+        state.PauseTiming();
+        auto run = std::move(RecordedRun::start(spec, SolverKind::Stable)).value();
+        SeriesRecorder series(36000);
+        for (int i = 0; i < kSpreadSettleSteps; ++i)
+            run.step();
+        state.ResumeTiming();
+        for (int i = 0; i < kOverheadSteps; ++i) {
+            run.step();
+            series.record(run.simulation());
+        }
+    }
+}
+
+// A scrub 10 000 steps back: from step 10 000 of the frog on the stable solver (grabbed
+// and thrown on the way) to step 99, the worst case of snapshots every 100 steps (99 steps
+// re-simulated after restoring the one at step 0). Target: within 100 ms.
+void BM_ScrubBack10000(benchmark::State& state)
+{
+    auto run = std::move(RecordedRun::start(*loadScene("frog"), SolverKind::Stable)).value();
+    for (int i = 0; i < 10000; ++i) {
+        if (i % 1000 == 100)
+            run.press(Point(640, 500));
+        if (i % 1000 == 160)
+            run.release();
+        run.step();
+    }
+    for (auto _ : state) {
+        state.PauseTiming();
+        (void)run.seek(10000);
+        state.ResumeTiming();
+        (void)run.seek(99);
+    }
+    state.counters["snapshots"] = static_cast<double>(run.snapshotCount());
+}
+
+} // namespace
+
+BENCHMARK(BM_ManyBodiesPlain)->Arg(1000)->Unit(benchmark::kMillisecond)->Iterations(5);
+BENCHMARK(BM_ManyBodiesRecorded)->Arg(1000)->Unit(benchmark::kMillisecond)->Iterations(5);
+BENCHMARK(BM_ScrubBack10000)->Unit(benchmark::kMillisecond);

@@ -36,10 +36,14 @@ length3_us=$(bench 'BM_ArcLength/3$' us)
 length10_us=$(bench 'BM_ArcLength/10$' us)
 features_us=$(bench 'BM_CurveFeatures/10$' us)
 closest_us=$(bench 'BM_ClosestPoint/10$' us)
+plain_ms=$(bench 'BM_ManyBodiesPlain/1000/' ms)
+recorded_ms=$(bench 'BM_ManyBodiesRecorded/1000/' ms)
+frogs_plots_ms=$(bench 'BM_GuiFrog200Plots$' ms)
+scrub_ms=$(bench 'BM_ScrubBack10000$' ms)
 
-python3 - "$java_ns" "$seed_ns" "$stable_us" "$pile_ms" "$spread_ms" "$outline_us" "$fit_ms" "$drag_ms" "$frogs_ms" "$length3_us" "$length10_us" "$features_us" "$closest_us" "$overlays_ms" <<'PY'
+python3 - "$java_ns" "$seed_ns" "$stable_us" "$pile_ms" "$spread_ms" "$outline_us" "$fit_ms" "$drag_ms" "$frogs_ms" "$length3_us" "$length10_us" "$features_us" "$closest_us" "$overlays_ms" "$plain_ms" "$recorded_ms" "$frogs_plots_ms" "$scrub_ms" <<'PY'
 import sys, platform, subprocess
-java, seed, stable, pile, spread, outline, fit, drag, frogs, length3, length10, features, closest, overlays = map(float, sys.argv[1:])
+java, seed, stable, pile, spread, outline, fit, drag, frogs, length3, length10, features, closest, overlays, plain, recorded, frogs_plots, scrub = map(float, sys.argv[1:])
 cpu = next((l.split(':',1)[1].strip() for l in open('/proc/cpuinfo') if l.startswith('model name')), '?')
 print(f"Machine: {cpu}, {subprocess.check_output(['nproc']).decode().strip()} cores; release build.\n")
 print("| target | measured | goal | met |")
@@ -57,6 +61,9 @@ rows = [
   ("arc length of a degree-10 curve to 1e-13 relative", f"{length10:.2f} µs", "< 5 µs", length10 < 5),
   ("extrema, tight box, inflections and cusps of a degree-10 curve", f"{features:.2f} µs", "< 5 µs", features < 5),
   ("global closest point on a degree-10 curve", f"{closest:.2f} µs", "< 5 µs", closest < 5),
+  ("recording and the series on 1000 bodies, `stable` (200 steps, same run)", f"{recorded:.0f} ms vs {plain:.0f} ms: **{100*(recorded/plain-1):+.1f} %**", "≤ +5 %", recorded <= 1.05 * plain),
+  ("200 frogs with the plots over time open: step + paint + plot", f"{frogs_plots:.1f} ms", "< 16.7 ms (60 fps)", frogs_plots < 16.7),
+  ("a scrub 10 000 steps back (the stable frog)", f"{scrub:.1f} ms", "< 100 ms", scrub < 100),
   ("one `stable` frog step", f"{stable:.1f} µs", "—", True),
 ]
 for name, got, goal, ok in rows:
