@@ -47,7 +47,7 @@ Expected<SolverKind> solverFromArguments(const Arguments& args, const SceneSpec&
     return scene.has("collisions") || scene.has("obstacles") ? SolverKind::Stable : SolverKind::Seed;
 }
 
-Expected<std::unique_ptr<Simulation>> buildSimulation(const Arguments& args)
+Expected<std::pair<SceneSpec, SolverKind>> sceneAndSolverFromArguments(const Arguments& args)
 {
     auto scene = sceneFromArguments(args);
     if (!scene)
@@ -55,7 +55,15 @@ Expected<std::unique_ptr<Simulation>> buildSimulation(const Arguments& args)
     auto solver = solverFromArguments(args, *scene);
     if (!solver)
         return solver.error();
-    return Simulation::create(*scene, *solver);
+    return std::make_pair(std::move(scene).value(), *solver);
+}
+
+Expected<std::unique_ptr<Simulation>> buildSimulation(const Arguments& args)
+{
+    auto chosen = sceneAndSolverFromArguments(args);
+    if (!chosen)
+        return chosen.error();
+    return Simulation::create(chosen->first, chosen->second);
 }
 
 } // namespace granota::cli

@@ -53,17 +53,14 @@ Expected<RecordedRun> runFromArguments(const Arguments& args, long* steps)
         *steps = recording->steps;
         return RecordedRun::load(*recording, kNoSnapshots);
     }
-    auto scene = sceneFromArguments(args);
-    if (!scene)
-        return scene.error();
-    auto solver = solverFromArguments(args, *scene);
-    if (!solver)
-        return solver.error();
+    auto chosen = sceneAndSolverFromArguments(args);
+    if (!chosen)
+        return chosen.error();
     auto n = args.integer("steps", 0, kMaxSteps, 600);
     if (!n)
         return n.error();
     *steps = *n;
-    return RecordedRun::start(*scene, *solver, kNoSnapshots);
+    return RecordedRun::start(chosen->first, chosen->second, kNoSnapshots);
 }
 
 Expected<CommandOutput> run(const Arguments& args)
