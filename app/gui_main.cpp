@@ -7,13 +7,14 @@
 #include "ui/shell/main_window.h"
 
 #include <QApplication>
-#include <algorithm>
 #include <QCommandLineParser>
 #include <QFile>
 #include <QSettings>
 #include <QSize>
 #include <QTemporaryDir>
 #include <QTextStream>
+
+#include <algorithm>
 
 namespace {
 

@@ -11,6 +11,7 @@
 #include "cli_runner.h"
 #include "gui_timeouts.h"
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -260,8 +261,13 @@ private slots:
         QVERIFY(tab().setScene("frog", nullptr));
         sim = canvas->simulation();
         tab().setSpeed(1);
-        QTest::keyClick(&tab(), Qt::Key_BracketRight);
-        QTest::keyClick(&tab(), Qt::Key_BracketRight);
+        // Keys go where the window sends them: to the widget with the focus (in a real
+        // window under a window manager, not to the tab that a click was never made in).
+        tab().activateWindow();
+        QTRY_VERIFY(QApplication::focusWidget() || QApplication::activeWindow());
+        QWidget* target = QApplication::focusWidget() ? QApplication::focusWidget() : &tab();
+        QTest::keyClick(target, Qt::Key_BracketRight);
+        QTest::keyClick(target, Qt::Key_BracketRight);
         QCOMPARE(canvas->speed(), 4.0);
         QCOMPARE(speed->currentText(), QStringLiteral("4×"));
         QCOMPARE(canvas->stepsPerFrame(), 4);

@@ -250,6 +250,15 @@ private slots:
         QCOMPARE(canvas->simulation()->stepCount(), before + 1);
         press(window, Qt::Key_R);
         QCOMPARE(canvas->simulation()->stepCount(), 0L);
+        // [ and ] slow down and speed up (issue 16), also without a click.
+        const double speed = canvas->speed();
+        press(window, Qt::Key_BracketRight);
+        QCOMPARE(canvas->speed(), 2 * speed);
+        press(window, Qt::Key_BracketLeft);
+        press(window, Qt::Key_BracketLeft);
+        QCOMPARE(canvas->speed(), speed / 2);
+        press(window, Qt::Key_BracketRight);
+        QCOMPARE(canvas->speed(), speed);
 
         QSet<QString> reached;
         for (int i = 0; i < 60 && reached.size() < 3; ++i) {
