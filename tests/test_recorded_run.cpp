@@ -177,6 +177,88 @@ private slots:
         }
     }
 
+    // A mouse sends more events than there are steps: the moves of one step are recorded
+    // as the last of them, and the replay is still the run.
+    void movesWithinAStepRecordAsOne()
+    {
+        auto run = RecordedRun::start(scene("frog"), SolverKind::Stable, 50);
+        std::vector<std::string> rows{simulationTraceRow(run->simulation())};
+        for (int i = 0; i < 120; ++i) {
+            for (int k = 0; k < 5; ++k) { // five mouse events a step, as a 300 Hz mouse sends
+                if (i == 10 && k == 2)
+                    run->press(centroid(run->simulation()));
+                run->move(Point(500 + 3 * i + k, 300 - 2 * i + k));
+            }
+            if (i == 60)
+                run->release();
+            run->step();
+            rows.push_back(simulationTraceRow(run->simulation()));
+        }
+        long moves = 0;
+        for (const InputEvent& e : run->recording().events)
+            moves += e.kind == InputKind::Move;
+        QCOMPARE(moves, 120L + 1); // one a step, and at step 10 one before the press and one after
+        auto replay = RecordedRun::load(run->recording());
+        replay->runToEnd();
+        QCOMPARE(simulationTraceRow(replay->simulation()), rows.back());
+    }
+
+    // The Frog tab records the simulation it built, and a document gives the run back.
+    void adoptedRunsTakeADocumentsEvents()
+    {
+        auto built = Simulation::create(scene("frog"), SolverKind::Seed);
+        auto run = RecordedRun::adopt(std::move(built).value(), 25);
+        QVERIFY(run.ok());
+        QCOMPARE(run->recording().scene.name, std::string("frog"));
+        const auto forward = drive(*run, 300);
+        const Json events = eventsToJson(run->recording().events);
+        auto parsed = eventsFromJson(events, 300);
+        QVERIFY(parsed.ok());
+        auto again = RecordedRun::adopt(std::move(Simulation::create(scene("frog"), SolverKind::Seed)).value(), 25);
+        QVERIFY(again->setRecording(*parsed, 300).ok());
+        QCOMPARE(again->recordedSteps(), 300L);
+        QVERIFY(again->seek(233).ok());
+        QCOMPARE(simulationTraceRow(again->simulation()), forward[233]);
+        // Going through it once more from the start replaces the snapshots of the old run.
+        QVERIFY(again->setRecording(*parsed, 300).ok());
+        QCOMPARE(again->stepCount(), 0L);
+        QCOMPARE(again->snapshotCount(), std::size_t(1));
+        again->runToEnd();
+        QCOMPARE(simulationTraceRow(again->simulation()), forward[300]);
+        // Refused: events past the steps, out of order, not finite; one that has stepped.
+        std::vector<InputEvent> late{{301, InputKind::Release, Point()}};
+        QVERIFY(!again->setRecording(late, 300).ok());
+        std::vector<InputEvent> order{{5, InputKind::Release, Point()}, {4, InputKind::Release, Point()}};
+        QVERIFY(!again->setRecording(order, 300).ok());
+        std::vector<InputEvent> nan{{5, InputKind::Move, Point(std::nan(""), 0)}};
+        QVERIFY(!again->setRecording(nan, 300).ok());
+        QCOMPARE(again->recordedSteps(), 300L); // unchanged
+        QCOMPARE(simulationTraceRow(again->simulation()), forward[300]);
+        QVERIFY(!eventsFromJson(Json::parse(R"([[3, "move", 1]])").value(), 300).ok());
+        auto stepped = Simulation::create(scene("frog"), SolverKind::Seed);
+        (*stepped)->step();
+        QVERIFY(!RecordedRun::adopt(std::move(stepped).value()).ok());
+    }
+
+    // A big scene keeps fewer copies: the bound holds, and seeks stay right.
+    void fewerSnapshotsForBigScenes()
+    {
+        auto run = RecordedRun::start(scene("frog"), SolverKind::Stable, 5);
+        run->setMaxSnapshots(8);
+        const auto forward = drive(*run, 300);
+        QVERIFY(run->snapshotCount() <= 8);
+        QVERIFY(run->snapshotEvery() >= 40); // 300 steps in at most 8 snapshots
+        for (long t : {0L, 299L, 17L, 150L, 300L, 81L}) {
+            QVERIFY(run->seek(t).ok());
+            QCOMPARE(simulationTraceRow(run->simulation()), forward[std::size_t(t)]);
+        }
+        run->setMaxSnapshots(0); // at least 2
+        QCOMPARE(run->maxSnapshots(), std::size_t(2));
+        QVERIFY(run->snapshotCount() <= 2);
+        QVERIFY(run->seek(211).ok());
+        QCOMPARE(simulationTraceRow(run->simulation()), forward[211]);
+    }
+
     void badRecordingsAreRefused_data()
     {
         QTest::addColumn<QString>("change");

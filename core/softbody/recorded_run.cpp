@@ -18,6 +18,8 @@ constexpr std::array<EnumName<InputKind>, 5> kInputNames{{{InputKind::Press, "pr
 
 bool hasPoint(InputKind k) { return k == InputKind::Press || k == InputKind::Move || k == InputKind::Spawn; }
 
+Error bad(const std::string& what) { return makeError(ErrorCode::InvalidInput, "recording: " + what); }
+
 /// A whole number in [lo, hi] (a step), or nullopt.
 std::optional<long> wholeNumber(const Json& v, long lo, long hi)
 {
@@ -29,29 +31,71 @@ std::optional<long> wholeNumber(const Json& v, long lo, long hi)
 
 } // namespace
 
-Json recordingToJson(const Recording& r)
+Json eventsToJson(const std::vector<InputEvent>& list)
 {
     Json events = Json::array();
-    for (const InputEvent& e : r.events) {
+    for (const InputEvent& e : list) {
         Json row = Json::array();
         row.push(double(e.step)).push(std::string(nameOf(kInputNames, e.kind, "move")));
         if (hasPoint(e.kind))
             row.push(e.at.x).push(e.at.y);
         events.push(std::move(row));
     }
+    return events;
+}
+
+Expected<std::vector<InputEvent>> eventsFromJson(const Json& events, long steps)
+{
+    if (!events.isArray())
+        return bad("\"events\" must be an array");
+    if (static_cast<long>(events.asArray()->size()) > kMaxRecordedEvents)
+        return bad("more than " + std::to_string(kMaxRecordedEvents) + " events");
+    std::vector<InputEvent> out;
+    out.reserve(events.asArray()->size());
+    long last = 0;
+    for (const Json& row : *events.asArray()) {
+        const std::string where = "event " + std::to_string(out.size() + 1);
+        const Json::Array* a = row.asArray();
+        if (!a || a->size() < 2)
+            return bad(where + " must be [step, kind, …]");
+        const auto step = wholeNumber((*a)[0], last, steps);
+        if (!step)
+            return bad(where + ": its step must be a whole number from " + std::to_string(last) + " (the event before) to " +
+                       std::to_string(steps) + " (the steps)");
+        const auto name = (*a)[1].asString();
+        const auto k = name ? parseName(kInputNames, *name) : std::nullopt;
+        if (!k)
+            return bad(where + ": the kind must be press, move, release, spawn or release-spawn");
+        InputEvent e{*step, *k, Point()};
+        if (hasPoint(*k)) {
+            const auto x = a->size() == 4 ? (*a)[2].asNumber() : std::nullopt;
+            const auto y = a->size() == 4 ? (*a)[3].asNumber() : std::nullopt;
+            if (!x || !y || !std::isfinite(*x) || !std::isfinite(*y))
+                return bad(where + ": " + *name + " needs finite x and y");
+            e.at = Point(*x, *y);
+        } else if (a->size() != 2) {
+            return bad(where + ": " + *name + " takes no point");
+        }
+        last = e.step;
+        out.push_back(e);
+    }
+    return out;
+}
+
+Json recordingToJson(const Recording& r)
+{
     Json doc = Json::object();
     doc.set("format", "granota-recording")
         .set("version", 1)
         .set("scene", sceneToJson(r.scene))
         .set("solver", solverName(r.solver))
         .set("steps", double(r.steps))
-        .set("events", std::move(events));
+        .set("events", eventsToJson(r.events));
     return doc;
 }
 
 Expected<Recording> recordingFromJson(const Json& doc)
 {
-    const auto bad = [](const std::string& what) { return makeError(ErrorCode::InvalidInput, "recording: " + what); };
     if (!doc.isObject())
         return bad("not a JSON object");
     const Json* format = doc.find("format");
@@ -79,38 +123,12 @@ Expected<Recording> recordingFromJson(const Json& doc)
         return bad("\"steps\" must be a whole number from 0 to " + std::to_string(kMaxRecordedSteps));
     r.steps = *n;
     const Json* events = doc.find("events");
-    if (!events || !events->isArray())
+    if (!events)
         return bad("\"events\" must be an array");
-    if (static_cast<long>(events->asArray()->size()) > kMaxRecordedEvents)
-        return bad("more than " + std::to_string(kMaxRecordedEvents) + " events");
-    r.events.reserve(events->asArray()->size());
-    long last = 0;
-    for (const Json& row : *events->asArray()) {
-        const std::string where = "event " + std::to_string(r.events.size() + 1);
-        const Json::Array* a = row.asArray();
-        if (!a || a->size() < 2)
-            return bad(where + " must be [step, kind, …]");
-        const auto step = wholeNumber((*a)[0], last, r.steps);
-        if (!step)
-            return bad(where + ": its step must be a whole number from " + std::to_string(last) + " (the event before) to " +
-                       std::to_string(r.steps) + " (the steps)");
-        const auto name = (*a)[1].asString();
-        const auto k = name ? parseName(kInputNames, *name) : std::nullopt;
-        if (!k)
-            return bad(where + ": the kind must be press, move, release, spawn or release-spawn");
-        InputEvent e{*step, *k, Point()};
-        if (hasPoint(*k)) {
-            const auto x = a->size() == 4 ? (*a)[2].asNumber() : std::nullopt;
-            const auto y = a->size() == 4 ? (*a)[3].asNumber() : std::nullopt;
-            if (!x || !y || !std::isfinite(*x) || !std::isfinite(*y))
-                return bad(where + ": " + *name + " needs finite x and y");
-            e.at = Point(*x, *y);
-        } else if (a->size() != 2) {
-            return bad(where + ": " + *name + " takes no point");
-        }
-        last = e.step;
-        r.events.push_back(e);
-    }
+    auto list = eventsFromJson(*events, r.steps);
+    if (!list)
+        return list.error();
+    r.events = std::move(list).value();
     return r;
 }
 
@@ -143,18 +161,66 @@ Expected<RecordedRun> RecordedRun::load(const Recording& recording, int snapshot
     return run;
 }
 
+Expected<RecordedRun> RecordedRun::adopt(std::unique_ptr<Simulation> sim, int snapshotEvery)
+{
+    if (!sim || sim->stepCount() != 0)
+        return makeError(ErrorCode::InvalidInput, "a recorded run starts from a simulation that has not stepped");
+    RecordedRun run;
+    run.m_recording.scene = sim->scene();
+    run.m_recording.solver = sim->solver();
+    run.m_sim = std::move(sim);
+    run.m_every = std::max(1, snapshotEvery);
+    run.takeSnapshot();
+    return run;
+}
+
+Expected<void> RecordedRun::setRecording(std::vector<InputEvent> events, long steps)
+{
+    if (steps < 0 || steps > kMaxRecordedSteps)
+        return bad("the steps must be a whole number from 0 to " + std::to_string(kMaxRecordedSteps));
+    long last = 0;
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        const InputEvent& e = events[i];
+        if (e.step < last || e.step > steps)
+            return bad("event " + std::to_string(i + 1) + ": its step must be from " + std::to_string(last) + " to " +
+                       std::to_string(steps));
+        if (!std::isfinite(e.at.x) || !std::isfinite(e.at.y))
+            return bad("event " + std::to_string(i + 1) + " needs finite x and y");
+        last = e.step;
+    }
+    m_snapshots.resize(1); // the one at step 0: the rest belonged to the old recording
+    m_sim = m_snapshots.front().sim->clone();
+    m_snapshots.front().nextEvent = 0;
+    m_nextEvent = 0;
+    m_recording.events = std::move(events);
+    m_recording.steps = steps;
+    return {};
+}
+
+void RecordedRun::setMaxSnapshots(std::size_t n)
+{
+    m_maxSnapshots = std::clamp<std::size_t>(n, 2, kMaxSnapshots);
+    thinSnapshots();
+}
+
 void RecordedRun::takeSnapshot()
 {
     m_snapshots.push_back({m_sim->clone(), m_nextEvent});
-    if (m_snapshots.size() <= kMaxSnapshots)
-        return;
-    // Twice the steps between snapshots: keep those at multiples of the new interval.
-    m_every *= 2;
-    std::vector<Snapshot> kept;
-    for (Snapshot& s : m_snapshots)
-        if (s.sim->stepCount() % m_every == 0)
-            kept.push_back(std::move(s));
-    m_snapshots = std::move(kept);
+    thinSnapshots();
+}
+
+void RecordedRun::thinSnapshots()
+{
+    // Twice the steps between snapshots: keep those at multiples of the new interval (the
+    // first, at step 0, always).
+    while (m_snapshots.size() > m_maxSnapshots) {
+        m_every *= 2;
+        std::vector<Snapshot> kept;
+        for (std::size_t i = 0; i < m_snapshots.size(); ++i)
+            if (i == 0 || m_snapshots[i].sim->stepCount() % m_every == 0)
+                kept.push_back(std::move(m_snapshots[i]));
+        m_snapshots = std::move(kept);
+    }
 }
 
 void RecordedRun::apply(const InputEvent& e)
@@ -178,8 +244,12 @@ void RecordedRun::live(const InputEvent& e)
         while (!m_snapshots.empty() && m_snapshots.back().sim->stepCount() > now)
             m_snapshots.pop_back();
     }
-    m_recording.events.push_back(e);
-    m_nextEvent = m_recording.events.size();
+    auto& events = m_recording.events;
+    if (e.kind == InputKind::Move && !events.empty() && events.back().kind == InputKind::Move && events.back().step == e.step)
+        events.back() = e; // a move sets where the mouse is: the last one of a step is the one that counts
+    else
+        events.push_back(e);
+    m_nextEvent = events.size();
 }
 
 bool RecordedRun::press(Point p)

@@ -46,6 +46,10 @@ Json recordingToJson(const Recording& recording);
 /// Rejects a malformed recording with a message naming what is wrong: the scene as a scene
 /// file is checked, events in step order, inside [0, steps], finite coordinates.
 Expected<Recording> recordingFromJson(const Json& doc);
+/// The "events" array alone, as the recording file writes it (the Frog tab's document keeps
+/// its run this way, beside the scene it already holds), and read back with the same checks.
+Json eventsToJson(const std::vector<InputEvent>& events);
+Expected<std::vector<InputEvent>> eventsFromJson(const Json& events, long steps);
 
 class RecordedRun {
 public:
@@ -53,6 +57,14 @@ public:
     static Expected<RecordedRun> start(const SceneSpec& scene, SolverKind solver, int snapshotEvery = 100);
     /// The recording ready to play back from step 0 (run() or seek() to go through it).
     static Expected<RecordedRun> load(const Recording& recording, int snapshotEvery = 100);
+    /// Records a simulation already built (the Frog tab builds its own, and checks it):
+    /// the scene and solver are its own. Errors: one that has already stepped (its start
+    /// could not be replayed from the scene).
+    static Expected<RecordedRun> adopt(std::unique_ptr<Simulation> sim, int snapshotEvery = 100);
+    /// Replaces what is recorded by `steps` steps of `events` (a document's run), and goes
+    /// back to step 0 to play them. Errors: events out of step order or outside [0, steps],
+    /// or not finite; the run is then unchanged.
+    Expected<void> setRecording(std::vector<InputEvent> events, long steps);
 
     RecordedRun(RecordedRun&&) noexcept;
     RecordedRun& operator=(RecordedRun&&) noexcept;
@@ -69,7 +81,9 @@ public:
 
     /// Live input: applied now and recorded at the present step. Made while playing back, it
     /// cuts the recorded future off first (a new branch from here). A point that is not
-    /// finite is neither applied nor recorded (press returns false).
+    /// finite is neither applied nor recorded (press returns false). Moves made within one
+    /// step are kept as the last of them (a move only sets where the mouse is), so a mouse
+    /// that sends a hundred events a second records at most one a step.
     bool press(Point p);
     void move(Point p);
     void release();
@@ -88,6 +102,10 @@ public:
     std::size_t snapshotCount() const { return m_snapshots.size(); }
     int snapshotEvery() const { return m_every; }
     static constexpr std::size_t kMaxSnapshots = 256;
+    /// Fewer snapshots, for a big scene whose copies are large (at least 2, at most
+    /// kMaxSnapshots): thins those held at once if there are more.
+    void setMaxSnapshots(std::size_t n);
+    std::size_t maxSnapshots() const { return m_maxSnapshots; }
 
 private:
     RecordedRun() = default;
@@ -98,12 +116,14 @@ private:
     void live(const InputEvent& e);
     void apply(const InputEvent& e);
     void takeSnapshot();
+    void thinSnapshots();
 
     std::unique_ptr<Simulation> m_sim;
     Recording m_recording;
     std::size_t m_nextEvent = 0; // the first recorded event not yet applied
     std::vector<Snapshot> m_snapshots; // in step order; the first at step 0
     int m_every = 100;
+    std::size_t m_maxSnapshots = kMaxSnapshots;
 };
 
 } // namespace granota
