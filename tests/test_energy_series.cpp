@@ -1,6 +1,7 @@
 // The plots over time (docs/plots-over-time.md): the energy bookkeeping of the stable
 // solver, the series' rows, and the phase plot of the pendulums.
 #include "core/base/math_constants.h"
+#include "core/softbody/recorded_run.h"
 #include "core/softbody/scenes/scene.h"
 #include "core/softbody/simulation.h"
 #include "core/softbody/simulation_series.h"
@@ -143,6 +144,55 @@ private slots:
         QCOMPARE(series.samples().size(), std::size_t(1));
         QCOMPARE(series.samples().front().dampingLoss.value(), 0.0);
         QCOMPARE(series.samples().front().otherLoss.value(), 0.0);
+    }
+
+    // Rewind (docs/rewind.md): a run gone back to step 120 drops the later samples, and
+    // running on from there records the same rows again, losses and angular velocities
+    // included (they follow from the samples kept).
+    void seriesGoesBackWithTheRun_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<int>("solver");
+        QTest::newRow("pendulum-limits, stable") << "pendulum-limits" << int(SolverKind::Stable);
+        QTest::newRow("frog, stable") << "frog" << int(SolverKind::Stable);
+        QTest::newRow("frog, seed") << "frog" << int(SolverKind::Seed);
+    }
+    void seriesGoesBackWithTheRun()
+    {
+        QFETCH(QString, scene);
+        QFETCH(int, solver);
+        auto run = RecordedRun::start(*loadScene(scene.toStdString()), SolverKind(solver), 50);
+        SeriesRecorder series;
+        series.record(run->simulation());
+        for (int i = 0; i < 200; ++i) {
+            if (i == 30)
+                run->press(Point(640, 300));
+            if (i == 30 || i == 60)
+                run->move(Point(i == 30 ? 700 : 500, 250));
+            if (i == 90)
+                run->release();
+            run->step();
+            series.record(run->simulation());
+        }
+        std::vector<std::string> rows;
+        for (const SeriesSample& s : series.samples())
+            rows.push_back(seriesCsvRow(s, series.phaseLinks()));
+        QCOMPARE(rows.size(), std::size_t(201));
+        QVERIFY(run->seek(120).ok());
+        series.truncateAfter(120);
+        QCOMPARE(series.samples().size(), std::size_t(121));
+        QCOMPARE(series.samples().back().step, 120L);
+        while (run->stepCount() < 200) {
+            run->step();
+            series.record(run->simulation());
+        }
+        QCOMPARE(series.samples().size(), std::size_t(201));
+        for (std::size_t k = 0; k < rows.size(); ++k)
+            QCOMPARE(seriesCsvRow(series.samples()[k], series.phaseLinks()), rows[k]);
+        series.truncateAfter(-1); // nothing kept: the series starts again
+        QVERIFY(series.samples().empty());
+        series.record(run->simulation());
+        QCOMPARE(series.samples().size(), std::size_t(1));
     }
 
     // The seed's springs and area are corrections, not forces: no elastic energy and no

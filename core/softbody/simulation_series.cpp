@@ -28,6 +28,18 @@ void SeriesRecorder::clear()
     m_lastAngles.clear();
 }
 
+void SeriesRecorder::truncateAfter(long step)
+{
+    while (!m_samples.empty() && m_samples.back().step > step)
+        m_samples.pop_back();
+    if (m_samples.empty()) {
+        clear();
+        return;
+    }
+    m_lastStep = m_samples.back().step;
+    m_lastAngles = m_samples.back().angles;
+}
+
 const SeriesSample& SeriesRecorder::record(const Simulation& sim)
 {
     if (m_started && sim.stepCount() <= m_lastStep)

@@ -53,6 +53,9 @@ public:
     /// after the last sample's (a new run, a reset) starts the series again.
     const SeriesSample& record(const Simulation& sim);
     void clear();
+    /// Drops the samples after `step` (a run gone back to it: docs/rewind.md); the next
+    /// record() goes on from the last one kept. None kept: the series starts again.
+    void truncateAfter(long step);
 
     const std::deque<SeriesSample>& samples() const { return m_samples; }
     /// Links in the phase columns (0 outside the pendulum scenes).
