@@ -174,7 +174,7 @@ private slots:
         pause->click();
         QVERIFY(!tab().canvas()->running());
         QVERIFY(!tab().canvas()->animating());
-        Simulation* sim = tab().canvas()->simulation();
+        const Simulation* sim = tab().canvas()->simulation();
         const long before = sim->stepCount();
         const Point start = centroid(*sim);
         step->click();
@@ -204,7 +204,7 @@ private slots:
         QCOMPARE(canvas->framesPerStep(), 1); // the thesis's frog: one step per frame, real time
         QString error;
         QVERIFY2(tab().editParameter("sides", 10000, &error), qPrintable(error));
-        Simulation* sim = canvas->simulation();
+        const Simulation* sim = canvas->simulation();
         const long work = sim->workPerStep();
         QVERIFY(work >= 10000L * 8); // 10000 vertices, 8 substeps
         const int every = canvas->framesPerStep();
@@ -248,7 +248,7 @@ private slots:
         QCOMPARE(canvas->speed(), 0.125);
         QCOMPARE(canvas->framesPerStep(), 8);
         QVERIFY(canvas->textLines().join('\n').contains("Slow motion"));
-        Simulation* sim = canvas->simulation();
+        const Simulation* sim = canvas->simulation();
         QCOMPARE(QByteArray::fromStdString(simulationTraceRow(*sim)), rows[1]);
         for (int frame = 1; frame <= 1600; ++frame) {
             const long before = sim->stepCount();
@@ -421,7 +421,7 @@ private slots:
         tab().findChild<QPushButton*>("frogPause")->click();
         steps(tab(), 200); // on the floor
         FrogCanvas* canvas = tab().canvas();
-        Simulation* sim = canvas->simulation();
+        const Simulation* sim = canvas->simulation();
         const Point start = centroid(*sim);
         const QPoint at = canvas->toWidget(start).toPoint();
         QTest::mouseMove(canvas, at);
@@ -446,7 +446,7 @@ private slots:
         tab().findChild<QPushButton*>("frogPause")->click();
         steps(tab(), 150);
         FrogCanvas* canvas = tab().canvas();
-        Simulation* sim = canvas->simulation();
+        const Simulation* sim = canvas->simulation();
         const QPoint at = canvas->toWidget(centroid(*sim)).toPoint();
         QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, at);
         QVERIFY(sim->grabbing());
@@ -465,7 +465,7 @@ private slots:
         tab().findChild<QPushButton*>("frogPause")->click();
         steps(tab(), 100);
         FrogCanvas* canvas = tab().canvas();
-        Simulation* sim = canvas->simulation();
+        const Simulation* sim = canvas->simulation();
         QVERIFY(centroid(*sim).y > 450); // fallen
         QTest::mouseMove(canvas, canvas->toWidget(Point(300, 200)).toPoint());
         QTest::keyPress(canvas, Qt::Key_Space);
@@ -518,7 +518,7 @@ private slots:
         QVERIFY(gy);
         gy->setValue(0); // as the user does: the panel applies it to the running scene
         QCOMPARE(tab().scene().params.gravity.y, 0.0);
-        Simulation* sim = tab().canvas()->simulation();
+        const Simulation* sim = tab().canvas()->simulation();
         steps(tab(), 150);
         const double floating = centroid(*sim).y;
         QVERIFY2(floating < 370, qPrintable(QString::number(floating))); // no gravity: it does not fall

@@ -70,14 +70,22 @@ FrogCanvas::~FrogCanvas() = default;
 
 void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
 {
-    m_sim = std::move(simulation);
-    m_stepWork = m_sim ? m_sim->workPerStep() : 0;
+    m_run.reset();
+    if (simulation) {
+        const long work = std::max<long>(1, simulation->workPerStep());
+        const std::size_t points = std::max<std::size_t>(1, simulation->pointCount());
+        auto run = RecordedRun::adopt(std::move(simulation), int(std::clamp<long>(kScrubWork / work, 1, 100)));
+        if (run) {
+            m_run = std::make_unique<RecordedRun>(std::move(run).value());
+            m_run->setMaxSnapshots(kSnapshotBytes / (points * kSnapshotBytesPerPoint));
+        }
+    }
+    updateWork();
     m_frameCount = 0;
-    m_pacer.setWork(m_stepWork, kFrameWork);
     m_pacer.restart();
     m_series.clear();
-    if (m_sim && m_recording)
-        m_series.record(*m_sim);
+    if (sim() && m_recording)
+        m_series.record(*sim());
     m_fitter.reset();
     m_previousValid = false;
     m_pressed = false;
@@ -87,11 +95,11 @@ void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
     m_fits = 0;
     m_fitShownUs = 0;
     m_backgroundSize = QSize(); // the frame may have another size
-    if (m_sim && m_mouseKnown && underMouse())
-        m_sim->move(m_mouse); // Processing's mouseX/mouseY hold from the first frame (§4.1, §4.13)
+    if (m_run && m_mouseKnown && underMouse())
+        m_run->move(m_mouse); // Processing's mouseX/mouseY hold from the first frame (§4.1, §4.13)
     m_reportedRadius = -1;
     reportMouseRadius();
-    m_startAreaError = m_sim && m_sim->bodyCount() > 0 ? m_sim->readouts().areaErrorPercent : 0;
+    m_startAreaError = sim() && sim()->bodyCount() > 0 ? sim()->readouts().areaErrorPercent : 0;
     unsetCursor();
     refreshTexts();
     updateTimer();
@@ -168,7 +176,7 @@ void FrogCanvas::buildPens()
 
 void FrogCanvas::updateTimer()
 {
-    if (m_running && m_sim && isVisible()) {
+    if (m_running && sim() && isVisible()) {
         if (!m_timer.isActive()) {
             m_lastFrameNs = -1;
             m_timer.start(17);
@@ -237,8 +245,8 @@ void FrogCanvas::setRecordingSeries(bool on)
         return;
     m_recording = on;
     m_series.clear();
-    if (on && m_sim)
-        m_series.record(*m_sim);
+    if (on && sim())
+        m_series.record(*sim());
 }
 
 bool FrogCanvas::setSpeed(double speed)
@@ -253,13 +261,13 @@ bool FrogCanvas::setSpeed(double speed)
 
 void FrogCanvas::advance()
 {
-    if (!m_sim)
+    if (!sim())
         return;
     if (m_overlays.velocities) { // keep x_prev to draw x − x_prev
         m_previous.clear();
         m_previousOffset.clear();
-        for (int i = 0; i < m_sim->bodyCount(); ++i) {
-            m_sim->bodyVertices(i, m_vertices);
+        for (int i = 0; i < sim()->bodyCount(); ++i) {
+            sim()->bodyVertices(i, m_vertices);
             m_previousOffset.push_back(m_previous.size());
             m_previous.insert(m_previous.end(), m_vertices.begin(), m_vertices.end());
         }
@@ -267,11 +275,85 @@ void FrogCanvas::advance()
         m_previousValid = true;
     }
     const qint64 t0 = m_clock.nsecsElapsed();
-    m_sim->step();
+    const bool replaying = m_run->playingBack();
+    m_run->step();
+    if (replaying) // a recorded spawn adds work
+        updateWork();
     if (m_recording)
-        m_series.record(*m_sim);
+        m_series.record(*sim());
     m_stepNsSum += double(m_clock.nsecsElapsed() - t0);
     ++m_steps;
+    emit timelineChanged();
+}
+
+void FrogCanvas::updateWork()
+{
+    m_stepWork = sim() ? sim()->workPerStep() : 0;
+    m_pacer.setWork(m_stepWork, kFrameWork);
+}
+
+bool FrogCanvas::wouldGrab(Point at) const
+{
+    const std::unique_ptr<Simulation> copy = sim()->clone();
+    copy->move(at);
+    return copy->press(at);
+}
+
+bool FrogCanvas::seek(long step)
+{
+    if (!m_run || step < 0 || step > m_run->recordedSteps())
+        return false;
+    const long from = sim()->stepCount();
+    if (step != from) {
+        // Forward by a little with the plots shown: step through, so that each step is
+        // sampled; else restore a snapshot, and the plots keep the samples up to the step.
+        if (m_recording && step > from && (step - from) * std::max(1L, m_stepWork) <= 4 * kScrubWork) {
+            while (sim()->stepCount() < step)
+                advance();
+        } else {
+            (void)m_run->seek(step); // inside the range: cannot fail
+            if (m_recording) {
+                m_series.truncateAfter(step);
+                if (m_series.samples().empty() || m_series.samples().back().step != step) {
+                    m_series.clear();
+                    m_series.record(*sim());
+                }
+            }
+        }
+    }
+    updateWork();
+    m_previousValid = false;
+    m_pressed = false;
+    m_keyboardHeld = false;
+    m_spawnHeld = false;
+    unsetCursor();
+    reportMouseRadius();
+    refreshTexts();
+    update();
+    emit timelineChanged();
+    return true;
+}
+
+bool FrogCanvas::setRecording(std::vector<InputEvent> events, long steps, QString* error)
+{
+    if (!m_run)
+        return false;
+    auto ok = m_run->setRecording(std::move(events), steps);
+    if (!ok) {
+        if (error)
+            *error = QString::fromStdString(ok.error().message);
+        return false;
+    }
+    if (m_recording) {
+        m_series.clear();
+        m_series.record(*sim());
+    }
+    updateWork();
+    m_previousValid = false;
+    refreshTexts();
+    update();
+    emit timelineChanged();
+    return true;
 }
 
 void FrogCanvas::setSceneSummary(const QString& summary)
@@ -282,11 +364,11 @@ void FrogCanvas::setSceneSummary(const QString& summary)
 
 void FrogCanvas::updateAccessibleDescription()
 {
-    if (!m_sim || m_sim->bodyCount() == 0) {
+    if (!sim() || sim()->bodyCount() == 0) {
         setAccessibleDescription(m_sceneSummary);
         return;
     }
-    setAccessibleDescription(tr("%1; area error %2 %.").arg(m_sceneSummary, displayFixed(m_sim->readouts().areaErrorPercent, 1)));
+    setAccessibleDescription(tr("%1; area error %2 %.").arg(m_sceneSummary, displayFixed(sim()->readouts().areaErrorPercent, 1)));
 }
 
 void FrogCanvas::refreshTexts()
@@ -312,10 +394,10 @@ void FrogCanvas::refreshTexts()
     QStringList lines;
     const auto num = [](double v, int decimals) { return displayFixed(v, decimals); };
     bool blownUpLine = false; // lines[0], wrapped to the canvas: it must be read whole
-    if (m_sim) {
-        const SceneSpec& scene = m_sim->scene();
-        if (m_sim->solver() == SolverKind::Seed && m_sim->bodyCount() > 0) {
-            const double error = m_sim->readouts().areaErrorPercent;
+    if (sim()) {
+        const SceneSpec& scene = sim()->scene();
+        if (sim()->solver() == SolverKind::Seed && sim()->bodyCount() > 0) {
+            const double error = sim()->readouts().areaErrorPercent;
             if ((blownUpLine = blownUp(error, m_startAreaError)))
                 lines << tr("The body has blown up (area error %1 %): press Reset (R), or switch to the Stable solver")
                              .arg(!std::isfinite(error) ? QStringLiteral("∞")
@@ -342,9 +424,9 @@ void FrogCanvas::refreshTexts()
         }
         // With several bodies each figure says whose it is: the area line is the first body's,
         // the solver's area error the mean over all of them.
-        const int bodies = m_sim->bodyCount();
+        const int bodies = sim()->bodyCount();
         if (m_overlays.area && bodies > 0) {
-            const double area = m_sim->bodyArea(0), target = m_sim->bodyTargetArea(0);
+            const double area = sim()->bodyArea(0), target = sim()->bodyTargetArea(0);
             if (bodies > 1 && target > 0)
                 lines << tr("Body 1 of %1: area %2 px² · target %3 px² (%4 %)")
                              .arg(bodies)
@@ -358,7 +440,7 @@ void FrogCanvas::refreshTexts()
                 lines << tr("Area %1 px² · target %2 px²").arg(num(area, 0), num(target, 0));
         }
         if (m_overlays.readouts) {
-            const Readouts r = m_sim->readouts();
+            const Readouts r = sim()->readouts();
             if (bodies > 1)
                 lines << tr("Area error, mean of the %1 bodies, %2 % · largest stretch %3 %")
                              .arg(bodies)
@@ -369,7 +451,7 @@ void FrogCanvas::refreshTexts()
             lines << tr("Largest correction %1 · kinetic energy %2 · potential energy %3")
                          .arg(num(r.constraintForce, 3), num(r.kineticEnergy, 1), num(r.potentialEnergy, 0));
         }
-        if (m_overlays.velocities && m_sim->bodyCount() == 0)
+        if (m_overlays.velocities && sim()->bodyCount() == 0)
             lines << tr("Velocities: this scene has no soft body");
         if (m_overlays.frameTime) {
             if (m_running)
@@ -378,7 +460,7 @@ void FrogCanvas::refreshTexts()
                                   num(m_drawShownMs, 2));
             else
                 lines << tr("Paused · step %1 ms · drawing %2 ms").arg(num(m_stepShownMs, 3), num(m_drawShownMs, 2));
-            lines << tr("Step %1").arg(m_sim->stepCount());
+            lines << tr("Step %1").arg(sim()->stepCount());
         }
     }
     const QFont& font = m_font;
@@ -417,7 +499,7 @@ double FrogCanvas::textPanelWidth() const
 
 QRectF FrogCanvas::sceneRectIn(const QRectF& target) const
 {
-    const double W = m_sim ? m_sim->scene().params.width : 1280, H = m_sim ? m_sim->scene().params.height : 720;
+    const double W = sim() ? sim()->scene().params.width : 1280, H = sim() ? sim()->scene().params.height : 720;
     const double s = std::min(target.width() / W, target.height() / H);
     if (!(s > 0) || !std::isfinite(s))
         return {};
@@ -427,7 +509,7 @@ QRectF FrogCanvas::sceneRectIn(const QRectF& target) const
 QPointF FrogCanvas::toWidget(const Point& p) const
 {
     const QRectF r = sceneRectIn(QRectF(rect()));
-    const double W = m_sim ? m_sim->scene().params.width : 1280;
+    const double W = sim() ? sim()->scene().params.width : 1280;
     const double s = r.width() / W;
     return QPointF(r.left() + p.x * s, r.top() + p.y * s);
 }
@@ -435,7 +517,7 @@ QPointF FrogCanvas::toWidget(const Point& p) const
 Point FrogCanvas::toScene(const QPointF& w) const
 {
     const QRectF r = sceneRectIn(QRectF(rect()));
-    const double W = m_sim ? m_sim->scene().params.width : 1280;
+    const double W = sim() ? sim()->scene().params.width : 1280;
     const double s = r.width() / W;
     if (!(s > 0))
         return Point(0, 0);
@@ -464,11 +546,11 @@ void FrogCanvas::render(QPainter& p, const QRectF& target)
     p.setRenderHint(QPainter::SmoothPixmapTransform, true);
     p.fillRect(target, kLetterbox);
     const QRectF r = sceneRectIn(target);
-    if (!m_sim || r.width() < 1 || r.height() < 1) {
+    if (!sim() || r.width() < 1 || r.height() < 1) {
         p.restore();
         return;
     }
-    const double W = m_sim->scene().params.width, H = m_sim->scene().params.height;
+    const double W = sim()->scene().params.width, H = sim()->scene().params.height;
     // Bars above and below continue the sky and the mud; the frame's edge stays visible.
     if (r.top() > target.top() + 0.5) {
         p.fillRect(QRectF(target.left(), target.top(), target.width(), r.top() - target.top()), kSkyTop);
@@ -562,7 +644,7 @@ void FrogCanvas::fillPath(const std::vector<Point>& points, bool close)
 
 void FrogCanvas::drawScene(QPainter& p, double pixel)
 {
-    const SceneSpec& scene = m_sim->scene();
+    const SceneSpec& scene = sim()->scene();
     if (scene.has("obstacles"))
         drawObstacles(p);
     if (scene.model == SceneModel::Pendulum) {
@@ -570,19 +652,19 @@ void FrogCanvas::drawScene(QPainter& p, double pixel)
         return;
     }
     // Annex II, Granota.dibuixar: back legs, body, front legs, head.
-    const bool frog = scene.model == SceneModel::Frog && m_sim->chainCount() >= 4;
+    const bool frog = scene.model == SceneModel::Frog && sim()->chainCount() >= 4;
     if (frog) {
         drawLeg(p, 2, pixel);
         drawLeg(p, 3, pixel);
     }
-    for (int i = 0; i < m_sim->bodyCount(); ++i)
+    for (int i = 0; i < sim()->bodyCount(); ++i)
         drawBody(p, i, pixel);
     if (frog) {
         drawLeg(p, 0, pixel);
         drawLeg(p, 1, pixel);
     }
-    if (scene.model == SceneModel::Frog && scene.has("head") && m_sim->bodyCount() > 0) {
-        m_sim->bodyVertices(0, m_vertices);
+    if (scene.model == SceneModel::Frog && scene.has("head") && sim()->bodyCount() > 0) {
+        sim()->bodyVertices(0, m_vertices);
         drawHead(p, 0);
     }
 }
@@ -596,9 +678,9 @@ void FrogCanvas::drawHead(QPainter& p, int body)
     // with the body, along v_{N−1} → v_1.
     const Point along = m_vertices[1] - m_vertices[n - 1];
     const double angle = norm(along) > 1e-9 ? std::atan2(along.y, along.x) : 0.0;
-    double target = m_sim->bodyTargetArea(body);
+    double target = sim()->bodyTargetArea(body);
     if (!(target > 0))
-        target = m_sim->bodyArea(body);
+        target = sim()->bodyArea(body);
     const double scale = std::clamp(std::sqrt(std::max(target, 0.0) / kSeedTargetArea), 0.12, 3.0);
     const QPointF at = q(m_vertices[0]);
     const QPointF look = m_mouseKnown ? q(m_mouse) : at + QPointF(0, 200);
@@ -607,8 +689,8 @@ void FrogCanvas::drawHead(QPainter& p, int body)
 
 const std::vector<Point>& FrogCanvas::bodyOutline(int body)
 {
-    const SceneSpec& scene = m_sim->scene();
-    m_sim->bodyVertices(body, m_vertices);
+    const SceneSpec& scene = sim()->scene();
+    sim()->bodyVertices(body, m_vertices);
     const std::size_t n = m_vertices.size();
     if (scene.has("outline-bezier") && m_bezier == BezierOutline::Fit && n >= 3) {
         // §4.9, the abandoned option: every frame, the least-squares Bézier curve through the
@@ -638,7 +720,7 @@ const std::vector<Point>& FrogCanvas::bodyOutline(int body)
 
 void FrogCanvas::drawBody(QPainter& p, int body, double)
 {
-    const SceneSpec& scene = m_sim->scene();
+    const SceneSpec& scene = sim()->scene();
     const std::vector<Point>& outline = bodyOutline(body);
     if (m_vertices.size() < 2)
         return;
@@ -657,7 +739,7 @@ void FrogCanvas::drawBody(QPainter& p, int body, double)
 
 void FrogCanvas::drawLeg(QPainter& p, int chain, double)
 {
-    m_sim->chainJoints(chain, m_joints);
+    sim()->chainJoints(chain, m_joints);
     if (m_joints.size() < 3)
         return;
     const Point &m = m_joints[0], &e = m_joints[1], &w = m_joints[2];
@@ -675,8 +757,8 @@ void FrogCanvas::drawLeg(QPainter& p, int chain, double)
 
 void FrogCanvas::drawPendulum(QPainter& p, double)
 {
-    for (int c = 0; c < m_sim->chainCount(); ++c) {
-        m_sim->chainJoints(c, m_joints);
+    for (int c = 0; c < sim()->chainCount(); ++c) {
+        sim()->chainJoints(c, m_joints);
         if (m_joints.empty())
             continue;
         fillPath(m_joints, false);
@@ -702,7 +784,7 @@ void FrogCanvas::drawPendulum(QPainter& p, double)
 
 void FrogCanvas::drawObstacles(QPainter& p)
 {
-    for (const ObstacleSpec& o : m_sim->obstacles()) {
+    for (const ObstacleSpec& o : sim()->obstacles()) {
         fillPath(o.points, o.closed);
         if (o.closed) {
             p.setBrush(m_art.stoneBrush());
@@ -734,8 +816,8 @@ void FrogCanvas::drawOverlays(QPainter& p, double pixel)
             p.drawPath(m_path);
         }
     };
-    for (int i = 0; i < m_sim->bodyCount(); ++i) {
-        m_sim->bodyVertices(i, m_vertices);
+    for (int i = 0; i < sim()->bodyCount(); ++i) {
+        sim()->bodyVertices(i, m_vertices);
         drawPoints(m_vertices, true);
         if (o.velocities && m_previousValid && std::size_t(i) + 1 < m_previousOffset.size() &&
             m_previousOffset[std::size_t(i) + 1] - m_previousOffset[std::size_t(i)] == m_vertices.size()) {
@@ -768,8 +850,8 @@ void FrogCanvas::drawOverlays(QPainter& p, double pixel)
             }
         }
     }
-    for (int c = 0; c < m_sim->chainCount(); ++c) {
-        m_sim->chainJoints(c, m_joints);
+    for (int c = 0; c < sim()->chainCount(); ++c) {
+        sim()->chainJoints(c, m_joints);
         drawPoints(m_joints, false);
         if (o.vertices) {
             p.setPen(m_ringPen);
@@ -783,7 +865,7 @@ void FrogCanvas::drawOverlays(QPainter& p, double pixel)
 
 void FrogCanvas::drawTextPanel(QPainter& p, const QRectF& sceneRect)
 {
-    const bool bar = m_overlays.area && m_sim->bodyCount() > 0;
+    const bool bar = m_overlays.area && sim()->bodyCount() > 0;
     if (m_lines.empty() && !bar)
         return;
     const double k = m_style.scale, margin = kPanelMargin * k, pad = kPanelPad * k;
@@ -809,7 +891,7 @@ void FrogCanvas::drawTextPanel(QPainter& p, const QRectF& sceneRect)
         y += t.size().height();
     }
     if (bar) { // area against target (§4.5): the bar spans 0 … 2 A₀, the mark is A₀
-        const double area = m_sim->bodyArea(0), target = m_sim->bodyTargetArea(0);
+        const double area = sim()->bodyArea(0), target = sim()->bodyTargetArea(0);
         const double share = target > 0 && std::isfinite(area) ? std::clamp(area / (2 * target), 0.0, 1.0) : 0.0;
         const QRectF track(box.left() + pad, y + pad, barWidth, barHeight);
         p.setBrush(m_trackBrush);
@@ -825,34 +907,43 @@ void FrogCanvas::drawTextPanel(QPainter& p, const QRectF& sceneRect)
 
 void FrogCanvas::mousePressEvent(QMouseEvent* event)
 {
-    if (!m_sim)
+    if (!sim())
         return;
     setFocus(Qt::MouseFocusReason);
     m_mouse = toScene(event->position());
     m_mouseKnown = true;
     if (event->button() != Qt::LeftButton)
         return;
-    // Annex II, mousePressed: grab when the cursor is inside the body.
-    m_sim->move(m_mouse);
+    // Annex II, mousePressed: grab when the cursor is inside the body. Going back in a run
+    // (docs/rewind.md), a press that grabs nothing leaves the recorded future alone.
+    if (m_run->playingBack() && !wouldGrab(m_mouse)) {
+        emit statusMessage(tr("Playing the recorded run back: press inside a body to take over from step %1.").arg(sim()->stepCount()));
+        return;
+    }
+    const bool branch = m_run->playingBack();
+    m_run->move(m_mouse);
     reportMouseRadius();
     m_pressed = true;
-    const bool held = m_sim->press(m_mouse);
-    if (held && m_sim->grabbing())
+    const bool held = m_run->press(m_mouse);
+    if (branch)
+        emit timelineChanged();
+    if (held && sim()->grabbing())
         setCursor(Qt::ClosedHandCursor);
-    else if (!held && m_sim->scene().has("grab"))
+    else if (!held && sim()->scene().has("grab"))
         emit statusMessage(tr("Press inside the body to grab it."));
     update();
 }
 
 void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
 {
-    if (!m_sim)
+    if (!sim())
         return;
     m_mouse = toScene(event->position());
     m_mouseKnown = true;
-    m_sim->move(m_mouse);
+    if (m_pressed || !m_run->playingBack()) // hovering over a run played back changes nothing
+        m_run->move(m_mouse);
     reportMouseRadius();
-    if (!m_pressed && m_sim->scene().has("grab")) {
+    if (!m_pressed && sim()->scene().has("grab")) {
         if (insideABody(m_mouse))
             setCursor(Qt::OpenHandCursor);
         else
@@ -864,7 +955,7 @@ void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
 
 void FrogCanvas::reportMouseRadius()
 {
-    const std::optional<double> r = m_sim ? m_sim->mouseRadius() : std::nullopt;
+    const std::optional<double> r = sim() ? sim()->mouseRadius() : std::nullopt;
     if (r && *r != m_reportedRadius) {
         m_reportedRadius = *r;
         emit mouseRadiusChanged(*r);
@@ -873,10 +964,10 @@ void FrogCanvas::reportMouseRadius()
 
 void FrogCanvas::mouseReleaseEvent(QMouseEvent* event)
 {
-    if (!m_sim || event->button() != Qt::LeftButton || !m_pressed)
+    if (!sim() || event->button() != Qt::LeftButton || !m_pressed)
         return;
     m_keyboardHeld = false;
-    m_sim->release(); // Annex II, mouseReleased
+    m_run->release(); // Annex II, mouseReleased
     m_pressed = false;
     unsetCursor();
     update();
@@ -884,7 +975,7 @@ void FrogCanvas::mouseReleaseEvent(QMouseEvent* event)
 
 void FrogCanvas::drawKeyboardCursor(QPainter& p) const
 {
-    if (!m_sim)
+    if (!sim())
         return;
     const QPointF c = toWidget(m_mouse);
     const double k = m_style.scale, r = 9 * k;
@@ -904,8 +995,8 @@ void FrogCanvas::drawKeyboardCursor(QPainter& p) const
 
 bool FrogCanvas::insideABody(Point at)
 {
-    for (int i = 0; i < m_sim->bodyCount(); ++i) {
-        m_sim->bodyVertices(i, m_vertices);
+    for (int i = 0; i < sim()->bodyCount(); ++i) {
+        sim()->bodyVertices(i, m_vertices);
         if (pointInPolygon(at, m_vertices))
             return true;
     }
@@ -916,8 +1007,8 @@ int FrogCanvas::nearestBody(Point at)
 {
     int best = -1;
     double bestDistance = 0;
-    for (int i = 0; i < m_sim->bodyCount(); ++i) {
-        m_sim->bodyVertices(i, m_vertices);
+    for (int i = 0; i < sim()->bodyCount(); ++i) {
+        sim()->bodyVertices(i, m_vertices);
         for (const Point& v : m_vertices) {
             const double d = std::hypot(v.x - at.x, v.y - at.y);
             if (best < 0 || d < bestDistance) {
@@ -931,7 +1022,7 @@ int FrogCanvas::nearestBody(Point at)
 
 bool FrogCanvas::keyboardGrab()
 {
-    if (!m_sim || m_pressed)
+    if (!sim() || m_pressed)
         return false;
     if (!m_mouseKnown) {
         m_mouse = toScene(QPointF(rect().center()));
@@ -939,17 +1030,25 @@ bool FrogCanvas::keyboardGrab()
     }
     // Outside every body, the cursor first jumps to the centre of the nearest one.
     if (const int body = insideABody(m_mouse) ? -1 : nearestBody(m_mouse); body >= 0) {
-        m_sim->bodyVertices(body, m_vertices);
+        sim()->bodyVertices(body, m_vertices);
         Point sum{0, 0};
         for (const Point& v : m_vertices)
             sum = {sum.x + v.x / double(m_vertices.size()), sum.y + v.y / double(m_vertices.size())};
         m_mouse = sum;
     }
-    m_sim->move(m_mouse);
+    if (m_run->playingBack() && !wouldGrab(m_mouse)) {
+        emit statusMessage(tr("Playing the recorded run back: move the cursor inside a body to take over from step %1.").arg(sim()->stepCount()));
+        update();
+        return false;
+    }
+    const bool branch = m_run->playingBack();
+    m_run->move(m_mouse);
     reportMouseRadius();
-    m_pressed = m_sim->press(m_mouse);
+    m_pressed = m_run->press(m_mouse);
     m_keyboardHeld = m_pressed;
-    if (!m_pressed && m_sim->scene().has("grab"))
+    if (branch)
+        emit timelineChanged();
+    if (!m_pressed && sim()->scene().has("grab"))
         emit statusMessage(tr("Nothing to grab here: move the cursor inside the body with the arrows."));
     update();
     return m_pressed;
@@ -957,9 +1056,9 @@ bool FrogCanvas::keyboardGrab()
 
 void FrogCanvas::keyboardRelease()
 {
-    if (!m_sim || !m_keyboardHeld)
+    if (!sim() || !m_keyboardHeld)
         return;
-    m_sim->release();
+    m_run->release();
     m_pressed = false;
     m_keyboardHeld = false;
     update();
@@ -967,15 +1066,16 @@ void FrogCanvas::keyboardRelease()
 
 void FrogCanvas::moveKeyboardCursor(double dx, double dy)
 {
-    if (!m_sim)
+    if (!sim())
         return;
     if (!m_mouseKnown) {
         m_mouse = toScene(QPointF(rect().center()));
         m_mouseKnown = true;
     }
-    const double W = m_sim->scene().params.width, H = m_sim->scene().params.height;
+    const double W = sim()->scene().params.width, H = sim()->scene().params.height;
     m_mouse = {std::clamp(m_mouse.x + dx, 0.0, W - 1), std::clamp(m_mouse.y + dy, 0.0, H - 1)};
-    m_sim->move(m_mouse);
+    if (m_pressed || !m_run->playingBack())
+        m_run->move(m_mouse);
     reportMouseRadius();
     update();
 }
@@ -1013,17 +1113,19 @@ void FrogCanvas::keyPressEvent(QKeyEvent* event)
         return;
     }
     event->accept();
-    if (event->isAutoRepeat() || !m_sim || m_spawnHeld)
+    if (event->isAutoRepeat() || !sim() || m_spawnHeld)
         return;
     // Annex II, keyPressed(' '): a new frog at the mouse, held until the key is released.
     if (!m_mouseKnown) {
         m_mouse = toScene(mapFromGlobal(QCursor::pos()));
         m_mouseKnown = true;
     }
-    m_sim->spawn(m_mouse);
-    m_stepWork = m_sim->workPerStep();
-    m_pacer.setWork(m_stepWork, kFrameWork);
+    const bool branch = m_run->playingBack();
+    m_run->spawn(m_mouse);
+    updateWork();
     m_spawnHeld = true;
+    if (branch)
+        emit timelineChanged();
     update();
 }
 
@@ -1037,8 +1139,8 @@ void FrogCanvas::keyReleaseEvent(QKeyEvent* event)
     if (event->isAutoRepeat() || !m_spawnHeld)
         return;
     m_spawnHeld = false;
-    if (m_sim)
-        m_sim->releaseSpawn(); // Annex II, keyReleased(' ')
+    if (m_run)
+        m_run->releaseSpawn(); // Annex II, keyReleased(' ')
     update();
 }
 
@@ -1060,7 +1162,7 @@ void FrogCanvas::showEvent(QShowEvent* event)
 void FrogCanvas::resizeEvent(QResizeEvent* event)
 {
     QWidget::resizeEvent(event);
-    if (m_sim)
+    if (sim())
         refreshTexts();
 }
 
@@ -1081,8 +1183,8 @@ void FrogCanvas::focusOutEvent(QFocusEvent* event)
     keyboardRelease();
     update();
     // The key release would go elsewhere: let go of a frog held by the space bar now.
-    if (m_spawnHeld && m_sim)
-        m_sim->releaseSpawn();
+    if (m_spawnHeld && m_run)
+        m_run->releaseSpawn();
     m_spawnHeld = false;
     QWidget::focusOutEvent(event);
 }

@@ -7,6 +7,7 @@
 /// or Enter, Esc: docs/classroom.md), and a focus frame shows when the keys go here. Drawing reuses
 /// member buffers: a frame allocates nothing in this class once warm.
 
+#include "core/softbody/recorded_run.h"
 #include "core/softbody/simulation.h"
 #include "core/softbody/simulation_series.h"
 #include "core/softbody/step_pacer.h"
@@ -67,9 +68,33 @@ public:
     explicit FrogCanvas(QWidget* parent = nullptr);
     ~FrogCanvas() override;
 
-    /// Takes over a freshly built simulation (the previous one, and any grab, are dropped).
+    /// Takes over a freshly built simulation (the previous one, and any grab, are dropped)
+    /// and records its run from here (docs/rewind.md).
     void setSimulation(std::unique_ptr<Simulation> simulation);
-    Simulation* simulation() const { return m_sim.get(); }
+    /// The simulation shown. Everything that drives it goes through the recorded run, so
+    /// this is read-only; a seek may replace it (do not keep the pointer across one).
+    const Simulation* simulation() const { return sim(); }
+
+    /// Rewind (docs/rewind.md): the run as recorded, its mouse and key events with their steps.
+    const RecordedRun* run() const { return m_run.get(); }
+    /// The furthest step recorded (the timeline's end), 0 without a simulation.
+    long recordedSteps() const { return m_run ? m_run->recordedSteps() : 0; }
+    /// Whether the run is behind its recorded end, replaying what was recorded.
+    bool playingBack() const { return m_run && m_run->playingBack(); }
+    /// Goes to `step` of the recorded run, in [0, recordedSteps()] (false outside): the state
+    /// the run went through there. The plots keep their samples up to it. Any grab is let go
+    /// in the canvas (the recorded one goes on as recorded).
+    bool seek(long step);
+    /// Replaces the recording by `events` over `steps` steps (a document's run) and goes to
+    /// step 0. False with a message for events out of order or outside [0, steps].
+    bool setRecording(std::vector<InputEvent> events, long steps, QString* error);
+    /// The work (Simulation::workPerStep) a seek may re-simulate: snapshots are taken every
+    /// kScrubWork / work steps (1 to 100), so going back answers within a few frames' time.
+    static constexpr long kScrubWork = 6 * kFrameWork;
+    /// What the snapshots may take, counted as kSnapshotBytesPerPoint per point: a big scene
+    /// keeps fewer, farther apart (RecordedRun::setMaxSnapshots).
+    static constexpr std::size_t kSnapshotBytes = std::size_t(256) << 20;
+    static constexpr std::size_t kSnapshotBytesPerPoint = 256;
 
     /// Running: the timer steps once per frame. Paused: only step() advances.
     void setRunning(bool running);
@@ -148,6 +173,8 @@ signals:
     void statusMessage(const QString& text);
     /// §4.1's polygon: the mouse has set the radius to `radius` px (Simulation::mouseRadius).
     void mouseRadiusChanged(double radius);
+    /// The run has stepped, gone back or forth, or branched: the timeline moves.
+    void timelineChanged();
 
 protected:
     void paintEvent(QPaintEvent* event) override;
@@ -166,8 +193,13 @@ protected:
     void focusOutEvent(QFocusEvent* event) override;
 
 private:
+    Simulation* sim() const { return m_run ? &m_run->simulation() : nullptr; }
     void tick();
     void advance();
+    void updateWork(); ///< m_stepWork and the pacer, after a spawn (live, replayed or sought)
+    /// Whether a press at `at` would grab: asked of a copy, so that going back in a run, a
+    /// click that grabs nothing does not cut off the recorded future.
+    bool wouldGrab(Point at) const;
     int workFramesPerStep() const; ///< ⌈work / kFrameWork⌉: how much a heavy step slows real time
     void updateTimer();
     void refreshTexts();
@@ -193,7 +225,7 @@ private:
     void drawTextPanel(QPainter& p, const QRectF& sceneRect);
     void fillPath(const std::vector<Point>& points, bool close);
 
-    std::unique_ptr<Simulation> m_sim;
+    std::unique_ptr<RecordedRun> m_run;
     FrogArt m_art;
     CanvasStyle m_style;
     Overlays m_overlays;
