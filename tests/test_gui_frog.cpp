@@ -22,6 +22,7 @@
 #include <QPicture>
 #include <QPushButton>
 #include <QRadioButton>
+#include <QSlider>
 #include <QSet>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -402,6 +403,141 @@ private slots:
         QVERIFY(!tab().canvas()->animating());
         tab().show();
         QVERIFY(tab().canvas()->animating());
+    }
+
+    // Issue 16, rewind: the canvas records the mouse's grab and throw; the timeline goes
+    // back to any step and gives the state the run went through there, "," and "." step
+    // back and on, running on replays the recorded rows, hovering and clicks that grab
+    // nothing leave the recording whole, a press on the body branches, and the document
+    // keeps the run and gives it back at the step it was saved.
+    void timelineScrubsTheRun_data()
+    {
+        QTest::addColumn<SolverKind>("solver");
+        QTest::newRow("seed") << SolverKind::Seed;
+        QTest::newRow("stable") << SolverKind::Stable;
+    }
+    void timelineScrubsTheRun()
+    {
+        QFETCH(SolverKind, solver);
+        QVERIFY(tab().setScene("frog", nullptr));
+        QVERIFY(tab().setSolver(solver, nullptr));
+        tab().findChild<QPushButton*>("frogPause")->setChecked(true);
+        tab().setPlotsShown(true);
+        QCoreApplication::processEvents(); // the canvas takes its new, smaller size before the mouse aims at it
+        FrogCanvas* canvas = tab().canvas();
+        QSlider* timeline = tab().timeline();
+        QVERIFY(timeline);
+        const auto row = [canvas] { return simulationTraceRow(*canvas->simulation()); };
+        std::vector<std::string> rows{row()};
+        const auto stepAndKeep = [&](int n) {
+            for (int i = 0; i < n; ++i) {
+                canvas->step();
+                rows.push_back(row());
+            }
+        };
+        stepAndKeep(60);
+        const QPoint at = canvas->toWidget(centroid(*canvas->simulation())).toPoint();
+        QTest::mouseMove(canvas, at);
+        QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, at);
+        QVERIFY(canvas->simulation()->grabbing());
+        for (int i = 1; i <= 20; ++i) {
+            QTest::mouseMove(canvas, at + QPoint(8 * i, -9 * i));
+            stepAndKeep(2);
+        }
+        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, at + QPoint(160, -180));
+        stepAndKeep(100);
+        QCOMPARE(canvas->recordedSteps(), 200L);
+        QCOMPARE(timeline->maximum(), 200);
+        QCOMPARE(timeline->value(), 200);
+        const auto* label = tab().findChild<QLabel*>("frogTimelineLabel");
+        QCOMPARE(label->text(), QStringLiteral("Step 200 of 200 · 3.33 s"));
+        QVERIFY(canvas->run()->recording().events.size() >= 22);
+
+        // The slider goes back; the plots keep their samples up to the step.
+        tab().findChild<QPushButton*>("frogPause")->setChecked(false);
+        timeline->setValue(75);
+        QVERIFY(tab().findChild<QPushButton*>("frogPause")->isChecked()); // scrubbing pauses
+        QCOMPARE(canvas->simulation()->stepCount(), 75L);
+        QCOMPARE(row(), rows[75]);
+        QCOMPARE(canvas->series().samples().back().step, 75L);
+        QCOMPARE(canvas->series().samples().size(), std::size_t(76));
+        for (int t : {0, 199, 61, 62, 100, 1, 140}) {
+            timeline->setValue(t);
+            QCOMPARE(row(), rows[std::size_t(t)]);
+        }
+        // , and . (the keys the window sends to the focused widget).
+        canvas->setFocus();
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Comma);
+        QCOMPARE(row(), rows[139]);
+        QCOMPARE(timeline->value(), 139);
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Period);
+        QCOMPARE(row(), rows[140]);
+        QVERIFY(canvas->playingBack());
+        QVERIFY(canvas->textLines().join('\n').contains("Replaying the recorded run, step 140 of 200"));
+
+        // Hovering, and a click on empty ground, change nothing recorded.
+        QTest::mouseMove(canvas, canvas->toWidget(Point(100, 100)).toPoint());
+        QTest::mouseClick(canvas, Qt::LeftButton, Qt::NoModifier, canvas->toWidget(Point(100, 100)).toPoint());
+        QCOMPARE(canvas->recordedSteps(), 200L);
+        // Running on replays the recorded rows, and the plots follow.
+        while (canvas->simulation()->stepCount() < 200) {
+            canvas->runFrame();
+            QCOMPARE(row(), rows[std::size_t(canvas->simulation()->stepCount())]);
+        }
+        QVERIFY(!canvas->playingBack());
+        QCOMPARE(canvas->series().samples().size(), std::size_t(201));
+
+        // The document keeps the run, and gives it back at the step it was saved.
+        timeline->setValue(120);
+        const QJsonObject saved = tab().saveState();
+        const QJsonObject recording = saved["recording"].toObject();
+        QCOMPARE(recording["steps"].toInt(), 200);
+        QCOMPARE(recording["step"].toInt(), 120);
+        QCOMPARE(recording["events"].toArray().size(), int(canvas->run()->recording().events.size()));
+        tab().reset();
+        QCOMPARE(canvas->recordedSteps(), 0L);
+        QString error;
+        QVERIFY2(tab().loadState(saved, &error), qPrintable(error));
+        QCOMPARE(canvas->simulation()->stepCount(), 120L);
+        QCOMPARE(row(), rows[120]);
+        QCOMPARE(timeline->maximum(), 200);
+        QCOMPARE(tab().saveState(), saved);
+        timeline->setValue(200);
+        QCOMPARE(row(), rows[200]);
+
+        // A press on the body branches: the future after it is gone.
+        timeline->setValue(150);
+        const QPoint body = canvas->toWidget(centroid(*canvas->simulation())).toPoint();
+        QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, body);
+        QVERIFY(canvas->simulation()->grabbing());
+        QCOMPARE(canvas->recordedSteps(), 150L);
+        QCOMPARE(timeline->maximum(), 150);
+        QVERIFY(!canvas->playingBack());
+        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, body);
+
+        // Bad recordings are refused with a message, the tab unchanged.
+        const QJsonObject before = tab().saveState();
+        const auto refused = [&](const QJsonObject& r, const char* words) {
+            QJsonObject bad = saved;
+            bad["recording"] = r;
+            QString message;
+            QVERIFY(!tab().loadState(bad, &message));
+            QVERIFY2(message.contains(QLatin1String(words)), qPrintable(message));
+            QCOMPARE(tab().saveState(), before);
+        };
+        QJsonObject r = recording;
+        r["step"] = 201;
+        refused(r, "step");
+        r = recording;
+        r["steps"] = -4;
+        refused(r, "steps");
+        r = recording;
+        r["events"] = QJsonArray{QJsonArray{5, "release"}, QJsonArray{4, "release"}};
+        refused(r, "event 2");
+        r = recording;
+        r["events"] = QJsonArray{QJsonArray{5, "press"}};
+        refused(r, "x and y");
+        refused(QJsonObject{{"steps", 10}}, "events");
     }
 
     void mouseGrabMovesTheBody_data()

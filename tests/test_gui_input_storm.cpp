@@ -189,13 +189,14 @@ QStringList nonFiniteTexts(MainWindow& window)
 /// The document without what is not an undo step by design, so that undoing every stack
 /// must give back exactly this (docs/tabs.md, "Undo"):
 /// - "current": which tab is shown (switching tabs is not an edit);
-/// - Frog: pause, the clock of the running simulation.
+/// - Frog: pause, the clock of the running simulation, and the run it records (docs/rewind.md).
 /// Everything else the document keeps is an undo step of the tab it changes.
 QJsonObject undoableParts(const QJsonObject& document)
 {
     QJsonObject tabs = document.value(QStringLiteral("tabs")).toObject();
     QJsonObject frog = tabs.value(QStringLiteral("frog")).toObject();
     frog.remove(QStringLiteral("paused"));
+    frog.remove(QStringLiteral("recording"));
     tabs.insert(QStringLiteral("frog"), frog);
     return tabs;
 }

@@ -2115,6 +2115,18 @@ a cada canvi alentiria la finestra.</translation>
     </context>
     <context>
         <name>granota::ui::FrogCanvas</name>
+        <message>
+            <source>Playing the recorded run back: move the cursor inside a body to take over from step %1.</source>
+            <translation>Es reprodueix l'execució enregistrada: moveu el cursor dins d'un cos per prendre'n el relleu des del pas %1.</translation>
+        </message>
+        <message>
+            <source>Playing the recorded run back: press inside a body to take over from step %1.</source>
+            <translation>Es reprodueix l'execució enregistrada: premeu dins d'un cos per prendre'n el relleu des del pas %1.</translation>
+        </message>
+        <message>
+            <source>Replaying the recorded run, step %1 of %2: a press on a body takes over from there</source>
+            <translation>Es reprodueix l'execució enregistrada, pas %1 de %2: una pulsació sobre un cos en pren el relleu des d'aquí</translation>
+        </message>
         <message numerus="yes">
             <source>Fast, %1× real time: %n steps a frame</source>
             <translation>
@@ -2505,6 +2517,34 @@ a cada canvi alentiria la finestra.</translation>
     </context>
     <context>
         <name>granota::ui::FrogTab</name>
+        <message>
+            <source>The run was saved at step %1: drag the timeline to go there (it is long to replay).</source>
+            <translation>L'execució es va desar al pas %1: arrossegueu la línia de temps per anar-hi (és llarga de reproduir).</translation>
+        </message>
+        <message>
+            <source>The frog's recording was refused: %1</source>
+            <translation>S'ha refusat l'enregistrament de la granota: %1</translation>
+        </message>
+        <message>
+            <source>The frog's recording must have whole “steps” from 0 to %1 and a “step” from 0 to them.</source>
+            <translation>L'enregistrament de la granota ha de tenir uns “steps” enters de 0 a %1 i un “step” de 0 fins a aquests.</translation>
+        </message>
+        <message>
+            <source>Step 0: the run starts here.</source>
+            <translation>Pas 0: l'execució comença aquí.</translation>
+        </message>
+        <message>
+            <source>Step %1 of %2 · %3 s</source>
+            <translation>Pas %1 de %2 · %3 s</translation>
+        </message>
+        <message>
+            <source>Timeline</source>
+            <translation>Línia de temps</translation>
+        </message>
+        <message>
+            <source>The run so far, step by step: drag to go back to any step (the run pauses there). Running on replays what was recorded until a press on a body, a spawn or a change takes over (, one step back, . one step on).</source>
+            <translation>L'execució fins ara, pas a pas: arrossegueu per tornar a qualsevol pas (l'execució s'hi atura). En continuar, es reprodueix el que s'ha enregistrat fins que una pulsació sobre un cos, un cos nou o un canvi en pren el relleu (, un pas enrere, . un pas endavant).</translation>
+        </message>
         <message>
             <source>Under the canvas: the energies, what damping and the rest took, the area error, the largest stretch and the contacts as the run goes on; the pendulums' phase plot. Pause freezes them; they export as CSV.</source>
             <translation>Sota el llenç: les energies, el que s’han endut l’esmorteïment i la resta, l’error d’àrea, l’estirament màxim i els contactes al llarg de l’execució; el diagrama de fases dels pèndols. La pausa els atura; s’exporten en CSV.</translation>
@@ -4083,6 +4123,18 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
     <context>
         <name>granota::ui::ShortcutsHelp</name>
         <message>
+            <source>Frog tab (P, S, the comma and the period, R, [ and ] whenever the tab is shown, unless a field is being typed in)</source>
+            <translation>Pestanya Granota (P, S, la coma i el punt, R, [ i ] sempre que es mostra la pestanya, tret que s'estigui escrivint en un camp)</translation>
+        </message>
+        <message>
+            <source>One step back in the recorded run (pausing first)</source>
+            <translation>Un pas enrere en l'execució enregistrada (aturant-la abans)</translation>
+        </message>
+        <message>
+            <source>,</source>
+            <translation>,</translation>
+        </message>
+        <message>
             <source>Slower and faster (⅛× to 4×)</source>
             <translation>Més lent i més ràpid (de ⅛× a 4×)</translation>
         </message>
@@ -4097,10 +4149,6 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
         <message>
             <source>De Casteljau: mold the curve at t, c(t) moving by the same step</source>
             <translation>De Casteljau: modela la corba a t; c(t) es mou el mateix pas</translation>
-        </message>
-        <message>
-            <source>Frog tab (P, S, R, [ and ] whenever the tab is shown, unless a field is being typed in)</source>
-            <translation>Pestanya Granota (P, S, R, [ i ] sempre que es mostra la pestanya, tret que s'estigui escrivint en un camp)</translation>
         </message>
         <message>
             <source>De Casteljau, Fitting and Catmull-Rom canvases</source>

@@ -2115,6 +2115,18 @@ on each change would slow the window.</translation>
     </context>
     <context>
         <name>granota::ui::FrogCanvas</name>
+        <message>
+            <source>Playing the recorded run back: move the cursor inside a body to take over from step %1.</source>
+            <translation>Playing the recorded run back: move the cursor inside a body to take over from step %1.</translation>
+        </message>
+        <message>
+            <source>Playing the recorded run back: press inside a body to take over from step %1.</source>
+            <translation>Playing the recorded run back: press inside a body to take over from step %1.</translation>
+        </message>
+        <message>
+            <source>Replaying the recorded run, step %1 of %2: a press on a body takes over from there</source>
+            <translation>Replaying the recorded run, step %1 of %2: a press on a body takes over from there</translation>
+        </message>
         <message numerus="yes">
             <source>Fast, %1× real time: %n steps a frame</source>
             <translation>
@@ -2505,6 +2517,34 @@ on each change would slow the window.</translation>
     </context>
     <context>
         <name>granota::ui::FrogTab</name>
+        <message>
+            <source>The run was saved at step %1: drag the timeline to go there (it is long to replay).</source>
+            <translation>The run was saved at step %1: drag the timeline to go there (it is long to replay).</translation>
+        </message>
+        <message>
+            <source>The frog's recording was refused: %1</source>
+            <translation>The frog's recording was refused: %1</translation>
+        </message>
+        <message>
+            <source>The frog's recording must have whole “steps” from 0 to %1 and a “step” from 0 to them.</source>
+            <translation>The frog's recording must have whole “steps” from 0 to %1 and a “step” from 0 to them.</translation>
+        </message>
+        <message>
+            <source>Step 0: the run starts here.</source>
+            <translation>Step 0: the run starts here.</translation>
+        </message>
+        <message>
+            <source>Step %1 of %2 · %3 s</source>
+            <translation>Step %1 of %2 · %3 s</translation>
+        </message>
+        <message>
+            <source>Timeline</source>
+            <translation>Timeline</translation>
+        </message>
+        <message>
+            <source>The run so far, step by step: drag to go back to any step (the run pauses there). Running on replays what was recorded until a press on a body, a spawn or a change takes over (, one step back, . one step on).</source>
+            <translation>The run so far, step by step: drag to go back to any step (the run pauses there). Running on replays what was recorded until a press on a body, a spawn or a change takes over (, one step back, . one step on).</translation>
+        </message>
         <message>
             <source>Under the canvas: the energies, what damping and the rest took, the area error, the largest stretch and the contacts as the run goes on; the pendulums' phase plot. Pause freezes them; they export as CSV.</source>
             <translation>Under the canvas: the energies, what damping and the rest took, the area error, the largest stretch and the contacts as the run goes on; the pendulums' phase plot. Pause freezes them; they export as CSV.</translation>
@@ -4083,6 +4123,18 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
     <context>
         <name>granota::ui::ShortcutsHelp</name>
         <message>
+            <source>Frog tab (P, S, the comma and the period, R, [ and ] whenever the tab is shown, unless a field is being typed in)</source>
+            <translation>Frog tab (P, S, the comma and the period, R, [ and ] whenever the tab is shown, unless a field is being typed in)</translation>
+        </message>
+        <message>
+            <source>One step back in the recorded run (pausing first)</source>
+            <translation>One step back in the recorded run (pausing first)</translation>
+        </message>
+        <message>
+            <source>,</source>
+            <translation>,</translation>
+        </message>
+        <message>
             <source>Slower and faster (⅛× to 4×)</source>
             <translation>Slower and faster (⅛× to 4×)</translation>
         </message>
@@ -4097,10 +4149,6 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
         <message>
             <source>De Casteljau: mold the curve at t, c(t) moving by the same step</source>
             <translation>De Casteljau: mold the curve at t, c(t) moving by the same step</translation>
-        </message>
-        <message>
-            <source>Frog tab (P, S, R, [ and ] whenever the tab is shown, unless a field is being typed in)</source>
-            <translation>Frog tab (P, S, R, [ and ] whenever the tab is shown, unless a field is being typed in)</translation>
         </message>
         <message>
             <source>De Casteljau, Fitting and Catmull-Rom canvases</source>

@@ -403,6 +403,10 @@ void FrogCanvas::refreshTexts()
                              .arg(!std::isfinite(error) ? QStringLiteral("∞")
                                   : (error > 0 ? QStringLiteral("+") : QString()) + displayFixed(error, 0));
         }
+        if (m_run->playingBack())
+            lines << tr("Replaying the recorded run, step %1 of %2: a press on a body takes over from there")
+                         .arg(sim()->stepCount())
+                         .arg(m_run->recordedSteps());
         if (const int slower = workFramesPerStep(); slower > 1)
             lines << tr("Running %n× slower than real time: a step of this scene is more work than a frame holds", "",
                         slower);

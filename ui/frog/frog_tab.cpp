@@ -28,10 +28,13 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QShortcut>
+#include <QSlider>
 #include <QSplitter>
 #include <QTextStream>
 #include <QUndoStack>
 #include <QVBoxLayout>
+
+#include <limits>
 
 namespace granota::ui {
 
@@ -196,11 +199,29 @@ FrogTab::FrogTab(QWidget* parent)
     m_side = side;
     side->installEventFilter(this); // its layout changes with the scene: keep it unclipped
 
-    // The canvas, and under it the plots over time when they are shown.
+    // The canvas with its timeline, and under them the plots over time when they are shown.
+    auto* stage = new QWidget(this);
+    auto* stageLayout = new QVBoxLayout(stage);
+    stageLayout->setContentsMargins(0, 0, 0, 0);
+    stageLayout->setSpacing(2);
+    stageLayout->addWidget(m_canvas, 1);
+    auto* timelineRow = new QHBoxLayout;
+    timelineRow->setContentsMargins(6, 0, 6, 2);
+    m_timeline = new QSlider(Qt::Horizontal, stage);
+    m_timeline->setObjectName(QStringLiteral("frogTimeline"));
+    m_timeline->setRange(0, 0);
+    m_timeline->setSingleStep(1);
+    m_timeline->setPageStep(kStepsPerSecond);
+    m_timelineLabel = new QLabel(stage);
+    m_timelineLabel->setObjectName(QStringLiteral("frogTimelineLabel"));
+    m_timelineLabel->setBuddy(m_timeline);
+    timelineRow->addWidget(m_timeline, 1);
+    timelineRow->addWidget(m_timelineLabel);
+    stageLayout->addLayout(timelineRow);
     m_plots = new FrogPlotPanel(this);
     m_plots->hide();
     auto* left = new QSplitter(Qt::Vertical, this);
-    left->addWidget(m_canvas);
+    left->addWidget(stage);
     left->addWidget(m_plots);
     left->setStretchFactor(0, 1);
     left->setStretchFactor(1, 0);
@@ -239,6 +260,8 @@ FrogTab::FrogTab(QWidget* parent)
             m_fitCost->setText(tr("Cost of the fit: %1 µs per frame.").arg(displayFixed(us, 1)));
     });
     connect(m_canvas, &FrogCanvas::statusMessage, this, &TabPage::statusMessage);
+    connect(m_canvas, &FrogCanvas::timelineChanged, this, &FrogTab::updateTimeline);
+    connect(m_timeline, &QSlider::valueChanged, this, &FrogTab::timelineMoved);
     connect(m_canvas, &FrogCanvas::mouseRadiusChanged, this, [this](double radius) {
         // §4.1: the mouse sets the radius; the field shows it (no undo step, nothing rebuilt).
         if (!m_scene.hasParam("radius") || m_scene.params.radius == radius)
@@ -265,6 +288,7 @@ FrogTab::FrogTab(QWidget* parent)
     shortcut(QKeySequence(Qt::Key_P), [this] { m_pause->toggle(); });
     shortcut(QKeySequence(Qt::Key_S), [this] { stepOnce(); });
     shortcut(QKeySequence(Qt::Key_Period), [this] { stepOnce(); });
+    shortcut(QKeySequence(Qt::Key_Comma), [this] { stepBack(); });
     shortcut(QKeySequence(Qt::Key_R), [this] { reset(); });
     // Slower and faster: the speed box's neighbours.
     const auto nudgeSpeed = [this](int by) {
@@ -612,6 +636,11 @@ void FrogTab::retranslate()
     m_speedCombo->setToolTip(tr("Slow motion steps once every few frames and fast runs several steps a frame: the "
                                 "step itself never changes, so the seed goes through exactly the states of Annex II "
                                 "([ slower, ] faster)."));
+    m_timeline->setToolTip(tr("The run so far, step by step: drag to go back to any step (the run pauses there). "
+                              "Running on replays what was recorded until a press on a body, a spawn or a change "
+                              "takes over (, one step back, . one step on)."));
+    m_timeline->setAccessibleName(tr("Timeline"));
+    updateTimeline();
     m_reset->setText(tr("Reset"));
     m_reset->setToolTip(tr("Start the scene again with the current parameters (R)."));
     m_solverNote->setText(tr("The seed solver has no angle constraints: these shapes round into blobs. The Stable "
@@ -668,6 +697,45 @@ void FrogTab::setPlotsShown(bool on)
     m_plots->setVisible(on); // at the height it asks for (FrogPlotPanel::sizeHint), the canvas the rest
 }
 
+void FrogTab::updateTimeline()
+{
+    const long end = m_canvas->recordedSteps();
+    const long now = m_canvas->simulation() ? m_canvas->simulation()->stepCount() : 0;
+    const int top = int(std::min<long>(end, std::numeric_limits<int>::max()));
+    if (m_timeline->maximum() != top || (!m_timeline->isSliderDown() && m_timeline->value() != now)) {
+        const QSignalBlocker block(m_timeline);
+        m_timeline->setMaximum(top);
+        if (!m_timeline->isSliderDown())
+            m_timeline->setValue(int(std::min<long>(now, top)));
+    }
+    const QString seconds = displayFixed(double(now) / kStepsPerSecond, 2);
+    m_timelineLabel->setText(tr("Step %1 of %2 · %3 s").arg(now).arg(end).arg(seconds));
+}
+
+void FrogTab::timelineMoved(int step)
+{
+    // Scrubbing is looking: the run pauses there (P runs on, replaying what was recorded).
+    if (!m_pause->isChecked())
+        m_pause->setChecked(true);
+    m_canvas->seek(step);
+    m_plots->refresh(true);
+}
+
+void FrogTab::stepBack()
+{
+    const Simulation* sim = m_canvas->simulation();
+    if (!sim)
+        return;
+    if (!m_pause->isChecked())
+        m_pause->setChecked(true);
+    if (sim->stepCount() == 0) {
+        emit statusMessage(tr("Step 0: the run starts here."));
+        return;
+    }
+    m_canvas->seek(sim->stepCount() - 1);
+    m_plots->refresh(true);
+}
+
 void FrogTab::setSpeed(double speed)
 {
     if (!m_canvas->setSpeed(speed))
@@ -696,6 +764,14 @@ QJsonObject FrogTab::saveState() const
     state.insert(QStringLiteral("bezier_outline"), m_fit->isChecked() ? QStringLiteral("fit") : QStringLiteral("precomputed"));
     state.insert(QStringLiteral("paused"), !m_canvas->running());
     state.insert(QStringLiteral("speed"), m_canvas->speed());
+    // The run so far (docs/rewind.md): its events, how far it went, and the step shown.
+    if (const RecordedRun* run = m_canvas->run()) {
+        QJsonObject recording;
+        recording.insert(QStringLiteral("steps"), double(run->recordedSteps()));
+        recording.insert(QStringLiteral("step"), double(run->stepCount()));
+        recording.insert(QStringLiteral("events"), toQJson(eventsToJson(run->recording().events)));
+        state.insert(QStringLiteral("recording"), recording);
+    }
     return state;
 }
 
@@ -800,8 +876,48 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
         }
         speed = v.toDouble();
     }
+    // The recorded run: checked whole before anything changes.
+    std::optional<std::vector<InputEvent>> events;
+    long recordedSteps = 0, shownStep = 0;
+    if (state.contains(QStringLiteral("recording"))) {
+        const QJsonValue v = state.value(QStringLiteral("recording"));
+        const QJsonObject r = v.toObject();
+        const auto whole = [](const QJsonValue& n, long lo, long hi) -> std::optional<long> {
+            const double d = n.toDouble(-1);
+            if (!n.isDouble() || !(d >= double(lo) && d <= double(hi)) || std::floor(d) != d)
+                return std::nullopt;
+            return static_cast<long>(d);
+        };
+        const auto steps = whole(r.value(QStringLiteral("steps")), 0, kMaxRecordedSteps);
+        const QJsonValue at = r.value(QStringLiteral("step")); // optional: step 0
+        const auto step = !steps ? std::nullopt : at.isUndefined() ? std::optional<long>(0) : whole(at, 0, *steps);
+        if (!v.isObject() || !steps || !step) {
+            setError(error, tr("The frog's recording must have whole “steps” from 0 to %1 and a “step” from 0 to them.")
+                                .arg(kMaxRecordedSteps));
+            return false;
+        }
+        auto parsed = eventsFromJson(fromQJson(r.value(QStringLiteral("events"))), *steps);
+        if (!parsed) {
+            setError(error, tr("The frog's recording was refused: %1").arg(fromStd(parsed.error().message)));
+            return false;
+        }
+        events = std::move(parsed).value();
+        recordedSteps = *steps;
+        shownStep = *step;
+    }
     if (!rebuild(*spec, solver, error))
         return false;
+    if (events) {
+        QString refused;
+        if (!m_canvas->setRecording(std::move(*events), recordedSteps, &refused))
+            showRefusal(refused); // checked above: cannot happen
+        const long work = m_canvas->simulation()->workPerStep() * shownStep;
+        if (work <= kLoadSeekWork)
+            m_canvas->seek(shownStep);
+        else
+            emit statusMessage(tr("The run was saved at step %1: drag the timeline to go there (it is long to replay).")
+                                   .arg(shownStep));
+    }
     setSpeed(speed);
     // Everything is valid: show it.
     {

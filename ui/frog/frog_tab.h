@@ -17,6 +17,7 @@ class QLabel;
 class QPushButton;
 class QRadioButton;
 class QScrollArea;
+class QSlider;
 class QUndoStack;
 
 namespace granota::ui {
@@ -59,6 +60,14 @@ public:
     void reset();
     /// The speed (StepPacer::kSpeeds; others are ignored), in the canvas and the speed box.
     void setSpeed(double speed);
+    /// Rewind (docs/rewind.md): the timeline under the canvas, from step 0 to the furthest
+    /// recorded. Moving it pauses and goes to that step; "," steps back one step.
+    QSlider* timeline() const { return m_timeline; }
+    void stepBack();
+    /// A document's run is replayed up to its saved step on load when that is at most this
+    /// much work (Simulation::workPerStep × steps: about two seconds); past it, the run
+    /// loads at step 0 and the tab says so.
+    static constexpr long kLoadSeekWork = 600L * 24000;
     /// Shows the plots over time under the canvas (the canvas records the series meanwhile).
     void setPlotsShown(bool on);
     FrogPlotPanel* plotPanel() const { return m_plots; }
@@ -92,6 +101,8 @@ private:
     OverlayFlags overlayFlags() const;
     void applyOverlayFlags(const OverlayFlags& flags);
     void setPaused(bool paused);
+    void updateTimeline();
+    void timelineMoved(int step);
     void stepOnce();
     void showRefusal(const QString& message);
     QString sceneTitle(const QString& name) const;
@@ -112,6 +123,8 @@ private:
     QLabel* m_solverNote; ///< what the chosen solver cannot show of this scene (seedRoundsShapes)
     QComboBox *m_sceneCombo, *m_solverCombo, *m_speedCombo;
     QLabel* m_speedLabel;
+    QSlider* m_timeline = nullptr;
+    QLabel* m_timelineLabel = nullptr;
     QPushButton *m_pause, *m_step, *m_reset;
     QRadioButton *m_precomputed, *m_fit;
     QCheckBox *m_showVertices, *m_showSprings, *m_showArea, *m_showVelocities, *m_showReadouts, *m_showFrameTime;

@@ -38,6 +38,7 @@ QString ShortcutsHelp::html(const QList<QAction*>& actions)
                            + row(tr("Delete, Backspace"), tr("Remove the selected point"));
     const QString frog = row(tr("P"), tr("Pause and run"))
                          + row(tr("S or ."), tr("One step (pausing first)"))
+                         + row(tr(","), tr("One step back in the recorded run (pausing first)"))
                          + row(tr("R"), tr("Reset the scene"))
                          + row(tr("[ and ]"), tr("Slower and faster (⅛× to 4×)"))
                          + row(tr("Arrows (Shift: five times further)"), tr("On the canvas: move the keyboard cursor, and what it holds"))
@@ -45,7 +46,7 @@ QString ShortcutsHelp::html(const QList<QAction*>& actions)
                          + row(tr("Esc"), tr("On the canvas: let go"))
                          + row(tr("Space"), tr("On the canvas: a new body at the cursor, held until released"));
     return table(tr("The window"), window) + table(tr("De Casteljau, Fitting and Catmull-Rom canvases"), curves)
-           + table(tr("Frog tab (P, S, R, [ and ] whenever the tab is shown, unless a field is being typed in)"), frog);
+           + table(tr("Frog tab (P, S, the comma and the period, R, [ and ] whenever the tab is shown, unless a field is being typed in)"), frog);
 }
 
 } // namespace granota::ui
