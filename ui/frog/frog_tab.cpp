@@ -25,6 +25,7 @@
 #include <QPainter>
 #include <QPushButton>
 #include <QRadioButton>
+#include <QRegularExpression>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QShortcut>
@@ -640,6 +641,7 @@ void FrogTab::retranslate()
                               "Running on replays what was recorded until a press on a body, a spawn or a change "
                               "takes over (, one step back, . one step on)."));
     m_timeline->setAccessibleName(tr("Timeline"));
+    m_timelineDigits = -1; // the label's width, for this language's text
     updateTimeline();
     m_reset->setText(tr("Reset"));
     m_reset->setToolTip(tr("Start the scene again with the current parameters (R)."));
@@ -708,8 +710,17 @@ void FrogTab::updateTimeline()
         if (!m_timeline->isSliderDown())
             m_timeline->setValue(int(std::min<long>(now, top)));
     }
-    const QString seconds = displayFixed(double(now) / kStepsPerSecond, 2);
-    m_timelineLabel->setText(tr("Step %1 of %2 · %3 s").arg(now).arg(end).arg(seconds));
+    const QString text = tr("Step %1 of %2 · %3 s");
+    m_timelineLabel->setText(text.arg(now).arg(end).arg(displayFixed(double(now) / kStepsPerSecond, 2)));
+    // As wide as the widest text with this many digits, so that the slider does not jitter.
+    const int digits = int(QString::number(end).size());
+    if (digits == m_timelineDigits)
+        return;
+    m_timelineDigits = digits;
+    const QString eights = QString(digits, QLatin1Char('8'));
+    const int wide = m_timelineLabel->fontMetrics().horizontalAdvance(
+        text.arg(eights, eights).arg(displayFixed(double(end) / kStepsPerSecond, 2).replace(QRegularExpression(QStringLiteral("\\d")), QStringLiteral("8"))));
+    m_timelineLabel->setMinimumWidth(wide);
 }
 
 void FrogTab::timelineMoved(int step)

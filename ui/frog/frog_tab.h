@@ -125,6 +125,7 @@ private:
     QLabel* m_speedLabel;
     QSlider* m_timeline = nullptr;
     QLabel* m_timelineLabel = nullptr;
+    int m_timelineDigits = -1; ///< digits of the recorded steps the label's width was set for
     QPushButton *m_pause, *m_step, *m_reset;
     QRadioButton *m_precomputed, *m_fit;
     QCheckBox *m_showVertices, *m_showSprings, *m_showArea, *m_showVelocities, *m_showReadouts, *m_showFrameTime;
