@@ -896,8 +896,25 @@ private slots:
         QVERIFY(std::abs(canvas->simulation()->readouts().areaErrorPercent) > 100);
         QString lines = canvas->textLines().join('\n');
         QVERIFY2(lines.contains("Reset (R)") && lines.contains("Stable solver"), qPrintable(lines));
-        QVERIFY(tab().setSolver(SolverKind::Stable, nullptr));
+        // The warning under the canvas offers both ways out: Reset starts the scene again…
+        auto* warning = tab().findChild<QWidget*>("frogExplosion");
+        auto* reset = tab().findChild<QPushButton*>("frogExplosionReset");
+        auto* stable = tab().findChild<QPushButton*>("frogExplosionStable");
+        QVERIFY(warning->isVisibleTo(&tab()) && stable->isVisibleTo(&tab()));
+        reset->click();
+        QCOMPARE(canvas->simulation()->stepCount(), 0L);
+        QVERIFY(!warning->isVisibleTo(&tab()));
         steps(tab(), 300);
+        QVERIFY(warning->isVisibleTo(&tab()));
+        // …and the stable solver takes the same values, as one undo step.
+        const int undoSteps = tab().undoStack()->count();
+        stable->click();
+        QCOMPARE(tab().solver(), SolverKind::Stable);
+        QCOMPARE(tab().scene().params.velmax, 1000.0);
+        QCOMPARE(tab().undoStack()->count(), undoSteps + 1);
+        QVERIFY(!warning->isVisibleTo(&tab()));
+        steps(tab(), 300);
+        QVERIFY(!warning->isVisibleTo(&tab()));
         lines = canvas->textLines().join('\n');
         QVERIFY2(!lines.contains("Reset (R)"), qPrintable(lines));
         tab().reset(); // and once started again, the seed's hint is gone too

@@ -2518,6 +2518,18 @@ a cada canvi alentiria la finestra.</translation>
     <context>
         <name>granota::ui::FrogTab</name>
         <message>
+            <source>The same scene and values on the stable solver (XPBD), which holds them.</source>
+            <translation>La mateixa escena i els mateixos valors amb el mètode estable (XPBD), que els aguanta.</translation>
+        </message>
+        <message>
+            <source>Use the Stable solver</source>
+            <translation>Usa el mètode Estable</translation>
+        </message>
+        <message>
+            <source>The body has blown up.</source>
+            <translation>El cos ha explotat.</translation>
+        </message>
+        <message>
             <source>The run was saved at step %1: drag the timeline to go there (it is long to replay).</source>
             <translation>L'execució es va desar al pas %1: arrossegueu la línia de temps per anar-hi (és llarga de reproduir).</translation>
         </message>

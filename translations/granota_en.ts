@@ -2518,6 +2518,18 @@ on each change would slow the window.</translation>
     <context>
         <name>granota::ui::FrogTab</name>
         <message>
+            <source>The same scene and values on the stable solver (XPBD), which holds them.</source>
+            <translation>The same scene and values on the stable solver (XPBD), which holds them.</translation>
+        </message>
+        <message>
+            <source>Use the Stable solver</source>
+            <translation>Use the Stable solver</translation>
+        </message>
+        <message>
+            <source>The body has blown up.</source>
+            <translation>The body has blown up.</translation>
+        </message>
+        <message>
             <source>The run was saved at step %1: drag the timeline to go there (it is long to replay).</source>
             <translation>The run was saved at step %1: drag the timeline to go there (it is long to replay).</translation>
         </message>

@@ -483,6 +483,10 @@ void FrogCanvas::refreshTexts()
             t.prepare(QTransform(), font);
         }
     }
+    if (blownUpLine != m_blownUp) {
+        m_blownUp = blownUpLine;
+        emit blownUpChanged(m_blownUp);
+    }
 }
 
 double FrogCanvas::textPanelRoom() const

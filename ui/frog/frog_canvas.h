@@ -119,6 +119,8 @@ public:
     void runFrame();
     /// Frames the timer has run since the simulation was set.
     long frameCount() const { return m_frameCount; }
+    /// Whether the text panel says the body has blown up (as last refreshed).
+    bool blownUpShown() const { return m_blownUp; }
     /// The lines of the text panel drawn over the scene, as last refreshed.
     QStringList textLines() const;
     /// The width the text panel takes (its widest line, wrapped to the canvas), and the most
@@ -175,6 +177,9 @@ signals:
     void mouseRadiusChanged(double radius);
     /// The run has stepped, gone back or forth, or branched: the timeline moves.
     void timelineChanged();
+    /// The seed's body has blown up (blownUp in core/softbody/simulation.h), or is whole again
+    /// (a reset, a step back): the tab offers Reset and the stable solver.
+    void blownUpChanged(bool blownUp);
 
 protected:
     void paintEvent(QPaintEvent* event) override;
@@ -249,6 +254,7 @@ private:
     QString m_sceneSummary;      // setSceneSummary
     double m_reportedRadius = -1; // last mouseRadiusChanged, −1 before any
     double m_startAreaError = 0;  // the area error the simulation started with (blownUp)
+    bool m_blownUp = false;       // as last said by blownUpChanged
 
     // Buffers reused every frame.
     std::vector<Point> m_vertices, m_outline, m_joints, m_previous, m_fitControl, m_fitCurve, m_work;

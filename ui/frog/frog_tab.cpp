@@ -15,6 +15,7 @@
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDir>
+#include <QFrame>
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -206,6 +207,24 @@ FrogTab::FrogTab(QWidget* parent)
     stageLayout->setContentsMargins(0, 0, 0, 0);
     stageLayout->setSpacing(2);
     stageLayout->addWidget(m_canvas, 1);
+    // A warning a teacher can act on: the seed has blown up, with the two ways out.
+    m_explosion = new QFrame(stage);
+    m_explosion->setObjectName(QStringLiteral("frogExplosion"));
+    m_explosion->setStyleSheet(QStringLiteral("#frogExplosion { background: #fdecea; border: 1px solid #d9826f; border-radius: 3px; }"));
+    auto* explosionRow = new QHBoxLayout(m_explosion);
+    explosionRow->setContentsMargins(6, 3, 6, 3);
+    m_explosionText = new QLabel(m_explosion);
+    m_explosionText->setWordWrap(true);
+    m_explosionText->setStyleSheet(QStringLiteral("color: #7a2412;"));
+    m_explosionReset = new QPushButton(m_explosion);
+    m_explosionReset->setObjectName(QStringLiteral("frogExplosionReset"));
+    m_explosionStable = new QPushButton(m_explosion);
+    m_explosionStable->setObjectName(QStringLiteral("frogExplosionStable"));
+    explosionRow->addWidget(m_explosionText, 1);
+    explosionRow->addWidget(m_explosionReset);
+    explosionRow->addWidget(m_explosionStable);
+    m_explosion->hide();
+    stageLayout->addWidget(m_explosion);
     auto* timelineRow = new QHBoxLayout;
     timelineRow->setContentsMargins(6, 0, 6, 2);
     m_timeline = new QSlider(Qt::Horizontal, stage);
@@ -262,6 +281,12 @@ FrogTab::FrogTab(QWidget* parent)
     });
     connect(m_canvas, &FrogCanvas::statusMessage, this, &TabPage::statusMessage);
     connect(m_canvas, &FrogCanvas::timelineChanged, this, &FrogTab::updateTimeline);
+    connect(m_canvas, &FrogCanvas::blownUpChanged, this, &FrogTab::showExplosion);
+    connect(m_explosionReset, &QPushButton::clicked, this, &FrogTab::reset);
+    connect(m_explosionStable, &QPushButton::clicked, this, [this] {
+        const int stable = m_solverCombo->findData(QStringLiteral("stable"));
+        solverChosen(stable); // as the solver box does it: one undo step
+    });
     connect(m_timeline, &QSlider::valueChanged, this, &FrogTab::timelineMoved);
     connect(m_canvas, &FrogCanvas::mouseRadiusChanged, this, [this](double radius) {
         // §4.1: the mouse sets the radius; the field shows it (no undo step, nothing rebuilt).
@@ -641,6 +666,11 @@ void FrogTab::retranslate()
                               "Running on replays what was recorded until a press on a body, a spawn or a change "
                               "takes over (, one step back, . one step on)."));
     m_timeline->setAccessibleName(tr("Timeline"));
+    m_explosionText->setText(tr("The body has blown up."));
+    m_explosionReset->setText(tr("Reset"));
+    m_explosionReset->setToolTip(tr("Start the scene again with the current parameters (R)."));
+    m_explosionStable->setText(tr("Use the Stable solver"));
+    m_explosionStable->setToolTip(tr("The same scene and values on the stable solver (XPBD), which holds them."));
     m_timelineDigits = -1; // the label's width, for this language's text
     updateTimeline();
     m_reset->setText(tr("Reset"));
@@ -721,6 +751,12 @@ void FrogTab::updateTimeline()
     const int wide = m_timelineLabel->fontMetrics().horizontalAdvance(
         text.arg(eights, eights).arg(displayFixed(double(end) / kStepsPerSecond, 2).replace(QRegularExpression(QStringLiteral("\\d")), QStringLiteral("8"))));
     m_timelineLabel->setMinimumWidth(wide);
+}
+
+void FrogTab::showExplosion(bool blownUp)
+{
+    m_explosion->setVisible(blownUp);
+    m_explosionStable->setVisible(m_solver == SolverKind::Seed);
 }
 
 void FrogTab::timelineMoved(int step)

@@ -102,6 +102,7 @@ private:
     void applyOverlayFlags(const OverlayFlags& flags);
     void setPaused(bool paused);
     void updateTimeline();
+    void showExplosion(bool blownUp);
     void timelineMoved(int step);
     void stepOnce();
     void showRefusal(const QString& message);
@@ -123,6 +124,9 @@ private:
     QLabel* m_solverNote; ///< what the chosen solver cannot show of this scene (seedRoundsShapes)
     QComboBox *m_sceneCombo, *m_solverCombo, *m_speedCombo;
     QLabel* m_speedLabel;
+    QWidget* m_explosion = nullptr; ///< "the body has blown up", with Reset and the stable solver
+    QLabel* m_explosionText = nullptr;
+    QPushButton *m_explosionReset = nullptr, *m_explosionStable = nullptr;
     QSlider* m_timeline = nullptr;
     QLabel* m_timelineLabel = nullptr;
     int m_timelineDigits = -1; ///< digits of the recorded steps the label's width was set for
