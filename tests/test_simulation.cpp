@@ -211,6 +211,64 @@ private slots:
         QVERIFY(seed->readouts().areaErrorPercent < -15); // the thesis's frog sits ~17 % short
     }
 
+    // Issue 16, the stable solver's knobs (docs/solvers.md#knobs): substeps 1–32 and the
+    // edges' compliance, on any scene, by --set and in the scene file; the seed ignores them.
+    void stableKnobs()
+    {
+        auto spec = loadScene("frog");
+        QVERIFY(spec->stable.isDefault());
+        QVERIFY(!sceneToJson(*spec).find("stable")); // the default is not written
+        QVERIFY(applySetting(*spec, "substeps=16").ok());
+        QVERIFY(applySetting(*spec, "edge_compliance=1/100").ok());
+        QCOMPARE(spec->stable.substeps, 16);
+        QCOMPARE(spec->stable.edgeCompliance, 0.01);
+        auto back = parseScene(sceneToJson(*spec));
+        QVERIFY(back.ok());
+        QVERIFY(back->stable == spec->stable);
+        auto sim = Simulation::create(*spec, SolverKind::Stable);
+        QCOMPARE((*sim)->substeps(), 16);
+        QCOMPARE((*sim)->workPerStep(), 2 * make("frog", SolverKind::Stable)->workPerStep());
+        for (const char* badSetting : {"substeps=0", "substeps=33", "substeps=2.5", "edge_compliance=-0.001", "edge_compliance=2",
+                                       "edge_compliance=x"}) {
+            SceneSpec copy = *spec;
+            auto ok = applySetting(copy, badSetting);
+            QVERIFY2(!ok.ok(), badSetting);
+            QVERIFY(copy.stable == spec->stable); // unchanged
+        }
+        Json doc = sceneToJson(*spec);
+        doc.set("stable", Json::parse(R"({"substeps": 8, "stiffness": 3})").value());
+        QVERIFY(!parseScene(doc).ok());
+        doc.set("stable", Json(4));
+        QVERIFY(!parseScene(doc).ok());
+
+        // What they do: soft edges stretch more than rigid ones, and more substeps hold the
+        // edges closer to their rest lengths.
+        bool allFinite = true;
+        const auto largestStretch = [&allFinite](std::initializer_list<const char*> settings) {
+            auto s = make("frog", SolverKind::Stable, settings);
+            double most = 0;
+            for (int i = 0; i < 240; ++i) {
+                s->step();
+                most = std::max(most, s->readouts().maxStretch);
+            }
+            allFinite = allFinite && s->finite() && s->inBounds();
+            return most;
+        };
+        const double soft = largestStretch({"edge_compliance=0.05"}), rigid = largestStretch({"edge_compliance=0"});
+        const double two = largestStretch({"substeps=2"}), many = largestStretch({"substeps=32"});
+        QVERIFY(allFinite);
+        qInfo("largest stretch in 240 steps: α 0.05 %.4f, α 0 %.4f; 2 substeps %.4f, 32 substeps %.4f", soft, rigid, two, many);
+        QVERIFY(soft > 2 * rigid);
+        QVERIFY(many < two);
+        // The seed has no substeps and no compliance: its trace is unchanged.
+        auto seedDefault = make("frog", SolverKind::Seed), seedKnobs = make("frog", SolverKind::Seed, {"substeps=2", "edge_compliance=0.5"});
+        for (int i = 0; i < 200; ++i) {
+            seedDefault->step();
+            seedKnobs->step();
+        }
+        QCOMPARE(simulationTraceRow(*seedKnobs), simulationTraceRow(*seedDefault));
+    }
+
     void pendulumFollowsTheMouse_data()
     {
         QTest::addColumn<QString>("scene");

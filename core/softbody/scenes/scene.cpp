@@ -50,6 +50,32 @@ Error bad(const std::string& scene, const std::string& what)
     return makeError(ErrorCode::InvalidInput, "scene '" + scene + "': " + what);
 }
 
+/// The keys of "stable" (StableSettings), also taken by --set on any scene.
+bool isStableKey(const std::string& key) { return key == "substeps" || key == "edge_compliance"; }
+
+/// Sets the stable solver's `key` in `s` from `v`: substeps a whole number in 1 … 32,
+/// edge_compliance a number in [0, 1].
+Expected<void> setStableSetting(SceneSpec& s, const std::string& key, const Json& v)
+{
+    if (key == "substeps") {
+        const auto n = wholeNumber(v, StableSettings::kMinSubsteps, StableSettings::kMaxSubsteps);
+        if (!n)
+            return bad(s.name, "substeps must be a whole number from " + std::to_string(StableSettings::kMinSubsteps) + " to " +
+                                   std::to_string(StableSettings::kMaxSubsteps));
+        s.stable.substeps = *n;
+        return {};
+    }
+    if (key == "edge_compliance") {
+        const auto a = v.asNumber();
+        if (!a || !(*a >= 0 && *a <= StableSettings::kMaxEdgeCompliance))
+            return bad(s.name, "edge_compliance must be a number from 0 (rigid edges) to " +
+                                   formatDouble(StableSettings::kMaxEdgeCompliance));
+        s.stable.edgeCompliance = *a;
+        return {};
+    }
+    return bad(s.name, "\"stable\" has substeps and edge_compliance, not " + quotedForDisplay(key));
+}
+
 std::optional<Point> pointOf(const Json& v)
 {
     const auto* a = v.asArray();
@@ -432,6 +458,15 @@ Expected<SceneSpec> parseScene(const Json& doc)
             return ok.error();
         s.paramKeys.push_back(key);
     }
+    if (const Json* stable = doc.find("stable")) {
+        if (!stable->isObject())
+            return bad(s.name, "\"stable\" must be an object: {\"substeps\": n, \"edge_compliance\": α}");
+        for (const auto& [key, value] : *stable->asObject()) {
+            auto ok = setStableSetting(s, key, value);
+            if (!ok)
+                return ok.error();
+        }
+    }
     deriveFromFrame(s);
     auto ok = validate(s);
     if (!ok)
@@ -445,12 +480,23 @@ Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
     if (eq == std::string::npos || eq == 0)
         return makeError(ErrorCode::InvalidInput, "--set takes key=value, got " + quotedForDisplay(keyValue));
     const std::string key = keyValue.substr(0, eq), value = keyValue.substr(eq + 1);
+    if (isStableKey(key)) {
+        const auto q = parseRational(value);
+        if (!q)
+            return makeError(ErrorCode::InvalidInput, "--set " + key + ": " + quotedForDisplay(value) + " is not a finite number");
+        SceneSpec changed = scene;
+        auto ok = setStableSetting(changed, key, Json(toDouble(*q)));
+        if (!ok)
+            return ok;
+        scene = std::move(changed);
+        return {};
+    }
     if (!scene.hasParam(key)) {
         std::string keys;
         for (const auto& k : scene.paramKeys)
             keys += (keys.empty() ? "" : ", ") + k;
-        return makeError(ErrorCode::InvalidInput,
-                         "scene '" + scene.name + "' has no parameter " + quotedForDisplay(key) + " (it has: " + keys + ")");
+        return makeError(ErrorCode::InvalidInput, "scene '" + scene.name + "' has no parameter " + quotedForDisplay(key) +
+                                                      " (it has: " + keys + "; and for the stable solver: substeps, edge_compliance)");
     }
     const SceneParameter* param = findSceneParameter(key);
     if (param && !param->settable())
@@ -580,6 +626,11 @@ Json sceneToJson(const SceneSpec& s)
     Json doc = Json::object();
     doc.set("name", s.name).set("section", s.section).set("title", s.title).set("description", s.description)
         .set("model", model).set("order", s.order).set("components", components).set("params", params);
+    if (!s.stable.isDefault()) {
+        Json stable = Json::object();
+        stable.set("substeps", s.stable.substeps).set("edge_compliance", s.stable.edgeCompliance);
+        doc.set("stable", stable);
+    }
     return doc;
 }
 

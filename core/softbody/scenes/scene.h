@@ -7,6 +7,7 @@
 
 #include "core/base/expected.h"
 #include "core/softbody/scenes/frog_params.h"
+#include "core/softbody/scenes/stable_settings.h"
 #include "core/softbody/scenes/grab_mode.h"
 #include "core/io/json.h"
 
@@ -59,6 +60,9 @@ struct SceneSpec {
     /// derived value, which follows width and height until a number is set.
     bool radiusFromFrame = false;
     bool centerFromFrame = false;
+    /// The stable solver's substeps and edge stiffness (every scene has them; the seed
+    /// ignores them). `--set substeps=16` and `--set edge_compliance=0.01` set them.
+    StableSettings stable;
 
     bool has(const std::string& component) const;
     bool hasParam(const std::string& key) const;

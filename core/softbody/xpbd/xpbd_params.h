@@ -13,6 +13,7 @@
 #include "core/base/expected.h"
 #include "core/softbody/scenes/frog_params.h"
 #include "core/softbody/scenes/grab_mode.h"
+#include "core/softbody/scenes/stable_settings.h"
 #include "core/base/vec2.h"
 
 #include <limits>
@@ -26,11 +27,11 @@ struct XpbdParams {
     /// length h keeps f^h.
     Point damping = FrogParams{}.friction;
     /// n, substeps per step; the error of a step falls like 1/n² (Macklin et al. 2019).
-    int substeps = 8;
+    int substeps = StableSettings{}.substeps;
     /// Length of one step, in frames (the seed's unit); > 1 = large steps.
     double dt = 1;
     /// α of an edge per px of its rest length, step²/mass (0 = rigid edges).
-    double edgeCompliance = 2e-3;
+    double edgeCompliance = StableSettings{}.edgeCompliance;
     /// α of a body's area constraint, step²/(mass·px²) (0 = incompressible, §4.5).
     double areaCompliance = 0;
     /// α of the turn between consecutive edges of a body with bending on, step²/(mass·px²)

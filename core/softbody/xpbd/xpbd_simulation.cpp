@@ -31,8 +31,8 @@ XpbdParams paramsOf(const SceneSpec& s)
     p.height = s.params.height;
     if (s.hasParam("velmax"))
         p.velmax = std::max(s.params.velmax, 1e-9);
-    if (!s.has("springs"))
-        p.edgeCompliance = kNoConstraint;
+    p.substeps = s.stable.substeps;
+    p.edgeCompliance = s.has("springs") ? s.stable.edgeCompliance : kNoConstraint;
     if (!s.has("area"))
         p.areaCompliance = kNoConstraint;
     p.grabMode = s.grab;
