@@ -23,6 +23,8 @@
 #include <QPushButton>
 #include <QRadioButton>
 #include <QSlider>
+#include <QSpinBox>
+#include <QGroupBox>
 #include <QSet>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -403,6 +405,55 @@ private slots:
         QVERIFY(!tab().canvas()->animating());
         tab().show();
         QVERIFY(tab().canvas()->animating());
+    }
+
+    // Issue 16: the stable solver's knobs, shown while it runs: substeps and the edges'
+    // compliance rebuild the scene with them, as one undo step a knob, and the document
+    // keeps them; the seed's box is hidden, and the knobs stay when the stage changes.
+    void stableKnobs()
+    {
+        QVERIFY(tab().setScene("frog", nullptr));
+        QVERIFY(tab().setSolver(SolverKind::Seed, nullptr));
+        auto* box = tab().findChild<QGroupBox*>("frogStableBox");
+        auto* substeps = tab().findChild<QSpinBox*>("frogSubsteps");
+        auto* compliance = tab().findChild<QDoubleSpinBox*>("frogEdgeCompliance");
+        QVERIFY(box && substeps && compliance);
+        QVERIFY(!box->isVisibleTo(&tab()));
+        QVERIFY(tab().setSolver(SolverKind::Stable, nullptr));
+        QVERIFY(box->isVisibleTo(&tab()));
+        QCOMPARE(substeps->value(), 8);
+        QCOMPARE(tab().canvas()->simulation()->substeps(), 8);
+        QUndoStack* undo = tab().undoStack();
+        const int before = undo->count();
+        substeps->setValue(16);
+        substeps->setValue(24); // a run of edits of one knob: one step
+        QCOMPARE(tab().canvas()->simulation()->substeps(), 24);
+        QCOMPARE(undo->count(), before + 1);
+        compliance->setValue(0.01);
+        QCOMPARE(tab().scene().stable.edgeCompliance, 0.01);
+        QCOMPARE(undo->count(), before + 2);
+        const auto* note = tab().findChild<QLabel*>("frogStableNote");
+        QVERIFY2(note->text().contains("rings with a period of"), qPrintable(note->text()));
+        const QJsonObject saved = tab().saveState();
+        QCOMPARE(saved["stable"].toObject()["substeps"].toInt(), 24);
+        undo->undo();
+        QCOMPARE(tab().scene().stable.edgeCompliance, 2e-3);
+        QCOMPARE(compliance->value(), 0.002);
+        undo->undo();
+        QCOMPARE(tab().canvas()->simulation()->substeps(), 8);
+        QCOMPARE(substeps->value(), 8);
+        QVERIFY(tab().loadState(saved, nullptr));
+        QCOMPARE(tab().canvas()->simulation()->substeps(), 24);
+        QCOMPARE(substeps->value(), 24);
+        // A stage of its own keeps the solver's knobs; a bad document value is refused.
+        QVERIFY(tab().setScene("many-bodies", nullptr));
+        QCOMPARE(tab().canvas()->simulation()->substeps(), 24);
+        QJsonObject bad = saved;
+        bad["stable"] = QJsonObject{{"substeps", 40}};
+        QString error;
+        QVERIFY(!tab().loadState(bad, &error));
+        QVERIFY2(error.contains("substeps"), qPrintable(error));
+        QCOMPARE(tab().sceneName(), QStringLiteral("many-bodies"));
     }
 
     // Issue 16, rewind: the canvas records the mouse's grab and throw; the timeline goes

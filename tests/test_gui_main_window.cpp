@@ -12,6 +12,7 @@
 #include "ui/shell/tikz_options_dialog.h"
 #include "ui/common/work_precision_panel.h"
 #include "ui/common/work_precision_plot.h"
+#include "ui/frog/frog_tab.h"
 #include "gui_timeouts.h"
 
 #include "main_window_steps.h"
@@ -34,6 +35,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QProcess>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <QStandardPaths>
 #include <QSignalSpy>
@@ -607,6 +609,25 @@ private slots:
         QVERIFY(measureAndCancel(panel));
         window.setWorkPrecisionVisible(false);
         QVERIFY(!window.workPrecisionVisible());
+    }
+
+    // Issue 16: the Frog tab's stable solver box opens the soft-body report below the tab.
+    void frogOpensTheSoftBodyReport()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("frog")));
+        auto* frog = qobject_cast<granota::ui::FrogTab*>(window.currentTab());
+        QVERIFY(frog->setSolver(granota::SolverKind::Stable, nullptr));
+        auto* panel = window.workPrecisionPanel(QStringLiteral("frog"));
+        panel->selectReport("integrators");
+        QVERIFY(!window.workPrecisionVisible());
+        auto* button = frog->findChild<QPushButton*>(QStringLiteral("frogSoftBodyReport"));
+        QVERIFY(button && button->isVisibleTo(&window));
+        button->click();
+        QVERIFY(window.workPrecisionVisible());
+        QCOMPARE(panel->selectedReport(), std::string("soft-body"));
+        QVERIFY(frog->setSolver(granota::SolverKind::Seed, nullptr));
+        QVERIFY(!button->isVisibleTo(&window)); // the seed has no substeps
     }
 
     // Another report chosen, then a measurement cancelled: the plot is empty, with no axis

@@ -2518,6 +2518,46 @@ a cada canvi alentiria la finestra.</translation>
     <context>
         <name>granota::ui::FrogTab</name>
         <message>
+            <source>This scene has no springs: the compliance does nothing here.</source>
+            <translation>Aquesta escena no té molles: aquí la flexibilitat no fa res.</translation>
+        </message>
+        <message>
+            <source>α = 0: the edges are rigid.</source>
+            <translation>α = 0: les arestes són rígides.</translation>
+        </message>
+        <message>
+            <source>An edge of %1 px rings with a period of %2 steps (%3 Hz at 60 steps a second); 0 makes the edges rigid.</source>
+            <translation>Una aresta de %1 px vibra amb un període de %2 passos (%3 Hz a 60 passos per segon); 0 fa les arestes rígides.</translation>
+        </message>
+        <message>
+            <source>The soft-body report below the tab: XPBD's constraint error against the substeps and their cost (View ▸ Error against run time).</source>
+            <translation>L'informe del cos tou sota la pestanya: l'error de les restriccions de l'XPBD segons els subpassos i el seu cost (Visualitza ▸ Error respecte del temps d'execució).</translation>
+        </message>
+        <message>
+            <source>Error against substeps…</source>
+            <translation>Error segons els subpassos…</translation>
+        </message>
+        <message>
+            <source>How soft the body's edges are, in step² per unit of mass and per px of rest length: 0 is rigid, larger is softer. Unlike the seed's factors it does not depend on the substeps or the number of vertices. The scene starts again.</source>
+            <translation>Com de toves són les arestes del cos, en pas² per unitat de massa i per px de longitud en repòs: 0 és rígid, més gran és més tou. A diferència dels factors de la llavor, no depèn dels subpassos ni del nombre de vèrtexs. L'escena torna a començar.</translation>
+        </message>
+        <message>
+            <source>Edge compliance α</source>
+            <translation>Flexibilitat de les arestes α</translation>
+        </message>
+        <message>
+            <source>Substeps per step, 1 to 32: each step is cut into n substeps, and the constraints' error falls like 1/n² at a cost proportional to n. The scene starts again.</source>
+            <translation>Subpassos per pas, d'1 a 32: cada pas es divideix en n subpassos, i l'error de les restriccions baixa com 1/n² amb un cost proporcional a n. L'escena torna a començar.</translation>
+        </message>
+        <message>
+            <source>Substeps n</source>
+            <translation>Subpassos n</translation>
+        </message>
+        <message>
+            <source>Stable solver</source>
+            <translation>Mètode estable</translation>
+        </message>
+        <message>
             <source>The same scene and values on the stable solver (XPBD), which holds them.</source>
             <translation>La mateixa escena i els mateixos valors amb el mètode estable (XPBD), que els aguanta.</translation>
         </message>

@@ -2518,6 +2518,46 @@ on each change would slow the window.</translation>
     <context>
         <name>granota::ui::FrogTab</name>
         <message>
+            <source>This scene has no springs: the compliance does nothing here.</source>
+            <translation>This scene has no springs: the compliance does nothing here.</translation>
+        </message>
+        <message>
+            <source>α = 0: the edges are rigid.</source>
+            <translation>α = 0: the edges are rigid.</translation>
+        </message>
+        <message>
+            <source>An edge of %1 px rings with a period of %2 steps (%3 Hz at 60 steps a second); 0 makes the edges rigid.</source>
+            <translation>An edge of %1 px rings with a period of %2 steps (%3 Hz at 60 steps a second); 0 makes the edges rigid.</translation>
+        </message>
+        <message>
+            <source>The soft-body report below the tab: XPBD's constraint error against the substeps and their cost (View ▸ Error against run time).</source>
+            <translation>The soft-body report below the tab: XPBD's constraint error against the substeps and their cost (View ▸ Error against run time).</translation>
+        </message>
+        <message>
+            <source>Error against substeps…</source>
+            <translation>Error against substeps…</translation>
+        </message>
+        <message>
+            <source>How soft the body's edges are, in step² per unit of mass and per px of rest length: 0 is rigid, larger is softer. Unlike the seed's factors it does not depend on the substeps or the number of vertices. The scene starts again.</source>
+            <translation>How soft the body's edges are, in step² per unit of mass and per px of rest length: 0 is rigid, larger is softer. Unlike the seed's factors it does not depend on the substeps or the number of vertices. The scene starts again.</translation>
+        </message>
+        <message>
+            <source>Edge compliance α</source>
+            <translation>Edge compliance α</translation>
+        </message>
+        <message>
+            <source>Substeps per step, 1 to 32: each step is cut into n substeps, and the constraints' error falls like 1/n² at a cost proportional to n. The scene starts again.</source>
+            <translation>Substeps per step, 1 to 32: each step is cut into n substeps, and the constraints' error falls like 1/n² at a cost proportional to n. The scene starts again.</translation>
+        </message>
+        <message>
+            <source>Substeps n</source>
+            <translation>Substeps n</translation>
+        </message>
+        <message>
+            <source>Stable solver</source>
+            <translation>Stable solver</translation>
+        </message>
+        <message>
             <source>The same scene and values on the stable solver (XPBD), which holds them.</source>
             <translation>The same scene and values on the stable solver (XPBD), which holds them.</translation>
         </message>

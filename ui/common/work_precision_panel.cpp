@@ -67,6 +67,12 @@ WorkPrecisionPanel::~WorkPrecisionPanel()
     }
 }
 
+std::string WorkPrecisionPanel::selectedReport() const
+{
+    const int i = m_choice->currentIndex();
+    return i >= 0 && std::size_t(i) < m_names.size() ? m_names[std::size_t(i)] : std::string();
+}
+
 void WorkPrecisionPanel::selectReport(const std::string& name)
 {
     for (std::size_t i = 0; i < m_names.size(); ++i)

@@ -39,6 +39,8 @@ public:
     QCustomPlot* plot() const { return m_plot; }
     /// The names of the reports offered, in the order of the choice box.
     const std::vector<std::string>& reportNames() const { return m_names; }
+    /// The report chosen (selectReport), "" if none.
+    std::string selectedReport() const;
     /// What the x axis shows: run time or the knob. A new report starts with its own choice.
     WorkPrecisionAxis axis() const;
     void setAxis(WorkPrecisionAxis axis);

@@ -3,6 +3,7 @@
 
 #include "core/softbody/outline.h"
 #include "core/softbody/scenes/scene_texts.h"
+#include "core/base/number_format.h"
 #include "ui/common/value_command.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_json.h"
@@ -30,6 +31,8 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QShortcut>
+#include <QSpinBox>
+#include <QDoubleSpinBox>
 #include <QSlider>
 #include <QSplitter>
 #include <QTextStream>
@@ -51,6 +54,7 @@ void setError(QString* error, const QString& text)
 QString fromStd(const std::string& s) { return QString::fromStdString(s); }
 
 constexpr int kParameterMergeIdBase = 0x46520000; ///< "FR": a parameter's edits merge (valueMergeId)
+constexpr int kStableMergeIdBase = 0x46530000;    ///< "FS": a stable solver knob's edits merge
 
 QJsonValue paramValue(const SceneSpec& scene, const QString& key)
 {
@@ -138,6 +142,38 @@ FrogTab::FrogTab(QWidget* parent)
     sceneGrid->addWidget(m_showPlots, 6, 0, 1, 2);
     sceneGrid->setColumnStretch(1, 1);
     column->addWidget(m_sceneBox);
+
+    // The stable solver's knobs, shown while it runs.
+    m_stableBox = new QGroupBox(side);
+    m_stableBox->setObjectName(QStringLiteral("frogStableBox"));
+    auto* stableGrid = new QGridLayout(m_stableBox);
+    m_substepsLabel = new QLabel(m_stableBox);
+    m_substeps = new QSpinBox(m_stableBox);
+    m_substeps->setObjectName(QStringLiteral("frogSubsteps"));
+    m_substeps->setRange(StableSettings::kMinSubsteps, StableSettings::kMaxSubsteps);
+    m_substeps->setKeyboardTracking(false);
+    m_substepsLabel->setBuddy(m_substeps);
+    m_complianceLabel = new QLabel(m_stableBox);
+    m_compliance = new QDoubleSpinBox(m_stableBox);
+    m_compliance->setObjectName(QStringLiteral("frogEdgeCompliance"));
+    m_compliance->setRange(0, StableSettings::kMaxEdgeCompliance);
+    m_compliance->setDecimals(4);
+    m_compliance->setSingleStep(0.0005);
+    m_compliance->setKeyboardTracking(false);
+    m_complianceLabel->setBuddy(m_compliance);
+    m_stableNote = new QLabel(m_stableBox);
+    m_stableNote->setObjectName(QStringLiteral("frogStableNote"));
+    m_stableNote->setWordWrap(true);
+    m_softBodyReport = new QPushButton(m_stableBox);
+    m_softBodyReport->setObjectName(QStringLiteral("frogSoftBodyReport"));
+    stableGrid->addWidget(m_substepsLabel, 0, 0);
+    stableGrid->addWidget(m_substeps, 0, 1);
+    stableGrid->addWidget(m_complianceLabel, 1, 0);
+    stableGrid->addWidget(m_compliance, 1, 1);
+    stableGrid->addWidget(m_stableNote, 2, 0, 1, 2);
+    stableGrid->addWidget(m_softBodyReport, 3, 0, 1, 2);
+    stableGrid->setColumnStretch(1, 1);
+    column->addWidget(m_stableBox);
 
     // §4.9/4.10: precomputed points or the per-frame fit.
     m_bezierBox = new QGroupBox(side);
@@ -282,6 +318,16 @@ FrogTab::FrogTab(QWidget* parent)
     connect(m_canvas, &FrogCanvas::statusMessage, this, &TabPage::statusMessage);
     connect(m_canvas, &FrogCanvas::timelineChanged, this, &FrogTab::updateTimeline);
     connect(m_canvas, &FrogCanvas::blownUpChanged, this, &FrogTab::showExplosion);
+    const auto knob = [this](const QString& key, double value) {
+        QString error;
+        if (!editStableSetting(key, value, &error)) {
+            showStableSettings(); // the knob shows the value in force again
+            showRefusal(error);
+        }
+    };
+    connect(m_substeps, &QSpinBox::valueChanged, this, [knob](int n) { knob(QStringLiteral("substeps"), n); });
+    connect(m_compliance, &QDoubleSpinBox::valueChanged, this, [knob](double a) { knob(QStringLiteral("edge_compliance"), a); });
+    connect(m_softBodyReport, &QPushButton::clicked, this, [this] { emit reportRequested(QStringLiteral("soft-body")); });
     connect(m_explosionReset, &QPushButton::clicked, this, &FrogTab::reset);
     connect(m_explosionStable, &QPushButton::clicked, this, [this] {
         const int stable = m_solverCombo->findData(QStringLiteral("stable"));
@@ -377,6 +423,7 @@ bool FrogTab::switchScene(const QString& name, QString* error)
     }
     // The seed never had collisions (§5.2 is future work): those scenes start on the stable
     // solver, as in granota-cli; the solver box switches back to compare.
+    spec->stable = m_scene.stable; // the solver's knobs stay with the solver
     SolverKind solver = m_solver;
     const bool collisions = spec->has("collisions") || spec->has("obstacles");
     if (collisions)
@@ -403,7 +450,7 @@ QJsonObject FrogTab::sceneState() const
 {
     const QJsonObject state = saveState();
     QJsonObject scene;
-    for (const char* key : {"scene", "solver", "params"})
+    for (const char* key : {"scene", "solver", "params", "stable"})
         scene.insert(QLatin1String(key), state.value(QLatin1String(key)));
     return scene;
 }
@@ -666,6 +713,18 @@ void FrogTab::retranslate()
                               "Running on replays what was recorded until a press on a body, a spawn or a change "
                               "takes over (, one step back, . one step on)."));
     m_timeline->setAccessibleName(tr("Timeline"));
+    m_stableBox->setTitle(tr("Stable solver"));
+    m_substepsLabel->setText(tr("Substeps n"));
+    m_substeps->setToolTip(tr("Substeps per step, 1 to 32: each step is cut into n substeps, and the constraints' error "
+                              "falls like 1/n² at a cost proportional to n. The scene starts again."));
+    m_complianceLabel->setText(tr("Edge compliance α"));
+    m_compliance->setToolTip(tr("How soft the body's edges are, in step² per unit of mass and per px of rest length: "
+                                "0 is rigid, larger is softer. Unlike the seed's factors it does not depend on the "
+                                "substeps or the number of vertices. The scene starts again."));
+    m_softBodyReport->setText(tr("Error against substeps…"));
+    m_softBodyReport->setToolTip(tr("The soft-body report below the tab: XPBD's constraint error against the substeps "
+                                    "and their cost (View ▸ Error against run time)."));
+    showStableSettings();
     m_explosionText->setText(tr("The body has blown up."));
     m_explosionReset->setText(tr("Reset"));
     m_explosionReset->setToolTip(tr("Start the scene again with the current parameters (R)."));
@@ -753,6 +812,61 @@ void FrogTab::updateTimeline()
     m_timelineLabel->setMinimumWidth(wide);
 }
 
+bool FrogTab::applyStableSettings(const StableSettings& settings, QString* error)
+{
+    SceneSpec spec = m_scene;
+    spec.stable = settings;
+    if (!rebuild(spec, m_solver, error))
+        return false;
+    showStableSettings();
+    emit documentChanged();
+    return true;
+}
+
+bool FrogTab::editStableSetting(const QString& key, double value, QString* error)
+{
+    SceneSpec changed = m_scene;
+    const auto ok = applySetting(changed, key.toStdString() + "=" + formatDouble(value));
+    if (!ok) {
+        setError(error, tr("This value was refused: %1").arg(fromStd(ok.error().message)));
+        return false;
+    }
+    const StableSettings before = m_scene.stable, after = changed.stable;
+    if (after == before)
+        return true;
+    if (!applyStableSettings(after, error))
+        return false;
+    m_undo->push(new ValueCommand<StableSettings>([this](const StableSettings& s) { applyStableSettings(s, nullptr); }, before,
+                                                  after, tr("Change %1").arg(key), valueMergeId(kStableMergeIdBase, key),
+                                                  {/*dropWhenUnchanged=*/false, /*appliedAlready=*/true}));
+    return true;
+}
+
+void FrogTab::showStableSettings()
+{
+    const QSignalBlocker b1(m_substeps), b2(m_compliance);
+    m_substeps->setValue(m_scene.stable.substeps);
+    m_compliance->setValue(m_scene.stable.edgeCompliance);
+    m_stableBox->setVisible(m_solver == SolverKind::Stable);
+    // What α means for this scene: the first edge of the first body, a vertex of mass 1.
+    const Simulation* sim = m_canvas->simulation();
+    QString note;
+    if (sim && sim->bodyCount() > 0 && m_scene.has("springs")) {
+        std::vector<Point> v;
+        sim->bodyVertices(0, v);
+        const double length = v.size() >= 2 ? std::hypot(v[1].x - v[0].x, v[1].y - v[0].y) : 0;
+        const double period = edgeRingPeriodSteps(m_scene.stable.edgeCompliance, length, 1);
+        if (std::isfinite(period))
+            note = tr("An edge of %1 px rings with a period of %2 steps (%3 Hz at 60 steps a second); 0 makes the edges rigid.")
+                       .arg(displayFixed(length, 0), displayFixed(period, 1), displayFixed(kStepsPerSecond / period, 2));
+        else
+            note = tr("α = 0: the edges are rigid.");
+    } else if (sim) {
+        note = tr("This scene has no springs: the compliance does nothing here.");
+    }
+    m_stableNote->setText(note);
+}
+
 void FrogTab::showExplosion(bool blownUp)
 {
     m_explosion->setVisible(blownUp);
@@ -811,6 +925,10 @@ QJsonObject FrogTab::saveState() const
     state.insert(QStringLiteral("bezier_outline"), m_fit->isChecked() ? QStringLiteral("fit") : QStringLiteral("precomputed"));
     state.insert(QStringLiteral("paused"), !m_canvas->running());
     state.insert(QStringLiteral("speed"), m_canvas->speed());
+    QJsonObject stable;
+    stable.insert(QStringLiteral("substeps"), m_scene.stable.substeps);
+    stable.insert(QStringLiteral("edge_compliance"), m_scene.stable.edgeCompliance);
+    state.insert(QStringLiteral("stable"), stable);
     // The run so far (docs/rewind.md): its events, how far it went, and the step shown.
     if (const RecordedRun* run = m_canvas->run()) {
         QJsonObject recording;
@@ -922,6 +1040,19 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
             return false;
         }
         speed = v.toDouble();
+    }
+    // The stable solver's knobs, checked as a scene file's "stable".
+    if (state.contains(QStringLiteral("stable"))) {
+        Json doc = sceneToJson(*spec);
+        doc.set("stable", fromQJson(state.value(QStringLiteral("stable"))));
+        auto parsed = parseScene(doc);
+        if (!parsed) {
+            setError(error, tr("This value was refused: %1").arg(fromStd(parsed.error().message)));
+            return false;
+        }
+        spec = std::move(parsed);
+    } else {
+        spec->stable = m_scene.stable;
     }
     // The recorded run: checked whole before anything changes.
     std::optional<std::vector<InputEvent>> events;

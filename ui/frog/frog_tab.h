@@ -12,6 +12,8 @@
 
 class QCheckBox;
 class QComboBox;
+class QDoubleSpinBox;
+class QSpinBox;
 class QGroupBox;
 class QLabel;
 class QPushButton;
@@ -58,6 +60,10 @@ public:
     bool applyParameter(const QString& key, const QJsonValue& value, QString* error);
     /// Builds the scene again from its parameters (Reset).
     void reset();
+    /// The stable solver's knobs (docs/solvers.md#knobs): "substeps" (1–32) or
+    /// "edge_compliance" (0–1), applied at once (the bodies start again) as one undo step
+    /// (a run of edits of one knob merges). False with a message when refused.
+    bool editStableSetting(const QString& key, double value, QString* error);
     /// The speed (StepPacer::kSpeeds; others are ignored), in the canvas and the speed box.
     void setSpeed(double speed);
     /// Rewind (docs/rewind.md): the timeline under the canvas, from step 0 to the furthest
@@ -103,6 +109,8 @@ private:
     void setPaused(bool paused);
     void updateTimeline();
     void showExplosion(bool blownUp);
+    bool applyStableSettings(const StableSettings& settings, QString* error);
+    void showStableSettings();
     void timelineMoved(int step);
     void stepOnce();
     void showRefusal(const QString& message);
@@ -124,6 +132,11 @@ private:
     QLabel* m_solverNote; ///< what the chosen solver cannot show of this scene (seedRoundsShapes)
     QComboBox *m_sceneCombo, *m_solverCombo, *m_speedCombo;
     QLabel* m_speedLabel;
+    QGroupBox* m_stableBox = nullptr;
+    QLabel *m_substepsLabel = nullptr, *m_complianceLabel = nullptr, *m_stableNote = nullptr;
+    QSpinBox* m_substeps = nullptr;
+    QDoubleSpinBox* m_compliance = nullptr;
+    QPushButton* m_softBodyReport = nullptr;
     QWidget* m_explosion = nullptr; ///< "the body has blown up", with Reset and the stable solver
     QLabel* m_explosionText = nullptr;
     QPushButton *m_explosionReset = nullptr, *m_explosionStable = nullptr;

@@ -83,6 +83,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
         m_reportAreas.push_back(reportArea);
         m_tabs->addTab(splitter, page->title());
         m_undoGroup->addStack(page->undoStack());
+        connect(page, &TabPage::reportRequested, this, [this, report](const QString& name) {
+            report->selectReport(name.toStdString());
+            setWorkPrecisionVisible(true);
+        });
         // Only the tab shown speaks: a hidden tab's message would belong to another screen.
         connect(page, &TabPage::statusMessage, this, [this, page](const QString& text) {
             if (page == currentTab())

@@ -90,6 +90,8 @@ signals:
     void documentChanged();
     /// A message for the status bar (hints, refusals, readouts).
     void statusMessage(const QString& text);
+    /// Open the work-precision section below the tab at report `name` (docs/work-precision.md).
+    void reportRequested(const QString& name);
 
 protected:
     /// What tikz() draws: the tab's curves, polygons and labelled points in model coordinates.
