@@ -1,6 +1,7 @@
 // The frog lab tab (docs/scenes.md): stepping, grabbing and spawning through the canvas's own
 // mouse and key events, the scene's own parameters applied live and undoably, every scene on
 // both solvers, the frame export and the document round trip.
+#include "core/softbody/recorded_run.h"
 #include "core/softbody/simulation.h"
 #include "core/softbody/simulation_trace.h"
 #include "ui/frog/frog_art.h"
@@ -405,6 +406,67 @@ private slots:
         QVERIFY(!tab().canvas()->animating());
         tab().show();
         QVERIFY(tab().canvas()->animating());
+    }
+
+    // Issue 16, both solvers at once: the ghost is the other solver's run of the same scene,
+    // fed the same mouse — its states are exactly a replay of the run's recording on that
+    // solver — and it follows the timeline back and forth. The overlay is one undo step.
+    void ghostFollowsTheSameMouse()
+    {
+        QVERIFY(tab().setScene("frog", nullptr));
+        QVERIFY(tab().setSolver(SolverKind::Stable, nullptr));
+        tab().findChild<QPushButton*>("frogPause")->setChecked(true);
+        FrogCanvas* canvas = tab().canvas();
+        QCOMPARE(canvas->ghost(), nullptr);
+        steps(tab(), 30);
+        auto* ghostBox = tab().findChild<QCheckBox*>("frogOverlay6");
+        QVERIFY(ghostBox);
+        const int undoSteps = tab().undoStack()->count();
+        ghostBox->click(); // on late: the ghost catches up with the run
+        QCOMPARE(tab().undoStack()->count(), undoSteps + 1);
+        QVERIFY(canvas->ghost());
+        QCOMPARE(canvas->ghost()->solver(), SolverKind::Seed);
+        QCOMPARE(canvas->ghost()->stepCount(), 30L);
+        const QPoint at = canvas->toWidget(centroid(*canvas->simulation())).toPoint();
+        QTest::mouseMove(canvas, at);
+        QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, at);
+        for (int i = 1; i <= 15; ++i) {
+            QTest::mouseMove(canvas, at + QPoint(10 * i, -6 * i));
+            steps(tab(), 2);
+        }
+        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, at + QPoint(150, -90));
+        steps(tab(), 90);
+        QCOMPARE(canvas->ghost()->stepCount(), 150L);
+        // The seed's replay of the run's recording goes through the ghost's states.
+        Recording asSeed = canvas->run()->recording();
+        asSeed.solver = SolverKind::Seed;
+        auto replay = RecordedRun::load(asSeed);
+        QVERIFY(replay.ok());
+        std::vector<std::string> rows{simulationTraceRow(replay->simulation())};
+        while (replay->stepCount() < 150) {
+            replay->step();
+            rows.push_back(simulationTraceRow(replay->simulation()));
+        }
+        QCOMPARE(simulationTraceRow(*canvas->ghost()), rows[150]);
+        QVERIFY(simulationTraceRow(*canvas->ghost()) != simulationTraceRow(*canvas->simulation()));
+        QVERIFY(canvas->textLines().join('\n').contains("Dashed ghost: the seed solver fed the same mouse"));
+        // The timeline takes it along.
+        for (int t : {70, 0, 149, 31}) {
+            tab().timeline()->setValue(t);
+            QCOMPARE(canvas->ghost()->stepCount(), long(t));
+            QCOMPARE(simulationTraceRow(*canvas->ghost()), rows[std::size_t(t)]);
+        }
+        // Kept in the document; off again with Ctrl+Z.
+        QVERIFY(tab().saveState()["overlays"].toObject()["ghost"].toBool());
+        tab().undoStack()->undo();
+        QVERIFY(!ghostBox->isChecked());
+        QCOMPARE(canvas->ghost(), nullptr);
+        // Pendulums too: the ghost of the stable solver over the seed's.
+        QVERIFY(tab().setScene("pendulum-limits", nullptr));
+        QVERIFY(tab().setSolver(SolverKind::Seed, nullptr));
+        ghostBox->click();
+        QCOMPARE(canvas->ghost()->solver(), SolverKind::Stable);
+        QCOMPARE(canvas->ghost()->chainCount(), canvas->simulation()->chainCount());
     }
 
     // Issue 16: the stable solver's knobs, shown while it runs: substeps and the edges'

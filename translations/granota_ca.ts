@@ -2116,6 +2116,30 @@ a cada canvi alentiria la finestra.</translation>
     <context>
         <name>granota::ui::FrogCanvas</name>
         <message>
+            <source>The ghost starts with the next Reset: the run so far is too long to replay for it.</source>
+            <translation>El fantasma començarà amb el proper reinici: l'execució fins ara és massa llarga per reproduir-la.</translation>
+        </message>
+        <message>
+            <source>The other solver cannot run this scene: %1</source>
+            <translation>L'altre mètode no pot executar aquesta escena: %1</translation>
+        </message>
+        <message>
+            <source>Dashed ghost: the stable solver fed the same mouse</source>
+            <translation>Fantasma discontinu: el mètode estable amb el mateix ratolí</translation>
+        </message>
+        <message>
+            <source>Dashed ghost: the seed solver fed the same mouse</source>
+            <translation>Fantasma discontinu: el mètode llavor amb el mateix ratolí</translation>
+        </message>
+        <message>
+            <source>Dashed ghost: the stable solver fed the same mouse, area error %1 %</source>
+            <translation>Fantasma discontinu: el mètode estable amb el mateix ratolí, error d'àrea %1 %</translation>
+        </message>
+        <message>
+            <source>Dashed ghost: the seed solver fed the same mouse, area error %1 %</source>
+            <translation>Fantasma discontinu: el mètode llavor amb el mateix ratolí, error d'àrea %1 %</translation>
+        </message>
+        <message>
             <source>Playing the recorded run back: move the cursor inside a body to take over from step %1.</source>
             <translation>Es reprodueix l'execució enregistrada: moveu el cursor dins d'un cos per prendre'n el relleu des del pas %1.</translation>
         </message>
@@ -2517,6 +2541,14 @@ a cada canvi alentiria la finestra.</translation>
     </context>
     <context>
         <name>granota::ui::FrogTab</name>
+        <message>
+            <source>Both solvers at once: the other solver runs the same scene, fed the same mouse, and is drawn dashed over this one (the seed's frog sits about 17 % short of its area, the stable one holds it).</source>
+            <translation>Els dos mètodes alhora: l'altre mètode executa la mateixa escena, amb el mateix ratolí, i es dibuixa amb traç discontinu sobre aquest (la granota de la llavor queda un 17 % per sota de la seva àrea; l'estable la manté).</translation>
+        </message>
+        <message>
+            <source>Ghost of the other solver</source>
+            <translation>Fantasma de l'altre mètode</translation>
+        </message>
         <message>
             <source>This scene has no springs: the compliance does nothing here.</source>
             <translation>Aquesta escena no té molles: aquí la flexibilitat no fa res.</translation>

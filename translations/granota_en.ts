@@ -2116,6 +2116,30 @@ on each change would slow the window.</translation>
     <context>
         <name>granota::ui::FrogCanvas</name>
         <message>
+            <source>The ghost starts with the next Reset: the run so far is too long to replay for it.</source>
+            <translation>The ghost starts with the next Reset: the run so far is too long to replay for it.</translation>
+        </message>
+        <message>
+            <source>The other solver cannot run this scene: %1</source>
+            <translation>The other solver cannot run this scene: %1</translation>
+        </message>
+        <message>
+            <source>Dashed ghost: the stable solver fed the same mouse</source>
+            <translation>Dashed ghost: the stable solver fed the same mouse</translation>
+        </message>
+        <message>
+            <source>Dashed ghost: the seed solver fed the same mouse</source>
+            <translation>Dashed ghost: the seed solver fed the same mouse</translation>
+        </message>
+        <message>
+            <source>Dashed ghost: the stable solver fed the same mouse, area error %1 %</source>
+            <translation>Dashed ghost: the stable solver fed the same mouse, area error %1 %</translation>
+        </message>
+        <message>
+            <source>Dashed ghost: the seed solver fed the same mouse, area error %1 %</source>
+            <translation>Dashed ghost: the seed solver fed the same mouse, area error %1 %</translation>
+        </message>
+        <message>
             <source>Playing the recorded run back: move the cursor inside a body to take over from step %1.</source>
             <translation>Playing the recorded run back: move the cursor inside a body to take over from step %1.</translation>
         </message>
@@ -2517,6 +2541,14 @@ on each change would slow the window.</translation>
     </context>
     <context>
         <name>granota::ui::FrogTab</name>
+        <message>
+            <source>Both solvers at once: the other solver runs the same scene, fed the same mouse, and is drawn dashed over this one (the seed's frog sits about 17 % short of its area, the stable one holds it).</source>
+            <translation>Both solvers at once: the other solver runs the same scene, fed the same mouse, and is drawn dashed over this one (the seed's frog sits about 17 % short of its area, the stable one holds it).</translation>
+        </message>
+        <message>
+            <source>Ghost of the other solver</source>
+            <translation>Ghost of the other solver</translation>
+        </message>
         <message>
             <source>This scene has no springs: the compliance does nothing here.</source>
             <translation>This scene has no springs: the compliance does nothing here.</translation>

@@ -43,6 +43,7 @@ constexpr double kPanelPad = 6;    // and inside it
 const QColor kMudBottom(0x86, 0x6a, 0x44); // FrogArt's bank, bottom
 const QColor kEdgeColour(0xff, 0x8a, 0x1e);
 const QColor kVelocityColour(0x1f, 0x5f, 0xd8);
+const QColor kGhostColour(0x5a, 0x2d, 0x82);
 
 /// Samples per Catmull-Rom segment: smooth for the seed's 10 vertices, few for 200.
 int samplesPerSegment(std::size_t vertices)
@@ -80,6 +81,7 @@ void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
             m_run->setMaxSnapshots(kSnapshotBytes / (points * kSnapshotBytesPerPoint));
         }
     }
+    rebuildGhost();
     updateWork();
     m_frameCount = 0;
     m_pacer.restart();
@@ -96,7 +98,7 @@ void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
     m_fitShownUs = 0;
     m_backgroundSize = QSize(); // the frame may have another size
     if (m_run && m_mouseKnown && underMouse())
-        m_run->move(m_mouse); // Processing's mouseX/mouseY hold from the first frame (§4.1, §4.13)
+        send(InputKind::Move, m_mouse); // Processing's mouseX/mouseY hold from the first frame (§4.1, §4.13)
     m_reportedRadius = -1;
     reportMouseRadius();
     m_startAreaError = sim() && sim()->bodyCount() > 0 ? sim()->readouts().areaErrorPercent : 0;
@@ -124,7 +126,12 @@ void FrogCanvas::step()
 
 void FrogCanvas::setOverlays(const Overlays& overlays)
 {
+    const bool ghostChanged = overlays.ghost != m_overlays.ghost;
     m_overlays = overlays;
+    if (ghostChanged) {
+        rebuildGhost();
+        updateWork();
+    }
     if (!overlays.velocities)
         m_previousValid = false;
     refreshTexts();
@@ -277,6 +284,9 @@ void FrogCanvas::advance()
     const qint64 t0 = m_clock.nsecsElapsed();
     const bool replaying = m_run->playingBack();
     m_run->step();
+    if (m_ghost) // in step with the run: the same events at the same steps
+        while (m_ghost->stepCount() < m_run->stepCount())
+            m_ghost->step();
     if (replaying) // a recorded spawn adds work
         updateWork();
     if (m_recording)
@@ -286,9 +296,52 @@ void FrogCanvas::advance()
     emit timelineChanged();
 }
 
+bool FrogCanvas::send(InputKind kind, Point at)
+{
+    bool held = false;
+    for (RecordedRun* run : {m_run.get(), m_ghost.get()}) {
+        if (!run)
+            continue;
+        bool h = false;
+        switch (kind) {
+        case InputKind::Press: h = run->press(at); break;
+        case InputKind::Move: run->move(at); break;
+        case InputKind::Release: run->release(); break;
+        case InputKind::Spawn: run->spawn(at); break;
+        case InputKind::ReleaseSpawn: run->releaseSpawn(); break;
+        }
+        if (run == m_run.get())
+            held = h;
+    }
+    return held;
+}
+
+void FrogCanvas::rebuildGhost()
+{
+    m_ghost.reset();
+    if (!m_overlays.ghost || !m_run)
+        return;
+    const SolverKind other = sim()->solver() == SolverKind::Seed ? SolverKind::Stable : SolverKind::Seed;
+    auto built = Simulation::create(sim()->scene(), other);
+    if (!built) {
+        emit statusMessage(tr("The other solver cannot run this scene: %1").arg(QString::fromStdString(built.error().message)));
+        return;
+    }
+    const long catchUp = (*built)->workPerStep() * sim()->stepCount();
+    if (catchUp > kGhostCatchUpWork) {
+        emit statusMessage(tr("The ghost starts with the next Reset: the run so far is too long to replay for it."));
+        return;
+    }
+    auto ghost = RecordedRun::adopt(std::move(built).value(), int(std::clamp<long>(kScrubWork / std::max(1L, m_stepWork), 1, 100)));
+    if (!ghost || !ghost->setRecording(m_run->recording().events, m_run->recordedSteps()).ok()
+        || !ghost->seek(sim()->stepCount()).ok())
+        return;
+    m_ghost = std::make_unique<RecordedRun>(std::move(ghost).value());
+}
+
 void FrogCanvas::updateWork()
 {
-    m_stepWork = sim() ? sim()->workPerStep() : 0;
+    m_stepWork = (sim() ? sim()->workPerStep() : 0) + (m_ghost ? m_ghost->simulation().workPerStep() : 0);
     m_pacer.setWork(m_stepWork, kFrameWork);
 }
 
@@ -312,6 +365,8 @@ bool FrogCanvas::seek(long step)
                 advance();
         } else {
             (void)m_run->seek(step); // inside the range: cannot fail
+            if (m_ghost && !m_ghost->seek(step).ok())
+                rebuildGhost();
             if (m_recording) {
                 m_series.truncateAfter(step);
                 if (m_series.samples().empty() || m_series.samples().back().step != step) {
@@ -348,6 +403,7 @@ bool FrogCanvas::setRecording(std::vector<InputEvent> events, long steps, QStrin
         m_series.clear();
         m_series.record(*sim());
     }
+    rebuildGhost();
     updateWork();
     m_previousValid = false;
     refreshTexts();
@@ -402,6 +458,17 @@ void FrogCanvas::refreshTexts()
                 lines << tr("The body has blown up (area error %1 %): press Reset (R), or switch to the Stable solver")
                              .arg(!std::isfinite(error) ? QStringLiteral("∞")
                                   : (error > 0 ? QStringLiteral("+") : QString()) + displayFixed(error, 0));
+        }
+        if (m_ghost) {
+            const Simulation& g = m_ghost->simulation();
+            const bool seed = g.solver() == SolverKind::Seed;
+            if (g.bodyCount() > 0)
+                lines << (seed ? tr("Dashed ghost: the seed solver fed the same mouse, area error %1 %")
+                               : tr("Dashed ghost: the stable solver fed the same mouse, area error %1 %"))
+                             .arg(num(g.readouts().areaErrorPercent, 1));
+            else
+                lines << (seed ? tr("Dashed ghost: the seed solver fed the same mouse")
+                               : tr("Dashed ghost: the stable solver fed the same mouse"));
         }
         if (m_run->playingBack())
             lines << tr("Replaying the recorded run, step %1 of %2: a press on a body takes over from there")
@@ -606,6 +673,8 @@ void FrogCanvas::render(QPainter& p, const QRectF& target)
     p.scale(s, s);
     const double pixel = 1 / s; // one widget pixel in scene pixels
     drawScene(p, pixel);
+    if (m_ghost)
+        drawGhost(p);
     drawOverlays(p, pixel);
     p.restore();
     p.setWorldTransform(base);
@@ -628,6 +697,31 @@ QRectF FrogCanvas::frameCaptionRect(const QRectF& target) const
     const double h = QFontMetricsF(m_numberFont).height() + 2, margin = 6 * m_style.scale;
     const double top = r.top() - target.top() >= h + 2 ? r.top() - h - 1 : r.top() + 1;
     return QRectF(r.left() + margin, top, r.width() - 2 * margin, h);
+}
+
+void FrogCanvas::drawGhost(QPainter& p)
+{
+    // The other solver's bodies and chains, pale and dashed over this one's: where they part
+    // is what the two solvers do differently with the same input.
+    const Simulation& g = m_ghost->simulation();
+    const double k = m_style.scale;
+    QPen pen(kGhostColour, 2.5 * k, Qt::DashLine, Qt::RoundCap, Qt::RoundJoin);
+    pen.setCosmetic(true);
+    p.save();
+    p.setPen(pen);
+    p.setBrush(QColor(255, 255, 255, 70));
+    for (int i = 0; i < g.bodyCount(); ++i) {
+        g.bodyVertices(i, m_work);
+        fillPath(m_work, true);
+        p.drawPath(m_path);
+    }
+    p.setBrush(Qt::NoBrush);
+    for (int c = 0; c < g.chainCount(); ++c) {
+        g.chainJoints(c, m_work);
+        fillPath(m_work, false);
+        p.drawPath(m_path);
+    }
+    p.restore();
 }
 
 void FrogCanvas::fillPath(const std::vector<Point>& points, bool close)
@@ -929,10 +1023,10 @@ void FrogCanvas::mousePressEvent(QMouseEvent* event)
         return;
     }
     const bool branch = m_run->playingBack();
-    m_run->move(m_mouse);
+    send(InputKind::Move, m_mouse);
     reportMouseRadius();
     m_pressed = true;
-    const bool held = m_run->press(m_mouse);
+    const bool held = send(InputKind::Press, m_mouse);
     if (branch)
         emit timelineChanged();
     if (held && sim()->grabbing())
@@ -949,7 +1043,7 @@ void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
     m_mouse = toScene(event->position());
     m_mouseKnown = true;
     if (m_pressed || !m_run->playingBack()) // hovering over a run played back changes nothing
-        m_run->move(m_mouse);
+        send(InputKind::Move, m_mouse);
     reportMouseRadius();
     if (!m_pressed && sim()->scene().has("grab")) {
         if (insideABody(m_mouse))
@@ -975,7 +1069,7 @@ void FrogCanvas::mouseReleaseEvent(QMouseEvent* event)
     if (!sim() || event->button() != Qt::LeftButton || !m_pressed)
         return;
     m_keyboardHeld = false;
-    m_run->release(); // Annex II, mouseReleased
+    send(InputKind::Release); // Annex II, mouseReleased
     m_pressed = false;
     unsetCursor();
     update();
@@ -1050,9 +1144,9 @@ bool FrogCanvas::keyboardGrab()
         return false;
     }
     const bool branch = m_run->playingBack();
-    m_run->move(m_mouse);
+    send(InputKind::Move, m_mouse);
     reportMouseRadius();
-    m_pressed = m_run->press(m_mouse);
+    m_pressed = send(InputKind::Press, m_mouse);
     m_keyboardHeld = m_pressed;
     if (branch)
         emit timelineChanged();
@@ -1066,7 +1160,7 @@ void FrogCanvas::keyboardRelease()
 {
     if (!sim() || !m_keyboardHeld)
         return;
-    m_run->release();
+    send(InputKind::Release);
     m_pressed = false;
     m_keyboardHeld = false;
     update();
@@ -1083,7 +1177,7 @@ void FrogCanvas::moveKeyboardCursor(double dx, double dy)
     const double W = sim()->scene().params.width, H = sim()->scene().params.height;
     m_mouse = {std::clamp(m_mouse.x + dx, 0.0, W - 1), std::clamp(m_mouse.y + dy, 0.0, H - 1)};
     if (m_pressed || !m_run->playingBack())
-        m_run->move(m_mouse);
+        send(InputKind::Move, m_mouse);
     reportMouseRadius();
     update();
 }
@@ -1129,7 +1223,7 @@ void FrogCanvas::keyPressEvent(QKeyEvent* event)
         m_mouseKnown = true;
     }
     const bool branch = m_run->playingBack();
-    m_run->spawn(m_mouse);
+    send(InputKind::Spawn, m_mouse);
     updateWork();
     m_spawnHeld = true;
     if (branch)
@@ -1148,7 +1242,7 @@ void FrogCanvas::keyReleaseEvent(QKeyEvent* event)
         return;
     m_spawnHeld = false;
     if (m_run)
-        m_run->releaseSpawn(); // Annex II, keyReleased(' ')
+        send(InputKind::ReleaseSpawn); // Annex II, keyReleased(' ')
     update();
 }
 
@@ -1192,7 +1286,7 @@ void FrogCanvas::focusOutEvent(QFocusEvent* event)
     update();
     // The key release would go elsewhere: let go of a frog held by the space bar now.
     if (m_spawnHeld && m_run)
-        m_run->releaseSpawn();
+        send(InputKind::ReleaseSpawn);
     m_spawnHeld = false;
     QWidget::focusOutEvent(event);
 }

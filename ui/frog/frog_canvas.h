@@ -42,10 +42,13 @@ public:
         bool velocities = false; ///< each vertex's displacement over the last step (Verlet's x − x_prev)
         bool readouts = false;   ///< the Readouts of the solver: area error, stretch, forces, energies
         bool frameTime = false;  ///< frame, step and drawing time
+        /// Both solvers at once: the other solver's run of the same scene, fed the same mouse,
+        /// drawn as a ghost over this one (docs/solvers.md#both-at-once).
+        bool ghost = false;
         bool operator==(const Overlays& o) const
         {
             return vertices == o.vertices && springs == o.springs && area == o.area && velocities == o.velocities &&
-                   readouts == o.readouts && frameTime == o.frameTime;
+                   readouts == o.readouts && frameTime == o.frameTime && ghost == o.ghost;
         }
     };
     /// §4.9/4.10: how a Bézier scene draws its body.
@@ -75,6 +78,12 @@ public:
     /// this is read-only; a seek may replace it (do not keep the pointer across one).
     const Simulation* simulation() const { return sim(); }
 
+    /// The ghost (Overlays::ghost): the other solver's simulation, at the same step, or null
+    /// (off, or a scene the other solver refuses).
+    const Simulation* ghost() const { return m_ghost ? &m_ghost->simulation() : nullptr; }
+    /// The most work (points × substeps × steps) replayed to bring a ghost turned on late up
+    /// to the run's step; past it, the ghost waits for the next Reset.
+    static constexpr long kGhostCatchUpWork = 60 * kFrameWork;
     /// Rewind (docs/rewind.md): the run as recorded, its mouse and key events with their steps.
     const RecordedRun* run() const { return m_run.get(); }
     /// The furthest step recorded (the timeline's end), 0 without a simulation.
@@ -205,6 +214,10 @@ private:
     /// Whether a press at `at` would grab: asked of a copy, so that going back in a run, a
     /// click that grabs nothing does not cut off the recorded future.
     bool wouldGrab(Point at) const;
+    /// Live input, to the run and to its ghost; a press returns whether the run grabbed.
+    bool send(InputKind kind, Point at = Point());
+    void rebuildGhost();
+    void drawGhost(QPainter& p);
     int workFramesPerStep() const; ///< ⌈work / kFrameWork⌉: how much a heavy step slows real time
     void updateTimer();
     void refreshTexts();
@@ -231,6 +244,7 @@ private:
     void fillPath(const std::vector<Point>& points, bool close);
 
     std::unique_ptr<RecordedRun> m_run;
+    std::unique_ptr<RecordedRun> m_ghost; // Overlays::ghost: the other solver, fed the same input
     FrogArt m_art;
     CanvasStyle m_style;
     Overlays m_overlays;

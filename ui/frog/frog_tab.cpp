@@ -206,10 +206,10 @@ FrogTab::FrogTab(QWidget* parent)
     m_showVelocities = new QCheckBox(m_overlayBox);
     m_showReadouts = new QCheckBox(m_overlayBox);
     m_showFrameTime = new QCheckBox(m_overlayBox);
-    const QCheckBox* boxes[] = {m_showVertices, m_showSprings, m_showArea, m_showVelocities, m_showReadouts, m_showFrameTime};
+    m_showGhost = new QCheckBox(m_overlayBox);
+    const OverlayBoxes boxes = overlayBoxes();
     int i = 0;
-    for (const QCheckBox* c : boxes) {
-        auto* box = const_cast<QCheckBox*>(c);
+    for (QCheckBox* box : boxes) {
         box->setObjectName(QStringLiteral("frogOverlay%1").arg(i));
         overlayGrid->addWidget(box, i / 2, i % 2);
         connect(box, &QCheckBox::toggled, this, &FrogTab::overlaysChanged);
@@ -601,15 +601,23 @@ void FrogTab::stepOnce()
     m_canvas->step();
 }
 
+FrogTab::OverlayBoxes FrogTab::overlayBoxes() const
+{
+    return {m_showVertices, m_showSprings, m_showArea, m_showVelocities, m_showReadouts, m_showFrameTime, m_showGhost};
+}
+
 FrogTab::OverlayFlags FrogTab::overlayFlags() const
 {
-    return {m_showVertices->isChecked(), m_showSprings->isChecked(),    m_showArea->isChecked(),
-            m_showVelocities->isChecked(), m_showReadouts->isChecked(), m_showFrameTime->isChecked()};
+    OverlayFlags flags{};
+    const OverlayBoxes boxes = overlayBoxes();
+    for (std::size_t i = 0; i < flags.size(); ++i)
+        flags[i] = boxes[i]->isChecked();
+    return flags;
 }
 
 void FrogTab::applyOverlayFlags(const OverlayFlags& flags)
 {
-    QCheckBox* boxes[] = {m_showVertices, m_showSprings, m_showArea, m_showVelocities, m_showReadouts, m_showFrameTime};
+    const OverlayBoxes boxes = overlayBoxes();
     for (std::size_t i = 0; i < flags.size(); ++i) {
         const QSignalBlocker block(boxes[i]);
         boxes[i]->setChecked(flags[i]);
@@ -621,6 +629,7 @@ void FrogTab::applyOverlayFlags(const OverlayFlags& flags)
     o.velocities = m_showVelocities->isChecked();
     o.readouts = m_showReadouts->isChecked();
     o.frameTime = m_showFrameTime->isChecked();
+    o.ghost = m_showGhost->isChecked();
     m_canvas->setOverlays(o);
     emit documentChanged();
 }
@@ -629,7 +638,7 @@ void FrogTab::overlaysChanged()
 {
     auto* box = qobject_cast<QCheckBox*>(sender());
     OverlayFlags before = overlayFlags();
-    QCheckBox* boxes[] = {m_showVertices, m_showSprings, m_showArea, m_showVelocities, m_showReadouts, m_showFrameTime};
+    const OverlayBoxes boxes = overlayBoxes();
     for (std::size_t i = 0; i < before.size(); ++i)
         if (boxes[i] == box)
             before[i] = !before[i]; // the box has toggled already
@@ -771,6 +780,10 @@ void FrogTab::retranslate()
     m_showReadouts->setText(tr("Readouts"));
     m_showReadouts->setToolTip(tr("What the solver measures: area error, largest stretch of an edge, largest "
                                   "correction or constraint force, kinetic and potential energy."));
+    m_showGhost->setText(tr("Ghost of the other solver"));
+    m_showGhost->setToolTip(tr("Both solvers at once: the other solver runs the same scene, fed the same mouse, and "
+                               "is drawn dashed over this one (the seed's frog sits about 17 % short of its area, "
+                               "the stable one holds it)."));
     m_showFrameTime->setText(tr("Frame time"));
     m_showFrameTime->setToolTip(tr("Time per frame and per simulation step, in milliseconds, averaged a few times a "
                                    "second."));
@@ -921,6 +934,7 @@ QJsonObject FrogTab::saveState() const
     overlays.insert(QStringLiteral("velocities"), o.velocities);
     overlays.insert(QStringLiteral("readouts"), o.readouts);
     overlays.insert(QStringLiteral("frame_time"), o.frameTime);
+    overlays.insert(QStringLiteral("ghost"), o.ghost);
     state.insert(QStringLiteral("overlays"), overlays);
     state.insert(QStringLiteral("bezier_outline"), m_fit->isChecked() ? QStringLiteral("fit") : QStringLiteral("precomputed"));
     state.insert(QStringLiteral("paused"), !m_canvas->running());
@@ -1002,7 +1016,8 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
         const QJsonObject o = v.toObject();
         const std::pair<const char*, bool*> flags[] = {
             {"vertices", &overlays.vertices}, {"springs", &overlays.springs},       {"area", &overlays.area},
-            {"velocities", &overlays.velocities}, {"readouts", &overlays.readouts}, {"frame_time", &overlays.frameTime}};
+            {"velocities", &overlays.velocities}, {"readouts", &overlays.readouts}, {"frame_time", &overlays.frameTime},
+            {"ghost", &overlays.ghost}};
         for (const auto& [key, flag] : flags) {
             const QJsonValue f = o.value(QLatin1String(key));
             if (f.isUndefined())
@@ -1099,12 +1114,12 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
     setSpeed(speed);
     // Everything is valid: show it.
     {
-        const QCheckBox* boxes[] = {m_showVertices, m_showSprings, m_showArea, m_showVelocities, m_showReadouts, m_showFrameTime};
-        const bool values[] = {overlays.vertices, overlays.springs, overlays.area, overlays.velocities, overlays.readouts, overlays.frameTime};
-        for (int i = 0; i < 6; ++i) {
-            auto* box = const_cast<QCheckBox*>(boxes[i]);
-            const QSignalBlocker block(box);
-            box->setChecked(values[i]);
+        const OverlayBoxes boxes = overlayBoxes();
+        const OverlayFlags values = {overlays.vertices,   overlays.springs,  overlays.area,
+                                     overlays.velocities, overlays.readouts, overlays.frameTime, overlays.ghost};
+        for (std::size_t i = 0; i < values.size(); ++i) {
+            const QSignalBlocker block(boxes[i]);
+            boxes[i]->setChecked(values[i]);
         }
         m_canvas->setOverlays(overlays);
         const QSignalBlocker b1(m_fit), b2(m_precomputed);

@@ -103,7 +103,9 @@ private:
     /// The scene `name` on the current solver (or the stable one, for collisions).
     bool switchScene(const QString& name, QString* error);
     /// The overlay boxes' states as an undo step restores them.
-    using OverlayFlags = std::array<bool, 6>;
+    using OverlayFlags = std::array<bool, 7>;
+    using OverlayBoxes = std::array<QCheckBox*, 7>;
+    OverlayBoxes overlayBoxes() const; ///< in OverlayFlags' order
     OverlayFlags overlayFlags() const;
     void applyOverlayFlags(const OverlayFlags& flags);
     void setPaused(bool paused);
@@ -145,7 +147,8 @@ private:
     int m_timelineDigits = -1; ///< digits of the recorded steps the label's width was set for
     QPushButton *m_pause, *m_step, *m_reset;
     QRadioButton *m_precomputed, *m_fit;
-    QCheckBox *m_showVertices, *m_showSprings, *m_showArea, *m_showVelocities, *m_showReadouts, *m_showFrameTime;
+    QCheckBox *m_showVertices, *m_showSprings, *m_showArea, *m_showVelocities, *m_showReadouts, *m_showFrameTime,
+        *m_showGhost;
 };
 
 } // namespace granota::ui
