@@ -186,16 +186,18 @@ public:
         Readouts r;
         for (int i = 0; i < bodyCount(); ++i) {
             r.areaErrorPercent += m_world.areaErrorPercent(i) / bodyCount();
-            r.maxStretch = std::max(r.maxStretch, m_world.maxEdgeStretch(i));
-            r.constraintForce = std::max({r.constraintForce, std::abs(m_world.areaPressure(i)), m_world.maxEdgeTension(i)});
+            const XpbdWorld::EdgeExtremes edges = m_world.edgeExtremes(i);
+            r.maxStretch = std::max(r.maxStretch, edges.stretch);
+            r.constraintForce = std::max({r.constraintForce, std::abs(m_world.areaPressure(i)), edges.tension});
         }
         for (int c = 0; c < chainCount(); ++c)
             r.constraintForce = std::max(r.constraintForce, m_world.angleLimitTorque(c));
-        r.kineticEnergy = m_world.kineticEnergy();
+        const XpbdWorld::MotionEnergies motion = m_world.motionEnergies();
+        r.kineticEnergy = motion.kinetic;
         // Σ m g·(e − x) = Σ m g·e − Σ m g·x, with the masses the kinetic energy counts.
         const Point g = m_world.params().gravity;
         const Point e = potentialOrigin(g, scene().params.width, scene().params.height);
-        r.potentialEnergy = m_world.gravityEnergy() + m_world.movingMass() * dot(g, e);
+        r.potentialEnergy = motion.gravity + motion.movingMass * dot(g, e);
         r.elasticEnergy = m_world.elasticEnergy();
         r.dampingLoss = m_world.dampingLoss();
         r.contacts = m_world.contactCount();

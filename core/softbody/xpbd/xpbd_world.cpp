@@ -858,16 +858,25 @@ double XpbdWorld::areaErrorPercent(int body) const
     return 100 * (area(body) - target) / std::max(target, 1.0);
 }
 
-double XpbdWorld::maxEdgeStretch(int body) const
+double XpbdWorld::maxEdgeStretch(int body) const { return edgeExtremes(body).stretch; }
+
+XpbdWorld::EdgeExtremes XpbdWorld::edgeExtremes(int body) const
 {
+    const double h = m_params.dt / m_params.substeps;
+    const double invH2 = 1 / (h * h);
     const Body& b = m_bodies[at(body)];
-    double worst = 0;
+    EdgeExtremes x;
     for (int k = 0; k < b.count; ++k) {
         const DistanceConstraint& e = m_edges[at(b.firstEdge + k)];
-        const double len = distance(m_x[at(e.a)], m_x[at(e.b)]);
-        worst = std::max(worst, std::abs(len - e.rest) / std::max(e.rest, 1.0));
+        const Point d = m_x[at(e.b)] - m_x[at(e.a)];
+        // √(dx² + dy²), not hypot: a readout of every step (the plots over time), where
+        // hypot's care for overflow took half the time of all the readouts; positions stay
+        // inside the frame, far from overflow.
+        const double len = std::sqrt(d.x * d.x + d.y * d.y);
+        x.stretch = std::max(x.stretch, std::abs(len - e.rest) / std::max(e.rest, 1.0));
+        x.tension = std::max(x.tension, -e.lambda * invH2);
     }
-    return worst;
+    return x;
 }
 
 double XpbdWorld::areaPressure(int body) const
@@ -876,15 +885,7 @@ double XpbdWorld::areaPressure(int body) const
     return m_bodies[at(body)].areaLambda / (h * h);
 }
 
-double XpbdWorld::maxEdgeTension(int body) const
-{
-    const double h = m_params.dt / m_params.substeps;
-    const Body& b = m_bodies[at(body)];
-    double worst = 0;
-    for (int k = 0; k < b.count; ++k)
-        worst = std::max(worst, -m_edges[at(b.firstEdge + k)].lambda / (h * h));
-    return worst;
-}
+double XpbdWorld::maxEdgeTension(int body) const { return edgeExtremes(body).tension; }
 
 double XpbdWorld::angleLimitTorque(int chain) const
 {
@@ -927,6 +928,21 @@ double XpbdWorld::kineticEnergy() const
     for (std::size_t i = 0; i < m_x.size(); ++i)
         if (m_w[i] > 0)
             e += 0.5 * dot(m_v[i], m_v[i]) / m_w[i];
+    return e;
+}
+
+XpbdWorld::MotionEnergies XpbdWorld::motionEnergies() const
+{
+    MotionEnergies e;
+    const Point g = m_params.gravity;
+    for (std::size_t i = 0; i < m_x.size(); ++i) {
+        if (!(m_w[i] > 0))
+            continue;
+        const double m = 1 / m_w[i];
+        e.kinetic += 0.5 * dot(m_v[i], m_v[i]) * m;
+        e.gravity -= dot(g, m_x[i]) * m;
+        e.movingMass += m;
+    }
     return e;
 }
 
