@@ -618,6 +618,27 @@ private slots:
         timeline->setValue(200);
         QCOMPARE(row(), rows[200]);
 
+        // The stopwatch: M marks the step shown, and the label counts from it both ways.
+        timeline->setValue(60);
+        canvas->setFocus();
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_M);
+        QCOMPARE(tab().markedStep(), 60L);
+        QVERIFY(tab().findChild<QPushButton*>("frogStopwatch")->isChecked());
+        timeline->setValue(150);
+        QVERIFY2(label->text().contains("1.50 s (90 steps) since step 60"), qPrintable(label->text()));
+        timeline->setValue(30);
+        QVERIFY2(label->text().contains("0.50 s (30 steps) before step 60"), qPrintable(label->text()));
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_M);
+        QCOMPARE(tab().markedStep(), -1L);
+        QVERIFY(!label->text().contains("since"));
+        QTest::keyClick(QApplication::focusWidget(), Qt::Key_M); // marked at 30, then a Reset clears it
+        QCOMPARE(tab().markedStep(), 30L);
+        const QJsonObject marked = tab().saveState();
+        QVERIFY(!marked.contains("mark")); // a measuring tool, not part of the document
+        tab().reset();
+        QCOMPARE(tab().markedStep(), -1L);
+        QVERIFY(tab().loadState(saved, nullptr));
+
         // A press on the body branches: the future after it is gone.
         timeline->setValue(150);
         const QPoint body = canvas->toWidget(centroid(*canvas->simulation())).toPoint();

@@ -2542,6 +2542,32 @@ a cada canvi alentiria la finestra.</translation>
     <context>
         <name>granota::ui::FrogTab</name>
         <message>
+            <source>Stopwatch: marked step %1; M again clears the mark.</source>
+            <translation>Cronòmetre: s'ha marcat el pas %1; M de nou esborra la marca.</translation>
+        </message>
+        <message>
+            <source>Marks the step shown; the label then counts the steps and seconds since it, as the run goes on or the timeline moves (M). Again: clears the mark.</source>
+            <translation>Marca el pas que es mostra; l'etiqueta compta llavors els passos i els segons des d'aquest, mentre l'execució continua o la línia de temps es mou (M). Un altre cop: esborra la marca.</translation>
+        </message>
+        <message>
+            <source>Stopwatch</source>
+            <translation>Cronòmetre</translation>
+        </message>
+        <message numerus="yes">
+            <source>%1 s (%n steps) before step %2</source>
+            <translation>
+                <numerusform>%1 s (%n pas) abans del pas %2</numerusform>
+                <numerusform>%1 s (%n passos) abans del pas %2</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%1 s (%n steps) since step %2</source>
+            <translation>
+                <numerusform>%1 s (%n pas) des del pas %2</numerusform>
+                <numerusform>%1 s (%n passos) des del pas %2</numerusform>
+            </translation>
+        </message>
+        <message>
             <source>Both solvers at once: the other solver runs the same scene, fed the same mouse, and is drawn dashed over this one (the seed's frog sits about 17 % short of its area, the stable one holds it).</source>
             <translation>Els dos mètodes alhora: l'altre mètode executa la mateixa escena, amb el mateix ratolí, i es dibuixa amb traç discontinu sobre aquest (la granota de la llavor queda un 17 % per sota de la seva àrea; l'estable la manté).</translation>
         </message>
@@ -4207,8 +4233,16 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
     <context>
         <name>granota::ui::ShortcutsHelp</name>
         <message>
-            <source>Frog tab (P, S, the comma and the period, R, [ and ] whenever the tab is shown, unless a field is being typed in)</source>
-            <translation>Pestanya Granota (P, S, la coma i el punt, R, [ i ] sempre que es mostra la pestanya, tret que s'estigui escrivint en un camp)</translation>
+            <source>Frog tab (P, S, the comma and the period, R, M, [ and ] whenever the tab is shown, unless a field is being typed in)</source>
+            <translation>Pestanya Granota (P, S, la coma i el punt, R, M, [ i ] sempre que es mostra la pestanya, tret que s'estigui escrivint en un camp)</translation>
+        </message>
+        <message>
+            <source>Stopwatch: mark the step shown, or clear the mark</source>
+            <translation>Cronòmetre: marca el pas que es mostra, o esborra la marca</translation>
+        </message>
+        <message>
+            <source>M</source>
+            <translation>M</translation>
         </message>
         <message>
             <source>One step back in the recorded run (pausing first)</source>

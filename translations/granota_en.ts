@@ -2542,6 +2542,32 @@ on each change would slow the window.</translation>
     <context>
         <name>granota::ui::FrogTab</name>
         <message>
+            <source>Stopwatch: marked step %1; M again clears the mark.</source>
+            <translation>Stopwatch: marked step %1; M again clears the mark.</translation>
+        </message>
+        <message>
+            <source>Marks the step shown; the label then counts the steps and seconds since it, as the run goes on or the timeline moves (M). Again: clears the mark.</source>
+            <translation>Marks the step shown; the label then counts the steps and seconds since it, as the run goes on or the timeline moves (M). Again: clears the mark.</translation>
+        </message>
+        <message>
+            <source>Stopwatch</source>
+            <translation>Stopwatch</translation>
+        </message>
+        <message numerus="yes">
+            <source>%1 s (%n steps) before step %2</source>
+            <translation>
+                <numerusform>%1 s (%n step) before step %2</numerusform>
+                <numerusform>%1 s (%n steps) before step %2</numerusform>
+            </translation>
+        </message>
+        <message numerus="yes">
+            <source>%1 s (%n steps) since step %2</source>
+            <translation>
+                <numerusform>%1 s (%n step) since step %2</numerusform>
+                <numerusform>%1 s (%n steps) since step %2</numerusform>
+            </translation>
+        </message>
+        <message>
             <source>Both solvers at once: the other solver runs the same scene, fed the same mouse, and is drawn dashed over this one (the seed's frog sits about 17 % short of its area, the stable one holds it).</source>
             <translation>Both solvers at once: the other solver runs the same scene, fed the same mouse, and is drawn dashed over this one (the seed's frog sits about 17 % short of its area, the stable one holds it).</translation>
         </message>
@@ -4207,8 +4233,16 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
     <context>
         <name>granota::ui::ShortcutsHelp</name>
         <message>
-            <source>Frog tab (P, S, the comma and the period, R, [ and ] whenever the tab is shown, unless a field is being typed in)</source>
-            <translation>Frog tab (P, S, the comma and the period, R, [ and ] whenever the tab is shown, unless a field is being typed in)</translation>
+            <source>Frog tab (P, S, the comma and the period, R, M, [ and ] whenever the tab is shown, unless a field is being typed in)</source>
+            <translation>Frog tab (P, S, the comma and the period, R, M, [ and ] whenever the tab is shown, unless a field is being typed in)</translation>
+        </message>
+        <message>
+            <source>Stopwatch: mark the step shown, or clear the mark</source>
+            <translation>Stopwatch: mark the step shown, or clear the mark</translation>
+        </message>
+        <message>
+            <source>M</source>
+            <translation>M</translation>
         </message>
         <message>
             <source>One step back in the recorded run (pausing first)</source>

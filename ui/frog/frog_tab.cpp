@@ -271,8 +271,13 @@ FrogTab::FrogTab(QWidget* parent)
     m_timelineLabel = new QLabel(stage);
     m_timelineLabel->setObjectName(QStringLiteral("frogTimelineLabel"));
     m_timelineLabel->setBuddy(m_timeline);
+    m_markButton = new QPushButton(stage);
+    m_markButton->setObjectName(QStringLiteral("frogStopwatch"));
+    m_markButton->setCheckable(true);
+    m_markButton->setFocusPolicy(Qt::TabFocus);
     timelineRow->addWidget(m_timeline, 1);
     timelineRow->addWidget(m_timelineLabel);
+    timelineRow->addWidget(m_markButton);
     stageLayout->addLayout(timelineRow);
     m_plots = new FrogPlotPanel(this);
     m_plots->hide();
@@ -334,6 +339,7 @@ FrogTab::FrogTab(QWidget* parent)
         solverChosen(stable); // as the solver box does it: one undo step
     });
     connect(m_timeline, &QSlider::valueChanged, this, &FrogTab::timelineMoved);
+    connect(m_markButton, &QPushButton::clicked, this, &FrogTab::toggleMark);
     connect(m_canvas, &FrogCanvas::mouseRadiusChanged, this, [this](double radius) {
         // §4.1: the mouse sets the radius; the field shows it (no undo step, nothing rebuilt).
         if (!m_scene.hasParam("radius") || m_scene.params.radius == radius)
@@ -361,6 +367,7 @@ FrogTab::FrogTab(QWidget* parent)
     shortcut(QKeySequence(Qt::Key_S), [this] { stepOnce(); });
     shortcut(QKeySequence(Qt::Key_Period), [this] { stepOnce(); });
     shortcut(QKeySequence(Qt::Key_Comma), [this] { stepBack(); });
+    shortcut(QKeySequence(Qt::Key_M), [this] { toggleMark(); });
     shortcut(QKeySequence(Qt::Key_R), [this] { reset(); });
     // Slower and faster: the speed box's neighbours.
     const auto nudgeSpeed = [this](int by) {
@@ -388,9 +395,11 @@ bool FrogTab::rebuild(const SceneSpec& scene, SolverKind solver, QString* error)
     }
     m_scene = scene;
     m_solver = solver;
+    m_mark = -1; // a new run: the stopwatch's mark was of the old one
     m_canvas->setSimulation(std::move(sim).value());
     if (m_plots)
         m_plots->refresh(true); // a new run: a new series
+    updateTimeline();
     return true;
 }
 
@@ -740,6 +749,9 @@ void FrogTab::retranslate()
     m_explosionStable->setText(tr("Use the Stable solver"));
     m_explosionStable->setToolTip(tr("The same scene and values on the stable solver (XPBD), which holds them."));
     m_timelineDigits = -1; // the label's width, for this language's text
+    m_markButton->setText(tr("Stopwatch"));
+    m_markButton->setToolTip(tr("Marks the step shown; the label then counts the steps and seconds since it, as the "
+                                "run goes on or the timeline moves (M). Again: clears the mark."));
     updateTimeline();
     m_reset->setText(tr("Reset"));
     m_reset->setToolTip(tr("Start the scene again with the current parameters (R)."));
@@ -812,8 +824,23 @@ void FrogTab::updateTimeline()
         if (!m_timeline->isSliderDown())
             m_timeline->setValue(int(std::min<long>(now, top)));
     }
+    if (m_mark > end) // the run was cut off before the mark
+        m_mark = -1;
+    if (m_markButton->isChecked() != (m_mark >= 0)) {
+        const QSignalBlocker block(m_markButton);
+        m_markButton->setChecked(m_mark >= 0);
+    }
     const QString text = tr("Step %1 of %2 · %3 s");
-    m_timelineLabel->setText(text.arg(now).arg(end).arg(displayFixed(double(now) / kStepsPerSecond, 2)));
+    QString shown = text.arg(now).arg(end).arg(displayFixed(double(now) / kStepsPerSecond, 2));
+    if (m_mark >= 0) {
+        const long since = now - m_mark, steps = std::labs(since);
+        const QString seconds = displayFixed(double(steps) / kStepsPerSecond, 2);
+        shown += QLatin1Char('\n') + (since >= 0 ? tr("%1 s (%n steps) since step %2", "", int(steps))
+                                                  : tr("%1 s (%n steps) before step %2", "", int(steps)))
+                                         .arg(seconds)
+                                         .arg(m_mark);
+    }
+    m_timelineLabel->setText(shown);
     // As wide as the widest text with this many digits, so that the slider does not jitter.
     const int digits = int(QString::number(end).size());
     if (digits == m_timelineDigits)
@@ -893,6 +920,15 @@ void FrogTab::timelineMoved(int step)
         m_pause->setChecked(true);
     m_canvas->seek(step);
     m_plots->refresh(true);
+}
+
+void FrogTab::toggleMark()
+{
+    const Simulation* sim = m_canvas->simulation();
+    m_mark = m_mark >= 0 || !sim ? -1 : sim->stepCount();
+    if (m_mark >= 0)
+        emit statusMessage(tr("Stopwatch: marked step %1; M again clears the mark.").arg(m_mark));
+    updateTimeline();
 }
 
 void FrogTab::stepBack()

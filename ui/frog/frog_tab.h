@@ -70,6 +70,10 @@ public:
     /// recorded. Moving it pauses and goes to that step; "," steps back one step.
     QSlider* timeline() const { return m_timeline; }
     void stepBack();
+    /// The stopwatch (docs/tabs.md): marks the step shown (M), or clears the mark; the
+    /// timeline's label then says the steps and seconds since the mark. -1: no mark.
+    void toggleMark();
+    long markedStep() const { return m_mark; }
     /// A document's run is replayed up to its saved step on load when that is at most this
     /// much work (Simulation::workPerStep × steps: about two seconds); past it, the run
     /// loads at step 0 and the tab says so.
@@ -145,6 +149,8 @@ private:
     QSlider* m_timeline = nullptr;
     QLabel* m_timelineLabel = nullptr;
     int m_timelineDigits = -1; ///< digits of the recorded steps the label's width was set for
+    QPushButton* m_markButton = nullptr;
+    long m_mark = -1;
     QPushButton *m_pause, *m_step, *m_reset;
     QRadioButton *m_precomputed, *m_fit;
     QCheckBox *m_showVertices, *m_showSprings, *m_showArea, *m_showVelocities, *m_showReadouts, *m_showFrameTime,

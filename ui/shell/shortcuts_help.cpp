@@ -40,13 +40,14 @@ QString ShortcutsHelp::html(const QList<QAction*>& actions)
                          + row(tr("S or ."), tr("One step (pausing first)"))
                          + row(tr(","), tr("One step back in the recorded run (pausing first)"))
                          + row(tr("R"), tr("Reset the scene"))
+                         + row(tr("M"), tr("Stopwatch: mark the step shown, or clear the mark"))
                          + row(tr("[ and ]"), tr("Slower and faster (⅛× to 4×)"))
                          + row(tr("Arrows (Shift: five times further)"), tr("On the canvas: move the keyboard cursor, and what it holds"))
                          + row(tr("G or Enter"), tr("On the canvas: grab the body at the cursor (or the nearest one), again to let go"))
                          + row(tr("Esc"), tr("On the canvas: let go"))
                          + row(tr("Space"), tr("On the canvas: a new body at the cursor, held until released"));
     return table(tr("The window"), window) + table(tr("De Casteljau, Fitting and Catmull-Rom canvases"), curves)
-           + table(tr("Frog tab (P, S, the comma and the period, R, [ and ] whenever the tab is shown, unless a field is being typed in)"), frog);
+           + table(tr("Frog tab (P, S, the comma and the period, R, M, [ and ] whenever the tab is shown, unless a field is being typed in)"), frog);
 }
 
 } // namespace granota::ui
