@@ -469,6 +469,47 @@ private slots:
         QCOMPARE(canvas->ghost()->chainCount(), canvas->simulation()->chainCount());
     }
 
+    // Issue 16: the trail of a chosen point. By default the pendulum's tip; Shift+click picks
+    // another without grabbing; it keeps the last 10 s, and a seek starts it again.
+    void trailFollowsTheChosenPoint()
+    {
+        QVERIFY(tab().setScene("pendulum-limits", nullptr));
+        tab().findChild<QPushButton*>("frogPause")->setChecked(true);
+        FrogCanvas* canvas = tab().canvas();
+        auto* trailBox = tab().findChild<QCheckBox*>("frogOverlay7");
+        QVERIFY(trailBox);
+        trailBox->click();
+        QVERIFY(canvas->overlays().trail);
+        std::vector<Point> joints;
+        canvas->simulation()->chainJoints(0, joints);
+        QVERIFY(canvas->trailPoint().joint);
+        QCOMPARE(canvas->trailPoint().index, int(joints.size()) - 1);
+        steps(tab(), 100);
+        QCOMPARE(canvas->trail().size(), std::size_t(101));
+        canvas->simulation()->chainJoints(0, joints);
+        QCOMPARE(canvas->trail().back(), joints.back());
+        // Shift+click on the frog's body picks its vertex and grabs nothing.
+        QVERIFY(tab().setScene("frog", nullptr));
+        QVERIFY(!canvas->trailPoint().joint); // the frog's default: vertex 0 of body 0
+        steps(tab(), 40);
+        std::vector<Point> body;
+        canvas->simulation()->bodyVertices(0, body);
+        QTest::mouseClick(canvas, Qt::LeftButton, Qt::ShiftModifier, canvas->toWidget(body[3]).toPoint());
+        QVERIFY(!canvas->simulation()->grabbing());
+        QCOMPARE(canvas->trailPoint().index, 3);
+        QCOMPARE(canvas->trail().size(), std::size_t(1));
+        QVERIFY(canvas->run()->recording().events.empty()); // nothing recorded
+        steps(tab(), 700);
+        QCOMPARE(canvas->trail().size(), std::size_t(FrogCanvas::kTrailSteps));
+        canvas->simulation()->bodyVertices(0, body);
+        QCOMPARE(canvas->trail().back(), body[3]);
+        QVERIFY(canvas->textLines().join('\n').contains("Trail of vertex 3 of body 1"));
+        tab().timeline()->setValue(300);
+        QCOMPARE(canvas->trail().size(), std::size_t(1));
+        trailBox->click();
+        QVERIFY(!canvas->overlays().trail);
+    }
+
     // Issue 16: the stable solver's knobs, shown while it runs: substeps and the edges'
     // compliance rebuild the scene with them, as one undo step a knob, and the document
     // keeps them; the seed's box is hidden, and the knobs stay when the stage changes.

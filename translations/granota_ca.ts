@@ -2116,6 +2116,18 @@ a cada canvi alentiria la finestra.</translation>
     <context>
         <name>granota::ui::FrogCanvas</name>
         <message>
+            <source>Shift+click on a vertex or a joint to follow it with the trail.</source>
+            <translation>Maj+clic sobre un vèrtex o una articulació per seguir-lo amb la traça.</translation>
+        </message>
+        <message>
+            <source>Trail of vertex %1 of body %2 (Shift+click a point to follow another)</source>
+            <translation>Traça del vèrtex %1 del cos %2 (Maj+clic sobre un punt per seguir-ne un altre)</translation>
+        </message>
+        <message>
+            <source>Trail of joint %1 of chain %2 (Shift+click a point to follow another)</source>
+            <translation>Traça de l'articulació %1 de la cadena %2 (Maj+clic sobre un punt per seguir-ne un altre)</translation>
+        </message>
+        <message>
             <source>The ghost starts with the next Reset: the run so far is too long to replay for it.</source>
             <translation>El fantasma començarà amb el proper reinici: l'execució fins ara és massa llarga per reproduir-la.</translation>
         </message>
@@ -2541,6 +2553,14 @@ a cada canvi alentiria la finestra.</translation>
     </context>
     <context>
         <name>granota::ui::FrogTab</name>
+        <message>
+            <source>The path of one point over the last 10 s: the pendulum's tip or the first body's vertex 0; Shift+click on a vertex or a joint to follow it.</source>
+            <translation>El camí d'un punt durant els darrers 10 s: la punta del pèndol o el vèrtex 0 del primer cos; Maj+clic sobre un vèrtex o una articulació per seguir-lo.</translation>
+        </message>
+        <message>
+            <source>Trail</source>
+            <translation>Traça</translation>
+        </message>
         <message>
             <source>Stopwatch: marked step %1; M again clears the mark.</source>
             <translation>Cronòmetre: s'ha marcat el pas %1; M de nou esborra la marca.</translation>

@@ -2116,6 +2116,18 @@ on each change would slow the window.</translation>
     <context>
         <name>granota::ui::FrogCanvas</name>
         <message>
+            <source>Shift+click on a vertex or a joint to follow it with the trail.</source>
+            <translation>Shift+click on a vertex or a joint to follow it with the trail.</translation>
+        </message>
+        <message>
+            <source>Trail of vertex %1 of body %2 (Shift+click a point to follow another)</source>
+            <translation>Trail of vertex %1 of body %2 (Shift+click a point to follow another)</translation>
+        </message>
+        <message>
+            <source>Trail of joint %1 of chain %2 (Shift+click a point to follow another)</source>
+            <translation>Trail of joint %1 of chain %2 (Shift+click a point to follow another)</translation>
+        </message>
+        <message>
             <source>The ghost starts with the next Reset: the run so far is too long to replay for it.</source>
             <translation>The ghost starts with the next Reset: the run so far is too long to replay for it.</translation>
         </message>
@@ -2541,6 +2553,14 @@ on each change would slow the window.</translation>
     </context>
     <context>
         <name>granota::ui::FrogTab</name>
+        <message>
+            <source>The path of one point over the last 10 s: the pendulum's tip or the first body's vertex 0; Shift+click on a vertex or a joint to follow it.</source>
+            <translation>The path of one point over the last 10 s: the pendulum's tip or the first body's vertex 0; Shift+click on a vertex or a joint to follow it.</translation>
+        </message>
+        <message>
+            <source>Trail</source>
+            <translation>Trail</translation>
+        </message>
         <message>
             <source>Stopwatch: marked step %1; M again clears the mark.</source>
             <translation>Stopwatch: marked step %1; M again clears the mark.</translation>

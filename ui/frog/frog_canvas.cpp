@@ -44,6 +44,7 @@ const QColor kMudBottom(0x86, 0x6a, 0x44); // FrogArt's bank, bottom
 const QColor kEdgeColour(0xff, 0x8a, 0x1e);
 const QColor kVelocityColour(0x1f, 0x5f, 0xd8);
 const QColor kGhostColour(0x5a, 0x2d, 0x82);
+const QColor kTrailColour(0xe0, 0x6c, 0x00);
 
 /// Samples per Catmull-Rom segment: smooth for the seed's 10 vertices, few for 200.
 int samplesPerSegment(std::size_t vertices)
@@ -83,6 +84,11 @@ void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
     }
     rebuildGhost();
     updateWork();
+    if (sim() && sim()->scene().name != m_trailScene) { // another stage: its own default point
+        m_trailScene = sim()->scene().name;
+        m_trailPoint.index = -1;
+    }
+    restartTrail();
     m_frameCount = 0;
     m_pacer.restart();
     m_series.clear();
@@ -126,12 +132,14 @@ void FrogCanvas::step()
 
 void FrogCanvas::setOverlays(const Overlays& overlays)
 {
-    const bool ghostChanged = overlays.ghost != m_overlays.ghost;
+    const bool ghostChanged = overlays.ghost != m_overlays.ghost, trailChanged = overlays.trail != m_overlays.trail;
     m_overlays = overlays;
     if (ghostChanged) {
         rebuildGhost();
         updateWork();
     }
+    if (trailChanged)
+        restartTrail();
     if (!overlays.velocities)
         m_previousValid = false;
     refreshTexts();
@@ -291,9 +299,92 @@ void FrogCanvas::advance()
         updateWork();
     if (m_recording)
         m_series.record(*sim());
+    if (m_overlays.trail)
+        if (const auto at = trailPosition()) {
+            m_trail.push_back(*at);
+            while (m_trail.size() > std::size_t(kTrailSteps))
+                m_trail.pop_front();
+        }
     m_stepNsSum += double(m_clock.nsecsElapsed() - t0);
     ++m_steps;
     emit timelineChanged();
+}
+
+void FrogCanvas::restartTrail()
+{
+    m_trail.clear();
+    const Simulation* s = sim();
+    if (s && !trailPosition()) { // none chosen in this scene: the pendulum's tip, else the first body's vertex 0
+        m_trailPoint = TrailPoint{};
+        if (s->bodyCount() == 0 && s->chainCount() > 0) {
+            s->chainJoints(0, m_work);
+            m_trailPoint = {true, 0, std::max(0, int(m_work.size()) - 1)};
+        }
+    }
+    if (m_overlays.trail)
+        if (const auto at = trailPosition())
+            m_trail.push_back(*at);
+}
+
+std::optional<Point> FrogCanvas::trailPosition() const
+{
+    const Simulation* s = sim();
+    if (!s)
+        return std::nullopt;
+    std::vector<Point> points;
+    if (m_trailPoint.joint && m_trailPoint.owner < s->chainCount())
+        s->chainJoints(m_trailPoint.owner, points);
+    else if (!m_trailPoint.joint && m_trailPoint.owner < s->bodyCount())
+        s->bodyVertices(m_trailPoint.owner, points);
+    if (m_trailPoint.index < 0 || m_trailPoint.index >= int(points.size()))
+        return std::nullopt;
+    return points[std::size_t(m_trailPoint.index)];
+}
+
+bool FrogCanvas::chooseTrailPoint(Point at)
+{
+    const Simulation* s = sim();
+    if (!s)
+        return false;
+    double best = 30;
+    std::optional<TrailPoint> chosen;
+    const auto consider = [&](bool joint, int owner) {
+        for (std::size_t k = 0; k < m_work.size(); ++k)
+            if (const double d = std::hypot(m_work[k].x - at.x, m_work[k].y - at.y); d <= best) {
+                best = d;
+                chosen = TrailPoint{joint, owner, int(k)};
+            }
+    };
+    for (int i = 0; i < s->bodyCount(); ++i) {
+        s->bodyVertices(i, m_work);
+        consider(false, i);
+    }
+    for (int c = 0; c < s->chainCount(); ++c) {
+        s->chainJoints(c, m_work);
+        consider(true, c);
+    }
+    if (!chosen)
+        return false;
+    m_trailPoint = *chosen;
+    restartTrail();
+    refreshTexts();
+    update();
+    return true;
+}
+
+void FrogCanvas::drawTrail(QPainter& p)
+{
+    if (m_trail.size() < 2)
+        return;
+    QPen pen(kTrailColour, 2 * m_style.scale, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin);
+    pen.setCosmetic(true);
+    m_work.assign(m_trail.begin(), m_trail.end());
+    fillPath(m_work, false);
+    p.save();
+    p.setPen(pen);
+    p.setBrush(Qt::NoBrush);
+    p.drawPath(m_path);
+    p.restore();
 }
 
 bool FrogCanvas::send(InputKind kind, Point at)
@@ -377,6 +468,7 @@ bool FrogCanvas::seek(long step)
         }
     }
     updateWork();
+    restartTrail(); // the path so far belongs to where the run was
     m_previousValid = false;
     m_pressed = false;
     m_keyboardHeld = false;
@@ -405,6 +497,7 @@ bool FrogCanvas::setRecording(std::vector<InputEvent> events, long steps, QStrin
     }
     rebuildGhost();
     updateWork();
+    restartTrail();
     m_previousValid = false;
     refreshTexts();
     update();
@@ -470,6 +563,11 @@ void FrogCanvas::refreshTexts()
                 lines << (seed ? tr("Dashed ghost: the seed solver fed the same mouse")
                                : tr("Dashed ghost: the stable solver fed the same mouse"));
         }
+        if (m_overlays.trail)
+            lines << (m_trailPoint.joint ? tr("Trail of joint %1 of chain %2 (Shift+click a point to follow another)")
+                                         : tr("Trail of vertex %1 of body %2 (Shift+click a point to follow another)"))
+                         .arg(m_trailPoint.index)
+                         .arg(m_trailPoint.owner + 1);
         if (m_run->playingBack())
             lines << tr("Replaying the recorded run, step %1 of %2: a press on a body takes over from there")
                          .arg(sim()->stepCount())
@@ -675,6 +773,8 @@ void FrogCanvas::render(QPainter& p, const QRectF& target)
     drawScene(p, pixel);
     if (m_ghost)
         drawGhost(p);
+    if (m_overlays.trail)
+        drawTrail(p);
     drawOverlays(p, pixel);
     p.restore();
     p.setWorldTransform(base);
@@ -1016,6 +1116,11 @@ void FrogCanvas::mousePressEvent(QMouseEvent* event)
     m_mouseKnown = true;
     if (event->button() != Qt::LeftButton)
         return;
+    if (m_overlays.trail && (event->modifiers() & Qt::ShiftModifier)) { // choose the trail's point, grab nothing
+        if (!chooseTrailPoint(m_mouse))
+            emit statusMessage(tr("Shift+click on a vertex or a joint to follow it with the trail."));
+        return;
+    }
     // Annex II, mousePressed: grab when the cursor is inside the body. Going back in a run
     // (docs/rewind.md), a press that grabs nothing leaves the recorded future alone.
     if (m_run->playingBack() && !wouldGrab(m_mouse)) {

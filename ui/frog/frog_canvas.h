@@ -22,7 +22,9 @@
 #include <QTimer>
 #include <QWidget>
 
+#include <deque>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace granota {
@@ -45,10 +47,13 @@ public:
         /// Both solvers at once: the other solver's run of the same scene, fed the same mouse,
         /// drawn as a ghost over this one (docs/solvers.md#both-at-once).
         bool ghost = false;
+        /// The path of one vertex or joint over the last kTrailSteps steps (Shift+click
+        /// chooses which).
+        bool trail = false;
         bool operator==(const Overlays& o) const
         {
             return vertices == o.vertices && springs == o.springs && area == o.area && velocities == o.velocities &&
-                   readouts == o.readouts && frameTime == o.frameTime && ghost == o.ghost;
+                   readouts == o.readouts && frameTime == o.frameTime && ghost == o.ghost && trail == o.trail;
         }
     };
     /// §4.9/4.10: how a Bézier scene draws its body.
@@ -78,6 +83,21 @@ public:
     /// this is read-only; a seek may replace it (do not keep the pointer across one).
     const Simulation* simulation() const { return sim(); }
 
+    /// The point the trail follows: a body's vertex or a chain's joint. By default the last
+    /// joint of the first chain in the pendulum scenes (the tip), else vertex 0 of body 0.
+    struct TrailPoint {
+        bool joint = false; ///< a chain's joint, else a body's vertex
+        int owner = 0;      ///< the body or the chain
+        int index = 0;      ///< the vertex or the joint
+        bool operator==(const TrailPoint& o) const { return joint == o.joint && owner == o.owner && index == o.index; }
+    };
+    static constexpr int kTrailSteps = 10 * kFramesPerSecond;
+    const TrailPoint& trailPoint() const { return m_trailPoint; }
+    /// The trail's points, oldest first (one a step while the overlay is on; a new run or a
+    /// seek starts it again).
+    const std::deque<Point>& trail() const { return m_trail; }
+    /// Follows the vertex or joint nearest to `at` (scene px), within 30 px; false if none.
+    bool chooseTrailPoint(Point at);
     /// The ghost (Overlays::ghost): the other solver's simulation, at the same step, or null
     /// (off, or a scene the other solver refuses).
     const Simulation* ghost() const { return m_ghost ? &m_ghost->simulation() : nullptr; }
@@ -217,6 +237,9 @@ private:
     /// Live input, to the run and to its ghost; a press returns whether the run grabbed.
     bool send(InputKind kind, Point at = Point());
     void rebuildGhost();
+    void restartTrail();
+    std::optional<Point> trailPosition() const; ///< where the trail's point is now
+    void drawTrail(QPainter& p);
     void drawGhost(QPainter& p);
     int workFramesPerStep() const; ///< ⌈work / kFrameWork⌉: how much a heavy step slows real time
     void updateTimer();
@@ -245,6 +268,9 @@ private:
 
     std::unique_ptr<RecordedRun> m_run;
     std::unique_ptr<RecordedRun> m_ghost; // Overlays::ghost: the other solver, fed the same input
+    TrailPoint m_trailPoint;
+    std::deque<Point> m_trail;
+    std::string m_trailScene; // the stage m_trailPoint was chosen in
     FrogArt m_art;
     CanvasStyle m_style;
     Overlays m_overlays;
