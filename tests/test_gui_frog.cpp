@@ -510,6 +510,43 @@ private slots:
         QVERIFY(!canvas->overlays().trail);
     }
 
+    // Issue 16: the broad phase's pairs and the contacts, on the stable solver; the seed has
+    // none to show and says why.
+    void broadPhaseOverlay()
+    {
+        QVERIFY(tab().setScene("many-bodies", nullptr));
+        QCOMPARE(tab().solver(), SolverKind::Stable); // collisions start on the stable solver
+        tab().findChild<QPushButton*>("frogPause")->setChecked(true);
+        FrogCanvas* canvas = tab().canvas();
+        auto* box = tab().findChild<QCheckBox*>("frogOverlay8");
+        QVERIFY(box);
+        box->click();
+        std::vector<std::pair<int, int>> pairs;
+        int most = 0;
+        for (int i = 0; i < 300; ++i) {
+            canvas->step();
+            canvas->simulation()->broadPhasePairs(pairs);
+            most = std::max(most, int(pairs.size()));
+            for (const auto& [a, b] : pairs)
+                QVERIFY(a < b && a >= 0 && b < canvas->simulation()->bodyCount());
+        }
+        QVERIFY2(most > 0, "the bodies never came near each other");
+        const QString lines = canvas->textLines().join('\n');
+        QVERIFY2(lines.contains(QStringLiteral("Broad phase: %1 candidate pairs, %2 contacts")
+                                    .arg(pairs.size())
+                                    .arg(canvas->simulation()->readouts().contacts)),
+                 qPrintable(lines));
+        QImage image(canvas->size(), QImage::Format_ARGB32_Premultiplied);
+        QPainter painter(&image);
+        canvas->render(painter, QRectF(image.rect())); // draws the boxes and links without fault
+        painter.end();
+        QVERIFY(tab().setSolver(SolverKind::Seed, nullptr));
+        canvas->step();
+        canvas->simulation()->broadPhasePairs(pairs);
+        QVERIFY(pairs.empty());
+        QVERIFY(canvas->textLines().join('\n').contains("the seed has no collisions"));
+    }
+
     // Issue 16: the stable solver's knobs, shown while it runs: substeps and the edges'
     // compliance rebuild the scene with them, as one undo step a knob, and the document
     // keeps them; the seed's box is hidden, and the knobs stay when the stage changes.

@@ -2115,6 +2115,17 @@ a cada canvi alentiria la finestra.</translation>
     </context>
     <context>
         <name>granota::ui::FrogCanvas</name>
+        <message numerus="yes">
+            <source>Broad phase: %n candidate pairs, %1 contacts</source>
+            <translation>
+                <numerusform>Fase àmplia: %n parell candidat, %1 contactes</numerusform>
+                <numerusform>Fase àmplia: %n parells candidats, %1 contactes</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Broad phase: none, the seed has no collisions (§5.2 is future work)</source>
+            <translation>Fase àmplia: cap, la llavor no té col·lisions (el §5.2 és treball futur)</translation>
+        </message>
         <message>
             <source>Shift+click on a vertex or a joint to follow it with the trail.</source>
             <translation>Maj+clic sobre un vèrtex o una articulació per seguir-lo amb la traça.</translation>
@@ -2553,6 +2564,14 @@ a cada canvi alentiria la finestra.</translation>
     </context>
     <context>
         <name>granota::ui::FrogTab</name>
+        <message>
+            <source>§5.2.2: the pairs of bodies whose boxes overlap, the only ones tested for contact (a uniform grid finds them), and how many contacts there are (stable solver).</source>
+            <translation>§5.2.2: els parells de cossos les capses dels quals se superposen, els únics en què es comprova el contacte (els troba una graella uniforme), i quants contactes hi ha (mètode estable).</translation>
+        </message>
+        <message>
+            <source>Broad phase</source>
+            <translation>Fase àmplia</translation>
+        </message>
         <message>
             <source>The path of one point over the last 10 s: the pendulum's tip or the first body's vertex 0; Shift+click on a vertex or a joint to follow it.</source>
             <translation>El camí d'un punt durant els darrers 10 s: la punta del pèndol o el vèrtex 0 del primer cos; Maj+clic sobre un vèrtex o una articulació per seguir-lo.</translation>

@@ -2115,6 +2115,17 @@ on each change would slow the window.</translation>
     </context>
     <context>
         <name>granota::ui::FrogCanvas</name>
+        <message numerus="yes">
+            <source>Broad phase: %n candidate pairs, %1 contacts</source>
+            <translation>
+                <numerusform>Broad phase: %n candidate pair, %1 contacts</numerusform>
+                <numerusform>Broad phase: %n candidate pairs, %1 contacts</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Broad phase: none, the seed has no collisions (§5.2 is future work)</source>
+            <translation>Broad phase: none, the seed has no collisions (§5.2 is future work)</translation>
+        </message>
         <message>
             <source>Shift+click on a vertex or a joint to follow it with the trail.</source>
             <translation>Shift+click on a vertex or a joint to follow it with the trail.</translation>
@@ -2553,6 +2564,14 @@ on each change would slow the window.</translation>
     </context>
     <context>
         <name>granota::ui::FrogTab</name>
+        <message>
+            <source>§5.2.2: the pairs of bodies whose boxes overlap, the only ones tested for contact (a uniform grid finds them), and how many contacts there are (stable solver).</source>
+            <translation>§5.2.2: the pairs of bodies whose boxes overlap, the only ones tested for contact (a uniform grid finds them), and how many contacts there are (stable solver).</translation>
+        </message>
+        <message>
+            <source>Broad phase</source>
+            <translation>Broad phase</translation>
+        </message>
         <message>
             <source>The path of one point over the last 10 s: the pendulum's tip or the first body's vertex 0; Shift+click on a vertex or a joint to follow it.</source>
             <translation>The path of one point over the last 10 s: the pendulum's tip or the first body's vertex 0; Shift+click on a vertex or a joint to follow it.</translation>

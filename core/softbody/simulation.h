@@ -14,6 +14,7 @@
 #include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace granota {
@@ -98,6 +99,10 @@ public:
     virtual bool grabbing() const { return false; }
 
     virtual Readouts readouts() const = 0;
+    /// §5.2.2's broad phase: the pairs of bodies (first < second) whose boxes, grown by the
+    /// step's motion, overlapped in the last step — the candidates the contacts were tested
+    /// on. None on the seed, which has no collisions.
+    virtual void broadPhasePairs(std::vector<std::pair<int, int>>& out) const { out.clear(); }
     /// §4.1's polygon (the `polygon` stage, no components): the radius the mouse has set,
     /// r = |mouseY − h/2|, or the scene's radius before the mouse has moved; nullopt in every
     /// other scene. The Frog tab's radius field shows it.

@@ -45,6 +45,7 @@ const QColor kEdgeColour(0xff, 0x8a, 0x1e);
 const QColor kVelocityColour(0x1f, 0x5f, 0xd8);
 const QColor kGhostColour(0x5a, 0x2d, 0x82);
 const QColor kTrailColour(0xe0, 0x6c, 0x00);
+const QColor kPairColour(0xc2, 0x18, 0x5b);
 
 /// Samples per Catmull-Rom segment: smooth for the seed's 10 vertices, few for 200.
 int samplesPerSegment(std::size_t vertices)
@@ -372,6 +373,34 @@ bool FrogCanvas::chooseTrailPoint(Point at)
     return true;
 }
 
+void FrogCanvas::drawPairs(QPainter& p)
+{
+    sim()->broadPhasePairs(m_pairs);
+    if (m_pairs.empty())
+        return;
+    QPen box(kPairColour, 1.2 * m_style.scale, Qt::DashLine);
+    box.setCosmetic(true);
+    QPen link(kPairColour, 2 * m_style.scale);
+    link.setCosmetic(true);
+    p.save();
+    p.setBrush(Qt::NoBrush);
+    const auto boxAndCentre = [this](int body) {
+        sim()->bodyVertices(body, m_work);
+        const Aabb b = boundingBox(m_work.data(), int(m_work.size()));
+        return std::pair{QRectF(QPointF(b.minX, b.minY), QPointF(b.maxX, b.maxY)), Point(0.5 * (b.minX + b.maxX), 0.5 * (b.minY + b.maxY))};
+    };
+    for (const auto& [a, b] : m_pairs) {
+        const auto [boxA, centreA] = boxAndCentre(a);
+        const auto [boxB, centreB] = boxAndCentre(b);
+        p.setPen(box);
+        p.drawRect(boxA);
+        p.drawRect(boxB);
+        p.setPen(link);
+        p.drawLine(QPointF(centreA.x, centreA.y), QPointF(centreB.x, centreB.y));
+    }
+    p.restore();
+}
+
 void FrogCanvas::drawTrail(QPainter& p)
 {
     if (m_trail.size() < 2)
@@ -562,6 +591,13 @@ void FrogCanvas::refreshTexts()
             else
                 lines << (seed ? tr("Dashed ghost: the seed solver fed the same mouse")
                                : tr("Dashed ghost: the stable solver fed the same mouse"));
+        }
+        if (m_overlays.pairs) {
+            sim()->broadPhasePairs(m_pairs);
+            lines << (sim()->solver() == SolverKind::Seed
+                          ? tr("Broad phase: none, the seed has no collisions (§5.2 is future work)")
+                          : tr("Broad phase: %n candidate pairs, %1 contacts", "", int(m_pairs.size()))
+                                .arg(sim()->readouts().contacts));
         }
         if (m_overlays.trail)
             lines << (m_trailPoint.joint ? tr("Trail of joint %1 of chain %2 (Shift+click a point to follow another)")
@@ -775,6 +811,8 @@ void FrogCanvas::render(QPainter& p, const QRectF& target)
         drawGhost(p);
     if (m_overlays.trail)
         drawTrail(p);
+    if (m_overlays.pairs)
+        drawPairs(p);
     drawOverlays(p, pixel);
     p.restore();
     p.setWorldTransform(base);

@@ -50,10 +50,14 @@ public:
         /// The path of one vertex or joint over the last kTrailSteps steps (Shift+click
         /// chooses which).
         bool trail = false;
+        /// §5.2.2: the broad phase's candidate pairs (their boxes, a line between them) and
+        /// the number of contacts (stable solver).
+        bool pairs = false;
         bool operator==(const Overlays& o) const
         {
             return vertices == o.vertices && springs == o.springs && area == o.area && velocities == o.velocities &&
-                   readouts == o.readouts && frameTime == o.frameTime && ghost == o.ghost && trail == o.trail;
+                   readouts == o.readouts && frameTime == o.frameTime && ghost == o.ghost && trail == o.trail &&
+                   pairs == o.pairs;
         }
     };
     /// §4.9/4.10: how a Bézier scene draws its body.
@@ -240,6 +244,8 @@ private:
     void restartTrail();
     std::optional<Point> trailPosition() const; ///< where the trail's point is now
     void drawTrail(QPainter& p);
+    void drawPairs(QPainter& p);
+    std::vector<std::pair<int, int>> m_pairs; // drawPairs' buffer
     void drawGhost(QPainter& p);
     int workFramesPerStep() const; ///< ⌈work / kFrameWork⌉: how much a heavy step slows real time
     void updateTimer();

@@ -208,6 +208,7 @@ FrogTab::FrogTab(QWidget* parent)
     m_showFrameTime = new QCheckBox(m_overlayBox);
     m_showGhost = new QCheckBox(m_overlayBox);
     m_showTrail = new QCheckBox(m_overlayBox);
+    m_showPairs = new QCheckBox(m_overlayBox);
     const OverlayBoxes boxes = overlayBoxes();
     int i = 0;
     for (QCheckBox* box : boxes) {
@@ -613,7 +614,8 @@ void FrogTab::stepOnce()
 
 FrogTab::OverlayBoxes FrogTab::overlayBoxes() const
 {
-    return {m_showVertices, m_showSprings, m_showArea, m_showVelocities, m_showReadouts, m_showFrameTime, m_showGhost, m_showTrail};
+    return {m_showVertices, m_showSprings, m_showArea, m_showVelocities, m_showReadouts, m_showFrameTime, m_showGhost, m_showTrail,
+            m_showPairs};
 }
 
 FrogTab::OverlayFlags FrogTab::overlayFlags() const
@@ -641,6 +643,7 @@ void FrogTab::applyOverlayFlags(const OverlayFlags& flags)
     o.frameTime = m_showFrameTime->isChecked();
     o.ghost = m_showGhost->isChecked();
     o.trail = m_showTrail->isChecked();
+    o.pairs = m_showPairs->isChecked();
     m_canvas->setOverlays(o);
     emit documentChanged();
 }
@@ -798,6 +801,9 @@ void FrogTab::retranslate()
     m_showGhost->setToolTip(tr("Both solvers at once: the other solver runs the same scene, fed the same mouse, and "
                                "is drawn dashed over this one (the seed's frog sits about 17 % short of its area, "
                                "the stable one holds it)."));
+    m_showPairs->setText(tr("Broad phase"));
+    m_showPairs->setToolTip(tr("§5.2.2: the pairs of bodies whose boxes overlap, the only ones tested for contact "
+                               "(a uniform grid finds them), and how many contacts there are (stable solver)."));
     m_showTrail->setText(tr("Trail"));
     m_showTrail->setToolTip(tr("The path of one point over the last 10 s: the pendulum's tip or the first body's vertex 0; "
                                "Shift+click on a vertex or a joint to follow it."));
@@ -977,6 +983,7 @@ QJsonObject FrogTab::saveState() const
     overlays.insert(QStringLiteral("frame_time"), o.frameTime);
     overlays.insert(QStringLiteral("ghost"), o.ghost);
     overlays.insert(QStringLiteral("trail"), o.trail);
+    overlays.insert(QStringLiteral("pairs"), o.pairs);
     state.insert(QStringLiteral("overlays"), overlays);
     state.insert(QStringLiteral("bezier_outline"), m_fit->isChecked() ? QStringLiteral("fit") : QStringLiteral("precomputed"));
     state.insert(QStringLiteral("paused"), !m_canvas->running());
@@ -1059,7 +1066,7 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
         const std::pair<const char*, bool*> flags[] = {
             {"vertices", &overlays.vertices}, {"springs", &overlays.springs},       {"area", &overlays.area},
             {"velocities", &overlays.velocities}, {"readouts", &overlays.readouts}, {"frame_time", &overlays.frameTime},
-            {"ghost", &overlays.ghost}, {"trail", &overlays.trail}};
+            {"ghost", &overlays.ghost}, {"trail", &overlays.trail}, {"pairs", &overlays.pairs}};
         for (const auto& [key, flag] : flags) {
             const QJsonValue f = o.value(QLatin1String(key));
             if (f.isUndefined())
@@ -1159,7 +1166,7 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
         const OverlayBoxes boxes = overlayBoxes();
         const OverlayFlags values = {overlays.vertices,   overlays.springs,  overlays.area,
                                      overlays.velocities, overlays.readouts, overlays.frameTime, overlays.ghost,
-                                     overlays.trail};
+                                     overlays.trail,      overlays.pairs};
         for (std::size_t i = 0; i < values.size(); ++i) {
             const QSignalBlocker block(boxes[i]);
             boxes[i]->setChecked(values[i]);

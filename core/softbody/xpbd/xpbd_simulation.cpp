@@ -181,6 +181,13 @@ public:
         return m_mouseRadius.value_or(scene().params.radius);
     }
 
+    void broadPhasePairs(std::vector<std::pair<int, int>>& out) const override
+    {
+        out.clear();
+        for (const BodyPair& p : m_world.contactPairs())
+            out.emplace_back(p.first, p.second);
+    }
+
     Readouts readouts() const override
     {
         Readouts r;
