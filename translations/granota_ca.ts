@@ -2118,13 +2118,13 @@ a cada canvi alentiria la finestra.</translation>
         <message numerus="yes">
             <source>Broad phase: %n candidate pairs, %1 contacts</source>
             <translation>
-                <numerusform>Fase àmplia: %n parell candidat, %1 contactes</numerusform>
-                <numerusform>Fase àmplia: %n parells candidats, %1 contactes</numerusform>
+                <numerusform>Fase ampla: %n parell candidat, %1 contactes</numerusform>
+                <numerusform>Fase ampla: %n parells candidats, %1 contactes</numerusform>
             </translation>
         </message>
         <message>
             <source>Broad phase: none, the seed has no collisions (§5.2 is future work)</source>
-            <translation>Fase àmplia: cap, la llavor no té col·lisions (el §5.2 és treball futur)</translation>
+            <translation>Fase ampla: cap, la llavor no té col·lisions (el §5.2 és treball futur)</translation>
         </message>
         <message>
             <source>Shift+click on a vertex or a joint to follow it with the trail.</source>
@@ -2570,7 +2570,7 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <source>Broad phase</source>
-            <translation>Fase àmplia</translation>
+            <translation>Fase ampla</translation>
         </message>
         <message>
             <source>The path of one point over the last 10 s: the pendulum's tip or the first body's vertex 0; Shift+click on a vertex or a joint to follow it.</source>
