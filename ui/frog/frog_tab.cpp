@@ -749,8 +749,6 @@ void FrogTab::retranslate()
                                     "and their cost (View ▸ Error against run time)."));
     showStableSettings();
     m_explosionText->setText(tr("The body has blown up."));
-    m_explosionReset->setText(tr("Reset"));
-    m_explosionReset->setToolTip(tr("Start the scene again with the current parameters (R)."));
     m_explosionStable->setText(tr("Use the Stable solver"));
     m_explosionStable->setToolTip(tr("The same scene and values on the stable solver (XPBD), which holds them."));
     m_timelineDigits = -1; // the label's width, for this language's text
@@ -760,6 +758,8 @@ void FrogTab::retranslate()
     updateTimeline();
     m_reset->setText(tr("Reset"));
     m_reset->setToolTip(tr("Start the scene again with the current parameters (R)."));
+    m_explosionReset->setText(m_reset->text()); // the same Reset, where the warning is
+    m_explosionReset->setToolTip(m_reset->toolTip());
     m_solverNote->setText(tr("The seed solver has no angle constraints: these shapes round into blobs. The Stable "
                              "solver keeps their form."));
     m_solverNote->setVisible(m_solver == SolverKind::Seed && seedRoundsShapes(m_scene));
