@@ -235,6 +235,20 @@ private slots:
         QCOMPARE(again->recordedSteps(), 300L); // unchanged
         QCOMPARE(simulationTraceRow(again->simulation()), forward[300]);
         QVERIFY(!eventsFromJson(Json::parse(R"([[3, "move", 1]])").value(), 300).ok());
+        // As a document keeps it: steps, the step shown, the events.
+        QVERIFY(again->seek(120).ok());
+        auto kept = documentRunFromJson(documentRunToJson(*again));
+        QVERIFY(kept.ok());
+        QCOMPARE(kept->steps, 300L);
+        QCOMPARE(kept->step, 120L);
+        QVERIFY(kept->events == again->recording().events);
+        for (const char* bad : {R"({"steps": 10, "step": 11, "events": []})", R"({"steps": -1, "events": []})",
+                                R"({"steps": 10})", R"({"steps": 10, "step": 2.5, "events": []})", "[1]"}) {
+            auto refused = documentRunFromJson(Json::parse(bad).value());
+            QVERIFY2(!refused.ok(), bad);
+            QVERIFY(refused.error().message.rfind("recording: ", 0) == 0);
+        }
+        QCOMPARE(documentRunFromJson(Json::parse(R"({"steps": 10, "events": []})").value())->step, 0L);
         auto stepped = Simulation::create(scene("frog"), SolverKind::Seed);
         (*stepped)->step();
         QVERIFY(!RecordedRun::adopt(std::move(stepped).value()).ok());

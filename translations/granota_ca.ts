@@ -2675,10 +2675,6 @@ a cada canvi alentiria la finestra.</translation>
             <translation>S'ha refusat l'enregistrament de la granota: %1</translation>
         </message>
         <message>
-            <source>The frog's recording must have whole “steps” from 0 to %1 and a “step” from 0 to them.</source>
-            <translation>L'enregistrament de la granota ha de tenir uns “steps” enters de 0 a %1 i un “step” de 0 fins a aquests.</translation>
-        </message>
-        <message>
             <source>Step 0: the run starts here.</source>
             <translation>Pas 0: l'execució comença aquí.</translation>
         </message>

@@ -2675,10 +2675,6 @@ on each change would slow the window.</translation>
             <translation>The frog's recording was refused: %1</translation>
         </message>
         <message>
-            <source>The frog's recording must have whole “steps” from 0 to %1 and a “step” from 0 to them.</source>
-            <translation>The frog's recording must have whole “steps” from 0 to %1 and a “step” from 0 to them.</translation>
-        </message>
-        <message>
             <source>Step 0: the run starts here.</source>
             <translation>Step 0: the run starts here.</translation>
         </message>

@@ -82,6 +82,41 @@ Expected<std::vector<InputEvent>> eventsFromJson(const Json& events, long steps)
     return out;
 }
 
+Json documentRunToJson(const RecordedRun& run)
+{
+    Json doc = Json::object();
+    doc.set("steps", double(run.recordedSteps()))
+        .set("step", double(run.stepCount()))
+        .set("events", eventsToJson(run.recording().events));
+    return doc;
+}
+
+Expected<DocumentRun> documentRunFromJson(const Json& doc)
+{
+    if (!doc.isObject())
+        return bad("not a JSON object");
+    const Json* steps = doc.find("steps");
+    const auto n = steps ? wholeNumber(*steps, 0, kMaxRecordedSteps) : std::nullopt;
+    if (!n)
+        return bad("\"steps\" must be a whole number from 0 to " + std::to_string(kMaxRecordedSteps));
+    DocumentRun run;
+    run.steps = *n;
+    if (const Json* step = doc.find("step")) {
+        const auto s = wholeNumber(*step, 0, run.steps);
+        if (!s)
+            return bad("\"step\" must be a whole number from 0 to " + std::to_string(run.steps) + " (the steps)");
+        run.step = *s;
+    }
+    const Json* events = doc.find("events");
+    if (!events)
+        return bad("\"events\" must be an array");
+    auto list = eventsFromJson(*events, run.steps);
+    if (!list)
+        return list.error();
+    run.events = std::move(list).value();
+    return run;
+}
+
 Json recordingToJson(const Recording& r)
 {
     Json doc = Json::object();

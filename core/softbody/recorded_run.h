@@ -46,10 +46,22 @@ Json recordingToJson(const Recording& recording);
 /// Rejects a malformed recording with a message naming what is wrong: the scene as a scene
 /// file is checked, events in step order, inside [0, steps], finite coordinates.
 Expected<Recording> recordingFromJson(const Json& doc);
-/// The "events" array alone, as the recording file writes it (the Frog tab's document keeps
-/// its run this way, beside the scene it already holds), and read back with the same checks.
+/// The "events" array alone, as the recording file writes it, and read back with the same checks.
 Json eventsToJson(const std::vector<InputEvent>& events);
 Expected<std::vector<InputEvent>> eventsFromJson(const Json& events, long steps);
+
+/// A run as a document keeps it beside the scene it already holds (the Frog tab's
+/// "recording"): {"steps": N, "step": s, "events": […]}, "step" the step shown (optional, 0).
+struct DocumentRun {
+    long steps = 0;
+    long step = 0;
+    std::vector<InputEvent> events;
+};
+class RecordedRun;
+Json documentRunToJson(const RecordedRun& run);
+/// Errors name what is wrong: steps outside [0, 10⁸], a step outside [0, steps], an event as
+/// recordingFromJson says.
+Expected<DocumentRun> documentRunFromJson(const Json& doc);
 
 class RecordedRun {
 public:

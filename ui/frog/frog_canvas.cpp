@@ -327,12 +327,13 @@ void FrogCanvas::restartTrail()
             m_trail.push_back(*at);
 }
 
-std::optional<Point> FrogCanvas::trailPosition() const
+std::optional<Point> FrogCanvas::trailPosition()
 {
     const Simulation* s = sim();
     if (!s)
         return std::nullopt;
-    std::vector<Point> points;
+    std::vector<Point>& points = m_trailBuffer; // reused: this runs every step
+    points.clear();
     if (m_trailPoint.joint && m_trailPoint.owner < s->chainCount())
         s->chainJoints(m_trailPoint.owner, points);
     else if (!m_trailPoint.joint && m_trailPoint.owner < s->bodyCount())

@@ -242,7 +242,7 @@ private:
     bool send(InputKind kind, Point at = Point());
     void rebuildGhost();
     void restartTrail();
-    std::optional<Point> trailPosition() const; ///< where the trail's point is now
+    std::optional<Point> trailPosition(); ///< where the trail's point is now
     void drawTrail(QPainter& p);
     void drawPairs(QPainter& p);
     std::vector<std::pair<int, int>> m_pairs; // drawPairs' buffer
@@ -277,6 +277,7 @@ private:
     TrailPoint m_trailPoint;
     std::deque<Point> m_trail;
     std::string m_trailScene; // the stage m_trailPoint was chosen in
+    std::vector<Point> m_trailBuffer;
     FrogArt m_art;
     CanvasStyle m_style;
     Overlays m_overlays;

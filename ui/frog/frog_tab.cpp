@@ -75,6 +75,8 @@ std::vector<Point> flipped(const std::vector<Point>& points, double height)
 
 } // namespace
 
+const long FrogTab::kLoadSeekWork = 600 * FrogCanvas::kFrameWork;
+
 FrogTab::FrogTab(QWidget* parent)
     : TabPage(QStringLiteral("frog"), QT_TR_NOOP("Frog"), parent), m_canvas(new FrogCanvas(this)), m_params(new FrogParametersPanel(this))
 {
@@ -993,13 +995,8 @@ QJsonObject FrogTab::saveState() const
     stable.insert(QStringLiteral("edge_compliance"), m_scene.stable.edgeCompliance);
     state.insert(QStringLiteral("stable"), stable);
     // The run so far (docs/rewind.md): its events, how far it went, and the step shown.
-    if (const RecordedRun* run = m_canvas->run()) {
-        QJsonObject recording;
-        recording.insert(QStringLiteral("steps"), double(run->recordedSteps()));
-        recording.insert(QStringLiteral("step"), double(run->stepCount()));
-        recording.insert(QStringLiteral("events"), toQJson(eventsToJson(run->recording().events)));
-        state.insert(QStringLiteral("recording"), recording);
-    }
+    if (const RecordedRun* run = m_canvas->run())
+        state.insert(QStringLiteral("recording"), toQJson(documentRunToJson(*run)));
     return state;
 }
 
@@ -1119,46 +1116,27 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
         spec->stable = m_scene.stable;
     }
     // The recorded run: checked whole before anything changes.
-    std::optional<std::vector<InputEvent>> events;
-    long recordedSteps = 0, shownStep = 0;
+    std::optional<DocumentRun> recorded;
     if (state.contains(QStringLiteral("recording"))) {
-        const QJsonValue v = state.value(QStringLiteral("recording"));
-        const QJsonObject r = v.toObject();
-        const auto whole = [](const QJsonValue& n, long lo, long hi) -> std::optional<long> {
-            const double d = n.toDouble(-1);
-            if (!n.isDouble() || !(d >= double(lo) && d <= double(hi)) || std::floor(d) != d)
-                return std::nullopt;
-            return static_cast<long>(d);
-        };
-        const auto steps = whole(r.value(QStringLiteral("steps")), 0, kMaxRecordedSteps);
-        const QJsonValue at = r.value(QStringLiteral("step")); // optional: step 0
-        const auto step = !steps ? std::nullopt : at.isUndefined() ? std::optional<long>(0) : whole(at, 0, *steps);
-        if (!v.isObject() || !steps || !step) {
-            setError(error, tr("The frog's recording must have whole “steps” from 0 to %1 and a “step” from 0 to them.")
-                                .arg(kMaxRecordedSteps));
-            return false;
-        }
-        auto parsed = eventsFromJson(fromQJson(r.value(QStringLiteral("events"))), *steps);
+        auto parsed = documentRunFromJson(fromQJson(state.value(QStringLiteral("recording"))));
         if (!parsed) {
             setError(error, tr("The frog's recording was refused: %1").arg(fromStd(parsed.error().message)));
             return false;
         }
-        events = std::move(parsed).value();
-        recordedSteps = *steps;
-        shownStep = *step;
+        recorded = std::move(parsed).value();
     }
     if (!rebuild(*spec, solver, error))
         return false;
-    if (events) {
+    if (recorded) {
         QString refused;
-        if (!m_canvas->setRecording(std::move(*events), recordedSteps, &refused))
+        if (!m_canvas->setRecording(std::move(recorded->events), recorded->steps, &refused))
             showRefusal(refused); // checked above: cannot happen
-        const long work = m_canvas->simulation()->workPerStep() * shownStep;
+        const long work = m_canvas->simulation()->workPerStep() * recorded->step;
         if (work <= kLoadSeekWork)
-            m_canvas->seek(shownStep);
+            m_canvas->seek(recorded->step);
         else
             emit statusMessage(tr("The run was saved at step %1: drag the timeline to go there (it is long to replay).")
-                                   .arg(shownStep));
+                                   .arg(recorded->step));
     }
     setSpeed(speed);
     // Everything is valid: show it.

@@ -75,9 +75,9 @@ public:
     void toggleMark();
     long markedStep() const { return m_mark; }
     /// A document's run is replayed up to its saved step on load when that is at most this
-    /// much work (Simulation::workPerStep × steps: about two seconds); past it, the run
-    /// loads at step 0 and the tab says so.
-    static constexpr long kLoadSeekWork = 600L * 24000;
+    /// much work (Simulation::workPerStep × steps): 600 frames' budget, about two seconds;
+    /// past it, the run loads at step 0 and the tab says so.
+    static const long kLoadSeekWork;
     /// Shows the plots over time under the canvas (the canvas records the series meanwhile).
     void setPlotsShown(bool on);
     FrogPlotPanel* plotPanel() const { return m_plots; }
