@@ -547,13 +547,15 @@ private slots:
         QVERIFY(canvas->textLines().join('\n').contains("the seed has no collisions"));
     }
 
-    // Issue 16: the stable solver's knobs, shown while it runs: substeps and the edges'
-    // compliance rebuild the scene with them, as one undo step a knob, and the document
-    // keeps them; the seed's box is hidden, and the knobs stay when the stage changes.
+    // Issue 16: the stable solver's knobs, shown while it runs, turn live: the run goes on
+    // from its step with them, one undo step a knob, and the recording keeps each turn, so
+    // the document gives it back and the timeline shows the knobs in force at each step;
+    // the seed's box is hidden, and the knobs stay when the stage changes.
     void stableKnobs()
     {
         QVERIFY(tab().setScene("frog", nullptr));
         QVERIFY(tab().setSolver(SolverKind::Seed, nullptr));
+        tab().findChild<QPushButton*>("frogPause")->setChecked(true);
         auto* box = tab().findChild<QGroupBox*>("frogStableBox");
         auto* substeps = tab().findChild<QSpinBox*>("frogSubsteps");
         auto* compliance = tab().findChild<QDoubleSpinBox*>("frogEdgeCompliance");
@@ -562,32 +564,54 @@ private slots:
         QVERIFY(tab().setSolver(SolverKind::Stable, nullptr));
         QVERIFY(box->isVisibleTo(&tab()));
         QCOMPARE(substeps->value(), 8);
-        QCOMPARE(tab().canvas()->simulation()->substeps(), 8);
+        FrogCanvas* canvas = tab().canvas();
+        QCOMPARE(canvas->simulation()->substeps(), 8);
+        for (int i = 0; i < 5; ++i)
+            canvas->step();
         QUndoStack* undo = tab().undoStack();
         const int before = undo->count();
         substeps->setValue(16);
         substeps->setValue(24); // a run of edits of one knob: one step
-        QCOMPARE(tab().canvas()->simulation()->substeps(), 24);
+        QCOMPARE(canvas->simulation()->substeps(), 24);
+        QCOMPARE(canvas->simulation()->stepCount(), 5L); // live: the run goes on
         QCOMPARE(undo->count(), before + 1);
+        for (int i = 0; i < 3; ++i)
+            canvas->step();
         compliance->setValue(0.01);
-        QCOMPARE(tab().scene().stable.edgeCompliance, 0.01);
+        QCOMPARE(canvas->simulation()->stableSettings().edgeCompliance, 0.01);
+        QCOMPARE(tab().scene().stable.edgeCompliance, 2e-3); // the run started with it
         QCOMPARE(undo->count(), before + 2);
         const auto* note = tab().findChild<QLabel*>("frogStableNote");
         QVERIFY2(note->text().contains("rings with a period of"), qPrintable(note->text()));
         const QJsonObject saved = tab().saveState();
-        QCOMPARE(saved["stable"].toObject()["substeps"].toInt(), 24);
+        QCOMPARE(saved["stable"].toObject()["substeps"].toInt(), 8); // the start; the turns are events
+        const QJsonArray events = saved["recording"].toObject()["events"].toArray();
+        QCOMPARE(events.size(), 2);
+        QCOMPARE(events[0].toArray(), (QJsonArray{5, "substeps", 24}));
+        QCOMPARE(events[1].toArray(), (QJsonArray{8, "edge_compliance", 0.01}));
         undo->undo();
-        QCOMPARE(tab().scene().stable.edgeCompliance, 2e-3);
+        QCOMPARE(canvas->simulation()->stableSettings().edgeCompliance, 2e-3);
         QCOMPARE(compliance->value(), 0.002);
         undo->undo();
-        QCOMPARE(tab().canvas()->simulation()->substeps(), 8);
+        QCOMPARE(canvas->simulation()->substeps(), 8);
         QCOMPARE(substeps->value(), 8);
+        QCOMPARE(canvas->simulation()->stepCount(), 8L);
         QVERIFY(tab().loadState(saved, nullptr));
-        QCOMPARE(tab().canvas()->simulation()->substeps(), 24);
+        QCOMPARE(canvas->simulation()->stepCount(), 8L);
+        QCOMPARE(canvas->simulation()->substeps(), 24);
         QCOMPARE(substeps->value(), 24);
-        // A stage of its own keeps the solver's knobs; a bad document value is refused.
+        QCOMPARE(compliance->value(), 0.01);
+        // The timeline shows the knobs each step had.
+        tab().timeline()->setValue(3);
+        QCOMPARE(substeps->value(), 8);
+        QCOMPARE(compliance->value(), 0.002);
+        tab().timeline()->setValue(6);
+        QCOMPARE(substeps->value(), 24);
+        QCOMPARE(compliance->value(), 0.002);
+        // A stage of its own keeps the knobs in force; a bad document value is refused.
         QVERIFY(tab().setScene("many-bodies", nullptr));
-        QCOMPARE(tab().canvas()->simulation()->substeps(), 24);
+        QCOMPARE(canvas->simulation()->substeps(), 24);
+        QCOMPARE(tab().scene().stable.substeps, 24);
         QJsonObject bad = saved;
         bad["stable"] = QJsonObject{{"substeps", 40}};
         QString error;

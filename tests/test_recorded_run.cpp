@@ -39,7 +39,8 @@ Point centroid(const Simulation& s)
     return Point(c.x / double(v.size()), c.y / double(v.size()));
 }
 
-/// A student's minute: grab the frog, swing it round, throw it, spawn another, let go.
+/// A student's minute: grab the frog, swing it round, throw it, spawn another, let go, and
+/// turn the stable solver's knobs twice on the way.
 /// Returns the trace row after every step (index = step).
 std::vector<std::string> drive(RecordedRun& run, int steps)
 {
@@ -55,6 +56,10 @@ std::vector<std::string> drive(RecordedRun& run, int steps)
             run.spawn(Point(400, 200));
         if (i == 170)
             run.releaseSpawn();
+        if (i == 120) // the stable solver's knobs, turned live (the seed keeps and ignores them)
+            run.setStableSettings({4, 0.01});
+        if (i == 230)
+            run.setStableSettings({12, 0});
         run.step();
         rows.push_back(simulationTraceRow(run.simulation()));
     }
@@ -273,6 +278,68 @@ private slots:
         QCOMPARE(simulationTraceRow(run->simulation()), forward[211]);
     }
 
+    // Issue 16, "live substeps and stiffness": a knob turned mid-run takes effect from the
+    // next step without starting the run again, is recorded (a run of turns within a step as
+    // one event), is in force at the step it was turned when the run goes back there, and
+    // the seed, which keeps the knobs, steps as Annex II does.
+    void knobsTurnLive()
+    {
+        const SceneSpec frog = scene("frog");
+        auto plain = RecordedRun::start(frog, SolverKind::Stable);
+        auto run = RecordedRun::start(frog, SolverKind::Stable, 25);
+        std::vector<std::string> plainRows{simulationTraceRow(plain->simulation())}, rows{plainRows};
+        for (int i = 0; i < 200; ++i) {
+            if (i == 100) {
+                QVERIFY(!run->setStableSettings({33, 0.01})); // out of range: nothing changes
+                QVERIFY(!run->setStableSettings({4, -1}));
+                QVERIFY(run->recording().events.empty());
+                QVERIFY(run->setStableSettings({2, 0.05}));
+                QVERIFY(run->setStableSettings({3, 0.05})); // the same step: one event a knob
+                QCOMPARE(run->simulation().substeps(), 3);
+            }
+            if (i == 150)
+                QVERIFY(run->setStableSettings({3, 0}));
+            plain->step();
+            run->step();
+            plainRows.push_back(simulationTraceRow(plain->simulation()));
+            rows.push_back(simulationTraceRow(run->simulation()));
+        }
+        QCOMPARE(run->stepCount(), 200L); // the run went on
+        for (int k = 0; k <= 100; ++k)
+            QCOMPARE(rows[std::size_t(k)], plainRows[std::size_t(k)]);
+        QVERIFY(rows[101] != plainRows[101]); // three substeps from step 100 on, not eight
+        const auto& events = run->recording().events;
+        QCOMPARE(events.size(), std::size_t(3));
+        QVERIFY((events[0] == InputEvent{100, InputKind::Substeps, Point(), 3}));
+        QVERIFY((events[1] == InputEvent{100, InputKind::EdgeCompliance, Point(), 0.05}));
+        QVERIFY((events[2] == InputEvent{150, InputKind::EdgeCompliance, Point(), 0}));
+        // Back to a step: the knobs in force there, and the state the run went through.
+        const std::pair<long, StableSettings> at[] = {{99, {8, 2e-3}}, {100, {3, 0.05}}, {149, {3, 0.05}}, {150, {3, 0}},
+                                                      {0, {8, 2e-3}},  {175, {3, 0}},    {101, {3, 0.05}}};
+        for (const auto& [step, knobs] : at) {
+            QVERIFY(run->seek(step).ok());
+            QVERIFY2(run->simulation().stableSettings() == knobs, qPrintable(QString::number(step)));
+            QCOMPARE(run->simulation().substeps(), knobs.substeps);
+            QCOMPARE(simulationTraceRow(run->simulation()), rows[std::size_t(step)]);
+        }
+        // The file keeps them: [step, "substeps", n], [step, "edge_compliance", α].
+        const Json doc = recordingToJson(run->recording());
+        QVERIFY(QString::fromStdString(doc.dump()).contains(R"([100,"substeps",3])"));
+        auto parsed = recordingFromJson(doc);
+        QVERIFY(parsed.ok());
+        QVERIFY(parsed->events == events);
+        // The seed keeps the knobs to hand on, and its trace is Annex II's all the same.
+        auto seedPlain = RecordedRun::start(frog, SolverKind::Seed), seed = RecordedRun::start(frog, SolverKind::Seed);
+        for (int i = 0; i < 60; ++i) {
+            if (i == 10)
+                QVERIFY(seed->setStableSettings({1, 1}));
+            seed->step();
+            seedPlain->step();
+        }
+        QCOMPARE(seed->simulation().stableSettings().substeps, 1);
+        QCOMPARE(simulationTraceRow(seed->simulation()), simulationTraceRow(seedPlain->simulation()));
+    }
+
     void badRecordingsAreRefused_data()
     {
         QTest::addColumn<QString>("change");
@@ -288,6 +355,10 @@ private slots:
         QTest::newRow("unknown kind") << R"("events": [[1, "jump"]])" << "kind";
         QTest::newRow("press without a point") << R"("events": [[1, "press"]])" << "x and y";
         QTest::newRow("release with a point") << R"("events": [[1, "release", 3, 4]])" << "no point";
+        QTest::newRow("substeps 0") << R"("events": [[1, "substeps", 0]])" << "substeps must be a whole number from 1 to 32";
+        QTest::newRow("substeps 2.5") << R"("events": [[1, "substeps", 2.5]])" << "event 1: substeps";
+        QTest::newRow("compliance 2") << R"("events": [[1, "edge_compliance", 2]])" << "edge_compliance must be";
+        QTest::newRow("knob without a value") << R"("events": [[1, "substeps"]])" << "needs its value";
         QTest::newRow("huge coordinate") << R"("events": [[1, "move", 1e999, 4]])" << "";
         QTest::newRow("bad scene") << R"("scene": {"name": "frog"})" << "scene";
     }

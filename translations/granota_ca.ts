@@ -2635,16 +2635,16 @@ a cada canvi alentiria la finestra.</translation>
             <translation>Error segons els subpassos…</translation>
         </message>
         <message>
-            <source>How soft the body's edges are, in step² per unit of mass and per px of rest length: 0 is rigid, larger is softer. Unlike the seed's factors it does not depend on the substeps or the number of vertices. The scene starts again.</source>
-            <translation>Com de toves són les arestes del cos, en pas² per unitat de massa i per px de longitud en repòs: 0 és rígid, més gran és més tou. A diferència dels factors de la llavor, no depèn dels subpassos ni del nombre de vèrtexs. L'escena torna a començar.</translation>
+            <source>How soft the body's edges are, in step² per unit of mass and per px of rest length: 0 is rigid, larger is softer. Unlike the seed's factors it does not depend on the substeps or the number of vertices. The run goes on with it from the next step, and the recording keeps the change.</source>
+            <translation>Com de toves són les arestes del cos, en pas² per unitat de massa i per px de longitud en repòs: 0 és rígid, més gran és més tou. A diferència dels factors de la llavor, no depèn dels subpassos ni del nombre de vèrtexs. La simulació continua amb el valor nou des del pas següent, i l'enregistrament guarda el canvi.</translation>
         </message>
         <message>
             <source>Edge compliance α</source>
             <translation>Flexibilitat de les arestes α</translation>
         </message>
         <message>
-            <source>Substeps per step, 1 to 32: each step is cut into n substeps, and the constraints' error falls like 1/n² at a cost proportional to n. The scene starts again.</source>
-            <translation>Subpassos per pas, d'1 a 32: cada pas es divideix en n subpassos, i l'error de les restriccions baixa com 1/n² amb un cost proporcional a n. L'escena torna a començar.</translation>
+            <source>Substeps per step, 1 to 32: each step is cut into n substeps, and the constraints' error falls like 1/n² at a cost proportional to n. The run goes on with it from the next step, and the recording keeps the change.</source>
+            <translation>Subpassos per pas, d'1 a 32: cada pas es divideix en n subpassos, i l'error de les restriccions baixa com 1/n² amb un cost proporcional a n. La simulació continua amb el valor nou des del pas següent, i l'enregistrament guarda el canvi.</translation>
         </message>
         <message>
             <source>Substeps n</source>
@@ -3206,6 +3206,10 @@ a cada canvi alentiria la finestra.</translation>
             <location filename="../ui/frog_tab.h" line="33" />
             <source>Frog</source>
             <translation>Granota</translation>
+        </message>
+        <message>
+            <source>The stable solver's knobs were refused: substeps from 1 to 32, compliance from 0 to 1.</source>
+            <translation>S'han refusat els valors del mètode estable: subpassos d'1 a 32, flexibilitat de 0 a 1.</translation>
         </message>
     </context>
     <context>

@@ -2635,16 +2635,16 @@ on each change would slow the window.</translation>
             <translation>Error against substeps…</translation>
         </message>
         <message>
-            <source>How soft the body's edges are, in step² per unit of mass and per px of rest length: 0 is rigid, larger is softer. Unlike the seed's factors it does not depend on the substeps or the number of vertices. The scene starts again.</source>
-            <translation>How soft the body's edges are, in step² per unit of mass and per px of rest length: 0 is rigid, larger is softer. Unlike the seed's factors it does not depend on the substeps or the number of vertices. The scene starts again.</translation>
+            <source>How soft the body's edges are, in step² per unit of mass and per px of rest length: 0 is rigid, larger is softer. Unlike the seed's factors it does not depend on the substeps or the number of vertices. The run goes on with it from the next step, and the recording keeps the change.</source>
+            <translation>How soft the body's edges are, in step² per unit of mass and per px of rest length: 0 is rigid, larger is softer. Unlike the seed's factors it does not depend on the substeps or the number of vertices. The run goes on with it from the next step, and the recording keeps the change.</translation>
         </message>
         <message>
             <source>Edge compliance α</source>
             <translation>Edge compliance α</translation>
         </message>
         <message>
-            <source>Substeps per step, 1 to 32: each step is cut into n substeps, and the constraints' error falls like 1/n² at a cost proportional to n. The scene starts again.</source>
-            <translation>Substeps per step, 1 to 32: each step is cut into n substeps, and the constraints' error falls like 1/n² at a cost proportional to n. The scene starts again.</translation>
+            <source>Substeps per step, 1 to 32: each step is cut into n substeps, and the constraints' error falls like 1/n² at a cost proportional to n. The run goes on with it from the next step, and the recording keeps the change.</source>
+            <translation>Substeps per step, 1 to 32: each step is cut into n substeps, and the constraints' error falls like 1/n² at a cost proportional to n. The run goes on with it from the next step, and the recording keeps the change.</translation>
         </message>
         <message>
             <source>Substeps n</source>
@@ -3206,6 +3206,10 @@ on each change would slow the window.</translation>
             <location filename="../ui/frog_tab.h" line="33" />
             <source>Frog</source>
             <translation>Frog</translation>
+        </message>
+        <message>
+            <source>The stable solver's knobs were refused: substeps from 1 to 32, compliance from 0 to 1.</source>
+            <translation>The stable solver's knobs were refused: substeps from 1 to 32, compliance from 0 to 1.</translation>
         </message>
     </context>
     <context>

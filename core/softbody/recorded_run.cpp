@@ -1,6 +1,7 @@
 #include "core/softbody/recorded_run.h"
 
 #include "core/base/enum_names.h"
+#include "core/base/number_format.h"
 
 #include <algorithm>
 #include <array>
@@ -10,13 +11,27 @@ namespace granota {
 
 namespace {
 
-constexpr std::array<EnumName<InputKind>, 5> kInputNames{{{InputKind::Press, "press"},
+// The knobs take the names of the scene file's "stable" keys.
+constexpr std::array<EnumName<InputKind>, 7> kInputNames{{{InputKind::Press, "press"},
                                                           {InputKind::Move, "move"},
                                                           {InputKind::Release, "release"},
                                                           {InputKind::Spawn, "spawn"},
-                                                          {InputKind::ReleaseSpawn, "release-spawn"}}};
+                                                          {InputKind::ReleaseSpawn, "release-spawn"},
+                                                          {InputKind::Substeps, "substeps"},
+                                                          {InputKind::EdgeCompliance, "edge_compliance"}}};
 
 bool hasPoint(InputKind k) { return k == InputKind::Press || k == InputKind::Move || k == InputKind::Spawn; }
+
+/// Why a knob event's value is refused, or empty when it is in range (or not a knob).
+std::string knobValueError(InputKind k, double v)
+{
+    if (k == InputKind::Substeps && !StableSettings::validSubsteps(v))
+        return "substeps must be a whole number from " + std::to_string(StableSettings::kMinSubsteps) + " to " +
+               std::to_string(StableSettings::kMaxSubsteps);
+    if (k == InputKind::EdgeCompliance && !StableSettings::validEdgeCompliance(v))
+        return "edge_compliance must be a number from 0 to " + formatDouble(StableSettings::kMaxEdgeCompliance);
+    return {};
+}
 
 Error bad(const std::string& what) { return makeError(ErrorCode::InvalidInput, "recording: " + what); }
 
@@ -39,6 +54,8 @@ Json eventsToJson(const std::vector<InputEvent>& list)
         row.push(double(e.step)).push(std::string(nameOf(kInputNames, e.kind, "move")));
         if (hasPoint(e.kind))
             row.push(e.at.x).push(e.at.y);
+        else if (isKnob(e.kind))
+            row.push(e.value);
         events.push(std::move(row));
     }
     return events;
@@ -65,7 +82,7 @@ Expected<std::vector<InputEvent>> eventsFromJson(const Json& events, long steps)
         const auto name = (*a)[1].asString();
         const auto k = name ? parseName(kInputNames, *name) : std::nullopt;
         if (!k)
-            return bad(where + ": the kind must be press, move, release, spawn or release-spawn");
+            return bad(where + ": the kind must be press, move, release, spawn, release-spawn, substeps or edge_compliance");
         InputEvent e{*step, *k, Point()};
         if (hasPoint(*k)) {
             const auto x = a->size() == 4 ? (*a)[2].asNumber() : std::nullopt;
@@ -73,6 +90,13 @@ Expected<std::vector<InputEvent>> eventsFromJson(const Json& events, long steps)
             if (!x || !y || !std::isfinite(*x) || !std::isfinite(*y))
                 return bad(where + ": " + *name + " needs finite x and y");
             e.at = Point(*x, *y);
+        } else if (isKnob(*k)) {
+            const auto v = a->size() == 3 ? (*a)[2].asNumber() : std::nullopt;
+            if (!v)
+                return bad(where + ": " + *name + " needs its value");
+            if (const std::string why = knobValueError(*k, *v); !why.empty())
+                return bad(where + ": " + why);
+            e.value = *v;
         } else if (a->size() != 2) {
             return bad(where + ": " + *name + " takes no point");
         }
@@ -221,6 +245,8 @@ Expected<void> RecordedRun::setRecording(std::vector<InputEvent> events, long st
                        std::to_string(steps));
         if (!std::isfinite(e.at.x) || !std::isfinite(e.at.y))
             return bad("event " + std::to_string(i + 1) + " needs finite x and y");
+        if (const std::string why = knobValueError(e.kind, e.value); !why.empty())
+            return bad("event " + std::to_string(i + 1) + ": " + why);
         last = e.step;
     }
     m_snapshots.resize(1); // the one at step 0: the rest belonged to the old recording
@@ -229,6 +255,7 @@ Expected<void> RecordedRun::setRecording(std::vector<InputEvent> events, long st
     m_nextEvent = 0;
     m_recording.events = std::move(events);
     m_recording.steps = steps;
+    applyPendingKnobs();
     return {};
 }
 
@@ -266,7 +293,27 @@ void RecordedRun::apply(const InputEvent& e)
     case InputKind::Release: m_sim->release(); break;
     case InputKind::Spawn: m_sim->spawn(e.at); break;
     case InputKind::ReleaseSpawn: m_sim->releaseSpawn(); break;
+    case InputKind::Substeps:
+    case InputKind::EdgeCompliance: {
+        StableSettings s = m_sim->stableSettings();
+        if (e.kind == InputKind::Substeps)
+            s.substeps = static_cast<int>(e.value);
+        else
+            s.edgeCompliance = e.value;
+        m_sim->setStableSettings(s); // checked when recorded or read
+        break;
     }
+    }
+}
+
+void RecordedRun::applyPendingKnobs()
+{
+    // The knobs turned at the present step, before it is made: a knob was in force from the
+    // moment it was turned, and setting it again when step() applies it changes nothing.
+    const auto& events = m_recording.events;
+    for (std::size_t i = m_nextEvent; i < events.size() && events[i].step <= stepCount(); ++i)
+        if (isKnob(events[i].kind))
+            apply(events[i]);
 }
 
 void RecordedRun::live(const InputEvent& e)
@@ -280,8 +327,19 @@ void RecordedRun::live(const InputEvent& e)
             m_snapshots.pop_back();
     }
     auto& events = m_recording.events;
-    if (e.kind == InputKind::Move && !events.empty() && events.back().kind == InputKind::Move && events.back().step == e.step)
-        events.back() = e; // a move sets where the mouse is: the last one of a step is the one that counts
+    // A move sets where the mouse is, a knob its value: the last one of a step is the one that
+    // counts. A knob's turn does not depend on the mouse's events of its step, so it replaces
+    // the same knob's turn anywhere in the step; a move only the move just before it.
+    auto same = events.end();
+    for (auto it = events.end(); it != events.begin() && (it - 1)->step == e.step;) {
+        --it;
+        if (it->kind == e.kind && (isKnob(e.kind) || e.kind == InputKind::Move))
+            same = it;
+        if (!isKnob(e.kind) || same != events.end())
+            break;
+    }
+    if (same != events.end())
+        *same = e;
     else
         events.push_back(e);
     m_nextEvent = events.size();
@@ -319,12 +377,26 @@ void RecordedRun::releaseSpawn()
     m_sim->releaseSpawn();
 }
 
+bool RecordedRun::setStableSettings(const StableSettings& settings)
+{
+    if (!settings.valid())
+        return false;
+    const StableSettings now = m_sim->stableSettings();
+    if (settings.substeps != now.substeps)
+        live({stepCount(), InputKind::Substeps, Point(), double(settings.substeps)});
+    if (settings.edgeCompliance != now.edgeCompliance)
+        live({stepCount(), InputKind::EdgeCompliance, Point(), settings.edgeCompliance});
+    m_sim->setStableSettings(settings);
+    return true;
+}
+
 void RecordedRun::step()
 {
     const auto& events = m_recording.events;
     while (m_nextEvent < events.size() && events[m_nextEvent].step <= stepCount())
         apply(events[m_nextEvent++]);
     m_sim->step();
+    applyPendingKnobs(); // the knobs turned at the step reached are in force there
     const long now = stepCount();
     m_recording.steps = std::max(m_recording.steps, now);
     if (now % m_every == 0 && (m_snapshots.empty() || m_snapshots.back().sim->stepCount() < now))
@@ -353,6 +425,7 @@ Expected<void> RecordedRun::seek(long target)
     }
     while (stepCount() < target)
         step();
+    applyPendingKnobs();
     return {};
 }
 

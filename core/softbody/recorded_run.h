@@ -18,15 +18,19 @@
 namespace granota {
 
 /// Annex II's input: the left button's press, move and release, and the space bar's
-/// spawn (a new body at the mouse) and its release.
-enum class InputKind { Press, Move, Release, Spawn, ReleaseSpawn };
+/// spawn (a new body at the mouse) and its release; and the stable solver's knobs turned
+/// live (Simulation::setStableSettings): its substeps and its edges' compliance.
+enum class InputKind { Press, Move, Release, Spawn, ReleaseSpawn, Substeps, EdgeCompliance };
 
 struct InputEvent {
-    long step = 0;  ///< applied once the run has made this many steps, before the next
+    long step = 0;    ///< applied once the run has made this many steps, before the next
     InputKind kind = InputKind::Move;
-    Point at;       ///< scene px (Press, Move, Spawn)
-    bool operator==(const InputEvent& o) const { return step == o.step && kind == o.kind && at == o.at; }
+    Point at;         ///< scene px (Press, Move, Spawn)
+    double value = 0; ///< the knob's new value (Substeps, EdgeCompliance)
+    bool operator==(const InputEvent& o) const { return step == o.step && kind == o.kind && at == o.at && value == o.value; }
 };
+/// Whether an event turns a knob (it changes how the run steps, not where anything is).
+inline bool isKnob(InputKind k) { return k == InputKind::Substeps || k == InputKind::EdgeCompliance; }
 
 struct Recording {
     SceneSpec scene;
@@ -41,10 +45,12 @@ inline constexpr long kMaxRecordedEvents = 10000000;
 inline constexpr long kMaxRecordedSteps = 100000000;
 
 /// {"format": "granota-recording", "version": 1, "scene": {…scene file…}, "solver": …,
-///  "steps": N, "events": [[step, "press", x, y], [step, "release"], …]} (docs/file-formats.md).
+///  "steps": N, "events": [[step, "press", x, y], [step, "release"], [step, "substeps", n], …]}
+/// (docs/file-formats.md).
 Json recordingToJson(const Recording& recording);
 /// Rejects a malformed recording with a message naming what is wrong: the scene as a scene
-/// file is checked, events in step order, inside [0, steps], finite coordinates.
+/// file is checked, events in step order, inside [0, steps], finite coordinates, knobs in
+/// their ranges (StableSettings::valid).
 Expected<Recording> recordingFromJson(const Json& doc);
 /// The "events" array alone, as the recording file writes it, and read back with the same checks.
 Json eventsToJson(const std::vector<InputEvent>& events);
@@ -101,13 +107,19 @@ public:
     void release();
     void spawn(Point p);
     void releaseSpawn();
+    /// The stable solver's knobs, turned live and recorded as one event for each that
+    /// changes (a run of changes within one step keeps the last). Out of range: false, and
+    /// nothing is applied or recorded.
+    bool setStableSettings(const StableSettings& settings);
 
-    /// One step: first the recorded events of this step (while playing back), then the step.
+    /// One step: first the recorded events of this step (while playing back), then the step;
+    /// then the knobs recorded at the step reached, which were in force from there.
     void step();
     /// Steps until the recorded end (replays the whole recording from where it is).
     void runToEnd();
     /// Goes to `step`, in [0, recordedSteps()]: the state after that many steps, as the run
-    /// first went through it. Errors: a step outside that range.
+    /// first went through it, with the knobs turned at that step in force (as they were once
+    /// turned). Errors: a step outside that range.
     Expected<void> seek(long step);
     /// Snapshots held, and the steps between them (doubled when there would be more than
     /// kMaxSnapshots, so memory stays bounded on long runs).
@@ -127,6 +139,7 @@ private:
     };
     void live(const InputEvent& e);
     void apply(const InputEvent& e);
+    void applyPendingKnobs();
     void takeSnapshot();
     void thinSnapshots();
 

@@ -69,6 +69,20 @@ public:
 
     /// Substeps per step: the stable solver's n (XpbdParams::substeps), 1 for the seed.
     virtual int substeps() const { return 1; }
+    /// The stable solver's knobs in force: the scene's (SceneSpec::stable) until
+    /// setStableSettings changes them.
+    const StableSettings& stableSettings() const { return m_stable; }
+    /// Turns the knobs live (docs/solvers.md#knobs): the run goes on from its state with them
+    /// from the next step. The seed keeps them, to hand on, and steps as Annex II does.
+    /// Values out of range (StableSettings::valid): false, and nothing changes.
+    bool setStableSettings(const StableSettings& settings)
+    {
+        if (!settings.valid())
+            return false;
+        m_stable = settings;
+        applyStableSettings(settings);
+        return true;
+    }
     /// Every body's vertices and every chain's joints.
     std::size_t pointCount() const;
     /// The counted work of one step, pointCount() × substeps(): what the frog canvas budgets
@@ -117,14 +131,17 @@ public:
     virtual bool jointsKeptInFrame() const { return true; }
 
 protected:
-    Simulation(SceneSpec scene, SolverKind solver) : m_scene(std::move(scene)), m_solver(solver) {}
+    Simulation(SceneSpec scene, SolverKind solver) : m_scene(std::move(scene)), m_solver(solver), m_stable(m_scene.stable) {}
     Simulation(const Simulation&) = default;
     Simulation& operator=(const Simulation&) = delete;
     virtual void doStep() = 0;
+    /// The solver's part of setStableSettings (already checked): none for the seed.
+    virtual void applyStableSettings(const StableSettings&) {}
 
 private:
     SceneSpec m_scene;
     SolverKind m_solver;
+    StableSettings m_stable;
     long m_steps = 0;
 };
 

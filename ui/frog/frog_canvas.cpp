@@ -430,11 +430,26 @@ bool FrogCanvas::send(InputKind kind, Point at)
         case InputKind::Release: run->release(); break;
         case InputKind::Spawn: run->spawn(at); break;
         case InputKind::ReleaseSpawn: run->releaseSpawn(); break;
+        case InputKind::Substeps:
+        case InputKind::EdgeCompliance: break; // setStableSettings
         }
         if (run == m_run.get())
             held = h;
     }
     return held;
+}
+
+bool FrogCanvas::setStableSettings(const StableSettings& settings)
+{
+    if (!m_run || !m_run->setStableSettings(settings))
+        return false;
+    if (m_ghost) // the seed keeps them and steps as before; a stable ghost takes them
+        m_ghost->setStableSettings(settings);
+    updateWork();
+    refreshTexts();
+    update();
+    emit timelineChanged(); // the recording has a new end
+    return true;
 }
 
 void FrogCanvas::rebuildGhost()

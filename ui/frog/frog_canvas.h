@@ -118,6 +118,10 @@ public:
     /// the run went through there. The plots keep their samples up to it. Any grab is let go
     /// in the canvas (the recorded one goes on as recorded).
     bool seek(long step);
+    /// Turns the stable solver's knobs live (docs/solvers.md#knobs), recorded at the present
+    /// step and given to the ghost too; from a step gone back to it branches, as a grab does.
+    /// False for values out of range (nothing changes) or without a simulation.
+    bool setStableSettings(const StableSettings& settings);
     /// Replaces the recording by `events` over `steps` steps (a document's run) and goes to
     /// step 0. False with a message for events out of order or outside [0, steps].
     bool setRecording(std::vector<InputEvent> events, long steps, QString* error);

@@ -436,7 +436,7 @@ bool FrogTab::switchScene(const QString& name, QString* error)
     }
     // The seed never had collisions (§5.2 is future work): those scenes start on the stable
     // solver, as in granota-cli; the solver box switches back to compare.
-    spec->stable = m_scene.stable; // the solver's knobs stay with the solver
+    spec->stable = knobsInForce(); // the solver's knobs stay with the solver
     SolverKind solver = m_solver;
     const bool collisions = spec->has("collisions") || spec->has("obstacles");
     if (collisions)
@@ -449,9 +449,22 @@ bool FrogTab::switchScene(const QString& name, QString* error)
     return true;
 }
 
+StableSettings FrogTab::knobsInForce() const
+{
+    const Simulation* sim = m_canvas->simulation();
+    return sim ? sim->stableSettings() : m_scene.stable;
+}
+
+SceneSpec FrogTab::sceneWithKnobsInForce() const
+{
+    SceneSpec spec = m_scene;
+    spec.stable = knobsInForce();
+    return spec;
+}
+
 bool FrogTab::setSolver(SolverKind solver, QString* error)
 {
-    if (!rebuild(m_scene, solver, error))
+    if (!rebuild(sceneWithKnobsInForce(), solver, error))
         return false;
     m_note->hide();
     showScene();
@@ -509,7 +522,7 @@ void FrogTab::solverChosen(int index)
 void FrogTab::reset()
 {
     QString error;
-    if (!rebuild(m_scene, m_solver, &error))
+    if (!rebuild(sceneWithKnobsInForce(), m_solver, &error)) // a new run with the knobs as they are
         showRefusal(error);
     else
         emit statusMessage(tr("The scene starts again."));
@@ -741,11 +754,13 @@ void FrogTab::retranslate()
     m_stableBox->setTitle(tr("Stable solver"));
     m_substepsLabel->setText(tr("Substeps n"));
     m_substeps->setToolTip(tr("Substeps per step, 1 to 32: each step is cut into n substeps, and the constraints' error "
-                              "falls like 1/n² at a cost proportional to n. The scene starts again."));
+                              "falls like 1/n² at a cost proportional to n. The run goes on with it from the next step, and the "
+                              "recording keeps the change."));
     m_complianceLabel->setText(tr("Edge compliance α"));
     m_compliance->setToolTip(tr("How soft the body's edges are, in step² per unit of mass and per px of rest length: "
                                 "0 is rigid, larger is softer. Unlike the seed's factors it does not depend on the "
-                                "substeps or the number of vertices. The scene starts again."));
+                                "substeps or the number of vertices. The run goes on with it from the next step, and the "
+                                "recording keeps the change."));
     m_softBodyReport->setText(tr("Error against substeps…"));
     m_softBodyReport->setToolTip(tr("The soft-body report below the tab: XPBD's constraint error against the substeps "
                                     "and their cost (View ▸ Error against run time)."));
@@ -837,6 +852,9 @@ void FrogTab::updateTimeline()
         if (!m_timeline->isSliderDown())
             m_timeline->setValue(int(std::min<long>(now, top)));
     }
+    // A knob turned at a step the run replays or goes back past: the boxes show it.
+    if (m_stableBox && knobsInForce() != m_knobsShown)
+        showStableSettings();
     if (m_mark > end) // the run was cut off before the mark
         m_mark = -1;
     if (m_markButton->isChecked() != (m_mark >= 0)) {
@@ -867,10 +885,11 @@ void FrogTab::updateTimeline()
 
 bool FrogTab::applyStableSettings(const StableSettings& settings, QString* error)
 {
-    SceneSpec spec = m_scene;
-    spec.stable = settings;
-    if (!rebuild(spec, m_solver, error))
+    // Live: the run goes on from where it is, and records the change at its step.
+    if (!m_canvas->setStableSettings(settings)) {
+        setError(error, tr("The stable solver's knobs were refused: substeps from 1 to 32, compliance from 0 to 1."));
         return false;
+    }
     showStableSettings();
     emit documentChanged();
     return true;
@@ -878,13 +897,13 @@ bool FrogTab::applyStableSettings(const StableSettings& settings, QString* error
 
 bool FrogTab::editStableSetting(const QString& key, double value, QString* error)
 {
-    SceneSpec changed = m_scene;
+    SceneSpec changed = sceneWithKnobsInForce();
     const auto ok = applySetting(changed, key.toStdString() + "=" + formatDouble(value));
     if (!ok) {
         setError(error, tr("This value was refused: %1").arg(fromStd(ok.error().message)));
         return false;
     }
-    const StableSettings before = m_scene.stable, after = changed.stable;
+    const StableSettings before = knobsInForce(), after = changed.stable;
     if (after == before)
         return true;
     if (!applyStableSettings(after, error))
@@ -898,8 +917,10 @@ bool FrogTab::editStableSetting(const QString& key, double value, QString* error
 void FrogTab::showStableSettings()
 {
     const QSignalBlocker b1(m_substeps), b2(m_compliance);
-    m_substeps->setValue(m_scene.stable.substeps);
-    m_compliance->setValue(m_scene.stable.edgeCompliance);
+    const StableSettings knobs = knobsInForce();
+    m_knobsShown = knobs;
+    m_substeps->setValue(knobs.substeps);
+    m_compliance->setValue(knobs.edgeCompliance);
     m_stableBox->setVisible(m_solver == SolverKind::Stable);
     // What α means for this scene: the first edge of the first body, a vertex of mass 1.
     const Simulation* sim = m_canvas->simulation();
@@ -908,7 +929,7 @@ void FrogTab::showStableSettings()
         std::vector<Point> v;
         sim->bodyVertices(0, v);
         const double length = v.size() >= 2 ? std::hypot(v[1].x - v[0].x, v[1].y - v[0].y) : 0;
-        const double period = edgeRingPeriodSteps(m_scene.stable.edgeCompliance, length, 1);
+        const double period = edgeRingPeriodSteps(knobs.edgeCompliance, length, 1);
         if (std::isfinite(period))
             note = tr("An edge of %1 px rings with a period of %2 steps (%3 Hz at 60 steps a second); 0 makes the edges rigid.")
                        .arg(displayFixed(length, 0), displayFixed(period, 1), displayFixed(kStepsPerSecond / period, 2));
@@ -990,6 +1011,7 @@ QJsonObject FrogTab::saveState() const
     state.insert(QStringLiteral("bezier_outline"), m_fit->isChecked() ? QStringLiteral("fit") : QStringLiteral("precomputed"));
     state.insert(QStringLiteral("paused"), !m_canvas->running());
     state.insert(QStringLiteral("speed"), m_canvas->speed());
+    // The knobs the run started with; the recording's events turn them on the way.
     QJsonObject stable;
     stable.insert(QStringLiteral("substeps"), m_scene.stable.substeps);
     stable.insert(QStringLiteral("edge_compliance"), m_scene.stable.edgeCompliance);

@@ -116,6 +116,10 @@ private:
     void updateTimeline();
     void showExplosion(bool blownUp);
     bool applyStableSettings(const StableSettings& settings, QString* error);
+    /// The stable solver's knobs as the run has them now (turned live since its start).
+    StableSettings knobsInForce() const;
+    /// The scene with them: what Reset, a stage or a solver starts the next run with.
+    SceneSpec sceneWithKnobsInForce() const;
     void showStableSettings();
     void timelineMoved(int step);
     void stepOnce();
@@ -141,6 +145,7 @@ private:
     QGroupBox* m_stableBox = nullptr;
     QLabel *m_substepsLabel = nullptr, *m_complianceLabel = nullptr, *m_stableNote = nullptr;
     QSpinBox* m_substeps = nullptr;
+    StableSettings m_knobsShown; ///< what the knob boxes show (showStableSettings)
     QDoubleSpinBox* m_compliance = nullptr;
     QPushButton* m_softBodyReport = nullptr;
     QWidget* m_explosion = nullptr; ///< "the body has blown up", with Reset and the stable solver

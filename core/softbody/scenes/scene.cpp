@@ -67,7 +67,7 @@ Expected<void> setStableSetting(SceneSpec& s, const std::string& key, const Json
     }
     if (key == "edge_compliance") {
         const auto a = v.asNumber();
-        if (!a || !(*a >= 0 && *a <= StableSettings::kMaxEdgeCompliance))
+        if (!a || !StableSettings::validEdgeCompliance(*a))
             return bad(s.name, "edge_compliance must be a number from 0 (rigid edges) to " +
                                    formatDouble(StableSettings::kMaxEdgeCompliance));
         s.stable.edgeCompliance = *a;

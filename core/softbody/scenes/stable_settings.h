@@ -24,6 +24,11 @@ struct StableSettings {
     static constexpr int kMaxSubsteps = 32;
     static constexpr double kMaxEdgeCompliance = 1;
 
+    /// A whole number of substeps in [kMinSubsteps, kMaxSubsteps]; a compliance in [0, kMaxEdgeCompliance].
+    static bool validSubsteps(double n) { return n >= kMinSubsteps && n <= kMaxSubsteps && std::floor(n) == n; }
+    static bool validEdgeCompliance(double a) { return a >= 0 && a <= kMaxEdgeCompliance; }
+    bool valid() const { return validSubsteps(substeps) && validEdgeCompliance(edgeCompliance); }
+
     bool isDefault() const { return *this == StableSettings{}; }
     bool operator==(const StableSettings& o) const { return substeps == o.substeps && edgeCompliance == o.edgeCompliance; }
     bool operator!=(const StableSettings& o) const { return !(*this == o); }

@@ -9,6 +9,7 @@
 #include "core/softbody/xpbd/xpbd_world.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace granota {
@@ -109,6 +110,16 @@ public:
     }
 
     int substeps() const override { return m_world.params().substeps; }
+    void applyStableSettings(const StableSettings& s) override
+    {
+        XpbdParams p = m_world.params();
+        p.substeps = s.substeps;
+        if (scene().has("springs")) // without springs the edges stay unconstrained (paramsOf)
+            p.edgeCompliance = s.edgeCompliance;
+        const auto ok = m_world.setParams(p);
+        assert(ok);
+        (void)ok;
+    }
     int bodyCount() const override { return m_world.bodyCount(); }
     // Copied into the caller's vector (its capacity reused): no allocation per frame.
     void bodyVertices(int i, std::vector<Point>& out) const override { copyRange(m_world.bodyRange(i), out); }
