@@ -5,6 +5,7 @@
 #include "core/softbody/simulation.h"
 #include "core/softbody/simulation_trace.h"
 #include "ui/frog/frog_art.h"
+#include "ui/common/number_text.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_parameters_panel.h"
 #include "ui/frog/frog_plot_panel.h"
@@ -545,6 +546,115 @@ private slots:
         canvas->simulation()->broadPhasePairs(pairs);
         QVERIFY(pairs.empty());
         QVERIFY(canvas->textLines().join('\n').contains("the seed has no collisions"));
+    }
+
+    // Issue 16, measuring: the protractor draws each limited joint's angle over its range
+    // and counts the joints held at a limit; the ruler, dragged with the right button or
+    // Ctrl and the left, or placed with L and the arrows, measures in scene px, grabs
+    // nothing and records no press; a click or Esc clears it.
+    void protractorAndRuler()
+    {
+        QVERIFY(tab().setScene("pendulum-limits", nullptr));
+        QVERIFY(tab().setSolver(SolverKind::Seed, nullptr));
+        tab().findChild<QPushButton*>("frogPause")->setChecked(true);
+        QCoreApplication::processEvents();
+        FrogCanvas* canvas = tab().canvas();
+        auto* box = tab().findChild<QCheckBox*>("frogOverlay9");
+        QVERIFY(box);
+        QCOMPARE(box->text(), QStringLiteral("Protractor"));
+        const auto redPixels = [canvas] {
+            QImage image(canvas->size(), QImage::Format_ARGB32_Premultiplied);
+            QPainter painter(&image);
+            canvas->render(painter, QRectF(image.rect()));
+            painter.end();
+            int n = 0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x) {
+                    const QColor c = image.pixelColor(x, y);
+                    n += std::abs(c.red() - 0xc6) + std::abs(c.green() - 0x28) + std::abs(c.blue() - 0x28) < 40;
+                }
+            return n;
+        };
+        const int redBefore = redPixels();
+        box->click();
+        QVERIFY(canvas->overlays().protractor);
+        const auto held = [canvas] {
+            int n = 0;
+            for (const LinkAngleReading& a : canvas->linkAngles(0))
+                n += a.atLimit;
+            return n;
+        };
+        // Hanging straight down, the shoulder sits on its limit of 0 (§4.15: [0, π]).
+        QCOMPARE(canvas->linkAngles(0).size(), std::size_t(2));
+        QVERIFY(canvas->linkAngles(0)[0].atLimit);
+        QVERIFY(canvas->textLines().join('\n').contains(QStringLiteral("Protractor: %1 of 2 joints held at a limit").arg(held())));
+        QVERIFY2(redPixels() > redBefore + 10, "the joint held at its limit is not drawn red");
+        // Swung off the limit, the count follows.
+        for (int i = 0; i < 40; ++i) {
+            QTest::mouseMove(canvas, canvas->toWidget(Point(640 - 8 * i, 200)).toPoint());
+            canvas->step();
+        }
+        QVERIFY(canvas->textLines().join('\n').contains(QStringLiteral("Protractor: %1 of 2 joints held at a limit").arg(held())));
+        QVERIFY(tab().setScene("pendulum-chain", nullptr));
+        QVERIFY(canvas->textLines().join('\n').contains("Protractor: no joint of this scene has angle limits"));
+
+        // The ruler, with the right button, on the frog.
+        QVERIFY(tab().setScene("frog", nullptr));
+        QCoreApplication::processEvents();
+        const auto presses = [canvas] {
+            const auto& events = canvas->run()->recording().events;
+            return std::count_if(events.begin(), events.end(), [](const InputEvent& e) { return e.kind == InputKind::Press; });
+        };
+        const QPoint a = canvas->toWidget(centroid(*canvas->simulation())).toPoint(), b = a + QPoint(60, -80);
+        QTest::mousePress(canvas, Qt::RightButton, Qt::NoModifier, a);
+        QTest::mouseMove(canvas, b);
+        QTest::mouseRelease(canvas, Qt::RightButton, Qt::NoModifier, b);
+        QVERIFY(canvas->ruler());
+        const Point from = canvas->toScene(a), to = canvas->toScene(b);
+        QCOMPARE(canvas->ruler()->first, from);
+        QCOMPARE(canvas->ruler()->second, to);
+        QVERIFY2(canvas->rulerText().startsWith(displayFixed(std::hypot(to.x - from.x, to.y - from.y), 1) + " px"),
+                 qPrintable(canvas->rulerText()));
+        QVERIFY(!canvas->simulation()->grabbing()); // inside the body, and nothing grabbed
+        QCOMPARE(presses(), 0);
+        QTest::mouseClick(canvas, Qt::RightButton, Qt::NoModifier, b); // a click clears it
+        QVERIFY(!canvas->ruler());
+        QTest::mousePress(canvas, Qt::LeftButton, Qt::ControlModifier, a);
+        QTest::mouseMove(canvas, b);
+        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::ControlModifier, b);
+        QVERIFY(canvas->ruler());
+        QVERIFY(!canvas->simulation()->grabbing());
+        QCOMPARE(presses(), 0);
+        // From the keyboard: L at the cursor, three steps right, L; Esc clears it.
+        canvas->setFocus();
+        QTest::keyClick(canvas, Qt::Key_Escape);
+        QVERIFY(!canvas->ruler());
+        QTest::keyClick(canvas, Qt::Key_L);
+        for (int i = 0; i < 3; ++i)
+            QTest::keyClick(canvas, Qt::Key_Right);
+        QTest::keyClick(canvas, Qt::Key_L);
+        QVERIFY(canvas->ruler());
+        QCOMPARE(canvas->ruler()->second.x - canvas->ruler()->first.x, 3 * FrogCanvas::kKeyboardStep);
+        QCOMPARE(canvas->rulerText(), QStringLiteral("%1 px (Δx %1, Δy %2)").arg(displayFixed(30, 1), displayFixed(0, 1)));
+        QTest::keyClick(canvas, Qt::Key_Right); // fixed: the cursor moves alone
+        QCOMPARE(canvas->ruler()->second.x - canvas->ruler()->first.x, 3 * FrogCanvas::kKeyboardStep);
+        // A document keeps the measure shown; a bad one is refused and changes nothing.
+        const auto kept = *canvas->ruler();
+        const QJsonObject saved = tab().saveState();
+        QCOMPARE(saved["ruler"].toArray().size(), 4);
+        QTest::keyClick(canvas, Qt::Key_Escape);
+        QVERIFY(!canvas->ruler());
+        QVERIFY(tab().loadState(saved, nullptr));
+        QVERIFY(canvas->ruler() && *canvas->ruler() == kept);
+        QJsonObject bad = saved;
+        bad["ruler"] = QJsonArray{1, 2, 3};
+        QString error;
+        QVERIFY(!tab().loadState(bad, &error));
+        QVERIFY2(error.contains("ruler"), qPrintable(error));
+        QVERIFY(canvas->ruler() && *canvas->ruler() == kept);
+        canvas->setFocus();
+        QTest::keyClick(canvas, Qt::Key_Escape);
+        QVERIFY(!canvas->ruler());
     }
 
     // Issue 16: the stable solver's knobs, shown while it runs, turn live: the run goes on

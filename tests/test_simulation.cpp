@@ -2,6 +2,7 @@
 // frame for 1000 steps, deterministic, the seed trace through the facade, grabs that move
 // bodies, stable area at rest, and the stiff and extreme settings of docs/extreme-cases.md.
 #include "core/base/math_constants.h"
+#include "core/softbody/link_angles.h"
 #include "core/softbody/polygon_geometry.h"
 #include "core/softbody/seed/seed_trace.h"
 #include "core/softbody/simulation.h"
@@ -213,6 +214,65 @@ private slots:
 
     // Issue 16, the stable solver's knobs (docs/solvers.md#knobs): substeps 1–32 and the
     // edges' compliance, on any scene, by --set and in the scene file; the seed ignores them.
+    // Issue 16, the protractor: each link read as its solver measures it, against the limits
+    // it keeps it in. The pendulum's nail swung round: the links reach their limits at some
+    // steps and swing free at others, and never pass them by more than the solver's slack
+    // (the seed clamps exactly; the stable solver's limits are constraints solved in passes).
+    void linkAnglesAgainstTheirLimits_data()
+    {
+        QTest::addColumn<SolverKind>("solver");
+        QTest::newRow("seed") << SolverKind::Seed;
+        QTest::newRow("stable") << SolverKind::Stable;
+    }
+    void linkAnglesAgainstTheirLimits()
+    {
+        QFETCH(SolverKind, solver);
+        auto sim = make("pendulum-limits", solver);
+        const SceneSpec& s = sim->scene();
+        std::vector<Point> joints;
+        std::vector<LinkAngleReading> r;
+        readLinkAngles(*sim, 0, joints, r);
+        QCOMPARE(r.size(), std::size_t(2));
+        QVERIFY(r[0].limit && r[1].limit);
+        QVERIFY((*r[0].limit == LinkLimit{s.chainShoulderMin, s.chainShoulderMax, false}));
+        // Annex II's Pota measures its elbow from straight down; the stable chain from the link before.
+        QVERIFY((*r[1].limit == LinkLimit{s.chainElbowMin, s.chainElbowMax, solver == SolverKind::Stable}));
+        const double slack = solver == SolverKind::Seed ? 1e-4 : 0.05;
+        int atLimit = 0, free = 0;
+        for (int i = 0; i < 600; ++i) {
+            sim->move(Point(640 + 300 * std::sin(i / 9.0), 200 + 60 * std::cos(i / 5.0)));
+            sim->step();
+            readLinkAngles(*sim, 0, joints, r);
+            QCOMPARE(joints.size(), std::size_t(3));
+            for (std::size_t k = 0; k < r.size(); ++k) {
+                const LinkAngleReading& a = r[k];
+                QVERIFY2(a.angle >= a.limit->min - slack && a.angle <= a.limit->max + slack,
+                         qPrintable(QStringLiteral("step %1 link %2: %3").arg(i).arg(k).arg(a.angle)));
+                // The reading is the joints' own angle, measured as the limit says.
+                const double world = std::atan2(-(joints[k + 1].x - joints[k].x), joints[k + 1].y - joints[k].y);
+                QVERIFY(std::abs(std::remainder(a.angle + a.reference - world, 2 * kPi)) < 1e-9);
+                (a.atLimit ? atLimit : free) += 1;
+            }
+        }
+        QVERIFY2(atLimit > 20 && free > 20, qPrintable(QStringLiteral("%1 at a limit, %2 free").arg(atLimit).arg(free)));
+        // The frog's legs: two links each, the limits of FrogParams, both from straight down;
+        // an unlimited scene reads angles and no limits.
+        auto frog = make("frog", solver);
+        QCOMPARE(frog->chainCount(), 4);
+        for (int leg = 0; leg < 4; ++leg) {
+            readLinkAngles(*frog, leg, joints, r);
+            const LegParams& l = frog->scene().params.legs[std::size_t(leg)];
+            QCOMPARE(r.size(), std::size_t(2));
+            QVERIFY((*r[0].limit == LinkLimit{l.shoulderMin, l.shoulderMax, false}));
+            QVERIFY((*r[1].limit == LinkLimit{l.elbowMin, l.elbowMax, false}));
+        }
+        auto loose = make("pendulum-chain", solver);
+        readLinkAngles(*loose, 0, joints, r);
+        QVERIFY(!r.empty());
+        for (const LinkAngleReading& a : r)
+            QVERIFY(!a.limit && !a.atLimit);
+    }
+
     void stableKnobs()
     {
         auto spec = loadScene("frog");

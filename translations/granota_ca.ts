@@ -2279,6 +2279,29 @@ a cada canvi alentiria la finestra.</translation>
             <source>Press inside the body to grab it.</source>
             <translation>Premeu dins del cos per agafar-lo.</translation>
         </message>
+        <message>
+            <source>Ruler: %1. Esc or a right click clears it.</source>
+            <translation>Regle: %1. Esc o un clic amb el botó dret l'esborra.</translation>
+        </message>
+        <message>
+            <source>%1 px (Δx %2, Δy %3)</source>
+            <translation>%1 px (Δx %2, Δy %3)</translation>
+        </message>
+        <message>
+            <source>Protractor: no joint of this scene has angle limits</source>
+            <translation>Transportador: cap articulació d'aquesta escena no té límits d'angle</translation>
+        </message>
+        <message numerus="yes">
+            <source>Protractor: %n of %1 joints held at a limit (red)</source>
+            <translation>
+                <numerusform>Transportador: %n de %1 articulacions aturades en un límit (en vermell)</numerusform>
+                <numerusform>Transportador: %n de %1 articulacions aturades en un límit (en vermell)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Ruler: move the cursor with the arrows to the other end, then L.</source>
+            <translation>Regle: porteu el cursor amb les fletxes a l'altre extrem i premeu L.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::FrogParametersPanel</name>
@@ -3210,6 +3233,18 @@ a cada canvi alentiria la finestra.</translation>
         <message>
             <source>The stable solver's knobs were refused: substeps from 1 to 32, compliance from 0 to 1.</source>
             <translation>S'han refusat els valors del mètode estable: subpassos d'1 a 32, flexibilitat de 0 a 1.</translation>
+        </message>
+        <message>
+            <source>Protractor</source>
+            <translation>Transportador</translation>
+        </message>
+        <message>
+            <source>§4.15: each joint's angle, in degrees, over the range its limits allow (shaded); red when the joint is held at a limit.</source>
+            <translation>§4.15: l'angle de cada articulació, en graus, sobre l'interval que permeten els seus límits (ombrejat); en vermell quan l'articulació és aturada en un límit.</translation>
+        </message>
+        <message>
+            <source>The ruler must be four numbers: x and y of each end, in px.</source>
+            <translation>El regle han de ser quatre nombres: x i y de cada extrem, en px.</translation>
         </message>
     </context>
     <context>
@@ -4324,8 +4359,8 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
             <translation>Espai</translation>
         </message>
         <message>
-            <source>On the canvas: let go</source>
-            <translation>Al llenç: el deixa anar</translation>
+            <source>On the canvas: let go, or clear the ruler</source>
+            <translation>Al llenç: el deixa anar, o esborra el regle</translation>
         </message>
         <message>
             <source>Esc</source>
@@ -4406,6 +4441,22 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
         <message>
             <source>, </source>
             <translation>, </translation>
+        </message>
+        <message>
+            <source>L</source>
+            <translation>L</translation>
+        </message>
+        <message>
+            <source>On the canvas: a ruler from the cursor; move it with the arrows, L again to fix it</source>
+            <translation>Al llenç: un regle des del cursor; les fletxes el mouen i L un altre cop el fixa</translation>
+        </message>
+        <message>
+            <source>Right drag, or Ctrl+drag</source>
+            <translation>Arrossegament amb el botó dret, o Ctrl+arrossegament</translation>
+        </message>
+        <message>
+            <source>On the canvas: measure in px with the ruler</source>
+            <translation>Al llenç: mesura en px amb el regle</translation>
         </message>
     </context>
     <context>

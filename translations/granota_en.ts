@@ -2279,6 +2279,29 @@ on each change would slow the window.</translation>
             <source>Press inside the body to grab it.</source>
             <translation>Press inside the body to grab it.</translation>
         </message>
+        <message>
+            <source>Ruler: %1. Esc or a right click clears it.</source>
+            <translation>Ruler: %1. Esc or a right click clears it.</translation>
+        </message>
+        <message>
+            <source>%1 px (Δx %2, Δy %3)</source>
+            <translation>%1 px (Δx %2, Δy %3)</translation>
+        </message>
+        <message>
+            <source>Protractor: no joint of this scene has angle limits</source>
+            <translation>Protractor: no joint of this scene has angle limits</translation>
+        </message>
+        <message numerus="yes">
+            <source>Protractor: %n of %1 joints held at a limit (red)</source>
+            <translation>
+                <numerusform>Protractor: %n of %1 joints held at a limit (red)</numerusform>
+                <numerusform>Protractor: %n of %1 joints held at a limit (red)</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Ruler: move the cursor with the arrows to the other end, then L.</source>
+            <translation>Ruler: move the cursor with the arrows to the other end, then L.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::FrogParametersPanel</name>
@@ -3210,6 +3233,18 @@ on each change would slow the window.</translation>
         <message>
             <source>The stable solver's knobs were refused: substeps from 1 to 32, compliance from 0 to 1.</source>
             <translation>The stable solver's knobs were refused: substeps from 1 to 32, compliance from 0 to 1.</translation>
+        </message>
+        <message>
+            <source>Protractor</source>
+            <translation>Protractor</translation>
+        </message>
+        <message>
+            <source>§4.15: each joint's angle, in degrees, over the range its limits allow (shaded); red when the joint is held at a limit.</source>
+            <translation>§4.15: each joint's angle, in degrees, over the range its limits allow (shaded); red when the joint is held at a limit.</translation>
+        </message>
+        <message>
+            <source>The ruler must be four numbers: x and y of each end, in px.</source>
+            <translation>The ruler must be four numbers: x and y of each end, in px.</translation>
         </message>
     </context>
     <context>
@@ -4324,8 +4359,8 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
             <translation>Space</translation>
         </message>
         <message>
-            <source>On the canvas: let go</source>
-            <translation>On the canvas: let go</translation>
+            <source>On the canvas: let go, or clear the ruler</source>
+            <translation>On the canvas: let go, or clear the ruler</translation>
         </message>
         <message>
             <source>Esc</source>
@@ -4406,6 +4441,22 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
         <message>
             <source>, </source>
             <translation>, </translation>
+        </message>
+        <message>
+            <source>L</source>
+            <translation>L</translation>
+        </message>
+        <message>
+            <source>On the canvas: a ruler from the cursor; move it with the arrows, L again to fix it</source>
+            <translation>On the canvas: a ruler from the cursor; move it with the arrows, L again to fix it</translation>
+        </message>
+        <message>
+            <source>Right drag, or Ctrl+drag</source>
+            <translation>Right drag, or Ctrl+drag</translation>
+        </message>
+        <message>
+            <source>On the canvas: measure in px with the ruler</source>
+            <translation>On the canvas: measure in px with the ruler</translation>
         </message>
     </context>
     <context>

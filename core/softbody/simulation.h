@@ -43,6 +43,15 @@ struct Readouts {
     int contacts = 0;
 };
 
+/// §4.15's limit of one link of a chain: its angle (seed_angle.h) kept in [min, max], rad,
+/// measured from straight down the screen or, `fromParent`, from the link before it.
+struct LinkLimit {
+    double min = 0;
+    double max = 0;
+    bool fromParent = false;
+    bool operator==(const LinkLimit& o) const { return min == o.min && max == o.max && fromParent == o.fromParent; }
+};
+
 /// Steps per second: one step is one frame of Processing's default 60 frames per second.
 inline constexpr int kStepsPerSecond = 60;
 
@@ -100,6 +109,10 @@ public:
     /// or the pendulum; each from its fixed end (shoulder, clau) outwards.
     virtual int chainCount() const { return 0; }
     virtual void chainJoints(int, std::vector<Point>&) const {}
+    /// The limits the solver keeps chain i's links in, first link first, as it measures them
+    /// (the seed's pendulum measures its second link from straight down, the stable solver's
+    /// from the first); empty for a chain without limits.
+    virtual void chainLimits(int, std::vector<LinkLimit>& out) const { out.clear(); }
     /// The obstacles of §5.2.1 as the scene gives them.
     const std::vector<ObstacleSpec>& obstacles() const { return m_scene.obstacles; }
 

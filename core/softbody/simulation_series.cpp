@@ -7,18 +7,6 @@
 
 namespace granota {
 
-double linkAngle(Point from, Point to) { return std::atan2(-(to.x - from.x), to.y - from.y); }
-
-namespace {
-
-double wrapAngle(double a)
-{
-    a = std::remainder(a, 2 * kPi); // [−π, π]
-    return a <= -kPi ? a + 2 * kPi : a;
-}
-
-} // namespace
-
 SeriesRecorder::SeriesRecorder(std::size_t capacity) : m_capacity(capacity) {}
 
 void SeriesRecorder::clear()

@@ -6,6 +6,7 @@
 /// panel draws these samples and exports them; `granota-cli simulate --series F.csv`
 /// writes the same columns (docs/plots-over-time.md).
 
+#include "core/softbody/seed_angle.h" // linkAngle
 #include "core/softbody/simulation.h"
 
 #include <cstddef>
@@ -38,10 +39,6 @@ struct SeriesSample {
     /// dθ/dt of each link, rad/step, from the sample before (empty in the first sample).
     std::vector<double> angularVelocities;
 };
-
-/// The angle of the link from `from` to `to`: 0 straight down the screen, growing towards
-/// −x, in (−π, π] (Annex II: a joint at from + (−sin θ, cos θ)·L).
-double linkAngle(Point from, Point to);
 
 /// Records the samples of one run, from the state it is first given.
 class SeriesRecorder {

@@ -46,6 +46,9 @@ const QColor kVelocityColour(0x1f, 0x5f, 0xd8);
 const QColor kGhostColour(0x5a, 0x2d, 0x82);
 const QColor kTrailColour(0xe0, 0x6c, 0x00);
 const QColor kPairColour(0xc2, 0x18, 0x5b);
+const QColor kProtractorColour(0x1e, 0x5a, 0x9c);
+const QColor kAtLimitColour(0xc6, 0x28, 0x28);
+const QColor kRulerColour(0x21, 0x21, 0x21);
 
 /// Samples per Catmull-Rom segment: smooth for the seed's 10 vertices, few for 200.
 int samplesPerSegment(std::size_t vertices)
@@ -402,6 +405,114 @@ void FrogCanvas::drawPairs(QPainter& p)
     p.restore();
 }
 
+std::vector<LinkAngleReading> FrogCanvas::linkAngles(int chain) const
+{
+    std::vector<Point> joints;
+    std::vector<LinkAngleReading> out;
+    if (sim() && chain >= 0 && chain < sim()->chainCount())
+        readLinkAngles(*sim(), chain, joints, out);
+    return out;
+}
+
+void FrogCanvas::drawProtractor(QPainter& p, double pixel)
+{
+    // At each limited joint: the range its limits allow, shaded, the link's angle in degrees
+    // beyond its tip, red when the joint is held at a limit (§4.15).
+    const double k = m_style.scale;
+    const QTransform world = p.worldTransform();
+    for (int c = 0; c < sim()->chainCount(); ++c) {
+        readLinkAngles(*sim(), c, m_joints, m_angles);
+        for (std::size_t l = 0; l < m_angles.size(); ++l) {
+            const LinkAngleReading& a = m_angles[l];
+            if (!a.limit)
+                continue;
+            const Point at = m_joints[l];
+            const Point d = m_joints[l + 1] - at;
+            const double length = std::sqrt(d.x * d.x + d.y * d.y);
+            const double radius = std::clamp(0.6 * length, 14 * k * pixel, 44 * k * pixel);
+            const double span = a.limit->max - a.limit->min;
+            const int n = std::max(4, int(std::ceil(span / (kPi / 36))));
+            QPolygonF sector;
+            sector << q(at);
+            for (int i = 0; i <= n; ++i)
+                sector << q(at + radius * seedDirection(a.reference + a.limit->min + span * i / n));
+            const QColor colour = a.atLimit ? kAtLimitColour : kProtractorColour;
+            QColor fill = colour;
+            fill.setAlpha(40);
+            QPen edge(colour, 1.2 * k);
+            edge.setCosmetic(true);
+            p.setPen(edge);
+            p.setBrush(fill);
+            p.drawPolygon(sector);
+            // The degrees, just past the arc along the link, on a pale box.
+            const QString text = displayFixed(a.angle * 180 / kPi, 0) + QStringLiteral("°");
+            const QPointF label = world.map(q(at + (radius + 12 * k * pixel) * seedDirection(a.reference + a.angle)));
+            p.save();
+            p.resetTransform();
+            p.setFont(m_numberFont);
+            const QFontMetricsF fm(m_numberFont);
+            QRectF box(0, 0, fm.horizontalAdvance(text) + 6 * k, fm.height() + 2 * k);
+            box.moveCenter(label);
+            p.setPen(Qt::NoPen);
+            p.setBrush(QColor(255, 255, 255, 210));
+            p.drawRoundedRect(box, 3 * k, 3 * k);
+            p.setPen(colour);
+            p.drawText(box, Qt::AlignCenter, text);
+            p.restore();
+        }
+    }
+}
+
+void FrogCanvas::setRuler(const std::optional<std::pair<Point, Point>>& ruler)
+{
+    m_ruler = ruler;
+    m_rulerDragging = m_rulerPlacing = false;
+    update();
+}
+
+QString FrogCanvas::rulerText() const
+{
+    if (!m_ruler)
+        return {};
+    const Point d = m_ruler->second - m_ruler->first;
+    return tr("%1 px (Δx %2, Δy %3)")
+        .arg(displayFixed(std::sqrt(d.x * d.x + d.y * d.y), 1), displayFixed(d.x, 1), displayFixed(d.y, 1));
+}
+
+void FrogCanvas::drawRuler(QPainter& p, double pixel)
+{
+    const double k = m_style.scale;
+    const Point a = m_ruler->first, b = m_ruler->second;
+    const Point d = b - a;
+    const double length = std::sqrt(d.x * d.x + d.y * d.y);
+    const Point across = length > 0 ? Point(-d.y / length, d.x / length) : Point(0, 1);
+    const double tick = 7 * k * pixel;
+    p.save();
+    for (const auto& [colour, width] : {std::pair{QColor(Qt::white), 4.0 * k}, std::pair{kRulerColour, 1.6 * k}}) {
+        QPen pen(colour, width, Qt::SolidLine, Qt::FlatCap);
+        pen.setCosmetic(true);
+        p.setPen(pen);
+        p.drawLine(q(a), q(b));
+        for (const Point& end : {a, b})
+            p.drawLine(q(end - tick * across), q(end + tick * across));
+    }
+    // The length, beside the middle, on a pale box, kept inside the canvas.
+    const QTransform world = p.worldTransform();
+    const QString text = rulerText();
+    p.resetTransform();
+    p.setFont(m_numberFont);
+    const QFontMetricsF fm(m_numberFont);
+    QRectF box(0, 0, fm.horizontalAdvance(text) + 8 * k, fm.height() + 4 * k);
+    box.moveCenter(world.map(q(0.5 * (a + b) + (2.2 * tick) * across)));
+    box.moveLeft(std::clamp(box.left(), 0.0, std::max(0.0, width() - box.width())));
+    box.moveTop(std::clamp(box.top(), 0.0, std::max(0.0, height() - box.height())));
+    p.setPen(QPen(kRulerColour, 1));
+    p.setBrush(QColor(255, 255, 255, 230));
+    p.drawRoundedRect(box, 3 * k, 3 * k);
+    p.drawText(box, Qt::AlignCenter, text);
+    p.restore();
+}
+
 void FrogCanvas::drawTrail(QPainter& p)
 {
     if (m_trail.size() < 2)
@@ -614,6 +725,18 @@ void FrogCanvas::refreshTexts()
                           ? tr("Broad phase: none, the seed has no collisions (§5.2 is future work)")
                           : tr("Broad phase: %n candidate pairs, %1 contacts", "", int(m_pairs.size()))
                                 .arg(sim()->readouts().contacts));
+        }
+        if (m_overlays.protractor) {
+            int limited = 0, held = 0;
+            for (int c = 0; c < sim()->chainCount(); ++c) {
+                readLinkAngles(*sim(), c, m_joints, m_angles);
+                for (const LinkAngleReading& a : m_angles) {
+                    limited += a.limit ? 1 : 0;
+                    held += a.atLimit ? 1 : 0;
+                }
+            }
+            lines << (limited == 0 ? tr("Protractor: no joint of this scene has angle limits")
+                                   : tr("Protractor: %n of %1 joints held at a limit (red)", "", held).arg(limited));
         }
         if (m_overlays.trail)
             lines << (m_trailPoint.joint ? tr("Trail of joint %1 of chain %2 (Shift+click a point to follow another)")
@@ -830,6 +953,10 @@ void FrogCanvas::render(QPainter& p, const QRectF& target)
     if (m_overlays.pairs)
         drawPairs(p);
     drawOverlays(p, pixel);
+    if (m_overlays.protractor)
+        drawProtractor(p, pixel);
+    if (m_ruler)
+        drawRuler(p, pixel);
     p.restore();
     p.setWorldTransform(base);
     // The text panel may run below a small scene (presentation mode on a narrow canvas): it
@@ -1168,6 +1295,15 @@ void FrogCanvas::mousePressEvent(QMouseEvent* event)
     setFocus(Qt::MouseFocusReason);
     m_mouse = toScene(event->position());
     m_mouseKnown = true;
+    const bool measure = event->button() == Qt::RightButton ||
+                         (event->button() == Qt::LeftButton && (event->modifiers() & Qt::ControlModifier));
+    if (measure) { // the ruler: measuring grabs nothing and records nothing
+        m_ruler = std::pair{m_mouse, m_mouse};
+        m_rulerDragging = true;
+        m_rulerPlacing = false;
+        update();
+        return;
+    }
     if (event->button() != Qt::LeftButton)
         return;
     if (m_overlays.trail && (event->modifiers() & Qt::ShiftModifier)) { // choose the trail's point, grab nothing
@@ -1201,6 +1337,10 @@ void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
         return;
     m_mouse = toScene(event->position());
     m_mouseKnown = true;
+    if ((m_rulerDragging || m_rulerPlacing) && m_ruler) {
+        m_ruler->second = m_mouse;
+        update();
+    }
     if (m_pressed || !m_run->playingBack()) // hovering over a run played back changes nothing
         send(InputKind::Move, m_mouse);
     reportMouseRadius();
@@ -1225,6 +1365,16 @@ void FrogCanvas::reportMouseRadius()
 
 void FrogCanvas::mouseReleaseEvent(QMouseEvent* event)
 {
+    if (m_rulerDragging && (event->button() == Qt::RightButton || event->button() == Qt::LeftButton)) {
+        m_rulerDragging = false;
+        const QPointF from = toWidget(m_ruler->first), to = toWidget(m_ruler->second);
+        if ((from - to).manhattanLength() < 3) // a click, not a drag: clears the ruler
+            m_ruler.reset();
+        else
+            emit statusMessage(tr("Ruler: %1. Esc or a right click clears it.").arg(rulerText()));
+        update();
+        return;
+    }
     if (!sim() || event->button() != Qt::LeftButton || !m_pressed)
         return;
     m_keyboardHeld = false;
@@ -1335,6 +1485,8 @@ void FrogCanvas::moveKeyboardCursor(double dx, double dy)
     }
     const double W = sim()->scene().params.width, H = sim()->scene().params.height;
     m_mouse = {std::clamp(m_mouse.x + dx, 0.0, W - 1), std::clamp(m_mouse.y + dy, 0.0, H - 1)};
+    if (m_rulerPlacing && m_ruler)
+        m_ruler->second = m_mouse;
     if (m_pressed || !m_run->playingBack())
         send(InputKind::Move, m_mouse);
     reportMouseRadius();
@@ -1366,7 +1518,30 @@ void FrogCanvas::keyPressEvent(QKeyEvent* event)
             keyboardRelease();
             return;
         }
+        if (m_ruler) {
+            m_ruler.reset();
+            m_rulerPlacing = m_rulerDragging = false;
+            update();
+            return;
+        }
         break;
+    case Qt::Key_L: // the ruler from the keyboard: one end at the cursor, the arrows, L again
+        if (event->isAutoRepeat() || !sim())
+            return;
+        if (!m_mouseKnown) {
+            m_mouse = toScene(QPointF(rect().center()));
+            m_mouseKnown = true;
+        }
+        if (m_rulerPlacing) {
+            m_rulerPlacing = false;
+            emit statusMessage(tr("Ruler: %1. Esc or a right click clears it.").arg(rulerText()));
+        } else {
+            m_ruler = std::pair{m_mouse, m_mouse};
+            m_rulerPlacing = true;
+            emit statusMessage(tr("Ruler: move the cursor with the arrows to the other end, then L."));
+        }
+        update();
+        return;
     default: break;
     }
     if (event->key() != Qt::Key_Space) {

@@ -7,6 +7,7 @@
 /// or Enter, Esc: docs/classroom.md), and a focus frame shows when the keys go here. Drawing reuses
 /// member buffers: a frame allocates nothing in this class once warm.
 
+#include "core/softbody/link_angles.h"
 #include "core/softbody/recorded_run.h"
 #include "core/softbody/simulation.h"
 #include "core/softbody/simulation_series.h"
@@ -53,11 +54,13 @@ public:
         /// §5.2.2: the broad phase's candidate pairs (their boxes, a line between them) and
         /// the number of contacts (stable solver).
         bool pairs = false;
+        /// §4.15: each link's angle against the range its limits allow (link_angles.h).
+        bool protractor = false;
         bool operator==(const Overlays& o) const
         {
             return vertices == o.vertices && springs == o.springs && area == o.area && velocities == o.velocities &&
                    readouts == o.readouts && frameTime == o.frameTime && ghost == o.ghost && trail == o.trail &&
-                   pairs == o.pairs;
+                   pairs == o.pairs && protractor == o.protractor;
         }
     };
     /// §4.9/4.10: how a Bézier scene draws its body.
@@ -102,6 +105,18 @@ public:
     const std::deque<Point>& trail() const { return m_trail; }
     /// Follows the vertex or joint nearest to `at` (scene px), within 30 px; false if none.
     bool chooseTrailPoint(Point at);
+    /// The ruler: a measure in scene px between two points the user set, dragged with the
+    /// right button (or Ctrl and the left), or placed from the keyboard with L at the cursor,
+    /// the arrows, and L again; Esc or a right click clears it. Nothing is recorded; a document
+    /// saved keeps it, and it is not an edit (no undo step).
+    const std::optional<std::pair<Point, Point>>& ruler() const { return m_ruler; }
+    /// Sets or clears the ruler (a document's).
+    void setRuler(const std::optional<std::pair<Point, Point>>& ruler);
+    /// What the ruler says: its length and its run and rise, in px.
+    QString rulerText() const;
+    /// §4.15, the protractor (Overlays::protractor): each limited link's angle and range,
+    /// drawn at its joint; the text panel counts the joints held at a limit.
+    std::vector<LinkAngleReading> linkAngles(int chain) const;
     /// The ghost (Overlays::ghost): the other solver's simulation, at the same step, or null
     /// (off, or a scene the other solver refuses).
     const Simulation* ghost() const { return m_ghost ? &m_ghost->simulation() : nullptr; }
@@ -249,7 +264,15 @@ private:
     std::optional<Point> trailPosition(); ///< where the trail's point is now
     void drawTrail(QPainter& p);
     void drawPairs(QPainter& p);
+    void drawProtractor(QPainter& p, double pixel);
+    void drawRuler(QPainter& p, double pixel);
     std::vector<std::pair<int, int>> m_pairs; // drawPairs' buffer
+    std::vector<LinkAngleReading> m_angles;   // drawProtractor's buffer
+    // The ruler (scene px): its two ends, while dragged (right button or Ctrl+left) or
+    // placed from the keyboard (L, then the arrows, then L).
+    std::optional<std::pair<Point, Point>> m_ruler;
+    bool m_rulerDragging = false;
+    bool m_rulerPlacing = false;
     void drawGhost(QPainter& p);
     int workFramesPerStep() const; ///< ⌈work / kFrameWork⌉: how much a heavy step slows real time
     void updateTimer();

@@ -211,6 +211,7 @@ FrogTab::FrogTab(QWidget* parent)
     m_showGhost = new QCheckBox(m_overlayBox);
     m_showTrail = new QCheckBox(m_overlayBox);
     m_showPairs = new QCheckBox(m_overlayBox);
+    m_showProtractor = new QCheckBox(m_overlayBox);
     const OverlayBoxes boxes = overlayBoxes();
     int i = 0;
     for (QCheckBox* box : boxes) {
@@ -630,7 +631,7 @@ void FrogTab::stepOnce()
 FrogTab::OverlayBoxes FrogTab::overlayBoxes() const
 {
     return {m_showVertices, m_showSprings, m_showArea, m_showVelocities, m_showReadouts, m_showFrameTime, m_showGhost, m_showTrail,
-            m_showPairs};
+            m_showPairs, m_showProtractor};
 }
 
 FrogTab::OverlayFlags FrogTab::overlayFlags() const
@@ -659,6 +660,7 @@ void FrogTab::applyOverlayFlags(const OverlayFlags& flags)
     o.ghost = m_showGhost->isChecked();
     o.trail = m_showTrail->isChecked();
     o.pairs = m_showPairs->isChecked();
+    o.protractor = m_showProtractor->isChecked();
     m_canvas->setOverlays(o);
     emit documentChanged();
 }
@@ -821,6 +823,9 @@ void FrogTab::retranslate()
     m_showPairs->setText(tr("Broad phase"));
     m_showPairs->setToolTip(tr("§5.2.2: the pairs of bodies whose boxes overlap, the only ones tested for contact "
                                "(a uniform grid finds them), and how many contacts there are (stable solver)."));
+    m_showProtractor->setText(tr("Protractor"));
+    m_showProtractor->setToolTip(tr("§4.15: each joint's angle, in degrees, over the range its limits allow (shaded); red "
+                                    "when the joint is held at a limit."));
     m_showTrail->setText(tr("Trail"));
     m_showTrail->setToolTip(tr("The path of one point over the last 10 s: the pendulum's tip or the first body's vertex 0; "
                                "Shift+click on a vertex or a joint to follow it."));
@@ -1007,10 +1012,13 @@ QJsonObject FrogTab::saveState() const
     overlays.insert(QStringLiteral("ghost"), o.ghost);
     overlays.insert(QStringLiteral("trail"), o.trail);
     overlays.insert(QStringLiteral("pairs"), o.pairs);
+    overlays.insert(QStringLiteral("protractor"), o.protractor);
     state.insert(QStringLiteral("overlays"), overlays);
     state.insert(QStringLiteral("bezier_outline"), m_fit->isChecked() ? QStringLiteral("fit") : QStringLiteral("precomputed"));
     state.insert(QStringLiteral("paused"), !m_canvas->running());
     state.insert(QStringLiteral("speed"), m_canvas->speed());
+    if (const auto& ruler = m_canvas->ruler()) // a measure shown goes with the document, as the overlays do
+        state.insert(QStringLiteral("ruler"), QJsonArray{ruler->first.x, ruler->first.y, ruler->second.x, ruler->second.y});
     // The knobs the run started with; the recording's events turn them on the way.
     QJsonObject stable;
     stable.insert(QStringLiteral("substeps"), m_scene.stable.substeps);
@@ -1085,7 +1093,8 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
         const std::pair<const char*, bool*> flags[] = {
             {"vertices", &overlays.vertices}, {"springs", &overlays.springs},       {"area", &overlays.area},
             {"velocities", &overlays.velocities}, {"readouts", &overlays.readouts}, {"frame_time", &overlays.frameTime},
-            {"ghost", &overlays.ghost}, {"trail", &overlays.trail}, {"pairs", &overlays.pairs}};
+            {"ghost", &overlays.ghost}, {"trail", &overlays.trail}, {"pairs", &overlays.pairs},
+            {"protractor", &overlays.protractor}};
         for (const auto& [key, flag] : flags) {
             const QJsonValue f = o.value(QLatin1String(key));
             if (f.isUndefined())
@@ -1137,6 +1146,19 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
     } else {
         spec->stable = m_scene.stable;
     }
+    // The ruler's ends, scene px: four finite numbers.
+    std::optional<std::pair<Point, Point>> ruler;
+    if (state.contains(QStringLiteral("ruler"))) {
+        const QJsonArray r = state.value(QStringLiteral("ruler")).toArray();
+        const bool ok = r.size() == 4 && std::all_of(r.begin(), r.end(), [](const QJsonValue& v) {
+                            return v.isDouble() && std::isfinite(v.toDouble()) && std::abs(v.toDouble()) <= 1e7;
+                        });
+        if (!ok) {
+            setError(error, tr("The ruler must be four numbers: x and y of each end, in px."));
+            return false;
+        }
+        ruler = std::pair{Point(r[0].toDouble(), r[1].toDouble()), Point(r[2].toDouble(), r[3].toDouble())};
+    }
     // The recorded run: checked whole before anything changes.
     std::optional<DocumentRun> recorded;
     if (state.contains(QStringLiteral("recording"))) {
@@ -1161,12 +1183,13 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
                                    .arg(recorded->step));
     }
     setSpeed(speed);
+    m_canvas->setRuler(ruler);
     // Everything is valid: show it.
     {
         const OverlayBoxes boxes = overlayBoxes();
         const OverlayFlags values = {overlays.vertices,   overlays.springs,  overlays.area,
                                      overlays.velocities, overlays.readouts, overlays.frameTime, overlays.ghost,
-                                     overlays.trail,      overlays.pairs};
+                                     overlays.trail,      overlays.pairs,    overlays.protractor};
         for (std::size_t i = 0; i < values.size(); ++i) {
             const QSignalBlocker block(boxes[i]);
             boxes[i]->setChecked(values[i]);

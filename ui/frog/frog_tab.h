@@ -107,8 +107,8 @@ private:
     /// The scene `name` on the current solver (or the stable one, for collisions).
     bool switchScene(const QString& name, QString* error);
     /// The overlay boxes' states as an undo step restores them.
-    using OverlayFlags = std::array<bool, 9>;
-    using OverlayBoxes = std::array<QCheckBox*, 9>;
+    using OverlayFlags = std::array<bool, 10>;
+    using OverlayBoxes = std::array<QCheckBox*, 10>;
     OverlayBoxes overlayBoxes() const; ///< in OverlayFlags' order
     OverlayFlags overlayFlags() const;
     void applyOverlayFlags(const OverlayFlags& flags);
@@ -159,7 +159,7 @@ private:
     QPushButton *m_pause, *m_step, *m_reset;
     QRadioButton *m_precomputed, *m_fit;
     QCheckBox *m_showVertices, *m_showSprings, *m_showArea, *m_showVelocities, *m_showReadouts, *m_showFrameTime,
-        *m_showGhost, *m_showTrail, *m_showPairs;
+        *m_showGhost, *m_showTrail, *m_showPairs, *m_showProtractor;
 };
 
 } // namespace granota::ui

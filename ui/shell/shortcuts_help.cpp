@@ -44,7 +44,9 @@ QString ShortcutsHelp::html(const QList<QAction*>& actions)
                          + row(tr("[ and ]"), tr("Slower and faster (⅛× to 4×)"))
                          + row(tr("Arrows (Shift: five times further)"), tr("On the canvas: move the keyboard cursor, and what it holds"))
                          + row(tr("G or Enter"), tr("On the canvas: grab the body at the cursor (or the nearest one), again to let go"))
-                         + row(tr("Esc"), tr("On the canvas: let go"))
+                         + row(tr("Esc"), tr("On the canvas: let go, or clear the ruler"))
+                         + row(tr("L"), tr("On the canvas: a ruler from the cursor; move it with the arrows, L again to fix it"))
+                         + row(tr("Right drag, or Ctrl+drag"), tr("On the canvas: measure in px with the ruler"))
                          + row(tr("Space"), tr("On the canvas: a new body at the cursor, held until released"));
     return table(tr("The window"), window) + table(tr("De Casteljau, Fitting and Catmull-Rom canvases"), curves)
            + table(tr("Frog tab (P, S, the comma and the period, R, M, [ and ] whenever the tab is shown, unless a field is being typed in)"), frog);

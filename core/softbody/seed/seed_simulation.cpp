@@ -105,6 +105,15 @@ public:
         out[1] = Point(double(l.elbow().x), double(l.elbow().y));
         out[2] = Point(double(l.wrist().x), double(l.wrist().y));
     }
+    // §4.15, Annex II l. 411–423: both angles from straight down the screen.
+    void chainLimits(int i, std::vector<LinkLimit>& out) const override
+    {
+        out.clear();
+        if (!m_frog || !componentsOf(scene()).angleLimits)
+            return;
+        const LegParams& l = scene().params.legs[std::size_t(i)];
+        out = {{l.shoulderMin, l.shoulderMax, false}, {l.elbowMin, l.elbowMax, false}};
+    }
 
     bool press(Point p) override
     {
@@ -243,6 +252,14 @@ public:
     double bodyTargetArea(int) const override { return 0; }
     int chainCount() const override { return 1; }
     void chainJoints(int, std::vector<Point>& out) const override { out = m_leg ? m_leg->joints() : m_chain->joints(); }
+    // Annex II's Pota is a leg: its elbow too is measured from straight down.
+    void chainLimits(int, std::vector<LinkLimit>& out) const override
+    {
+        out.clear();
+        const SceneSpec& s = scene();
+        if (m_leg && componentsOf(s).angleLimits)
+            out = {{s.chainShoulderMin, s.chainShoulderMax, false}, {s.chainElbowMin, s.chainElbowMax, false}};
+    }
 
     // The pendulum hangs from the mouse (its "clau"), kept inside the frame.
     bool press(Point p) override

@@ -15,6 +15,7 @@
 
 #include "core/base/vec2.h"
 #include "core/softbody/polygon_geometry.h" // signedArea
+#include "core/softbody/seed_angle.h"
 
 #include <cmath>
 #include <cstdint>
@@ -77,15 +78,6 @@ struct AngleConstraint {
     double windowSin = 0;
     double windowCosHalf = 1;
 };
-
-/// The seed's angle of a direction: 0 = straight down (screen y grows downwards), π/2 = −x.
-inline double seedAngle(const Point& d) { return std::atan2(-d.x, d.y); }
-
-/// The unit direction of seed angle a: (−sin a, cos a), Annex II l. 467.
-inline Point seedDirection(double a) { return {-std::sin(a), std::cos(a)}; }
-
-/// Wraps an angle into (−π, π].
-double wrapAngle(double a);
 
 /// ∇ᵢA = ½·perp(xᵢ₊₁ − xᵢ₋₁), perp(d) = (d.y, −d.x): the direction in which Annex II
 /// l. 292 pushes a vertex to grow the area, here with its exact length.

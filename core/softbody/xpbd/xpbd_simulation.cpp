@@ -76,7 +76,7 @@ public:
                 for (std::size_t k = 1; k < s.chain.size(); ++k)
                     chain.limits.push_back(AngleLimit{s.chainElbowMin, s.chainElbowMax, AngleReference::Parent});
             }
-            auto c = m_world.addChain(chain);
+            auto c = addChain(chain);
             if (!c)
                 return c.error();
             return {};
@@ -96,7 +96,7 @@ public:
         if (s.model == SceneModel::Frog && s.has("legs"))
             for (int leg = 0; leg < 4; ++leg) {
                 const ChainAnchor anchor = frogLegAnchor(0, leg, s.params.sides);
-                auto c = m_world.addChain(frogLegChain(s.params.legs[std::size_t(leg)], anchor, m_world.anchorPoint(anchor)));
+                auto c = addChain(frogLegChain(s.params.legs[std::size_t(leg)], anchor, m_world.anchorPoint(anchor)));
                 if (!c)
                     return c.error();
             }
@@ -127,6 +127,7 @@ public:
     double bodyTargetArea(int i) const override { return m_world.targetArea(i); }
     int chainCount() const override { return m_world.chainCount(); }
     void chainJoints(int i, std::vector<Point>& out) const override { copyRange(m_world.chainRange(i), out); }
+    void chainLimits(int i, std::vector<LinkLimit>& out) const override { out = m_limits[std::size_t(i)]; }
 
     bool press(Point p) override
     {
@@ -226,6 +227,19 @@ protected:
     void doStep() override { m_world.step(); }
 
 private:
+    /// Adds a chain to the world and keeps its limits as chainLimits gives them.
+    Expected<int> addChain(const ChainDef& chain)
+    {
+        auto c = m_world.addChain(chain);
+        if (c) {
+            std::vector<LinkLimit> limits;
+            for (const AngleLimit& l : chain.limits)
+                limits.push_back({l.min, l.max, l.reference == AngleReference::Parent});
+            m_limits.push_back(std::move(limits));
+        }
+        return c;
+    }
+
     void copyRange(ParticleRange r, std::vector<Point>& out) const
     {
         const auto first = m_world.positions().begin() + r.first;
@@ -241,6 +255,7 @@ private:
     }
 
     XpbdWorld m_world;
+    std::vector<std::vector<LinkLimit>> m_limits; // per chain, as added
     bool m_spawned = false;
     std::optional<double> m_mouseRadius; // §4.1, once the mouse has moved
 };
