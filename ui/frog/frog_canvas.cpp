@@ -416,10 +416,17 @@ std::vector<LinkAngleReading> FrogCanvas::linkAngles(int chain) const
 
 void FrogCanvas::drawProtractor(QPainter& p, double pixel)
 {
-    // At each limited joint: the range its limits allow, shaded, the link's angle in degrees
-    // beyond its tip, red when the joint is held at a limit (§4.15).
+    // At each limited joint: the range its limits allow, shaded, and the link's angle in
+    // degrees beyond its tip, red when the joint is held at a limit (§4.15). On a small
+    // canvas a label that would cover another is left out, those at a limit first kept.
     const double k = m_style.scale;
     const QTransform world = p.worldTransform();
+    struct Label {
+        QPointF at;
+        QString text;
+        bool atLimit;
+    };
+    std::vector<Label> labels;
     for (int c = 0; c < sim()->chainCount(); ++c) {
         readLinkAngles(*sim(), c, m_joints, m_angles);
         for (std::size_t l = 0; l < m_angles.size(); ++l) {
@@ -429,7 +436,7 @@ void FrogCanvas::drawProtractor(QPainter& p, double pixel)
             const Point at = m_joints[l];
             const Point d = m_joints[l + 1] - at;
             const double length = std::sqrt(d.x * d.x + d.y * d.y);
-            const double radius = std::clamp(0.6 * length, 14 * k * pixel, 44 * k * pixel);
+            const double radius = std::max(0.6 * length, 8 * k * pixel);
             const double span = a.limit->max - a.limit->min;
             const int n = std::max(4, int(std::ceil(span / (kPi / 36))));
             QPolygonF sector;
@@ -444,23 +451,30 @@ void FrogCanvas::drawProtractor(QPainter& p, double pixel)
             p.setPen(edge);
             p.setBrush(fill);
             p.drawPolygon(sector);
-            // The degrees, just past the arc along the link, on a pale box.
-            const QString text = displayFixed(a.angle * 180 / kPi, 0) + QStringLiteral("°");
-            const QPointF label = world.map(q(at + (radius + 12 * k * pixel) * seedDirection(a.reference + a.angle)));
-            p.save();
-            p.resetTransform();
-            p.setFont(m_numberFont);
-            const QFontMetricsF fm(m_numberFont);
-            QRectF box(0, 0, fm.horizontalAdvance(text) + 6 * k, fm.height() + 2 * k);
-            box.moveCenter(label);
-            p.setPen(Qt::NoPen);
-            p.setBrush(QColor(255, 255, 255, 210));
-            p.drawRoundedRect(box, 3 * k, 3 * k);
-            p.setPen(colour);
-            p.drawText(box, Qt::AlignCenter, text);
-            p.restore();
+            const double degrees = std::round(a.angle * 180 / kPi) + 0.0; // + 0.0: a −0 reads 0
+            labels.push_back({world.map(q(at + (radius + 12 * k * pixel) * seedDirection(a.reference + a.angle))),
+                              displayFixed(degrees, 0) + QStringLiteral("°"), a.atLimit});
         }
     }
+    std::stable_partition(labels.begin(), labels.end(), [](const Label& l) { return l.atLimit; });
+    p.save();
+    p.resetTransform();
+    p.setFont(m_numberFont);
+    const QFontMetricsF fm(m_numberFont);
+    std::vector<QRectF> drawn;
+    for (const Label& l : labels) {
+        QRectF box(0, 0, fm.horizontalAdvance(l.text) + 6 * k, fm.height() + 2 * k);
+        box.moveCenter(l.at);
+        if (std::any_of(drawn.begin(), drawn.end(), [&box](const QRectF& r) { return r.intersects(box); }))
+            continue;
+        drawn.push_back(box);
+        p.setPen(Qt::NoPen);
+        p.setBrush(QColor(255, 255, 255, 210));
+        p.drawRoundedRect(box, 3 * k, 3 * k);
+        p.setPen(l.atLimit ? kAtLimitColour : kProtractorColour);
+        p.drawText(box, Qt::AlignCenter, l.text);
+    }
+    p.restore();
 }
 
 void FrogCanvas::setRuler(const std::optional<std::pair<Point, Point>>& ruler)
