@@ -299,6 +299,35 @@ private slots:
         QVERIFY(!canvas->simulation()->grabbing());
     }
 
+    // Issue 16, the ruler from the keyboard: L lays one end at the keyboard cursor, the
+    // arrows take the other, L fixes it; Esc clears it, and with nothing held or laid Esc
+    // changes nothing else. In a real window too (no shortcut takes L or Esc first).
+    void aKeyboardRulerMeasures()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("frog")));
+        auto* tab = window.frogTab();
+        QVERIFY(tab->setScene(QStringLiteral("frog"), nullptr));
+        auto* canvas = tab->findChild<FrogCanvas*>();
+        QVERIFY(canvas);
+        canvas->setRunning(false);
+        canvas->setFocus(Qt::TabFocusReason);
+        QTRY_VERIFY(canvas->hasFocus());
+        press(window, Qt::Key_L);
+        for (int i = 0; i < 5; ++i)
+            press(window, Qt::Key_Down);
+        press(window, Qt::Key_L);
+        QVERIFY(canvas->ruler());
+        QCOMPARE(canvas->ruler()->second.y - canvas->ruler()->first.y, 5 * FrogCanvas::kKeyboardStep);
+        QCOMPARE(canvas->ruler()->second.x, canvas->ruler()->first.x);
+        QVERIFY(!canvas->simulation()->grabbing());
+        QVERIFY(canvas->hasFocus());
+        press(window, Qt::Key_Escape);
+        QVERIFY(!canvas->ruler());
+        QVERIFY(canvas->hasFocus());
+        QCOMPARE(window.currentTab(), static_cast<granota::ui::TabPage*>(tab));
+    }
+
     // Every control of every tab has a name for a screen reader (the rule: isOwnControl).
     void everyControlHasAnAccessibleName()
     {
