@@ -50,6 +50,19 @@ void press(MainWindow& window, Qt::Key key, Qt::KeyboardModifiers modifiers = Qt
     QTest::keyClick(target, key, modifiers);
 }
 
+/// The Frog tab shown on the frog stage, paused, its canvas holding the focus; null if not.
+FrogCanvas* focusedFrogCanvas(MainWindow& window)
+{
+    if (!showOnTab(window, QStringLiteral("frog")) || !window.frogTab()->setScene(QStringLiteral("frog"), nullptr))
+        return nullptr;
+    auto* canvas = window.frogTab()->findChild<FrogCanvas*>();
+    if (!canvas)
+        return nullptr;
+    canvas->setRunning(false);
+    canvas->setFocus(Qt::TabFocusReason);
+    return QTest::qWaitFor([canvas] { return canvas->hasFocus(); }) ? canvas : nullptr;
+}
+
 /// The curve canvas of the tab shown.
 CurveCanvas* curveCanvas(MainWindow& window) { return window.currentTab()->findChild<CurveCanvas*>(); }
 
@@ -275,14 +288,8 @@ private slots:
     void aKeyboardGrabMovesTheBody()
     {
         MainWindow window;
-        QVERIFY(showOnTab(window, QStringLiteral("frog")));
-        auto* tab = window.frogTab();
-        QVERIFY(tab->setScene(QStringLiteral("frog"), nullptr));
-        auto* canvas = tab->findChild<FrogCanvas*>();
+        FrogCanvas* canvas = focusedFrogCanvas(window);
         QVERIFY(canvas);
-        canvas->setRunning(false);
-        canvas->setFocus(Qt::TabFocusReason);
-        QTRY_VERIFY(canvas->hasFocus());
         for (int i = 0; i < 30; ++i) // let it settle
             canvas->step();
         const Point start = centroid(*canvas->simulation());
@@ -305,14 +312,8 @@ private slots:
     void aKeyboardRulerMeasures()
     {
         MainWindow window;
-        QVERIFY(showOnTab(window, QStringLiteral("frog")));
-        auto* tab = window.frogTab();
-        QVERIFY(tab->setScene(QStringLiteral("frog"), nullptr));
-        auto* canvas = tab->findChild<FrogCanvas*>();
+        FrogCanvas* canvas = focusedFrogCanvas(window);
         QVERIFY(canvas);
-        canvas->setRunning(false);
-        canvas->setFocus(Qt::TabFocusReason);
-        QTRY_VERIFY(canvas->hasFocus());
         press(window, Qt::Key_L);
         for (int i = 0; i < 5; ++i)
             press(window, Qt::Key_Down);
@@ -325,7 +326,7 @@ private slots:
         press(window, Qt::Key_Escape);
         QVERIFY(!canvas->ruler());
         QVERIFY(canvas->hasFocus());
-        QCOMPARE(window.currentTab(), static_cast<granota::ui::TabPage*>(tab));
+        QCOMPARE(window.currentTab(), static_cast<granota::ui::TabPage*>(window.frogTab()));
     }
 
     // Every control of every tab has a name for a screen reader (the rule: isOwnControl).
