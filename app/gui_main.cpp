@@ -70,12 +70,15 @@ int main(int argc, char* argv[])
     QCommandLineOption plotsOption(QStringLiteral("plots"),
                                    say("Show the frog's plots over time: energy, area, stretch, contacts or phase."),
                                    QStringLiteral("VIEW"));
+    QCommandLineOption plotBodyOption(QStringLiteral("plot-body"),
+                                      say("Plot body K (1, 2, …) of the frog's scene alone, marked on the canvas."),
+                                      QStringLiteral("K"));
     QCommandLineOption solverOption(QStringLiteral("solver"), say("Run the frog's scene on SOLVER: seed or stable."),
                                     QStringLiteral("SOLVER"));
     QCommandLineOption stepsOption(QStringLiteral("steps"), say("Run the frog's scene N steps (0 … 100000) before showing it."),
                                    QStringLiteral("N"));
     parser.addOptions({tabOption, langOption, exampleOption, sceneOption, presentOption, screenshotOption, sizeOption,
-                       plotsOption, solverOption, stepsOption});
+                       plotsOption, plotBodyOption, solverOption, stepsOption});
     parser.addPositionalArgument(QStringLiteral("document"), say("A .granota document to open."));
     // Bad arguments are errors as granota-cli's are (status 2, "error: "), in the language above.
     if (!parser.parse(arguments))
@@ -151,6 +154,21 @@ int main(int argc, char* argv[])
         for (int i = 0; i < steps; ++i)
             window.frogTab()->canvas()->step();
         window.frogTab()->plotPanel()->refresh(true);
+    }
+    if (parser.isSet(plotBodyOption)) {
+        granota::ui::FrogTab* frog = window.frogTab();
+        if (!frog->plotPanel()->isVisibleTo(&window) && !parser.isSet(plotsOption))
+            frog->setPlotsShown(true);
+        frog->plotPanel()->refresh(true);
+        const int bodies = frog->canvas()->series().bodies();
+        bool ok = false;
+        const int k = parser.value(plotBodyOption).toInt(&ok);
+        if (bodies < 2)
+            return fail(say("--plot-body: the scene has no bodies to choose from (it needs two or more)"));
+        if (!ok || k < 1 || k > bodies)
+            return fail(say("bad body “%1” (1 … %2)").arg(parser.value(plotBodyOption)).arg(bodies));
+        frog->plotPanel()->setBody(k - 1);
+        window.showTab(QStringLiteral("frog"));
     }
     if (parser.isSet(exampleOption) && !window.loadExample(parser.value(exampleOption)))
         return fail(say("unknown example “%1” (2.1 … 2.13)").arg(parser.value(exampleOption)));

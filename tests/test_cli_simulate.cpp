@@ -2,6 +2,10 @@
 // --trace, --set, and exit status 2 for settings that make no sense.
 #include "cli_runner.h"
 
+#include "core/softbody/scenes/scene.h"
+#include "core/softbody/simulation.h"
+#include "core/softbody/simulation_series.h"
+
 #include <QtTest>
 
 #include <QFile>
@@ -13,6 +17,8 @@
 
 #include <algorithm>
 #include <vector>
+
+using namespace granota;
 
 namespace {
 
@@ -122,6 +128,50 @@ private slots:
         QCOMPARE(last[10].toInt(), readouts["contacts"].toInt());
         QCOMPARE(last[4].isEmpty(), solver == "seed"); // the seed has no elastic energy to report
         QCOMPARE(readouts["elastic_energy"].isNull(), solver == "seed");
+    }
+
+    // --series-body K: body K's own values in the same columns, as the Frog tab's plots of
+    // one body export them (SeriesRecorder, body K − 1); a K that is no body is refused.
+    void seriesOfOneBody()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("body.csv");
+        const Run r = runCliWith({"LC_ALL=ca_ES.UTF-8", "LANG=ca_ES.UTF-8"},
+                                 {"simulate", "--scene", "many-bodies", "--solver", "stable", "--set", "bodies=3", "--steps",
+                                  "90", "--series", path, "--series-body", "2"});
+        QCOMPARE(r.exitCode, 0);
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        QList<QByteArray> lines = f.readAll().split('\n');
+        QCOMPARE(lines.takeLast(), QByteArray());
+        QCOMPARE(lines.size(), 92);
+        QCOMPARE(lines[0], QByteArray(seriesCsvHeader(0).c_str()));
+        auto spec = loadScene("many-bodies");
+        QVERIFY(applySetting(*spec, "bodies=3").ok());
+        auto sim = std::move(Simulation::create(*spec, SolverKind::Stable)).value();
+        SeriesRecorder series(1);
+        for (int i = 0; i <= 90; ++i) {
+            if (i > 0)
+                sim->step();
+            const SeriesSample& x = series.record(*sim);
+            QCOMPARE(lines[i + 1], QByteArray(seriesCsvRow(x, 0, 1).c_str()));
+            if (i == 90)
+                QVERIFY(seriesCsvRow(x, 0, 1) != seriesCsvRow(x, 0, 0) && seriesCsvRow(x, 0, 1) != seriesCsvRow(x, 0));
+        }
+        const QString out = dir.filePath("bad.csv");
+        const QList<QStringList> bad = {
+            {"--scene", "many-bodies", "--set", "bodies=3", "--series", out, "--series-body", "4"},
+            {"--scene", "many-bodies", "--set", "bodies=3", "--series", out, "--series-body", "0"},
+            {"--scene", "many-bodies", "--set", "bodies=3", "--series", out, "--series-body", "two"},
+            {"--scene", "many-bodies", "--set", "bodies=3", "--series-body", "1"},
+            {"--scene", "pendulum", "--series", out, "--series-body", "1"},
+        };
+        for (const QStringList& args : bad) {
+            const Run e = cli(QStringList{"simulate", "--steps", "5"} + args);
+            QCOMPARE(e.exitCode, 2);
+            QVERIFY2(e.err.startsWith("error: ") && e.err.contains("series-body"), qPrintable(e.err));
+            QVERIFY(!QFile::exists(out));
+        }
     }
 
     void seriesBadFiles()

@@ -195,6 +195,147 @@ private slots:
         QCOMPARE(series.samples().size(), std::size_t(1));
     }
 
+    // The plots per body: each body's readouts (its vertices, its constraints, the legs that
+    // hang from it) add up to the scene's — energies and losses summed, contacts counted in
+    // the same substep, the area error their mean, the stretch their largest — through a
+    // run with a grab, collisions and the floor.
+    void bodyReadoutsAddUpToTheScene_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<int>("solver");
+        QTest::addColumn<QString>("setting");
+        QTest::newRow("many-bodies, stable") << "many-bodies" << int(SolverKind::Stable) << "bodies=6";
+        QTest::newRow("many-bodies, seed") << "many-bodies" << int(SolverKind::Seed) << "bodies=6";
+        QTest::newRow("shapes, stable") << "shapes" << int(SolverKind::Stable) << "";
+        QTest::newRow("frog, stable (legs are the body's)") << "frog" << int(SolverKind::Stable) << "";
+        QTest::newRow("frog, seed") << "frog" << int(SolverKind::Seed) << "";
+        QTest::newRow("springs, seed (a stage)") << "springs" << int(SolverKind::Seed) << "";
+        QTest::newRow("pendulum-chain, stable (no bodies)") << "pendulum-chain" << int(SolverKind::Stable) << "";
+    }
+    void bodyReadoutsAddUpToTheScene()
+    {
+        QFETCH(QString, scene);
+        QFETCH(int, solver);
+        QFETCH(QString, setting);
+        const QByteArray set = setting.toLatin1();
+        auto s = make(scene.toStdString(), SolverKind(solver), setting.isEmpty() ? std::initializer_list<const char*>{}
+                                                                                 : std::initializer_list<const char*>{set.constData()});
+        const bool stable = SolverKind(solver) == SolverKind::Stable;
+        const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * (1 + std::abs(a) + std::abs(b)); };
+        std::vector<Readouts> bodies;
+        int touching = 0, differing = 0;
+        for (int i = 0; i <= 300; ++i) {
+            if (i == 30)
+                s->press(Point(640, 300));
+            if (i == 30 || i == 60)
+                s->move(Point(i == 30 ? 700 : 500, 250));
+            if (i == 90)
+                s->release();
+            s->step();
+            if (i % 10 != 0)
+                continue;
+            const Readouts r = s->readouts();
+            s->bodyReadouts(bodies);
+            QCOMPARE(int(bodies.size()), s->bodyCount());
+            if (bodies.empty())
+                continue;
+            Readouts sum;
+            double stretch = 0;
+            for (const Readouts& b : bodies) {
+                sum.kineticEnergy += b.kineticEnergy;
+                sum.potentialEnergy += b.potentialEnergy;
+                sum.areaErrorPercent += b.areaErrorPercent / double(bodies.size());
+                stretch = std::max(stretch, b.maxStretch);
+                sum.contacts += b.contacts;
+                QCOMPARE(b.elasticEnergy.has_value(), stable);
+                QCOMPARE(b.dampingLoss.has_value(), stable);
+                sum.elasticEnergy = sum.elasticEnergy.value_or(0) + b.elasticEnergy.value_or(0);
+                sum.dampingLoss = sum.dampingLoss.value_or(0) + b.dampingLoss.value_or(0);
+                touching += b.contacts > 0 && b.contacts < r.contacts;
+            }
+            const QString at = QStringLiteral("step %1").arg(s->stepCount());
+            QVERIFY2(near(sum.kineticEnergy, r.kineticEnergy), qPrintable(at));
+            QVERIFY2(near(sum.potentialEnergy, r.potentialEnergy), qPrintable(at));
+            QVERIFY2(near(sum.areaErrorPercent, r.areaErrorPercent), qPrintable(at));
+            QCOMPARE(stretch, r.maxStretch);
+            QCOMPARE(sum.contacts, r.contacts);
+            if (stable) {
+                QVERIFY2(near(*sum.elasticEnergy, *r.elasticEnergy), qPrintable(at));
+                QVERIFY2(near(*sum.dampingLoss, *r.dampingLoss), qPrintable(at));
+            }
+            differing += bodies.size() > 1 && bodies.front().kineticEnergy != bodies.back().kineticEnergy;
+        }
+        if (scene == "many-bodies") {
+            QVERIFY(differing > 10);           // each body has its own values, not a share of the sum
+            QVERIFY(stable ? touching > 0 : true); // the pile: some bodies touch, not all of them
+        }
+    }
+
+    // Each body glides alone through empty space with friction f: what it loses is what
+    // damping took from it, body by body.
+    void dampingAccountsForEachBodysDrop()
+    {
+        const double polygon = 0.5 * 10 * 40 * 40 * std::sin(2 * kPi / 10); // r = 40, at its rest shape
+        const QByteArray target = "target_area=" + QByteArray::number(polygon, 'g', 17);
+        auto s = make("many-bodies", SolverKind::Stable,
+                      {"bodies=4", "gravity=0,0", "friction=0.98,0.97", "v0=2,-1.5", target.constData()});
+        SeriesRecorder series;
+        series.record(*s);
+        QCOMPARE(series.bodies(), 4);
+        for (int i = 0; i < 60; ++i) {
+            s->step();
+            const SeriesSample& x = series.record(*s);
+            QCOMPARE(x.contacts, 0);
+            QCOMPARE(x.bodies.size(), std::size_t(4));
+            double damping = 0;
+            for (const SeriesValues& b : x.bodies) {
+                QVERIFY2(std::abs(*b.otherLoss) <= 1e-9 * (x.total + *x.dampingLoss),
+                         qPrintable(QStringLiteral("step %1: %2").arg(x.step).arg(*b.otherLoss)));
+                damping += *b.dampingLoss;
+            }
+            QVERIFY(*x.dampingLoss > 0);
+            QVERIFY(std::abs(damping - *x.dampingLoss) <= 1e-12 * *x.dampingLoss);
+        }
+    }
+
+    // Every body's values are kept in the last samples only (SeriesRecorder's budget), and
+    // the CSV row of a body holds that body's values in the scene's columns.
+    void seriesKeepsEachBodyInTheLastSamples()
+    {
+        auto s = make("many-bodies", SolverKind::Stable, {"bodies=4"});
+        SeriesRecorder series(300, 4 * 100);
+        for (int i = 0; i < 250; ++i) {
+            series.record(*s);
+            s->step();
+        }
+        const SeriesSample& last = series.record(*s);
+        QCOMPARE(series.bodies(), 4);
+        QCOMPARE(series.bodySamplesKept(), std::size_t(100));
+        const auto& samples = series.samples();
+        QCOMPARE(samples.size(), std::size_t(251));
+        for (std::size_t k = 0; k < samples.size(); ++k)
+            QCOMPARE(samples[k].bodies.size(), k + 100 >= samples.size() ? std::size_t(4) : std::size_t(0));
+        std::vector<Readouts> bodies;
+        s->bodyReadouts(bodies);
+        QCOMPARE(last.bodies[2].kinetic, bodies[2].kineticEnergy);
+        QCOMPARE(last.bodies[2].contacts, bodies[2].contacts);
+        QVERIFY(last.bodies[2].kinetic != last.bodies[0].kinetic);
+        const QList<QByteArray> fields = QByteArray::fromStdString(seriesCsvRow(last, 0, 2)).split(',');
+        QCOMPARE(fields.size(), 11);
+        QCOMPARE(fields[0].toLong(), last.step);
+        QCOMPARE(fields[2].toDouble(), last.bodies[2].kinetic);
+        QCOMPARE(fields[5].toDouble(), last.bodies[2].total);
+        QCOMPARE(QByteArray::fromStdString(seriesCsvRow(last, 0, -1)), QByteArray::fromStdString(seriesCsvRow(last, 0)));
+        QCOMPARE(seriesValuesOf(samples.front(), 2), nullptr); // let go: too old
+        QCOMPARE(seriesValuesOf(last, 4), nullptr);            // no such body
+        QCOMPARE(seriesValuesOf(last, -1), static_cast<const SeriesValues*>(&last));
+
+        SeriesRecorder sums(300, 0); // no values per body
+        sums.record(*s);
+        QCOMPARE(sums.bodies(), 0);
+        QVERIFY(sums.samples().back().bodies.empty());
+    }
+
     // The seed's springs and area are corrections, not forces: no elastic energy and no
     // losses to report, and the CSV leaves those fields empty rather than writing 0.
     void seedHasNoElasticEnergy()

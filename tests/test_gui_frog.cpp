@@ -385,6 +385,84 @@ private slots:
         QCOMPARE(canvas->series().samples().front().step, 0L);
     }
 
+    // Plots per body: with several bodies the panel lists them; one chosen, the plots and the
+    // CSV are its own (simulate --series-body), and the canvas marks it with its number.
+    void plotsPerBody()
+    {
+        QVERIFY(tab().setScene("many-bodies", nullptr));
+        QVERIFY(tab().setSolver(SolverKind::Stable, nullptr));
+        QString error;
+        QVERIFY2(tab().editParameter("bodies", 3, &error), qPrintable(error));
+        tab().findChild<QPushButton*>("frogPause")->setChecked(true);
+        FrogCanvas* canvas = tab().canvas();
+        FrogPlotPanel* panel = tab().plotPanel();
+        tab().setPlotsShown(true);
+        steps(tab(), 120);
+        panel->refresh(true);
+        auto* list = panel->findChild<QComboBox*>("frogPlotBody");
+        QVERIFY(list && list->isVisible());
+        QCOMPARE(list->count(), 4);
+        QCOMPARE(list->itemText(0), QStringLiteral("All bodies"));
+        QCOMPARE(list->itemText(3), QStringLiteral("Body 3"));
+        QCOMPARE(panel->body(), -1);
+        QCOMPARE(canvas->markedBody(), -1);
+        const QImage plain = canvas->grab().toImage();
+        const auto marked = [](const QImage& image) {
+            int n = 0;
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x)
+                    n += image.pixelColor(x, y) == QColor(0xd8, 0x1b, 0x60);
+            return n;
+        };
+        QCOMPARE(marked(plain), 0);
+
+        list->setCurrentIndex(2);
+        emit list->activated(2); // as a click on "Body 2" does
+        QCOMPARE(panel->body(), 1);
+        QCOMPARE(canvas->markedBody(), 1);
+        QVERIFY(marked(canvas->grab().toImage()) > 100); // its outline and its number
+        const SeriesSample& last = canvas->series().samples().back();
+        QCOMPARE(last.bodies.size(), std::size_t(3));
+        QCPGraph* total = panel->plot()->graph(3);
+        QCOMPARE(total->dataCount(), 121);
+        QCOMPARE(total->data()->at(120)->value, last.bodies[1].total);
+        QVERIFY(last.bodies[1].total != last.total);
+        panel->setView(FrogPlotPanel::View::Contacts);
+        QCOMPARE(panel->plot()->graph(0)->data()->at(120)->value, double(last.bodies[1].contacts));
+        panel->setView(FrogPlotPanel::View::Energy);
+
+        // The CSV of body 2 is simulate --series-body 2's, byte for byte.
+        QTemporaryDir dir;
+        const QString mine = dir.filePath("gui.csv"), theirs = dir.filePath("cli.csv");
+        QVERIFY2(panel->exportCsv(mine, &error), qPrintable(error));
+        const CliRun run = runCli({"simulate", "--scene", "many-bodies", "--solver", "stable", "--set", "bodies=3",
+                                   "--steps", "120", "--series", theirs, "--series-body", "2"});
+        QCOMPARE(run.exitCode, 0);
+        QFile a(mine), b(theirs);
+        QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
+        const QByteArray gui = a.readAll();
+        QCOMPARE(gui.count('\n'), 122);
+        QVERIFY(gui == b.readAll());
+
+        // A reset keeps the choice; plots hidden, nothing is marked; shown again, it is.
+        tab().reset();
+        steps(tab(), 2);
+        panel->refresh(true);
+        QCOMPARE(panel->body(), 1);
+        tab().setPlotsShown(false);
+        QCOMPARE(canvas->markedBody(), -1);
+        tab().setPlotsShown(true);
+        QCOMPARE(canvas->markedBody(), 1);
+        // One body: no list, the scene's values, nothing marked.
+        QVERIFY(tab().setScene("frog", nullptr));
+        steps(tab(), 2);
+        panel->refresh(true);
+        QVERIFY(!list->isVisible());
+        QCOMPARE(panel->body(), -1);
+        QCOMPARE(canvas->markedBody(), -1);
+        tab().setPlotsShown(false);
+    }
+
     // A heavy step at 4×: only the steps a frame holds run in it.
     void fastRunsOnlyWhatAFrameHolds()
     {

@@ -726,6 +726,10 @@ private slots:
         QTest::newRow("bad language") << QStringList{"--lang", "fr"} << 2;
         QTest::newRow("bad example") << QStringList{"--example", "3.1"} << 2;
         QTest::newRow("bad scene") << QStringList{"--scene", "dragon"} << 2;
+        QTest::newRow("plot of body 3") << QStringList{"--scene", "many-bodies", "--plots", "energy", "--steps", "5", "--plot-body", "3"} << 0;
+        QTest::newRow("plot of body 13 of 12") << QStringList{"--scene", "many-bodies", "--plot-body", "13"} << 2;
+        QTest::newRow("plot of body zero") << QStringList{"--scene", "many-bodies", "--plot-body", "0"} << 2;
+        QTest::newRow("plot of a body, one body") << QStringList{"--scene", "frog", "--plot-body", "1"} << 2;
     }
     void commandLineOptions()
     {

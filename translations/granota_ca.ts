@@ -4194,6 +4194,18 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
     <context>
         <name>granota::CommandLine</name>
         <message>
+            <source>bad body “%1” (1 … %2)</source>
+            <translation>cos «%1» incorrecte (1 … %2)</translation>
+        </message>
+        <message>
+            <source>--plot-body: the scene has no bodies to choose from (it needs two or more)</source>
+            <translation>--plot-body: l'escena no té cossos per triar (en calen dos o més)</translation>
+        </message>
+        <message>
+            <source>Plot body K (1, 2, …) of the frog's scene alone, marked on the canvas.</source>
+            <translation>Dibuixa només el cos K (1, 2, …) de l'escena de la granota, marcat al llenç.</translation>
+        </message>
+        <message>
             <source>bad size “%1” (WxH, e.g. 800x570)</source>
             <translation>mida «%1» incorrecta (AxB, p. ex. 800x570)</translation>
         </message>
@@ -4498,6 +4510,22 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
     </context>
     <context>
         <name>granota::ui::FrogPlotPanel</name>
+        <message>
+            <source>Whose values to plot: all the bodies summed (the area error: their mean; the stretch: the largest), or one body alone, with the legs that hang from it. The canvas marks the body chosen. The CSV holds what is plotted.</source>
+            <translation>De qui es dibuixen els valors: tots els cossos sumats (l'error d'àrea: la mitjana; l'estirament: el màxim), o un sol cos, amb les potes que en pengen. El llenç marca el cos triat. El CSV conté el que es dibuixa.</translation>
+        </message>
+        <message>
+            <source>Body %1 alone: its values are kept for the last %2 s.</source>
+            <translation>Només el cos %1: se'n guarden els valors dels darrers %2 s.</translation>
+        </message>
+        <message>
+            <source>Body %1</source>
+            <translation>Cos %1</translation>
+        </message>
+        <message>
+            <source>All bodies</source>
+            <translation>Tots els cossos</translation>
+        </message>
         <message>
             <source>|L/L₀ − 1|</source>
             <translation>|L/L₀ − 1|</translation>

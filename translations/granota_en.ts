@@ -4194,6 +4194,18 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
     <context>
         <name>granota::CommandLine</name>
         <message>
+            <source>bad body “%1” (1 … %2)</source>
+            <translation>bad body “%1” (1 … %2)</translation>
+        </message>
+        <message>
+            <source>--plot-body: the scene has no bodies to choose from (it needs two or more)</source>
+            <translation>--plot-body: the scene has no bodies to choose from (it needs two or more)</translation>
+        </message>
+        <message>
+            <source>Plot body K (1, 2, …) of the frog's scene alone, marked on the canvas.</source>
+            <translation>Plot body K (1, 2, …) of the frog's scene alone, marked on the canvas.</translation>
+        </message>
+        <message>
             <source>bad size “%1” (WxH, e.g. 800x570)</source>
             <translation>bad size “%1” (WxH, e.g. 800x570)</translation>
         </message>
@@ -4498,6 +4510,22 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
     </context>
     <context>
         <name>granota::ui::FrogPlotPanel</name>
+        <message>
+            <source>Whose values to plot: all the bodies summed (the area error: their mean; the stretch: the largest), or one body alone, with the legs that hang from it. The canvas marks the body chosen. The CSV holds what is plotted.</source>
+            <translation>Whose values to plot: all the bodies summed (the area error: their mean; the stretch: the largest), or one body alone, with the legs that hang from it. The canvas marks the body chosen. The CSV holds what is plotted.</translation>
+        </message>
+        <message>
+            <source>Body %1 alone: its values are kept for the last %2 s.</source>
+            <translation>Body %1 alone: its values are kept for the last %2 s.</translation>
+        </message>
+        <message>
+            <source>Body %1</source>
+            <translation>Body %1</translation>
+        </message>
+        <message>
+            <source>All bodies</source>
+            <translation>All bodies</translation>
+        </message>
         <message>
             <source>|L/L₀ − 1|</source>
             <translation>|L/L₀ − 1|</translation>

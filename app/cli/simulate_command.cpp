@@ -101,7 +101,19 @@ Expected<CommandOutput> run(const Arguments& args)
     std::ofstream series;
     const auto seriesPath = args.value("series");
     const std::string seriesName = "the series to " + quotedForDisplay(seriesPath.value_or(""));
-    SeriesRecorder recorder(1);
+    // --series-body K: body K's own values (docs/plots-over-time.md#per-body), same columns.
+    int seriesBody = -1;
+    if (args.has("series-body")) {
+        if (!seriesPath)
+            return makeError(ErrorCode::InvalidInput, "--series-body chooses the body of --series: give --series F.csv too");
+        if (s.bodyCount() == 0)
+            return makeError(ErrorCode::InvalidInput, "--series-body: scene '" + s.scene().name + "' has no bodies");
+        auto k = args.integer("series-body", 1, s.bodyCount(), 1);
+        if (!k)
+            return k.error();
+        seriesBody = static_cast<int>(*k) - 1;
+    }
+    SeriesRecorder recorder(1, seriesBody >= 0 ? SeriesRecorder::kBodyValuesKept : 0);
     if (seriesPath) {
         if (*steps + 1LL > kMaxSeriesRows)
             return makeError(ErrorCode::OutOfRange, "--series would write " + std::to_string(*steps + 1LL) +
@@ -116,7 +128,8 @@ Expected<CommandOutput> run(const Arguments& args)
         if (!series)
             return writeError(seriesName, errno);
         const SeriesSample& first = recorder.record(s);
-        series << seriesCsvHeader(recorder.phaseLinks()) << '\n' << seriesCsvRow(first, recorder.phaseLinks()) << '\n';
+        series << seriesCsvHeader(recorder.phaseLinks()) << '\n'
+               << seriesCsvRow(first, recorder.phaseLinks(), seriesBody) << '\n';
     }
     for (long i = 0; i < *steps; ++i) {
         runner.step(); // a replay applies its events before their steps
@@ -126,7 +139,7 @@ Expected<CommandOutput> run(const Arguments& args)
                 return writeError(traceName, errno);
         }
         if (series.is_open()) {
-            series << seriesCsvRow(recorder.record(s), recorder.phaseLinks()) << '\n';
+            series << seriesCsvRow(recorder.record(s), recorder.phaseLinks(), seriesBody) << '\n';
             if (!series)
                 return writeError(seriesName, errno);
         }
@@ -216,11 +229,11 @@ Expected<CommandOutput> run(const Arguments& args)
 
 Command simulateCommand()
 {
-    return {"simulate", "(--scene NAME [--solver seed|stable] [--steps N] [--set key=value …] | --replay F.json) [--trace F.csv] [--series F.csv] [--record F.json] [--json]",
+    return {"simulate", "(--scene NAME [--solver seed|stable] [--steps N] [--set key=value …] | --replay F.json) [--trace F.csv] [--series F.csv [--series-body K]] [--record F.json] [--json]",
             "run a scene of chapter 4 or §5.2 headless; --trace writes the reference CSV layout, --series the "
-            "energies, losses, area error, stretch and contacts of every step; --record writes the run as a recording "
+            "energies, losses, area error, stretch and contacts of every step (summed, or of body K alone); --record writes the run as a recording "
             "(scene, solver, steps, events) and --replay runs one (docs/rewind.md)",
-            {{"scene", "solver", "steps", "set", "trace", "series", "record", "replay"}, {"json"}, {"set"}},
+            {{"scene", "solver", "steps", "set", "trace", "series", "series-body", "record", "replay"}, {"json"}, {"set"}},
             &run};
 }
 

@@ -126,6 +126,11 @@ public:
     virtual bool grabbing() const { return false; }
 
     virtual Readouts readouts() const = 0;
+    /// Each body's own readouts, one per body (the plots per body): the same quantities over
+    /// that body's vertices and constraints and the legs that hang from it; its area error
+    /// and largest stretch are its own. Summed over the bodies (mean, largest for those two)
+    /// they give readouts(), but for a chain that hangs from no body (the pendulums).
+    virtual void bodyReadouts(std::vector<Readouts>& out) const { out.clear(); }
     /// §5.2.2's broad phase: the pairs of bodies (first < second) whose boxes, grown by the
     /// step's motion, overlapped in the last step — the candidates the contacts were tested
     /// on. None on the seed, which has no collisions.

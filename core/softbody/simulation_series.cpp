@@ -3,17 +3,56 @@
 #include "core/base/math_constants.h"
 #include "core/base/number_format.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace granota {
 
-SeriesRecorder::SeriesRecorder(std::size_t capacity) : m_capacity(capacity) {}
+SeriesRecorder::SeriesRecorder(std::size_t capacity, std::size_t bodyValues)
+    : m_capacity(capacity), m_bodyValues(bodyValues)
+{
+}
+
+namespace {
+
+/// The values of a readout: total and the losses since the series began (first*).
+SeriesValues valuesOf(const Readouts& r, double firstTotal, const std::optional<double>& firstDamping)
+{
+    SeriesValues v;
+    v.kinetic = r.kineticEnergy;
+    v.gravity = r.potentialEnergy;
+    v.elastic = r.elasticEnergy;
+    v.total = v.kinetic + v.gravity + r.elasticEnergy.value_or(0);
+    v.areaErrorPercent = r.areaErrorPercent;
+    v.maxStretch = r.maxStretch;
+    v.contacts = r.contacts;
+    if (r.dampingLoss && firstDamping) {
+        v.dampingLoss = *r.dampingLoss - *firstDamping;
+        v.otherLoss = firstTotal - v.total - *v.dampingLoss;
+    }
+    return v;
+}
+
+} // namespace
+
+void SeriesRecorder::keepBodyValues(SeriesSample& s, const Simulation& sim)
+{
+    sim.bodyReadouts(m_bodyReadouts);
+    if (m_bodyReadouts.size() != std::size_t(m_bodies))
+        return; // not the bodies the series began with: none kept
+    s.bodies.swap(m_spare);
+    s.bodies.clear();
+    for (std::size_t k = 0; k < m_bodyReadouts.size(); ++k)
+        s.bodies.push_back(valuesOf(m_bodyReadouts[k], m_firstBodyTotal[k], m_firstBodyDamping[k]));
+}
 
 void SeriesRecorder::clear()
 {
     m_samples.clear();
     m_started = false;
     m_lastAngles.clear();
+    m_bodies = 0;
+    m_bodySamples = 0;
 }
 
 void SeriesRecorder::truncateAfter(long step)
@@ -33,18 +72,9 @@ const SeriesSample& SeriesRecorder::record(const Simulation& sim)
     if (m_started && sim.stepCount() <= m_lastStep)
         clear();
     const Readouts r = sim.readouts();
-    SeriesSample s;
-    s.step = sim.stepCount();
-    s.kinetic = r.kineticEnergy;
-    s.gravity = r.potentialEnergy;
-    s.elastic = r.elasticEnergy;
-    s.total = s.kinetic + s.gravity + r.elasticEnergy.value_or(0);
-    s.areaErrorPercent = r.areaErrorPercent;
-    s.maxStretch = r.maxStretch;
-    s.contacts = r.contacts;
     if (!m_started) {
         m_started = true;
-        m_firstTotal = s.total;
+        m_firstTotal = r.kineticEnergy + r.potentialEnergy + r.elasticEnergy.value_or(0);
         m_firstDamping = r.dampingLoss;
         m_phaseLinks = 0;
         if (sim.scene().model == SceneModel::Pendulum && sim.chainCount() > 0) {
@@ -52,11 +82,27 @@ const SeriesSample& SeriesRecorder::record(const Simulation& sim)
             sim.chainJoints(0, joints);
             m_phaseLinks = joints.empty() ? 0 : static_cast<int>(joints.size()) - 1;
         }
+        m_bodies = 0;
+        m_bodySamples = 0;
+        if (m_bodyValues > 0 && sim.bodyCount() > 0) {
+            sim.bodyReadouts(m_bodyReadouts);
+            m_bodies = static_cast<int>(m_bodyReadouts.size());
+            m_firstBodyTotal.clear();
+            m_firstBodyDamping.clear();
+            for (const Readouts& b : m_bodyReadouts) {
+                m_firstBodyTotal.push_back(b.kineticEnergy + b.potentialEnergy + b.elasticEnergy.value_or(0));
+                m_firstBodyDamping.push_back(b.dampingLoss);
+            }
+            m_bodySamples = std::max<std::size_t>(1, m_bodyValues / std::size_t(std::max(1, m_bodies)));
+            if (m_capacity > 0)
+                m_bodySamples = std::min(m_bodySamples, m_capacity);
+        }
     }
-    if (r.dampingLoss && m_firstDamping) {
-        s.dampingLoss = *r.dampingLoss - *m_firstDamping;
-        s.otherLoss = m_firstTotal - s.total - *s.dampingLoss;
-    }
+    SeriesSample s;
+    static_cast<SeriesValues&>(s) = valuesOf(r, m_firstTotal, m_firstDamping);
+    s.step = sim.stepCount();
+    if (m_bodies > 0)
+        keepBodyValues(s, sim);
     if (m_phaseLinks > 0) {
         std::vector<Point> joints;
         sim.chainJoints(0, joints);
@@ -73,6 +119,13 @@ const SeriesSample& SeriesRecorder::record(const Simulation& sim)
     m_samples.push_back(std::move(s));
     if (m_capacity > 0 && m_samples.size() > m_capacity)
         m_samples.pop_front();
+    // Only the last m_bodySamples keep their bodies' values: let the one before them go.
+    if (m_bodies > 0 && m_samples.size() > m_bodySamples) {
+        std::vector<SeriesValues>& old = m_samples[m_samples.size() - 1 - m_bodySamples].bodies;
+        if (!old.empty())
+            m_spare.swap(old);
+        old.clear();
+    }
     return m_samples.back();
 }
 
@@ -85,14 +138,17 @@ std::string seriesCsvHeader(int phaseLinks)
     return h;
 }
 
-std::string seriesCsvRow(const SeriesSample& s, int phaseLinks)
+std::string seriesCsvRow(const SeriesSample& s, int phaseLinks, int body)
 {
     const auto opt = [](const std::optional<double>& v) { return v ? formatDouble(*v) : std::string(); };
+    static const SeriesValues kNone;
+    const SeriesValues* values = seriesValuesOf(s, body);
+    const SeriesValues& v = values ? *values : kNone;
     std::string row = std::to_string(s.step) + "," + formatDouble(double(s.step) / kStepsPerSecond) + "," +
-                      formatDouble(s.kinetic) + "," + formatDouble(s.gravity) + "," + opt(s.elastic) + "," +
-                      formatDouble(s.total) + "," + opt(s.dampingLoss) + "," + opt(s.otherLoss) + "," +
-                      formatDouble(s.areaErrorPercent) + "," + formatDouble(s.maxStretch) + "," +
-                      std::to_string(s.contacts);
+                      formatDouble(v.kinetic) + "," + formatDouble(v.gravity) + "," + opt(v.elastic) + "," +
+                      formatDouble(v.total) + "," + opt(v.dampingLoss) + "," + opt(v.otherLoss) + "," +
+                      formatDouble(v.areaErrorPercent) + "," + formatDouble(v.maxStretch) + "," +
+                      std::to_string(v.contacts);
     for (int k = 0; k < phaseLinks; ++k) {
         const std::size_t i = static_cast<std::size_t>(k);
         row += "," + (i < s.angles.size() ? formatDouble(s.angles[i]) : std::string()) + "," +

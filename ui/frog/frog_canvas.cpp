@@ -47,6 +47,7 @@ const QColor kGhostColour(0x5a, 0x2d, 0x82);
 const QColor kTrailColour(0xe0, 0x6c, 0x00);
 const QColor kPairColour(0xc2, 0x18, 0x5b);
 const QColor kProtractorColour(0x1e, 0x5a, 0x9c);
+const QColor kMarkedBodyColour(0xd8, 0x1b, 0x60); // the body the plots show alone
 const QColor kAtLimitColour(0xc6, 0x28, 0x28);
 const QColor kRulerColour(0x21, 0x21, 0x21);
 
@@ -1064,6 +1065,50 @@ void FrogCanvas::drawScene(QPainter& p, double pixel)
         sim()->bodyVertices(0, m_vertices);
         drawHead(p, 0);
     }
+    drawMarkedBody(p, pixel);
+}
+
+void FrogCanvas::setMarkedBody(int body)
+{
+    if (body == m_markedBody)
+        return;
+    m_markedBody = body;
+    update();
+}
+
+void FrogCanvas::drawMarkedBody(QPainter& p, double pixel)
+{
+    if (m_markedBody < 0 || m_markedBody >= sim()->bodyCount())
+        return;
+    sim()->bodyVertices(m_markedBody, m_work);
+    if (m_work.size() < 3 || !std::all_of(m_work.begin(), m_work.end(), [](Point v) { return isFinite(v); }))
+        return;
+    const Aabb box = boundingBox(m_work.data(), int(m_work.size()));
+    // Sizes in screen px (`pixel`: scene px per screen px), so the mark reads at any zoom.
+    const double grow = 6 * m_style.scale * pixel;
+    const QRectF around(QPointF(box.minX - grow, box.minY - grow), QPointF(box.maxX + grow, box.maxY + grow));
+    p.save();
+    QPen pen(kMarkedBodyColour, 2.5 * m_style.scale, Qt::DashLine);
+    pen.setCosmetic(true);
+    p.setPen(pen);
+    p.setBrush(Qt::NoBrush);
+    p.drawRoundedRect(around, grow, grow);
+    // Its number, as the plots' list names it, above the box (below it at the frame's top).
+    QFont font = p.font();
+    font.setBold(true);
+    font.setPixelSize(std::max(1, int(std::lround(15 * m_style.scale * pixel))));
+    p.setFont(font);
+    const QString label = QString::number(m_markedBody + 1);
+    const QFontMetricsF metrics(font);
+    const QSizeF size(metrics.horizontalAdvance(label) + 8 * m_style.scale * pixel, metrics.height() + 2 * m_style.scale * pixel);
+    const double top = around.top() - size.height() >= 0 ? around.top() - size.height() : around.bottom();
+    const QRectF tag(QPointF(around.center().x() - size.width() / 2, top), size);
+    p.setPen(Qt::NoPen);
+    p.setBrush(kMarkedBodyColour);
+    p.drawRoundedRect(tag, 3 * m_style.scale * pixel, 3 * m_style.scale * pixel);
+    p.setPen(Qt::white);
+    p.drawText(tag, Qt::AlignCenter, label);
+    p.restore();
 }
 
 void FrogCanvas::drawHead(QPainter& p, int body)

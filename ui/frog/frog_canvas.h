@@ -188,6 +188,10 @@ public:
     void setRecordingSeries(bool on);
     bool recordingSeries() const { return m_recording; }
     const SeriesRecorder& series() const { return m_series; }
+    /// The body the plots show alone (FrogPlotPanel::body), outlined and numbered on the
+    /// canvas so that the class sees which one it is; −1: none (the plots sum them).
+    void setMarkedBody(int body);
+    int markedBody() const { return m_markedBody; }
 
     void setOverlays(const Overlays& overlays);
     const Overlays& overlays() const { return m_overlays; }
@@ -263,6 +267,7 @@ private:
     void restartTrail();
     std::optional<Point> trailPosition(); ///< where the trail's point is now
     void drawTrail(QPainter& p);
+    void drawMarkedBody(QPainter& p, double pixel);
     void drawPairs(QPainter& p);
     void drawProtractor(QPainter& p, double pixel);
     void drawRuler(QPainter& p, double pixel);
@@ -302,6 +307,7 @@ private:
     std::unique_ptr<RecordedRun> m_run;
     std::unique_ptr<RecordedRun> m_ghost; // Overlays::ghost: the other solver, fed the same input
     TrailPoint m_trailPoint;
+    int m_markedBody = -1;
     std::deque<Point> m_trail;
     std::string m_trailScene; // the stage m_trailPoint was chosen in
     std::vector<Point> m_trailBuffer;

@@ -15,6 +15,7 @@
 #include <QLocale>
 #include <QStandardItemModel>
 #include <QPushButton>
+#include <QSignalBlocker>
 #include <QVBoxLayout>
 #include <qcustomplot.h>
 
@@ -34,11 +35,15 @@ double timeOf(const SeriesSample& s) { return double(s.step) / kStepsPerSecond; 
 } // namespace
 
 FrogPlotPanel::FrogPlotPanel(QWidget* parent)
-    : QWidget(parent), m_view(new QComboBox(this)), m_export(new QPushButton(this)), m_note(new QLabel(this)),
+    : QWidget(parent), m_view(new QComboBox(this)), m_body(new QComboBox(this)), m_export(new QPushButton(this)), m_note(new QLabel(this)),
       m_plot(new QCustomPlot(this))
 {
     setObjectName(QStringLiteral("frogPlots"));
     m_view->setObjectName(QStringLiteral("frogPlotView"));
+    m_body->setObjectName(QStringLiteral("frogPlotBody"));
+    m_body->addItem(QString(), -1);
+    m_body->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    m_body->hide();
     m_export->setObjectName(QStringLiteral("frogPlotExport"));
     m_export->setFocusPolicy(Qt::TabFocus);
     for (int i = 0; i < 5; ++i)
@@ -68,6 +73,7 @@ FrogPlotPanel::FrogPlotPanel(QWidget* parent)
     auto* top = new QHBoxLayout;
     top->setContentsMargins(0, 0, 0, 0);
     top->addWidget(m_view, 1);
+    top->addWidget(m_body);
     top->addWidget(m_export);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 2, 4, 2);
@@ -77,6 +83,10 @@ FrogPlotPanel::FrogPlotPanel(QWidget* parent)
     layout->addWidget(m_note);
 
     connect(m_view, &QComboBox::activated, this, [this] { refresh(true); });
+    connect(m_body, &QComboBox::activated, this, [this] {
+        refresh(true);
+        emit bodyChosen(body());
+    });
     connect(m_export, &QPushButton::clicked, this, &FrogPlotPanel::chooseExportFile);
     m_timer.setInterval(kRefreshMs);
     connect(&m_timer, &QTimer::timeout, this, [this] { refresh(); });
@@ -99,6 +109,42 @@ void FrogPlotPanel::setView(View v)
         return;
     m_view->setCurrentIndex(i);
     refresh(true);
+}
+
+int FrogPlotPanel::body() const { return m_body->count() > 1 ? m_body->currentData().toInt() : -1; }
+
+void FrogPlotPanel::setBody(int chosen)
+{
+    updateBodies();
+    const int i = m_body->findData(chosen);
+    if (i < 0)
+        return;
+    const bool changed = i != m_body->currentIndex();
+    m_body->setCurrentIndex(i);
+    refresh(true);
+    if (changed)
+        emit bodyChosen(body());
+}
+
+void FrogPlotPanel::updateBodies()
+{
+    // One entry a body, when there are two or more (one body's values are the scene's). A
+    // series started again (a reset) keeps the choice until its first sample says otherwise.
+    if (m_series && m_series->samples().empty())
+        return;
+    const int bodies = m_series && m_series->bodies() > 1 ? m_series->bodies() : 0;
+    if (m_body->count() != bodies + 1) {
+        const int chosen = m_body->currentData().toInt();
+        const QSignalBlocker block(m_body);
+        while (m_body->count() > bodies + 1)
+            m_body->removeItem(m_body->count() - 1);
+        for (int k = m_body->count() - 1; k < bodies; ++k)
+            m_body->addItem(tr("Body %1").arg(k + 1), k);
+        m_body->setCurrentIndex(std::max(0, m_body->findData(chosen)));
+        if (m_body->currentData().toInt() != chosen)
+            emit bodyChosen(body()); // that body is gone (another stage): back to the sum
+    }
+    m_body->setVisible(bodies > 0 && view() != View::Phase);
 }
 
 void FrogPlotPanel::setWindowSeconds(double seconds)
@@ -153,6 +199,7 @@ void FrogPlotPanel::refresh(bool force)
     if (!isVisible() && !force)
         return;
     updateViews();
+    updateBodies();
     m_drawnStep = last;
     m_drawnSize = size;
     m_drawnView = int(view());
@@ -197,6 +244,7 @@ void FrogPlotPanel::drawTime()
 
     const bool energy = v == View::Energy;
     const bool stable = !samples.empty() && samples.back().elastic.has_value();
+    const int chosen = body();
     const QString names[kEnergyGraphs] = {tr("kinetic"), tr("gravitational"), tr("elastic"), tr("total"),
                                           tr("damping"), tr("other losses")};
     const int graphs = energy ? kEnergyGraphs : 1;
@@ -204,8 +252,11 @@ void FrogPlotPanel::drawTime()
     QVector<double> values[kEnergyGraphs];
     keys.reserve(int(count / stride + 1));
     for (std::size_t i = from; i < samples.size(); i += stride) {
-        const SeriesSample& s = samples[i];
-        keys << timeOf(s);
+        const SeriesValues* of = seriesValuesOf(samples[i], chosen);
+        if (!of)
+            continue; // older than the body's values are kept
+        const SeriesValues& s = *of;
+        keys << timeOf(samples[i]);
         if (energy) {
             const double e[kEnergyGraphs] = {s.kinetic, s.gravity, s.elastic.value_or(0), s.total,
                                              s.dampingLoss.value_or(0), s.otherLoss.value_or(0)};
@@ -278,14 +329,20 @@ void FrogPlotPanel::drawTime()
         zero->point2->setCoords(1, 0);
         zero->setPen(QPen(QColor(0x8a, 0x86, 0x7a), 1, Qt::DotLine));
     }
+    QString kept;
+    if (chosen >= 0 && m_series->bodySamplesKept() < m_series->samples().size())
+        kept = tr("Body %1 alone: its values are kept for the last %2 s.")
+                   .arg(chosen + 1)
+                   .arg(displayFixed(double(m_series->bodySamplesKept()) / kStepsPerSecond, 0)) +
+               QLatin1Char(' ');
     if (energy && !stable)
-        m_note->setText(tr("Energies in px²/step², unit masses. The seed's springs and area are corrections, not "
+        m_note->setText(kept + tr("Energies in px²/step², unit masses. The seed's springs and area are corrections, not "
                            "forces: it stores no elastic energy and books no losses; total = kinetic + gravitational."));
     else if (energy)
-        m_note->setText(tr("Energies in mass·px²/step². Other losses: hits and friction at walls and between bodies, "
+        m_note->setText(kept + tr("Energies in mass·px²/step². Other losses: hits and friction at walls and between bodies, "
                            "and the solver's own dissipation, less what the mouse put in."));
     else
-        m_note->clear();
+        m_note->setText(kept.trimmed());
     m_note->setVisible(!m_note->text().isEmpty());
 }
 
@@ -348,9 +405,11 @@ QString FrogPlotPanel::csv() const
     if (!m_series)
         return QString();
     const int links = m_series->phaseLinks();
+    const int chosen = body();
     std::string out = seriesCsvHeader(links) + "\n";
     for (const SeriesSample& s : m_series->samples())
-        out += seriesCsvRow(s, links) + "\n";
+        if (seriesValuesOf(s, chosen))
+            out += seriesCsvRow(s, links, chosen) + "\n";
     return QString::fromStdString(out);
 }
 
@@ -384,6 +443,12 @@ void FrogPlotPanel::retranslate()
     m_view->setToolTip(tr("What to plot against time: the energies and what damping and the rest took, the area "
                           "error, the largest stretch, the contacts; or, for the pendulums, each link's angle "
                           "against its angular velocity. The wheel zooms the window of seconds."));
+    m_body->setItemText(0, tr("All bodies"));
+    for (int k = 1; k < m_body->count(); ++k)
+        m_body->setItemText(k, tr("Body %1").arg(k));
+    m_body->setToolTip(tr("Whose values to plot: all the bodies summed (the area error: their mean; the stretch: "
+                          "the largest), or one body alone, with the legs that hang from it. The canvas marks the "
+                          "body chosen. The CSV holds what is plotted."));
     m_export->setText(tr("Export CSV…"));
     m_export->setToolTip(tr("Every step kept (the last %1 minutes), in the columns of granota-cli simulate --series.")
                              .arg(FrogCanvas::kSeriesSeconds / 60));

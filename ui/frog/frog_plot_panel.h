@@ -3,7 +3,8 @@
 /// The plots over time under the Frog canvas (docs/plots-over-time.md): the canvas's series
 /// drawn as a scrolling window of the last seconds — energies and what damping and the rest
 /// took, the area error, the largest stretch, the contacts — or, for the pendulums, the phase
-/// plot (each link's angle against its angular velocity, with §4.15's limits). The wheel
+/// plot (each link's angle against its angular velocity, with §4.15's limits); summed over
+/// the bodies or of one body alone, marked on the canvas. The wheel
 /// zooms the window, a drag moves it; pause freezes it. The series export as CSV, in the
 /// columns of `granota-cli simulate --series`.
 
@@ -35,6 +36,11 @@ public:
 
     View view() const;
     void setView(View view);
+    /// Whose values the time plots show and the CSV holds: −1 the scene's (summed over its
+    /// bodies), or body k's alone (0-based; its values are kept for the last
+    /// SeriesRecorder::bodySamplesKept() samples). The list is shown when there are two or more.
+    int body() const;
+    void setBody(int chosen);
     /// The width of the scrolling window, seconds (the wheel changes it): 1 … kSeriesSeconds.
     double windowSeconds() const { return m_window; }
     void setWindowSeconds(double seconds);
@@ -51,6 +57,8 @@ public:
 
 signals:
     void statusMessage(const QString& text);
+    /// The user chose whose values to plot (body()).
+    void bodyChosen(int body);
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -63,10 +71,12 @@ private:
     void drawPhase();
     void chooseExportFile();
     void updateViews();
+    void updateBodies();
 
     const SeriesRecorder* m_series = nullptr;
     const SceneSpec* m_scene = nullptr;
     QComboBox* m_view;
+    QComboBox* m_body;
     QPushButton* m_export;
     QLabel* m_note;
     QCustomPlot* m_plot;

@@ -309,6 +309,7 @@ FrogTab::FrogTab(QWidget* parent)
     connect(m_step, &QPushButton::clicked, this, &FrogTab::stepOnce);
     connect(m_showPlots, &QCheckBox::toggled, this, &FrogTab::setPlotsShown);
     connect(m_plots, &FrogPlotPanel::statusMessage, this, &TabPage::statusMessage);
+    connect(m_plots, &FrogPlotPanel::bodyChosen, m_canvas, &FrogCanvas::setMarkedBody);
     connect(m_speedCombo, &QComboBox::activated, this, [this](int index) { setSpeed(m_speedCombo->itemData(index).toDouble()); });
     connect(m_reset, &QPushButton::clicked, this, &FrogTab::reset);
     connect(m_fit, &QRadioButton::toggled, this, [this](bool fit) {
@@ -844,6 +845,7 @@ void FrogTab::setPlotsShown(bool on)
     m_canvas->setRecordingSeries(on);
     m_plots->setSeries(&m_canvas->series(), &m_scene);
     m_plots->setVisible(on); // at the height it asks for (FrogPlotPanel::sizeHint), the canvas the rest
+    m_canvas->setMarkedBody(on ? m_plots->body() : -1);
 }
 
 void FrogTab::updateTimeline()

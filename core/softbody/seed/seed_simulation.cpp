@@ -166,25 +166,44 @@ public:
     Readouts readouts() const override
     {
         Readouts r;
-        std::vector<Point> all;
         for (int i = 0; i < bodyCount(); ++i) {
-            const SeedBody<Real>& b = body(i);
-            const auto x = b.vertices(), prev = b.previousVertices();
-            if (b.targetArea() > 0)
-                r.areaErrorPercent += 100 * (bodyArea(i) - double(b.targetArea())) / double(b.targetArea()) / bodyCount();
-            r.maxStretch = std::max(r.maxStretch, edgeStretch(x, m_rest[std::size_t(i)]));
-            for (const auto& c : b.corrections())
-                r.constraintForce = std::max(r.constraintForce, std::hypot(double(c.x), double(c.y)));
-            for (std::size_t k = 0; k < x.size(); ++k) {
-                const Point v = x[k] - prev[k];
-                r.kineticEnergy += 0.5 * dot(v, v);
-            }
-            all.insert(all.end(), x.begin(), x.end());
+            const Readouts b = bodyReadout(i);
+            r.areaErrorPercent += b.areaErrorPercent / bodyCount();
+            r.maxStretch = std::max(r.maxStretch, b.maxStretch);
+            r.constraintForce = std::max(r.constraintForce, b.constraintForce);
+            r.kineticEnergy += b.kineticEnergy;
+            r.potentialEnergy += b.potentialEnergy;
+            r.contacts += b.contacts;
         }
+        return r;
+    }
+    void bodyReadouts(std::vector<Readouts>& out) const override
+    {
+        out.resize(std::size_t(bodyCount()));
+        for (int i = 0; i < bodyCount(); ++i)
+            out[std::size_t(i)] = bodyReadout(i);
+    }
+
+    /// Body i's readouts: unit masses, velocities x − x_prev (Annex II's Verlet).
+    Readouts bodyReadout(int i) const
+    {
+        Readouts r;
+        const SeedBody<Real>& b = body(i);
+        const auto x = b.vertices(), prev = b.previousVertices();
+        if (b.targetArea() > 0)
+            r.areaErrorPercent = 100 * (bodyArea(i) - double(b.targetArea())) / double(b.targetArea());
+        r.maxStretch = edgeStretch(x, m_rest[std::size_t(i)]);
+        for (const auto& c : b.corrections())
+            r.constraintForce = std::max(r.constraintForce, std::hypot(double(c.x), double(c.y)));
+        for (std::size_t k = 0; k < x.size(); ++k) {
+            const Point v = x[k] - prev[k];
+            r.kineticEnergy += 0.5 * dot(v, v);
+        }
+        const FrogParams& p = scene().params;
         if (scene().has("gravity"))
-            r.potentialEnergy = potentialEnergy(all, scene().params.gravity, scene().params.width, scene().params.height);
+            r.potentialEnergy = potentialEnergy(x, p.gravity, p.width, p.height);
         if (scene().has("bounds"))
-            r.contacts = pointsOnFrameEdge(all, scene().params.width, scene().params.height);
+            r.contacts = pointsOnFrameEdge(x, p.width, p.height);
         return r;
     }
 

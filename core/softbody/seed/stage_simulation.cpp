@@ -62,6 +62,8 @@ public:
             r.contacts = pointsOnFrameEdge(x, scene().params.width, scene().params.height);
         return r;
     }
+    /// One body: its readouts are the scene's.
+    void bodyReadouts(std::vector<Readouts>& out) const override { out.assign(1, readouts()); }
 
 protected:
     void doStep() override { m_body.step(); }

@@ -223,6 +223,27 @@ public:
         return r;
     }
 
+    void bodyReadouts(std::vector<Readouts>& out) const override
+    {
+        m_world.bodyEnergies(m_energies);
+        const Point g = m_world.params().gravity;
+        const double height = dot(g, potentialOrigin(g, scene().params.width, scene().params.height));
+        out.resize(m_energies.size());
+        for (int i = 0; i < bodyCount(); ++i) {
+            const XpbdWorld::BodyEnergies& e = m_energies[std::size_t(i)];
+            const XpbdWorld::EdgeExtremes edges = m_world.edgeExtremes(i);
+            Readouts& r = out[std::size_t(i)];
+            r.areaErrorPercent = m_world.areaErrorPercent(i);
+            r.maxStretch = edges.stretch;
+            r.constraintForce = std::max(std::abs(m_world.areaPressure(i)), edges.tension);
+            r.kineticEnergy = e.kinetic;
+            r.potentialEnergy = e.gravity + e.movingMass * height; // as readouts()
+            r.elasticEnergy = e.elastic;
+            r.dampingLoss = e.dampingLoss;
+            r.contacts = e.contacts;
+        }
+    }
+
 protected:
     void doStep() override { m_world.step(); }
 
@@ -255,6 +276,7 @@ private:
     }
 
     XpbdWorld m_world;
+    mutable std::vector<XpbdWorld::BodyEnergies> m_energies; // scratch of bodyReadouts
     std::vector<std::vector<LinkLimit>> m_limits; // per chain, as added
     bool m_spawned = false;
     std::optional<double> m_mouseRadius; // §4.1, once the mouse has moved

@@ -82,6 +82,7 @@ int XpbdWorld::addParticle(Point x, Point v, double invMass)
     m_restShape.push_back(Point());
     m_rest.push_back(Point());
     m_delta.push_back(Point());
+    m_owner.push_back(-1);
     return static_cast<int>(m_x.size()) - 1;
 }
 
@@ -144,6 +145,7 @@ Expected<int> XpbdWorld::addBody(const std::vector<Point>& restShape, double tar
     for (const Point& p : shape) {
         const int i = addParticle(clampToFrame(p), velocity, invMass);
         m_restShape[at(i)] = p - c;
+        m_owner[at(i)] = bodyCount();
     }
     for (int i = 0; i < n; ++i) {
         DistanceConstraint e;
@@ -172,6 +174,9 @@ Expected<int> XpbdWorld::addBody(const std::vector<Point>& restShape, double tar
         b.angleCount = n;
     }
     m_bodies.push_back(b);
+    m_bodyDampingLoss.push_back(0);
+    m_bodyContactCount.push_back(0);
+    m_bodyContactsNow.push_back(0);
     // Room for the contact lists now, so that step() does not allocate: a body touches a
     // handful of others, and every obstacle at most. In powers of two, so that adding N
     // bodies one by one reallocates log N times, not N times (N² copying: 5000 bodies took
@@ -315,6 +320,8 @@ Expected<int> XpbdWorld::addChain(const ChainDef& def)
     addParticle(root, Point(), 0.0);
     for (int k = 1; k < joints; ++k)
         addParticle(clampToFrame(def.joints[at(k)] + shift), Point(), invMass);
+    for (int k = 0; k < joints; ++k) // a leg is its body's: its energy and contacts too
+        m_owner[at(c.first + k)] = a.body;
     if (a.body >= 0 && def.pullsBody) {
         const Body& b = m_bodies[at(a.body)];
         AnchoredDistanceConstraint link;
@@ -474,6 +481,7 @@ void XpbdWorld::step()
     const double h = m_params.dt / n;
     findContactPairs();
     m_contactCount = 0;
+    std::fill(m_bodyContactCount.begin(), m_bodyContactCount.end(), 0);
     for (int s = 0; s < n; ++s)
         solveSubstep(h, double(s + 1) / n);
     updateValidity();
@@ -509,7 +517,10 @@ void XpbdWorld::solveSubstep(double h, double fraction)
         m_contact[at(i)] = Point();
         if (!(w[i] > 0))
             continue;
-        dampingLoss += (lost.x * v[i].x * v[i].x + lost.y * v[i].y * v[i].y) / w[i];
+        const double loss = (lost.x * v[i].x * v[i].x + lost.y * v[i].y * v[i].y) / w[i];
+        dampingLoss += loss;
+        if (const int b = m_owner[at(i)]; b >= 0)
+            m_bodyDampingLoss[at(b)] += 0.5 * loss;
         Point vi(keep.x * v[i].x + p.gravity.x * h, keep.y * v[i].y + p.gravity.y * h);
         vi.x = std::clamp(vi.x, -vCap, vCap);
         vi.y = std::clamp(vi.y, -vCap, vCap);
@@ -678,11 +689,17 @@ void XpbdWorld::solveSubstep(double h, double fraction)
     // do not bounce, so that resting contact stays at rest.
     const double slow = 2 * norm(p.gravity) * h;
     int contacts = static_cast<int>(m_bodyContacts.size());
+    std::fill(m_bodyContactsNow.begin(), m_bodyContactsNow.end(), 0);
+    for (const BodyContact& c : m_bodyContacts) // an obstacle's corner in a body: that body's
+        if (const int b = m_owner[at(c.p >= 0 ? c.p : c.e0)]; b >= 0)
+            ++m_bodyContactsNow[at(b)];
     for (int i = 0; i < np; ++i) {
         Point vi((x[i].x - xPrev[i].x) / h, (x[i].y - xPrev[i].y) / h);
         const Point n = m_contact[at(i)];
         if (n.x != 0 || n.y != 0) {
             ++contacts;
+            if (const int b = m_owner[at(i)]; b >= 0)
+                ++m_bodyContactsNow[at(b)];
             const double before = dot(v[i], n);
             if (before < 0) {
                 const double e = -before > slow ? p.restitution : 0.0;
@@ -693,6 +710,8 @@ void XpbdWorld::solveSubstep(double h, double fraction)
         }
         v[i] = vi;
     }
+    if (contacts > m_contactCount) // each body's count from the substep the step's count is from
+        m_bodyContactCount = m_bodyContactsNow;
     m_contactCount = std::max(m_contactCount, contacts);
     for (const BodyContact& c : m_bodyContacts)
         applyContactFriction(c, v, w, c.friction, h);
@@ -944,6 +963,50 @@ XpbdWorld::MotionEnergies XpbdWorld::motionEnergies() const
         e.movingMass += m;
     }
     return e;
+}
+
+void XpbdWorld::bodyEnergies(std::vector<BodyEnergies>& out) const
+{
+    out.assign(m_bodies.size(), BodyEnergies());
+    const Point g = m_params.gravity;
+    for (std::size_t i = 0; i < m_x.size(); ++i) {
+        const int b = m_owner[i];
+        if (b < 0 || !(m_w[i] > 0))
+            continue;
+        BodyEnergies& e = out[at(b)];
+        const double m = 1 / m_w[i];
+        e.kinetic += 0.5 * dot(m_v[i], m_v[i]) * m;
+        e.gravity -= dot(g, m_x[i]) * m;
+        e.movingMass += m;
+    }
+    const double h = m_params.dt / m_params.substeps;
+    const double invH2 = 1 / (h * h);
+    const auto energy = [invH2](double alpha, double lambda) { // as elasticEnergy()
+        const double f = lambda * invH2;
+        return 0.5 * alpha * f * f;
+    };
+    for (std::size_t k = 0; k < m_bodies.size(); ++k) {
+        const Body& b = m_bodies[k];
+        BodyEnergies& e = out[k];
+        for (int j = 0; j < b.count; ++j) {
+            const DistanceConstraint& c = m_edges[at(b.firstEdge + j)];
+            e.elastic += energy(m_params.edgeCompliance * c.complianceScale, c.lambda);
+        }
+        e.elastic += energy(m_params.areaCompliance, b.areaLambda);
+        for (int j = 0; j < b.angleCount; ++j)
+            e.elastic += energy(m_params.bendCompliance, m_angles[at(b.firstAngle + j)].lambda);
+        e.dampingLoss = m_bodyDampingLoss[k];
+        e.contacts = m_bodyContactCount[k];
+    }
+    for (const Chain& c : m_chains) {
+        if (c.anchor.body < 0)
+            continue;
+        BodyEnergies& e = out[at(c.anchor.body)];
+        for (int j = 0; j + 1 < c.count; ++j)
+            e.elastic += energy(m_params.linkCompliance, m_links[at(c.firstLink + j)].lambda);
+        if (c.anchorLink >= 0)
+            e.elastic += energy(m_params.linkCompliance, m_anchorLinks[at(c.anchorLink)].lambda);
+    }
 }
 
 double XpbdWorld::movingMass() const

@@ -175,6 +175,16 @@ public:
     /// obstacle pushed back, and points pushed out of a body (another body's vertices, an
     /// obstacle's corners).
     int contactCount() const { return m_contactCount; }
+    /// One body's share of the readouts above (the plots per body, docs/plots-over-time.md):
+    /// over its vertices and the joints of the chains anchored to it (the frog's legs), the
+    /// energy of its edges, area and bending and of those chains' links, what damping took
+    /// from those particles, and its contacts in the substep the step's contactCount() is
+    /// from. Summed over the bodies they give the world's own, less any free chain's part.
+    struct BodyEnergies {
+        double kinetic = 0, gravity = 0, movingMass = 0, elastic = 0, dampingLoss = 0;
+        int contacts = 0;
+    };
+    void bodyEnergies(std::vector<BodyEnergies>& out) const;
 
 private:
     XpbdWorld() = default;
@@ -218,6 +228,9 @@ private:
     long m_steps = 0;
     double m_dampingLoss = 0;
     int m_contactCount = 0;
+    std::vector<double> m_bodyDampingLoss; // per body, as m_dampingLoss
+    std::vector<int> m_bodyContactCount;   // per body, in the substep m_contactCount is from
+    std::vector<int> m_bodyContactsNow;    // scratch: per body, in the present substep
 
     // Particles (structure of arrays).
     std::vector<Point> m_x;
@@ -228,6 +241,7 @@ private:
     std::vector<Point> m_restShape;  // body vertices: the given shape about its centroid
     std::vector<Point> m_rest;       // the same scaled to the target area (shape-matching goal)
     std::vector<Point> m_delta;      // scratch: summed corrections of the Jacobi passes
+    std::vector<int> m_owner;        // the body a particle is of (a leg's: its body's), or −1
 
     std::vector<Body> m_bodies;
     std::vector<Chain> m_chains;
