@@ -331,9 +331,51 @@ private slots:
         QCOMPARE(seriesValuesOf(last, -1), static_cast<const SeriesValues*>(&last));
 
         SeriesRecorder sums(300, 0); // no values per body
+        sums.setBodiesAsked(true);
         sums.record(*s);
-        QCOMPARE(sums.bodies(), 0);
+        QCOMPARE(sums.bodies(), 4);
+        QVERIFY(!sums.keepsBodies() && !sums.bodiesAsked());
         QVERIFY(sums.samples().back().bodies.empty());
+    }
+
+    // A scene of more bodies than kBodiesKeptUnasked keeps each body's values only from when
+    // they are asked for, each body's losses counted from there; asked, a new run of it keeps
+    // them from its start.
+    void manyBodiesAreKeptOnceAsked()
+    {
+        const int many = SeriesRecorder::kBodiesKeptUnasked + 1;
+        const QByteArray bodies = "bodies=" + QByteArray::number(many);
+        auto s = make("many-bodies", SolverKind::Stable, {bodies.constData()});
+        SeriesRecorder series;
+        for (int i = 0; i < 20; ++i) {
+            series.record(*s);
+            s->step();
+        }
+        QCOMPARE(series.bodies(), many);
+        QVERIFY(!series.keepsBodies());
+        QVERIFY(series.samples().back().bodies.empty());
+        series.setBodiesAsked(true);
+        const SeriesSample& asked = series.record(*s);
+        QVERIFY(series.keepsBodies());
+        QCOMPARE(series.bodiesKeptFrom(), 20L);
+        QCOMPARE(asked.bodies.size(), std::size_t(many));
+        QCOMPARE(*asked.bodies[7].dampingLoss, 0.0); // from the moment asked
+        QCOMPARE(*asked.bodies[7].otherLoss, 0.0);
+        QVERIFY(*asked.dampingLoss > 0);             // the scene's, from the series' start
+        for (int i = 0; i < 30; ++i) {
+            s->step();
+            series.record(*s);
+        }
+        QVERIFY(*series.samples().back().bodies[7].dampingLoss > 0);
+        QVERIFY(series.samples()[19].bodies.empty());
+        auto again = make("many-bodies", SolverKind::Stable, {bodies.constData()});
+        series.record(*again); // a new run: asked, kept from its start
+        QVERIFY(series.keepsBodies());
+        QCOMPARE(series.bodiesKeptFrom(), 0L);
+        QCOMPARE(series.samples().back().bodies.size(), std::size_t(many));
+        SeriesRecorder fresh;
+        fresh.record(*again);
+        QVERIFY(!fresh.keepsBodies());
     }
 
     // The seed's springs and area are corrections, not forces: no elastic energy and no

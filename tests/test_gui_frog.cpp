@@ -453,6 +453,26 @@ private slots:
         QCOMPARE(canvas->markedBody(), -1);
         tab().setPlotsShown(true);
         QCOMPARE(canvas->markedBody(), 1);
+        // Many bodies: their values are kept once one is chosen, and the note says from when.
+        list->setCurrentIndex(0);
+        emit list->activated(0); // all bodies: a new run of many keeps none
+        QVERIFY(!canvas->series().bodiesAsked());
+        QVERIFY2(tab().editParameter("bodies", SeriesRecorder::kBodiesKeptUnasked + 6, &error), qPrintable(error));
+        steps(tab(), 3);
+        panel->refresh(true);
+        QVERIFY(!canvas->series().keepsBodies());
+        list->setCurrentIndex(5);
+        emit list->activated(5);
+        QCOMPARE(canvas->markedBody(), 4);
+        QVERIFY(canvas->series().bodiesAsked());
+        auto* note = panel->findChild<QLabel*>();
+        steps(tab(), 3);
+        panel->refresh(true);
+        QVERIFY(canvas->series().keepsBodies());
+        QCOMPARE(canvas->series().bodiesKeptFrom(), 4L);
+        QCOMPARE(panel->plot()->graph(3)->dataCount(), 3); // steps 4, 5, 6
+        QVERIFY2(note && note->text().startsWith(QStringLiteral("Body 5 alone: its values are kept from 0.1 s on.")),
+                 qPrintable(note ? note->text() : QString()));
         // One body: no list, the scene's values, nothing marked.
         QVERIFY(tab().setScene("frog", nullptr));
         steps(tab(), 2);

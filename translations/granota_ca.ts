@@ -4515,8 +4515,12 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
             <translation>De qui es dibuixen els valors: tots els cossos sumats (l'error d'àrea: la mitjana; l'estirament: el màxim), o un sol cos, amb les potes que en pengen. El llenç marca el cos triat. El CSV conté el que es dibuixa.</translation>
         </message>
         <message>
-            <source>Body %1 alone: its values are kept for the last %2 s.</source>
-            <translation>Només el cos %1: se'n guarden els valors dels darrers %2 s.</translation>
+            <source>Body %1 alone: its values are kept from the next step on.</source>
+            <translation>Només el cos %1: se'n guarden els valors a partir del pas següent.</translation>
+        </message>
+        <message>
+            <source>Body %1 alone: its values are kept from %2 s on.</source>
+            <translation>Només el cos %1: se'n guarden els valors a partir de %2 s.</translation>
         </message>
         <message>
             <source>Body %1</source>

@@ -4515,8 +4515,12 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
             <translation>Whose values to plot: all the bodies summed (the area error: their mean; the stretch: the largest), or one body alone, with the legs that hang from it. The canvas marks the body chosen. The CSV holds what is plotted.</translation>
         </message>
         <message>
-            <source>Body %1 alone: its values are kept for the last %2 s.</source>
-            <translation>Body %1 alone: its values are kept for the last %2 s.</translation>
+            <source>Body %1 alone: its values are kept from the next step on.</source>
+            <translation>Body %1 alone: its values are kept from the next step on.</translation>
+        </message>
+        <message>
+            <source>Body %1 alone: its values are kept from %2 s on.</source>
+            <translation>Body %1 alone: its values are kept from %2 s on.</translation>
         </message>
         <message>
             <source>Body %1</source>

@@ -114,6 +114,8 @@ Expected<CommandOutput> run(const Arguments& args)
         seriesBody = static_cast<int>(*k) - 1;
     }
     SeriesRecorder recorder(1, seriesBody >= 0 ? SeriesRecorder::kBodyValuesKept : 0);
+    if (seriesBody >= 0)
+        recorder.setBodiesAsked(true); // from the first row, however many bodies
     if (seriesPath) {
         if (*steps + 1LL > kMaxSeriesRows)
             return makeError(ErrorCode::OutOfRange, "--series would write " + std::to_string(*steps + 1LL) +

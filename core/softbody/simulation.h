@@ -131,6 +131,13 @@ public:
     /// and largest stretch are its own. Summed over the bodies (mean, largest for those two)
     /// they give readouts(), but for a chain that hangs from no body (the pendulums).
     virtual void bodyReadouts(std::vector<Readouts>& out) const { out.clear(); }
+    /// readouts() and bodyReadouts(bodies) at once, for less than the two cost apart (a
+    /// sample of the plots per body, every step).
+    virtual Readouts readoutsAndBodies(std::vector<Readouts>& bodies) const
+    {
+        bodyReadouts(bodies);
+        return readouts();
+    }
     /// §5.2.2's broad phase: the pairs of bodies (first < second) whose boxes, grown by the
     /// step's motion, overlapped in the last step — the candidates the contacts were tested
     /// on. None on the seed, which has no collisions.

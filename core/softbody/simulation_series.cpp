@@ -35,13 +35,13 @@ SeriesValues valuesOf(const Readouts& r, double firstTotal, const std::optional<
 
 } // namespace
 
-void SeriesRecorder::keepBodyValues(SeriesSample& s, const Simulation& sim)
+void SeriesRecorder::keepBodyValues(SeriesSample& s)
 {
-    sim.bodyReadouts(m_bodyReadouts);
     if (m_bodyReadouts.size() != std::size_t(m_bodies))
         return; // not the bodies the series began with: none kept
     s.bodies.swap(m_spare);
     s.bodies.clear();
+    s.bodies.reserve(m_bodyReadouts.size());
     for (std::size_t k = 0; k < m_bodyReadouts.size(); ++k)
         s.bodies.push_back(valuesOf(m_bodyReadouts[k], m_firstBodyTotal[k], m_firstBodyDamping[k]));
 }
@@ -53,6 +53,7 @@ void SeriesRecorder::clear()
     m_lastAngles.clear();
     m_bodies = 0;
     m_bodySamples = 0;
+    m_keepingBodies = false;
 }
 
 void SeriesRecorder::truncateAfter(long step)
@@ -67,11 +68,32 @@ void SeriesRecorder::truncateAfter(long step)
     m_lastAngles = m_samples.back().angles;
 }
 
+void SeriesRecorder::startKeepingBodies(long step)
+{
+    m_keepingBodies = true;
+    m_bodiesFrom = step;
+    m_firstBodyTotal.clear();
+    m_firstBodyDamping.clear();
+    for (const Readouts& b : m_bodyReadouts) {
+        m_firstBodyTotal.push_back(b.kineticEnergy + b.potentialEnergy + b.elasticEnergy.value_or(0));
+        m_firstBodyDamping.push_back(b.dampingLoss);
+    }
+    m_bodySamples = std::max<std::size_t>(1, m_bodyValues / std::size_t(std::max(1, m_bodies)));
+    if (m_capacity > 0)
+        m_bodySamples = std::min(m_bodySamples, m_capacity);
+}
+
+void SeriesRecorder::setBodiesAsked(bool asked) { m_asked = asked && m_bodyValues > 0; }
+
 const SeriesSample& SeriesRecorder::record(const Simulation& sim)
 {
     if (m_started && sim.stepCount() <= m_lastStep)
         clear();
-    const Readouts r = sim.readouts();
+    const int bodies = m_started ? m_bodies : sim.bodyCount();
+    // Each body's values from the series' start, or (many bodies) from when they are asked for.
+    const bool start = !m_keepingBodies && m_bodyValues > 0 && bodies > 0 && (bodies <= kBodiesKeptUnasked || m_asked);
+    const bool perBody = m_keepingBodies || start;
+    const Readouts r = perBody ? sim.readoutsAndBodies(m_bodyReadouts) : sim.readouts();
     if (!m_started) {
         m_started = true;
         m_firstTotal = r.kineticEnergy + r.potentialEnergy + r.elasticEnergy.value_or(0);
@@ -82,27 +104,15 @@ const SeriesSample& SeriesRecorder::record(const Simulation& sim)
             sim.chainJoints(0, joints);
             m_phaseLinks = joints.empty() ? 0 : static_cast<int>(joints.size()) - 1;
         }
-        m_bodies = 0;
-        m_bodySamples = 0;
-        if (m_bodyValues > 0 && sim.bodyCount() > 0) {
-            sim.bodyReadouts(m_bodyReadouts);
-            m_bodies = static_cast<int>(m_bodyReadouts.size());
-            m_firstBodyTotal.clear();
-            m_firstBodyDamping.clear();
-            for (const Readouts& b : m_bodyReadouts) {
-                m_firstBodyTotal.push_back(b.kineticEnergy + b.potentialEnergy + b.elasticEnergy.value_or(0));
-                m_firstBodyDamping.push_back(b.dampingLoss);
-            }
-            m_bodySamples = std::max<std::size_t>(1, m_bodyValues / std::size_t(std::max(1, m_bodies)));
-            if (m_capacity > 0)
-                m_bodySamples = std::min(m_bodySamples, m_capacity);
-        }
+        m_bodies = bodies;
     }
+    if (start)
+        startKeepingBodies(sim.stepCount());
     SeriesSample s;
     static_cast<SeriesValues&>(s) = valuesOf(r, m_firstTotal, m_firstDamping);
     s.step = sim.stepCount();
-    if (m_bodies > 0)
-        keepBodyValues(s, sim);
+    if (m_keepingBodies)
+        keepBodyValues(s);
     if (m_phaseLinks > 0) {
         std::vector<Point> joints;
         sim.chainJoints(0, joints);
@@ -120,7 +130,7 @@ const SeriesSample& SeriesRecorder::record(const Simulation& sim)
     if (m_capacity > 0 && m_samples.size() > m_capacity)
         m_samples.pop_front();
     // Only the last m_bodySamples keep their bodies' values: let the one before them go.
-    if (m_bodies > 0 && m_samples.size() > m_bodySamples) {
+    if (m_keepingBodies && m_samples.size() > m_bodySamples) {
         std::vector<SeriesValues>& old = m_samples[m_samples.size() - 1 - m_bodySamples].bodies;
         if (!old.empty())
             m_spare.swap(old);

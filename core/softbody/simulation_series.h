@@ -64,6 +64,10 @@ public:
     /// Every body's values in a sample count against this many, all samples together: a
     /// frog's are kept as long as the samples (36 000), 200 frogs' for 1000 samples (16 s).
     static constexpr std::size_t kBodyValuesKept = 200000;
+    /// Each body's values are kept from the series' start in a scene of at most this many
+    /// bodies; with more (they cost a step of 1000 bodies some 10 %), from when setBodiesAsked()
+    /// asks for them.
+    static constexpr int kBodiesKeptUnasked = 64;
 
     /// Keeps the last `capacity` samples (0: all of them), and each body's values in as
     /// many of the last as `bodyValues` allows (0: none).
@@ -81,18 +85,30 @@ public:
     /// Links in the phase columns (0 outside the pendulum scenes).
     int phaseLinks() const { return m_phaseLinks; }
     std::size_t capacity() const { return m_capacity; }
-    /// Bodies in the series' samples (0: none recorded per body).
+    /// Bodies in the scene of the series.
     int bodies() const { return m_bodies; }
+    /// Whether the samples keep each body's values (SeriesSample::bodies), and from which step.
+    bool keepsBodies() const { return m_keepingBodies; }
+    long bodiesKeptFrom() const { return m_bodiesFrom; }
     /// How many of the last samples keep each body's values.
     std::size_t bodySamplesKept() const { return m_bodySamples; }
+    /// Asked, each body's values are kept from the next sample on in any scene, in this
+    /// series and the next ones (none when constructed with no room for them); no longer
+    /// asked, a series that keeps them goes on, and the next one of many bodies does not.
+    void setBodiesAsked(bool asked);
+    bool bodiesAsked() const { return m_asked; }
 
 private:
-    void keepBodyValues(SeriesSample& s, const Simulation& sim);
+    void keepBodyValues(SeriesSample& s);
+    void startKeepingBodies(long step);
 
     std::size_t m_capacity;
     std::size_t m_bodyValues;
     std::size_t m_bodySamples = 0;
     int m_bodies = 0;
+    bool m_keepingBodies = false;
+    bool m_asked = false;
+    long m_bodiesFrom = 0;
     std::vector<double> m_firstBodyTotal;
     std::vector<std::optional<double>> m_firstBodyDamping;
     std::vector<Readouts> m_bodyReadouts;  // scratch

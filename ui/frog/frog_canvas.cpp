@@ -1070,6 +1070,7 @@ void FrogCanvas::drawScene(QPainter& p, double pixel)
 
 void FrogCanvas::setMarkedBody(int body)
 {
+    m_series.setBodiesAsked(body >= 0); // a scene of many bodies keeps them only while asked
     if (body == m_markedBody)
         return;
     m_markedBody = body;

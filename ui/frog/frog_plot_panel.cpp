@@ -329,12 +329,18 @@ void FrogPlotPanel::drawTime()
         zero->point2->setCoords(1, 0);
         zero->setPen(QPen(QColor(0x8a, 0x86, 0x7a), 1, Qt::DotLine));
     }
+    // One body's values are kept in the last samples only, or from when it was chosen.
     QString kept;
-    if (chosen >= 0 && m_series->bodySamplesKept() < m_series->samples().size())
-        kept = tr("Body %1 alone: its values are kept for the last %2 s.")
+    if (chosen >= 0 && !m_series->keepsBodies())
+        kept = tr("Body %1 alone: its values are kept from the next step on.").arg(chosen + 1);
+    const auto keptFrom = std::partition_point(samples.begin(), samples.end(),
+                                               [](const SeriesSample& s) { return s.bodies.empty(); });
+    if (chosen >= 0 && m_series->keepsBodies() && keptFrom != samples.begin() && keptFrom != samples.end())
+        kept = tr("Body %1 alone: its values are kept from %2 s on.")
                    .arg(chosen + 1)
-                   .arg(displayFixed(double(m_series->bodySamplesKept()) / kStepsPerSecond, 0)) +
-               QLatin1Char(' ');
+                   .arg(displayFixed(timeOf(*keptFrom), 1));
+    if (!kept.isEmpty())
+        kept += QLatin1Char(' ');
     if (energy && !stable)
         m_note->setText(kept + tr("Energies in px²/step², unit masses. The seed's springs and area are corrections, not "
                            "forces: it stores no elastic energy and books no losses; total = kinetic + gravitational."));

@@ -163,11 +163,13 @@ public:
     }
     bool grabbing() const override { return m_held; }
 
-    Readouts readouts() const override
+    Readouts readouts() const override { return readoutsAndBodies(m_bodyReadouts); }
+    /// The scene's readouts: its bodies' (bodyReadout) summed.
+    Readouts readoutsAndBodies(std::vector<Readouts>& bodies) const override
     {
+        bodyReadouts(bodies);
         Readouts r;
-        for (int i = 0; i < bodyCount(); ++i) {
-            const Readouts b = bodyReadout(i);
+        for (const Readouts& b : bodies) {
             r.areaErrorPercent += b.areaErrorPercent / bodyCount();
             r.maxStretch = std::max(r.maxStretch, b.maxStretch);
             r.constraintForce = std::max(r.constraintForce, b.constraintForce);
@@ -223,6 +225,7 @@ private:
     std::unique_ptr<SeedFrog<Real>> m_frog;
     std::vector<SeedBody<Real>> m_bodies;
     std::vector<std::vector<double>> m_rest; // edge lengths at the start, per body
+    mutable std::vector<Readouts> m_bodyReadouts; // scratch of readouts()
     bool m_held = false;
     int m_heldBody = -1;
 };

@@ -200,54 +200,60 @@ public:
             out.emplace_back(p.first, p.second);
     }
 
-    Readouts readouts() const override
-    {
-        Readouts r;
-        for (int i = 0; i < bodyCount(); ++i) {
-            r.areaErrorPercent += m_world.areaErrorPercent(i) / bodyCount();
-            const XpbdWorld::EdgeExtremes edges = m_world.edgeExtremes(i);
-            r.maxStretch = std::max(r.maxStretch, edges.stretch);
-            r.constraintForce = std::max({r.constraintForce, std::abs(m_world.areaPressure(i)), edges.tension});
-        }
-        for (int c = 0; c < chainCount(); ++c)
-            r.constraintForce = std::max(r.constraintForce, m_world.angleLimitTorque(c));
-        const XpbdWorld::MotionEnergies motion = m_world.motionEnergies();
-        r.kineticEnergy = motion.kinetic;
-        // Σ m g·(e − x) = Σ m g·e − Σ m g·x, with the masses the kinetic energy counts.
-        const Point g = m_world.params().gravity;
-        const Point e = potentialOrigin(g, scene().params.width, scene().params.height);
-        r.potentialEnergy = motion.gravity + motion.movingMass * dot(g, e);
-        r.elasticEnergy = m_world.elasticEnergy();
-        r.dampingLoss = m_world.dampingLoss();
-        r.contacts = m_world.contactCount();
-        return r;
-    }
-
-    void bodyReadouts(std::vector<Readouts>& out) const override
-    {
-        m_world.bodyEnergies(m_energies);
-        const Point g = m_world.params().gravity;
-        const double height = dot(g, potentialOrigin(g, scene().params.width, scene().params.height));
-        out.resize(m_energies.size());
-        for (int i = 0; i < bodyCount(); ++i) {
-            const XpbdWorld::BodyEnergies& e = m_energies[std::size_t(i)];
-            const XpbdWorld::EdgeExtremes edges = m_world.edgeExtremes(i);
-            Readouts& r = out[std::size_t(i)];
-            r.areaErrorPercent = m_world.areaErrorPercent(i);
-            r.maxStretch = edges.stretch;
-            r.constraintForce = std::max(std::abs(m_world.areaPressure(i)), edges.tension);
-            r.kineticEnergy = e.kinetic;
-            r.potentialEnergy = e.gravity + e.movingMass * height; // as readouts()
-            r.elasticEnergy = e.elastic;
-            r.dampingLoss = e.dampingLoss;
-            r.contacts = e.contacts;
-        }
-    }
+    Readouts readouts() const override { return collectReadouts(nullptr); }
+    void bodyReadouts(std::vector<Readouts>& out) const override { collectReadouts(&out); }
+    Readouts readoutsAndBodies(std::vector<Readouts>& bodies) const override { return collectReadouts(&bodies); }
 
 protected:
     void doStep() override { m_world.step(); }
 
 private:
+    /// The scene's readouts and, given `bodies`, each body's: a body's area, edges and area
+    /// pressure are looked at once for both.
+    Readouts collectReadouts(std::vector<Readouts>* bodies) const
+    {
+        const Point g = m_world.params().gravity;
+        const double height = dot(g, potentialOrigin(g, scene().params.width, scene().params.height));
+        // The energies per body in the world's own passes (motionEnergies, elasticEnergy).
+        std::vector<XpbdWorld::BodyEnergies>* energies = bodies ? &m_energies : nullptr;
+        if (bodies) {
+            m_energies.assign(std::size_t(bodyCount()), XpbdWorld::BodyEnergies());
+            m_world.bodyLosses(m_energies);
+            bodies->resize(m_energies.size());
+        }
+        const XpbdWorld::MotionEnergies motion = m_world.motionEnergies(energies);
+        Readouts r;
+        r.elasticEnergy = m_world.elasticEnergy(energies);
+        for (int i = 0; i < bodyCount(); ++i) {
+            const double area = m_world.areaErrorPercent(i);
+            const XpbdWorld::EdgeExtremes edges = m_world.edgeExtremes(i);
+            const double force = std::max(std::abs(m_world.areaPressure(i)), edges.tension);
+            r.areaErrorPercent += area / bodyCount();
+            r.maxStretch = std::max(r.maxStretch, edges.stretch);
+            r.constraintForce = std::max(r.constraintForce, force);
+            if (!bodies)
+                continue;
+            const XpbdWorld::BodyEnergies& e = m_energies[std::size_t(i)];
+            Readouts& b = (*bodies)[std::size_t(i)];
+            b.areaErrorPercent = area;
+            b.maxStretch = edges.stretch;
+            b.constraintForce = force;
+            b.kineticEnergy = e.kinetic;
+            b.potentialEnergy = e.gravity + e.movingMass * height; // as the scene's, below
+            b.elasticEnergy = e.elastic;
+            b.dampingLoss = e.dampingLoss;
+            b.contacts = e.contacts;
+        }
+        for (int c = 0; c < chainCount(); ++c)
+            r.constraintForce = std::max(r.constraintForce, m_world.angleLimitTorque(c));
+        r.kineticEnergy = motion.kinetic;
+        // Σ m g·(e − x) = Σ m g·e − Σ m g·x, with the masses the kinetic energy counts.
+        r.potentialEnergy = motion.gravity + motion.movingMass * height;
+        r.dampingLoss = m_world.dampingLoss();
+        r.contacts = m_world.contactCount();
+        return r;
+    }
+
     /// Adds a chain to the world and keeps its limits as chainLimits gives them.
     Expected<int> addChain(const ChainDef& chain)
     {

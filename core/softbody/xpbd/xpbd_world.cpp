@@ -950,7 +950,7 @@ double XpbdWorld::kineticEnergy() const
     return e;
 }
 
-XpbdWorld::MotionEnergies XpbdWorld::motionEnergies() const
+XpbdWorld::MotionEnergies XpbdWorld::motionEnergies(std::vector<BodyEnergies>* bodies) const
 {
     MotionEnergies e;
     const Point g = m_params.gravity;
@@ -958,54 +958,26 @@ XpbdWorld::MotionEnergies XpbdWorld::motionEnergies() const
         if (!(m_w[i] > 0))
             continue;
         const double m = 1 / m_w[i];
-        e.kinetic += 0.5 * dot(m_v[i], m_v[i]) * m;
-        e.gravity -= dot(g, m_x[i]) * m;
+        const double kinetic = 0.5 * dot(m_v[i], m_v[i]) * m;
+        const double gravity = dot(g, m_x[i]) * m;
+        e.kinetic += kinetic;
+        e.gravity -= gravity;
         e.movingMass += m;
+        if (bodies && m_owner[i] >= 0) {
+            BodyEnergies& b = (*bodies)[at(m_owner[i])];
+            b.kinetic += kinetic;
+            b.gravity -= gravity;
+            b.movingMass += m;
+        }
     }
     return e;
 }
 
-void XpbdWorld::bodyEnergies(std::vector<BodyEnergies>& out) const
+void XpbdWorld::bodyLosses(std::vector<BodyEnergies>& bodies) const
 {
-    out.assign(m_bodies.size(), BodyEnergies());
-    const Point g = m_params.gravity;
-    for (std::size_t i = 0; i < m_x.size(); ++i) {
-        const int b = m_owner[i];
-        if (b < 0 || !(m_w[i] > 0))
-            continue;
-        BodyEnergies& e = out[at(b)];
-        const double m = 1 / m_w[i];
-        e.kinetic += 0.5 * dot(m_v[i], m_v[i]) * m;
-        e.gravity -= dot(g, m_x[i]) * m;
-        e.movingMass += m;
-    }
-    const double h = m_params.dt / m_params.substeps;
-    const double invH2 = 1 / (h * h);
-    const auto energy = [invH2](double alpha, double lambda) { // as elasticEnergy()
-        const double f = lambda * invH2;
-        return 0.5 * alpha * f * f;
-    };
     for (std::size_t k = 0; k < m_bodies.size(); ++k) {
-        const Body& b = m_bodies[k];
-        BodyEnergies& e = out[k];
-        for (int j = 0; j < b.count; ++j) {
-            const DistanceConstraint& c = m_edges[at(b.firstEdge + j)];
-            e.elastic += energy(m_params.edgeCompliance * c.complianceScale, c.lambda);
-        }
-        e.elastic += energy(m_params.areaCompliance, b.areaLambda);
-        for (int j = 0; j < b.angleCount; ++j)
-            e.elastic += energy(m_params.bendCompliance, m_angles[at(b.firstAngle + j)].lambda);
-        e.dampingLoss = m_bodyDampingLoss[k];
-        e.contacts = m_bodyContactCount[k];
-    }
-    for (const Chain& c : m_chains) {
-        if (c.anchor.body < 0)
-            continue;
-        BodyEnergies& e = out[at(c.anchor.body)];
-        for (int j = 0; j + 1 < c.count; ++j)
-            e.elastic += energy(m_params.linkCompliance, m_links[at(c.firstLink + j)].lambda);
-        if (c.anchorLink >= 0)
-            e.elastic += energy(m_params.linkCompliance, m_anchorLinks[at(c.anchorLink)].lambda);
+        bodies[k].dampingLoss = m_bodyDampingLoss[k];
+        bodies[k].contacts = m_bodyContactCount[k];
     }
 }
 
@@ -1028,29 +1000,33 @@ double XpbdWorld::gravityEnergy() const
     return e;
 }
 
-double XpbdWorld::elasticEnergy() const
+double XpbdWorld::elasticEnergy(std::vector<BodyEnergies>* bodies) const
 {
     // U = ½ α F² with F = λ/h² the force of the last substep: the complementary form of
     // ½ C²/α (at the XPBD solution C = −α F, Macklin et al. 2016, eq. 9). Unlike C²/(2α) it
     // does not blow up the leftover error of a very stiff constraint, and is 0 for α = 0.
     const double h = m_params.dt / m_params.substeps;
     const double invH2 = 1 / (h * h);
-    const auto energy = [invH2](double alpha, double lambda) {
-        const double f = lambda * invH2;
-        return 0.5 * alpha * f * f;
-    };
     double e = 0;
+    // Each constraint's energy, also booked to the body of its particle `owner` (bodies).
+    const auto add = [&](double alpha, double lambda, int owner) {
+        const double f = lambda * invH2;
+        const double u = 0.5 * alpha * f * f;
+        e += u;
+        if (bodies && m_owner[at(owner)] >= 0)
+            (*bodies)[at(m_owner[at(owner)])].elastic += u;
+    };
     for (const DistanceConstraint& c : m_edges)
-        e += energy(m_params.edgeCompliance * c.complianceScale, c.lambda);
+        add(m_params.edgeCompliance * c.complianceScale, c.lambda, c.a);
     for (const DistanceConstraint& c : m_links)
-        e += energy(m_params.linkCompliance, c.lambda);
+        add(m_params.linkCompliance, c.lambda, c.b);
     for (const AnchoredDistanceConstraint& c : m_anchorLinks)
-        e += energy(m_params.linkCompliance, c.lambda);
+        add(m_params.linkCompliance, c.lambda, c.joint);
     for (const Body& b : m_bodies)
-        e += energy(m_params.areaCompliance, b.areaLambda);
+        add(m_params.areaCompliance, b.areaLambda, b.first);
     for (const AngleConstraint& a : m_angles)
         if (a.kind == ConstraintKind::Bending)
-            e += energy(m_params.bendCompliance, a.lambda);
+            add(m_params.bendCompliance, a.lambda, a.a1);
     return e;
 }
 

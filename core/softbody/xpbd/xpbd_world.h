@@ -151,7 +151,10 @@ public:
     bool isValid(int body) const;             ///< positive area above 20 % of the target, no self-crossing
     double kineticEnergy() const;             ///< Σ ½ m |v|², mass·px²/step²
     double gravityEnergy() const;             ///< Σ −m g·x (zero at the origin), mass·px²/step²
-    double elasticEnergy() const;             ///< Σ ½ α F² (F = λ/h²) over compliant constraints, mass·px²/step²
+    struct BodyEnergies;
+    /// Σ ½ α F² (F = λ/h²) over compliant constraints, mass·px²/step²; with `bodies`
+    /// (bodyCount() entries), each constraint's also added to its body's `elastic`.
+    double elasticEnergy(std::vector<BodyEnergies>* bodies = nullptr) const;
     double potentialEnergy() const { return gravityEnergy() + elasticEnergy(); }
     /// Σ m over the particles that move (inverse mass > 0), mass units.
     double movingMass() const;
@@ -165,7 +168,8 @@ public:
     struct MotionEnergies {
         double kinetic = 0, gravity = 0, movingMass = 0;
     };
-    MotionEnergies motionEnergies() const;
+    /// With `bodies` (bodyCount() entries), each particle's also added to its body's.
+    MotionEnergies motionEnergies(std::vector<BodyEnergies>* bodies = nullptr) const;
     /// What the damping f^h of the predict step (the seed's fregament) has taken from the
     /// kinetic energy since the world was made: Σ ½ m ((1 − k_x²) v_x² + (1 − k_y²) v_y²) over
     /// every substep, k = f^h, mass·px²/step². Exact: the damping is the only thing the
@@ -180,11 +184,13 @@ public:
     /// energy of its edges, area and bending and of those chains' links, what damping took
     /// from those particles, and its contacts in the substep the step's contactCount() is
     /// from. Summed over the bodies they give the world's own, less any free chain's part.
+    /// motionEnergies and elasticEnergy fill in the energies in their own passes, with the
+    /// world's, bodyLosses the damping loss and the contacts.
     struct BodyEnergies {
         double kinetic = 0, gravity = 0, movingMass = 0, elastic = 0, dampingLoss = 0;
         int contacts = 0;
     };
-    void bodyEnergies(std::vector<BodyEnergies>& out) const;
+    void bodyLosses(std::vector<BodyEnergies>& bodies) const;
 
 private:
     XpbdWorld() = default;
