@@ -1,6 +1,7 @@
 // The frog lab tab (docs/scenes.md): stepping, grabbing and spawning through the canvas's own
 // mouse and key events, the scene's own parameters applied live and undoably, every scene on
 // both solvers, the frame export and the document round trip.
+#include "core/base/math_constants.h"
 #include "core/softbody/recorded_run.h"
 #include "core/softbody/simulation.h"
 #include "core/softbody/simulation_trace.h"
@@ -826,6 +827,64 @@ private slots:
         QVERIFY(!tab().loadState(bad, &error));
         QVERIFY2(error.contains("substeps"), qPrintable(error));
         QCOMPARE(tab().sceneName(), QStringLiteral("many-bodies"));
+    }
+
+    // Stiffness as Box2D states it: the edge frequency box is the compliance for the scene's
+    // edge (either sets the other), and the damping ratio is a live knob recorded as the
+    // others are; the document keeps it and gives it back.
+    void edgeFrequencyAndDampingRatio()
+    {
+        QVERIFY(tab().setScene("frog", nullptr));
+        QVERIFY(tab().setSolver(SolverKind::Stable, nullptr));
+        tab().findChild<QPushButton*>("frogPause")->setChecked(true);
+        auto* compliance = tab().findChild<QDoubleSpinBox*>("frogEdgeCompliance");
+        auto* hertz = tab().findChild<QDoubleSpinBox*>("frogEdgeHertz");
+        auto* damping = tab().findChild<QDoubleSpinBox*>("frogEdgeDamping");
+        QVERIFY(compliance && hertz && damping);
+        FrogCanvas* canvas = tab().canvas();
+        const auto spring = canvas->simulation()->edgeSpring(0);
+        QVERIFY(spring && spring->restLength > 1 && spring->vertexMass > 0);
+        // α = 0.002 on the frog's edge: T = 2π √(α L m) steps, f = 60 / T.
+        const double period = 2 * kPi * std::sqrt(0.002 * spring->restLength * spring->vertexMass);
+        QCOMPARE(hertz->value(), std::round(6000 / period) / 100);
+        QVERIFY(hertz->isEnabled());
+        hertz->setValue(10);
+        const double alpha = canvas->simulation()->stableSettings().edgeCompliance;
+        QVERIFY(std::abs(alpha - std::pow(3 / kPi, 2) / (spring->restLength * spring->vertexMass)) <= 1e-12);
+        QCOMPARE(compliance->value(), std::round(alpha * 1e4) / 1e4);
+        QCOMPARE(hertz->value(), 10.0);
+        compliance->setValue(0); // rigid: no frequency to state
+        QVERIFY(!hertz->isEnabled());
+        compliance->setValue(0.002);
+        QVERIFY(hertz->isEnabled());
+
+        for (int i = 0; i < 4; ++i)
+            canvas->step();
+        QCOMPARE(damping->value(), 0.0);
+        damping->setValue(0.3);
+        QCOMPARE(canvas->simulation()->stableSettings().edgeDampingRatio, 0.3);
+        QCOMPARE(canvas->simulation()->stepCount(), 4L); // live
+        QCOMPARE(tab().scene().stable.edgeDampingRatio, 0.0);
+        const QJsonObject saved = tab().saveState();
+        const QJsonArray events = saved["recording"].toObject()["events"].toArray();
+        QCOMPARE(events.last().toArray(), (QJsonArray{4, "edge_damping_ratio", 0.3}));
+        QVERIFY(!saved["stable"].toObject().contains("edge_damping_ratio")); // the run started without
+        tab().undoStack()->undo();
+        QCOMPARE(canvas->simulation()->stableSettings().edgeDampingRatio, 0.0);
+        QCOMPARE(damping->value(), 0.0);
+        QVERIFY(tab().loadState(saved, nullptr));
+        QCOMPARE(damping->value(), 0.3);
+        QCOMPARE(canvas->simulation()->stableSettings().edgeDampingRatio, 0.3);
+        tab().reset(); // a new run starts with the knobs in force, kept in the document's "stable"
+        QCOMPARE(tab().scene().stable.edgeDampingRatio, 0.3);
+        QCOMPARE(tab().saveState()["stable"].toObject()["edge_damping_ratio"].toDouble(), 0.3);
+        QJsonObject bad = saved;
+        bad["stable"] = QJsonObject{{"substeps", 8}, {"edge_compliance", 0.002}, {"edge_damping_ratio", 2.5}};
+        QString error;
+        QVERIFY(!tab().loadState(bad, &error));
+        QVERIFY2(error.contains("edge_damping_ratio must be a number from 0 (no damping) to 2"), qPrintable(error));
+        damping->setValue(0);
+        tab().reset();
     }
 
     // Issue 16, rewind: the canvas records the mouse's grab and throw; the timeline goes

@@ -57,7 +57,7 @@ std::vector<std::string> drive(RecordedRun& run, int steps)
         if (i == 170)
             run.releaseSpawn();
         if (i == 120) // the stable solver's knobs, turned live (the seed keeps and ignores them)
-            run.setStableSettings({4, 0.01});
+            run.setStableSettings({4, 0.01, 0.4});
         if (i == 230)
             run.setStableSettings({12, 0});
         run.step();
@@ -358,6 +358,9 @@ private slots:
         QTest::newRow("substeps 0") << R"("events": [[1, "substeps", 0]])" << "substeps must be a whole number from 1 to 32";
         QTest::newRow("substeps 2.5") << R"("events": [[1, "substeps", 2.5]])" << "event 1: substeps";
         QTest::newRow("compliance 2") << R"("events": [[1, "edge_compliance", 2]])" << "edge_compliance must be";
+        QTest::newRow("damping ratio 2.5") << R"("events": [[1, "edge_damping_ratio", 2.5]])"
+                                           << "edge_damping_ratio must be a number from 0 (no damping) to 2";
+        QTest::newRow("damping ratio negative") << R"("events": [[1, "edge_damping_ratio", -0.1]])" << "event 1: edge_damping_ratio";
         QTest::newRow("knob without a value") << R"("events": [[1, "substeps"]])" << "needs its value";
         QTest::newRow("huge coordinate") << R"("events": [[1, "move", 1e999, 4]])" << "";
         QTest::newRow("bad scene") << R"("scene": {"name": "frog"})" << "scene";

@@ -282,6 +282,10 @@ private slots:
         QVERIFY(applySetting(*spec, "edge_compliance=1/100").ok());
         QCOMPARE(spec->stable.substeps, 16);
         QCOMPARE(spec->stable.edgeCompliance, 0.01);
+        QVERIFY(!sceneToJson(*spec).find("stable")->find("edge_damping_ratio")); // ζ = 0 is not written
+        QVERIFY(applySetting(*spec, "edge_damping_ratio=1/4").ok());
+        QCOMPARE(spec->stable.edgeDampingRatio, 0.25);
+        QCOMPARE(sceneToJson(*spec).find("stable")->find("edge_damping_ratio")->asNumber().value_or(0), 0.25);
         auto back = parseScene(sceneToJson(*spec));
         QVERIFY(back.ok());
         QVERIFY(back->stable == spec->stable);
@@ -289,10 +293,12 @@ private slots:
         QCOMPARE((*sim)->substeps(), 16);
         QCOMPARE((*sim)->workPerStep(), 2 * make("frog", SolverKind::Stable)->workPerStep());
         for (const char* badSetting : {"substeps=0", "substeps=33", "substeps=2.5", "edge_compliance=-0.001", "edge_compliance=2",
-                                       "edge_compliance=x"}) {
+                                       "edge_compliance=x", "edge_damping_ratio=-1/10", "edge_damping_ratio=2.01"}) {
             SceneSpec copy = *spec;
             auto ok = applySetting(copy, badSetting);
             QVERIFY2(!ok.ok(), badSetting);
+            const std::string key = std::string(badSetting).substr(0, std::string(badSetting).find('='));
+            QVERIFY2(ok.error().message.find(key) != std::string::npos, ok.error().message.c_str());
             QVERIFY(copy.stable == spec->stable); // unchanged
         }
         Json doc = sceneToJson(*spec);
@@ -316,12 +322,16 @@ private slots:
         };
         const double soft = largestStretch({"edge_compliance=0.05"}), rigid = largestStretch({"edge_compliance=0"});
         const double two = largestStretch({"substeps=2"}), many = largestStretch({"substeps=32"});
+        const double damped = largestStretch({"edge_compliance=0.05", "edge_damping_ratio=1"});
         QVERIFY(allFinite);
         qInfo("largest stretch in 240 steps: α 0.05 %.4f, α 0 %.4f; 2 substeps %.4f, 32 substeps %.4f", soft, rigid, two, many);
         QVERIFY(soft > 2 * rigid);
         QVERIFY(many < two);
+        qInfo("soft edges critically damped (ζ = 1): %.4f", damped);
+        QVERIFY(damped < soft); // the dashpots hold back the stretching
+        QVERIFY(damped > rigid);
         // The seed has no substeps and no compliance: its trace is unchanged.
-        auto seedDefault = make("frog", SolverKind::Seed), seedKnobs = make("frog", SolverKind::Seed, {"substeps=2", "edge_compliance=0.5"});
+        auto seedDefault = make("frog", SolverKind::Seed), seedKnobs = make("frog", SolverKind::Seed, {"substeps=2", "edge_compliance=0.5", "edge_damping_ratio=1"});
         for (int i = 0; i < 200; ++i) {
             seedDefault->step();
             seedKnobs->step();

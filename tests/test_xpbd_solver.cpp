@@ -1,5 +1,6 @@
 // The `stable` solver (XPBD with substeps): exact area, stiff and extreme settings,
 // recovery, grabbing, obstacles, many bodies, chains, determinism and energy.
+#include "core/base/math_constants.h"
 #include "core/softbody/scenes/frog_params.h"
 #include "core/softbody/polygon_geometry.h"
 #include "core/softbody/regular_polygon.h"
@@ -1043,6 +1044,97 @@ private slots:
         qInfo("energy after settling %.6g; largest rise above it %.3e, largest rise in one step %.3e", e0, worst,
               worstRise);
         QVERIFY(worst <= 1e-6 * scale);
+    }
+
+    // ζ is a damping ratio: an edge stretched and let go rings down by e^{−2πζ/√(1−ζ²)} a
+    // period, at the damped period T/√(1−ζ²), T = 2π √(α/(w_a + w_b)). The edge is a ring of
+    // two (solveEdgeRing's averaged Jacobi) whose twin is as soft as nothing, in steps of 1
+    // with T = 200 steps. XPBD's one projection a step is implicit Euler, which damps on its
+    // own at ζ₀ = ω h / 2 = π/T (docs/solvers.md#damping): ζ adds to it.
+    void edgeDampingRatioIsADampingRatio_data()
+    {
+        QTest::addColumn<double>("zeta");
+        QTest::newRow("ζ = 0") << 0.0;
+        QTest::newRow("ζ = 0.05") << 0.05;
+        QTest::newRow("ζ = 0.2") << 0.2;
+        QTest::newRow("ζ = 0.5") << 0.5;
+    }
+    void edgeDampingRatioIsADampingRatio()
+    {
+        QFETCH(double, zeta);
+        const double period = 200, mobility = 2; // two vertices of mass 1
+        const double alpha = mobility * std::pow(period / (2 * kPi), 2);
+        DistanceConstraint ring[2];
+        ring[0].a = 0, ring[0].b = 1, ring[0].rest = 100;
+        ring[1].a = 1, ring[1].b = 0, ring[1].rest = 100, ring[1].complianceScale = 1e12;
+        Point x[2] = {Point(0, 0), Point(110, 0)}, prev[2], v[2], delta[2];
+        const double w[2] = {1, 1};
+        std::vector<double> stretch;
+        for (int i = 0; i < 1200; ++i) {
+            for (int k = 0; k < 2; ++k) {
+                prev[k] = x[k];
+                x[k] += v[k];
+            }
+            solveEdgeRing(ring, 2, x, prev, w, alpha, zeta, delta);
+            for (int k = 0; k < 2; ++k)
+                v[k] = x[k] - prev[k];
+            stretch.push_back(distance(x[0], x[1]) - 100);
+        }
+        // The peaks of the stretch: their ratio and spacing.
+        std::vector<std::pair<double, double>> peaks; // (step, stretch)
+        for (std::size_t i = 1; i + 1 < stretch.size(); ++i)
+            if (stretch[i] > stretch[i - 1] && stretch[i] >= stretch[i + 1] && stretch[i] > 1e-9)
+                peaks.emplace_back(double(i), stretch[i]);
+        QVERIFY(peaks.size() >= 3);
+        const double damped = period / std::sqrt(1 - zeta * zeta);
+        const double spacing = (peaks[2].first - peaks[0].first) / 2;
+        QVERIFY2(std::abs(spacing - damped) <= 0.03 * damped, qPrintable(QStringLiteral("%1 against %2").arg(spacing).arg(damped)));
+        const double decrement = std::log(peaks[0].second / peaks[2].second) / 2;
+        const double measured = decrement / std::sqrt(4 * kPi * kPi + decrement * decrement);
+        const double own = kPi / period;
+        qInfo("ζ = %.2f: measured %.4f, less XPBD's own %.4f: %.4f; period %.1f steps (damped %.1f)", zeta, measured, own,
+              measured - own, spacing, damped);
+        QVERIFY2(std::abs(measured - own - zeta) <= 0.05 * (zeta + own), qPrintable(QString::number(measured)));
+    }
+
+    // The edges' dashpots' loss is booked as damping: a sheared body left to ring in empty
+    // space (friction 1, no gravity) loses what the damping loss says it took, and rings
+    // down far faster than without them. Soft edges (α = 0.5, an edge of 74 px rings at
+    // 38 steps), where XPBD's own damping (ζ₀ = ω h / 2 ≈ 0.01) is small.
+    void edgeDashpotsBookWhatTheyTake()
+    {
+        double left[2] = {0, 0};
+        const double zetas[2] = {0, 0.3};
+        for (int k = 0; k < 2; ++k) {
+            XpbdParams p;
+            p.gravity = Point(0, 0);
+            p.damping = Point(1, 1);
+            p.edgeDampingRatio = zetas[k];
+            p.edgeCompliance = 0.5;
+            XpbdWorld world = makeWorld(p);
+            const int b = addRegular(world, Point(640, 360), 120, 10);
+            std::vector<Point> sheared; // the same area, the edges stretched and squeezed
+            for (const Point& q : world.bodyVertices(b))
+                sheared.push_back(Point(640 + 1.25 * (q.x - 640), 360 + (q.y - 360) / 1.25));
+            QVERIFY(world.setBodyVertices(b, sheared).ok());
+            const auto total = [&] { return world.kineticEnergy() + world.gravityEnergy() + world.elasticEnergy(); };
+            world.step(); // the elastic energy is read from the forces of a step
+            const double e1 = total(), d1 = world.dampingLoss();
+            for (int i = 0; i < 300; ++i) {
+                world.step();
+                QCOMPARE(world.contactCount(), 0);
+            }
+            const double drop = e1 - total(), booked = world.dampingLoss() - d1;
+            left[k] = total() / e1;
+            qInfo("ζ = %.1f: %.1f of %.1f lost, %.1f booked as damping", zetas[k], drop, e1, booked);
+            if (zetas[k] == 0) {
+                QCOMPARE(booked, 0.0);
+            } else {
+                QVERIFY(drop > 0.5 * e1);
+                QVERIFY2(std::abs(booked - drop) <= 0.1 * drop, qPrintable(QStringLiteral("%1 against %2").arg(booked).arg(drop)));
+            }
+        }
+        QVERIFY(left[1] < 0.5 * left[0]); // 8 % of the energy left against 32 %
     }
 };
 

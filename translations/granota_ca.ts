@@ -2588,6 +2588,26 @@ a cada canvi alentiria la finestra.</translation>
     <context>
         <name>granota::ui::FrogTab</name>
         <message>
+            <source>A dashpot along each edge, as a damping ratio: 0 none, 1 critical (an edge stretched and let go comes back without ringing), above 1 slower still. What it takes shows in the plots as damping. The run goes on with it from the next step, and the recording keeps the change.</source>
+            <translation>Un amortidor al llarg de cada aresta, com a raó d'esmorteïment: 0 cap, 1 crític (una aresta estirada i deixada anar torna sense vibrar), per sobre d'1 encara més lenta. El que s'emporta surt als gràfics com a esmorteïment. La simulació continua amb el valor nou des del pas següent, i l'enregistrament guarda el canvi.</translation>
+        </message>
+        <message>
+            <source>Edge damping ratio ζ</source>
+            <translation>Raó d'esmorteïment de les arestes ζ</translation>
+        </message>
+        <message>
+            <source>The same stiffness as a frequency, as Box2D states its soft constraints: how many times a second an edge of this body rings on its own (α = 0, rigid, rings at none). Setting it sets the compliance.</source>
+            <translation>La mateixa rigidesa com a freqüència, com Box2D expressa les seves restriccions toves: quantes vegades per segon vibra tota sola una aresta d'aquest cos (α = 0, rígida, no vibra). En fixar-la es fixa la flexibilitat.</translation>
+        </message>
+        <message>
+            <source> Hz</source>
+            <translation> Hz</translation>
+        </message>
+        <message>
+            <source>Edge frequency f</source>
+            <translation>Freqüència de les arestes f</translation>
+        </message>
+        <message>
             <source>§5.2.2: the pairs of bodies whose boxes overlap, the only ones tested for contact (a uniform grid finds them), and how many contacts there are (stable solver).</source>
             <translation>§5.2.2: els parells de cossos les capses dels quals se superposen, els únics en què es comprova el contacte (els troba una graella uniforme), i quants contactes hi ha (mètode estable).</translation>
         </message>
@@ -3231,8 +3251,8 @@ a cada canvi alentiria la finestra.</translation>
             <translation>Granota</translation>
         </message>
         <message>
-            <source>The stable solver's knobs were refused: substeps from 1 to 32, compliance from 0 to 1.</source>
-            <translation>S'han refusat els valors del mètode estable: subpassos d'1 a 32, flexibilitat de 0 a 1.</translation>
+            <source>The stable solver's knobs were refused: substeps from %1 to %2, compliance from 0 to %3, damping ratio from 0 to %4.</source>
+            <translation>S'han refusat els valors del mètode estable: subpassos entre %1 i %2, flexibilitat entre 0 i %3, raó d'esmorteïment entre 0 i %4.</translation>
         </message>
         <message>
             <source>Protractor</source>

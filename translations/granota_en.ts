@@ -2588,6 +2588,26 @@ on each change would slow the window.</translation>
     <context>
         <name>granota::ui::FrogTab</name>
         <message>
+            <source>A dashpot along each edge, as a damping ratio: 0 none, 1 critical (an edge stretched and let go comes back without ringing), above 1 slower still. What it takes shows in the plots as damping. The run goes on with it from the next step, and the recording keeps the change.</source>
+            <translation>A dashpot along each edge, as a damping ratio: 0 none, 1 critical (an edge stretched and let go comes back without ringing), above 1 slower still. What it takes shows in the plots as damping. The run goes on with it from the next step, and the recording keeps the change.</translation>
+        </message>
+        <message>
+            <source>Edge damping ratio ζ</source>
+            <translation>Edge damping ratio ζ</translation>
+        </message>
+        <message>
+            <source>The same stiffness as a frequency, as Box2D states its soft constraints: how many times a second an edge of this body rings on its own (α = 0, rigid, rings at none). Setting it sets the compliance.</source>
+            <translation>The same stiffness as a frequency, as Box2D states its soft constraints: how many times a second an edge of this body rings on its own (α = 0, rigid, rings at none). Setting it sets the compliance.</translation>
+        </message>
+        <message>
+            <source> Hz</source>
+            <translation> Hz</translation>
+        </message>
+        <message>
+            <source>Edge frequency f</source>
+            <translation>Edge frequency f</translation>
+        </message>
+        <message>
             <source>§5.2.2: the pairs of bodies whose boxes overlap, the only ones tested for contact (a uniform grid finds them), and how many contacts there are (stable solver).</source>
             <translation>§5.2.2: the pairs of bodies whose boxes overlap, the only ones tested for contact (a uniform grid finds them), and how many contacts there are (stable solver).</translation>
         </message>
@@ -3231,8 +3251,8 @@ on each change would slow the window.</translation>
             <translation>Frog</translation>
         </message>
         <message>
-            <source>The stable solver's knobs were refused: substeps from 1 to 32, compliance from 0 to 1.</source>
-            <translation>The stable solver's knobs were refused: substeps from 1 to 32, compliance from 0 to 1.</translation>
+            <source>The stable solver's knobs were refused: substeps from %1 to %2, compliance from 0 to %3, damping ratio from 0 to %4.</source>
+            <translation>The stable solver's knobs were refused: substeps from %1 to %2, compliance from 0 to %3, damping ratio from 0 to %4.</translation>
         </message>
         <message>
             <source>Protractor</source>

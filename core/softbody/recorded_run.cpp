@@ -12,25 +12,31 @@ namespace granota {
 namespace {
 
 // The knobs take the names of the scene file's "stable" keys.
-constexpr std::array<EnumName<InputKind>, 7> kInputNames{{{InputKind::Press, "press"},
+constexpr std::array<EnumName<InputKind>, 8> kInputNames{{{InputKind::Press, "press"},
                                                           {InputKind::Move, "move"},
                                                           {InputKind::Release, "release"},
                                                           {InputKind::Spawn, "spawn"},
                                                           {InputKind::ReleaseSpawn, "release-spawn"},
                                                           {InputKind::Substeps, "substeps"},
-                                                          {InputKind::EdgeCompliance, "edge_compliance"}}};
+                                                          {InputKind::EdgeCompliance, "edge_compliance"},
+                                                          {InputKind::EdgeDampingRatio, "edge_damping_ratio"}}};
 
 bool hasPoint(InputKind k) { return k == InputKind::Press || k == InputKind::Move || k == InputKind::Spawn; }
+
+/// Knob `k`'s value `v` in `s`: false (and `s` as it was) when out of range (or not a knob).
+bool turnKnob(StableSettings& s, InputKind k, double v)
+{
+    return isKnob(k) && setStableKnob(s, std::string(nameOf(kInputNames, k, "")), v);
+}
 
 /// Why a knob event's value is refused, or empty when it is in range (or not a knob).
 std::string knobValueError(InputKind k, double v)
 {
-    if (k == InputKind::Substeps && !StableSettings::validSubsteps(v))
-        return "substeps must be a whole number from " + std::to_string(StableSettings::kMinSubsteps) + " to " +
-               std::to_string(StableSettings::kMaxSubsteps);
-    if (k == InputKind::EdgeCompliance && !StableSettings::validEdgeCompliance(v))
-        return "edge_compliance must be a number from 0 to " + formatDouble(StableSettings::kMaxEdgeCompliance);
-    return {};
+    StableSettings s;
+    if (!isKnob(k) || turnKnob(s, k, v))
+        return {};
+    const std::string key(nameOf(kInputNames, k, ""));
+    return key + " must be " + stableKnobRange(key);
 }
 
 Error bad(const std::string& what) { return makeError(ErrorCode::InvalidInput, "recording: " + what); }
@@ -82,7 +88,8 @@ Expected<std::vector<InputEvent>> eventsFromJson(const Json& events, long steps)
         const auto name = (*a)[1].asString();
         const auto k = name ? parseName(kInputNames, *name) : std::nullopt;
         if (!k)
-            return bad(where + ": the kind must be press, move, release, spawn, release-spawn, substeps or edge_compliance");
+            return bad(where + ": the kind must be press, move, release, spawn, release-spawn, substeps, edge_compliance "
+                               "or edge_damping_ratio");
         InputEvent e{*step, *k, Point()};
         if (hasPoint(*k)) {
             const auto x = a->size() == 4 ? (*a)[2].asNumber() : std::nullopt;
@@ -294,13 +301,11 @@ void RecordedRun::apply(const InputEvent& e)
     case InputKind::Spawn: m_sim->spawn(e.at); break;
     case InputKind::ReleaseSpawn: m_sim->releaseSpawn(); break;
     case InputKind::Substeps:
-    case InputKind::EdgeCompliance: {
+    case InputKind::EdgeCompliance:
+    case InputKind::EdgeDampingRatio: {
         StableSettings s = m_sim->stableSettings();
-        if (e.kind == InputKind::Substeps)
-            s.substeps = static_cast<int>(e.value);
-        else
-            s.edgeCompliance = e.value;
-        m_sim->setStableSettings(s); // checked when recorded or read
+        turnKnob(s, e.kind, e.value); // checked when recorded or read
+        m_sim->setStableSettings(s);
         break;
     }
     }
@@ -386,6 +391,8 @@ bool RecordedRun::setStableSettings(const StableSettings& settings)
         live({stepCount(), InputKind::Substeps, Point(), double(settings.substeps)});
     if (settings.edgeCompliance != now.edgeCompliance)
         live({stepCount(), InputKind::EdgeCompliance, Point(), settings.edgeCompliance});
+    if (settings.edgeDampingRatio != now.edgeDampingRatio)
+        live({stepCount(), InputKind::EdgeDampingRatio, Point(), settings.edgeDampingRatio});
     m_sim->setStableSettings(settings);
     return true;
 }

@@ -20,17 +20,20 @@ namespace granota {
 /// Annex II's input: the left button's press, move and release, and the space bar's
 /// spawn (a new body at the mouse) and its release; and the stable solver's knobs turned
 /// live (Simulation::setStableSettings): its substeps and its edges' compliance.
-enum class InputKind { Press, Move, Release, Spawn, ReleaseSpawn, Substeps, EdgeCompliance };
+enum class InputKind { Press, Move, Release, Spawn, ReleaseSpawn, Substeps, EdgeCompliance, EdgeDampingRatio };
 
 struct InputEvent {
     long step = 0;    ///< applied once the run has made this many steps, before the next
     InputKind kind = InputKind::Move;
     Point at;         ///< scene px (Press, Move, Spawn)
-    double value = 0; ///< the knob's new value (Substeps, EdgeCompliance)
+    double value = 0; ///< the knob's new value (Substeps, EdgeCompliance, EdgeDampingRatio)
     bool operator==(const InputEvent& o) const { return step == o.step && kind == o.kind && at == o.at && value == o.value; }
 };
 /// Whether an event turns a knob (it changes how the run steps, not where anything is).
-inline bool isKnob(InputKind k) { return k == InputKind::Substeps || k == InputKind::EdgeCompliance; }
+inline bool isKnob(InputKind k)
+{
+    return k == InputKind::Substeps || k == InputKind::EdgeCompliance || k == InputKind::EdgeDampingRatio;
+}
 
 struct Recording {
     SceneSpec scene;

@@ -92,6 +92,14 @@ public:
         applyStableSettings(settings);
         return true;
     }
+    /// The stable solver's spring of body i's first edge: its rest length, px, and the mass of
+    /// a vertex on it (what edgeRingPeriodSteps and edgeRingHertz take); nullopt on the seed
+    /// and without springs.
+    struct EdgeSpring {
+        double restLength = 0;
+        double vertexMass = 0;
+    };
+    virtual std::optional<EdgeSpring> edgeSpring(int) const { return std::nullopt; }
     /// Every body's vertices and every chain's joints.
     std::size_t pointCount() const;
     /// The counted work of one step, pointCount() × substeps(): what the frog canvas budgets

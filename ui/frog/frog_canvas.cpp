@@ -557,7 +557,8 @@ bool FrogCanvas::send(InputKind kind, Point at)
         case InputKind::Spawn: run->spawn(at); break;
         case InputKind::ReleaseSpawn: run->releaseSpawn(); break;
         case InputKind::Substeps:
-        case InputKind::EdgeCompliance: break; // setStableSettings
+        case InputKind::EdgeCompliance:
+        case InputKind::EdgeDampingRatio: break; // setStableSettings
         }
         if (run == m_run.get())
             held = h;

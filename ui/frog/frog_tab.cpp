@@ -163,6 +163,22 @@ FrogTab::FrogTab(QWidget* parent)
     m_compliance->setSingleStep(0.0005);
     m_compliance->setKeyboardTracking(false);
     m_complianceLabel->setBuddy(m_compliance);
+    // The same stiffness as the frequency an edge rings at (Box2D's soft constraints).
+    m_hertzLabel = new QLabel(m_stableBox);
+    m_hertz = new QDoubleSpinBox(m_stableBox);
+    m_hertz->setObjectName(QStringLiteral("frogEdgeHertz"));
+    m_hertz->setDecimals(2);
+    m_hertz->setSingleStep(1);
+    m_hertz->setKeyboardTracking(false);
+    m_hertzLabel->setBuddy(m_hertz);
+    m_dampingLabel = new QLabel(m_stableBox);
+    m_damping = new QDoubleSpinBox(m_stableBox);
+    m_damping->setObjectName(QStringLiteral("frogEdgeDamping"));
+    m_damping->setRange(0, StableSettings::kMaxEdgeDampingRatio);
+    m_damping->setDecimals(2);
+    m_damping->setSingleStep(0.05);
+    m_damping->setKeyboardTracking(false);
+    m_dampingLabel->setBuddy(m_damping);
     m_stableNote = new QLabel(m_stableBox);
     m_stableNote->setObjectName(QStringLiteral("frogStableNote"));
     m_stableNote->setWordWrap(true);
@@ -172,8 +188,12 @@ FrogTab::FrogTab(QWidget* parent)
     stableGrid->addWidget(m_substeps, 0, 1);
     stableGrid->addWidget(m_complianceLabel, 1, 0);
     stableGrid->addWidget(m_compliance, 1, 1);
-    stableGrid->addWidget(m_stableNote, 2, 0, 1, 2);
-    stableGrid->addWidget(m_softBodyReport, 3, 0, 1, 2);
+    stableGrid->addWidget(m_hertzLabel, 2, 0);
+    stableGrid->addWidget(m_hertz, 2, 1);
+    stableGrid->addWidget(m_dampingLabel, 3, 0);
+    stableGrid->addWidget(m_damping, 3, 1);
+    stableGrid->addWidget(m_stableNote, 4, 0, 1, 2);
+    stableGrid->addWidget(m_softBodyReport, 5, 0, 1, 2);
     stableGrid->setColumnStretch(1, 1);
     column->addWidget(m_stableBox);
 
@@ -338,6 +358,15 @@ FrogTab::FrogTab(QWidget* parent)
     };
     connect(m_substeps, &QSpinBox::valueChanged, this, [knob](int n) { knob(QStringLiteral("substeps"), n); });
     connect(m_compliance, &QDoubleSpinBox::valueChanged, this, [knob](double a) { knob(QStringLiteral("edge_compliance"), a); });
+    connect(m_hertz, &QDoubleSpinBox::valueChanged, this, [this, knob](double hertz) {
+        // A frequency is a compliance for this scene's edge (edgeComplianceForHertz).
+        const auto spring = edgeSpringShown();
+        if (spring && hertz > 0)
+            knob(QStringLiteral("edge_compliance"),
+                 std::clamp(edgeComplianceForHertz(hertz, spring->restLength, spring->vertexMass, kStepsPerSecond), 0.0,
+                            StableSettings::kMaxEdgeCompliance));
+    });
+    connect(m_damping, &QDoubleSpinBox::valueChanged, this, [knob](double z) { knob(QStringLiteral("edge_damping_ratio"), z); });
     connect(m_softBodyReport, &QPushButton::clicked, this, [this] { emit reportRequested(QStringLiteral("soft-body")); });
     connect(m_explosionReset, &QPushButton::clicked, this, &FrogTab::reset);
     connect(m_explosionStable, &QPushButton::clicked, this, [this] {
@@ -764,6 +793,16 @@ void FrogTab::retranslate()
                                 "0 is rigid, larger is softer. Unlike the seed's factors it does not depend on the "
                                 "substeps or the number of vertices. The run goes on with it from the next step, and the "
                                 "recording keeps the change."));
+    m_hertzLabel->setText(tr("Edge frequency f"));
+    m_hertz->setSuffix(tr(" Hz"));
+    m_hertz->setToolTip(tr("The same stiffness as a frequency, as Box2D states its soft constraints: how many times a "
+                           "second an edge of this body rings on its own (α = 0, rigid, rings at none). Setting it sets "
+                           "the compliance."));
+    m_dampingLabel->setText(tr("Edge damping ratio ζ"));
+    m_damping->setToolTip(tr("A dashpot along each edge, as a damping ratio: 0 none, 1 critical (an edge stretched and "
+                             "let go comes back without ringing), above 1 slower still. What it takes shows in the "
+                             "plots as damping. The run goes on with it from the next step, and the recording keeps "
+                             "the change."));
     m_softBodyReport->setText(tr("Error against substeps…"));
     m_softBodyReport->setToolTip(tr("The soft-body report below the tab: XPBD's constraint error against the substeps "
                                     "and their cost (View ▸ Error against run time)."));
@@ -894,7 +933,12 @@ bool FrogTab::applyStableSettings(const StableSettings& settings, QString* error
 {
     // Live: the run goes on from where it is, and records the change at its step.
     if (!m_canvas->setStableSettings(settings)) {
-        setError(error, tr("The stable solver's knobs were refused: substeps from 1 to 32, compliance from 0 to 1."));
+        setError(error, tr("The stable solver's knobs were refused: substeps from %1 to %2, compliance from 0 to %3, "
+                           "damping ratio from 0 to %4.")
+                            .arg(StableSettings::kMinSubsteps)
+                            .arg(StableSettings::kMaxSubsteps)
+                            .arg(displayNumber(StableSettings::kMaxEdgeCompliance))
+                            .arg(displayNumber(StableSettings::kMaxEdgeDampingRatio)));
         return false;
     }
     showStableSettings();
@@ -921,28 +965,40 @@ bool FrogTab::editStableSetting(const QString& key, double value, QString* error
     return true;
 }
 
+std::optional<Simulation::EdgeSpring> FrogTab::edgeSpringShown() const
+{
+    const Simulation* sim = m_canvas->simulation();
+    return sim && sim->bodyCount() > 0 ? sim->edgeSpring(0) : std::nullopt;
+}
+
 void FrogTab::showStableSettings()
 {
-    const QSignalBlocker b1(m_substeps), b2(m_compliance);
+    const QSignalBlocker b1(m_substeps), b2(m_compliance), b3(m_hertz), b4(m_damping);
     const StableSettings knobs = knobsInForce();
     m_knobsShown = knobs;
     m_substeps->setValue(knobs.substeps);
     m_compliance->setValue(knobs.edgeCompliance);
+    m_damping->setValue(knobs.edgeDampingRatio);
     m_stableBox->setVisible(m_solver == SolverKind::Stable);
-    // What α means for this scene: the first edge of the first body, a vertex of mass 1.
-    const Simulation* sim = m_canvas->simulation();
+    // What α means for this scene: the first edge of the first body, at rest, its vertex's mass.
+    const auto spring = edgeSpringShown();
     QString note;
-    if (sim && sim->bodyCount() > 0 && m_scene.has("springs")) {
-        std::vector<Point> v;
-        sim->bodyVertices(0, v);
-        const double length = v.size() >= 2 ? std::hypot(v[1].x - v[0].x, v[1].y - v[0].y) : 0;
-        const double period = edgeRingPeriodSteps(knobs.edgeCompliance, length, 1);
+    if (spring) {
+        // The frequencies α from 0 to its largest gives, this edge's (none for rigid).
+        const double softest = edgeRingHertz(StableSettings::kMaxEdgeCompliance, spring->restLength, spring->vertexMass,
+                                             kStepsPerSecond);
+        m_hertz->setRange(std::ceil(softest * 100) / 100, kMostEdgeHertz);
+        const double hertz = edgeRingHertz(knobs.edgeCompliance, spring->restLength, spring->vertexMass, kStepsPerSecond);
+        m_hertz->setEnabled(hertz > 0);
+        m_hertz->setValue(hertz > 0 ? hertz : kMostEdgeHertz);
+        const double period = edgeRingPeriodSteps(knobs.edgeCompliance, spring->restLength, spring->vertexMass);
         if (std::isfinite(period))
             note = tr("An edge of %1 px rings with a period of %2 steps (%3 Hz at 60 steps a second); 0 makes the edges rigid.")
-                       .arg(displayFixed(length, 0), displayFixed(period, 1), displayFixed(kStepsPerSecond / period, 2));
+                       .arg(displayFixed(spring->restLength, 0), displayFixed(period, 1), displayFixed(hertz, 2));
         else
             note = tr("α = 0: the edges are rigid.");
-    } else if (sim) {
+    } else if (m_canvas->simulation()) {
+        m_hertz->setEnabled(false);
         note = tr("This scene has no springs: the compliance does nothing here.");
     }
     m_stableNote->setText(note);
@@ -1025,6 +1081,8 @@ QJsonObject FrogTab::saveState() const
     QJsonObject stable;
     stable.insert(QStringLiteral("substeps"), m_scene.stable.substeps);
     stable.insert(QStringLiteral("edge_compliance"), m_scene.stable.edgeCompliance);
+    if (m_scene.stable.edgeDampingRatio != 0)
+        stable.insert(QStringLiteral("edge_damping_ratio"), m_scene.stable.edgeDampingRatio);
     state.insert(QStringLiteral("stable"), stable);
     // The run so far (docs/rewind.md): its events, how far it went, and the step shown.
     if (const RecordedRun* run = m_canvas->run())

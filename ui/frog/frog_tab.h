@@ -60,8 +60,8 @@ public:
     bool applyParameter(const QString& key, const QJsonValue& value, QString* error);
     /// Builds the scene again from its parameters (Reset).
     void reset();
-    /// The stable solver's knobs (docs/solvers.md#knobs): "substeps" (1–32) or
-    /// "edge_compliance" (0–1), applied at once (the bodies start again) as one undo step
+    /// The stable solver's knobs (docs/solvers.md#knobs): "substeps" (1–32),
+    /// "edge_compliance" (0–1) or "edge_damping_ratio" (0–2), turned live as one undo step
     /// (a run of edits of one knob merges). False with a message when refused.
     bool editStableSetting(const QString& key, double value, QString* error);
     /// The speed (StepPacer::kSpeeds; others are ignored), in the canvas and the speed box.
@@ -147,6 +147,12 @@ private:
     QSpinBox* m_substeps = nullptr;
     StableSettings m_knobsShown; ///< what the knob boxes show (showStableSettings)
     QDoubleSpinBox* m_compliance = nullptr;
+    QLabel *m_hertzLabel = nullptr, *m_dampingLabel = nullptr;
+    QDoubleSpinBox* m_hertz = nullptr;   ///< the compliance as the frequency an edge rings at
+    QDoubleSpinBox* m_damping = nullptr; ///< ζ
+    static constexpr double kMostEdgeHertz = 999.99;
+    /// The first body's first edge, whose ring the note and the frequency box state.
+    std::optional<Simulation::EdgeSpring> edgeSpringShown() const;
     QPushButton* m_softBodyReport = nullptr;
     QWidget* m_explosion = nullptr; ///< "the body has blown up", with Reset and the stable solver
     QLabel* m_explosionText = nullptr;

@@ -51,29 +51,21 @@ Error bad(const std::string& scene, const std::string& what)
 }
 
 /// The keys of "stable" (StableSettings), also taken by --set on any scene.
-bool isStableKey(const std::string& key) { return key == "substeps" || key == "edge_compliance"; }
+bool isStableKey(const std::string& key)
+{
+    const auto& keys = stableKnobKeys();
+    return std::find(keys.begin(), keys.end(), key) != keys.end();
+}
 
-/// Sets the stable solver's `key` in `s` from `v`: substeps a whole number in 1 … 32,
-/// edge_compliance a number in [0, 1].
+/// Sets the stable solver's `key` in `s` from `v` (stableKnobRange says what each takes).
 Expected<void> setStableSetting(SceneSpec& s, const std::string& key, const Json& v)
 {
-    if (key == "substeps") {
-        const auto n = wholeNumber(v, StableSettings::kMinSubsteps, StableSettings::kMaxSubsteps);
-        if (!n)
-            return bad(s.name, "substeps must be a whole number from " + std::to_string(StableSettings::kMinSubsteps) + " to " +
-                                   std::to_string(StableSettings::kMaxSubsteps));
-        s.stable.substeps = *n;
-        return {};
-    }
-    if (key == "edge_compliance") {
-        const auto a = v.asNumber();
-        if (!a || !StableSettings::validEdgeCompliance(*a))
-            return bad(s.name, "edge_compliance must be a number from 0 (rigid edges) to " +
-                                   formatDouble(StableSettings::kMaxEdgeCompliance));
-        s.stable.edgeCompliance = *a;
-        return {};
-    }
-    return bad(s.name, "\"stable\" has substeps and edge_compliance, not " + quotedForDisplay(key));
+    if (!isStableKey(key))
+        return bad(s.name, "\"stable\" has substeps, edge_compliance and edge_damping_ratio, not " + quotedForDisplay(key));
+    const auto number = v.asNumber();
+    if (!number || !setStableKnob(s.stable, key, *number))
+        return bad(s.name, key + " must be " + stableKnobRange(key));
+    return {};
 }
 
 std::optional<Point> pointOf(const Json& v)
@@ -460,7 +452,8 @@ Expected<SceneSpec> parseScene(const Json& doc)
     }
     if (const Json* stable = doc.find("stable")) {
         if (!stable->isObject())
-            return bad(s.name, "\"stable\" must be an object: {\"substeps\": n, \"edge_compliance\": α}");
+            return bad(s.name, "\"stable\" must be an object: {\"substeps\": n, \"edge_compliance\": α, "
+                               "\"edge_damping_ratio\": ζ}");
         for (const auto& [key, value] : *stable->asObject()) {
             auto ok = setStableSetting(s, key, value);
             if (!ok)
@@ -496,7 +489,7 @@ Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
         for (const auto& k : scene.paramKeys)
             keys += (keys.empty() ? "" : ", ") + k;
         return makeError(ErrorCode::InvalidInput, "scene '" + scene.name + "' has no parameter " + quotedForDisplay(key) +
-                                                      " (it has: " + keys + "; and for the stable solver: substeps, edge_compliance)");
+                                                      " (it has: " + keys + "; and for the stable solver: substeps, edge_compliance, edge_damping_ratio)");
     }
     const SceneParameter* param = findSceneParameter(key);
     if (param && !param->settable())
@@ -629,6 +622,8 @@ Json sceneToJson(const SceneSpec& s)
     if (!s.stable.isDefault()) {
         Json stable = Json::object();
         stable.set("substeps", s.stable.substeps).set("edge_compliance", s.stable.edgeCompliance);
+        if (s.stable.edgeDampingRatio != 0) // written only when set, as "stable" itself
+            stable.set("edge_damping_ratio", s.stable.edgeDampingRatio);
         doc.set("stable", stable);
     }
     return doc;

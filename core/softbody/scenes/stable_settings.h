@@ -1,15 +1,19 @@
 #pragma once
 /// \file stable_settings.h
 /// The stable solver's own knobs that a scene may set (docs/solvers.md, "Knobs"): how many
-/// substeps a step makes, and how stiff the body's edges are, as an XPBD compliance. The
-/// seed ignores them (Annex II has neither). A scene file holds them as
-/// `"stable": {"substeps": n, "edge_compliance": α}`, written only when they differ from
-/// these defaults, which are XpbdParams' own (core/softbody/xpbd/xpbd_params.h).
+/// substeps a step makes, how stiff the body's edges are, as an XPBD compliance (or the
+/// frequency it makes an edge ring at), and how damped, as a damping ratio (Box2D's soft
+/// constraints). The seed ignores them (Annex II has none). A scene file holds them as
+/// `"stable": {"substeps": n, "edge_compliance": α, "edge_damping_ratio": ζ}`, written only
+/// when they differ from these defaults, which are XpbdParams' own
+/// (core/softbody/xpbd/xpbd_params.h).
 
 #include "core/base/math_constants.h"
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 namespace granota {
 
@@ -19,18 +23,30 @@ struct StableSettings {
     /// α of an edge per px of its rest length, step²/mass, in [0, kMaxEdgeCompliance]
     /// (0 = rigid edges).
     double edgeCompliance = 2e-3;
+    /// ζ, each edge's damping ratio: a dashpot along it of 2ζ √(k m) (k = 1/(α L), m the
+    /// edge's reduced mass), in [0, kMaxEdgeDampingRatio]: 0 none (the default), 1 critical.
+    double edgeDampingRatio = 0;
 
     static constexpr int kMinSubsteps = 1;
     static constexpr int kMaxSubsteps = 32;
     static constexpr double kMaxEdgeCompliance = 1;
+    static constexpr double kMaxEdgeDampingRatio = 2;
 
-    /// A whole number of substeps in [kMinSubsteps, kMaxSubsteps]; a compliance in [0, kMaxEdgeCompliance].
+    /// A whole number of substeps in [kMinSubsteps, kMaxSubsteps]; a compliance in
+    /// [0, kMaxEdgeCompliance]; a damping ratio in [0, kMaxEdgeDampingRatio].
     static bool validSubsteps(double n) { return n >= kMinSubsteps && n <= kMaxSubsteps && std::floor(n) == n; }
     static bool validEdgeCompliance(double a) { return a >= 0 && a <= kMaxEdgeCompliance; }
-    bool valid() const { return validSubsteps(substeps) && validEdgeCompliance(edgeCompliance); }
+    static bool validEdgeDampingRatio(double z) { return z >= 0 && z <= kMaxEdgeDampingRatio; }
+    bool valid() const
+    {
+        return validSubsteps(substeps) && validEdgeCompliance(edgeCompliance) && validEdgeDampingRatio(edgeDampingRatio);
+    }
 
     bool isDefault() const { return *this == StableSettings{}; }
-    bool operator==(const StableSettings& o) const { return substeps == o.substeps && edgeCompliance == o.edgeCompliance; }
+    bool operator==(const StableSettings& o) const
+    {
+        return substeps == o.substeps && edgeCompliance == o.edgeCompliance && edgeDampingRatio == o.edgeDampingRatio;
+    }
     bool operator!=(const StableSettings& o) const { return !(*this == o); }
 };
 
@@ -42,5 +58,22 @@ inline double edgeRingPeriodSteps(double edgeCompliance, double restLength, doub
     const double k = edgeCompliance * restLength * mass;
     return k > 0 ? 2 * kPi * std::sqrt(k) : std::numeric_limits<double>::infinity();
 }
+
+/// The knobs by the names of the scene file's "stable" keys, of --set and of a recording's
+/// knob events: one of them set to `value` in `s`, or false (and `s` as it was) for a value
+/// out of range; an unknown key is false too.
+bool setStableKnob(StableSettings& s, const std::string& key, double value);
+/// "substeps", "edge_compliance", "edge_damping_ratio".
+const std::vector<std::string>& stableKnobKeys();
+/// What `key` takes, for messages: "a whole number from 1 to 32", "a number from 0 (rigid
+/// edges) to 1", "a number from 0 (no damping) to 2".
+std::string stableKnobRange(const std::string& key);
+
+/// The frequency an edge of rest length `restLength` px rings at, in Hz at `stepsPerSecond`
+/// (a vertex of mass `mass` on it, edgeRingPeriodSteps; 0 for a rigid edge, which does not
+/// ring), and back: the compliance that makes it ring at `hertz` > 0. The Frog tab states the
+/// edges' stiffness either way (Box2D's soft constraints name a frequency).
+double edgeRingHertz(double edgeCompliance, double restLength, double mass, double stepsPerSecond);
+double edgeComplianceForHertz(double hertz, double restLength, double mass, double stepsPerSecond);
 
 } // namespace granota

@@ -3,20 +3,35 @@
 
 namespace granota {
 
-void solveEdgeRing(DistanceConstraint* e, int n, Point* x, const double* w, double alphaTildePerLength, Point* delta)
+void solveEdgeRing(DistanceConstraint* e, int n, Point* x, const Point* xPrev, const double* w, double alphaTildePerLength,
+                   double dampingRatio, Point* delta)
 {
     constexpr double omega = 0.5; // each vertex lies on two edges: apply their mean
     for (int k = 0; k < n; ++k) {
         DistanceConstraint& c = e[k];
         const Point d = x[c.a] - x[c.b];
         const double len = std::sqrt(dot(d, d));
-        const double denom = w[c.a] + w[c.b] + omega * alphaTildePerLength * c.complianceScale;
+        const double mobility = w[c.a] + w[c.b];
+        const double alpha = alphaTildePerLength * c.complianceScale;
+        double denom = mobility + omega * alpha;
         if (len < 1e-12 || !(denom > 0)) {
             c.lambda = 0;
             continue;
         }
         // Soft limit: ω Δλ ≈ −ω C h²/(ω α) = −C h²/α, the spring's own force.
-        const double applied = omega * (-(len - c.rest) / denom);
+        double pull = -(len - c.rest);
+        c.dampingLambda = 0;
+        if (dampingRatio > 0 && alpha > 0 && mobility > 0) {
+            // A dashpot along the edge (Macklin et al. 2016, eq. 26): γ = α̃ β̃ / h with
+            // β̃ = h² b and b = 2ζ √(k m) (k = 1/α, m = 1/(w_a + w_b)): γ = 2ζ √(α̃ (w_a + w_b)) / (w_a + w_b).
+            const double gamma = 2 * dampingRatio * std::sqrt(alpha / mobility);
+            const Point moved = (x[c.a] - xPrev[c.a]) - (x[c.b] - xPrev[c.b]);
+            const double damping = -gamma * dot(d, moved) / len;
+            pull += damping;
+            denom += gamma * mobility;
+            c.dampingLambda = omega * (damping / denom);
+        }
+        const double applied = omega * (pull / denom);
         c.lambda = applied;
         const Point n(d.x / len * applied, d.y / len * applied);
         delta[c.a] += Point(w[c.a] * n.x, w[c.a] * n.y);
@@ -27,6 +42,25 @@ void solveEdgeRing(DistanceConstraint* e, int n, Point* x, const double* w, doub
         x[i] += delta[i];
         delta[i] = Point();
     }
+}
+
+double edgeDashpotLoss(const DistanceConstraint* e, int n, const Point* x, const Point* xPrev, double h)
+{
+    // The dashpot's force λ_d/h² along the edge, against how far the edge stretched in the
+    // substep: −λ_d ΔC / h² (λ_d opposes the stretching, so the work it takes is > 0).
+    double loss = 0;
+    for (int k = 0; k < n; ++k) {
+        const DistanceConstraint& c = e[k];
+        if (c.dampingLambda == 0)
+            continue;
+        const Point d = x[c.a] - x[c.b];
+        const double len = std::sqrt(dot(d, d));
+        if (!(len > 1e-12))
+            continue;
+        const Point moved = (x[c.a] - xPrev[c.a]) - (x[c.b] - xPrev[c.b]);
+        loss -= c.dampingLambda * (dot(d, moved) / len) / (h * h);
+    }
+    return loss;
 }
 
 double solveArea(Point* x, const double* w, int n, double target, double alphaTilde)

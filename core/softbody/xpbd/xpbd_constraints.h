@@ -39,6 +39,7 @@ struct DistanceConstraint {
     double complianceScale = 1; ///< α = (compliance of the kind) × this (the rest length for edges)
     ConstraintKind kind = ConstraintKind::Edge;
     double lambda = 0;          ///< λ of the last substep; the force is λ/h² (negative when stretched)
+    double dampingLambda = 0;   ///< the dashpot's part of λ (solveEdgeRing's damping ratio), or 0
 };
 
 /// |x_joint − p| = rest with p = (1 − t)·x_a + t·x_b, a point of a body between two of its
@@ -109,8 +110,14 @@ inline double solveDistance(DistanceConstraint& c, Point* x, const double* w, do
 /// half the sum of its two corrections (Macklin et al. 2014, §4.2, ω = 1/2). The compliance
 /// in the denominator is halved too, so that a soft edge still pulls with −C/α (α̃ of an
 /// edge = alphaTildePerLength × its complianceScale). `delta` is scratch, zero on entry and
-/// on exit, indexed like x.
-void solveEdgeRing(DistanceConstraint* e, int n, Point* x, const double* w, double alphaTildePerLength, Point* delta);
+/// on exit, indexed like x. A damping ratio ζ > 0 adds a dashpot along each soft edge
+/// (XPBD's damping, Macklin et al. 2016, eq. 26) of b = 2ζ √(k m), k = 1/α, m = 1/(w_a + w_b),
+/// acting on how far the edge has stretched since xPrev (the substep's start).
+void solveEdgeRing(DistanceConstraint* e, int n, Point* x, const Point* xPrev, const double* w, double alphaTildePerLength,
+                   double dampingRatio, Point* delta);
+/// What the dashpots of solveEdgeRing took in a substep of length h: each one's force
+/// (DistanceConstraint::dampingLambda / h²) times how far its edge stretched from xPrev to x.
+double edgeDashpotLoss(const DistanceConstraint* e, int n, const Point* x, const Point* xPrev, double h);
 
 /// One XPBD projection of the area constraint C = A − target of the polygon x[0..n), in
 /// place: gradients are taken at the positions before the update. Returns λ.

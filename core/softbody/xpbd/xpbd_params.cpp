@@ -45,6 +45,8 @@ Expected<XpbdParams> validateXpbdParams(const XpbdParams& p)
         || !finiteNonNegative(p.bendCompliance) || !finiteNonNegative(p.linkCompliance)
         || !finiteNonNegative(p.grabCompliance))
         return bad("compliances must be finite and not negative (0 = infinitely stiff)");
+    if (!finiteNonNegative(p.edgeDampingRatio))
+        return bad("the edges' damping ratio must be finite and not negative");
     if (!(std::isfinite(p.width) && p.width >= 1 && std::isfinite(p.height) && p.height >= 1))
         return bad("the frame must be at least 1 px wide and 1 px high, and finite");
     if (!(p.restitution >= 0 && p.restitution <= 1))

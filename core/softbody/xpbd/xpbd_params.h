@@ -32,6 +32,8 @@ struct XpbdParams {
     double dt = 1;
     /// α of an edge per px of its rest length, step²/mass (0 = rigid edges).
     double edgeCompliance = StableSettings{}.edgeCompliance;
+    /// ζ, the damping ratio of a dashpot along each edge (0 = none; solveEdgeRing).
+    double edgeDampingRatio = StableSettings{}.edgeDampingRatio;
     /// α of a body's area constraint, step²/(mass·px²) (0 = incompressible, §4.5).
     double areaCompliance = 0;
     /// α of the turn between consecutive edges of a body with bending on, step²/(mass·px²)

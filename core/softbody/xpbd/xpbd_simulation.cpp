@@ -34,6 +34,7 @@ XpbdParams paramsOf(const SceneSpec& s)
         p.velmax = std::max(s.params.velmax, 1e-9);
     p.substeps = s.stable.substeps;
     p.edgeCompliance = s.has("springs") ? s.stable.edgeCompliance : kNoConstraint;
+    p.edgeDampingRatio = s.has("springs") ? s.stable.edgeDampingRatio : 0.0;
     if (!s.has("area"))
         p.areaCompliance = kNoConstraint;
     p.grabMode = s.grab;
@@ -114,13 +115,22 @@ public:
     {
         XpbdParams p = m_world.params();
         p.substeps = s.substeps;
-        if (scene().has("springs")) // without springs the edges stay unconstrained (paramsOf)
+        if (scene().has("springs")) { // without springs the edges stay unconstrained (paramsOf)
             p.edgeCompliance = s.edgeCompliance;
+            p.edgeDampingRatio = s.edgeDampingRatio;
+        }
         const auto ok = m_world.setParams(p);
         assert(ok);
         (void)ok;
     }
     int bodyCount() const override { return m_world.bodyCount(); }
+    std::optional<EdgeSpring> edgeSpring(int i) const override
+    {
+        if (!scene().has("springs") || i < 0 || i >= bodyCount() || m_world.bodyRange(i).count < 2)
+            return std::nullopt;
+        const XpbdWorld::EdgeRest e = m_world.edgeRest(i, 0);
+        return EdgeSpring{e.length, e.vertexMass};
+    }
     // Copied into the caller's vector (its capacity reused): no allocation per frame.
     void bodyVertices(int i, std::vector<Point>& out) const override { copyRange(m_world.bodyRange(i), out); }
     double bodyArea(int i) const override { return std::abs(m_world.area(i)); }

@@ -548,7 +548,7 @@ void XpbdWorld::solveSubstep(double h, double fraction)
         // a body at rest would slowly roll like a caterpillar track; any fixed reordering
         // (red–black) still leaves a slow creep for odd n, and alternating orders between
         // substeps pumps energy into a zigzag. The average is symmetric and cannot overshoot.
-        solveEdgeRing(m_edges.data() + b.firstEdge, b.count, x, w, edgeAlpha, m_delta.data());
+        solveEdgeRing(m_edges.data() + b.firstEdge, b.count, x, xPrev, w, edgeAlpha, p.edgeDampingRatio, m_delta.data());
         b.areaLambda = solveArea(x + b.first, w + b.first, b.count, b.target, areaAlpha);
         if (b.angleCount > 0)
             solveBendingRing(m_angles.data() + b.firstAngle, b.angleCount, x, w, bendAlpha, m_delta.data());
@@ -713,6 +713,16 @@ void XpbdWorld::solveSubstep(double h, double fraction)
     if (contacts > m_contactCount) // each body's count from the substep the step's count is from
         m_bodyContactCount = m_bodyContactsNow;
     m_contactCount = std::max(m_contactCount, contacts);
+    // What the edges' dashpots took (ζ > 0), with the damping f: the damping loss.
+    if (p.edgeDampingRatio > 0)
+        for (std::size_t k = 0; k < m_bodies.size(); ++k) {
+            const Body& b = m_bodies[k];
+            if (b.recovering)
+                continue;
+            const double loss = edgeDashpotLoss(m_edges.data() + b.firstEdge, b.count, x, xPrev, h);
+            m_dampingLoss += loss;
+            m_bodyDampingLoss[k] += loss;
+        }
     for (const BodyContact& c : m_bodyContacts)
         applyContactFriction(c, v, w, c.friction, h);
     for (int i = 0; i < np; ++i) {
@@ -916,6 +926,14 @@ double XpbdWorld::angleLimitTorque(int chain) const
     return worst;
 }
 
+XpbdWorld::EdgeRest XpbdWorld::edgeRest(int body, int edge) const
+{
+    assert(body >= 0 && body < bodyCount() && edge >= 0 && edge < m_bodies[at(body)].count);
+    const DistanceConstraint& c = m_edges[at(m_bodies[at(body)].firstEdge + edge)];
+    const double w = m_w[at(c.a)];
+    return {c.rest, w > 0 ? 1 / w : 0.0};
+}
+
 Point XpbdWorld::centroid(int body) const
 {
     const ParticleRange r = bodyRange(body);
@@ -1016,8 +1034,8 @@ double XpbdWorld::elasticEnergy(std::vector<BodyEnergies>* bodies) const
         if (bodies && m_owner[at(owner)] >= 0)
             (*bodies)[at(m_owner[at(owner)])].elastic += u;
     };
-    for (const DistanceConstraint& c : m_edges)
-        add(m_params.edgeCompliance * c.complianceScale, c.lambda, c.a);
+    for (const DistanceConstraint& c : m_edges) // the spring's force, not the dashpot's
+        add(m_params.edgeCompliance * c.complianceScale, c.lambda - c.dampingLambda, c.a);
     for (const DistanceConstraint& c : m_links)
         add(m_params.linkCompliance, c.lambda, c.b);
     for (const AnchoredDistanceConstraint& c : m_anchorLinks)

@@ -146,6 +146,11 @@ public:
     double maxEdgeTension(int body) const;    ///< max −λ/h² over the edges, mass·px/step² (> 0 = stretched)
     double angleLimitTorque(int chain) const; ///< max |λ|/h² over the chain's angle limits (0 when none is hit)
     Point centroid(int body) const;           ///< mean of the vertices, px
+    /// Edge k of a body (from vertex k to k + 1): its rest length, px, and its first vertex's mass.
+    struct EdgeRest {
+        double length = 0, vertexMass = 0;
+    };
+    EdgeRest edgeRest(int body, int edge) const;
     double orientation(int body) const;       ///< best-fit rotation from the rest shape, rad
     bool recovering(int body) const;          ///< shape matching is pulling the body back
     bool isValid(int body) const;             ///< positive area above 20 % of the target, no self-crossing
