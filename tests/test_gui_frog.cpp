@@ -885,6 +885,12 @@ private slots:
         QVERIFY2(error.contains("edge_damping_ratio must be a number from 0 (no damping) to 2"), qPrintable(error));
         damping->setValue(0);
         tab().reset();
+        QVERIFY(tab().setScene("pendulum-limits", nullptr)); // no springs: nothing to set
+        QVERIFY(!damping->isEnabled() && !hertz->isEnabled());
+        QCOMPARE(hertz->text(), QStringLiteral("—"));
+        QVERIFY(tab().setScene("frog", nullptr));
+        QVERIFY(damping->isEnabled() && hertz->isEnabled());
+        QVERIFY(hertz->text() != QStringLiteral("—"));
     }
 
     // Issue 16, rewind: the canvas records the mouse's grab and throw; the timeline goes

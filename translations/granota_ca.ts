@@ -2658,8 +2658,8 @@ a cada canvi alentiria la finestra.</translation>
             <translation>Fantasma de l'altre mètode</translation>
         </message>
         <message>
-            <source>This scene has no springs: the compliance does nothing here.</source>
-            <translation>Aquesta escena no té molles: aquí la flexibilitat no fa res.</translation>
+            <source>This scene has no springs: the compliance and the damping ratio do nothing here.</source>
+            <translation>Aquesta escena no té molles: aquí la flexibilitat i la raó d'esmorteïment no fan res.</translation>
         </message>
         <message>
             <source>α = 0: the edges are rigid.</source>

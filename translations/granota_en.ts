@@ -2658,8 +2658,8 @@ on each change would slow the window.</translation>
             <translation>Ghost of the other solver</translation>
         </message>
         <message>
-            <source>This scene has no springs: the compliance does nothing here.</source>
-            <translation>This scene has no springs: the compliance does nothing here.</translation>
+            <source>This scene has no springs: the compliance and the damping ratio do nothing here.</source>
+            <translation>This scene has no springs: the compliance and the damping ratio do nothing here.</translation>
         </message>
         <message>
             <source>α = 0: the edges are rigid.</source>

@@ -982,15 +982,24 @@ void FrogTab::showStableSettings()
     m_stableBox->setVisible(m_solver == SolverKind::Stable);
     // What α means for this scene: the first edge of the first body, at rest, its vertex's mass.
     const auto spring = edgeSpringShown();
-    QString note;
-    if (spring) {
-        // The frequencies α from 0 to its largest gives, this edge's (none for rigid).
+    // Rigid edges, or none: no frequency to state ("—").
+    const double hertz =
+        spring ? edgeRingHertz(knobs.edgeCompliance, spring->restLength, spring->vertexMass, kStepsPerSecond) : 0.0;
+    m_hertz->setEnabled(hertz > 0);
+    m_hertz->setSpecialValueText(hertz > 0 ? QString() : QStringLiteral("—"));
+    m_damping->setEnabled(spring.has_value());
+    if (hertz > 0) {
+        // The frequencies α from 0 to its largest gives, this edge's.
         const double softest = edgeRingHertz(StableSettings::kMaxEdgeCompliance, spring->restLength, spring->vertexMass,
                                              kStepsPerSecond);
         m_hertz->setRange(std::ceil(softest * 100) / 100, kMostEdgeHertz);
-        const double hertz = edgeRingHertz(knobs.edgeCompliance, spring->restLength, spring->vertexMass, kStepsPerSecond);
-        m_hertz->setEnabled(hertz > 0);
-        m_hertz->setValue(hertz > 0 ? hertz : kMostEdgeHertz);
+        m_hertz->setValue(hertz);
+    } else {
+        m_hertz->setRange(0, kMostEdgeHertz);
+        m_hertz->setValue(0);
+    }
+    QString note;
+    if (spring) {
         const double period = edgeRingPeriodSteps(knobs.edgeCompliance, spring->restLength, spring->vertexMass);
         if (std::isfinite(period))
             note = tr("An edge of %1 px rings with a period of %2 steps (%3 Hz at 60 steps a second); 0 makes the edges rigid.")
@@ -998,8 +1007,7 @@ void FrogTab::showStableSettings()
         else
             note = tr("α = 0: the edges are rigid.");
     } else if (m_canvas->simulation()) {
-        m_hertz->setEnabled(false);
-        note = tr("This scene has no springs: the compliance does nothing here.");
+        note = tr("This scene has no springs: the compliance and the damping ratio do nothing here.");
     }
     m_stableNote->setText(note);
 }
