@@ -8,7 +8,7 @@ void readLinkAngles(const Simulation& sim, int chain, std::vector<Point>& joints
 {
     out.clear();
     sim.chainJoints(chain, joints);
-    std::vector<LinkLimit> limits;
+    thread_local std::vector<LinkLimit> limits; // its capacity reused: no allocation a frame
     sim.chainLimits(chain, limits);
     for (std::size_t k = 0; k + 1 < joints.size(); ++k) {
         LinkAngleReading r;

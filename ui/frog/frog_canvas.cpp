@@ -422,12 +422,8 @@ void FrogCanvas::drawProtractor(QPainter& p, double pixel)
     // canvas a label that would cover another is left out, those at a limit first kept.
     const double k = m_style.scale;
     const QTransform world = p.worldTransform();
-    struct Label {
-        QPointF at;
-        QString text;
-        bool atLimit;
-    };
-    std::vector<Label> labels;
+    std::vector<ProtractorLabel>& labels = m_protractorLabels; // capacities reused frame to frame
+    labels.clear();
     for (int c = 0; c < sim()->chainCount(); ++c) {
         readLinkAngles(*sim(), c, m_joints, m_angles);
         for (std::size_t l = 0; l < m_angles.size(); ++l) {
@@ -457,13 +453,14 @@ void FrogCanvas::drawProtractor(QPainter& p, double pixel)
                               displayFixed(degrees, 0) + QStringLiteral("°"), a.atLimit});
         }
     }
-    std::stable_partition(labels.begin(), labels.end(), [](const Label& l) { return l.atLimit; });
+    std::stable_partition(labels.begin(), labels.end(), [](const ProtractorLabel& l) { return l.atLimit; });
     p.save();
     p.resetTransform();
     p.setFont(m_numberFont);
     const QFontMetricsF fm(m_numberFont);
-    std::vector<QRectF> drawn;
-    for (const Label& l : labels) {
+    std::vector<QRectF>& drawn = m_protractorBoxes;
+    drawn.clear();
+    for (const ProtractorLabel& l : labels) {
         QRectF box(0, 0, fm.horizontalAdvance(l.text) + 6 * k, fm.height() + 2 * k);
         box.moveCenter(l.at);
         if (std::any_of(drawn.begin(), drawn.end(), [&box](const QRectF& r) { return r.intersects(box); }))

@@ -308,6 +308,13 @@ private:
     std::unique_ptr<RecordedRun> m_ghost; // Overlays::ghost: the other solver, fed the same input
     TrailPoint m_trailPoint;
     int m_markedBody = -1;
+    struct ProtractorLabel {
+        QPointF at;
+        QString text;
+        bool atLimit = false;
+    };
+    std::vector<ProtractorLabel> m_protractorLabels; // drawProtractor's, kept for their capacity
+    std::vector<QRectF> m_protractorBoxes;
     std::deque<Point> m_trail;
     std::string m_trailScene; // the stage m_trailPoint was chosen in
     std::vector<Point> m_trailBuffer;
