@@ -78,6 +78,8 @@ int XpbdWorld::addParticle(Point x, Point v, double invMass)
     m_xPrev.push_back(x);
     m_v.push_back(v);
     m_w.push_back(invMass);
+    m_mass.push_back(invMass > 0 ? 1 / invMass : 0.0);
+    m_particleDampingLoss.push_back(0);
     m_contact.push_back(Point());
     m_restShape.push_back(Point());
     m_rest.push_back(Point());
@@ -519,8 +521,7 @@ void XpbdWorld::solveSubstep(double h, double fraction)
             continue;
         const double loss = (lost.x * v[i].x * v[i].x + lost.y * v[i].y * v[i].y) / w[i];
         dampingLoss += loss;
-        if (const int b = m_owner[at(i)]; b >= 0)
-            m_bodyDampingLoss[at(b)] += 0.5 * loss;
+        m_particleDampingLoss[at(i)] += 0.5 * loss; // summed per body when asked (motionEnergies)
         Point vi(keep.x * v[i].x + p.gravity.x * h, keep.y * v[i].y + p.gravity.y * h);
         vi.x = std::clamp(vi.x, -vCap, vCap);
         vi.y = std::clamp(vi.y, -vCap, vCap);
@@ -895,6 +896,9 @@ XpbdWorld::EdgeExtremes XpbdWorld::edgeExtremes(int body) const
     const double invH2 = 1 / (h * h);
     const Body& b = m_bodies[at(body)];
     EdgeExtremes x;
+    // The largest |L − L₀| / max(L₀, 1) as a fraction kept apart, compared by cross
+    // multiplying: one division a body, not one an edge (a readout of every step).
+    double most = 0, over = 1;
     for (int k = 0; k < b.count; ++k) {
         const DistanceConstraint& e = m_edges[at(b.firstEdge + k)];
         const Point d = m_x[at(e.b)] - m_x[at(e.a)];
@@ -902,9 +906,14 @@ XpbdWorld::EdgeExtremes XpbdWorld::edgeExtremes(int body) const
         // hypot's care for overflow took half the time of all the readouts; positions stay
         // inside the frame, far from overflow.
         const double len = std::sqrt(d.x * d.x + d.y * d.y);
-        x.stretch = std::max(x.stretch, std::abs(len - e.rest) / std::max(e.rest, 1.0));
+        const double off = std::abs(len - e.rest), rest = std::max(e.rest, 1.0);
+        if (off * over > most * rest) {
+            most = off;
+            over = rest;
+        }
         x.tension = std::max(x.tension, -e.lambda * invH2);
     }
+    x.stretch = most / over;
     return x;
 }
 
@@ -975,7 +984,7 @@ XpbdWorld::MotionEnergies XpbdWorld::motionEnergies(std::vector<BodyEnergies>* b
     for (std::size_t i = 0; i < m_x.size(); ++i) {
         if (!(m_w[i] > 0))
             continue;
-        const double m = 1 / m_w[i];
+        const double m = m_mass[i];
         const double kinetic = 0.5 * dot(m_v[i], m_v[i]) * m;
         const double gravity = dot(g, m_x[i]) * m;
         e.kinetic += kinetic;
@@ -986,6 +995,7 @@ XpbdWorld::MotionEnergies XpbdWorld::motionEnergies(std::vector<BodyEnergies>* b
             b.kinetic += kinetic;
             b.gravity -= gravity;
             b.movingMass += m;
+            b.dampingLoss += m_particleDampingLoss[i];
         }
     }
     return e;
@@ -994,7 +1004,7 @@ XpbdWorld::MotionEnergies XpbdWorld::motionEnergies(std::vector<BodyEnergies>* b
 void XpbdWorld::bodyLosses(std::vector<BodyEnergies>& bodies) const
 {
     for (std::size_t k = 0; k < m_bodies.size(); ++k) {
-        bodies[k].dampingLoss = m_bodyDampingLoss[k];
+        bodies[k].dampingLoss += m_bodyDampingLoss[k];
         bodies[k].contacts = m_bodyContactCount[k];
     }
 }

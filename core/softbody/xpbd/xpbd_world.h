@@ -189,8 +189,8 @@ public:
     /// energy of its edges, area and bending and of those chains' links, what damping took
     /// from those particles, and its contacts in the substep the step's contactCount() is
     /// from. Summed over the bodies they give the world's own, less any free chain's part.
-    /// motionEnergies and elasticEnergy fill in the energies in their own passes, with the
-    /// world's, bodyLosses the damping loss and the contacts.
+    /// motionEnergies and elasticEnergy fill in the energies (and what f took) in their own
+    /// passes, with the world's; bodyLosses adds what the dashpots took and the contacts.
     struct BodyEnergies {
         double kinetic = 0, gravity = 0, movingMass = 0, elastic = 0, dampingLoss = 0;
         int contacts = 0;
@@ -239,7 +239,8 @@ private:
     long m_steps = 0;
     double m_dampingLoss = 0;
     int m_contactCount = 0;
-    std::vector<double> m_bodyDampingLoss; // per body, as m_dampingLoss
+    std::vector<double> m_bodyDampingLoss; // per body: what its edges' dashpots took
+    std::vector<double> m_particleDampingLoss; // per particle: what the damping f took from it
     std::vector<int> m_bodyContactCount;   // per body, in the substep m_contactCount is from
     std::vector<int> m_bodyContactsNow;    // scratch: per body, in the present substep
 
@@ -248,6 +249,7 @@ private:
     std::vector<Point> m_xPrev;
     std::vector<Point> m_v;
     std::vector<double> m_w;         // inverse masses; 0 = moved by the program only
+    std::vector<double> m_mass;      // the masses, 1/w (0 where w = 0), for the readouts
     std::vector<Point> m_contact;    // wall/obstacle normal of the substep, or (0, 0)
     std::vector<Point> m_restShape;  // body vertices: the given shape about its centroid
     std::vector<Point> m_rest;       // the same scaled to the target area (shape-matching goal)
