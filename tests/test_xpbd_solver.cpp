@@ -1136,6 +1136,36 @@ private slots:
         }
         QVERIFY(left[1] < 0.5 * left[0]); // 8 % of the energy left against 32 %
     }
+
+    // The largest stretch of a body, found from L²/L₀² with two square roots, is
+    // max |L − L₀| / max(L₀, 1) over its edges, measured edge by edge: on shapes of edges of
+    // many lengths (one under 1 px at rest), stretched, squeezed and shaken at random.
+    void largestStretchIsTheLargestOfTheEdges()
+    {
+        std::mt19937 random(16);
+        std::uniform_real_distribution<double> shake(-3, 3), scale(0.7, 1.4);
+        XpbdWorld world = makeWorld();
+        const std::vector<Point> shape{{100, 100}, {260, 100}, {260, 100.6}, {300, 180}, {180, 260}, {90, 200}};
+        const int b = world.addBody(shape, trapezoidArea(shape), Point()).value();
+        const int n = world.bodyRange(b).count;
+        for (int trial = 0; trial < 200; ++trial) {
+            std::vector<Point> moved = world.bodyVertices(b);
+            const double sx = scale(random), sy = scale(random);
+            for (Point& q : moved)
+                q = Point(200 + sx * (q.x - 200) + shake(random), 180 + sy * (q.y - 180) + shake(random));
+            QVERIFY(world.setBodyVertices(b, moved).ok());
+            const std::vector<Point> x = world.bodyVertices(b);
+            double expected = 0;
+            for (int k = 0; k < n; ++k) {
+                const double rest = world.edgeRest(b, k).length;
+                expected = std::max(expected, std::abs(distance(x[std::size_t(k)], x[std::size_t((k + 1) % n)]) - rest) /
+                                                  std::max(rest, 1.0));
+            }
+            QVERIFY2(std::abs(world.maxEdgeStretch(b) - expected) <= 1e-12 * (1 + expected),
+                     qPrintable(QStringLiteral("%1 against %2").arg(world.maxEdgeStretch(b), 0, 'g', 17).arg(expected, 0, 'g', 17)));
+        }
+        QVERIFY(world.edgeRest(b, 1).length < 1); // the tiny edge is there
+    }
 };
 
 QTEST_GUILESS_MAIN(TestXpbdSolver)

@@ -896,24 +896,38 @@ XpbdWorld::EdgeExtremes XpbdWorld::edgeExtremes(int body) const
     const double invH2 = 1 / (h * h);
     const Body& b = m_bodies[at(body)];
     EdgeExtremes x;
-    // The largest |L − L₀| / max(L₀, 1) as a fraction kept apart, compared by cross
-    // multiplying: one division a body, not one an edge (a readout of every step).
-    double most = 0, over = 1;
+    // |L/L₀ − 1| is largest at the edge longest or the edge shortest for its rest length:
+    // those two are found comparing L²/L₀² by cross multiplying, and only they take a square
+    // root (a readout of every step, where an edge's square root was most of its cost). An edge
+    // under 1 px at rest is measured against 1 px, |L − L₀|, as before. A position that is
+    // not a number is passed over.
+    bool any = false;
+    double longL2 = 0, longR2 = 1, shortL2 = 0, shortR2 = 1, tiny = 0;
     for (int k = 0; k < b.count; ++k) {
         const DistanceConstraint& e = m_edges[at(b.firstEdge + k)];
         const Point d = m_x[at(e.b)] - m_x[at(e.a)];
-        // √(dx² + dy²), not hypot: a readout of every step (the plots over time), where
-        // hypot's care for overflow took half the time of all the readouts; positions stay
-        // inside the frame, far from overflow.
-        const double len = std::sqrt(d.x * d.x + d.y * d.y);
-        const double off = std::abs(len - e.rest), rest = std::max(e.rest, 1.0);
-        if (off * over > most * rest) {
-            most = off;
-            over = rest;
-        }
+        const double l2 = d.x * d.x + d.y * d.y;
         x.tension = std::max(x.tension, -e.lambda * invH2);
+        if (!(l2 >= 0))
+            continue;
+        if (e.rest < 1) {
+            tiny = std::max(tiny, std::abs(std::sqrt(l2) - e.rest));
+            continue;
+        }
+        const double r2 = e.rest * e.rest;
+        if (!any || l2 * longR2 > longL2 * r2) {
+            longL2 = l2;
+            longR2 = r2;
+        }
+        if (!any || l2 * shortR2 < shortL2 * r2) {
+            shortL2 = l2;
+            shortR2 = r2;
+        }
+        any = true;
     }
-    x.stretch = most / over;
+    x.stretch = tiny;
+    if (any)
+        x.stretch = std::max({x.stretch, std::sqrt(longL2 / longR2) - 1, 1 - std::sqrt(shortL2 / shortR2)});
     return x;
 }
 
