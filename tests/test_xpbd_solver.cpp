@@ -1068,6 +1068,7 @@ private slots:
         ring[0].a = 0, ring[0].b = 1, ring[0].rest = 100;
         ring[1].a = 1, ring[1].b = 0, ring[1].rest = 100, ring[1].complianceScale = 1e12;
         Point x[2] = {Point(0, 0), Point(110, 0)}, prev[2], v[2], delta[2];
+        double dashpot[2] = {0, 0};
         const double w[2] = {1, 1};
         std::vector<double> stretch;
         for (int i = 0; i < 1200; ++i) {
@@ -1075,7 +1076,7 @@ private slots:
                 prev[k] = x[k];
                 x[k] += v[k];
             }
-            solveEdgeRing(ring, 2, x, prev, w, alpha, zeta, delta);
+            solveEdgeRing(ring, 2, x, prev, w, alpha, zeta, dashpot, delta);
             for (int k = 0; k < 2; ++k)
                 v[k] = x[k] - prev[k];
             stretch.push_back(distance(x[0], x[1]) - 100);

@@ -4,7 +4,7 @@
 namespace granota {
 
 void solveEdgeRing(DistanceConstraint* e, int n, Point* x, const Point* xPrev, const double* w, double alphaTildePerLength,
-                   double dampingRatio, Point* delta)
+                   double dampingRatio, double* dampingLambda, Point* delta)
 {
     constexpr double omega = 0.5; // each vertex lies on two edges: apply their mean
     for (int k = 0; k < n; ++k) {
@@ -20,7 +20,8 @@ void solveEdgeRing(DistanceConstraint* e, int n, Point* x, const Point* xPrev, c
         }
         // Soft limit: ω Δλ ≈ −ω C h²/(ω α) = −C h²/α, the spring's own force.
         double pull = -(len - c.rest);
-        c.dampingLambda = 0;
+        if (dampingLambda)
+            dampingLambda[k] = 0;
         if (dampingRatio > 0 && alpha > 0 && mobility > 0) {
             // A dashpot along the edge (Macklin et al. 2016, eq. 26): γ = α̃ β̃ / h with
             // β̃ = h² b and b = 2ζ √(k m) (k = 1/α, m = 1/(w_a + w_b)): γ = 2ζ √(α̃ (w_a + w_b)) / (w_a + w_b).
@@ -29,7 +30,8 @@ void solveEdgeRing(DistanceConstraint* e, int n, Point* x, const Point* xPrev, c
             const double damping = -gamma * dot(d, moved) / len;
             pull += damping;
             denom += gamma * mobility;
-            c.dampingLambda = omega * (damping / denom);
+            if (dampingLambda)
+                dampingLambda[k] = omega * (damping / denom);
         }
         const double applied = omega * (pull / denom);
         c.lambda = applied;
@@ -44,21 +46,22 @@ void solveEdgeRing(DistanceConstraint* e, int n, Point* x, const Point* xPrev, c
     }
 }
 
-double edgeDashpotLoss(const DistanceConstraint* e, int n, const Point* x, const Point* xPrev, double h)
+double edgeDashpotLoss(const DistanceConstraint* e, const double* dampingLambda, int n, const Point* x, const Point* xPrev,
+                       double h)
 {
     // The dashpot's force λ_d/h² along the edge, against how far the edge stretched in the
     // substep: −λ_d ΔC / h² (λ_d opposes the stretching, so the work it takes is > 0).
     double loss = 0;
     for (int k = 0; k < n; ++k) {
         const DistanceConstraint& c = e[k];
-        if (c.dampingLambda == 0)
+        if (dampingLambda[k] == 0)
             continue;
         const Point d = x[c.a] - x[c.b];
         const double len = std::sqrt(dot(d, d));
         if (!(len > 1e-12))
             continue;
         const Point moved = (x[c.a] - xPrev[c.a]) - (x[c.b] - xPrev[c.b]);
-        loss -= c.dampingLambda * (dot(d, moved) / len) / (h * h);
+        loss -= dampingLambda[k] * (dot(d, moved) / len) / (h * h);
     }
     return loss;
 }

@@ -39,7 +39,6 @@ struct DistanceConstraint {
     double complianceScale = 1; ///< α = (compliance of the kind) × this (the rest length for edges)
     ConstraintKind kind = ConstraintKind::Edge;
     double lambda = 0;          ///< λ of the last substep; the force is λ/h² (negative when stretched)
-    double dampingLambda = 0;   ///< the dashpot's part of λ (solveEdgeRing's damping ratio), or 0
 };
 
 /// |x_joint − p| = rest with p = (1 − t)·x_a + t·x_b, a point of a body between two of its
@@ -112,12 +111,15 @@ inline double solveDistance(DistanceConstraint& c, Point* x, const double* w, do
 /// edge = alphaTildePerLength × its complianceScale). `delta` is scratch, zero on entry and
 /// on exit, indexed like x. A damping ratio ζ > 0 adds a dashpot along each soft edge
 /// (XPBD's damping, Macklin et al. 2016, eq. 26) of b = 2ζ √(k m), k = 1/α, m = 1/(w_a + w_b),
-/// acting on how far the edge has stretched since xPrev (the substep's start).
+/// acting on how far the edge has stretched since xPrev (the substep's start); its part of
+/// each edge's λ goes to dampingLambda[k] when that is given (kept apart from the
+/// constraints, which the step reads every substep, so that they stay as small).
 void solveEdgeRing(DistanceConstraint* e, int n, Point* x, const Point* xPrev, const double* w, double alphaTildePerLength,
-                   double dampingRatio, Point* delta);
+                   double dampingRatio, double* dampingLambda, Point* delta);
 /// What the dashpots of solveEdgeRing took in a substep of length h: each one's force
-/// (DistanceConstraint::dampingLambda / h²) times how far its edge stretched from xPrev to x.
-double edgeDashpotLoss(const DistanceConstraint* e, int n, const Point* x, const Point* xPrev, double h);
+/// (dampingLambda[k] / h²) times how far its edge stretched from xPrev to x.
+double edgeDashpotLoss(const DistanceConstraint* e, const double* dampingLambda, int n, const Point* x, const Point* xPrev,
+                       double h);
 
 /// One XPBD projection of the area constraint C = A − target of the polygon x[0..n), in
 /// place: gradients are taken at the positions before the update. Returns λ.

@@ -155,6 +155,7 @@ Expected<int> XpbdWorld::addBody(const std::vector<Point>& restShape, double tar
         e.b = b.first + (i + 1) % n;
         e.kind = ConstraintKind::Edge;
         m_edges.push_back(e);
+        m_edgeDampingLambda.push_back(0);
     }
     rescaleRest(b);
     b.firstAngle = static_cast<int>(m_angles.size());
@@ -549,7 +550,8 @@ void XpbdWorld::solveSubstep(double h, double fraction)
         // a body at rest would slowly roll like a caterpillar track; any fixed reordering
         // (red–black) still leaves a slow creep for odd n, and alternating orders between
         // substeps pumps energy into a zigzag. The average is symmetric and cannot overshoot.
-        solveEdgeRing(m_edges.data() + b.firstEdge, b.count, x, xPrev, w, edgeAlpha, p.edgeDampingRatio, m_delta.data());
+        solveEdgeRing(m_edges.data() + b.firstEdge, b.count, x, xPrev, w, edgeAlpha, p.edgeDampingRatio,
+                      p.edgeDampingRatio > 0 ? m_edgeDampingLambda.data() + b.firstEdge : nullptr, m_delta.data());
         b.areaLambda = solveArea(x + b.first, w + b.first, b.count, b.target, areaAlpha);
         if (b.angleCount > 0)
             solveBendingRing(m_angles.data() + b.firstAngle, b.angleCount, x, w, bendAlpha, m_delta.data());
@@ -720,7 +722,8 @@ void XpbdWorld::solveSubstep(double h, double fraction)
             const Body& b = m_bodies[k];
             if (b.recovering)
                 continue;
-            const double loss = edgeDashpotLoss(m_edges.data() + b.firstEdge, b.count, x, xPrev, h);
+            const double loss =
+                edgeDashpotLoss(m_edges.data() + b.firstEdge, m_edgeDampingLambda.data() + b.firstEdge, b.count, x, xPrev, h);
             m_dampingLoss += loss;
             m_bodyDampingLoss[k] += loss;
         }
@@ -1058,8 +1061,11 @@ double XpbdWorld::elasticEnergy(std::vector<BodyEnergies>* bodies) const
         if (bodies && m_owner[at(owner)] >= 0)
             (*bodies)[at(m_owner[at(owner)])].elastic += u;
     };
-    for (const DistanceConstraint& c : m_edges) // the spring's force, not the dashpot's
-        add(m_params.edgeCompliance * c.complianceScale, c.lambda - c.dampingLambda, c.a);
+    const bool dashpots = m_params.edgeDampingRatio > 0; // then λ holds their part too
+    for (std::size_t k = 0; k < m_edges.size(); ++k) { // the spring's force, not the dashpot's
+        const DistanceConstraint& c = m_edges[k];
+        add(m_params.edgeCompliance * c.complianceScale, dashpots ? c.lambda - m_edgeDampingLambda[k] : c.lambda, c.a);
+    }
     for (const DistanceConstraint& c : m_links)
         add(m_params.linkCompliance, c.lambda, c.b);
     for (const AnchoredDistanceConstraint& c : m_anchorLinks)

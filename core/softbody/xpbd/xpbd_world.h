@@ -259,6 +259,7 @@ private:
     std::vector<Body> m_bodies;
     std::vector<Chain> m_chains;
     std::vector<DistanceConstraint> m_edges; // bodies' edges, body by body
+    std::vector<double> m_edgeDampingLambda; // per edge: its dashpot's part of λ (ζ > 0)
     std::vector<DistanceConstraint> m_links; // chains' links
     std::vector<AngleConstraint> m_angles;   // bending of bodies and limits of chains
     std::vector<AnchoredDistanceConstraint> m_anchorLinks;
