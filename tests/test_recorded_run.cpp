@@ -182,6 +182,70 @@ private slots:
         }
     }
 
+    // The fewest steps between snapshots that keep them within a share of the stepping time.
+    void snapshotSpacing_data()
+    {
+        QTest::addColumn<double>("snapshotNs");
+        QTest::addColumn<double>("stepNs");
+        QTest::addColumn<double>("share");
+        QTest::addColumn<int>("spacing");
+        QTest::newRow("1000 bodies: 6.5 ms a copy, 2 ms a step, 1 %") << 6.5e6 << 2e6 << 0.01 << 325;
+        QTest::newRow("a copy as long as a step, 2 %") << 1e3 << 1e3 << 0.02 << 50;
+        QTest::newRow("exactly 1 step") << 1e3 << 1e5 << 0.01 << 1;
+        QTest::newRow("a cheap copy: every step") << 1.0 << 1e6 << 0.02 << 1;
+        QTest::newRow("rounded up") << 1001.0 << 1e3 << 0.1 << 11;
+        QTest::newRow("step not timed yet") << 1e6 << 0.0 << 0.01 << 1;
+        QTest::newRow("copy not timed yet") << 0.0 << 1e3 << 0.01 << 1;
+        QTest::newRow("share off") << 1e6 << 1e3 << 0.0 << 1;
+        QTest::newRow("not a number") << std::nan("") << 1e3 << 0.01 << 1;
+        QTest::newRow("a step too fast to see") << 1e6 << 1e-300 << 0.01 << RecordedRun::kMaxSnapshotSpacing;
+    }
+    void snapshotSpacing()
+    {
+        QFETCH(double, snapshotNs);
+        QFETCH(double, stepNs);
+        QFETCH(double, share);
+        QFETCH(int, spacing);
+        QCOMPARE(RecordedRun::snapshotSpacing(snapshotNs, stepNs, share), spacing);
+    }
+
+    // limitSnapshotCost: on a clock where every timed piece of work (a step, a copy) takes
+    // the same time, a 2 % share puts 50 steps between snapshots even when 1 is asked; the
+    // snapshots are that far apart, seeks still give the run forward's rows, and a long run
+    // still keeps at most maxSnapshots. Turned off, the interval asked is back.
+    void snapshotCostIsLimited()
+    {
+        auto run = RecordedRun::start(scene("frog"), SolverKind::Stable, 1);
+        double now = 0;
+        int readings = 0;
+        run->limitSnapshotCost(0.02, [&] {
+            ++readings;
+            return now += 1e6; // 1 ms from one reading to the next
+        });
+        const auto forward = drive(*run, 300);
+        QCOMPARE(run->snapshotEvery(), 50);
+        // Steps 1 and 51, …: the first timed step (0) comes before the first copy timed (1).
+        QCOMPARE(run->snapshotCount(), std::size_t(1 + 1 + (300 - 1) / 50));
+        // One step in kTimedStepEvery and every copy, two readings each: not every step.
+        QCOMPARE(readings, 2 * (300 / RecordedRun::kTimedStepEvery + 1) + 2 * int(run->snapshotCount() - 1));
+        for (long t : {0L, 1L, 2L, 50L, 51L, 52L, 299L, 137L, 300L, 100L}) {
+            QVERIFY(run->seek(t).ok());
+            QCOMPARE(simulationTraceRow(run->simulation()), forward[std::size_t(t)]);
+        }
+        run->setMaxSnapshots(3);
+        QVERIFY(run->snapshotCount() <= 3);
+        QVERIFY(run->snapshotEvery() >= 100);
+        QVERIFY(run->seek(211).ok());
+        QCOMPARE(simulationTraceRow(run->simulation()), forward[211]);
+
+        auto plain = RecordedRun::start(scene("frog"), SolverKind::Stable, 7);
+        plain->limitSnapshotCost(0.02, [&] { return now += 1e6; });
+        plain->limitSnapshotCost(0); // off again: the interval asked
+        drive(*plain, 50);
+        QCOMPARE(plain->snapshotEvery(), 7);
+        QCOMPARE(plain->snapshotCount(), std::size_t(1 + 50 / 7));
+    }
+
     // A mouse sends more events than there are steps: the moves of one step are recorded
     // as the last of them, and the replay is still the run.
     void movesWithinAStepRecordAsOne()

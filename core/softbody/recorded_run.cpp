@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 
 namespace granota {
@@ -274,22 +275,44 @@ void RecordedRun::setMaxSnapshots(std::size_t n)
 
 void RecordedRun::takeSnapshot()
 {
+    const double t0 = m_costShare > 0 ? m_nowNs() : 0;
     m_snapshots.push_back({m_sim->clone(), m_nextEvent});
+    if (m_costShare > 0) {
+        m_snapshotNs = m_nowNs() - t0;
+        m_costEvery = snapshotSpacing(m_snapshotNs, m_stepNs, m_costShare);
+    }
     thinSnapshots();
 }
 
 void RecordedRun::thinSnapshots()
 {
-    // Twice the steps between snapshots: keep those at multiples of the new interval (the
-    // first, at step 0, always).
+    // Twice the steps between snapshots: every other one goes (the first, at step 0, stays).
+    // They were taken one interval apart, so those kept are twice that apart.
     while (m_snapshots.size() > m_maxSnapshots) {
-        m_every *= 2;
+        m_every = std::min(kMaxSnapshotSpacing, 2 * snapshotEvery());
         std::vector<Snapshot> kept;
-        for (std::size_t i = 0; i < m_snapshots.size(); ++i)
-            if (i == 0 || m_snapshots[i].sim->stepCount() % m_every == 0)
-                kept.push_back(std::move(m_snapshots[i]));
+        for (std::size_t i = 0; i < m_snapshots.size(); i += 2)
+            kept.push_back(std::move(m_snapshots[i]));
         m_snapshots = std::move(kept);
     }
+}
+
+int RecordedRun::snapshotSpacing(double snapshotNs, double stepNs, double share)
+{
+    if (!(snapshotNs > 0) || !(stepNs > 0) || !(share > 0))
+        return 1;
+    const double steps = std::ceil(snapshotNs / (share * stepNs));
+    return steps >= kMaxSnapshotSpacing ? kMaxSnapshotSpacing : std::max(1, static_cast<int>(steps));
+}
+
+void RecordedRun::limitSnapshotCost(double share, std::function<double()> nowNs)
+{
+    m_costShare = share > 0 ? share : 0;
+    m_costEvery = 0;
+    m_stepNs = m_snapshotNs = 0;
+    m_nowNs = nowNs ? std::move(nowNs) : [] {
+        return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    };
 }
 
 void RecordedRun::apply(const InputEvent& e)
@@ -402,11 +425,20 @@ void RecordedRun::step()
     const auto& events = m_recording.events;
     while (m_nextEvent < events.size() && events[m_nextEvent].step <= stepCount())
         apply(events[m_nextEvent++]);
+    // One step in kTimedStepEvery timed, when the snapshots' cost is limited: two clock
+    // readings a step would cost more than the seed's frog step itself.
+    const bool timed = m_costShare > 0 && stepCount() % kTimedStepEvery == 0;
+    const double t0 = timed ? m_nowNs() : 0;
     m_sim->step();
+    if (timed) {
+        const double ns = m_nowNs() - t0;
+        m_stepNs = m_stepNs > 0 ? 0.75 * m_stepNs + 0.25 * ns : ns;
+        m_costEvery = snapshotSpacing(m_snapshotNs, m_stepNs, m_costShare);
+    }
     applyPendingKnobs(); // the knobs turned at the step reached are in force there
     const long now = stepCount();
     m_recording.steps = std::max(m_recording.steps, now);
-    if (now % m_every == 0 && (m_snapshots.empty() || m_snapshots.back().sim->stepCount() < now))
+    if (m_snapshots.empty() || now - m_snapshots.back().sim->stepCount() >= snapshotEvery())
         takeSnapshot();
 }
 

@@ -12,6 +12,8 @@
 #include "core/io/json.h"
 #include "core/softbody/simulation.h"
 
+#include <algorithm>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -124,10 +126,27 @@ public:
     /// first went through it, with the knobs turned at that step in force (as they were once
     /// turned). Errors: a step outside that range.
     Expected<void> seek(long step);
-    /// Snapshots held, and the steps between them (doubled when there would be more than
-    /// kMaxSnapshots, so memory stays bounded on long runs).
+    /// Snapshots held, and the steps between them: as asked, doubled when there would be more
+    /// than maxSnapshots() (so memory stays bounded on long runs), and no fewer than
+    /// limitSnapshotCost allows.
     std::size_t snapshotCount() const { return m_snapshots.size(); }
-    int snapshotEvery() const { return m_every; }
+    int snapshotEvery() const { return std::max(m_every, m_costEvery); }
+    /// Keeps the snapshots within `share` of the time spent stepping (docs/rewind.md#snapshots):
+    /// each snapshot and one step in kTimedStepEvery are timed with `nowNs` (the steady clock
+    /// when empty; a test gives its own), and the steps between snapshots become at least
+    /// snapshotSpacing(snapshot ns, step ns, share). A copy of the simulation costs the
+    /// same whether it comes every step or every thousand; only the spacing bounds its
+    /// share. A share ≤ 0 turns the floor off.
+    void limitSnapshotCost(double share, std::function<double()> nowNs = {});
+    /// The share of stepping time the Frog tab lets the snapshots take (issue 16: recording,
+    /// the series and the plots together at most 5 % of a step of 1000 bodies).
+    static constexpr double kSnapshotCostShare = 0.01;
+    static constexpr int kTimedStepEvery = 8;
+    /// The fewest steps between two snapshots that keep `snapshotNs` a copy within `share` of
+    /// steps of `stepNs` each: ⌈snapshotNs / (share · stepNs)⌉, at least 1, and 1 while either
+    /// time is unknown (≤ 0 or not a number); at most kMaxSnapshotSpacing.
+    static int snapshotSpacing(double snapshotNs, double stepNs, double share);
+    static constexpr int kMaxSnapshotSpacing = 1 << 20;
     static constexpr std::size_t kMaxSnapshots = 256;
     /// Fewer snapshots, for a big scene whose copies are large (at least 2, at most
     /// kMaxSnapshots): thins those held at once if there are more.
@@ -150,7 +169,12 @@ private:
     Recording m_recording;
     std::size_t m_nextEvent = 0; // the first recorded event not yet applied
     std::vector<Snapshot> m_snapshots; // in step order; the first at step 0
-    int m_every = 100;
+    int m_every = 100;       // as asked, doubled by thinning
+    int m_costEvery = 0;     // the floor limitSnapshotCost measures (0: none)
+    double m_costShare = 0;  // limitSnapshotCost's share, 0 when off
+    std::function<double()> m_nowNs;
+    double m_stepNs = 0;     // a step's time, a running mean of the timed ones
+    double m_snapshotNs = 0; // the last snapshot's time
     std::size_t m_maxSnapshots = kMaxSnapshots;
 };
 

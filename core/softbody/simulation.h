@@ -43,6 +43,9 @@ struct Readouts {
     int contacts = 0;
 };
 
+/// The readouts' total energy: kinetic + gravitational + elastic (where the solver knows it).
+inline double totalEnergy(const Readouts& r) { return r.kineticEnergy + r.potentialEnergy + r.elasticEnergy.value_or(0); }
+
 /// §4.15's limit of one link of a chain: its angle (seed_angle.h) kept in [min, max], rad,
 /// measured from straight down the screen or, `fromParent`, from the link before it.
 struct LinkLimit {

@@ -22,7 +22,7 @@ SeriesValues valuesOf(const Readouts& r, double firstTotal, const std::optional<
     v.kinetic = r.kineticEnergy;
     v.gravity = r.potentialEnergy;
     v.elastic = r.elasticEnergy;
-    v.total = v.kinetic + v.gravity + r.elasticEnergy.value_or(0);
+    v.total = totalEnergy(r);
     v.areaErrorPercent = r.areaErrorPercent;
     v.maxStretch = r.maxStretch;
     v.contacts = r.contacts;
@@ -75,7 +75,7 @@ void SeriesRecorder::startKeepingBodies(long step)
     m_firstBodyTotal.clear();
     m_firstBodyDamping.clear();
     for (const Readouts& b : m_bodyReadouts) {
-        m_firstBodyTotal.push_back(b.kineticEnergy + b.potentialEnergy + b.elasticEnergy.value_or(0));
+        m_firstBodyTotal.push_back(totalEnergy(b));
         m_firstBodyDamping.push_back(b.dampingLoss);
     }
     m_bodySamples = std::max<std::size_t>(1, m_bodyValues / std::size_t(std::max(1, m_bodies)));
@@ -96,7 +96,7 @@ const SeriesSample& SeriesRecorder::record(const Simulation& sim)
     const Readouts r = perBody ? sim.readoutsAndBodies(m_bodyReadouts) : sim.readouts();
     if (!m_started) {
         m_started = true;
-        m_firstTotal = r.kineticEnergy + r.potentialEnergy + r.elasticEnergy.value_or(0);
+        m_firstTotal = totalEnergy(r);
         m_firstDamping = r.dampingLoss;
         m_phaseLinks = 0;
         if (sim.scene().model == SceneModel::Pendulum && sim.chainCount() > 0) {

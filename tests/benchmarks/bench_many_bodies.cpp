@@ -83,8 +83,8 @@ void BM_ManyBodiesPile(benchmark::State& state)
 BENCHMARK(BM_ManyBodiesSpread)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Complexity();
 BENCHMARK(BM_ManyBodiesPile)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Complexity();
 
-// Issue 16: what recording a run (RecordedRun: its snapshots every 100 steps) and the plots'
-// series (SeriesRecorder, one sample a step) add to a step of 1000 bodies. The same 200
+// Issue 16: what recording a run (RecordedRun: its snapshots, spaced as the Frog tab spaces
+// them) and the plots' series (SeriesRecorder, one sample a step) add to a step of 1000 bodies. The same 200
 // steps from the same state with and without them: the ratio of the two is the overhead
 // (target: at most 5 %, tests/benchmarks/targets.sh).
 
@@ -96,14 +96,19 @@ constexpr int kOverheadSteps = 200;
 // step): a plain simulation and a recorded run with its series, built alike and settled,
 // step in turns of 10 steps, each turn timed, for 200 steps each — so that the machine's
 // drift (other work, clock changes) falls on both alike. Counters: plain_ms and
-// recorded_ms (each iteration's 200 steps), overhead_percent.
+// recorded_ms (each iteration's 200 steps), overhead_percent, snapshot_every (the spacing the
+// cost floor reached).
 void BM_RecordingOverhead(benchmark::State& state)
 {
     const SceneSpec spec = spreadScene(static_cast<int>(state.range(0)));
     double plainNs = 0, recordedNs = 0;
+    int snapshotEvery = 0;
     for (auto _ : state) {
         auto sim = std::move(Simulation::create(spec, SolverKind::Stable)).value();
-        auto run = std::move(RecordedRun::start(spec, SolverKind::Stable)).value();
+        // As the Frog tab's canvas records it: a snapshot every step asked (its seek budget,
+        // FrogCanvas::kScrubWork, holds one step of 1000 bodies), spaced out by the cost floor.
+        auto run = std::move(RecordedRun::start(spec, SolverKind::Stable, 1)).value();
+        run.limitSnapshotCost(RecordedRun::kSnapshotCostShare);
         SeriesRecorder series(36000);
         for (int i = 0; i < kSpreadSettleSteps; ++i) {
             sim->step();
@@ -124,6 +129,7 @@ void BM_RecordingOverhead(benchmark::State& state)
             recorded += std::chrono::duration<double, std::nano>(t2 - t1).count();
         }
         state.SetIterationTime(recorded * 1e-9);
+        snapshotEvery = run.snapshotEvery();
         plainNs += plain;
         recordedNs += recorded;
     }
@@ -131,6 +137,46 @@ void BM_RecordingOverhead(benchmark::State& state)
     state.counters["plain_ms"] = plainNs / n * 1e-6;
     state.counters["recorded_ms"] = recordedNs / n * 1e-6;
     state.counters["overhead_percent"] = 100 * (recordedNs / plainNs - 1);
+    state.counters["snapshot_every"] = snapshotEvery;
+}
+
+// The parts of that overhead, each alone on the same settled 1000 bodies: a readout (what
+// the series samples every step), a sample of the series, and a snapshot (a clone into new
+// memory, as a recording keeps it: on this machine a new page costs ~10 µs, so a snapshot of
+// 1000 bodies costs a few steps; RecordedRun::limitSnapshotCost spaces them out).
+std::unique_ptr<Simulation> settledSpread(int bodies)
+{
+    auto sim = std::move(Simulation::create(spreadScene(bodies), SolverKind::Stable)).value();
+    for (int i = 0; i < kSpreadSettleSteps; ++i)
+        sim->step();
+    return sim;
+}
+
+void BM_Readouts(benchmark::State& state)
+{
+    const auto sim = settledSpread(static_cast<int>(state.range(0)));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(sim->readouts());
+}
+
+void BM_SeriesSample(benchmark::State& state)
+{
+    const auto sim = settledSpread(static_cast<int>(state.range(0)));
+    SeriesRecorder series(36000);
+    for (auto _ : state) {
+        state.PauseTiming();
+        sim->step();
+        state.ResumeTiming();
+        benchmark::DoNotOptimize(series.record(*sim));
+    }
+}
+
+void BM_Snapshot(benchmark::State& state)
+{
+    const auto sim = settledSpread(static_cast<int>(state.range(0)));
+    std::vector<std::unique_ptr<Simulation>> kept; // as a recording keeps them: new memory each
+    for (auto _ : state)
+        kept.push_back(sim->clone());
 }
 
 // A scrub 10 000 steps back: from step 10 000 of the frog on the stable solver (grabbed
@@ -158,4 +204,7 @@ void BM_ScrubBack10000(benchmark::State& state)
 } // namespace
 
 BENCHMARK(BM_RecordingOverhead)->Arg(1000)->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(5);
+BENCHMARK(BM_Readouts)->Arg(1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SeriesSample)->Arg(1000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Snapshot)->Arg(1000)->Unit(benchmark::kMicrosecond)->Iterations(100);
 BENCHMARK(BM_ScrubBack10000)->Unit(benchmark::kMillisecond);

@@ -85,6 +85,7 @@ void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
         if (run) {
             m_run = std::make_unique<RecordedRun>(std::move(run).value());
             m_run->setMaxSnapshots(kSnapshotBytes / (points * kSnapshotBytesPerPoint));
+            m_run->limitSnapshotCost(RecordedRun::kSnapshotCostShare);
         }
     }
     rebuildGhost();
@@ -593,8 +594,10 @@ void FrogCanvas::rebuildGhost()
         return;
     }
     auto ghost = RecordedRun::adopt(std::move(built).value(), int(std::clamp<long>(kScrubWork / std::max(1L, m_stepWork), 1, 100)));
-    if (!ghost || !ghost->setRecording(m_run->recording().events, m_run->recordedSteps()).ok()
-        || !ghost->seek(sim()->stepCount()).ok())
+    if (!ghost)
+        return;
+    ghost->limitSnapshotCost(RecordedRun::kSnapshotCostShare);
+    if (!ghost->setRecording(m_run->recording().events, m_run->recordedSteps()).ok() || !ghost->seek(sim()->stepCount()).ok())
         return;
     m_ghost = std::make_unique<RecordedRun>(std::move(ghost).value());
 }

@@ -141,7 +141,9 @@ public:
     /// step 0. False with a message for events out of order or outside [0, steps].
     bool setRecording(std::vector<InputEvent> events, long steps, QString* error);
     /// The work (Simulation::workPerStep) a seek may re-simulate: snapshots are taken every
-    /// kScrubWork / work steps (1 to 100), so going back answers within a few frames' time.
+    /// kScrubWork / work steps (1 to 100), so going back answers within a few frames' time —
+    /// but never so often that they take more than RecordedRun::kSnapshotCostShare of the
+    /// stepping time (RecordedRun::limitSnapshotCost: a big scene's copy costs several steps).
     static constexpr long kScrubWork = 6 * kFrameWork;
     /// What the snapshots may take, counted as kSnapshotBytesPerPoint per point: a big scene
     /// keeps fewer, farther apart (RecordedRun::setMaxSnapshots).

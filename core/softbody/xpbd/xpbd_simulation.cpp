@@ -234,19 +234,24 @@ private:
         const XpbdWorld::MotionEnergies motion = m_world.motionEnergies(energies);
         Readouts r;
         r.elasticEnergy = m_world.elasticEnergy(energies);
+        // The largest stretch of the scene from the largest and smallest L²/L₀² of all its
+        // bodies: two square roots in all, not two a body.
+        XpbdWorld::BodyShape all;
         for (int i = 0; i < bodyCount(); ++i) {
-            const double area = m_world.areaErrorPercent(i);
-            const XpbdWorld::EdgeExtremes edges = m_world.edgeExtremes(i);
-            const double force = std::max(std::abs(m_world.areaPressure(i)), edges.tension);
+            const XpbdWorld::BodyShape shape = m_world.bodyShape(i);
+            const double area = XpbdWorld::areaErrorPercent(shape.area, m_world.targetArea(i));
+            const double force = std::max(std::abs(m_world.areaPressure(i)), shape.tension);
             r.areaErrorPercent += area / bodyCount();
-            r.maxStretch = std::max(r.maxStretch, edges.stretch);
+            all.largestRatio2 = std::max(all.largestRatio2, shape.largestRatio2);
+            all.smallestRatio2 = std::min(all.smallestRatio2, shape.smallestRatio2);
+            all.tiny = std::max(all.tiny, shape.tiny);
             r.constraintForce = std::max(r.constraintForce, force);
             if (!bodies)
                 continue;
             const XpbdWorld::BodyEnergies& e = m_energies[std::size_t(i)];
             Readouts& b = (*bodies)[std::size_t(i)];
             b.areaErrorPercent = area;
-            b.maxStretch = edges.stretch;
+            b.maxStretch = shape.stretch();
             b.constraintForce = force;
             b.kineticEnergy = e.kinetic;
             b.potentialEnergy = e.gravity + e.movingMass * height; // as the scene's, below
@@ -254,6 +259,7 @@ private:
             b.dampingLoss = e.dampingLoss;
             b.contacts = e.contacts;
         }
+        r.maxStretch = all.stretch();
         for (int c = 0; c < chainCount(); ++c)
             r.constraintForce = std::max(r.constraintForce, m_world.angleLimitTorque(c));
         r.kineticEnergy = motion.kinetic;

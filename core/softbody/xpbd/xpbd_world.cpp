@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace granota {
@@ -885,53 +886,65 @@ double XpbdWorld::targetArea(int body) const
     return m_bodies[at(body)].target;
 }
 
-double XpbdWorld::areaErrorPercent(int body) const
+double XpbdWorld::areaErrorPercent(int body) const { return areaErrorPercent(area(body), targetArea(body)); }
+
+double XpbdWorld::areaErrorPercent(double area, double target) { return 100 * (area - target) / std::max(target, 1.0); }
+
+double XpbdWorld::maxEdgeStretch(int body) const { return bodyShape(body).stretch(); }
+
+double XpbdWorld::BodyShape::stretch() const
 {
-    const double target = targetArea(body);
-    return 100 * (area(body) - target) / std::max(target, 1.0);
+    if (!(smallestRatio2 <= largestRatio2))
+        return tiny;
+    return std::max({tiny, std::sqrt(largestRatio2) - 1, 1 - std::sqrt(smallestRatio2)});
 }
 
-double XpbdWorld::maxEdgeStretch(int body) const { return edgeExtremes(body).stretch; }
-
-XpbdWorld::EdgeExtremes XpbdWorld::edgeExtremes(int body) const
+XpbdWorld::BodyShape XpbdWorld::bodyShape(int body) const
 {
     const double h = m_params.dt / m_params.substeps;
     const double invH2 = 1 / (h * h);
     const Body& b = m_bodies[at(body)];
-    EdgeExtremes x;
-    // |L/L₀ − 1| is largest at the edge longest or the edge shortest for its rest length:
-    // those two are found comparing L²/L₀² by cross multiplying, and only they take a square
-    // root (a readout of every step, where an edge's square root was most of its cost). An edge
-    // under 1 px at rest is measured against 1 px, |L − L₀|, as before. A position that is
-    // not a number is passed over.
-    bool any = false;
-    double longL2 = 0, longR2 = 1, shortL2 = 0, shortR2 = 1, tiny = 0;
+    BodyShape s;
+    // |L/L₀ − 1| is largest at the edge longest or the edge shortest for its rest length, so
+    // the pass keeps the largest and the smallest L²/L₀², and stretch() takes a square root
+    // of those two only (a readout of every step: the scene's takes two for all its bodies).
+    // max and min compile to no branch: keeping the longest edge's pair by comparing cross
+    // products branched on each new longest edge, mispredicted a few times a body. An edge
+    // under 1 px at rest is measured against 1 px, |L − L₀|. A position that is not a number
+    // is passed over. The area is summed in the same pass, as signedArea sums it (relative
+    // to the first vertex, in the same order: the same bits).
+    // Kept in locals, not in `s`: the compiler cannot tell that the result does not alias
+    // the positions, and would store it on every edge.
+    const Point* x = &m_x[at(b.first)];
+    const Point o = x[0];
+    double twiceArea = 0, tension = s.tension, largest = s.largestRatio2, smallest = s.smallestRatio2, tiny = s.tiny;
+    Point prev = b.count > 1 ? x[1] - o : Point();
     for (int k = 0; k < b.count; ++k) {
+        if (k >= 2 && b.count >= 3) {
+            const Point cur = x[k] - o;
+            twiceArea += cross(prev, cur);
+            prev = cur;
+        }
         const DistanceConstraint& e = m_edges[at(b.firstEdge + k)];
         const Point d = m_x[at(e.b)] - m_x[at(e.a)];
         const double l2 = d.x * d.x + d.y * d.y;
-        x.tension = std::max(x.tension, -e.lambda * invH2);
+        tension = std::max(tension, -e.lambda * invH2);
         if (!(l2 >= 0))
             continue;
         if (e.rest < 1) {
             tiny = std::max(tiny, std::abs(std::sqrt(l2) - e.rest));
             continue;
         }
-        const double r2 = e.rest * e.rest;
-        if (!any || l2 * longR2 > longL2 * r2) {
-            longL2 = l2;
-            longR2 = r2;
-        }
-        if (!any || l2 * shortR2 < shortL2 * r2) {
-            shortL2 = l2;
-            shortR2 = r2;
-        }
-        any = true;
+        const double q = l2 / (e.rest * e.rest);
+        largest = std::max(largest, q);
+        smallest = std::min(smallest, q);
     }
-    x.stretch = tiny;
-    if (any)
-        x.stretch = std::max({x.stretch, std::sqrt(longL2 / longR2) - 1, 1 - std::sqrt(shortL2 / shortR2)});
-    return x;
+    s.area = 0.5 * twiceArea;
+    s.tension = tension;
+    s.largestRatio2 = largest;
+    s.smallestRatio2 = smallest;
+    s.tiny = tiny;
+    return s;
 }
 
 double XpbdWorld::areaPressure(int body) const
@@ -940,7 +953,7 @@ double XpbdWorld::areaPressure(int body) const
     return m_bodies[at(body)].areaLambda / (h * h);
 }
 
-double XpbdWorld::maxEdgeTension(int body) const { return edgeExtremes(body).tension; }
+double XpbdWorld::maxEdgeTension(int body) const { return bodyShape(body).tension; }
 
 double XpbdWorld::angleLimitTorque(int chain) const
 {
@@ -996,17 +1009,24 @@ double XpbdWorld::kineticEnergy() const
 
 XpbdWorld::MotionEnergies XpbdWorld::motionEnergies(std::vector<BodyEnergies>* bodies) const
 {
-    MotionEnergies e;
+    // The sums in locals and the arrays through plain pointers: stores to a body's energies
+    // could otherwise alias them, and be made (and the arrays' ends reloaded) every particle.
     const Point g = m_params.gravity;
-    for (std::size_t i = 0; i < m_x.size(); ++i) {
-        if (!(m_w[i] > 0))
+    const std::size_t n = m_x.size();
+    const Point* x = m_x.data();
+    const Point* v = m_v.data();
+    const double* w = m_w.data();
+    const double* mass = m_mass.data();
+    double kineticSum = 0, gravitySum = 0, movingMass = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!(w[i] > 0))
             continue;
-        const double m = m_mass[i];
-        const double kinetic = 0.5 * dot(m_v[i], m_v[i]) * m;
-        const double gravity = dot(g, m_x[i]) * m;
-        e.kinetic += kinetic;
-        e.gravity -= gravity;
-        e.movingMass += m;
+        const double m = mass[i];
+        const double kinetic = 0.5 * dot(v[i], v[i]) * m;
+        const double gravity = dot(g, x[i]) * m;
+        kineticSum += kinetic;
+        gravitySum -= gravity;
+        movingMass += m;
         if (bodies && m_owner[i] >= 0) {
             BodyEnergies& b = (*bodies)[at(m_owner[i])];
             b.kinetic += kinetic;
@@ -1015,6 +1035,10 @@ XpbdWorld::MotionEnergies XpbdWorld::motionEnergies(std::vector<BodyEnergies>* b
             b.dampingLoss += m_particleDampingLoss[i];
         }
     }
+    MotionEnergies e;
+    e.kinetic = kineticSum;
+    e.gravity = gravitySum;
+    e.movingMass = movingMass;
     return e;
 }
 

@@ -36,6 +36,7 @@
 #include "core/softbody/xpbd/xpbd_constraints.h"
 #include "core/softbody/xpbd/xpbd_params.h"
 
+#include <limits>
 #include <vector>
 
 namespace granota {
@@ -141,6 +142,7 @@ public:
     double area(int body) const;              ///< signed area, px² (positive unless inside out)
     double targetArea(int body) const;        ///< px²
     double areaErrorPercent(int body) const;  ///< 100 (A − A₀)/A₀ (A₀ taken ≥ 1 px²)
+    static double areaErrorPercent(double area, double target); ///< the same of an area A and a target A₀
     double maxEdgeStretch(int body) const;    ///< max |L − L₀|/L₀ over the edges (L₀ taken ≥ 1 px)
     double areaPressure(int body) const;      ///< λ/h² of the area constraint, mass/step² (> 0 pushes out)
     double maxEdgeTension(int body) const;    ///< max −λ/h² over the edges, mass·px/step² (> 0 = stretched)
@@ -163,13 +165,20 @@ public:
     double potentialEnergy() const { return gravityEnergy() + elasticEnergy(); }
     /// Σ m over the particles that move (inverse mass > 0), mass units.
     double movingMass() const;
-    /// kineticEnergy(), gravityEnergy() and movingMass() in one pass, one division a
-    /// particle: what a readout of every step costs (the plots over time) on 10⁴ particles.
-    /// maxEdgeStretch(body) and maxEdgeTension(body) in one pass over its edges.
-    struct EdgeExtremes {
-        double stretch = 0, tension = 0;
+    /// area(body), maxEdgeStretch(body) and maxEdgeTension(body) in one pass over its
+    /// vertices and edges, without a square root: the readouts of every step.
+    struct BodyShape {
+        double area = 0;    ///< signed, px², as area(body)
+        double tension = 0; ///< as maxEdgeTension(body)
+        /// Largest and smallest L²/L₀² over the edges of 1 px or more at rest (smallest >
+        /// largest when there is none), and max |L − L₀| over those under 1 px.
+        double largestRatio2 = 0, smallestRatio2 = std::numeric_limits<double>::infinity(), tiny = 0;
+        /// maxEdgeStretch(body): max |L − L₀| / max(L₀, 1), from the two ratios' square roots.
+        double stretch() const;
     };
-    EdgeExtremes edgeExtremes(int body) const;
+    BodyShape bodyShape(int body) const;
+    /// kineticEnergy(), gravityEnergy() and movingMass() in one pass (the masses are kept, so
+    /// no division): what a readout of every step costs (the plots over time) on 10⁴ particles.
     struct MotionEnergies {
         double kinetic = 0, gravity = 0, movingMass = 0;
     };
