@@ -131,7 +131,7 @@ public:
     /// limitSnapshotCost allows.
     std::size_t snapshotCount() const { return m_snapshots.size(); }
     int snapshotEvery() const { return std::max(m_every, m_costEvery); }
-    /// Keeps the snapshots within `share` of the time spent stepping (docs/rewind.md#snapshots):
+    /// Keeps the snapshots within `share` of the time spent stepping (docs/rewind.md#what-a-snapshot-costs):
     /// each snapshot and one step in kTimedStepEvery are timed with `nowNs` (the steady clock
     /// when empty; a test gives its own), and the steps between snapshots become at least
     /// snapshotSpacing(snapshot ns, step ns, share). A copy of the simulation costs the

@@ -920,7 +920,7 @@ XpbdWorld::BodyShape XpbdWorld::bodyShape(int body) const
     double twiceArea = 0, tension = s.tension, largest = s.largestRatio2, smallest = s.smallestRatio2, tiny = s.tiny;
     Point prev = b.count > 1 ? x[1] - o : Point();
     for (int k = 0; k < b.count; ++k) {
-        if (k >= 2 && b.count >= 3) {
+        if (k >= 2) { // signedArea: the cross products of vertices 1–2, 2–3, …, relative to x₀
             const Point cur = x[k] - o;
             twiceArea += cross(prev, cur);
             prev = cur;
