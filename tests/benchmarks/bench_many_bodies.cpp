@@ -84,9 +84,9 @@ BENCHMARK(BM_ManyBodiesSpread)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kM
 BENCHMARK(BM_ManyBodiesPile)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Complexity();
 
 // Issue 16: what recording a run (RecordedRun: its snapshots, spaced as the Frog tab spaces
-// them) and the plots' series (SeriesRecorder, one sample a step) add to a step of 1000 bodies. The same 200
-// steps from the same state with and without them: the ratio of the two is the overhead
-// (target: at most 5 %, tests/benchmarks/targets.sh).
+// them) and the plots' series (SeriesRecorder, one sample a step) add to a step of 1000
+// bodies. The same steps from the same state with and without them: the ratio of the two is
+// the overhead (target: at most 5 %, tests/benchmarks/targets.sh).
 
 namespace {
 
@@ -96,10 +96,10 @@ constexpr int kOverheadSteps = 900;
 
 // What recording a run and its series cost on 1000 bodies (issue 16: at most 5 % of the
 // step): a plain simulation and a recorded run with its series, built alike and settled,
-// step in turns of 10 steps, each turn timed, for kOverheadSteps steps each — so that the machine's
-// drift (other work, clock changes) falls on both alike. Counters: plain_ms and
-// recorded_ms (each iteration's kOverheadSteps steps), overhead_percent, snapshot_every (the spacing the
-// cost floor reached).
+// step in turns of 10 steps, each turn timed, for kOverheadSteps steps each — so that the
+// machine's drift (other work, clock changes) falls on both alike. Counters: plain_ms and
+// recorded_ms (each iteration's kOverheadSteps steps), overhead_percent, snapshot_every (the
+// spacing the cost floor reached).
 void BM_RecordingOverhead(benchmark::State& state)
 {
     const SceneSpec spec = spreadScene(static_cast<int>(state.range(0)));

@@ -75,17 +75,24 @@ FrogCanvas::FrogCanvas(QWidget* parent) : QWidget(parent)
 
 FrogCanvas::~FrogCanvas() = default;
 
+Expected<RecordedRun> FrogCanvas::recordRun(std::unique_ptr<Simulation> simulation, long work)
+{
+    auto run = RecordedRun::adopt(std::move(simulation), int(std::clamp<long>(kScrubWork / std::max(1L, work), 1, 100)));
+    if (run)
+        run->limitSnapshotCost(RecordedRun::kSnapshotCostShare);
+    return run;
+}
+
 void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
 {
     m_run.reset();
     if (simulation) {
         const long work = std::max<long>(1, simulation->workPerStep());
         const std::size_t points = std::max<std::size_t>(1, simulation->pointCount());
-        auto run = RecordedRun::adopt(std::move(simulation), int(std::clamp<long>(kScrubWork / work, 1, 100)));
+        auto run = recordRun(std::move(simulation), work);
         if (run) {
             m_run = std::make_unique<RecordedRun>(std::move(run).value());
             m_run->setMaxSnapshots(kSnapshotBytes / (points * kSnapshotBytesPerPoint));
-            m_run->limitSnapshotCost(RecordedRun::kSnapshotCostShare);
         }
     }
     rebuildGhost();
@@ -593,11 +600,9 @@ void FrogCanvas::rebuildGhost()
         emit statusMessage(tr("The ghost starts with the next Reset: the run so far is too long to replay for it."));
         return;
     }
-    auto ghost = RecordedRun::adopt(std::move(built).value(), int(std::clamp<long>(kScrubWork / std::max(1L, m_stepWork), 1, 100)));
-    if (!ghost)
-        return;
-    ghost->limitSnapshotCost(RecordedRun::kSnapshotCostShare);
-    if (!ghost->setRecording(m_run->recording().events, m_run->recordedSteps()).ok() || !ghost->seek(sim()->stepCount()).ok())
+    auto ghost = recordRun(std::move(built).value(), m_stepWork);
+    if (!ghost || !ghost->setRecording(m_run->recording().events, m_run->recordedSteps()).ok()
+        || !ghost->seek(sim()->stepCount()).ok())
         return;
     m_ghost = std::make_unique<RecordedRun>(std::move(ghost).value());
 }

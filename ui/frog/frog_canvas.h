@@ -266,6 +266,9 @@ private:
     /// Live input, to the run and to its ghost; a press returns whether the run grabbed.
     bool send(InputKind kind, Point at = Point());
     void rebuildGhost();
+    /// `simulation` recorded with the snapshots spaced as kScrubWork says for steps of `work`,
+    /// within RecordedRun::kSnapshotCostShare of the stepping time (the run and its ghost).
+    static Expected<RecordedRun> recordRun(std::unique_ptr<Simulation> simulation, long work);
     void restartTrail();
     std::optional<Point> trailPosition(); ///< where the trail's point is now
     void drawTrail(QPainter& p);
