@@ -4,6 +4,7 @@
 #include "core/curves/bezier/de_casteljau.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 #include <random>
@@ -155,5 +156,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestArcLength)
+GRANOTA_TEST_APPLESS_MAIN(TestArcLength)
 #include "test_arc_length.moc"

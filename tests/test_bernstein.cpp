@@ -5,6 +5,7 @@
 #include "core/exact/polynomial_text.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <random>
 
@@ -144,5 +145,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestBernstein)
+GRANOTA_TEST_GUILESS_MAIN(TestBernstein)
 #include "test_bernstein.moc"

@@ -7,6 +7,7 @@
 #include "core/curves/bezier/power_basis.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 using namespace granota;
 using RPoly = Polynomial<Rational>;
@@ -128,5 +129,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestBernsteinProperties)
+GRANOTA_TEST_APPLESS_MAIN(TestBernsteinProperties)
 #include "test_bernstein_properties.moc"

@@ -4,6 +4,7 @@
 #include "core/exact/rational.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 #include <limits>
@@ -261,5 +262,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestBernsteinRoots)
+GRANOTA_TEST_APPLESS_MAIN(TestBernsteinRoots)
 #include "test_bernstein_roots.moc"

@@ -9,13 +9,14 @@
 
 #include <QRandomGenerator>
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 
 using namespace granota;
 
 namespace granota {
-char* toString(const Vec2<Rational>& p)
+static char* toString(const Vec2<Rational>& p)
 {
     return qstrdup(("(" + granota::toString(p.x) + ", " + granota::toString(p.y) + ")").c_str());
 }
@@ -208,5 +209,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestBezierSegments)
+GRANOTA_TEST_GUILESS_MAIN(TestBezierSegments)
 #include "test_bezier_segments.moc"

@@ -7,6 +7,7 @@
 
 #include <QTemporaryDir>
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cerrno>
 #include <clocale>
@@ -100,5 +101,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestBoundedInput)
+GRANOTA_TEST_GUILESS_MAIN(TestBoundedInput)
 #include "test_bounded_input.moc"

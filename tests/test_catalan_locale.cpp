@@ -18,6 +18,7 @@
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QTest>
+#include "tests/test_main.h"
 
 #include <charconv>
 #include <clocale>
@@ -179,5 +180,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCatalanLocale)
+GRANOTA_TEST_GUILESS_MAIN(TestCatalanLocale)
 #include "test_catalan_locale.moc"

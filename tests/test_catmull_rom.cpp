@@ -7,6 +7,7 @@
 #include "core/exact/rational.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 #include <limits>
@@ -14,14 +15,14 @@
 using namespace granota;
 
 // Readable QCOMPARE failures for exact values (found by argument-dependent lookup).
-char* toString(const Rational& v) { return qstrdup(granota::toString(v).c_str()); }
+static char* toString(const Rational& v) { return qstrdup(granota::toString(v).c_str()); }
 namespace granota {
-char* toString(const Polynomial<Rational>& p) { return qstrdup(toText(p).c_str()); }
-char* toString(const Vec2<Rational>& p)
+static char* toString(const Polynomial<Rational>& p) { return qstrdup(toText(p).c_str()); }
+static char* toString(const Vec2<Rational>& p)
 {
     return qstrdup(("(" + granota::toString(p.x) + ", " + granota::toString(p.y) + ")").c_str());
 }
-char* toString(const Vec2<Polynomial<Rational>>& p) { return qstrdup(toText(p, "s").c_str()); }
+static char* toString(const Vec2<Polynomial<Rational>>& p) { return qstrdup(toText(p, "s").c_str()); }
 } // namespace granota
 
 Q_DECLARE_METATYPE(granota::CatmullRomMode)
@@ -745,5 +746,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCatmullRom)
+GRANOTA_TEST_GUILESS_MAIN(TestCatmullRom)
 #include "test_catmull_rom.moc"

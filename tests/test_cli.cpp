@@ -3,6 +3,7 @@
 #include "cli_runner.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 
@@ -539,5 +540,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCli)
+GRANOTA_TEST_GUILESS_MAIN(TestCli)
 #include "test_cli.moc"

@@ -4,6 +4,7 @@
 #include "cli_runner.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <QJsonArray>
 #include <QJsonObject>
@@ -139,5 +140,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCliCurves)
+GRANOTA_TEST_GUILESS_MAIN(TestCliCurves)
 #include "test_cli_curves.moc"

@@ -8,6 +8,7 @@
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QTest>
+#include "tests/test_main.h"
 
 class TestCliReport : public QObject {
     Q_OBJECT
@@ -96,5 +97,5 @@ private slots:
     void badInput() { verifyRowIsRefused(); }
 };
 
-QTEST_MAIN(TestCliReport)
+GRANOTA_TEST_MAIN(TestCliReport)
 #include "test_cli_report.moc"

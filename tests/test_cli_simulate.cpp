@@ -7,6 +7,7 @@
 #include "core/softbody/simulation_series.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -345,5 +346,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCliSimulate)
+GRANOTA_TEST_GUILESS_MAIN(TestCliSimulate)
 #include "test_cli_simulate.moc"

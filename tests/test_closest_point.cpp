@@ -4,6 +4,7 @@
 #include "core/curves/bezier/de_casteljau.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 #include <random>
@@ -105,5 +106,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestClosestPoint)
+GRANOTA_TEST_APPLESS_MAIN(TestClosestPoint)
 #include "test_closest_point.moc"

@@ -8,6 +8,7 @@
 #include "core/exact/rational.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 #include <limits>
@@ -15,9 +16,9 @@
 using namespace granota;
 
 // Readable QCOMPARE failures for exact values (found by argument-dependent lookup).
-char* toString(const Rational& q) { return qstrdup(granota::toString(q).c_str()); }
+static char* toString(const Rational& q) { return qstrdup(granota::toString(q).c_str()); }
 namespace granota {
-char* toString(const Polynomial<Rational>& p) { return qstrdup(toText(p, "x").c_str()); }
+static char* toString(const Polynomial<Rational>& p) { return qstrdup(toText(p, "x").c_str()); }
 } // namespace granota
 
 namespace {
@@ -333,5 +334,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestCubicSpline)
+GRANOTA_TEST_GUILESS_MAIN(TestCubicSpline)
 #include "test_cubic_spline.moc"

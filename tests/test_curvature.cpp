@@ -3,6 +3,7 @@
 #include "core/curves/bezier/curvature.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 #include <random>
@@ -209,5 +210,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestCurvature)
+GRANOTA_TEST_APPLESS_MAIN(TestCurvature)
 #include "test_curvature.moc"

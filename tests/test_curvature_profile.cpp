@@ -10,6 +10,7 @@
 #include "core/curves/splines/knot_continuity.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 
@@ -134,5 +135,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestCurvatureProfile)
+GRANOTA_TEST_APPLESS_MAIN(TestCurvatureProfile)
 #include "test_curvature_profile.moc"

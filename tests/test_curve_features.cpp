@@ -4,6 +4,7 @@
 #include "core/curves/bezier/curve_features.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 
@@ -194,5 +195,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestCurveFeatures)
+GRANOTA_TEST_APPLESS_MAIN(TestCurveFeatures)
 #include "test_curve_features.moc"

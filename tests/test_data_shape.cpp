@@ -2,6 +2,7 @@
 #include "core/curves/fitting/data_shape.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 #include <limits>
@@ -63,5 +64,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestDataShape)
+GRANOTA_TEST_APPLESS_MAIN(TestDataShape)
 #include "test_data_shape.moc"

@@ -8,6 +8,7 @@
 #include "rational_points.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 #include <random>
@@ -227,5 +228,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestDeCasteljau)
+GRANOTA_TEST_GUILESS_MAIN(TestDeCasteljau)
 #include "test_de_casteljau.moc"

@@ -6,6 +6,7 @@
 #include "rational_points.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 #include <random>
@@ -131,5 +132,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestDegreeReduction)
+GRANOTA_TEST_APPLESS_MAIN(TestDegreeReduction)
 #include "test_degree_reduction.moc"

@@ -8,6 +8,7 @@
 #include "core/softbody/xpbd/xpbd_world.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 
@@ -465,5 +466,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestEnergySeries)
+GRANOTA_TEST_GUILESS_MAIN(TestEnergySeries)
 #include "test_energy_series.moc"

@@ -8,6 +8,7 @@
 #include "core/softbody/simulation.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 using namespace granota;
 
@@ -88,5 +89,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestEnumNames)
+GRANOTA_TEST_APPLESS_MAIN(TestEnumNames)
 #include "test_enum_names.moc"

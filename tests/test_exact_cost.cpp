@@ -7,6 +7,7 @@
 #include "core/curves/fitting/least_squares_fit.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <QJsonArray>
 #include <QJsonObject>
@@ -140,5 +141,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestExactCost)
+GRANOTA_TEST_GUILESS_MAIN(TestExactCost)
 #include "test_exact_cost.moc"

@@ -8,6 +8,7 @@
 #include "core/exact/polynomial_text.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <QFile>
 #include <QJsonArray>
@@ -152,5 +153,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestExamplesFile)
+GRANOTA_TEST_GUILESS_MAIN(TestExamplesFile)
 #include "test_examples_file.moc"

@@ -3,6 +3,7 @@
 #include "core/curves/fitting/fit_error_by_degree.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 
@@ -85,5 +86,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestFitErrorByDegree)
+GRANOTA_TEST_APPLESS_MAIN(TestFitErrorByDegree)
 #include "test_fit_error_by_degree.moc"

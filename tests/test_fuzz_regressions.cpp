@@ -7,6 +7,7 @@
 #include "tests/fuzz/regression_inputs.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 namespace {
 
@@ -23,5 +24,5 @@ private slots:
     void replay() { granota::fuzz::replayInputRow(granota::fuzz::checkCore); }
 };
 
-QTEST_GUILESS_MAIN(TestFuzzRegressions)
+GRANOTA_TEST_GUILESS_MAIN(TestFuzzRegressions)
 #include "test_fuzz_regressions.moc"

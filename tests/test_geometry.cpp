@@ -5,6 +5,7 @@
 #include "core/exact/rational.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 
@@ -99,5 +100,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestGeometry)
+GRANOTA_TEST_GUILESS_MAIN(TestGeometry)
 #include "test_geometry.moc"

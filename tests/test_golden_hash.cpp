@@ -8,6 +8,7 @@
 #include "core/softbody/simulation.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cstdint>
 #include <cstring>
@@ -139,5 +140,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestGoldenHash)
+GRANOTA_TEST_GUILESS_MAIN(TestGoldenHash)
 #include "test_golden_hash.moc"

@@ -31,6 +31,7 @@
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QTest>
+#include "tests/test_main.h"
 #include <QToolButton>
 #include <QUndoStack>
 
@@ -269,7 +270,7 @@ private slots:
         const double t0 = tab->t();
         const int steps = tab->undoStack()->count();
         tab->setPlaying(true);
-        QTRY_VERIFY(tab->t() != t0);
+        QTRY_VERIFY_WITH_TIMEOUT(tab->t() != t0, kEventWaitMs);
         tab->setPlaying(false);
         const double stopped = tab->t();
         QCOMPARE(tab->undoStack()->count(), steps + 1);
@@ -458,10 +459,10 @@ private slots:
         QVERIFY(freshHint->isVisible());
 
         QVERIFY(granota::ui::setLanguage(QStringLiteral("ca"), false));
-        QTRY_VERIFY2(hint->text() != hints.last(), qPrintable(hint->text())); // the Frog tab's, in Catalan
+        QTRY_VERIFY2_WITH_TIMEOUT(hint->text() != hints.last(), qPrintable(hint->text()), kEventWaitMs); // the Frog tab's, in Catalan
         QCOMPARE(hint->text(), window.currentTab()->hint());
         QVERIFY(granota::ui::setLanguage(QStringLiteral("en"), false));
-        QTRY_COMPARE(hint->text(), hints.last());
+        QTRY_COMPARE_WITH_TIMEOUT(hint->text(), hints.last(), kEventWaitMs);
     }
 
     // Item 14: in presentation mode on a 1024 × 768 projector the Frog tab's readouts wrap to
@@ -482,9 +483,9 @@ private slots:
         }
         auto* canvas = window.currentTab()->findChild<granota::ui::FrogCanvas*>();
         QVERIFY(canvas);
-        QTRY_VERIFY(canvas->textLines().size() >= 3);
-        QTRY_VERIFY2(canvas->textPanelWidth() <= canvas->textPanelRoom(),
-                     qPrintable(QStringLiteral("%1 > %2").arg(canvas->textPanelWidth()).arg(canvas->textPanelRoom())));
+        QTRY_VERIFY_WITH_TIMEOUT(canvas->textLines().size() >= 3, kEventWaitMs);
+        QTRY_VERIFY2_WITH_TIMEOUT(canvas->textPanelWidth() <= canvas->textPanelRoom(),
+                     qPrintable(QStringLiteral("%1 > %2").arg(canvas->textPanelWidth()).arg(canvas->textPanelRoom())), kEventWaitMs);
         // And at once when the canvas narrows (a side panel dragged wider), not at the next refresh.
         canvas->resize(canvas->width() * 3 / 4, canvas->height());
         QVERIFY2(canvas->textPanelWidth() <= canvas->textPanelRoom(),
@@ -493,5 +494,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestGuiAcceptance)
+GRANOTA_TEST_MAIN(TestGuiAcceptance)
 #include "test_gui_acceptance.moc"

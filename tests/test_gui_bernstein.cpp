@@ -15,6 +15,7 @@
 #include <QSlider>
 #include <QSpinBox>
 #include <QTest>
+#include "tests/test_main.h"
 #include <QUndoStack>
 #include <qcustomplot.h>
 
@@ -177,7 +178,7 @@ private slots:
         QCustomPlot* plot = tabs.bernstein.basisPlot();
         const QPoint at(static_cast<int>(plot->xAxis->coordToPixel(0.6)), static_cast<int>(plot->yAxis->coordToPixel(0.5)));
         QTest::mouseMove(plot, at);
-        QTRY_VERIFY(tabs.bernstein.readoutShown());
+        QTRY_VERIFY_WITH_TIMEOUT(tabs.bernstein.readoutShown(), kEventWaitMs);
         tabs.bernstein.setT(0.1);
         QVERIFY(!tabs.bernstein.readoutShown());
     }
@@ -307,5 +308,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestGuiBernstein)
+GRANOTA_TEST_MAIN(TestGuiBernstein)
 #include "test_gui_bernstein.moc"

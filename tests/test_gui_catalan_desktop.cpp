@@ -29,6 +29,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include "tests/test_main.h"
 #include <qcustomplot.h>
 
 #include <algorithm>
@@ -282,5 +283,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestGuiCatalanDesktop)
+GRANOTA_TEST_MAIN(TestGuiCatalanDesktop)
 #include "test_gui_catalan_desktop.moc"

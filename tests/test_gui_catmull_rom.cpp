@@ -26,6 +26,7 @@
 #include <QSlider>
 #include <QJsonDocument>
 #include <QTest>
+#include "tests/test_main.h"
 #include <QUndoStack>
 #include <qcustomplot.h>
 
@@ -871,5 +872,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestGuiCatmullRom)
+GRANOTA_TEST_MAIN(TestGuiCatmullRom)
 #include "test_gui_catmull_rom.moc"

@@ -44,6 +44,7 @@
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QTest>
+#include "tests/test_main.h"
 #include <QUndoStack>
 
 #include <algorithm>
@@ -1138,7 +1139,7 @@ private slots:
         std::vector<double> ts;
         connect(&tab, &DeCasteljauTab::tChanged, &tab, [&ts](double t) { ts.push_back(t); });
         tab.setPlaying(true);
-        QTRY_VERIFY(ts.size() >= 6);
+        QTRY_VERIFY_WITH_TIMEOUT(ts.size() >= 6, kEventWaitMs);
         tab.setPlaying(false);
         const granota::ArcLengthParametrization arc(tab.pointEditor()->points());
         double minDt = 1, maxDt = 0;
@@ -1279,7 +1280,7 @@ private slots:
         QSignalSpy spy(&tab, &DeCasteljauTab::tChanged);
         tab.setPlaying(true);
         QVERIFY(tab.isPlaying());
-        QTRY_VERIFY(spy.count() >= 5);
+        QTRY_VERIFY_WITH_TIMEOUT(spy.count() >= 5, kEventWaitMs);
         tab.setPlaying(false);
         QVERIFY(!tab.isPlaying());
         QVERIFY(tab.t() < 0.99); // it looped past 1 back to the start
@@ -1405,5 +1406,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestGuiDeCasteljau)
+GRANOTA_TEST_MAIN(TestGuiDeCasteljau)
 #include "test_gui_decasteljau.moc"

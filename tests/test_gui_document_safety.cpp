@@ -24,6 +24,7 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
+#include "tests/test_main.h"
 #include <QUndoStack>
 
 #include <cmath>
@@ -371,5 +372,5 @@ private slots:
 
 };
 
-QTEST_MAIN(TestGuiDocumentSafety)
+GRANOTA_TEST_MAIN(TestGuiDocumentSafety)
 #include "test_gui_document_safety.moc"

@@ -31,6 +31,7 @@
 #include <QRegularExpression>
 #include <QJsonObject>
 #include <QTest>
+#include "tests/test_main.h"
 #include <QUndoStack>
 #include <qcustomplot.h>
 
@@ -836,5 +837,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestGuiFit)
+GRANOTA_TEST_MAIN(TestGuiFit)
 #include "test_gui_fit.moc"

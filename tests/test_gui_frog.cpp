@@ -32,6 +32,7 @@
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
+#include "tests/test_main.h"
 #include <qcustomplot.h>
 
 #include <QJsonDocument>
@@ -159,15 +160,15 @@ private slots:
         QVERIFY(bodies > 1);
         const QString first = QStringLiteral("Body 1 of %1: area").arg(bodies);
         const QString mean = QStringLiteral("Area error, mean of the %1 bodies,").arg(bodies);
-        QTRY_VERIFY2(canvas->textLines().join('\n').contains(first), qPrintable(canvas->textLines().join('\n')));
+        QTRY_VERIFY2_WITH_TIMEOUT(canvas->textLines().join('\n').contains(first), qPrintable(canvas->textLines().join('\n')), kEventWaitMs);
         const QString lines = canvas->textLines().join('\n');
         QVERIFY2(lines.contains(mean), qPrintable(lines));
         QVERIFY2(!lines.contains(QStringLiteral("Area error ")), qPrintable(lines));
 
         QVERIFY(tab().setScene("frog", nullptr));
         QCOMPARE(canvas->simulation()->bodyCount(), 1);
-        QTRY_VERIFY2(canvas->textLines().join('\n').contains(QStringLiteral("Area error ")),
-                     qPrintable(canvas->textLines().join('\n')));
+        QTRY_VERIFY2_WITH_TIMEOUT(canvas->textLines().join('\n').contains(QStringLiteral("Area error ")),
+                     qPrintable(canvas->textLines().join('\n')), kEventWaitMs);
         QVERIFY(!canvas->textLines().join('\n').contains(QStringLiteral("Body 1 of")));
     }
 
@@ -196,7 +197,7 @@ private slots:
         pause->click();
         QVERIFY(tab().canvas()->running());
         QVERIFY(tab().canvas()->animating());
-        QTRY_VERIFY(sim->stepCount() > before + 41 + 5);
+        QTRY_VERIFY_WITH_TIMEOUT(sim->stepCount() > before + 41 + 5, kEventWaitMs);
     }
 
     void aHeavyStepRunsSlowerThanRealTime()
@@ -230,7 +231,7 @@ private slots:
         QCOMPARE(canvas->framesPerStep(), 1);
         QVERIFY(!canvas->textLines().join('\n').contains("slower than real time"));
         const long realBefore = canvas->simulation()->stepCount(), realFrames = canvas->frameCount();
-        QTRY_VERIFY(canvas->frameCount() >= realFrames + 10);
+        QTRY_VERIFY_WITH_TIMEOUT(canvas->frameCount() >= realFrames + 10, kEventWaitMs);
         QCOMPARE(canvas->simulation()->stepCount() - realBefore, canvas->frameCount() - realFrames);
     }
 
@@ -267,13 +268,11 @@ private slots:
         QVERIFY(tab().setScene("frog", nullptr));
         sim = canvas->simulation();
         tab().setSpeed(1);
-        // Keys go where the window sends them: to the widget with the focus (in a real
-        // window under a window manager, not to the tab that a click was never made in).
-        tab().activateWindow();
-        QTRY_VERIFY(QApplication::focusWidget() || QApplication::activeWindow());
-        QWidget* target = QApplication::focusWidget() ? QApplication::focusWidget() : &tab();
-        QTest::keyClick(target, Qt::Key_BracketRight);
-        QTest::keyClick(target, Qt::Key_BracketRight);
+        // ] is a shortcut of the tab's window: it answers only once the window manager has
+        // made that window active (a bounded wait, which names the window if it fails).
+        QVERIFY(waitActive(&tab()));
+        QTest::keyClick(canvas, Qt::Key_BracketRight);
+        QTest::keyClick(canvas, Qt::Key_BracketRight);
         QCOMPARE(canvas->speed(), 4.0);
         QCOMPARE(speed->currentText(), QStringLiteral("4×"));
         QCOMPARE(canvas->stepsPerFrame(), 4);
@@ -324,7 +323,7 @@ private slots:
         QVERIFY(box && !box->isChecked());
         box->click();
         QVERIFY(panel->isVisible() && canvas->recordingSeries());
-        QTRY_VERIFY(panel->height() >= 150);
+        QTRY_VERIFY_WITH_TIMEOUT(panel->height() >= 150, kEventWaitMs);
         QVERIFY(canvas->height() > panel->height()); // the canvas keeps most of the column
         QCOMPARE(canvas->series().samples().size(), std::size_t(1));
         steps(tab(), 240);
@@ -953,12 +952,12 @@ private slots:
             timeline->setValue(t);
             QCOMPARE(row(), rows[std::size_t(t)]);
         }
-        // , and . (the keys the window sends to the focused widget).
-        canvas->setFocus();
-        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Comma);
+        // , and . (shortcuts of the tab's window: they answer once it is active).
+        QVERIFY(waitActive(&tab()));
+        QTest::keyClick(canvas, Qt::Key_Comma);
         QCOMPARE(row(), rows[139]);
         QCOMPARE(timeline->value(), 139);
-        QTest::keyClick(QApplication::focusWidget(), Qt::Key_Period);
+        QTest::keyClick(canvas, Qt::Key_Period);
         QCOMPARE(row(), rows[140]);
         QVERIFY(canvas->playingBack());
         QVERIFY(canvas->textLines().join('\n').contains("Replaying the recorded run, step 140 of 200"));
@@ -995,18 +994,17 @@ private slots:
 
         // The stopwatch: M marks the step shown, and the label counts from it both ways.
         timeline->setValue(60);
-        canvas->setFocus();
-        QTest::keyClick(QApplication::focusWidget(), Qt::Key_M);
+        QTest::keyClick(canvas, Qt::Key_M);
         QCOMPARE(tab().markedStep(), 60L);
         QVERIFY(tab().findChild<QPushButton*>("frogStopwatch")->isChecked());
         timeline->setValue(150);
         QVERIFY2(label->text().contains("1.50 s (90 steps) since step 60"), qPrintable(label->text()));
         timeline->setValue(30);
         QVERIFY2(label->text().contains("0.50 s (30 steps) before step 60"), qPrintable(label->text()));
-        QTest::keyClick(QApplication::focusWidget(), Qt::Key_M);
+        QTest::keyClick(canvas, Qt::Key_M);
         QCOMPARE(tab().markedStep(), -1L);
         QVERIFY(!label->text().contains("since"));
-        QTest::keyClick(QApplication::focusWidget(), Qt::Key_M); // marked at 30, then a Reset clears it
+        QTest::keyClick(canvas, Qt::Key_M); // marked at 30, then a Reset clears it
         QCOMPARE(tab().markedStep(), 30L);
         const QJsonObject marked = tab().saveState();
         QVERIFY(!marked.contains("mark")); // a measuring tool, not part of the document
@@ -1503,5 +1501,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestGuiFrog)
+GRANOTA_TEST_MAIN(TestGuiFrog)
 #include "test_gui_frog.moc"

@@ -7,6 +7,7 @@
 #include "tests/fuzz/regression_inputs.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 namespace {
 
@@ -25,5 +26,5 @@ private slots:
     void replay() { granota::fuzz::replayInputRow(granota::fuzz::checkUi); }
 };
 
-QTEST_MAIN(TestGuiFuzzRegressions)
+GRANOTA_TEST_MAIN(TestGuiFuzzRegressions)
 #include "test_gui_fuzz_regressions.moc"

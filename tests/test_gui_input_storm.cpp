@@ -48,6 +48,7 @@
 #include <QTableWidget>
 #include <QTabWidget>
 #include <QTest>
+#include "tests/test_main.h"
 #include <QTextDocumentFragment>
 #include <QTextEdit>
 #include <QTimer>
@@ -355,7 +356,7 @@ QWidget* Storm::focusTarget() const
 {
     if (QWidget* popup = QApplication::activePopupWidget())
         return popup->focusWidget() ? popup->focusWidget() : popup;
-    if (QWidget* focus = QApplication::focusWidget())
+    if (QWidget* focus = m_window.focusWidget()) // the window's, active or not yet
         return focus;
     return &m_window;
 }
@@ -941,7 +942,7 @@ class TestGuiInputStorm : public QObject {
         window.resize(1280, 800);
         window.show();
         window.activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(&window));
+        QVERIFY(waitActive(&window));
         const QJsonObject start = undoableParts(documentOf(window));
 
         Storm storm(window, seed);
@@ -1077,5 +1078,5 @@ private slots:
     void seed31GridFarOff() { runStorm(31, 25); }
 };
 
-QTEST_MAIN(TestGuiInputStorm)
+GRANOTA_TEST_MAIN(TestGuiInputStorm)
 #include "test_gui_input_storm.moc"

@@ -31,6 +31,7 @@
 #include <QUndoStack>
 #include <QTabWidget>
 #include <QTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 #include <vector>
@@ -43,10 +44,12 @@ using granota::ui::MainWindow;
 
 namespace {
 
-/// A key as the user presses it: on the widget that has the focus, else on the window.
+/// A key as the user presses it: on the window's focus widget, else on the window. (The
+/// window's own focus widget, not QApplication's: that one is null until the window manager
+/// has activated the window, which a busy machine may not have done yet.)
 void press(MainWindow& window, Qt::Key key, Qt::KeyboardModifiers modifiers = Qt::NoModifier)
 {
-    QWidget* target = QApplication::focusWidget() ? QApplication::focusWidget() : &window;
+    QWidget* target = window.focusWidget() ? window.focusWidget() : &window;
     QTest::keyClick(target, key, modifiers);
 }
 
@@ -60,7 +63,7 @@ FrogCanvas* focusedFrogCanvas(MainWindow& window)
         return nullptr;
     canvas->setRunning(false);
     canvas->setFocus(Qt::TabFocusReason);
-    return QTest::qWaitFor([canvas] { return canvas->hasFocus(); }) ? canvas : nullptr;
+    return QTest::qWaitFor([canvas] { return canvas->hasFocus(); }, kEventWaitMs) ? canvas : nullptr;
 }
 
 /// The curve canvas of the tab shown.
@@ -124,7 +127,7 @@ private slots:
         CurveCanvas* canvas = curveCanvas(window);
         QVERIFY(canvas);
         canvas->setFocus(Qt::OtherFocusReason);
-        QTRY_VERIFY(canvas->hasFocus());
+        QTRY_VERIFY_WITH_TIMEOUT(canvas->hasFocus(), kEventWaitMs);
         auto* editor = window.currentTab()->findChild<granota::ui::PointEditor*>();
         QVERIFY(editor);
         editor->setSelected(0);
@@ -133,8 +136,8 @@ private slots:
         QVERIFY(canvas->hasFocus());
         press(window, Qt::Key_Tab);
         QVERIFY(!canvas->hasFocus());
-        QVERIFY(QApplication::focusWidget());
-        QVERIFY(QApplication::focusWidget() != canvas);
+        QVERIFY(window.focusWidget());
+        QVERIFY(window.focusWidget() != canvas);
         QCOMPARE(editor->selected(), 1); // Tab selected nothing on its way out
         press(window, Qt::Key_Backtab, Qt::ShiftModifier);
         QVERIFY(canvas->hasFocus());
@@ -154,7 +157,7 @@ private slots:
         tab->setT(0.25);
         CurveCanvas* canvas = curveCanvas(window);
         canvas->setFocus(Qt::OtherFocusReason);
-        QTRY_VERIFY(canvas->hasFocus());
+        QTRY_VERIFY_WITH_TIMEOUT(canvas->hasFocus(), kEventWaitMs);
         auto* editor = tab->pointEditor();
         const std::vector<Point> before = editor->points();
         const int steps = tab->undoStack()->count();
@@ -210,10 +213,10 @@ private slots:
         CurveCanvas* canvas = curveCanvas(window);
         QVERIFY(canvas);
         window.currentTab()->findChild<QAbstractButton*>()->setFocus(Qt::OtherFocusReason);
-        QTRY_VERIFY(!canvas->hasFocus());
+        QTRY_VERIFY_WITH_TIMEOUT(!canvas->hasFocus(), kEventWaitMs);
         const QImage without = canvas->grab().toImage();
         canvas->setFocus(Qt::TabFocusReason);
-        QTRY_VERIFY(canvas->hasFocus());
+        QTRY_VERIFY_WITH_TIMEOUT(canvas->hasFocus(), kEventWaitMs);
         const QImage with = canvas->grab().toImage();
         QCOMPARE(with.size(), without.size());
         // The frame runs along the edge: the corner pixel changes, the middle does not.
@@ -253,7 +256,7 @@ private slots:
         // Nothing in the tab has the focus, as when the tab was chosen on the tab bar.
         QTabBar* bar = window.findChild<QTabWidget*>()->tabBar();
         bar->setFocus(Qt::TabFocusReason);
-        QTRY_VERIFY(bar->hasFocus());
+        QTRY_VERIFY_WITH_TIMEOUT(bar->hasFocus(), kEventWaitMs);
         auto* canvas = window.frogTab()->findChild<FrogCanvas*>();
         QVERIFY(canvas && canvas->running());
         press(window, Qt::Key_P);
@@ -276,7 +279,7 @@ private slots:
         QSet<QString> reached;
         for (int i = 0; i < 60 && reached.size() < 3; ++i) {
             press(window, Qt::Key_Tab);
-            if (QWidget* f = QApplication::focusWidget())
+            if (QWidget* f = window.focusWidget())
                 if (f->objectName().startsWith(QStringLiteral("frog")) && qobject_cast<QPushButton*>(f))
                     reached.insert(f->objectName());
         }
@@ -393,5 +396,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestGuiKeyboard)
+GRANOTA_TEST_MAIN(TestGuiKeyboard)
 #include "test_gui_keyboard.moc"

@@ -27,6 +27,7 @@
 #include <QScrollArea>
 #include <QStyleOptionComboBox>
 #include <QTest>
+#include "tests/test_main.h"
 #include <QTextDocument>
 
 #include <qcustomplot.h>
@@ -351,5 +352,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestGuiLayout)
+GRANOTA_TEST_MAIN(TestGuiLayout)
 #include "test_gui_layout.moc"

@@ -45,6 +45,7 @@
 #include <QHeaderView>
 #include <QTemporaryDir>
 #include <QTest>
+#include "tests/test_main.h"
 #include <QXmlStreamReader>
 #include <qcustomplot.h>
 
@@ -196,7 +197,7 @@ private slots:
         MainWindow window;
         QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
         window.activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(&window));
+        QVERIFY(waitActive(&window));
         QVERIFY(loadExamples(window, {"2.3"}));
         QUndoStack* stack = window.currentTab()->undoStack();
         QVERIFY(stack->canUndo());
@@ -805,5 +806,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestGuiMainWindow)
+GRANOTA_TEST_MAIN(TestGuiMainWindow)
 #include "test_gui_main_window.moc"

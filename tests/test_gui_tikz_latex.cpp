@@ -17,6 +17,7 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include "tests/test_main.h"
 
 #include <vector>
 
@@ -203,5 +204,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestGuiTikzLatex)
+GRANOTA_TEST_MAIN(TestGuiTikzLatex)
 #include "test_gui_tikz_latex.moc"

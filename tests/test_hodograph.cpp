@@ -7,6 +7,7 @@
 #include "rational_points.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <random>
 
@@ -79,5 +80,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestHodograph)
+GRANOTA_TEST_APPLESS_MAIN(TestHodograph)
 #include "test_hodograph.moc"

@@ -4,6 +4,7 @@
 #include "core/softbody/integrators.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 
@@ -111,5 +112,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestIntegrators)
+GRANOTA_TEST_GUILESS_MAIN(TestIntegrators)
 #include "test_integrators.moc"

@@ -4,6 +4,7 @@
 #include "catalan_locale.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <clocale>
 #include <cmath>
@@ -310,5 +311,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestJson)
+GRANOTA_TEST_GUILESS_MAIN(TestJson)
 #include "test_json.moc"

@@ -11,6 +11,7 @@
 
 #include <QRandomGenerator>
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 
@@ -222,5 +223,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestKnotContinuity)
+GRANOTA_TEST_APPLESS_MAIN(TestKnotContinuity)
 #include "test_knot_continuity.moc"

@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 #include <QElapsedTimer>
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 #include <cstdint>
@@ -904,5 +905,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestLeastSquaresFit)
+GRANOTA_TEST_GUILESS_MAIN(TestLeastSquaresFit)
 #include "test_least_squares_fit.moc"

@@ -8,6 +8,7 @@
 #include <QFile>
 #include <QRegularExpression>
 #include <QTest>
+#include "tests/test_main.h"
 
 namespace {
 
@@ -73,5 +74,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestLocaleFreeSources)
+GRANOTA_TEST_GUILESS_MAIN(TestLocaleFreeSources)
 #include "test_locale_free_sources.moc"

@@ -5,6 +5,7 @@
 #include "rational_points.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <random>
 
@@ -92,5 +93,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestMolding)
+GRANOTA_TEST_APPLESS_MAIN(TestMolding)
 #include "test_molding.moc"

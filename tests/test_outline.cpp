@@ -6,6 +6,7 @@
 #include "core/softbody/regular_polygon.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 
@@ -114,5 +115,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestOutline)
+GRANOTA_TEST_GUILESS_MAIN(TestOutline)
 #include "test_outline.moc"

@@ -6,6 +6,7 @@
 #include "core/softbody/regular_polygon.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 #include <limits>
@@ -143,5 +144,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestOutlineSampling)
+GRANOTA_TEST_APPLESS_MAIN(TestOutlineSampling)
 #include "test_outline_sampling.moc"

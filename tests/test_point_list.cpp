@@ -7,6 +7,7 @@
 #include "catalan_locale.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <algorithm>
 #include <clocale>
@@ -201,5 +202,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestPointList)
+GRANOTA_TEST_GUILESS_MAIN(TestPointList)
 #include "test_point_list.moc"

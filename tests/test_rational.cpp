@@ -7,6 +7,7 @@
 #include "core/exact/round_step.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <limits>
 
@@ -205,5 +206,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRational)
+GRANOTA_TEST_GUILESS_MAIN(TestRational)
 #include "test_rational.moc"

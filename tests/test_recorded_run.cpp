@@ -8,6 +8,7 @@
 #include "core/softbody/simulation_trace.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <QFile>
 #include <QTemporaryDir>
@@ -500,5 +501,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestRecordedRun)
+GRANOTA_TEST_GUILESS_MAIN(TestRecordedRun)
 #include "test_recorded_run.moc"

@@ -7,6 +7,7 @@
 #include "core/io/json.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <limits>
 
@@ -324,5 +325,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestScenes)
+GRANOTA_TEST_GUILESS_MAIN(TestScenes)
 #include "test_scenes.moc"

@@ -8,6 +8,7 @@
 #include "core/softbody/simulation_trace.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <algorithm>
 #include <cmath>
@@ -1168,5 +1169,5 @@ private:
     }
 };
 
-QTEST_GUILESS_MAIN(TestSeedSolver)
+GRANOTA_TEST_GUILESS_MAIN(TestSeedSolver)
 #include "test_seed_solver.moc"

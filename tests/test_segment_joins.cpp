@@ -5,6 +5,7 @@
 #include "core/curves/splines/segment_joins.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 using namespace granota;
 
@@ -109,5 +110,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestSegmentJoins)
+GRANOTA_TEST_APPLESS_MAIN(TestSegmentJoins)
 #include "test_segment_joins.moc"

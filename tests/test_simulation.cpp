@@ -9,6 +9,7 @@
 #include "core/softbody/simulation_trace.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <fstream>
 #include <limits>
@@ -541,5 +542,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestSimulation)
+GRANOTA_TEST_GUILESS_MAIN(TestSimulation)
 #include "test_simulation.moc"

@@ -5,6 +5,7 @@
 #include "core/curves/splines/spline_offset_correction.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 using namespace granota;
 
@@ -70,5 +71,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestSplineOffsetCorrection)
+GRANOTA_TEST_APPLESS_MAIN(TestSplineOffsetCorrection)
 #include "test_spline_offset_correction.moc"

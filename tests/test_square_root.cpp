@@ -3,6 +3,7 @@
 #include "core/exact/square_root.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 using namespace granota;
 
@@ -72,5 +73,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestSquareRoot)
+GRANOTA_TEST_APPLESS_MAIN(TestSquareRoot)
 #include "test_square_root.moc"

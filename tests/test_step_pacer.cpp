@@ -3,6 +3,7 @@
 #include "core/softbody/step_pacer.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 using namespace granota;
 
@@ -56,5 +57,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestStepPacer)
+GRANOTA_TEST_GUILESS_MAIN(TestStepPacer)
 #include "test_step_pacer.moc"

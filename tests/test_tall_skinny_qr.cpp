@@ -8,6 +8,7 @@
 #include "core/curves/fitting/tall_skinny_qr.h"
 
 #include <QTest>
+#include "tests/test_main.h"
 
 #include <cmath>
 #include <random>
@@ -179,5 +180,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestTallSkinnyQr)
+GRANOTA_TEST_APPLESS_MAIN(TestTallSkinnyQr)
 #include "test_tall_skinny_qr.moc"

@@ -6,6 +6,7 @@
 #include <QRegularExpression>
 #include <QSet>
 #include <QTest>
+#include "tests/test_main.h"
 #include <QXmlStreamReader>
 
 #include <algorithm>
@@ -184,5 +185,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestTranslations)
+GRANOTA_TEST_APPLESS_MAIN(TestTranslations)
 #include "test_translations.moc"

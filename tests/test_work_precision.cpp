@@ -5,6 +5,7 @@
 #include "core/reports/work_precision_reports.h"
 
 #include <QTest>
+#include "tests/test_main.h"
 
 #include <array>
 #include <cmath>
@@ -293,5 +294,5 @@ private slots:
     }
 };
 
-QTEST_APPLESS_MAIN(TestWorkPrecision)
+GRANOTA_TEST_APPLESS_MAIN(TestWorkPrecision)
 #include "test_work_precision.moc"

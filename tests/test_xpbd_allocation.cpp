@@ -5,6 +5,7 @@
 #include "core/softbody/xpbd/xpbd_world.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <atomic>
 #include <cmath>
@@ -137,5 +138,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestXpbdAllocation)
+GRANOTA_TEST_GUILESS_MAIN(TestXpbdAllocation)
 #include "test_xpbd_allocation.moc"

@@ -10,6 +10,7 @@
 #include "core/softbody/xpbd/xpbd_world.h"
 
 #include <QtTest>
+#include "tests/test_main.h"
 
 #include <algorithm>
 #include <cmath>
@@ -1169,5 +1170,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestXpbdSolver)
+GRANOTA_TEST_GUILESS_MAIN(TestXpbdSolver)
 #include "test_xpbd_solver.moc"
