@@ -1247,9 +1247,16 @@ private slots:
             tooMany.append(QJsonArray{i, 0});
         QTest::newRow("201 points") << QJsonObject{{"points", tooMany}};
         QTest::newRow("NaN") << QJsonObject{{"points", QJsonArray{QJsonArray{0, 0}, QJsonArray{nan, 1}}}};
-        QTest::newRow("inf") << QJsonObject{{"points", QJsonArray{QJsonArray{inf, 0}}}};
-        QTest::newRow("string") << QJsonObject{{"points", QJsonArray{QJsonArray{"nan", 0}}}};
-        QTest::newRow("three coordinates") << QJsonObject{{"points", QJsonArray{QJsonArray{1, 2, 3}}}};
+        // A list of one point, appended: QJsonArray{QJsonArray{…}} is the inner array itself
+        // for clang (a list of one element of the same type).
+        const auto onePoint = [](const QJsonArray& point) {
+            QJsonArray points;
+            points.append(point);
+            return points;
+        };
+        QTest::newRow("inf") << QJsonObject{{"points", onePoint(QJsonArray{inf, 0})}};
+        QTest::newRow("string") << QJsonObject{{"points", onePoint(QJsonArray{"nan", 0})}};
+        QTest::newRow("three coordinates") << QJsonObject{{"points", onePoint(QJsonArray{1, 2, 3})}};
         QTest::newRow("null point") << QJsonObject{{"points", QJsonArray{QJsonValue()}}};
         QTest::newRow("t = 2") << with("t", 2.0);
         QTest::newRow("t NaN") << with("t", nan);

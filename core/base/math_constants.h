@@ -10,4 +10,7 @@ namespace granota {
 /// π rounded to the nearest double.
 inline constexpr double kPi = 3.14159265358979323846;
 
+/// The distance from 1 to the next double, 2⁻⁵² (std::numeric_limits<double>::epsilon()).
+inline constexpr double kMachineEpsilon = 0x1p-52;
+
 } // namespace granota

@@ -36,6 +36,12 @@ inline double cross(const Point& a, const Point& b) { return a.x * b.y - a.y * b
 /// Euclidean length without overflow for coordinates up to 1e300.
 inline double norm(const Point& a) { return std::hypot(a.x, a.y); }
 inline double distance(const Point& a, const Point& b) { return norm(a - b); }
+/// The unit vector along `d`, as Processing's PVector.normalize: a zero vector stays zero.
+inline Point normalized(const Point& d)
+{
+    const double n = norm(d);
+    return n > 0 ? Point(d.x / n, d.y / n) : d;
+}
 inline bool isFinite(const Point& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
 } // namespace granota

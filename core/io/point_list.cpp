@@ -12,7 +12,7 @@ namespace granota {
 namespace {
 
 /// Text from a file or typed by a user inside a message: quoted, control characters escaped.
-std::string quoted(std::string_view s) { return quotedForDisplay(s, 40); }
+std::string quotedInput(std::string_view s) { return quotedForDisplay(s, 40); }
 
 /// A file saved by a spreadsheet or Notepad may start with the UTF-8 byte-order mark
 /// EF BB BF: it is not part of the first number.
@@ -35,7 +35,7 @@ Expected<Rational> coordinate(std::string_view text, std::size_t index, const ch
 {
     auto q = parseRational(text);
     if (!q)
-        return makeError(ErrorCode::InvalidInput, "point " + std::to_string(index) + ": " + axis + " = " + quoted(trim(text)) +
+        return makeError(ErrorCode::InvalidInput, "point " + std::to_string(index) + ": " + axis + " = " + quotedInput(trim(text)) +
                                                       " is not a finite number (write integers, decimals or fractions p/q)");
     return *q;
 }
@@ -55,7 +55,7 @@ Expected<RPoint> pair(std::string_view text, std::size_t index)
     const auto comma = text.find(',');
     if (comma == std::string_view::npos || text.find(',', comma + 1) != std::string_view::npos)
         return makeError(ErrorCode::InvalidInput,
-                         "point " + std::to_string(index) + ": expected \"x,y\", got " + quoted(trim(text)));
+                         "point " + std::to_string(index) + ": expected \"x,y\", got " + quotedInput(trim(text)));
     auto x = coordinate(text.substr(0, comma), index, "x");
     if (!x)
         return x.error();
@@ -137,7 +137,7 @@ Expected<std::vector<RPoint>> parsePointJson(std::string_view text)
     }
     const Json::Array* list = doc->asArray();
     if (!list)
-        return bad("the text is " + quoted(doc->dump()) + ", not a list");
+        return bad("the text is " + quotedInput(doc->dump()) + ", not a list");
     if (list->empty())
         return makeError(ErrorCode::TooFewPoints, "the file holds no points");
     if (list->size() > kMaxDataPoints)
@@ -147,7 +147,7 @@ Expected<std::vector<RPoint>> parsePointJson(std::string_view text)
         const std::size_t index = points.size();
         const Json::Array* xy = item.asArray();
         if (!xy || xy->size() != 2)
-            return bad("point " + std::to_string(index) + " is " + quoted(item.dump()) +
+            return bad("point " + std::to_string(index) + " is " + quotedInput(item.dump()) +
                        ", not a pair [x,y]");
         auto x = jsonCoordinate((*xy)[0], index, "x");
         if (!x)

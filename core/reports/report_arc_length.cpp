@@ -15,7 +15,6 @@ namespace granota::reports {
 
 namespace {
 
-constexpr double kErrorFloor = 1e-18; // exact results, drawn on a log axis
 
 /// |c′(t)| by De Casteljau on the hodograph, in the scalar T.
 template <class T> T speedAt(const std::vector<Point>& p, T t)

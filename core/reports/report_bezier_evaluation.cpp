@@ -30,9 +30,6 @@ std::vector<Point> integerControlPoints(int count, unsigned seed)
     return p;
 }
 
-/// Exact results are plotted at this floor so that a log axis can show them.
-constexpr double kErrorFloor = 1e-18;
-
 } // namespace
 
 std::vector<Point> reportControlPoints(int count, unsigned seed) { return integerControlPoints(count, seed); }

@@ -12,6 +12,9 @@
 
 namespace granota::reports {
 
+/// The smallest error a report plots: an exact result (error 0) drawn on a log axis.
+inline constexpr double kErrorFloor = 1e-18;
+
 /// Progress and cancelling shared by the reports: `tick(done, total)` returns false when
 /// the user cancelled.
 class Progress {

@@ -22,11 +22,6 @@ void appendSegment(std::vector<Point>& out, const Vec2<Polynomial<double>>& seg,
     }
 }
 
-Point unit(Point d)
-{
-    const double n = norm(d);
-    return n > 0 ? Point(d.x / n, d.y / n) : d; // PVector.normalize leaves a zero vector alone
-}
 
 } // namespace
 
@@ -68,7 +63,7 @@ std::vector<Point> closedCatmullRomOutline(const std::vector<Point>& vertices, i
 
 std::vector<Point> legOutline(Point m, Point e, Point w, double f, int samplesPerSegment)
 {
-    const Point d1 = unit(e - m), d2 = unit(w - e);
+    const Point d1 = normalized(e - m), d2 = normalized(w - e);
     // Annex II, Pota.dibuixar: offsets perpendicular to each bone, averaged at the elbow.
     const Point mPlus(m.x + d1.y * f, m.y - d1.x * f), mMinus(m.x - d1.y * f, m.y + d1.x * f);
     const Point ePlus(e.x + (d1.y + d2.y) * f / 2, e.y - (d1.x + d2.x) * f / 2);

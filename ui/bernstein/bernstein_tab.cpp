@@ -55,22 +55,10 @@ QString basisHtml(const QString& i, const QString& n, const QString& arg = QStri
     return QStringLiteral("B<sub>%1</sub><sup>%2</sup>(%3)").arg(i, n, arg);
 }
 
-QString number(double v)
-{
-    if (v == 0.0 || !std::isfinite(v))
-        return QStringLiteral("0");
-    return displaySignificant(v, 6);
-}
 
 QString residualText(double r) { return r == 0.0 ? QStringLiteral("0") : displayText(QString::number(r, 'e', 1).toStdString()); }
 
-QString mark(bool ok) { return ok ? QStringLiteral("<span style=\"color:#2c8a2c\">✓</span>") : QStringLiteral("<span style=\"color:#c62828\">✗</span>"); }
 
-QString pointText(const Point& p) { return displayPair(number(p.x), number(p.y)); }
-QString pointText(const RPoint& p)
-{
-    return QStringLiteral("(%1, %2)").arg(QString::fromStdString(toString(p.x)), QString::fromStdString(toString(p.y)));
-}
 
 } // namespace
 
@@ -372,10 +360,10 @@ void BernsteinTab::updateWeights()
         sum += v;
     m_curveLabel->setText(
         tr("At t = %1 the weights sum to %2.<br>Def 2.6: %3 = %4<br>De Casteljau: %5 = %6 (difference %7)")
-            .arg(number(tt), displaySignificant(sum, 17),
+            .arg(panelNumber(tt), displaySignificant(sum, 17),
                  QStringLiteral("Σ %1 P<sub>i</sub>").arg(basisHtml(QStringLiteral("i"), QString::number(n))),
-                 pointText(viaBernstein),
-                 QStringLiteral("P<sub>0</sub><sup>%1</sup>(t)").arg(n), pointText(viaDeCasteljau),
+                 panelPointText(viaBernstein),
+                 QStringLiteral("P<sub>0</sub><sup>%1</sup>(t)").arg(n), panelPointText(viaDeCasteljau),
                  residualText(distance(viaBernstein, viaDeCasteljau))));
     m_weightsGroup->setTitle(tr("Weights of the %n control points of the De Casteljau tab at t (Def 2.6)", nullptr, n + 1));}
 
@@ -444,7 +432,7 @@ void BernsteinTab::updateChecks()
     const QString verdictYes = tr("yes");
     auto line = [&](const QString& name, const QString& formula, const BernsteinPropertyCheck& c) {
         return tr("%1 %2 %3 — residual at t: %4; exact as polynomials: %5")
-            .arg(mark(c.exact && c.residual < kCheckTolerance), name, formula, residualText(c.residual),
+            .arg(ExactPanel::checkMark(c.exact && c.residual < kCheckTolerance), name, formula, residualText(c.residual),
                  c.exact ? verdictYes : tr("no"));
     };
     m_checkLabels[0]->setText(line(tr("Partition of unity:"),
@@ -504,7 +492,7 @@ void BernsteinTab::updateExactPanel()
                         .arg(basisHtml(QString::number(k), nText))
                         .arg(k)
                         .arg(ExactPanel::polynomialHtml(toText(bernsteinPolynomial(k, n))),
-                             pointText((*exact)[static_cast<std::size_t>(k)]),
+                             panelPointText((*exact)[static_cast<std::size_t>(k)]),
                              ExactPanel::polynomialHtml(toText(terms[static_cast<std::size_t>(k)])));
         html += QStringLiteral("</p><p><b>α(t) = %1</b></p>").arg(ExactPanel::polynomialHtml(toText(bernsteinSum(*exact))));
     }

@@ -33,11 +33,6 @@ template <class S> QString poly(const Polynomial<S>& p, const char* var = "t")
     return ExactPanel::polynomialHtml(toText(p, var));
 }
 template <class S> QString vec(const Vec2<S>& v) { return text(detail::scalarText(v)).toHtmlEscaped(); }
-QString mark(bool ok)
-{
-    return ok ? QStringLiteral("<span style=\"color:#1a7f37\">✓</span>")
-              : QStringLiteral("<span style=\"color:#c62828\">✗</span>");
-}
 QString para(const QString& html) { return QStringLiteral("<p>%1</p>").arg(html); }
 /// Escapes `plain` and writes C^2 as C<sup>2</sup> (plainText() gives back "C^2").
 QString esc(const QString& plain)
@@ -46,13 +41,12 @@ QString esc(const QString& plain)
     html.replace(QRegularExpression(QStringLiteral("\\^(\\d+|∞)")), QStringLiteral("<sup>\\1</sup>"));
     return html;
 }
-QString sub(const QString& name, int index) { return QStringLiteral("%1<sub>%2</sub>").arg(name).arg(index); }
 
 QString segmentName(int index, int count, CatmullRomEnds ends)
 {
     if (ends == CatmullRomEnds::Segment && count == 1)
         return QStringLiteral("p(t)");
-    return sub(QStringLiteral("p"), index + 1 + firstSegmentStart(ends)) + QStringLiteral("(t)");
+    return ExactPanel::subscripted(QStringLiteral("p"), index + 1 + firstSegmentStart(ends)) + QStringLiteral("(t)");
 }
 
 template <class S> QString segmentTable(const std::vector<Vec2<Polynomial<S>>>& segs, CatmullRomEnds ends)
@@ -95,19 +89,19 @@ template <class S> QString continuitySummary(const ContinuityReport<S>& report, 
     QString html;
     const int order = report.continuityOrder();
     if (order < 0)
-        html += mark(false) + QLatin1Char(' ') + CatmullRomReport::tr("not continuous").toHtmlEscaped();
+        html += ExactPanel::checkMark(false) + QLatin1Char(' ') + CatmullRomReport::tr("not continuous").toHtmlEscaped();
     else if (order >= checkedUpTo)
-        html += mark(true) + QLatin1Char(' ') +
+        html += ExactPanel::checkMark(true) + QLatin1Char(' ') +
                 esc(CatmullRomReport::tr("C^%1 at every knot").arg(order));
     else
-        html += mark(order >= 2) + QLatin1Char(' ') +
+        html += ExactPanel::checkMark(order >= 2) + QLatin1Char(' ') +
                 esc(CatmullRomReport::tr("C^%1, not C^%2").arg(order).arg(order + 1));
     html += QStringLiteral("; ");
     if (report.interpolates())
-        html += mark(true) + QLatin1Char(' ') +
+        html += ExactPanel::checkMark(true) + QLatin1Char(' ') +
                 CatmullRomReport::tr("interpolates all %n points", nullptr, report.dataPoints).toHtmlEscaped();
     else
-        html += mark(false) + QLatin1Char(' ') + CatmullRomReport::tr("does not interpolate every point").toHtmlEscaped();
+        html += ExactPanel::checkMark(false) + QLatin1Char(' ') + CatmullRomReport::tr("does not interpolate every point").toHtmlEscaped();
     html = para(html);
     QStringList lines;
     for (const auto& d : report.defects)
@@ -131,7 +125,7 @@ template <class S> QString knotTable(const PiecewisePolynomial<S>& spline, const
             const bool bad = std::any_of(report.defects.begin(), report.defects.end(), [&](const auto& d) {
                 return d.kind == DefectKind::Jump && d.knot == i && d.order == k;
             });
-            row << mark(!bad);
+            row << ExactPanel::checkMark(!bad);
         }
         rows.push_back(row);
     }
@@ -153,7 +147,7 @@ QString tangentSection(const std::vector<Vec2<Polynomial<S>>>& segs, const Ratio
     if (joins.empty()) {
         line += CatmullRomReport::tr("no interior knot").toHtmlEscaped();
     } else if (allEqual) {
-        line += mark(true) + QLatin1Char(' ') +
+        line += ExactPanel::checkMark(true) + QLatin1Char(' ') +
                 CatmullRomReport::tr("equal tangents at all %n knots (C¹)", nullptr, static_cast<int>(joins.size()))
                     .toHtmlEscaped();
         line += QStringLiteral("; ") +
@@ -161,13 +155,13 @@ QString tangentSection(const std::vector<Vec2<Polynomial<S>>>& segs, const Ratio
                                                : CatmullRomReport::tr("not C²: p″ jumps"))
                     .toHtmlEscaped();
     } else if (allParallel && !uniform) {
-        line += mark(true) + QLatin1Char(' ') +
+        line += ExactPanel::checkMark(true) + QLatin1Char(' ') +
                 CatmullRomReport::tr("parallel tangents at all %n knots (G¹), not equal ones (C¹) in the local "
                                      "parameters",
                                      nullptr, static_cast<int>(joins.size()))
                     .toHtmlEscaped();
     } else {
-        line += mark(false) + QLatin1Char(' ') + CatmullRomReport::tr("the tangents differ at some knots").toHtmlEscaped();
+        line += ExactPanel::checkMark(false) + QLatin1Char(' ') + CatmullRomReport::tr("the tangents differ at some knots").toHtmlEscaped();
     }
     QString html = para(line);
     if (!withTable || joins.empty())
@@ -178,11 +172,11 @@ QString tangentSection(const std::vector<Vec2<Polynomial<S>>>& segs, const Ratio
         const auto& v = joins[static_cast<std::size_t>(j)];
         const int knot = (v.fromSegment + firstSegmentStart(ends) + 1) % std::max(pointCount, 1);
         const int from = v.fromSegment + 1 + firstSegmentStart(ends), to = v.toSegment + 1 + firstSegmentStart(ends);
-        QString verdict = mark(v.equal);
+        QString verdict = ExactPanel::checkMark(v.equal);
         if (!v.equal && v.parallel)
-            verdict += QStringLiteral(" G¹ ") + mark(true);
-        rows.push_back({sub(QStringLiteral("q"), knot), sub(QStringLiteral("p"), from) + QStringLiteral("′(1) = ") + vec(v.left),
-                        sub(QStringLiteral("p"), to) + QStringLiteral("′(0) = ") + vec(v.right), verdict});
+            verdict += QStringLiteral(" G¹ ") + ExactPanel::checkMark(true);
+        rows.push_back({ExactPanel::subscripted(QStringLiteral("q"), knot), ExactPanel::subscripted(QStringLiteral("p"), from) + QStringLiteral("′(1) = ") + vec(v.left),
+                        ExactPanel::subscripted(QStringLiteral("p"), to) + QStringLiteral("′(0) = ") + vec(v.right), verdict});
     }
     html += ExactPanel::table({CatmullRomReport::tr("knot"), CatmullRomReport::tr("end of the segment before"),
                                CatmullRomReport::tr("start of the segment after"), QString()},
@@ -207,10 +201,10 @@ QString bezierTable(const std::vector<BezierSegment<S>>& segments, const QString
     const int shown = std::min(count, CatmullRomReport::kMaxListedSegments);
     for (int i = 0; i < shown; ++i) {
         const auto& b = segments[static_cast<std::size_t>(i)];
-        rows.push_back({sub(name, i + firstName), shownPoint(b[0]), shownPoint(b[1]), shownPoint(b[2]), shownPoint(b[3])});
+        rows.push_back({ExactPanel::subscripted(name, i + firstName), shownPoint(b[0]), shownPoint(b[1]), shownPoint(b[2]), shownPoint(b[3])});
     }
-    QString html = ExactPanel::table({QString(), sub(QStringLiteral("b"), 0), sub(QStringLiteral("b"), 1),
-                                      sub(QStringLiteral("b"), 2), sub(QStringLiteral("b"), 3)},
+    QString html = ExactPanel::table({QString(), ExactPanel::subscripted(QStringLiteral("b"), 0), ExactPanel::subscripted(QStringLiteral("b"), 1),
+                                      ExactPanel::subscripted(QStringLiteral("b"), 2), ExactPanel::subscripted(QStringLiteral("b"), 3)},
                                      rows);
     if (count > shown)
         html += ExactPanel::note(CatmullRomReport::tr("… and %n more segments.", nullptr, count - shown));
@@ -304,7 +298,7 @@ QString bezierSection(const std::vector<Point>& points, const std::optional<std:
                                                       "h_i = |q_{i+1} − q_i|^α. There the curve is C¹; in the local "
                                                       "parameters the tangents are only parallel (G¹)."));
     const auto knotName = [&](int fromSegment, int offset) {
-        return sub(QStringLiteral("q"), (fromSegment + offset + 1) % std::max(count, 1));
+        return ExactPanel::subscripted(QStringLiteral("q"), (fromSegment + offset + 1) % std::max(count, 1));
     };
     html += para(QStringLiteral("<b>τ = %1</b>, %2").arg(tauText(tau), CatmullRomReport::endsName(ends).toHtmlEscaped()));
     const int offset = firstSegmentStart(ends);
@@ -328,7 +322,7 @@ QString bezierSection(const std::vector<Point>& points, const std::optional<std:
         html += para(CatmullRomReport::tr("Its graph (x, s(x)) piece by piece, x = x_i + h_i u, u ∈ [0, 1]; the "
                                           "derivatives in x.")
                          .toHtmlEscaped());
-        const auto splineKnot = [&](int fromSegment) { return sub(QStringLiteral("q"), fromSegment + 1); };
+        const auto splineKnot = [&](int fromSegment) { return ExactPanel::subscripted(QStringLiteral("q"), fromSegment + 1); };
         std::optional<PiecewisePolynomial<Rational>> exactSpline;
         if (rational)
             if (auto s = naturalCubicSpline(*rational))
@@ -373,7 +367,7 @@ QString blendingSection(const CatmullRomSettings& settings)
         const auto w = blendingFunctions(tau);
         std::vector<QStringList> rows;
         for (int j = 0; j < 4; ++j)
-            rows.push_back({sub(QStringLiteral("w"), j) + QStringLiteral("(t)"), poly(w[static_cast<std::size_t>(j)])});
+            rows.push_back({ExactPanel::subscripted(QStringLiteral("w"), j) + QStringLiteral("(t)"), poly(w[static_cast<std::size_t>(j)])});
         html += para(QStringLiteral("<b>τ = %1</b>").arg(tauText(tau))) + ExactPanel::table({}, rows);
     }
     return html;
@@ -419,7 +413,7 @@ QString example21Section(const std::vector<RPoint>& data)
     QString html = ExactPanel::heading(CatmullRomReport::tr("Ex 2.1 as printed in the thesis"));
     std::vector<QStringList> rows;
     for (int i = 0; i < printed.pieceCount(); ++i)
-        rows.push_back({sub(QStringLiteral("s"), i + 1) + QStringLiteral("(x)"), poly(printed.pieces[static_cast<std::size_t>(i)], "x")});
+        rows.push_back({ExactPanel::subscripted(QStringLiteral("s"), i + 1) + QStringLiteral("(x)"), poly(printed.pieces[static_cast<std::size_t>(i)], "x")});
     html += ExactPanel::table({}, rows);
     const auto report = checkContinuity(printed, 2, data);
     html += para(CatmullRomReport::tr("The check of Def 2.3 on the printed pieces:").toHtmlEscaped());
@@ -432,7 +426,7 @@ QString example21Section(const std::vector<RPoint>& data)
                          .arg(name, offset)
                          .toHtmlEscaped());
         html += para(CatmullRomReport::tr("Correct %1:").arg(name).toHtmlEscaped() + QStringLiteral(" ") +
-                     sub(QStringLiteral("s"), c.piece + 1) + QStringLiteral("(x) = ") +
+                     ExactPanel::subscripted(QStringLiteral("s"), c.piece + 1) + QStringLiteral("(x) = ") +
                      poly(fix.corrected.pieces[static_cast<std::size_t>(c.piece)], "x"));
     }
     if (!fix.corrections.empty()) {
@@ -458,7 +452,7 @@ QString splineSection(const std::vector<Point>& points, const std::optional<std:
         std::vector<QStringList> rows;
         const int shown = std::min(spline->pieceCount(), CatmullRomReport::kMaxListedSegments);
         for (int i = 0; i < shown; ++i)
-            rows.push_back({sub(QStringLiteral("s"), i + 1) + QStringLiteral("(x)"),
+            rows.push_back({ExactPanel::subscripted(QStringLiteral("s"), i + 1) + QStringLiteral("(x)"),
                             QStringLiteral("[%1, %2]").arg(tauText(spline->knots[static_cast<std::size_t>(i)]),
                                                            tauText(spline->knots[static_cast<std::size_t>(i) + 1])),
                             poly(spline->pieces[static_cast<std::size_t>(i)], "x")});
@@ -474,7 +468,7 @@ QString splineSection(const std::vector<Point>& points, const std::optional<std:
         std::vector<QStringList> rows;
         const int shown = std::min(spline->pieceCount(), CatmullRomReport::kMaxListedSegments);
         for (int i = 0; i < shown; ++i)
-            rows.push_back({sub(QStringLiteral("s"), i + 1), poly(spline->localPiece(i), "u")});
+            rows.push_back({ExactPanel::subscripted(QStringLiteral("s"), i + 1), poly(spline->localPiece(i), "u")});
         html += ExactPanel::table({}, rows);
         const auto report = checkContinuity(*spline, kChecked, points, kTolerance);
         html += continuitySummary(report, 2) + knotTable(*spline, report);

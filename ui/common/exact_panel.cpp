@@ -94,6 +94,17 @@ QString ExactPanel::note(const QString& text)
     return QStringLiteral("<p class=\"note\">%1</p>").arg(text.toHtmlEscaped());
 }
 
+QString ExactPanel::subscripted(const QString& name, int index)
+{
+    return QStringLiteral("%1<sub>%2</sub>").arg(name).arg(index);
+}
+
+QString ExactPanel::checkMark(bool ok)
+{
+    return ok ? QStringLiteral("<span style=\"color:#1a7f37\">✓</span>")
+              : QStringLiteral("<span style=\"color:#c62828\">✗</span>");
+}
+
 void ExactPanel::changeEvent(QEvent* event)
 {
     if (event->type() == QEvent::LanguageChange)

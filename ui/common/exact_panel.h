@@ -36,6 +36,10 @@ public:
     static QString matrix(const QString& name, const std::vector<std::vector<std::string>>& entries);
     /// A note (a slip of the thesis, a warning), set apart.
     static QString note(const QString& text);
+    /// `name` with the subscript `index` (Q<sub>2</sub>).
+    static QString subscripted(const QString& name, int index);
+    /// A check's result: a green ✓ or a red ✗.
+    static QString checkMark(bool ok);
 
 protected:
     /// The accessible name, again in the new language.

@@ -49,6 +49,20 @@ QString displayPair(const QString& x, const QString& y)
 
 QString displayPoint(double x, double y) { return displayPair(displayNumber(x), displayNumber(y)); }
 
+QString panelNumber(double v)
+{
+    if (v == 0.0 || !std::isfinite(v))
+        return QStringLiteral("0");
+    return displaySignificant(v, 6);
+}
+
+QString panelPointText(const Point& p) { return displayPair(panelNumber(p.x), panelNumber(p.y)); }
+
+QString panelPointText(const Vec2<Rational>& p)
+{
+    return QStringLiteral("(%1, %2)").arg(QString::fromStdString(toString(p.x)), QString::fromStdString(toString(p.y)));
+}
+
 QString typedToC(const QString& text)
 {
     QString s = text.trimmed();

@@ -12,6 +12,7 @@
 /// a point in English, never a group separator. In Catalan a typed number may use either
 /// a comma or a point; a fraction such as 1/3 is read in both languages.
 
+#include "core/base/vec2.h"
 #include "core/exact/rational.h"
 
 #include <QLocale>
@@ -41,6 +42,13 @@ QString displayText(const std::string& cText);
 QString displayPair(const QString& x, const QString& y);
 /// displayPair of two doubles, each the shortest round-trip text.
 QString displayPoint(double x, double y);
+/// A double in an exact panel beside fractions: six significant digits, and 0 for zero and
+/// for what is not finite.
+QString panelNumber(double v);
+/// A point of doubles in an exact panel, each coordinate a panelNumber.
+QString panelPointText(const Point& p);
+/// A point of fractions in an exact panel: "(1/2, 3)".
+QString panelPointText(const Vec2<Rational>& p);
 
 /// A whole number ≥ 0 in Unicode subscript or superscript digits, for names in plain text
 /// (legends, readouts): "B" + subscriptDigits(2) + superscriptDigits(5) is B₂⁵.

@@ -81,18 +81,7 @@ const QColor kCuspColour(0xc0, 0x20, 0x20);
 /// Ex 2.2-like default: a cubic with four points.
 std::vector<Point> defaultPoints() { return {{0, 0}, {1, 2}, {3, 2}, {4, 0}}; }
 
-QString number(double v)
-{
-    if (v == 0.0 || !std::isfinite(v))
-        return QStringLiteral("0");
-    return displaySignificant(v, 6);
-}
 
-QString pointText(const Point& p) { return displayPair(number(p.x), number(p.y)); }
-QString pointText(const RPoint& p)
-{
-    return QStringLiteral("(%1, %2)").arg(QString::fromStdString(toString(p.x)), QString::fromStdString(toString(p.y)));
-}
 
 /// Whether every level P_i^r(t) and c′(t) fits in a double (Def 2.4): control points
 /// near ±1e308 make n (P_1 − P_0) or a level overflow to inf, or inf − inf to NaN.
@@ -109,7 +98,7 @@ template <class P> QString joinPoints(const std::vector<P>& points)
 {
     QStringList parts;
     for (const P& p : points)
-        parts << pointText(p);
+        parts << panelPointText(p);
     return parts.join(QStringLiteral(", "));
 }
 
@@ -601,7 +590,7 @@ CanvasLegend DeCasteljauTab::legend() const
     if (m_showOsculating && n >= 1) {
         if (m_curvature.radius)
             legend.entries.push_back({kCircleColour, Qt::SolidLine,
-                                      tr("osculating circle, r = 1/|κ| = %1").arg(number(*m_curvature.radius))});
+                                      tr("osculating circle, r = 1/|κ| = %1").arg(panelNumber(*m_curvature.radius))});
         else if (m_curvature.curvature)
             legend.entries.push_back({kCircleColour, Qt::NoPen, tr("no osculating circle: κ(t) = 0")});
         else
@@ -609,7 +598,7 @@ CanvasLegend DeCasteljauTab::legend() const
     }
     if (m_showComb && n >= 1 && !m_comb.empty())
         legend.entries.push_back({curvatureCombColor(), Qt::SolidLine,
-                                  tr("curvature comb: teeth |κ| × %1").arg(number(m_comb.scale))});
+                                  tr("curvature comb: teeth |κ| × %1").arg(panelNumber(m_comb.scale))});
     if (m_showBox && n >= 0)
         legend.entries.push_back({kBoxColour, Qt::DashDotLine,
                                   tr("bounding box, ◆ extrema of x and y")});
@@ -781,14 +770,14 @@ QString DeCasteljauTab::readout() const
 {
     if (m_editor->points().empty() || !m_arc)
         return QString();
-    const QString lengths = tr("s(t) = %1 of L = %2").arg(number(arcLengthAtT()), number(totalLength()));
+    const QString lengths = tr("s(t) = %1 of L = %2").arg(panelNumber(arcLengthAtT()), panelNumber(totalLength()));
     QString kappa;
     if (!m_curvature.curvature)
         kappa = tr("κ(t) undefined: c′(t) = 0 (a cusp, or coincident control points)");
     else if (*m_curvature.curvature == 0.0)
         kappa = tr("κ(t) = 0: straight here, the radius is infinite");
     else
-        kappa = tr("κ(t) = %1 (radius %2)").arg(number(*m_curvature.curvature), number(m_curvature.radius.value_or(0)));
+        kappa = tr("κ(t) = %1 (radius %2)").arg(panelNumber(*m_curvature.curvature), panelNumber(m_curvature.radius.value_or(0)));
     return lengths + QStringLiteral(" · ") + kappa;
 }
 
@@ -1103,15 +1092,15 @@ void DeCasteljauTab::updateExactPanel()
         const auto& table = *exactTable;
         html += ExactPanel::heading(tr("De Casteljau's triangle at t = %1 (Def 2.4)").arg(QString::fromStdString(toString(*exactT))));
         html += triangleHtml(n, n, kNumericLevelsPerTable, [&table](int r, int i) {
-            return pointText(table.levels[static_cast<std::size_t>(r)][static_cast<std::size_t>(i)]);
+            return panelPointText(table.levels[static_cast<std::size_t>(r)][static_cast<std::size_t>(i)]);
         });
         html += QStringLiteral("<p>c(t) = %1 = %2<br>c′(t) = %3</p>")
-                    .arg(levelName(QStringLiteral("0"), QString::number(n)), pointText(table.point()), pointText(table.tangent()));
+                    .arg(levelName(QStringLiteral("0"), QString::number(n)), panelPointText(table.point()), panelPointText(table.tangent()));
         if (m_showSplit)
             html += QStringLiteral("<p>%1</p>").arg(tr("Split at t: [0, t] has control points %1; [t, 1] has %2.")
                                                         .arg(joinPoints(table.leftHalf()), joinPoints(table.rightHalf())));
     } else {
-        const QString tText = exactT ? QString::fromStdString(toString(*exactT)) : number(m_t);
+        const QString tText = exactT ? QString::fromStdString(toString(*exactT)) : panelNumber(m_t);
         html += ExactPanel::heading(tr("De Casteljau's triangle at t = %1 (Def 2.4)").arg(tText));
         if (!fitsInDoubles(m_levels)) {
             // No wrong number: the values themselves do not exist in double precision.
@@ -1123,12 +1112,12 @@ void DeCasteljauTab::updateExactPanel()
         }
         if (n <= kMaxTableDegree)
             html += triangleHtml(n, n, kNumericLevelsPerTable, [this](int r, int i) {
-                return pointText(m_levels.levels[static_cast<std::size_t>(r)][static_cast<std::size_t>(i)]);
+                return panelPointText(m_levels.levels[static_cast<std::size_t>(r)][static_cast<std::size_t>(i)]);
             });
         else
             html += ExactPanel::note(tr("The triangle is shown up to degree %1; this curve has degree %2.").arg(kMaxTableDegree).arg(n));
         html += QStringLiteral("<p>c(t) = %1 = %2<br>c′(t) = %3</p>")
-                    .arg(levelName(QStringLiteral("0"), QString::number(n)), pointText(m_levels.point()), pointText(m_levels.tangent()));
+                    .arg(levelName(QStringLiteral("0"), QString::number(n)), panelPointText(m_levels.point()), panelPointText(m_levels.tangent()));
         if (m_showSplit && n <= kMaxTableDegree)
             html += QStringLiteral("<p>%1</p>").arg(tr("Split at t: [0, t] has control points %1; [t, 1] has %2.")
                                                         .arg(joinPoints(m_levels.leftHalf()), joinPoints(m_levels.rightHalf())));
@@ -1146,7 +1135,7 @@ QString DeCasteljauTab::exactCurvatureHtml() const
     if (points.empty() || !m_arc)
         return QString();
     QString html = ExactPanel::heading(tr("Arc length and curvature at t"));
-    html += QStringLiteral("<p>%1</p>").arg(tr("s(t) = %1, L = %2").arg(number(arcLengthAtT()), number(totalLength())));
+    html += QStringLiteral("<p>%1</p>").arg(tr("s(t) = %1, L = %2").arg(panelNumber(arcLengthAtT()), panelNumber(totalLength())));
     // κ = (x′y″ − y′x″)/|c′|³: exact as k/(d√d) with k and d = |c′|² fractions, for rational points and t.
     const int n = static_cast<int>(points.size()) - 1;
     const auto exactPoints = smallRationalPoints(points);
@@ -1166,9 +1155,9 @@ QString DeCasteljauTab::exactCurvatureHtml() const
         else if (small(k.numerator) && small(k.speedSquared))
             if (const auto value = exactCurvatureText(k))
                 exact = tr("c′(t) = %1, c″(t) = %2<br>x′y″ − y′x″ = %3, |c′(t)|² = %4<br>κ(t) = (x′y″ − y′x″)/|c′|³ = %5 ≈ %6")
-                            .arg(pointText(d1), pointText(d2), text(k.numerator), text(k.speedSquared),
+                            .arg(panelPointText(d1), panelPointText(d2), text(k.numerator), text(k.speedSquared),
                                  QString::fromStdString(*value),
-                                 number(k.numerator.get_d() / std::pow(k.speedSquared.get_d(), 1.5)));
+                                 panelNumber(k.numerator.get_d() / std::pow(k.speedSquared.get_d(), 1.5)));
     }
     if (exact)
         html += QStringLiteral("<p>%1</p>").arg(*exact);

@@ -48,7 +48,6 @@ std::vector<std::vector<std::string>> entries(const RationalMatrix& m)
 
 QString line(const QString& html) { return QStringLiteral("%1<br>").arg(html); }
 
-QString sub(const QString& name, int index) { return QStringLiteral("%1<sub>%2</sub>").arg(name).arg(index); }
 
 /// Whether the data are the thesis's Q_0..Q_4 of Ex 2.7–2.10.
 bool isThesisData(const std::optional<std::vector<RPoint>>& rational)
@@ -87,9 +86,9 @@ QString FitExactView::html(const Input& in)
             const double approx = norm(b - a);
             const QString value = d[j] ? QString::fromStdString(toString(*d[j])) : decimal(approx);
             const bool isRational = d[j] && d[j]->radicand == 1;
-            html += line(isRational ? QStringLiteral("%1 = %2").arg(sub(QStringLiteral("d"), static_cast<int>(j) + 1), value)
+            html += line(isRational ? QStringLiteral("%1 = %2").arg(ExactPanel::subscripted(QStringLiteral("d"), static_cast<int>(j) + 1), value)
                                     : QStringLiteral("%1 = %2 ≈ %3")
-                                          .arg(sub(QStringLiteral("d"), static_cast<int>(j) + 1), value, decimal(approx)));
+                                          .arg(ExactPanel::subscripted(QStringLiteral("d"), static_cast<int>(j) + 1), value, decimal(approx)));
         }
         if (thesisData && in.parametrization == Parametrization::ChordLength)
             html += ExactPanel::note(tr("The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has "
@@ -135,7 +134,7 @@ QString FitExactView::html(const Input& in)
         html += ExactPanel::heading(tr("Parameters t_i"));
         QStringList ts;
         for (std::size_t i = 0; i < exact->params.size(); ++i)
-            ts << QStringLiteral("%1 = %2").arg(sub(QStringLiteral("t"), static_cast<int>(i)),
+            ts << QStringLiteral("%1 = %2").arg(ExactPanel::subscripted(QStringLiteral("t"), static_cast<int>(i)),
                                                 QString::fromStdString(toString(exact->params[i])));
         html += QStringLiteral("<p>%1</p>").arg(ts.join(QStringLiteral(", ")));
         if (in.showMatrices) {
@@ -150,7 +149,7 @@ QString FitExactView::html(const Input& in)
         for (int j = 0; j < exact->P.rows(); ++j) {
             P.emplace_back(exact->P(j, 0), exact->P(j, 1));
             html += line(QStringLiteral("%1 = (%2, %3)")
-                             .arg(sub(QStringLiteral("P"), j), QString::fromStdString(toString(exact->P(j, 0))),
+                             .arg(ExactPanel::subscripted(QStringLiteral("P"), j), QString::fromStdString(toString(exact->P(j, 0))),
                                   QString::fromStdString(toString(exact->P(j, 1)))));
         }
         html += ExactPanel::heading(tr("Fitted curve α(t) = Σ Bⱼⁿ(t) Pⱼ"));
@@ -175,7 +174,7 @@ QString FitExactView::html(const Input& in)
         html += ExactPanel::heading(tr("Parameters t_i"));
         QStringList ts;
         for (std::size_t i = 0; i < fit.params.size(); ++i)
-            ts << QStringLiteral("%1 = %2").arg(sub(QStringLiteral("t"), static_cast<int>(i)), decimal(fit.params[i]));
+            ts << QStringLiteral("%1 = %2").arg(ExactPanel::subscripted(QStringLiteral("t"), static_cast<int>(i)), decimal(fit.params[i]));
         html += QStringLiteral("<p>%1</p>").arg(ts.join(QStringLiteral(", ")));
     }
     if (in.showMatrices) {
@@ -206,7 +205,7 @@ QString FitExactView::html(const Input& in)
     html += ExactPanel::heading(tr("Control points P"));
     for (std::size_t j = 0; j < fit.controlPoints.size(); ++j)
         html += line(QStringLiteral("%1 = %2")
-                         .arg(sub(QStringLiteral("P"), static_cast<int>(j)),
+                         .arg(ExactPanel::subscripted(QStringLiteral("P"), static_cast<int>(j)),
                               displayPair(decimal(fit.controlPoints[j].x), decimal(fit.controlPoints[j].y))));
     constexpr int kMaxPowerDegree = 12;
     if (n <= kMaxPowerDegree) {

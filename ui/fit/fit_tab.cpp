@@ -107,7 +107,8 @@ public:
     QSize minimumSizeHint() const override { return sizeHint(); }
 };
 
-QString number(double v) { return displaySignificant(v, 6); }
+/// A fitted value in a label: six significant digits.
+QString fittedValueText(double v) { return displaySignificant(v, 6); }
 
 QRectF boundsOf(const std::vector<Point>& a, const std::vector<Point>& b)
 {
@@ -650,12 +651,12 @@ void FitTab::updateReadouts()
     if (!m_refusal.isEmpty())
         warnings << m_refusal;
     if (m_fit) {
-        m_sseLabel->setText(tr("Squared error Σ‖Q_i − α(t_i)‖²: %1").arg(number(m_fit->sse)));
-        m_rmsLabel->setText(tr("RMS error √(Σ/(k+1)): %1").arg(number(m_fit->rms)));
-        m_maxLabel->setText(tr("Largest error max‖Q_i − α(t_i)‖: %1").arg(number(m_fit->maxError)));
+        m_sseLabel->setText(tr("Squared error Σ‖Q_i − α(t_i)‖²: %1").arg(fittedValueText(m_fit->sse)));
+        m_rmsLabel->setText(tr("RMS error √(Σ/(k+1)): %1").arg(fittedValueText(m_fit->rms)));
+        m_maxLabel->setText(tr("Largest error max‖Q_i − α(t_i)‖: %1").arg(fittedValueText(m_fit->maxError)));
         m_condLabel->setText(m_fit->cond >= std::numeric_limits<double>::max()
                                  ? tr("Condition number cond₂(M): infinite (M is singular)")
-                                 : tr("Condition number cond₂(M): %1").arg(number(m_fit->cond)));
+                                 : tr("Condition number cond₂(M): %1").arg(fittedValueText(m_fit->cond)));
         m_correctionsLabel->setVisible(m_settings.correctParameters);
         m_correctionsLabel->setText(tr("Parameter corrections that lowered the error: %1").arg(m_fit->corrections));
     } else {
@@ -673,7 +674,7 @@ void FitTab::updateReadouts()
         m_fit ? tr("Least-squares Bézier curve of degree %1 through %n data point(s); squared error %2.", nullptr,
                    static_cast<int>(q.size()))
                     .arg(m_settings.degree)
-                    .arg(number(m_fit->sse))
+                    .arg(fittedValueText(m_fit->sse))
               : tr("No fit: %1").arg(m_fitError));
     m_condLabel->setVisible(m_fit.has_value());
     // The core decides what to warn about (fit_warning.h); the tab only words it.
@@ -686,17 +687,17 @@ void FitTab::updateReadouts()
         case FitWarningCode::IllConditioned:
             warnings << tr("⚠ Ill-conditioned: cond₂(M) ≈ %1. The control points are very sensitive to the data; "
                            "lower the degree.")
-                            .arg(number(w.cond));
+                            .arg(fittedValueText(w.cond));
             break;
         case FitWarningCode::HighDegree:
             warnings << tr("⚠ High degree n = %1: the Bernstein basis grows ill-conditioned (cond₂(M) ≈ %2); a "
                            "lower degree or a spline is usually the better model.")
-                            .arg(w.degree).arg(number(w.cond));
+                            .arg(w.degree).arg(fittedValueText(w.cond));
             break;
         case FitWarningCode::NormalEquationsSquare:
             warnings << tr("⚠ The normal equations square the condition number: cond₂(MᵀM) ≈ %1, so about %2 of "
                            "the 16 significant digits may be lost. Choose QR.")
-                            .arg(number(w.cond * w.cond))
+                            .arg(fittedValueText(w.cond * w.cond))
                             .arg(normalEquationsDigitsLost(w.cond));
             break;
         case FitWarningCode::RepeatedParameters:

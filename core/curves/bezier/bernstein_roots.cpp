@@ -1,3 +1,4 @@
+#include "core/base/math_constants.h"
 #include "core/curves/bezier/bernstein_roots.h"
 
 #include <algorithm>
@@ -10,7 +11,6 @@ namespace granota {
 
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 /// Deepest halving: 2⁻¹⁰⁰ is below the spacing of doubles anywhere but right next to 0.
 constexpr int kMaxDepth = 100;
 /// Above this degree C(n, i) could overflow in the Horner-like scheme: De Casteljau instead.
@@ -188,7 +188,7 @@ double polishRoot(const double* b, int n, double a, double w, int leftSign)
         else
             hi = u;
         const double t = a + u * w;
-        const double spacing = kEps * std::max(std::fabs(t), std::numeric_limits<double>::min());
+        const double spacing = kMachineEpsilon * std::max(std::fabs(t), std::numeric_limits<double>::min());
         if (d != 0.0) {
             const double newton = u - f / d;
             const double step = std::fabs(newton - u) * w;
@@ -239,7 +239,7 @@ public:
 
     /// The rounding error of a value of p formed from coefficients at most `magnitude`:
     /// n + 1 roundings per level of De Casteljau, with a safety factor 4.
-    double toleranceFor(double magnitude) const { return 4.0 * (n_ + 1) * kEps * magnitude; }
+    double toleranceFor(double magnitude) const { return 4.0 * (n_ + 1) * kMachineEpsilon * magnitude; }
 
     void run(double* b, double a, double w, int depth)
     {
@@ -459,7 +459,7 @@ BernsteinRoots bernsteinRoots(const std::vector<double>& coefficients)
         if (!merged.empty()) {
             FoundRoot& last = merged.back();
             const double gap = r.t - last.t;
-            bool same = gap <= std::max(r.uncertainty, last.uncertainty) + 4.0 * kEps * std::max(1e-300, r.t);
+            bool same = gap <= std::max(r.uncertainty, last.uncertainty) + 4.0 * kMachineEpsilon * std::max(1e-300, r.t);
             // Only close neighbours (a touching zero is blurred over about √ε, not more): a wide
             // stretch where p is below rounding must not swallow the roots beyond it.
             if (!same && !(last.known && r.known) && gap <= 1e-5) {
@@ -485,7 +485,7 @@ BernsteinRoots bernsteinRoots(const std::vector<double>& coefficients)
     double maxAbs = 0.0;
     for (double c : coefficients)
         maxAbs = std::max(maxAbs, std::fabs(c));
-    const double tolerance = 4.0 * (n + 1) * kEps * maxAbs;
+    const double tolerance = 4.0 * (n + 1) * kMachineEpsilon * maxAbs;
     for (std::size_t k = 0; k < merged.size(); ++k) {
         FoundRoot& r = merged[k];
         if (r.known)
@@ -499,7 +499,7 @@ BernsteinRoots bernsteinRoots(const std::vector<double>& coefficients)
         const double leftRoom = k > 0 ? 0.5 * (r.t - merged[k - 1].t) : r.t;
         const double rightRoom = k + 1 < merged.size() ? 0.5 * (merged[k + 1].t - r.t) : 1.0 - r.t;
         const double room = std::min(leftRoom, rightRoom);
-        for (double h = std::max(2.0 * r.uncertainty, 64.0 * kEps * std::max(r.t, 1e-300)); h <= room; h *= 4.0) {
+        for (double h = std::max(2.0 * r.uncertainty, 64.0 * kMachineEpsilon * std::max(r.t, 1e-300)); h <= room; h *= 4.0) {
             const double fl = bernsteinValue(coefficients, r.t - h);
             const double fr = bernsteinValue(coefficients, r.t + h);
             if (std::fabs(fl) > tolerance && std::fabs(fr) > tolerance) {

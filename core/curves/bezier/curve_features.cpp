@@ -1,3 +1,4 @@
+#include "core/base/math_constants.h"
 #include "core/curves/bezier/curve_features.h"
 
 #include "core/curves/bezier/bernstein_roots.h"
@@ -11,7 +12,6 @@ namespace granota {
 
 namespace {
 
-constexpr double kEps = std::numeric_limits<double>::epsilon();
 /// |c′(t)| below this fraction of the hodograph's size counts as c′ = 0 (a cusp).
 constexpr double kCuspTolerance = 1e-9;
 
@@ -170,7 +170,7 @@ bool straightWithinRounding(const std::vector<Point>& A, double size, const std:
         return true;
     const int m = static_cast<int>(A.size()) - 1;
     // A generous bound: (m + 1)² terms of size at most |A_i||A_j| ≤ size², each rounded.
-    const double bound = 64.0 * (m + 1) * (m + 1) * kEps * size * size;
+    const double bound = 64.0 * (m + 1) * (m + 1) * kMachineEpsilon * size * size;
     return std::all_of(D.begin(), D.end(), [bound](double d) { return std::fabs(d) <= bound; });
 }
 

@@ -79,11 +79,6 @@ template <class S> int countDistinct(const std::vector<S>& t)
     return static_cast<int>(std::unique(sorted.begin(), sorted.end()) - sorted.begin());
 }
 
-std::string sci(double v)
-{
-    return formatSignificant(v, 2);
-}
-
 std::string pointsNeeded(int degree)
 {
     return "degree " + std::to_string(degree) + " has " + std::to_string(degree + 1)
@@ -180,12 +175,12 @@ Expected<Solution> solve(const ScaledPoints& data, const std::vector<double>& t,
         if (llt.info() != Eigen::Success)
             return makeError(ErrorCode::Singular,
                              "the Cholesky factorisation of MᵀM failed: MᵀM is numerically singular (cond₂(M) ≈ "
-                                 + sci(s.cond) + ", so cond₂(MᵀM) ≈ " + sci(s.cond * s.cond)
+                                 + formatSignificant(s.cond, 2) + ", so cond₂(MᵀM) ≈ " + formatSignificant(s.cond * s.cond, 2)
                                  + "). Use the qr or svd solver.");
         P = llt.solve(MtQ);
         if (!P.allFinite())
             return makeError(ErrorCode::Singular, "the normal equations gave a non-finite solution (cond₂(MᵀM) ≈ "
-                                                      + sci(s.cond * s.cond) + "). Use the qr or svd solver.");
+                                                      + formatSignificant(s.cond * s.cond, 2) + "). Use the qr or svd solver.");
         if (s.cond > kNormalEquationsCond) {
             FitWarning w;
             w.code = FitWarningCode::NormalEquationsSquare;

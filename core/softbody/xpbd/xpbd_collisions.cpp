@@ -74,7 +74,8 @@ void staticSurfaceFriction(Point& x, const Point& xPrev, const Point& n, double 
     x -= Point(k * t.x, k * t.y);
 }
 
-Point unit(const Point& d)
+/// The unit vector along `d`; straight up (−y) for a zero vector.
+Point unitOrUp(const Point& d)
 {
     const double l = std::sqrt(dot(d, d));
     return l > 0 ? Point(d.x / l, d.y / l) : Point(0, -1);
@@ -123,7 +124,7 @@ void solveWalls(Point* x, const Point* xPrev, const double* w, Point* contactNor
         p.x = std::clamp(p.x, 0.0, maxX);
         p.y = std::clamp(p.y, 0.0, maxY);
         x[i] = p;
-        contactNormal[i] = unit(Point(dx == 0 ? 0.0 : std::copysign(1.0, dx), dy == 0 ? 0.0 : std::copysign(1.0, dy)));
+        contactNormal[i] = unitOrUp(Point(dx == 0 ? 0.0 : std::copysign(1.0, dx), dy == 0 ? 0.0 : std::copysign(1.0, dy)));
     }
 }
 
@@ -155,7 +156,7 @@ bool solveObstacle(const XpbdObstacle& o, const Point* pts, Point& x, const Poin
         if (segmentsCross(xPrev, x, a, b)) {
             // Went through the core line within one substep: back to the side it came from.
             const Point t = b - a;
-            n = unit(Point(t.y, -t.x));
+            n = unitOrUp(Point(t.y, -t.x));
             if (dot(n, xPrev - a) < 0)
                 n = -n;
         } else if (dist < reach) {
@@ -163,7 +164,7 @@ bool solveObstacle(const XpbdObstacle& o, const Point* pts, Point& x, const Poin
                 n = Point(d.x / dist, d.y / dist);
             } else { // on the core line: the side of the substep's start, else up
                 const Point t = b - a;
-                n = unit(Point(t.y, -t.x));
+                n = unitOrUp(Point(t.y, -t.x));
                 if (dot(n, xPrev - a) < 0)
                     n = -n;
             }
@@ -185,7 +186,7 @@ bool solveObstacle(const XpbdObstacle& o, const Point* pts, Point& x, const Poin
         } else { // on the boundary: the edge's outward normal
             const Point t = poly[bp.edge + 1 == o.count ? 0 : bp.edge + 1] - poly[bp.edge];
             const double sign = signedAreaSign(poly, o.count);
-            n = unit(Point(sign * t.y, -sign * t.x));
+            n = unitOrUp(Point(sign * t.y, -sign * t.x));
         }
         target = bp.q + Point(margin * n.x, margin * n.y);
     }
@@ -224,7 +225,7 @@ bool solvePointInBody(Point* x, const double* w, int p, const Point& fixedPoint,
         depth = inside ? bp.dist + margin : margin - bp.dist;
     } else {
         const Point t = x[e1] - x[e0];
-        n = unit(Point(orientation * t.y, -orientation * t.x));
+        n = unitOrUp(Point(orientation * t.y, -orientation * t.x));
         depth = margin;
     }
     const double s = bp.s;
