@@ -9,7 +9,7 @@ PKGS=(
   qt6-base-dev qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools qt6-svg-dev
   qt6-translations-l10n libqcustomplot-dev libeigen3-dev libgmp-dev
   libbenchmark-dev libgl-dev appstream desktop-file-utils nlohmann-json3-dev
-  locales clang libclang-rt-14-dev
+  locales clang clang-format libclang-rt-14-dev
   xvfb xauth x11-utils openbox xdotool
   # test_gui_tikz_latex compiles the TikZ exports with pdflatex, in an article and in beamer:
   # LaTeX, beamer (latex-recommended) and pgf/TikZ (pictures). About 64 MB to download,
