@@ -65,7 +65,8 @@ int main(int argc, char* argv[])
     QCommandLineOption presentOption(QStringLiteral("presentation"), say("Start in presentation mode."));
     QCommandLineOption screenshotOption(QStringLiteral("screenshot"), say("Render the window (1280x800) to FILE.png and exit."),
                                         QStringLiteral("FILE"));
-    QCommandLineOption sizeOption(QStringLiteral("size"), say("Window size WxH (a screenshot's, else the window's), e.g. 800x570."),
+    QCommandLineOption sizeOption(QStringLiteral("size"),
+                                  say("Window size WxH (a screenshot's, else the window's), e.g. 800x570."),
                                   QStringLiteral("WxH"));
     QCommandLineOption plotsOption(QStringLiteral("plots"),
                                    say("Show the frog's plots over time: energy, area, stretch, contacts or phase."),
@@ -133,8 +134,10 @@ int main(int argc, char* argv[])
     if (parser.isSet(plotsOption)) {
         using View = granota::ui::FrogPlotPanel::View;
         const QString name = parser.value(plotsOption);
-        const std::pair<const char*, View> views[] = {{"energy", View::Energy},     {"area", View::AreaError},
-                                                      {"stretch", View::Stretch},   {"contacts", View::Contacts},
+        const std::pair<const char*, View> views[] = {{"energy", View::Energy},
+                                                      {"area", View::AreaError},
+                                                      {"stretch", View::Stretch},
+                                                      {"contacts", View::Contacts},
                                                       {"phase", View::Phase}};
         const auto found = std::find_if(std::begin(views), std::end(views),
                                         [&](const auto& v) { return name == QLatin1String(v.first); });

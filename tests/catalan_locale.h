@@ -10,14 +10,12 @@
 #include <string>
 
 inline constexpr const char* kCatalanLocale = "ca_ES.UTF-8";
-inline constexpr const char* kMissingCatalan =
-    "the ca_ES.UTF-8 locale is missing: generate it (locale-gen), see .ci/deps.sh";
+inline constexpr const char* kMissingCatalan = "the ca_ES.UTF-8 locale is missing: generate it (locale-gen), see .ci/deps.sh";
 
 /// The environment of a process started on a Catalan desktop.
 inline QStringList catalanEnvironment()
 {
-    return {QStringLiteral("LANG=ca_ES.UTF-8"), QStringLiteral("LC_ALL=ca_ES.UTF-8"),
-            QStringLiteral("LANGUAGE=ca")};
+    return {QStringLiteral("LANG=ca_ES.UTF-8"), QStringLiteral("LC_ALL=ca_ES.UTF-8"), QStringLiteral("LANGUAGE=ca")};
 }
 
 /// Switches this process's C locale to Catalan; true when it took and has a decimal comma.

@@ -58,7 +58,8 @@ private slots:
         const RPoly t = RPoly::identity(), one(1);
         for (int n = 1; n <= 12; ++n)
             for (int i = 0; i <= n; ++i)
-                QCOMPARE(bernsteinPolynomial(i, n), (one - t) * bernsteinPolynomial(i, n - 1) + t * bernsteinPolynomial(i - 1, n - 1));
+                QCOMPARE(bernsteinPolynomial(i, n),
+                         (one - t) * bernsteinPolynomial(i, n - 1) + t * bernsteinPolynomial(i - 1, n - 1));
     }
 
     void partitionOfUnityAndSymmetry()
@@ -119,9 +120,11 @@ private slots:
         QTest::addColumn<QString>("points");
         QTest::addColumn<QString>("x");
         QTest::addColumn<QString>("y");
-        QTest::newRow("Ex 2.5") << "2,3;-1,8;-5,-3;3,0;-7,-2" << "2 - 12t - 6t^2 + 52t^3 - 43t^4"
+        QTest::newRow("Ex 2.5") << "2,3;-1,8;-5,-3;3,0;-7,-2"
+                                << "2 - 12t - 6t^2 + 52t^3 - 43t^4"
                                 << "3 + 20t - 96t^2 + 120t^3 - 49t^4";
-        QTest::newRow("Ex 2.6") << "1,7;0,-3;-4,-2;8,0;1,7" << "1 - 4t - 18t^2 + 76t^3 - 54t^4"
+        QTest::newRow("Ex 2.6") << "1,7;0,-3;-4,-2;8,0;1,7"
+                                << "1 - 4t - 18t^2 + 76t^3 - 54t^4"
                                 << "7 - 40t + 66t^2 - 40t^3 + 14t^4";
     }
     void examples25and26()

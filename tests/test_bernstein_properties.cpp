@@ -102,14 +102,16 @@ private slots:
     // Ex 2.5: the five terms as the thesis prints them, and their sum.
     void example25Terms()
     {
-        const std::vector<RPoint> p = {{Rational(2), Rational(3)}, {Rational(-1), Rational(8)}, {Rational(-5), Rational(-3)},
-                                       {Rational(3), Rational(0)}, {Rational(-7), Rational(-2)}};
+        const std::vector<RPoint> p = {{Rational(2), Rational(3)},
+                                       {Rational(-1), Rational(8)},
+                                       {Rational(-5), Rational(-3)},
+                                       {Rational(3), Rational(0)},
+                                       {Rational(-7), Rational(-2)}};
         const auto terms = bernsteinTerms(p);
         QCOMPARE(terms.size(), std::size_t(5));
         QCOMPARE(QString::fromStdString(toText(terms[0])),
                  QString("(2 - 8t + 12t^2 - 8t^3 + 2t^4, 3 - 12t + 18t^2 - 12t^3 + 3t^4)"));
-        QCOMPARE(QString::fromStdString(toText(terms[1])),
-                 QString("(-4t + 12t^2 - 12t^3 + 4t^4, 32t - 96t^2 + 96t^3 - 32t^4)"));
+        QCOMPARE(QString::fromStdString(toText(terms[1])), QString("(-4t + 12t^2 - 12t^3 + 4t^4, 32t - 96t^2 + 96t^3 - 32t^4)"));
         QCOMPARE(QString::fromStdString(toText(terms[2])), QString("(-30t^2 + 60t^3 - 30t^4, -18t^2 + 36t^3 - 18t^4)"));
         QCOMPARE(QString::fromStdString(toText(terms[3])), QString("(12t^3 - 12t^4, 0)"));
         QCOMPARE(QString::fromStdString(toText(terms[4])), QString("(-7t^4, -2t^4)"));
@@ -120,8 +122,11 @@ private slots:
     // Ex 2.6, and Def 2.6 agrees with the power basis of De Casteljau's curve.
     void example26Sum()
     {
-        const std::vector<RPoint> p = {{Rational(1), Rational(7)}, {Rational(0), Rational(-3)}, {Rational(-4), Rational(-2)},
-                                       {Rational(8), Rational(0)}, {Rational(1), Rational(7)}};
+        const std::vector<RPoint> p = {{Rational(1), Rational(7)},
+                                       {Rational(0), Rational(-3)},
+                                       {Rational(-4), Rational(-2)},
+                                       {Rational(8), Rational(0)},
+                                       {Rational(1), Rational(7)}};
         QCOMPARE(QString::fromStdString(toText(bernsteinTerms(p)[1])), QString("(0, -12t + 36t^2 - 36t^3 + 12t^4)"));
         QCOMPARE(QString::fromStdString(toText(bernsteinSum(p))),
                  QString("(1 - 4t - 18t^2 + 76t^3 - 54t^4, 7 - 40t + 66t^2 - 40t^3 + 14t^4)"));

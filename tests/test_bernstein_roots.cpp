@@ -215,8 +215,8 @@ private slots:
             for (int e = 0; e < extra; ++e)
                 roots.push_back(e % 2 ? frac(-(e + 1), 3) : frac(e + 4, 3));
             const auto r = bernsteinRoots(fromRoots(roots));
-            QVERIFY2(r.roots.size() == chosen.size(), qPrintable(QString("trial %1: %2 roots, expected %3")
-                                                                     .arg(trial).arg(r.roots.size()).arg(k)));
+            QVERIFY2(r.roots.size() == chosen.size(),
+                     qPrintable(QString("trial %1: %2 roots, expected %3").arg(trial).arg(r.roots.size()).arg(k)));
             for (std::size_t i = 0; i < chosen.size(); ++i)
                 QVERIFY2(near(r.roots[i], chosen[i] / 1000.0, 1e-10), qPrintable(QString("trial %1").arg(trial)));
         }
@@ -251,8 +251,7 @@ private slots:
                 const double t0 = (j - 1) / double(m), t1 = j / double(m);
                 const double value = bernsteinValue(b, t1);
                 if (previous * value < 0) {
-                    const bool inside = std::any_of(r.roots.begin(), r.roots.end(),
-                                                    [&](double t) { return t >= t0 && t <= t1; });
+                    const bool inside = std::any_of(r.roots.begin(), r.roots.end(), [&](double t) { return t >= t0 && t <= t1; });
                     QVERIFY2(inside, qPrintable(QString("trial %1: sign change in [%2, %3] missed").arg(trial).arg(t0).arg(t1)));
                 }
                 if (value != 0)

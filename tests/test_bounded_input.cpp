@@ -77,7 +77,9 @@ private slots:
         QTest::newRow("terminal escape") << QByteArray("\033[2J\033]0;pwned\007x") << QByteArray("'\\x1b[2J\\x1b]0;pwned\\x07x'");
         QTest::newRow("newline and tab") << QByteArray("a\nb\tc\r") << QByteArray("'a\\nb\\tc\\r'");
         QTest::newRow("DEL") << QByteArray("a\x7f") << QByteArray("'a\\x7f'");
-        QTest::newRow("C1 CSI") << QByteArray("a\xc2\x9b" "2J") << QByteArray("'a\\xc2\\x9b2J'");
+        QTest::newRow("C1 CSI") << QByteArray("a\xc2\x9b"
+                                              "2J")
+                                << QByteArray("'a\\xc2\\x9b2J'");
         QTest::newRow("accents kept") << QByteArray("Animació·é") << QByteArray("'Animació·é'");
         QTest::newRow("invalid UTF-8") << QByteArray("\xff\xc3") << QByteArray("'\\xff\\xc3'");
         QTest::newRow("overlong") << QByteArray("\xc0\xaf") << QByteArray("'\\xc0\\xaf'");

@@ -86,8 +86,8 @@ bool near(const Point& a, const Point& b, double scale)
 }
 
 /// Segment i runs from q_i to q_{(i+1) mod (n+1)} in every mode.
-template <class S> void checkInterpolates(const std::vector<Vec2<Polynomial<S>>>& segments,
-                                          const std::vector<Vec2<S>>& points, double scale = 1)
+template <class S>
+void checkInterpolates(const std::vector<Vec2<Polynomial<S>>>& segments, const std::vector<Vec2<S>>& points, double scale = 1)
 {
     for (std::size_t i = 0; i < segments.size(); ++i) {
         const Vec2<S>& a = points[i];
@@ -119,15 +119,18 @@ private slots:
         QTest::newRow("tau 0") << "0"
                                << "0 1 0 0; 0 0 0 0; 0 -3 3 0; 0 2 -2 0"
                                << "3 4; 0 0; -3 -15; 2 10"
-                               << "3 0 -3 2" << "4 0 -15 10";
+                               << "3 0 -3 2"
+                               << "4 0 -15 10";
         QTest::newRow("tau 1/2") << "1/2"
                                  << "0 1 0 0; -1/2 0 1/2 0; 1 -5/2 2 -1/2; -1/2 3/2 -3/2 1/2"
                                  << "3 4; 1/2 -1; -5 -23/2; 7/2 15/2"
-                                 << "3 1/2 -5 7/2" << "4 -1 -23/2 15/2";
+                                 << "3 1/2 -5 7/2"
+                                 << "4 -1 -23/2 15/2";
         QTest::newRow("tau 2") << "2"
                                << "0 1 0 0; -2 0 2 0; 4 -1 -1 -2; -2 0 0 2"
                                << "3 4; 2 -4; -11 -1; 8 0"
-                               << "3 2 -11 8" << "4 -4 -1";
+                               << "3 2 -11 8"
+                               << "4 -4 -1";
     }
     void ex211()
     {
@@ -157,10 +160,8 @@ private slots:
         // [0 1 0 0; −τ 0 τ 0; 2τ τ−3 3−2τ −τ; −τ 2−τ τ−2 τ].
         const RP tau = RP::identity();
         const auto m = catmullRomMatrix(tau);
-        const char* expected[4][4] = {{"0", "1", "0", "0"},
-                                      {"0 -1", "0", "0 1", "0"},
-                                      {"0 2", "-3 1", "3 -2", "0 -1"},
-                                      {"0 -1", "2 -1", "-2 1", "0 1"}};
+        const char* expected[4][4] = {
+            {"0", "1", "0", "0"}, {"0 -1", "0", "0 1", "0"}, {"0 2", "-3 1", "3 -2", "0 -1"}, {"0 -1", "2 -1", "-2 1", "0 1"}};
         for (std::size_t r = 0; r < 4; ++r)
             for (std::size_t c = 0; c < 4; ++c)
                 QCOMPARE(m[r][c], poly(expected[r][c]));
@@ -174,10 +175,26 @@ private slots:
         QTest::addColumn<QString>("w1");
         QTest::addColumn<QString>("w2");
         QTest::addColumn<QString>("w3");
-        QTest::newRow("tau -2") << "-2" << "0 2 -4 2" << "1 0 -5 4" << "0 -2 7 -4" << "0 0 2 -2";
-        QTest::newRow("tau 0") << "0" << "" << "1 0 -3 2" << "0 0 3 -2" << "";
-        QTest::newRow("tau 1/2") << "1/2" << "0 -1/2 1 -1/2" << "1 0 -5/2 3/2" << "0 1/2 2 -3/2" << "0 0 -1/2 1/2";
-        QTest::newRow("tau 2") << "2" << "0 -2 4 -2" << "1 0 -1" << "0 2 -1" << "0 0 -2 2";
+        QTest::newRow("tau -2") << "-2"
+                                << "0 2 -4 2"
+                                << "1 0 -5 4"
+                                << "0 -2 7 -4"
+                                << "0 0 2 -2";
+        QTest::newRow("tau 0") << "0"
+                               << ""
+                               << "1 0 -3 2"
+                               << "0 0 3 -2"
+                               << "";
+        QTest::newRow("tau 1/2") << "1/2"
+                                 << "0 -1/2 1 -1/2"
+                                 << "1 0 -5/2 3/2"
+                                 << "0 1/2 2 -3/2"
+                                 << "0 0 -1/2 1/2";
+        QTest::newRow("tau 2") << "2"
+                               << "0 -2 4 -2"
+                               << "1 0 -1"
+                               << "0 2 -1"
+                               << "0 0 -2 2";
     }
     void ex212()
     {
@@ -617,8 +634,8 @@ private slots:
         const auto open = CatmullRomMode::Open;
         QTest::newRow("NaN point") << open << 5 << 2 << nan << 0.5 << 0.0 << int(ErrorCode::InvalidInput) << "q_2";
         QTest::newRow("inf point") << open << 5 << 4 << inf << 0.5 << 0.5 << int(ErrorCode::InvalidInput) << "q_4";
-        QTest::newRow("-inf point") << CatmullRomMode::Closed << 5 << 0 << -inf << 0.5 << 1.0
-                                    << int(ErrorCode::InvalidInput) << "q_0";
+        QTest::newRow("-inf point") << CatmullRomMode::Closed << 5 << 0 << -inf << 0.5 << 1.0 << int(ErrorCode::InvalidInput)
+                                    << "q_0";
         QTest::newRow("NaN tension") << open << 5 << -1 << 0.0 << nan << 0.0 << int(ErrorCode::InvalidInput) << "tension";
         QTest::newRow("inf tension") << open << 5 << -1 << 0.0 << inf << 0.5 << int(ErrorCode::InvalidInput) << "tension";
         QTest::newRow("alpha < 0") << open << 5 << -1 << 0.0 << 0.5 << -0.1 << int(ErrorCode::OutOfRange) << "α";

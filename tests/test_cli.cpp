@@ -178,7 +178,8 @@ private slots:
 
     void catmullRomEx213()
     {
-        const Run r = cli({"catmull-rom", "--points", kEx213, "--tau", "1/2", "--mode", "open", "--exact", "--json", "--samples", "3"});
+        const Run r = cli(
+            {"catmull-rom", "--points", kEx213, "--tau", "1/2", "--mode", "open", "--exact", "--json", "--samples", "3"});
         QCOMPARE(r.exitCode, 0);
         const QJsonArray segs = r.json()["segments"].toArray();
         QCOMPARE(segs.size(), 4);
@@ -330,8 +331,10 @@ private slots:
         QTest::newRow("too few points") << QStringList{"fit", "--points", "1,1", "--degree", "0"};
         QTest::newRow("bad param") << QStringList{"fit", "--points", kEx27, "--degree", "2", "--param", "arc"};
         QTest::newRow("bad solver") << QStringList{"fit", "--points", kEx27, "--degree", "2", "--solver", "lu"};
-        QTest::newRow("exact chord, irrational") << QStringList{"fit", "--points", kEx27, "--degree", "2", "--param", "chord", "--exact"};
-        QTest::newRow("normal eq. singular") << QStringList{"fit", "--points", "0,0;0,0;0,0;1,1", "--degree", "2", "--param", "chord", "--solver", "normal"};
+        QTest::newRow("exact chord, irrational")
+            << QStringList{"fit", "--points", kEx27, "--degree", "2", "--param", "chord", "--exact"};
+        QTest::newRow("normal eq. singular")
+            << QStringList{"fit", "--points", "0,0;0,0;0,0;1,1", "--degree", "2", "--param", "chord", "--solver", "normal"};
         QTest::newRow("too few for cyclic") << QStringList{"catmull-rom", "--points", "0,0;1,1", "--mode", "cyclic"};
         QTest::newRow("one point") << QStringList{"catmull-rom", "--points", "0,0"};
         QTest::newRow("bad mode") << QStringList{"catmull-rom", "--points", kEx213, "--mode", "spiral"};
@@ -346,15 +349,22 @@ private slots:
     void extremeButValid_data()
     {
         QTest::addColumn<QStringList>("args");
-        QTest::newRow("huge coordinates") << QStringList{"fit", "--points", "1e9,1e9;2e9,-1e9;3e9,1e9;4e9,0", "--degree", "2", "--param", "chord", "--json"};
-        QTest::newRow("tiny coordinates") << QStringList{"fit", "--points", "1e-9,1e-9;2e-9,-1e-9;3e-9,1e-9;4e-9,0", "--degree", "2", "--param", "centripetal", "--json"};
-        QTest::newRow("coincident, chord, qr") << QStringList{"fit", "--points", "0,0;0,0;1,1;1,1;2,0", "--degree", "2", "--param", "chord", "--json"};
-        QTest::newRow("all coincident") << QStringList{"fit", "--points", "3,3;3,3;3,3", "--degree", "1", "--param", "chord", "--json"};
+        QTest::newRow("huge coordinates") << QStringList{"fit",      "--points", "1e9,1e9;2e9,-1e9;3e9,1e9;4e9,0",
+                                                         "--degree", "2",        "--param",
+                                                         "chord",    "--json"};
+        QTest::newRow("tiny coordinates") << QStringList{"fit",         "--points", "1e-9,1e-9;2e-9,-1e-9;3e-9,1e-9;4e-9,0",
+                                                         "--degree",    "2",        "--param",
+                                                         "centripetal", "--json"};
+        QTest::newRow("coincident, chord, qr")
+            << QStringList{"fit", "--points", "0,0;0,0;1,1;1,1;2,0", "--degree", "2", "--param", "chord", "--json"};
+        QTest::newRow("all coincident") << QStringList{"fit", "--points", "3,3;3,3;3,3", "--degree",
+                                                       "1",   "--param",  "chord",       "--json"};
         QTest::newRow("collinear") << QStringList{"fit", "--points", "0,0;1,1;2,2;3,3;4,4", "--degree", "3", "--json"};
         QTest::newRow("degree 60") << QStringList{"bernstein", "--degree", "60", "--t", "0.3", "--json"};
         QTest::newRow("tau -10") << QStringList{"catmull-rom", "--points", kEx213, "--tau", "-10", "--json"};
         QTest::newRow("tau 10") << QStringList{"catmull-rom", "--points", kEx213, "--tau", "10", "--mode", "closed", "--json"};
-        QTest::newRow("iterate") << QStringList{"fit", "--points", kEx27, "--degree", "3", "--param", "chord", "--iterate", "--json"};
+        QTest::newRow("iterate") << QStringList{"fit",     "--points", kEx27,       "--degree", "3",
+                                                "--param", "chord",    "--iterate", "--json"};
         QTest::newRow("t outside [0,1]") << QStringList{"bezier", "--points", kEx22, "--t", "3", "--json"};
     }
     void extremeButValid()

@@ -20,8 +20,8 @@ private slots:
         const CliRun run = runCli({"report", "all", "--quick", "--out", dir.path()});
         QCOMPARE(run.exitCode, 0);
         QVERIFY2(run.err.isEmpty(), run.err.constData());
-        for (const char* name : {"curve-sampling", "catmull-rom-sampling", "bezier-evaluation", "least-squares",
-                                 "integrators", "soft-body"}) {
+        for (const char* name :
+             {"curve-sampling", "catmull-rom-sampling", "bezier-evaluation", "least-squares", "integrators", "soft-body"}) {
             const QString base = QDir(dir.path()).filePath(QString::fromLatin1(name));
             QFile csv(base + QStringLiteral(".csv"));
             QVERIFY2(csv.open(QIODevice::ReadOnly | QIODevice::Text), name);
@@ -70,8 +70,8 @@ private slots:
         QVERIFY(QFile::link(QStringLiteral("/dev/full"), file));
         const CliRun run = runCli({"report", "integrators", "--quick", "--out", dir.path()});
         QCOMPARE(run.exitCode, 2);
-        QVERIFY2(run.err.startsWith("error: cannot write ") && run.err.contains(("integrators" + extension).toUtf8())
-                     && run.err.contains("No space left on device"),
+        QVERIFY2(run.err.startsWith("error: cannot write ") && run.err.contains(("integrators" + extension).toUtf8()) &&
+                     run.err.contains("No space left on device"),
                  run.err.constData());
         QVERIFY(run.out.isEmpty());
     }

@@ -91,9 +91,15 @@ private slots:
         QTest::addColumn<QString>("scene");
         QTest::addColumn<QString>("solver");
         QTest::addColumn<QString>("extraColumns");
-        QTest::newRow("frog, stable") << "frog" << "stable" << "";
-        QTest::newRow("frog, seed") << "frog" << "seed" << "";
-        QTest::newRow("pendulum, seed") << "pendulum" << "seed" << ",angle_1,omega_1,angle_2,omega_2";
+        QTest::newRow("frog, stable") << "frog"
+                                      << "stable"
+                                      << "";
+        QTest::newRow("frog, seed") << "frog"
+                                    << "seed"
+                                    << "";
+        QTest::newRow("pendulum, seed") << "pendulum"
+                                        << "seed"
+                                        << ",angle_1,omega_1,angle_2,omega_2";
     }
     void seriesColumns()
     {
@@ -102,8 +108,8 @@ private slots:
         QFETCH(QString, extraColumns);
         QTemporaryDir dir;
         const QString path = dir.filePath("series.csv");
-        const Run r = runCliWith({"LC_ALL=ca_ES.UTF-8", "LANG=ca_ES.UTF-8"},
-                                 {"simulate", "--scene", scene, "--solver", solver, "--steps", "120", "--series", path, "--json"});
+        const Run r = runCliWith({"LC_ALL=ca_ES.UTF-8", "LANG=ca_ES.UTF-8"}, {"simulate", "--scene", scene, "--solver", solver,
+                                                                              "--steps", "120", "--series", path, "--json"});
         QCOMPARE(r.exitCode, 0);
         QFile f(path);
         QVERIFY(f.open(QIODevice::ReadOnly));
@@ -111,7 +117,8 @@ private slots:
         QCOMPARE(lines.takeLast(), QByteArray()); // ends with a newline
         QCOMPARE(lines.size(), 122);              // header, step 0, 120 steps
         const QByteArray header = "step,time_s,kinetic,gravity,elastic,total,damping_loss,other_loss,area_error_percent,"
-                                  "max_stretch,contacts" + extraColumns.toLatin1();
+                                  "max_stretch,contacts" +
+                                  extraColumns.toLatin1();
         QCOMPARE(lines[0], header);
         const int columns = int(header.count(',')) + 1;
         for (int i = 1; i < lines.size(); ++i) {
@@ -178,8 +185,8 @@ private slots:
     void seriesBadFiles()
     {
         QTemporaryDir dir;
-        const Run same = cli({"simulate", "--scene", "frog", "--steps", "5", "--series", dir.filePath("a.csv"), "--trace",
-                              dir.filePath("a.csv")});
+        const Run same = cli(
+            {"simulate", "--scene", "frog", "--steps", "5", "--series", dir.filePath("a.csv"), "--trace", dir.filePath("a.csv")});
         QCOMPARE(same.exitCode, 2);
         QVERIFY(same.err.startsWith("error: --series and --trace"));
         const Run folder = cli({"simulate", "--scene", "frog", "--steps", "5", "--series", dir.path()});
@@ -197,7 +204,8 @@ private slots:
 
     void stableSolverAndSettings()
     {
-        const Run r = cli({"simulate", "--scene", "many-bodies", "--solver", "stable", "--steps", "500", "--set", "bodies=30", "--json"});
+        const Run r = cli(
+            {"simulate", "--scene", "many-bodies", "--solver", "stable", "--steps", "500", "--set", "bodies=30", "--json"});
         QCOMPARE(r.exitCode, 0);
         const QJsonObject o = r.json();
         QCOMPARE(o["bodies"].toArray().size(), 30);
@@ -224,7 +232,8 @@ private slots:
         QCOMPARE(r.exitCode, 0);
         const QJsonObject o = r.json();
         QVERIFY(o["ns_per_step"].toDouble() > 0);
-        QVERIFY(std::abs(o["ns_per_body_step"].toDouble() * 10 - o["ns_per_step"].toDouble()) < 1e-6 * o["ns_per_step"].toDouble());
+        QVERIFY(std::abs(o["ns_per_body_step"].toDouble() * 10 - o["ns_per_step"].toDouble()) <
+                1e-6 * o["ns_per_step"].toDouble());
         const Run m = cli({"bench", "--scene", "many-bodies", "--bodies", "50", "--steps", "20", "--json"});
         QCOMPARE(m.exitCode, 0);
         QCOMPARE(m.json()["solver"].toString(), QString("stable"));
@@ -242,7 +251,9 @@ private slots:
         const QJsonArray bodies = o["bodies"].toArray();
         QCOMPARE(bodies.size(), 5000);
         // Each body's bounding box; no two overlap (sorted by left edge, a sweep).
-        struct Box { double x0, y0, x1, y1; };
+        struct Box {
+            double x0, y0, x1, y1;
+        };
         std::vector<Box> boxes;
         for (const auto& b : bodies) {
             Box box{1e300, 1e300, -1e300, -1e300};
@@ -297,7 +308,8 @@ private slots:
         QCOMPARE(r.err.count('\n'), 1);
         QVERIFY(!QFile::exists(path)); // refused before writing
         // Well inside: 2 rows of 50 000 vertices.
-        const Run ok = cli({"simulate", "--scene", "many-bodies", "--set", "bodies=5000", "--steps", "1", "--trace", path}, 30000);
+        const Run ok = cli({"simulate", "--scene", "many-bodies", "--set", "bodies=5000", "--steps", "1", "--trace", path},
+                           30000);
         QCOMPARE(ok.exitCode, 0);
         QVERIFY(QFile::exists(path));
     }

@@ -60,8 +60,8 @@ private slots:
                 double scan = distance(P.front(), p);
                 for (int j = 0; j <= 4000; ++j)
                     scan = std::min(scan, distance(bezierBernstein(P, j / 4000.0), p));
-                QVERIFY2(c.distance <= scan + 1e-12, qPrintable(QString("n=%1 trial %2: %3 > %4")
-                                                                     .arg(n).arg(trial).arg(c.distance).arg(scan)));
+                QVERIFY2(c.distance <= scan + 1e-12,
+                         qPrintable(QString("n=%1 trial %2: %3 > %4").arg(n).arg(trial).arg(c.distance).arg(scan)));
             }
         }
     }

@@ -54,9 +54,9 @@ PiecewisePolynomial<Rational> ex21AsPrinted()
 {
     PiecewisePolynomial<Rational> s;
     s.knots = {q(0), q(1), q(2), q(3)};
-    s.pieces = {RP{q(1), q(238, 53), q(-132, 53)},                   // s₁ = −132/53 x² + 238/53 x + 1
-                RP{q(0), q(394, 53), q(-288, 53), q(52, 53)},        // s₂ = 52/53 x³ − 288/53 x² + 394/53 x
-                RP{q(385, 53), q(-182, 53), q(0), q(4, 53)}};        // s₃ = 4/53 x³ − 182/53 x + 385/53
+    s.pieces = {RP{q(1), q(238, 53), q(-132, 53)},            // s₁ = −132/53 x² + 238/53 x + 1
+                RP{q(0), q(394, 53), q(-288, 53), q(52, 53)}, // s₂ = 52/53 x³ − 288/53 x² + 394/53 x
+                RP{q(385, 53), q(-182, 53), q(0), q(4, 53)}}; // s₃ = 4/53 x³ − 182/53 x + 385/53
     return s;
 }
 
@@ -82,13 +82,16 @@ private slots:
         QTest::addColumn<QString>("xs");
         QTest::addColumn<QString>("ys");
         QTest::addColumn<QStringList>("pieces"); // global powers of x, ascending
-        QTest::newRow("Ex 2.1 points") << "0 1 2 3" << "1 3 1 -1"
-                                       << QStringList{"1 46/15 0 -16/15", "-7/5 154/15 -36/5 4/3",
-                                                      "57/5 -134/15 12/5 -4/15"};
+        QTest::newRow("Ex 2.1 points") << "0 1 2 3"
+                                       << "1 3 1 -1"
+                                       << QStringList{"1 46/15 0 -16/15", "-7/5 154/15 -36/5 4/3", "57/5 -134/15 12/5 -4/15"};
         // h = 1, 2: 6M_1 = 6(−1/2 − 1), M_1 = −3/2.
-        QTest::newRow("uneven spacing") << "0 1 3" << "0 1 0" << QStringList{"0 5/4 0 -1/4", "-3/8 19/8 -9/8 1/8"};
-        QTest::newRow("two points: the line") << "-1 3" << "2 4" << QStringList{"5/2 1/2"};
-        QTest::newRow("collinear: the line") << "0 1/2 2 3" << "1 2 5 7" << QStringList{"1 2", "1 2", "1 2"};
+        QTest::newRow("uneven spacing") << "0 1 3"
+                                        << "0 1 0" << QStringList{"0 5/4 0 -1/4", "-3/8 19/8 -9/8 1/8"};
+        QTest::newRow("two points: the line") << "-1 3"
+                                              << "2 4" << QStringList{"5/2 1/2"};
+        QTest::newRow("collinear: the line") << "0 1/2 2 3"
+                                             << "1 2 5 7" << QStringList{"1 2", "1 2", "1 2"};
     }
     void naturalExact()
     {
@@ -145,8 +148,7 @@ private slots:
         }
         for (int i = 0; i < 3; ++i)
             for (int k = 0; k <= 3; ++k)
-                QVERIFY(std::fabs(fast->globalPiece(i).coefficient(k) - exact->pieces[i].coefficient(k).get_d()) <
-                        1e-12);
+                QVERIFY(std::fabs(fast->globalPiece(i).coefficient(k) - exact->pieces[i].coefficient(k).get_d()) < 1e-12);
         const auto report = checkContinuity(*fast, 2, points, 1e-12);
         QVERIFY2(report.ok(), report.describe().c_str());
     }
@@ -194,8 +196,8 @@ private slots:
     {
         const double nan = std::numeric_limits<double>::quiet_NaN();
         const double inf = std::numeric_limits<double>::infinity();
-        for (const std::vector<Point>& bad : {std::vector<Point>{{0, 1}, {1, nan}, {2, 0}},
-                                              std::vector<Point>{{0, 1}, {inf, 2}}}) {
+        for (const std::vector<Point>& bad :
+             {std::vector<Point>{{0, 1}, {1, nan}, {2, 0}}, std::vector<Point>{{0, 1}, {inf, 2}}}) {
             const auto s = naturalCubicSpline(bad);
             QVERIFY(!s.ok());
             QCOMPARE(s.error().code, ErrorCode::InvalidInput);
@@ -218,14 +220,14 @@ private slots:
         QCOMPARE(jumps[0]->knot, 1);
         QCOMPARE(jumps[0]->order, 0);
         QCOMPARE(jumps[0]->x, q(1));
-        QCOMPARE(jumps[0]->left, q(3));          // s₁(1) = −132/53 + 238/53 + 1
-        QCOMPARE(jumps[0]->right, q(158, 53));   // s₂(1) = (52 − 288 + 394)/53
+        QCOMPARE(jumps[0]->left, q(3));        // s₁(1) = −132/53 + 238/53 + 1
+        QCOMPARE(jumps[0]->right, q(158, 53)); // s₂(1) = (52 − 288 + 394)/53
         QCOMPARE(jumps[0]->jump(), q(-1, 53));
         QCOMPARE(jumps[1]->knot, 2);
         QCOMPARE(jumps[1]->order, 0);
         QCOMPARE(jumps[1]->x, q(2));
-        QCOMPARE(jumps[1]->left, q(52, 53));     // s₂(2) = (416 − 1152 + 788)/53
-        QCOMPARE(jumps[1]->right, q(1));         // s₃(2) = (32 − 364 + 385)/53
+        QCOMPARE(jumps[1]->left, q(52, 53)); // s₂(2) = (416 − 1152 + 788)/53
+        QCOMPARE(jumps[1]->right, q(1));     // s₃(2) = (32 − 364 + 385)/53
 
         const auto misses = ofKind(report, DefectKind::NotInterpolated);
         QCOMPARE(static_cast<int>(misses.size()), 2);
@@ -283,8 +285,7 @@ private slots:
         // Local form: x³ on [0, 1] and [1, 2] (written around each knot), then at x = 2 a
         // quadratic with the right value 8 and slope 12 but s″ = 10 instead of 12.
         PiecewisePolynomial<Rational> s{{q(0), q(1), q(2), q(4)},
-                                        {RP{q(0), q(0), q(0), q(1)}, RP{q(1), q(3), q(3), q(1)},
-                                         RP{q(8), q(12), q(5)}},
+                                        {RP{q(0), q(0), q(0), q(1)}, RP{q(1), q(3), q(3), q(1)}, RP{q(8), q(12), q(5)}},
                                         true};
         QCOMPARE(s(q(3, 2)), q(27, 8));
         QCOMPARE(s.globalPiece(1), (RP{q(0), q(0), q(0), q(1)})); // (u + 1)³ = x³
@@ -302,8 +303,7 @@ private slots:
 
     void toleranceForDoubles()
     {
-        PiecewisePolynomial<double> s{{0.0, 1.0, 2.0}, {Polynomial<double>{0.0, 1.0}, Polynomial<double>{1e-13, 1.0}},
-                                      false};
+        PiecewisePolynomial<double> s{{0.0, 1.0, 2.0}, {Polynomial<double>{0.0, 1.0}, Polynomial<double>{1e-13, 1.0}}, false};
         const auto strict = checkContinuity(s, 1);
         QCOMPARE(static_cast<int>(strict.defects.size()), 1);
         QCOMPARE(strict.defects[0].order, 0);

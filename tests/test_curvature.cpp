@@ -67,8 +67,7 @@ private slots:
         QCOMPARE(*exactCurvatureText(e), std::string("-√2/4"));
         QCOMPARE(*curvatureAt({{0, 0}, {1, 1}, {2, 0}}, 0.0).curvature, -std::sqrt(2.0) / 4.0);
         // Reversed, the curve turns left: the sign flips.
-        QCOMPARE(*exactCurvatureText(exactCurvatureAt(rpts({{2, 0}, {1, 1}, {0, 0}}), Rational(0))),
-                 std::string("√2/4"));
+        QCOMPARE(*exactCurvatureText(exactCurvatureAt(rpts({{2, 0}, {1, 1}, {0, 0}}), Rational(0))), std::string("√2/4"));
     }
 
     // The exact form and the double one agree on random rational curves and parameters.
@@ -128,8 +127,7 @@ private slots:
     {
         for (const std::vector<Point>& p :
              {std::vector<Point>{{0, 0}, {1, 1}, {3, 3}, {4, 4}},
-              std::vector<Point>{{0.1, 0.2}, {0.3, 0.6}, {0.7, 1.4}, {0.2, 0.4}},
-              std::vector<Point>{{0, 0}, {1, 0}}}) {
+              std::vector<Point>{{0.1, 0.2}, {0.3, 0.6}, {0.7, 1.4}, {0.2, 0.4}}, std::vector<Point>{{0, 0}, {1, 0}}}) {
             for (double t : {0.0, 0.3, 0.5, 1.0}) {
                 const CurvatureAt c = curvatureAt(p, t);
                 QVERIFY(c.curvature);

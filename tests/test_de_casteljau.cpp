@@ -101,10 +101,12 @@ private slots:
             const QStringList f = e.split('|');
             const int r = f[0].toInt(), i = f[1].toInt();
             const auto& got = table.levels[r][i];
-            QVERIFY2(got.x == poly(f[2].toLatin1()), qPrintable(QString("P_%1^%2 x: got %3, thesis %4")
-                                                                   .arg(i).arg(r).arg(QString::fromStdString(toText(got.x)), f[2])));
-            QVERIFY2(got.y == poly(f[3].toLatin1()), qPrintable(QString("P_%1^%2 y: got %3, thesis %4")
-                                                                   .arg(i).arg(r).arg(QString::fromStdString(toText(got.y)), f[3])));
+            QVERIFY2(got.x == poly(f[2].toLatin1()),
+                     qPrintable(
+                         QString("P_%1^%2 x: got %3, thesis %4").arg(i).arg(r).arg(QString::fromStdString(toText(got.x)), f[2])));
+            QVERIFY2(got.y == poly(f[3].toLatin1()),
+                     qPrintable(
+                         QString("P_%1^%2 y: got %3, thesis %4").arg(i).arg(r).arg(QString::fromStdString(toText(got.y)), f[3])));
         }
         // The printed text matches character for character for c(t) too.
         const auto& c = table.point();
@@ -220,8 +222,8 @@ private slots:
             worstBernstein = std::max({worstBernstein, std::abs(b.x - exact.x.get_d()), std::abs(b.y - exact.y.get_d())});
             worstHorner = std::max({worstHorner, std::abs(h.x - exact.x.get_d()), std::abs(h.y - exact.y.get_d())});
         }
-        qInfo("degree 40, max error: De Casteljau %.3g, Bernstein (Lemma 2.1) %.3g, Horner on power basis %.3g",
-              worstCasteljau, worstBernstein, worstHorner);
+        qInfo("degree 40, max error: De Casteljau %.3g, Bernstein (Lemma 2.1) %.3g, Horner on power basis %.3g", worstCasteljau,
+              worstBernstein, worstHorner);
         QVERIFY(worstCasteljau < 1e-12);
         QVERIFY(worstBernstein < 1e-12);
         QVERIFY(worstHorner > 1e-6); // the power basis visibly loses digits

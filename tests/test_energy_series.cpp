@@ -84,7 +84,8 @@ private slots:
             const SeriesSample& x = series.record(*s);
             QCOMPARE(x.contacts, 0);
             QVERIFY2(std::abs(x.otherLoss.value()) <= 1e-9 * e0,
-                     qPrintable(QStringLiteral("step %1: damping %2, drop %3").arg(x.step).arg(*x.dampingLoss).arg(e0 - x.total)));
+                     qPrintable(
+                         QStringLiteral("step %1: damping %2, drop %3").arg(x.step).arg(*x.dampingLoss).arg(e0 - x.total)));
         }
         const SeriesSample& last = series.samples().back();
         // Per axis the speed after n steps is fⁿ v: the loss is known in closed form.
@@ -219,8 +220,9 @@ private slots:
         QFETCH(int, solver);
         QFETCH(QString, setting);
         const QByteArray set = setting.toLatin1();
-        auto s = make(scene.toStdString(), SolverKind(solver), setting.isEmpty() ? std::initializer_list<const char*>{}
-                                                                                 : std::initializer_list<const char*>{set.constData()});
+        auto s = make(scene.toStdString(), SolverKind(solver),
+                      setting.isEmpty() ? std::initializer_list<const char*>{}
+                                        : std::initializer_list<const char*>{set.constData()});
         const bool stable = SolverKind(solver) == SolverKind::Stable;
         const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * (1 + std::abs(a) + std::abs(b)); };
         std::vector<Readouts> bodies;
@@ -267,7 +269,7 @@ private slots:
             differing += bodies.size() > 1 && bodies.front().kineticEnergy != bodies.back().kineticEnergy;
         }
         if (scene == "many-bodies") {
-            QVERIFY(differing > 10);           // each body has its own values, not a share of the sum
+            QVERIFY(differing > 10);               // each body has its own values, not a share of the sum
             QVERIFY(stable ? touching > 0 : true); // the pile: some bodies touch, not all of them
         }
     }
@@ -362,7 +364,7 @@ private slots:
         QCOMPARE(asked.bodies.size(), std::size_t(many));
         QCOMPARE(*asked.bodies[7].dampingLoss, 0.0); // from the moment asked
         QCOMPARE(*asked.bodies[7].otherLoss, 0.0);
-        QVERIFY(*asked.dampingLoss > 0);             // the scene's, from the series' start
+        QVERIFY(*asked.dampingLoss > 0); // the scene's, from the series' start
         for (int i = 0; i < 30; ++i) {
             s->step();
             series.record(*s);

@@ -69,8 +69,8 @@ private slots:
 
     void fittingNamesIgnoreCaseButNotSpaces()
     {
-        QVERIFY(roundTrips({LeastSquaresSolver::Qr, LeastSquaresSolver::Normal, LeastSquaresSolver::Svd},
-                           parseLeastSquaresSolver, anyToString));
+        QVERIFY(roundTrips({LeastSquaresSolver::Qr, LeastSquaresSolver::Normal, LeastSquaresSolver::Svd}, parseLeastSquaresSolver,
+                           anyToString));
         QVERIFY(parseLeastSquaresSolver("SVD") == std::optional<LeastSquaresSolver>(LeastSquaresSolver::Svd));
         QVERIFY(parseLeastSquaresSolver(" qr") == std::optional<LeastSquaresSolver>());
         QVERIFY(roundTrips({Parametrization::Uniform, Parametrization::ChordLength, Parametrization::Centripetal},
@@ -82,8 +82,8 @@ private slots:
 
     void catmullRomModesIgnoreCaseAndSpaces()
     {
-        QVERIFY(roundTrips({CatmullRomMode::Open, CatmullRomMode::Cyclic, CatmullRomMode::Closed}, parseCatmullRomMode,
-                           anyToString));
+        QVERIFY(
+            roundTrips({CatmullRomMode::Open, CatmullRomMode::Cyclic, CatmullRomMode::Closed}, parseCatmullRomMode, anyToString));
         QVERIFY(parseCatmullRomMode("  Closed\t") == std::optional<CatmullRomMode>(CatmullRomMode::Closed));
         QVERIFY(parseCatmullRomMode("loop") == std::optional<CatmullRomMode>());
     }

@@ -44,8 +44,8 @@ class TestExactCost : public QObject {
 private slots:
     void bitLengths()
     {
-        QCOMPARE(bitLength(Rational(1, 2)), 3L);     // 1 and 10
-        QCOMPARE(bitLength(Rational(-255)), 9L);     // 11111111 over 1
+        QCOMPARE(bitLength(Rational(1, 2)), 3L); // 1 and 10
+        QCOMPARE(bitLength(Rational(-255)), 9L); // 11111111 over 1
         QCOMPARE(bitLength(*parseRational("1e1000")), 3322L + 1);
         QCOMPARE(maxBitLength({RPoint(Rational(3), Rational(1, 1024))}), 12L);
     }

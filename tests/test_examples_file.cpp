@@ -122,7 +122,8 @@ private slots:
         }
         const QJsonObject e13 = example("2.13");
         for (const auto& mode : e13["modes"].toArray()) {
-            auto segs = catmullRomSegments(points(e13), rational(e13["tau"]), *parseCatmullRomMode(mode.toString().toStdString()));
+            auto segs = catmullRomSegments(points(e13), rational(e13["tau"]),
+                                           *parseCatmullRomMode(mode.toString().toStdString()));
             QVERIFY(segs.ok());
             const QJsonArray want = e13["expected"].toObject()[mode.toString()].toArray();
             QCOMPARE(int(segs->size()), want.size());

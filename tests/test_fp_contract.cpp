@@ -10,10 +10,7 @@ namespace {
 
 // Compiled for a processor with FMA, so that the compiler could fuse the expression if
 // contraction were allowed; not inlined and fed through volatiles, so it is not folded.
-__attribute__((target("fma"), noinline)) double productPlusSum(double a, double b, double c)
-{
-    return a * b + c;
-}
+__attribute__((target("fma"), noinline)) double productPlusSum(double a, double b, double c) { return a * b + c; }
 
 bool processorHasFma()
 {

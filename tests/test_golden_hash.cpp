@@ -39,10 +39,10 @@ struct Fnv1a {
 };
 
 struct Script {
-    int grabAt = 60;      ///< press inside body 0, at the mean of its vertices
-    int dragSteps = 40;   ///< then 40 px to the right per step, out of the frame
+    int grabAt = 60;    ///< press inside body 0, at the mean of its vertices
+    int dragSteps = 40; ///< then 40 px to the right per step, out of the frame
     int releaseAt = 120;
-    int spawnAt = 200;    ///< Space held at the frame's centre for 12 steps
+    int spawnAt = 200; ///< Space held at the frame's centre for 12 steps
     int steps = 600;
 };
 

@@ -87,7 +87,8 @@ std::vector<SettingChange> settingChanges()
     };
     return {
         {"decasteljau", "t", moveT},
-        {"decasteljau", "samples", [](TabPage* page) {
+        {"decasteljau", "samples",
+         [](TabPage* page) {
              for (QSpinBox* box : page->findChildren<QSpinBox*>())
                  if (box->maximum() > 100) { // the samples box (t's box is a double spin box)
                      box->stepUp();
@@ -114,8 +115,7 @@ std::vector<SettingChange> settingChanges()
     };
 }
 
-template <class W>
-QList<QPointer<W>> guarded(const QList<W*>& widgets)
+template <class W> QList<QPointer<W>> guarded(const QList<W*>& widgets)
 {
     QList<QPointer<W>> out;
     for (W* w : widgets)
@@ -151,8 +151,7 @@ private slots:
         QTest::addColumn<int>("index");
         const auto changes = settingChanges();
         for (int i = 0; i < static_cast<int>(changes.size()); ++i)
-            QTest::newRow(qPrintable(QStringLiteral("%1 %2").arg(QLatin1String(changes[i].tab),
-                                                                  QLatin1String(changes[i].name))))
+            QTest::newRow(qPrintable(QStringLiteral("%1 %2").arg(QLatin1String(changes[i].tab), QLatin1String(changes[i].name))))
                 << i;
     }
     void everySavedSettingIsOneUndoStep()
@@ -215,14 +214,14 @@ private slots:
         // A change may rebuild part of the tab (a Frog stage has its own parameter fields):
         // the controls are held as QPointers, and those gone are skipped.
         for (QPointer<QAbstractButton> button : guarded(page->findChildren<QAbstractButton*>())) {
-            if (!button || !button->isCheckable() || !button->isEnabled() || !button->isVisibleTo(&window)
-                || button->objectName() == QLatin1String("frogPause"))
+            if (!button || !button->isCheckable() || !button->isEnabled() || !button->isVisibleTo(&window) ||
+                button->objectName() == QLatin1String("frogPause"))
                 continue;
             probe(button->text(), [button] { button->click(); });
         }
         for (QPointer<QComboBox> combo : guarded(page->findChildren<QComboBox*>())) {
-            if (!combo || !combo->isEnabled() || !combo->isVisibleTo(&window) || combo->count() < 2
-                || combo->objectName() == QLatin1String("frogSpeed")) // the clock, as Pause (docs/tabs.md)
+            if (!combo || !combo->isEnabled() || !combo->isVisibleTo(&window) || combo->count() < 2 ||
+                combo->objectName() == QLatin1String("frogSpeed")) // the clock, as Pause (docs/tabs.md)
                 continue;
             const int next = (combo->currentIndex() + 1) % combo->count();
             probe(combo->itemText(next), [combo, next] {
@@ -313,12 +312,18 @@ private slots:
         QTest::addColumn<QStringList>("arguments");
         QTest::addColumn<QString>("desktop");
         QTest::addColumn<QString>("says");
-        QTest::newRow("tab, ca") << QStringList{"--lang", "ca", "--tab", "nowhere"} << "C.UTF-8" << "pestanya";
-        QTest::newRow("tab, en") << QStringList{"--lang", "en", "--tab", "nowhere"} << "ca_ES.UTF-8" << "unknown tab";
-        QTest::newRow("example, ca desktop") << QStringList{"--example", "9.9"} << "ca_ES.UTF-8" << "exemple";
-        QTest::newRow("language, ca desktop") << QStringList{"--lang", "xx"} << "ca_ES.UTF-8" << "idioma";
-        QTest::newRow("option, ca") << QStringList{"--lang=ca", "--bogus"} << "C.UTF-8" << "bogus";
-        QTest::newRow("missing value, ca") << QStringList{"--lang", "ca", "--tab"} << "C.UTF-8" << "tab";
+        QTest::newRow("tab, ca") << QStringList{"--lang", "ca", "--tab", "nowhere"} << "C.UTF-8"
+                                 << "pestanya";
+        QTest::newRow("tab, en") << QStringList{"--lang", "en", "--tab", "nowhere"} << "ca_ES.UTF-8"
+                                 << "unknown tab";
+        QTest::newRow("example, ca desktop") << QStringList{"--example", "9.9"} << "ca_ES.UTF-8"
+                                             << "exemple";
+        QTest::newRow("language, ca desktop") << QStringList{"--lang", "xx"} << "ca_ES.UTF-8"
+                                              << "idioma";
+        QTest::newRow("option, ca") << QStringList{"--lang=ca", "--bogus"} << "C.UTF-8"
+                                    << "bogus";
+        QTest::newRow("missing value, ca") << QStringList{"--lang", "ca", "--tab"} << "C.UTF-8"
+                                           << "tab";
     }
     void commandLineErrorsSpeakTheLanguage()
     {
@@ -345,8 +350,8 @@ private slots:
         QCOMPARE(process.exitCode(), 2);
         QVERIFY2(!err.isEmpty(), "no line starts with \"error: \"");
         QVERIFY2(err.contains(says, Qt::CaseInsensitive), qPrintable(err));
-        const bool catalan = arguments.contains(QStringLiteral("ca")) || arguments.contains(QStringLiteral("--lang=ca"))
-                             || (desktop.startsWith(QStringLiteral("ca")) && !arguments.contains(QStringLiteral("en")));
+        const bool catalan = arguments.contains(QStringLiteral("ca")) || arguments.contains(QStringLiteral("--lang=ca")) ||
+                             (desktop.startsWith(QStringLiteral("ca")) && !arguments.contains(QStringLiteral("en")));
         if (catalan)
             for (const char* english : {"unknown", "Unknown", "missing", "Missing"})
                 QVERIFY2(!err.contains(QLatin1String(english)), qPrintable(err));
@@ -416,9 +421,9 @@ private slots:
             for (int dy = -1; dy <= 1 && !found; ++dy)
                 for (int dx = -1; dx <= 1 && !found; ++dx) {
                     const QColor c = shot.pixelColor(QPoint(qRound(s.x()) + dx, qRound(s.y() + half) + dy));
-                    found = std::abs(c.red() - left.red()) + std::abs(c.green() - left.green())
-                                + std::abs(c.blue() - left.blue())
-                            < 60;
+                    found = std::abs(c.red() - left.red()) + std::abs(c.green() - left.green()) +
+                                std::abs(c.blue() - left.blue()) <
+                            60;
                 }
             seen += found ? 1 : 0;
         }
@@ -459,7 +464,8 @@ private slots:
         QVERIFY(freshHint->isVisible());
 
         QVERIFY(granota::ui::setLanguage(QStringLiteral("ca"), false));
-        QTRY_VERIFY2_WITH_TIMEOUT(hint->text() != hints.last(), qPrintable(hint->text()), kEventWaitMs); // the Frog tab's, in Catalan
+        QTRY_VERIFY2_WITH_TIMEOUT(hint->text() != hints.last(), qPrintable(hint->text()),
+                                  kEventWaitMs); // the Frog tab's, in Catalan
         QCOMPARE(hint->text(), window.currentTab()->hint());
         QVERIFY(granota::ui::setLanguage(QStringLiteral("en"), false));
         QTRY_COMPARE_WITH_TIMEOUT(hint->text(), hints.last(), kEventWaitMs);
@@ -484,8 +490,9 @@ private slots:
         auto* canvas = window.currentTab()->findChild<granota::ui::FrogCanvas*>();
         QVERIFY(canvas);
         QTRY_VERIFY_WITH_TIMEOUT(canvas->textLines().size() >= 3, kEventWaitMs);
-        QTRY_VERIFY2_WITH_TIMEOUT(canvas->textPanelWidth() <= canvas->textPanelRoom(),
-                     qPrintable(QStringLiteral("%1 > %2").arg(canvas->textPanelWidth()).arg(canvas->textPanelRoom())), kEventWaitMs);
+        QTRY_VERIFY2_WITH_TIMEOUT(
+            canvas->textPanelWidth() <= canvas->textPanelRoom(),
+            qPrintable(QStringLiteral("%1 > %2").arg(canvas->textPanelWidth()).arg(canvas->textPanelRoom())), kEventWaitMs);
         // And at once when the canvas narrows (a side panel dragged wider), not at the next refresh.
         canvas->resize(canvas->width() * 3 / 4, canvas->height());
         QVERIFY2(canvas->textPanelWidth() <= canvas->textPanelRoom(),

@@ -110,7 +110,8 @@ private slots:
 
     void aFailingSceneShowsTheCoresMessage()
     {
-        const QString known = granota::ui::FrogTab::sceneLoadError(QStringLiteral("frog"), "JSON: bad number at line 3, column 7");
+        const QString known = granota::ui::FrogTab::sceneLoadError(QStringLiteral("frog"),
+                                                                   "JSON: bad number at line 3, column 7");
         QVERIFY2(known.contains(QStringLiteral("JSON: bad number at line 3, column 7")), qPrintable(known));
         QVERIFY2(known.contains(QStringLiteral("frog")), qPrintable(known));
         const QString unknown = granota::ui::FrogTab::sceneLoadError(QStringLiteral("dragons"), "unknown scene");
@@ -128,7 +129,8 @@ private slots:
             QString error;
             QVERIFY2(window.frogTab()->setScene(QStringLiteral("pendulum-limits"), &error), qPrintable(error));
             QVERIFY2(window.frogTab()->setScene(QStringLiteral("frog"), &error), qPrintable(error));
-            QVERIFY2(window.frogTab()->editParameter(QStringLiteral("area_factor"), QJsonValue(0.035), &error), qPrintable(error));
+            QVERIFY2(window.frogTab()->editParameter(QStringLiteral("area_factor"), QJsonValue(0.035), &error),
+                     qPrintable(error));
             QVERIFY2(window.saveFile(file.path(), &error), qPrintable(error));
             saved = documentOf(window);
         }
@@ -188,7 +190,8 @@ private slots:
                 const QStringList xy = m.captured(1).split(QLatin1Char(','));
                 if (xy.size() == 1)
                     continue; // "(4.16)": a section of the thesis in a comment, not a coordinate
-                QVERIFY2(xy.size() == 2 && isCNumber(xy[0]) && isCNumber(xy[1]), qPrintable(key + QStringLiteral(": ") + m.captured(0)));
+                QVERIFY2(xy.size() == 2 && isCNumber(xy[0]) && isCNumber(xy[1]),
+                         qPrintable(key + QStringLiteral(": ") + m.captured(0)));
                 ++pairs;
             }
             QVERIFY2(pairs > 2, qPrintable(key));
@@ -232,7 +235,8 @@ private slots:
         QVERIFY(window.frogTab()->setScene(QStringLiteral("frog"), nullptr));
         int decimals = 0;
         for (QDoubleSpinBox* spin : window.frogTab()->parametersPanel()->findChildren<QDoubleSpinBox*>()) {
-            QVERIFY2(!spin->text().contains(QLatin1Char('.')), qPrintable(spin->objectName() + QStringLiteral(": ") + spin->text()));
+            QVERIFY2(!spin->text().contains(QLatin1Char('.')),
+                     qPrintable(spin->objectName() + QStringLiteral(": ") + spin->text()));
             if (spin->text().contains(QLatin1Char(',')))
                 ++decimals;
         }
@@ -255,7 +259,8 @@ private slots:
         for (QCustomPlot* plot : window.findChildren<QCustomPlot*>())
             QCOMPARE(plot->locale().decimalPoint(), QStringLiteral("."));
         for (QDoubleSpinBox* spin : window.frogTab()->parametersPanel()->findChildren<QDoubleSpinBox*>())
-            QVERIFY2(!spin->text().contains(QLatin1Char(',')), qPrintable(spin->objectName() + QStringLiteral(": ") + spin->text()));
+            QVERIFY2(!spin->text().contains(QLatin1Char(',')),
+                     qPrintable(spin->objectName() + QStringLiteral(": ") + spin->text()));
         QVERIFY(granota::ui::setLanguage(QStringLiteral("ca"), false));
         QCoreApplication::processEvents();
         QCOMPARE(table->item(0, 0)->text(), QStringLiteral("0,05688"));

@@ -109,8 +109,8 @@ std::vector<KnotSides> knotSides(const QCPGraph* g)
     std::vector<KnotSides> out;
     const auto data = g->data();
     for (auto it = data->constBegin(); it != data->constEnd(); ++it)
-        if (std::isnan(it->value) && it != data->constBegin() && it + 1 != data->constEnd() &&
-            !std::isnan((it - 1)->value) && !std::isnan((it + 1)->value))
+        if (std::isnan(it->value) && it != data->constBegin() && it + 1 != data->constEnd() && !std::isnan((it - 1)->value) &&
+            !std::isnan((it + 1)->value))
             out.push_back({(it - 1)->key, (it - 1)->value, (it + 1)->key, (it + 1)->value});
     return out;
 }
@@ -465,8 +465,7 @@ private slots:
         QCOMPARE(tab.blendingPlot()->graphCount(), 4 * 4 + 4); // and one legend key per τ
         // Ex 2.12, τ = −2: w0 = 2t − 4t² + 2t³ … exactly in the panel.
         const QString text = tab.exactPanel()->plainText();
-        for (const char* w : {"2t - 4t^2 + 2t^3", "1 - 5t^2 + 4t^3", "-2t + 7t^2 - 4t^3", "2t^2 - 2t^3", "1 - t^2",
-                              "2t - t^2"})
+        for (const char* w : {"2t - 4t^2 + 2t^3", "1 - 5t^2 + 4t^3", "-2t + 7t^2 - 4t^3", "2t^2 - 2t^3", "1 - t^2", "2t - t^2"})
             QVERIFY2(text.contains(QLatin1String(w)), w);
         // Partition of unity in the plot: Σ_j w_j(t) = 1 for the first τ's four graphs.
         for (int k = 0; k < 101; k += 10) {
@@ -542,11 +541,10 @@ private slots:
         QTest::newRow("no taus") << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": []}");
         QTest::newRow("duplicate taus") << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": [\"1/2\", \"0.5\"]}");
         QTest::newRow("bad mode") << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": [\"1/2\"], \"mode\": \"loop\"}");
-        QTest::newRow("bad selection")
-            << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": [\"1/2\"], \"selected_tau\": 3}");
+        QTest::newRow("bad selection") << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": [\"1/2\"], \"selected_tau\": 3}");
         QTest::newRow("bad flag") << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": [\"1/2\"], \"spline\": 2}");
-        QTest::newRow("bad curvature flag")
-            << QByteArray("{\"points\": [[0, 0], [1, 1]], \"taus\": [\"1/2\"], \"curvature_plot\": \"yes\"}");
+        QTest::newRow("bad curvature flag") << QByteArray(
+            "{\"points\": [[0, 0], [1, 1]], \"taus\": [\"1/2\"], \"curvature_plot\": \"yes\"}");
     }
     void loadStateRejectsGarbage()
     {
@@ -764,7 +762,8 @@ private slots:
         const QString tikz = tab.tikz();
         // One path per τ, each of three segments: at least 9 Bézier segments.
         QVERIFY2(tikz.count(QStringLiteral(".. controls")) >= 9, qPrintable(tikz));
-        QVERIFY(tikz.contains(QRegularExpression(QStringLiteral("\\.\\. controls \\([0-9.-]+,[0-9.-]+\\) and \\([0-9.-]+,[0-9.-]+\\) \\.\\. \\("))));
+        QVERIFY(tikz.contains(QRegularExpression(
+            QStringLiteral("\\.\\. controls \\([0-9.-]+,[0-9.-]+\\) and \\([0-9.-]+,[0-9.-]+\\) \\.\\. \\("))));
     }
 
     // TikzWriter's cubic paths: the picture holds the curve, not its control polygon. The arch
@@ -802,8 +801,7 @@ private slots:
         QCOMPARE(saved.value(QStringLiteral("curvature_plot")), QJsonValue(true));
         CatmullRomTab other;
         QString error;
-        QVERIFY2(other.loadState(QJsonDocument::fromJson(QJsonDocument(saved).toJson()).object(), &error),
-                 qPrintable(error));
+        QVERIFY2(other.loadState(QJsonDocument::fromJson(QJsonDocument(saved).toJson()).object(), &error), qPrintable(error));
         QVERIFY(other.settings().curvaturePlot);
         QCOMPARE(other.blendingPlot()->graphCount(), 3);
         tab.undoStack()->undo();
@@ -829,9 +827,9 @@ private slots:
         for (int i = header + 1; i < lines.size() && !lines[i].isEmpty(); ++i, ++rows)
             QCOMPARE(int(lines[i].count(QLatin1Char(','))), 5); // no decimal commas, in any locale
         QCOMPARE(rows, 3 * 3 * CatmullRomScene::kSamplesPerSegment);
-        QVERIFY(lines.contains(QStringLiteral("catmull-rom,1/2,open,1,0,%1")
-                                   .arg(QString::fromStdString(granota::formatDouble(
-                                       *tab.scene().curves[1].curvature.samples[0][0].kappa)))));
+        QVERIFY(lines.contains(
+            QStringLiteral("catmull-rom,1/2,open,1,0,%1")
+                .arg(QString::fromStdString(granota::formatDouble(*tab.scene().curves[1].curvature.samples[0][0].kappa)))));
     }
 
     // Alt+letter: no two controls of the tab share one, in either language.

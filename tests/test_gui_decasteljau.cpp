@@ -338,7 +338,7 @@ private slots:
         tab.pointTable()->item(1, 1)->setText(QStringLiteral("1/3"));
         const std::vector<Point> typed = editor->points();
         QCOMPARE(typed[1], Point(-1.8, 1.0 / 3));
-        tab.canvas()->zoom(1.0); // the user's zoom: points that move no longer refit the view
+        tab.canvas()->zoom(1.0);             // the user's zoom: points that move no longer refit the view
         tab.canvas()->view().setScale(40.0); // steps of 1/10
         editor->setSelected(1);
         tab.canvas()->setFocus();
@@ -407,18 +407,33 @@ private slots:
         QTest::addColumn<QStringList>("entries");
         QTest::newRow("Ex 2.2") << QStringLiteral("2.2")
                                 << QStringList{
-                                       "(2, 3)", "(-1, 8)", "(-5, -3)", "(3, 0)", "(-7, -2)",
-                                       "(2 - 3t, 3 + 5t)", "(-1 - 4t, 8 - 11t)", "(-5 + 8t, -3 + 3t)", "(3 - 10t, -2t)",
-                                       "(2 - 6t - t^2, 3 + 10t - 16t^2)", "(-1 - 8t + 12t^2, 8 - 22t + 14t^2)",
+                                       "(2, 3)",
+                                       "(-1, 8)",
+                                       "(-5, -3)",
+                                       "(3, 0)",
+                                       "(-7, -2)",
+                                       "(2 - 3t, 3 + 5t)",
+                                       "(-1 - 4t, 8 - 11t)",
+                                       "(-5 + 8t, -3 + 3t)",
+                                       "(3 - 10t, -2t)",
+                                       "(2 - 6t - t^2, 3 + 10t - 16t^2)",
+                                       "(-1 - 8t + 12t^2, 8 - 22t + 14t^2)",
                                        "(-5 + 16t - 18t^2, -3 + 6t - 5t^2)",
                                        "(2 - 9t - 3t^2 + 13t^3, 3 + 15t - 48t^2 + 30t^3)",
                                        "(-1 - 12t + 36t^2 - 30t^3, 8 - 33t + 42t^2 - 19t^3)",
                                        "P0^4(t) = c(t) = (2 - 12t - 6t^2 + 52t^3 - 43t^4, 3 + 20t - 96t^2 + 120t^3 - 49t^4)"};
         QTest::newRow("Ex 2.3") << QStringLiteral("2.3")
                                 << QStringList{
-                                       "(1, 7)", "(0, -3)", "(-4, -2)", "(8, 0)",
-                                       "(1 - t, 7 - 10t)", "(-4t, -3 + t)", "(-4 + 12t, -2 + 2t)", "(8 - 7t, 7t)",
-                                       "(1 - 2t - 3t^2, 7 - 20t + 11t^2)", "(-8t + 16t^2, -3 + 2t + t^2)",
+                                       "(1, 7)",
+                                       "(0, -3)",
+                                       "(-4, -2)",
+                                       "(8, 0)",
+                                       "(1 - t, 7 - 10t)",
+                                       "(-4t, -3 + t)",
+                                       "(-4 + 12t, -2 + 2t)",
+                                       "(8 - 7t, 7t)",
+                                       "(1 - 2t - 3t^2, 7 - 20t + 11t^2)",
+                                       "(-8t + 16t^2, -3 + 2t + t^2)",
                                        "(-4 + 24t - 19t^2, -2 + 4t + 5t^2)",
                                        "(1 - 3t - 9t^2 + 19t^3, 7 - 30t + 33t^2 - 10t^3)",
                                        "(-12t + 48t^2 - 35t^3, -3 + 3t + 3t^2 + 4t^3)",
@@ -486,7 +501,7 @@ private slots:
         QCOMPARE(spy.at(0).at(0).toDouble(), 0.25);
         const QString text = tab.exactPanel()->plainText();
         QVERIFY(text.contains(QStringLiteral("triangle at t = 1/4")));
-        QVERIFY(text.contains(QStringLiteral("(5/4, 17/4)"))); // P_0^1(1/4) = (2 - 3/4, 3 + 5/4)
+        QVERIFY(text.contains(QStringLiteral("(5/4, 17/4)")));  // P_0^1(1/4) = (2 - 3/4, 3 + 5/4)
         QVERIFY(!text.contains(QStringLiteral("(1/2, 11/2)"))); // the t = 1/2 value is gone
         QCOMPARE(tab.parameterControl()->spinBox()->value(), 0.25);
         QCOMPARE(tab.parameterControl()->slider()->value(), 250);
@@ -516,7 +531,8 @@ private slots:
         const QString text = tab.exactPanel()->plainText();
         QVERIFY2(text.contains(QStringLiteral("too large")), qPrintable(text));
         QVERIFY2(!text.contains(QStringLiteral("0, 0")), qPrintable(text));
-        QVERIFY2(!text.contains(QStringLiteral("nan"), Qt::CaseInsensitive) && !text.contains(QStringLiteral("inf"), Qt::CaseInsensitive),
+        QVERIFY2(!text.contains(QStringLiteral("nan"), Qt::CaseInsensitive) &&
+                     !text.contains(QStringLiteral("inf"), Qt::CaseInsensitive),
                  qPrintable(text));
         // The canvas cannot draw them either: it says so instead of staying blank.
         QVERIFY2(tab.canvas()->notice().contains(QStringLiteral("too large to draw")), qPrintable(tab.canvas()->notice()));
@@ -576,7 +592,8 @@ private slots:
         }
         QVERIFY2(deviation < 1e-12, qPrintable(QString::number(deviation)));
         // Still the thesis's polynomial, now from six points.
-        QVERIFY(tab.exactPanel()->plainText().contains(QStringLiteral("(1 - 4t - 18t^2 + 76t^3 - 54t^4, 7 - 40t + 66t^2 - 40t^3 + 14t^4)")));
+        QVERIFY(tab.exactPanel()->plainText().contains(
+            QStringLiteral("(1 - 4t - 18t^2 + 76t^3 - 54t^4, 7 - 40t + 66t^2 - 40t^3 + 14t^4)")));
         tab.undoStack()->undo();
         tab.undoStack()->undo();
         QVERIFY(samePoints(tab.pointEditor()->points(), before));
@@ -755,8 +772,8 @@ private slots:
         QCOMPARE(tab.features().extremaY, expected.extremaY);
         // The box holds every sample of the curve, and touches it at its extrema.
         for (const Point& q : tab.curve())
-            QVERIFY(q.x >= expected.bbox.min.x - 1e-12 && q.x <= expected.bbox.max.x + 1e-12 && q.y >= expected.bbox.min.y - 1e-12
-                    && q.y <= expected.bbox.max.y + 1e-12);
+            QVERIFY(q.x >= expected.bbox.min.x - 1e-12 && q.x <= expected.bbox.max.x + 1e-12 &&
+                    q.y >= expected.bbox.min.y - 1e-12 && q.y <= expected.bbox.max.y + 1e-12);
         QCOMPARE(tab.features().inflections.size(), std::size_t(2));
         QVERIFY(std::fabs(tab.features().inflections[0] - 0.5) < 1e-12);
         QVERIFY(std::fabs(tab.features().inflections[1] - 0.8) < 1e-12);
@@ -802,11 +819,13 @@ private slots:
         QStringList written;
         for (std::size_t i = 0; i + 1 < P.size(); ++i) {
             H.push_back({n * (P[i + 1].x - P[i].x), n * (P[i + 1].y - P[i].y)});
-            written << QStringLiteral("(%1, %2)").arg(QString::fromStdString(granota::formatDouble(H.back().x)),
-                                                      QString::fromStdString(granota::formatDouble(H.back().y)));
+            written << QStringLiteral("(%1, %2)")
+                           .arg(QString::fromStdString(granota::formatDouble(H.back().x)),
+                                QString::fromStdString(granota::formatDouble(H.back().y)));
         }
         QCOMPARE(written.join(QStringLiteral(", ")), QStringLiteral("(3, 6), (6, 0), (3, -6)")); // Ex 2.2-like cubic, by hand
-        const QString comment = QStringLiteral("hodograph: control points n (P_{i+1} - P_i) = ") + written.join(QStringLiteral(", "));
+        const QString comment = QStringLiteral("hodograph: control points n (P_{i+1} - P_i) = ") +
+                                written.join(QStringLiteral(", "));
         QVERIFY2(tex.contains(comment), qPrintable(tex));
         const QStringList lines = tex.split(QLatin1Char('\n'));
         int at = -1;
@@ -832,10 +851,12 @@ private slots:
             QVERIFY(std::fabs(drawn[i].y - (drawn[0].y + a * (H[i].y - H[0].y))) < 2e-3);
         }
         // The frame: lower right of the main picture, whose control polygon is the first \draw.
-        const QRegularExpression frame(QStringLiteral("\\\\filldraw\\[[^\\]]*\\] \\((-?[0-9.]+),(-?[0-9.]+)\\) rectangle \\((-?[0-9.]+),(-?[0-9.]+)\\)"));
+        const QRegularExpression frame(
+            QStringLiteral("\\\\filldraw\\[[^\\]]*\\] \\((-?[0-9.]+),(-?[0-9.]+)\\) rectangle \\((-?[0-9.]+),(-?[0-9.]+)\\)"));
         const auto f = frame.match(tex);
         QVERIFY(f.hasMatch());
-        const QRectF box(QPointF(f.captured(1).toDouble(), f.captured(2).toDouble()), QPointF(f.captured(3).toDouble(), f.captured(4).toDouble()));
+        const QRectF box(QPointF(f.captured(1).toDouble(), f.captured(2).toDouble()),
+                         QPointF(f.captured(3).toDouble(), f.captured(4).toDouble()));
         for (const Point& q : drawn)
             QVERIFY(box.contains(QPointF(q.x, q.y)));
         std::vector<Point> main;
@@ -931,8 +952,10 @@ private slots:
         canvas.resize(100, 80);
         using granota::ui::CanvasStyle;
         using granota::ui::ViewTransform;
-        canvas.addOverlay([](QPainter& p, const ViewTransform&, const CanvasStyle&) { p.fillRect(QRectF(0, 0, 50, 80), Qt::blue); });
-        canvas.addLayer([](QPainter& p, const ViewTransform&, const CanvasStyle&) { p.fillRect(QRectF(0, 0, 100, 80), Qt::red); });
+        canvas.addOverlay(
+            [](QPainter& p, const ViewTransform&, const CanvasStyle&) { p.fillRect(QRectF(0, 0, 50, 80), Qt::blue); });
+        canvas.addLayer(
+            [](QPainter& p, const ViewTransform&, const CanvasStyle&) { p.fillRect(QRectF(0, 0, 100, 80), Qt::red); });
         QImage image(canvas.size(), QImage::Format_ARGB32);
         QPainter painter(&image);
         canvas.render(painter, QRectF(canvas.rect()));
@@ -991,10 +1014,11 @@ private slots:
         for (std::size_t i = 0; i < P.size(); ++i) {
             const QPointF s = view.toScreen(P[i]);
             const QRectF marker(s - QPointF(r, r), QSizeF(2 * r, 2 * r));
-            const QRectF label(s.x() + r, s.y() - r - fm.ascent(), fm.horizontalAdvance(QStringLiteral("P%1").arg(i)) + 3 * style.scale,
-                               fm.height());
+            const QRectF label(s.x() + r, s.y() - r - fm.ascent(),
+                               fm.horizontalAdvance(QStringLiteral("P%1").arg(i)) + 3 * style.scale, fm.height());
             if (clear)
-                QVERIFY2(!key.intersects(marker) && !key.intersects(label), qPrintable(QStringLiteral("P%1 under the key").arg(i)));
+                QVERIFY2(!key.intersects(marker) && !key.intersects(label),
+                         qPrintable(QStringLiteral("P%1 under the key").arg(i)));
             else if (key.intersects(label))
                 covered.push_back(key.intersected(label));
         }
@@ -1008,7 +1032,8 @@ private slots:
                 return k;
             };
             const QRectF topLeft(view.viewport().topLeft() + QPointF(8, 8) * style.scale, key.size());
-            QVERIFY2(samplesIn(key) <= samplesIn(topLeft), qPrintable(QStringLiteral("%1 > %2").arg(samplesIn(key)).arg(samplesIn(topLeft))));
+            QVERIFY2(samplesIn(key) <= samplesIn(topLeft),
+                     qPrintable(QStringLiteral("%1 > %2").arg(samplesIn(key)).arg(samplesIn(topLeft))));
             return;
         }
         // Too small to keep clear: the labels are under the key, not over it. With and without
@@ -1159,8 +1184,9 @@ private slots:
     {
         DeCasteljauTab tab;
         QVERIFY(tab.loadExample(*granota::findWorkedExample("2.2")));
-        const QStringList keys{QStringLiteral("normal"), QStringLiteral("osculatingCircle"), QStringLiteral("curvatureComb"),
-                               QStringLiteral("boundingBox"), QStringLiteral("inflections"), QStringLiteral("hodograph"),
+        const QStringList keys{QStringLiteral("normal"),        QStringLiteral("osculatingCircle"),
+                               QStringLiteral("curvatureComb"), QStringLiteral("boundingBox"),
+                               QStringLiteral("inflections"),   QStringLiteral("hodograph"),
                                QStringLiteral("constantSpeed")};
         for (const QString& key : keys) {
             const QJsonObject saved = tab.saveState();
@@ -1186,8 +1212,8 @@ private slots:
         QString error;
         QVERIFY2(other.loadState(all, &error), qPrintable(error));
         QCOMPARE(other.saveState(), all);
-        QVERIFY(other.normalVisible() && other.osculatingCircleVisible() && other.combVisible() && other.boundingBoxVisible()
-                && other.inflectionsVisible() && other.hodographVisible() && other.constantSpeed());
+        QVERIFY(other.normalVisible() && other.osculatingCircleVisible() && other.combVisible() && other.boundingBoxVisible() &&
+                other.inflectionsVisible() && other.hodographVisible() && other.constantSpeed());
         QJsonObject old = all;
         for (const QString& key : keys)
             old.remove(key);
@@ -1205,10 +1231,10 @@ private slots:
         DeCasteljauTab tab;
         tab.pointEditor()->setPoints({{0, 0}, {1, 0.25}, {0, 1}, {1, 0}}, QStringLiteral("s"));
         tab.setT(0.3);
-        for (auto set : {&DeCasteljauTab::setTangentVisible, &DeCasteljauTab::setNormalVisible,
-                         &DeCasteljauTab::setOsculatingCircleVisible, &DeCasteljauTab::setCombVisible,
-                         &DeCasteljauTab::setBoundingBoxVisible, &DeCasteljauTab::setInflectionsVisible,
-                         &DeCasteljauTab::setHodographVisible})
+        for (auto set :
+             {&DeCasteljauTab::setTangentVisible, &DeCasteljauTab::setNormalVisible, &DeCasteljauTab::setOsculatingCircleVisible,
+              &DeCasteljauTab::setCombVisible, &DeCasteljauTab::setBoundingBoxVisible, &DeCasteljauTab::setInflectionsVisible,
+              &DeCasteljauTab::setHodographVisible})
             (tab.*set)(true);
         const QString tex = tab.tikz();
         QVERIFY(tex.contains(QStringLiteral("osculating circle")));
@@ -1224,7 +1250,8 @@ private slots:
         file.close();
         QProcess p;
         p.setWorkingDirectory(dir.path());
-        p.start(pdflatex, {QStringLiteral("-interaction=nonstopmode"), QStringLiteral("-halt-on-error"), QStringLiteral("all.tex")});
+        p.start(pdflatex,
+                {QStringLiteral("-interaction=nonstopmode"), QStringLiteral("-halt-on-error"), QStringLiteral("all.tex")});
         QVERIFY(p.waitForFinished(120000));
         QVERIFY2(p.exitCode() == 0, p.readAllStandardOutput().right(2000).constData());
     }
@@ -1307,7 +1334,8 @@ private slots:
         QCOMPARE(lines[20], QStringLiteral("feature,t,x,y"));
         for (int i = 21; i < lines.size(); ++i) // Ex 2.2's quartic has extrema (csvListsTheFeatures)
             QVERIFY(QRegularExpression(QStringLiteral("^(extremum_x|extremum_y|inflection|cusp),[^,]+,[^,]+,[^,]+$"))
-                        .match(lines[i]).hasMatch());
+                        .match(lines[i])
+                        .hasMatch());
         QVERIFY(lines.size() > 21);
         const QString tex = tab.tikz();
         QVERIFY(tex.contains(QStringLiteral("\\begin{tikzpicture}")));
@@ -1340,7 +1368,8 @@ private slots:
 
         tab.pointEditor()->setPoints({{0, 0}, {1, 1}, {0, 1}, {1, 0}}, QStringLiteral("test"));
         const QStringList lines = tab.csv().split(QLatin1Char('\n'));
-        const auto cusp = std::find_if(lines.begin(), lines.end(), [](const QString& l) { return l.startsWith(QStringLiteral("cusp,")); });
+        const auto cusp = std::find_if(lines.begin(), lines.end(),
+                                       [](const QString& l) { return l.startsWith(QStringLiteral("cusp,")); });
         QVERIFY(cusp != lines.end());
         const QStringList cells = cusp->split(QLatin1Char(','));
         QVERIFY(std::fabs(cells[1].toDouble() - 0.5) < 1e-9);

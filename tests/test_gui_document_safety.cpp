@@ -102,8 +102,8 @@ private slots:
             QByteArray text;
             text.reserve(int(granota::kMaxDataPoints) * 40);
             for (std::size_t i = 0; i < granota::kMaxDataPoints; ++i)
-                text += QByteArray::number(double(i) / 1000.0 + 0.123456789, 'g', 12) + ','
-                        + QByteArray::number(std::sin(double(i) * 1e-3) * 123.456789, 'g', 12) + '\n';
+                text += QByteArray::number(double(i) / 1000.0 + 0.123456789, 'g', 12) + ',' +
+                        QByteArray::number(std::sin(double(i) * 1e-3) * 123.456789, 'g', 12) + '\n';
             f.write(text);
         }
         MainWindow window;
@@ -132,7 +132,8 @@ private slots:
         QJsonArray points;
         for (std::size_t i = 0; i <= granota::kMaxDataPoints; ++i)
             points.append(QJsonArray{double(i), 1.0});
-        const QByteArray doc = QJsonDocument(QJsonObject{{"format", "granota"}, {"version", 1},
+        const QByteArray doc = QJsonDocument(QJsonObject{{"format", "granota"},
+                                                         {"version", 1},
                                                          {"tabs", QJsonObject{{"fit", QJsonObject{{"points", points}}}}}})
                                    .toJson(QJsonDocument::Compact);
         QTemporaryDir dir;
@@ -175,11 +176,15 @@ private slots:
         QTest::addColumn<QByteArray>("bytes");
         QTest::addColumn<QString>("message");
         const QByteArray head = R"({"format": "granota", "version": 1, )";
-        QTest::newRow("tabs a number") << head + R"("tabs": 5})" << "\"tabs\"";
-        QTest::newRow("tabs a list") << head + R"("tabs": [1, 2]})" << "\"tabs\"";
+        QTest::newRow("tabs a number") << head + R"("tabs": 5})"
+                                       << "\"tabs\"";
+        QTest::newRow("tabs a list") << head + R"("tabs": [1, 2]})"
+                                     << "\"tabs\"";
         QTest::newRow("no tabs") << QByteArray(R"({"format": "granota", "version": 1})") << "\"tabs\"";
-        QTest::newRow("frog a number") << head + R"("tabs": {"frog": 5}})" << "not an object";
-        QTest::newRow("fit a string") << head + R"("tabs": {"fit": "x"}})" << "not an object";
+        QTest::newRow("frog a number") << head + R"("tabs": {"frog": 5}})"
+                                       << "not an object";
+        QTest::newRow("fit a string") << head + R"("tabs": {"fit": "x"}})"
+                                      << "not an object";
         QTest::newRow("a JSON list") << QByteArray("[1, 2, 3]") << "JSON list";
         QTest::newRow("version a string") << QByteArray(R"({"format": "granota", "version": "1", "tabs": {}})")
                                           << "not a whole number";
@@ -209,8 +214,10 @@ private slots:
     {
         QTest::addColumn<QString>("path");
         QTest::addColumn<QString>("message");
-        QTest::newRow("/dev/zero") << "/dev/zero" << "larger than 64 MB";
-        QTest::newRow("/dev/urandom") << "/dev/urandom" << "larger than 64 MB";
+        QTest::newRow("/dev/zero") << "/dev/zero"
+                                   << "larger than 64 MB";
+        QTest::newRow("/dev/urandom") << "/dev/urandom"
+                                      << "larger than 64 MB";
         QTest::newRow("a folder") << QDir::tempPath() << "is a folder";
     }
     void devicesAndFoldersAreRefused()
@@ -268,8 +275,8 @@ private slots:
         QTest::addColumn<QByteArray>("bytes");
         QTest::newRow("garbage") << QByteArray("\x01\x02\x03 not a document");
         QTest::newRow("truncated") << halfValidDocument(QString(), true).left(120);
-        QTest::newRow("every tab refused")
-            << QByteArray(R"({"format": "granota", "version": 1, "tabs": {"frog": {"scene": "nope"}}})");
+        QTest::newRow("every tab refused") << QByteArray(
+            R"({"format": "granota", "version": 1, "tabs": {"frog": {"scene": "nope"}}})");
     }
     void anUnreadableAutosaveIsKeptAndChangesNothing()
     {
@@ -369,7 +376,6 @@ private slots:
         QVERIFY(window.autosaveError().isEmpty());
         QVERIFY(!warning->isVisible());
     }
-
 };
 
 GRANOTA_TEST_MAIN(TestGuiDocumentSafety)

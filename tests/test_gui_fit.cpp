@@ -197,9 +197,8 @@ private slots:
         QVERIFY(!text.contains(QStringLiteral("177/128"))); // matrices only on demand
         tab.showMatricesBox()->setChecked(true);
         const QString matrices = tab.exactPanel()->plainText();
-        for (const char* row : {"9/16\t3/8\t1/16", "177/128\t23/64\t17/128", "31/35\t-23/35\t3/35",
-                                "-23/35\t97/35\t-23/35", "31/35\t9/35\t-3/35\t-1/7\t3/35",
-                                "-23/35\t22/35\t37/35\t22/35\t-23/35"})
+        for (const char* row : {"9/16\t3/8\t1/16", "177/128\t23/64\t17/128", "31/35\t-23/35\t3/35", "-23/35\t97/35\t-23/35",
+                                "31/35\t9/35\t-3/35\t-1/7\t3/35", "-23/35\t22/35\t37/35\t22/35\t-23/35"})
             QVERIFY2(matrices.contains(QString::fromUtf8(row)), row);
     }
 
@@ -549,8 +548,8 @@ private slots:
         const auto& P = tab.currentFit()->controlPoints;
         const granota::CurvatureAt k0 = granota::curvatureAt(P, 0.0);
         QVERIFY(k0.curvature);
-        QVERIFY(std::fabs(granota::distance(tab.comb().teeth.front().base, tab.comb().teeth.front().tip)
-                          - std::fabs(*k0.curvature) * tab.comb().scale) < 1e-9);
+        QVERIFY(std::fabs(granota::distance(tab.comb().teeth.front().base, tab.comb().teeth.front().tip) -
+                          std::fabs(*k0.curvature) * tab.comb().scale) < 1e-9);
         QVERIFY(tab.tikz().contains(QStringLiteral("curvature comb")));
         const QJsonObject on = tab.saveState();
         QCOMPARE(on.value(QStringLiteral("curvatureComb")).toBool(false), true);

@@ -160,7 +160,8 @@ private slots:
         QVERIFY(bodies > 1);
         const QString first = QStringLiteral("Body 1 of %1: area").arg(bodies);
         const QString mean = QStringLiteral("Area error, mean of the %1 bodies,").arg(bodies);
-        QTRY_VERIFY2_WITH_TIMEOUT(canvas->textLines().join('\n').contains(first), qPrintable(canvas->textLines().join('\n')), kEventWaitMs);
+        QTRY_VERIFY2_WITH_TIMEOUT(canvas->textLines().join('\n').contains(first), qPrintable(canvas->textLines().join('\n')),
+                                  kEventWaitMs);
         const QString lines = canvas->textLines().join('\n');
         QVERIFY2(lines.contains(mean), qPrintable(lines));
         QVERIFY2(!lines.contains(QStringLiteral("Area error ")), qPrintable(lines));
@@ -168,7 +169,7 @@ private slots:
         QVERIFY(tab().setScene("frog", nullptr));
         QCOMPARE(canvas->simulation()->bodyCount(), 1);
         QTRY_VERIFY2_WITH_TIMEOUT(canvas->textLines().join('\n').contains(QStringLiteral("Area error ")),
-                     qPrintable(canvas->textLines().join('\n')), kEventWaitMs);
+                                  qPrintable(canvas->textLines().join('\n')), kEventWaitMs);
         QVERIFY(!canvas->textLines().join('\n').contains(QStringLiteral("Body 1 of")));
     }
 
@@ -352,7 +353,7 @@ private slots:
         QCOMPARE(panel->view(), pendulum ? FrogPlotPanel::View::Phase : FrogPlotPanel::View::Energy);
         if (pendulum) {
             QCOMPARE(plot->plottableCount(), 6 + 2); // the energy graphs, hidden, and one orbit per link
-            QVERIFY(plot->itemCount() >= 2);        // the shoulder's two limits
+            QVERIFY(plot->itemCount() >= 2);         // the shoulder's two limits
         }
         panel->setView(FrogPlotPanel::View::AreaError);
         QCOMPARE(plot->graph(0)->dataCount(), 121);
@@ -435,8 +436,8 @@ private slots:
         QTemporaryDir dir;
         const QString mine = dir.filePath("gui.csv"), theirs = dir.filePath("cli.csv");
         QVERIFY2(panel->exportCsv(mine, &error), qPrintable(error));
-        const CliRun run = runCli({"simulate", "--scene", "many-bodies", "--solver", "stable", "--set", "bodies=3",
-                                   "--steps", "120", "--series", theirs, "--series-body", "2"});
+        const CliRun run = runCli({"simulate", "--scene", "many-bodies", "--solver", "stable", "--set", "bodies=3", "--steps",
+                                   "120", "--series", theirs, "--series-body", "2"});
         QCOMPARE(run.exitCode, 0);
         QFile a(mine), b(theirs);
         QVERIFY(a.open(QIODevice::ReadOnly) && b.open(QIODevice::ReadOnly));
@@ -685,14 +686,16 @@ private slots:
         // Hanging straight down, the shoulder sits on its limit of 0 (§4.15: [0, π]).
         QCOMPARE(canvas->linkAngles(0).size(), std::size_t(2));
         QVERIFY(canvas->linkAngles(0)[0].atLimit);
-        QVERIFY(canvas->textLines().join('\n').contains(QStringLiteral("Protractor: %1 of 2 joints held at a limit").arg(held())));
+        QVERIFY(
+            canvas->textLines().join('\n').contains(QStringLiteral("Protractor: %1 of 2 joints held at a limit").arg(held())));
         QVERIFY2(redPixels() > redBefore + 10, "the joint held at its limit is not drawn red");
         // Swung off the limit, the count follows.
         for (int i = 0; i < 40; ++i) {
             QTest::mouseMove(canvas, canvas->toWidget(Point(640 - 8 * i, 200)).toPoint());
             canvas->step();
         }
-        QVERIFY(canvas->textLines().join('\n').contains(QStringLiteral("Protractor: %1 of 2 joints held at a limit").arg(held())));
+        QVERIFY(
+            canvas->textLines().join('\n').contains(QStringLiteral("Protractor: %1 of 2 joints held at a limit").arg(held())));
         QVERIFY(tab().setScene("pendulum-chain", nullptr));
         QVERIFY(canvas->textLines().join('\n').contains("Protractor: no joint of this scene has angle limits"));
 
@@ -1081,7 +1084,8 @@ private slots:
         }
         steps(tab(), 60);
         const Point held = centroid(*sim);
-        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, canvas->toWidget(Point(start.x + 150, start.y - 250)).toPoint());
+        QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier,
+                            canvas->toWidget(Point(start.x + 150, start.y - 250)).toPoint());
         QVERIFY(!sim->grabbing());
         QVERIFY2(held.x > start.x + 100, qPrintable(QString("centroid x %1 → %2").arg(start.x).arg(held.x)));
         QVERIFY2(held.y < start.y - 80, qPrintable(QString("centroid y %1 → %2").arg(start.y).arg(held.y)));
@@ -1221,8 +1225,9 @@ private slots:
         QTest::addColumn<QJsonValue>("value");
         QTest::addColumn<SolverKind>("solver");
         const std::pair<const char*, QJsonValue> cases[] = {
-            {"sides", 3},           {"sides", 200},         {"target_area", 0},       {"target_area", 1e9},
-            {"area_factor", 1e5},   {"gravity", QJsonArray{0, 1e5}}, {"velmax", 1e9}, {"spring_length", 0},
+            {"sides", 3},         {"sides", 200},       {"target_area", 0},
+            {"target_area", 1e9}, {"area_factor", 1e5}, {"gravity", QJsonArray{0, 1e5}},
+            {"velmax", 1e9},      {"spring_length", 0},
         };
         for (SolverKind k : {SolverKind::Seed, SolverKind::Stable})
             for (const auto& [key, value] : cases)

@@ -110,10 +110,9 @@ QString where(const QWidget* w)
             tab = page->key();
             break;
         }
-    return QStringLiteral("%1%2%3")
-        .arg(QString::fromLatin1(w->metaObject()->className()),
-             w->objectName().isEmpty() ? QString() : QStringLiteral(" '%1'").arg(w->objectName()),
-             tab.isEmpty() ? QString() : QStringLiteral(" in %1").arg(tab));
+    return QStringLiteral("%1%2%3").arg(QString::fromLatin1(w->metaObject()->className()),
+                                        w->objectName().isEmpty() ? QString() : QStringLiteral(" '%1'").arg(w->objectName()),
+                                        tab.isEmpty() ? QString() : QStringLiteral(" in %1").arg(tab));
 }
 
 /// Every visible text of the window that holds a NaN or an infinity as a number: labels,
@@ -129,8 +128,7 @@ QStringList nonFiniteTexts(MainWindow& window)
         const QString plain = Qt::mightBeRichText(text) ? QTextDocumentFragment::fromHtml(text).toPlainText() : text;
         const QRegularExpressionMatch m = nonFiniteNumber().match(plain);
         if (m.hasMatch())
-            found << QStringLiteral("%1: “%2”")
-                         .arg(place, plain.mid(std::max(0, int(m.capturedStart()) - 80), 160));
+            found << QStringLiteral("%1: “%2”").arg(place, plain.mid(std::max(0, int(m.capturedStart()) - 80), 160));
     };
     check(QStringLiteral("window title"), window.windowTitle());
     check(QStringLiteral("status bar"), window.statusBar()->currentMessage());
@@ -159,12 +157,10 @@ QStringList nonFiniteTexts(MainWindow& window)
             for (int r = 0; r < model->rowCount(root); ++r) {
                 check(place + QStringLiteral(" row header %1").arg(r), model->headerData(r, Qt::Vertical).toString());
                 for (int c = 0; c < model->columnCount(root); ++c)
-                    check(place + QStringLiteral(" (%1, %2)").arg(r).arg(c),
-                          model->index(r, c, root).data().toString());
+                    check(place + QStringLiteral(" (%1, %2)").arg(r).arg(c), model->index(r, c, root).data().toString());
             }
             for (int c = 0; c < model->columnCount(root); ++c)
-                check(place + QStringLiteral(" column header %1").arg(c),
-                      model->headerData(c, Qt::Horizontal).toString());
+                check(place + QStringLiteral(" column header %1").arg(c), model->headerData(c, Qt::Horizontal).toString());
         }
         if (auto* plot = qobject_cast<QCustomPlot*>(w)) {
             for (QCPAxisRect* rect : plot->axisRects())
@@ -218,10 +214,9 @@ void stormMessageHandler(QtMsgType type, const QMessageLogContext& context, cons
 {
     // Drags end outside the window; the offscreen platform cannot raise popups nor grab the
     // keyboard for them (menus and combo boxes work all the same).
-    if (type == QtWarningMsg
-        && (message.contains(QLatin1String("occurs outside target window"))
-            || message == QLatin1String("This plugin does not support raise()")
-            || message == QLatin1String("This plugin does not support grabbing the keyboard")))
+    if (type == QtWarningMsg && (message.contains(QLatin1String("occurs outside target window")) ||
+                                 message == QLatin1String("This plugin does not support raise()") ||
+                                 message == QLatin1String("This plugin does not support grabbing the keyboard")))
         return;
     g_previousHandler(type, context, message);
 }
@@ -241,8 +236,29 @@ public:
 
 private:
     enum Kind {
-        Press, Move, Release, Click, DoubleClick, Wheel, RightClick, DeleteKey, Arrow, TabKey, Undo, Redo, Space,
-        Typing, ReturnOrEscape, SwitchTab, Field, Cell, Example, ZoomKey, FrogKey, Presentation, KindCount
+        Press,
+        Move,
+        Release,
+        Click,
+        DoubleClick,
+        Wheel,
+        RightClick,
+        DeleteKey,
+        Arrow,
+        TabKey,
+        Undo,
+        Redo,
+        Space,
+        Typing,
+        ReturnOrEscape,
+        SwitchTab,
+        Field,
+        Cell,
+        Example,
+        ZoomKey,
+        FrogKey,
+        Presentation,
+        KindCount
     };
 
     int uniform(int lo, int hi) { return lo + static_cast<int>(m_rng() % static_cast<quint32>(hi - lo + 1)); }
@@ -279,7 +295,7 @@ private:
     std::mt19937 m_rng;
     int m_event = 0;
     int m_homeTab = 0;
-    bool m_held = false;      ///< the left button is down
+    bool m_held = false; ///< the left button is down
     int m_heldFor = 0;
     QPoint m_lastPos{100, 100};
     QString m_pressNote; ///< what pressPoint() aimed at, for the log
@@ -300,10 +316,7 @@ QString Storm::widgetAt(const QPoint& windowPos) const
     return w ? where(w) : QStringLiteral("nothing");
 }
 
-QString keyName(Qt::Key k, Qt::KeyboardModifiers mods = {})
-{
-    return QKeySequence(QKeyCombination(mods, k)).toString();
-}
+QString keyName(Qt::Key k, Qt::KeyboardModifiers mods = {}) { return QKeySequence(QKeyCombination(mods, k)).toString(); }
 
 QString Storm::history() const
 {
@@ -315,10 +328,10 @@ QString Storm::history() const
 
 QString Storm::summary() const
 {
-    static const char* const names[KindCount] = {
-        "press",  "move",          "release",    "click", "double-click", "wheel", "right-click",
-        "delete", "arrow",         "tab",        "undo",  "redo",         "space", "typing",
-        "return/escape", "switch tab", "field", "cell", "example", "zoom", "frog key", "presentation"};
+    static const char* const names[KindCount] = {"press",       "move",   "release",       "click",       "double-click", "wheel",
+                                                 "right-click", "delete", "arrow",         "tab",         "undo",         "redo",
+                                                 "space",       "typing", "return/escape", "switch tab",  "field",        "cell",
+                                                 "example",     "zoom",   "frog key",      "presentation"};
     QStringList kinds, tabs;
     for (int k = 0; k < KindCount; ++k)
         kinds << QStringLiteral("%1 %2 (%3 ms)")
@@ -560,13 +573,27 @@ Storm::Kind Storm::nextKind()
     };
     const bool frog = page() && page()->key() == QLatin1String("frog");
     const Weight table[] = {
-        {Press, m_held ? 0 : 11},   {Move, m_held ? 30 : 10}, {Release, m_held ? 10 + m_heldFor : 0},
-        {Click, 8},                 {DoubleClick, 5},         {Wheel, 4},
-        {RightClick, 1},            {DeleteKey, 5},           {Arrow, 6},
-        {TabKey, 3},                {Undo, 6},                {Redo, 3},
-        {Space, frog ? 4 : 0},      {Typing, 4},              {ReturnOrEscape, 1},
-        {SwitchTab, 2},             {Field, 8},               {Cell, 4},
-        {Example, 1},               {ZoomKey, 1},             {FrogKey, frog ? 2 : 0},
+        {Press, m_held ? 0 : 11},
+        {Move, m_held ? 30 : 10},
+        {Release, m_held ? 10 + m_heldFor : 0},
+        {Click, 8},
+        {DoubleClick, 5},
+        {Wheel, 4},
+        {RightClick, 1},
+        {DeleteKey, 5},
+        {Arrow, 6},
+        {TabKey, 3},
+        {Undo, 6},
+        {Redo, 3},
+        {Space, frog ? 4 : 0},
+        {Typing, 4},
+        {ReturnOrEscape, 1},
+        {SwitchTab, 2},
+        {Field, 8},
+        {Cell, 4},
+        {Example, 1},
+        {ZoomKey, 1},
+        {FrogKey, frog ? 2 : 0},
         {Presentation, m_event % 7 == 0 ? 1 : 0}, // about once in 700 events
     };
     int total = 0;
@@ -587,10 +614,7 @@ void Storm::send(Kind kind)
     switch (kind) {
     case Press: {
         const QPoint pos = pressPoint();
-        log(QStringLiteral("press at (%1, %2) on %3%4")
-                .arg(pos.x())
-                .arg(pos.y())
-                .arg(widgetAt(pos), m_pressNote));
+        log(QStringLiteral("press at (%1, %2) on %3%4").arg(pos.x()).arg(pos.y()).arg(widgetAt(pos), m_pressNote));
         mouse(QTest::MousePress, Qt::LeftButton, pos);
         m_held = true;
         m_heldFor = 0;
@@ -729,11 +753,10 @@ void Storm::send(Kind kind)
         QList<QWidget*> fields;
         for (QWidget* w : targets()) {
             // A line edit of its own (τ), not the one inside a spin box or an open table cell.
-            const bool lineEdit = qobject_cast<QLineEdit*>(w) && !qobject_cast<QAbstractSpinBox*>(w->parentWidget())
-                                  && !qobject_cast<QAbstractItemView*>(w->parentWidget()->parentWidget());
-            if ((qobject_cast<QComboBox*>(w) || qobject_cast<QAbstractSpinBox*>(w) || qobject_cast<QSlider*>(w)
-                 || lineEdit)
-                && w->focusPolicy() != Qt::NoFocus)
+            const bool lineEdit = qobject_cast<QLineEdit*>(w) && !qobject_cast<QAbstractSpinBox*>(w->parentWidget()) &&
+                                  !qobject_cast<QAbstractItemView*>(w->parentWidget()->parentWidget());
+            if ((qobject_cast<QComboBox*>(w) || qobject_cast<QAbstractSpinBox*>(w) || qobject_cast<QSlider*>(w) || lineEdit) &&
+                w->focusPolicy() != Qt::NoFocus)
                 fields << w;
         }
         QWidget* field = pickFrom(fields);
@@ -741,8 +764,7 @@ void Storm::send(Kind kind)
             break;
         field->setFocus(Qt::TabFocusReason);
         const int how = uniform(0, 9);
-        static const Qt::Key keys[] = {Qt::Key_Up,       Qt::Key_Down, Qt::Key_PageUp,
-                                       Qt::Key_PageDown, Qt::Key_Home, Qt::Key_End};
+        static const Qt::Key keys[] = {Qt::Key_Up, Qt::Key_Down, Qt::Key_PageUp, Qt::Key_PageDown, Qt::Key_Home, Qt::Key_End};
         if (how < 6) {
             log(QStringLiteral("%1 on %2").arg(keyName(keys[how]), where(field)));
             key(keys[how]);
@@ -769,8 +791,7 @@ void Storm::send(Kind kind)
         QTableWidget* table = pickFrom(tables);
         if (!table || m_held || QApplication::activePopupWidget())
             break;
-        const QModelIndex index = table->model()->index(uniform(0, table->rowCount() - 1),
-                                                        uniform(0, table->columnCount() - 1));
+        const QModelIndex index = table->model()->index(uniform(0, table->rowCount() - 1), uniform(0, table->columnCount() - 1));
         table->scrollTo(index);
         const QPoint pos = table->viewport()->mapTo(&m_window, table->visualRect(index).center());
         const QString text = typedNumber();
@@ -779,7 +800,10 @@ void Storm::send(Kind kind)
                 .arg(index.row())
                 .arg(index.column())
                 .arg(where(table), text,
-                     QLatin1String(end < 6 ? " + Return" : end < 8 ? " + Tab" : end < 9 ? " + Escape" : "")));
+                     QLatin1String(end < 6   ? " + Return"
+                                   : end < 8 ? " + Tab"
+                                   : end < 9 ? " + Escape"
+                                             : "")));
         mouse(QTest::MouseDClick, Qt::LeftButton, pos);
         type(text);
         if (end < 9)
@@ -816,8 +840,7 @@ void Storm::send(Kind kind)
         log(QStringLiteral("F11 (presentation mode)"));
         key(Qt::Key_F11);
         break;
-    case KindCount:
-        break;
+    case KindCount: break;
     }
     if (m_held)
         ++m_heldFor;
@@ -851,8 +874,8 @@ bool Storm::play(int events, QString* failure)
         m_kindNs[static_cast<std::size_t>(kind)] += clock.nsecsElapsed();
         // When a menu or a combo box's list closes, the offscreen platform leaves no window
         // active (a window manager gives the activation back), and no shortcut would work.
-        if (QGuiApplication::focusWindow() != m_window.windowHandle() && !QApplication::activePopupWidget()
-            && !QApplication::activeModalWidget()) {
+        if (QGuiApplication::focusWindow() != m_window.windowHandle() && !QApplication::activePopupWidget() &&
+            !QApplication::activeModalWidget()) {
             ++m_deactivations[m_history.empty() ? QString() : m_history.back().section(QLatin1Char(' '), 2, 3)];
             m_window.activateWindow();
         }
@@ -948,16 +971,13 @@ class TestGuiInputStorm : public QObject {
         Storm storm(window, seed);
         QString failure;
         const bool played = storm.play(events, &failure);
-        QVERIFY2(played, qPrintable(QStringLiteral("seed %1: %2\nlast events:\n%3")
-                                        .arg(seed)
-                                        .arg(failure, storm.history())));
+        QVERIFY2(played, qPrintable(QStringLiteral("seed %1: %2\nlast events:\n%3").arg(seed).arg(failure, storm.history())));
         storm.letGo();
         qInfo().noquote() << storm.summary();
         window.setPresentation(false); // F11 changes the application's font for the next test
 
-        QVERIFY2(storm.undoEverything(&failure), qPrintable(QStringLiteral("seed %1: %2\nlast events:\n%3")
-                                                                .arg(seed)
-                                                                .arg(failure, storm.history())));
+        QVERIFY2(storm.undoEverything(&failure),
+                 qPrintable(QStringLiteral("seed %1: %2\nlast events:\n%3").arg(seed).arg(failure, storm.history())));
         const QJsonObject expected = start;
         const QJsonObject after = undoableParts(documentOf(window));
         const auto compact = [](const QJsonValue& v) {
@@ -984,10 +1004,8 @@ class TestGuiInputStorm : public QObject {
                                                   .arg(differ.join(QLatin1Char('\n')), storm.history())));
         // And byte for byte, as the document is written.
         QCOMPARE(QJsonDocument(after).toJson(), QJsonDocument(expected).toJson());
-        qInfo().noquote() << QStringLiteral("seed %1: %2 events in %3 s")
-                                 .arg(seed)
-                                 .arg(events)
-                                 .arg(clock.elapsed() / 1000.0, 0, 'f', 1);
+        qInfo().noquote()
+            << QStringLiteral("seed %1: %2 events in %3 s").arg(seed).arg(events).arg(clock.elapsed() / 1000.0, 0, 'f', 1);
     }
 
 private slots:
@@ -1007,8 +1025,8 @@ private slots:
     {
         for (const char* bad : {"nan", "NaN", "-inf", "+Inf", "x = inf", "(nan, 3)", "1.5, -nan", "cond = inf."})
             QVERIFY2(nonFiniteNumber().match(QLatin1String(bad)).hasMatch(), bad);
-        for (const char* good : {"information", "infinite (M is singular)", "Nancy", "infinity", "banana", "Inform",
-                                 "3.25, -1/2"})
+        for (const char* good :
+             {"information", "infinite (M is singular)", "Nancy", "infinity", "banana", "Inform", "3.25, -1/2"})
             QVERIFY2(!nonFiniteNumber().match(QLatin1String(good)).hasMatch(), good);
     }
 

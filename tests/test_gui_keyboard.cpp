@@ -342,7 +342,8 @@ private slots:
             QVERIFY(window.showTab(page->key()));
             for (QWidget* w : window.findChildren<QWidget*>())
                 if (w->isVisible() && isOwnControl(w) && accessibleText(w, QAccessible::Name).trimmed().isEmpty())
-                    unnamed << QStringLiteral("%1: %2 (%3)").arg(page->key(), w->objectName(), QString::fromLatin1(w->metaObject()->className()));
+                    unnamed << QStringLiteral("%1: %2 (%3)")
+                                   .arg(page->key(), w->objectName(), QString::fromLatin1(w->metaObject()->className()));
         }
         unnamed.removeDuplicates();
         QVERIFY2(unnamed.isEmpty(), qPrintable(unnamed.join(QStringLiteral(", "))));

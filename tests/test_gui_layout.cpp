@@ -109,10 +109,7 @@ void checkText(QWidget* w, QStringList& problems)
             for (const QString& line : plain.split(QLatin1Char('\n')))
                 textWidth = std::max(textWidth, fm.horizontalAdvance(line));
             if (textWidth > content.width() + 1 || hint.height() > l->height() + 1)
-                problems << QStringLiteral("label text %1×%2 clipped: %3")
-                                .arg(textWidth)
-                                .arg(hint.height())
-                                .arg(describe(w));
+                problems << QStringLiteral("label text %1×%2 clipped: %3").arg(textWidth).arg(hint.height()).arg(describe(w));
         }
     } else if (auto* b = qobject_cast<QAbstractButton*>(w)) {
         if (b->text().isEmpty())
@@ -143,7 +140,8 @@ void checkText(QWidget* w, QStringList& problems)
         const QRect field = c->style()->subControlRect(QStyle::CC_ComboBox, &option, QStyle::SC_ComboBoxEditField, c);
         // Every choice, not only the current one: any of them may be chosen and then shown.
         for (int i = 0; i < c->count(); ++i) {
-            const int textWidth = fm.horizontalAdvance(c->itemText(i)) + (c->itemIcon(i).isNull() ? 0 : c->iconSize().width() + 4);
+            const int textWidth = fm.horizontalAdvance(c->itemText(i)) +
+                                  (c->itemIcon(i).isNull() ? 0 : c->iconSize().width() + 4);
             if (textWidth > field.width())
                 problems << QStringLiteral("combo item “%1” needs %2 in a field of %3: %4")
                                 .arg(c->itemText(i))
@@ -169,7 +167,8 @@ void checkPlot(QCustomPlot* plot, QStringList& problems)
             continue;
         const QRect inner = axisRect->rect();
         if (inner.width() < 20 || inner.height() < 20)
-            problems << QStringLiteral("plot area %1×%2 is too small: %3").arg(inner.width()).arg(inner.height()).arg(describe(plot));
+            problems
+                << QStringLiteral("plot area %1×%2 is too small: %3").arg(inner.width()).arg(inner.height()).arg(describe(plot));
         for (QCPAxis* axis : axisRect->axes()) {
             if (!axis->visible())
                 continue;
@@ -264,8 +263,8 @@ QStringList layoutProblems(MainWindow& window, QSize size)
         if (auto* area = qobject_cast<QScrollArea*>(w); area && area->widget()) {
             const QSize content = area->widget()->size(), view = area->viewport()->size();
             // Side panels scroll up and down only: a row cut at the side is a row nobody reads.
-            if (content.width() > view.width()
-                || (area->verticalScrollBarPolicy() == Qt::ScrollBarAlwaysOff && content.height() > view.height()))
+            if (content.width() > view.width() ||
+                (area->verticalScrollBarPolicy() == Qt::ScrollBarAlwaysOff && content.height() > view.height()))
                 problems << QStringLiteral("scroll area cuts its %1×%2 content to %3×%4: %5")
                                 .arg(content.width())
                                 .arg(content.height())
@@ -308,9 +307,12 @@ private slots:
         for (const char* language : {"en", "ca"})
             for (bool reports : {false, true}) {
                 const char* r = reports ? " reports" : "";
-                QTest::addRow("%s 800x600%s", language, r) << QString::fromLatin1(language) << QSize(800, 600 - kTitleBar) << false << reports;
-                QTest::addRow("%s 1280x800%s", language, r) << QString::fromLatin1(language) << QSize(1280, 800 - kTitleBar) << false << reports;
-                QTest::addRow("%s 1024x768 presentation%s", language, r) << QString::fromLatin1(language) << QSize(1024, 768 - kTitleBar) << true << reports;
+                QTest::addRow("%s 800x600%s", language, r)
+                    << QString::fromLatin1(language) << QSize(800, 600 - kTitleBar) << false << reports;
+                QTest::addRow("%s 1280x800%s", language, r)
+                    << QString::fromLatin1(language) << QSize(1280, 800 - kTitleBar) << false << reports;
+                QTest::addRow("%s 1024x768 presentation%s", language, r)
+                    << QString::fromLatin1(language) << QSize(1024, 768 - kTitleBar) << true << reports;
             }
     }
 

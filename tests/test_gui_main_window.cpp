@@ -99,9 +99,8 @@ std::map<QString, QString> visibleTexts(MainWindow& window)
         if (action->isSeparator())
             continue;
         add(QStringLiteral("action#%1.text").arg(a), action->text());
-        add(QStringLiteral("action#%1.toolTip").arg(a++), action->toolTip() == action->text().remove(QLatin1Char('&'))
-                                                                 ? QString()
-                                                                 : action->toolTip());
+        add(QStringLiteral("action#%1.toolTip").arg(a++),
+            action->toolTip() == action->text().remove(QLatin1Char('&')) ? QString() : action->toolTip());
     }
     return texts;
 }
@@ -109,20 +108,21 @@ std::map<QString, QString> visibleTexts(MainWindow& window)
 /// Texts that are the same in Catalan and English: names, symbols and numbers.
 bool languageNeutral(const QString& text)
 {
-    static const QStringList names = {
-        QStringLiteral("De Casteljau"), QStringLiteral("Bernstein"), QStringLiteral("Catmull-Rom"),
-        QStringLiteral("Granota"), QStringLiteral("Català"), QStringLiteral("English"), QStringLiteral("TikZ"),
-        QStringLiteral("QR"), QStringLiteral("SVD"), QStringLiteral("PNG"), QStringLiteral("SVG"), QStringLiteral("PDF"),
-        QStringLiteral("CSV"), QStringLiteral("Verlet"), QStringLiteral("XPBD"),
-        // Words that are spelt the same in Catalan.
-        QStringLiteral("Tangent"), QStringLiteral("5.2.1 Obstacles"), QStringLiteral("Centre (x, y)")};
+    static const QStringList names = {QStringLiteral("De Casteljau"), QStringLiteral("Bernstein"), QStringLiteral("Catmull-Rom"),
+                                      QStringLiteral("Granota"), QStringLiteral("Català"), QStringLiteral("English"),
+                                      QStringLiteral("TikZ"), QStringLiteral("QR"), QStringLiteral("SVD"), QStringLiteral("PNG"),
+                                      QStringLiteral("SVG"), QStringLiteral("PDF"), QStringLiteral("CSV"),
+                                      QStringLiteral("Verlet"), QStringLiteral("XPBD"),
+                                      // Words that are spelt the same in Catalan.
+                                      QStringLiteral("Tangent"), QStringLiteral("5.2.1 Obstacles"),
+                                      QStringLiteral("Centre (x, y)")};
     if (names.contains(text.trimmed()))
         return true;
     if (text.endsWith(QLatin1String(".granota"))) // File ▸ Open Recent lists file names
         return true;
     // Numbers, symbols, variable names, point labels, file names.
-    static const QRegularExpression symbols(QStringLiteral(
-        "^[\\s0-9.,:;/+\\-−=×·²³⁴⅛¼½<>()\\[\\]{}|%…ταtnxyijkPQqBcwsW_′'^√∞≤≥✓✗µ]*$"));
+    static const QRegularExpression symbols(
+        QStringLiteral("^[\\s0-9.,:;/+\\-−=×·²³⁴⅛¼½<>()\\[\\]{}|%…ταtnxyijkPQqBcwsW_′'^√∞≤≥✓✗µ]*$"));
     return symbols.match(text).hasMatch();
 }
 
@@ -239,9 +239,9 @@ private slots:
     {
         QTest::addColumn<QString>("id");
         QTest::addColumn<QString>("tab");
-        const char* const ids[][2] = {{"2.1", "catmull-rom"}, {"2.2", "decasteljau"}, {"2.3", "decasteljau"},
-                                      {"2.4", "bernstein"},   {"2.5", "bernstein"},   {"2.6", "bernstein"},
-                                      {"2.7", "fit"},         {"2.8", "fit"},         {"2.9", "fit"},
+        const char* const ids[][2] = {{"2.1", "catmull-rom"}, {"2.2", "decasteljau"},  {"2.3", "decasteljau"},
+                                      {"2.4", "bernstein"},   {"2.5", "bernstein"},    {"2.6", "bernstein"},
+                                      {"2.7", "fit"},         {"2.8", "fit"},          {"2.9", "fit"},
                                       {"2.10", "fit"},        {"2.11", "catmull-rom"}, {"2.12", "catmull-rom"},
                                       {"2.13", "catmull-rom"}};
         for (const auto& row : ids)
@@ -342,7 +342,8 @@ private slots:
         QCOMPARE(window.exportCurrent(QStringLiteral("png"), screen, 96), QString());
         QCOMPARE(window.exportCurrent(QStringLiteral("png"), print, 300), QString());
         const QImage a = QImage(screen).convertToFormat(QImage::Format_Grayscale8);
-        const QImage b = QImage(print).scaled(a.size(), Qt::IgnoreAspectRatio, Qt::SmoothTransformation)
+        const QImage b = QImage(print)
+                             .scaled(a.size(), Qt::IgnoreAspectRatio, Qt::SmoothTransformation)
                              .convertToFormat(QImage::Format_Grayscale8);
         QVERIFY(!a.isNull() && !b.isNull());
         // Ink (dark pixels) in each, and how much of it the two share.
@@ -402,7 +403,8 @@ private slots:
             TikzOptionsDialog dialog(TikzOptions{});
             QCOMPARE(dialog.windowTitle(), QStringLiteral("Figura TikZ"));
             QCOMPARE(dialog.findChild<QCheckBox*>(QStringLiteral("tikzGrid"))->text(), QStringLiteral("Quadrícula"));
-            QVERIFY(dialog.findChild<QDoubleSpinBox*>(QStringLiteral("tikzHeight"))->toolTip().contains(QStringLiteral("6,5 cm")));
+            QVERIFY(
+                dialog.findChild<QDoubleSpinBox*>(QStringLiteral("tikzHeight"))->toolTip().contains(QStringLiteral("6,5 cm")));
         }
         granota::ui::setLanguage(QStringLiteral("en"), false);
         QSettings().remove(QStringLiteral("tikz"));
@@ -583,7 +585,7 @@ private slots:
         QTest::newRow("bernstein") << QStringLiteral("bernstein") << 3;     // De Casteljau, Bernstein, Horner
         QTest::newRow("fit") << QStringLiteral("fit") << 3;                 // normal equations, QR, SVD
         QTest::newRow("catmull-rom") << QStringLiteral("catmull-rom") << 2;
-        QTest::newRow("frog") << QStringLiteral("frog") << 4;               // Euler, semi-implicit, Verlet, RK4
+        QTest::newRow("frog") << QStringLiteral("frog") << 4; // Euler, semi-implicit, Verlet, RK4
     }
     void workPrecisionBelowEachTab()
     {
@@ -679,8 +681,7 @@ private slots:
             const double error = adaptive->data()->at(i)->value;
             for (int j = 0; j + 1 < uniform->dataCount(); ++j)
                 if (uniform->data()->at(j)->value >= error && error > uniform->data()->at(j + 1)->value) {
-                    QVERIFY2(adaptive->data()->at(i)->key < uniform->data()->at(j + 1)->key,
-                             qPrintable(QString::number(error)));
+                    QVERIFY2(adaptive->data()->at(i)->key < uniform->data()->at(j + 1)->key, qPrintable(QString::number(error)));
                     ++compared;
                 }
         }
@@ -727,7 +728,9 @@ private slots:
         QTest::newRow("bad language") << QStringList{"--lang", "fr"} << 2;
         QTest::newRow("bad example") << QStringList{"--example", "3.1"} << 2;
         QTest::newRow("bad scene") << QStringList{"--scene", "dragon"} << 2;
-        QTest::newRow("plot of body 3") << QStringList{"--scene", "many-bodies", "--plots", "energy", "--steps", "5", "--plot-body", "3"} << 0;
+        QTest::newRow("plot of body 3") << QStringList{"--scene", "many-bodies", "--plots",     "energy",
+                                                       "--steps", "5",           "--plot-body", "3"}
+                                        << 0;
         QTest::newRow("plot of body 13 of 12") << QStringList{"--scene", "many-bodies", "--plot-body", "13"} << 2;
         QTest::newRow("plot of body zero") << QStringList{"--scene", "many-bodies", "--plot-body", "0"} << 2;
         QTest::newRow("plot of a body, one body") << QStringList{"--scene", "frog", "--plot-body", "1"} << 2;
@@ -744,7 +747,8 @@ private slots:
         env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
         env.insert(QStringLiteral("XDG_DATA_HOME"), dir.filePath(QStringLiteral("data")));
         QDir(dir.path()).mkdir(QStringLiteral("runtime"));
-        QFile::setPermissions(dir.filePath(QStringLiteral("runtime")), QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
+        QFile::setPermissions(dir.filePath(QStringLiteral("runtime")),
+                              QFileDevice::ReadOwner | QFileDevice::WriteOwner | QFileDevice::ExeOwner);
         env.insert(QStringLiteral("XDG_RUNTIME_DIR"), dir.filePath(QStringLiteral("runtime")));
         process.setProcessEnvironment(env);
         process.start(QStringLiteral(GRANOTA_GUI_PATH), arguments + QStringList{QStringLiteral("--screenshot"), png});
@@ -792,9 +796,9 @@ private slots:
         env.insert(QStringLiteral("XDG_DATA_HOME"), data);
         process.setProcessEnvironment(env);
         const QString png = dir.filePath(QStringLiteral("shot.png"));
-        process.start(QStringLiteral(GRANOTA_GUI_PATH), {QStringLiteral("--lang"), QStringLiteral("ca"),
-                                                         QStringLiteral("--presentation"), QStringLiteral("--screenshot"),
-                                                         png, document});
+        process.start(QStringLiteral(GRANOTA_GUI_PATH),
+                      {QStringLiteral("--lang"), QStringLiteral("ca"), QStringLiteral("--presentation"),
+                       QStringLiteral("--screenshot"), png, document});
         QVERIFY(process.waitForFinished(120000));
         QCOMPARE(process.exitCode(), 0);
         QVERIFY(QFile::exists(png));

@@ -41,8 +41,7 @@ struct Measure {
 
 /// Exports the TikZ picture of every tab into `dir` through the main window (the GUI's
 /// own path), with `options`; De Casteljau shows Ex 2.2, the widest of chapter 2.
-std::vector<Figure> exportFigures(MainWindow& window, const QDir& dir, const TikzOptions& options,
-                                  const QString& suffix)
+std::vector<Figure> exportFigures(MainWindow& window, const QDir& dir, const TikzOptions& options, const QString& suffix)
 {
     std::vector<Figure> figures;
     const auto add = [&](const QString& tab, const char* example) {
@@ -50,10 +49,10 @@ std::vector<Figure> exportFigures(MainWindow& window, const QDir& dir, const Tik
             return;
         if (!window.showTab(tab))
             return;
-        const QString name = QStringLiteral("fig-%1%2-%3").arg(tab, suffix, QString::fromLatin1(example ? example : "0"))
+        const QString name = QStringLiteral("fig-%1%2-%3")
+                                 .arg(tab, suffix, QString::fromLatin1(example ? example : "0"))
                                  .replace(QLatin1Char('.'), QLatin1Char('_'));
-        if (window.exportCurrent(QStringLiteral("tikz"), dir.filePath(name + QStringLiteral(".tex")), 96, options)
-                .isEmpty())
+        if (window.exportCurrent(QStringLiteral("tikz"), dir.filePath(name + QStringLiteral(".tex")), 96, options).isEmpty())
             figures.push_back({name, tab});
     };
     add(QStringLiteral("decasteljau"), "2.2");
@@ -114,10 +113,11 @@ QString compile(const QDir& dir, const QString& name, const QString& tex, QStrin
     QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
     env.insert(QStringLiteral("max_print_line"), QStringLiteral("100000"));
     p.setProcessEnvironment(env);
-    p.start(pdflatex, {QStringLiteral("-halt-on-error"), QStringLiteral("-interaction=nonstopmode"),
-                       name + QStringLiteral(".tex")});
+    p.start(pdflatex,
+            {QStringLiteral("-halt-on-error"), QStringLiteral("-interaction=nonstopmode"), name + QStringLiteral(".tex")});
     if (!p.waitForFinished(300000) || p.exitStatus() != QProcess::NormalExit || p.exitCode() != 0)
-        *error = QStringLiteral("pdflatex failed on %1:\n…%2").arg(name, QString::fromUtf8(p.readAllStandardOutput().right(1500)));
+        *error =
+            QStringLiteral("pdflatex failed on %1:\n…%2").arg(name, QString::fromUtf8(p.readAllStandardOutput().right(1500)));
     QFile log(dir.filePath(name + QStringLiteral(".log")));
     if (!log.open(QIODevice::ReadOnly)) {
         *error += QStringLiteral("no log");
@@ -140,8 +140,7 @@ Measure measure(const QString& log, const QString& figure)
         m.height = points(s.captured(2));
         m.textWidth = points(s.captured(3));
     }
-    const QRegularExpression bottom(
-        QStringLiteral("GRANOTA %1 bottom=(-?[0-9]+)sp").arg(QRegularExpression::escape(figure)));
+    const QRegularExpression bottom(QStringLiteral("GRANOTA %1 bottom=(-?[0-9]+)sp").arg(QRegularExpression::escape(figure)));
     const auto b = bottom.match(log);
     if (b.hasMatch())
         m.bottom = b.captured(1).toDouble() / 65536.0;
@@ -166,8 +165,10 @@ class TestGuiTikzLatex : public QObject {
             QString error;
             const QString log = compile(QDir(dir.path()), documentClass, documentWith(documentClass, figures), &error);
             QVERIFY2(error.isEmpty(), qPrintable(error));
-            QVERIFY2(!log.contains(QStringLiteral("Overfull \\hbox")), qPrintable(documentClass + QStringLiteral(": overfull \\hbox")));
-            QVERIFY2(!log.contains(QStringLiteral("Overfull \\vbox")), qPrintable(documentClass + QStringLiteral(": overfull \\vbox")));
+            QVERIFY2(!log.contains(QStringLiteral("Overfull \\hbox")),
+                     qPrintable(documentClass + QStringLiteral(": overfull \\hbox")));
+            QVERIFY2(!log.contains(QStringLiteral("Overfull \\vbox")),
+                     qPrintable(documentClass + QStringLiteral(": overfull \\vbox")));
             QVERIFY2(!log.contains(QRegularExpression(QStringLiteral("^! "), QRegularExpression::MultilineOption)),
                      qPrintable(documentClass + QStringLiteral(": a LaTeX error")));
             for (const Figure& f : figures) {

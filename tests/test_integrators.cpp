@@ -45,7 +45,8 @@ private slots:
         // Halving h divides the global error by about 2^order.
         const double e1 = oscillatorError(method, 0.02), e2 = oscillatorError(method, 0.01);
         const double observed = std::log2(e1 / e2);
-        qInfo("%s: error %.3g at h = 0.02, %.3g at h = 0.01, observed order %.2f", integratorName(method).c_str(), e1, e2, observed);
+        qInfo("%s: error %.3g at h = 0.02, %.3g at h = 0.01, observed order %.2f", integratorName(method).c_str(), e1, e2,
+              observed);
         QVERIFY(std::abs(observed - order) < 0.25);
     }
 

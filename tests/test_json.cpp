@@ -65,7 +65,8 @@ private slots:
     void rejects_data()
     {
         QTest::addColumn<QString>("text");
-        for (const char* bad : {"", "{", "[1,2", "{\"a\" 1}", "{a:1}", "[1,]", "nul", "[NaN]", "[1e999]", "\"abc", "[1] 2", "{\"a\":1,}"})
+        for (const char* bad :
+             {"", "{", "[1,2", "{\"a\" 1}", "{a:1}", "[1,]", "nul", "[NaN]", "[1e999]", "\"abc", "[1] 2", "{\"a\":1,}"})
             QTest::newRow(bad) << QString(bad);
         QTest::newRow("deep") << QString(1000, '[');
     }
@@ -131,7 +132,8 @@ private slots:
         const QByteArray many = "1" + QByteArray(400, '0');
         QTest::newRow("1e400") << QByteArray("1e400") << QByteArray("1e400") << QByteArray("at line 1, column 1");
         QTest::newRow("negative") << QByteArray("[0, -1e400]") << QByteArray("-1e400") << QByteArray("at line 1, column 5");
-        QTest::newRow("in an object") << QByteArray("{\"g\":\n  2e308}") << QByteArray("2e308") << QByteArray("at line 2, column 3");
+        QTest::newRow("in an object") << QByteArray("{\"g\":\n  2e308}") << QByteArray("2e308")
+                                      << QByteArray("at line 2, column 3");
         QTest::newRow("many digits") << many << many << QByteArray("at line 1, column 1");
     }
     void tooLargeNumbers()
@@ -249,7 +251,8 @@ private slots:
         QVERIFY(Json::parse(objects).ok());
         auto deep = Json::parse("[\n" + std::string(kLimit, '[') + std::string(kLimit + 1, ']'));
         QVERIFY(!deep.ok());
-        QCOMPARE(deep.error().message, std::string("JSON: arrays and objects nested deeper than 256 levels at line 2, column 256"));
+        QCOMPARE(deep.error().message,
+                 std::string("JSON: arrays and objects nested deeper than 256 levels at line 2, column 256"));
         QVERIFY(!Json::parse(std::string(1000000, '[')).ok()); // an error, not a stack overflow
     }
 
@@ -307,7 +310,8 @@ private slots:
     }
     void writesControlCharactersEscaped()
     {
-        QCOMPARE(Json(std::string("a\x01\x1f\b\f\n\t\r\"\\")).dump(), std::string("\"a\\u0001\\u001f\\u0008\\u000c\\n\\t\\r\\\"\\\\\""));
+        QCOMPARE(Json(std::string("a\x01\x1f\b\f\n\t\r\"\\")).dump(),
+                 std::string("\"a\\u0001\\u001f\\u0008\\u000c\\n\\t\\r\\\"\\\\\""));
     }
 };
 

@@ -33,10 +33,7 @@ Rational R(const QString& text)
 QString str(const RationalMatrix& m) { return QString::fromStdString(toText(m)); }
 
 /// Q_0..Q_4 of Ex 2.7–2.10.
-std::vector<RPoint> thesisPoints()
-{
-    return {RPoint(0, 0), RPoint(1, 3), RPoint(4, 2), RPoint(8, -2), RPoint(1, 5)};
-}
+std::vector<RPoint> thesisPoints() { return {RPoint(0, 0), RPoint(1, 3), RPoint(4, 2), RPoint(8, -2), RPoint(1, 5)}; }
 
 std::vector<Point> toPoints(const QVector<QPointF>& v)
 {
@@ -126,8 +123,7 @@ const LeastSquaresSolver kSolvers[] = {LeastSquaresSolver::Qr, LeastSquaresSolve
 const Parametrization kParametrizations[] = {Parametrization::Uniform, Parametrization::ChordLength,
                                              Parametrization::Centripetal};
 
-FitOptions options(int degree, Parametrization p = Parametrization::Uniform,
-                   LeastSquaresSolver s = LeastSquaresSolver::Qr)
+FitOptions options(int degree, Parametrization p = Parametrization::Uniform, LeastSquaresSolver s = LeastSquaresSolver::Qr)
 {
     FitOptions o;
     o.degree = degree;
@@ -278,8 +274,8 @@ private slots:
                                 << "[31/35, -23/35, 3/35; -23/35, 97/35, -23/35; 3/35, -23/35, 31/35]"
                                 << "[31/35, 9/35, -3/35, -1/7, 3/35; -23/35, 22/35, 37/35, 22/35, -23/35; "
                                    "3/35, -1/7, -3/35, 9/35, 31/35]"
-                                << "[-8/7, 46/35; 323/35, -19/35; 86/35, 116/35]"
-                                << QStringList{"-8/7", "726/35", "-600/35"} << QStringList{"46/35", "-130/35", "200/35"};
+                                << "[-8/7, 46/35; 323/35, -19/35; 86/35, 116/35]" << QStringList{"-8/7", "726/35", "-600/35"}
+                                << QStringList{"46/35", "-130/35", "200/35"};
         QTest::newRow("Ex 2.8")
             << 3 << "[1, 0, 0, 0; 27/64, 27/64, 9/64, 1/64; 1/8, 3/8, 3/8, 1/8; 1/64, 9/64, 27/64, 27/64; 0, 0, 0, 1]"
             << "[1, 27/64, 1/8, 1/64, 0; 0, 27/64, 3/8, 9/64, 0; 0, 9/64, 3/8, 27/64, 0; 0, 1/64, 1/8, 27/64, 1]"
@@ -582,17 +578,14 @@ private slots:
         QVector<QPointF> many;
         for (int i = 0; i < 200; ++i)
             many << QPointF(i, std::sin(i));
-        QTest::newRow("NaN") << QVector<QPointF>{{0, 0}, {1, 1}, {nan, 2}, {3, 3}} << 2
-                             << int(ErrorCode::InvalidInput) << "Q_2";
-        QTest::newRow("+inf") << QVector<QPointF>{{0, inf}, {1, 1}, {2, 2}} << 1 << int(ErrorCode::InvalidInput)
-                              << "Q_0";
-        QTest::newRow("-inf") << QVector<QPointF>{{0, 0}, {1, 1}, {2, 2}, {-inf, 3}} << 1
-                              << int(ErrorCode::InvalidInput) << "Q_3";
+        QTest::newRow("NaN") << QVector<QPointF>{{0, 0}, {1, 1}, {nan, 2}, {3, 3}} << 2 << int(ErrorCode::InvalidInput) << "Q_2";
+        QTest::newRow("+inf") << QVector<QPointF>{{0, inf}, {1, 1}, {2, 2}} << 1 << int(ErrorCode::InvalidInput) << "Q_0";
+        QTest::newRow("-inf") << QVector<QPointF>{{0, 0}, {1, 1}, {2, 2}, {-inf, 3}} << 1 << int(ErrorCode::InvalidInput)
+                              << "Q_3";
         QTest::newRow("no points") << QVector<QPointF>{} << 0 << int(ErrorCode::TooFewPoints) << "at least 2";
         QTest::newRow("one point") << QVector<QPointF>{{1, 2}} << 0 << int(ErrorCode::TooFewPoints) << "at least 2";
         QTest::newRow("degree = number of points") << five << 5 << int(ErrorCode::DegreeTooHigh) << "needs at least 6";
-        QTest::newRow("degree far too high") << five.mid(0, 3) << 10 << int(ErrorCode::DegreeTooHigh)
-                                             << "at most 2";
+        QTest::newRow("degree far too high") << five.mid(0, 3) << 10 << int(ErrorCode::DegreeTooHigh) << "at most 2";
         QTest::newRow("negative degree") << five << -1 << int(ErrorCode::OutOfRange) << "-1";
         QTest::newRow("degree 101") << many << 101 << int(ErrorCode::OutOfRange) << "100";
     }
@@ -608,8 +601,7 @@ private slots:
                 const auto fit = fitBezier(q, options(degree, p, s));
                 QVERIFY(!fit.ok());
                 QCOMPARE(int(fit.error().code), code);
-                QVERIFY2(QString::fromStdString(fit.error().message).contains(fragment),
-                         fit.error().message.c_str());
+                QVERIFY2(QString::fromStdString(fit.error().message).contains(fragment), fit.error().message.c_str());
             }
         bool finite = true;
         for (const Point& p : q)
@@ -634,8 +626,7 @@ private slots:
         QFETCH(Parametrization, parametrization);
         QFETCH(LeastSquaresSolver, solver);
         // Zero chord lengths: t = 0, 0, a, a, b, c, 1 — only 5 distinct parameters.
-        const std::vector<Point> q{Point(0, 0), Point(0, 0), Point(1, 1), Point(1, 1),
-                                   Point(2, 0), Point(3, 2), Point(4, -1)};
+        const std::vector<Point> q{Point(0, 0), Point(0, 0), Point(1, 1), Point(1, 1), Point(2, 0), Point(3, 2), Point(4, -1)};
         const std::vector<double> t = parameters(q, parametrization);
         QCOMPARE(t[0], t[1]);
         QCOMPARE(t[2], t[3]);
@@ -677,8 +668,7 @@ private slots:
         QCOMPARE(quartic.error().code, ErrorCode::Singular);
         const auto cubic = fitBezierExact(q, 3, Parametrization::ChordLength);
         QVERIFY(cubic.ok());
-        QCOMPARE(cubic->params,
-                 (std::vector<Rational>{R("0"), R("0"), R("5/12"), R("5/12"), R("3/4"), R("1")}));
+        QCOMPARE(cubic->params, (std::vector<Rational>{R("0"), R("0"), R("5/12"), R("5/12"), R("3/4"), R("1")}));
         for (LeastSquaresSolver s : kSolvers) {
             const auto fit = fitBezier(toDouble(q), options(3, Parametrization::ChordLength, s));
             QVERIFY(fit.ok());
@@ -779,10 +769,10 @@ private slots:
                                          scale * reference->controlPoints[j].y - offset);
                     error = std::max(error, norm(fit->controlPoints[j] - expected) / scale);
                 }
-                QVERIFY2(error <= tolerance, qPrintable(QString("%1 %2: error %3 × scale")
-                                                            .arg(QString::fromStdString(toString(p)),
-                                                                 QString::fromStdString(toString(s)))
-                                                            .arg(error)));
+                QVERIFY2(error <= tolerance,
+                         qPrintable(QString("%1 %2: error %3 × scale")
+                                        .arg(QString::fromStdString(toString(p)), QString::fromStdString(toString(s)))
+                                        .arg(error)));
                 if (offset == 0)
                     QVERIFY(std::fabs(fit->sse / (scale * scale) - reference->sse) <= 1e-12 * reference->sse);
             }
@@ -827,8 +817,7 @@ private slots:
         QVERIFY(allFinite(*fit));
         QCOMPARE(fit->residuals.size(), std::size_t(count));
         QVERIFY(fit->rms < 1e-3); // the 1e−3 ripple is all that is left
-        qInfo("10^6 points, degree 10: %lld ms, cond2(M) = %.3g, rms = %.3g", static_cast<long long>(ms), fit->cond,
-              fit->rms);
+        qInfo("10^6 points, degree 10: %lld ms, cond2(M) = %.3g, rms = %.3g", static_cast<long long>(ms), fit->cond, fit->rms);
     }
 
     // ── Iterative parameter correction (beyond the thesis) ─────────────────────────────
@@ -865,8 +854,8 @@ private slots:
             QVERIFY(t >= 0 && t <= 1);
         // The reported error belongs to the reported parameters.
         QVERIFY(normalEquationDefect(q, *corrected) <= 1e-10);
-        qInfo("%s: SSE %.3g with chord length, %.3g after %d corrections", toString(solver).c_str(), plain->sse,
-              corrected->sse, corrected->corrections);
+        qInfo("%s: SSE %.3g with chord length, %.3g after %d corrections", toString(solver).c_str(), plain->sse, corrected->sse,
+              corrected->corrections);
         // Projecting and refitting converges only linearly, but it does converge: the
         // samples lie on a cubic, so enough corrections recover it.
         o.maxCorrections = 1000;

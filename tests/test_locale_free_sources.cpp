@@ -16,13 +16,13 @@ namespace {
 /// calls that would make the C++ streams follow it.
 const QRegularExpression& bannedConversions()
 {
-    static const QRegularExpression banned(QStringLiteral(
-        "\\b(?:strto(?:d|f|ld)|ato[fil]|std::sto(?:d|f|ld|i|l|ll|ul|ull)|s?scanf|wcstod)\\s*\\(|"
-        "printf\\s*\\([^;]*%[-+ #0-9.*]*[fgeaFGEA]|"
-        "\\bstd::locale::global\\b|\\bimbue\\s*\\(\\s*std::locale\\s*\\(\\s*\"\"|"
-        // The system's error texts follow LC_MESSAGES: "No resta espai al dispositiu" inside an
-        // English command-line message. systemErrorText() gives them in English.
-        "\\b(?:strerror(?:_r)?|perror)\\s*\\("));
+    static const QRegularExpression banned(
+        QStringLiteral("\\b(?:strto(?:d|f|ld)|ato[fil]|std::sto(?:d|f|ld|i|l|ll|ul|ull)|s?scanf|wcstod)\\s*\\(|"
+                       "printf\\s*\\([^;]*%[-+ #0-9.*]*[fgeaFGEA]|"
+                       "\\bstd::locale::global\\b|\\bimbue\\s*\\(\\s*std::locale\\s*\\(\\s*\"\"|"
+                       // The system's error texts follow LC_MESSAGES: "No resta espai al dispositiu" inside an
+                       // English command-line message. systemErrorText() gives them in English.
+                       "\\b(?:strerror(?:_r)?|perror)\\s*\\("));
     return banned;
 }
 
@@ -63,13 +63,12 @@ private slots:
     {
         // The pattern, on lines that must trip it and lines that must not.
         const QRegularExpression& banned = bannedConversions();
-        for (const char* bad : {"double d = std::strtod(s, &end);", "std::snprintf(buf, n, \"%.9g\", v);",
-                                "x = std::stod(text);", "atof(p)", "std::locale::global(std::locale(\"\"));",
-                                "msg + std::strerror(errno)", "perror(\"x\")"})
+        for (const char* bad :
+             {"double d = std::strtod(s, &end);", "std::snprintf(buf, n, \"%.9g\", v);", "x = std::stod(text);", "atof(p)",
+              "std::locale::global(std::locale(\"\"));", "msg + std::strerror(errno)", "perror(\"x\")"})
             QVERIFY2(banned.match(QLatin1String(bad)).hasMatch(), bad);
-        for (const char* good : {"std::from_chars(a, b, v);", "std::fprintf(stderr, \"%s\\n\", m);",
-                                 "formatSignificant(v, 9)", "std::to_chars(buf, end, v);",
-                                 "systemErrorText(errno)", "::strerrordesc_np(e)"})
+        for (const char* good : {"std::from_chars(a, b, v);", "std::fprintf(stderr, \"%s\\n\", m);", "formatSignificant(v, 9)",
+                                 "std::to_chars(buf, end, v);", "systemErrorText(errno)", "::strerrordesc_np(e)"})
             QVERIFY2(!banned.match(QLatin1String(good)).hasMatch(), good);
     }
 };

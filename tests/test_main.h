@@ -28,22 +28,21 @@ struct Registration {
 } // namespace granota::test
 
 // A static function and a static object of internal linkage: each test file has its own.
-#define GRANOTA_TEST_ENTRY(TestObject, setup)                                                     \
-    static int granotaTestMain(int argc, char* argv[])                                             \
-    {                                                                                              \
-        QT_PREPEND_NAMESPACE(QTest::Internal::callInitMain)<TestObject>();                         \
-        setup                                                                                      \
-        TestObject tc;                                                                             \
-        QTEST_SET_MAIN_SOURCE_PATH                                                                 \
-        return QTest::qExec(&tc, argc, argv);                                                      \
-    }                                                                                              \
+#define GRANOTA_TEST_ENTRY(TestObject, setup)                                                                                    \
+    static int granotaTestMain(int argc, char* argv[])                                                                           \
+    {                                                                                                                            \
+        QT_PREPEND_NAMESPACE(QTest::Internal::callInitMain)<TestObject>();                                                       \
+        setup;                                                                                                                   \
+        TestObject tc;                                                                                                           \
+        QTEST_SET_MAIN_SOURCE_PATH                                                                                               \
+        return QTest::qExec(&tc, argc, argv);                                                                                    \
+    }                                                                                                                            \
     static const granota::test::Registration granotaTestRegistration(__FILE__, &granotaTestMain);
 
 /// QTEST_MAIN: a QApplication (a QGuiApplication where the family has no widgets).
 #define GRANOTA_TEST_MAIN(TestObject) GRANOTA_TEST_ENTRY(TestObject, QTEST_MAIN_SETUP())
 /// QTEST_GUILESS_MAIN: a QCoreApplication.
-#define GRANOTA_TEST_GUILESS_MAIN(TestObject)                                                      \
-    GRANOTA_TEST_ENTRY(TestObject, QTEST_QAPP_SETUP(QCoreApplication))
+#define GRANOTA_TEST_GUILESS_MAIN(TestObject) GRANOTA_TEST_ENTRY(TestObject, QTEST_QAPP_SETUP(QCoreApplication))
 /// QTEST_APPLESS_MAIN: no application object.
 #define GRANOTA_TEST_NO_APP
 #define GRANOTA_TEST_APPLESS_MAIN(TestObject) GRANOTA_TEST_ENTRY(TestObject, GRANOTA_TEST_NO_APP)

@@ -87,11 +87,16 @@ private slots:
     {
         QTest::addColumn<QString>("text");
         QTest::addColumn<QString>("expected");
-        QTest::newRow("syntax") << "[[1,2],\n [3 4]]" << "at line 2, column 5";
-        QTest::newRow("triple") << "[[1,2],[1,2,3]]" << "point 1 is '[1,2,3]', not a pair [x,y]";
-        QTest::newRow("not a list") << "{\"x\":1}" << "not a list";
-        QTest::newRow("bad string") << "[[1,2],[\"two\",3]]" << "point 1: x = 'two' is not a finite number";
-        QTest::newRow("null") << "[[1,null]]" << "point 0: y = 'null' is not a finite number";
+        QTest::newRow("syntax") << "[[1,2],\n [3 4]]"
+                                << "at line 2, column 5";
+        QTest::newRow("triple") << "[[1,2],[1,2,3]]"
+                                << "point 1 is '[1,2,3]', not a pair [x,y]";
+        QTest::newRow("not a list") << "{\"x\":1}"
+                                    << "not a list";
+        QTest::newRow("bad string") << "[[1,2],[\"two\",3]]"
+                                    << "point 1: x = 'two' is not a finite number";
+        QTest::newRow("null") << "[[1,null]]"
+                              << "point 0: y = 'null' is not a finite number";
     }
     void jsonErrorsSayWhere()
     {
@@ -119,9 +124,9 @@ private slots:
         QTest::newRow("json unterminated") << "[[1,2]" << true;
         QTest::newRow("json trailing text") << "[[1,2]] x" << true;
         QTest::newRow("json empty") << "[]" << true;
-        QTest::newRow("json plus sign") << "[[+1,2]]" << true;        // not a JSON number: write "+1"
-        QTest::newRow("json bare fraction") << "[[7/2,2]]" << true;   // fractions go in strings: "7/2"
-        QTest::newRow("json leading dot") << "[[.5,2]]" << true;      // nor is .5
+        QTest::newRow("json plus sign") << "[[+1,2]]" << true;      // not a JSON number: write "+1"
+        QTest::newRow("json bare fraction") << "[[7/2,2]]" << true; // fractions go in strings: "7/2"
+        QTest::newRow("json leading dot") << "[[.5,2]]" << true;    // nor is .5
         QTest::newRow("binary garbage") << QString::fromLatin1("\x01\x02\xff,\x03") << false;
     }
     void rejects()
@@ -138,8 +143,8 @@ private slots:
     void byteOrderMarkIsSkipped()
     {
         const std::string bom = "\xEF\xBB\xBF";
-        for (const std::string& text : {bom + "x,y\n0,0\n1,3\n", bom + "0,0\n1,3\n", bom + "[[0,0],[1,3]]",
-                                        bom + " [[0,0],[1,3]]"}) {
+        for (const std::string& text :
+             {bom + "x,y\n0,0\n1,3\n", bom + "0,0\n1,3\n", bom + "[[0,0],[1,3]]", bom + " [[0,0],[1,3]]"}) {
             for (auto reader : {parsePointFile, text.find('[') != std::string::npos ? parsePointJson : parsePointCsv}) {
                 const auto p = reader(text);
                 QVERIFY2(p.ok(), p.ok() ? "" : p.error().message.c_str());

@@ -20,14 +20,22 @@ private slots:
     {
         QTest::addColumn<QString>("text");
         QTest::addColumn<QString>("exact");
-        QTest::newRow("integer") << "-3" << "-3";
-        QTest::newRow("fraction") << "7/2" << "7/2";
-        QTest::newRow("reduces") << "-6/4" << "-3/2";
-        QTest::newRow("decimal is its own rational") << "0.1" << "1/10";
-        QTest::newRow("exponent") << "1.5e-3" << "3/2000";
-        QTest::newRow("big exponent") << "1e9" << "1000000000";
-        QTest::newRow("spaces") << "  5/10 " << "1/2";
-        QTest::newRow("leading dot") << ".25" << "1/4";
+        QTest::newRow("integer") << "-3"
+                                 << "-3";
+        QTest::newRow("fraction") << "7/2"
+                                  << "7/2";
+        QTest::newRow("reduces") << "-6/4"
+                                 << "-3/2";
+        QTest::newRow("decimal is its own rational") << "0.1"
+                                                     << "1/10";
+        QTest::newRow("exponent") << "1.5e-3"
+                                  << "3/2000";
+        QTest::newRow("big exponent") << "1e9"
+                                      << "1000000000";
+        QTest::newRow("spaces") << "  5/10 "
+                                << "1/2";
+        QTest::newRow("leading dot") << ".25"
+                                     << "1/4";
     }
     void parse()
     {
@@ -40,7 +48,8 @@ private slots:
     void rejects_data()
     {
         QTest::addColumn<QString>("text");
-        for (const char* bad : {"", "nan", "inf", "-inf", "1/0", "abc", "1..2", "1e", "1/2/3", "--1", "1e99999999", "0x10", "1,5"})
+        for (const char* bad :
+             {"", "nan", "inf", "-inf", "1/0", "abc", "1..2", "1e", "1/2/3", "--1", "1e99999999", "0x10", "1,5"})
             QTest::newRow(bad) << QString::fromLatin1(bad);
     }
     void rejects()
@@ -91,8 +100,7 @@ private slots:
         QVERIFY(q);
         const double d = toDouble(*q);
         // Exactly (QCOMPARE on doubles is fuzzy: it takes 0.09999999999999999 for 0.1).
-        QVERIFY2(d == nearest,
-                 qPrintable(QStringLiteral("%1 instead of %2").arg(d, 0, 'g', 17).arg(nearest, 0, 'g', 17)));
+        QVERIFY2(d == nearest, qPrintable(QStringLiteral("%1 instead of %2").arg(d, 0, 'g', 17).arg(nearest, 0, 'g', 17)));
         QCOMPARE(std::signbit(d), std::signbit(nearest));
     }
     void retypingADoubleGivesItBack()

@@ -409,26 +409,44 @@ private slots:
     {
         QTest::addColumn<QString>("change");
         QTest::addColumn<QString>("message");
-        QTest::newRow("format") << R"("format": "granota")" << "format";
-        QTest::newRow("version") << R"("version": 2)" << "version";
-        QTest::newRow("solver") << R"("solver": "fast")" << "solver";
-        QTest::newRow("steps negative") << R"("steps": -1)" << "steps";
-        QTest::newRow("steps fraction") << R"("steps": 2.5)" << "steps";
-        QTest::newRow("events not an array") << R"("events": {})" << "events";
-        QTest::newRow("event after the end") << R"("events": [[11, "release"]])" << "event 1";
-        QTest::newRow("events out of order") << R"("events": [[5, "release"], [4, "release"]])" << "event 2";
-        QTest::newRow("unknown kind") << R"("events": [[1, "jump"]])" << "kind";
-        QTest::newRow("press without a point") << R"("events": [[1, "press"]])" << "x and y";
-        QTest::newRow("release with a point") << R"("events": [[1, "release", 3, 4]])" << "no point";
-        QTest::newRow("substeps 0") << R"("events": [[1, "substeps", 0]])" << "substeps must be a whole number from 1 to 32";
-        QTest::newRow("substeps 2.5") << R"("events": [[1, "substeps", 2.5]])" << "event 1: substeps";
-        QTest::newRow("compliance 2") << R"("events": [[1, "edge_compliance", 2]])" << "edge_compliance must be";
+        QTest::newRow("format") << R"("format": "granota")"
+                                << "format";
+        QTest::newRow("version") << R"("version": 2)"
+                                 << "version";
+        QTest::newRow("solver") << R"("solver": "fast")"
+                                << "solver";
+        QTest::newRow("steps negative") << R"("steps": -1)"
+                                        << "steps";
+        QTest::newRow("steps fraction") << R"("steps": 2.5)"
+                                        << "steps";
+        QTest::newRow("events not an array") << R"("events": {})"
+                                             << "events";
+        QTest::newRow("event after the end") << R"("events": [[11, "release"]])"
+                                             << "event 1";
+        QTest::newRow("events out of order") << R"("events": [[5, "release"], [4, "release"]])"
+                                             << "event 2";
+        QTest::newRow("unknown kind") << R"("events": [[1, "jump"]])"
+                                      << "kind";
+        QTest::newRow("press without a point") << R"("events": [[1, "press"]])"
+                                               << "x and y";
+        QTest::newRow("release with a point") << R"("events": [[1, "release", 3, 4]])"
+                                              << "no point";
+        QTest::newRow("substeps 0") << R"("events": [[1, "substeps", 0]])"
+                                    << "substeps must be a whole number from 1 to 32";
+        QTest::newRow("substeps 2.5") << R"("events": [[1, "substeps", 2.5]])"
+                                      << "event 1: substeps";
+        QTest::newRow("compliance 2") << R"("events": [[1, "edge_compliance", 2]])"
+                                      << "edge_compliance must be";
         QTest::newRow("damping ratio 2.5") << R"("events": [[1, "edge_damping_ratio", 2.5]])"
                                            << "edge_damping_ratio must be a number from 0 (no damping) to 2";
-        QTest::newRow("damping ratio negative") << R"("events": [[1, "edge_damping_ratio", -0.1]])" << "event 1: edge_damping_ratio";
-        QTest::newRow("knob without a value") << R"("events": [[1, "substeps"]])" << "needs its value";
-        QTest::newRow("huge coordinate") << R"("events": [[1, "move", 1e999, 4]])" << "";
-        QTest::newRow("bad scene") << R"("scene": {"name": "frog"})" << "scene";
+        QTest::newRow("damping ratio negative") << R"("events": [[1, "edge_damping_ratio", -0.1]])"
+                                                << "event 1: edge_damping_ratio";
+        QTest::newRow("knob without a value") << R"("events": [[1, "substeps"]])"
+                                              << "needs its value";
+        QTest::newRow("huge coordinate") << R"("events": [[1, "move", 1e999, 4]])"
+                                         << "";
+        QTest::newRow("bad scene") << R"("scene": {"name": "frog"})"
+                                   << "scene";
     }
     void badRecordingsAreRefused()
     {

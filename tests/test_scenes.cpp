@@ -18,11 +18,13 @@ class TestScenes : public QObject {
 private slots:
     void allScenesInThesisOrder()
     {
-        const std::vector<std::string> expected{"polygon", "gravity", "bounce", "springs", "area", "verlet", "tuned",
-                                                "color", "bezier", "bezier-revised", "catmull-rom", "pendulum",
-                                                "pendulum-chain", "pendulum-limits", "frog", "obstacles", "many-bodies", "shapes"};
+        const std::vector<std::string> expected{"polygon",        "gravity",         "bounce",      "springs",
+                                                "area",           "verlet",          "tuned",       "color",
+                                                "bezier",         "bezier-revised",  "catmull-rom", "pendulum",
+                                                "pendulum-chain", "pendulum-limits", "frog",        "obstacles",
+                                                "many-bodies",    "shapes"};
         QCOMPARE(sceneNames(), expected);
-        const std::vector<std::string> sections{"4.1", "4.2", "4.3", "4.4", "4.5", "4.6", "4.7", "4.8", "4.9",
+        const std::vector<std::string> sections{"4.1",  "4.2",  "4.3",  "4.4",  "4.5",  "4.6",  "4.7",   "4.8",   "4.9",
                                                 "4.10", "4.12", "4.13", "4.14", "4.15", "4.16", "5.2.1", "5.2.2", "5.2.3"};
         for (std::size_t i = 0; i < expected.size(); ++i) {
             auto s = loadScene(expected[i]);
@@ -73,15 +75,27 @@ private slots:
         QTest::newRow("area") << "area" << QStringList{"gravity", "bounds", "bounce", "springs", "area"};
         QTest::newRow("verlet") << "verlet" << QStringList{"gravity", "bounds", "springs", "area", "grab"};
         QTest::newRow("color") << "color" << QStringList{"gravity", "bounds", "springs", "area", "grab", "fill"};
-        QTest::newRow("bezier") << "bezier" << QStringList{"gravity", "bounds", "springs", "area", "grab", "fill", "outline-bezier"};
-        QTest::newRow("catmull-rom") << "catmull-rom" << QStringList{"gravity", "bounds", "springs", "area", "grab", "fill", "outline-catmull-rom"};
+        QTest::newRow("bezier") << "bezier"
+                                << QStringList{"gravity", "bounds", "springs", "area", "grab", "fill", "outline-bezier"};
+        QTest::newRow("catmull-rom") << "catmull-rom"
+                                     << QStringList{
+                                            "gravity", "bounds", "springs", "area", "grab", "fill", "outline-catmull-rom"};
         QTest::newRow("pendulum") << "pendulum" << QStringList{"gravity", "legs"};
         QTest::newRow("pendulum-chain") << "pendulum-chain" << QStringList{"legs"};
         QTest::newRow("pendulum-limits") << "pendulum-limits" << QStringList{"gravity", "bounds", "legs", "angle-limits"};
-        QTest::newRow("frog") << "frog" << QStringList{"gravity", "bounds", "springs", "area", "grab", "legs", "angle-limits", "fill", "outline-catmull-rom", "head"};
-        QTest::newRow("obstacles") << "obstacles" << QStringList{"gravity", "bounds", "springs", "area", "grab", "fill", "outline-catmull-rom", "head", "obstacles"};
-        QTest::newRow("many-bodies") << "many-bodies" << QStringList{"gravity", "bounds", "springs", "area", "grab", "fill", "outline-catmull-rom", "head", "collisions"};
-        QTest::newRow("shapes") << "shapes" << QStringList{"gravity", "bounds", "springs", "area", "grab", "fill", "outline-catmull-rom", "angle-limits"};
+        QTest::newRow("frog") << "frog" << QStringList{"gravity",      "bounds", "springs",
+                                                       "area",         "grab",   "legs",
+                                                       "angle-limits", "fill",   "outline-catmull-rom",
+                                                       "head"};
+        QTest::newRow("obstacles") << "obstacles"
+                                   << QStringList{"gravity", "bounds",   "springs", "area", "grab", "fill", "outline-catmull-rom",
+                                                  "head",    "obstacles"};
+        QTest::newRow("many-bodies")
+            << "many-bodies"
+            << QStringList{"gravity", "bounds", "springs", "area", "grab", "fill", "outline-catmull-rom", "head", "collisions"};
+        QTest::newRow("shapes") << "shapes"
+                                << QStringList{"gravity",     "bounds", "springs", "area", "grab", "fill", "outline-catmull-rom",
+                                               "angle-limits"};
     }
     void components()
     {
@@ -152,27 +166,45 @@ private slots:
     {
         QTest::addColumn<QString>("scene");
         QTest::addColumn<QString>("setting");
-        QTest::newRow("negative sides") << "frog" << "sides=-3";
-        QTest::newRow("two sides") << "frog" << "sides=2";
-        QTest::newRow("fractional sides") << "frog" << "sides=5.5";
-        QTest::newRow("zero width") << "frog" << "width=0";
-        QTest::newRow("zero height") << "frog" << "height=0";
-        QTest::newRow("negative radius") << "frog" << "radius=-1";
-        QTest::newRow("negative area") << "frog" << "target_area=-5";
-        QTest::newRow("NaN") << "frog" << "gravity=nan,1";
-        QTest::newRow("one coordinate") << "frog" << "gravity=1";
-        QTest::newRow("garbage") << "frog" << "velmax=fast";
-        QTest::newRow("no equals") << "frog" << "gravity";
-        QTest::newRow("unknown key") << "frog" << "colour=green";
-        QTest::newRow("not in this scene") << "gravity" << "spring_length=3";
-        QTest::newRow("polygon has no gravity") << "polygon" << "gravity=0,1";
-        QTest::newRow("too many bodies") << "many-bodies" << "bodies=100000";
+        QTest::newRow("negative sides") << "frog"
+                                        << "sides=-3";
+        QTest::newRow("two sides") << "frog"
+                                   << "sides=2";
+        QTest::newRow("fractional sides") << "frog"
+                                          << "sides=5.5";
+        QTest::newRow("zero width") << "frog"
+                                    << "width=0";
+        QTest::newRow("zero height") << "frog"
+                                     << "height=0";
+        QTest::newRow("negative radius") << "frog"
+                                         << "radius=-1";
+        QTest::newRow("negative area") << "frog"
+                                       << "target_area=-5";
+        QTest::newRow("NaN") << "frog"
+                             << "gravity=nan,1";
+        QTest::newRow("one coordinate") << "frog"
+                                        << "gravity=1";
+        QTest::newRow("garbage") << "frog"
+                                 << "velmax=fast";
+        QTest::newRow("no equals") << "frog"
+                                   << "gravity";
+        QTest::newRow("unknown key") << "frog"
+                                     << "colour=green";
+        QTest::newRow("not in this scene") << "gravity"
+                                           << "spring_length=3";
+        QTest::newRow("polygon has no gravity") << "polygon"
+                                                << "gravity=0,1";
+        QTest::newRow("too many bodies") << "many-bodies"
+                                         << "bodies=100000";
         // Found with the document fuzz target's harness: 300 bodies of 10000 sides took a
         // minute and a gigabyte to build when a .granota document asked for them.
-        QTest::newRow("too many vertices in all") << "many-bodies" << "sides=10000";
+        QTest::newRow("too many vertices in all") << "many-bodies"
+                                                  << "sides=10000";
         // Found by the scene fuzz target: a body of radius 1e308 has an infinite area.
-        QTest::newRow("radius beyond 1e15") << "polygon" << "radius=1e16";
-        QTest::newRow("centre beyond 1e15") << "frog" << "center=0,-2e15";
+        QTest::newRow("radius beyond 1e15") << "polygon"
+                                            << "radius=1e16";
+        QTest::newRow("centre beyond 1e15") << "frog"
+                                            << "center=0,-2e15";
     }
     void badSettings()
     {

@@ -31,19 +31,34 @@ FrogParams paramsFromKeys(const QString& keys)
         const QString key = kv.section(QLatin1Char('='), 0, 0);
         const QStringList v = kv.section(QLatin1Char('='), 1).split(QLatin1Char(','));
         const double a = v.value(0).toDouble(), b = v.value(1).toDouble();
-        if (key == QLatin1String("gravity")) p.gravity = {a, b};
-        else if (key == QLatin1String("friction")) p.friction = {a, b};
-        else if (key == QLatin1String("v0")) p.v0 = {a, b};
-        else if (key == QLatin1String("area_factor")) p.areaFactor = a;
-        else if (key == QLatin1String("target_area")) p.targetArea = a;
-        else if (key == QLatin1String("spring_length")) p.springLength = a;
-        else if (key == QLatin1String("velmax")) p.velmax = a;
-        else if (key == QLatin1String("center")) { p.center = {a, b}; centre = true; }
-        else if (key == QLatin1String("radius")) { p.radius = a; radius = true; }
-        else if (key == QLatin1String("width")) p.width = a;
-        else if (key == QLatin1String("height")) p.height = a;
-        else if (key == QLatin1String("sides")) p.sides = int(a);
-        else qFatal("unknown key %s", qPrintable(key));
+        if (key == QLatin1String("gravity"))
+            p.gravity = {a, b};
+        else if (key == QLatin1String("friction"))
+            p.friction = {a, b};
+        else if (key == QLatin1String("v0"))
+            p.v0 = {a, b};
+        else if (key == QLatin1String("area_factor"))
+            p.areaFactor = a;
+        else if (key == QLatin1String("target_area"))
+            p.targetArea = a;
+        else if (key == QLatin1String("spring_length"))
+            p.springLength = a;
+        else if (key == QLatin1String("velmax"))
+            p.velmax = a;
+        else if (key == QLatin1String("center")) {
+            p.center = {a, b};
+            centre = true;
+        } else if (key == QLatin1String("radius")) {
+            p.radius = a;
+            radius = true;
+        } else if (key == QLatin1String("width"))
+            p.width = a;
+        else if (key == QLatin1String("height"))
+            p.height = a;
+        else if (key == QLatin1String("sides"))
+            p.sides = int(a);
+        else
+            qFatal("unknown key %s", qPrintable(key));
     }
     if (!centre)
         p.center = {p.width / 2, p.height / 2};
@@ -98,8 +113,13 @@ template <class R> Deviation deviationFromTrace(const SeedTrace& trace, const Fr
             const double seed = double(float(row[k + 1]));
             const double dev = std::abs(ours[k] - seed);
             if (!(dev <= (int(k) < bodyColumns ? d.body : d.legs))) { // NaN counts as the worst
-                if (int(k) < bodyColumns) { d.body = std::isnan(dev) ? HUGE_VAL : dev; d.bodyStep = s; }
-                else { d.legs = std::isnan(dev) ? HUGE_VAL : dev; d.legsStep = s; }
+                if (int(k) < bodyColumns) {
+                    d.body = std::isnan(dev) ? HUGE_VAL : dev;
+                    d.bodyStep = s;
+                } else {
+                    d.legs = std::isnan(dev) ? HUGE_VAL : dev;
+                    d.legsStep = s;
+                }
             }
         }
     }
@@ -129,7 +149,10 @@ template <class R> bool sane(const SeedFrog<R>& frog, QString* why)
 {
     const FrogParams& p = frog.params();
     const auto v = frog.body().vertices();
-    if (int(v.size()) != p.sides) { *why = QStringLiteral("vertex count"); return false; }
+    if (int(v.size()) != p.sides) {
+        *why = QStringLiteral("vertex count");
+        return false;
+    }
     for (const Point& q : v)
         if (!isFinite(q) || q.x < 0 || q.x > p.width - 1 || q.y < 0 || q.y > p.height - 1) {
             *why = QStringLiteral("vertex (%1, %2)").arg(q.x).arg(q.y);
@@ -140,8 +163,7 @@ template <class R> bool sane(const SeedFrog<R>& frog, QString* why)
         const LegParams& lp = p.legs[i];
         const double reach = 2 * (lp.upper + lp.lower) + 1;
         for (const Point& q : leg.joints()) {
-            if (!isFinite(q) || q.x < -reach || q.x > p.width - 1 + reach || q.y < -reach
-                || q.y > p.height - 1 + reach) {
+            if (!isFinite(q) || q.x < -reach || q.x > p.width - 1 + reach || q.y < -reach || q.y > p.height - 1 + reach) {
                 *why = QStringLiteral("leg %1 joint (%2, %3)").arg(i).arg(q.x).arg(q.y);
                 return false;
             }
@@ -183,8 +205,8 @@ private slots:
             header += (header.empty() ? "" : ",") + c;
         QCOMPARE(QString::fromStdString(header), QString::fromStdString(seedTraceHeader()));
         const Deviation d = deviationFromTrace<float>(trace, FrogParams{}, 600);
-        qInfo("float vs reference, 600 steps: body %.3g px (step %d), legs %.3g px (step %d)", d.body, d.bodyStep,
-              d.legs, d.legsStep);
+        qInfo("float vs reference, 600 steps: body %.3g px (step %d), legs %.3g px (step %d)", d.body, d.bodyStep, d.legs,
+              d.legsStep);
         QVERIFY2(d.body <= kFloatBodyTolerance, qPrintable(QString::number(d.body)));
         QVERIFY2(d.legs <= kFloatLegTolerance, qPrintable(QString::number(d.legs)));
     }
@@ -193,8 +215,8 @@ private slots:
     {
         const SeedTrace trace = loadTrace("seed_frog_trace.csv");
         const Deviation d = deviationFromTrace<double>(trace, FrogParams{}, 600);
-        qInfo("double vs reference, 600 steps: body %.3g px (step %d), legs %.3g px (step %d)", d.body, d.bodyStep,
-              d.legs, d.legsStep);
+        qInfo("double vs reference, 600 steps: body %.3g px (step %d), legs %.3g px (step %d)", d.body, d.bodyStep, d.legs,
+              d.legsStep);
         QVERIFY2(d.body <= 1e-3, qPrintable(QString::number(d.body)));
         QVERIFY2(d.legs <= 2e-2, qPrintable(QString::number(d.legs)));
     }
@@ -215,16 +237,18 @@ private slots:
         // (b² − 4ac with b² ≈ 4·mx² ≈ 1.6e6, where a float ulp is 0.125 px²). Measured over
         // 600 steps: gravity 0.022 / 0.026 px, area 0.011 / 0.094 px; the bounds leave
         // about a factor 2.
-        QTest::newRow("gravity") << "seed_trace_gravity.csv" << "gravity=0.3,0.5 center=500,300" << 600 << 0.05 << 0.1;
-        QTest::newRow("area") << "seed_trace_area.csv" << "target_area=30000 radius=90 v0=3,-8" << 600 << 0.05 << 0.25;
+        QTest::newRow("gravity") << "seed_trace_gravity.csv"
+                                 << "gravity=0.3,0.5 center=500,300" << 600 << 0.05 << 0.1;
+        QTest::newRow("area") << "seed_trace_area.csv"
+                              << "target_area=30000 radius=90 v0=3,-8" << 600 << 0.05 << 0.25;
         // With 99 % of the vertical velocity kept each step and a stiff area factor the body
         // never comes to rest: it keeps wobbling on the floor, where the clamp `fita` is a
         // discontinuity, and the rounding differences between float and double grow like
         // in any chaotic system — 0.3 px at step 80, over 100 px by step 500 (both runs
         // stay finite and in the frame, see extremeSettings). Only the approach to the
         // floor (0.004 / 0.013 px at step 60) can be compared in double.
-        QTest::newRow("friction") << "seed_trace_friction.csv" << "friction=0.9,0.99 area_factor=0.2 velmax=10" << 60
-                                  << 0.01 << 0.03;
+        QTest::newRow("friction") << "seed_trace_friction.csv"
+                                  << "friction=0.9,0.99 area_factor=0.2 velmax=10" << 60 << 0.01 << 0.03;
     }
     void otherTraces()
     {
@@ -241,8 +265,7 @@ private slots:
         const Deviation d = deviationFromTrace<double>(trace, p, doubleSteps);
         qInfo("%s: float 200 steps body %.3g legs %.3g px; float 600 steps body %.3g legs %.3g px; double %d steps "
               "body %.3g (step %d) legs %.3g px (step %d)",
-              qPrintable(file), f200.body, f200.legs, f600.body, f600.legs, doubleSteps, d.body, d.bodyStep, d.legs,
-              d.legsStep);
+              qPrintable(file), f200.body, f200.legs, f600.body, f600.legs, doubleSteps, d.body, d.bodyStep, d.legs, d.legsStep);
         QVERIFY2(f200.body <= kFloatBodyTolerance, qPrintable(QString::number(f200.body)));
         QVERIFY2(f200.legs <= kFloatLegTolerance, qPrintable(QString::number(f200.legs)));
         QVERIFY2(d.body <= doubleBody, qPrintable(QString::number(d.body)));
@@ -253,10 +276,14 @@ private slots:
     {
         QTest::addColumn<QString>("file");
         QTest::addColumn<QString>("keys");
-        QTest::newRow("reference") << "seed_frog_trace.csv" << "";
-        QTest::newRow("gravity") << "seed_trace_gravity.csv" << "gravity=0.3,0.5 center=500,300";
-        QTest::newRow("friction") << "seed_trace_friction.csv" << "friction=0.9,0.99 area_factor=0.2 velmax=10";
-        QTest::newRow("area") << "seed_trace_area.csv" << "target_area=30000 radius=90 v0=3,-8";
+        QTest::newRow("reference") << "seed_frog_trace.csv"
+                                   << "";
+        QTest::newRow("gravity") << "seed_trace_gravity.csv"
+                                 << "gravity=0.3,0.5 center=500,300";
+        QTest::newRow("friction") << "seed_trace_friction.csv"
+                                  << "friction=0.9,0.99 area_factor=0.2 velmax=10";
+        QTest::newRow("area") << "seed_trace_area.csv"
+                              << "target_area=30000 radius=90 v0=3,-8";
     }
     void floatTraceIsTheSeedsFile()
     {
@@ -294,12 +321,18 @@ private slots:
         // r = |height/6| and the centre (width/2, height/2) from the frame as Annex II does.
         // The scene gets the same keys through --set, so every row goes through the frog
         // scene's file, applySetting, Simulation and the CLI's trace writer.
-        QTest::newRow("height 600: r = 100") << "seed_trace_height600.csv" << "height=600";
-        QTest::newRow("900 x 500 frame") << "seed_trace_frame900x500.csv" << "width=900 height=500";
-        QTest::newRow("gravity with an x part") << "seed_trace_gravity_x.csv" << "gravity=0.6,0.75";
-        QTest::newRow("friction per axis") << "seed_trace_friction_axes.csv" << "friction=0.8,0.97";
-        QTest::newRow("spring length 20") << "seed_trace_spring20.csv" << "spring_length=20";
-        QTest::newRow("the thesis's constants") << "seed_frog_trace.csv" << "";
+        QTest::newRow("height 600: r = 100") << "seed_trace_height600.csv"
+                                             << "height=600";
+        QTest::newRow("900 x 500 frame") << "seed_trace_frame900x500.csv"
+                                         << "width=900 height=500";
+        QTest::newRow("gravity with an x part") << "seed_trace_gravity_x.csv"
+                                                << "gravity=0.6,0.75";
+        QTest::newRow("friction per axis") << "seed_trace_friction_axes.csv"
+                                           << "friction=0.8,0.97";
+        QTest::newRow("spring length 20") << "seed_trace_spring20.csv"
+                                          << "spring_length=20";
+        QTest::newRow("the thesis's constants") << "seed_frog_trace.csv"
+                                                << "";
     }
     void frogSceneIsTheSeed()
     {
@@ -590,21 +623,36 @@ private slots:
         QFETCH(double, value);
         QFETCH(int, code);
         FrogParams p;
-        if (field == QLatin1String("sides")) p.sides = int(value);
-        else if (field == QLatin1String("width")) p.width = value;
-        else if (field == QLatin1String("height")) p.height = value;
-        else if (field == QLatin1String("radius")) p.radius = value;
-        else if (field == QLatin1String("targetArea")) p.targetArea = value;
-        else if (field == QLatin1String("velmax")) p.velmax = value;
-        else if (field == QLatin1String("springLength")) p.springLength = value;
-        else if (field == QLatin1String("legUpper")) p.legs[3].upper = value;
-        else if (field == QLatin1String("legAngle")) p.legs[3].elbowMax = value;
-        else if (field == QLatin1String("gravityY")) p.gravity.y = value;
-        else if (field == QLatin1String("frictionX")) p.friction.x = value;
-        else if (field == QLatin1String("areaFactor")) p.areaFactor = value;
-        else if (field == QLatin1String("centerX")) p.center.x = value;
-        else if (field == QLatin1String("v0X")) p.v0.x = value;
-        else QFAIL("unknown field");
+        if (field == QLatin1String("sides"))
+            p.sides = int(value);
+        else if (field == QLatin1String("width"))
+            p.width = value;
+        else if (field == QLatin1String("height"))
+            p.height = value;
+        else if (field == QLatin1String("radius"))
+            p.radius = value;
+        else if (field == QLatin1String("targetArea"))
+            p.targetArea = value;
+        else if (field == QLatin1String("velmax"))
+            p.velmax = value;
+        else if (field == QLatin1String("springLength"))
+            p.springLength = value;
+        else if (field == QLatin1String("legUpper"))
+            p.legs[3].upper = value;
+        else if (field == QLatin1String("legAngle"))
+            p.legs[3].elbowMax = value;
+        else if (field == QLatin1String("gravityY"))
+            p.gravity.y = value;
+        else if (field == QLatin1String("frictionX"))
+            p.friction.x = value;
+        else if (field == QLatin1String("areaFactor"))
+            p.areaFactor = value;
+        else if (field == QLatin1String("centerX"))
+            p.center.x = value;
+        else if (field == QLatin1String("v0X"))
+            p.v0.x = value;
+        else
+            QFAIL("unknown field");
         const auto frog = SeedFrog<float>::create(p);
         QVERIFY(!frog.ok());
         QCOMPARE(int(frog.error().code), code);
@@ -629,28 +677,40 @@ private slots:
     void grabFollowsTheMouse()
     {
         QFETCH(bool, useFloat);
-        if (useFloat) grabFollowsTheMouseIn<float>(); else grabFollowsTheMouseIn<double>();
+        if (useFloat)
+            grabFollowsTheMouseIn<float>();
+        else
+            grabFollowsTheMouseIn<double>();
     }
 
     void pressOutsideDoesNothing_data() { precisionRows(); }
     void pressOutsideDoesNothing()
     {
         QFETCH(bool, useFloat);
-        if (useFloat) pressOutsideDoesNothingIn<float>(); else pressOutsideDoesNothingIn<double>();
+        if (useFloat)
+            pressOutsideDoesNothingIn<float>();
+        else
+            pressOutsideDoesNothingIn<double>();
     }
 
     void grabOutsideTheWindow_data() { precisionRows(); }
     void grabOutsideTheWindow()
     {
         QFETCH(bool, useFloat);
-        if (useFloat) grabOutsideTheWindowIn<float>(); else grabOutsideTheWindowIn<double>();
+        if (useFloat)
+            grabOutsideTheWindowIn<float>();
+        else
+            grabOutsideTheWindowIn<double>();
     }
 
     void respawnHoldsUntilReleased_data() { precisionRows(); }
     void respawnHoldsUntilReleased()
     {
         QFETCH(bool, useFloat);
-        if (useFloat) respawnHoldsUntilReleasedIn<float>(); else respawnHoldsUntilReleasedIn<double>();
+        if (useFloat)
+            respawnHoldsUntilReleasedIn<float>();
+        else
+            respawnHoldsUntilReleasedIn<double>();
     }
 
     void respawnOutsideTheWindow()
@@ -696,7 +756,10 @@ private slots:
     void legsDoNotFeedBack()
     {
         QFETCH(bool, useFloat);
-        if (useFloat) legsDoNotFeedBackIn<float>(); else legsDoNotFeedBackIn<double>();
+        if (useFloat)
+            legsDoNotFeedBackIn<float>();
+        else
+            legsDoNotFeedBackIn<double>();
     }
 
     void switchesChangeTheResult_data()
@@ -715,10 +778,14 @@ private slots:
         QFETCH(bool, bodyChanges);
         QFETCH(bool, legsChange);
         SeedComponents c;
-        if (off == QLatin1String("gravity")) c.gravity = false;
-        else if (off == QLatin1String("springs")) c.springs = false;
-        else if (off == QLatin1String("area")) c.area = false;
-        else if (off == QLatin1String("angleLimits")) c.angleLimits = false;
+        if (off == QLatin1String("gravity"))
+            c.gravity = false;
+        else if (off == QLatin1String("springs"))
+            c.springs = false;
+        else if (off == QLatin1String("area"))
+            c.area = false;
+        else if (off == QLatin1String("angleLimits"))
+            c.angleLimits = false;
         auto full = SeedFrog<float>::create(FrogParams{}).value();
         auto part = SeedFrog<float>::create(FrogParams{}, c).value();
         QString why;
@@ -891,9 +958,9 @@ private slots:
             f.step();
             d.step();
             if (s == 600 || s == 1000)
-                qInfo("area after %d steps: float %.1f px², double %.1f px² (%.1f %% short of %.0f)", s,
-                      double(f.body().area()), double(d.body().area()),
-                      100 * (1 - double(d.body().area()) / FrogParams{}.targetArea), FrogParams{}.targetArea);
+                qInfo("area after %d steps: float %.1f px², double %.1f px² (%.1f %% short of %.0f)", s, double(f.body().area()),
+                      double(d.body().area()), 100 * (1 - double(d.body().area()) / FrogParams{}.targetArea),
+                      FrogParams{}.targetArea);
         }
         QVERIFY(std::isfinite(double(f.body().area())));
     }
@@ -1155,10 +1222,14 @@ private:
             if (s == 200) { // a grab too
                 const Point c = centroid(body);
                 QVERIFY(full.press(c) && bare.press(c) && body.press(c));
-                full.move(Point{500, 300}); bare.move(Point{500, 300}); body.move(Point{500, 300});
+                full.move(Point{500, 300});
+                bare.move(Point{500, 300});
+                body.move(Point{500, 300});
             }
             if (s == 300) {
-                full.release(); bare.release(); body.release();
+                full.release();
+                bare.release();
+                body.release();
             }
             full.step();
             bare.step();

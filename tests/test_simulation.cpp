@@ -65,7 +65,8 @@ private slots:
         QTest::addColumn<SolverKind>("solver");
         for (const auto& name : sceneNames())
             for (SolverKind s : {SolverKind::Seed, SolverKind::Stable})
-                QTest::newRow(qPrintable(QString::fromStdString(name + " " + solverName(s)))) << QString::fromStdString(name) << s;
+                QTest::newRow(qPrintable(QString::fromStdString(name + " " + solverName(s))))
+                    << QString::fromStdString(name) << s;
     }
     void everySceneRuns()
     {
@@ -332,7 +333,8 @@ private slots:
         QVERIFY(damped < soft); // the dashpots hold back the stretching
         QVERIFY(damped > rigid);
         // The seed has no substeps and no compliance: its trace is unchanged.
-        auto seedDefault = make("frog", SolverKind::Seed), seedKnobs = make("frog", SolverKind::Seed, {"substeps=2", "edge_compliance=0.5", "edge_damping_ratio=1"});
+        auto seedDefault = make("frog", SolverKind::Seed),
+             seedKnobs = make("frog", SolverKind::Seed, {"substeps=2", "edge_compliance=0.5", "edge_damping_ratio=1"});
         for (int i = 0; i < 200; ++i) {
             seedDefault->step();
             seedKnobs->step();
@@ -397,12 +399,18 @@ private slots:
     {
         QTest::addColumn<QString>("scene");
         QTest::addColumn<QString>("setting");
-        QTest::newRow("frog") << "frog" << "";
-        QTest::newRow("frog thrown sideways") << "frog" << "v0=3,-5";
-        QTest::newRow("frog dropped from the left") << "frog" << "center=300,200";
-        QTest::newRow("frog of 12 sides") << "frog" << "sides=12";
-        QTest::newRow("verlet") << "verlet" << "";
-        QTest::newRow("catmull-rom") << "catmull-rom" << "";
+        QTest::newRow("frog") << "frog"
+                              << "";
+        QTest::newRow("frog thrown sideways") << "frog"
+                                              << "v0=3,-5";
+        QTest::newRow("frog dropped from the left") << "frog"
+                                                    << "center=300,200";
+        QTest::newRow("frog of 12 sides") << "frog"
+                                          << "sides=12";
+        QTest::newRow("verlet") << "verlet"
+                                << "";
+        QTest::newRow("catmull-rom") << "catmull-rom"
+                                     << "";
     }
     void frogRestsUprightAsTheSeedDoes()
     {
@@ -509,10 +517,11 @@ private slots:
     {
         QTest::addColumn<QString>("scene");
         QTest::addColumn<QString>("setting");
-        const char* settings[] = {"gravity=0,10000", "gravity=-500,-500", "target_area=0", "target_area=1000000000",
-                                  "sides=3", "sides=200", "velmax=1000000", "velmax=0", "area_factor=100",
-                                  "friction=1,1", "friction=0,0", "spring_length=1000", "radius=0", "radius=5000",
-                                  "width=40", "height=30", "center=-500,-500", "v0=1000,-3000"};
+        const char* settings[] = {"gravity=0,10000",  "gravity=-500,-500", "target_area=0",  "target_area=1000000000",
+                                  "sides=3",          "sides=200",         "velmax=1000000", "velmax=0",
+                                  "area_factor=100",  "friction=1,1",      "friction=0,0",   "spring_length=1000",
+                                  "radius=0",         "radius=5000",       "width=40",       "height=30",
+                                  "center=-500,-500", "v0=1000,-3000"};
         for (const char* scene : {"frog", "area", "many-bodies"})
             for (const char* s : settings)
                 if (!(QString(scene) == "area" && QString(s).startsWith("sides=200")))

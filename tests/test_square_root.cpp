@@ -15,18 +15,30 @@ private slots:
         QTest::addColumn<QString>("square");
         QTest::addColumn<QString>("root");
         // Ex 2.9: d_1² = 1 + 9, d_2² = 9 + 1, d_3² = 16 + 16, d_4² = 49 + 49 (not 36 + 49).
-        QTest::newRow("d1 = √10") << "10" << "√10";
-        QTest::newRow("d3 = 4√2") << "32" << "4√2";
-        QTest::newRow("d4 = 7√2") << "98" << "7√2";
-        QTest::newRow("the thesis's √85 stays") << "85" << "√85";
-        QTest::newRow("perfect square") << "49" << "7";
-        QTest::newRow("rational square") << "9/4" << "3/2";
-        QTest::newRow("fraction") << "3/2" << "√6/2";
-        QTest::newRow("fraction with coefficient") << "50/9" << "5√2/3";
-        QTest::newRow("zero") << "0" << "0";
-        QTest::newRow("one") << "1" << "1";
-        QTest::newRow("large prime square") << "1000006000009" << "1000003"; // 1000003²
-        QTest::newRow("large square-free") << "999999999989" << "√999999999989";
+        QTest::newRow("d1 = √10") << "10"
+                                  << "√10";
+        QTest::newRow("d3 = 4√2") << "32"
+                                  << "4√2";
+        QTest::newRow("d4 = 7√2") << "98"
+                                  << "7√2";
+        QTest::newRow("the thesis's √85 stays") << "85"
+                                                << "√85";
+        QTest::newRow("perfect square") << "49"
+                                        << "7";
+        QTest::newRow("rational square") << "9/4"
+                                         << "3/2";
+        QTest::newRow("fraction") << "3/2"
+                                  << "√6/2";
+        QTest::newRow("fraction with coefficient") << "50/9"
+                                                   << "5√2/3";
+        QTest::newRow("zero") << "0"
+                              << "0";
+        QTest::newRow("one") << "1"
+                             << "1";
+        QTest::newRow("large prime square") << "1000006000009"
+                                            << "1000003"; // 1000003²
+        QTest::newRow("large square-free") << "999999999989"
+                                           << "√999999999989";
     }
     void simplifies()
     {

@@ -84,8 +84,7 @@ private slots:
     void everyMessageIsTranslated()
     {
         QFETCH(QString, language);
-        const auto messages =
-            readTs(QStringLiteral(GRANOTA_SOURCE_DIR "/translations/granota_%1.ts").arg(language));
+        const auto messages = readTs(QStringLiteral(GRANOTA_SOURCE_DIR "/translations/granota_%1.ts").arg(language));
         QVERIFY(messages.size() > 500); // every tab's texts are there
         QStringList problems;
         int differing = 0;
@@ -161,9 +160,8 @@ private slots:
                     if (!QString(m.source).remove(QLatin1Char('&')).contains(term))
                         continue;
                     ++uses;
-                    const bool named = std::any_of(row.catalan.begin(), row.catalan.end(), [&t](const QString& word) {
-                        return t.contains(word, Qt::CaseInsensitive);
-                    });
+                    const bool named = std::any_of(row.catalan.begin(), row.catalan.end(),
+                                                   [&t](const QString& word) { return t.contains(word, Qt::CaseInsensitive); });
                     if (!named)
                         failures << QStringLiteral("%1: “%2” is not “%3” in “%4”")
                                         .arg(m.context, row.english, row.catalan.join(QStringLiteral(" / ")), t.left(80));

@@ -112,8 +112,8 @@ private slots:
             QVERIFY2(p.error < 1e-13, qPrintable(QString::number(p.knob)));
             QVERIFY(errorAt(*bernstein, p.knob) < 1e-13);
         }
-        QVERIFY(errorAt(*horner, 2) < 1e-13);         // low degree: fine
-        QVERIFY(errorAt(*horner, 30) > 1e-8);         // degree 30: digits gone
+        QVERIFY(errorAt(*horner, 2) < 1e-13); // low degree: fine
+        QVERIFY(errorAt(*horner, 30) > 1e-8); // degree 30: digits gone
         QVERIFY(errorAt(*horner, 30) > 1e4 * errorAt(*casteljau, 30));
         QVERIFY(errorAt(*horner, 30) > errorAt(*horner, 10));
     }
@@ -163,8 +163,8 @@ private slots:
         QTest::addColumn<QString>("name");
         QTest::addColumn<QString>("uniformMethod");
         QTest::newRow("curve-sampling") << QStringLiteral("curve-sampling") << QStringLiteral("uniform");
-        QTest::newRow("catmull-rom-sampling") << QStringLiteral("catmull-rom-sampling")
-                                              << QStringLiteral("uniform t per segment");
+        QTest::newRow("catmull-rom-sampling")
+            << QStringLiteral("catmull-rom-sampling") << QStringLiteral("uniform t per segment");
     }
     void samplingReportsPlotAdaptiveLeftOfUniform()
     {
@@ -186,8 +186,10 @@ private slots:
                     continue;
                 const double s = std::log(u0.error / a.error) / std::log(u0.error / u1.error);
                 const double uniformPoints = u0.knob * std::pow(u1.knob / u0.knob, s);
-                QVERIFY2(a.knob < uniformPoints,
-                         qPrintable(QStringLiteral("error %1: adaptive %2 points, uniform %3").arg(a.error).arg(a.knob).arg(uniformPoints)));
+                QVERIFY2(
+                    a.knob < uniformPoints,
+                    qPrintable(
+                        QStringLiteral("error %1: adaptive %2 points, uniform %3").arg(a.error).arg(a.knob).arg(uniformPoints)));
                 ++compared;
             }
         }
@@ -208,7 +210,8 @@ private slots:
             for (std::size_t i = 1; i < s.samples.size(); ++i) {
                 QVERIFY2(s.samples[i].knob > s.samples[i - 1].knob, s.method.c_str());
                 QVERIFY2(s.samples[i].error < s.samples[i - 1].error,
-                         qPrintable(QStringLiteral("%1 at %2 points").arg(QString::fromStdString(s.method)).arg(s.samples[i].knob)));
+                         qPrintable(
+                             QStringLiteral("%1 at %2 points").arg(QString::fromStdString(s.method)).arg(s.samples[i].knob)));
             }
         }
         const double p = observedOrder(*r.find("uniform t per segment"), 40, 1e9);

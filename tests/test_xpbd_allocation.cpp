@@ -65,7 +65,7 @@ private slots:
             QVERIFY(w.addChain(frogLegChain(FrogParams{}.legs[std::size_t(leg)], a, w.anchorPoint(a))).ok());
         }
         QVERIFY(g_allocations.load() > start); // the counter does see allocations
-        for (int i = 0; i < 300; ++i) // the contact lists grow to their working size
+        for (int i = 0; i < 300; ++i)          // the contact lists grow to their working size
             w.step();
         QVERIFY(w.press(w.centroid(0)));
         const long before = g_allocations.load();

@@ -131,9 +131,9 @@ private slots:
     void badParamsAreRejected_data()
     {
         QTest::addColumn<int>("which");
-        const char* names[] = {"substeps 0", "negative compliance", "zero width", "negative height", "NaN gravity",
-                               "friction above 1", "NaN area compliance", "velmax 0", "dt 0", "restitution 2",
-                               "recovery 0", "infinite width"};
+        const char* names[] = {"substeps 0",  "negative compliance", "zero width",          "negative height",
+                               "NaN gravity", "friction above 1",    "NaN area compliance", "velmax 0",
+                               "dt 0",        "restitution 2",       "recovery 0",          "infinite width"};
         for (int i = 0; i < 12; ++i)
             QTest::newRow(names[i]) << i;
     }
@@ -168,8 +168,8 @@ private slots:
     void badBodiesAreRejected_data()
     {
         QTest::addColumn<int>("which");
-        const char* names[] = {"two vertices",  "NaN vertex",   "negative area", "NaN area",
-                               "collinear",     "bow tie",      "infinite velocity", "zero mass"};
+        const char* names[] = {"two vertices", "NaN vertex", "negative area",     "NaN area",
+                               "collinear",    "bow tie",    "infinite velocity", "zero mass"};
         for (int i = 0; i < 8; ++i)
             QTest::newRow(names[i]) << i;
     }
@@ -295,8 +295,8 @@ private slots:
         for (int i = 0; i < 600; ++i)
             w.step();
         const double err = w.areaErrorPercent(b);
-        qInfo("area error at rest: %+.4f %% (area %.1f, target %.1f), max edge stretch %.4f, kinetic %.2e",
-              err, w.area(b), w.targetArea(b), w.maxEdgeStretch(b), w.kineticEnergy());
+        qInfo("area error at rest: %+.4f %% (area %.1f, target %.1f), max edge stretch %.4f, kinetic %.2e", err, w.area(b),
+              w.targetArea(b), w.maxEdgeStretch(b), w.kineticEnergy());
         QVERIFY2(std::abs(err) < 1.0, qPrintable(QString::number(err)));
         QVERIFY(w.isValid(b));
         QVERIFY(!w.recovering(b));
@@ -311,10 +311,20 @@ private slots:
     void extremeSettingsStayFiniteAndInside_data()
     {
         QTest::addColumn<int>("which");
-        const char* names[] = {"rigid (all compliance 0)", "large steps (dt 25)", "huge gravity 1e4",
-                               "target area 0", "target area 1e9", "3 sides", "200 sides", "friction 0",
-                               "friction 1", "partly outside the frame", "10x10 frame, 100 px body",
-                               "1 substep", "sideways gravity, bouncy", "inverted rigid, huge velocity"};
+        const char* names[] = {"rigid (all compliance 0)",
+                               "large steps (dt 25)",
+                               "huge gravity 1e4",
+                               "target area 0",
+                               "target area 1e9",
+                               "3 sides",
+                               "200 sides",
+                               "friction 0",
+                               "friction 1",
+                               "partly outside the frame",
+                               "10x10 frame, 100 px body",
+                               "1 substep",
+                               "sideways gravity, bouncy",
+                               "inverted rigid, huge velocity"};
         for (int i = 0; i < 14; ++i)
             QTest::newRow(names[i]) << i;
     }
@@ -330,18 +340,39 @@ private slots:
         switch (which) {
         case 0: p.edgeCompliance = p.areaCompliance = p.bendCompliance = p.linkCompliance = p.grabCompliance = 0; break;
         case 1: p.dt = 25; break;
-        case 2: p.gravity = {0, 1e4}; p.velmax = kInf; break;
+        case 2:
+            p.gravity = {0, 1e4};
+            p.velmax = kInf;
+            break;
         case 3: target = 0; break;
         case 4: target = 1e9; break;
         case 5: sides = 3; break;
         case 6: sides = 200; break;
-        case 7: p.damping = {1, 1}; p.wallFriction = p.contactFriction = 0; break;
-        case 8: p.damping = {0, 0}; p.wallFriction = p.contactFriction = 1; break;
+        case 7:
+            p.damping = {1, 1};
+            p.wallFriction = p.contactFriction = 0;
+            break;
+        case 8:
+            p.damping = {0, 0};
+            p.wallFriction = p.contactFriction = 1;
+            break;
         case 9: centre = {30, 700}; break;
-        case 10: p.width = p.height = 10; centre = {5, 5}; radius = 100; break;
+        case 10:
+            p.width = p.height = 10;
+            centre = {5, 5};
+            radius = 100;
+            break;
         case 11: p.substeps = 1; break;
-        case 12: p.gravity = {3, -2}; p.restitution = 1; p.velmax = kInf; break;
-        case 13: p.edgeCompliance = p.areaCompliance = 0; p.velmax = kInf; v0 = {1e6, -3e5}; break;
+        case 12:
+            p.gravity = {3, -2};
+            p.restitution = 1;
+            p.velmax = kInf;
+            break;
+        case 13:
+            p.edgeCompliance = p.areaCompliance = 0;
+            p.velmax = kInf;
+            v0 = {1e6, -3e5};
+            break;
         }
         XpbdWorld w = makeWorld(p);
         const int b = addRegular(w, centre, radius, sides, target, v0, BodyOptions{10, which == 0 || which == 6, true});
@@ -379,8 +410,7 @@ private slots:
     {
         QTest::addColumn<int>("which");
         QTest::addColumn<int>("sides");
-        const char* names[] = {"squashed flat", "squashed onto a line", "mirrored (inside out)",
-                               "hard fling into a wall",
+        const char* names[] = {"squashed flat", "squashed onto a line", "mirrored (inside out)", "hard fling into a wall",
                                "tangled (figure eight)"};
         for (int i = 0; i < 5; ++i)
             for (int sides : {10, 31})
@@ -411,8 +441,7 @@ private slots:
             for (Point& q : v)
                 q.x = 2 * c.x - q.x;
             break;
-        case 3:
-            break;
+        case 3: break;
         case 4: // swap two halves' order: the outline crosses itself
             std::reverse(v.begin() + sides / 4, v.begin() + 3 * sides / 4);
             break;
@@ -488,8 +517,8 @@ private slots:
             w.step();
         const int n = w.particleCount();
 
-        QVERIFY(!w.press({1200, 100}));     // outside the body
-        QVERIFY(!w.press({-50, -2000}));    // outside the window
+        QVERIFY(!w.press({1200, 100}));       // outside the body
+        QVERIFY(!w.press({-50, -2000}));      // outside the window
         QVERIFY(!w.press({std::nan(""), 3})); // not a point
         QCOMPARE(w.grabbedBody(), -1);
 
@@ -578,14 +607,30 @@ private slots:
         std::vector<Point> poly;
         double top = 0;
         switch (which) {
-        case 0: QVERIFY(w.addSegmentObstacle({400, 400}, {900, 400}, 3).ok()); top = 397; break;
-        case 1: QVERIFY(w.addSegmentObstacle({400, 330}, {900, 460}, 3).ok()); top = 330; break;
-        case 2: poly = {{450, 400}, {850, 400}, {800, 550}, {500, 550}}; top = 400; break;
+        case 0:
+            QVERIFY(w.addSegmentObstacle({400, 400}, {900, 400}, 3).ok());
+            top = 397;
+            break;
+        case 1:
+            QVERIFY(w.addSegmentObstacle({400, 330}, {900, 460}, 3).ok());
+            top = 330;
+            break;
+        case 2:
+            poly = {{450, 400}, {850, 400}, {800, 550}, {500, 550}};
+            top = 400;
+            break;
         case 3: // a cup: the body falls in and rests on its bottom
             poly = {{450, 380}, {500, 380}, {500, 500}, {780, 500}, {780, 380}, {830, 380}, {830, 560}, {450, 560}};
-            top = 500; break;
-        case 4: poly = {{630, 350}, {650, 350}, {641, 250}}; top = 250; break;
-        case 5: QVERIFY(w.addSegmentObstacle({400, 400}, {900, 400}, 0).ok()); top = 400; break;
+            top = 500;
+            break;
+        case 4:
+            poly = {{630, 350}, {650, 350}, {641, 250}};
+            top = 250;
+            break;
+        case 5:
+            QVERIFY(w.addSegmentObstacle({400, 400}, {900, 400}, 0).ok());
+            top = 400;
+            break;
         }
         if (!poly.empty())
             QVERIFY(w.addPolygonObstacle(poly).ok());
@@ -664,8 +709,8 @@ private slots:
         double worstArea = 0;
         for (int k = 0; k < count; ++k)
             worstArea = std::max(worstArea, std::abs(w.areaErrorPercent(k)));
-        qInfo("worst penetration after settling: %.3f px; worst area error %.3f %%; pairs %d; kinetic %.2e",
-              pen, worstArea, int(w.contactPairs().size()), w.kineticEnergy());
+        qInfo("worst penetration after settling: %.3f px; worst area error %.3f %%; pairs %d; kinetic %.2e", pen, worstArea,
+              int(w.contactPairs().size()), w.kineticEnergy());
         QVERIFY(pen < 0.5);
         QCOMPARE(invalid, 0);
         QVERIFY(worstArea < 2.0);
@@ -746,8 +791,8 @@ private slots:
                 if (reference < 0)
                     continue;
                 const double a = reference == int(AngleReference::World) || k == 0
-                    ? seedAngle(j[k + 1] - j[k])
-                    : wrapAngle(seedAngle(j[k + 1] - j[k]) - seedAngle(j[k] - j[k - 1]));
+                                     ? seedAngle(j[k + 1] - j[k])
+                                     : wrapAngle(seedAngle(j[k + 1] - j[k]) - seedAngle(j[k] - j[k - 1]));
                 worstAngle = std::max(worstAngle, std::abs(a) - limit);
             }
         }
@@ -850,13 +895,19 @@ private slots:
         // §5.2.3: a body that is not a regular polygon — an L — keeps its form when the
         // angles between consecutive edges are constrained, and sags without them.
         std::vector<Point> l;
-        for (int i = 0; i <= 6; ++i) l.push_back({500 + 20.0 * i, 300});          // top, left to right
-        for (int i = 1; i <= 3; ++i) l.push_back({620, 300 + 20.0 * i});          // down the right
-        for (int i = 1; i <= 3; ++i) l.push_back({620 - 20.0 * i, 360});          // back left
-        for (int i = 1; i <= 6; ++i) l.push_back({560, 360 + 20.0 * i});          // down the leg
-        for (int i = 1; i <= 3; ++i) l.push_back({560 - 20.0 * i, 480});          // foot
-        for (int i = 1; i <= 8; ++i) l.push_back({500, 480 - 22.5 * i});          // up the left side
-        l.pop_back();                                                              // (500, 300) is vertex 0
+        for (int i = 0; i <= 6; ++i)
+            l.push_back({500 + 20.0 * i, 300}); // top, left to right
+        for (int i = 1; i <= 3; ++i)
+            l.push_back({620, 300 + 20.0 * i}); // down the right
+        for (int i = 1; i <= 3; ++i)
+            l.push_back({620 - 20.0 * i, 360}); // back left
+        for (int i = 1; i <= 6; ++i)
+            l.push_back({560, 360 + 20.0 * i}); // down the leg
+        for (int i = 1; i <= 3; ++i)
+            l.push_back({560 - 20.0 * i, 480}); // foot
+        for (int i = 1; i <= 8; ++i)
+            l.push_back({500, 480 - 22.5 * i}); // up the left side
+        l.pop_back();                           // (500, 300) is vertex 0
         QVERIFY(!selfIntersects(l));
         const auto deviation = [&](bool bending) {
             XpbdWorld w = makeWorld();
@@ -874,8 +925,7 @@ private slots:
             double sum = 0;
             for (std::size_t i = 0; i < l.size(); ++i) {
                 const Point r = l[i] - rc;
-                const Point g(c.x + std::cos(th) * r.x - std::sin(th) * r.y,
-                              c.y + std::sin(th) * r.x + std::cos(th) * r.y);
+                const Point g(c.x + std::cos(th) * r.x - std::sin(th) * r.y, c.y + std::sin(th) * r.x + std::cos(th) * r.y);
                 sum += dot(v[i] - g, v[i] - g);
             }
             if (!w.isValid(b) || std::abs(w.areaErrorPercent(b)) >= 1.0)
@@ -1042,8 +1092,7 @@ private slots:
             previous = e;
         }
         const double scale = std::abs(w.gravityEnergy()) + 1;
-        qInfo("energy after settling %.6g; largest rise above it %.3e, largest rise in one step %.3e", e0, worst,
-              worstRise);
+        qInfo("energy after settling %.6g; largest rise above it %.3e, largest rise in one step %.3e", e0, worst, worstRise);
         QVERIFY(worst <= 1e-6 * scale);
     }
 
@@ -1090,7 +1139,8 @@ private slots:
         QVERIFY(peaks.size() >= 3);
         const double damped = period / std::sqrt(1 - zeta * zeta);
         const double spacing = (peaks[2].first - peaks[0].first) / 2;
-        QVERIFY2(std::abs(spacing - damped) <= 0.03 * damped, qPrintable(QStringLiteral("%1 against %2").arg(spacing).arg(damped)));
+        QVERIFY2(std::abs(spacing - damped) <= 0.03 * damped,
+                 qPrintable(QStringLiteral("%1 against %2").arg(spacing).arg(damped)));
         const double decrement = std::log(peaks[0].second / peaks[2].second) / 2;
         const double measured = decrement / std::sqrt(4 * kPi * kPi + decrement * decrement);
         const double own = kPi / period;
@@ -1133,7 +1183,8 @@ private slots:
                 QCOMPARE(booked, 0.0);
             } else {
                 QVERIFY(drop > 0.5 * e1);
-                QVERIFY2(std::abs(booked - drop) <= 0.1 * drop, qPrintable(QStringLiteral("%1 against %2").arg(booked).arg(drop)));
+                QVERIFY2(std::abs(booked - drop) <= 0.1 * drop,
+                         qPrintable(QStringLiteral("%1 against %2").arg(booked).arg(drop)));
             }
         }
         QVERIFY(left[1] < 0.5 * left[0]); // 8 % of the energy left against 32 %
@@ -1164,7 +1215,8 @@ private slots:
                                                   std::max(rest, 1.0));
             }
             QVERIFY2(std::abs(world.maxEdgeStretch(b) - expected) <= 1e-12 * (1 + expected),
-                     qPrintable(QStringLiteral("%1 against %2").arg(world.maxEdgeStretch(b), 0, 'g', 17).arg(expected, 0, 'g', 17)));
+                     qPrintable(
+                         QStringLiteral("%1 against %2").arg(world.maxEdgeStretch(b), 0, 'g', 17).arg(expected, 0, 'g', 17)));
         }
         QVERIFY(world.edgeRest(b, 1).length < 1); // the tiny edge is there
     }

@@ -131,9 +131,11 @@ Expected<CommandOutput> run(const Arguments& args)
 
 Command analyzeCommand()
 {
-    return {"analyze", "--points P | --points-file F  [--t T] [--length-at S] [--json]",
+    return {"analyze",
+            "--points P | --points-file F  [--t T] [--length-at S] [--json]",
             "hodograph, arc length, extrema, tight box, inflections, cusps; curvature at T; t at arc length S",
-            {{"points", "points-file", "t", "length-at"}, {"json"}, {}}, &run};
+            {{"points", "points-file", "t", "length-at"}, {"json"}, {}},
+            &run};
 }
 
 } // namespace granota::cli

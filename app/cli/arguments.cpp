@@ -96,8 +96,8 @@ Expected<int> Arguments::integer(const std::string& name, int min, int max, std:
     if (!q || q->get_den() != 1)
         return makeError(ErrorCode::InvalidInput, "--" + name + " " + quotedForDisplay(*v) + " is not a whole number");
     if (*q < min || *q > max)
-        return makeError(ErrorCode::OutOfRange,
-                         "--" + name + " " + quotedForDisplay(*v) + " is out of range (" + std::to_string(min) + " to " + std::to_string(max) + ")");
+        return makeError(ErrorCode::OutOfRange, "--" + name + " " + quotedForDisplay(*v) + " is out of range (" +
+                                                    std::to_string(min) + " to " + std::to_string(max) + ")");
     return static_cast<int>(q->get_num().get_si());
 }
 

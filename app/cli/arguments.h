@@ -16,10 +16,10 @@
 namespace granota::cli {
 
 struct CommandSyntax {
-    std::set<std::string> valueOptions;   ///< options followed by a value, e.g. "points"
-    std::set<std::string> flags;          ///< options without a value, e.g. "exact"
-    std::set<std::string> repeatable;     ///< value options that may be given several times
-    std::size_t maxPositional = 0;        ///< plain words allowed before/among the options (report NAME)
+    std::set<std::string> valueOptions; ///< options followed by a value, e.g. "points"
+    std::set<std::string> flags;        ///< options without a value, e.g. "exact"
+    std::set<std::string> repeatable;   ///< value options that may be given several times
+    std::size_t maxPositional = 0;      ///< plain words allowed before/among the options (report NAME)
 };
 
 class Arguments {

@@ -61,8 +61,9 @@ Expected<CommandOutput> run(const Arguments& args)
     CommandOutput out;
     std::ostringstream txt;
     txt << "scene " << scene->name << ", solver " << solverName(*solver) << ", " << *bodies << " bodies, " << *steps
-        << " steps: " << formatDouble(std::round(nsPerStep)) << " ns per step, " << formatDouble(std::round(nsPerBodyStep * 10) / 10)
-        << " ns per body step (frame " << formatDouble(scene->params.width) << " × " << formatDouble(scene->params.height) << " px)\n";
+        << " steps: " << formatDouble(std::round(nsPerStep)) << " ns per step, "
+        << formatDouble(std::round(nsPerBodyStep * 10) / 10) << " ns per body step (frame " << formatDouble(scene->params.width)
+        << " × " << formatDouble(scene->params.height) << " px)\n";
     out.json.set("ns_per_step", nsPerStep)
         .set("ns_per_body_step", nsPerBodyStep)
         .set("scene", scene->name)
@@ -78,7 +79,8 @@ Expected<CommandOutput> run(const Arguments& args)
 
 Command benchCommand()
 {
-    return {"bench", "--scene NAME [--solver seed|stable] [--bodies B] [--steps N] [--set key=value …] [--json]",
+    return {"bench",
+            "--scene NAME [--solver seed|stable] [--bodies B] [--steps N] [--set key=value …] [--json]",
             "time the steps of a scene: ns per step and per body step",
             {{"scene", "solver", "bodies", "steps", "set"}, {"json"}, {"set"}},
             &run};

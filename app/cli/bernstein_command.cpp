@@ -60,9 +60,11 @@ Expected<CommandOutput> run(const Arguments& args)
 
 Command bernsteinCommand()
 {
-    return {"bernstein", "--degree N  --t T  [--exact] [--json]",
+    return {"bernstein",
+            "--degree N  --t T  [--exact] [--json]",
             "the Bernstein polynomials B_i^N in powers of t and their values at T",
-            {{"degree", "t"}, {"exact", "json"}, {}}, &run};
+            {{"degree", "t"}, {"exact", "json"}, {}},
+            &run};
 }
 
 } // namespace granota::cli

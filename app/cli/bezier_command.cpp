@@ -87,8 +87,8 @@ Expected<CommandOutput> run(const Arguments& args)
     if (exact) {
         const double work = deCasteljauExactWork(n, maxBitLength(*points), bitLength(*t));
         if (!exactWorkAllowed(work))
-            return makeError(ErrorCode::OutOfRange,
-                             exactWorkRefusal("De Casteljau triangle", work, "the number of points or the digits of --t and the points"));
+            return makeError(ErrorCode::OutOfRange, exactWorkRefusal("De Casteljau triangle", work,
+                                                                     "the number of points or the digits of --t and the points"));
     }
 
     // The power basis is converted exactly and rounded once, so its coefficients are right
@@ -189,10 +189,12 @@ Expected<CommandOutput> run(const Arguments& args)
 
 Command bezierCommand()
 {
-    return {"bezier", "--points P | --points-file F  --t T  [--reduce] [--exact] [--json]",
+    return {"bezier",
+            "--points P | --points-file F  --t T  [--reduce] [--exact] [--json]",
             "De Casteljau's construction at t: every level P_i^r(t), c(t), c'(t), c(t) in powers of t; "
             "--reduce: the closest curve of one degree less (--t then optional)",
-            {{"points", "points-file", "t"}, {"exact", "json", "reduce"}, {}}, &run};
+            {{"points", "points-file", "t"}, {"exact", "json", "reduce"}, {}},
+            &run};
 }
 
 } // namespace granota::cli

@@ -126,8 +126,7 @@ Expected<CommandOutput> run(const Arguments& args)
         bezier = bezierJson(*segs);
     }
     txt << "(" << *samples << " samples per segment with --json)\n";
-    out.json.set("segments", std::move(segments)).set("samples", std::move(sampleJson))
-        .set("bezier", std::move(bezier));
+    out.json.set("segments", std::move(segments)).set("samples", std::move(sampleJson)).set("bezier", std::move(bezier));
     out.text = txt.str();
     return out;
 }

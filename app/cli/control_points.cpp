@@ -10,8 +10,8 @@ Expected<std::vector<RPoint>> controlPoints(const Arguments& args)
     if (!points)
         return points.error();
     if (static_cast<int>(points->size()) > kMaxDegree + 1)
-        return makeError(ErrorCode::DegreeTooHigh,
-                         "at most " + std::to_string(kMaxDegree + 1) + " control points (degree " + std::to_string(kMaxDegree) + ")");
+        return makeError(ErrorCode::DegreeTooHigh, "at most " + std::to_string(kMaxDegree + 1) + " control points (degree " +
+                                                       std::to_string(kMaxDegree) + ")");
     return points;
 }
 

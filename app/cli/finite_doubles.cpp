@@ -15,8 +15,8 @@ std::string magnitudeText(const Rational& q)
     long numExp = 0, denExp = 0;
     const double numMantissa = mpz_get_d_2exp(&numExp, q.get_num_mpz_t());
     const double denMantissa = mpz_get_d_2exp(&denExp, q.get_den_mpz_t());
-    const double log10 = std::log10(std::fabs(numMantissa / denMantissa))
-                         + static_cast<double>(numExp - denExp) * std::log10(2.0);
+    const double log10 = std::log10(std::fabs(numMantissa / denMantissa)) +
+                         static_cast<double>(numExp - denExp) * std::log10(2.0);
     long exponent = static_cast<long>(std::floor(log10));
     double mantissa = std::round(std::pow(10.0, log10 - static_cast<double>(exponent)) * 10) / 10; // 1.8
     if (mantissa >= 10) {
@@ -37,8 +37,8 @@ std::string valueText(const Rational& q)
 Error tooLargeForDouble(const std::string& what, bool exactAvailable)
 {
     return makeError(ErrorCode::OutOfRange,
-                     what + " is too large for a double (beyond ±1.8e308)"
-                         + (exactAvailable ? "; --exact computes it with exact fractions, which do not overflow" : ""));
+                     what + " is too large for a double (beyond ±1.8e308)" +
+                         (exactAvailable ? "; --exact computes it with exact fractions, which do not overflow" : ""));
 }
 
 Expected<double> finiteDouble(const Rational& q, const std::string& what, bool exactAvailable)

@@ -78,8 +78,8 @@ Expected<CommandOutput> run(const Arguments& args)
 
     CommandOutput out;
     std::ostringstream txt;
-    txt << "Least-squares Bézier fit (§2.1.3): " << points->size() << " points, degree " << *degree << ", "
-        << *paramName << " parameters, solver " << (exact ? "exact rational" : *solverName) << "\n";
+    txt << "Least-squares Bézier fit (§2.1.3): " << points->size() << " points, degree " << *degree << ", " << *paramName
+        << " parameters, solver " << (exact ? "exact rational" : *solverName) << "\n";
     Json control = Json::array(), params = Json::array();
     if (exact) {
         auto e = fitBezierExact(*points, *degree, param);
@@ -148,8 +148,9 @@ Expected<CommandOutput> run(const Arguments& args)
 Command fitCommand()
 {
     return {"fit",
-            "--points Q | --points-file F  --degree n (0 to " + std::to_string(kMaxFitDegree) + ")  [--param uniform|chord|centripetal] [--solver qr|normal|svd] "
-            "[--iterate] [--exact] [--json]",
+            "--points Q | --points-file F  --degree n (0 to " + std::to_string(kMaxFitDegree) +
+                ")  [--param uniform|chord|centripetal] [--solver qr|normal|svd] "
+                "[--iterate] [--exact] [--json]",
             "least-squares Bézier fit: control points, t_i, Σ‖Q_i − α(t_i)‖², cond₂(M); --exact adds M, MᵀM, (MᵀM)⁻¹, M⁺",
             {{"points", "points-file", "degree", "param", "solver"}, {"exact", "json", "iterate"}, {}},
             &run};

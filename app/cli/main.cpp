@@ -22,7 +22,8 @@ constexpr int kFailed = 2; ///< every error: bad input, or an answer that cannot
 
 std::vector<Command> commands()
 {
-    return {bezierCommand(), bernsteinCommand(), projectCommand(), analyzeCommand(), fitCommand(), catmullRomCommand(), simulateCommand(), benchCommand(),
+    return {bezierCommand(), bernsteinCommand(),  projectCommand(),  analyzeCommand(),
+            fitCommand(),    catmullRomCommand(), simulateCommand(), benchCommand(),
 #ifdef GRANOTA_HAS_REPORTS
             reportCommand(),
 #endif
@@ -61,8 +62,7 @@ int finishOutput()
 int main(int argc, char* argv[])
 {
     try {
-        if (argc < 2)
-        {
+        if (argc < 2) {
             std::cerr << "error: no command given\n";
             printUsage(std::cerr);
             return kFailed;

@@ -49,9 +49,11 @@ Expected<CommandOutput> run(const Arguments& args)
 
 Command projectCommand()
 {
-    return {"project", "--points P | --points-file F  --at x,y  [--json]",
+    return {"project",
+            "--points P | --points-file F  --at x,y  [--json]",
             "the closest point of the curve to (x, y): global over [0, 1], ends included, smallest t on a tie",
-            {{"points", "points-file", "at"}, {"json"}, {}}, &run};
+            {{"points", "points-file", "at"}, {"json"}, {}},
+            &run};
 }
 
 } // namespace granota::cli

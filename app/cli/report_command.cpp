@@ -50,8 +50,7 @@ std::vector<std::string> context()
 {
     return {"machine: " + cpuModel() + ", " + std::to_string(std::thread::hardware_concurrency()) + " threads, " +
                 QSysInfo::prettyProductName().toStdString(),
-            std::string("build: ") + GRANOTA_BUILD_TYPE + ", " + "g++ " + __VERSION__,
-            "command: granota-cli report"};
+            std::string("build: ") + GRANOTA_BUILD_TYPE + ", " + "g++ " + __VERSION__, "command: granota-cli report"};
 }
 
 /// Renders the report's plot to SVG and PNG with QCustomPlot. Needs a QApplication: the
@@ -158,7 +157,8 @@ Expected<CommandOutput> run(const Arguments& args)
         Json entry = Json::object();
         entry.set("report", n).set("csv", base + ".csv").set("svg", base + ".svg").set("png", base + ".png");
         files.push(entry);
-        text << n << ": " << report->lesson << "\n  wrote " << base + ".csv" << ", .svg, .png\n";
+        text << n << ": " << report->lesson << "\n  wrote " << base + ".csv"
+             << ", .svg, .png\n";
     }
     output.json.set("reports", files);
     output.text = text.str();
@@ -172,8 +172,7 @@ Command reportCommand()
     return {"report", "NAME|all --out DIR [--quick] [--json]",
             "error against run time as CSV, SVG and PNG: curve-sampling, catmull-rom-sampling, bezier-evaluation, "
             "least-squares, integrators, soft-body, arc-length",
-            CommandSyntax{{"out"}, {"quick", "json"}, {}, 1},
-            run};
+            CommandSyntax{{"out"}, {"quick", "json"}, {}, 1}, run};
 }
 
 } // namespace granota::cli

@@ -37,7 +37,8 @@ Expected<RecordedRun> runFromArguments(const Arguments& args, long* steps)
         for (const char* other : {"scene", "solver", "set", "steps"})
             if (args.has(other))
                 return makeError(ErrorCode::InvalidInput, std::string("--replay takes the scene, solver and steps from "
-                                                                      "the recording: leave out --") + other);
+                                                                      "the recording: leave out --") +
+                                                              other);
         auto text = readBoundedFile(*replay, kMaxFileBytes);
         if (!text)
             return text.error();
@@ -190,7 +191,8 @@ Expected<CommandOutput> run(const Arguments& args)
         body.set("vertices", std::move(vertices)).set("area", s.bodyArea(b)).set("target_area", s.bodyTargetArea(b));
         bodies.push(std::move(body));
         if (s.bodyCount() <= 10)
-            txt << "body " << b << ": area " << formatDouble(s.bodyArea(b)) << " px² (target " << formatDouble(s.bodyTargetArea(b)) << ")\n";
+            txt << "body " << b << ": area " << formatDouble(s.bodyArea(b)) << " px² (target "
+                << formatDouble(s.bodyTargetArea(b)) << ")\n";
     }
     Json chains = Json::array();
     for (int c = 0; c < s.chainCount(); ++c) {
@@ -231,12 +233,14 @@ Expected<CommandOutput> run(const Arguments& args)
 
 Command simulateCommand()
 {
-    return {"simulate", "(--scene NAME [--solver seed|stable] [--steps N] [--set key=value …] | --replay F.json) [--trace F.csv] [--series F.csv [--series-body K]] [--record F.json] [--json]",
-            "run a scene of chapter 4 or §5.2 headless; --trace writes the reference CSV layout, --series the "
-            "energies, losses, area error, stretch and contacts of every step (summed, or of body K alone); --record writes the run as a recording "
-            "(scene, solver, steps, events) and --replay runs one (docs/rewind.md)",
-            {{"scene", "solver", "steps", "set", "trace", "series", "series-body", "record", "replay"}, {"json"}, {"set"}},
-            &run};
+    return {
+        "simulate",
+        "(--scene NAME [--solver seed|stable] [--steps N] [--set key=value …] | --replay F.json) [--trace F.csv] [--series F.csv [--series-body K]] [--record F.json] [--json]",
+        "run a scene of chapter 4 or §5.2 headless; --trace writes the reference CSV layout, --series the "
+        "energies, losses, area error, stretch and contacts of every step (summed, or of body K alone); --record writes the run as a recording "
+        "(scene, solver, steps, events) and --replay runs one (docs/rewind.md)",
+        {{"scene", "solver", "steps", "set", "trace", "series", "series-body", "record", "replay"}, {"json"}, {"set"}},
+        &run};
 }
 
 } // namespace granota::cli

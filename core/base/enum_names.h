@@ -41,8 +41,7 @@ constexpr std::string_view nameOf(const std::array<EnumName<E>, N>& table, E val
 /// The value whose name is `text` (compared as `match` says), or nullopt. The names of the
 /// table are lower case, so IgnoreCase compares them with the lower-cased text.
 template <class E, std::size_t N>
-std::optional<E> parseName(const std::array<EnumName<E>, N>& table, std::string_view text,
-                           NameMatch match = NameMatch::Exact)
+std::optional<E> parseName(const std::array<EnumName<E>, N>& table, std::string_view text, NameMatch match = NameMatch::Exact)
 {
     std::string folded;
     if (match != NameMatch::Exact) {

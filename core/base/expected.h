@@ -15,14 +15,14 @@ namespace granota {
 
 /// What went wrong, in words a user can act on. `code` lets the GUI pick a translated text.
 enum class ErrorCode {
-    InvalidInput,    ///< malformed text, NaN/inf, wrong shape
-    TooFewPoints,    ///< not enough points for the construction
-    DegreeTooHigh,   ///< degree not supported by the number of (distinct) points
-    NotRational,     ///< an exact computation was asked for non-rational data
-    Singular,        ///< a linear system has no unique solution
-    NotIncreasing,   ///< abscissae of a function spline must increase strictly
-    OutOfRange,      ///< a parameter outside its meaningful range
-    Cancelled,       ///< the user stopped a long computation
+    InvalidInput,  ///< malformed text, NaN/inf, wrong shape
+    TooFewPoints,  ///< not enough points for the construction
+    DegreeTooHigh, ///< degree not supported by the number of (distinct) points
+    NotRational,   ///< an exact computation was asked for non-rational data
+    Singular,      ///< a linear system has no unique solution
+    NotIncreasing, ///< abscissae of a function spline must increase strictly
+    OutOfRange,    ///< a parameter outside its meaningful range
+    Cancelled,     ///< the user stopped a long computation
 };
 
 struct Error {
@@ -38,15 +38,31 @@ public:
     bool ok() const { return std::holds_alternative<T>(m_v); }
     explicit operator bool() const { return ok(); }
 
-    const T& value() const& { assert(ok()); return std::get<T>(m_v); }
-    T& value() & { assert(ok()); return std::get<T>(m_v); }
-    T&& value() && { assert(ok()); return std::get<T>(std::move(m_v)); }
+    const T& value() const&
+    {
+        assert(ok());
+        return std::get<T>(m_v);
+    }
+    T& value() &
+    {
+        assert(ok());
+        return std::get<T>(m_v);
+    }
+    T&& value() &&
+    {
+        assert(ok());
+        return std::get<T>(std::move(m_v));
+    }
     const T& operator*() const& { return value(); }
     T& operator*() & { return value(); }
     const T* operator->() const { return &value(); }
     T* operator->() { return &value(); }
 
-    const Error& error() const { assert(!ok()); return std::get<Error>(m_v); }
+    const Error& error() const
+    {
+        assert(!ok());
+        return std::get<Error>(m_v);
+    }
 
 private:
     std::variant<T, Error> m_v;
@@ -64,7 +80,11 @@ public:
 
     void value() const { assert(ok()); }
 
-    const Error& error() const { assert(!ok()); return *m_error; }
+    const Error& error() const
+    {
+        assert(!ok());
+        return *m_error;
+    }
 
 private:
     std::optional<Error> m_error;

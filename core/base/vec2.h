@@ -15,10 +15,28 @@ template <class S> struct Vec2 {
     Vec2() = default;
     Vec2(S x_, S y_) : x(std::move(x_)), y(std::move(y_)) {}
 
-    Vec2& operator+=(const Vec2& o) { x += o.x; y += o.y; return *this; }
-    Vec2& operator-=(const Vec2& o) { x -= o.x; y -= o.y; return *this; }
-    friend Vec2 operator+(Vec2 a, const Vec2& b) { a += b; return a; }
-    friend Vec2 operator-(Vec2 a, const Vec2& b) { a -= b; return a; }
+    Vec2& operator+=(const Vec2& o)
+    {
+        x += o.x;
+        y += o.y;
+        return *this;
+    }
+    Vec2& operator-=(const Vec2& o)
+    {
+        x -= o.x;
+        y -= o.y;
+        return *this;
+    }
+    friend Vec2 operator+(Vec2 a, const Vec2& b)
+    {
+        a += b;
+        return a;
+    }
+    friend Vec2 operator-(Vec2 a, const Vec2& b)
+    {
+        a -= b;
+        return a;
+    }
     friend Vec2 operator-(const Vec2& a) { return Vec2(S(-a.x), S(-a.y)); }
     friend bool operator==(const Vec2& a, const Vec2& b) { return a.x == b.x && a.y == b.y; }
     friend bool operator!=(const Vec2& a, const Vec2& b) { return !(a == b); }

@@ -24,7 +24,7 @@ double deCasteljauExactWork(int degree, long pointBits, long tBits)
     // twice: once to compute every level and once to write it (the CLI and the GUI show
     // the whole triangle; writing a b-bit number in decimal costs about what computing it did).
     const double n = std::max(0, degree), bp = static_cast<double>(pointBits), bt = static_cast<double>(tBits);
-    const double entries = (n + 1) * (n + 2) / 2;  // Σ (n − r + 1)
+    const double entries = (n + 1) * (n + 2) / 2;      // Σ (n − r + 1)
     const double weighted = n * (n + 1) * (n + 2) / 6; // Σ (n − r + 1)·r
     return 2 * 2 * (entries * bp + weighted * bt);
 }
@@ -48,9 +48,9 @@ double fitExactWork(int degree, const std::vector<Rational>& params, long pointB
     }
     const double m = static_cast<double>(params.size()), n1 = std::max(0, degree) + 1.0;
     const double bL = static_cast<double>(mpz_sizeinbase(lcm.get_mpz_t(), 2));
-    const double entryM = (n1 - 1) * (bL + 1) + 1;           // E_M: C(n, j) a^j (L − a)^{n−j} / L^n
+    const double entryM = (n1 - 1) * (bL + 1) + 1; // E_M: C(n, j) a^j (L − a)^{n−j} / L^n
     const double entry = 2 * entryM + std::log2(std::max(1.0, m)) + static_cast<double>(pointBits); // E
-    const double gram = m * n1 * n1 * entry;                 // MᵀM
+    const double gram = m * n1 * n1 * entry;                                                        // MᵀM
     // Gauss–Jordan: (n + 1)³ operations on numbers that grow to (n + 1)·E bits, half that on
     // average; M⁺ = (MᵀM)⁻¹Mᵀ (Nota 2.2) and its writing: m(n + 1)² on entries of the inverse.
     const double inverse = n1 * n1 * n1 * n1 * entry / 2;
@@ -78,8 +78,8 @@ std::string roughly(double v)
 
 std::string exactWorkRefusal(const std::string& what, double work, const std::string& lower)
 {
-    return "the exact " + what + " would take about " + roughly(work) + " bit operations, more than " +
-           roughly(kMaxExactWork) + " (minutes, and memory growing): lower " + lower + ", or leave out --exact";
+    return "the exact " + what + " would take about " + roughly(work) + " bit operations, more than " + roughly(kMaxExactWork) +
+           " (minutes, and memory growing): lower " + lower + ", or leave out --exact";
 }
 
 } // namespace granota

@@ -20,8 +20,7 @@ public:
     Polynomial(std::initializer_list<S> coefficients) : m_c(coefficients) { trim(); }
     explicit Polynomial(std::vector<S> coefficients) : m_c(std::move(coefficients)) { trim(); }
     /// Allows Polynomial<Rational>(1) and Polynomial<double>(0).
-    template <class I, class = std::enable_if_t<std::is_integral_v<I>>>
-    Polynomial(I c) : Polynomial(S(c)) {}
+    template <class I, class = std::enable_if_t<std::is_integral_v<I>>> Polynomial(I c) : Polynomial(S(c)) {}
 
     /// The polynomial t.
     static Polynomial identity() { return Polynomial(std::vector<S>{S(0), S(1)}); }
@@ -87,8 +86,16 @@ public:
         trim();
         return *this;
     }
-    friend Polynomial operator+(Polynomial a, const Polynomial& b) { a += b; return a; }
-    friend Polynomial operator-(Polynomial a, const Polynomial& b) { a -= b; return a; }
+    friend Polynomial operator+(Polynomial a, const Polynomial& b)
+    {
+        a += b;
+        return a;
+    }
+    friend Polynomial operator-(Polynomial a, const Polynomial& b)
+    {
+        a -= b;
+        return a;
+    }
     friend Polynomial operator-(const Polynomial& a) { return Polynomial() - a; }
     friend Polynomial operator*(const Polynomial& a, const Polynomial& b)
     {

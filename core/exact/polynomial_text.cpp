@@ -53,8 +53,8 @@ std::string toText(const Polynomial<Rational>& p, const std::string& var)
 std::string toText(const Polynomial<double>& p, const std::string& var)
 {
     return polyText(
-        p, var, [](double c) { return c < 0; }, [](double c) { return std::fabs(c); },
-        [](double c) { return c == 1.0; }, [](double c) { return formatDouble(c); });
+        p, var, [](double c) { return c < 0; }, [](double c) { return std::fabs(c); }, [](double c) { return c == 1.0; },
+        [](double c) { return formatDouble(c); });
 }
 
 std::optional<Polynomial<Rational>> parsePolynomial(std::string_view text, char var)

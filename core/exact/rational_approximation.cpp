@@ -24,7 +24,10 @@ std::optional<Rational> smallRational(double d, long maxDenominator)
             q = -q;
         if (toDouble(q) == d)
             return q;
-        h0 = h1; h1 = h2; k0 = k1; k1 = k2;
+        h0 = h1;
+        h1 = h2;
+        k0 = k1;
+        k1 = k2;
         const double frac = x - a;
         if (frac <= 0)
             return std::nullopt;

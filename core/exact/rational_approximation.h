@@ -21,7 +21,6 @@ std::optional<Rational> smallRational(double d, long maxDenominator = 100000);
 Rational meantRational(double d, long maxDenominator = 100000);
 
 /// Every point as small fractions, or nullopt if one coordinate has none.
-std::optional<std::vector<RPoint>> smallRationalPoints(const std::vector<Point>& points,
-                                                       long maxDenominator = 100000);
+std::optional<std::vector<RPoint>> smallRationalPoints(const std::vector<Point>& points, long maxDenominator = 100000);
 
 } // namespace granota

@@ -92,11 +92,11 @@ RationalMatrix operator*(const RationalMatrix& a, const RationalMatrix& b)
 Expected<RationalMatrix> RationalMatrix::solve(const RationalMatrix& rhs) const
 {
     if (m_rows != m_cols)
-        return makeError(ErrorCode::InvalidInput, "only a square matrix can be inverted: this one is "
-                                                      + std::to_string(m_rows) + "×" + std::to_string(m_cols));
+        return makeError(ErrorCode::InvalidInput, "only a square matrix can be inverted: this one is " + std::to_string(m_rows) +
+                                                      "×" + std::to_string(m_cols));
     if (rhs.rows() != m_rows)
-        return makeError(ErrorCode::InvalidInput, "right-hand side has " + std::to_string(rhs.rows())
-                                                      + " rows, the matrix " + std::to_string(m_rows));
+        return makeError(ErrorCode::InvalidInput,
+                         "right-hand side has " + std::to_string(rhs.rows()) + " rows, the matrix " + std::to_string(m_rows));
     const int n = m_rows;
     const int p = rhs.cols();
     RationalMatrix a = *this;
@@ -108,8 +108,8 @@ Expected<RationalMatrix> RationalMatrix::solve(const RationalMatrix& rhs) const
         while (pivot < n && sgn(a(pivot, col)) == 0)
             ++pivot;
         if (pivot == n)
-            return makeError(ErrorCode::Singular, "the matrix is singular (no nonzero pivot in column "
-                                                      + std::to_string(col + 1) + ")");
+            return makeError(ErrorCode::Singular,
+                             "the matrix is singular (no nonzero pivot in column " + std::to_string(col + 1) + ")");
         if (pivot != col) {
             for (int c = 0; c < n; ++c)
                 std::swap(a(pivot, c), a(col, c));
@@ -138,10 +138,7 @@ Expected<RationalMatrix> RationalMatrix::solve(const RationalMatrix& rhs) const
     return x;
 }
 
-Expected<RationalMatrix> RationalMatrix::inverse() const
-{
-    return solve(identity(m_rows));
-}
+Expected<RationalMatrix> RationalMatrix::inverse() const { return solve(identity(m_rows)); }
 
 Eigen::MatrixXd RationalMatrix::toDouble() const
 {

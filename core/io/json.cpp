@@ -161,10 +161,7 @@ std::size_t errorOffset(std::size_t position, const std::string& lastToken, cons
 }
 
 bool isDigit(char c) { return c >= '0' && c <= '9'; }
-bool isNumberByte(char c)
-{
-    return isDigit(c) || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E';
-}
+bool isNumberByte(char c) { return isDigit(c) || c == '-' || c == '+' || c == '.' || c == 'e' || c == 'E'; }
 
 /// Whether a number no double can hold is too large rather than too small: the power of
 /// ten of its first significant digit, plus its exponent, is positive.
@@ -190,8 +187,7 @@ bool beyondLargestDouble(std::string_view number)
     if (first == std::string_view::npos)
         return false; // zero
     const std::size_t dot = std::min(mantissa.find('.'), mantissa.size());
-    const long long power = first < dot ? static_cast<long long>(dot - first) - 1
-                                        : -static_cast<long long>(first - dot);
+    const long long power = first < dot ? static_cast<long long>(dot - first) - 1 : -static_cast<long long>(first - dot);
     return power + exponent > 0;
 }
 
@@ -268,8 +264,7 @@ struct Json::Reader final : nlohmann::json_sax<nlohmann::json> {
         return true;
     }
     bool end_array() override { return close(); }
-    bool parse_error(std::size_t position, const std::string& lastToken,
-                     const nlohmann::json::exception& e) override
+    bool parse_error(std::size_t position, const std::string& lastToken, const nlohmann::json::exception& e) override
     {
         if (e.id == 406) // out_of_range.406: a number too large for a double
             return tooLarge(lastNumber());
@@ -314,8 +309,7 @@ private:
 
     bool tooLarge(std::string_view number)
     {
-        return refuse(offset(number), "the number " + std::string(number) +
-                                          " is too large for a double (at most about 1.8e308)");
+        return refuse(offset(number), "the number " + std::string(number) + " is too large for a double (at most about 1.8e308)");
     }
 
     bool deeper()
@@ -323,8 +317,8 @@ private:
         if (m_open.size() < static_cast<std::size_t>(kMaxDepth))
             return true;
         // The '[' or '{' just read is the last byte taken.
-        return refuse(m_taken > 0 ? m_taken - 1 : 0, "arrays and objects nested deeper than " +
-                                                         std::to_string(kMaxDepth) + " levels");
+        return refuse(m_taken > 0 ? m_taken - 1 : 0,
+                      "arrays and objects nested deeper than " + std::to_string(kMaxDepth) + " levels");
     }
 
     bool close()
@@ -345,10 +339,7 @@ private:
         return true;
     }
 
-    std::size_t offset(std::string_view part) const
-    {
-        return static_cast<std::size_t>(part.data() - m_text.data());
-    }
+    std::size_t offset(std::string_view part) const { return static_cast<std::size_t>(part.data() - m_text.data()); }
 
     bool refuse(std::size_t at, const std::string& what)
     {
@@ -376,8 +367,7 @@ Expected<Json> Json::parse(std::string_view text)
         return makeError(ErrorCode::InvalidInput, "JSON: a NUL byte" + where(text, nul));
     if (!ok) {
         assert(reader.error);
-        return reader.error ? *reader.error
-                            : makeError(ErrorCode::InvalidInput, "JSON: unreadable text");
+        return reader.error ? *reader.error : makeError(ErrorCode::InvalidInput, "JSON: unreadable text");
     }
     return std::move(reader.root);
 }

@@ -27,15 +27,16 @@ std::string_view withoutByteOrderMark(std::string_view text)
 /// The refusal of a list longer than kMaxDataPoints, the limit the GUI shares.
 Error tooManyPoints(const char* holder)
 {
-    return makeError(ErrorCode::OutOfRange, std::string(holder) + " holds more than " + std::to_string(kMaxDataPoints)
-                                                + " points, the most Granota reads");
+    return makeError(ErrorCode::OutOfRange, std::string(holder) + " holds more than " + std::to_string(kMaxDataPoints) +
+                                                " points, the most Granota reads");
 }
 
 Expected<Rational> coordinate(std::string_view text, std::size_t index, const char* axis)
 {
     auto q = parseRational(text);
     if (!q)
-        return makeError(ErrorCode::InvalidInput, "point " + std::to_string(index) + ": " + axis + " = " + quotedInput(trim(text)) +
+        return makeError(ErrorCode::InvalidInput, "point " + std::to_string(index) + ": " + axis + " = " +
+                                                      quotedInput(trim(text)) +
                                                       " is not a finite number (write integers, decimals or fractions p/q)");
     return *q;
 }
@@ -147,8 +148,7 @@ Expected<std::vector<RPoint>> parsePointJson(std::string_view text)
         const std::size_t index = points.size();
         const Json::Array* xy = item.asArray();
         if (!xy || xy->size() != 2)
-            return bad("point " + std::to_string(index) + " is " + quotedInput(item.dump()) +
-                       ", not a pair [x,y]");
+            return bad("point " + std::to_string(index) + " is " + quotedInput(item.dump()) + ", not a pair [x,y]");
         auto x = jsonCoordinate((*xy)[0], index, "x");
         if (!x)
             return x.error();

@@ -14,16 +14,16 @@ namespace granota {
 
 /// One worked example. Fields a kind does not use stay empty (degree −1).
 struct WorkedExample {
-    std::string id;                ///< "2.1" … "2.13"
-    std::string tab;               ///< tab key: decasteljau, bernstein, fit, catmull-rom
-    std::string kind;              ///< bezier, bernstein, fit, cubic-spline, catmull-rom-segment, blending, catmull-rom
-    std::vector<RPoint> points;    ///< control points, data points or interpolated points, exact
-    int degree = -1;               ///< Bernstein degree (Ex 2.4) or fitted degree (Ex 2.7–2.10)
-    std::string parametrization;   ///< "uniform" or "chord" (Ex 2.7–2.10)
-    std::vector<Rational> taus;    ///< tensions τ (Ex 2.11, 2.12; Ex 2.13 has one)
-    std::vector<std::string> modes;///< Catmull-Rom modes (Ex 2.13: cyclic, open)
-    std::string note;              ///< the thesis's slip, where it has one
-    Json data;                     ///< the whole entry, including what the thesis prints
+    std::string id;                 ///< "2.1" … "2.13"
+    std::string tab;                ///< tab key: decasteljau, bernstein, fit, catmull-rom
+    std::string kind;               ///< bezier, bernstein, fit, cubic-spline, catmull-rom-segment, blending, catmull-rom
+    std::vector<RPoint> points;     ///< control points, data points or interpolated points, exact
+    int degree = -1;                ///< Bernstein degree (Ex 2.4) or fitted degree (Ex 2.7–2.10)
+    std::string parametrization;    ///< "uniform" or "chord" (Ex 2.7–2.10)
+    std::vector<Rational> taus;     ///< tensions τ (Ex 2.11, 2.12; Ex 2.13 has one)
+    std::vector<std::string> modes; ///< Catmull-Rom modes (Ex 2.13: cyclic, open)
+    std::string note;               ///< the thesis's slip, where it has one
+    Json data;                      ///< the whole entry, including what the thesis prints
 };
 
 /// The text of resources/examples/chapter2.json.

@@ -146,8 +146,8 @@ Expected<WorkPrecisionReport> arcLength(const WorkPrecisionOptions& options)
                                double(curves.size());
         return WorkPrecisionSample{knob, std::max(e, kErrorFloor), seconds};
     };
-    WorkPrecisionSeries adaptive{"adaptive Gauss–Legendre", {}}, g24{"Gauss–Legendre 24 points", {}},
-        simpson{"Simpson", {}}, polyline{"polyline", {}};
+    WorkPrecisionSeries adaptive{"adaptive Gauss–Legendre", {}}, g24{"Gauss–Legendre 24 points", {}}, simpson{"Simpson", {}},
+        polyline{"polyline", {}};
     const int maxLevel = options.quick ? 12 : 20;
     const double total = 14 + 7 + 2.0 * maxLevel;
     double done = 0;

@@ -10,8 +10,7 @@ namespace granota::reports {
 Expected<WorkPrecisionReport> curveSampling(const WorkPrecisionOptions& options)
 {
     const WorkPrecisionReport r = samplingReport(
-        "curve-sampling", "Curve sampling: polyline against curve",
-        "the curve evaluated in long double between the samples",
+        "curve-sampling", "Curve sampling: polyline against curve", "the curve evaluated in long double between the samples",
         "Against the number of points, both errors fall like 1/N^2 (twice the points, a quarter of the "
         "error), and adaptive subdivision, which puts its points where the curve bends, needs fewer for "
         "the same error. Its run time per point is higher: each point costs a flatness test.");
@@ -21,16 +20,15 @@ Expected<WorkPrecisionReport> curveSampling(const WorkPrecisionOptions& options)
     return withSamplingSeries(
         r, options, "uniform", options.quick ? 8 : 12,
         [&](int samples, const std::vector<double>& t) {
-            const double seconds = secondsPerCall(
-                [&] { return sampleBezier(control, samples).back().x; }, options.minSecondsPerPoint, &sink);
+            const double seconds = secondsPerCall([&] { return sampleBezier(control, samples).back().x; },
+                                                  options.minSecondsPerPoint, &sink);
             return WorkPrecisionSample{double(samples), polylineDeviation(control, t), seconds};
         },
         options.quick ? 5 : 8,
         [&](double tolerance) {
             const AdaptiveSample s = sampleBezierAdaptive(control, tolerance);
-            const double seconds = secondsPerCall(
-                [&] { return sampleBezierAdaptive(control, tolerance).points.back().x; }, options.minSecondsPerPoint,
-                &sink);
+            const double seconds = secondsPerCall([&] { return sampleBezierAdaptive(control, tolerance).points.back().x; },
+                                                  options.minSecondsPerPoint, &sink);
             return WorkPrecisionSample{double(s.t.size()), polylineDeviation(control, s.t), seconds};
         });
 }

@@ -36,8 +36,7 @@ Expected<WorkPrecisionReport> integrators(const WorkPrecisionOptions& options)
                "evaluations per step and wins when high accuracy is needed.";
     const Progress progress(options);
     const int finest = options.quick ? 10 : 14; // h = 2^-finest
-    const Integrator methods[] = {Integrator::ExplicitEuler, Integrator::SemiImplicitEuler, Integrator::Verlet,
-                                  Integrator::Rk4};
+    const Integrator methods[] = {Integrator::ExplicitEuler, Integrator::SemiImplicitEuler, Integrator::Verlet, Integrator::Rk4};
     const char* names[] = {"explicit Euler", "semi-implicit Euler", "Verlet", "RK4"};
     double sink = 0;
     const double total = 4.0 * finest;
@@ -47,8 +46,8 @@ Expected<WorkPrecisionReport> integrators(const WorkPrecisionOptions& options)
         for (int k = 1; k <= finest; ++k) {
             const double h = std::ldexp(1.0, -k);
             const double error = distanceAtEnd(methods[m], h);
-            const double seconds =
-                secondsPerCall([&] { return distanceAtEnd(methods[m], h); }, options.minSecondsPerPoint, &sink);
+            const double seconds = secondsPerCall([&] { return distanceAtEnd(methods[m], h); }, options.minSecondsPerPoint,
+                                                  &sink);
             series.samples.push_back({h, std::max(error, 1e-18), seconds});
             if (!progress.tick(++done, total))
                 return cancelled();

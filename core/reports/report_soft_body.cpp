@@ -16,8 +16,8 @@
 namespace granota::reports {
 
 namespace {
-constexpr int kSteps = 240;      ///< 4 s at 60 steps/s: a fall, an impact on the floor, rest
-constexpr double kRadius = 120;  ///< the frog's body (frog.json)
+constexpr int kSteps = 240;     ///< 4 s at 60 steps/s: a fall, an impact on the floor, rest
+constexpr double kRadius = 120; ///< the frog's body (frog.json)
 constexpr int kSides = 10;
 
 struct Run {
@@ -70,8 +70,8 @@ Expected<WorkPrecisionReport> softBody(const WorkPrecisionOptions& options)
         auto run = runXpbd(substeps);
         if (!run)
             return run.error();
-        const double seconds =
-            secondsPerCall([&] { return runXpbd(substeps)->areaError; }, options.minSecondsPerPoint, &sink) / kSteps;
+        const double seconds = secondsPerCall([&] { return runXpbd(substeps)->areaError; }, options.minSecondsPerPoint, &sink) /
+                               kSteps;
         area.samples.push_back({double(substeps), std::max(run->areaError, 1e-18), seconds});
         edges.samples.push_back({double(substeps), std::max(run->edgeError, 1e-18), seconds});
         if (!progress.tick(level + 1, maxLevel + 2))
@@ -96,8 +96,7 @@ Expected<WorkPrecisionReport> softBody(const WorkPrecisionOptions& options)
     auto seedError = runSeed();
     if (!seedError)
         return seedError.error();
-    const double seedSeconds =
-        secondsPerCall([&] { return runSeed().value(); }, options.minSecondsPerPoint, &sink) / kSteps;
+    const double seedSeconds = secondsPerCall([&] { return runSeed().value(); }, options.minSecondsPerPoint, &sink) / kSteps;
     r.series = {std::move(area), std::move(edges), {"seed area (Annex II)", {{1.0, *seedError, seedSeconds}}}};
     progress.tick(1, 1);
     return r;

@@ -20,7 +20,8 @@ const char* toString(WorkPrecisionAxis axis) { return axis == WorkPrecisionAxis:
 
 std::vector<std::string> workPrecisionReportNames()
 {
-    return {"curve-sampling", "catmull-rom-sampling", "bezier-evaluation", "least-squares", "integrators", "soft-body", "arc-length"};
+    return {"curve-sampling", "catmull-rom-sampling", "bezier-evaluation", "least-squares", "integrators", "soft-body",
+            "arc-length"};
 }
 
 Expected<WorkPrecisionReport> runWorkPrecisionReport(std::string_view name, const WorkPrecisionOptions& options)
@@ -57,10 +58,7 @@ std::string csvField(const std::string& s)
     return out + "\"";
 }
 
-std::string full(double v)
-{
-    return formatSignificant(v, 9);
-}
+std::string full(double v) { return formatSignificant(v, 9); }
 } // namespace
 
 std::string workPrecisionCsv(const WorkPrecisionReport& report, const std::vector<std::string>& context)

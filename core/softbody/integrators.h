@@ -81,8 +81,10 @@ template <class Accel> void integrate(Integrator method, ParticleState& s, doubl
         const Point k3x = v3, k3v = a(x3, v3);
         const Point x4(x.x + h * k3x.x, x.y + h * k3x.y), v4(v.x + h * k3v.x, v.y + h * k3v.y);
         const Point k4x = v4, k4v = a(x4, v4);
-        s.position = Point(x.x + h / 6 * (k1x.x + 2 * k2x.x + 2 * k3x.x + k4x.x), x.y + h / 6 * (k1x.y + 2 * k2x.y + 2 * k3x.y + k4x.y));
-        s.velocity = Point(v.x + h / 6 * (k1v.x + 2 * k2v.x + 2 * k3v.x + k4v.x), v.y + h / 6 * (k1v.y + 2 * k2v.y + 2 * k3v.y + k4v.y));
+        s.position = Point(x.x + h / 6 * (k1x.x + 2 * k2x.x + 2 * k3x.x + k4x.x),
+                           x.y + h / 6 * (k1x.y + 2 * k2x.y + 2 * k3x.y + k4x.y));
+        s.velocity = Point(v.x + h / 6 * (k1v.x + 2 * k2v.x + 2 * k3v.x + k4v.x),
+                           v.y + h / 6 * (k1v.y + 2 * k2v.y + 2 * k3v.y + k4v.y));
         s.previous = x;
         break;
     }

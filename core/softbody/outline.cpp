@@ -33,7 +33,8 @@ std::vector<Point> curveVertexShape(const std::vector<Point>& controls, int samp
         return controls.size() >= 2 ? std::vector<Point>(controls.begin() + 1, controls.end() - 1) : out;
     const double tau = curveTightnessToTau(0.0); // Processing's default curveTightness(0): τ = 1/2
     for (std::size_t i = 1; i + 2 < controls.size(); ++i)
-        appendSegment(out, catmullRomSegment(controls[i - 1], controls[i], controls[i + 1], controls[i + 2], tau), samplesPerSegment);
+        appendSegment(out, catmullRomSegment(controls[i - 1], controls[i], controls[i + 1], controls[i + 2], tau),
+                      samplesPerSegment);
     return out;
 }
 

@@ -57,8 +57,8 @@ public:
 
 private:
     int m_n;
-    Eigen::MatrixXd m_M;    // (N+1) × (n+1)
-    Eigen::MatrixXd m_pinv; // (n+1) × (N+1)
+    Eigen::MatrixXd m_M;           // (N+1) × (n+1)
+    Eigen::MatrixXd m_pinv;        // (n+1) × (N+1)
     Eigen::MatrixXd m_Q, m_P, m_R; // (N+1)×2, (n+1)×2, residual (N+1)×2
     double m_sse = 0;
 };

@@ -27,8 +27,7 @@ bool finiteCoefficients(const std::array<Point, 4>& c)
 /// Horner in each coordinate as Polynomial::operator() does; the first sample is skipped
 /// when `out` already ends at the join (as outline.cpp's appendSegment). Returns false when
 /// a coefficient overflows.
-bool appendSegment(std::vector<Point>& out, Point p0, Point p1, Point p2, Point p3, double tau, int samples,
-                   bool checkFinite)
+bool appendSegment(std::vector<Point>& out, Point p0, Point p1, Point p2, Point p3, double tau, int samples, bool checkFinite)
 {
     const std::array<Point, 4> c = catmullRomCoefficients(p0, p1, p2, p3, tau);
     if (checkFinite && !finiteCoefficients(c))
@@ -58,8 +57,7 @@ void sampleSeedBodyOutline(const std::vector<Point>& v, int samplesPerSegment, s
     const std::size_t n = v.size(), count = n + 3;
     const auto control = [&](std::size_t k) -> const Point& { return k >= 1 && k <= n ? v[k - 1] : v[0]; };
     for (std::size_t i = 1; i + 2 < count; ++i)
-        appendSegment(out, control(i - 1), control(i), control(i + 1), control(i + 2), kProcessingTau, samplesPerSegment,
-                      false);
+        appendSegment(out, control(i - 1), control(i), control(i + 1), control(i + 2), kProcessingTau, samplesPerSegment, false);
 }
 
 void sampleClosedCatmullRomOutline(const std::vector<Point>& v, int samplesPerSegment, double tau, std::vector<Point>& out)

@@ -22,8 +22,7 @@ void sampleClosedCatmullRomOutline(const std::vector<Point>& vertices, int sampl
                                    std::vector<Point>& out);
 
 /// legOutline(shoulder, elbow, wrist, factor, samplesPerSegment): Annex II `Pota.dibuixar`.
-void sampleLegOutline(Point shoulder, Point elbow, Point wrist, double factor, int samplesPerSegment,
-                      std::vector<Point>& out);
+void sampleLegOutline(Point shoulder, Point elbow, Point wrist, double factor, int samplesPerSegment, std::vector<Point>& out);
 
 /// sampleBezier(control, samples): c(j/(samples − 1)), j = 0 … samples − 1 (samples ≥ 2),
 /// by De Casteljau in `work` (scratch, resized once). An empty control polygon gives nothing.

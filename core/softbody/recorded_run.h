@@ -25,7 +25,7 @@ namespace granota {
 enum class InputKind { Press, Move, Release, Spawn, ReleaseSpawn, Substeps, EdgeCompliance, EdgeDampingRatio };
 
 struct InputEvent {
-    long step = 0;    ///< applied once the run has made this many steps, before the next
+    long step = 0; ///< applied once the run has made this many steps, before the next
     InputKind kind = InputKind::Move;
     Point at;         ///< scene px (Press, Move, Spawn)
     double value = 0; ///< the knob's new value (Substeps, EdgeCompliance, EdgeDampingRatio)
@@ -167,11 +167,11 @@ private:
 
     std::unique_ptr<Simulation> m_sim;
     Recording m_recording;
-    std::size_t m_nextEvent = 0; // the first recorded event not yet applied
+    std::size_t m_nextEvent = 0;       // the first recorded event not yet applied
     std::vector<Snapshot> m_snapshots; // in step order; the first at step 0
-    int m_every = 100;       // as asked, doubled by thinning
-    int m_costEvery = 0;     // the floor limitSnapshotCost measures (0: none)
-    double m_costShare = 0;  // limitSnapshotCost's share, 0 when off
+    int m_every = 100;                 // as asked, doubled by thinning
+    int m_costEvery = 0;               // the floor limitSnapshotCost measures (0: none)
+    double m_costShare = 0;            // limitSnapshotCost's share, 0 when off
     std::function<double()> m_nowNs;
     double m_stepNs = 0;     // a step's time, a running mean of the timed ones
     double m_snapshotNs = 0; // the last snapshot's time

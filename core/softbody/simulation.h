@@ -26,11 +26,11 @@ std::string solverName(SolverKind s);
 
 /// Teaching readouts (docs/scenes.md overlays, issue: "readouts from both solvers").
 struct Readouts {
-    double areaErrorPercent = 0;  ///< mean over bodies of 100·(A − A₀)/A₀ (0 when A₀ = 0)
-    double maxStretch = 0;        ///< largest |edge length / rest length − 1|
-    double constraintForce = 0;   ///< largest constraint force (stable: |λ|/h²; seed: largest correction, px/step²)
-    double kineticEnergy = 0;     ///< Σ ½ m |v|², px²/step² (the seed: unit masses)
-    double potentialEnergy = 0;   ///< Σ m g·(height above the frame edge gravity points to), px²/step²
+    double areaErrorPercent = 0; ///< mean over bodies of 100·(A − A₀)/A₀ (0 when A₀ = 0)
+    double maxStretch = 0;       ///< largest |edge length / rest length − 1|
+    double constraintForce = 0;  ///< largest constraint force (stable: |λ|/h²; seed: largest correction, px/step²)
+    double kineticEnergy = 0;    ///< Σ ½ m |v|², px²/step² (the seed: unit masses)
+    double potentialEnergy = 0;  ///< Σ m g·(height above the frame edge gravity points to), px²/step²
     /// Σ ½ α F² over the compliant constraints (springs, area, bending; F = λ/h²), stable
     /// solver only: the seed's springs and area are position corrections, not forces, so
     /// they store no energy one could name (nullopt).

@@ -8,10 +8,7 @@
 
 namespace granota {
 
-SeriesRecorder::SeriesRecorder(std::size_t capacity, std::size_t bodyValues)
-    : m_capacity(capacity), m_bodyValues(bodyValues)
-{
-}
+SeriesRecorder::SeriesRecorder(std::size_t capacity, std::size_t bodyValues) : m_capacity(capacity), m_bodyValues(bodyValues) {}
 
 namespace {
 
@@ -157,8 +154,7 @@ std::string seriesCsvRow(const SeriesSample& s, int phaseLinks, int body)
     std::string row = std::to_string(s.step) + "," + formatDouble(double(s.step) / kStepsPerSecond) + "," +
                       formatDouble(v.kinetic) + "," + formatDouble(v.gravity) + "," + opt(v.elastic) + "," +
                       formatDouble(v.total) + "," + opt(v.dampingLoss) + "," + opt(v.otherLoss) + "," +
-                      formatDouble(v.areaErrorPercent) + "," + formatDouble(v.maxStretch) + "," +
-                      std::to_string(v.contacts);
+                      formatDouble(v.areaErrorPercent) + "," + formatDouble(v.maxStretch) + "," + std::to_string(v.contacts);
     for (int k = 0; k < phaseLinks; ++k) {
         const std::size_t i = static_cast<std::size_t>(k);
         row += "," + (i < s.angles.size() ? formatDouble(s.angles[i]) : std::string()) + "," +

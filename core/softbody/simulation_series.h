@@ -21,9 +21,9 @@ namespace granota {
 /// Energies in mass·px²/step² (the seed: unit masses).
 struct SeriesValues {
     double kinetic = 0;
-    double gravity = 0;             ///< Readouts::potentialEnergy
-    std::optional<double> elastic;  ///< stable solver only (Readouts::elasticEnergy)
-    double total = 0;               ///< kinetic + gravity + elastic (where known)
+    double gravity = 0;            ///< Readouts::potentialEnergy
+    std::optional<double> elastic; ///< stable solver only (Readouts::elasticEnergy)
+    double total = 0;              ///< kinetic + gravity + elastic (where known)
     /// What damping took since the series began (stable solver only).
     std::optional<double> dampingLoss;
     /// The rest of the drop since the series began, total₀ − total − dampingLoss: what the
@@ -111,8 +111,8 @@ private:
     long m_bodiesFrom = 0;
     std::vector<double> m_firstBodyTotal;
     std::vector<std::optional<double>> m_firstBodyDamping;
-    std::vector<Readouts> m_bodyReadouts;  // scratch
-    std::vector<SeriesValues> m_spare;     // the buffer of the sample whose bodies were let go
+    std::vector<Readouts> m_bodyReadouts; // scratch
+    std::vector<SeriesValues> m_spare;    // the buffer of the sample whose bodies were let go
     std::deque<SeriesSample> m_samples;
     int m_phaseLinks = 0;
     bool m_started = false;

@@ -89,9 +89,8 @@ void BM_FitBezier(benchmark::State& state)
     for (auto _ : state)
         benchmark::DoNotOptimize(fitBezier(data, options));
     state.SetComplexityN(state.range(0));
-    state.counters["ns_per_point"] = benchmark::Counter(static_cast<double>(state.range(0)),
-                                                        benchmark::Counter::kIsIterationInvariantRate |
-                                                            benchmark::Counter::kInvert);
+    state.counters["ns_per_point"] = benchmark::Counter(
+        static_cast<double>(state.range(0)), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 /// §4.9/4.10: the per-frame least-squares Bézier fit of the frog's outline that the thesis
@@ -198,7 +197,5 @@ BENCHMARK(BM_BernsteinPoint)->DenseRange(3, 30, 9)->Arg(60)->Complexity(benchmar
 BENCHMARK(BM_HornerPoint)->DenseRange(3, 30, 9)->Arg(60)->Complexity(benchmark::oN);
 BENCHMARK(BM_SampleBezier)->Arg(100)->Arg(400)->Arg(1600)->Unit(benchmark::kMicrosecond)->Complexity(benchmark::oN);
 BENCHMARK(BM_CatmullRomSample)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond)->Complexity(benchmark::oN);
-BENCHMARK(BM_FitBezier)
-    ->ArgsProduct({{100, 1000, 10000, 100000, 1000000}, {3, 10, 30}})
-    ->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FitBezier)->ArgsProduct({{100, 1000, 10000, 100000, 1000000}, {3, 10, 30}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OutlineFit)->Arg(3)->Arg(5)->Unit(benchmark::kNanosecond);

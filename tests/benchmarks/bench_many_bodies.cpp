@@ -73,10 +73,7 @@ void BM_ManyBodiesSpread(benchmark::State& state)
     run(state, spreadScene(static_cast<int>(state.range(0))), kSpreadSettleSteps);
 }
 
-void BM_ManyBodiesPile(benchmark::State& state)
-{
-    run(state, pileScene(static_cast<int>(state.range(0))), kPileSettleSteps);
-}
+void BM_ManyBodiesPile(benchmark::State& state) { run(state, pileScene(static_cast<int>(state.range(0))), kPileSettleSteps); }
 
 } // namespace
 

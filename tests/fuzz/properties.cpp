@@ -158,18 +158,19 @@ std::string pointListProperty(std::string_view input)
         }
         if (points->empty())
             return std::string(name) + " accepted an empty list";
-        const std::pair<std::string, Reader> forms[] = {
-            {inlineForm(*points), parsePointList}, {csvForm(*points), parsePointCsv},
-            {jsonForm(*points), parsePointJson},   {csvForm(*points), parsePointFile},
-            {jsonForm(*points), parsePointFile}};
+        const std::pair<std::string, Reader> forms[] = {{inlineForm(*points), parsePointList},
+                                                        {csvForm(*points), parsePointCsv},
+                                                        {jsonForm(*points), parsePointJson},
+                                                        {csvForm(*points), parsePointFile},
+                                                        {jsonForm(*points), parsePointFile}};
         for (const auto& [written, reread] : forms) {
             auto again = reread(written);
             if (!again)
                 return std::string(name) + " read " + text(*points) + "; written as " + shown(written) +
                        " it is refused: " + again.error().message;
             if (*again != *points)
-                return std::string(name) + " read " + text(*points) + "; written as " + shown(written) +
-                       " it reads back as " + text(*again);
+                return std::string(name) + " read " + text(*points) + "; written as " + shown(written) + " it reads back as " +
+                       text(*again);
         }
         // As doubles (what the tabs keep): every finite one survives the shortest text.
         const std::vector<Point> doubles = toDouble(*points);
@@ -251,8 +252,8 @@ std::string nonFinite(const SceneSpec& s)
 {
     std::vector<std::pair<std::string, double>> numbers;
     const FrogParams& p = s.params;
-    for (const auto& [name, point] : {std::pair{"gravity", p.gravity}, std::pair{"friction", p.friction},
-                                      std::pair{"v0", p.v0}, std::pair{"center", p.center}}) {
+    for (const auto& [name, point] : {std::pair{"gravity", p.gravity}, std::pair{"friction", p.friction}, std::pair{"v0", p.v0},
+                                      std::pair{"center", p.center}}) {
         numbers.emplace_back(std::string(name) + ".x", point.x);
         numbers.emplace_back(std::string(name) + ".y", point.y);
     }
@@ -363,11 +364,26 @@ std::string sceneProperty(std::string_view input)
 
 } // namespace
 
-std::string checkJson(std::string_view input) { return guarded([&] { return jsonProperty(input); }); }
-std::string checkPointList(std::string_view input) { return guarded([&] { return pointListProperty(input); }); }
-std::string checkRational(std::string_view input) { return guarded([&] { return rationalProperty(input); }); }
-std::string checkPolynomial(std::string_view input) { return guarded([&] { return polynomialProperty(input); }); }
-std::string checkScene(std::string_view input) { return guarded([&] { return sceneProperty(input); }); }
+std::string checkJson(std::string_view input)
+{
+    return guarded([&] { return jsonProperty(input); });
+}
+std::string checkPointList(std::string_view input)
+{
+    return guarded([&] { return pointListProperty(input); });
+}
+std::string checkRational(std::string_view input)
+{
+    return guarded([&] { return rationalProperty(input); });
+}
+std::string checkPolynomial(std::string_view input)
+{
+    return guarded([&] { return polynomialProperty(input); });
+}
+std::string checkScene(std::string_view input)
+{
+    return guarded([&] { return sceneProperty(input); });
+}
 
 std::string checkCore(std::string_view target, std::string_view input)
 {

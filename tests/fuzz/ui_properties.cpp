@@ -144,8 +144,7 @@ std::string documentProperty(std::string_view input)
     Tabs fresh;
     QString freshError, freshCurrent;
     if (!loadDocument(saved, fresh.pages, &freshError, &freshCurrent))
-        return "fresh tabs refuse the document saved after loading it (“" + freshError.toStdString() + "”): " +
-               shown(saved);
+        return "fresh tabs refuse the document saved after loading it (“" + freshError.toStdString() + "”): " + shown(saved);
     if (freshCurrent != current)
         return "the current tab “" + current.toStdString() + "” reads back as “" + freshCurrent.toStdString() + "”";
     if (const QByteArray again = serializeDocument(fresh.pages, freshCurrent); again != saved)
@@ -223,8 +222,14 @@ void initUi()
     ui::setLanguage(QStringLiteral("en"), false);
 }
 
-std::string checkDocument(std::string_view input) { return guarded([&] { return documentProperty(input); }); }
-std::string checkFitImport(std::string_view input) { return guarded([&] { return fitImportProperty(input); }); }
+std::string checkDocument(std::string_view input)
+{
+    return guarded([&] { return documentProperty(input); });
+}
+std::string checkFitImport(std::string_view input)
+{
+    return guarded([&] { return fitImportProperty(input); });
+}
 
 std::string checkUi(std::string_view target, std::string_view input)
 {

@@ -36,12 +36,12 @@ namespace granota::ui {
 
 namespace {
 
-constexpr double kCheckTolerance = 1e-12;   ///< a residual below this shows ✓
-constexpr int kMaxLegendEntries = 12;       ///< more graphs than this: no legend (colours repeat anyway)
-constexpr int kMaxReadoutLines = 12;        ///< values listed in the hover readout
-constexpr int kMaxBarLabels = 20;           ///< more bars than this: label every k-th
-constexpr int kCsvSamples = 101;            ///< rows of the CSV export: t = 0, 0.01, …, 1
-constexpr double kBasisWidth = 2.0;         ///< line width of the graphs B_i^n(t)
+constexpr double kCheckTolerance = 1e-12; ///< a residual below this shows ✓
+constexpr int kMaxLegendEntries = 12;     ///< more graphs than this: no legend (colours repeat anyway)
+constexpr int kMaxReadoutLines = 12;      ///< values listed in the hover readout
+constexpr int kMaxBarLabels = 20;         ///< more bars than this: label every k-th
+constexpr int kCsvSamples = 101;          ///< rows of the CSV export: t = 0, 0.01, …, 1
+constexpr double kBasisWidth = 2.0;       ///< line width of the graphs B_i^n(t)
 /// Their width in presentation mode: a line width of its own, thicker than kBasisWidth ×
 /// kPresentationScale (3.2), so that the graphs stand out from the axes from the back of the room.
 constexpr double kPresentationBasisWidth = 3.6;
@@ -59,17 +59,16 @@ QString basisHtml(const QString& i, const QString& n, const QString& arg = QStri
 QString residualText(double r) { return r == 0.0 ? QStringLiteral("0") : displayText(QString::number(r, 'e', 1).toStdString()); }
 
 
-
 } // namespace
 
 BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
-    : TabPage(QStringLiteral("bernstein"), QT_TR_NOOP("Bernstein"), deCasteljau->undoStack(), parent),
-      m_deCasteljau(deCasteljau), m_basisPlot(new QCustomPlot(this)),
-      m_weightsPlot(new QCustomPlot(this)), m_drawable(std::make_unique<PlotDrawable>(m_basisPlot)),
-      m_exact(new ExactPanel(this)), m_parameter(new DeCasteljauParameterControl(this)), m_degreeLabel(new QLabel(this)),
-      m_degreeBox(new QSpinBox(this)), m_allBox(new QCheckBox(this)), m_checksGroup(new QGroupBox(this)),
-      m_checkLabels{new QLabel(this), new QLabel(this), new QLabel(this)}, m_weightsGroup(new QGroupBox(this)),
-      m_curveLabel(new QLabel(this))
+    : TabPage(QStringLiteral("bernstein"), QT_TR_NOOP("Bernstein"), deCasteljau->undoStack(), parent), m_deCasteljau(deCasteljau),
+      m_basisPlot(new QCustomPlot(this)), m_weightsPlot(new QCustomPlot(this)),
+      m_drawable(std::make_unique<PlotDrawable>(m_basisPlot)), m_exact(new ExactPanel(this)),
+      m_parameter(new DeCasteljauParameterControl(this)), m_degreeLabel(new QLabel(this)), m_degreeBox(new QSpinBox(this)),
+      m_allBox(new QCheckBox(this)),
+      m_checksGroup(new QGroupBox(this)), m_checkLabels{new QLabel(this), new QLabel(this), new QLabel(this)},
+      m_weightsGroup(new QGroupBox(this)), m_curveLabel(new QLabel(this))
 {
     setExportView(m_drawable.get());
     m_exact->setWordWrapMode(QTextOption::WordWrap); // break between terms, never inside "t^5"
@@ -174,8 +173,7 @@ BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
     connect(m_degreeBox, &QSpinBox::valueChanged, this, [this](int n) {
         userChangedView({n, m_allDegrees}, tr("Degree n = %1").arg(n), kDegreeMergeId);
     });
-    connect(m_allBox, &QCheckBox::toggled, this,
-            [this](bool on) { userChangedView({m_degree, on}, tr("All degrees up to n")); });
+    connect(m_allBox, &QCheckBox::toggled, this, [this](bool on) { userChangedView({m_degree, on}, tr("All degrees up to n")); });
     // One t for both tabs: this tab's slider moves the De Casteljau tab's t, and back.
     connect(m_parameter, &DeCasteljauParameterControl::valueChanged, this,
             [this](double t) { userMovedT(t, m_parameter->gestureMergeId()); });
@@ -242,8 +240,8 @@ void BernsteinTab::userChangedView(const View& after, const QString& undoText, i
     applyView(after);
     if (view() == before)
         return;
-    m_undo->push(new ValueCommand<View>([this](const View& v) { applyView(v); }, before, view(), undoText, mergeId,
-                                        {true, true}));
+    m_undo->push(
+        new ValueCommand<View>([this](const View& v) { applyView(v); }, before, view(), undoText, mergeId, {true, true}));
 }
 
 void BernsteinTab::setDegree(int n)
@@ -358,14 +356,13 @@ void BernsteinTab::updateWeights()
     double sum = 0.0;
     for (double v : w)
         sum += v;
-    m_curveLabel->setText(
-        tr("At t = %1 the weights sum to %2.<br>Def 2.6: %3 = %4<br>De Casteljau: %5 = %6 (difference %7)")
-            .arg(panelNumber(tt), displaySignificant(sum, 17),
-                 QStringLiteral("Σ %1 P<sub>i</sub>").arg(basisHtml(QStringLiteral("i"), QString::number(n))),
-                 panelPointText(viaBernstein),
-                 QStringLiteral("P<sub>0</sub><sup>%1</sup>(t)").arg(n), panelPointText(viaDeCasteljau),
-                 residualText(distance(viaBernstein, viaDeCasteljau))));
-    m_weightsGroup->setTitle(tr("Weights of the %n control points of the De Casteljau tab at t (Def 2.6)", nullptr, n + 1));}
+    m_curveLabel->setText(tr("At t = %1 the weights sum to %2.<br>Def 2.6: %3 = %4<br>De Casteljau: %5 = %6 (difference %7)")
+                              .arg(panelNumber(tt), displaySignificant(sum, 17),
+                                   QStringLiteral("Σ %1 P<sub>i</sub>").arg(basisHtml(QStringLiteral("i"), QString::number(n))),
+                                   panelPointText(viaBernstein), QStringLiteral("P<sub>0</sub><sup>%1</sup>(t)").arg(n),
+                                   panelPointText(viaDeCasteljau), residualText(distance(viaBernstein, viaDeCasteljau))));
+    m_weightsGroup->setTitle(tr("Weights of the %n control points of the De Casteljau tab at t (Def 2.6)", nullptr, n + 1));
+}
 
 void BernsteinTab::plotMouseMove(QMouseEvent* event)
 {
@@ -443,12 +440,12 @@ void BernsteinTab::updateChecks()
                                                                  basisHtml(QStringLiteral("n−i"), n, QStringLiteral("1 − t"))),
                                    m_checks.symmetry));
     if (m_checks.recursion.applies)
-        m_checkLabels[2]->setText(line(tr("Recursion (Lemma 2.1):"),
-                                       QStringLiteral("%1 = (1 − t) %2 + t %3")
-                                           .arg(basisHtml(QStringLiteral("i"), n),
-                                                basisHtml(QStringLiteral("i"), QString::number(m_degree - 1)),
-                                                basisHtml(QStringLiteral("i−1"), QString::number(m_degree - 1))),
-                                       m_checks.recursion));
+        m_checkLabels[2]->setText(
+            line(tr("Recursion (Lemma 2.1):"),
+                 QStringLiteral("%1 = (1 − t) %2 + t %3")
+                     .arg(basisHtml(QStringLiteral("i"), n), basisHtml(QStringLiteral("i"), QString::number(m_degree - 1)),
+                          basisHtml(QStringLiteral("i−1"), QString::number(m_degree - 1))),
+                 m_checks.recursion));
     else
         m_checkLabels[2]->setText(tr("Recursion (Lemma 2.1): needs n ≥ 1."));
 }
@@ -481,7 +478,8 @@ void BernsteinTab::updateExactPanel()
     if (!exact) {
         html += ExactPanel::note(tr("The control points are not small fractions, so the curve is not expanded exactly."));
     } else if (n > kMaxExactCurve) {
-        html += ExactPanel::note(tr("The expansion is shown up to degree %1; the curve has degree %2.").arg(kMaxExactCurve).arg(n));
+        html += ExactPanel::note(
+            tr("The expansion is shown up to degree %1; the curve has degree %2.").arg(kMaxExactCurve).arg(n));
     } else {
         const QString nText = QString::number(n);
         html += QStringLiteral("<p>α(t) = Σ<sub>k=0</sub><sup>%1</sup> %2 P<sub>k</sub></p><p>")
@@ -584,8 +582,7 @@ bool BernsteinTab::loadExample(const granota::WorkedExample& example)
         emit statusMessage(tr("Ex %1: the Bernstein polynomials of every degree up to %2.").arg(id).arg(example.degree));
         return true;
     }
-    if (example.kind == "bezier" && !example.points.empty()
-        && static_cast<int>(example.points.size()) <= kMaxDegree + 1) {
+    if (example.kind == "bezier" && !example.points.empty() && static_cast<int>(example.points.size()) <= kMaxDegree + 1) {
         // Ex 2.5, Ex 2.6: the curves of Ex 2.2 and Ex 2.3 through Def 2.6.
         // The points and t are the De Casteljau tab's (one history for both tabs): the status
         // bar says so, as for every example that changes another tab than the one shown.
@@ -644,9 +641,6 @@ void BernsteinTab::setPresentation(bool on)
     updateExactPanel();
 }
 
-QString BernsteinTab::hint() const
-{
-    return tr("Move the mouse over the plot to read B_i^n(t); click or drag to move t.");
-}
+QString BernsteinTab::hint() const { return tr("Move the mouse over the plot to read B_i^n(t); click or drag to move t."); }
 
 } // namespace granota::ui

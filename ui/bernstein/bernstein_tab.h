@@ -79,9 +79,9 @@ public:
     /// The x position (t) of the vertical line marking the current t.
     double markerT() const;
 
-    static constexpr int kMaxDegree = 30;        ///< the spin box's range: 0…30
-    static constexpr int kMaxExactCurve = 8;     ///< the curve in powers of t up to this degree
-    static constexpr int kPlotSamples = 201;     ///< t samples per graph (Matlab linspace(0, 1, 200))
+    static constexpr int kMaxDegree = 30;    ///< the spin box's range: 0…30
+    static constexpr int kMaxExactCurve = 8; ///< the curve in powers of t up to this degree
+    static constexpr int kPlotSamples = 201; ///< t samples per graph (Matlab linspace(0, 1, 200))
 
 protected:
     void drawTikz(TikzWriter& w) const override;

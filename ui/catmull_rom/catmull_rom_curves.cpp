@@ -13,8 +13,7 @@ namespace {
 /// Segment mode: the open curve without its two end segments (those are the ones Def 2.10
 /// has to invent neighbours for); with 4 points, the single segment of Def 2.8.
 template <class S>
-Expected<std::vector<Vec2<Polynomial<S>>>> interiorOnly(Expected<std::vector<Vec2<Polynomial<S>>>> open,
-                                                         std::size_t count)
+Expected<std::vector<Vec2<Polynomial<S>>>> interiorOnly(Expected<std::vector<Vec2<Polynomial<S>>>> open, std::size_t count)
 {
     if (!open)
         return open;
@@ -51,8 +50,8 @@ Expected<std::vector<Vec2<Polynomial<Rational>>>> exactCurveSegments(const std::
     return segs;
 }
 
-Expected<std::vector<Vec2<Polynomial<double>>>> curveSegments(const std::vector<Point>& q, double tau,
-                                                              CatmullRomEnds ends, double alpha)
+Expected<std::vector<Vec2<Polynomial<double>>>> curveSegments(const std::vector<Point>& q, double tau, CatmullRomEnds ends,
+                                                              double alpha)
 {
     auto segs = catmullRomSegments(q, tau, coreMode(ends), alpha);
     if (ends == CatmullRomEnds::Segment)
@@ -73,7 +72,7 @@ QString translatedError(const Error& error, CatmullRomEnds ends)
     case ErrorCode::OutOfRange: return CatmullRomCurves::tr("The curve overflows: the coordinates are too large.");
     case ErrorCode::NotIncreasing:
         return CatmullRomCurves::tr("No cubic spline (Def 2.3): the points are not a function of x — their abscissae must "
-                      "increase strictly from q0 to qn.");
+                                    "increase strictly from q0 to qn.");
     default: return QString::fromStdString(error.message);
     }
 }
@@ -83,12 +82,11 @@ CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomS
     CatmullRomScene scene;
     const double alpha = spacingAlpha(settings.spacing);
     // About as many segments as points per curve, one curve per τ and per compared end mode.
-    const std::size_t segmentsProfiled =
-        std::max<std::size_t>(1, settings.taus.size() * (settings.compareEnds ? 2 : 1) * points.size());
-    const int curvatureSamples =
-        static_cast<int>(std::clamp<std::size_t>(CatmullRomScene::kCurvatureSampleBudget / segmentsProfiled,
-                                                 CatmullRomScene::kMinCurvatureSamples,
-                                                 CatmullRomScene::kSamplesPerSegment));
+    const std::size_t segmentsProfiled = std::max<std::size_t>(1, settings.taus.size() * (settings.compareEnds ? 2 : 1) *
+                                                                      points.size());
+    const int curvatureSamples = static_cast<int>(
+        std::clamp<std::size_t>(CatmullRomScene::kCurvatureSampleBudget / segmentsProfiled, CatmullRomScene::kMinCurvatureSamples,
+                                CatmullRomScene::kSamplesPerSegment));
     auto makeCurve = [&](const Rational& tau, CatmullRomEnds ends) {
         CatmullRomCurve curve;
         curve.tau = tau;
@@ -145,8 +143,8 @@ CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomS
             scene.splineIntervals = std::move(graph.intervals);
             scene.splineBezier = bezierSegments(scene.splineSegments);
             if (settings.curvaturePlot)
-                scene.splineCurvature =
-                    curvatureProfile(controlPolygons(scene.splineBezier), CatmullRomScene::kSamplesPerSegment);
+                scene.splineCurvature = curvatureProfile(controlPolygons(scene.splineBezier),
+                                                         CatmullRomScene::kSamplesPerSegment);
         }
     }
     return scene;

@@ -29,13 +29,13 @@ struct CatmullRomCurve {
     Rational tau;
     CatmullRomEnds ends = CatmullRomEnds::Open;
     std::vector<Vec2<Polynomial<double>>> segments;
-    std::vector<Point> samples;  ///< kSamplesPerSegment per segment, ends included, in order
+    std::vector<Point> samples;                ///< kSamplesPerSegment per segment, ends included, in order
     std::vector<BezierSegment<double>> bezier; ///< the segments as cubic Bézier curves
     /// h_i per segment (catmullRomIntervals): 1 for uniform spacing, |q_{i+1} − q_i|^α else,
     /// with 1 instead of 0 for a segment between coincident points (it is a point).
     std::vector<double> intervals;
-    CurvatureProfile curvature;  ///< κ(s), when the plot shows it
-    QString error;               ///< translated; empty when the curve exists
+    CurvatureProfile curvature; ///< κ(s), when the plot shows it
+    QString error;              ///< translated; empty when the curve exists
 };
 
 struct CatmullRomScene {
@@ -57,7 +57,7 @@ struct CatmullRomScene {
     std::vector<double> splineIntervals;
     std::vector<BezierSegment<double>> splineBezier;
     CurvatureProfile splineCurvature;
-    QString splineError;                    ///< translated: why there is no spline
+    QString splineError; ///< translated: why there is no spline
 };
 
 /// The control polygons of cubic Bézier segments, as curvatureProfile() takes them.
@@ -70,8 +70,8 @@ CatmullRomEnds comparedEnds(CatmullRomEnds ends);
 /// segments, Def 2.8). Exact with Rational (uniform spacing only).
 Expected<std::vector<Vec2<Polynomial<Rational>>>> exactCurveSegments(const std::vector<RPoint>& q, const Rational& tau,
                                                                      CatmullRomEnds ends);
-Expected<std::vector<Vec2<Polynomial<double>>>> curveSegments(const std::vector<Point>& q, double tau,
-                                                              CatmullRomEnds ends, double alpha);
+Expected<std::vector<Vec2<Polynomial<double>>>> curveSegments(const std::vector<Point>& q, double tau, CatmullRomEnds ends,
+                                                              double alpha);
 
 /// The index of the first point of segment 0 (1 for Segment mode: the first segment starts at q1).
 int firstSegmentStart(CatmullRomEnds ends);

@@ -77,8 +77,7 @@ template <class S> QString defectText(const ContinuityDefect<S>& d)
             .arg(QStringLiteral("s_%1").arg(d.piece + 1), x, text(detail::scalarText(d.expected)),
                  text(detail::scalarText(d.got)));
     case DefectKind::OutsideDomain:
-        return CatmullRomReport::tr("The point (%1, %2) lies outside the domain.")
-            .arg(x, text(detail::scalarText(d.expected)));
+        return CatmullRomReport::tr("The point (%1, %2) lies outside the domain.").arg(x, text(detail::scalarText(d.expected)));
     }
     return {};
 }
@@ -91,8 +90,7 @@ template <class S> QString continuitySummary(const ContinuityReport<S>& report, 
     if (order < 0)
         html += ExactPanel::checkMark(false) + QLatin1Char(' ') + CatmullRomReport::tr("not continuous").toHtmlEscaped();
     else if (order >= checkedUpTo)
-        html += ExactPanel::checkMark(true) + QLatin1Char(' ') +
-                esc(CatmullRomReport::tr("C^%1 at every knot").arg(order));
+        html += ExactPanel::checkMark(true) + QLatin1Char(' ') + esc(CatmullRomReport::tr("C^%1 at every knot").arg(order));
     else
         html += ExactPanel::checkMark(order >= 2) + QLatin1Char(' ') +
                 esc(CatmullRomReport::tr("C^%1, not C^%2").arg(order).arg(order + 1));
@@ -101,7 +99,8 @@ template <class S> QString continuitySummary(const ContinuityReport<S>& report, 
         html += ExactPanel::checkMark(true) + QLatin1Char(' ') +
                 CatmullRomReport::tr("interpolates all %n points", nullptr, report.dataPoints).toHtmlEscaped();
     else
-        html += ExactPanel::checkMark(false) + QLatin1Char(' ') + CatmullRomReport::tr("does not interpolate every point").toHtmlEscaped();
+        html += ExactPanel::checkMark(false) + QLatin1Char(' ') +
+                CatmullRomReport::tr("does not interpolate every point").toHtmlEscaped();
     html = para(html);
     QStringList lines;
     for (const auto& d : report.defects)
@@ -134,8 +133,8 @@ template <class S> QString knotTable(const PiecewisePolynomial<S>& spline, const
 
 /// Prop 2.3 for one τ: a summary line, and for the selected τ the table knot by knot.
 template <class S>
-QString tangentSection(const std::vector<Vec2<Polynomial<S>>>& segs, const Rational& tau, CatmullRomEnds ends,
-                       int pointCount, bool uniform, bool withTable)
+QString tangentSection(const std::vector<Vec2<Polynomial<S>>>& segs, const Rational& tau, CatmullRomEnds ends, int pointCount,
+                       bool uniform, bool withTable)
 {
     const bool closed = ends == CatmullRomEnds::Closed;
     const double tol = std::is_floating_point_v<S> ? kTolerance : 0.0;
@@ -147,13 +146,12 @@ QString tangentSection(const std::vector<Vec2<Polynomial<S>>>& segs, const Ratio
     if (joins.empty()) {
         line += CatmullRomReport::tr("no interior knot").toHtmlEscaped();
     } else if (allEqual) {
-        line += ExactPanel::checkMark(true) + QLatin1Char(' ') +
-                CatmullRomReport::tr("equal tangents at all %n knots (C¹)", nullptr, static_cast<int>(joins.size()))
-                    .toHtmlEscaped();
-        line += QStringLiteral("; ") +
-                (report.continuityOrder() >= 2 ? CatmullRomReport::tr("C² too (p″ matches)")
-                                               : CatmullRomReport::tr("not C²: p″ jumps"))
-                    .toHtmlEscaped();
+        line +=
+            ExactPanel::checkMark(true) + QLatin1Char(' ') +
+            CatmullRomReport::tr("equal tangents at all %n knots (C¹)", nullptr, static_cast<int>(joins.size())).toHtmlEscaped();
+        line += QStringLiteral("; ") + (report.continuityOrder() >= 2 ? CatmullRomReport::tr("C² too (p″ matches)")
+                                                                      : CatmullRomReport::tr("not C²: p″ jumps"))
+                                           .toHtmlEscaped();
     } else if (allParallel && !uniform) {
         line += ExactPanel::checkMark(true) + QLatin1Char(' ') +
                 CatmullRomReport::tr("parallel tangents at all %n knots (G¹), not equal ones (C¹) in the local "
@@ -161,7 +159,8 @@ QString tangentSection(const std::vector<Vec2<Polynomial<S>>>& segs, const Ratio
                                      nullptr, static_cast<int>(joins.size()))
                     .toHtmlEscaped();
     } else {
-        line += ExactPanel::checkMark(false) + QLatin1Char(' ') + CatmullRomReport::tr("the tangents differ at some knots").toHtmlEscaped();
+        line += ExactPanel::checkMark(false) + QLatin1Char(' ') +
+                CatmullRomReport::tr("the tangents differ at some knots").toHtmlEscaped();
     }
     QString html = para(line);
     if (!withTable || joins.empty())
@@ -175,7 +174,8 @@ QString tangentSection(const std::vector<Vec2<Polynomial<S>>>& segs, const Ratio
         QString verdict = ExactPanel::checkMark(v.equal);
         if (!v.equal && v.parallel)
             verdict += QStringLiteral(" G¹ ") + ExactPanel::checkMark(true);
-        rows.push_back({ExactPanel::subscripted(QStringLiteral("q"), knot), ExactPanel::subscripted(QStringLiteral("p"), from) + QStringLiteral("′(1) = ") + vec(v.left),
+        rows.push_back({ExactPanel::subscripted(QStringLiteral("q"), knot),
+                        ExactPanel::subscripted(QStringLiteral("p"), from) + QStringLiteral("′(1) = ") + vec(v.left),
                         ExactPanel::subscripted(QStringLiteral("p"), to) + QStringLiteral("′(0) = ") + vec(v.right), verdict});
     }
     html += ExactPanel::table({CatmullRomReport::tr("knot"), CatmullRomReport::tr("end of the segment before"),
@@ -193,19 +193,20 @@ QString shownPoint(const Vec2<double>& v)
 
 /// The control points b_0..b_3 of each segment (bezier_segments.h), `firstName` the index of
 /// the first segment's name (p_1, or s_1 for the spline's pieces).
-template <class S>
-QString bezierTable(const std::vector<BezierSegment<S>>& segments, const QString& name, int firstName)
+template <class S> QString bezierTable(const std::vector<BezierSegment<S>>& segments, const QString& name, int firstName)
 {
     std::vector<QStringList> rows;
     const int count = static_cast<int>(segments.size());
     const int shown = std::min(count, CatmullRomReport::kMaxListedSegments);
     for (int i = 0; i < shown; ++i) {
         const auto& b = segments[static_cast<std::size_t>(i)];
-        rows.push_back({ExactPanel::subscripted(name, i + firstName), shownPoint(b[0]), shownPoint(b[1]), shownPoint(b[2]), shownPoint(b[3])});
+        rows.push_back({ExactPanel::subscripted(name, i + firstName), shownPoint(b[0]), shownPoint(b[1]), shownPoint(b[2]),
+                        shownPoint(b[3])});
     }
-    QString html = ExactPanel::table({QString(), ExactPanel::subscripted(QStringLiteral("b"), 0), ExactPanel::subscripted(QStringLiteral("b"), 1),
-                                      ExactPanel::subscripted(QStringLiteral("b"), 2), ExactPanel::subscripted(QStringLiteral("b"), 3)},
-                                     rows);
+    QString html = ExactPanel::table(
+        {QString(), ExactPanel::subscripted(QStringLiteral("b"), 0), ExactPanel::subscripted(QStringLiteral("b"), 1),
+         ExactPanel::subscripted(QStringLiteral("b"), 2), ExactPanel::subscripted(QStringLiteral("b"), 3)},
+        rows);
     if (count > shown)
         html += ExactPanel::note(CatmullRomReport::tr("… and %n more segments.", nullptr, count - shown));
     return html;
@@ -220,8 +221,7 @@ QString orderText(const char* letter, int order)
 /// One row per knot: its C and G order (knot_continuity.h), the jump of the first derivative
 /// in the knot parameter that differs (p″ at a C¹ knot), and κ on both sides where the knot
 /// is not G². `knotName(k)` names the point at the knot.
-template <class S, class Name>
-QString continuityTable(const std::vector<KnotContinuity<S>>& knots, const Name& knotName)
+template <class S, class Name> QString continuityTable(const std::vector<KnotContinuity<S>>& knots, const Name& knotName)
 {
     if (knots.empty())
         return para(CatmullRomReport::tr("no interior knot").toHtmlEscaped());
@@ -232,10 +232,10 @@ QString continuityTable(const std::vector<KnotContinuity<S>>& knots, const Name&
     }
     QString html;
     if (lowestC >= 0)
-        html += para(esc(CatmullRomReport::tr("At every knot at least C^%1 and G^%2 (of %n knots).", nullptr,
-                                              static_cast<int>(knots.size()))
-                             .arg(lowestC)
-                             .arg(lowestG)));
+        html += para(esc(
+            CatmullRomReport::tr("At every knot at least C^%1 and G^%2 (of %n knots).", nullptr, static_cast<int>(knots.size()))
+                .arg(lowestC)
+                .arg(lowestG)));
     std::vector<QStringList> rows;
     const int count = static_cast<int>(knots.size());
     const int shown = std::min(count, CatmullRomReport::kMaxListedSegments);
@@ -265,9 +265,8 @@ QString continuityTable(const std::vector<KnotContinuity<S>>& knots, const Name&
         }
         rows.push_back({knotName(k), orderText("C", c), orderText("G", g), jump, kappa});
     }
-    html += ExactPanel::table({CatmullRomReport::tr("knot"), CatmullRomReport::tr("C order"),
-                               CatmullRomReport::tr("G order"), CatmullRomReport::tr("jump"),
-                               CatmullRomReport::tr("curvature κ left → right")},
+    html += ExactPanel::table({CatmullRomReport::tr("knot"), CatmullRomReport::tr("C order"), CatmullRomReport::tr("G order"),
+                               CatmullRomReport::tr("jump"), CatmullRomReport::tr("curvature κ left → right")},
                               rows);
     if (count > shown)
         html += ExactPanel::note(CatmullRomReport::tr("… and %n more knots.", nullptr, count - shown));
@@ -367,7 +366,8 @@ QString blendingSection(const CatmullRomSettings& settings)
         const auto w = blendingFunctions(tau);
         std::vector<QStringList> rows;
         for (int j = 0; j < 4; ++j)
-            rows.push_back({ExactPanel::subscripted(QStringLiteral("w"), j) + QStringLiteral("(t)"), poly(w[static_cast<std::size_t>(j)])});
+            rows.push_back(
+                {ExactPanel::subscripted(QStringLiteral("w"), j) + QStringLiteral("(t)"), poly(w[static_cast<std::size_t>(j)])});
         html += para(QStringLiteral("<b>τ = %1</b>").arg(tauText(tau))) + ExactPanel::table({}, rows);
     }
     return html;
@@ -413,7 +413,8 @@ QString example21Section(const std::vector<RPoint>& data)
     QString html = ExactPanel::heading(CatmullRomReport::tr("Ex 2.1 as printed in the thesis"));
     std::vector<QStringList> rows;
     for (int i = 0; i < printed.pieceCount(); ++i)
-        rows.push_back({ExactPanel::subscripted(QStringLiteral("s"), i + 1) + QStringLiteral("(x)"), poly(printed.pieces[static_cast<std::size_t>(i)], "x")});
+        rows.push_back({ExactPanel::subscripted(QStringLiteral("s"), i + 1) + QStringLiteral("(x)"),
+                        poly(printed.pieces[static_cast<std::size_t>(i)], "x")});
     html += ExactPanel::table({}, rows);
     const auto report = checkContinuity(printed, 2, data);
     html += para(CatmullRomReport::tr("The check of Def 2.3 on the printed pieces:").toHtmlEscaped());
@@ -453,8 +454,9 @@ QString splineSection(const std::vector<Point>& points, const std::optional<std:
         const int shown = std::min(spline->pieceCount(), CatmullRomReport::kMaxListedSegments);
         for (int i = 0; i < shown; ++i)
             rows.push_back({ExactPanel::subscripted(QStringLiteral("s"), i + 1) + QStringLiteral("(x)"),
-                            QStringLiteral("[%1, %2]").arg(tauText(spline->knots[static_cast<std::size_t>(i)]),
-                                                           tauText(spline->knots[static_cast<std::size_t>(i) + 1])),
+                            QStringLiteral("[%1, %2]")
+                                .arg(tauText(spline->knots[static_cast<std::size_t>(i)]),
+                                     tauText(spline->knots[static_cast<std::size_t>(i) + 1])),
                             poly(spline->pieces[static_cast<std::size_t>(i)], "x")});
         html += ExactPanel::table({}, rows);
         const auto report = checkContinuity(*spline, kChecked, *rational);
@@ -489,8 +491,7 @@ QString CatmullRomReport::endsName(CatmullRomEnds ends)
     return {};
 }
 
-QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRomSettings& settings,
-                               const CatmullRomScene& scene)
+QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRomSettings& settings, const CatmullRomScene& scene)
 {
     const auto rational = smallRationalPoints(points);
     const bool uniform = settings.spacing == CatmullRomSpacing::Uniform;
@@ -518,16 +519,14 @@ QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRo
                 const auto segs = exactCurveSegments(*rational, tau, ends);
                 html += segs ? segmentTable(*segs, ends) : ExactPanel::note(translatedError(segs.error(), ends));
             } else if (i < curves.size()) {
-                html += curves[i].error.isEmpty() ? segmentTable(curves[i].segments, ends)
-                                                  : ExactPanel::note(curves[i].error);
+                html += curves[i].error.isEmpty() ? segmentTable(curves[i].segments, ends) : ExactPanel::note(curves[i].error);
             }
         }
     }
 
     // Prop 2.3, knot by knot for the selected τ.
     html += ExactPanel::heading(tr("Tangents at the knots (Prop 2.3)"));
-    html += para(tr("Catmull-Rom curves are C¹: at every knot c_i′(1) = c_{i+1}′(0) = τ(q_{i+1} − q_{i−1}).")
-                     .toHtmlEscaped());
+    html += para(tr("Catmull-Rom curves are C¹: at every knot c_i′(1) = c_{i+1}′(0) = τ(q_{i+1} − q_{i−1}).").toHtmlEscaped());
     // The lowest C order over the knots (2 when there are none: one polynomial, checked up to C²).
     const auto lowestOrder = [](const auto& knots) {
         int order = 2;
@@ -550,8 +549,8 @@ QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRo
         } else if (i < scene.curves.size() && scene.curves[i].error.isEmpty()) {
             html += tangentSection(scene.curves[i].segments, tau, settings.ends, count, uniform, table);
             if (table) // in the knot parameter, as the knot table above: centripetal and chordal curves are C¹
-                selectedOrder = lowestOrder(knotContinuity(scene.curves[i].segments, scene.curves[i].intervals, closed,
-                                                           kTolerance));
+                selectedOrder = lowestOrder(
+                    knotContinuity(scene.curves[i].segments, scene.curves[i].intervals, closed, kTolerance));
         }
     }
 
@@ -563,16 +562,15 @@ QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRo
         html += ExactPanel::heading(tr("Smoothness compared (§2.3)"));
         std::vector<QStringList> rows;
         if (settings.bezier)
-            rows.push_back({tr("Bézier, degree %1").arg(count - 1), esc(tr("C^∞: one polynomial")),
-                            tr("only q0 and q%1").arg(count - 1)});
+            rows.push_back(
+                {tr("Bézier, degree %1").arg(count - 1), esc(tr("C^∞: one polynomial")), tr("only q0 and q%1").arg(count - 1)});
         if (settings.selectedTau >= 0 && settings.selectedTau < static_cast<int>(settings.taus.size()))
             rows.push_back({tr("Catmull-Rom, τ = %1").arg(tauText(settings.taus[static_cast<std::size_t>(settings.selectedTau)])),
                             selectedOrder >= 0 ? esc(tr("C^%1 at the joins (checked)").arg(std::min(selectedOrder, 2)))
                                                : tr("not C¹ at the joins (checked)"),
                             tr("every point")});
         if (settings.spline)
-            rows.push_back({tr("Cubic spline"),
-                            scene.splineError.isEmpty() ? tr("C² (checked above)") : tr("not defined"),
+            rows.push_back({tr("Cubic spline"), scene.splineError.isEmpty() ? tr("C² (checked above)") : tr("not defined"),
                             scene.splineError.isEmpty() ? tr("every point") : QStringLiteral("—")});
         html += ExactPanel::table({tr("curve"), tr("smoothness"), tr("passes through")}, rows);
         if (settings.bezier)

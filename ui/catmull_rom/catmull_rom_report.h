@@ -22,8 +22,7 @@ class CatmullRomReport {
 public:
     static constexpr int kMaxListedSegments = 24; ///< per τ; longer curves are summarised
 
-    static QString html(const std::vector<Point>& points, const CatmullRomSettings& settings,
-                        const CatmullRomScene& scene);
+    static QString html(const std::vector<Point>& points, const CatmullRomSettings& settings, const CatmullRomScene& scene);
     /// "open (Def 2.10, option 2)" … in the user's language.
     static QString endsName(CatmullRomEnds ends);
 };

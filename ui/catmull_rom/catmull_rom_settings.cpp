@@ -10,8 +10,8 @@ namespace granota::ui {
 
 bool CatmullRomSettings::operator==(const CatmullRomSettings& o) const
 {
-    return taus == o.taus && selectedTau == o.selectedTau && ends == o.ends && spacing == o.spacing &&
-           bezier == o.bezier && spline == o.spline && compareEnds == o.compareEnds && allTausInPlot == o.allTausInPlot &&
+    return taus == o.taus && selectedTau == o.selectedTau && ends == o.ends && spacing == o.spacing && bezier == o.bezier &&
+           spline == o.spline && compareEnds == o.compareEnds && allTausInPlot == o.allTausInPlot &&
            curvaturePlot == o.curvaturePlot;
 }
 

@@ -24,19 +24,19 @@ enum class CatmullRomEnds { Open, Cyclic, Closed, Segment };
 enum class CatmullRomSpacing { Uniform, Centripetal, Chordal };
 
 struct CatmullRomSettings {
-    static constexpr int kMaxTensions = 10;      ///< one colour each (CanvasStyle::series)
-    static constexpr int kMaxTensionAbs = 10;    ///< docs/extreme-cases.md: τ ∈ [−10, 10]
-    static constexpr int kMaxPoints = 200;       ///< docs/extreme-cases.md (soft bodies up to 200 sides)
+    static constexpr int kMaxTensions = 10;   ///< one colour each (CanvasStyle::series)
+    static constexpr int kMaxTensionAbs = 10; ///< docs/extreme-cases.md: τ ∈ [−10, 10]
+    static constexpr int kMaxPoints = 200;    ///< docs/extreme-cases.md (soft bodies up to 200 sides)
 
     std::vector<Rational> taus{Rational(0), frac(1, 2), Rational(2)}; ///< Ex 2.11's tensions
-    int selectedTau = 1;                         ///< the one the slider and the plot follow
+    int selectedTau = 1;                                              ///< the one the slider and the plot follow
     CatmullRomEnds ends = CatmullRomEnds::Open;
     CatmullRomSpacing spacing = CatmullRomSpacing::Uniform;
-    bool bezier = false;       ///< §2.3: the points as a Bézier control polygon too
-    bool spline = false;       ///< Def 2.3: the natural C² cubic spline through the points
-    bool compareEnds = false;  ///< Ex 2.13: the open and cyclic curves side by side
-    bool allTausInPlot = false;///< Ex 2.12: the blending functions of every τ
-    bool curvaturePlot = false;///< §2.3: the plot shows κ against arc length instead
+    bool bezier = false;        ///< §2.3: the points as a Bézier control polygon too
+    bool spline = false;        ///< Def 2.3: the natural C² cubic spline through the points
+    bool compareEnds = false;   ///< Ex 2.13: the open and cyclic curves side by side
+    bool allTausInPlot = false; ///< Ex 2.12: the blending functions of every τ
+    bool curvaturePlot = false; ///< §2.3: the plot shows κ against arc length instead
 
     bool operator==(const CatmullRomSettings& o) const;
     bool operator!=(const CatmullRomSettings& o) const { return !(*this == o); }

@@ -43,9 +43,9 @@ namespace granota::ui {
 
 namespace {
 
-constexpr int kSliderSteps = 20;          ///< slider units per unit of τ: steps of 0.05
+constexpr int kSliderSteps = 20;               ///< slider units per unit of τ: steps of 0.05
 constexpr int kSliderMergeIdBase = 0x43520000; ///< "CR": the merge ids of the τ slider's moves
-constexpr int kPlotSamples = 101;         ///< t = 0, 0.01, …, 1 (the Matlab linspace(0,1))
+constexpr int kPlotSamples = 101;              ///< t = 0, 0.01, …, 1 (the Matlab linspace(0,1))
 const QColor kBezierColor(0x6a, 0x3d, 0x9a);
 const QColor kSplineColor(0x33, 0x33, 0x33);
 const QColor kErrorColor(0xc6, 0x28, 0x28);
@@ -110,7 +110,8 @@ QRectF pointBounds(const std::vector<Point>& points)
     const double x0 = box->minX, y0 = box->minY;
     double w = box->width(), h = box->height();
     const double size = std::max({w, h, 0.0});
-    const double pad = size > 0 ? 0.0 : std::max(1e-9, std::max(std::fabs(x0), std::fabs(y0)) * 0.1 + (x0 == 0 && y0 == 0 ? 1.0 : 0.0));
+    const double pad = size > 0 ? 0.0
+                                : std::max(1e-9, std::max(std::fabs(x0), std::fabs(y0)) * 0.1 + (x0 == 0 && y0 == 0 ? 1.0 : 0.0));
     if (w < size * 0.05 || w == 0)
         w = std::max(size * 0.05, pad);
     if (h < size * 0.05 || h == 0)
@@ -121,8 +122,7 @@ QRectF pointBounds(const std::vector<Point>& points)
 
 } // namespace
 
-CatmullRomTab::CatmullRomTab(QWidget* parent)
-    : CurveTab(QStringLiteral("catmull-rom"), QT_TR_NOOP("Catmull-Rom"), parent)
+CatmullRomTab::CatmullRomTab(QWidget* parent) : CurveTab(QStringLiteral("catmull-rom"), QT_TR_NOOP("Catmull-Rom"), parent)
 {
     // Curves under the handles, the legend on top.
     m_canvas->addLayer([this](QPainter& p, const ViewTransform& v, const CanvasStyle& s) { drawCurves(p, v, s); });
@@ -158,8 +158,7 @@ void CatmullRomTab::buildUi()
     m_addTau = new QPushButton(m_tensionBox);
     m_removeTau = new QPushButton(m_tensionBox);
     m_tauSlider = new QSlider(Qt::Horizontal, m_tensionBox);
-    m_tauSlider->setRange(-CatmullRomSettings::kMaxTensionAbs * kSliderSteps,
-                          CatmullRomSettings::kMaxTensionAbs * kSliderSteps);
+    m_tauSlider->setRange(-CatmullRomSettings::kMaxTensionAbs * kSliderSteps, CatmullRomSettings::kMaxTensionAbs * kSliderSteps);
     m_tauSlider->setPageStep(kSliderSteps / 2);
     m_sliderLabel = new QLabel(m_tensionBox);
     m_sliderLabel->setWordWrap(true);
@@ -429,8 +428,7 @@ void CatmullRomTab::syncControls()
     if (hasSelection) {
         const Rational& tau = m_settings.taus[static_cast<std::size_t>(m_settings.selectedTau)];
         m_tauSlider->setValue(static_cast<int>(std::lround(toDouble(tau) * kSliderSteps)));
-        m_sliderLabel->setText(tr("Selected: τ = %1, Processing's curveTightness(%2)")
-                                   .arg(tauString(tau), tightnessString(tau)));
+        m_sliderLabel->setText(tr("Selected: τ = %1, Processing's curveTightness(%2)").arg(tauString(tau), tightnessString(tau)));
     }
     m_endsCombo->setCurrentIndex(static_cast<int>(m_settings.ends));
     m_spacingCombo->setCurrentIndex(static_cast<int>(m_settings.spacing));
@@ -459,10 +457,9 @@ void CatmullRomTab::changeSettings(const CatmullRomSettings& after, const QStrin
     if (after == m_settings)
         return;
     // Slider moves merge while they drag the same τ of the same list.
-    const int mergeId = mergeable ? kSliderMergeIdBase + (after.selectedTau + 1) * 32 + static_cast<int>(after.taus.size())
-                                  : -1;
-    m_undo->push(new ValueCommand<CatmullRomSettings>([this](const CatmullRomSettings& s) { applySettings(s); },
-                                                      m_settings, after, undoText, mergeId));
+    const int mergeId = mergeable ? kSliderMergeIdBase + (after.selectedTau + 1) * 32 + static_cast<int>(after.taus.size()) : -1;
+    m_undo->push(new ValueCommand<CatmullRomSettings>([this](const CatmullRomSettings& s) { applySettings(s); }, m_settings,
+                                                      after, undoText, mergeId));
 }
 
 void CatmullRomTab::applySettings(const CatmullRomSettings& s)
@@ -479,8 +476,7 @@ bool CatmullRomTab::addTension(const QString& text)
     const auto tau = parseTension(typedToC(text), &problem);
     if (!tau) {
         if (problem == TensionProblem::OutOfRange)
-            refuse(tr("τ = %1 is outside [−10, 10]: beyond that the curve is all overshoot. Not added.")
-                       .arg(text.trimmed()));
+            refuse(tr("τ = %1 is outside [−10, 10]: beyond that the curve is all overshoot. Not added.").arg(text.trimmed()));
         else
             refuse(tr("“%1” is not a tension: type a decimal (0.5) or a fraction (-1/2). Not added.").arg(text.trimmed()));
         return false;
@@ -676,8 +672,8 @@ void CatmullRomTab::updatePlot()
             }
             QCPGraph* g = m_plot->addGraph();
             g->setData(t, y, true);
-            g->setPen(QPen(CanvasStyle::series(j), 2.0 * scale, shown.size() > 1 ? tauPenStyle(static_cast<int>(n))
-                                                                                   : Qt::SolidLine));
+            g->setPen(
+                QPen(CanvasStyle::series(j), 2.0 * scale, shown.size() > 1 ? tauPenStyle(static_cast<int>(n)) : Qt::SolidLine));
             g->setName(QStringLiteral("w%1").arg(j));
             if (n > 0)
                 g->removeFromLegend();
@@ -691,8 +687,7 @@ void CatmullRomTab::updatePlot()
             key->setName(QStringLiteral("τ = %1").arg(tauString(m_settings.taus[static_cast<std::size_t>(shown[n])])));
         }
     if (shown.size() == 1) // the plot alone tells which tension it shows
-        m_plot->yAxis->setLabel(
-            QStringLiteral("w_j(t, %1)").arg(tauString(m_settings.taus[static_cast<std::size_t>(shown[0])])));
+        m_plot->yAxis->setLabel(QStringLiteral("w_j(t, %1)").arg(tauString(m_settings.taus[static_cast<std::size_t>(shown[0])])));
     keepAxisTitlesWhole(m_plot);
     const double pad = (hi - lo) * 0.05;
     m_plot->xAxis->setRange(0, 1);
@@ -732,8 +727,7 @@ void CatmullRomTab::updateCurvaturePlot(double scale)
     const double width = 2.0 * scale;
     for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
         const bool selected = static_cast<int>(i) == m_settings.selectedTau;
-        addProfile(m_scene.curves[i].curvature,
-                   QPen(CanvasStyle::series(static_cast<int>(i)), selected ? 1.5 * width : width),
+        addProfile(m_scene.curves[i].curvature, QPen(CanvasStyle::series(static_cast<int>(i)), selected ? 1.5 * width : width),
                    QStringLiteral("τ = %1").arg(tauString(m_scene.curves[i].tau)));
     }
     for (std::size_t i = 0; i < m_scene.otherEnds.size(); ++i)
@@ -840,8 +834,8 @@ void CatmullRomTab::drawCurves(QPainter& p, const ViewTransform& view, const Can
     }
     for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
         const bool selected = static_cast<int>(i) == m_settings.selectedTau;
-        p.setPen(QPen(CanvasStyle::series(static_cast<int>(i)), style.lineWidth() * (selected ? 1.5 : 1.0),
-                      Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        p.setPen(QPen(CanvasStyle::series(static_cast<int>(i)), style.lineWidth() * (selected ? 1.5 : 1.0), Qt::SolidLine,
+                      Qt::RoundCap, Qt::RoundJoin));
         drawBezierSegments(p, view, m_scene.curves[i].bezier);
     }
 }
@@ -905,7 +899,7 @@ bool CatmullRomTab::loadExample(const WorkedExample& example)
         if (!useTaus(example.taus))
             return false;
         s.allTausInPlot = true;
-        s.curvaturePlot = false; // Ex 2.12 is about the blending functions
+        s.curvaturePlot = false;                // Ex 2.12 is about the blending functions
     } else if (example.kind == "catmull-rom") { // Ex 2.13
         points = toDouble(example.points);
         if (!useTaus(example.taus))
@@ -914,7 +908,7 @@ bool CatmullRomTab::loadExample(const WorkedExample& example)
                                                 : parseCatmullRomMode(example.modes.front());
         if (!mode)
             return false;
-        s.ends = *mode == CatmullRomMode::Cyclic ? CatmullRomEnds::Cyclic
+        s.ends = *mode == CatmullRomMode::Cyclic   ? CatmullRomEnds::Cyclic
                  : *mode == CatmullRomMode::Closed ? CatmullRomEnds::Closed
                                                    : CatmullRomEnds::Open;
         s.compareEnds = example.modes.size() > 1;
@@ -1009,11 +1003,9 @@ QString CatmullRomTab::csv() const
                                .arg(number(sample.s), sample.kappa ? number(*sample.kappa) : QString());
         };
         for (const CatmullRomCurve& c : m_scene.curves)
-            write(QStringLiteral("catmull-rom"), tauString(c.tau), endsKey(c.ends), 1 + firstSegmentStart(c.ends),
-                  c.curvature);
+            write(QStringLiteral("catmull-rom"), tauString(c.tau), endsKey(c.ends), 1 + firstSegmentStart(c.ends), c.curvature);
         for (const CatmullRomCurve& c : m_scene.otherEnds)
-            write(QStringLiteral("catmull-rom"), tauString(c.tau), endsKey(c.ends), 1 + firstSegmentStart(c.ends),
-                  c.curvature);
+            write(QStringLiteral("catmull-rom"), tauString(c.tau), endsKey(c.ends), 1 + firstSegmentStart(c.ends), c.curvature);
         write(QStringLiteral("bezier"), QString(), QString(), 1, m_scene.bezierCurvature);
         write(QStringLiteral("spline"), QString(), QString(), 1, m_scene.splineCurvature);
     }

@@ -40,8 +40,8 @@ LegendMetrics legendMetrics(const ViewTransform& view, const CanvasStyle& style,
     if (!legend.note.isEmpty())
         m.noteRect = fm.boundingRect(QRectF(0, 0, maxNoteWidth, 1000), Qt::TextWordWrap, legend.note);
     const double w = std::max(m.swatch + m.pad + m.textWidth, m.noteRect.width()) + 2 * m.pad;
-    const double h = static_cast<double>(legend.entries.size()) * m.line
-                     + (legend.note.isEmpty() ? 0 : m.noteRect.height() + m.pad) + 2 * m.pad;
+    const double h = static_cast<double>(legend.entries.size()) * m.line +
+                     (legend.note.isEmpty() ? 0 : m.noteRect.height() + m.pad) + 2 * m.pad;
     m.size = QSizeF(w, h);
     return m;
 }
@@ -128,8 +128,8 @@ QRectF drawCanvasLegend(QPainter& p, const ViewTransform& view, const CanvasStyl
     }
     if (!legend.note.isEmpty()) {
         p.setPen(legend.alertColor);
-        p.drawText(QRectF(box.left() + m.pad, y + m.pad / 2, m.noteRect.width() + 1, m.noteRect.height() + 1),
-                   Qt::TextWordWrap, legend.note);
+        p.drawText(QRectF(box.left() + m.pad, y + m.pad / 2, m.noteRect.width() + 1, m.noteRect.height() + 1), Qt::TextWordWrap,
+                   legend.note);
     }
     return box;
 }

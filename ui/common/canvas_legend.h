@@ -48,7 +48,7 @@ struct CanvasLegendObstacles {
 struct CanvasLegendBox {
     QRectF box;
     bool compact = false;
-    static constexpr double kCompactFont = 0.8;  ///< × the application font (the full key: 0.9)
+    static constexpr double kCompactFont = 0.8; ///< × the application font (the full key: 0.9)
 };
 
 /// Positions tried along each edge of the canvas, between and besides its corners.

@@ -9,15 +9,15 @@
 namespace granota::ui {
 
 struct CanvasStyle {
-    double scale = 1.0;                    ///< 1 on a desk, larger in presentation mode
-    QColor background{0xfb, 0xfa, 0xf6};   ///< paper
+    double scale = 1.0;                  ///< 1 on a desk, larger in presentation mode
+    QColor background{0xfb, 0xfa, 0xf6}; ///< paper
     QColor gridMinor{0xe6, 0xe4, 0xdc};
     QColor gridMajor{0xcf, 0xcc, 0xc0};
     QColor axis{0x8a, 0x86, 0x7a};
     QColor text{0x2b, 0x2b, 0x2b};
-    QColor curve{0x1f, 0x5f, 0xa8};        ///< the curve c(t)
-    QColor polygon{0x9a, 0x9a, 0x9a};      ///< control polygon
-    QColor handle{0xd9, 0x48, 0x2b};       ///< editable points
+    QColor curve{0x1f, 0x5f, 0xa8};   ///< the curve c(t)
+    QColor polygon{0x9a, 0x9a, 0x9a}; ///< control polygon
+    QColor handle{0xd9, 0x48, 0x2b};  ///< editable points
     QColor handleSelected{0x2b, 0x9d, 0x48};
 
     double lineWidth() const { return 2.0 * scale; }

@@ -11,8 +11,8 @@
 namespace granota::ui {
 
 namespace {
-constexpr double kToothShare = 0.15;  ///< an automatic comb: a typical tooth is this share of the polygon's size
-constexpr double kPercentile = 0.9;   ///< the typical tooth: the 90th percentile of |κ|, not a cusp's huge one
+constexpr double kToothShare = 0.15; ///< an automatic comb: a typical tooth is this share of the polygon's size
+constexpr double kPercentile = 0.9;  ///< the typical tooth: the 90th percentile of |κ|, not a cusp's huge one
 
 double polygonSize(const std::vector<Point>& P)
 {

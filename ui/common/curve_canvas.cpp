@@ -58,8 +58,8 @@ namespace {
 bool drawable(const QRectF& r, double maxSpan)
 {
     const double w = r.width(), h = r.height(), x = r.center().x(), y = r.center().y();
-    return std::isfinite(w) && std::isfinite(h) && std::isfinite(x) && std::isfinite(y) && w <= maxSpan && h <= maxSpan
-           && std::fabs(x) <= maxSpan && std::fabs(y) <= maxSpan;
+    return std::isfinite(w) && std::isfinite(h) && std::isfinite(x) && std::isfinite(y) && w <= maxSpan && h <= maxSpan &&
+           std::fabs(x) <= maxSpan && std::fabs(y) <= maxSpan;
 }
 
 } // namespace
@@ -167,8 +167,8 @@ void CurveCanvas::drawGrid(QPainter& painter, const ViewTransform& view) const
     const double i0 = std::floor(model.left() / step), j0 = std::floor(model.top() / step);
     const double columns = std::floor(model.right() / step) - i0, rows = std::floor(model.bottom() / step) - j0;
     constexpr double kMaxLines = 400, kExactIntegers = 9007199254740992.0; // 2^53
-    if (!(columns <= kMaxLines && rows <= kMaxLines) || !(std::fabs(i0) + columns < kExactIntegers)
-        || !(std::fabs(j0) + rows < kExactIntegers))
+    if (!(columns <= kMaxLines && rows <= kMaxLines) || !(std::fabs(i0) + columns < kExactIntegers) ||
+        !(std::fabs(j0) + rows < kExactIntegers))
         return;
     const int nx = static_cast<int>(columns), ny = static_cast<int>(rows);
     const auto xAt = [&](int k) { return (i0 + k) * step; };
@@ -201,7 +201,8 @@ void CurveCanvas::drawGrid(QPainter& painter, const ViewTransform& view) const
         const double sx = view.toScreen({x, 0}).x();
         painter.drawText(QPointF(sx + 3 * m_style.scale, labelY + painter.fontMetrics().ascent()), axisLabel(x, step));
     }
-    const double labelX = std::min(ax + 4 * m_style.scale, area.right() - painter.fontMetrics().horizontalAdvance(QStringLiteral("-00000")));
+    const double labelX = std::min(ax + 4 * m_style.scale,
+                                   area.right() - painter.fontMetrics().horizontalAdvance(QStringLiteral("-00000")));
     for (int k = 0; k <= ny; ++k) {
         const double y = yAt(k);
         if (std::fabs(y) < step * 1e-6)

@@ -21,10 +21,7 @@ QValidator::State DecimalSpinBox::validate(QString& text, int& pos) const
     return state;
 }
 
-double DecimalSpinBox::valueFromText(const QString& text) const
-{
-    return QDoubleSpinBox::valueFromText(withLocaleDecimal(text));
-}
+double DecimalSpinBox::valueFromText(const QString& text) const { return QDoubleSpinBox::valueFromText(withLocaleDecimal(text)); }
 
 void DecimalSpinBox::fixup(QString& text) const
 {

@@ -15,13 +15,12 @@ ExactPanel::ExactPanel(QWidget* parent) : QTextBrowser(parent)
     setTabChangesFocus(true); // Tab leaves the panel
     setAccessibleName(tr("Exact computation"));
     setMinimumWidth(280);
-    document()->setDefaultStyleSheet(QStringLiteral(
-        "h3 { margin-top: 10px; margin-bottom: 4px; }"
-        "table { border-collapse: collapse; }"
-        "td, th { padding: 2px 8px; }"
-        "th { background: #eeeae0; }"
-        ".poly { font-family: 'DejaVu Serif', serif; }"
-        ".note { color: #8a3a00; }"));
+    document()->setDefaultStyleSheet(QStringLiteral("h3 { margin-top: 10px; margin-bottom: 4px; }"
+                                                    "table { border-collapse: collapse; }"
+                                                    "td, th { padding: 2px 8px; }"
+                                                    "th { background: #eeeae0; }"
+                                                    ".poly { font-family: 'DejaVu Serif', serif; }"
+                                                    ".note { color: #8a3a00; }"));
 }
 
 void ExactPanel::setContent(const QString& html)
@@ -89,15 +88,9 @@ QString ExactPanel::matrix(const QString& name, const std::vector<std::vector<st
     return html + QStringLiteral("</table>");
 }
 
-QString ExactPanel::note(const QString& text)
-{
-    return QStringLiteral("<p class=\"note\">%1</p>").arg(text.toHtmlEscaped());
-}
+QString ExactPanel::note(const QString& text) { return QStringLiteral("<p class=\"note\">%1</p>").arg(text.toHtmlEscaped()); }
 
-QString ExactPanel::subscripted(const QString& name, int index)
-{
-    return QStringLiteral("%1<sub>%2</sub>").arg(name).arg(index);
-}
+QString ExactPanel::subscripted(const QString& name, int index) { return QStringLiteral("%1<sub>%2</sub>").arg(name).arg(index); }
 
 QString ExactPanel::checkMark(bool ok)
 {

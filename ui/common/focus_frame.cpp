@@ -12,7 +12,8 @@ void drawFocusFrame(QPainter& painter, const QRectF& rect, const QPalette& palet
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, false);
     painter.setBrush(Qt::NoBrush);
-    painter.setPen(QPen(palette.color(QPalette::Active, QPalette::Highlight), width, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
+    painter.setPen(
+        QPen(palette.color(QPalette::Active, QPalette::Highlight), width, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
     painter.drawRect(rect.adjusted(width / 2, width / 2, -width / 2, -width / 2));
     painter.restore();
 }

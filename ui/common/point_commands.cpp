@@ -9,8 +9,8 @@ namespace {
 constexpr int kNudgeCommandId = 0x4e55; // "NU"
 } // namespace
 
-PointsCommand::PointsCommand(PointEditor* editor, std::vector<Point> before, std::vector<Point> after,
-                             const QString& text, int nudged)
+PointsCommand::PointsCommand(PointEditor* editor, std::vector<Point> before, std::vector<Point> after, const QString& text,
+                             int nudged)
     : QUndoCommand(text), m_editor(editor), m_before(std::move(before)), m_after(std::move(after)), m_nudged(nudged)
 {
 }

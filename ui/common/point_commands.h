@@ -23,8 +23,7 @@ public:
     /// point has this index, so its run merges only with itself.
     static constexpr int kCurveNudge = 1 << 20;
 
-    PointsCommand(PointEditor* editor, std::vector<Point> before, std::vector<Point> after, const QString& text,
-                  int nudged = -1);
+    PointsCommand(PointEditor* editor, std::vector<Point> before, std::vector<Point> after, const QString& text, int nudged = -1);
     void undo() override;
     void redo() override;
     int id() const override;

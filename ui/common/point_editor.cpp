@@ -86,10 +86,7 @@ void PointEditor::setHovered(int index)
 
 bool PointEditor::labelsShown() const { return m_labelChoice.value_or(m_points.size() <= kLabelledPointsUpTo); }
 
-bool PointEditor::labelsHiddenAutomatically() const
-{
-    return !m_labelChoice && m_points.size() > kLabelledPointsUpTo;
-}
+bool PointEditor::labelsHiddenAutomatically() const { return !m_labelChoice && m_points.size() > kLabelledPointsUpTo; }
 
 QString PointEditor::labelsHiddenNote() const
 {
@@ -269,8 +266,7 @@ int PointEditor::insertionIndex(Point p) const
 
 Rational PointEditor::nudgeStep(bool tenTimes) const
 {
-    const Rational step = m_snap ? meantRational(m_gridStep)
-                                 : roundStepAtMost(kNudgePixels / m_canvas->view().scale()).exact();
+    const Rational step = m_snap ? meantRational(m_gridStep) : roundStepAtMost(kNudgePixels / m_canvas->view().scale()).exact();
     return tenTimes ? Rational(step * 10) : step;
 }
 
@@ -320,8 +316,8 @@ void PointEditor::showContextMenu(const QPointF& screen, const QPoint& global)
     QAction* labels = menu.addAction(tr("Show point labels"));
     labels->setCheckable(true);
     labels->setChecked(labelsShown());
-    labels->setToolTip(tr("Past %1 points the labels are hidden and the handles small, unless this is on.")
-                           .arg(kLabelledPointsUpTo));
+    labels->setToolTip(
+        tr("Past %1 points the labels are hidden and the handles small, unless this is on.").arg(kLabelledPointsUpTo));
     connect(labels, &QAction::toggled, this, [this](bool on) { chooseLabels(on); });
     menu.addAction(tr("Fit view"), m_canvas, &CurveCanvas::fitToContent);
     menu.exec(global);
@@ -375,9 +371,7 @@ bool PointEditor::eventFilter(QObject* watched, QEvent* event)
         insertPoint(insertionIndex(p), p);
         return true;
     }
-    case QEvent::Leave:
-        setHovered(-1);
-        return false;
+    case QEvent::Leave: setHovered(-1); return false;
     case QEvent::ContextMenu: {
         auto* e = static_cast<QContextMenuEvent*>(event);
         showContextMenu(e->pos(), e->globalPos());
@@ -388,9 +382,7 @@ bool PointEditor::eventFilter(QObject* watched, QEvent* event)
         const bool tenTimes = e->modifiers() & Qt::ShiftModifier;
         switch (e->key()) {
         case Qt::Key_Delete:
-        case Qt::Key_Backspace:
-            removePoint(m_selected);
-            return true;
+        case Qt::Key_Backspace: removePoint(m_selected); return true;
         case Qt::Key_Left: nudge(-1, 0, tenTimes); return m_selected >= 0;
         case Qt::Key_Right: nudge(1, 0, tenTimes); return m_selected >= 0;
         case Qt::Key_Up: nudge(0, 1, tenTimes); return m_selected >= 0;
@@ -405,12 +397,10 @@ bool PointEditor::eventFilter(QObject* watched, QEvent* event)
                 return true;
             }
             return false;
-        default:
-            return false;
+        default: return false;
         }
     }
-    default:
-        return QObject::eventFilter(watched, event);
+    default: return QObject::eventFilter(watched, event);
     }
 }
 

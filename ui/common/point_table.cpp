@@ -71,8 +71,7 @@ void PointTable::refresh()
     // During a drag only the dragged point changes: refresh its row alone (unless its column
     // changes notation).
     const int dragged = m_editor->dragging() ? m_editor->selected() : -1;
-    if (dragged >= 0 && sameNotation && rowCount() == static_cast<int>(points.size()) && item(dragged, 0)
-        && item(dragged, 1)) {
+    if (dragged >= 0 && sameNotation && rowCount() == static_cast<int>(points.size()) && item(dragged, 0) && item(dragged, 1)) {
         item(dragged, 0)->setText(cellText(dragged, 0));
         item(dragged, 1)->setText(cellText(dragged, 1));
         m_refreshing = false;

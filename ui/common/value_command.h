@@ -28,15 +28,14 @@ struct ValueCommandOptions {
     bool appliedAlready = false;
 };
 
-template <class T>
-class ValueCommand : public QUndoCommand {
+template <class T> class ValueCommand : public QUndoCommand {
 public:
     using Apply = std::function<void(const T&)>;
 
-    ValueCommand(Apply apply, T before, T after, const QString& text, int mergeId = -1,
-                 ValueCommandOptions options = {}, QUndoCommand* parent = nullptr)
-        : QUndoCommand(text, parent), m_apply(std::move(apply)), m_before(std::move(before)),
-          m_after(std::move(after)), m_mergeId(mergeId), m_options(options), m_skipRedo(options.appliedAlready)
+    ValueCommand(Apply apply, T before, T after, const QString& text, int mergeId = -1, ValueCommandOptions options = {},
+                 QUndoCommand* parent = nullptr)
+        : QUndoCommand(text, parent), m_apply(std::move(apply)), m_before(std::move(before)), m_after(std::move(after)),
+          m_mergeId(mergeId), m_options(options), m_skipRedo(options.appliedAlready)
     {
     }
 

@@ -20,9 +20,8 @@ namespace granota::ui {
 
 WorkPrecisionPanel::WorkPrecisionPanel(std::vector<std::string> reports, QWidget* parent)
     : QWidget(parent), m_names(std::move(reports)), m_choice(new QComboBox(this)), m_axis(new QComboBox(this)),
-      m_measure(new QPushButton(this)),
-      m_cancel(new QPushButton(this)), m_progress(new QProgressBar(this)), m_lesson(new QLabel(this)),
-      m_plot(new QCustomPlot(this))
+      m_measure(new QPushButton(this)), m_cancel(new QPushButton(this)), m_progress(new QProgressBar(this)),
+      m_lesson(new QLabel(this)), m_plot(new QCustomPlot(this))
 {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4); // its row of choices fits an 800×600 screen in Catalan
@@ -80,10 +79,7 @@ void WorkPrecisionPanel::selectReport(const std::string& name)
             m_choice->setCurrentIndex(static_cast<int>(i));
 }
 
-WorkPrecisionAxis WorkPrecisionPanel::axis() const
-{
-    return static_cast<WorkPrecisionAxis>(m_axis->currentData().toInt());
-}
+WorkPrecisionAxis WorkPrecisionPanel::axis() const { return static_cast<WorkPrecisionAxis>(m_axis->currentData().toInt()); }
 
 void WorkPrecisionPanel::setAxis(WorkPrecisionAxis axis)
 {

@@ -49,27 +49,41 @@ QString reportTitle(const WorkPrecisionReport& r)
 QString reportLesson(const WorkPrecisionReport& r)
 {
     static const Texts lessons[] = {
-        {"curve-sampling", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Against the number of points, both errors fall like 1/N² (twice the points, a quarter of "
-            "the error), and adaptive subdivision, which puts its points where the curve bends, needs "
-            "fewer for the same error. Its run time per point is higher: each point costs a flatness test.")},
-        {"catmull-rom-sampling", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "The same number of points on every segment wastes them on the short, gentle ones; adaptive "
-            "subdivision of each segment puts them where the curve bends and needs fewer for the same "
-            "error. Both errors fall like 1/N².")},
-        {"bezier-evaluation", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "De Casteljau and the Bernstein sum stay at rounding level at every degree; Horner on the power "
-            "basis loses digits as the degree grows, because its coefficients are huge alternating sums "
-            "that cancel.")},
-        {"least-squares", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "The normal equations square the condition number of M: near degree 25 they have lost almost "
-            "every digit and by degree 30 the curve is wrong, while QR and SVD still hold about seven "
-            "digits.")},
-        {"integrators", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Halving h halves Euler's error but quarters Verlet's (order 1 against 2): at equal run time "
-            "Verlet is orders of magnitude more accurate. RK4 (order 4) costs four evaluations per step "
-            "and wins when high accuracy is needed.")},
-        {"soft-body", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "XPBD's constraint error falls as the substeps grow, at a cost proportional to their number; "
-            "the seed's per-step corrections leave a lasting area deficit.")},
-        {"arc-length", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "The adaptive rule, split at the cusp, reaches rounding level in about two microseconds; one "
-            "24-point Gauss rule is off by 1e-3 on the cusp and, repeated on pieces that do not end "
-            "there, gains only a factor 4 per doubling (the kink, not the rule, sets the pace); Simpson "
-            "gains 16 per halving, the polyline 4.")},
+        {"curve-sampling",
+         QT_TRANSLATE_NOOP("granota::ui::WorkPrecision",
+                           "Against the number of points, both errors fall like 1/N² (twice the points, a quarter of "
+                           "the error), and adaptive subdivision, which puts its points where the curve bends, needs "
+                           "fewer for the same error. Its run time per point is higher: each point costs a flatness test.")},
+        {"catmull-rom-sampling",
+         QT_TRANSLATE_NOOP("granota::ui::WorkPrecision",
+                           "The same number of points on every segment wastes them on the short, gentle ones; adaptive "
+                           "subdivision of each segment puts them where the curve bends and needs fewer for the same "
+                           "error. Both errors fall like 1/N².")},
+        {"bezier-evaluation",
+         QT_TRANSLATE_NOOP("granota::ui::WorkPrecision",
+                           "De Casteljau and the Bernstein sum stay at rounding level at every degree; Horner on the power "
+                           "basis loses digits as the degree grows, because its coefficients are huge alternating sums "
+                           "that cancel.")},
+        {"least-squares",
+         QT_TRANSLATE_NOOP("granota::ui::WorkPrecision",
+                           "The normal equations square the condition number of M: near degree 25 they have lost almost "
+                           "every digit and by degree 30 the curve is wrong, while QR and SVD still hold about seven "
+                           "digits.")},
+        {"integrators",
+         QT_TRANSLATE_NOOP("granota::ui::WorkPrecision",
+                           "Halving h halves Euler's error but quarters Verlet's (order 1 against 2): at equal run time "
+                           "Verlet is orders of magnitude more accurate. RK4 (order 4) costs four evaluations per step "
+                           "and wins when high accuracy is needed.")},
+        {"soft-body",
+         QT_TRANSLATE_NOOP("granota::ui::WorkPrecision",
+                           "XPBD's constraint error falls as the substeps grow, at a cost proportional to their number; "
+                           "the seed's per-step corrections leave a lasting area deficit.")},
+        {"arc-length",
+         QT_TRANSLATE_NOOP("granota::ui::WorkPrecision",
+                           "The adaptive rule, split at the cusp, reaches rounding level in about two microseconds; one "
+                           "24-point Gauss rule is off by 1e-3 on the cusp and, repeated on pieces that do not end "
+                           "there, gains only a factor 4 per doubling (the kink, not the rule, sets the pace); Simpson "
+                           "gains 16 per halving, the polyline 4.")},
     };
     return translated(lessons, r.name, r.lesson);
 }
@@ -129,7 +143,8 @@ QString reportError(const WorkPrecisionReport& r)
     if (r.name == "soft-body")
         return QCoreApplication::translate("granota::ui::WorkPrecision", "RMS relative constraint violation");
     if (r.name == "arc-length")
-        return QCoreApplication::translate("granota::ui::WorkPrecision", "max relative error of L over four curves, one with a cusp");
+        return QCoreApplication::translate("granota::ui::WorkPrecision",
+                                           "max relative error of L over four curves, one with a cusp");
     return QString::fromStdString(r.error);
 }
 
@@ -176,8 +191,8 @@ void plotWorkPrecision(QCustomPlot* plot, const WorkPrecisionReport& report, dou
     double xmin = 1e300, xmax = 0, ymin = 1e300, ymax = 0;
     int index = 0;
     const QCPScatterStyle::ScatterShape shapes[] = {QCPScatterStyle::ssCircle, QCPScatterStyle::ssSquare,
-                                                     QCPScatterStyle::ssTriangle, QCPScatterStyle::ssDiamond,
-                                                     QCPScatterStyle::ssCross};
+                                                    QCPScatterStyle::ssTriangle, QCPScatterStyle::ssDiamond,
+                                                    QCPScatterStyle::ssCross};
     for (const auto& series : report.series) {
         QCPGraph* graph = plot->addGraph();
         graph->setName(reportMethod(series.method));

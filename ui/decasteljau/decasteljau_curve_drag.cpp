@@ -39,7 +39,8 @@ DeCasteljauCurveDrag::DeCasteljauCurveDrag(CurveCanvas* canvas, PointEditor* edi
         const QString label = QStringLiteral("t = %1").arg(displaySignificant(m_hover->t, 4));
         const QFontMetricsF fm(p.font());
         // A white halo under the label: it stays readable over the construction.
-        const QRectF box(s + QPointF(r + 3 * style.scale, -r - fm.height()), QSizeF(fm.horizontalAdvance(label) + 4, fm.height()));
+        const QRectF box(s + QPointF(r + 3 * style.scale, -r - fm.height()),
+                         QSizeF(fm.horizontalAdvance(label) + 4, fm.height()));
         p.setPen(Qt::NoPen);
         p.setBrush(QColor(255, 255, 255, 200));
         p.drawRect(box);
@@ -61,8 +62,8 @@ void DeCasteljauCurveDrag::updateHover(const QPointF& screen)
                 next = c;
         }
     }
-    const bool changed = next.has_value() != m_hover.has_value()
-                         || (next && (next->t != m_hover->t || next->point != m_hover->point));
+    const bool changed = next.has_value() != m_hover.has_value() ||
+                         (next && (next->t != m_hover->t || next->point != m_hover->point));
     m_hover = next;
     if (changed) {
         m_canvas->update();
@@ -77,8 +78,8 @@ void DeCasteljauCurveDrag::finishMold()
     m_molding = false;
     const auto now = m_editor->points();
     if (now != m_moldStart)
-        m_undo->push(new PointsCommand(m_editor, m_moldStart, now,
-                                       tr("Mold the curve at t = %1").arg(displaySignificant(m_moldT, 4))));
+        m_undo->push(
+            new PointsCommand(m_editor, m_moldStart, now, tr("Mold the curve at t = %1").arg(displaySignificant(m_moldT, 4))));
     else
         m_editor->applyPoints(now); // the tab refreshes what it deferred while molding
 }
@@ -102,8 +103,9 @@ void DeCasteljauCurveDrag::moldByKey(int dx, int dy, bool tenTimes)
     // Merged with the next key of the run, as the nudges of a control point are.
     m_undo->push(new PointsCommand(m_editor, points, molded, tr("Mold the curve at t = %1").arg(displaySignificant(t, 4)),
                                    PointsCommand::kCurveNudge));
-    emit message(tr("c(t) at t = %1 moved by %2: the control points changed the least that does it.")
-                     .arg(displaySignificant(t, 4), displayPair(displaySignificant(step * dx, 6), displaySignificant(step * dy, 6))));
+    emit message(
+        tr("c(t) at t = %1 moved by %2: the control points changed the least that does it.")
+            .arg(displaySignificant(t, 4), displayPair(displaySignificant(step * dx, 6), displaySignificant(step * dy, 6))));
 }
 
 bool DeCasteljauCurveDrag::eventFilter(QObject* watched, QEvent* event)
@@ -179,8 +181,7 @@ bool DeCasteljauCurveDrag::eventFilter(QObject* watched, QEvent* event)
             emit hoverChanged();
         }
         return false;
-    default:
-        return QObject::eventFilter(watched, event);
+    default: return QObject::eventFilter(watched, event);
     }
 }
 

@@ -18,9 +18,9 @@
 namespace granota::ui {
 
 namespace {
-constexpr int kSliderSteps = 1000;     ///< slider resolution: t in steps of 0.001
-constexpr int kDecimals = 3;           ///< digits the spin box shows
-constexpr double kHalfStep = 0.0005;   ///< a typed fraction is kept when it rounds to the shown value
+constexpr int kSliderSteps = 1000;   ///< slider resolution: t in steps of 0.001
+constexpr int kDecimals = 3;         ///< digits the spin box shows
+constexpr double kHalfStep = 0.0005; ///< a typed fraction is kept when it rounds to the shown value
 } // namespace
 
 /// A spin box that also reads fractions and remembers the exact value typed.
@@ -35,7 +35,8 @@ public:
     QValidator::State validate(QString& text, int& pos) const override
     {
         const QString s = text.trimmed();
-        if (s.isEmpty() || s.endsWith(QLatin1Char('/')) || s == QLatin1String("-") || s.endsWith(QLatin1Char('.')) || s.endsWith(QLatin1Char(',')))
+        if (s.isEmpty() || s.endsWith(QLatin1Char('/')) || s == QLatin1String("-") || s.endsWith(QLatin1Char('.')) ||
+            s.endsWith(QLatin1Char(',')))
             return QValidator::Intermediate;
         if (s.contains(QLatin1Char('/'))) {
             const auto q = parseRational(s.toStdString());
@@ -68,8 +69,7 @@ private:
 };
 
 DeCasteljauParameterControl::DeCasteljauParameterControl(QWidget* parent)
-    : QWidget(parent), m_label(new QLabel(this)), m_slider(new QSlider(Qt::Horizontal, this)),
-      m_spin(new ParameterSpinBox(this))
+    : QWidget(parent), m_label(new QLabel(this)), m_slider(new QSlider(Qt::Horizontal, this)), m_spin(new ParameterSpinBox(this))
 {
     m_slider->setRange(0, kSliderSteps);
     m_slider->setMinimumWidth(120);

@@ -53,22 +53,22 @@ namespace {
 
 using RPoly = Polynomial<Rational>;
 
-constexpr int kDefaultSamples = 200;      ///< Matlab `part`: the curve through part + 1 points
-constexpr int kMinSamples = 1;            ///< one interval: the chord P_0 P_n
-constexpr int kMaxSamples = 5000;       ///< 200 points × 5000 samples: about 1e8 operations
-constexpr double kStepBudget = 2e7;      ///< operations allowed for the step-by-step curves per update
+constexpr int kDefaultSamples = 200; ///< Matlab `part`: the curve through part + 1 points
+constexpr int kMinSamples = 1;       ///< one interval: the chord P_0 P_n
+constexpr int kMaxSamples = 5000;    ///< 200 points × 5000 samples: about 1e8 operations
+constexpr double kStepBudget = 2e7;  ///< operations allowed for the step-by-step curves per update
 constexpr int kMinStepSamples = 16;
-constexpr int kAnimationMs = 30;          ///< timer period of the t animation
-constexpr int kPanelMs = 100;             ///< exact panel refresh period while dragging or playing
-constexpr double kAnimationStep = 0.004;  ///< t per tick: one sweep of [0, 1] in about 7.5 s
-constexpr long kExactTDenominator = 16;   ///< t = p/q with q ≤ 16 gives the triangle in fractions
+constexpr int kAnimationMs = 30;             ///< timer period of the t animation
+constexpr int kPanelMs = 100;                ///< exact panel refresh period while dragging or playing
+constexpr double kAnimationStep = 0.004;     ///< t per tick: one sweep of [0, 1] in about 7.5 s
+constexpr long kExactTDenominator = 16;      ///< t = p/q with q ≤ 16 gives the triangle in fractions
 constexpr long kMaxShownDenominator = 10000; ///< larger denominators: the triangle at t in decimals
-constexpr int kLevelsPerTable = 3;        ///< symbolic table columns per block, as the thesis prints them
+constexpr int kLevelsPerTable = 3;           ///< symbolic table columns per block, as the thesis prints them
 constexpr int kNumericLevelsPerTable = 5;
 
-constexpr int kCombSamples = 160;        ///< teeth of the curvature comb
-constexpr int kHodographSamples = 120;    ///< the hodograph's curve in its inset
-constexpr int kCircleSegments = 96;       ///< the osculating circle as a polygon (TikZ)
+constexpr int kCombSamples = 160;                    ///< teeth of the curvature comb
+constexpr int kHodographSamples = 120;               ///< the hodograph's curve in its inset
+constexpr int kCircleSegments = 96;                  ///< the osculating circle as a polygon (TikZ)
 constexpr long kExactCurvatureDenominator = 1000000; ///< κ in fractions while they stay this small
 
 const QColor kTangentColour(0x6a, 0x3d, 0x9a);
@@ -80,7 +80,6 @@ const QColor kCuspColour(0xc0, 0x20, 0x20);
 
 /// Ex 2.2-like default: a cubic with four points.
 std::vector<Point> defaultPoints() { return {{0, 0}, {1, 2}, {3, 2}, {4, 0}}; }
-
 
 
 /// Whether every level P_i^r(t) and c′(t) fits in a double (Def 2.4): control points
@@ -103,10 +102,7 @@ template <class P> QString joinPoints(const std::vector<P>& points)
 }
 
 /// P_i^r(t) as HTML.
-QString levelName(const QString& i, const QString& r)
-{
-    return QStringLiteral("P<sub>%1</sub><sup>%2</sup>(t)").arg(i, r);
-}
+QString levelName(const QString& i, const QString& r) { return QStringLiteral("P<sub>%1</sub><sup>%2</sup>(t)").arg(i, r); }
 
 /// A polynomial pair in one unbroken line (the panel scrolls sideways instead).
 QString unbrokenPolynomial(const std::string& text)
@@ -189,8 +185,7 @@ std::optional<bool> optionalBool(const QJsonObject& state, const char* key, bool
 
 } // namespace
 
-DeCasteljauTab::DeCasteljauTab(QWidget* parent)
-    : CurveTab(QStringLiteral("decasteljau"), QT_TR_NOOP("De Casteljau"), parent)
+DeCasteljauTab::DeCasteljauTab(QWidget* parent) : CurveTab(QStringLiteral("decasteljau"), QT_TR_NOOP("De Casteljau"), parent)
 {
     buildLayers(); // under the handles: the editor adds its own layer on top
     m_editor = new PointEditor(m_canvas, m_undo, this);
@@ -321,10 +316,8 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent)
     connect(m_raise, &QPushButton::clicked, this, &DeCasteljauTab::raiseDegree);
     connect(m_construction, &QCheckBox::toggled, this,
             [this](bool on) { userToggled(m_showConstruction, m_construction, on, tr("Construction")); });
-    connect(m_steps, &QCheckBox::toggled, this,
-            [this](bool on) { userToggled(m_showSteps, m_steps, on, tr("Step by step")); });
-    connect(m_tangent, &QCheckBox::toggled, this,
-            [this](bool on) { userToggled(m_showTangent, m_tangent, on, tr("Tangent")); });
+    connect(m_steps, &QCheckBox::toggled, this, [this](bool on) { userToggled(m_showSteps, m_steps, on, tr("Step by step")); });
+    connect(m_tangent, &QCheckBox::toggled, this, [this](bool on) { userToggled(m_showTangent, m_tangent, on, tr("Tangent")); });
     connect(m_split, &QCheckBox::toggled, this, [this](bool on) { userToggled(m_showSplit, m_split, on, tr("Split at t")); });
     connect(m_normal, &QCheckBox::toggled, this, [this](bool on) { userToggled(m_showNormal, m_normal, on, tr("Normal")); });
     connect(m_osculating, &QCheckBox::toggled, this,
@@ -566,14 +559,16 @@ CanvasLegend DeCasteljauTab::legend() const
     const auto lines = [&legend](int first, int last, const std::function<QString(int)>& text) {
         for (int r = first; r <= last; ++r) {
             if (r - first == kMaxLegendLines - 1 && r < last) {
-                legend.entries.push_back({CanvasStyle::series(r), Qt::DotLine, tr("… %1 more, one colour each").arg(last - r + 1)});
+                legend.entries.push_back(
+                    {CanvasStyle::series(r), Qt::DotLine, tr("… %1 more, one colour each").arg(last - r + 1)});
                 return;
             }
             legend.entries.push_back({CanvasStyle::series(r), Qt::SolidLine, text(r)});
         }
     };
     if (m_showConstruction && n >= 2)
-        lines(1, n - 1, [](int r) { return tr("level %1: the points %2(t)").arg(r).arg(QStringLiteral("Pᵢ") + superscriptDigits(r)); });
+        lines(1, n - 1,
+              [](int r) { return tr("level %1: the points %2(t)").arg(r).arg(QStringLiteral("Pᵢ") + superscriptDigits(r)); });
     if (m_showSteps && !m_stepCurves.empty())
         lines(0, static_cast<int>(m_stepCurves.size()) - 1,
               [](int k) { return k == 0 ? tr("the point P₀ alone") : tr("the curve of P₀…P%1").arg(subscriptDigits(k)); });
@@ -584,27 +579,26 @@ CanvasLegend DeCasteljauTab::legend() const
     if (m_showTangent && n >= 1)
         legend.entries.push_back({kTangentColour, Qt::SolidLine, n == 1 ? tr("tangent c′(t)") : tr("tangent c′(t)/%1").arg(n)});
     if (m_showNormal && n >= 1)
-        legend.entries.push_back(m_curvature.normal
-                                     ? CanvasLegendEntry{kNormalColour, Qt::SolidLine, tr("unit normal N(t)")}
-                                     : CanvasLegendEntry{kNormalColour, Qt::NoPen, tr("no normal: c′(t) = 0")});
+        legend.entries.push_back(m_curvature.normal ? CanvasLegendEntry{kNormalColour, Qt::SolidLine, tr("unit normal N(t)")}
+                                                    : CanvasLegendEntry{kNormalColour, Qt::NoPen, tr("no normal: c′(t) = 0")});
     if (m_showOsculating && n >= 1) {
         if (m_curvature.radius)
-            legend.entries.push_back({kCircleColour, Qt::SolidLine,
-                                      tr("osculating circle, r = 1/|κ| = %1").arg(panelNumber(*m_curvature.radius))});
+            legend.entries.push_back(
+                {kCircleColour, Qt::SolidLine, tr("osculating circle, r = 1/|κ| = %1").arg(panelNumber(*m_curvature.radius))});
         else if (m_curvature.curvature)
             legend.entries.push_back({kCircleColour, Qt::NoPen, tr("no osculating circle: κ(t) = 0")});
         else
             legend.entries.push_back({kCircleColour, Qt::NoPen, tr("no osculating circle: κ undefined")});
     }
     if (m_showComb && n >= 1 && !m_comb.empty())
-        legend.entries.push_back({curvatureCombColor(), Qt::SolidLine,
-                                  tr("curvature comb: teeth |κ| × %1").arg(panelNumber(m_comb.scale))});
+        legend.entries.push_back(
+            {curvatureCombColor(), Qt::SolidLine, tr("curvature comb: teeth |κ| × %1").arg(panelNumber(m_comb.scale))});
     if (m_showBox && n >= 0)
-        legend.entries.push_back({kBoxColour, Qt::DashDotLine,
-                                  tr("bounding box, ◆ extrema of x and y")});
+        legend.entries.push_back({kBoxColour, Qt::DashDotLine, tr("bounding box, ◆ extrema of x and y")});
     if (m_showFeatures && n >= 1) {
-        legend.entries.push_back({kInflectionColour, Qt::SolidLine,
-                                  tr("○ inflections: %1 · × cusps: %2").arg(m_features.inflections.size()).arg(m_features.cusps.size())});
+        legend.entries.push_back(
+            {kInflectionColour, Qt::SolidLine,
+             tr("○ inflections: %1 · × cusps: %2").arg(m_features.inflections.size()).arg(m_features.cusps.size())});
     }
     return legend;
 }
@@ -638,8 +632,9 @@ CanvasLegendBox DeCasteljauTab::legendBox(const ViewTransform& view, const Canva
     if (!m_levels.levels.empty()) {
         // c(t)'s label is below right of its dot.
         const QPointF s = view.toScreen(m_levels.point());
-        avoid.keepClear.push_back(QRectF(s - QPointF(r, r), QSizeF(2 * r + 4 * style.scale + fm.horizontalAdvance(QStringLiteral("c(t)")),
-                                                                 2 * r + 12 * style.scale)));
+        avoid.keepClear.push_back(
+            QRectF(s - QPointF(r, r),
+                   QSizeF(2 * r + 4 * style.scale + fm.horizontalAdvance(QStringLiteral("c(t)")), 2 * r + 12 * style.scale)));
     }
     if (const QRectF inset = hodographInset(view.viewport(), style); !inset.isEmpty())
         avoid.keepClear.push_back(inset);
@@ -796,9 +791,10 @@ void DeCasteljauTab::pointsChanged()
         const double n = static_cast<double>(points.size());
         const int part = std::min(m_samples, std::max(kMinStepSamples, static_cast<int>(kStepBudget * 6.0 / (n * n * n))));
         for (std::size_t k = 1; k <= points.size(); ++k)
-            m_stepCurves.push_back(k == 1 ? std::vector<Point>{points[0]}
-                                          : sampleBezier(std::vector<Point>(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(k)),
-                                                         part + 1));
+            m_stepCurves.push_back(
+                k == 1 ? std::vector<Point>{points[0]}
+                       : sampleBezier(std::vector<Point>(points.begin(), points.begin() + static_cast<std::ptrdiff_t>(k)),
+                                      part + 1));
     }
     m_levels = deCasteljau(points, m_t);
     updateGeometry();
@@ -887,8 +883,8 @@ void DeCasteljauTab::pushT(double before, double after, int mergeId, const QStri
         setT(v);
         emit documentChanged();
     };
-    m_undo->push(new ValueCommand<double>(apply, before, after, undoText, mergeId,
-                                          {/*dropWhenUnchanged=*/true, /*appliedAlready=*/true}));
+    m_undo->push(
+        new ValueCommand<double>(apply, before, after, undoText, mergeId, {/*dropWhenUnchanged=*/true, /*appliedAlready=*/true}));
     emit documentChanged();
 }
 
@@ -925,8 +921,8 @@ void DeCasteljauTab::userSetSamples(int part)
         emit documentChanged();
     };
     constexpr int kSamplesMergeId = 0x44430001; // "DC": a spin box held down is one step
-    m_undo->push(new ValueCommand<int>(apply, before, m_samples, tr("Samples: %1").arg(m_samples), kSamplesMergeId,
-                                       {true, true}));
+    m_undo->push(
+        new ValueCommand<int>(apply, before, m_samples, tr("Samples: %1").arg(m_samples), kSamplesMergeId, {true, true}));
     emit documentChanged();
 }
 
@@ -1057,7 +1053,9 @@ void DeCasteljauTab::updateExactSymbolic()
     for (const RPoint& p : *exact)
         symbolic.emplace_back(RPoly(p.x), RPoly(p.y));
     const auto table = deCasteljau(symbolic, RPoly::identity());
-    QString html = QStringLiteral("<h3>%1</h3>").arg(tr("The levels %1 in powers of t (Def 2.4)").arg(levelName(QStringLiteral("i"), QStringLiteral("r"))));
+    QString html = QStringLiteral("<h3>%1</h3>")
+                       .arg(
+                           tr("The levels %1 in powers of t (Def 2.4)").arg(levelName(QStringLiteral("i"), QStringLiteral("r"))));
     if (n >= 1)
         html += triangleHtml(n, n - 1, kLevelsPerTable, [&table](int r, int i) {
             return unbrokenPolynomial(toText(table.levels[static_cast<std::size_t>(r)][static_cast<std::size_t>(i)]));
@@ -1090,15 +1088,18 @@ void DeCasteljauTab::updateExactPanel()
     if (exactTable) {
         // Rational points at a rational t: the triangle in fractions.
         const auto& table = *exactTable;
-        html += ExactPanel::heading(tr("De Casteljau's triangle at t = %1 (Def 2.4)").arg(QString::fromStdString(toString(*exactT))));
+        html += ExactPanel::heading(
+            tr("De Casteljau's triangle at t = %1 (Def 2.4)").arg(QString::fromStdString(toString(*exactT))));
         html += triangleHtml(n, n, kNumericLevelsPerTable, [&table](int r, int i) {
             return panelPointText(table.levels[static_cast<std::size_t>(r)][static_cast<std::size_t>(i)]);
         });
         html += QStringLiteral("<p>c(t) = %1 = %2<br>c′(t) = %3</p>")
-                    .arg(levelName(QStringLiteral("0"), QString::number(n)), panelPointText(table.point()), panelPointText(table.tangent()));
+                    .arg(levelName(QStringLiteral("0"), QString::number(n)), panelPointText(table.point()),
+                         panelPointText(table.tangent()));
         if (m_showSplit)
-            html += QStringLiteral("<p>%1</p>").arg(tr("Split at t: [0, t] has control points %1; [t, 1] has %2.")
-                                                        .arg(joinPoints(table.leftHalf()), joinPoints(table.rightHalf())));
+            html += QStringLiteral("<p>%1</p>")
+                        .arg(tr("Split at t: [0, t] has control points %1; [t, 1] has %2.")
+                                 .arg(joinPoints(table.leftHalf()), joinPoints(table.rightHalf())));
     } else {
         const QString tText = exactT ? QString::fromStdString(toString(*exactT)) : panelNumber(m_t);
         html += ExactPanel::heading(tr("De Casteljau's triangle at t = %1 (Def 2.4)").arg(tText));
@@ -1115,12 +1116,15 @@ void DeCasteljauTab::updateExactPanel()
                 return panelPointText(m_levels.levels[static_cast<std::size_t>(r)][static_cast<std::size_t>(i)]);
             });
         else
-            html += ExactPanel::note(tr("The triangle is shown up to degree %1; this curve has degree %2.").arg(kMaxTableDegree).arg(n));
+            html += ExactPanel::note(
+                tr("The triangle is shown up to degree %1; this curve has degree %2.").arg(kMaxTableDegree).arg(n));
         html += QStringLiteral("<p>c(t) = %1 = %2<br>c′(t) = %3</p>")
-                    .arg(levelName(QStringLiteral("0"), QString::number(n)), panelPointText(m_levels.point()), panelPointText(m_levels.tangent()));
+                    .arg(levelName(QStringLiteral("0"), QString::number(n)), panelPointText(m_levels.point()),
+                         panelPointText(m_levels.tangent()));
         if (m_showSplit && n <= kMaxTableDegree)
-            html += QStringLiteral("<p>%1</p>").arg(tr("Split at t: [0, t] has control points %1; [t, 1] has %2.")
-                                                        .arg(joinPoints(m_levels.leftHalf()), joinPoints(m_levels.rightHalf())));
+            html += QStringLiteral("<p>%1</p>")
+                        .arg(tr("Split at t: [0, t] has control points %1; [t, 1] has %2.")
+                                 .arg(joinPoints(m_levels.leftHalf()), joinPoints(m_levels.rightHalf())));
     }
     html += exactCurvatureHtml();
     html += m_symbolicHtml;
@@ -1188,10 +1192,10 @@ void DeCasteljauTab::updateCanvasSummary()
         return;
     }
     const Point c = m_levels.point();
-    m_canvas->setAccessibleDescription(tr("Bézier curve of degree %1 with %n control point(s); t = %2, c(t) = %3.",
-                                          nullptr, static_cast<int>(points.size()))
-                                           .arg(static_cast<int>(points.size()) - 1)
-                                           .arg(displayNumber(m_t), displayPoint(c.x, c.y)));
+    m_canvas->setAccessibleDescription(
+        tr("Bézier curve of degree %1 with %n control point(s); t = %2, c(t) = %3.", nullptr, static_cast<int>(points.size()))
+            .arg(static_cast<int>(points.size()) - 1)
+            .arg(displayNumber(m_t), displayPoint(c.x, c.y)));
 }
 
 void DeCasteljauTab::retranslate()
@@ -1201,9 +1205,9 @@ void DeCasteljauTab::retranslate()
     setPlaying(isPlaying()); // the button's text
     m_play->setToolTip(tr("Animate t from 0 to 1 and around again: watch c(t) trace the curve (Def 2.4)."));
     m_samplesLabel->setText(tr("Samples:"));
-    const QString samplesTip =
-        tr("Sampling precision: the curve is drawn through this many intervals of t, like part in the thesis's Matlab "
-           "De_Casteljau(P, part).");
+    const QString samplesTip = tr(
+        "Sampling precision: the curve is drawn through this many intervals of t, like part in the thesis's Matlab "
+        "De_Casteljau(P, part).");
     m_samplesLabel->setToolTip(samplesTip);
     m_samplesBox->setToolTip(samplesTip);
     m_raise->setText(tr("Raise degree"));
@@ -1251,9 +1255,10 @@ void DeCasteljauTab::retranslate()
     m_snap->setText(tr("Snap to grid"));
     m_snap->setToolTip(tr("Round dragged and added points to the grid, so that they stay small fractions and the "
                           "exact tables appear."));
-    m_canvas->setToolTip(tr("Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add "
-                            "one on the nearest edge, Delete removes the selected one, arrows nudge it. Drag the curve "
-                            "itself to mold it, or mold it at t with Alt+arrows; near the curve its closest point and t are shown."));
+    m_canvas->setToolTip(
+        tr("Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add "
+           "one on the nearest edge, Delete removes the selected one, arrows nudge it. Drag the curve "
+           "itself to mold it, or mold it at t with Alt+arrows; near the curve its closest point and t are shown."));
     m_exact->setToolTip(tr("De Casteljau's triangle P_i^r(t) at the current t and, for rational points, every level "
                            "in powers of t, as in Ex 2.2 and Ex 2.3."));
     m_table->retranslate();
@@ -1286,9 +1291,7 @@ PointListMessages DeCasteljauTab::pointMessages() const
     PointListMessages say;
     say.notAList = tr("The De Casteljau points are missing or not a list.");
     say.badCount = [](int count) {
-        return tr("The De Casteljau tab needs between 1 and %1 control points; the document has %2.")
-            .arg(kMaxPoints)
-            .arg(count);
+        return tr("The De Casteljau tab needs between 1 and %1 control points; the document has %2.").arg(kMaxPoints).arg(count);
     };
     say.notAPair = [](int i) { return tr("Control point %1 is not a pair of finite numbers.").arg(i); };
     return say;
@@ -1350,12 +1353,11 @@ bool DeCasteljauTab::loadSettings(const QJsonObject& state, const std::vector<Po
     m_showFeatures = inflections.value_or(false);
     m_showHodograph = hodographShown.value_or(false);
     m_constantSpeed = speed.value_or(false);
-    for (auto [check, on] : {std::pair{m_construction, m_showConstruction}, std::pair{m_steps, m_showSteps},
-                             std::pair{m_tangent, m_showTangent}, std::pair{m_split, m_showSplit},
-                             std::pair{m_normal, m_showNormal}, std::pair{m_osculating, m_showOsculating},
-                             std::pair{m_combBox, m_showComb}, std::pair{m_box, m_showBox},
-                             std::pair{m_featuresBox, m_showFeatures}, std::pair{m_hodograph, m_showHodograph},
-                             std::pair{m_speed, m_constantSpeed}}) {
+    for (auto [check, on] :
+         {std::pair{m_construction, m_showConstruction}, std::pair{m_steps, m_showSteps}, std::pair{m_tangent, m_showTangent},
+          std::pair{m_split, m_showSplit}, std::pair{m_normal, m_showNormal}, std::pair{m_osculating, m_showOsculating},
+          std::pair{m_combBox, m_showComb}, std::pair{m_box, m_showBox}, std::pair{m_featuresBox, m_showFeatures},
+          std::pair{m_hodograph, m_showHodograph}, std::pair{m_speed, m_constantSpeed}}) {
         const QSignalBlocker block(check);
         check->setChecked(on);
     }
@@ -1405,8 +1407,9 @@ QString DeCasteljauTab::csv() const
     QString out = QStringLiteral("i,x,y\n");
     const auto& points = m_editor->points();
     for (std::size_t i = 0; i < points.size(); ++i)
-        out += QStringLiteral("%1,%2,%3\n").arg(i).arg(QString::fromStdString(formatDouble(points[i].x)),
-                                                       QString::fromStdString(formatDouble(points[i].y)));
+        out += QStringLiteral("%1,%2,%3\n")
+                   .arg(i)
+                   .arg(QString::fromStdString(formatDouble(points[i].x)), QString::fromStdString(formatDouble(points[i].y)));
     out += QStringLiteral("\nt,x,y\n");
     const double part = static_cast<double>(m_curve.size() > 1 ? m_curve.size() - 1 : 1);
     for (std::size_t j = 0; j < m_curve.size(); ++j)
@@ -1481,14 +1484,15 @@ void DeCasteljauTab::drawTikz(TikzWriter& w) const
     const QRectF content = contentBounds();
     const double contentSize = std::max(content.width(), content.height());
     // A nearly straight piece has a circle far larger than the picture: it would shrink it to nothing.
-    if (m_showOsculating && m_curvature.center && m_curvature.radius && isFinite(*m_curvature.center)
-        && *m_curvature.radius <= 4 * contentSize) {
+    if (m_showOsculating && m_curvature.center && m_curvature.radius && isFinite(*m_curvature.center) &&
+        *m_curvature.radius <= 4 * contentSize) {
         std::vector<Point> circle;
         for (int k = 0; k < kCircleSegments; ++k) {
             const double a = 2 * kPi * k / kCircleSegments;
             circle.push_back(*m_curvature.center + *m_curvature.radius * Point(std::cos(a), std::sin(a)));
         }
-        w.comment(QStringLiteral("osculating circle at t, radius %1").arg(QString::fromStdString(formatDouble(*m_curvature.radius))));
+        w.comment(
+            QStringLiteral("osculating circle at t, radius %1").arg(QString::fromStdString(formatDouble(*m_curvature.radius))));
         w.polyline(circle, kCircleColour, 0.8, false, true);
     }
     for (std::size_t i = 0; i < points.size(); ++i)
@@ -1503,7 +1507,8 @@ void DeCasteljauTab::drawTikz(TikzWriter& w) const
         w.beginInset(title);
         QStringList coordinates;
         for (const Point& q : H)
-            coordinates << QStringLiteral("(%1, %2)").arg(QString::fromStdString(formatDouble(q.x)), QString::fromStdString(formatDouble(q.y)));
+            coordinates << QStringLiteral("(%1, %2)")
+                               .arg(QString::fromStdString(formatDouble(q.x)), QString::fromStdString(formatDouble(q.y)));
         w.comment(QStringLiteral("hodograph: control points n (P_{i+1} - P_i) = %1").arg(coordinates.join(QStringLiteral(", "))));
         w.polyline(H, style.polygon, 0.4, true);
         w.polyline(m_hodoCurve, style.curve, 0.8);

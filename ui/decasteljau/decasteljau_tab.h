@@ -131,10 +131,10 @@ public:
     /// The warning shown for high degrees; empty when there is none.
     QString warning() const { return m_warningText; }
 
-    static constexpr int kMaxPoints = 200;       ///< docs/extreme-cases.md: the editor refuses more
-    static constexpr int kMaxExactDegree = 8;    ///< above, the symbolic P_i^r(t) would not be readable
-    static constexpr int kMaxTableDegree = 20;   ///< above, the numeric triangle is not shown either
-    static constexpr int kWarnDegree = 20;       ///< from here on, the conditioning warning
+    static constexpr int kMaxPoints = 200;     ///< docs/extreme-cases.md: the editor refuses more
+    static constexpr int kMaxExactDegree = 8;  ///< above, the symbolic P_i^r(t) would not be readable
+    static constexpr int kMaxTableDegree = 20; ///< above, the numeric triangle is not shown either
+    static constexpr int kWarnDegree = 20;     ///< from here on, the conditioning warning
 
 signals:
     void tChanged(double t);
@@ -233,7 +233,7 @@ private:
     std::optional<ArcLengthParametrization> m_arc;
     std::vector<Point> m_hodoCurve;        ///< the hodograph sampled (while it is shown)
     DeCasteljauTable<double> m_hodoLevels; ///< its construction at t
-    QString m_symbolicHtml; ///< the exact P_i^r(t) in powers of t (depends on the points only)
+    QString m_symbolicHtml;                ///< the exact P_i^r(t) in powers of t (depends on the points only)
     QString m_warningText;
 };
 

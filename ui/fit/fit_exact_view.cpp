@@ -58,8 +58,8 @@ bool isThesisData(const std::optional<std::vector<RPoint>>& rational)
 
 QString curveHtml(const std::string& x, const std::string& y)
 {
-    return line(QStringLiteral("x(t) = ") + ExactPanel::polynomialHtml(x))
-           + line(QStringLiteral("y(t) = ") + ExactPanel::polynomialHtml(y));
+    return line(QStringLiteral("x(t) = ") + ExactPanel::polynomialHtml(x)) +
+           line(QStringLiteral("y(t) = ") + ExactPanel::polynomialHtml(y));
 }
 
 } // namespace
@@ -86,16 +86,18 @@ QString FitExactView::html(const Input& in)
             const double approx = norm(b - a);
             const QString value = d[j] ? QString::fromStdString(toString(*d[j])) : decimal(approx);
             const bool isRational = d[j] && d[j]->radicand == 1;
-            html += line(isRational ? QStringLiteral("%1 = %2").arg(ExactPanel::subscripted(QStringLiteral("d"), static_cast<int>(j) + 1), value)
-                                    : QStringLiteral("%1 = %2 ≈ %3")
-                                          .arg(ExactPanel::subscripted(QStringLiteral("d"), static_cast<int>(j) + 1), value, decimal(approx)));
+            html += line(
+                isRational
+                    ? QStringLiteral("%1 = %2").arg(ExactPanel::subscripted(QStringLiteral("d"), static_cast<int>(j) + 1), value)
+                    : QStringLiteral("%1 = %2 ≈ %3")
+                          .arg(ExactPanel::subscripted(QStringLiteral("d"), static_cast<int>(j) + 1), value, decimal(approx)));
         }
         if (thesisData && in.parametrization == Parametrization::ChordLength)
             html += ExactPanel::note(tr("The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has "
                                         "x = 8, so d_4 = √(49 + 49) = 7√2, which is used here."));
         if (in.parametrization == Parametrization::Centripetal)
-            html += QStringLiteral("<p>%1</p>").arg(tr("Centripetal parameters (beyond the thesis) use √d_i instead of d_i.")
-                                                        .toHtmlEscaped());
+            html += QStringLiteral("<p>%1</p>")
+                        .arg(tr("Centripetal parameters (beyond the thesis) use √d_i instead of d_i.").toHtmlEscaped());
     }
 
     if (!in.fit)
@@ -149,7 +151,8 @@ QString FitExactView::html(const Input& in)
         for (int j = 0; j < exact->P.rows(); ++j) {
             P.emplace_back(exact->P(j, 0), exact->P(j, 1));
             html += line(QStringLiteral("%1 = (%2, %3)")
-                             .arg(ExactPanel::subscripted(QStringLiteral("P"), j), QString::fromStdString(toString(exact->P(j, 0))),
+                             .arg(ExactPanel::subscripted(QStringLiteral("P"), j),
+                                  QString::fromStdString(toString(exact->P(j, 0))),
                                   QString::fromStdString(toString(exact->P(j, 1)))));
         }
         html += ExactPanel::heading(tr("Fitted curve α(t) = Σ Bⱼⁿ(t) Pⱼ"));
@@ -174,7 +177,8 @@ QString FitExactView::html(const Input& in)
         html += ExactPanel::heading(tr("Parameters t_i"));
         QStringList ts;
         for (std::size_t i = 0; i < fit.params.size(); ++i)
-            ts << QStringLiteral("%1 = %2").arg(ExactPanel::subscripted(QStringLiteral("t"), static_cast<int>(i)), decimal(fit.params[i]));
+            ts << QStringLiteral("%1 = %2").arg(ExactPanel::subscripted(QStringLiteral("t"), static_cast<int>(i)),
+                                                decimal(fit.params[i]));
         html += QStringLiteral("<p>%1</p>").arg(ts.join(QStringLiteral(", ")));
     }
     if (in.showMatrices) {
@@ -204,19 +208,20 @@ QString FitExactView::html(const Input& in)
     }
     html += ExactPanel::heading(tr("Control points P"));
     for (std::size_t j = 0; j < fit.controlPoints.size(); ++j)
-        html += line(QStringLiteral("%1 = %2")
-                         .arg(ExactPanel::subscripted(QStringLiteral("P"), static_cast<int>(j)),
-                              displayPair(decimal(fit.controlPoints[j].x), decimal(fit.controlPoints[j].y))));
+        html += line(
+            QStringLiteral("%1 = %2").arg(ExactPanel::subscripted(QStringLiteral("P"), static_cast<int>(j)),
+                                          displayPair(decimal(fit.controlPoints[j].x), decimal(fit.controlPoints[j].y))));
     constexpr int kMaxPowerDegree = 12;
     if (n <= kMaxPowerDegree) {
         html += ExactPanel::heading(tr("Fitted curve α(t) = Σ Bⱼⁿ(t) Pⱼ"));
         const Vec2<Polynomial<double>> alpha = bezierToPowerBasis(fit.controlPoints);
         html += curveHtml(toText(rounded(alpha.x)), toText(rounded(alpha.y)));
     } else {
-        html += QStringLiteral("<p>%1</p>").arg(tr("α(t) in powers of t is not shown beyond degree %1: its coefficients "
-                                                   "grow like C(n, k) and cancel each other.")
-                                                    .arg(kMaxPowerDegree)
-                                                    .toHtmlEscaped());
+        html += QStringLiteral("<p>%1</p>")
+                    .arg(tr("α(t) in powers of t is not shown beyond degree %1: its coefficients "
+                            "grow like C(n, k) and cancel each other.")
+                             .arg(kMaxPowerDegree)
+                             .toHtmlEscaped());
     }
     return html;
 }

@@ -34,7 +34,7 @@ public:
         int degree = 0;                             ///< the degree actually fitted
         Parametrization parametrization = Parametrization::Uniform;
         bool correctParameters = false;
-        const FitResult* fit = nullptr;             ///< nullptr when the fit failed
+        const FitResult* fit = nullptr; ///< nullptr when the fit failed
         bool showMatrices = false;
         /// The most estimated work of the exact fit (core/exact/exact_cost.h); beyond it the
         /// results are shown in decimals with a note. Always kMaxExactWork in the tab.

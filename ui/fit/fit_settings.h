@@ -10,16 +10,16 @@
 namespace granota::ui {
 
 struct FitSettings {
-    int degree = 2;                                            ///< n (the fit uses min(n, k))
+    int degree = 2;                                             ///< n (the fit uses min(n, k))
     Parametrization parametrization = Parametrization::Uniform; ///< how the t_i are chosen (§2.1.3)
-    LeastSquaresSolver solver = LeastSquaresSolver::Qr;        ///< how MP = Q is solved
-    bool correctParameters = false;                            ///< iterative parameter correction (beyond the thesis)
-    int iterations = 10;                                       ///< at most this many corrections
+    LeastSquaresSolver solver = LeastSquaresSolver::Qr;         ///< how MP = Q is solved
+    bool correctParameters = false;                             ///< iterative parameter correction (beyond the thesis)
+    int iterations = 10;                                        ///< at most this many corrections
 
     friend bool operator==(const FitSettings& a, const FitSettings& b)
     {
-        return a.degree == b.degree && a.parametrization == b.parametrization && a.solver == b.solver
-               && a.correctParameters == b.correctParameters && a.iterations == b.iterations;
+        return a.degree == b.degree && a.parametrization == b.parametrization && a.solver == b.solver &&
+               a.correctParameters == b.correctParameters && a.iterations == b.iterations;
     }
     friend bool operator!=(const FitSettings& a, const FitSettings& b) { return !(a == b); }
 };

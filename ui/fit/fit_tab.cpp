@@ -53,10 +53,10 @@ namespace granota::ui {
 
 namespace {
 
-constexpr int kCurveSamples = 400;         ///< De Casteljau samples of the fitted curve
-constexpr std::size_t kDrawLimit = 5000;   ///< beyond this many points, residuals are drawn decimated
-constexpr int kMaxLabelledControls = 30;   ///< control points labelled P0… up to this degree
-constexpr int kMaxDegree = kMaxFitDegree;  ///< the core's limit
+constexpr int kCurveSamples = 400;        ///< De Casteljau samples of the fitted curve
+constexpr std::size_t kDrawLimit = 5000;  ///< beyond this many points, residuals are drawn decimated
+constexpr int kMaxLabelledControls = 30;  ///< control points labelled P0… up to this degree
+constexpr int kMaxDegree = kMaxFitDegree; ///< the core's limit
 constexpr int kMaxIterations = 1000;
 /// Undo-merge fields of the settings' ValueCommand (changes of the same field merge).
 enum Field { DegreeField, ParametrizationField, SolverField, CorrectionField };
@@ -482,8 +482,9 @@ void FitTab::retranslate()
     m_import->setToolTip(tr("Read the data points Q_i from a CSV file (one “x,y” per line) or a JSON list [[x,y],…]."));
     m_showMatrices->setText(tr("Show &matrices"));
     m_combBox->setText(tr("Curvature com&b"));
-    m_combBox->setToolTip(tr("The curvature comb of the fitted curve (beyond the thesis): teeth along the normal as long "
-                             "as |κ| times the scale in the key, and the line through their tips; where the comb wiggles, so does the fit."));
+    m_combBox->setToolTip(
+        tr("The curvature comb of the fitted curve (beyond the thesis): teeth along the normal as long "
+           "as |κ| times the scale in the key, and the line through their tips; where the comb wiggles, so does the fit."));
     m_combScaleBox->retranslate();
     m_showMatrices->setToolTip(tr("Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Note 2.2), in fractions "
                                   "when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8."));
@@ -511,8 +512,7 @@ void FitTab::retranslate()
 QString FitTab::errorText(const Error& error) const
 {
     switch (error.code) {
-    case ErrorCode::TooFewPoints:
-        return tr("A least-squares fit needs at least 2 data points.");
+    case ErrorCode::TooFewPoints: return tr("A least-squares fit needs at least 2 data points.");
     case ErrorCode::DegreeTooHigh:
         return tr("Degree %1 needs at least %2 data points.").arg(fittedDegree()).arg(fittedDegree() + 1);
     case ErrorCode::Singular:
@@ -520,11 +520,9 @@ QString FitTab::errorText(const Error& error) const
                    ? tr("The normal equations MᵀM P = MᵀQ cannot be solved here: MᵀM is numerically singular "
                         "(coincident points, or cond₂(MᵀM) = cond₂(M)² beyond 10^16). Choose QR or SVD.")
                    : tr("The least-squares system has no usable solution here.");
-    case ErrorCode::OutOfRange:
-        return tr("The fitted curve does not fit in double precision: lower the degree.");
+    case ErrorCode::OutOfRange: return tr("The fitted curve does not fit in double precision: lower the degree.");
     case ErrorCode::InvalidInput:
-    default:
-        return tr("A data point is not a finite number.");
+    default: return tr("A data point is not a finite number.");
     }
 }
 
@@ -556,8 +554,8 @@ void FitTab::changeSettings(const FitSettings& after, const QString& undoText, i
     if (after == m_settings)
         return;
     const int mergeId = field < 0 ? -1 : kFieldMergeIdBase + field;
-    m_undo->push(new ValueCommand<FitSettings>([this](const FitSettings& s) { applySettings(s); }, m_settings, after,
-                                               undoText, mergeId, {/*dropWhenUnchanged=*/true}));
+    m_undo->push(new ValueCommand<FitSettings>([this](const FitSettings& s) { applySettings(s); }, m_settings, after, undoText,
+                                               mergeId, {/*dropWhenUnchanged=*/true}));
 }
 
 void FitTab::applySettings(const FitSettings& s)
@@ -692,7 +690,8 @@ void FitTab::updateReadouts()
         case FitWarningCode::HighDegree:
             warnings << tr("⚠ High degree n = %1: the Bernstein basis grows ill-conditioned (cond₂(M) ≈ %2); a "
                            "lower degree or a spline is usually the better model.")
-                            .arg(w.degree).arg(fittedValueText(w.cond));
+                            .arg(w.degree)
+                            .arg(fittedValueText(w.cond));
             break;
         case FitWarningCode::NormalEquationsSquare:
             warnings << tr("⚠ The normal equations square the condition number: cond₂(MᵀM) ≈ %1, so about %2 of "
@@ -723,8 +722,7 @@ void FitTab::updateReadouts()
             break;
         case FitWarningCode::CoincidentFallback:
         case FitWarningCode::CorrectionStopped:
-        case FitWarningCode::RankDeficient:
-            break; // fitBezier's notes for the CLI; fitWarnings() does not list them
+        case FitWarningCode::RankDeficient: break; // fitBezier's notes for the CLI; fitWarnings() does not list them
         }
     }
     m_warningLabel->setText(warnings.join(QLatin1Char('\n')));
@@ -776,10 +774,11 @@ void FitTab::updatePlot()
     // Where the plot stops short of the highest degree allowed, it says why, on the plot.
     m_plotNote.clear();
     if (!errors.empty() && errors.back().degree < highest)
-        m_plotNote = tr("Plotted up to n = %1 of %2:\nrefitting every degree for %3 points\non each change would slow the window.")
-                         .arg(errors.back().degree)
-                         .arg(highest)
-                         .arg(q.size());
+        m_plotNote =
+            tr("Plotted up to n = %1 of %2:\nrefitting every degree for %3 points\non each change would slow the window.")
+                .arg(errors.back().degree)
+                .arg(highest)
+                .arg(q.size());
     m_plotText->setText(m_plotNote);
     m_plotText->setVisible(!m_plotNote.isEmpty());
     m_plot->replot(QCustomPlot::rpQueuedReplot); // not now: a synchronous repaint would flush the canvas too
@@ -863,7 +862,8 @@ bool FitTab::importFile(const QString& path, QString* error)
     if (!bytes)
         return false;
     QApplication::setOverrideCursor(Qt::WaitCursor);
-    const Expected<std::vector<RPoint>> parsed = parsePointFile(std::string_view(bytes->constData(), static_cast<std::size_t>(bytes->size())));
+    const Expected<std::vector<RPoint>> parsed = parsePointFile(
+        std::string_view(bytes->constData(), static_cast<std::size_t>(bytes->size())));
     QApplication::restoreOverrideCursor();
     if (!parsed) {
         *error = tr("“%1” holds no valid data points, nothing was changed: %2")
@@ -986,9 +986,8 @@ bool FitTab::loadSettings(const QJsonObject& state, const std::vector<Point>& po
         return false;
     }
     const QJsonValue combScale = state.value(QStringLiteral("curvatureCombScale")); // older documents: automatic
-    if (!combScale.isUndefined()
-        && (!combScale.isDouble() || !std::isfinite(combScale.toDouble()) || combScale.toDouble() < 0
-            || combScale.toDouble() > CurvatureCombScaleBox::kMaxScale)) {
+    if (!combScale.isUndefined() && (!combScale.isDouble() || !std::isfinite(combScale.toDouble()) || combScale.toDouble() < 0 ||
+                                     combScale.toDouble() > CurvatureCombScaleBox::kMaxScale)) {
         error = tr("“curvatureCombScale” must be 0 (automatic) or a positive number up to %1.")
                     .arg(displayNumber(CurvatureCombScaleBox::kMaxScale));
         return false;
@@ -1025,8 +1024,7 @@ QString FitTab::csv() const
         if (fitted) {
             const Point r = m_fit->residuals[i];
             const Point a = q[i] - r;
-            out += QStringLiteral(",%1,%2,%3,%4,%5")
-                       .arg(f(m_fit->params[i]), f(a.x), f(a.y), f(r.x), f(r.y));
+            out += QStringLiteral(",%1,%2,%3,%4,%5").arg(f(m_fit->params[i]), f(a.x), f(a.y), f(r.x), f(r.y));
         } else {
             out += QStringLiteral(",,,,,");
         }
@@ -1051,7 +1049,8 @@ void FitTab::drawTikz(TikzWriter& tikz) const
     if (m_fit) {
         tikz.polyline(m_fit->controlPoints, style.polygon, 0.6, true);
         if (m_combBox->isChecked()) {
-            tikz.comment(QStringLiteral("curvature comb: teeth |kappa| x %1").arg(QString::fromStdString(formatDouble(m_comb.scale))));
+            tikz.comment(
+                QStringLiteral("curvature comb: teeth |kappa| x %1").arg(QString::fromStdString(formatDouble(m_comb.scale))));
             for (const auto& tooth : m_comb.teeth)
                 tikz.polyline({tooth.base, tooth.tip}, curvatureCombColor(), 0.3);
             for (const auto& stretch : m_comb.outline)
@@ -1060,8 +1059,7 @@ void FitTab::drawTikz(TikzWriter& tikz) const
         tikz.polyline(m_curve, style.curve, 1.2);
         for (std::size_t j = 0; j < m_fit->controlPoints.size(); ++j)
             tikz.point(m_fit->controlPoints[j], style.curve,
-                       m_fit->controlPoints.size() <= kMaxLabelledControls + 1 ? QStringLiteral("P_{%1}").arg(j)
-                                                                              : QString());
+                       m_fit->controlPoints.size() <= kMaxLabelledControls + 1 ? QStringLiteral("P_{%1}").arg(j) : QString());
     }
     const std::size_t stride = strideFor(q.size(), 2000);
     for (std::size_t i = 0; i < q.size(); i += stride)
@@ -1096,7 +1094,7 @@ void FitTab::presentationChanged(bool on)
 QString FitTab::hint() const
 {
     return tr("Drag a data point Q_i and the curve is refitted; double-click adds a point, Delete "
-                          "removes it.");
+              "removes it.");
 }
 
 } // namespace granota::ui

@@ -131,7 +131,7 @@ private:
     QCheckBox* m_combBox = nullptr;
     CurvatureCombScaleBox* m_combScaleBox = nullptr;
     double m_combScale = 0; ///< 0: automatic
-    CurvatureComb m_comb; ///< of the fitted curve, while the comb is shown
+    CurvatureComb m_comb;   ///< of the fitted curve, while the comb is shown
     void updateComb();
 
     QGroupBox* m_readoutGroup = nullptr;
@@ -146,10 +146,10 @@ private:
     FitSettings m_settings;
     std::optional<FitResult> m_fit;
     QString m_fitError;
-    std::vector<Point> m_curve;       ///< the fitted curve, sampled by De Casteljau
-    int m_lastFittedDegree = -1;      ///< to say when too few points lower the degree
+    std::vector<Point> m_curve;  ///< the fitted curve, sampled by De Casteljau
+    int m_lastFittedDegree = -1; ///< to say when too few points lower the degree
     bool m_updatingControls = false;
-    bool m_loading = false;           ///< examples and documents: no "degree lowered" message
+    bool m_loading = false; ///< examples and documents: no "degree lowered" message
 };
 
 } // namespace granota::ui

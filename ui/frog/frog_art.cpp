@@ -158,7 +158,8 @@ void FrogArt::paintBackground(QPainter& p, double W, double H) const
     p.setBrush(Qt::NoBrush);
     QPen ripple(QColor(255, 255, 255, 90), std::max(1.0, Y(0.003)), Qt::SolidLine, Qt::RoundCap);
     p.setPen(ripple);
-    for (const auto& r : {QPointF(0.12, 0.70), QPointF(0.42, 0.76), QPointF(0.80, 0.68), QPointF(0.63, 0.86), QPointF(0.25, 0.90)}) {
+    for (const auto& r :
+         {QPointF(0.12, 0.70), QPointF(0.42, 0.76), QPointF(0.80, 0.68), QPointF(0.63, 0.86), QPointF(0.25, 0.90)}) {
         const QRectF box(X(r.x()) - X(0.05), Y(r.y()) - Y(0.008), X(0.10), Y(0.016));
         p.drawArc(box, 20 * 16, 140 * 16);
     }
@@ -314,8 +315,8 @@ void FrogArt::paintHead(QPainter& p, QPointF at, double angle, double scale, QPo
         const int key = std::max(1, int(std::lround(pixels * 32)));
         const QImage& image = headImage(key);
         const double unitsPerPixel = 32.0 / key;
-        p.drawImage(QRectF(kHeadBox.left() - unitsPerPixel, kHeadBox.top() - unitsPerPixel,
-                           image.width() * unitsPerPixel, image.height() * unitsPerPixel),
+        p.drawImage(QRectF(kHeadBox.left() - unitsPerPixel, kHeadBox.top() - unitsPerPixel, image.width() * unitsPerPixel,
+                           image.height() * unitsPerPixel),
                     image);
         paintPupils(p, mouse, false); // the glints would be under a pixel
     } else {

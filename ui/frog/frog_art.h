@@ -47,7 +47,7 @@ public:
     void setLineScale(double scale);
     const QPen& bodyPen() const { return m_bodyPen; } ///< Annex II's strokeWeight(4), dark green
     const QPen& legPen() const { return m_legPen; }
-    const QPen& inkPen() const { return m_inkPen; }   ///< §4.1–4.7: the bare polygon of line()
+    const QPen& inkPen() const { return m_inkPen; } ///< §4.1–4.7: the bare polygon of line()
     const QPen& rodPen() const { return m_rodPen; }
     const QPen& jointPen() const { return m_jointPen; }
     const QBrush& jointBrush() const { return m_jointBrush; }

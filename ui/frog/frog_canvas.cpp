@@ -36,11 +36,11 @@ constexpr double kVelocityScale = 4;
 constexpr qint64 kTextRefreshNs = 250'000'000;
 
 const QColor kLetterbox(0x26, 0x30, 0x36);
-const QColor kSkyTop(0xb9, 0xdc, 0xee);   // FrogArt's sky, top
+const QColor kSkyTop(0xb9, 0xdc, 0xee);                  // FrogArt's sky, top
 const QColor kFrameCaptionColour(0x26, 0x30, 0x36, 190); // the frame's caption, over the sky
-constexpr double kPanelMargin = 8; // the text panel: from the frame's corner, px (× presentation scale)
-constexpr double kPanelPad = 6;    // and inside it
-const QColor kMudBottom(0x86, 0x6a, 0x44); // FrogArt's bank, bottom
+constexpr double kPanelMargin = 8;                       // the text panel: from the frame's corner, px (× presentation scale)
+constexpr double kPanelPad = 6;                          // and inside it
+const QColor kMudBottom(0x86, 0x6a, 0x44);               // FrogArt's bank, bottom
 const QColor kEdgeColour(0xff, 0x8a, 0x1e);
 const QColor kVelocityColour(0x1f, 0x5f, 0xd8);
 const QColor kGhostColour(0x5a, 0x2d, 0x82);
@@ -400,7 +400,8 @@ void FrogCanvas::drawPairs(QPainter& p)
     const auto boxAndCentre = [this](int body) {
         sim()->bodyVertices(body, m_work);
         const Aabb b = boundingBox(m_work.data(), int(m_work.size()));
-        return std::pair{QRectF(QPointF(b.minX, b.minY), QPointF(b.maxX, b.maxY)), Point(0.5 * (b.minX + b.maxX), 0.5 * (b.minY + b.maxY))};
+        return std::pair{QRectF(QPointF(b.minX, b.minY), QPointF(b.maxX, b.maxY)),
+                         Point(0.5 * (b.minX + b.maxX), 0.5 * (b.minY + b.maxY))};
     };
     for (const auto& [a, b] : m_pairs) {
         const auto [boxA, centreA] = boxAndCentre(a);
@@ -601,8 +602,8 @@ void FrogCanvas::rebuildGhost()
         return;
     }
     auto ghost = recordRun(std::move(built).value(), m_stepWork);
-    if (!ghost || !ghost->setRecording(m_run->recording().events, m_run->recordedSteps()).ok()
-        || !ghost->seek(sim()->stepCount()).ok())
+    if (!ghost || !ghost->setRecording(m_run->recording().events, m_run->recordedSteps()).ok() ||
+        !ghost->seek(sim()->stepCount()).ok())
         return;
     m_ghost = std::make_unique<RecordedRun>(std::move(ghost).value());
 }
@@ -727,7 +728,7 @@ void FrogCanvas::refreshTexts()
             if ((blownUpLine = blownUp(error, m_startAreaError)))
                 lines << tr("The body has blown up (area error %1 %): press Reset (R), or switch to the Stable solver")
                              .arg(!std::isfinite(error) ? QStringLiteral("∞")
-                                  : (error > 0 ? QStringLiteral("+") : QString()) + displayFixed(error, 0));
+                                                        : (error > 0 ? QStringLiteral("+") : QString()) + displayFixed(error, 0));
         }
         if (m_ghost) {
             const Simulation& g = m_ghost->simulation();
@@ -769,8 +770,7 @@ void FrogCanvas::refreshTexts()
                          .arg(sim()->stepCount())
                          .arg(m_run->recordedSteps());
         if (const int slower = workFramesPerStep(); slower > 1)
-            lines << tr("Running %n× slower than real time: a step of this scene is more work than a frame holds", "",
-                        slower);
+            lines << tr("Running %n× slower than real time: a step of this scene is more work than a frame holds", "", slower);
         if (m_pacer.speed() < 1)
             lines << tr("Slow motion, %1× real time: one step every %n frames, the step itself unchanged", "",
                         m_pacer.framesPerStep())
@@ -811,8 +811,7 @@ void FrogCanvas::refreshTexts()
                              .arg(bodies)
                              .arg(num(r.areaErrorPercent, 2), num(100 * r.maxStretch, 1));
             else
-                lines << tr("Area error %1 % · largest stretch %2 %")
-                             .arg(num(r.areaErrorPercent, 2), num(100 * r.maxStretch, 1));
+                lines << tr("Area error %1 % · largest stretch %2 %").arg(num(r.areaErrorPercent, 2), num(100 * r.maxStretch, 1));
             lines << tr("Largest correction %1 · kinetic energy %2 · potential energy %3")
                          .arg(num(r.constraintForce, 3), num(r.kineticEnergy, 1), num(r.potentialEnergy, 0));
         }
@@ -821,8 +820,8 @@ void FrogCanvas::refreshTexts()
         if (m_overlays.frameTime) {
             if (m_running)
                 lines << tr("Frame %1 ms (%2 frames per second) · step %3 ms · drawing %4 ms")
-                             .arg(num(m_frameShownMs, 1), num(m_frameShownMs > 0 ? 1000 / m_frameShownMs : 0.0, 0), num(m_stepShownMs, 3),
-                                  num(m_drawShownMs, 2));
+                             .arg(num(m_frameShownMs, 1), num(m_frameShownMs > 0 ? 1000 / m_frameShownMs : 0.0, 0),
+                                  num(m_stepShownMs, 3), num(m_drawShownMs, 2));
             else
                 lines << tr("Paused · step %1 ms · drawing %2 ms").arg(num(m_stepShownMs, 3), num(m_drawShownMs, 2));
             lines << tr("Step %1").arg(sim()->stepCount());
@@ -987,10 +986,7 @@ void FrogCanvas::render(QPainter& p, const QRectF& target)
     p.restore();
 }
 
-QString FrogCanvas::frameCaption() const
-{
-    return tr("Top of the frame: the scene's upper wall (y = 0)");
-}
+QString FrogCanvas::frameCaption() const { return tr("Top of the frame: the scene's upper wall (y = 0)"); }
 
 QRectF FrogCanvas::frameCaptionRect(const QRectF& target) const
 {
@@ -1380,7 +1376,8 @@ void FrogCanvas::mousePressEvent(QMouseEvent* event)
     // Annex II, mousePressed: grab when the cursor is inside the body. Going back in a run
     // (docs/rewind.md), a press that grabs nothing leaves the recorded future alone.
     if (m_run->playingBack() && !wouldGrab(m_mouse)) {
-        emit statusMessage(tr("Playing the recorded run back: press inside a body to take over from step %1.").arg(sim()->stepCount()));
+        emit statusMessage(
+            tr("Playing the recorded run back: press inside a body to take over from step %1.").arg(sim()->stepCount()));
         return;
     }
     const bool branch = m_run->playingBack();
@@ -1459,7 +1456,8 @@ void FrogCanvas::drawKeyboardCursor(QPainter& p) const
     p.save();
     p.setRenderHint(QPainter::Antialiasing, true);
     p.setBrush(Qt::NoBrush);
-    for (const auto& [colour, width] : {std::pair{QColor(Qt::white), 4.0 * k}, std::pair{palette().color(QPalette::Highlight), 2.0 * k}}) {
+    for (const auto& [colour, width] :
+         {std::pair{QColor(Qt::white), 4.0 * k}, std::pair{palette().color(QPalette::Highlight), 2.0 * k}}) {
         p.setPen(QPen(colour, width));
         p.drawEllipse(c, r, r);
         p.drawLine(c - QPointF(2 * r, 0), c - QPointF(r, 0));
@@ -1514,7 +1512,8 @@ bool FrogCanvas::keyboardGrab()
         m_mouse = sum;
     }
     if (m_run->playingBack() && !wouldGrab(m_mouse)) {
-        emit statusMessage(tr("Playing the recorded run back: move the cursor inside a body to take over from step %1.").arg(sim()->stepCount()));
+        emit statusMessage(tr("Playing the recorded run back: move the cursor inside a body to take over from step %1.")
+                               .arg(sim()->stepCount()));
         update();
         return false;
     }

@@ -330,7 +330,7 @@ private:
 
     QTimer m_timer;
     int m_tick = 0;
-    long m_stepWork = 0;       // m_sim->workPerStep(), again after a spawn
+    long m_stepWork = 0; // m_sim->workPerStep(), again after a spawn
     long m_frameCount = 0;
     StepPacer m_pacer;
     SeriesRecorder m_series{std::size_t(kSeriesSeconds) * kFramesPerSecond};
@@ -342,8 +342,8 @@ private:
     bool m_mouseKnown = false;
     bool m_pressed = false;
     bool m_spawnHeld = false;
-    bool m_keyboardHeld = false; // the grab was made with G or Enter
-    QString m_sceneSummary;      // setSceneSummary
+    bool m_keyboardHeld = false;  // the grab was made with G or Enter
+    QString m_sceneSummary;       // setSceneSummary
     double m_reportedRadius = -1; // last mouseRadiusChanged, −1 before any
     double m_startAreaError = 0;  // the area error the simulation started with (blownUp)
     bool m_blownUp = false;       // as last said by blownUpChanged

@@ -31,10 +31,7 @@ const SceneParameter& parameter(const QString& key)
 }
 
 /// The table's English text in the panel's translation context.
-QString translated(const char* text)
-{
-    return QCoreApplication::translate(kParameterPanelContext, text);
-}
+QString translated(const char* text) { return QCoreApplication::translate(kParameterPanelContext, text); }
 
 constexpr double kDegrees = 180.0 / kPi;
 
@@ -147,16 +144,10 @@ void FrogParametersPanel::setScene(const SceneSpec& scene)
             break;
         }
         case ParameterType::Obstacles:
-        case ParameterType::Shapes:
-            fileOnly << key;
-            break;
-        case ParameterType::Pair:
-            addRow(key, QString(), 2, 1);
-            break;
+        case ParameterType::Shapes: fileOnly << key; break;
+        case ParameterType::Pair: addRow(key, QString(), 2, 1); break;
         case ParameterType::Integer:
-        case ParameterType::Number:
-            addRow(key, QString(), 1, 1);
-            break;
+        case ParameterType::Number: addRow(key, QString(), 1, 1); break;
         }
     }
     if (!fileOnly.isEmpty()) {
@@ -274,8 +265,7 @@ QString FrogParametersPanel::labelFor(const QString& key, const QString& sub) co
 {
     const SceneParameter& p = parameter(key);
     switch (p.type) {
-    case ParameterType::Chain:
-        return translated(p.label).arg(sub.toInt() + 1);
+    case ParameterType::Chain: return translated(p.label).arg(sub.toInt() + 1);
     case ParameterType::Legs:
         for (const ParameterPart& part : legParts())
             if (sub == QLatin1String(part.name))
@@ -316,8 +306,8 @@ void FrogParametersPanel::retranslate()
         const auto parts = std::count_if(m_fields.begin(), m_fields.end(),
                                          [&f](const Field& g) { return g.key == f.key && g.sub == f.sub; });
         const QString label = labelFor(f.key, f.sub);
-        f.spin->setAccessibleName(parts == 2 ? tr("%1, %2").arg(label, f.index == 0 ? QStringLiteral("x") : QStringLiteral("y"))
-                                  : parts > 2 ? tr("%1, %2").arg(label).arg(f.index + 1)
+        f.spin->setAccessibleName(parts == 2  ? tr("%1, %2").arg(label, f.index == 0 ? QStringLiteral("x") : QStringLiteral("y"))
+                                   : parts > 2 ? tr("%1, %2").arg(label).arg(f.index + 1)
                                               : label);
         const QString unit = unitFor(f.key);
         f.spin->setSuffix(unit.isEmpty() ? QString() : QStringLiteral(" ") + unit);

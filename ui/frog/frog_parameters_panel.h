@@ -48,12 +48,12 @@ private:
     int spinMinimumWidth() const;
     struct Field {
         QString key;
-        QString sub;           ///< legs: front/back; angle_limits: the limit's name
-        int index = 0;         ///< position inside the key's value
+        QString sub;   ///< legs: front/back; angle_limits: the limit's name
+        int index = 0; ///< position inside the key's value
         QDoubleSpinBox* spin = nullptr;
-        double exact = 0;      ///< the model's value, kept while the shown (rounded) one is untouched
+        double exact = 0; ///< the model's value, kept while the shown (rounded) one is untouched
         double shown = 0;
-        double factor = 1;     ///< shown = model × factor (degrees for radians)
+        double factor = 1; ///< shown = model × factor (degrees for radians)
     };
     struct Row {
         QString key, sub;

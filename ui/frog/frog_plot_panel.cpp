@@ -26,7 +26,7 @@ namespace granota::ui {
 
 namespace {
 
-constexpr int kEnergyGraphs = 6;     // kinetic, gravity, elastic, total, damping, other
+constexpr int kEnergyGraphs = 6;       // kinetic, gravity, elastic, total, damping, other
 constexpr int kMostPointsDrawn = 2400; // a longer window is drawn every few samples
 constexpr int kRefreshMs = 100;
 
@@ -35,8 +35,8 @@ double timeOf(const SeriesSample& s) { return double(s.step) / kStepsPerSecond; 
 } // namespace
 
 FrogPlotPanel::FrogPlotPanel(QWidget* parent)
-    : QWidget(parent), m_view(new QComboBox(this)), m_body(new QComboBox(this)), m_export(new QPushButton(this)), m_note(new QLabel(this)),
-      m_plot(new QCustomPlot(this))
+    : QWidget(parent), m_view(new QComboBox(this)), m_body(new QComboBox(this)), m_export(new QPushButton(this)),
+      m_note(new QLabel(this)), m_plot(new QCustomPlot(this))
 {
     setObjectName(QStringLiteral("frogPlots"));
     m_view->setObjectName(QStringLiteral("frogPlotView"));
@@ -245,8 +245,8 @@ void FrogPlotPanel::drawTime()
     const bool energy = v == View::Energy;
     const bool stable = !samples.empty() && samples.back().elastic.has_value();
     const int chosen = body();
-    const QString names[kEnergyGraphs] = {tr("kinetic"), tr("gravitational"), tr("elastic"), tr("total"),
-                                          tr("damping"), tr("other losses")};
+    const QString names[kEnergyGraphs] = {tr("kinetic"), tr("gravitational"), tr("elastic"),
+                                          tr("total"),   tr("damping"),       tr("other losses")};
     const int graphs = energy ? kEnergyGraphs : 1;
     QVector<double> keys;
     QVector<double> values[kEnergyGraphs];
@@ -258,14 +258,12 @@ void FrogPlotPanel::drawTime()
         const SeriesValues& s = *of;
         keys << timeOf(samples[i]);
         if (energy) {
-            const double e[kEnergyGraphs] = {s.kinetic, s.gravity, s.elastic.value_or(0), s.total,
-                                             s.dampingLoss.value_or(0), s.otherLoss.value_or(0)};
+            const double e[kEnergyGraphs] = {
+                s.kinetic, s.gravity, s.elastic.value_or(0), s.total, s.dampingLoss.value_or(0), s.otherLoss.value_or(0)};
             for (int g = 0; g < kEnergyGraphs; ++g)
                 values[g] << e[g];
         } else {
-            values[0] << (v == View::AreaError ? s.areaErrorPercent
-                          : v == View::Stretch ? s.maxStretch
-                                               : double(s.contacts));
+            values[0] << (v == View::AreaError ? s.areaErrorPercent : v == View::Stretch ? s.maxStretch : double(s.contacts));
         }
     }
     m_plot->legend->clearItems();
@@ -283,7 +281,7 @@ void FrogPlotPanel::drawTime()
         if (energy && g >= 4)
             pen.setStyle(Qt::DashLine);
         graph->setPen(pen);
-        graph->setName(energy ? names[g]
+        graph->setName(energy                 ? names[g]
                        : v == View::AreaError ? tr("area error")
                        : v == View::Stretch   ? tr("largest stretch")
                                               : tr("contacts"));
@@ -299,7 +297,7 @@ void FrogPlotPanel::drawTime()
     if (energy && m_plot->legend->minimumOuterSizeHint().height() > 0.6 * m_plot->axisRect()->height())
         m_plot->legend->setVisible(false);
     m_plot->xAxis->setLabel(tr("time (s)"));
-    m_plot->yAxis->setLabel(energy ? tr("energy")
+    m_plot->yAxis->setLabel(energy                 ? tr("energy")
                             : v == View::AreaError ? tr("area error (%)")
                             : v == View::Stretch   ? tr("|L/L₀ − 1|")
                                                    : tr("contacts"));
@@ -336,17 +334,15 @@ void FrogPlotPanel::drawTime()
     const auto keptFrom = std::partition_point(samples.begin(), samples.end(),
                                                [](const SeriesSample& s) { return s.bodies.empty(); });
     if (chosen >= 0 && m_series->keepsBodies() && keptFrom != samples.begin() && keptFrom != samples.end())
-        kept = tr("Body %1 alone: its values are kept from %2 s on.")
-                   .arg(chosen + 1)
-                   .arg(displayFixed(timeOf(*keptFrom), 1));
+        kept = tr("Body %1 alone: its values are kept from %2 s on.").arg(chosen + 1).arg(displayFixed(timeOf(*keptFrom), 1));
     if (!kept.isEmpty())
         kept += QLatin1Char(' ');
     if (energy && !stable)
         m_note->setText(kept + tr("Energies in px²/step², unit masses. The seed's springs and area are corrections, not "
-                           "forces: it stores no elastic energy and books no losses; total = kinetic + gravitational."));
+                                  "forces: it stores no elastic energy and books no losses; total = kinetic + gravitational."));
     else if (energy)
         m_note->setText(kept + tr("Energies in mass·px²/step². Other losses: hits and friction at walls and between bodies, "
-                           "and the solver's own dissipation, less what the mouse put in."));
+                                  "and the solver's own dissipation, less what the mouse put in."));
     else
         m_note->setText(kept.trimmed());
     m_note->setVisible(!m_note->text().isEmpty());

@@ -78,7 +78,8 @@ std::vector<Point> flipped(const std::vector<Point>& points, double height)
 const long FrogTab::kLoadSeekWork = 600 * FrogCanvas::kFrameWork;
 
 FrogTab::FrogTab(QWidget* parent)
-    : TabPage(QStringLiteral("frog"), QT_TR_NOOP("Frog"), parent), m_canvas(new FrogCanvas(this)), m_params(new FrogParametersPanel(this))
+    : TabPage(QStringLiteral("frog"), QT_TR_NOOP("Frog"), parent), m_canvas(new FrogCanvas(this)),
+      m_params(new FrogParametersPanel(this))
 {
     setExportView(m_canvas);
     auto* side = new QWidget(this);
@@ -271,7 +272,8 @@ FrogTab::FrogTab(QWidget* parent)
     // A warning a teacher can act on: the seed has blown up, with the two ways out.
     m_explosion = new QFrame(stage);
     m_explosion->setObjectName(QStringLiteral("frogExplosion"));
-    m_explosion->setStyleSheet(QStringLiteral("#frogExplosion { background: #fdecea; border: 1px solid #d9826f; border-radius: 3px; }"));
+    m_explosion->setStyleSheet(
+        QStringLiteral("#frogExplosion { background: #fdecea; border: 1px solid #d9826f; border-radius: 3px; }"));
     auto* explosionRow = new QHBoxLayout(m_explosion);
     explosionRow->setContentsMargins(6, 3, 6, 3);
     m_explosionText = new QLabel(m_explosion);
@@ -636,9 +638,8 @@ bool FrogTab::editParameter(const QString& key, const QJsonValue& value, QString
     if (!applyParameter(key, value, error))
         return false;
     // Consecutive edits of the same parameter merge, so that spinning an arrow is one step.
-    m_undo->push(new ValueCommand<QJsonValue>([this, key](const QJsonValue& v) { applyParameter(key, v, nullptr); },
-                                              before, value, tr("Change %1").arg(key),
-                                              valueMergeId(kParameterMergeIdBase, key),
+    m_undo->push(new ValueCommand<QJsonValue>([this, key](const QJsonValue& v) { applyParameter(key, v, nullptr); }, before,
+                                              value, tr("Change %1").arg(key), valueMergeId(kParameterMergeIdBase, key),
                                               {/*dropWhenUnchanged=*/false, /*appliedAlready=*/true}));
     return true;
 }
@@ -660,8 +661,8 @@ void FrogTab::stepOnce()
 
 FrogTab::OverlayBoxes FrogTab::overlayBoxes() const
 {
-    return {m_showVertices, m_showSprings, m_showArea, m_showVelocities, m_showReadouts, m_showFrameTime, m_showGhost, m_showTrail,
-            m_showPairs, m_showProtractor};
+    return {m_showVertices,  m_showSprings, m_showArea,  m_showVelocities, m_showReadouts,
+            m_showFrameTime, m_showGhost,   m_showTrail, m_showPairs,      m_showProtractor};
 }
 
 FrogTab::OverlayFlags FrogTab::overlayFlags() const
@@ -703,8 +704,8 @@ void FrogTab::overlaysChanged()
     for (std::size_t i = 0; i < before.size(); ++i)
         if (boxes[i] == box)
             before[i] = !before[i]; // the box has toggled already
-    m_undo->push(new ValueCommand<OverlayFlags>([this](const OverlayFlags& f) { applyOverlayFlags(f); }, before,
-                                                overlayFlags(), box ? box->text().remove(QLatin1Char('&')) : tr("Overlays")));
+    m_undo->push(new ValueCommand<OverlayFlags>([this](const OverlayFlags& f) { applyOverlayFlags(f); }, before, overlayFlags(),
+                                                box ? box->text().remove(QLatin1Char('&')) : tr("Overlays")));
 }
 
 void FrogTab::setPresentation(bool on)
@@ -765,8 +766,9 @@ void FrogTab::retranslate()
                                  "thesis, position-based constraints with compliance (XPBD) that hold the target "
                                  "area and stay stable on stiff and extreme settings. Switching starts the scene again."));
     m_canvas->setAccessibleName(tr("Frog canvas"));
-    m_canvas->setSceneSummary(tr("Scene %1, %2 solver")
-                                  .arg(sceneTitle(fromStd(m_scene.name)), m_solverCombo->itemText(m_solver == SolverKind::Stable ? 1 : 0)));
+    m_canvas->setSceneSummary(
+        tr("Scene %1, %2 solver")
+            .arg(sceneTitle(fromStd(m_scene.name)), m_solverCombo->itemText(m_solver == SolverKind::Stable ? 1 : 0)));
     m_pause->setText(m_pause->isChecked() ? tr("Run") : tr("Pause"));
     m_pause->setToolTip(tr("Pause or run the animation, one fixed step per frame at 60 frames per second (P)."));
     m_step->setText(tr("Step"));
@@ -913,7 +915,7 @@ void FrogTab::updateTimeline()
         const long since = now - m_mark, steps = std::labs(since);
         const QString seconds = displayFixed(double(steps) / kStepsPerSecond, 2);
         shown += QLatin1Char('\n') + (since >= 0 ? tr("%1 s (%n steps) since step %2", "", int(steps))
-                                                  : tr("%1 s (%n steps) before step %2", "", int(steps)))
+                                                 : tr("%1 s (%n steps) before step %2", "", int(steps)))
                                          .arg(seconds)
                                          .arg(m_mark);
     }
@@ -925,7 +927,9 @@ void FrogTab::updateTimeline()
     m_timelineDigits = digits;
     const QString eights = QString(digits, QLatin1Char('8'));
     const int wide = m_timelineLabel->fontMetrics().horizontalAdvance(
-        text.arg(eights, eights).arg(displayFixed(double(end) / kStepsPerSecond, 2).replace(QRegularExpression(QStringLiteral("\\d")), QStringLiteral("8"))));
+        text.arg(eights, eights)
+            .arg(displayFixed(double(end) / kStepsPerSecond, 2)
+                     .replace(QRegularExpression(QStringLiteral("\\d")), QStringLiteral("8"))));
     m_timelineLabel->setMinimumWidth(wide);
 }
 
@@ -983,8 +987,8 @@ void FrogTab::showStableSettings()
     // What α means for this scene: the first edge of the first body, at rest, its vertex's mass.
     const auto spring = edgeSpringShown();
     // Rigid edges, or none: no frequency to state ("—").
-    const double hertz =
-        spring ? edgeRingHertz(knobs.edgeCompliance, spring->restLength, spring->vertexMass, kStepsPerSecond) : 0.0;
+    const double hertz = spring ? edgeRingHertz(knobs.edgeCompliance, spring->restLength, spring->vertexMass, kStepsPerSecond)
+                                : 0.0;
     m_hertz->setEnabled(hertz > 0);
     m_hertz->setSpecialValueText(hertz > 0 ? QString() : QStringLiteral("—"));
     m_damping->setEnabled(spring.has_value());
@@ -1158,11 +1162,11 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
             return false;
         }
         const QJsonObject o = v.toObject();
-        const std::pair<const char*, bool*> flags[] = {
-            {"vertices", &overlays.vertices}, {"springs", &overlays.springs},       {"area", &overlays.area},
-            {"velocities", &overlays.velocities}, {"readouts", &overlays.readouts}, {"frame_time", &overlays.frameTime},
-            {"ghost", &overlays.ghost}, {"trail", &overlays.trail}, {"pairs", &overlays.pairs},
-            {"protractor", &overlays.protractor}};
+        const std::pair<const char*, bool*> flags[] = {{"vertices", &overlays.vertices}, {"springs", &overlays.springs},
+                                                       {"area", &overlays.area},         {"velocities", &overlays.velocities},
+                                                       {"readouts", &overlays.readouts}, {"frame_time", &overlays.frameTime},
+                                                       {"ghost", &overlays.ghost},       {"trail", &overlays.trail},
+                                                       {"pairs", &overlays.pairs},       {"protractor", &overlays.protractor}};
         for (const auto& [key, flag] : flags) {
             const QJsonValue f = o.value(QLatin1String(key));
             if (f.isUndefined())
@@ -1247,17 +1251,17 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
         if (work <= kLoadSeekWork)
             m_canvas->seek(recorded->step);
         else
-            emit statusMessage(tr("The run was saved at step %1: drag the timeline to go there (it is long to replay).")
-                                   .arg(recorded->step));
+            emit statusMessage(
+                tr("The run was saved at step %1: drag the timeline to go there (it is long to replay).").arg(recorded->step));
     }
     setSpeed(speed);
     m_canvas->setRuler(ruler);
     // Everything is valid: show it.
     {
         const OverlayBoxes boxes = overlayBoxes();
-        const OverlayFlags values = {overlays.vertices,   overlays.springs,  overlays.area,
-                                     overlays.velocities, overlays.readouts, overlays.frameTime, overlays.ghost,
-                                     overlays.trail,      overlays.pairs,    overlays.protractor};
+        const OverlayFlags values = {overlays.vertices, overlays.springs,   overlays.area,  overlays.velocities,
+                                     overlays.readouts, overlays.frameTime, overlays.ghost, overlays.trail,
+                                     overlays.pairs,    overlays.protractor};
         for (std::size_t i = 0; i < values.size(); ++i) {
             const QSignalBlocker block(boxes[i]);
             boxes[i]->setChecked(values[i]);
@@ -1280,8 +1284,8 @@ QString FrogTab::csv() const
     QString out;
     QTextStream s(&out);
     const Simulation* sim = m_canvas->simulation();
-    s << "# scene " << fromStd(m_scene.name) << " (" << fromStd(m_scene.section) << "), solver "
-      << fromStd(solverName(m_solver)) << ", step " << (sim ? sim->stepCount() : 0) << "\n";
+    s << "# scene " << fromStd(m_scene.name) << " (" << fromStd(m_scene.section) << "), solver " << fromStd(solverName(m_solver))
+      << ", step " << (sim ? sim->stepCount() : 0) << "\n";
     s << "kind,index,point,x,y\n";
     if (!sim)
         return out;

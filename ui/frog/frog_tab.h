@@ -164,8 +164,8 @@ private:
     long m_mark = -1;
     QPushButton *m_pause, *m_step, *m_reset;
     QRadioButton *m_precomputed, *m_fit;
-    QCheckBox *m_showVertices, *m_showSprings, *m_showArea, *m_showVelocities, *m_showReadouts, *m_showFrameTime,
-        *m_showGhost, *m_showTrail, *m_showPairs, *m_showProtractor;
+    QCheckBox *m_showVertices, *m_showSprings, *m_showArea, *m_showVelocities, *m_showReadouts, *m_showFrameTime, *m_showGhost,
+        *m_showTrail, *m_showPairs, *m_showProtractor;
 };
 
 } // namespace granota::ui

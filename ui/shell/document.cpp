@@ -29,36 +29,47 @@ std::optional<Root> readRoot(const QByteArray& bytes, const QVector<TabPage*>& t
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
     if (doc.isNull()) {
-        *error = QCoreApplication::translate("granota::ui::Document", "This is not a Granota document: %1 (at byte %2).").arg(parseError.errorString()).arg(parseError.offset);
+        *error = QCoreApplication::translate("granota::ui::Document", "This is not a Granota document: %1 (at byte %2).")
+                     .arg(parseError.errorString())
+                     .arg(parseError.offset);
         return std::nullopt;
     }
     if (!doc.isObject()) {
-        *error = QCoreApplication::translate("granota::ui::Document", "This is not a Granota document: it is a JSON list, not an object.");
+        *error = QCoreApplication::translate("granota::ui::Document",
+                                             "This is not a Granota document: it is a JSON list, not an object.");
         return std::nullopt;
     }
     Root root{doc.object(), {}};
     if (root.object.value(QStringLiteral("format")).toString() != QLatin1String("granota")) {
-        *error = QCoreApplication::translate("granota::ui::Document", "This is not a Granota document (no \"format\": \"granota\").");
+        *error = QCoreApplication::translate("granota::ui::Document",
+                                             "This is not a Granota document (no \"format\": \"granota\").");
         return std::nullopt;
     }
     const QJsonValue version = root.object.value(QStringLiteral("version"));
     if (!version.isDouble() || version.toDouble() != std::floor(version.toDouble())) {
-        *error = QCoreApplication::translate("granota::ui::Document", "This document's \"version\" is not a whole number; this Granota reads version %1.").arg(kVersion);
+        *error = QCoreApplication::translate("granota::ui::Document",
+                                             "This document's \"version\" is not a whole number; this Granota reads version %1.")
+                     .arg(kVersion);
         return std::nullopt;
     }
     if (version.toDouble() < 1 || version.toDouble() > kVersion) {
-        *error = QCoreApplication::translate("granota::ui::Document", "This document has version %1; this Granota reads version %2.").arg(version.toDouble()).arg(kVersion);
+        *error = QCoreApplication::translate("granota::ui::Document",
+                                             "This document has version %1; this Granota reads version %2.")
+                     .arg(version.toDouble())
+                     .arg(kVersion);
         return std::nullopt;
     }
     const QJsonValue parts = root.object.value(QStringLiteral("tabs"));
     if (!parts.isObject()) {
-        *error = QCoreApplication::translate("granota::ui::Document", "This document has no \"tabs\" object holding the tabs' points and settings.");
+        *error = QCoreApplication::translate("granota::ui::Document",
+                                             "This document has no \"tabs\" object holding the tabs' points and settings.");
         return std::nullopt;
     }
     root.parts = parts.toObject();
     for (const TabPage* tab : tabs)
         if (root.parts.contains(tab->key()) && !root.parts.value(tab->key()).isObject()) {
-            *error = QCoreApplication::translate("granota::ui::Document", "Tab “%1”: its part of the document is not an object.").arg(tab->title());
+            *error = QCoreApplication::translate("granota::ui::Document", "Tab “%1”: its part of the document is not an object.")
+                         .arg(tab->title());
             return std::nullopt;
         }
     return root;

@@ -33,12 +33,12 @@ bool loadDocument(const QByteArray& bytes, const QVector<TabPage*>& tabs, QStrin
 
 /// What recovering an autosave did.
 struct Recovery {
-    bool readable = false;   ///< false: nothing was loaded, `error` says why
+    bool readable = false; ///< false: nothing was loaded, `error` says why
     QString error;
-    QStringList recovered;   ///< titles of the tabs that took their part
-    QStringList refused;     ///< "Title: reason" for each tab that refused its part
+    QStringList recovered; ///< titles of the tabs that took their part
+    QStringList refused;   ///< "Title: reason" for each tab that refused its part
     QString currentTab;
-    QString documentFile;    ///< the document the autosave belongs to, empty for Untitled
+    QString documentFile; ///< the document the autosave belongs to, empty for Untitled
 };
 /// Loads every tab whose part of `bytes` is valid, leaving the others as they are.
 Recovery recoverDocument(const QByteArray& bytes, const QVector<TabPage*>& tabs);

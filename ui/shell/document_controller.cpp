@@ -206,13 +206,16 @@ void DocumentController::rebuildRecentMenu()
     m_recentMenu->clear();
     const QStringList recent = QSettings().value(QStringLiteral("recentFiles")).toStringList();
     for (const QString& file : recent) {
-        m_recentMenu->addAction(QFileInfo(file).fileName(), this, [this, file] {
-            if (!maybeSave())
-                return;
-            QString error;
-            if (!openFile(file, &error))
-                QMessageBox::warning(m_window, MainWindow::tr("Open document"), error);
-        })->setToolTip(file);
+        m_recentMenu
+            ->addAction(QFileInfo(file).fileName(), this,
+                        [this, file] {
+                            if (!maybeSave())
+                                return;
+                            QString error;
+                            if (!openFile(file, &error))
+                                QMessageBox::warning(m_window, MainWindow::tr("Open document"), error);
+                        })
+            ->setToolTip(file);
     }
     m_recentMenu->setEnabled(!recent.isEmpty());
 }
@@ -243,7 +246,7 @@ bool DocumentController::autosave()
     if (first) { // say it once, without stopping the lesson: a window that does not block
         auto* box = new QMessageBox(QMessageBox::Warning, MainWindow::tr("Autosave failed"),
                                     MainWindow::tr("Granota cannot keep a copy of your unsaved changes: %1\n\n"
-                                       "Save the document (Ctrl+S) to keep them. Granota will keep trying.")
+                                                   "Save the document (Ctrl+S) to keep them. Granota will keep trying.")
                                         .arg(error),
                                     QMessageBox::Ok, m_window);
         box->setAttribute(Qt::WA_DeleteOnClose);
@@ -275,7 +278,9 @@ DocumentController::RecoveryOutcome DocumentController::recoverAutosave(const QS
     if (!r.readable || r.recovered.isEmpty()) {
         // Nothing to take: the file is kept, out of the way of later autosaves.
         const QString kept = m_autosave->keepAside(orphanPath);
-        const QString reason = r.error.isEmpty() ? MainWindow::tr("no tab's part could be read.") + QLatin1Char('\n') + r.refused.join(QLatin1Char('\n')) : r.error;
+        const QString reason = r.error.isEmpty() ? MainWindow::tr("no tab's part could be read.") + QLatin1Char('\n') +
+                                                       r.refused.join(QLatin1Char('\n'))
+                                                 : r.error;
         outcome.message = MainWindow::tr("The autosave could not be recovered: %1\n\nIt is kept as “%2”.")
                               .arg(reason, QDir::toNativeSeparators(kept.isEmpty() ? orphanPath : kept));
         return outcome;
@@ -299,7 +304,8 @@ DocumentController::RecoveryOutcome DocumentController::recoverAutosave(const QS
     const QString kept = m_autosave->keepAside(orphanPath);
     const QString where = QDir::toNativeSeparators(kept.isEmpty() ? orphanPath : kept);
     if (r.refused.isEmpty())
-        outcome.message = MainWindow::tr("Recovered the unsaved work of the last session. The autosave is kept as “%1”.").arg(where);
+        outcome.message =
+            MainWindow::tr("Recovered the unsaved work of the last session. The autosave is kept as “%1”.").arg(where);
     else
         outcome.message = MainWindow::tr("Recovered %1. Not recovered:\n%2\n\nThe whole autosave is kept as “%3”.")
                               .arg(QLocale().createSeparatedList(r.recovered), r.refused.join(QLatin1Char('\n')), where);
@@ -312,11 +318,11 @@ void DocumentController::offerRecovery()
         const QString when = QLocale().toString(orphan.written, QLocale::ShortFormat);
         const QString question =
             orphan.documentFile.isEmpty()
-                ? MainWindow::tr("A Granota session was closed without saving its Untitled document (autosaved %1). Recover it?").arg(when)
+                ? MainWindow::tr("A Granota session was closed without saving its Untitled document (autosaved %1). Recover it?")
+                      .arg(when)
                 : MainWindow::tr("A Granota session was closed without saving its changes to “%1” (autosaved %2). Recover them?")
                       .arg(QFileInfo(orphan.documentFile).fileName(), when);
-        QMessageBox box(QMessageBox::Question, MainWindow::tr("Recover unsaved work"), question,
-                        QMessageBox::NoButton, m_window);
+        QMessageBox box(QMessageBox::Question, MainWindow::tr("Recover unsaved work"), question, QMessageBox::NoButton, m_window);
         QPushButton* recover = box.addButton(MainWindow::tr("&Recover"), QMessageBox::AcceptRole);
         QPushButton* later = box.addButton(MainWindow::tr("&Keep for later"), QMessageBox::RejectRole);
         QPushButton* discard = box.addButton(MainWindow::tr("&Discard"), QMessageBox::DestructiveRole);

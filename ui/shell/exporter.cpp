@@ -20,7 +20,10 @@ namespace {
 constexpr double kScreenDpi = 96.0;
 
 
-QString cannotWrite(const QString& file) { return QCoreApplication::translate("granota::ui::Exporter", "Cannot write “%1”.").arg(file); }
+QString cannotWrite(const QString& file)
+{
+    return QCoreApplication::translate("granota::ui::Exporter", "Cannot write “%1”.").arg(file);
+}
 } // namespace
 
 QSize pngPixelSize(const QSizeF& logical, int dpi)
@@ -40,7 +43,9 @@ QString exportPng(Drawable& view, const QString& file, int dpi)
         return QCoreApplication::translate("granota::ui::Exporter", "The image would be too large: choose a lower resolution.");
     QImage image(pixels, QImage::Format_ARGB32_Premultiplied);
     if (image.isNull())
-        return QCoreApplication::translate("granota::ui::Exporter", "Not enough memory for an image of %1×%2 pixels.").arg(pixels.width()).arg(pixels.height());
+        return QCoreApplication::translate("granota::ui::Exporter", "Not enough memory for an image of %1×%2 pixels.")
+            .arg(pixels.width())
+            .arg(pixels.height());
     image.fill(Qt::white);
     // Drawn as the screen draws it, at 96 DPI, only scaled: fonts given in points would
     // otherwise take the image's DPI as well and come out dpi/96 times too large again.
@@ -95,8 +100,8 @@ QString exportPdf(Drawable& view, const QString& file, const QString& title)
     pdf.setCreator(QStringLiteral("Granota"));
     pdf.setResolution(static_cast<int>(kScreenDpi));
     // One page the size of the view, in points (1/72 in): the figure is the page.
-    pdf.setPageSize(QPageSize(QSizeF(logical.width() * 72.0 / kScreenDpi, logical.height() * 72.0 / kScreenDpi),
-                              QPageSize::Point, QString(), QPageSize::ExactMatch));
+    pdf.setPageSize(QPageSize(QSizeF(logical.width() * 72.0 / kScreenDpi, logical.height() * 72.0 / kScreenDpi), QPageSize::Point,
+                              QString(), QPageSize::ExactMatch));
     pdf.setPageMargins(QMarginsF(0, 0, 0, 0));
     QPainter painter;
     if (!painter.begin(&pdf))

@@ -53,8 +53,7 @@ std::vector<std::string> reportsOf(const QString& key)
 constexpr double kPresentationFont = 1.5; ///< font scale in presentation mode
 /// The status bar's, smaller: its hints are for the one at the keyboard, and a whole hint fits 1024 px.
 constexpr double kPresentationStatusFont = 1.25;
-const char* const kExampleIds[] = {"2.1", "2.2", "2.3", "2.4", "2.5", "2.6", "2.7",
-                                   "2.8", "2.9", "2.10", "2.11", "2.12", "2.13"};
+const char* const kExampleIds[] = {"2.1", "2.2", "2.3", "2.4", "2.5", "2.6", "2.7", "2.8", "2.9", "2.10", "2.11", "2.12", "2.13"};
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWidget(this))
@@ -62,8 +61,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
     setObjectName(QStringLiteral("MainWindow"));
     m_normalFont = QApplication::font();
     auto* deCasteljau = new DeCasteljauTab(this);
-    m_pages = {deCasteljau, new BernsteinTab(deCasteljau, this), new FitTab(this), new CatmullRomTab(this),
-               new FrogTab(this)};
+    m_pages = {deCasteljau, new BernsteinTab(deCasteljau, this), new FitTab(this), new CatmullRomTab(this), new FrogTab(this)};
     m_undoGroup = new QUndoGroup(this);
     for (TabPage* page : m_pages) {
         // Below every tab, its work-precision section (docs/work-precision.md), collapsed until View ▸ Error
@@ -279,8 +277,7 @@ void MainWindow::createActions()
     m_nextTab->setShortcuts({QKeySequence(Qt::CTRL | Qt::Key_Tab), QKeySequence(Qt::CTRL | Qt::Key_PageDown)});
     connect(m_nextTab, &QAction::triggered, this, [cycle] { cycle(1); });
     m_previousTab = new QAction(this);
-    m_previousTab->setShortcuts(
-        {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Tab), QKeySequence(Qt::CTRL | Qt::Key_PageUp)});
+    m_previousTab->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Tab), QKeySequence(Qt::CTRL | Qt::Key_PageUp)});
     connect(m_previousTab, &QAction::triggered, this, [cycle] { cycle(-1); });
 
     auto* languages = new QActionGroup(this);
@@ -409,18 +406,12 @@ void MainWindow::retranslate()
     m_languageMenu->setTitle(tr("&Language"));
     m_examplesMenu->setTitle(tr("E&xamples"));
     const QString exampleTitles[] = {
-        tr("Ex 2.1 — Cubic spline through four points (Def 2.3)"),
-        tr("Ex 2.2 — De Casteljau, degree 4"),
-        tr("Ex 2.3 — De Casteljau, a closed curve of degree 4"),
-        tr("Ex 2.4 — Bernstein polynomials up to degree 5"),
-        tr("Ex 2.5 — Ex 2.2's curve in the Bernstein basis"),
-        tr("Ex 2.6 — Ex 2.3's curve in the Bernstein basis"),
-        tr("Ex 2.7 — Least squares, degree 2, uniform parameters"),
-        tr("Ex 2.8 — Least squares, degree 3, uniform parameters"),
-        tr("Ex 2.9 — Least squares, degree 2, chord lengths"),
-        tr("Ex 2.10 — Least squares, degree 3, chord lengths"),
-        tr("Ex 2.11 — A Catmull-Rom segment for τ = 0, 1/2, 2"),
-        tr("Ex 2.12 — Blending functions for several tensions"),
+        tr("Ex 2.1 — Cubic spline through four points (Def 2.3)"),  tr("Ex 2.2 — De Casteljau, degree 4"),
+        tr("Ex 2.3 — De Casteljau, a closed curve of degree 4"),    tr("Ex 2.4 — Bernstein polynomials up to degree 5"),
+        tr("Ex 2.5 — Ex 2.2's curve in the Bernstein basis"),       tr("Ex 2.6 — Ex 2.3's curve in the Bernstein basis"),
+        tr("Ex 2.7 — Least squares, degree 2, uniform parameters"), tr("Ex 2.8 — Least squares, degree 3, uniform parameters"),
+        tr("Ex 2.9 — Least squares, degree 2, chord lengths"),      tr("Ex 2.10 — Least squares, degree 3, chord lengths"),
+        tr("Ex 2.11 — A Catmull-Rom segment for τ = 0, 1/2, 2"),    tr("Ex 2.12 — Blending functions for several tensions"),
         tr("Ex 2.13 — Catmull-Rom curve, cyclic and open"),
     };
     for (int i = 0; i < m_exampleActions.size(); ++i)
@@ -484,11 +475,9 @@ void MainWindow::exportDialog(const QString& format)
     int dpi = 96;
     if (format == QLatin1String("png")) {
         bool ok = false;
-        const QStringList choices = {QStringLiteral("96"), QStringLiteral("150"), QStringLiteral("300"),
-                                     QStringLiteral("600")};
-        const QString choice = QInputDialog::getItem(this, tr("Export PNG"),
-                                                     tr("Resolution (dots per inch; 300 for print):"), choices, 2,
-                                                     false, &ok);
+        const QStringList choices = {QStringLiteral("96"), QStringLiteral("150"), QStringLiteral("300"), QStringLiteral("600")};
+        const QString choice = QInputDialog::getItem(this, tr("Export PNG"), tr("Resolution (dots per inch; 300 for print):"),
+                                                     choices, 2, false, &ok);
         if (!ok)
             return;
         dpi = choice.toInt();
@@ -497,9 +486,8 @@ void MainWindow::exportDialog(const QString& format)
     if (format == QLatin1String("tikz") && !TikzOptionsDialog::ask(this, &tikz))
         return;
     const QString extension = format == QLatin1String("tikz") ? QStringLiteral("tex") : format;
-    const QString file = QFileDialog::getSaveFileName(
-        this, tr("Export"), page->key() + QLatin1Char('.') + extension,
-        tr("%1 files (*.%2)").arg(format.toUpper(), extension));
+    const QString file = QFileDialog::getSaveFileName(this, tr("Export"), page->key() + QLatin1Char('.') + extension,
+                                                      tr("%1 files (*.%2)").arg(format.toUpper(), extension));
     if (file.isEmpty())
         return;
     const QString error = exportCurrent(format, file, dpi, tikz);
@@ -513,8 +501,8 @@ void MainWindow::exportFramesDialog()
 {
     FrogTab* frog = frogTab();
     bool ok = false;
-    const int frames = QInputDialog::getInt(this, tr("Frog animation"), tr("Number of frames (60 per second):"),
-                                            120, 1, 3600, 1, &ok);
+    const int frames = QInputDialog::getInt(this, tr("Frog animation"), tr("Number of frames (60 per second):"), 120, 1, 3600, 1,
+                                            &ok);
     if (!ok)
         return;
     const QString directory = QFileDialog::getExistingDirectory(this, tr("Folder for the frames"));
@@ -597,8 +585,8 @@ void MainWindow::showGuide()
                    "<p><b>Frog</b> (chapter 4): the soft body, stage by stage.</p>"
                    "<p>Double-click to add a point, Delete to remove it, arrows to nudge it, "
                    "Ctrl+Z to undo. The Examples menu loads every worked example of chapter 2. "
-                   "F11 switches presentation mode.</p>")
-                + tr("<p>Everything can be done with the keyboard alone: Help ▸ Keyboard shortcuts lists every key.</p>"));
+                   "F11 switches presentation mode.</p>") +
+                tr("<p>Everything can be done with the keyboard alone: Help ▸ Keyboard shortcuts lists every key.</p>"));
     box.exec();
 }
 

@@ -58,8 +58,7 @@ public:
 
     /// Exports the current tab's view: format png, svg, pdf, csv or tikz (drawn as `tikz`
     /// asks). Empty or a message.
-    QString exportCurrent(const QString& format, const QString& file, int dpi = 96,
-                          const TikzOptions& tikz = TikzOptions());
+    QString exportCurrent(const QString& format, const QString& file, int dpi = 96, const TikzOptions& tikz = TikzOptions());
 
     /// Presentation mode: larger text and lines; `fullScreen` false keeps the window's size
     /// (screenshots of presentation mode at 1280×800).
@@ -101,7 +100,7 @@ private:
     QTabWidget* m_tabs = nullptr;
     QVector<TabPage*> m_pages;
     QVector<WorkPrecisionPanel*> m_reports; ///< one per tab, below it in a splitter
-    QVector<QScrollArea*> m_reportAreas; ///< each report's scroll area, shown or hidden with it
+    QVector<QScrollArea*> m_reportAreas;    ///< each report's scroll area, shown or hidden with it
     QVector<QSplitter*> m_splitters;
     QUndoGroup* m_undoGroup = nullptr;
     QLabel* m_hintLabel = nullptr; ///< the shown tab's hint (TabPage::hint)
@@ -110,8 +109,8 @@ private:
     bool m_presentation = false;
     QFont m_normalFont;
 
-    QMenu *m_fileMenu = nullptr, *m_recentMenu = nullptr, *m_exportMenu = nullptr, *m_editMenu = nullptr,
-          *m_viewMenu = nullptr, *m_examplesMenu = nullptr, *m_languageMenu = nullptr, *m_helpMenu = nullptr;
+    QMenu *m_fileMenu = nullptr, *m_recentMenu = nullptr, *m_exportMenu = nullptr, *m_editMenu = nullptr, *m_viewMenu = nullptr,
+          *m_examplesMenu = nullptr, *m_languageMenu = nullptr, *m_helpMenu = nullptr;
     QAction *m_new = nullptr, *m_open = nullptr, *m_save = nullptr, *m_saveAs = nullptr, *m_quit = nullptr;
     QAction *m_exportPng = nullptr, *m_exportSvg = nullptr, *m_exportPdf = nullptr, *m_exportCsv = nullptr,
             *m_exportTikz = nullptr, *m_exportFrames = nullptr;

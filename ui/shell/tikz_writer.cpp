@@ -15,17 +15,17 @@ namespace granota::ui {
 namespace {
 
 // The room the layout keeps around the points, in cm (at most 11 pt text, as in beamer).
-constexpr double kEdgeCm = 0.12;        // a dot's radius (2 pt) and the thickest line
-constexpr double kLabelRightCm = 1.0;   // a label above right of its dot: "P_{10}", "c(t)"
+constexpr double kEdgeCm = 0.12;      // a dot's radius (2 pt) and the thickest line
+constexpr double kLabelRightCm = 1.0; // a label above right of its dot: "P_{10}", "c(t)"
 constexpr double kLabelTopCm = 0.75;
-constexpr double kTickBelowCm = 0.6;    // tick (2 pt) and the x tick labels below the axis
-constexpr double kTickDigitCm = 0.21;   // one character of a y tick label, left of the axis
-constexpr double kTickPadCm = 0.35;     // the y tick, the label's padding and a minus sign
+constexpr double kTickBelowCm = 0.6;      // tick (2 pt) and the x tick labels below the axis
+constexpr double kTickDigitCm = 0.21;     // one character of a y tick label, left of the axis
+constexpr double kTickPadCm = 0.35;       // the y tick, the label's padding and a minus sign
 constexpr double kTickHalfHeightCm = 0.2; // half a y tick label, above the top tick
-constexpr double kMinAreaCm = 0.5;      // the smallest drawing area whatever the margins
+constexpr double kMinAreaCm = 0.5;        // the smallest drawing area whatever the margins
 constexpr int kMaxTicks = 100;
-constexpr double kInsetPadCm = 0.1;     // inside the inset's frame
-constexpr double kInsetTitleCm = 0.3;   // its title's line (scriptsize)
+constexpr double kInsetPadCm = 0.1;   // inside the inset's frame
+constexpr double kInsetTitleCm = 0.3; // its title's line (scriptsize)
 /// Below this half-span (in model units) the scale, cm per unit, would overflow a double.
 constexpr double kMinHalfSpan = 1e-290;
 
@@ -77,8 +77,7 @@ std::vector<double> ticks(const Interval& r, double step)
 QString tickLabel(double v, double step)
 {
     const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
-    const std::string text =
-        (decimals <= 6 && std::fabs(v) < 1e7) ? formatFixed(v, decimals) : formatSignificant(v, 3);
+    const std::string text = (decimals <= 6 && std::fabs(v) < 1e7) ? formatFixed(v, decimals) : formatSignificant(v, 3);
     return QStringLiteral("$%1$").arg(QString::fromStdString(text));
 }
 
@@ -93,7 +92,9 @@ void addExtremes(const std::array<Point, 4>& b, std::vector<Point>& out)
     out.push_back(b[0]);
     out.push_back(b[3]);
     for (int axis = 0; axis < 2; ++axis) {
-        const auto c = [&b, axis](int i) { return axis == 0 ? b[static_cast<std::size_t>(i)].x : b[static_cast<std::size_t>(i)].y; };
+        const auto c = [&b, axis](int i) {
+            return axis == 0 ? b[static_cast<std::size_t>(i)].x : b[static_cast<std::size_t>(i)].y;
+        };
         // c′(t)/3 = a t² + 2k t + d with d = c1 − c0, k = c2 − 2c1 + c0, a = c3 − 3c2 + 3c1 − c0.
         const double d = c(1) - c(0), k = c(2) - 2 * c(1) + c(0), a = c(3) - 3 * c(2) + 3 * c(1) - c(0);
         std::vector<double> roots;
@@ -130,8 +131,7 @@ void TikzWriter::bezierSegments(const std::vector<std::array<Point, 4>>& segment
         m_items.push_back(std::move(item));
 }
 
-void TikzWriter::polyline(const std::vector<Point>& points, const QColor& color, double widthPt, bool dashed,
-                          bool closed)
+void TikzWriter::polyline(const std::vector<Point>& points, const QColor& color, double widthPt, bool dashed, bool closed)
 {
     if (points.size() < 2)
         return;
@@ -178,7 +178,7 @@ QString TikzWriter::str() const
     }
     for (Interval* r : {&x, &y}) {
         if (!(r->lo <= r->hi))
-            *r = {0, 1}; // nothing drawn
+            *r = {0, 1};                         // nothing drawn
         else if (!(r->half() >= kMinHalfSpan)) { // a single point, or points on one line
             const double pad = std::max(0.5, std::fabs(r->lo) * 1e-9);
             *r = {r->lo - pad, r->lo + pad};
@@ -249,9 +249,7 @@ QString TikzWriter::str() const
             if (item.inset != inset)
                 continue;
             switch (item.kind) {
-            case Item::Comment:
-                body += QStringLiteral("  % %1\n").arg(item.text);
-                break;
+            case Item::Comment: body += QStringLiteral("  % %1\n").arg(item.text); break;
             case Item::Line: {
                 body += QStringLiteral("  \\draw[%1, line width=%2pt%3] ")
                             .arg(colourName(item.color), QString::fromStdString(formatSignificant(item.width, 3)),
@@ -295,7 +293,8 @@ QString TikzWriter::str() const
             case Item::Dot:
                 if (!isFinite(item.points[0]))
                     break;
-                body += QStringLiteral("  \\fill[%1] %2 circle[radius=%3]").arg(colourName(item.color), at(item.points[0]), dotRadius);
+                body += QStringLiteral("  \\fill[%1] %2 circle[radius=%3]")
+                            .arg(colourName(item.color), at(item.points[0]), dotRadius);
                 if (!item.text.isEmpty())
                     body += QStringLiteral(" node[above right%1] {$%2$}")
                                 .arg(inset ? QStringLiteral(", font=\\scriptsize, inner sep=1pt") : QString(), item.text);
@@ -313,7 +312,8 @@ QString TikzWriter::str() const
         const double left = W - w, right = W, bottom = 0, top = h;
         const auto c = [](double px, double py) { return QStringLiteral("(%1,%2)").arg(cm(px), cm(py)); };
         body += QStringLiteral("  % inset: %1\n").arg(m_insetTitle);
-        body += QStringLiteral("  \\filldraw[fill=white, draw=black!30, line width=0.4pt, rounded corners=1.5pt] %1 rectangle %2;\n")
+        body += QStringLiteral(
+                    "  \\filldraw[fill=white, draw=black!30, line width=0.4pt, rounded corners=1.5pt] %1 rectangle %2;\n")
                     .arg(c(left, bottom), c(right, top));
         body += QStringLiteral("  \\node[anchor=north west, inner sep=1pt, font=\\scriptsize] at %1 {%2};\n")
                     .arg(c(left + kInsetPadCm, top - kInsetPadCm / 2), m_insetTitle);

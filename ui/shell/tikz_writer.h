@@ -49,13 +49,13 @@ public:
 private:
     struct Item {
         enum Kind { Line, Dot, Comment, Bezier } kind;
-        std::vector<Point> points;  ///< Bezier: four per segment, b_0..b_3
+        std::vector<Point> points; ///< Bezier: four per segment, b_0..b_3
         QColor color;
         double width = 1.0;
         bool dashed = false, closed = false;
         QString text;
         bool inset = false;
-        std::vector<Point> extent;  ///< Bezier: the points the picture must hold
+        std::vector<Point> extent; ///< Bezier: the points the picture must hold
     };
     TikzOptions m_options;
     std::vector<Item> m_items;

@@ -16,14 +16,18 @@ std::optional<QByteArray> readUserFile(const QString& path, QString* error)
     if (read)
         return QByteArray::fromStdString(*read);
     if (read.error().code == ErrorCode::OutOfRange)
-        *error = QCoreApplication::translate("granota::ui::UserFile", "“%1” is larger than %2 MB, the most Granota reads from one file.")
+        *error = QCoreApplication::translate("granota::ui::UserFile",
+                                             "“%1” is larger than %2 MB, the most Granota reads from one file.")
                      .arg(name)
                      .arg(kMaxFileBytes / (1024 * 1024));
     else if (QFileInfo(path).isDir())
         *error = QCoreApplication::translate("granota::ui::UserFile", "“%1” is a folder, not a file.").arg(name);
     else {
         QFile file(path);
-        *error = QCoreApplication::translate("granota::ui::UserFile", "Cannot open “%1”: %2").arg(name, file.open(QIODevice::ReadOnly) ? QCoreApplication::translate("granota::ui::UserFile", "it cannot be read.") : file.errorString());
+        *error = QCoreApplication::translate("granota::ui::UserFile", "Cannot open “%1”: %2")
+                     .arg(name, file.open(QIODevice::ReadOnly)
+                                    ? QCoreApplication::translate("granota::ui::UserFile", "it cannot be read.")
+                                    : file.errorString());
     }
     return std::nullopt;
 }

@@ -47,12 +47,15 @@ struct Sampler {
 
 } // namespace
 
-AdaptiveSample sampleBezierAdaptive(const std::vector<Point>& controlPoints, double tolerance, int minDepth,
-                                    int maxDepth)
+AdaptiveSample sampleBezierAdaptive(const std::vector<Point>& controlPoints, double tolerance, int minDepth, int maxDepth)
 {
     assert(!controlPoints.empty());
-    Sampler s{controlPoints, std::vector<Point>(controlPoints.size()), std::max(tolerance, 0.0), minDepth,
-              std::clamp(maxDepth, 0, 30), {}};
+    Sampler s{controlPoints,
+              std::vector<Point>(controlPoints.size()),
+              std::max(tolerance, 0.0),
+              minDepth,
+              std::clamp(maxDepth, 0, 30),
+              {}};
     const Point p0 = controlPoints.front(), p1 = controlPoints.back();
     s.out.t.push_back(0.0);
     s.out.points.push_back(p0);

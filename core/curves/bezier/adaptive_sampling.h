@@ -13,8 +13,8 @@
 namespace granota {
 
 struct AdaptiveSample {
-    std::vector<double> t;      ///< increasing parameters, t[0] = 0, t.back() = 1
-    std::vector<Point> points;  ///< c(t[i])
+    std::vector<double> t;     ///< increasing parameters, t[0] = 0, t.back() = 1
+    std::vector<Point> points; ///< c(t[i])
 };
 
 /// `minDepth` levels are always split (a symmetric curve can have its midpoint on the chord);

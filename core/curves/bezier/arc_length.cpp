@@ -66,7 +66,8 @@ struct Speed {
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-inline double gaussRuleBody(const Speed& f, double a, double b)
+inline double
+gaussRuleBody(const Speed& f, double a, double b)
 {
     const GaussLegendre& g = gauss();
     const double h = 0.5 * (b - a), c = 0.5 * (a + b);
@@ -94,8 +95,8 @@ inline double gaussRuleBody(const Speed& f, double a, double b)
     }
     double sum = 0;
     for (int j = 0; j < H; ++j)
-        sum += g.w[static_cast<std::size_t>(j)] * (std::sqrt(x[j] * x[j] + y[j] * y[j]) +
-                                                   std::sqrt(x[K - 1 - j] * x[K - 1 - j] + y[K - 1 - j] * y[K - 1 - j]));
+        sum += g.w[static_cast<std::size_t>(j)] *
+               (std::sqrt(x[j] * x[j] + y[j] * y[j]) + std::sqrt(x[K - 1 - j] * x[K - 1 - j] + y[K - 1 - j] * y[K - 1 - j]));
     return h * sum;
 }
 
@@ -103,10 +104,7 @@ inline double gaussRuleBody(const Speed& f, double a, double b)
 /// The same rule compiled for AVX2 (four nodes per instruction instead of two), chosen at
 /// run time where the processor has it. Only AVX2, not FMA: every product and sum is the
 /// same IEEE operation as in the plain build, so both give the same length to the bit.
-__attribute__((target("avx2"))) double gaussRuleAvx2(const Speed& f, double a, double b)
-{
-    return gaussRuleBody(f, a, b);
-}
+__attribute__((target("avx2"))) double gaussRuleAvx2(const Speed& f, double a, double b) { return gaussRuleBody(f, a, b); }
 
 bool hasAvx2()
 {
@@ -114,10 +112,7 @@ bool hasAvx2()
     return yes;
 }
 
-double gaussRule(const Speed& f, double a, double b)
-{
-    return hasAvx2() ? gaussRuleAvx2(f, a, b) : gaussRuleBody(f, a, b);
-}
+double gaussRule(const Speed& f, double a, double b) { return hasAvx2() ? gaussRuleAvx2(f, a, b) : gaussRuleBody(f, a, b); }
 #else
 double gaussRule(const Speed& f, double a, double b) { return gaussRuleBody(f, a, b); }
 #endif
@@ -196,9 +191,9 @@ bool hodographPieceAvoidsZero(const Point* d, int m, int depth)
     for (int r = 0; r <= m; ++r) {
         left[static_cast<std::size_t>(r)] = right[0];
         for (int i = 0; i + r < m; ++i)
-            right[static_cast<std::size_t>(i)] =
-                Point(0.5 * (right[static_cast<std::size_t>(i)].x + right[static_cast<std::size_t>(i + 1)].x),
-                      0.5 * (right[static_cast<std::size_t>(i)].y + right[static_cast<std::size_t>(i + 1)].y));
+            right[static_cast<std::size_t>(i)] = Point(
+                0.5 * (right[static_cast<std::size_t>(i)].x + right[static_cast<std::size_t>(i + 1)].x),
+                0.5 * (right[static_cast<std::size_t>(i)].y + right[static_cast<std::size_t>(i + 1)].y));
     }
     // right[0..m] now holds the right half's points P_0^m, P_1^{m−1}, …, P_m^0.
     return hodographPieceAvoidsZero(left.data(), m, depth - 1) && hodographPieceAvoidsZero(right.data(), m, depth - 1);
@@ -216,8 +211,9 @@ int splitPoints(const std::vector<Point>& P, const Point* w, std::array<double, 
     if (m + 1 <= static_cast<int>(kFixedHodograph)) {
         std::array<Point, kFixedHodograph> d;
         for (int i = 0; i <= m; ++i) // directions only: halves avoid overflow
-            d[static_cast<std::size_t>(i)] = Point(0.5 * P[static_cast<std::size_t>(i + 1)].x - 0.5 * P[static_cast<std::size_t>(i)].x,
-                                                   0.5 * P[static_cast<std::size_t>(i + 1)].y - 0.5 * P[static_cast<std::size_t>(i)].y);
+            d[static_cast<std::size_t>(i)] = Point(
+                0.5 * P[static_cast<std::size_t>(i + 1)].x - 0.5 * P[static_cast<std::size_t>(i)].x,
+                0.5 * P[static_cast<std::size_t>(i + 1)].y - 0.5 * P[static_cast<std::size_t>(i)].y);
         if (hodographPieceAvoidsZero(d.data(), m, 3))
             return 0;
     }
@@ -238,7 +234,10 @@ int splitPoints(const std::vector<Point>& P, const Point* w, std::array<double, 
 /// `whole` is the 16-point rule on [a, b], already formed for the first estimate of L.
 template <class Panel> double adaptive(const Speed& f, double a, double b, double whole, double tol, Panel&& panel)
 {
-    struct Item { double a, b, g; int depth; };
+    struct Item {
+        double a, b, g;
+        int depth;
+    };
     std::array<Item, kMaxDepth + 2> stack;
     std::size_t top = 0;
     stack[top++] = {a, b, whole, 0};
@@ -333,11 +332,11 @@ ArcLengthParametrization::ArcLengthParametrization(const std::vector<Point>& P, 
     const Speed f{m_w.data(), static_cast<int>(m_w.size()) - 1};
     double s = 0;
     const double scaled = P.size() < 2 ? 0.0
-        : integrate(P, f, 0.0, 1.0, clampedTolerance(relativeTolerance), [&](double a, double g) {
-              m_a.push_back(a);
-              m_s.push_back(s);
-              s += g;
-          });
+                                       : integrate(P, f, 0.0, 1.0, clampedTolerance(relativeTolerance), [&](double a, double g) {
+                                             m_a.push_back(a);
+                                             m_s.push_back(s);
+                                             s += g;
+                                         });
     if (m_a.empty()) { // length 0: one panel [0, 1] of zero length
         m_a.push_back(0);
         m_s.push_back(0);
@@ -345,10 +344,7 @@ ArcLengthParametrization::ArcLengthParametrization(const std::vector<Point>& P, 
     m_total = std::ldexp(scaled, e);
 }
 
-double ArcLengthParametrization::speed(double t) const
-{
-    return Speed{m_w.data(), static_cast<int>(m_w.size()) - 1}(t);
-}
+double ArcLengthParametrization::speed(double t) const { return Speed{m_w.data(), static_cast<int>(m_w.size()) - 1}(t); }
 
 double ArcLengthParametrization::panelLength(std::size_t k, double t) const
 {

@@ -32,20 +32,20 @@ double arcLength(const std::vector<Point>& P, double t0 = 0, double t1 = 1, doub
 class ArcLengthParametrization {
 public:
     explicit ArcLengthParametrization(const std::vector<Point>& P, double relativeTolerance = 1e-13);
-    double total() const { return m_total; }  ///< L
-    double lengthAt(double t) const;          ///< s(t), t clamped to [0, 1]
-    double parameterAt(double s) const;       ///< t(s), s clamped to [0, L]; the smallest t on a
-                                              ///< stretch of zero speed (a repeated point)
+    double total() const { return m_total; }                    ///< L
+    double lengthAt(double t) const;                            ///< s(t), t clamped to [0, 1]
+    double parameterAt(double s) const;                         ///< t(s), s clamped to [0, L]; the smallest t on a
+                                                                ///< stretch of zero speed (a repeated point)
     int panels() const { return static_cast<int>(m_a.size()); } ///< how many the rule needed
 
 private:
     double panelLength(std::size_t k, double t) const; // scaled ∫_{a_k}^{t}
     double speed(double t) const;                      // scaled |c′(t)|
 
-    std::vector<Point> m_w;   // C(m,i) · (scaled hodograph point i)
-    std::vector<double> m_a;  // panel starts, ascending; panel k is [m_a[k], m_a[k+1]] (last ends at 1)
-    std::vector<double> m_s;  // scaled s(m_a[k])
-    double m_scale = 1;       // lengths of the scaled curve times m_scale are lengths of c
+    std::vector<Point> m_w;  // C(m,i) · (scaled hodograph point i)
+    std::vector<double> m_a; // panel starts, ascending; panel k is [m_a[k], m_a[k+1]] (last ends at 1)
+    std::vector<double> m_s; // scaled s(m_a[k])
+    double m_scale = 1;      // lengths of the scaled curve times m_scale are lengths of c
     double m_total = 0;
 };
 

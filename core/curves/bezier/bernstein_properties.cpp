@@ -45,8 +45,8 @@ BernsteinChecks checkBernsteinProperties(int n, double t)
     if (n >= 1) {
         for (int i = 0; i <= n; ++i) {
             const double right = (1.0 - t) * bernsteinClosedForm(i, n - 1, t) + t * bernsteinClosedForm(i - 1, n - 1, t);
-            checks.recursion.residual =
-                std::max(checks.recursion.residual, std::fabs(closed[static_cast<std::size_t>(i)] - right));
+            checks.recursion.residual = std::max(checks.recursion.residual,
+                                                 std::fabs(closed[static_cast<std::size_t>(i)] - right));
         }
     } else {
         checks.recursion.applies = false;

@@ -20,9 +20,9 @@ namespace granota {
 /// One property at one (n, t): how far from exact the floating-point evaluation is, and
 /// whether the identity holds exactly as polynomials.
 struct BernsteinPropertyCheck {
-    double residual = 0.0;  ///< max over i of |left − right| at t (0 when there is nothing to check)
-    bool exact = true;      ///< the identity holds for the polynomials with rational coefficients
-    bool applies = true;    ///< false for the recursion at n = 0 (Lemma 2.1 needs n ≥ 1)
+    double residual = 0.0; ///< max over i of |left − right| at t (0 when there is nothing to check)
+    bool exact = true;     ///< the identity holds for the polynomials with rational coefficients
+    bool applies = true;   ///< false for the recursion at n = 0 (Lemma 2.1 needs n ≥ 1)
 };
 
 struct BernsteinChecks {

@@ -88,8 +88,7 @@ double deCasteljauValue(const double* b, int n, double t)
     std::vector<double> w(b, b + n + 1);
     for (int r = 1; r <= n; ++r)
         for (int i = 0; i <= n - r; ++i)
-            w[static_cast<std::size_t>(i)] =
-                (1.0 - t) * w[static_cast<std::size_t>(i)] + t * w[static_cast<std::size_t>(i + 1)];
+            w[static_cast<std::size_t>(i)] = (1.0 - t) * w[static_cast<std::size_t>(i)] + t * w[static_cast<std::size_t>(i + 1)];
     return w[0];
 }
 
@@ -216,14 +215,14 @@ struct FoundRoot {
     double t = 0;
     double uncertainty = 0; ///< how far the true root may be (for merging)
     bool crossing = false;
-    bool known = false;     ///< crossing is known without looking (the ends: no other side)
+    bool known = false; ///< crossing is known without looking (the ends: no other side)
     /// Which of two reports of one root is the better position: 4 an end, 3 a bracketed
     /// simple root, 2 the zero of p′ at a touching zero, 1 a halving point, 0 a midpoint.
     int rank = 0;
     /// Found alone in an interval whose end values have opposite signs well above rounding:
     /// p changes sign there, so crossing is known too unless another report merges with it.
     bool bracketed = false;
-    bool merged = false;    ///< another report of the same root was merged into this one
+    bool merged = false; ///< another report of the same root was merged into this one
 };
 
 class Solver {
@@ -264,8 +263,8 @@ public:
             for (int i = 0; i <= n; ++i)
                 maxAbs = std::max(maxAbs, std::fabs(b[i]));
             const double mid = a + 0.5 * w;
-            if ((maxAbs <= globalTolerance_ && maxAbs <= localTolerance(a, a + w)) || depth >= kMaxDepth
-                || !(mid > a && mid < a + w)) {
+            if ((maxAbs <= globalTolerance_ && maxAbs <= localTolerance(a, a + w)) || depth >= kMaxDepth ||
+                !(mid > a && mid < a + w)) {
                 tangentialRoot(b, a, w);
                 return;
             }
@@ -391,8 +390,8 @@ std::vector<double> binomialRow(int k)
 {
     std::vector<double> c(static_cast<std::size_t>(k + 1), 1.0);
     for (int i = 1; i <= k; ++i)
-        c[static_cast<std::size_t>(i)] =
-            c[static_cast<std::size_t>(i - 1)] * static_cast<double>(k - i + 1) / static_cast<double>(i);
+        c[static_cast<std::size_t>(i)] = c[static_cast<std::size_t>(i - 1)] * static_cast<double>(k - i + 1) /
+                                         static_cast<double>(i);
     return c;
 }
 
@@ -406,8 +405,8 @@ std::vector<double> bernsteinProduct(const std::vector<double>& a, const std::ve
     std::vector<double> c(static_cast<std::size_t>(m + n + 1), 0.0);
     for (int i = 0; i <= m; ++i)
         for (int j = 0; j <= n; ++j)
-            c[static_cast<std::size_t>(i + j)] += cm[static_cast<std::size_t>(i)] * cn[static_cast<std::size_t>(j)]
-                                                  * a[static_cast<std::size_t>(i)] * b[static_cast<std::size_t>(j)];
+            c[static_cast<std::size_t>(i + j)] += cm[static_cast<std::size_t>(i)] * cn[static_cast<std::size_t>(j)] *
+                                                  a[static_cast<std::size_t>(i)] * b[static_cast<std::size_t>(j)];
     for (int k = 0; k <= m + n; ++k)
         c[static_cast<std::size_t>(k)] /= cmn[static_cast<std::size_t>(k)];
     return c;
@@ -467,8 +466,8 @@ BernsteinRoots bernsteinRoots(const std::vector<double>& coefficients)
                 if (magnitude.empty())
                     for (double c : coefficients)
                         magnitude.push_back(std::fabs(c));
-                same = std::fabs(bernsteinValue(coefficients, between))
-                       <= solver.toleranceFor(bernsteinValue(magnitude, between));
+                same = std::fabs(bernsteinValue(coefficients, between)) <=
+                       solver.toleranceFor(bernsteinValue(magnitude, between));
             }
             if (same) {
                 if (r.rank > last.rank)

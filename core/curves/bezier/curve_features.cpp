@@ -26,8 +26,7 @@ std::vector<double> coordinate(const std::vector<Point>& P, int which)
 
 std::vector<double> openInterval(std::vector<double> roots)
 {
-    roots.erase(std::remove_if(roots.begin(), roots.end(), [](double t) { return !(t > 0.0 && t < 1.0); }),
-                roots.end());
+    roots.erase(std::remove_if(roots.begin(), roots.end(), [](double t) { return !(t > 0.0 && t < 1.0); }), roots.end());
     return roots;
 }
 
@@ -142,8 +141,8 @@ std::vector<double> curvatureNumeratorOf(const std::vector<Point>& A)
     for (int i = 0; i <= m; ++i)
         for (int j = i + 1; j <= m; ++j) {
             const int k = i + j - 1;
-            D[static_cast<std::size_t>(k)] += (j - i) * cm[static_cast<std::size_t>(i)] * cm[static_cast<std::size_t>(j)]
-                                              * cross(A[static_cast<std::size_t>(i)], A[static_cast<std::size_t>(j)]);
+            D[static_cast<std::size_t>(k)] += (j - i) * cm[static_cast<std::size_t>(i)] * cm[static_cast<std::size_t>(j)] *
+                                              cross(A[static_cast<std::size_t>(i)], A[static_cast<std::size_t>(j)]);
         }
     for (int k = 0; k <= 2 * m - 2; ++k)
         D[static_cast<std::size_t>(k)] /= c2[static_cast<std::size_t>(k)];

@@ -57,7 +57,8 @@ double l2Error(const std::vector<RPoint>& P, const std::vector<RPoint>& reduced)
 
 Error nothingToReduce()
 {
-    return makeError(ErrorCode::TooFewPoints, "degree reduction needs at least two control points (degree 0 has nothing to reduce)");
+    return makeError(ErrorCode::TooFewPoints,
+                     "degree reduction needs at least two control points (degree 0 has nothing to reduce)");
 }
 
 } // namespace
@@ -88,7 +89,8 @@ Expected<DegreeReduction<double>> reduceDegree(const std::vector<Point>& P)
         return nothingToReduce();
     const int n = static_cast<int>(P.size()) - 1;
     if (n > 40)
-        return makeError(ErrorCode::OutOfRange, "degree reduction is limited to degree 40 (the least-squares system is too ill-conditioned beyond)");
+        return makeError(ErrorCode::OutOfRange,
+                         "degree reduction is limited to degree 40 (the least-squares system is too ill-conditioned beyond)");
     for (const Point& p : P)
         if (!isFinite(p))
             return makeError(ErrorCode::InvalidInput, "degree reduction needs finite control points");

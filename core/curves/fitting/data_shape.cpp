@@ -50,9 +50,8 @@ DataShape analyseDataShape(const std::vector<Point>& q, double relativeTolerance
         }
     }
     const Point direction(far.x / farDistance, far.y / farDistance);
-    shape.collinear = std::all_of(finite.begin(), finite.end(), [&](const Point& p) {
-        return std::fabs(cross(local(p), direction)) <= relativeTolerance;
-    });
+    shape.collinear = std::all_of(finite.begin(), finite.end(),
+                                  [&](const Point& p) { return std::fabs(cross(local(p), direction)) <= relativeTolerance; });
     return shape;
 }
 

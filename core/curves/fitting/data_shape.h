@@ -12,10 +12,10 @@
 namespace granota {
 
 struct DataShape {
-    bool allCoincide = false;     ///< every Q_i is the same point (or there are fewer than 2)
-    bool collinear = false;       ///< every Q_i lies on one line (true when they all coincide)
-    int zeroChords = 0;           ///< how many consecutive pairs coincide (d_i = 0)
-    int firstZeroChord = -1;      ///< the smallest i ≥ 1 with Q_{i−1} = Q_i, or −1
+    bool allCoincide = false; ///< every Q_i is the same point (or there are fewer than 2)
+    bool collinear = false;   ///< every Q_i lies on one line (true when they all coincide)
+    int zeroChords = 0;       ///< how many consecutive pairs coincide (d_i = 0)
+    int firstZeroChord = -1;  ///< the smallest i ≥ 1 with Q_{i−1} = Q_i, or −1
 };
 
 /// Collinearity is decided relative to the size of the data: every point within

@@ -4,8 +4,8 @@
 
 namespace granota {
 
-std::vector<DegreeError> fitErrorByDegree(const std::vector<Point>& q, FitOptions options, int maxDegree,
-                                          std::size_t entryBudget, bool* truncated)
+std::vector<DegreeError> fitErrorByDegree(const std::vector<Point>& q, FitOptions options, int maxDegree, std::size_t entryBudget,
+                                          bool* truncated)
 {
     std::vector<DegreeError> out;
     if (truncated)

@@ -25,36 +25,32 @@ std::string fitWarningText(const FitWarning& w)
     switch (w.code) {
     case FitWarningCode::CoincidentFallback:
         return "all the points coincide: " + w.parametrization + " parameters are undefined, uniform ones are used";
-    case FitWarningCode::CorrectionStopped:
-        return "parameter correction stopped: " + w.reason;
+    case FitWarningCode::CorrectionStopped: return "parameter correction stopped: " + w.reason;
     case FitWarningCode::NormalEquationsSquare:
-        return "the normal equations square the condition number: cond₂(MᵀM) ≈ " + sci(w.cond * w.cond)
-               + ", so about " + std::to_string(normalEquationsDigitsLost(w.cond))
-               + " of the 16 significant digits may be lost";
+        return "the normal equations square the condition number: cond₂(MᵀM) ≈ " + sci(w.cond * w.cond) + ", so about " +
+               std::to_string(normalEquationsDigitsLost(w.cond)) + " of the 16 significant digits may be lost";
     case FitWarningCode::RankDeficient: {
         const std::string what = w.repeated ? "M is rank deficient (rank " : "M is numerically rank deficient (rank ";
-        const std::string why = w.repeated ? "only " + std::to_string(w.distinct)
-                                                 + " of the parameters t_i are distinct (coincident points?)"
+        const std::string why = w.repeated ? "only " + std::to_string(w.distinct) +
+                                                 " of the parameters t_i are distinct (coincident points?)"
                                            : "cond₂(M) ≈ " + sci(w.cond);
-        return what + std::to_string(w.rank) + " < n + 1 = " + std::to_string(m) + ": " + why
-               + "); the control points are the minimum-norm least-squares solution";
+        return what + std::to_string(w.rank) + " < n + 1 = " + std::to_string(m) + ": " + why +
+               "); the control points are the minimum-norm least-squares solution";
     }
     case FitWarningCode::IllConditioned:
-        return "ill-conditioned: cond₂(M) ≈ " + sci(w.cond)
-               + "; the control points are very sensitive to the data (lower the degree?)";
+        return "ill-conditioned: cond₂(M) ≈ " + sci(w.cond) +
+               "; the control points are very sensitive to the data (lower the degree?)";
     case FitWarningCode::HighDegree:
-        return "high degree n = " + std::to_string(w.degree) + ": the Bernstein basis grows ill-conditioned (cond₂(M) ≈ "
-               + sci(w.cond) + ")";
+        return "high degree n = " + std::to_string(w.degree) + ": the Bernstein basis grows ill-conditioned (cond₂(M) ≈ " +
+               sci(w.cond) + ")";
     case FitWarningCode::RepeatedParameters:
-        return "only " + std::to_string(w.distinct) + " distinct parameters t_i for " + std::to_string(m)
-               + " control points: M is rank deficient";
-    case FitWarningCode::AllCoincide:
-        return "all the data points coincide";
+        return "only " + std::to_string(w.distinct) + " distinct parameters t_i for " + std::to_string(m) +
+               " control points: M is rank deficient";
+    case FitWarningCode::AllCoincide: return "all the data points coincide";
     case FitWarningCode::ZeroChords:
-        return std::to_string(w.pairs) + " pair(s) of consecutive data points coincide, the first Q"
-               + std::to_string(w.first - 1) + " and Q" + std::to_string(w.first);
-    case FitWarningCode::Collinear:
-        return "the data points are collinear";
+        return std::to_string(w.pairs) + " pair(s) of consecutive data points coincide, the first Q" +
+               std::to_string(w.first - 1) + " and Q" + std::to_string(w.first);
+    case FitWarningCode::Collinear: return "the data points are collinear";
     }
     return {};
 }

@@ -36,33 +36,30 @@ enum class FitWarningCode {
     RankDeficient,         ///< rank(M) = `rank` < n + 1; `repeated`: because of repeated t_i (`distinct`)
     IllConditioned,        ///< cond₂(M) > kIllConditionedCond (`cond`)
     // Listed by fitWarnings() only:
-    HighDegree,            ///< n = `degree` > kHighFitDegree (and `cond`)
-    RepeatedParameters,    ///< only `distinct` distinct t_i for n + 1 = `degree` + 1 control points
-    AllCoincide,           ///< every data point is the same; `byDistance`: chord/centripetal asked for
-    ZeroChords,            ///< `pairs` consecutive points coincide, the first Q_{`first`−1} = Q_`first`
-    Collinear,             ///< the data points lie on one line
+    HighDegree,         ///< n = `degree` > kHighFitDegree (and `cond`)
+    RepeatedParameters, ///< only `distinct` distinct t_i for n + 1 = `degree` + 1 control points
+    AllCoincide,        ///< every data point is the same; `byDistance`: chord/centripetal asked for
+    ZeroChords,         ///< `pairs` consecutive points coincide, the first Q_{`first`−1} = Q_`first`
+    Collinear,          ///< the data points lie on one line
 };
 
 struct FitWarning {
     FitWarningCode code = FitWarningCode::IllConditioned;
-    double cond = 0;          ///< cond₂(M)
-    int degree = 0;           ///< n
-    int rank = 0;             ///< RankDeficient: the rank of M
-    int distinct = 0;         ///< how many of the parameters t_i differ
-    bool repeated = false;    ///< RankDeficient: repeated t_i (else only numerically deficient)
-    int pairs = 0;            ///< ZeroChords: how many consecutive pairs coincide
-    int first = -1;           ///< ZeroChords: the smallest i with Q_{i−1} = Q_i
-    bool byDistance = false;  ///< AllCoincide: the parametrization asked for is not uniform
+    double cond = 0;             ///< cond₂(M)
+    int degree = 0;              ///< n
+    int rank = 0;                ///< RankDeficient: the rank of M
+    int distinct = 0;            ///< how many of the parameters t_i differ
+    bool repeated = false;       ///< RankDeficient: repeated t_i (else only numerically deficient)
+    int pairs = 0;               ///< ZeroChords: how many consecutive pairs coincide
+    int first = -1;              ///< ZeroChords: the smallest i with Q_{i−1} = Q_i
+    bool byDistance = false;     ///< AllCoincide: the parametrization asked for is not uniform
     std::string parametrization; ///< CoincidentFallback: the name of the one asked for
-    std::string reason;       ///< CorrectionStopped: the error of the failed correction
+    std::string reason;          ///< CorrectionStopped: the error of the failed correction
 };
 
 /// About how many of the 16 significant digits the normal equations may lose:
 /// log₁₀ cond₂(MᵀM) = log₁₀ cond₂(M)², at most 16.
-inline int normalEquationsDigitsLost(double cond)
-{
-    return std::min(16, static_cast<int>(std::log10(cond * cond)));
-}
+inline int normalEquationsDigitsLost(double cond) { return std::min(16, static_cast<int>(std::log10(cond * cond))); }
 
 /// The English text of a warning, as the CLI prints it (FitResult::warnings).
 std::string fitWarningText(const FitWarning& w);

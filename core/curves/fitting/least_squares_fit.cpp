@@ -81,26 +81,24 @@ template <class S> int countDistinct(const std::vector<S>& t)
 
 std::string pointsNeeded(int degree)
 {
-    return "degree " + std::to_string(degree) + " has " + std::to_string(degree + 1)
-           + " control points and needs at least " + std::to_string(degree + 1) + " data points";
+    return "degree " + std::to_string(degree) + " has " + std::to_string(degree + 1) + " control points and needs at least " +
+           std::to_string(degree + 1) + " data points";
 }
 
 /// Checks shared by the floating-point and the exact fit.
 std::optional<Error> validateShape(std::size_t count, int degree)
 {
     if (count < 2)
-        return makeError(ErrorCode::TooFewPoints, "a least-squares fit needs at least 2 points, got "
-                                                      + std::to_string(count));
+        return makeError(ErrorCode::TooFewPoints, "a least-squares fit needs at least 2 points, got " + std::to_string(count));
     if (degree < 0)
         return makeError(ErrorCode::OutOfRange, "the degree must be 0 or more, got " + std::to_string(degree));
     if (degree > kMaxFitDegree)
-        return makeError(ErrorCode::OutOfRange, "degree " + std::to_string(degree)
-                                                    + " is beyond the supported maximum of "
-                                                    + std::to_string(kMaxFitDegree));
+        return makeError(ErrorCode::OutOfRange, "degree " + std::to_string(degree) + " is beyond the supported maximum of " +
+                                                    std::to_string(kMaxFitDegree));
     if (static_cast<std::size_t>(degree) + 1 > count)
-        return makeError(ErrorCode::DegreeTooHigh, pointsNeeded(degree) + " (n + 1 ≤ k + 1); there are only "
-                                                       + std::to_string(count) + ", so the degree can be at most "
-                                                       + std::to_string(count - 1));
+        return makeError(ErrorCode::DegreeTooHigh, pointsNeeded(degree) + " (n + 1 ≤ k + 1); there are only " +
+                                                       std::to_string(count) + ", so the degree can be at most " +
+                                                       std::to_string(count - 1));
     return std::nullopt;
 }
 
@@ -146,9 +144,9 @@ Expected<Solution> solve(const ScaledPoints& data, const std::vector<double>& t,
         if (solver == LeastSquaresSolver::Normal) {
             if (distinct() < m)
                 return makeError(ErrorCode::Singular,
-                                 "the normal equations MᵀM P = MᵀQ have no unique solution: only " + std::to_string(distinct())
-                                     + " of the parameters t_i are distinct and Lemma 2.2 needs n + 1 = " + std::to_string(m)
-                                     + " (coincident points?). Lower the degree or use the qr or svd solver.");
+                                 "the normal equations MᵀM P = MᵀQ have no unique solution: only " + std::to_string(distinct()) +
+                                     " of the parameters t_i are distinct and Lemma 2.2 needs n + 1 = " + std::to_string(m) +
+                                     " (coincident points?). Lower the degree or use the qr or svd solver.");
             MtM = M.transpose() * M;
             MtQ = M.transpose() * Q;
         }
@@ -174,13 +172,13 @@ Expected<Solution> solve(const ScaledPoints& data, const std::vector<double>& t,
         const Eigen::LLT<Eigen::MatrixXd> llt(MtM);
         if (llt.info() != Eigen::Success)
             return makeError(ErrorCode::Singular,
-                             "the Cholesky factorisation of MᵀM failed: MᵀM is numerically singular (cond₂(M) ≈ "
-                                 + formatSignificant(s.cond, 2) + ", so cond₂(MᵀM) ≈ " + formatSignificant(s.cond * s.cond, 2)
-                                 + "). Use the qr or svd solver.");
+                             "the Cholesky factorisation of MᵀM failed: MᵀM is numerically singular (cond₂(M) ≈ " +
+                                 formatSignificant(s.cond, 2) + ", so cond₂(MᵀM) ≈ " + formatSignificant(s.cond * s.cond, 2) +
+                                 "). Use the qr or svd solver.");
         P = llt.solve(MtQ);
         if (!P.allFinite())
-            return makeError(ErrorCode::Singular, "the normal equations gave a non-finite solution (cond₂(MᵀM) ≈ "
-                                                      + formatSignificant(s.cond * s.cond, 2) + "). Use the qr or svd solver.");
+            return makeError(ErrorCode::Singular, "the normal equations gave a non-finite solution (cond₂(MᵀM) ≈ " +
+                                                      formatSignificant(s.cond * s.cond, 2) + "). Use the qr or svd solver.");
         if (s.cond > kNormalEquationsCond) {
             FitWarning w;
             w.code = FitWarningCode::NormalEquationsSquare;
@@ -309,8 +307,8 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
 {
     for (std::size_t i = 0; i < q.size(); ++i)
         if (!isFinite(q[i]))
-            return makeError(ErrorCode::InvalidInput, "point Q_" + std::to_string(i) + " (number " + std::to_string(i + 1)
-                                                          + ") has a coordinate that is NaN or infinite");
+            return makeError(ErrorCode::InvalidInput, "point Q_" + std::to_string(i) + " (number " + std::to_string(i + 1) +
+                                                          ") has a coordinate that is NaN or infinite");
     if (auto error = validateShape(q.size(), options.degree))
         return *error;
     const int n = options.degree;
@@ -437,8 +435,8 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
     result.maxError = scale * maxError;
     result.params = std::move(t);
 
-    bool finite = std::isfinite(result.sse) && std::isfinite(result.rms) && std::isfinite(result.maxError)
-                  && std::isfinite(result.cond);
+    bool finite = std::isfinite(result.sse) && std::isfinite(result.rms) && std::isfinite(result.maxError) &&
+                  std::isfinite(result.cond);
     for (const Point& p : result.controlPoints)
         finite = finite && isFinite(p);
     // Every residual is finite when their sum of squares is (checked above).
@@ -465,23 +463,22 @@ Expected<ExactFit> fitBezierExact(const std::vector<RPoint>& q, int degree, Para
             const Rational squared = Rational(dx * dx + dy * dy);
             const std::optional<Rational> d = exactSqrt(squared);
             if (!d)
-                which = "d_" + std::to_string(j) + " = |Q_" + std::to_string(j) + " − Q_" + std::to_string(j - 1)
-                        + "| = √(" + toString(squared) + ")";
+                which = "d_" + std::to_string(j) + " = |Q_" + std::to_string(j) + " − Q_" + std::to_string(j - 1) + "| = √(" +
+                        toString(squared) + ")";
             else if (p == Parametrization::Centripetal && !exactSqrt(*d))
                 which = "√d_" + std::to_string(j) + " = √(" + toString(*d) + ")";
         }
-        return makeError(ErrorCode::NotRational, "the " + toString(p) + " parameters are irrational (" + which
-                                                     + " is not a rational number), so the fit cannot be exact; "
-                                                       "use uniform parameters or the floating-point fit");
+        return makeError(ErrorCode::NotRational, "the " + toString(p) + " parameters are irrational (" + which +
+                                                     " is not a rational number), so the fit cannot be exact; "
+                                                     "use uniform parameters or the floating-point fit");
     }
     const int distinct = countDistinct(*t);
     if (const double work = fitExactWork(n, *t, maxBitLength(q)); !exactWorkAllowed(work, budget))
-        return makeError(ErrorCode::OutOfRange,
-                         exactWorkRefusal("fit", work, "--degree, the number of points or their digits"));
+        return makeError(ErrorCode::OutOfRange, exactWorkRefusal("fit", work, "--degree, the number of points or their digits"));
     if (distinct < n + 1)
-        return makeError(ErrorCode::Singular, "MᵀM is singular: only " + std::to_string(distinct)
-                                                  + " of the parameters t_i are distinct and Lemma 2.2 needs n + 1 = "
-                                                  + std::to_string(n + 1) + " (coincident points?)");
+        return makeError(ErrorCode::Singular, "MᵀM is singular: only " + std::to_string(distinct) +
+                                                  " of the parameters t_i are distinct and Lemma 2.2 needs n + 1 = " +
+                                                  std::to_string(n + 1) + " (coincident points?)");
 
     ExactFit fit;
     fit.params = *t;

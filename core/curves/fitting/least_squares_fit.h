@@ -51,14 +51,14 @@ struct FitOptions {
 };
 
 struct FitResult {
-    std::vector<Point> controlPoints;  ///< P_0..P_n
-    std::vector<double> params;        ///< the t_i finally used (after any correction)
-    std::vector<Point> residuals;      ///< Q_i − α(t_i)
-    double sse = 0;                    ///< Σ‖Q_i − α(t_i)‖² (the error of Prop 2.2)
-    double rms = 0;                    ///< √(sse / (k + 1))
-    double maxError = 0;               ///< max ‖Q_i − α(t_i)‖
-    double cond = 1;                   ///< cond₂(M) = σ_max/σ_min (DBL_MAX when M is exactly singular)
-    int corrections = 0;               ///< parameter corrections that lowered the error
+    std::vector<Point> controlPoints;     ///< P_0..P_n
+    std::vector<double> params;           ///< the t_i finally used (after any correction)
+    std::vector<Point> residuals;         ///< Q_i − α(t_i)
+    double sse = 0;                       ///< Σ‖Q_i − α(t_i)‖² (the error of Prop 2.2)
+    double rms = 0;                       ///< √(sse / (k + 1))
+    double maxError = 0;                  ///< max ‖Q_i − α(t_i)‖
+    double cond = 1;                      ///< cond₂(M) = σ_max/σ_min (DBL_MAX when M is exactly singular)
+    int corrections = 0;                  ///< parameter corrections that lowered the error
     std::vector<FitWarning> warningCodes; ///< ill-conditioning, rank deficiency, fallbacks (fit_warning.h)
     std::vector<std::string> warnings;    ///< their English text, fitWarningText(), as the CLI prints it
 };
@@ -82,13 +82,13 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
 
 /// The exact least-squares fit of rational data: every matrix of Ex 2.7 and Ex 2.8.
 struct ExactFit {
-    RationalMatrix M;      ///< (k+1)×(n+1), M(i, j) = B_j^n(t_i) (Lemma 2.2)
-    RationalMatrix MtM;    ///< MᵀM
-    RationalMatrix MtMinv; ///< (MᵀM)⁻¹
-    RationalMatrix Mplus;  ///< M⁺ = (MᵀM)⁻¹Mᵀ (Nota 2.2)
-    RationalMatrix P;      ///< (n+1)×2: row j is the control point P_j = (M⁺Q)_j
+    RationalMatrix M;             ///< (k+1)×(n+1), M(i, j) = B_j^n(t_i) (Lemma 2.2)
+    RationalMatrix MtM;           ///< MᵀM
+    RationalMatrix MtMinv;        ///< (MᵀM)⁻¹
+    RationalMatrix Mplus;         ///< M⁺ = (MᵀM)⁻¹Mᵀ (Nota 2.2)
+    RationalMatrix P;             ///< (n+1)×2: row j is the control point P_j = (M⁺Q)_j
     std::vector<Rational> params; ///< t_0..t_k
-    Rational sse;          ///< Σ‖Q_i − α(t_i)‖²
+    Rational sse;                 ///< Σ‖Q_i − α(t_i)‖²
 };
 
 /// Errors as fitBezier (no OutOfRange for results), plus NotRational when the chosen
@@ -96,7 +96,6 @@ struct ExactFit {
 /// root is not rational, as in Ex 2.9), Singular when fewer than n + 1 parameters are
 /// distinct (MᵀM is then singular, see Lemma 2.2), and OutOfRange, before any matrix is
 /// built, when fitExactWork() (core/exact/exact_cost.h) is beyond `budget`.
-Expected<ExactFit> fitBezierExact(const std::vector<RPoint>& q, int degree, Parametrization p,
-                                  double budget = kMaxExactWork);
+Expected<ExactFit> fitBezierExact(const std::vector<RPoint>& q, int degree, Parametrization p, double budget = kMaxExactWork);
 
 } // namespace granota

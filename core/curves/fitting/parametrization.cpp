@@ -88,8 +88,7 @@ std::vector<double> parameters(const std::vector<Point>& q, Parametrization p, b
     return t;
 }
 
-std::optional<std::vector<Rational>> exactParameters(const std::vector<RPoint>& q, Parametrization p,
-                                                     bool* fellBackToUniform)
+std::optional<std::vector<Rational>> exactParameters(const std::vector<RPoint>& q, Parametrization p, bool* fellBackToUniform)
 {
     if (fellBackToUniform)
         *fellBackToUniform = false;

@@ -58,9 +58,8 @@ double dotRows(const double* __restrict p, const double* __restrict x, int n)
 class StreamingQr {
 public:
     explicit StreamingQr(int n)
-        : m_n(n), m_w(n + 3), m_block(static_cast<std::size_t>(m_w) * kBlockRows),
-          m_r(Eigen::MatrixXd::Zero(m_w, m_w)), m_gram(static_cast<std::size_t>(m_w)),
-          m_k(static_cast<std::size_t>(m_w)), m_bernstein(n, kBlockRows)
+        : m_n(n), m_w(n + 3), m_block(static_cast<std::size_t>(m_w) * kBlockRows), m_r(Eigen::MatrixXd::Zero(m_w, m_w)),
+          m_gram(static_cast<std::size_t>(m_w)), m_k(static_cast<std::size_t>(m_w)), m_bernstein(n, kBlockRows)
     {
     }
 
@@ -108,8 +107,7 @@ public:
             double* const next = column(j + 1);
             m_gram[static_cast<std::size_t>(j + 1)] = updateAndSquare(next, aj, m_k[static_cast<std::size_t>(j + 1)], padded);
             for (int c = j + 2; c < m_w; ++c)
-                m_gram[static_cast<std::size_t>(c)] =
-                    updateAndDot(column(c), aj, m_k[static_cast<std::size_t>(c)], next, padded);
+                m_gram[static_cast<std::size_t>(c)] = updateAndDot(column(c), aj, m_k[static_cast<std::size_t>(c)], next, padded);
         }
     }
 
@@ -124,8 +122,7 @@ private:
 };
 
 /// R of [M | Q] over the rows [first, last).
-Eigen::MatrixXd factorRows(const std::vector<double>& t, const ScaledPoints& q, int n, std::size_t first,
-                           std::size_t last)
+Eigen::MatrixXd factorRows(const std::vector<double>& t, const ScaledPoints& q, int n, std::size_t first, std::size_t last)
 {
     StreamingQr qr(n);
     for (std::size_t s = first; s < last; s += kBlockRows)

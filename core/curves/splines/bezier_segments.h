@@ -48,7 +48,6 @@ template <class S> std::vector<BezierSegment<S>> bezierSegments(const std::vecto
 }
 
 extern template std::vector<BezierSegment<double>> bezierSegments(const std::vector<Vec2<Polynomial<double>>>&);
-extern template std::vector<BezierSegment<Rational>>
-bezierSegments(const std::vector<Vec2<Polynomial<Rational>>>&);
+extern template std::vector<BezierSegment<Rational>> bezierSegments(const std::vector<Vec2<Polynomial<Rational>>>&);
 
 } // namespace granota

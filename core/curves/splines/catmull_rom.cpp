@@ -50,30 +50,25 @@ namespace detail {
 
 Error catmullRomNonFinitePoint(std::size_t index)
 {
-    return makeError(ErrorCode::InvalidInput,
-                     "Point q_" + std::to_string(index) + " is not a finite number (NaN or infinity).");
+    return makeError(ErrorCode::InvalidInput, "Point q_" + std::to_string(index) + " is not a finite number (NaN or infinity).");
 }
 
-Error catmullRomNonFiniteTension()
-{
-    return makeError(ErrorCode::InvalidInput, "The tension τ must be a finite number.");
-}
+Error catmullRomNonFiniteTension() { return makeError(ErrorCode::InvalidInput, "The tension τ must be a finite number."); }
 
 Error catmullRomOverflow()
 {
-    return makeError(ErrorCode::OutOfRange,
-                     "The Catmull-Rom curve overflows: the coordinates or the tension are too large.");
+    return makeError(ErrorCode::OutOfRange, "The Catmull-Rom curve overflows: the coordinates or the tension are too large.");
 }
 
 } // namespace detail
 
-template Expected<std::vector<Vec2<Polynomial<double>>>> catmullRomSegments(const std::vector<Vec2<double>>&,
-                                                                           const double&, CatmullRomMode);
-template Expected<std::vector<Vec2<Polynomial<Rational>>>> catmullRomSegments(const std::vector<Vec2<Rational>>&,
-                                                                             const Rational&, CatmullRomMode);
+template Expected<std::vector<Vec2<Polynomial<double>>>> catmullRomSegments(const std::vector<Vec2<double>>&, const double&,
+                                                                            CatmullRomMode);
+template Expected<std::vector<Vec2<Polynomial<Rational>>>> catmullRomSegments(const std::vector<Vec2<Rational>>&, const Rational&,
+                                                                              CatmullRomMode);
 
-Expected<std::vector<Vec2<Polynomial<double>>>> catmullRomSegments(const std::vector<Point>& q, double tau,
-                                                                   CatmullRomMode mode, double alpha)
+Expected<std::vector<Vec2<Polynomial<double>>>> catmullRomSegments(const std::vector<Point>& q, double tau, CatmullRomMode mode,
+                                                                   double alpha)
 {
     if (!(alpha >= 0.0 && alpha <= 1.0)) // also rejects NaN
         return makeError(ErrorCode::OutOfRange,

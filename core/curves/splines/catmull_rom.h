@@ -74,8 +74,8 @@ template <class S> std::array<Polynomial<S>, 4> blendingFunctions(const S& tau)
 /// The coefficient matrix M(τ)·[p_0 p_1 p_2 p_3]ᵀ of Lemma 2.3: c_0..c_3 with
 /// p(t) = c_0 + c_1 t + c_2 t² + c_3 t³ (the middle matrices printed in Ex 2.11 and Ex 2.13).
 template <class S>
-std::array<Vec2<S>, 4> catmullRomCoefficients(const Vec2<S>& p0, const Vec2<S>& p1, const Vec2<S>& p2,
-                                              const Vec2<S>& p3, const S& tau)
+std::array<Vec2<S>, 4> catmullRomCoefficients(const Vec2<S>& p0, const Vec2<S>& p1, const Vec2<S>& p2, const Vec2<S>& p3,
+                                              const S& tau)
 {
     const Matrix4<S> m = catmullRomMatrix(tau);
     const std::array<const Vec2<S>*, 4> p{&p0, &p1, &p2, &p3};
@@ -92,8 +92,7 @@ std::array<Vec2<S>, 4> catmullRomCoefficients(const Vec2<S>& p0, const Vec2<S>& 
 /// Lemma 2.3: the segment through p_1 (s = 0) and p_2 (s = 1), coefficients in powers of
 /// the local parameter s ∈ [0, 1].
 template <class S>
-Vec2<Polynomial<S>> catmullRomSegment(const Vec2<S>& p0, const Vec2<S>& p1, const Vec2<S>& p2, const Vec2<S>& p3,
-                                      const S& tau)
+Vec2<Polynomial<S>> catmullRomSegment(const Vec2<S>& p0, const Vec2<S>& p1, const Vec2<S>& p2, const Vec2<S>& p3, const S& tau)
 {
     const std::array<Vec2<S>, 4> c = catmullRomCoefficients(p0, p1, p2, p3, tau);
     return Vec2<Polynomial<S>>(Polynomial<S>(std::vector<S>{c[0].x, c[1].x, c[2].x, c[3].x}),
@@ -116,8 +115,7 @@ Error catmullRomOverflow();
 /// q_{i+1}, indices mod n + 1 for the closing segment). Errors: TooFewPoints; for floating
 /// point also InvalidInput (a point or τ not finite) and OutOfRange (overflow).
 template <class S>
-Expected<std::vector<Vec2<Polynomial<S>>>> catmullRomSegments(const std::vector<Vec2<S>>& q, const S& tau,
-                                                              CatmullRomMode mode)
+Expected<std::vector<Vec2<Polynomial<S>>>> catmullRomSegments(const std::vector<Vec2<S>>& q, const S& tau, CatmullRomMode mode)
 {
     constexpr bool floating = std::is_floating_point_v<S>;
     if constexpr (floating) {
@@ -146,10 +144,10 @@ Expected<std::vector<Vec2<Polynomial<S>>>> catmullRomSegments(const std::vector<
     return segments;
 }
 
-extern template Expected<std::vector<Vec2<Polynomial<double>>>>
-catmullRomSegments(const std::vector<Vec2<double>>&, const double&, CatmullRomMode);
-extern template Expected<std::vector<Vec2<Polynomial<Rational>>>>
-catmullRomSegments(const std::vector<Vec2<Rational>>&, const Rational&, CatmullRomMode);
+extern template Expected<std::vector<Vec2<Polynomial<double>>>> catmullRomSegments(const std::vector<Vec2<double>>&,
+                                                                                   const double&, CatmullRomMode);
+extern template Expected<std::vector<Vec2<Polynomial<Rational>>>> catmullRomSegments(const std::vector<Vec2<Rational>>&,
+                                                                                     const Rational&, CatmullRomMode);
 
 /// Beyond the thesis: non-uniform knot spacing h_i = |q_{i+1} − q_i|^α — α = 0 uniform
 /// (exactly the generic function above), α = 1/2 centripetal (no cusps or self-
@@ -163,8 +161,8 @@ catmullRomSegments(const std::vector<Vec2<Rational>>&, const Rational&, CatmullR
 /// τ(q_1 − q_0) and τ(q_n − q_{n−1}). Cyclic and closed wrap around. Coincident points give
 /// finite (constant) segments. Segments join with parallel tangents (G¹), not equal ones.
 /// Errors: as above, and OutOfRange when α is not a number in [0, 1].
-Expected<std::vector<Vec2<Polynomial<double>>>> catmullRomSegments(const std::vector<Point>& q, double tau,
-                                                                   CatmullRomMode mode, double alpha);
+Expected<std::vector<Vec2<Polynomial<double>>>> catmullRomSegments(const std::vector<Point>& q, double tau, CatmullRomMode mode,
+                                                                   double alpha);
 
 /// The knot spacing of the curve above, one h_i per segment in the order of its segments:
 /// segment i covers an interval of length h_i of the curve's global parameter u, so that

@@ -18,10 +18,10 @@ std::string derivativeName(const std::string& name, int order)
 
 } // namespace detail
 
-template ContinuityReport<double> checkContinuity(const PiecewisePolynomial<double>&, int,
-                                                  const std::vector<Vec2<double>>&, double);
-template ContinuityReport<Rational> checkContinuity(const PiecewisePolynomial<Rational>&, int,
-                                                    const std::vector<Vec2<Rational>>&, double);
+template ContinuityReport<double> checkContinuity(const PiecewisePolynomial<double>&, int, const std::vector<Vec2<double>>&,
+                                                  double);
+template ContinuityReport<Rational> checkContinuity(const PiecewisePolynomial<Rational>&, int, const std::vector<Vec2<Rational>>&,
+                                                    double);
 template JoinReport<double> checkSegmentJoins(const std::vector<Vec2<Polynomial<double>>>&, int, bool, double);
 template JoinReport<Rational> checkSegmentJoins(const std::vector<Vec2<Polynomial<Rational>>>&, int, bool, double);
 

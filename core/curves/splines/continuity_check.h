@@ -75,8 +75,8 @@ inline std::string continuitySummary(int c, int maxOrder, const std::string& bro
         return broken;
     if (c < maxOrder)
         return subject + " is C^" + std::to_string(c) + " but not C^" + std::to_string(c + 1) + where;
-    return subject + " is C^" + std::to_string(c) + everywhere + " (derivatives checked up to order " +
-           std::to_string(maxOrder) + ")";
+    return subject + " is C^" + std::to_string(c) + everywhere + " (derivatives checked up to order " + std::to_string(maxOrder) +
+           ")";
 }
 /// One line per defect, each starting with a newline and ending with a full stop.
 template <class Defects> std::string defectLines(const Defects& defects)
@@ -119,8 +119,8 @@ template <class S> struct ContinuityDefect {
                    scalarText(left) + ", right " + scalarText(right) + " (jump " + scalarText(jump()) + ")";
         case DefectKind::NotInterpolated: {
             const std::string name = "s_" + std::to_string(piece + 1);
-            return name + " does not interpolate (" + scalarText(x) + ", " + scalarText(expected) + "): " + name +
-                   "(" + scalarText(x) + ") = " + scalarText(got);
+            return name + " does not interpolate (" + scalarText(x) + ", " + scalarText(expected) + "): " + name + "(" +
+                   scalarText(x) + ") = " + scalarText(got);
         }
         case DefectKind::OutsideDomain:
             return "the point (" + scalarText(x) + ", " + scalarText(expected) + ") lies outside the domain";
@@ -130,10 +130,10 @@ template <class S> struct ContinuityDefect {
 };
 
 template <class S> struct ContinuityReport {
-    int maxOrder = 2;       ///< derivatives 0..maxOrder were compared
-    double tolerance = 0;   ///< 0 = exact comparison
-    int interiorKnots = 0;  ///< knots checked (x_1..x_{k−1})
-    int dataPoints = 0;     ///< data points checked
+    int maxOrder = 2;      ///< derivatives 0..maxOrder were compared
+    double tolerance = 0;  ///< 0 = exact comparison
+    int interiorKnots = 0; ///< knots checked (x_1..x_{k−1})
+    int dataPoints = 0;    ///< data points checked
     std::vector<ContinuityDefect<S>> defects;
 
     bool ok() const { return defects.empty(); }
@@ -164,8 +164,8 @@ template <class S> struct ContinuityReport {
 
 /// See the file comment. `pp` must be valid (pp.isValid()); maxOrder ≥ 0.
 template <class S>
-ContinuityReport<S> checkContinuity(const PiecewisePolynomial<S>& pp, int maxOrder = 2,
-                                    const std::vector<Vec2<S>>& data = {}, double tolerance = 0)
+ContinuityReport<S> checkContinuity(const PiecewisePolynomial<S>& pp, int maxOrder = 2, const std::vector<Vec2<S>>& data = {},
+                                    double tolerance = 0)
 {
     assert(pp.isValid() && maxOrder >= 0);
     ContinuityReport<S> report;
@@ -233,12 +233,12 @@ ContinuityReport<S> checkContinuity(const PiecewisePolynomial<S>& pp, int maxOrd
 /// Segments p_from and p_to (0-based; the thesis's p_{from+1}, p_{to+1}) do not agree in
 /// the derivative of order `order` where they meet.
 template <class S> struct JoinDefect {
-    int join = 0;       ///< index of the join: p_from(1) meets p_to(0), to = from + 1 (or 0)
+    int join = 0; ///< index of the join: p_from(1) meets p_to(0), to = from + 1 (or 0)
     int fromSegment = 0;
     int toSegment = 0;
-    int order = 0;      ///< derivative order (0 = position)
-    Vec2<S> left;       ///< p_from^(order)(1)
-    Vec2<S> right;      ///< p_to^(order)(0)
+    int order = 0; ///< derivative order (0 = position)
+    Vec2<S> left;  ///< p_from^(order)(1)
+    Vec2<S> right; ///< p_to^(order)(0)
 
     Vec2<S> jump() const { return right - left; }
     /// e.g. "p' jumps at the join of p_2 and p_3: p_2'(1) = (1, 2), p_3'(0) = (1, 3) (jump (0, 1))".
@@ -247,9 +247,9 @@ template <class S> struct JoinDefect {
         using detail::scalarText;
         const std::string a = detail::derivativeName("p_" + std::to_string(fromSegment + 1), order);
         const std::string b = detail::derivativeName("p_" + std::to_string(toSegment + 1), order);
-        return detail::derivativeName("p", order) + " jumps at the join of p_" + std::to_string(fromSegment + 1) +
-               " and p_" + std::to_string(toSegment + 1) + ": " + a + "(1) = " + scalarText(left) + ", " + b +
-               "(0) = " + scalarText(right) + " (jump " + scalarText(jump()) + ")";
+        return detail::derivativeName("p", order) + " jumps at the join of p_" + std::to_string(fromSegment + 1) + " and p_" +
+               std::to_string(toSegment + 1) + ": " + a + "(1) = " + scalarText(left) + ", " + b + "(0) = " + scalarText(right) +
+               " (jump " + scalarText(jump()) + ")";
     }
 };
 
@@ -268,8 +268,8 @@ template <class S> struct JoinReport {
     }
     std::string describe() const
     {
-        return detail::continuitySummary(continuityOrder(), maxOrder, "the segments do not join up", "the curve",
-                                         " at its joins", " at all " + std::to_string(joins) + " joins") +
+        return detail::continuitySummary(continuityOrder(), maxOrder, "the segments do not join up", "the curve", " at its joins",
+                                         " at all " + std::to_string(joins) + " joins") +
                "." + detail::defectLines(defects);
     }
 };
@@ -278,8 +278,8 @@ template <class S> struct JoinReport {
 /// last segment's end with the first segment's start (a closed Catmull-Rom curve, Def 2.10
 /// option 1 plus its closing segment). Segments are in the local s ∈ [0, 1] (Def 2.10).
 template <class S>
-JoinReport<S> checkSegmentJoins(const std::vector<Vec2<Polynomial<S>>>& segments, int maxOrder = 1,
-                                bool closedLoop = false, double tolerance = 0)
+JoinReport<S> checkSegmentJoins(const std::vector<Vec2<Polynomial<S>>>& segments, int maxOrder = 1, bool closedLoop = false,
+                                double tolerance = 0)
 {
     assert(maxOrder >= 0);
     JoinReport<S> report;
@@ -313,7 +313,6 @@ extern template ContinuityReport<double> checkContinuity(const PiecewisePolynomi
 extern template ContinuityReport<Rational> checkContinuity(const PiecewisePolynomial<Rational>&, int,
                                                            const std::vector<Vec2<Rational>>&, double);
 extern template JoinReport<double> checkSegmentJoins(const std::vector<Vec2<Polynomial<double>>>&, int, bool, double);
-extern template JoinReport<Rational> checkSegmentJoins(const std::vector<Vec2<Polynomial<Rational>>>&, int, bool,
-                                                       double);
+extern template JoinReport<Rational> checkSegmentJoins(const std::vector<Vec2<Polynomial<Rational>>>&, int, bool, double);
 
 } // namespace granota

@@ -40,8 +40,7 @@ template <class S> Expected<PiecewisePolynomial<S>> naturalCubicSpline(const std
     constexpr bool floating = std::is_floating_point_v<S>;
     const std::size_t count = points.size();
     if (count < 2)
-        return makeError(ErrorCode::TooFewPoints, "A cubic spline needs at least 2 points (got " +
-                                                      std::to_string(count) + ").");
+        return makeError(ErrorCode::TooFewPoints, "A cubic spline needs at least 2 points (got " + std::to_string(count) + ").");
     if constexpr (floating) {
         for (std::size_t i = 0; i < count; ++i)
             if (!std::isfinite(points[i].x) || !std::isfinite(points[i].y))
@@ -50,9 +49,8 @@ template <class S> Expected<PiecewisePolynomial<S>> naturalCubicSpline(const std
     }
     for (std::size_t i = 0; i + 1 < count; ++i)
         if (!(points[i].x < points[i + 1].x))
-            return makeError(ErrorCode::NotIncreasing,
-                             "The abscissae must increase strictly: x_" + std::to_string(i + 1) +
-                                 " is not greater than x_" + std::to_string(i) + ".");
+            return makeError(ErrorCode::NotIncreasing, "The abscissae must increase strictly: x_" + std::to_string(i + 1) +
+                                                           " is not greater than x_" + std::to_string(i) + ".");
 
     const std::size_t k = count - 1; // number of pieces
     std::vector<S> h(k), delta(k);

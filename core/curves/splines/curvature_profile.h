@@ -18,14 +18,14 @@
 namespace granota {
 
 struct CurvatureSample {
-    double s = 0;                 ///< arc length from the start of the whole curve
-    std::optional<double> kappa;  ///< signed κ (y up); nullopt where undefined
+    double s = 0;                ///< arc length from the start of the whole curve
+    std::optional<double> kappa; ///< signed κ (y up); nullopt where undefined
 };
 
 struct CurvatureProfile {
     /// samples[i]: segment i, from its start to its end, s ascending.
     std::vector<std::vector<CurvatureSample>> samples;
-    std::vector<double> knots;    ///< s at the start of each segment, then the total length
+    std::vector<double> knots; ///< s at the start of each segment, then the total length
     double length() const { return knots.empty() ? 0.0 : knots.back(); }
 };
 

@@ -60,8 +60,8 @@ std::optional<double> signedCurvature(const Point& v, const Point& a)
 } // namespace
 
 template <class S>
-std::vector<KnotContinuity<S>> knotContinuity(const std::vector<Vec2<Polynomial<S>>>& segments,
-                                              const std::vector<S>& intervals, bool closedLoop, double tolerance)
+std::vector<KnotContinuity<S>> knotContinuity(const std::vector<Vec2<Polynomial<S>>>& segments, const std::vector<S>& intervals,
+                                              bool closedLoop, double tolerance)
 {
     assert(intervals.empty() || intervals.size() == segments.size());
     std::vector<KnotContinuity<S>> out;
@@ -106,8 +106,10 @@ std::vector<KnotContinuity<S>> knotContinuity(const std::vector<Vec2<Polynomial<
         const bool zeroR = vanishes(localR[1], tangentScale(d[static_cast<std::size_t>(to)][1]));
         const Point vL = toPoint(localL[1]), vR = toPoint(localR[1]);
         const Point aL = toPoint(localL[2]), aR = toPoint(localR[2]);
-        if (!zeroL) k.curvatureLeft = signedCurvature(vL, aL);
-        if (!zeroR) k.curvatureRight = signedCurvature(vR, aR);
+        if (!zeroL)
+            k.curvatureLeft = signedCurvature(vL, aL);
+        if (!zeroR)
+            k.curvatureRight = signedCurvature(vR, aR);
         if (!zeroL && !zeroR) {
             k.tangentTurn = std::atan2(cross(vL, vR), dot(vL, vR));
             const S c = crossOf(localL[1], localR[1]);
@@ -124,10 +126,9 @@ std::vector<KnotContinuity<S>> knotContinuity(const std::vector<Vec2<Polynomial<
                 const S cr = crossOf(localR[1], localR[2]);
                 if constexpr (std::is_floating_point_v<S>) {
                     // κ is known to about `tolerance` of |a|/|v|², the largest it could be.
-                    const double floor = tolerance * (std::hypot(aL.x, aL.y) / dot(vL, vL) +
-                                                      std::hypot(aR.x, aR.y) / dot(vR, vR));
-                    k.g2 = k.curvatureLeft && k.curvatureRight &&
-                           std::fabs(*k.curvatureLeft - *k.curvatureRight) <= floor;
+                    const double floor = tolerance *
+                                         (std::hypot(aL.x, aL.y) / dot(vL, vL) + std::hypot(aR.x, aR.y) / dot(vR, vR));
+                    k.g2 = k.curvatureLeft && k.curvatureRight && std::fabs(*k.curvatureLeft - *k.curvatureRight) <= floor;
                 } else {
                     // sign(c_L) = sign(c_R) and c_L²|v_R|⁶ = c_R²|v_L|⁶: κ_L = κ_R without roots.
                     const S nl = dotOf(localL[1], localL[1]), nr = dotOf(localR[1], localR[1]);

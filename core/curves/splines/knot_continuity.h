@@ -36,8 +36,8 @@ namespace granota {
 
 /// One knot: the end of segment `fromSegment` meets the start of `toSegment`.
 template <class S> struct KnotContinuity {
-    int fromSegment = 0;  ///< 0-based (the thesis's p_{fromSegment+1})
-    int toSegment = 0;    ///< fromSegment + 1, or 0 at the closing knot of a closed loop
+    int fromSegment = 0; ///< 0-based (the thesis's p_{fromSegment+1})
+    int toSegment = 0;   ///< fromSegment + 1, or 0 at the closing knot of a closed loop
     /// Left (p_from at s = 1) and right (p_to at s = 0) values of the derivatives of order
     /// 0, 1, 2 in the global parameter u.
     Vec2<S> left[3];
@@ -70,9 +70,9 @@ std::vector<KnotContinuity<S>> knotContinuity(const std::vector<Vec2<Polynomial<
                                               const std::vector<S>& intervals = {}, bool closedLoop = false,
                                               double tolerance = 0);
 
-extern template std::vector<KnotContinuity<double>>
-knotContinuity(const std::vector<Vec2<Polynomial<double>>>&, const std::vector<double>&, bool, double);
-extern template std::vector<KnotContinuity<Rational>>
-knotContinuity(const std::vector<Vec2<Polynomial<Rational>>>&, const std::vector<Rational>&, bool, double);
+extern template std::vector<KnotContinuity<double>> knotContinuity(const std::vector<Vec2<Polynomial<double>>>&,
+                                                                   const std::vector<double>&, bool, double);
+extern template std::vector<KnotContinuity<Rational>> knotContinuity(const std::vector<Vec2<Polynomial<Rational>>>&,
+                                                                     const std::vector<Rational>&, bool, double);
 
 } // namespace granota

@@ -24,9 +24,9 @@ namespace granota {
 template <class S> struct JoinValues {
     int fromSegment = 0; ///< 0-based (the thesis's p_{fromSegment+1})
     int toSegment = 0;
-    Vec2<S> left;        ///< p_from^(order)(1)
-    Vec2<S> right;       ///< p_to^(order)(0)
-    bool equal = false;  ///< left = right (exactly, or within the tolerance for doubles)
+    Vec2<S> left;          ///< p_from^(order)(1)
+    Vec2<S> right;         ///< p_to^(order)(0)
+    bool equal = false;    ///< left = right (exactly, or within the tolerance for doubles)
     bool parallel = false; ///< same direction (both non-zero and positively parallel, or both zero)
 };
 
@@ -46,8 +46,8 @@ inline bool joinScalarEqual(double a, double b, double tolerance)
 /// (a closed Catmull-Rom curve). Exact for Rational; for doubles `tolerance` is relative to
 /// max(1, |a|, |b|) as in continuity_check.h.
 template <class S>
-std::vector<JoinValues<S>> segmentJoinValues(const std::vector<Vec2<Polynomial<S>>>& segments, int order,
-                                             bool closedLoop = false, double tolerance = 0)
+std::vector<JoinValues<S>> segmentJoinValues(const std::vector<Vec2<Polynomial<S>>>& segments, int order, bool closedLoop = false,
+                                             double tolerance = 0)
 {
     std::vector<JoinValues<S>> out;
     const int count = static_cast<int>(segments.size());
@@ -87,9 +87,9 @@ std::vector<JoinValues<S>> segmentJoinValues(const std::vector<Vec2<Polynomial<S
     return out;
 }
 
-extern template std::vector<JoinValues<double>> segmentJoinValues(const std::vector<Vec2<Polynomial<double>>>&, int,
-                                                                  bool, double);
-extern template std::vector<JoinValues<Rational>> segmentJoinValues(const std::vector<Vec2<Polynomial<Rational>>>&,
-                                                                    int, bool, double);
+extern template std::vector<JoinValues<double>> segmentJoinValues(const std::vector<Vec2<Polynomial<double>>>&, int, bool,
+                                                                  double);
+extern template std::vector<JoinValues<Rational>> segmentJoinValues(const std::vector<Vec2<Polynomial<Rational>>>&, int, bool,
+                                                                    double);
 
 } // namespace granota

@@ -2,8 +2,7 @@
 
 namespace granota {
 
-OffsetCorrectionResult correctConstantOffsets(const PiecewisePolynomial<Rational>& spline,
-                                              const std::vector<RPoint>& data)
+OffsetCorrectionResult correctConstantOffsets(const PiecewisePolynomial<Rational>& spline, const std::vector<RPoint>& data)
 {
     OffsetCorrectionResult result;
     result.corrected = spline;

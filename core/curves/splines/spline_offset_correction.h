@@ -29,7 +29,6 @@ struct OffsetCorrectionResult {
 /// `data` are the interpolated points, one per knot (data[i].x = knots[i]); pieces whose end
 /// points are missed by different amounts (or data that do not sit on the knots) are left
 /// alone: no constant repairs them. Exact arithmetic only.
-OffsetCorrectionResult correctConstantOffsets(const PiecewisePolynomial<Rational>& spline,
-                                              const std::vector<RPoint>& data);
+OffsetCorrectionResult correctConstantOffsets(const PiecewisePolynomial<Rational>& spline, const std::vector<RPoint>& data);
 
 } // namespace granota

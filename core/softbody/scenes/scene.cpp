@@ -309,8 +309,8 @@ std::optional<std::string> tooLarge(const SceneSpec& s)
                 return "obstacles";
     for (const auto& sh : s.shapes)
         for (Point q : sh.points)
-            if (!(std::fabs(q.x) <= kMaxMagnitude && std::fabs(q.y) <= kMaxMagnitude &&
-                  std::fabs(sh.at.x) <= kMaxMagnitude && std::fabs(sh.at.y) <= kMaxMagnitude))
+            if (!(std::fabs(q.x) <= kMaxMagnitude && std::fabs(q.y) <= kMaxMagnitude && std::fabs(sh.at.x) <= kMaxMagnitude &&
+                  std::fabs(sh.at.y) <= kMaxMagnitude))
                 return "shapes";
     return std::nullopt;
 }
@@ -332,18 +332,17 @@ Expected<void> validate(const SceneSpec& s)
     for (const auto& o : s.obstacles)
         obstaclePoints += o.points.size();
     if (shapePoints > static_cast<std::size_t>(kMaxVertices) || obstaclePoints > static_cast<std::size_t>(kMaxVertices))
-        return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': " +
-                                                    (shapePoints > static_cast<std::size_t>(kMaxVertices) ? "shapes" : "obstacles") +
-                                                    " must have at most " + std::to_string(kMaxVertices) +
-                                                    " points in all: lower the number of points");
+        return makeError(ErrorCode::OutOfRange,
+                         "scene '" + s.name +
+                             "': " + (shapePoints > static_cast<std::size_t>(kMaxVertices) ? "shapes" : "obstacles") +
+                             " must have at most " + std::to_string(kMaxVertices) + " points in all: lower the number of points");
     if (const long vertices = static_cast<long>(s.bodies) * std::max(s.params.sides, s.bezierSamples);
         s.hasParam("bodies") && vertices > kMaxPiledVertices && !bodiesFitFrame(s))
         return makeError(ErrorCode::OutOfRange,
                          "scene '" + s.name + "': " + std::to_string(s.bodies) + " bodies of radius " +
                              formatDouble(s.params.radius) + " do not fit side by side in a " + formatDouble(s.params.width) +
-                             " × " + formatDouble(s.params.height) + " px frame, and piled up their " +
-                             std::to_string(vertices) + " vertices would all touch (at most " +
-                             std::to_string(kMaxPiledVertices) +
+                             " × " + formatDouble(s.params.height) + " px frame, and piled up their " + std::to_string(vertices) +
+                             " vertices would all touch (at most " + std::to_string(kMaxPiledVertices) +
                              " may start piled): lower bodies, sides or radius, or raise width and height");
     for (double l : s.chain)
         if (!(l >= 0) || !std::isfinite(l))
@@ -433,8 +432,8 @@ Expected<SceneSpec> parseScene(const Json& doc)
     if (const Json* o = doc.find("order")) {
         const auto place = wholeNumber(*o, 0, kMaxOrder);
         if (!place)
-            return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': order must be a whole number between 0 and " +
-                                                        std::to_string(kMaxOrder));
+            return makeError(ErrorCode::OutOfRange,
+                             "scene '" + s.name + "': order must be a whole number between 0 and " + std::to_string(kMaxOrder));
         s.order = *place;
     }
     if (const Json* c = doc.find("components"); c && c->asArray())
@@ -476,7 +475,8 @@ Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
     if (isStableKey(key)) {
         const auto q = parseRational(value);
         if (!q)
-            return makeError(ErrorCode::InvalidInput, "--set " + key + ": " + quotedForDisplay(value) + " is not a finite number");
+            return makeError(ErrorCode::InvalidInput,
+                             "--set " + key + ": " + quotedForDisplay(value) + " is not a finite number");
         SceneSpec changed = scene;
         auto ok = setStableSetting(changed, key, Json(toDouble(*q)));
         if (!ok)
@@ -488,8 +488,9 @@ Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
         std::string keys;
         for (const auto& k : scene.paramKeys)
             keys += (keys.empty() ? "" : ", ") + k;
-        return makeError(ErrorCode::InvalidInput, "scene '" + scene.name + "' has no parameter " + quotedForDisplay(key) +
-                                                      " (it has: " + keys + "; and for the stable solver: substeps, edge_compliance, edge_damping_ratio)");
+        return makeError(ErrorCode::InvalidInput,
+                         "scene '" + scene.name + "' has no parameter " + quotedForDisplay(key) + " (it has: " + keys +
+                             "; and for the stable solver: substeps, edge_compliance, edge_damping_ratio)");
     }
     const SceneParameter* param = findSceneParameter(key);
     if (param && !param->settable())
@@ -507,7 +508,8 @@ Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
             const std::string item = value.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
             auto q = parseRational(item);
             if (!q)
-                return makeError(ErrorCode::InvalidInput, "--set " + key + ": " + quotedForDisplay(item) + " is not a finite number");
+                return makeError(ErrorCode::InvalidInput,
+                                 "--set " + key + ": " + quotedForDisplay(item) + " is not a finite number");
             list.push(toDouble(*q));
             ++count;
             if (comma == std::string::npos)
@@ -532,7 +534,8 @@ Expected<SceneSpec> withBodies(SceneSpec scene, int bodies)
 {
     if (!scene.hasParam("bodies"))
         return makeError(ErrorCode::InvalidInput, "scene '" + scene.name + "' has a single body");
-    if (const SceneParameter* count = findSceneParameter("bodies"); bodies >= count->min && bodies <= count->max) { // out of range: applySetting says so
+    if (const SceneParameter* count = findSceneParameter("bodies");
+        bodies >= count->min && bodies <= count->max) { // out of range: applySetting says so
         const FrameSize f = frameForBodies(scene, bodies);
         scene.params.width = f.width;
         scene.params.height = f.height;
@@ -553,9 +556,7 @@ Json sceneToJson(const SceneSpec& s)
         if (!param)
             continue;
         switch (param->type) {
-        case ParameterType::Integer:
-            params.set(key, param->integerIn(values));
-            break;
+        case ParameterType::Integer: params.set(key, param->integerIn(values)); break;
         case ParameterType::Number:
             if (key == "radius" && s.radiusFromFrame)
                 params.set(key, kFromFrame);
@@ -614,11 +615,19 @@ Json sceneToJson(const SceneSpec& s)
     Json components = Json::array();
     for (const auto& c : s.components)
         components.push(c);
-    const char* model = s.model == SceneModel::Stage ? "stage" : s.model == SceneModel::Body ? "body"
-                        : s.model == SceneModel::Pendulum ? "pendulum" : "frog";
+    const char* model = s.model == SceneModel::Stage      ? "stage"
+                        : s.model == SceneModel::Body     ? "body"
+                        : s.model == SceneModel::Pendulum ? "pendulum"
+                                                          : "frog";
     Json doc = Json::object();
-    doc.set("name", s.name).set("section", s.section).set("title", s.title).set("description", s.description)
-        .set("model", model).set("order", s.order).set("components", components).set("params", params);
+    doc.set("name", s.name)
+        .set("section", s.section)
+        .set("title", s.title)
+        .set("description", s.description)
+        .set("model", model)
+        .set("order", s.order)
+        .set("components", components)
+        .set("params", params);
     if (!s.stable.isDefault()) {
         Json stable = Json::object();
         stable.set("substeps", s.stable.substeps).set("edge_compliance", s.stable.edgeCompliance);

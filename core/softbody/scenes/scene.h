@@ -41,7 +41,7 @@ struct SceneSpec {
     std::string title;       ///< English title (the GUI translates it)
     std::string description; ///< one sentence
     SceneModel model = SceneModel::Body;
-    int order = 0;           ///< position in the thesis's order
+    int order = 0; ///< position in the thesis's order
     std::vector<std::string> components;
     std::vector<std::string> paramKeys; ///< the parameters this scene has, in file order
 

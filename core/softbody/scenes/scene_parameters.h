@@ -58,7 +58,7 @@ struct ParameterField {
 };
 
 struct SceneParameter {
-    const char* key = "";        ///< the scene file's and --set's key, e.g. "spring_length"
+    const char* key = ""; ///< the scene file's and --set's key, e.g. "spring_length"
     ParameterType type = ParameterType::Number;
     const char* thesisName = ""; ///< Annex II's or chapter 4's name, e.g. "molls"; "" if none
     const char* unit = "";       ///< the unit the panel shows (translated there), "" if none
@@ -103,7 +103,7 @@ struct AngleLimitParameter {
     const char* label; ///< the panel's row
     const char* tip;   ///< the panel's tooltip
     Joint joint;
-    int leg;           ///< FrogParams::legs index (an elbow limit: this leg and the next), or kChain
+    int leg; ///< FrogParams::legs index (an elbow limit: this leg and the next), or kChain
 
     bool pendulum() const { return leg == kChain; }
     /// The limit's [min, max] in `s`; setIn writes it (an elbow limit to both legs of its pair).
@@ -115,7 +115,7 @@ const std::vector<AngleLimitParameter>& angleLimits();
 
 /// One value of `grab`.
 struct GrabChoice {
-    const char* name;  ///< the file's and --set's value: all, above, anchors
+    const char* name; ///< the file's and --set's value: all, above, anchors
     GrabMode mode;
     const char* label; ///< the panel's list
 };

@@ -38,13 +38,20 @@ std::optional<Error> checkSeedParams(const FrogParams& p)
         bool nonNegative;
     };
     const Field fields[] = {
-        {p.gravity.x, "gravity x", false},   {p.gravity.y, "gravity y", false},
-        {p.friction.x, "friction x", false}, {p.friction.y, "friction y", false},
-        {p.v0.x, "v0 x", false},             {p.v0.y, "v0 y", false},
-        {p.areaFactor, "area factor", false}, {p.targetArea, "target area", true},
-        {p.springLength, "spring length", true}, {p.velmax, "velmax", true},
-        {p.center.x, "centre x", false},     {p.center.y, "centre y", false},
-        {p.radius, "radius", true},          {p.width, "width", true},
+        {p.gravity.x, "gravity x", false},
+        {p.gravity.y, "gravity y", false},
+        {p.friction.x, "friction x", false},
+        {p.friction.y, "friction y", false},
+        {p.v0.x, "v0 x", false},
+        {p.v0.y, "v0 y", false},
+        {p.areaFactor, "area factor", false},
+        {p.targetArea, "target area", true},
+        {p.springLength, "spring length", true},
+        {p.velmax, "velmax", true},
+        {p.center.x, "centre x", false},
+        {p.center.y, "centre y", false},
+        {p.radius, "radius", true},
+        {p.width, "width", true},
         {p.height, "height", true},
     };
     for (const Field& f : fields)
@@ -55,17 +62,20 @@ std::optional<Error> checkSeedParams(const FrogParams& p)
         const LegParams& l = p.legs[std::size_t(i)];
         const std::string n = legNames[i];
         const std::pair<double, std::string> legFields[] = {
-            {l.upper, n + " upper length"}, {l.lower, n + " lower length"},
-            {l.shoulderMin, n + " shoulder minimum angle"}, {l.shoulderMax, n + " shoulder maximum angle"},
-            {l.elbowMin, n + " elbow minimum angle"}, {l.elbowMax, n + " elbow maximum angle"},
+            {l.upper, n + " upper length"},
+            {l.lower, n + " lower length"},
+            {l.shoulderMin, n + " shoulder minimum angle"},
+            {l.shoulderMax, n + " shoulder maximum angle"},
+            {l.elbowMin, n + " elbow minimum angle"},
+            {l.elbowMax, n + " elbow maximum angle"},
         };
         for (std::size_t k = 0; k < 6; ++k)
             if (auto e = checkReal(legFields[k].first, legFields[k].second.c_str(), k < 2))
                 return e;
     }
     if (p.sides < 3 || p.sides > kMaxSides)
-        return makeError(ErrorCode::OutOfRange, "sides must be between 3 and " + std::to_string(kMaxSides) + ", got "
-                                                    + std::to_string(p.sides));
+        return makeError(ErrorCode::OutOfRange,
+                         "sides must be between 3 and " + std::to_string(kMaxSides) + ", got " + std::to_string(p.sides));
     if (p.width < 1 || p.height < 1)
         return makeError(ErrorCode::OutOfRange, "the frame must be at least 1 x 1 px");
     return std::nullopt;
@@ -73,13 +83,11 @@ std::optional<Error> checkSeedParams(const FrogParams& p)
 
 template <class R>
 SeedBody<R>::SeedBody(const FrogParams& params, SeedComponents components)
-    : m_params(params), m_components(components), m_n(params.sides),
-      m_gravity(R(params.gravity.x), R(params.gravity.y)), m_friction(R(params.friction.x), R(params.friction.y)),
-      m_areaFactor(R(params.areaFactor)), m_velmax(R(params.velmax)), m_radius(R(params.radius)),
-      m_springLength(R(params.springLength)),
+    : m_params(params), m_components(components), m_n(params.sides), m_gravity(R(params.gravity.x), R(params.gravity.y)),
+      m_friction(R(params.friction.x), R(params.friction.y)), m_areaFactor(R(params.areaFactor)), m_velmax(R(params.velmax)),
+      m_radius(R(params.radius)), m_springLength(R(params.springLength)),
       // `width-1` and `height-1` of the sketch (ints there; exact here for integral sizes).
-      m_xmax(R(params.width - 1)), m_ymax(R(params.height - 1)),
-      m_mouse(R(params.center.x), R(params.center.y))
+      m_xmax(R(params.width - 1)), m_ymax(R(params.height - 1)), m_mouse(R(params.center.x), R(params.center.y))
 {
     const auto n1 = std::size_t(m_n) + 1;
     m_vert.resize(n1);
@@ -106,7 +114,7 @@ template <class R> Expected<SeedBody<R>> SeedBody<R>::create(const FrogParams& p
 
 template <class R>
 Expected<SeedBody<R>> SeedBody<R>::createFromShape(const FrogParams& params, const std::vector<Point>& shape,
-                                                  SeedComponents components)
+                                                   SeedComponents components)
 {
     if (shape.size() < 3 || shape.size() > 10000)
         return makeError(ErrorCode::OutOfRange, "a body needs 3 to 10000 vertices");

@@ -64,8 +64,14 @@ template <class R> struct SeedVertex {
     {
         Vec2<R> n(R(pos.x + f.x * (pos.x - prev.x) + g.x), R(pos.y + f.y * (pos.y - prev.y) + g.y));
         const R xmax = pos.x + velmax, xmin = pos.x - velmax, ymax = pos.y + velmax, ymin = pos.y - velmax;
-        if (n.x < xmin) n.x = xmin; else if (n.x > xmax) n.x = xmax;
-        if (n.y < ymin) n.y = ymin; else if (n.y > ymax) n.y = ymax;
+        if (n.x < xmin)
+            n.x = xmin;
+        else if (n.x > xmax)
+            n.x = xmax;
+        if (n.y < ymin)
+            n.y = ymin;
+        else if (n.y > ymax)
+            n.y = ymax;
         prev = pos;
         pos = n;
     }
@@ -84,8 +90,14 @@ template <class R> struct SeedVertex {
 private:
     static void clampTo(Vec2<R>& p, R xmin, R xmax, R ymin, R ymax)
     {
-        if (p.x < xmin) p.x = xmin; else if (p.x > xmax) p.x = xmax;
-        if (p.y < ymin) p.y = ymin; else if (p.y > ymax) p.y = ymax;
+        if (p.x < xmin)
+            p.x = xmin;
+        else if (p.x > xmax)
+            p.x = xmax;
+        if (p.y < ymin)
+            p.y = ymin;
+        else if (p.y > ymax)
+            p.y = ymax;
     }
 };
 
@@ -123,7 +135,7 @@ public:
     /// A body whose rest shape is any polygon (offsets from its centre, in order): the
     /// Bézier body of §4.9 and the shapes of §5.2.3. `params.sides` is ignored.
     static Expected<SeedBody> createFromShape(const FrogParams& params, const std::vector<Point>& shape,
-                                             SeedComponents components = {});
+                                              SeedComponents components = {});
 
     /// Annex II, Poligon.inicialitza(center, v_ini): the regular polygon at `centre`, each
     /// vertex's previous position set back by v_ini, both clamped to the frame; not grabbed.
@@ -211,17 +223,16 @@ private:
     // N + 1: a copy of the lane arrays, stale after a step until asked for.
     mutable std::vector<SeedVertex<R>> m_vert;
     mutable bool m_vertStale = false;
-    std::vector<R> m_estruc;           // N + 1
-    std::vector<Point> m_shape;        // rest shape around the centre; empty: the regular N-gon
-    std::vector<int> m_anchors;        // the vertices held by the current grab
+    std::vector<R> m_estruc;    // N + 1
+    std::vector<Point> m_shape; // rest shape around the centre; empty: the regular N-gon
+    std::vector<int> m_anchors; // the vertices held by the current grab
     bool m_grabbed = false;
     Vec m_mouse;
     // The body's state is kept as a "structure of arrays" (all x, then all y, …) so that
     // four vertices go through each operation of the step at once (core/softbody/seed/seed_lanes.h);
     // X, Y, PrevX and PrevY hold the vertices between steps. The arrays live in one buffer,
     // sized once: a step allocates nothing.
-    enum LaneArray { X, Y, PrevX, PrevY, CorrX, CorrY, PuntAX, PuntAY, PuntBX, PuntBY, Num, AppliedX, AppliedY,
-                     LaneArrayCount };
+    enum LaneArray { X, Y, PrevX, PrevY, CorrX, CorrY, PuntAX, PuntAY, PuntBX, PuntBY, Num, AppliedX, AppliedY, LaneArrayCount };
     R* lanes(LaneArray a) { return m_lanes.data() + std::size_t(a) * m_stride; }
     const R* lanes(LaneArray a) const { return m_lanes.data() + std::size_t(a) * m_stride; }
     std::vector<R> m_lanes;

@@ -6,8 +6,7 @@
 namespace granota {
 
 template <class R>
-SeedFrog<R>::SeedFrog(SeedBody<R> body, std::vector<SeedLeg<R>> legs)
-    : m_body(std::move(body)), m_legs(std::move(legs))
+SeedFrog<R>::SeedFrog(SeedBody<R> body, std::vector<SeedLeg<R>> legs) : m_body(std::move(body)), m_legs(std::move(legs))
 {
     if (!m_legs.empty()) {
         const SeedLeg<R>* in[4];
@@ -69,8 +68,7 @@ template <class R> void SeedFrog<R>::step()
     using L = Lanes<R>;
     const R* const x = m_body.positionsX();
     const R* const y = m_body.positionsY();
-    const int v2 = m_attach[0], v3 = m_attach[1], v4 = m_attach[2], v6 = m_attach[3], v7 = m_attach[4],
-              v8 = m_attach[5];
+    const int v2 = m_attach[0], v3 = m_attach[1], v4 = m_attach[2], v6 = m_attach[3], v7 = m_attach[4], v8 = m_attach[5];
     const L d = L::set(R(5), R(5), R(2), R(2)), s = L::set(R(-1), R(1), R(1), R(1));
     const auto shoulder = [&](const R* c) {
         const L p = L::set(c[v8], c[v8], c[v7], c[v3]);

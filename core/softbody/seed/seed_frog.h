@@ -67,8 +67,8 @@ private:
     void settleLegs() const; // the owed legs' step, if any
 
     SeedBody<R> m_body;
-    mutable SeedLegLanes<R> m_legLanes;    // the legs between steps
-    mutable bool m_legsOwed = false;       // m_legLanes is one step behind (shoulders set)
+    mutable SeedLegLanes<R> m_legLanes;     // the legs between steps
+    mutable bool m_legsOwed = false;        // m_legLanes is one step behind (shoulders set)
     mutable std::vector<SeedLeg<R>> m_legs; // stale after a step until asked for
     mutable bool m_legsStale = false;
     std::array<int, 6> m_attach{}; // the seed's vertices 2, 3, 4, 6, 7, 8 for this N

@@ -61,26 +61,26 @@ template <class R> struct Lanes {
     static Lanes iota() { return set(R(0), R(1), R(2), R(3)); }
     void store(R* p) const { std::memcpy(p, v, sizeof v); }
 
-#define GRANOTA_LANES_OP(op)                                                                                           \
-    friend Lanes operator op(const Lanes& a, const Lanes& b)                                                          \
-    {                                                                                                                  \
-        Lanes r;                                                                                                       \
-        for (int i = 0; i < kSeedLanes; ++i)                                                                           \
-            r.v[i] = R(a.v[i] op b.v[i]);                                                                              \
-        return r;                                                                                                      \
+#define GRANOTA_LANES_OP(op)                                                                                                     \
+    friend Lanes operator op(const Lanes& a, const Lanes& b)                                                                     \
+    {                                                                                                                            \
+        Lanes r;                                                                                                                 \
+        for (int i = 0; i < kSeedLanes; ++i)                                                                                     \
+            r.v[i] = R(a.v[i] op b.v[i]);                                                                                        \
+        return r;                                                                                                                \
     }
     GRANOTA_LANES_OP(+)
     GRANOTA_LANES_OP(-)
     GRANOTA_LANES_OP(*)
     GRANOTA_LANES_OP(/)
 #undef GRANOTA_LANES_OP
-#define GRANOTA_LANES_CMP(name, op)                                                                                    \
-    friend LaneMask<R> name(const Lanes& a, const Lanes& b)                                                           \
-    {                                                                                                                  \
-        LaneMask<R> m;                                                                                                 \
-        for (int i = 0; i < kSeedLanes; ++i)                                                                           \
-            m.b[i] = a.v[i] op b.v[i];                                                                                 \
-        return m;                                                                                                      \
+#define GRANOTA_LANES_CMP(name, op)                                                                                              \
+    friend LaneMask<R> name(const Lanes& a, const Lanes& b)                                                                      \
+    {                                                                                                                            \
+        LaneMask<R> m;                                                                                                           \
+        for (int i = 0; i < kSeedLanes; ++i)                                                                                     \
+            m.b[i] = a.v[i] op b.v[i];                                                                                           \
+        return m;                                                                                                                \
     }
     GRANOTA_LANES_CMP(lt, <)
     GRANOTA_LANES_CMP(le, <=)
@@ -128,10 +128,7 @@ template <class R> struct Lanes {
 template <> struct LaneMask<float> {
     __m128 m;
     friend LaneMask operator&(const LaneMask& p, const LaneMask& q) { return {_mm_and_ps(p.m, q.m)}; }
-    friend LaneMask operator!(const LaneMask& p)
-    {
-        return {_mm_xor_ps(p.m, _mm_castsi128_ps(_mm_set1_epi32(-1)))};
-    }
+    friend LaneMask operator!(const LaneMask& p) { return {_mm_xor_ps(p.m, _mm_castsi128_ps(_mm_set1_epi32(-1)))}; }
     bool any() const { return _mm_movemask_ps(m) != 0; }
     bool all() const { return _mm_movemask_ps(m) == 0xf; }
 };

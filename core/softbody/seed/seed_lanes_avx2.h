@@ -23,16 +23,13 @@
 namespace granota {
 
 namespace detail {
-extern const bool g_seedAvx2;             ///< the processor has AVX2 (asked once, at start-up)
+extern const bool g_seedAvx2;               ///< the processor has AVX2 (asked once, at start-up)
 extern std::atomic<bool> g_seedWideAllowed; ///< setSeedWideLanesAllowed
 } // namespace detail
 
 /// Whether the body step may use eight lanes: the processor has AVX2 and
 /// setSeedWideLanesAllowed(false) was not called. Asked at every step: two loads.
-inline bool seedWideLanes()
-{
-    return detail::g_seedAvx2 && detail::g_seedWideAllowed.load(std::memory_order_relaxed);
-}
+inline bool seedWideLanes() { return detail::g_seedAvx2 && detail::g_seedWideAllowed.load(std::memory_order_relaxed); }
 /// Tests use this to run the four-lane step on a machine with AVX2 (both must give the
 /// same trace). Not thread-safe against a step running at the same time.
 void setSeedWideLanesAllowed(bool allowed);
@@ -43,10 +40,7 @@ template <class R> struct Lanes8; // only Lanes8<float>
 
 struct LaneMask8 {
     __m256 m;
-    GRANOTA_AVX2_TARGET friend LaneMask8 operator&(const LaneMask8& p, const LaneMask8& q)
-    {
-        return {_mm256_and_ps(p.m, q.m)};
-    }
+    GRANOTA_AVX2_TARGET friend LaneMask8 operator&(const LaneMask8& p, const LaneMask8& q) { return {_mm256_and_ps(p.m, q.m)}; }
     GRANOTA_AVX2_TARGET friend LaneMask8 operator!(const LaneMask8& p)
     {
         return {_mm256_xor_ps(p.m, _mm256_castsi256_ps(_mm256_set1_epi32(-1)))};

@@ -12,8 +12,7 @@
 namespace granota {
 
 template <class R>
-Expected<SeedLeg<R>> SeedLeg<R>::create(const FrogParams& params, int index, const Point& shoulder,
-                                        SeedComponents components)
+Expected<SeedLeg<R>> SeedLeg<R>::create(const FrogParams& params, int index, const Point& shoulder, SeedComponents components)
 {
     if (index < 0 || index > 3)
         return makeError(ErrorCode::OutOfRange, "leg index must be 0 to 3, got " + std::to_string(index));
@@ -114,8 +113,10 @@ template <class R> void SeedLeg<R>::moveShoulder(const Point& shoulder)
 {
     // A non-finite shoulder is ignored (the leg keeps the last one); float(double(x)) == x,
     // so the frog passing its float shoulders through Point loses nothing.
-    if (std::isfinite(shoulder.x)) m_muscle.x = R(std::clamp(shoulder.x, -1e15, 1e15));
-    if (std::isfinite(shoulder.y)) m_muscle.y = R(std::clamp(shoulder.y, -1e15, 1e15));
+    if (std::isfinite(shoulder.x))
+        m_muscle.x = R(std::clamp(shoulder.x, -1e15, 1e15));
+    if (std::isfinite(shoulder.y))
+        m_muscle.y = R(std::clamp(shoulder.y, -1e15, 1e15));
 }
 
 template <class R> void SeedLeg<R>::step(const Point& shoulder)

@@ -27,8 +27,7 @@ public:
     /// hanging from `shoulder`, straight along +x as SeedFrog.java's main builds it:
     /// elbow at shoulder + (upper, 0), wrist at shoulder + (upper + lower, 0), at rest.
     /// Gravity, friction, velmax and the floor (height − 1) come from params.
-    static Expected<SeedLeg> create(const FrogParams& params, int index, const Point& shoulder,
-                                    SeedComponents components = {});
+    static Expected<SeedLeg> create(const FrogParams& params, int index, const Point& shoulder, SeedComponents components = {});
     /// The same with any LegParams (a pendulum scene's own lengths and limits).
     static Expected<SeedLeg> create(const FrogParams& params, const LegParams& leg, const Point& shoulder,
                                     SeedComponents components = {});
@@ -66,9 +65,9 @@ private:
     double m_width = 0;
     // §4.15's clamps without acos, sin or cos in the step (precomputeLimits), for the
     // limits shoulder max, −shoulder min, elbow max, −elbow min:
-    R m_limitRatio[4] = {};  // the largest Δy/|Δ| whose float acos exceeds the limit
-    R m_limitOffX[4] = {};   // R(sin(limit))·moll: where the clamp puts the joint, …
-    R m_limitOffY[4] = {};   // … and R(cos(limit))·moll
+    R m_limitRatio[4] = {}; // the largest Δy/|Δ| whose float acos exceeds the limit
+    R m_limitOffX[4] = {};  // R(sin(limit))·moll: where the clamp puts the joint, …
+    R m_limitOffY[4] = {};  // … and R(cos(limit))·moll
 };
 
 extern template class SeedLeg<float>;

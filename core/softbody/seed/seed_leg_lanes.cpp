@@ -12,9 +12,7 @@ template <class R> SeedLegLanes<R>::SeedLegLanes(const SeedLeg<R>* const* legs, 
     const SeedLeg<R>* in[W];
     for (int k = 0; k < W; ++k)
         in[k] = legs[k < m_count ? k : 0];
-    const auto gather = [&in](auto field) {
-        return L::set(field(*in[0]), field(*in[1]), field(*in[2]), field(*in[3]));
-    };
+    const auto gather = [&in](auto field) { return L::set(field(*in[0]), field(*in[1]), field(*in[2]), field(*in[3])); };
     m_components = in[0]->m_components;
     m_mx = gather([](const SeedLeg<R>& l) { return l.m_muscle.x; });
     m_my = gather([](const SeedLeg<R>& l) { return l.m_muscle.y; });

@@ -58,8 +58,8 @@ private:
 template <class R> class SeedLegLanes<R>::Step {
 public:
     explicit Step(SeedLegLanes& legs)
-        : m_legs(legs), m_cx(legs.m_cx), m_cy(legs.m_cy), m_cpx(legs.m_cpx), m_cpy(legs.m_cpy), m_wx(legs.m_wx),
-          m_wy(legs.m_wy), m_wpx(legs.m_wpx), m_wpy(legs.m_wpy)
+        : m_legs(legs), m_cx(legs.m_cx), m_cy(legs.m_cy), m_cpx(legs.m_cpx), m_cpy(legs.m_cpy), m_wx(legs.m_wx), m_wy(legs.m_wy),
+          m_wpx(legs.m_wpx), m_wpy(legs.m_wpy)
     {
     }
 

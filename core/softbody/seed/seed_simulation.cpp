@@ -224,7 +224,7 @@ private:
 
     std::unique_ptr<SeedFrog<Real>> m_frog;
     std::vector<SeedBody<Real>> m_bodies;
-    std::vector<std::vector<double>> m_rest; // edge lengths at the start, per body
+    std::vector<std::vector<double>> m_rest;      // edge lengths at the start, per body
     mutable std::vector<Readouts> m_bodyReadouts; // scratch of readouts()
     bool m_held = false;
     int m_heldBody = -1;

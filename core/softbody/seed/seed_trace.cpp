@@ -63,9 +63,18 @@ bool parseNumber(std::string_view s, double& out)
         s.remove_prefix(1);
     while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
         s.remove_suffix(1);
-    if (s == "NaN") { out = std::nan(""); return true; }
-    if (s == "Infinity") { out = HUGE_VAL; return true; }
-    if (s == "-Infinity") { out = -HUGE_VAL; return true; }
+    if (s == "NaN") {
+        out = std::nan("");
+        return true;
+    }
+    if (s == "Infinity") {
+        out = HUGE_VAL;
+        return true;
+    }
+    if (s == "-Infinity") {
+        out = -HUGE_VAL;
+        return true;
+    }
     if (!s.empty() && s.front() == '+')
         s.remove_prefix(1);
     const char* first = s.data();
@@ -144,15 +153,13 @@ Expected<SeedTrace> parseSeedTrace(std::string_view text)
             continue;
         }
         if (parts.size() != trace.columns.size())
-            return makeError(ErrorCode::InvalidInput, "line " + std::to_string(lineNo) + ": "
-                                                          + std::to_string(parts.size()) + " fields, the header has "
-                                                          + std::to_string(trace.columns.size()));
+            return makeError(ErrorCode::InvalidInput, "line " + std::to_string(lineNo) + ": " + std::to_string(parts.size()) +
+                                                          " fields, the header has " + std::to_string(trace.columns.size()));
         std::vector<double> row(parts.size());
         for (std::size_t k = 0; k < parts.size(); ++k)
             if (!parseNumber(parts[k], row[k]))
-                return makeError(ErrorCode::InvalidInput, "line " + std::to_string(lineNo) + ", column "
-                                                              + trace.columns[k] + ": not a number: "
-                                                              + quotedForDisplay(parts[k]));
+                return makeError(ErrorCode::InvalidInput, "line " + std::to_string(lineNo) + ", column " + trace.columns[k] +
+                                                              ": not a number: " + quotedForDisplay(parts[k]));
         trace.rows.push_back(std::move(row));
     }
     if (!haveHeader)

@@ -19,10 +19,7 @@ public:
     int bodyCount() const override { return 1; }
     void bodyVertices(int, std::vector<Point>& out) const override { out = m_body.vertices(); }
     double bodyArea(int) const override { return polygonArea(m_body.vertices()); }
-    double bodyTargetArea(int) const override
-    {
-        return scene().has("area") ? scene().params.targetArea : restArea();
-    }
+    double bodyTargetArea(int) const override { return scene().has("area") ? scene().params.targetArea : restArea(); }
 
     // §4.1: the radius follows the mouse; §4.3 on: a click respawns at the mouse.
     bool press(Point p) override

@@ -9,8 +9,8 @@ namespace {
 
 bool usable(const Aabb& b)
 {
-    return std::isfinite(b.minX) && std::isfinite(b.minY) && std::isfinite(b.maxX) && std::isfinite(b.maxY)
-        && b.minX <= b.maxX && b.minY <= b.maxY;
+    return std::isfinite(b.minX) && std::isfinite(b.minY) && std::isfinite(b.maxX) && std::isfinite(b.maxY) && b.minX <= b.maxX &&
+           b.minY <= b.maxY;
 }
 
 /// A box covering more cells than this is kept out of the grid (a body of target area 1e9
@@ -36,8 +36,8 @@ void UniformGridBroadPhase::reserve(int boxes)
 {
     const std::size_t n = static_cast<std::size_t>(std::max(boxes, 0));
     m_range.reserve(4 * n);
-    m_cellStart.reserve(4 * n + 64 + 2);      // the cap on the number of cells, + 1
-    m_entries.reserve(kMaxCellsPerBox * n);   // a box in the grid covers at most that many cells
+    m_cellStart.reserve(4 * n + 64 + 2);    // the cap on the number of cells, + 1
+    m_entries.reserve(kMaxCellsPerBox * n); // a box in the grid covers at most that many cells
     m_large.reserve(n);
 }
 

@@ -49,10 +49,10 @@ private:
     double m_originY = 0;
     int m_nx = 0;
     int m_ny = 0;
-    std::vector<int> m_cellStart;  // CSR layout: entries of cell c are m_entries[start[c] .. start[c+1])
+    std::vector<int> m_cellStart; // CSR layout: entries of cell c are m_entries[start[c] .. start[c+1])
     std::vector<int> m_entries;
-    std::vector<int> m_range;      // per box: x0, y0, x1, y1 cell range, or x0 = −1 if not in the grid
-    std::vector<int> m_large;      // boxes covering too many cells: tested against every box
+    std::vector<int> m_range; // per box: x0, y0, x1, y1 cell range, or x0 = −1 if not in the grid
+    std::vector<int> m_large; // boxes covering too many cells: tested against every box
 };
 
 } // namespace granota

@@ -12,9 +12,7 @@ ChainAnchor frogLegAnchor(int body, int leg, int sides)
     static const int b[4] = {8, 8, 7, 3};
     static const double t[4] = {0.8, 0.2, 0.5, 0.5};
     const int k = leg < 0 ? 0 : (leg > 3 ? 3 : leg);
-    const auto scale = [sides](int v) {
-        return static_cast<int>(std::lround(v * sides / 10.0)) % (sides > 0 ? sides : 1);
-    };
+    const auto scale = [sides](int v) { return static_cast<int>(std::lround(v * sides / 10.0)) % (sides > 0 ? sides : 1); };
     ChainAnchor anchor;
     anchor.body = body;
     anchor.vertexA = scale(a[k]);
@@ -28,8 +26,7 @@ ChainDef frogLegChain(const LegParams& leg, const ChainAnchor& anchor, Point sho
     ChainDef def;
     def.anchor = anchor;
     def.joints = {shoulder, shoulder + Point(0, leg.upper), shoulder + Point(0, leg.upper + leg.lower)};
-    def.limits = {{leg.shoulderMin, leg.shoulderMax, AngleReference::World},
-                  {leg.elbowMin, leg.elbowMax, AngleReference::World}};
+    def.limits = {{leg.shoulderMin, leg.shoulderMax, AngleReference::World}, {leg.elbowMin, leg.elbowMax, AngleReference::World}};
     def.jointMass = jointMass;
     def.pullsBody = false; // §4.16: the legs hang from the body and never act on it
     return def;

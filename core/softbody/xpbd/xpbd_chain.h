@@ -32,11 +32,11 @@ struct AngleLimit {
 
 /// Where a chain's first joint sits.
 struct ChainAnchor {
-    int body = -1;    ///< body index, or −1 for the fixed point `point`
-    int vertexA = 0;  ///< the anchor is (1 − t)·v_A + t·v_B of that body
+    int body = -1;   ///< body index, or −1 for the fixed point `point`
+    int vertexA = 0; ///< the anchor is (1 − t)·v_A + t·v_B of that body
     int vertexB = 0;
-    double t = 0;     ///< in [0, 1]
-    Point point;      ///< the fixed anchor, px (body = −1); move it with XpbdWorld::moveChainAnchor
+    double t = 0; ///< in [0, 1]
+    Point point;  ///< the fixed anchor, px (body = −1); move it with XpbdWorld::moveChainAnchor
 };
 
 struct ChainDef {

@@ -83,8 +83,8 @@ Point unitOrUp(const Point& d)
 
 } // namespace
 
-void solveWalls(Point* x, const Point* xPrev, const double* w, Point* contactNormal, int n, double width,
-                double height, double friction)
+void solveWalls(Point* x, const Point* xPrev, const double* w, Point* contactNormal, int n, double width, double height,
+                double friction)
 {
     const double maxX = width - 1;
     const double maxY = height - 1;
@@ -128,8 +128,8 @@ void solveWalls(Point* x, const Point* xPrev, const double* w, Point* contactNor
     }
 }
 
-bool solveObstacle(const XpbdObstacle& o, const Point* pts, Point& x, const Point& xPrev, double margin,
-                   double friction, Point* normal)
+bool solveObstacle(const XpbdObstacle& o, const Point* pts, Point& x, const Point& xPrev, double margin, double friction,
+                   Point* normal)
 {
     // §5.2.1: the cheap box test first, the exact test only when it passes.
     Aabb path;
@@ -198,8 +198,8 @@ bool solveObstacle(const XpbdObstacle& o, const Point* pts, Point& x, const Poin
     return true;
 }
 
-bool solvePointInBody(Point* x, const double* w, int p, const Point& fixedPoint, int first, int count,
-                      double orientation, double margin, BodyContact* contact, int* edgeHint)
+bool solvePointInBody(Point* x, const double* w, int p, const Point& fixedPoint, int first, int count, double orientation,
+                      double margin, BodyContact* contact, int* edgeHint)
 {
     const Point pp = p >= 0 ? x[p] : fixedPoint;
     const Point* poly = x + first;

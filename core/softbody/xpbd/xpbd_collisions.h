@@ -57,8 +57,8 @@ bool segmentsCross(const Point& p, const Point& q, const Point& a, const Point& 
 
 /// Keeps every particle with w > 0 in [0, width − 1] × [0, height − 1] (Annex II's `fita`),
 /// with friction against the wall. Sets contactNormal[i] for the particles it touched.
-void solveWalls(Point* x, const Point* xPrev, const double* w, Point* contactNormal, int n, double width,
-                double height, double friction);
+void solveWalls(Point* x, const Point* xPrev, const double* w, Point* contactNormal, int n, double width, double height,
+                double friction);
 
 /// Pushes particle x (with position xPrev at the substep's start) out of an obstacle.
 /// Returns true on contact, with the normal; the obstacle does not move (infinite mass).
@@ -68,12 +68,12 @@ bool solveObstacle(const XpbdObstacle& o, const Point* obstaclePoints, Point& x,
 /// A contact of a point with the edge e0–e1 of a body, at s along the edge: the point
 /// had to move along n, relative to the edge, and the constraint's multiplier was λ.
 struct BodyContact {
-    int p = -1;        ///< particle, or −1 for an obstacle's corner
+    int p = -1; ///< particle, or −1 for an obstacle's corner
     int e0 = 0;
     int e1 = 0;
     double s = 0;
     Point n;
-    double lambda = 0; ///< mass·px: the normal impulse of the substep is λ/h
+    double lambda = 0;   ///< mass·px: the normal impulse of the substep is λ/h
     double friction = 0; ///< μ of this contact
 };
 
@@ -85,8 +85,8 @@ struct BodyContact {
 /// edge (0 … count − 1) found nearest last time, or −1: it is tried first, which lets the
 /// search reject the other edges by their boxes, and receives the edge found nearest now
 /// (touching or not); the answer does not depend on it.
-bool solvePointInBody(Point* x, const double* w, int p, const Point& fixedPoint, int first, int count,
-                      double orientation, double margin, BodyContact* contact, int* edgeHint = nullptr);
+bool solvePointInBody(Point* x, const double* w, int p, const Point& fixedPoint, int first, int count, double orientation,
+                      double margin, BodyContact* contact, int* edgeHint = nullptr);
 
 /// The same contact kept from the last substep (contact persistence, as contacts found once
 /// and re-solved in every substep in Macklin et al. 2019, §4): p against the line of the

@@ -133,10 +133,7 @@ Point angleGradient(const Point& d)
 namespace {
 
 /// The reference direction of c: segment a0→a1, or straight down (seed angle 0) without one.
-Point referenceDirection(const AngleConstraint& c, const Point* x)
-{
-    return c.a0 < 0 ? Point(0, 1) : x[c.a1] - x[c.a0];
-}
+Point referenceDirection(const AngleConstraint& c, const Point* x) { return c.a0 < 0 ? Point(0, 1) : x[c.a1] - x[c.a0]; }
 
 /// θ of c from its two directions.
 double angleBetween(const AngleConstraint& c, const Point& da, const Point& db)

@@ -38,7 +38,7 @@ struct DistanceConstraint {
     double rest = 0;            ///< px
     double complianceScale = 1; ///< α = (compliance of the kind) × this (the rest length for edges)
     ConstraintKind kind = ConstraintKind::Edge;
-    double lambda = 0;          ///< λ of the last substep; the force is λ/h² (negative when stretched)
+    double lambda = 0; ///< λ of the last substep; the force is λ/h² (negative when stretched)
 };
 
 /// |x_joint − p| = rest with p = (1 − t)·x_a + t·x_b, a point of a body between two of its
@@ -81,10 +81,7 @@ struct AngleConstraint {
 
 /// ∇ᵢA = ½·perp(xᵢ₊₁ − xᵢ₋₁), perp(d) = (d.y, −d.x): the direction in which Annex II
 /// l. 292 pushes a vertex to grow the area, here with its exact length.
-inline Point areaGradient(const Point& prev, const Point& next)
-{
-    return {0.5 * (next.y - prev.y), 0.5 * (prev.x - next.x)};
-}
+inline Point areaGradient(const Point& prev, const Point& next) { return {0.5 * (next.y - prev.y), 0.5 * (prev.x - next.x)}; }
 
 /// One XPBD projection of a distance constraint; returns Δλ.
 inline double solveDistance(DistanceConstraint& c, Point* x, const double* w, double alphaTilde)

@@ -41,9 +41,8 @@ Expected<XpbdParams> validateXpbdParams(const XpbdParams& p)
         return bad("substeps must lie between 1 and 1000");
     if (!(std::isfinite(p.dt) && p.dt > 0))
         return bad("the time step must be positive and finite");
-    if (!finiteNonNegative(p.edgeCompliance) || !finiteNonNegative(p.areaCompliance)
-        || !finiteNonNegative(p.bendCompliance) || !finiteNonNegative(p.linkCompliance)
-        || !finiteNonNegative(p.grabCompliance))
+    if (!finiteNonNegative(p.edgeCompliance) || !finiteNonNegative(p.areaCompliance) || !finiteNonNegative(p.bendCompliance) ||
+        !finiteNonNegative(p.linkCompliance) || !finiteNonNegative(p.grabCompliance))
         return bad("compliances must be finite and not negative (0 = infinitely stiff)");
     if (!finiteNonNegative(p.edgeDampingRatio))
         return bad("the edges' damping ratio must be finite and not negative");

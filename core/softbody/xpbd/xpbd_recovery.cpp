@@ -35,8 +35,7 @@ bool polygonSelfIntersects(const Point* x, int n)
                 continue;
             const Point& c = x[j];
             const Point& d = x[j + 1 == n ? 0 : j + 1];
-            if (std::max(c.x, d.x) < minX || std::min(c.x, d.x) > maxX || std::max(c.y, d.y) < minY
-                || std::min(c.y, d.y) > maxY)
+            if (std::max(c.x, d.x) < minX || std::min(c.x, d.x) > maxX || std::max(c.y, d.y) < minY || std::min(c.y, d.y) > maxY)
                 continue;
             if (segmentsCross(a, b, c, d))
                 return true;

@@ -58,7 +58,9 @@ std::vector<Point> shapeAt(const SceneSpec& s, std::size_t i, Point centre)
 
 class StableSimulation final : public Simulation {
 public:
-    StableSimulation(const SceneSpec& scene, XpbdWorld world) : Simulation(scene, SolverKind::Stable), m_world(std::move(world)) {}
+    StableSimulation(const SceneSpec& scene, XpbdWorld world) : Simulation(scene, SolverKind::Stable), m_world(std::move(world))
+    {
+    }
     std::unique_ptr<Simulation> clone() const override { return std::make_unique<StableSimulation>(*this); }
 
     Expected<void> build()
@@ -299,7 +301,7 @@ private:
 
     XpbdWorld m_world;
     mutable std::vector<XpbdWorld::BodyEnergies> m_energies; // scratch of bodyReadouts
-    std::vector<std::vector<LinkLimit>> m_limits; // per chain, as added
+    std::vector<std::vector<LinkLimit>> m_limits;            // per chain, as added
     bool m_spawned = false;
     std::optional<double> m_mouseRadius; // §4.1, once the mouse has moved
 };

@@ -193,7 +193,7 @@ Expected<int> XpbdWorld::addBody(const std::vector<Point>& restShape, double tar
     m_obstaclePairs.reserve(bodies * std::max<std::size_t>(m_obstacles.size(), 4));
     m_grid.reserve(static_cast<int>(bodies));
     const std::size_t vertices = roomFor(m_x.size());
-    m_bodyContacts.reserve(vertices); // about one contact per vertex at most, in a pile
+    m_bodyContacts.reserve(vertices);   // about one contact per vertex at most, in a pile
     m_candidates.reserve(2 * vertices); // a vertex near two or three bodies, in a pile
     m_reach.reserve(bodies);
     m_grabIdx.reserve(std::max(m_grabIdx.capacity(), at(n)));
@@ -560,8 +560,7 @@ void XpbdWorld::solveSubstep(double h, double fraction)
     // The mouse ties: ropes of fixed length to the mouse (Annex II l. 266–283), compliant,
     // each force capped: |λ|/h² ≤ grabMaxForce.
     if (m_grabBody >= 0) {
-        const Point m = m_mouseFrom + Point(fraction * (m_mouse.x - m_mouseFrom.x),
-                                            fraction * (m_mouse.y - m_mouseFrom.y));
+        const Point m = m_mouseFrom + Point(fraction * (m_mouse.x - m_mouseFrom.x), fraction * (m_mouse.y - m_mouseFrom.y));
         const double alpha = p.grabCompliance * invH2;
         const double cap = p.grabMaxForce * h * h;
         for (std::size_t k = 0; k < m_grabIdx.size(); ++k) {
@@ -630,13 +629,12 @@ void XpbdWorld::solveSubstep(double h, double fraction)
             const int i = cand.particle;
             const Body& b = m_bodies[at(cand.body)];
             BodyContact contact;
-            const bool kept = cand.touching
-                && solvePointAgainstEdge(x, w, i, b.first + cand.edge, b.first + (cand.edge + 1) % b.count,
-                                         b.orientationSign, margin, &contact);
-            cand.touching = kept
-                || (m_tightBoxes[at(cand.body)].contains(x[i])
-                    && solvePointInBody(x, w, i, Point(), b.first, b.count, b.orientationSign, margin, &contact,
-                                        &cand.edge));
+            const bool kept = cand.touching &&
+                              solvePointAgainstEdge(x, w, i, b.first + cand.edge, b.first + (cand.edge + 1) % b.count,
+                                                    b.orientationSign, margin, &contact);
+            cand.touching = kept || (m_tightBoxes[at(cand.body)].contains(x[i]) &&
+                                     solvePointInBody(x, w, i, Point(), b.first, b.count, b.orientationSign, margin, &contact,
+                                                      &cand.edge));
             if (cand.touching) {
                 contact.friction = p.contactFriction;
                 m_bodyContacts.push_back(contact);
@@ -679,8 +677,7 @@ void XpbdWorld::solveSubstep(double h, double fraction)
             // seed's joints (a wrist below the floor is lifted, the elbow slides, §4.16):
             // a joint held by friction, rammed into the floor by its link, would pin the
             // leg folded past its limits.
-            solveWalls(x + c.first, xPrev + c.first, w + c.first, m_contact.data() + c.first, c.count, p.width,
-                       p.height, 0.0);
+            solveWalls(x + c.first, xPrev + c.first, w + c.first, m_contact.data() + c.first, c.count, p.width, p.height, 0.0);
         }
     }
 
@@ -723,8 +720,8 @@ void XpbdWorld::solveSubstep(double h, double fraction)
             const Body& b = m_bodies[k];
             if (b.recovering)
                 continue;
-            const double loss =
-                edgeDashpotLoss(m_edges.data() + b.firstEdge, m_edgeDampingLambda.data() + b.firstEdge, b.count, x, xPrev, h);
+            const double loss = edgeDashpotLoss(m_edges.data() + b.firstEdge, m_edgeDampingLambda.data() + b.firstEdge, b.count,
+                                                x, xPrev, h);
             m_dampingLoss += loss;
             m_bodyDampingLoss[k] += loss;
         }
@@ -739,9 +736,9 @@ void XpbdWorld::solveSubstep(double h, double fraction)
 void XpbdWorld::placeChainRoots(double fraction)
 {
     for (const Chain& c : m_chains)
-        m_x[at(c.first)] = c.anchor.body >= 0
-            ? anchorPoint(c.anchor)
-            : c.fixedFrom + Point(fraction * (c.fixedTo.x - c.fixedFrom.x), fraction * (c.fixedTo.y - c.fixedFrom.y));
+        m_x[at(c.first)] = c.anchor.body >= 0 ? anchorPoint(c.anchor)
+                                              : c.fixedFrom + Point(fraction * (c.fixedTo.x - c.fixedFrom.x),
+                                                                    fraction * (c.fixedTo.y - c.fixedFrom.y));
 }
 
 bool XpbdWorld::checkValid(const Body& b) const
@@ -1086,7 +1083,7 @@ double XpbdWorld::elasticEnergy(std::vector<BodyEnergies>* bodies) const
             (*bodies)[at(m_owner[at(owner)])].elastic += u;
     };
     const bool dashpots = m_params.edgeDampingRatio > 0; // then λ holds their part too
-    for (std::size_t k = 0; k < m_edges.size(); ++k) { // the spring's force, not the dashpot's
+    for (std::size_t k = 0; k < m_edges.size(); ++k) {   // the spring's force, not the dashpot's
         const DistanceConstraint& c = m_edges[k];
         add(m_params.edgeCompliance * c.complianceScale, dashpots ? c.lambda - m_edgeDampingLambda[k] : c.lambda, c.a);
     }

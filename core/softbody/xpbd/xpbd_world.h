@@ -42,9 +42,9 @@
 namespace granota {
 
 struct BodyOptions {
-    double mass = 10;      ///< total mass, mass units, shared equally by the vertices (the seed's frog: 10 × 1)
-    bool bending = false;  ///< keep the angles between consecutive edges: non-regular shapes keep their form (§5.2.3)
-    bool collides = true;  ///< takes part in body–body contacts (§5.2.2)
+    double mass = 10;     ///< total mass, mass units, shared equally by the vertices (the seed's frog: 10 × 1)
+    bool bending = false; ///< keep the angles between consecutive edges: non-regular shapes keep their form (§5.2.3)
+    bool collides = true; ///< takes part in body–body contacts (§5.2.2)
 };
 
 /// The particles [first, first + count) of a body or chain in positions().
@@ -139,12 +139,12 @@ public:
     double gridCellSize() const { return m_grid.cellSize(); }
 
     // --- Readouts for teaching ---
-    double area(int body) const;              ///< signed area, px² (positive unless inside out)
-    double targetArea(int body) const;        ///< px²
-    double areaErrorPercent(int body) const;  ///< 100 (A − A₀)/A₀ (A₀ taken ≥ 1 px²)
+    double area(int body) const;                                ///< signed area, px² (positive unless inside out)
+    double targetArea(int body) const;                          ///< px²
+    double areaErrorPercent(int body) const;                    ///< 100 (A − A₀)/A₀ (A₀ taken ≥ 1 px²)
     static double areaErrorPercent(double area, double target); ///< the same of an area A and a target A₀
-    double maxEdgeStretch(int body) const;    ///< max |L − L₀|/L₀ over the edges (L₀ taken ≥ 1 px)
-    double areaPressure(int body) const;      ///< λ/h² of the area constraint, mass/step² (> 0 pushes out)
+    double maxEdgeStretch(int body) const;                      ///< max |L − L₀|/L₀ over the edges (L₀ taken ≥ 1 px)
+    double areaPressure(int body) const;                        ///< λ/h² of the area constraint, mass/step² (> 0 pushes out)
     double maxEdgeTension(int body) const;    ///< max −λ/h² over the edges, mass·px/step² (> 0 = stretched)
     double angleLimitTorque(int chain) const; ///< max |λ|/h² over the chain's angle limits (0 when none is hit)
     Point centroid(int body) const;           ///< mean of the vertices, px
@@ -153,11 +153,11 @@ public:
         double length = 0, vertexMass = 0;
     };
     EdgeRest edgeRest(int body, int edge) const;
-    double orientation(int body) const;       ///< best-fit rotation from the rest shape, rad
-    bool recovering(int body) const;          ///< shape matching is pulling the body back
-    bool isValid(int body) const;             ///< positive area above 20 % of the target, no self-crossing
-    double kineticEnergy() const;             ///< Σ ½ m |v|², mass·px²/step²
-    double gravityEnergy() const;             ///< Σ −m g·x (zero at the origin), mass·px²/step²
+    double orientation(int body) const; ///< best-fit rotation from the rest shape, rad
+    bool recovering(int body) const;    ///< shape matching is pulling the body back
+    bool isValid(int body) const;       ///< positive area above 20 % of the target, no self-crossing
+    double kineticEnergy() const;       ///< Σ ½ m |v|², mass·px²/step²
+    double gravityEnergy() const;       ///< Σ −m g·x (zero at the origin), mass·px²/step²
     struct BodyEnergies;
     /// Σ ½ α F² (F = λ/h²) over compliant constraints, mass·px²/step²; with `bodies`
     /// (bodyCount() entries), each constraint's also added to its body's `elastic`.
@@ -216,7 +216,7 @@ private:
         int firstAngle = 0;
         int angleCount = 0;
         double target = 0;
-        double restArea = 0;      // of the shape as given, px²
+        double restArea = 0; // of the shape as given, px²
         double mass = 10;
         bool collides = true;
         bool recovering = false;
@@ -229,10 +229,10 @@ private:
         int firstLink = 0;
         int firstAngle = 0;
         int angleCount = 0;
-        int anchorLink = -1;      // index into m_anchorLinks (first link hanging from a body), or −1
+        int anchorLink = -1; // index into m_anchorLinks (first link hanging from a body), or −1
         ChainAnchor anchor;
-        Point fixedFrom;          // fixed anchor at the step's start
-        Point fixedTo;            // and at its end
+        Point fixedFrom; // fixed anchor at the step's start
+        Point fixedTo;   // and at its end
     };
 
     int addParticle(Point x, Point v, double invMass);
@@ -248,22 +248,22 @@ private:
     long m_steps = 0;
     double m_dampingLoss = 0;
     int m_contactCount = 0;
-    std::vector<double> m_bodyDampingLoss; // per body: what its edges' dashpots took
+    std::vector<double> m_bodyDampingLoss;     // per body: what its edges' dashpots took
     std::vector<double> m_particleDampingLoss; // per particle: what the damping f took from it
-    std::vector<int> m_bodyContactCount;   // per body, in the substep m_contactCount is from
-    std::vector<int> m_bodyContactsNow;    // scratch: per body, in the present substep
+    std::vector<int> m_bodyContactCount;       // per body, in the substep m_contactCount is from
+    std::vector<int> m_bodyContactsNow;        // scratch: per body, in the present substep
 
     // Particles (structure of arrays).
     std::vector<Point> m_x;
     std::vector<Point> m_xPrev;
     std::vector<Point> m_v;
-    std::vector<double> m_w;         // inverse masses; 0 = moved by the program only
-    std::vector<double> m_mass;      // the masses, 1/w (0 where w = 0), for the readouts
-    std::vector<Point> m_contact;    // wall/obstacle normal of the substep, or (0, 0)
-    std::vector<Point> m_restShape;  // body vertices: the given shape about its centroid
-    std::vector<Point> m_rest;       // the same scaled to the target area (shape-matching goal)
-    std::vector<Point> m_delta;      // scratch: summed corrections of the Jacobi passes
-    std::vector<int> m_owner;        // the body a particle is of (a leg's: its body's), or −1
+    std::vector<double> m_w;        // inverse masses; 0 = moved by the program only
+    std::vector<double> m_mass;     // the masses, 1/w (0 where w = 0), for the readouts
+    std::vector<Point> m_contact;   // wall/obstacle normal of the substep, or (0, 0)
+    std::vector<Point> m_restShape; // body vertices: the given shape about its centroid
+    std::vector<Point> m_rest;      // the same scaled to the target area (shape-matching goal)
+    std::vector<Point> m_delta;     // scratch: summed corrections of the Jacobi passes
+    std::vector<int> m_owner;       // the body a particle is of (a leg's: its body's), or −1
 
     std::vector<Body> m_bodies;
     std::vector<Chain> m_chains;
@@ -278,11 +278,11 @@ private:
 
     // Contacts.
     UniformGridBroadPhase m_grid;
-    std::vector<Aabb> m_boxes;        // per body, grown by the step's motion
-    std::vector<Aabb> m_gridBoxes;    // the same, empty for bodies that do not collide (broad phase)
-    std::vector<Aabb> m_tightBoxes;   // per body, at the start of the contact pass of a substep
+    std::vector<Aabb> m_boxes;      // per body, grown by the step's motion
+    std::vector<Aabb> m_gridBoxes;  // the same, empty for bodies that do not collide (broad phase)
+    std::vector<Aabb> m_tightBoxes; // per body, at the start of the contact pass of a substep
     std::vector<BodyPair> m_pairs;
-    std::vector<BodyPair> m_obstaclePairs; // (obstacle, body)
+    std::vector<BodyPair> m_obstaclePairs;   // (obstacle, body)
     std::vector<BodyContact> m_bodyContacts; // contacts with bodies in the current substep (for friction)
     /// A vertex that may touch another body during this step, found once per step from the
     /// broad phase's pairs (collision detection per step, resolution per substep: Macklin
@@ -294,15 +294,15 @@ private:
         bool touching = false; // pushed out against `edge` in the last substep
     };
     std::vector<ContactCandidate> m_candidates;
-    std::vector<double> m_reach;       // per body: how far its vertices may travel this step, px
+    std::vector<double> m_reach; // per body: how far its vertices may travel this step, px
 
     // Mouse.
     int m_grabBody = -1;
     std::vector<int> m_grabIdx;
     std::vector<double> m_grabRest;
     Point m_mouse;
-    Point m_mouseFrom;      // mouse at the start of the step
-    Point m_mouseVelocity;  // px/step over the last step
+    Point m_mouseFrom;     // mouse at the start of the step
+    Point m_mouseVelocity; // px/step over the last step
 };
 
 } // namespace granota
