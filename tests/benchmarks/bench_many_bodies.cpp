@@ -17,6 +17,8 @@
 #include "core/softbody/simulation.h"
 #include "core/softbody/simulation_series.h"
 
+#include "bench_smoke.h"
+
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -32,7 +34,7 @@ namespace {
 constexpr int kSpreadSettleSteps = 50;
 /// Steps before timing the pile: enough for the top row to fall onto the others and the
 /// pile to come (nearly) to rest.
-constexpr int kPileSettleSteps = 300;
+const int kPileSettleSteps = fullOrSmoke(300, 10);
 /// The scene's layout (scene_layout.cpp) puts bodies 2.2 radii apart…
 constexpr double kLayoutPitchRadii = 2.2;
 /// …and keeps about 2.1 radii from the frame's top-left corner; one more radius of room.
@@ -89,7 +91,7 @@ namespace {
 
 /// Steps timed each way: enough for two or more snapshots at the spacing the cost floor
 /// reaches on 1000 bodies (~300 steps), so their share is in the figure.
-constexpr int kOverheadSteps = 900;
+const int kOverheadSteps = fullOrSmoke(900, 20);
 
 // What recording a run and its series cost on 1000 bodies (issue 16: at most 5 % of the
 // step): a plain simulation and a recorded run with its series, built alike and settled,
@@ -202,8 +204,8 @@ void BM_ScrubBack10000(benchmark::State& state)
 
 } // namespace
 
-BENCHMARK(BM_RecordingOverhead)->Arg(1000)->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(3);
+BENCHMARK(BM_RecordingOverhead)->Arg(1000)->Unit(benchmark::kMillisecond)->UseManualTime()->Iterations(fullOrSmoke(3, 1));
 BENCHMARK(BM_Readouts)->Arg(1000)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SeriesSample)->Arg(1000)->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_Snapshot)->Arg(1000)->Unit(benchmark::kMicrosecond)->Iterations(100);
+BENCHMARK(BM_Snapshot)->Arg(1000)->Unit(benchmark::kMicrosecond)->Iterations(fullOrSmoke(100, 2));
 BENCHMARK(BM_ScrubBack10000)->Unit(benchmark::kMillisecond);

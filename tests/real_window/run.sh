@@ -2,18 +2,36 @@
 # Runs a GUI test as a user's desktop would show it: a real X server (Xvfb), the openbox
 # window manager, Qt's xcb platform, real key events. Shortcut clashes, focus and window
 # sizes that the offscreen platform hides show up here (on a Linux desktop Redo is
-# Ctrl+Shift+Z; offscreen it is Ctrl+Y).
-#   tests/real_window/run.sh TEST_BINARY [test functions…]
+# Ctrl+Shift+Z; offscreen it is Ctrl+Y). README.md beside this file says how the tests stay
+# independent of the window manager's timing.
+#   tests/real_window/run.sh TEST_BINARY [arguments…]
+# Xvfb picks a free display itself (-displayfd) and says which, so any number of these can
+# run at once (xvfb-run -a guesses a free number, and two started together may guess the same).
 set -euo pipefail
 export QT_QPA_PLATFORM=xcb QT_SCALE_FACTOR=1
-exec xvfb-run -a -s "-screen 0 1280x1024x24" bash -c '
-  openbox >/dev/null 2>&1 &
-  wm=$!
-  for _ in $(seq 50); do xprop -root _NET_SUPPORTING_WM_CHECK 2>/dev/null | grep -q window && break; sleep 0.1; done
-  # openbox announces itself before it manages new windows: a window mapped in that moment
-  # may never be exposed (tests/gui_timeouts.h shows it again if so).
-  sleep 1
-  "$@"
-  rc=$?
-  kill "$wm" 2>/dev/null || true
-  exit $rc' run.sh "$@"
+scratch="$(mktemp -d "${TMPDIR:-/tmp}/granota-xvfb.XXXXXX")"
+xvfb="" wm=""
+cleanup() {
+  for pid in $wm $xvfb; do kill "$pid" 2>/dev/null || true; done
+  for pid in $wm $xvfb; do wait "$pid" 2>/dev/null || true; done
+  rm -rf "$scratch"
+}
+trap cleanup EXIT
+Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$scratch/display" 2>"$scratch/xvfb.log" &
+xvfb=$!
+for _ in $(seq 300); do
+  [ -s "$scratch/display" ] && break
+  kill -0 "$xvfb" 2>/dev/null || { echo "error: Xvfb did not start:" >&2; cat "$scratch/xvfb.log" >&2; exit 1; }
+  sleep 0.1
+done
+[ -s "$scratch/display" ] || { echo "error: Xvfb named no display in 30 s" >&2; exit 1; }
+export DISPLAY=":$(head -1 "$scratch/display")"
+openbox >/dev/null 2>&1 &
+wm=$!
+for _ in $(seq 300); do xprop -root _NET_SUPPORTING_WM_CHECK 2>/dev/null | grep -q window && break; sleep 0.1; done
+# openbox announces itself before it manages new windows: a window mapped in that moment
+# may never be exposed (tests/gui_timeouts.h shows it again if so).
+sleep 1
+status=0
+"$@" || status=$?
+exit "$status"
