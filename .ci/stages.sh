@@ -3,7 +3,8 @@
 #   stage NAME [--needs OTHER] -- COMMAND…   runs COMMAND (in `bash -eo pipefail -c` when it
 #                                            is one string); with --needs, only if OTHER passed
 #   stage_summary                            prints every stage's line, then "stages: N passed,
-#                                            N failed", and returns non-zero if any failed
+#                                            N failed, N skipped"; non-zero if any failed or
+#                                            was skipped
 # The lines are kept in $GRANOTA_STAGE_SUMMARY, so that .ci/run can add its own stages to
 # those of .ci/setup and print them all at the end.
 : "${GRANOTA_STAGE_SUMMARY:=$(mktemp "${TMPDIR:-/tmp}/granota-stages.XXXXXX")}"
@@ -35,12 +36,13 @@ stage() {
 }
 
 stage_summary() {
-  local passed failed
+  local passed failed skipped
   passed=$(grep -c '^ok ' "$GRANOTA_STAGE_SUMMARY" || true)
-  failed=$(grep -c -v '^ok ' "$GRANOTA_STAGE_SUMMARY" || true)
+  failed=$(grep -c '^FAILED ' "$GRANOTA_STAGE_SUMMARY" || true)
+  skipped=$(grep -c '^skipped ' "$GRANOTA_STAGE_SUMMARY" || true)
   echo
   echo "=== stages (status, time, stage)"
   cat "$GRANOTA_STAGE_SUMMARY"
-  echo "stages: $passed passed, $failed failed"
-  [ "$failed" -eq 0 ]
+  echo "stages: $passed passed, $failed failed, $skipped skipped"
+  [ "$failed" -eq 0 ] && [ "$skipped" -eq 0 ]
 }
