@@ -15,8 +15,29 @@
 #include <QTextStream>
 
 #include <algorithm>
+#include <cstring>
 
 namespace {
+
+/// With no display at all (over SSH, in CI), the options that print or render and then exit
+/// (--help, --version, --screenshot) use Qt's offscreen platform instead of aborting on
+/// "could not connect to display". A platform the user chose is kept.
+void offscreenWhenNothingIsShown(int argc, char* argv[])
+{
+    if (!qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") || !qEnvironmentVariableIsEmpty("DISPLAY") ||
+        !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY"))
+        return;
+    for (int i = 1; i < argc; ++i) {
+        const char* a = argv[i];
+        for (const char* option : {"-h", "-?", "--help", "--help-all", "-v", "--version", "--screenshot"}) {
+            const std::size_t n = std::strlen(option);
+            if (std::strcmp(a, option) == 0 || (std::strncmp(a, option, n) == 0 && a[n] == '=' && n > 2)) {
+                qputenv("QT_QPA_PLATFORM", "offscreen");
+                return;
+            }
+        }
+    }
+}
 
 /// A text of the command line, in the interface's language (translations/, context
 /// "granota::CommandLine").
@@ -32,6 +53,7 @@ int fail(const QString& message)
 
 int main(int argc, char* argv[])
 {
+    offscreenWhenNothingIsShown(argc, argv);
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("Granota"));
     QApplication::setOrganizationName(QStringLiteral("Granota"));

@@ -766,6 +766,35 @@ private slots:
         }
     }
 
+    // Over SSH or in CI there is no display at all: --help and --screenshot still work (the
+    // application picks the offscreen platform itself); before, Qt aborted on "could not
+    // connect to display".
+    void helpAndScreenshotWithoutADisplay()
+    {
+        QTemporaryDir dir;
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        for (const char* name : {"QT_QPA_PLATFORM", "DISPLAY", "WAYLAND_DISPLAY"})
+            env.remove(QString::fromLatin1(name));
+        env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
+        env.insert(QStringLiteral("XDG_DATA_HOME"), dir.filePath(QStringLiteral("data")));
+        QProcess help;
+        help.setProcessEnvironment(env);
+        help.start(QStringLiteral(GRANOTA_GUI_PATH), {QStringLiteral("--help")});
+        QVERIFY(help.waitForFinished(120000));
+        QCOMPARE(help.exitStatus(), QProcess::NormalExit);
+        QCOMPARE(help.exitCode(), 0);
+        QVERIFY(QString::fromUtf8(help.readAllStandardOutput()).contains(QStringLiteral("--screenshot")));
+        const QString png = dir.filePath(QStringLiteral("shot.png"));
+        QProcess shot;
+        shot.setProcessEnvironment(env);
+        shot.start(QStringLiteral(GRANOTA_GUI_PATH),
+                   {QStringLiteral("--lang"), QStringLiteral("ca"), QStringLiteral("--screenshot"), png});
+        QVERIFY(shot.waitForFinished(120000));
+        QCOMPARE(shot.exitStatus(), QProcess::NormalExit);
+        QVERIFY2(shot.exitCode() == 0, shot.readAllStandardError().constData());
+        QCOMPARE(QImage(png).size(), QSize(1280, 800));
+    }
+
     // A screenshot is a one-off render: it opens a document in another language and leaves
     // the user's saved language, recent files and data folder exactly as they were.
     void aScreenshotRunWritesNoSettings()
