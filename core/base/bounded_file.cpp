@@ -7,7 +7,9 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace granota {
 
@@ -22,14 +24,35 @@ std::string byteSizeText(std::size_t bytes)
 Expected<std::string> readBoundedFile(const std::string& path, std::size_t maxBytes)
 {
     const std::string name = quotedForDisplay(path);
+    const auto refused = [&name](int errnoValue) {
+        Error e = makeError(ErrorCode::SystemRefused, "cannot read " + name + ": " + systemErrorText(errnoValue));
+        e.systemError = errnoValue;
+        return e;
+    };
+    // Opened without blocking, then looked at: opening a named pipe (FIFO) with no writer
+    // would otherwise wait forever. Pipes and sockets are refused; a device such as
+    // /dev/zero is read against the bound like a file.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0)
+        return refused(errno);
     struct stat info {};
-    if (::stat(path.c_str(), &info) != 0)
-        return makeError(ErrorCode::InvalidInput, "cannot read " + name + ": " + systemErrorText(errno));
-    if (S_ISDIR(info.st_mode))
-        return makeError(ErrorCode::InvalidInput, name + " is a folder, not a file");
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
-    if (!file)
-        return makeError(ErrorCode::InvalidInput, "cannot read " + name + ": " + systemErrorText(errno));
+    if (::fstat(fd, &info) != 0) {
+        const int e = errno;
+        ::close(fd);
+        return refused(e);
+    }
+    if (S_ISDIR(info.st_mode) || S_ISFIFO(info.st_mode) || S_ISSOCK(info.st_mode)) {
+        ::close(fd);
+        return makeError(ErrorCode::NotAFile,
+                         name + (S_ISDIR(info.st_mode) ? " is a folder, not a file" : " is a pipe, not a file"));
+    }
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(::fdopen(fd, "rb"), &std::fclose);
+    if (!file) {
+        const int e = errno;
+        ::close(fd);
+        return refused(e);
+    }
     std::string bytes;
     char buffer[1 << 16];
     while (bytes.size() <= maxBytes) {
@@ -38,7 +61,7 @@ Expected<std::string> readBoundedFile(const std::string& path, std::size_t maxBy
         bytes.append(buffer, got);
         if (got < want) {
             if (std::ferror(file.get()))
-                return makeError(ErrorCode::InvalidInput, "cannot read " + name + ": " + systemErrorText(errno));
+                return refused(errno);
             break; // end of file
         }
     }

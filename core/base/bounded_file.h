@@ -12,8 +12,10 @@
 namespace granota {
 
 /// The bytes of the file at `path` (a path in the local 8-bit encoding), or an error
-/// that names it: it does not exist, it is a directory, it cannot be read, or it holds
-/// more than `maxBytes` bytes (then reading stops after maxBytes + 1 bytes).
+/// that names it: it does not exist or cannot be read (ErrorCode::SystemRefused, with the
+/// errno), it is a folder, a pipe or a socket (ErrorCode::NotAFile: refused at once, never
+/// waited on), or it holds more than `maxBytes` bytes (ErrorCode::OutOfRange; reading stops
+/// after maxBytes + 1 bytes).
 Expected<std::string> readBoundedFile(const std::string& path, std::size_t maxBytes);
 
 /// "64 MB": a byte count as a user reads it in a message.

@@ -23,11 +23,14 @@ enum class ErrorCode {
     NotIncreasing, ///< abscissae of a function spline must increase strictly
     OutOfRange,    ///< a parameter outside its meaningful range
     Cancelled,     ///< the user stopped a long computation
+    NotAFile,      ///< a path names a folder, a pipe or a device where a file was wanted
+    SystemRefused, ///< the system refused to read or write a file: Error::systemError says why
 };
 
 struct Error {
     ErrorCode code = ErrorCode::InvalidInput;
     std::string message;
+    int systemError = 0; ///< the errno of a refused read or write (ENOSPC, EROFS, EACCES…), else 0
 };
 
 template <class T> class Expected {
@@ -90,6 +93,6 @@ private:
     std::optional<Error> m_error;
 };
 
-inline Error makeError(ErrorCode code, std::string message) { return Error{code, std::move(message)}; }
+inline Error makeError(ErrorCode code, std::string message) { return Error{code, std::move(message), 0}; }
 
 } // namespace granota
