@@ -3,6 +3,7 @@
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_plot_panel.h"
 #include "ui/frog/frog_tab.h"
+#include "ui/shell/exporter.h"
 #include "ui/shell/language.h"
 #include "ui/shell/main_window.h"
 
@@ -133,11 +134,12 @@ int main(int argc, char* argv[])
     granota::ui::setLanguage(language, parser.isSet(langOption) && !screenshot);
 
     granota::ui::MainWindow window;
-    if (!parser.positionalArguments().isEmpty()) {
-        QString error;
-        if (!window.openFile(parser.positionalArguments().first(), &error))
-            return fail(error);
-    }
+    // A document given on the command line (a double-click in the file manager): a
+    // screenshot run stops on a bad one; a window opens anyway and says what is wrong.
+    QString openError;
+    if (!parser.positionalArguments().isEmpty() && !window.openFile(parser.positionalArguments().first(), &openError) &&
+        screenshot)
+        return fail(openError);
     if (parser.isSet(sceneOption)) {
         QString error;
         if (!window.frogTab()->setScene(parser.value(sceneOption), &error))
@@ -217,13 +219,17 @@ int main(int argc, char* argv[])
         for (int i = 0; i < 5; ++i) // let layouts settle and the frog canvas draw a few frames
             QApplication::processEvents();
         const QString file = parser.value(screenshotOption);
-        if (!window.grab().save(file, "PNG"))
-            return fail(say("cannot write “%1”").arg(file));
+        // Replaces the file whole (ui/shell/exporter.h): a full disk keeps the old one.
+        if (const QString error = granota::ui::writePngFile(window.grab().toImage(), file); !error.isEmpty())
+            return fail(error);
         return 0;
     }
     if (parser.isSet(presentOption))
         window.setPresentation(true);
     window.show();
-    window.offerRecovery();
+    if (!openError.isEmpty())
+        window.showOpenError(openError);
+    else
+        window.offerRecovery();
     return app.exec();
 }

@@ -1517,6 +1517,10 @@
             <source>Made with Granota</source>
             <translation>Fet amb el Granota</translation>
         </message>
+        <message>
+            <source>Cannot write “%1”: %2.</source>
+            <translation>No es pot escriure «%1»: %2.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::FitExactView</name>
@@ -3771,6 +3775,40 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
             <source>&lt;h3&gt;Granota&lt;/h3&gt;&lt;p&gt;Splines and soft bodies for the classroom, from the thesis “Animació procedimental per a cossos tous”.&lt;/p&gt;</source>
             <translation>&lt;h3&gt;Granota&lt;/h3&gt;&lt;p&gt;Corbes i cossos tous per a l'aula, a partir del treball «Animació procedimental per a cossos tous».&lt;/p&gt;</translation>
         </message>
+        <message>
+            <source>Cannot save “%1”: %2. The file on disk is unchanged, and your changes are still here: save them elsewhere (Save As).</source>
+            <translation>No es pot desar «%1»: %2. El fitxer del disc no ha canviat, i els vostres canvis encara són aquí: deseu-los en un altre lloc (Desa com a).</translation>
+        </message>
+        <message>
+            <source>Cannot save “%1”: %2. Your changes are still here: save them elsewhere (Save As).</source>
+            <translation>No es pot desar «%1»: %2. Els vostres canvis encara són aquí: deseu-los en un altre lloc (Desa com a).</translation>
+        </message>
+        <message>
+            <source>“%1” has changed on disk since this window opened or saved it — in another window or another program. Saving replaces those changes with this window&apos;s.</source>
+            <translation>«%1» ha canviat al disc des que aquesta finestra el va obrir o desar — en una altra finestra o un altre programa. Si el deseu, aquells canvis se substitueixen pels d&apos;aquesta finestra.</translation>
+        </message>
+        <message>
+            <source>&amp;Replace it</source>
+            <translation>&amp;Substitueix-lo</translation>
+        </message>
+        <message>
+            <source>“%1” already exists. Replace it?</source>
+            <translation>«%1» ja existeix. El voleu substituir?</translation>
+        </message>
+        <message>
+            <source>The autosave could not be recovered: %1
+
+It is no longer on disk.</source>
+            <translation>No s&apos;ha pogut recuperar la còpia automàtica: %1
+
+Ja no és al disc.</translation>
+        </message>
+        <message>
+            <source>Recovered %1. Not recovered:
+%2</source>
+            <translation>S&apos;ha recuperat %1. No s&apos;ha recuperat:
+%2</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::PointEditor</name>
@@ -4196,12 +4234,76 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
             <source>“%1” is larger than %2 MB, the most Granota reads from one file.</source>
             <translation>«%1» ocupa més de %2 MB, el màxim que el Granota llegeix d'un fitxer.</translation>
         </message>
+        <message>
+            <source>there is no space left on the disk</source>
+            <translation>no queda espai al disc</translation>
+        </message>
+        <message>
+            <source>your disk quota is full</source>
+            <translation>la vostra quota de disc és plena</translation>
+        </message>
+        <message>
+            <source>the disk is read-only</source>
+            <translation>el disc és només de lectura</translation>
+        </message>
+        <message>
+            <source>you do not have permission</source>
+            <translation>no teniu permís</translation>
+        </message>
+        <message>
+            <source>it does not exist</source>
+            <translation>no existeix</translation>
+        </message>
+        <message>
+            <source>a folder on its path does not exist</source>
+            <translation>una carpeta del camí no existeix</translation>
+        </message>
+        <message>
+            <source>it is a folder</source>
+            <translation>és una carpeta</translation>
+        </message>
+        <message>
+            <source>the name is too long</source>
+            <translation>el nom és massa llarg</translation>
+        </message>
+        <message>
+            <source>the file would be too large for the disk</source>
+            <translation>el fitxer seria massa gran per al disc</translation>
+        </message>
+        <message>
+            <source>the disk reported an error</source>
+            <translation>el disc ha informat d&apos;un error</translation>
+        </message>
+        <message>
+            <source>too many files are open</source>
+            <translation>hi ha massa fitxers oberts</translation>
+        </message>
+        <message>
+            <source>the file is in use</source>
+            <translation>el fitxer és en ús</translation>
+        </message>
+        <message>
+            <source>the system refused it (error %1)</source>
+            <translation>el sistema ho ha refusat (error %1)</translation>
+        </message>
+        <message>
+            <source>“%1” is a pipe or a device, not a file.</source>
+            <translation>«%1» és una canonada o un dispositiu, no un fitxer.</translation>
+        </message>
+        <message>
+            <source>Cannot open “%1”: %2.</source>
+            <translation>No es pot obrir «%1»: %2.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::Autosave</name>
         <message>
             <source>Cannot write the autosave “%1”: %2</source>
             <translation>No es pot escriure la còpia automàtica «%1»: %2</translation>
+        </message>
+        <message>
+            <source>Cannot write the autosave “%1”: %2.</source>
+            <translation>No es pot escriure la còpia automàtica «%1»: %2.</translation>
         </message>
     </context>
     <context>

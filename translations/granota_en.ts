@@ -1517,6 +1517,10 @@
             <source>Made with Granota</source>
             <translation>Made with Granota</translation>
         </message>
+        <message>
+            <source>Cannot write “%1”: %2.</source>
+            <translation>Cannot write “%1”: %2.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::FitExactView</name>
@@ -3771,6 +3775,40 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
             <source>&lt;h3&gt;Granota&lt;/h3&gt;&lt;p&gt;Splines and soft bodies for the classroom, from the thesis “Animació procedimental per a cossos tous”.&lt;/p&gt;</source>
             <translation>&lt;h3&gt;Granota&lt;/h3&gt;&lt;p&gt;Splines and soft bodies for the classroom, from the thesis “Animació procedimental per a cossos tous”.&lt;/p&gt;</translation>
         </message>
+        <message>
+            <source>Cannot save “%1”: %2. The file on disk is unchanged, and your changes are still here: save them elsewhere (Save As).</source>
+            <translation>Cannot save “%1”: %2. The file on disk is unchanged, and your changes are still here: save them elsewhere (Save As).</translation>
+        </message>
+        <message>
+            <source>Cannot save “%1”: %2. Your changes are still here: save them elsewhere (Save As).</source>
+            <translation>Cannot save “%1”: %2. Your changes are still here: save them elsewhere (Save As).</translation>
+        </message>
+        <message>
+            <source>“%1” has changed on disk since this window opened or saved it — in another window or another program. Saving replaces those changes with this window&apos;s.</source>
+            <translation>“%1” has changed on disk since this window opened or saved it — in another window or another program. Saving replaces those changes with this window&apos;s.</translation>
+        </message>
+        <message>
+            <source>&amp;Replace it</source>
+            <translation>&amp;Replace it</translation>
+        </message>
+        <message>
+            <source>“%1” already exists. Replace it?</source>
+            <translation>“%1” already exists. Replace it?</translation>
+        </message>
+        <message>
+            <source>The autosave could not be recovered: %1
+
+It is no longer on disk.</source>
+            <translation>The autosave could not be recovered: %1
+
+It is no longer on disk.</translation>
+        </message>
+        <message>
+            <source>Recovered %1. Not recovered:
+%2</source>
+            <translation>Recovered %1. Not recovered:
+%2</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::PointEditor</name>
@@ -4196,12 +4234,76 @@ Save the document (Ctrl+S) to keep them. Granota will keep trying.</translation>
             <source>“%1” is larger than %2 MB, the most Granota reads from one file.</source>
             <translation>“%1” is larger than %2 MB, the most Granota reads from one file.</translation>
         </message>
+        <message>
+            <source>there is no space left on the disk</source>
+            <translation>there is no space left on the disk</translation>
+        </message>
+        <message>
+            <source>your disk quota is full</source>
+            <translation>your disk quota is full</translation>
+        </message>
+        <message>
+            <source>the disk is read-only</source>
+            <translation>the disk is read-only</translation>
+        </message>
+        <message>
+            <source>you do not have permission</source>
+            <translation>you do not have permission</translation>
+        </message>
+        <message>
+            <source>it does not exist</source>
+            <translation>it does not exist</translation>
+        </message>
+        <message>
+            <source>a folder on its path does not exist</source>
+            <translation>a folder on its path does not exist</translation>
+        </message>
+        <message>
+            <source>it is a folder</source>
+            <translation>it is a folder</translation>
+        </message>
+        <message>
+            <source>the name is too long</source>
+            <translation>the name is too long</translation>
+        </message>
+        <message>
+            <source>the file would be too large for the disk</source>
+            <translation>the file would be too large for the disk</translation>
+        </message>
+        <message>
+            <source>the disk reported an error</source>
+            <translation>the disk reported an error</translation>
+        </message>
+        <message>
+            <source>too many files are open</source>
+            <translation>too many files are open</translation>
+        </message>
+        <message>
+            <source>the file is in use</source>
+            <translation>the file is in use</translation>
+        </message>
+        <message>
+            <source>the system refused it (error %1)</source>
+            <translation>the system refused it (error %1)</translation>
+        </message>
+        <message>
+            <source>“%1” is a pipe or a device, not a file.</source>
+            <translation>“%1” is a pipe or a device, not a file.</translation>
+        </message>
+        <message>
+            <source>Cannot open “%1”: %2.</source>
+            <translation>Cannot open “%1”: %2.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::Autosave</name>
         <message>
             <source>Cannot write the autosave “%1”: %2</source>
             <translation>Cannot write the autosave “%1”: %2</translation>
+        </message>
+        <message>
+            <source>Cannot write the autosave “%1”: %2.</source>
+            <translation>Cannot write the autosave “%1”: %2.</translation>
         </message>
     </context>
     <context>

@@ -9,6 +9,7 @@
 #include "ui/frog/frog_json.h"
 #include "ui/frog/frog_parameters_panel.h"
 #include "ui/frog/frog_plot_panel.h"
+#include "ui/shell/exporter.h"
 #include "ui/shell/tikz_writer.h"
 
 #include <QButtonGroup>
@@ -1365,8 +1366,8 @@ QString FrogTab::exportFrames(const QString& directory, int frames)
             m_canvas->render(p, QRectF(QPointF(0, 0), QSizeF(size)));
         }
         const QString file = dir.filePath(QStringLiteral("frame_%1.png").arg(i, 4, 10, QLatin1Char('0')));
-        if (!image.save(file, "PNG"))
-            return tr("Cannot write “%1”.").arg(file);
+        if (const QString error = writePngFile(image, file); !error.isEmpty())
+            return error;
         if (i + 1 < frames)
             m_canvas->step(); // the canvas's fixed step: one per frame, 60 per second
     }

@@ -7,7 +7,6 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 #include <QStandardPaths>
 #include <QUuid>
 
@@ -50,10 +49,11 @@ bool Autosave::write(const QByteArray& bytes, QString* error)
     QDir().mkpath(m_folder);
     if (!m_lock->isLocked())
         m_lock->tryLock(0);
-    QSaveFile out(m_path);
-    if (!out.open(QIODevice::WriteOnly) || out.write(bytes) != bytes.size() || !out.commit()) {
-        *error = QCoreApplication::translate("granota::ui::Autosave", "Cannot write the autosave “%1”: %2")
-                     .arg(QDir::toNativeSeparators(m_path), out.errorString());
+    // Replaced whole (ui/shell/user_file.h): on a full disk the last good autosave stays.
+    QString reason;
+    if (!writeUserFile(m_path, bytes, &reason)) {
+        *error = QCoreApplication::translate("granota::ui::Autosave", "Cannot write the autosave “%1”: %2.")
+                     .arg(QDir::toNativeSeparators(m_path), reason);
         return false;
     }
     return true;
@@ -80,6 +80,15 @@ QVector<Orphan> Autosave::orphans() const
     }
     std::sort(out.begin(), out.end(), [](const Orphan& a, const Orphan& b) { return a.written > b.written; });
     return out;
+}
+
+std::unique_ptr<QLockFile> Autosave::holdOrphan(const QString& orphanPath)
+{
+    auto lock = std::make_unique<QLockFile>(orphanPath + kLockSuffix);
+    lock->setStaleLockTime(0); // stale only if its process has gone
+    if (!lock->tryLock(0) || !QFileInfo::exists(orphanPath))
+        return nullptr;
+    return lock;
 }
 
 bool Autosave::discard(const QString& orphanPath)

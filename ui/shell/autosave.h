@@ -41,6 +41,9 @@ public:
 
     /// The orphans in the folder, newest first.
     QVector<Orphan> orphans() const;
+    /// Takes an orphan's lock while it is offered: no other window lists it meanwhile. Null
+    /// when another window has it, or the orphan is gone.
+    static std::unique_ptr<QLockFile> holdOrphan(const QString& orphanPath);
     /// Deletes an orphan (the user chose to discard it, or it was recovered whole).
     static bool discard(const QString& orphanPath);
     /// Moves an orphan to `<folder>/kept/` under a name no autosave takes; the new path,

@@ -6,6 +6,7 @@
 #include "ui/shell/user_file.h"
 
 #include <QApplication>
+#include <QCryptographicHash>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -14,7 +15,6 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
-#include <QSaveFile>
 #include <QSettings>
 #include <QStatusBar>
 #include <QTimer>
@@ -126,6 +126,7 @@ bool DocumentController::openFile(const QString& file, QString* error)
     for (TabPage* page : m_window->tabs())
         page->undoStack()->clear();
     m_file = QFileInfo(file).absoluteFilePath();
+    rememberDiskState(*bytes);
     setModified(false);
     m_autosaveDirty = false;
     m_autosave->remove(); // the window's work is now the file's
@@ -134,21 +135,107 @@ bool DocumentController::openFile(const QString& file, QString* error)
     return true;
 }
 
+void DocumentController::showOpenError(const QString& error)
+{
+    auto* box = new QMessageBox(QMessageBox::Warning, MainWindow::tr("Open document"), error, QMessageBox::Ok, m_window);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setObjectName(QStringLiteral("openFailed"));
+    box->open();
+    emit message(error);
+}
+
 bool DocumentController::saveFile(const QString& file, QString* error)
 {
     const TabPage* current = m_window->currentTab();
     const QByteArray bytes = serializeDocument(m_window->tabs(), current ? current->key() : QString());
-    QSaveFile out(file);
-    if (!out.open(QIODevice::WriteOnly) || out.write(bytes) != bytes.size() || !out.commit()) {
-        *error = MainWindow::tr("Cannot write “%1”.").arg(file);
+    const bool existed = QFileInfo::exists(file);
+    QString reason;
+    if (!writeUserFile(file, bytes, &reason)) {
+        // Nothing changes: the file on disk as it was, the window modified, the autosave kept.
+        *error = existed ? MainWindow::tr("Cannot save “%1”: %2. The file on disk is unchanged, and your changes are "
+                                          "still here: save them elsewhere (Save As).")
+                               .arg(QDir::toNativeSeparators(file), reason)
+                         : MainWindow::tr("Cannot save “%1”: %2. Your changes are still here: save them elsewhere (Save As).")
+                               .arg(QDir::toNativeSeparators(file), reason);
         return false;
     }
     m_file = QFileInfo(file).absoluteFilePath();
+    rememberDiskState(bytes);
     setModified(false);
     m_autosaveDirty = false;
     m_autosave->remove();
     rememberRecent(file);
     return true;
+}
+
+void DocumentController::rememberDiskState(const QByteArray& bytes)
+{
+    const QFileInfo info(m_file);
+    m_disk.size = info.size();
+    m_disk.modified = info.lastModified();
+    m_disk.hash = QCryptographicHash::hash(bytes, QCryptographicHash::Sha256);
+}
+
+bool DocumentController::changedOnDisk() const
+{
+    if (m_file.isEmpty())
+        return false;
+    const QFileInfo info(m_file); // read afresh: QFileInfo caches nothing across instances
+    if (!info.exists())
+        return false; // gone: saving loses nothing
+    if (info.size() == m_disk.size && info.lastModified() == m_disk.modified)
+        return false;
+    // A new time stamp alone (touch, a copy of the same bytes) is not a change.
+    QString ignored;
+    const std::optional<QByteArray> now = readUserFile(m_file, &ignored);
+    return !now || QCryptographicHash::hash(*now, QCryptographicHash::Sha256) != m_disk.hash;
+}
+
+bool DocumentController::confirmOverwriteOfChangedFile(QString* file)
+{
+    if (!changedOnDisk())
+        return true;
+    QMessageBox box(QMessageBox::Warning, MainWindow::tr("Save document"),
+                    MainWindow::tr("“%1” has changed on disk since this window opened or saved it — in another window "
+                                   "or another program. Saving replaces those changes with this window's.")
+                        .arg(QFileInfo(m_file).fileName()),
+                    QMessageBox::NoButton, m_window);
+    box.setObjectName(QStringLiteral("changedOnDisk"));
+    QPushButton* elsewhere = box.addButton(MainWindow::tr("Save &As…"), QMessageBox::AcceptRole);
+    QPushButton* replace = box.addButton(MainWindow::tr("&Replace it"), QMessageBox::DestructiveRole);
+    box.addButton(QMessageBox::Cancel);
+    box.setDefaultButton(elsewhere);
+    box.exec();
+    if (box.clickedButton() == replace)
+        return true;
+    if (box.clickedButton() != elsewhere)
+        return false;
+    *file = askDocumentName();
+    return !file->isEmpty();
+}
+
+QString DocumentController::askDocumentName()
+{
+    QFileDialog dialog(m_window, MainWindow::tr("Save document"), m_file.isEmpty() ? QString() : QFileInfo(m_file).path(),
+                       MainWindow::tr("Granota documents (*.granota)"));
+    dialog.setObjectName(QStringLiteral("saveDocumentDialog"));
+    dialog.setAcceptMode(QFileDialog::AcceptSave);
+    // Added to a name typed without it before the dialog checks whether the file exists:
+    // “lesson” asks before replacing “lesson.granota”.
+    dialog.setDefaultSuffix(QStringLiteral("granota"));
+    if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty())
+        return QString();
+    QString file = dialog.selectedFiles().constFirst();
+    if (file.endsWith(QLatin1String(".granota")))
+        return file;
+    // A platform's own dialog may not add the suffix: add it, and ask as the dialog would.
+    file += QLatin1String(".granota");
+    if (QFileInfo::exists(file) &&
+        QMessageBox::warning(m_window, MainWindow::tr("Save document"),
+                             MainWindow::tr("“%1” already exists. Replace it?").arg(QFileInfo(file).fileName()),
+                             QMessageBox::Yes | QMessageBox::No, QMessageBox::No) != QMessageBox::Yes)
+        return QString();
+    return file;
 }
 
 void DocumentController::openDialog()
@@ -168,12 +255,11 @@ bool DocumentController::saveDialog(bool saveAs)
 {
     QString file = m_file;
     if (saveAs || file.isEmpty()) {
-        file = QFileDialog::getSaveFileName(m_window, MainWindow::tr("Save document"), QString(),
-                                            MainWindow::tr("Granota documents (*.granota)"));
+        file = askDocumentName();
         if (file.isEmpty())
             return false;
-        if (!file.endsWith(QLatin1String(".granota")))
-            file += QLatin1String(".granota");
+    } else if (!confirmOverwriteOfChangedFile(&file)) {
+        return false;
     }
     QString error;
     if (!saveFile(file, &error)) {
@@ -265,6 +351,20 @@ QVector<Orphan> DocumentController::recoverableAutosaves() const
     return out;
 }
 
+namespace {
+
+/// Where a kept autosave is, for a message: the place it was moved to, or where it was if
+/// it could not be moved; empty if it is on disk at neither (never named as kept unseen).
+QString keptWhere(const QString& movedTo, const QString& orphanPath)
+{
+    for (const QString& path : {movedTo, orphanPath})
+        if (!path.isEmpty() && QFileInfo::exists(path))
+            return QDir::toNativeSeparators(path);
+    return QString();
+}
+
+} // namespace
+
 DocumentController::RecoveryOutcome DocumentController::recoverAutosave(const QString& orphanPath)
 {
     RecoveryOutcome outcome;
@@ -277,18 +377,24 @@ DocumentController::RecoveryOutcome DocumentController::recoverAutosave(const QS
         r.error = error;
     if (!r.readable || r.recovered.isEmpty()) {
         // Nothing to take: the file is kept, out of the way of later autosaves.
-        const QString kept = m_autosave->keepAside(orphanPath);
+        const QString kept = keptWhere(m_autosave->keepAside(orphanPath), orphanPath);
         const QString reason = r.error.isEmpty() ? MainWindow::tr("no tab's part could be read.") + QLatin1Char('\n') +
                                                        r.refused.join(QLatin1Char('\n'))
                                                  : r.error;
-        outcome.message = MainWindow::tr("The autosave could not be recovered: %1\n\nIt is kept as “%2”.")
-                              .arg(reason, QDir::toNativeSeparators(kept.isEmpty() ? orphanPath : kept));
+        outcome.message =
+            kept.isEmpty() ? MainWindow::tr("The autosave could not be recovered: %1\n\nIt is no longer on disk.").arg(reason)
+                           : MainWindow::tr("The autosave could not be recovered: %1\n\nIt is kept as “%2”.").arg(reason, kept);
         return outcome;
     }
     for (TabPage* page : m_window->tabs())
         page->undoStack()->clear();
-    if (!r.documentFile.isEmpty())
+    if (!r.documentFile.isEmpty()) {
         m_file = r.documentFile; // the work goes back to the document it belongs to
+        // The recovered work is on top of the file as it is now: saving asks only if it
+        // changes again.
+        QString ignored;
+        rememberDiskState(readUserFile(m_file, &ignored).value_or(QByteArray()));
+    }
     setModified(true);
     m_window->showTab(r.currentTab);
     outcome.recovered = true;
@@ -301,9 +407,13 @@ DocumentController::RecoveryOutcome DocumentController::recoverAutosave(const QS
         outcome.message = MainWindow::tr("Recovered the unsaved work of the last session.");
         return outcome;
     }
-    const QString kept = m_autosave->keepAside(orphanPath);
-    const QString where = QDir::toNativeSeparators(kept.isEmpty() ? orphanPath : kept);
-    if (r.refused.isEmpty())
+    const QString where = keptWhere(m_autosave->keepAside(orphanPath), orphanPath);
+    if (where.isEmpty()) // taken away meanwhile (by hand, another program): never named as kept
+        outcome.message = r.refused.isEmpty()
+                              ? MainWindow::tr("Recovered the unsaved work of the last session.")
+                              : MainWindow::tr("Recovered %1. Not recovered:\n%2")
+                                    .arg(QLocale().createSeparatedList(r.recovered), r.refused.join(QLatin1Char('\n')));
+    else if (r.refused.isEmpty())
         outcome.message =
             MainWindow::tr("Recovered the unsaved work of the last session. The autosave is kept as “%1”.").arg(where);
     else
@@ -315,6 +425,11 @@ DocumentController::RecoveryOutcome DocumentController::recoverAutosave(const QS
 void DocumentController::offerRecovery()
 {
     for (const Orphan& orphan : recoverableAutosaves()) {
+        // Held while it is offered and recovered: another window starting meanwhile does
+        // not offer it too (Autosave::orphans() skips locked autosaves).
+        const std::unique_ptr<QLockFile> held = Autosave::holdOrphan(orphan.path);
+        if (!held)
+            continue; // another window has it, or has already recovered it
         const QString when = QLocale().toString(orphan.written, QLocale::ShortFormat);
         const QString question =
             orphan.documentFile.isEmpty()

@@ -12,6 +12,8 @@
 
 #include "ui/shell/autosave.h"
 
+#include <QByteArray>
+#include <QDateTime>
 #include <QObject>
 #include <QString>
 #include <QVector>
@@ -40,11 +42,22 @@ public:
     bool isModified() const { return m_modified; }
     void setModified(bool modified);
 
-    /// File operations without dialogs (the menu actions and the tests use them).
+    /// File operations without dialogs (the menu actions and the tests use them). A save
+    /// replaces the file whole (ui/shell/user_file.h): when it fails, the file on disk is
+    /// as it was, the window keeps its changes and `error` says why.
     bool openFile(const QString& file, QString* error);
     bool saveFile(const QString& file, QString* error);
+    /// The document's file was changed on disk since this window opened or saved it (by
+    /// another window, another program): a different content, not only a new time stamp.
+    /// False for Untitled and for a file that is gone.
+    bool changedOnDisk() const;
+    /// Says, without blocking, that `error` kept a document from opening (a double-click
+    /// on a bad file opens the window with this message).
+    void showOpenError(const QString& error);
 
-    /// File ▸ New, Open…, Save and Save As…, with their dialogs.
+    /// File ▸ New, Open…, Save and Save As…, with their dialogs. The Save As dialog adds
+    /// “.granota” to a name typed without it before it asks about replacing a file; Save asks
+    /// before replacing a file that changedOnDisk().
     void newDocument();
     void openDialog();
     bool saveDialog(bool saveAs);
@@ -88,6 +101,12 @@ signals:
 
 private:
     void updateTitle();
+    /// Remembers what the document's file holds now (its size, time and content hash).
+    void rememberDiskState(const QByteArray& bytes);
+    /// changedOnDisk(): asks whether to replace it, save elsewhere or cancel. True: go on.
+    bool confirmOverwriteOfChangedFile(QString* file);
+    /// The Save As dialog (with “.granota” as its default suffix): a name, or empty.
+    QString askDocumentName();
     void rememberRecent(const QString& file);
     void rebuildRecentMenu();
 
@@ -98,6 +117,12 @@ private:
     QString m_autosaveError;
     QLabel* m_autosaveWarning = nullptr;
     QString m_file;
+    /// What m_file held when this window last read or wrote it.
+    struct DiskState {
+        qint64 size = -1;
+        QDateTime modified;
+        QByteArray hash;
+    } m_disk;
     bool m_modified = false;
     bool m_autosaveDirty = false;
 };

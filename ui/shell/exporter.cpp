@@ -1,16 +1,15 @@
 #include "ui/shell/exporter.h"
 
 #include "ui/common/drawable.h"
+#include "ui/shell/user_file.h"
 
+#include <QBuffer>
 #include <QCoreApplication>
-#include <QFile>
 #include <QImage>
 #include <QPageSize>
 #include <QPainter>
 #include <QPdfWriter>
-#include <QSaveFile>
 #include <QSvgGenerator>
-#include <QTextStream>
 
 #include <cmath>
 
@@ -23,6 +22,16 @@ constexpr double kScreenDpi = 96.0;
 QString cannotWrite(const QString& file)
 {
     return QCoreApplication::translate("granota::ui::Exporter", "Cannot write “%1”.").arg(file);
+}
+
+/// Replaces `file` with `bytes`; the message says why it could not, and that an old file is
+/// as it was.
+QString writeExport(const QString& file, const QByteArray& bytes)
+{
+    QString reason;
+    if (writeUserFile(file, bytes, &reason))
+        return QString();
+    return QCoreApplication::translate("granota::ui::Exporter", "Cannot write “%1”: %2.").arg(file, reason);
 }
 } // namespace
 
@@ -61,41 +70,48 @@ QString exportPng(Drawable& view, const QString& file, int dpi)
         view.render(painter, QRectF(QPointF(0, 0), logical));
     }
     setDpi(dpi); // what the file says: printed at this resolution, it has the screen's size
-    return image.save(file, "PNG") ? QString() : cannotWrite(file);
+    return writePngFile(image, file);
+}
+
+QString writePngFile(const QImage& image, const QString& file)
+{
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    if (!buffer.open(QIODevice::WriteOnly) || !image.save(&buffer, "PNG"))
+        return cannotWrite(file);
+    buffer.close();
+    return writeExport(file, bytes);
 }
 
 QString exportSvg(Drawable& view, const QString& file, const QString& title)
 {
     const QSizeF logical = view.exportSize();
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
     QSvgGenerator svg;
-    svg.setFileName(file);
+    svg.setOutputDevice(&buffer);
     svg.setSize(logical.toSize());
     svg.setViewBox(QRectF(QPointF(0, 0), logical));
     svg.setTitle(title);
     svg.setDescription(QCoreApplication::translate("granota::ui::Exporter", "Made with Granota"));
     svg.setResolution(static_cast<int>(kScreenDpi));
-    {
-        QFile probe(file);
-        if (!probe.open(QIODevice::WriteOnly))
-            return cannotWrite(file);
-    }
     QPainter painter;
     if (!painter.begin(&svg))
         return cannotWrite(file);
     view.render(painter, QRectF(QPointF(0, 0), logical));
     painter.end();
-    return QString();
+    buffer.close();
+    return writeExport(file, bytes);
 }
 
 QString exportPdf(Drawable& view, const QString& file, const QString& title)
 {
     const QSizeF logical = view.exportSize();
-    {
-        QFile probe(file);
-        if (!probe.open(QIODevice::WriteOnly))
-            return cannotWrite(file);
-    }
-    QPdfWriter pdf(file);
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    QPdfWriter pdf(&buffer);
     pdf.setTitle(title);
     pdf.setCreator(QStringLiteral("Granota"));
     pdf.setResolution(static_cast<int>(kScreenDpi));
@@ -110,16 +126,10 @@ QString exportPdf(Drawable& view, const QString& file, const QString& title)
     painter.scale(page.width() / logical.width(), page.height() / logical.height());
     view.render(painter, QRectF(QPointF(0, 0), logical));
     painter.end();
-    return QString();
+    buffer.close();
+    return writeExport(file, bytes);
 }
 
-QString writeTextFile(const QString& file, const QString& text)
-{
-    QSaveFile out(file);
-    if (!out.open(QIODevice::WriteOnly | QIODevice::Text))
-        return cannotWrite(file);
-    out.write(text.toUtf8());
-    return out.commit() ? QString() : cannotWrite(file);
-}
+QString writeTextFile(const QString& file, const QString& text) { return writeExport(file, text.toUtf8()); }
 
 } // namespace granota::ui

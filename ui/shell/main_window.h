@@ -79,6 +79,9 @@ public:
     using RecoveryOutcome = DocumentController::RecoveryOutcome;
     RecoveryOutcome recoverAutosave(const QString& orphanPath) { return m_document->recoverAutosave(orphanPath); }
     void offerRecovery() { m_document->offerRecovery(); }
+    /// A document that could not be opened at start (a double-click): says why, without
+    /// blocking, in the window.
+    void showOpenError(const QString& error) { m_document->showOpenError(error); }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
