@@ -215,7 +215,8 @@ private slots:
             },
             [&] { QVERIFY(window.document()->saveDialog(true)); });
         QCOMPARE(window.currentFile(), QFileInfo(dir.filePath("second.granota")).absoluteFilePath());
-        QCOMPARE(readAll(dir.filePath("second.granota")), granota::ui::serializeDocument(window.tabs(), QStringLiteral("decasteljau")));
+        QCOMPARE(readAll(dir.filePath("second.granota")),
+                 granota::ui::serializeDocument(window.tabs(), QStringLiteral("decasteljau")));
     }
 
     // 3. Another window (or a script) saved the same file: Save asks before replacing it.

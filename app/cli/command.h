@@ -37,6 +37,7 @@ Command demoCommand();
 Command reportCommand();
 Command projectCommand();
 Command analyzeCommand();
+Command splineCommand();
 
 /// Number output: exact "p/q" strings with --exact, doubles otherwise (docs/cli.md).
 Json number(const Rational& q, bool exact);

@@ -22,8 +22,8 @@ constexpr int kFailed = 2; ///< every error: bad input, or an answer that cannot
 
 std::vector<Command> commands()
 {
-    return {bezierCommand(), bernsteinCommand(),  projectCommand(),  analyzeCommand(),
-            fitCommand(),    catmullRomCommand(), simulateCommand(), benchCommand(),
+    return {bezierCommand(),     bernsteinCommand(), projectCommand(),  analyzeCommand(), fitCommand(),
+            catmullRomCommand(), splineCommand(),    simulateCommand(), benchCommand(),
 #ifdef GRANOTA_HAS_REPORTS
             reportCommand(),
 #endif

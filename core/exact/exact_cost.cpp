@@ -82,4 +82,15 @@ std::string exactWorkRefusal(const std::string& what, double work, const std::st
            " (minutes, and memory growing): lower " + lower + ", or leave out --exact";
 }
 
+double cubicSplineExactWork(int pieces, long xBits, long yBits)
+{
+    // The M_i are ratios of determinants of the k × k tridiagonal matrix, whose entries are
+    // the steps h_i: their numbers hold about S = k·(b_x + 2) + b_y bits, and each of the
+    // k rows does a few products and reductions of them (S log S each). Fitted on the
+    // measured times of docs/exact-cost.md (about 5·10⁻⁹ s a unit).
+    const double k = std::max(1, pieces);
+    const double size = k * (static_cast<double>(xBits) + 2.0) + static_cast<double>(yBits) + 1.0;
+    return k * size * std::log2(size + 1.0);
+}
+
 } // namespace granota

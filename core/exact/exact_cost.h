@@ -45,6 +45,11 @@ double bernsteinExactWork(int degree, long tBits);
 /// pointBits bits.
 double fitExactWork(int degree, const std::vector<Rational>& params, long pointBits);
 
+/// The exact cubic spline of Def 2.3 with `pieces` pieces (cubic_spline.h), abscissae of up
+/// to xBits bits and ordinates (and end slopes) of up to yBits: the elimination's numbers
+/// grow by the abscissae's bits at every row.
+double cubicSplineExactWork(int pieces, long xBits, long yBits);
+
 /// Whether an exact computation of this estimated work is done.
 inline bool exactWorkAllowed(double work, double budget = kMaxExactWork) { return work <= budget; }
 

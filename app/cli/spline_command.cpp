@@ -1,0 +1,135 @@
+// granota-cli spline: the cubic spline of Def 2.3 through function data (x_i, y_i), with
+// the end conditions that fix it (natural, clamped, not-a-knot, or as Ex 2.1), each piece
+// in powers of x as Ex 2.1 prints them.
+#include "app/cli/command.h"
+#include "app/cli/finite_doubles.h"
+
+#include "core/curves/splines/cubic_spline.h"
+#include "core/exact/exact_cost.h"
+#include "core/exact/polynomial_text.h"
+
+#include <sstream>
+
+namespace granota::cli {
+
+namespace {
+
+template <class S> Json coefficients(const Polynomial<S>& p, bool exact)
+{
+    Json a = Json::array();
+    for (const S& c : p.coefficients(3)) {
+        if constexpr (std::is_same_v<S, Rational>)
+            a.push(number(c, exact));
+        else
+            a.push(number(c));
+    }
+    return a;
+}
+
+template <class S> Json knotNumber(const S& x, bool exact)
+{
+    if constexpr (std::is_same_v<S, Rational>)
+        return number(x, exact);
+    else
+        return number(x);
+}
+
+template <class S> std::string knotText(const S& x)
+{
+    if constexpr (std::is_same_v<S, Rational>)
+        return toString(x);
+    else
+        return formatDouble(x);
+}
+
+/// The pieces s_1 … s_k (Def 2.3's numbering) in powers of x, as JSON and as text.
+template <class S> void describe(const PiecewisePolynomial<S>& spline, bool exact, CommandOutput& out, std::ostringstream& txt)
+{
+    Json pieces = Json::array();
+    for (int i = 0; i < spline.pieceCount(); ++i) {
+        const Polynomial<S> global = spline.globalPiece(i);
+        const auto& from = spline.knots[static_cast<std::size_t>(i)];
+        const auto& to = spline.knots[static_cast<std::size_t>(i) + 1];
+        Json piece = Json::object();
+        piece.set("from", knotNumber(from, exact)).set("to", knotNumber(to, exact)).set("poly", coefficients(global, exact));
+        pieces.push(std::move(piece));
+        txt << "  s_" << i + 1 << "(x) = " << toText(global, "x") << "   x ∈ [" << knotText(from) << ", " << knotText(to)
+            << (i + 1 < spline.pieceCount() ? ")" : "]") << "\n";
+    }
+    out.json.set("pieces", std::move(pieces));
+}
+
+Expected<CommandOutput> run(const Arguments& args)
+{
+    auto points = args.points();
+    if (!points)
+        return points.error();
+    auto endsName = args.choice("ends", {"natural", "clamped", "not-a-knot", "ex-2.1"}, std::string("natural"));
+    if (!endsName)
+        return endsName.error();
+    const SplineEnds ends = *parseSplineEnds(*endsName);
+    const bool slopesGiven = args.has("start-slope") || args.has("end-slope");
+    if (ends != SplineEnds::Clamped && slopesGiven)
+        return makeError(ErrorCode::InvalidInput, "--start-slope and --end-slope are the slopes of --ends clamped");
+    if (ends == SplineEnds::Clamped && !(args.has("start-slope") && args.has("end-slope")))
+        return makeError(ErrorCode::InvalidInput, "--ends clamped needs both end slopes: --start-slope A --end-slope B");
+    auto start = args.rational("start-slope", Rational(0));
+    if (!start)
+        return start.error();
+    auto end = args.rational("end-slope", Rational(0));
+    if (!end)
+        return end.error();
+    const bool exact = args.flag("exact");
+
+    CommandOutput out;
+    std::ostringstream txt;
+    txt << "Cubic spline (Def 2.3), " << *endsName << " ends; pieces in powers of x:\n";
+    out.json.set("ends", *endsName);
+    if (exact) {
+        long xBits = 0, yBits = std::max(bitLength(*start), bitLength(*end));
+        for (const RPoint& p : *points) {
+            xBits = std::max(xBits, bitLength(p.x));
+            yBits = std::max(yBits, bitLength(p.y));
+        }
+        const double work = cubicSplineExactWork(static_cast<int>(points->size()) - 1, xBits, yBits);
+        if (!exactWorkAllowed(work))
+            return makeError(ErrorCode::OutOfRange,
+                             exactWorkRefusal("cubic spline", work, "the number of points or their digits"));
+        auto spline = cubicSpline(*points, SplineEndConditions<Rational>{ends, *start, *end});
+        if (!spline)
+            return spline.error();
+        describe(*spline, true, out, txt);
+    } else {
+        auto doublePoints = finiteDoubles(*points, true);
+        if (!doublePoints)
+            return doublePoints.error();
+        auto a = finiteDouble(*start, "--start-slope " + valueText(*start), true);
+        if (!a)
+            return a.error();
+        auto b = finiteDouble(*end, "--end-slope " + valueText(*end), true);
+        if (!b)
+            return b.error();
+        auto spline = cubicSpline(*doublePoints, SplineEndConditions<double>{ends, *a, *b});
+        if (!spline)
+            return spline.error().code == ErrorCode::OutOfRange ? tooLargeForDouble("the cubic spline of these points", true)
+                                                                : spline.error();
+        describe(*spline, false, out, txt);
+    }
+    out.text = txt.str();
+    return out;
+}
+
+} // namespace
+
+Command splineCommand()
+{
+    return {"spline",
+            "--points P | --points-file F  [--ends natural|clamped|not-a-knot|ex-2.1] [--start-slope A --end-slope B] "
+            "[--exact] [--json]",
+            "the cubic spline of Def 2.3 through (x_i, y_i) with its end conditions, each piece in powers of x (Ex 2.1: "
+            "--ends ex-2.1)",
+            {{"points", "points-file", "ends", "start-slope", "end-slope"}, {"exact", "json"}, {}},
+            &run};
+}
+
+} // namespace granota::cli
