@@ -478,7 +478,8 @@ Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
     if (isStableKey(key)) {
         const auto q = parseRational(value);
         if (!q)
-            return makeError(ErrorCode::InvalidInput, "--set " + key + ": " + quotedForDisplay(value) + " is not a finite number");
+            return makeError(ErrorCode::InvalidInput, "--set " + key + ": " + quotedForDisplay(value) + " " +
+                                                          numberBeyondReach(value).value_or("is not a finite number"));
         SceneSpec changed = scene;
         auto ok = setStableSetting(changed, key, Json(toDouble(*q)));
         if (!ok)
@@ -510,7 +511,8 @@ Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
             const std::string item = value.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
             auto q = parseRational(item);
             if (!q)
-                return makeError(ErrorCode::InvalidInput, "--set " + key + ": " + quotedForDisplay(item) + " is not a finite number");
+                return makeError(ErrorCode::InvalidInput, "--set " + key + ": " + quotedForDisplay(item) + " " +
+                                                              numberBeyondReach(item).value_or("is not a finite number"));
             list.push(toDouble(*q));
             ++count;
             if (comma == std::string::npos)
