@@ -149,8 +149,8 @@ private slots:
                                         << "error: --trace and --replay name the same file\n";
         QTest::newRow("trace = ./replay") << replay + QStringList{"--trace", "DIR/./r.json"}
                                           << "error: --trace and --replay name the same file\n";
-        QTest::newRow("series = link to replay") << replay + QStringList{"--series", "DIR/link.json"}
-                                                 << "error: --series and --replay name the same file\n";
+        QTest::newRow("series = link to replay")
+            << replay + QStringList{"--series", "DIR/link.json"} << "error: --series and --replay name the same file\n";
         QTest::newRow("record = replay") << replay + QStringList{"--record", "DIR/sub/../r.json"}
                                          << "error: --record and --replay name the same file\n";
         const QStringList frog{"simulate", "--scene", "frog", "--steps", "3"};
@@ -158,9 +158,8 @@ private slots:
                                                << "error: --series and --trace name the same file\n";
         QTest::newRow("trace = series, old") << frog + QStringList{"--trace", "DIR/old.csv", "--series", "DIR/old.csv"}
                                              << "error: --series and --trace name the same file\n";
-        QTest::newRow("trace = link to record")
-            << frog + QStringList{"--trace", "DIR/old.csv", "--record", "DIR/oldlink.csv"}
-            << "error: --trace and --record name the same file\n";
+        QTest::newRow("trace = link to record") << frog + QStringList{"--trace", "DIR/old.csv", "--record", "DIR/oldlink.csv"}
+                                                << "error: --trace and --record name the same file\n";
     }
     void aliasedFilesAreRefused()
     {
@@ -191,13 +190,13 @@ private slots:
     {
         QTemporaryDir dir;
         QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("sub")));
-        const CliRun run = runCli({"simulate", "--scene", "frog", "--steps", "2", "--trace", dir.filePath(QStringLiteral("c.csv")),
-                                   "--series", dir.filePath(QStringLiteral("sub/c.csv"))});
+        const CliRun run = runCli({"simulate", "--scene", "frog", "--steps", "2", "--trace",
+                                   dir.filePath(QStringLiteral("c.csv")), "--series", dir.filePath(QStringLiteral("sub/c.csv"))});
         QCOMPARE(run.exitCode, 0);
         QVERIFY(contentOf(dir.filePath(QStringLiteral("c.csv"))).startsWith("step,"));
         QVERIFY(!contentOf(dir.filePath(QStringLiteral("sub/c.csv"))).startsWith("step,x"));
-        const CliRun devices =
-            runCli({"simulate", "--scene", "frog", "--steps", "2", "--trace", "/dev/null", "--series", "/dev/null"});
+        const CliRun devices = runCli(
+            {"simulate", "--scene", "frog", "--steps", "2", "--trace", "/dev/null", "--series", "/dev/null"});
         QCOMPARE(devices.exitCode, 0);
     }
 
@@ -210,8 +209,8 @@ private slots:
         QTest::newRow("series-body without series") << frog + QStringList{"--series-body", "1"};
         QTest::newRow("series-body out of range") << frog + QStringList{"--series", "DIR/s.csv", "--series-body", "99"};
         QTest::newRow("series-body not a number") << frog + QStringList{"--series", "DIR/s.csv", "--series-body", "x"};
-        QTest::newRow("too many rows") << QStringList{"simulate", "--scene", "polygon", "--steps", "5000000", "--trace",
-                                                      "DIR/t.csv", "--series", "DIR/s.csv"};
+        QTest::newRow("too many rows") << QStringList{"simulate", "--scene",   "polygon",  "--steps",  "5000000",
+                                                      "--trace",  "DIR/t.csv", "--series", "DIR/s.csv"};
         QTest::newRow("record in no folder") << frog + QStringList{"--record", "DIR/none/r.json"};
     }
     void refusedArgumentsLeaveOldOutputs()
@@ -288,6 +287,27 @@ private slots:
         QCOMPARE(json.json().value(QStringLiteral("scene")).toString(), QStringLiteral("frog"));
     }
 
+    // F: a recording cut short, and numbers no computation can hold, in plain words.
+    void plainMessages()
+    {
+        QTemporaryDir dir;
+        const QByteArray recording = frogRecording(dir);
+        QVERIFY(recording.size() > 100);
+        const QString cut = dir.filePath(QStringLiteral("cut.json"));
+        QVERIFY(put(cut, recording.left(73)));
+        // The line is one more than the newlines in the 73 bytes kept.
+        const QByteArray line = QByteArray::number(1 + recording.left(73).count('\n'));
+        const CliRun replay = runCli({"simulate", "--replay", cut}, kHangGuardMs);
+        QCOMPARE(replay.exitCode, 2);
+        QCOMPARE(replay.err, "error: '" + cut.toUtf8() + "' is not JSON: the file is cut off at byte 73 (line " + line + ")\n");
+        const CliRun t = runCli({"bezier", "--points", "0,0;1,1", "--t", "1e1000000"});
+        QCOMPARE(t.exitCode, 2);
+        QCOMPARE(t.err, QByteArray("error: --t '1e1000000' is too large (the largest double is about 1.8e308)\n"));
+        const CliRun point = runCli({"fit", "--points", "0,0;1e1000000,1", "--degree", "1"});
+        QCOMPARE(point.exitCode, 2);
+        QVERIFY2(point.err.endsWith("'1e1000000' is too large (the largest double is about 1.8e308)\n"), point.err.constData());
+    }
+
     // E: the answer written into a pipe whose reader has gone: exit 2 and the message of
     // docs/cli.md, not a silent death by SIGPIPE (status 141 in a shell). A big answer (a
     // long Catmull-Rom sample table) and a small one alike.
@@ -298,7 +318,7 @@ private slots:
         QTest::newRow("demo json") << QStringList{"demo", "--json"};
         QTest::newRow("help") << QStringList{"--help"};
         QTest::newRow("catmull-rom table") << QStringList{"catmull-rom", "--points", "3,5;2,2;6,0;8,3;7,5;1,1;0,4;9,9",
-                                                          "--samples", "10000", "--json"};
+                                                          "--samples",   "10000",    "--json"};
     }
     void aClosedPipeIsAnError()
     {
