@@ -25,7 +25,8 @@ std::string realFolderAndName(const std::string& path)
 
 bool sameFile(const std::string& a, const std::string& b)
 {
-    struct stat infoA {}, infoB {};
+    struct stat infoA {};
+    struct stat infoB {};
     const bool existsA = ::stat(a.c_str(), &infoA) == 0;
     const bool existsB = ::stat(b.c_str(), &infoB) == 0;
     if (existsA && existsB)
