@@ -1,6 +1,7 @@
 // granota-cli report NAME|all --out DIR (docs/work-precision.md): one CSV with the machine and the build in
 // its header, and an SVG and a PNG plot per report, from the real binary.
 #include "cli_runner.h"
+#include "full_disk.h"
 
 #include <QDir>
 #include <QFile>
@@ -74,6 +75,25 @@ private slots:
                      run.err.contains("No space left on device"),
                  run.err.constData());
         QVERIFY(run.out.isEmpty());
+    }
+
+    // On a real full disk (a tmpfs filled to the byte) an old report file is kept byte for
+    // byte, and no hidden file is left beside it.
+    void aFullDiskKeepsTheOldFile()
+    {
+        FullDisk disk;
+        if (!disk.mounted())
+            QSKIP(FullDisk::whyNot());
+        const QByteArray old = "the old report, which must survive\n";
+        QVERIFY(disk.put(QStringLiteral("integrators.csv"), old));
+        QVERIFY(disk.fill());
+        const CliRun run = runCli({"report", "integrators", "--quick", "--out", disk.filePath(QString())});
+        QCOMPARE(run.exitCode, 2);
+        QVERIFY2(run.err.startsWith("error: cannot write ") && run.err.endsWith(": No space left on device\n"),
+                 run.err.constData());
+        QCOMPARE(disk.read(QStringLiteral("integrators.csv")), old);
+        QCOMPARE(QDir(disk.filePath(QString())).entryList(QDir::Files | QDir::Hidden, QDir::Name),
+                 QStringList({QStringLiteral("filler"), QStringLiteral("integrators.csv")}));
     }
 
     // A report name with terminal escapes is echoed escaped, not as raw bytes.

@@ -4,6 +4,8 @@
 #include "catalan_locale.h"
 
 #include <QtTest>
+
+#include <algorithm>
 #include "tests/test_main.h"
 
 #include <clocale>
@@ -75,7 +77,33 @@ private slots:
         QFETCH(QString, text);
         auto v = Json::parse(text.toStdString());
         QVERIFY(!v.ok());
-        QVERIFY(v.error().message.find("line") != std::string::npos);
+        // Where it goes wrong, by line; an empty text has no place to name.
+        QVERIFY2(v.error().message.find("line") != std::string::npos || v.error().message == "JSON: the file is empty",
+                 v.error().message.c_str());
+    }
+
+    // A document cut short (a full disk, a copy stopped half-way) is said in plain words with
+    // the byte where it stops — not the parser's "unexpected end of input" or "invalid
+    // literal". Every cut of a document that touches each kind of value: N is the length
+    // of the cut, and the line is one more than the newlines kept.
+    void cutOffDocuments()
+    {
+        const std::string doc = "{\"format\": \"granota\",\n \"a\": [1.5, -2e3, true, \"x\\u00e9y\", null],\n"
+                                " \"b\": {\"c\": false, \"d\": \"é\"}}";
+        QVERIFY(Json::parse(doc).ok());
+        for (std::size_t n = 1; n < doc.size(); ++n) {
+            const std::string cut = doc.substr(0, n);
+            const auto v = Json::parse(cut);
+            QVERIFY2(!v.ok(), cut.c_str());
+            const long line = 1 + std::count(cut.begin(), cut.end(), '\n');
+            const std::string expected = "JSON: the file is cut off at byte " + std::to_string(n) + " (line " +
+                                         std::to_string(line) + ")";
+            QVERIFY2(v.error().message == expected, (cut + " → " + v.error().message).c_str());
+        }
+        QCOMPARE(Json::parse("").error().message, std::string("JSON: the file is empty"));
+        QCOMPARE(Json::parse(" \n\t").error().message, std::string("JSON: the file holds only blanks"));
+        // Text that goes wrong before its end is still placed by line and column.
+        QVERIFY(endsWith(Json::parse("[tx]").error().message, "at line 1, column 3"));
     }
 
     // Numbers exactly as RFC 8259 writes them; the error names where the number goes wrong.
@@ -89,9 +117,11 @@ private slots:
         QTest::newRow("no integer part") << QByteArray("[.5]") << QByteArray("at line 1, column 2");
         QTest::newRow("no fraction digits") << QByteArray("[1.]") << QByteArray("at line 1, column 4");
         QTest::newRow("no fraction before exponent") << QByteArray("1.e5") << QByteArray("at line 1, column 3");
-        QTest::newRow("no exponent digits") << QByteArray("1e") << QByteArray("at line 1, column 3");
+        QTest::newRow("no exponent digits") << QByteArray("[1e]") << QByteArray("at line 1, column 4");
+        QTest::newRow("no exponent digits, at the end") << QByteArray("1e") << QByteArray("cut off at byte 2 (line 1)");
         QTest::newRow("exponent sign alone") << QByteArray("[1e+]") << QByteArray("at line 1, column 5");
-        QTest::newRow("minus alone") << QByteArray("-") << QByteArray("at line 1, column 2");
+        QTest::newRow("minus alone") << QByteArray("[-]") << QByteArray("at line 1, column 3");
+        QTest::newRow("minus alone, at the end") << QByteArray("-") << QByteArray("cut off at byte 1 (line 1)");
         QTest::newRow("hexadecimal") << QByteArray("0x10") << QByteArray("at line 1, column 2");
     }
     void strictNumbers()
@@ -264,7 +294,7 @@ private slots:
         QTest::newRow("bad value") << QByteArray("{\n  \"a\": 1,\n  \"b\": x\n}") << QByteArray("at line 3, column 8");
         QTest::newRow("CRLF lines") << QByteArray("{\r\n  \"a\": 1,\r\n  \"b\": ]}") << QByteArray("at line 3, column 8");
         QTest::newRow("trailing comma") << QByteArray("[1,\n\n  2,]") << QByteArray("at line 3, column 5");
-        QTest::newRow("end of text") << QByteArray("[1,2") << QByteArray("at line 1, column 5");
+        QTest::newRow("end of text") << QByteArray("[1,\n2") << QByteArray("cut off at byte 5 (line 2)");
         QTest::newRow("newline in a string") << QByteArray("[\"a\nb\"]") << QByteArray("at line 1, column 4");
         QTest::newRow("tab in a string") << QByteArray("{\"a\":\n\"x\ty\"}") << QByteArray("at line 2, column 3");
         QTest::newRow("bad escape") << QByteArray("[\"\\q\"]") << QByteArray("at line 1, column 4");

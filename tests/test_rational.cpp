@@ -57,6 +57,34 @@ private slots:
         QFETCH(QString, text);
         QVERIFY(!parseRational(text.toStdString()).has_value());
     }
+    // A number written right whose exponent is beyond reach is called too large (or too
+    // close to zero), not "not a finite number"; anything else has no such reason.
+    void numbersBeyondReach_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::addColumn<QString>("reason");
+        const QString large = QStringLiteral("is too large (the largest double is about 1.8e308)");
+        const QString small = QStringLiteral("is too close to zero to read (exponents go down to -10000)");
+        QTest::newRow("1e1000000") << "1e1000000" << large;
+        QTest::newRow("-2.5E+10001") << "-2.5E+10001" << large;
+        QTest::newRow(" .5e99999999 ") << " .5e99999999 " << large;
+        QTest::newRow("1e-1000000") << "1e-1000000" << small;
+        QTest::newRow("0e1000000") << "0e1000000" << QString(); // zero: not "too large"
+        QTest::newRow("1e10000, read") << "1e10000" << QString();
+        QTest::newRow("1e400, read") << "1e400" << QString();
+        QTest::newRow("abc") << "abc" << QString();
+        QTest::newRow("1e") << "1e" << QString();
+        QTest::newRow("1/0") << "1/0" << QString();
+        QTest::newRow("e1000000") << "e1000000" << QString();
+        QTest::newRow("1x1e1000000") << "1x1e1000000" << QString();
+    }
+    void numbersBeyondReach()
+    {
+        QFETCH(QString, text);
+        QFETCH(QString, reason);
+        const auto why = numberBeyondReach(text.toStdString());
+        QCOMPARE(why ? QString::fromStdString(*why) : QString(), reason);
+    }
     void exactSqrtOnlyOfSquares()
     {
         QCOMPARE(QString::fromStdString(toString(*exactSqrt(Rational(9, 4)))), QString("3/2"));

@@ -83,7 +83,8 @@ Expected<Rational> Arguments::rational(const std::string& name, std::optional<Ra
     auto q = parseRational(*v);
     if (!q)
         return makeError(ErrorCode::InvalidInput,
-                         "--" + name + " " + quotedForDisplay(*v) + " is not a finite number (integer, decimal or fraction p/q)");
+                         "--" + name + " " + quotedForDisplay(*v) + " " +
+                             numberBeyondReach(*v).value_or("is not a finite number (integer, decimal or fraction p/q)"));
     return *q;
 }
 
@@ -94,7 +95,9 @@ Expected<int> Arguments::integer(const std::string& name, int min, int max, std:
         return absent(name, fallback);
     auto q = parseRational(*v);
     if (!q || q->get_den() != 1)
-        return makeError(ErrorCode::InvalidInput, "--" + name + " " + quotedForDisplay(*v) + " is not a whole number");
+        return makeError(ErrorCode::InvalidInput,
+                         "--" + name + " " + quotedForDisplay(*v) + " " +
+                             (q ? "is not a whole number" : numberBeyondReach(*v).value_or("is not a whole number")));
     if (*q < min || *q > max)
         return makeError(ErrorCode::OutOfRange, "--" + name + " " + quotedForDisplay(*v) + " is out of range (" +
                                                     std::to_string(min) + " to " + std::to_string(max) + ")");

@@ -8,6 +8,7 @@
 #include "core/base/display_text.h"
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <iostream>
@@ -61,6 +62,10 @@ int finishOutput()
 
 int main(int argc, char* argv[])
 {
+    // A closed pipe (`granota-cli demo | head -c 10`) must be an error with a message and
+    // status 2, not a silent death by SIGPIPE (status 141): ignored, a write to it fails
+    // with EPIPE and finishOutput() says "cannot write the output: Broken pipe".
+    std::signal(SIGPIPE, SIG_IGN);
     try {
         if (argc < 2) {
             std::cerr << "error: no command given\n";

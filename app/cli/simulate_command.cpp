@@ -1,9 +1,11 @@
 // granota-cli simulate: run a scene of chapter 4 / §5.2 headless (docs/cli.md).
 #include "app/cli/command.h"
+#include "app/cli/file_identity.h"
 #include "app/cli/output_file.h"
 #include "app/cli/scene_options.h"
 
 #include "core/base/display_text.h"
+#include "core/base/file_replacement.h"
 #include "core/base/number_format.h"
 #include "core/base/bounded_file.h"
 #include "core/base/input_limits.h"
@@ -11,9 +13,10 @@
 #include "core/softbody/simulation_series.h"
 #include "core/softbody/simulation_trace.h"
 
-#include <cerrno>
-#include <fstream>
+#include <optional>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 namespace granota::cli {
 
@@ -43,8 +46,12 @@ Expected<RecordedRun> runFromArguments(const Arguments& args, long* steps)
         if (!text)
             return text.error();
         auto doc = Json::parse(*text);
-        if (!doc)
-            return makeError(ErrorCode::InvalidInput, quotedForDisplay(*replay) + " is not JSON: " + doc.error().message);
+        if (!doc) {
+            std::string why = doc.error().message; // "JSON: …", said once
+            if (why.rfind("JSON: ", 0) == 0)
+                why.erase(0, 6);
+            return makeError(ErrorCode::InvalidInput, quotedForDisplay(*replay) + " is not JSON: " + why);
+        }
         auto recording = recordingFromJson(*doc);
         if (!recording)
             return makeError(ErrorCode::InvalidInput, quotedForDisplay(*replay) + ": " + recording.error().message);
@@ -66,6 +73,16 @@ Expected<RecordedRun> runFromArguments(const Arguments& args, long* steps)
 
 Expected<CommandOutput> run(const Arguments& args)
 {
+    // No output may name an input or another output (file_identity.h): checked before the
+    // recording is read, and every other argument before any output is opened, so that a
+    // refusal leaves every file as it was.
+    const auto tracePath = args.value("trace");
+    const auto seriesPath = args.value("series");
+    const auto recordPath = args.value("record");
+    if (auto distinct = distinctFiles(
+            {{"series", seriesPath}, {"trace", tracePath}, {"record", recordPath}, {"replay", args.value("replay")}});
+        !distinct)
+        return distinct.error();
     long stepCount = 0;
     auto recorded = runFromArguments(args, &stepCount);
     if (!recorded)
@@ -73,7 +90,6 @@ Expected<CommandOutput> run(const Arguments& args)
     RecordedRun& runner = *recorded;
     Simulation& s = runner.simulation();
     const std::optional<long> steps = stepCount;
-    const auto recordPath = args.value("record");
 
     const long long points = static_cast<long long>(simulationTracePoints(s));
     if (static_cast<long long>(*steps) * points > kMaxSimulatedPoints)
@@ -81,26 +97,15 @@ Expected<CommandOutput> run(const Arguments& args)
                                                     " vertices are " + std::to_string(*steps * points) +
                                                     " vertex steps, more than " + std::to_string(kMaxSimulatedPoints) +
                                                     ": lower --steps, or bodies or sides");
-    std::ofstream trace;
-    const auto tracePath = args.value("trace");
-    if (tracePath && recordPath && *tracePath == *recordPath)
-        return makeError(ErrorCode::InvalidInput, "--trace and --record name the same file");
     const std::string traceName = "the trace to " + quotedForDisplay(tracePath.value_or(""));
-    errno = 0;
     if (tracePath) {
         if ((*steps + 1LL) * points > kMaxTracePoints)
             return makeError(ErrorCode::OutOfRange, "--trace would write " + std::to_string((*steps + 1LL) * points) +
                                                         " vertex positions ((steps + 1) × " + std::to_string(points) +
                                                         " vertices), more than " + std::to_string(kMaxTracePoints) +
                                                         ": lower --steps, or bodies or sides");
-        trace.open(*tracePath, std::ios::binary | std::ios::trunc);
-        if (!trace)
-            return writeError(traceName, errno);
-        trace << simulationTraceHeader(s) << '\n' << simulationTraceRow(s) << '\n';
     }
     // The series (docs/plots-over-time.md): one row a step, the state before the first too.
-    std::ofstream series;
-    const auto seriesPath = args.value("series");
     const std::string seriesName = "the series to " + quotedForDisplay(seriesPath.value_or(""));
     // --series-body K: body K's own values (docs/plots-over-time.md#per-body), same columns.
     int seriesBody = -1;
@@ -108,7 +113,8 @@ Expected<CommandOutput> run(const Arguments& args)
         if (!seriesPath)
             return makeError(ErrorCode::InvalidInput, "--series-body chooses the body of --series: give --series F.csv too");
         if (s.bodyCount() == 0)
-            return makeError(ErrorCode::InvalidInput, "--series-body: scene '" + s.scene().name + "' has no bodies");
+            return makeError(ErrorCode::InvalidInput,
+                             "--series-body: scene " + quotedForDisplay(s.scene().name) + " has no bodies");
         auto k = args.integer("series-body", 1, s.bodyCount(), 1);
         if (!k)
             return k.error();
@@ -122,62 +128,69 @@ Expected<CommandOutput> run(const Arguments& args)
             return makeError(ErrorCode::OutOfRange, "--series would write " + std::to_string(*steps + 1LL) +
                                                         " rows (steps + 1), more than " + std::to_string(kMaxSeriesRows) +
                                                         ": lower --steps");
-        if (recordPath && *seriesPath == *recordPath)
-            return makeError(ErrorCode::InvalidInput, "--series and --record name the same file");
-        if (tracePath && *seriesPath == *tracePath)
-            return makeError(ErrorCode::InvalidInput, "--series and --trace name the same file");
-        errno = 0;
-        series.open(*seriesPath, std::ios::binary | std::ios::trunc);
-        if (!series)
-            return writeError(seriesName, errno);
+    }
+
+    // Each output goes to a hidden file beside its target, which keeps its old content
+    // until the whole run has succeeded (core/base/file_replacement.h).
+    const std::string recordName = "the recording to " + quotedForDisplay(recordPath.value_or(""));
+    std::optional<FileReplacement> trace, series, record;
+    for (auto [path, file, name] : {std::tuple(&tracePath, &trace, &traceName), std::tuple(&seriesPath, &series, &seriesName),
+                                    std::tuple(&recordPath, &record, &recordName)}) {
+        if (!*path)
+            continue;
+        auto opened = FileReplacement::open(**path);
+        if (!opened)
+            return writeError(*name, opened.error().systemError);
+        file->emplace(std::move(opened).value());
+    }
+    const auto write = [](std::optional<FileReplacement>& file, const std::string& name,
+                          const std::string& bytes) -> Expected<void> {
+        if (auto written = file->write(bytes); !written) // a full disk: stop at once, with the reason
+            return writeError(name, written.error().systemError);
+        return {};
+    };
+    if (trace)
+        if (auto w = write(trace, traceName, simulationTraceHeader(s) + '\n' + simulationTraceRow(s) + '\n'); !w)
+            return w.error();
+    if (series) {
         const SeriesSample& first = recorder.record(s);
-        series << seriesCsvHeader(recorder.phaseLinks()) << '\n'
-               << seriesCsvRow(first, recorder.phaseLinks(), seriesBody) << '\n';
+        if (auto w = write(series, seriesName,
+                           seriesCsvHeader(recorder.phaseLinks()) + '\n' +
+                               seriesCsvRow(first, recorder.phaseLinks(), seriesBody) + '\n');
+            !w)
+            return w.error();
     }
     for (long i = 0; i < *steps; ++i) {
         runner.step(); // a replay applies its events before their steps
-        if (trace.is_open()) {
-            trace << simulationTraceRow(s) << '\n';
-            if (!trace) // a full disk: stop at once, with the reason
-                return writeError(traceName, errno);
-        }
-        if (series.is_open()) {
-            series << seriesCsvRow(recorder.record(s), recorder.phaseLinks(), seriesBody) << '\n';
-            if (!series)
-                return writeError(seriesName, errno);
-        }
+        if (trace)
+            if (auto w = write(trace, traceName, simulationTraceRow(s) + '\n'); !w)
+                return w.error();
+        if (series)
+            if (auto w = write(series, seriesName, seriesCsvRow(recorder.record(s), recorder.phaseLinks(), seriesBody) + '\n');
+                !w)
+                return w.error();
     }
-    for (auto* file : {&trace, &series}) {
-        if (!file->is_open())
-            continue;
-        const std::string& name = file == &trace ? traceName : seriesName;
-        if (!file->flush())
-            return writeError(name, errno);
-        file->close();
-        if (!*file)
-            return writeError(name, errno);
-    }
-    if (recordPath) {
-        const std::string name = "the recording to " + quotedForDisplay(*recordPath);
-        errno = 0;
-        std::ofstream file(*recordPath, std::ios::binary | std::ios::trunc);
-        if (!file)
-            return writeError(name, errno);
-        file << recordingToJson(runner.recording()).dump(1) << '\n';
-        if (!file.flush())
-            return writeError(name, errno);
-    }
+    if (record)
+        if (auto w = write(record, recordName, recordingToJson(runner.recording()).dump(1) + '\n'); !w)
+            return w.error();
+    // The run has succeeded: each output now takes its target's place.
+    for (auto [file, name] : {std::pair(&trace, &traceName), std::pair(&series, &seriesName), std::pair(&record, &recordName)})
+        if (*file)
+            if (auto committed = (*file)->commit(); !committed)
+                return writeError(*name, committed.error().systemError);
 
     CommandOutput out;
     std::ostringstream txt;
     const SceneSpec& scene = s.scene();
-    txt << "scene " << scene.name << " (§" << scene.section << ", " << scene.title << "), solver " << solverName(s.solver())
-        << ", " << *steps << " steps\n";
+    // A recording's scene is text from a file: its names are escaped (display_text.h), so an
+    // ESC or a newline in a forged title cannot clear the terminal or fake a line.
+    txt << "scene " << escapedForDisplay(scene.name) << " (§" << escapedForDisplay(scene.section) << ", "
+        << escapedForDisplay(scene.title, 200) << "), solver " << solverName(s.solver()) << ", " << *steps << " steps\n";
     Json components = Json::array();
     std::string componentText;
     for (const auto& c : scene.components) {
         components.push(c);
-        componentText += (componentText.empty() ? "" : ", ") + c;
+        componentText += (componentText.empty() ? "" : ", ") + escapedForDisplay(c);
     }
     txt << "components: " << (componentText.empty() ? "(none)" : componentText) << "\n";
     Json bodies = Json::array();

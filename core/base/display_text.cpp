@@ -49,7 +49,12 @@ std::size_t utf8Length(std::string_view s)
 
 std::string quotedForDisplay(std::string_view text, std::size_t maxChars)
 {
-    std::string out = "'";
+    return "'" + escapedForDisplay(text, maxChars) + "'";
+}
+
+std::string escapedForDisplay(std::string_view text, std::size_t maxChars)
+{
+    std::string out;
     std::size_t chars = 0;
     std::size_t i = 0;
     while (i < text.size() && chars < maxChars) {
@@ -83,7 +88,7 @@ std::string quotedForDisplay(std::string_view text, std::size_t maxChars)
     }
     if (i < text.size())
         out += "…";
-    return out + "'";
+    return out;
 }
 
 std::string systemErrorText(int errnum)

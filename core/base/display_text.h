@@ -15,6 +15,10 @@ namespace granota {
 /// UTF-8 become \xNN; printable UTF-8 (accents, "·", "é") is kept as it is.
 std::string quotedForDisplay(std::string_view text, std::size_t maxChars = 60);
 
+/// `text` escaped as quotedForDisplay does, without the quotes: for text from a file shown
+/// where a name is expected (a scene's title in `simulate --replay`'s answer).
+std::string escapedForDisplay(std::string_view text, std::size_t maxChars = 60);
+
 /// The reason for a system error `errnum` (errno) in English whatever the locale, as the
 /// rest of a command-line message is: "No space left on device", not "No resta espai…".
 std::string systemErrorText(int errnum);

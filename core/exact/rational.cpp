@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <string>
 
 namespace granota {
 
@@ -96,6 +97,31 @@ std::optional<Rational> parseRational(std::string_view text)
         return negative ? Rational(-q) : q;
     }
     return parseDecimal(s);
+}
+
+std::optional<std::string> numberBeyondReach(std::string_view text)
+{
+    std::string_view s = trim(text);
+    if (!s.empty() && (s.front() == '+' || s.front() == '-'))
+        s.remove_prefix(1);
+    const std::size_t e = s.find_first_of("eE");
+    if (e == std::string_view::npos)
+        return std::nullopt;
+    std::string_view mantissa = s.substr(0, e), exponent = s.substr(e + 1);
+    const bool negativeExponent = !exponent.empty() && exponent.front() == '-';
+    if (!exponent.empty() && (exponent.front() == '+' || exponent.front() == '-'))
+        exponent.remove_prefix(1);
+    const std::size_t dot = mantissa.find('.');
+    const std::string_view intPart = mantissa.substr(0, dot);
+    const std::string_view fracPart = dot == std::string_view::npos ? std::string_view() : mantissa.substr(dot + 1);
+    if ((intPart.empty() && fracPart.empty()) || (!intPart.empty() && !allDigits(intPart)) ||
+        (!fracPart.empty() && !allDigits(fracPart)) || !allDigits(exponent) || parseRational(text))
+        return std::nullopt; // not the form of a decimal, or read after all
+    if (mantissa.find_first_not_of("0.") == std::string_view::npos)
+        return std::nullopt; // zero: "too large" would be wrong
+    if (negativeExponent)
+        return std::string("is too close to zero to read (exponents go down to -") + std::to_string(kMaxExponent) + ")";
+    return std::string("is too large (the largest double is about 1.8e308)");
 }
 
 std::string toString(const Rational& q)

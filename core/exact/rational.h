@@ -25,6 +25,12 @@ using RPoint = Vec2<Rational>;
 /// including "nan", "inf", a zero denominator or an exponent beyond ±10000.
 std::optional<Rational> parseRational(std::string_view text);
 
+/// When parseRational refuses `text` only because its exponent is beyond ±10000 — a number
+/// written right that no computation could hold — what a message says after the number:
+/// "is too large (the largest double is about 1.8e308)" (1e1000000) or "is too close to
+/// zero to read (exponents go down to -10000)" (1e-1000000); nullopt otherwise.
+std::optional<std::string> numberBeyondReach(std::string_view text);
+
 /// "p" for integers, "p/q" otherwise, always in lowest terms.
 std::string toString(const Rational& q);
 

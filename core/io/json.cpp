@@ -1,6 +1,7 @@
 #include "core/io/json.h"
 
 #include "core/base/number_format.h"
+#include "core/base/text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -268,6 +269,15 @@ struct Json::Reader final : nlohmann::json_sax<nlohmann::json> {
     {
         if (e.id == 406) // out_of_range.406: a number too large for a double
             return tooLarge(lastNumber());
+        // The text ends before its value does: a file cut short (a full disk, a copy stopped
+        // half-way). Said in plain words, with the byte where it stops, not the parser's
+        // ("unexpected end of input; expected ']'").
+        const std::string what = e.what();
+        const bool atTheEnd = position > m_text.size(); // nlohmann counts the end it read as a byte
+        if (what.find("unexpected end of input") != std::string::npos ||
+            (atTheEnd && (what.find("invalid literal") != std::string::npos || what.find("invalid string") != std::string::npos ||
+                          what.find("invalid number") != std::string::npos)))
+            return cutOff();
         return refuse(errorOffset(position, lastToken, e.what()), describe(e));
     }
 
@@ -305,6 +315,21 @@ private:
         Json v;
         v.m_v = Number{value, std::string(text)};
         return add(std::move(v));
+    }
+
+    bool cutOff()
+    {
+        const std::size_t end = m_text.size();
+        if (trim(m_text.substr(0, end)).empty()) {
+            error = makeError(ErrorCode::InvalidInput, end == 0 ? "JSON: the file is empty" : "JSON: the file holds only blanks");
+            errorAt = end;
+            return false;
+        }
+        const std::size_t line = 1 + static_cast<std::size_t>(std::count(m_text.begin(), m_text.begin() + end, '\n'));
+        error = makeError(ErrorCode::InvalidInput,
+                          "JSON: the file is cut off at byte " + std::to_string(end) + " (line " + std::to_string(line) + ")");
+        errorAt = end;
+        return false;
     }
 
     bool tooLarge(std::string_view number)

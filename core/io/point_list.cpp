@@ -36,8 +36,9 @@ Expected<Rational> coordinate(std::string_view text, std::size_t index, const ch
     auto q = parseRational(text);
     if (!q)
         return makeError(ErrorCode::InvalidInput, "point " + std::to_string(index) + ": " + axis + " = " +
-                                                      quotedInput(trim(text)) +
-                                                      " is not a finite number (write integers, decimals or fractions p/q)");
+                                                      quotedInput(trim(text)) + " " +
+                                                      numberBeyondReach(text).value_or(
+                                                          "is not a finite number (write integers, decimals or fractions p/q)"));
     return *q;
 }
 

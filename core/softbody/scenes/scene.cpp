@@ -47,7 +47,7 @@ std::optional<int> wholeNumber(const Json& v, int lo, int hi)
 
 Error bad(const std::string& scene, const std::string& what)
 {
-    return makeError(ErrorCode::InvalidInput, "scene '" + scene + "': " + what);
+    return makeError(ErrorCode::InvalidInput, "scene " + quotedForDisplay(scene) + ": " + what);
 }
 
 /// The keys of "stable" (StableSettings), also taken by --set on any scene.
@@ -176,14 +176,14 @@ Expected<void> setParam(SceneSpec& s, const std::string& key, const Json& v)
 {
     const SceneParameter* param = findSceneParameter(key);
     if (!param)
-        return bad(s.name, "unknown parameter '" + key + "'");
+        return bad(s.name, "unknown parameter " + quotedForDisplay(key));
     switch (param->type) {
     case ParameterType::Integer: {
         if (!v.isNumber() || *v.asNumber() != std::trunc(*v.asNumber()))
             return bad(s.name, key + " must be a whole number");
         const auto n = wholeNumber(v, param->min, param->max);
         if (!n)
-            return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': " + key + " must be between " +
+            return makeError(ErrorCode::OutOfRange, "scene " + quotedForDisplay(s.name) + ": " + key + " must be between " +
                                                         std::to_string(param->min) + " and " + std::to_string(param->max));
         param->integerIn(s) = *n;
         return {};
@@ -257,13 +257,13 @@ Expected<void> setParam(SceneSpec& s, const std::string& key, const Json& v)
         for (const auto& [name, value] : *v.asObject()) {
             auto q = pointOf(value);
             if (!q)
-                return bad(s.name, "angle_limits." + name + " must be a pair min,max");
+                return bad(s.name, "angle_limits." + escapedForDisplay(name) + " must be a pair min,max");
             const auto& limits = angleLimits();
             const std::string& limitName = name; // C++17 lambdas cannot capture a structured binding
             const auto limit = std::find_if(limits.begin(), limits.end(),
                                             [&](const AngleLimitParameter& l) { return limitName == l.name; });
             if (limit == limits.end())
-                return bad(s.name, "unknown angle limit '" + name + "'");
+                return bad(s.name, "unknown angle limit " + quotedForDisplay(name));
             limit->setIn(s, *q);
         }
         return {};
@@ -273,7 +273,7 @@ Expected<void> setParam(SceneSpec& s, const std::string& key, const Json& v)
     case ParameterType::Shapes:
         return setList(s, key, v, s.shapes, [&](const Json& o, ShapeSpec& spec) { return readShape(s, o, spec); });
     }
-    return bad(s.name, "unknown parameter '" + key + "'");
+    return bad(s.name, "unknown parameter " + quotedForDisplay(key));
 }
 
 /// The name of the first number of the scene beyond ±kMaxMagnitude, if any.
@@ -319,11 +319,12 @@ Expected<void> validate(const SceneSpec& s)
 {
     auto ok = validateFrogParams(s.params);
     if (!ok)
-        return makeError(ok.error().code, "scene '" + s.name + "': " + ok.error().message);
+        return makeError(ok.error().code, "scene " + quotedForDisplay(s.name) + ": " + ok.error().message);
     if (auto big = tooLarge(s))
-        return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': " + *big + " must be at most 1e15 in magnitude");
+        return makeError(ErrorCode::OutOfRange,
+                         "scene " + quotedForDisplay(s.name) + ": " + *big + " must be at most 1e15 in magnitude");
     if (static_cast<long>(s.bodies) * std::max(s.params.sides, s.bezierSamples) > kMaxVertices)
-        return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': bodies × sides must be at most " +
+        return makeError(ErrorCode::OutOfRange, "scene " + quotedForDisplay(s.name) + ": bodies × sides must be at most " +
                                                     std::to_string(kMaxVertices) + " vertices in all: lower bodies or sides");
     // A document may also give the vertices themselves (shapes) or obstacles' corners.
     std::size_t shapePoints = 0, obstaclePoints = 0;
@@ -333,20 +334,21 @@ Expected<void> validate(const SceneSpec& s)
         obstaclePoints += o.points.size();
     if (shapePoints > static_cast<std::size_t>(kMaxVertices) || obstaclePoints > static_cast<std::size_t>(kMaxVertices))
         return makeError(ErrorCode::OutOfRange,
-                         "scene '" + s.name +
-                             "': " + (shapePoints > static_cast<std::size_t>(kMaxVertices) ? "shapes" : "obstacles") +
+                         "scene " + quotedForDisplay(s.name) + ": " +
+                             (shapePoints > static_cast<std::size_t>(kMaxVertices) ? "shapes" : "obstacles") +
                              " must have at most " + std::to_string(kMaxVertices) + " points in all: lower the number of points");
     if (const long vertices = static_cast<long>(s.bodies) * std::max(s.params.sides, s.bezierSamples);
         s.hasParam("bodies") && vertices > kMaxPiledVertices && !bodiesFitFrame(s))
         return makeError(ErrorCode::OutOfRange,
-                         "scene '" + s.name + "': " + std::to_string(s.bodies) + " bodies of radius " +
+                         "scene " + quotedForDisplay(s.name) + ": " + std::to_string(s.bodies) + " bodies of radius " +
                              formatDouble(s.params.radius) + " do not fit side by side in a " + formatDouble(s.params.width) +
                              " × " + formatDouble(s.params.height) + " px frame, and piled up their " + std::to_string(vertices) +
                              " vertices would all touch (at most " + std::to_string(kMaxPiledVertices) +
                              " may start piled): lower bodies, sides or radius, or raise width and height");
     for (double l : s.chain)
         if (!(l >= 0) || !std::isfinite(l))
-            return makeError(ErrorCode::OutOfRange, "scene '" + s.name + "': chain lengths must be finite and ≥ 0");
+            return makeError(ErrorCode::OutOfRange,
+                             "scene " + quotedForDisplay(s.name) + ": chain lengths must be finite and ≥ 0");
     for (const auto& o : s.obstacles)
         for (Point q : o.points)
             if (!std::isfinite(q.x) || !std::isfinite(q.y))
@@ -432,8 +434,9 @@ Expected<SceneSpec> parseScene(const Json& doc)
     if (const Json* o = doc.find("order")) {
         const auto place = wholeNumber(*o, 0, kMaxOrder);
         if (!place)
-            return makeError(ErrorCode::OutOfRange,
-                             "scene '" + s.name + "': order must be a whole number between 0 and " + std::to_string(kMaxOrder));
+            return makeError(ErrorCode::OutOfRange, "scene " + quotedForDisplay(s.name) +
+                                                        ": order must be a whole number between 0 and " +
+                                                        std::to_string(kMaxOrder));
         s.order = *place;
     }
     if (const Json* c = doc.find("components"); c && c->asArray())
@@ -475,8 +478,8 @@ Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
     if (isStableKey(key)) {
         const auto q = parseRational(value);
         if (!q)
-            return makeError(ErrorCode::InvalidInput,
-                             "--set " + key + ": " + quotedForDisplay(value) + " is not a finite number");
+            return makeError(ErrorCode::InvalidInput, "--set " + key + ": " + quotedForDisplay(value) + " " +
+                                                          numberBeyondReach(value).value_or("is not a finite number"));
         SceneSpec changed = scene;
         auto ok = setStableSetting(changed, key, Json(toDouble(*q)));
         if (!ok)
@@ -489,8 +492,8 @@ Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
         for (const auto& k : scene.paramKeys)
             keys += (keys.empty() ? "" : ", ") + k;
         return makeError(ErrorCode::InvalidInput,
-                         "scene '" + scene.name + "' has no parameter " + quotedForDisplay(key) + " (it has: " + keys +
-                             "; and for the stable solver: substeps, edge_compliance, edge_damping_ratio)");
+                         "scene " + quotedForDisplay(scene.name) + " has no parameter " + quotedForDisplay(key) +
+                             " (it has: " + keys + "; and for the stable solver: substeps, edge_compliance, edge_damping_ratio)");
     }
     const SceneParameter* param = findSceneParameter(key);
     if (param && !param->settable())
@@ -508,8 +511,8 @@ Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
             const std::string item = value.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
             auto q = parseRational(item);
             if (!q)
-                return makeError(ErrorCode::InvalidInput,
-                                 "--set " + key + ": " + quotedForDisplay(item) + " is not a finite number");
+                return makeError(ErrorCode::InvalidInput, "--set " + key + ": " + quotedForDisplay(item) + " " +
+                                                              numberBeyondReach(item).value_or("is not a finite number"));
             list.push(toDouble(*q));
             ++count;
             if (comma == std::string::npos)
@@ -533,7 +536,7 @@ Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
 Expected<SceneSpec> withBodies(SceneSpec scene, int bodies)
 {
     if (!scene.hasParam("bodies"))
-        return makeError(ErrorCode::InvalidInput, "scene '" + scene.name + "' has a single body");
+        return makeError(ErrorCode::InvalidInput, "scene " + quotedForDisplay(scene.name) + " has a single body");
     if (const SceneParameter* count = findSceneParameter("bodies");
         bodies >= count->min && bodies <= count->max) { // out of range: applySetting says so
         const FrameSize f = frameForBodies(scene, bodies);
