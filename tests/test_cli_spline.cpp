@@ -62,8 +62,8 @@ private slots:
     {
         // f(x) = 2x³ − 3x² + x/2 − 1 at 0, 1/3, 1, 5/2, 4; f′(0) = 1/2, f′(4) = 145/2.
         const QString points = "0,-1;1/3,-59/54;1,-3/2;5/2,51/4;4,81";
-        for (const QStringList& ends :
-             {QStringList{"--ends", "clamped", "--start-slope", "1/2", "--end-slope", "145/2"}, QStringList{"--ends", "not-a-knot"}}) {
+        for (const QStringList& ends : {QStringList{"--ends", "clamped", "--start-slope", "1/2", "--end-slope", "145/2"},
+                                        QStringList{"--ends", "not-a-knot"}}) {
             const CliRun r = runCli(QStringList{"spline", "--points", points, "--exact", "--json"} + ends);
             QCOMPARE(r.exitCode, 0);
             for (const QJsonValue& piece : r.json()["pieces"].toArray())
@@ -89,8 +89,8 @@ private slots:
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("says");
         QTest::newRow("unknown ends") << QStringList{"spline", "--points", "0,0;1,1;2,0", "--ends", "periodic"} << "--ends";
-        QTest::newRow("clamped without slopes") << QStringList{"spline", "--points", "0,0;1,1", "--ends", "clamped"}
-                                                << "needs both end slopes";
+        QTest::newRow("clamped without slopes")
+            << QStringList{"spline", "--points", "0,0;1,1", "--ends", "clamped"} << "needs both end slopes";
         QTest::newRow("slopes without clamped")
             << QStringList{"spline", "--points", "0,0;1,1", "--start-slope", "1", "--end-slope", "1"} << "--ends clamped";
         QTest::newRow("x not increasing") << QStringList{"spline", "--points", "0,0;2,1;1,0"} << "increase strictly";

@@ -190,6 +190,14 @@ private slots:
                                           << "not a whole number";
         QTest::newRow("version 1.5") << QByteArray(R"({"format": "granota", "version": 1.5, "tabs": {}})")
                                      << "not a whole number";
+        // Issue 32, item 9: a file cut short is named so, at the byte it stops, in place of
+        // the parser's jargon ("invalid termination by number (at byte 73)").
+        const QByteArray whole = head + R"("tabs": {"fit": {"points": [[0, 0], [1, 3], [2, 1.25]], "degree": 1}}})";
+        for (const int cut : {10, 30, 61, 73, static_cast<int>(whole.size()) - 1})
+            QTest::newRow(qPrintable(QStringLiteral("cut at %1").arg(cut)))
+                << whole.left(cut) << QStringLiteral("cut off at byte %1.").arg(cut);
+        QTest::newRow("empty") << QByteArray("  \n") << "the file is empty";
+        QTest::newRow("a wrong byte") << QByteArray("{\"format\": granota}") << "not JSON at byte 11 (line 1)";
     }
     void malformedDocumentsAreRefused()
     {

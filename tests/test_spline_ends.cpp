@@ -66,8 +66,7 @@ private slots:
         const RP f = cubic();
         const auto points = samplesOf(f, {q(0), q(1, 3), q(1), q(5, 2), q(4)});
         const RP slope = f.derivative();
-        const auto clamped =
-            cubicSpline(points, SplineEndConditions<Rational>{SplineEnds::Clamped, slope(q(0)), slope(q(4))});
+        const auto clamped = cubicSpline(points, SplineEndConditions<Rational>{SplineEnds::Clamped, slope(q(0)), slope(q(4))});
         const auto notAKnot = cubicSpline(points, SplineEndConditions<Rational>{SplineEnds::NotAKnot});
         const auto natural = cubicSpline(points, SplineEndConditions<Rational>{});
         QVERIFY(clamped.ok() && notAKnot.ok() && natural.ok());
@@ -85,7 +84,7 @@ private slots:
                                                                            toDouble(slope(q(4)))});
         QVERIFY(fast.ok());
         for (double x = 0; x <= 4; x += 0.125)
-            QVERIFY2(std::abs((*fast)(x) - toDouble(f(Rational(x)))) < 1e-12, qPrintable(QString::number(x)));
+            QVERIFY2(std::abs((*fast)(x)-toDouble(f(Rational(x)))) < 1e-12, qPrintable(QString::number(x)));
     }
     void threePointsNotAKnotIsTheParabola()
     {
@@ -119,8 +118,8 @@ private slots:
     void everyEndGivesAC2Spline()
     {
         // Through the same 6 uneven points: the pieces meet with equal value, s′ and s″.
-        const std::vector<RPoint> points{{q(-3), q(2)}, {q(-1), q(-1)}, {q(1, 2), q(4)}, {q(2), q(0)}, {q(7, 2), q(3, 2)},
-                                         {q(5), q(1)}};
+        const std::vector<RPoint> points{{q(-3), q(2)}, {q(-1), q(-1)},     {q(1, 2), q(4)},
+                                         {q(2), q(0)},  {q(7, 2), q(3, 2)}, {q(5), q(1)}};
         for (SplineEnds ends : {SplineEnds::Natural, SplineEnds::Clamped, SplineEnds::NotAKnot, SplineEnds::AsEx21}) {
             const auto s = cubicSpline(points, SplineEndConditions<Rational>{ends, q(1), q(-2)});
             QVERIFY(s.ok());
@@ -144,7 +143,8 @@ private slots:
     // rows give back: 0·1 + 1·2 = 2, 1·1 + 0·2 + 1·3 = 4, 1·2 + 1·3 = 5.
     void theSolvePivots()
     {
-        const auto exact = solveTridiagonal<Rational>({q(0), q(1), q(1)}, {q(0), q(0), q(1)}, {q(1), q(1), q(0)}, {q(2), q(4), q(5)});
+        const auto exact = solveTridiagonal<Rational>({q(0), q(1), q(1)}, {q(0), q(0), q(1)}, {q(1), q(1), q(0)},
+                                                      {q(2), q(4), q(5)});
         QVERIFY(exact);
         QCOMPARE(*exact, (std::vector<Rational>{q(1), q(2), q(3)}));
         const auto fast = solveTridiagonal<double>({0, 1, 1}, {0, 0, 1}, {1, 1, 0}, {2, 4, 5});

@@ -1489,6 +1489,18 @@
             <source>Tab “%1”: %2</source>
             <translation>Pestanya «%1»: %2</translation>
         </message>
+        <message>
+            <source>This is not a Granota document: the file is empty.</source>
+            <translation>Això no és un document del Granota: el fitxer és buit.</translation>
+        </message>
+        <message>
+            <source>This is not a whole Granota document: the file is cut off at byte %1.</source>
+            <translation>Això no és un document del Granota sencer: el fitxer s&apos;acaba a mitges al byte %1.</translation>
+        </message>
+        <message>
+            <source>This is not a Granota document: the text is not JSON at byte %1 (line %2).</source>
+            <translation>Això no és un document del Granota: el text no és JSON al byte %1 (línia %2).</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::Exporter</name>

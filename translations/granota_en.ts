@@ -1489,6 +1489,18 @@
             <source>Tab “%1”: %2</source>
             <translation>Tab “%1”: %2</translation>
         </message>
+        <message>
+            <source>This is not a Granota document: the file is empty.</source>
+            <translation>This is not a Granota document: the file is empty.</translation>
+        </message>
+        <message>
+            <source>This is not a whole Granota document: the file is cut off at byte %1.</source>
+            <translation>This is not a whole Granota document: the file is cut off at byte %1.</translation>
+        </message>
+        <message>
+            <source>This is not a Granota document: the text is not JSON at byte %1 (line %2).</source>
+            <translation>This is not a Granota document: the text is not JSON at byte %1 (line %2).</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::Exporter</name>

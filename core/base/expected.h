@@ -25,6 +25,7 @@ enum class ErrorCode {
     Cancelled,     ///< the user stopped a long computation
     NotAFile,      ///< a path names a folder, a pipe or a device where a file was wanted
     SystemRefused, ///< the system refused to read or write a file: Error::systemError says why
+    CutOff,        ///< a text ends before its value does (a file cut short): the message says where
 };
 
 struct Error {

@@ -326,7 +326,7 @@ private:
             return false;
         }
         const std::size_t line = 1 + static_cast<std::size_t>(std::count(m_text.begin(), m_text.begin() + end, '\n'));
-        error = makeError(ErrorCode::InvalidInput,
+        error = makeError(ErrorCode::CutOff,
                           "JSON: the file is cut off at byte " + std::to_string(end) + " (line " + std::to_string(line) + ")");
         errorAt = end;
         return false;

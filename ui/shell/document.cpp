@@ -2,6 +2,8 @@
 
 #include "ui/shell/tab_page.h"
 
+#include "core/io/json.h"
+
 #include <QCoreApplication>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -29,9 +31,21 @@ std::optional<Root> readRoot(const QByteArray& bytes, const QVector<TabPage*>& t
     QJsonParseError parseError;
     const QJsonDocument doc = QJsonDocument::fromJson(bytes, &parseError);
     if (doc.isNull()) {
-        *error = QCoreApplication::translate("granota::ui::Document", "This is not a Granota document: %1 (at byte %2).")
-                     .arg(parseError.errorString())
-                     .arg(parseError.offset);
+        // Said in plain words, not the parser's ("invalid termination by number"): a file
+        // cut short (a full disk, a copy stopped half-way) is named as such, by the core's
+        // reader, which tells the end of the text from a wrong byte inside it.
+        const auto core = Json::parse(std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+        if (bytes.trimmed().isEmpty())
+            *error = QCoreApplication::translate("granota::ui::Document", "This is not a Granota document: the file is empty.");
+        else if (!core && core.error().code == ErrorCode::CutOff)
+            *error = QCoreApplication::translate("granota::ui::Document",
+                                                 "This is not a whole Granota document: the file is cut off at byte %1.")
+                         .arg(bytes.size());
+        else
+            *error = QCoreApplication::translate("granota::ui::Document",
+                                                 "This is not a Granota document: the text is not JSON at byte %1 (line %2).")
+                         .arg(parseError.offset)
+                         .arg(bytes.left(parseError.offset).count('\n') + 1);
         return std::nullopt;
     }
     if (!doc.isObject()) {
