@@ -104,7 +104,8 @@ private slots:
         // 999 segments × 100 000 samples: 17 GB before, now beyond kMaxCurveSamples (10⁶).
         QTest::newRow("catmull-rom samples")
             << QStringList{"catmull-rom", "--points-file", "THOUSAND", "--samples", "100000", "--json"}
-            << "100000 samples on each of 999 segments are 99900000, more than 1000000 in all" << "lower --samples";
+            << "100000 samples on each of 999 segments are 99900000, more than 1000000 in all"
+            << "lower --samples";
         // One sample more per segment than fits: 999 × 1002 = 1 000 998 (1001 is accepted below).
         QTest::newRow("catmull-rom samples, just beyond")
             << QStringList{"catmull-rom", "--points-file", "THOUSAND", "--samples", "1002"} << "are 1000998, more than"
@@ -112,7 +113,8 @@ private slots:
         // The 60-million-digit coordinate: refused as it is read.
         QTest::newRow("catmull-rom 60 million digits")
             << QStringList{"catmull-rom", "--points-file", "SIXTY_MILLION_DIGITS", "--exact"}
-            << "x is 60000000 characters long, more than 1000000" << "write fewer digits";
+            << "x is 60000000 characters long, more than 1000000"
+            << "write fewer digits";
         // A million digits (b_P ≈ 3.3·10⁶ bits), one segment, 100 samples written: about
         // 2 · (64 + 600) · 3.3·10⁶ ≈ 4.4·10⁹ bit operations (exact_cost.h), beyond 10⁹.
         QTest::newRow("catmull-rom exact budget")
@@ -122,23 +124,27 @@ private slots:
         // About 3 hours: 10⁵ steps of a body whose 5·10⁷ pairs of edges are checked each step.
         QTest::newRow("simulate stable big body")
             << QStringList{"simulate", "--scene", "bounce", "--solver", "stable", "--set", "sides=10000", "--steps", "100000"}
-            << "100000 steps of 10000 vertices on the stable solver" << "lower --steps";
+            << "100000 steps of 10000 vertices on the stable solver"
+            << "lower --steps";
         // 5000 copies of a 10 000-sided frog: 5·10⁷ vertices, 4.5 GB before the first step.
-        QTest::newRow("bench copies")
-            << QStringList{"bench", "--scene", "frog", "--bodies", "5000", "--set", "sides=10000"}
-            << "5000 copies of 10000 vertices are 50000000, more than 100000 vertices in all" << "lower --bodies";
+        QTest::newRow("bench copies") << QStringList{"bench", "--scene", "frog", "--bodies", "5000", "--set", "sides=10000"}
+                                      << "5000 copies of 10000 vertices are 50000000, more than 100000 vertices in all"
+                                      << "lower --bodies";
         // 10⁸ steps of the stable frog, about 20 µs each: half an hour.
         QTest::newRow("bench steps") << QStringList{"bench", "--scene", "frog", "--solver", "stable", "--steps", "100000000"}
-                                     << "100000000 steps of 22 vertices on the stable solver" << "lower --steps";
+                                     << "100000000 steps of 22 vertices on the stable solver"
+                                     << "lower --steps";
         // §4.9's Bézier curve of degree 10 000 sampled at 2000 points: 10⁴·(10⁴ + 1)/2 · 2000
         // ≈ 10¹¹ interpolations, 47 s for --steps 0 before.
-        QTest::newRow("bezier outline")
-            << QStringList{"simulate", "--scene", "bezier", "--set", "bezier_samples=2000", "--set", "sides=10000", "--steps", "0"}
-            << "a Bézier curve of degree 10000 sampled at 2000 points" << "lower sides or bezier_samples";
+        QTest::newRow("bezier outline") << QStringList{"simulate", "--scene",     "bezier",  "--set", "bezier_samples=2000",
+                                                       "--set",    "sides=10000", "--steps", "0"}
+                                        << "a Bézier curve of degree 10000 sampled at 2000 points"
+                                        << "lower sides or bezier_samples";
         // At 20 points the budget (5·10⁸) allows 7070 sides: 7071·7072/2·20 = 500 061 120.
         QTest::newRow("bezier outline, just beyond")
             << QStringList{"simulate", "--scene", "bezier", "--set", "sides=7071", "--steps", "0"}
-            << "a Bézier curve of degree 7071 sampled at 20 points" << "lower sides or bezier_samples";
+            << "a Bézier curve of degree 7071 sampled at 20 points"
+            << "lower sides or bezier_samples";
     }
     void refused()
     {

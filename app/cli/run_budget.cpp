@@ -41,9 +41,8 @@ Expected<void> checkRunWork(const Simulation& s, long long steps, int copies)
                        solverName(s.solver()) + " solver";
     if (s.solver() == SolverKind::Stable)
         what += " (" + std::to_string(s.substeps()) + " substeps; a body of n sides also checks its n²/2 pairs of edges)";
-    return makeError(ErrorCode::OutOfRange, what + " would take about " + roughDuration(total) + " (" +
-                                                roughDuration(perStep) + " a step, estimated), more than the " +
-                                                roughDuration(kMaxRunNanoseconds) +
+    return makeError(ErrorCode::OutOfRange, what + " would take about " + roughDuration(total) + " (" + roughDuration(perStep) +
+                                                " a step, estimated), more than the " + roughDuration(kMaxRunNanoseconds) +
                                                 " a run may take: lower --steps, or bodies or sides");
 }
 
