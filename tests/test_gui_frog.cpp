@@ -1383,6 +1383,48 @@ private slots:
         QCOMPARE(tab().saveState(), before);
     }
 
+    // Issue 32, item 6: §4.9's body is sampled once from a Bézier curve of degree `sides`
+    // at `bezier_samples` points, sides² × samples of work: this document (10¹¹
+    // interpolations) froze the window 48 s, and typing 10000 into Sides on the scene with
+    // 2000 points 45 s. Both are refused now, before any of the work, with a message naming
+    // what to lower (core/base/input_limits.h, kMaxBezierOutlineWork = 5·10⁸).
+    void aBezierBodyTooCostlyToBuildIsRefused()
+    {
+        const QByteArray text = R"({"frog":{"scene":"bezier","params":{"sides":10000,"bezier_samples":2000}}})";
+        const QJsonObject frog = QJsonDocument::fromJson(text).object()["frog"].toObject();
+        const QJsonObject before = tab().saveState();
+        QString error;
+        QVERIFY(!tab().loadState(frog, &error));
+        QVERIFY2(error.contains("lower sides or bezier_samples"), qPrintable(error));
+        QCOMPARE(tab().saveState(), before);
+
+        // The spin box: 2000 points are accepted at 10 sides (10·11/2·2000 = 110 000), then
+        // 10000 typed into Sides and Enter is refused: the field shows 10 again, a message says why.
+        QVERIFY(tab().setScene("bezier", nullptr));
+        QDoubleSpinBox* samples = tab().parametersPanel()->spinBox("bezier_samples");
+        QDoubleSpinBox* sides = tab().parametersPanel()->spinBox("sides");
+        QVERIFY(samples && sides);
+        samples->setValue(2000);
+        QCOMPARE(tab().scene().bezierSamples, 2000);
+        QSignalSpy said(&tab(), &FrogTab::statusMessage);
+        sides->setFocus();
+        sides->selectAll();
+        QTest::keyClicks(sides, "10000");
+        QTest::keyClick(sides, Qt::Key_Return);
+        QCOMPARE(tab().scene().params.sides, 10);
+        QCOMPARE(tab().parametersPanel()->spinBox("sides")->value(), 10.0);
+        QVERIFY(!said.isEmpty());
+        QVERIFY2(said.last().at(0).toString().contains("lower sides or bezier_samples"),
+                 qPrintable(said.last().at(0).toString()));
+        QCOMPARE(tab().canvas()->simulation()->scene().params.sides, 10); // the running body too
+        // At these 2000 points the budget holds 706 sides (706·707/2·2000 = 499 142 000 ≤ 5·10⁸;
+        // 707 would be 500 500 000): accepted.
+        sides->selectAll();
+        QTest::keyClicks(sides, "706");
+        QTest::keyClick(sides, Qt::Key_Return);
+        QCOMPARE(tab().scene().params.sides, 706);
+    }
+
     // Issue 14, item 17: the seed solver says when it cannot keep the scene's shapes.
     void seedSaysItRoundsOtherShapes()
     {

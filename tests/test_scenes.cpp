@@ -349,6 +349,47 @@ private slots:
         }
     }
 
+    // Issue 32, item 6: §4.9's body costs sides·(sides + 1)/2 interpolations a point
+    // (De Casteljau on the sides + 1 control points of the closed polygon), bounded by
+    // kMaxBezierOutlineWork = 5·10⁸. The boundary by hand: at 20 points, 7070·7071/2·20 =
+    // 499 919 700 is inside and 7071·7072/2·20 = 500 061 120 beyond; at 2000 points, 706
+    // sides (499 142 000) and 707 (500 500 000).
+    void bezierBodyWorkIsBounded_data()
+    {
+        QTest::addColumn<QString>("scene");
+        QTest::addColumn<int>("samples");
+        QTest::addColumn<int>("inside");
+        for (const char* scene : {"bezier", "bezier-revised"}) {
+            QTest::addRow("%s, 20 points", scene) << QString(scene) << 20 << 7070;
+            QTest::addRow("%s, 2000 points", scene) << QString(scene) << 2000 << 706;
+        }
+    }
+    void bezierBodyWorkIsBounded()
+    {
+        QFETCH(QString, scene);
+        QFETCH(int, samples);
+        QFETCH(int, inside);
+        auto spec = loadScene(scene.toStdString());
+        QVERIFY(spec.ok());
+        QVERIFY(applySetting(*spec, "bezier_samples=" + std::to_string(samples)).ok());
+        SceneSpec beyond = *spec;
+        QVERIFY(applySetting(*spec, "sides=" + std::to_string(inside)).ok());
+        auto refused = applySetting(beyond, "sides=" + std::to_string(inside + 1));
+        QVERIFY(!refused.ok());
+        QCOMPARE(refused.error().code, ErrorCode::OutOfRange);
+        QVERIFY2(refused.error().message.find("lower sides or bezier_samples") != std::string::npos,
+                 refused.error().message.c_str());
+        // A document asking for it is refused as well (the issue's: 10 000 sides, 2000 points).
+        Json doc = sceneToJson(*spec);
+        Json params = *doc.find("params");
+        params.set("sides", Json(10000.0)).set("bezier_samples", Json(2000.0));
+        doc.set("params", params);
+        QVERIFY(!parseScene(doc).ok());
+        // Scenes without the Bézier body keep their 10 000 sides.
+        auto bounce = loadScene("bounce");
+        QVERIFY(applySetting(*bounce, "sides=10000").ok());
+    }
+
     void unknownScene()
     {
         auto s = loadScene("dragon");

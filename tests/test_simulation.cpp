@@ -7,6 +7,7 @@
 #include "core/softbody/seed/seed_trace.h"
 #include "core/softbody/simulation.h"
 #include "core/softbody/simulation_trace.h"
+#include "core/softbody/step_cost.h"
 
 #include <QtTest>
 #include "tests/test_main.h"
@@ -273,6 +274,23 @@ private slots:
         QVERIFY(!r.empty());
         for (const LinkAngleReading& a : r)
             QVERIFY(!a.limit && !a.atLimit);
+    }
+
+    // Issue 32, item 6: the estimated time of a step (step_cost.h), which simulate and bench
+    // budget. By hand from the constants: the seed 10 ns a point; the stable solver 50 ns a
+    // body vertex and 200 ns a chain joint per substep, and 2.5 ns per pair of a body's edges
+    // once a step.
+    void stepCostEstimate()
+    {
+        // 10 000 sides on the seed: 10⁴ · 10 ns.
+        QCOMPARE(estimatedStepNanoseconds(*make("bounce", SolverKind::Seed, {"sides=10000"})), 1e5);
+        // On the stable solver, 8 substeps: 8 · 50 · 10⁴ + 2.5 · 10⁴ · 9999 / 2 = 4·10⁶ + 124 987 500,
+        // the pairs of edges 97 % of it.
+        QCOMPARE(estimatedStepNanoseconds(*make("bounce", SolverKind::Stable, {"sides=10000"})), 128987500.0);
+        // The frog: 10 vertices and four legs of 3 joints: 8 · (50 · 10 + 200 · 12) + 2.5 · 45.
+        QCOMPARE(estimatedStepNanoseconds(*make("frog", SolverKind::Stable)), 23312.5);
+        // 16 substeps double the per-substep part only: 16 · 2900 + 112.5.
+        QCOMPARE(estimatedStepNanoseconds(*make("frog", SolverKind::Stable, {"substeps=16"})), 46512.5);
     }
 
     void stableKnobs()

@@ -3,8 +3,10 @@
 #include "app/cli/command.h"
 #include "app/cli/finite_doubles.h"
 
+#include "core/base/input_limits.h"
 #include "core/curves/splines/bezier_segments.h"
 #include "core/curves/splines/catmull_rom.h"
+#include "core/exact/exact_cost.h"
 #include "core/exact/polynomial_text.h"
 
 #include <sstream>
@@ -76,6 +78,26 @@ Expected<CommandOutput> run(const Arguments& args)
         return makeError(ErrorCode::NotRational,
                          "--exact needs --alpha 0: centripetal and chordal knots are powers of distances, not fractions");
     const CatmullRomMode mode = *parseCatmullRomMode(*modeName);
+    // The samples are written only with --json: the text form never computes them.
+    const bool withSamples = args.flag("json");
+    // Bounded before any work (too few points: the curve below says so).
+    if (const auto quads = catmullRomQuadruples(points->size(), mode)) {
+        const long segmentCount = static_cast<long>(quads->size());
+        if (segmentCount * *samples > kMaxCurveSamples)
+            return makeError(ErrorCode::OutOfRange,
+                             std::to_string(*samples) + " samples on each of " + std::to_string(segmentCount) + " segments are " +
+                                 std::to_string(segmentCount * *samples) + ", more than " + std::to_string(kMaxCurveSamples) +
+                                 " in all: lower --samples, or the number of points");
+        if (exact) {
+            const double work = catmullRomExactWork(quads->size(), maxBitLength(*points), bitLength(*tau),
+                                                    withSamples ? *samples : 0);
+            if (!exactWorkAllowed(work))
+                return makeError(ErrorCode::OutOfRange,
+                                 exactWorkRefusal("Catmull-Rom curve", work,
+                                                  std::string(withSamples ? "--samples, " : "") +
+                                                      "the number of points or the digits of their coordinates"));
+        }
+    }
 
     CommandOutput out;
     std::ostringstream txt;
@@ -94,7 +116,7 @@ Expected<CommandOutput> run(const Arguments& args)
             seg.set("x", coefficients(s.x, true)).set("y", coefficients(s.y, true));
             segments.push(std::move(seg));
             txt << "  p_" << i + 1 << "(s) = " << toText(s, "s") << "\n";
-            for (int j = 0; j < *samples; ++j) {
+            for (int j = 0; withSamples && j < *samples; ++j) {
                 const Rational u = frac(j, *samples - 1);
                 sampleJson.push(point(RPoint(s.x(u), s.y(u)), true));
             }
@@ -121,8 +143,9 @@ Expected<CommandOutput> run(const Arguments& args)
             segments.push(std::move(seg));
             txt << "  p_" << i + 1 << "(s) = " << toText(s, "s") << "\n";
         }
-        for (const Point& p : sampleSegments(*segs, *samples))
-            sampleJson.push(point(p));
+        if (withSamples)
+            for (const Point& p : sampleSegments(*segs, *samples))
+                sampleJson.push(point(p));
         bezier = bezierJson(*segs);
     }
     txt << "(" << *samples << " samples per segment with --json)\n";

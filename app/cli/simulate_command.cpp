@@ -2,6 +2,7 @@
 #include "app/cli/command.h"
 #include "app/cli/file_identity.h"
 #include "app/cli/output_file.h"
+#include "app/cli/run_budget.h"
 #include "app/cli/scene_options.h"
 
 #include "core/base/display_text.h"
@@ -23,10 +24,6 @@ namespace granota::cli {
 namespace {
 
 constexpr int kMaxSteps = 10000000;
-/// The most steps × points (body vertices and chain joints) one `simulate` runs: a step
-/// of the stable solver costs about 250 ns a vertex (5000 bodies of 10 sides: 12 ms), the
-/// seed's less, so at most a few minutes. The frog's 600 default steps are 10 800.
-constexpr long long kMaxSimulatedPoints = 1000000000;
 /// The most rows `--series` writes: some 150 bytes a row, so at most about 300 MB.
 constexpr long long kMaxSeriesRows = 2000000;
 
@@ -92,11 +89,9 @@ Expected<CommandOutput> run(const Arguments& args)
     const std::optional<long> steps = stepCount;
 
     const long long points = static_cast<long long>(simulationTracePoints(s));
-    if (static_cast<long long>(*steps) * points > kMaxSimulatedPoints)
-        return makeError(ErrorCode::OutOfRange, std::to_string(*steps) + " steps of " + std::to_string(points) +
-                                                    " vertices are " + std::to_string(*steps * points) +
-                                                    " vertex steps, more than " + std::to_string(kMaxSimulatedPoints) +
-                                                    ": lower --steps, or bodies or sides");
+    // The work budget (run_budget.h): substeps and a body's pairs of edges counted too.
+    if (auto affordable = checkRunWork(s, *steps); !affordable)
+        return affordable.error();
     const std::string traceName = "the trace to " + quotedForDisplay(tracePath.value_or(""));
     if (tracePath) {
         if ((*steps + 1LL) * points > kMaxTracePoints)

@@ -58,6 +58,18 @@ double fitExactWork(int degree, const std::vector<Rational>& params, long pointB
     return gram + inverse + pseudoInverse;
 }
 
+double catmullRomExactWork(std::size_t segments, long pointBits, long tauBits, int samples)
+{
+    // Lemma 2.3: each coefficient c_r = Σ_j M(τ)_{rj} p_j is four products of a coordinate by
+    // an entry of M(τ) (a few bits more than τ): 4 × 4 × 2 operations, and the Bézier control
+    // points (bezier_segments.h) as many again.
+    const double coefficientBits = static_cast<double>(pointBits) + static_cast<double>(tauBits) + 2;
+    const double sBits = samples > 1 ? 2 * std::log2(static_cast<double>(samples)) : 0;
+    const double perSegment = 64 * coefficientBits + 6.0 * samples * (coefficientBits + 3 * sBits);
+    // Twice: computed, then written in decimal (as deCasteljauExactWork).
+    return 2 * static_cast<double>(segments) * perSegment;
+}
+
 namespace {
 
 /// "3.2e11": two significant digits, no locale.

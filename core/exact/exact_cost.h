@@ -15,6 +15,10 @@
 ///   of MᵀM E = 2E_M + log₂ m; Gauss–Jordan on the (n + 1)² matrix MᵀM does (n + 1)³
 ///   operations on numbers of up to (n + 1)·E bits, and M⁺ = (MᵀM)⁻¹Mᵀ another
 ///   m(n + 1)² on those: m(n + 1)²E + (n + 1)⁴E + m(n + 1)³E, plus the points' bits b_Q.
+/// - A Catmull-Rom segment (Lemma 2.3) with tension τ: its coefficients M(τ)·[p_0 … p_3]
+///   and its Bézier control points are 64 operations on numbers of b_c = b_P + b_τ bits,
+///   and each of its S samples at s = j/(S − 1) (b_s = 2 log₂ S bits) two Horner schemes of
+///   three steps on numbers growing to b_c + 3 b_s bits: 64 b_c + 6S(b_c + 3 b_s).
 ///
 /// GMP multiplies and reduces b-bit numbers in more than b steps (b log b, and gcds
 /// b log² b), so the estimate is a lower bound that grows more slowly than the time; the
@@ -49,6 +53,11 @@ double fitExactWork(int degree, const std::vector<Rational>& params, long pointB
 /// to xBits bits and ordinates (and end slopes) of up to yBits: the elimination's numbers
 /// grow by the abscissae's bits at every row.
 double cubicSplineExactWork(int pieces, long xBits, long yBits);
+
+/// The exact Catmull-Rom curve of `segments` segments (Lemma 2.3, Def 2.10) with tension
+/// of tauBits bits and points of up to pointBits bits, and `samples` samples per segment
+/// (0 when none are computed), each computed and written.
+double catmullRomExactWork(std::size_t segments, long pointBits, long tauBits, int samples);
 
 /// Whether an exact computation of this estimated work is done.
 inline bool exactWorkAllowed(double work, double budget = kMaxExactWork) { return work <= budget; }

@@ -39,6 +39,10 @@ std::vector<Point> legOutline(Point shoulder, Point elbow, Point wrist, double f
 /// §4.9: the closed control polygon v_0 … v_{N−1}, v_0 sampled at t = j/samples,
 /// j = 0 … samples−1 — the thesis's precomputed points, which then replace the vertices.
 std::vector<Point> bezierBodyPoints(const std::vector<Point>& polygon, int samples);
+/// The interpolations bezierBodyPoints does for a polygon of `sides` vertices: De Casteljau's
+/// triangle on sides + 1 control points, sides·(sides + 1)/2 a sample; what the scene's
+/// validation bounds by kMaxBezierOutlineWork (core/base/input_limits.h).
+inline double bezierBodyPointsWork(int sides, int samples) { return static_cast<double>(samples) * sides * (sides + 1.0) / 2; }
 
 /// §4.9, the option the thesis abandoned: every frame, the least-squares Bézier curve of
 /// degree n through the closed outline v_0 … v_{N−1}, v_0 at uniform parameters

@@ -1,6 +1,7 @@
 #include "core/softbody/scenes/scene.h"
 
 #include "core/base/display_text.h"
+#include "core/base/input_limits.h"
 #include "core/exact/rational.h"
 #include "core/softbody/scenes/frame_derived.h"
 #include "core/softbody/scenes/scene_files.h"
@@ -8,6 +9,7 @@
 #include "core/softbody/scenes/scene_layout.h"
 #include "core/softbody/scenes/scene_parameters.h"
 #include "core/softbody/scenes/scene_texts.h"
+#include "core/softbody/outline.h"
 #include "core/softbody/seed/stage_body.h"
 
 #include <algorithm>
@@ -21,9 +23,6 @@ namespace {
 /// The largest magnitude of any number of a scene (lengths, coordinates, areas, factors),
 /// the seed's own limit: beyond it a body's area or a chain's reach overflows to infinity.
 constexpr double kMaxMagnitude = 1e15;
-/// Every body's vertices together: 5000 bodies of 10000 sides would be 50 million
-/// vertices, gigabytes and minutes to build (a .granota document can ask for it).
-constexpr long kMaxVertices = 100000;
 /// The most vertices (all bodies together) a scene may start piled up, in a frame too small
 /// to hold its bodies side by side: piled, every body is a broad-phase pair of every other
 /// and every vertex is tested against every other body's edges, about 35 ns × vertices² a
@@ -323,9 +322,19 @@ Expected<void> validate(const SceneSpec& s)
     if (auto big = tooLarge(s))
         return makeError(ErrorCode::OutOfRange,
                          "scene " + quotedForDisplay(s.name) + ": " + *big + " must be at most 1e15 in magnitude");
-    if (static_cast<long>(s.bodies) * std::max(s.params.sides, s.bezierSamples) > kMaxVertices)
+    if (sceneVertexCount(s) > kMaxVertices)
         return makeError(ErrorCode::OutOfRange, "scene " + quotedForDisplay(s.name) + ": bodies × sides must be at most " +
                                                     std::to_string(kMaxVertices) + " vertices in all: lower bodies or sides");
+    // §4.9: the body's points are sampled once from a Bézier curve of degree `sides`, a
+    // cost of sides² × bezier_samples (10 000 sides and 2000 points froze the window 48 s).
+    if (s.has("outline-bezier") && s.bezierSamples >= 3 &&
+        bezierBodyPointsWork(s.params.sides, s.bezierSamples) > kMaxBezierOutlineWork)
+        return makeError(ErrorCode::OutOfRange, "scene " + quotedForDisplay(s.name) + ": a Bézier curve of degree " +
+                                                    std::to_string(s.params.sides) + " sampled at " +
+                                                    std::to_string(s.bezierSamples) + " points is " +
+                                                    formatDouble(bezierBodyPointsWork(s.params.sides, s.bezierSamples)) +
+                                                    " interpolations, more than " + formatDouble(kMaxBezierOutlineWork) +
+                                                    " (sides × (sides + 1) / 2 × bezier_samples): lower sides or bezier_samples");
     // A document may also give the vertices themselves (shapes) or obstacles' corners.
     std::size_t shapePoints = 0, obstaclePoints = 0;
     for (const auto& sh : s.shapes)
@@ -337,8 +346,7 @@ Expected<void> validate(const SceneSpec& s)
                          "scene " + quotedForDisplay(s.name) + ": " +
                              (shapePoints > static_cast<std::size_t>(kMaxVertices) ? "shapes" : "obstacles") +
                              " must have at most " + std::to_string(kMaxVertices) + " points in all: lower the number of points");
-    if (const long vertices = static_cast<long>(s.bodies) * std::max(s.params.sides, s.bezierSamples);
-        s.hasParam("bodies") && vertices > kMaxPiledVertices && !bodiesFitFrame(s))
+    if (const long vertices = sceneVertexCount(s); s.hasParam("bodies") && vertices > kMaxPiledVertices && !bodiesFitFrame(s))
         return makeError(ErrorCode::OutOfRange,
                          "scene " + quotedForDisplay(s.name) + ": " + std::to_string(s.bodies) + " bodies of radius " +
                              formatDouble(s.params.radius) + " do not fit side by side in a " + formatDouble(s.params.width) +

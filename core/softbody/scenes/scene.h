@@ -11,6 +11,7 @@
 #include "core/softbody/scenes/grab_mode.h"
 #include "core/io/json.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -91,5 +92,13 @@ Expected<SceneSpec> withBodies(SceneSpec scene, int bodies);
 
 /// The scene as its file: only its own keys, with their current values.
 Json sceneToJson(const SceneSpec& scene);
+
+/// The soft-body vertices the scene's bodies start with, all together: bodies × sides, or
+/// × bezier_samples where §4.9 samples the body from a Bézier curve (the larger); what the
+/// validation bounds by kMaxVertices (core/base/input_limits.h).
+inline long sceneVertexCount(const SceneSpec& s)
+{
+    return static_cast<long>(s.bodies) * std::max(s.params.sides, s.bezierSamples);
+}
 
 } // namespace granota
