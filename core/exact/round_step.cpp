@@ -7,13 +7,13 @@ namespace granota {
 
 namespace {
 
-constexpr int kMaxExponent = 300;
+constexpr int kMaxStepExponent = 300;
 
 int decade(double limit)
 {
     if (!(limit > 0) || !std::isfinite(limit))
         return 0;
-    return std::clamp(static_cast<int>(std::floor(std::log10(limit))), -kMaxExponent, kMaxExponent);
+    return std::clamp(static_cast<int>(std::floor(std::log10(limit))), -kMaxStepExponent, kMaxStepExponent);
 }
 
 bool usable(double limit) { return limit > 0 && std::isfinite(limit); }
@@ -39,7 +39,7 @@ RoundStep roundStepAtMost(double limit)
     if (!usable(limit))
         return {};
     const int e = decade(limit);
-    for (int k = std::min(e + 1, kMaxExponent); k >= e - 1; --k)
+    for (int k = std::min(e + 1, kMaxStepExponent); k >= e - 1; --k)
         for (int m : {5, 2, 1})
             if (RoundStep{m, k}.value() <= limit)
                 return {m, k};
@@ -51,7 +51,7 @@ RoundStep roundStepAtLeast(double limit)
     if (!usable(limit))
         return {};
     const int e = decade(limit);
-    for (int k = std::max(e - 1, -kMaxExponent); k <= e + 1; ++k)
+    for (int k = std::max(e - 1, -kMaxStepExponent); k <= e + 1; ++k)
         for (int m : {1, 2, 5})
             if (RoundStep{m, k}.value() >= limit)
                 return {m, k};
