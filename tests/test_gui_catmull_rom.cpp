@@ -229,10 +229,26 @@ private slots:
         QVERIFY2(text.contains(QStringLiteral("s_2 does not interpolate (1, 3): s_2(1) = 158/53")), qPrintable(text));
         QVERIFY(text.contains(QStringLiteral("s_2 does not interpolate (2, 1): s_2(2) = 52/53")));
         QVERIFY(text.contains(QStringLiteral("+1/53")));
-        // The correct s₂, and the natural spline of Def 2.3 (M_1 = −32/5, M_2 = 8/5).
+        // Fig 2.1: Ex 2.1's own spline alone — its ends (s₁‴ = 0, no x² in s₃), not natural
+        // ones, and no Catmull-Rom curve. Its pieces are the printed ones corrected.
+        QCOMPARE(tab.settings().splineEnds, granota::SplineEnds::AsEx21);
+        QVERIFY(!tab.settings().catmullRom);
+        QVERIFY2(text.contains(QStringLiteral("the ends of Ex 2.1")), qPrintable(text));
         QVERIFY(text.contains(QStringLiteral("1/53 + 394/53 x - 288/53 x^2 + 52/53 x^3")));
-        QVERIFY(text.contains(QStringLiteral("1 + 46/15 x - 16/15 x^3")));
+        QVERIFY(text.contains(QStringLiteral("exactly the corrected ones")));
         QVERIFY(text.contains(QStringLiteral("C^2 at every knot")));
+        QVERIFY(!tab.tikz(granota::ui::TikzOptions()).contains(QStringLiteral("tau =")));
+        // The natural spline of Def 2.3 (M_1 = −32/5, M_2 = 8/5) is another one, one undo step away.
+        tab.setSplineEnds(granota::SplineEnds::Natural);
+        const QString natural = tab.exactPanel()->plainText();
+        QVERIFY2(natural.contains(QStringLiteral("1 + 46/15 x - 16/15 x^3")), qPrintable(natural));
+        QVERIFY(natural.contains(QStringLiteral("Choose the ends")));
+        tab.undoStack()->undo();
+        QCOMPARE(tab.settings().splineEnds, granota::SplineEnds::AsEx21);
+        tab.setCatmullRomVisible(true);
+        QVERIFY(tab.tikz(granota::ui::TikzOptions()).contains(QStringLiteral("tau = 1/2")));
+        tab.undoStack()->undo();
+        QVERIFY(!tab.settings().catmullRom);
         // The spline interpolates the points (samples at the knots).
         const auto& s = tab.scene().spline;
         const int per = CatmullRomScene::kSamplesPerSegment;
@@ -499,7 +515,13 @@ private slots:
         tab.setEnds(CatmullRomEnds::Closed);
         tab.setSpacing(CatmullRomSpacing::Centripetal);
         tab.setBezierVisible(true);
+        tab.setSplineVisible(true);
+        tab.setSplineEnds(granota::SplineEnds::Clamped);
+        tab.setSplineSlopes(granota::frac(1, 2), granota::Rational(-3));
+        tab.setCatmullRomVisible(false);
         const QJsonObject saved = tab.saveState();
+        QCOMPARE(saved.value(QStringLiteral("spline_ends")).toString(), QStringLiteral("clamped"));
+        QCOMPARE(saved.value(QStringLiteral("spline_end_slope")).toString(), QStringLiteral("-3"));
         QCOMPARE(saved.value(QStringLiteral("taus")).toArray().last().toString(), QStringLiteral("1/3"));
         // Through text, as a document would.
         const QJsonObject reread = QJsonDocument::fromJson(QJsonDocument(saved).toJson()).object();
@@ -703,6 +725,7 @@ private slots:
         }
 
         QVERIFY(tab.loadExample(example("2.1")));
+        tab.setSplineEnds(granota::SplineEnds::Natural); // the natural spline: s″ = −32/5, 8/5 at the knots
         const QCPGraph* spline = graphNamed(tab.blendingPlot(), QStringLiteral("cubic spline C²"));
         QVERIFY(spline);
         const auto splineSides = knotSides(spline);

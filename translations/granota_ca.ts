@@ -33,6 +33,10 @@
             <source>No cubic spline (Def 2.3): the points are not a function of x — their abscissae must increase strictly from q0 to qn.</source>
             <translation>No hi ha spline cúbic (Def. 2.3): els punts no són una funció de x — les seues abscisses han de créixer estrictament de q0 a qn.</translation>
         </message>
+        <message>
+            <source>No unique cubic spline with these ends: as Ex 2.1, the last but one abscissa must not be 0.</source>
+            <translation>No hi ha un únic spline cúbic amb aquests extrems: com a l&apos;Ex. 2.1, la penúltima abscissa no pot ser 0.</translation>
+        </message>
     </context>
     <context>
         <name>CatmullRomReport</name>
@@ -395,6 +399,34 @@
             <location filename="../ui/catmull_rom_report.cpp" line="1" />
             <source>Its graph (x, s(x)) piece by piece, x = x_i + h_i u, u ∈ [0, 1]; the derivatives in x.</source>
             <translation>El seu gràfic (x, s(x)) tros a tros, x = x_i + h_i u, u ∈ [0, 1]; les derivades en x.</translation>
+        </message>
+        <message>
+            <source>Cubic spline C² (Def 2.3), %1</source>
+            <translation>Spline cúbic C² (Def. 2.3), %1</translation>
+        </message>
+        <message>
+            <source>natural ends</source>
+            <translation>extrems naturals</translation>
+        </message>
+        <message>
+            <source>clamped ends</source>
+            <translation>extrems subjectes</translation>
+        </message>
+        <message>
+            <source>not-a-knot ends</source>
+            <translation>extrems sense nus (not-a-knot)</translation>
+        </message>
+        <message>
+            <source>the ends of Ex 2.1</source>
+            <translation>els extrems de l&apos;Ex. 2.1</translation>
+        </message>
+        <message>
+            <source>With Ex 2.1&apos;s ends — s₁‴ = 0 (s₁ is a parabola) and no x² term in s₃ — the pieces above are exactly the corrected ones (docs/thesis-errata.md).</source>
+            <translation>Amb els extrems de l&apos;Ex. 2.1 — s₁‴ = 0 (s₁ és una paràbola) i cap terme en x² a s₃ — els trossos de dalt són exactament els corregits (docs/thesis-errata.md).</translation>
+        </message>
+        <message>
+            <source>Ex 2.1&apos;s spline is a cubic spline (Def 2.3) but not the natural one: s″ ≠ 0 at its ends, so its pieces differ from those above. Choose the ends “As Ex 2.1” to get them.</source>
+            <translation>L&apos;spline de l&apos;Ex. 2.1 és un spline cúbic (Def. 2.3) però no el natural: s″ ≠ 0 als extrems, i per això els seus trossos difereixen dels de dalt. Trieu els extrems «Com a l&apos;Ex. 2.1» per obtenir-les.</translation>
         </message>
     </context>
     <context>
@@ -1033,6 +1065,70 @@
             <location filename="../ui/catmull_rom_tab.cpp" line="1" />
             <source>Bézier</source>
             <translation>Bézier</translation>
+        </message>
+        <message>
+            <source>An end slope is a number between −10 and 10, such as 1/2 or -0.25.</source>
+            <translation>Un pendent d&apos;extrem és un nombre entre −10 i 10, com ara 1/2 o -0,25.</translation>
+        </message>
+        <message>
+            <source>Cat&amp;mull-Rom curves</source>
+            <translation>Corbes de Catmull-&amp;Rom</translation>
+        </message>
+        <message>
+            <source>Draw the Catmull-Rom curve of each tension. Hide them to see the cubic spline alone, as Fig 2.1 shows Ex 2.1&apos;s.</source>
+            <translation>Dibuixa la corba de Catmull-Rom de cada tensió. Amaga-les per veure l&apos;spline cúbic tot sol, com la Fig. 2.1 mostra el de l&apos;Ex. 2.1.</translation>
+        </message>
+        <message>
+            <source>Spline e&amp;nds:</source>
+            <translation>Extrems de l&apos;spli&amp;ne:</translation>
+        </message>
+        <message>
+            <source>Natural (s″ = 0)</source>
+            <translation>Naturals (s″ = 0)</translation>
+        </message>
+        <message>
+            <source>Clamped (slopes)</source>
+            <translation>Subjectes</translation>
+        </message>
+        <message>
+            <source>Not-a-knot</source>
+            <translation>Sense nus</translation>
+        </message>
+        <message>
+            <source>As Ex 2.1</source>
+            <translation>Com a l&apos;Ex. 2.1</translation>
+        </message>
+        <message>
+            <source>Def 2.3 leaves two degrees of freedom; the ends fix them. Natural: s″ = 0 at both ends. Clamped: the end slopes are given. Not-a-knot: the first two pieces are one cubic, and so are the last two. As Ex 2.1: the first piece is a parabola (s₁‴ = 0) and the last has no x² term — the ends that give Ex 2.1&apos;s pieces.</source>
+            <translation>La Def. 2.3 deixa dos graus de llibertat; els extrems els fixen. Naturals: s″ = 0 a tots dos extrems. Subjectes: es donen els pendents als extrems. Sense nus: els dos primers trossos són una sola cúbica, i també els dos últims. Com a l&apos;Ex. 2.1: el primer tros és una paràbola (s₁‴ = 0) i l&apos;últim no té terme en x² — els extrems que donen els trossos de l&apos;Ex. 2.1.</translation>
+        </message>
+        <message>
+            <source>End s&amp;lopes:</source>
+            <translation>Pen&amp;dents:</translation>
+        </message>
+        <message>
+            <source>s′(x₀), the slope at the first point (clamped ends)</source>
+            <translation>s′(x₀), el pendent al primer punt (extrems subjectes)</translation>
+        </message>
+        <message>
+            <source>s′(xₖ), the slope at the last point (clamped ends)</source>
+            <translation>s′(xₖ), el pendent a l&apos;últim punt (extrems subjectes)</translation>
+        </message>
+        <message>
+            <source>Change the spline&apos;s ends</source>
+            <translation>Canvia els extrems de l&apos;spline</translation>
+        </message>
+        <message>
+            <source>Change the spline&apos;s end slopes</source>
+            <translation>Canvia els pendents dels extrems de l&apos;spline</translation>
+        </message>
+        <message>
+            <source>Show the Catmull-Rom curves</source>
+            <translation>Mostra les corbes de Catmull-Rom</translation>
+        </message>
+        <message>
+            <source>Hide the Catmull-Rom curves</source>
+            <translation>Amaga les corbes de Catmull-Rom</translation>
         </message>
     </context>
     <context>

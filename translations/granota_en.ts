@@ -33,6 +33,10 @@
             <source>No cubic spline (Def 2.3): the points are not a function of x — their abscissae must increase strictly from q0 to qn.</source>
             <translation>No cubic spline (Def 2.3): the points are not a function of x — their abscissae must increase strictly from q0 to qn.</translation>
         </message>
+        <message>
+            <source>No unique cubic spline with these ends: as Ex 2.1, the last but one abscissa must not be 0.</source>
+            <translation>No unique cubic spline with these ends: as Ex 2.1, the last but one abscissa must not be 0.</translation>
+        </message>
     </context>
     <context>
         <name>CatmullRomReport</name>
@@ -395,6 +399,34 @@
             <location filename="../ui/catmull_rom_report.cpp" line="1" />
             <source>Its graph (x, s(x)) piece by piece, x = x_i + h_i u, u ∈ [0, 1]; the derivatives in x.</source>
             <translation>Its graph (x, s(x)) piece by piece, x = x_i + h_i u, u ∈ [0, 1]; the derivatives in x.</translation>
+        </message>
+        <message>
+            <source>Cubic spline C² (Def 2.3), %1</source>
+            <translation>Cubic spline C² (Def 2.3), %1</translation>
+        </message>
+        <message>
+            <source>natural ends</source>
+            <translation>natural ends</translation>
+        </message>
+        <message>
+            <source>clamped ends</source>
+            <translation>clamped ends</translation>
+        </message>
+        <message>
+            <source>not-a-knot ends</source>
+            <translation>not-a-knot ends</translation>
+        </message>
+        <message>
+            <source>the ends of Ex 2.1</source>
+            <translation>the ends of Ex 2.1</translation>
+        </message>
+        <message>
+            <source>With Ex 2.1&apos;s ends — s₁‴ = 0 (s₁ is a parabola) and no x² term in s₃ — the pieces above are exactly the corrected ones (docs/thesis-errata.md).</source>
+            <translation>With Ex 2.1&apos;s ends — s₁‴ = 0 (s₁ is a parabola) and no x² term in s₃ — the pieces above are exactly the corrected ones (docs/thesis-errata.md).</translation>
+        </message>
+        <message>
+            <source>Ex 2.1&apos;s spline is a cubic spline (Def 2.3) but not the natural one: s″ ≠ 0 at its ends, so its pieces differ from those above. Choose the ends “As Ex 2.1” to get them.</source>
+            <translation>Ex 2.1&apos;s spline is a cubic spline (Def 2.3) but not the natural one: s″ ≠ 0 at its ends, so its pieces differ from those above. Choose the ends “As Ex 2.1” to get them.</translation>
         </message>
     </context>
     <context>
@@ -1033,6 +1065,70 @@
             <location filename="../ui/catmull_rom_tab.cpp" line="1" />
             <source>Bézier</source>
             <translation>Bézier</translation>
+        </message>
+        <message>
+            <source>An end slope is a number between −10 and 10, such as 1/2 or -0.25.</source>
+            <translation>An end slope is a number between −10 and 10, such as 1/2 or -0.25.</translation>
+        </message>
+        <message>
+            <source>Cat&amp;mull-Rom curves</source>
+            <translation>Cat&amp;mull-Rom curves</translation>
+        </message>
+        <message>
+            <source>Draw the Catmull-Rom curve of each tension. Hide them to see the cubic spline alone, as Fig 2.1 shows Ex 2.1&apos;s.</source>
+            <translation>Draw the Catmull-Rom curve of each tension. Hide them to see the cubic spline alone, as Fig 2.1 shows Ex 2.1&apos;s.</translation>
+        </message>
+        <message>
+            <source>Spline e&amp;nds:</source>
+            <translation>Spline e&amp;nds:</translation>
+        </message>
+        <message>
+            <source>Natural (s″ = 0)</source>
+            <translation>Natural (s″ = 0)</translation>
+        </message>
+        <message>
+            <source>Clamped (slopes)</source>
+            <translation>Clamped (slopes)</translation>
+        </message>
+        <message>
+            <source>Not-a-knot</source>
+            <translation>Not-a-knot</translation>
+        </message>
+        <message>
+            <source>As Ex 2.1</source>
+            <translation>As Ex 2.1</translation>
+        </message>
+        <message>
+            <source>Def 2.3 leaves two degrees of freedom; the ends fix them. Natural: s″ = 0 at both ends. Clamped: the end slopes are given. Not-a-knot: the first two pieces are one cubic, and so are the last two. As Ex 2.1: the first piece is a parabola (s₁‴ = 0) and the last has no x² term — the ends that give Ex 2.1&apos;s pieces.</source>
+            <translation>Def 2.3 leaves two degrees of freedom; the ends fix them. Natural: s″ = 0 at both ends. Clamped: the end slopes are given. Not-a-knot: the first two pieces are one cubic, and so are the last two. As Ex 2.1: the first piece is a parabola (s₁‴ = 0) and the last has no x² term — the ends that give Ex 2.1&apos;s pieces.</translation>
+        </message>
+        <message>
+            <source>End s&amp;lopes:</source>
+            <translation>End s&amp;lopes:</translation>
+        </message>
+        <message>
+            <source>s′(x₀), the slope at the first point (clamped ends)</source>
+            <translation>s′(x₀), the slope at the first point (clamped ends)</translation>
+        </message>
+        <message>
+            <source>s′(xₖ), the slope at the last point (clamped ends)</source>
+            <translation>s′(xₖ), the slope at the last point (clamped ends)</translation>
+        </message>
+        <message>
+            <source>Change the spline&apos;s ends</source>
+            <translation>Change the spline&apos;s ends</translation>
+        </message>
+        <message>
+            <source>Change the spline&apos;s end slopes</source>
+            <translation>Change the spline&apos;s end slopes</translation>
+        </message>
+        <message>
+            <source>Show the Catmull-Rom curves</source>
+            <translation>Show the Catmull-Rom curves</translation>
+        </message>
+        <message>
+            <source>Hide the Catmull-Rom curves</source>
+            <translation>Hide the Catmull-Rom curves</translation>
         </message>
     </context>
     <context>

@@ -73,6 +73,9 @@ QString translatedError(const Error& error, CatmullRomEnds ends)
     case ErrorCode::NotIncreasing:
         return CatmullRomCurves::tr("No cubic spline (Def 2.3): the points are not a function of x — their abscissae must "
                                     "increase strictly from q0 to qn.");
+    case ErrorCode::Singular:
+        return CatmullRomCurves::tr("No unique cubic spline with these ends: as Ex 2.1, the last but one abscissa must not "
+                                    "be 0.");
     default: return QString::fromStdString(error.message);
     }
 }
@@ -126,7 +129,8 @@ CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomS
             scene.bezierCurvature = curvatureProfile({points}, CatmullRomScene::kBezierSamples);
     }
     if (settings.spline) {
-        const auto spline = naturalCubicSpline(points);
+        const auto spline = cubicSpline(points, SplineEndConditions<double>{settings.splineEnds, toDouble(settings.startSlope),
+                                                                            toDouble(settings.endSlope)});
         if (!spline) {
             scene.splineError = translatedError(spline.error(), settings.ends);
         } else {

@@ -390,7 +390,7 @@ QString processingSection(const CatmullRomSettings& settings)
 }
 
 /// Ex 2.1's spline as printed, checked; the constant its s₂ lacks; the corrected pieces checked.
-QString example21Section(const std::vector<RPoint>& data)
+QString example21Section(const std::vector<RPoint>& data, SplineEnds ends)
 {
     const WorkedExample* ex = findWorkedExample("2.1");
     if (!ex || ex->points != data)
@@ -433,21 +433,28 @@ QString example21Section(const std::vector<RPoint>& data)
     if (!fix.corrections.empty()) {
         html += para(CatmullRomReport::tr("The corrected spline:").toHtmlEscaped());
         html += continuitySummary(checkContinuity(fix.corrected, 2, data), 2);
-        html += ExactPanel::note(CatmullRomReport::tr("Ex 2.1's spline is a cubic spline (Def 2.3) but not the natural "
-                                                      "one: s″ ≠ 0 at its ends, so its pieces differ from those above."));
+        html += ExactPanel::note(
+            ends == SplineEnds::AsEx21
+                ? CatmullRomReport::tr("With Ex 2.1's ends — s₁‴ = 0 (s₁ is a parabola) and no x² term in s₃ — the "
+                                       "pieces above are exactly the corrected ones (docs/thesis-errata.md).")
+                : CatmullRomReport::tr("Ex 2.1's spline is a cubic spline (Def 2.3) but not the natural one: s″ ≠ 0 at its "
+                                       "ends, so its pieces differ from those above. Choose the ends “As Ex 2.1” to get "
+                                       "them."));
     }
     return html;
 }
 
 QString splineSection(const std::vector<Point>& points, const std::optional<std::vector<RPoint>>& rational,
-                      const CatmullRomScene& scene)
+                      const CatmullRomSettings& settings, const CatmullRomScene& scene)
 {
-    QString html = ExactPanel::heading(CatmullRomReport::tr("Cubic spline C² (Def 2.3), natural ends"));
+    QString html = ExactPanel::heading(
+        CatmullRomReport::tr("Cubic spline C² (Def 2.3), %1").arg(CatmullRomReport::splineEndsName(settings.splineEnds)));
     if (!scene.splineError.isEmpty())
         return html + ExactPanel::note(scene.splineError);
     constexpr int kChecked = 3; // s, s′, s″ must match; s‴ shows that it is not more than C²
     if (rational) {
-        const auto spline = naturalCubicSpline(*rational);
+        const auto spline = cubicSpline(*rational, SplineEndConditions<Rational>{settings.splineEnds, settings.startSlope,
+                                                                                 settings.endSlope});
         if (!spline)
             return html + ExactPanel::note(translatedError(spline.error(), CatmullRomEnds::Open));
         std::vector<QStringList> rows;
@@ -461,9 +468,10 @@ QString splineSection(const std::vector<Point>& points, const std::optional<std:
         html += ExactPanel::table({}, rows);
         const auto report = checkContinuity(*spline, kChecked, *rational);
         html += continuitySummary(report, 2) + knotTable(*spline, report);
-        html += example21Section(*rational);
+        html += example21Section(*rational, settings.splineEnds);
     } else {
-        const auto spline = naturalCubicSpline(points);
+        const auto spline = cubicSpline(points, SplineEndConditions<double>{settings.splineEnds, toDouble(settings.startSlope),
+                                                                            toDouble(settings.endSlope)});
         if (!spline)
             return html + ExactPanel::note(translatedError(spline.error(), CatmullRomEnds::Open));
         html += para(CatmullRomReport::tr("In decimals, each piece in powers of u = x − x_i:").toHtmlEscaped());
@@ -479,6 +487,17 @@ QString splineSection(const std::vector<Point>& points, const std::optional<std:
 }
 
 } // namespace
+
+QString CatmullRomReport::splineEndsName(SplineEnds ends)
+{
+    switch (ends) {
+    case SplineEnds::Natural: return tr("natural ends");
+    case SplineEnds::Clamped: return tr("clamped ends");
+    case SplineEnds::NotAKnot: return tr("not-a-knot ends");
+    case SplineEnds::AsEx21: return tr("the ends of Ex 2.1");
+    }
+    return {};
+}
 
 QString CatmullRomReport::endsName(CatmullRomEnds ends)
 {
@@ -499,7 +518,7 @@ QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRo
     const int count = static_cast<int>(points.size());
     QString html;
     if (settings.spline)
-        html += splineSection(points, rational, scene);
+        html += splineSection(points, rational, settings, scene);
 
     // Segments (Def 2.10), the current mode and, for Ex 2.13, the other one.
     std::vector<CatmullRomEnds> modes{settings.ends};

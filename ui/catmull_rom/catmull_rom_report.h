@@ -25,6 +25,8 @@ public:
     static QString html(const std::vector<Point>& points, const CatmullRomSettings& settings, const CatmullRomScene& scene);
     /// "open (Def 2.10, option 2)" … in the user's language.
     static QString endsName(CatmullRomEnds ends);
+    /// "natural ends", "the ends of Ex 2.1"…: the cubic spline's end conditions, translated.
+    static QString splineEndsName(SplineEnds ends);
 };
 
 } // namespace granota::ui

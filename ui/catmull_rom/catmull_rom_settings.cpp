@@ -12,7 +12,8 @@ bool CatmullRomSettings::operator==(const CatmullRomSettings& o) const
 {
     return taus == o.taus && selectedTau == o.selectedTau && ends == o.ends && spacing == o.spacing && bezier == o.bezier &&
            spline == o.spline && compareEnds == o.compareEnds && allTausInPlot == o.allTausInPlot &&
-           curvaturePlot == o.curvaturePlot;
+           curvaturePlot == o.curvaturePlot && catmullRom == o.catmullRom && splineEnds == o.splineEnds &&
+           startSlope == o.startSlope && endSlope == o.endSlope;
 }
 
 QString endsKey(CatmullRomEnds ends)
@@ -105,6 +106,11 @@ void writeSettings(const CatmullRomSettings& s, QJsonObject& json)
     json.insert(QStringLiteral("parametrization"), spacingKey(s.spacing));
     json.insert(QStringLiteral("bezier"), s.bezier);
     json.insert(QStringLiteral("spline"), s.spline);
+    json.insert(QStringLiteral("catmull_rom"), s.catmullRom);
+    json.insert(QStringLiteral("spline_ends"),
+                QString::fromUtf8(splineEndsName(s.splineEnds).data(), static_cast<int>(splineEndsName(s.splineEnds).size())));
+    json.insert(QStringLiteral("spline_start_slope"), QString::fromStdString(toString(s.startSlope)));
+    json.insert(QStringLiteral("spline_end_slope"), QString::fromStdString(toString(s.endSlope)));
     json.insert(QStringLiteral("compare_ends"), s.compareEnds);
     json.insert(QStringLiteral("all_taus_in_plot"), s.allTausInPlot);
     json.insert(QStringLiteral("curvature_plot"), s.curvaturePlot);
@@ -159,8 +165,27 @@ std::optional<CatmullRomSettings> readSettings(const QJsonObject& json, QString*
             return fail(QStringLiteral("parametrization"));
         s.spacing = *p;
     }
+    const QJsonValue splineEnds = json.value(QStringLiteral("spline_ends"));
+    if (!splineEnds.isUndefined()) {
+        const auto e = parseSplineEnds(splineEnds.toString().toStdString());
+        if (!e)
+            return fail(QStringLiteral("spline_ends"));
+        s.splineEnds = *e;
+    }
+    for (const auto& [key, target] :
+         {std::pair{"spline_start_slope", &s.startSlope}, std::pair{"spline_end_slope", &s.endSlope}}) {
+        const QJsonValue v = json.value(QLatin1String(key));
+        if (v.isUndefined())
+            continue;
+        // An end slope is a number as a tension is: exact text, in the tensions' range.
+        const std::optional<Rational> slope = v.isString() ? parseTension(v.toString()) : std::nullopt;
+        if (!slope)
+            return fail(QLatin1String(key));
+        *target = *slope;
+    }
     const std::pair<const char*, bool*> flags[] = {{"bezier", &s.bezier},
                                                    {"spline", &s.spline},
+                                                   {"catmull_rom", &s.catmullRom},
                                                    {"compare_ends", &s.compareEnds},
                                                    {"all_taus_in_plot", &s.allTausInPlot},
                                                    {"curvature_plot", &s.curvaturePlot}};

@@ -5,6 +5,7 @@
 /// step can hold the settings before and after, and the document can save them.
 
 #include "core/curves/splines/catmull_rom.h"
+#include "core/curves/splines/cubic_spline.h"
 #include "core/exact/rational.h"
 
 #include <QJsonObject>
@@ -32,11 +33,14 @@ struct CatmullRomSettings {
     int selectedTau = 1;                                              ///< the one the slider and the plot follow
     CatmullRomEnds ends = CatmullRomEnds::Open;
     CatmullRomSpacing spacing = CatmullRomSpacing::Uniform;
-    bool bezier = false;        ///< §2.3: the points as a Bézier control polygon too
-    bool spline = false;        ///< Def 2.3: the natural C² cubic spline through the points
-    bool compareEnds = false;   ///< Ex 2.13: the open and cyclic curves side by side
-    bool allTausInPlot = false; ///< Ex 2.12: the blending functions of every τ
-    bool curvaturePlot = false; ///< §2.3: the plot shows κ against arc length instead
+    bool bezier = false;                         ///< §2.3: the points as a Bézier control polygon too
+    bool catmullRom = true;                      ///< the Catmull-Rom curves of the tensions (off: Fig 2.1 shows the spline alone)
+    bool spline = false;                         ///< Def 2.3: the C² cubic spline through the points
+    SplineEnds splineEnds = SplineEnds::Natural; ///< its end conditions (cubic_spline.h)
+    Rational startSlope{0}, endSlope{0};         ///< s′(x_0) and s′(x_k) of clamped ends
+    bool compareEnds = false;                    ///< Ex 2.13: the open and cyclic curves side by side
+    bool allTausInPlot = false;                  ///< Ex 2.12: the blending functions of every τ
+    bool curvaturePlot = false;                  ///< §2.3: the plot shows κ against arc length instead
 
     bool operator==(const CatmullRomSettings& o) const;
     bool operator!=(const CatmullRomSettings& o) const { return !(*this == o); }

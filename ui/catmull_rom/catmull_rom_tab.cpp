@@ -200,6 +200,19 @@ void CatmullRomTab::buildUi()
     m_spacingLabel->setBuddy(m_spacingCombo);
     m_bezierCheck = new QCheckBox(m_curveBox);
     m_splineCheck = new QCheckBox(m_curveBox);
+    m_catmullRomCheck = new QCheckBox(m_curveBox);
+    m_splineEndsLabel = new QLabel(m_curveBox);
+    m_splineEndsCombo = new QComboBox(m_curveBox);
+    for (int i = 0; i < 4; ++i)
+        m_splineEndsCombo->addItem(QString());
+    m_splineEndsLabel->setBuddy(m_splineEndsCombo);
+    m_slopesLabel = new QLabel(m_curveBox);
+    m_startSlopeEdit = new QLineEdit(m_curveBox);
+    m_endSlopeEdit = new QLineEdit(m_curveBox);
+    auto* slopes = new QHBoxLayout;
+    slopes->addWidget(m_startSlopeEdit);
+    slopes->addWidget(m_endSlopeEdit);
+    m_slopesLabel->setBuddy(m_startSlopeEdit);
     m_compareCheck = new QCheckBox(m_curveBox);
     m_curvatureCheck = new QCheckBox(m_curveBox);
     auto* curveLayout = new QGridLayout(m_curveBox);
@@ -207,10 +220,41 @@ void CatmullRomTab::buildUi()
     curveLayout->addWidget(m_endsCombo, 0, 1);
     curveLayout->addWidget(m_spacingLabel, 1, 0);
     curveLayout->addWidget(m_spacingCombo, 1, 1);
-    curveLayout->addWidget(m_bezierCheck, 2, 0, 1, 2);
-    curveLayout->addWidget(m_splineCheck, 3, 0, 1, 2);
-    curveLayout->addWidget(m_compareCheck, 4, 0, 1, 2);
-    curveLayout->addWidget(m_curvatureCheck, 5, 0, 1, 2);
+    curveLayout->addWidget(m_catmullRomCheck, 2, 0, 1, 2);
+    curveLayout->addWidget(m_bezierCheck, 3, 0, 1, 2);
+    curveLayout->addWidget(m_splineCheck, 4, 0, 1, 2);
+    // The spline's own rows, under its check box: their labels do not widen the first column.
+    auto* splineEnds = new QHBoxLayout;
+    splineEnds->addSpacing(20);
+    splineEnds->addWidget(m_splineEndsLabel);
+    splineEnds->addWidget(m_splineEndsCombo, 1);
+    slopes->insertSpacing(0, 20);
+    slopes->insertWidget(1, m_slopesLabel);
+    curveLayout->addLayout(splineEnds, 5, 0, 1, 2);
+    curveLayout->addLayout(slopes, 6, 0, 1, 2);
+    curveLayout->addWidget(m_compareCheck, 7, 0, 1, 2);
+    curveLayout->addWidget(m_curvatureCheck, 8, 0, 1, 2);
+    connect(m_catmullRomCheck, &QCheckBox::toggled, this, [this](bool on) {
+        if (!m_syncing)
+            setCatmullRomVisible(on);
+    });
+    connect(m_splineEndsCombo, &QComboBox::currentIndexChanged, this, [this](int i) {
+        if (!m_syncing && i >= 0)
+            setSplineEnds(static_cast<SplineEnds>(i));
+    });
+    const auto slopeTyped = [this] {
+        if (m_syncing)
+            return;
+        const auto start = parseTension(m_startSlopeEdit->text()), end = parseTension(m_endSlopeEdit->text());
+        if (!start || !end) {
+            refuse(tr("An end slope is a number between −10 and 10, such as 1/2 or -0.25."));
+            syncControls(); // back to the slopes in use
+            return;
+        }
+        setSplineSlopes(*start, *end);
+    };
+    connect(m_startSlopeEdit, &QLineEdit::editingFinished, this, slopeTyped);
+    connect(m_endSlopeEdit, &QLineEdit::editingFinished, this, slopeTyped);
     curveLayout->setColumnStretch(1, 1);
     connect(m_endsCombo, &QComboBox::currentIndexChanged, this, [this](int i) {
         if (!m_syncing && i >= 0)
@@ -357,6 +401,21 @@ void CatmullRomTab::retranslate()
     m_splineCheck->setToolTip(tr("Draw the natural C² cubic spline of Def 2.3 through the same points (a function of "
                                  "x: the abscissae must increase) and check its continuity at the knots: Bézier C^∞, "
                                  "Catmull-Rom C¹, cubic spline C² (§2.3, Ex 2.1)."));
+    m_catmullRomCheck->setText(tr("Cat&mull-Rom curves"));
+    m_catmullRomCheck->setToolTip(tr("Draw the Catmull-Rom curve of each tension. Hide them to see the cubic spline alone, "
+                                     "as Fig 2.1 shows Ex 2.1's."));
+    m_splineEndsLabel->setText(tr("Spline e&nds:"));
+    m_splineEndsCombo->setItemText(0, tr("Natural (s″ = 0)"));
+    m_splineEndsCombo->setItemText(1, tr("Clamped (slopes)"));
+    m_splineEndsCombo->setItemText(2, tr("Not-a-knot"));
+    m_splineEndsCombo->setItemText(3, tr("As Ex 2.1"));
+    m_splineEndsCombo->setToolTip(tr("Def 2.3 leaves two degrees of freedom; the ends fix them. Natural: s″ = 0 at both "
+                                     "ends. Clamped: the end slopes are given. Not-a-knot: the first two pieces are one "
+                                     "cubic, and so are the last two. As Ex 2.1: the first piece is a parabola (s₁‴ = 0) "
+                                     "and the last has no x² term — the ends that give Ex 2.1's pieces."));
+    m_slopesLabel->setText(tr("End s&lopes:"));
+    m_startSlopeEdit->setToolTip(tr("s′(x₀), the slope at the first point (clamped ends)"));
+    m_endSlopeEdit->setToolTip(tr("s′(xₖ), the slope at the last point (clamped ends)"));
     m_compareCheck->setText(tr("Compare open and &cyclic ends"));
     m_compareCheck->setToolTip(tr("Also draw (dashed) and list the curve with the other end mode, as Ex 2.13 compares "
                                   "the cyclic and the open curve through the same points."));
@@ -434,6 +493,15 @@ void CatmullRomTab::syncControls()
     m_spacingCombo->setCurrentIndex(static_cast<int>(m_settings.spacing));
     m_bezierCheck->setChecked(m_settings.bezier);
     m_splineCheck->setChecked(m_settings.spline);
+    m_catmullRomCheck->setChecked(m_settings.catmullRom);
+    m_splineEndsCombo->setCurrentIndex(static_cast<int>(m_settings.splineEnds));
+    m_splineEndsCombo->setEnabled(m_settings.spline);
+    m_splineEndsLabel->setEnabled(m_settings.spline);
+    const bool clamped = m_settings.spline && m_settings.splineEnds == SplineEnds::Clamped;
+    m_startSlopeEdit->setText(tauString(m_settings.startSlope));
+    m_endSlopeEdit->setText(tauString(m_settings.endSlope));
+    for (QWidget* w : std::initializer_list<QWidget*>{m_slopesLabel, m_startSlopeEdit, m_endSlopeEdit})
+        w->setVisible(clamped);
     m_compareCheck->setChecked(m_settings.compareEnds);
     m_allTausCheck->setChecked(m_settings.allTausInPlot);
     m_allTausCheck->setEnabled(!m_settings.curvaturePlot); // the blending functions only
@@ -569,6 +637,28 @@ void CatmullRomTab::setSplineVisible(bool on)
     CatmullRomSettings after = m_settings;
     after.spline = on;
     changeSettings(after, on ? tr("Show the cubic spline") : tr("Hide the cubic spline"));
+}
+
+void CatmullRomTab::setSplineEnds(SplineEnds ends)
+{
+    CatmullRomSettings after = m_settings;
+    after.splineEnds = ends;
+    changeSettings(after, tr("Change the spline's ends"));
+}
+
+void CatmullRomTab::setSplineSlopes(const Rational& start, const Rational& end)
+{
+    CatmullRomSettings after = m_settings;
+    after.startSlope = start;
+    after.endSlope = end;
+    changeSettings(after, tr("Change the spline's end slopes"));
+}
+
+void CatmullRomTab::setCatmullRomVisible(bool on)
+{
+    CatmullRomSettings after = m_settings;
+    after.catmullRom = on;
+    changeSettings(after, on ? tr("Show the Catmull-Rom curves") : tr("Hide the Catmull-Rom curves"));
 }
 
 void CatmullRomTab::setCompareEnds(bool on)
@@ -792,9 +882,11 @@ QRectF CatmullRomTab::contentBounds() const
             }
     };
     for (const auto& c : m_scene.curves)
-        include(c.samples);
+        if (m_settings.catmullRom)
+            include(c.samples);
     for (const auto& c : m_scene.otherEnds)
-        include(c.samples);
+        if (m_settings.catmullRom)
+            include(c.samples);
     include(m_scene.spline);
     include(m_scene.bezier);
     return QRectF(QPointF(x0, y0), QPointF(x1, y1));
@@ -828,6 +920,8 @@ void CatmullRomTab::drawCurves(QPainter& p, const ViewTransform& view, const Can
         p.setPen(QPen(kSplineColor, style.lineWidth(), Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
         drawBezierSegments(p, view, m_scene.splineBezier);
     }
+    if (!m_settings.catmullRom)
+        return;
     for (std::size_t i = 0; i < m_scene.otherEnds.size(); ++i) {
         p.setPen(QPen(CanvasStyle::series(static_cast<int>(i)), style.lineWidth() * 0.75, Qt::DashLine));
         drawBezierSegments(p, view, m_scene.otherEnds[i].bezier);
@@ -844,12 +938,12 @@ void CatmullRomTab::drawLegend(QPainter& p, const ViewTransform& view, const Can
 {
     CanvasLegend legend;
     legend.alertColor = kErrorColor;
-    for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
+    for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.curves.size(); ++i) {
         const auto& c = m_scene.curves[i];
         legend.entries.push_back({CanvasStyle::series(static_cast<int>(i)), c.error.isEmpty() ? Qt::SolidLine : Qt::NoPen,
                                   QStringLiteral("τ = %1").arg(tauString(c.tau))});
     }
-    if (!m_scene.otherEnds.empty())
+    if (m_settings.catmullRom && !m_scene.otherEnds.empty())
         legend.entries.push_back({QColor(0x77, 0x77, 0x77), Qt::DashLine,
                                   tr("dashed: %1 ends").arg(CatmullRomReport::endsName(comparedEnds(m_settings.ends)))});
     if (!m_scene.bezier.empty())
@@ -874,6 +968,8 @@ bool CatmullRomTab::loadExample(const WorkedExample& example)
     s.spacing = CatmullRomSpacing::Uniform;
     s.bezier = false;
     s.spline = false;
+    s.catmullRom = true;
+    s.splineEnds = SplineEnds::Natural;
     s.compareEnds = false;
     s.allTausInPlot = false;
     auto useTaus = [&s](const std::vector<Rational>& taus) {
@@ -890,6 +986,9 @@ bool CatmullRomTab::loadExample(const WorkedExample& example)
         useTaus({frac(1, 2)});
         s.ends = CatmullRomEnds::Open;
         s.spline = true;
+        // Fig 2.1: Ex 2.1's own spline, whose ends are not natural, alone.
+        s.splineEnds = SplineEnds::AsEx21;
+        s.catmullRom = false;
     } else if (example.kind == "catmull-rom-segment") { // Ex 2.11
         points = toDouble(example.points);
         if (!useTaus(example.taus))
@@ -1020,9 +1119,9 @@ void CatmullRomTab::drawTikz(TikzWriter& w) const
     // The Catmull-Rom segments and the spline's pieces are cubics: written as Bézier segments.
     if (!m_scene.splineBezier.empty())
         w.bezierSegments(m_scene.splineBezier, kSplineColor, 1.0);
-    for (std::size_t i = 0; i < m_scene.otherEnds.size(); ++i)
+    for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.otherEnds.size(); ++i)
         w.bezierSegments(m_scene.otherEnds[i].bezier, CanvasStyle::series(static_cast<int>(i)), 0.8, true);
-    for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
+    for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.curves.size(); ++i) {
         w.comment(QStringLiteral("tau = %1").arg(tauString(m_scene.curves[i].tau)));
         w.bezierSegments(m_scene.curves[i].bezier, CanvasStyle::series(static_cast<int>(i)), 1.2);
     }

@@ -56,6 +56,12 @@ public:
     void setSpacing(CatmullRomSpacing spacing);
     void setBezierVisible(bool on);
     void setSplineVisible(bool on);
+    /// The cubic spline's end conditions (Def 2.3; cubic_spline.h), and the end slopes of
+    /// clamped ends.
+    void setSplineEnds(SplineEnds ends);
+    void setSplineSlopes(const Rational& start, const Rational& end);
+    /// The Catmull-Rom curves of the tensions shown or hidden (Fig 2.1 shows the spline alone).
+    void setCatmullRomVisible(bool on);
     void setCompareEnds(bool on);
     void setAllTausInPlot(bool on);
     void setCurvaturePlot(bool on);
@@ -111,6 +117,12 @@ private:
     QComboBox* m_spacingCombo = nullptr;
     QCheckBox* m_bezierCheck = nullptr;
     QCheckBox* m_splineCheck = nullptr;
+    QCheckBox* m_catmullRomCheck = nullptr;
+    QLabel* m_splineEndsLabel = nullptr;
+    QComboBox* m_splineEndsCombo = nullptr;
+    QLabel* m_slopesLabel = nullptr;
+    QLineEdit* m_startSlopeEdit = nullptr;
+    QLineEdit* m_endSlopeEdit = nullptr;
     QCheckBox* m_compareCheck = nullptr;
     QCheckBox* m_allTausCheck = nullptr;
     QCheckBox* m_curvatureCheck = nullptr;
