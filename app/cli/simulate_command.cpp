@@ -42,17 +42,16 @@ Expected<RecordedRun> runFromArguments(const Arguments& args, long* steps)
         auto text = readBoundedFile(*replay, kMaxFileBytes);
         if (!text)
             return text.error();
-        auto doc = Json::parse(*text);
-        if (!doc)
-            return makeError(ErrorCode::InvalidInput, quotedForDisplay(*replay) + " is not JSON: " + doc.error().message);
-        auto recording = recordingFromJson(*doc);
+        bool notJson = false;
+        auto recording = recordingFromText(*text, &notJson); // the events streamed, not held as Json
         if (!recording)
-            return makeError(ErrorCode::InvalidInput, quotedForDisplay(*replay) + ": " + recording.error().message);
+            return makeError(ErrorCode::InvalidInput,
+                             quotedForDisplay(*replay) + (notJson ? " is not JSON: " : ": ") + recording.error().message);
         if (recording->steps > kMaxSteps)
             return makeError(ErrorCode::OutOfRange, "the recording has " + std::to_string(recording->steps) +
                                                         " steps, more than simulate runs (" + std::to_string(kMaxSteps) + ")");
         *steps = recording->steps;
-        return RecordedRun::load(*recording, kNoSnapshots);
+        return RecordedRun::load(std::move(recording).value(), kNoSnapshots);
     }
     auto chosen = sceneAndSolverFromArguments(args);
     if (!chosen)
