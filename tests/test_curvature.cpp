@@ -176,6 +176,8 @@ private slots:
         const CurvatureAt c = curvatureAt(p, 0.5);
         QCOMPARE(c.tangent.x, 5.25);
         QCOMPARE(c.tangent.y, 0.0);
+        QVERIFY(c.exact);
+        QVERIFY(!curvatureAt(p, 0.25).exact); // where the doubles tell, they answer
         QVERIFY(c.curvature);
         QVERIFY2(std::fabs(*c.curvature - kappa) <= 1e-14 * std::fabs(kappa), qPrintable(QString::number(*c.curvature)));
         QVERIFY(c.normal);

@@ -582,6 +582,7 @@ private slots:
         const QString text = tab.exactPanel()->plainText();
         QVERIFY2(!text.contains(QStringLiteral("undefined")) && !text.contains(QStringLiteral("cusp")), qPrintable(text));
         QVERIFY2(text.contains(QStringLiteral("κ(t) = ")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("c′(t) = (5.25, 0)")), qPrintable(text)); // not the triangle's (0, 0)
         QVERIFY2(!tab.readout().contains(QStringLiteral("undefined")), qPrintable(tab.readout()));
     }
 

@@ -45,6 +45,7 @@ double scaled(double m, long e)
 /// c′(t) from 0 (exact_hodograph.h).
 void fromExact(CurvatureAt& out, const RPoint& v, const RPoint& a)
 {
+    out.exact = true;
     out.tangent = Point(toDouble(v.x), toDouble(v.y));
     // The unit tangent from v scaled by a power of two into the range of doubles.
     const Binary bx = binary(v.x), by = binary(v.y);

@@ -37,6 +37,10 @@ struct CurvatureAt {
     std::optional<double> curvature; ///< signed κ; nullopt where c′ = 0
     std::optional<double> radius;    ///< 1/|κ|; nullopt where κ = 0 or undefined
     std::optional<Point> center;     ///< point + normal/κ; nullopt likewise
+    /// c′ and c″ came from the control points taken exactly (exact_hodograph.h): the doubles
+    /// could not tell c′ from 0, and tangent is the exact c′ rounded (De Casteljau's triangle
+    /// in doubles gives rounding noise there).
+    bool exact = false;
 };
 
 /// Everything above at t (t is clamped to [0, 1]). P must not be empty.
