@@ -252,8 +252,11 @@ Expected<Recording> recordingFromText(std::string_view text, bool* notJson)
     std::optional<EventListReader> reader;
     reader.emplace();
     // Room for every event at once, rather than a vector growing to twice its size: each
-    // row has a '[' (so does every other array, and a string may hold some: an upper bound).
-    reader->reserve(static_cast<std::size_t>(std::count(text.begin(), text.end(), '[')));
+    // row has a '[' (so does every other array, and a string may hold some: an upper bound),
+    // and takes at least 13 bytes ([0,"release"]), which bounds it for text of nothing but '['.
+    constexpr std::size_t kShortestRow = 13;
+    reader->reserve(
+        std::min(static_cast<std::size_t>(std::count(text.begin(), text.end(), '[')), text.size() / kShortestRow + 1));
     Json::ElementSink sink;
     sink.key = "events";
     bool started = false;
