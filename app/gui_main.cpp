@@ -1,11 +1,13 @@
 // granota: the desktop application (docs/tabs.md, docs/classroom.md).
 #include "core/softbody/scenes/scene.h"
+#include "ui/fit/fit_tab.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_plot_panel.h"
 #include "ui/frog/frog_tab.h"
 #include "ui/shell/exporter.h"
 #include "ui/shell/language.h"
 #include "ui/shell/main_window.h"
+#include "ui/shell/tab_page.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
@@ -218,6 +220,9 @@ int main(int argc, char* argv[])
         window.show();
         for (int i = 0; i < 5; ++i) // let layouts settle and the frog canvas draw a few frames
             QApplication::processEvents();
+        // A long fit runs in the background: the picture of the Fitting tab shows it finished.
+        if (auto* fit = qobject_cast<granota::ui::FitTab*>(window.currentTab()))
+            fit->finishFit();
         const QString file = parser.value(screenshotOption);
         // Replaces the file whole (ui/shell/exporter.h): a full disk keeps the old one.
         if (const QString error = granota::ui::writePngFile(window.grab().toImage(), file); !error.isEmpty())

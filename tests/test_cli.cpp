@@ -1,6 +1,7 @@
 // granota-cli against the contract of docs/cli.md: JSON keys, exact output of the thesis's
 // examples, and exit status 2 with "error:" on stderr for every kind of bad input.
 #include "cli_runner.h"
+#include "core/curves/fitting/least_squares_fit.h"
 
 #include <QtTest>
 #include "tests/test_main.h"
@@ -421,6 +422,35 @@ private slots:
         const Run help = cli({"fit", "--help"});
         QCOMPARE(help.exitCode, 0);
         QVERIFY2(help.out.contains(m.captured(0).toUtf8()), help.out.constData());
+    }
+
+    // fit --iterate is bounded (kMaxCliFitWork, least_squares_fit.h): 4 000 points at degree
+    // 100 with its 50 corrections are (1 + 50) · 4000 · 101² ≈ 2.1e9 units, refused at once
+    // with exit 2 and what to lower; before, it ran for minutes. Without --iterate, and at a
+    // lower degree, the same points are fitted.
+    void fitIterateIsBounded()
+    {
+        QTemporaryDir dir;
+        QString csv;
+        for (int i = 0; i < 4000; ++i) {
+            const double s = i / 3999.0;
+            csv += QString("%1,%2\n").arg(std::cos(5 * s) + s, 0, 'g', 17).arg(std::sin(4 * s) - s * s, 0, 'g', 17);
+        }
+        const QString file = writeFile(dir, "many.csv", csv.toUtf8());
+        QVERIFY(!file.isEmpty());
+        const double work = 51.0 * 4000 * 101 * 101;
+        QVERIFY(work > granota::kMaxCliFitWork);
+        const Run refused = cli({"fit", "--points-file", file, "--degree", "100", "--iterate"});
+        QCOMPARE(refused.exitCode, 2);
+        QVERIFY2(refused.err.startsWith("error: --iterate on 4000 points at degree 100 is too much work"),
+                 refused.err.constData());
+        QVERIFY2(refused.err.contains("lower the degree"), refused.err.constData());
+        QCOMPARE(refused.err.count('\n'), 1);
+        QVERIFY(refused.out.isEmpty());
+        const Run plain = cli({"fit", "--points-file", file, "--degree", "100", "--json"});
+        QVERIFY2(plain.exitCode == 0, plain.err.constData());
+        const Run lower = cli({"fit", "--points-file", file, "--degree", "5", "--iterate", "--json"});
+        QVERIFY2(lower.exitCode == 0, lower.err.constData());
     }
 
     // Text from the user inside a message has its control characters escaped: an ESC in a

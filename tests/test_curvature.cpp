@@ -159,6 +159,36 @@ private slots:
         QVERIFY(std::abs(*near.curvature) > 1e3);
     }
 
+    // Control points near ±1e308 whose c′(1/2) is small: (−1e308, 0), (1e308, 1e308),
+    // (0, 1e308), (7, 0). c′(1/2) = 3/4 (P_3 + P_2 − P_1 − P_0) = (21/4, 0) exactly (the big
+    // terms cancel), but a double rounds it by about 1e292: the floating test called it a
+    // cusp (κ undefined). The expected values are the Rational ones of exactCurvatureAt:
+    // |c′|³ = (21/4)³ since c′ is (21/4, 0), so κ = (x′y″ − y′x″)/(21/4)³.
+    void smallTangentAmongHugePoints()
+    {
+        const std::vector<Point> p{{-1e308, 0}, {1e308, 1e308}, {0, 1e308}, {7, 0}};
+        const Rational half = frac(1, 2);
+        const ExactCurvature e = exactCurvatureAt(toRational(p), half);
+        QCOMPARE(e.speedSquared, Rational(frac(21, 4) * frac(21, 4)));
+        const Rational cubed = frac(21, 4) * frac(21, 4) * frac(21, 4);
+        const double kappa = toDouble(Rational(e.numerator / cubed));
+        QVERIFY(kappa < -1e307 && std::isfinite(kappa)); // −6e308 · 16/441 ≈ −2.2e307
+        const CurvatureAt c = curvatureAt(p, 0.5);
+        QCOMPARE(c.tangent.x, 5.25);
+        QCOMPARE(c.tangent.y, 0.0);
+        QVERIFY(c.exact);
+        QVERIFY(!curvatureAt(p, 0.25).exact); // where the doubles tell, they answer
+        QVERIFY(c.curvature);
+        QVERIFY2(std::fabs(*c.curvature - kappa) <= 1e-14 * std::fabs(kappa), qPrintable(QString::number(*c.curvature)));
+        QVERIFY(c.normal);
+        QCOMPARE(c.normal->x, 0.0); // left of (21/4, 0): (0, 1)
+        QCOMPARE(c.normal->y, 1.0);
+        QVERIFY(c.radius && *c.radius > 0 && std::isfinite(*c.radius));
+        // An exact zero stays a cusp: the curve of cusp() scaled to the same size.
+        const std::vector<Point> q{{0, 0}, {1e308, 1e308}, {0, 1e308}, {1e308, 0}};
+        QVERIFY(!curvatureAt(q, 0.5).curvature);
+    }
+
     // Coincident end control points: c′(0) = 0 (κ undefined there), defined inside.
     // A single repeated point: nothing is defined.
     void coincidentPoints()

@@ -98,6 +98,25 @@ private slots:
         QCOMPARE(f.bbox.max.y, 0.75);
     }
 
+    // Control points near ±1e308 (test_curvature's smallTangentAmongHugePoints): y′ = 0 at
+    // t = 1/2 and x′ nearly so, but c′(1/2) = (21/4, 0) exactly, and x′ and y′ never vanish
+    // together (y′ = 3e308 (1 − 2t) is 0 only at 1/2): no cusp. Before, n (P_1 − P_0) = 6e308
+    // overflowed to infinity and every zero of x′ or y′ passed for a cusp. The same shape
+    // with an exact cusp (cuspAtOneHalf scaled by 1e308) keeps it.
+    void noFalseCuspNearTheLargestDoubles()
+    {
+        const std::vector<Point> P{{-1e308, 0}, {1e308, 1e308}, {0, 1e308}, {7, 0}};
+        const auto f = curveFeatures(P);
+        QVERIFY(f.cusps.empty());
+        QVERIFY(cuspParameters(P).empty());
+        QVERIFY(!f.stationary);
+        QCOMPARE(f.extremaY, std::vector<double>{0.5});
+        const std::vector<Point> Q{{0, 0}, {1e308, 1e308}, {0, 1e308}, {1e308, 0}};
+        QCOMPARE(curveFeatures(Q).cusps, std::vector<double>{0.5});
+        QCOMPARE(cuspParameters(Q), std::vector<double>{0.5});
+        QVERIFY(curveFeatures(Q).inflections.empty());
+    }
+
     void coincidentEndPointsAreCusps()
     {
         const std::vector<Point> P{{0, 0}, {0, 0}, {1, 2}, {3, 1}, {3, 1}};

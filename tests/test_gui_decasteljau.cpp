@@ -556,6 +556,36 @@ private slots:
         QVERIFY2(!again.contains(QStringLiteral("too large")) && again.contains(QStringLiteral("c′(t) = ")), qPrintable(again));
     }
 
+    // Control points near ±1e308 with a small c′(1/2): (−1e308, 0), (1e308, 1e308), (0, 1e308),
+    // (7, 0). Exactly, c′(1/2) = 3/4 (P_3 + P_2 − P_1 − P_0) = (21/4, 0) (computed below with
+    // Rationals, independently of the tab): no cusp. The doubles round c′ by about 1e292, and
+    // the panel said "κ(t) undefined: c′(t) = 0 (a cusp …)"; the cusp markers likewise.
+    void noFalseCuspNearTheLargestDoubles()
+    {
+        const std::vector<Point> points{{-1e308, 0}, {1e308, 1e308}, {0, 1e308}, {7, 0}};
+        std::vector<granota::RPoint> exact;
+        for (const Point& p : points)
+            exact.emplace_back(granota::exactRational(p.x), granota::exactRational(p.y));
+        const granota::Rational three(3), four(4);
+        const granota::Rational x = three / four * (exact[3].x + exact[2].x - exact[1].x - exact[0].x);
+        const granota::Rational y = three / four * (exact[3].y + exact[2].y - exact[1].y - exact[0].y);
+        QCOMPARE(x, granota::frac(21, 4));
+        QCOMPARE(y, granota::Rational(0));
+        DeCasteljauTab tab;
+        tab.setInflectionsVisible(true);
+        tab.setT(0.5);
+        tab.pointEditor()->setPoints(points, QStringLiteral("huge"));
+        QVERIFY(tab.curvatureAtT().curvature);
+        QCOMPARE(tab.curvatureAtT().tangent.x, 5.25);
+        QCOMPARE(tab.curvatureAtT().tangent.y, 0.0);
+        QVERIFY(tab.features().cusps.empty());
+        const QString text = tab.exactPanel()->plainText();
+        QVERIFY2(!text.contains(QStringLiteral("undefined")) && !text.contains(QStringLiteral("cusp")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("κ(t) = ")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("c′(t) = (5.25, 0)")), qPrintable(text)); // not the triangle's (0, 0)
+        QVERIFY2(!tab.readout().contains(QStringLiteral("undefined")), qPrintable(tab.readout()));
+    }
+
     // "1/3" typed in the spin box is t = 1/3 exactly, not 0.333.
     void typedFractionIsExact()
     {

@@ -18,6 +18,16 @@
 using namespace granota;
 Q_DECLARE_METATYPE(SolverKind)
 
+// Address-space limits do not work under AddressSanitizer (it reserves terabytes of shadow
+// memory): there the memory test runs without its limit.
+#if defined(__SANITIZE_ADDRESS__)
+#define GRANOTA_TEST_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define GRANOTA_TEST_ASAN 1
+#endif
+#endif
+
 namespace {
 
 SceneSpec scene(const std::string& name)
@@ -467,6 +477,110 @@ private slots:
         QVERIFY(!parsed.ok());
         QVERIFY2(QString::fromStdString(parsed.error().message).contains(message), parsed.error().message.c_str());
         QVERIFY(QString::fromStdString(parsed.error().message).startsWith("recording: "));
+        // The streaming reader (the CLI's) refuses it with the same words.
+        bool notJson = true;
+        auto streamed = recordingFromText(doc.dump(), &notJson);
+        QVERIFY(!streamed.ok() && !notJson);
+        QCOMPARE(streamed.error().message, parsed.error().message);
+    }
+
+    // recordingFromText streams the events instead of holding them as Json: the same
+    // recording, or the same first error, as recordingFromJson(Json::parse(text)), whatever
+    // the order of the keys ("steps" after "events", so the steps are learnt last), with
+    // an event beyond the steps before or after another bad event, and a repeated key.
+    void streamingReaderAgreesWithTheTree_data()
+    {
+        QTest::addColumn<QString>("tail");
+        const QString events = R"("events": [[0, "press", 1, 2], [3, "move", 4, 5], [9, "release"], [9, "substeps", 4]])";
+        QTest::newRow("steps first") << R"("steps": 9, )" + events;
+        QTest::newRow("steps last") << events + R"(, "steps": 9)";
+        QTest::newRow("beyond the steps") << events + R"(, "steps": 5)";
+        QTest::newRow("beyond, then bad kind") << R"("events": [[7, "move", 1, 2], [8, "jump"]], "steps": 5)";
+        QTest::newRow("bad kind, then beyond") << R"("events": [[1, "jump"], [8, "move", 1, 2]], "steps": 5)";
+        QTest::newRow("out of order") << R"("events": [[3, "move", 1, 2], [2, "release"]], "steps": 5)";
+        QTest::newRow("step not whole") << R"("events": [[1.5, "release"]], "steps": 5)";
+        QTest::newRow("repeated events key") << R"("events": [[1, "jump"]], "steps": 5, "events": [[2, "release"]])";
+        QTest::newRow("events not an array") << R"("steps": 5, "events": {"a": 1})";
+        QTest::newRow("no events") << R"("steps": 5)";
+        QTest::newRow("no steps") << events;
+        QTest::newRow("nested") << R"("steps": 5, "events": [[1, "move", [1], 2]])";
+    }
+    void streamingReaderAgreesWithTheTree()
+    {
+        QFETCH(QString, tail);
+        const std::string head = R"({"format": "granota-recording", "version": 1, "scene": )" +
+                                 sceneToJson(scene("frog")).dump() + R"(, "solver": "seed", )";
+        const std::string text = head + tail.toStdString() + "}";
+        const auto tree = Json::parse(text);
+        QVERIFY(tree.ok());
+        const auto expected = recordingFromJson(*tree);
+        const auto streamed = recordingFromText(text);
+        QCOMPARE(streamed.ok(), expected.ok());
+        if (expected.ok()) {
+            QCOMPARE(streamed->steps, expected->steps);
+            QVERIFY(streamed->events == expected->events);
+        } else {
+            QCOMPARE(streamed.error().message, expected.error().message);
+        }
+        bool notJson = false;
+        QVERIFY(!recordingFromText(text.substr(0, text.size() - 1), &notJson).ok());
+        QVERIFY(notJson);
+    }
+
+    // A recording of a million events (24 MB of text; the issue's had 2.4 million in 55 MB)
+    // replays under a 300 MB address-space limit: the events are streamed into InputEvents
+    // (40 bytes each) instead of being held as a Json tree first (some 300 bytes each). Before,
+    // the replay needed more than 400 MB of address space ("error: not enough memory" at
+    // 400 MB; docs/extreme-cases.md has the figures). The replay is still the run itself: the
+    // trace's last row is the one of the same recording stepped here.
+    void aMillionEventsReplayInBoundedMemory()
+    {
+        constexpr long kEvents = 1000000, kPerStep = 1000;
+        Recording r;
+        r.scene = scene("frog");
+        r.solver = SolverKind::Seed;
+        r.steps = kEvents / kPerStep;
+        r.events.reserve(kEvents);
+        {
+            auto start = RecordedRun::start(r.scene, r.solver);
+            r.events.push_back({0, InputKind::Press, centroid(start->simulation())});
+        }
+        for (long i = 1; i + 1 < kEvents; ++i)
+            r.events.push_back({i / kPerStep, InputKind::Move, Point(600 + double(i % 97) * 0.75, 300 + double(i % 89) * 0.5)});
+        r.events.push_back({r.steps, InputKind::Release, Point()});
+        QTemporaryDir dir;
+        const QString file = dir.filePath("million.json"), trace = dir.filePath("trace.csv");
+        {
+            QFile f(file);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QByteArray::fromStdString(recordingToJson(r).dump()));
+        }
+        // Expected: the same recording stepped here.
+        auto replay = RecordedRun::load(r, static_cast<int>(kMaxRecordedSteps));
+        QVERIFY(replay.ok());
+        for (long step = 0; step < r.steps; ++step)
+            replay->step();
+        const QByteArray last = QByteArray::fromStdString(simulationTraceRow(replay->simulation()));
+        r.events = {};
+
+        QProcess p;
+        QStringList args{QStringLiteral("simulate"), QStringLiteral("--replay"), file, QStringLiteral("--trace"), trace};
+#ifdef GRANOTA_TEST_ASAN
+        p.start(QStringLiteral(GRANOTA_CLI_PATH), args);
+#else
+        constexpr int kLimitKiB = 300 * 1024;
+        args.prepend(QStringLiteral(GRANOTA_CLI_PATH));
+        args.prepend(QStringLiteral("ulimit -v %1 && exec \"$0\" \"$@\"").arg(kLimitKiB));
+        args.prepend(QStringLiteral("-c"));
+        p.start(QStringLiteral("/bin/bash"), args);
+#endif
+        QVERIFY(p.waitForFinished(300000)); // a hang guard only
+        QVERIFY2(p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0, p.readAllStandardError().constData());
+        QFile t(trace);
+        QVERIFY(t.open(QIODevice::ReadOnly));
+        const QList<QByteArray> rows = t.readAll().trimmed().split('\n');
+        QCOMPARE(rows.size(), int(r.steps) + 2); // the header and a row for each step from 0
+        QCOMPARE(rows.back(), last);
     }
 
     // granota-cli: --record writes a run, --replay runs a recording (the GUI's, with its

@@ -2224,6 +2224,34 @@ a cada canvi alentiria la finestra.</translation>
             <source>Fitting</source>
             <translation>Ajust</translation>
         </message>
+        <message>
+            <source>Cancel</source>
+            <translation>Cancel·la</translation>
+        </message>
+        <message>
+            <source>Stop correcting the parameters: the curve shown is then the best fit found so far.</source>
+            <translation>Deixa de corregir els paràmetres: la corba que es mostra és llavors el millor ajust trobat fins ara.</translation>
+        </message>
+        <message>
+            <source>Cancelling: the fit stops after the correction under way…</source>
+            <translation>S&apos;està cancel·lant: l&apos;ajust s&apos;atura després de la correcció en curs…</translation>
+        </message>
+        <message>
+            <source>Fitting in the background: %1 of at most %2 parameter corrections made…</source>
+            <translation>S&apos;està ajustant en segon pla: %1 de com a molt %2 correccions dels paràmetres fetes…</translation>
+        </message>
+        <message>
+            <source>Fitting in the background…</source>
+            <translation>S&apos;està ajustant en segon pla…</translation>
+        </message>
+        <message>
+            <source>Cancelled after %1 of at most %2 parameter corrections: the curve shown is the best fit found until then.</source>
+            <translation>Cancel·lat després de %1 de com a molt %2 correccions dels paràmetres: la corba que es mostra és el millor ajust trobat fins llavors.</translation>
+        </message>
+        <message>
+            <source>Fit cancelled: the curve shown is the best fit found so far.</source>
+            <translation>Ajust cancel·lat: la corba que es mostra és el millor ajust trobat fins ara.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::FrogCanvas</name>

@@ -2224,6 +2224,34 @@ on each change would slow the window.</translation>
             <source>Fitting</source>
             <translation>Fitting</translation>
         </message>
+        <message>
+            <source>Cancel</source>
+            <translation>Cancel</translation>
+        </message>
+        <message>
+            <source>Stop correcting the parameters: the curve shown is then the best fit found so far.</source>
+            <translation>Stop correcting the parameters: the curve shown is then the best fit found so far.</translation>
+        </message>
+        <message>
+            <source>Cancelling: the fit stops after the correction under way…</source>
+            <translation>Cancelling: the fit stops after the correction under way…</translation>
+        </message>
+        <message>
+            <source>Fitting in the background: %1 of at most %2 parameter corrections made…</source>
+            <translation>Fitting in the background: %1 of at most %2 parameter corrections made…</translation>
+        </message>
+        <message>
+            <source>Fitting in the background…</source>
+            <translation>Fitting in the background…</translation>
+        </message>
+        <message>
+            <source>Cancelled after %1 of at most %2 parameter corrections: the curve shown is the best fit found until then.</source>
+            <translation>Cancelled after %1 of at most %2 parameter corrections: the curve shown is the best fit found until then.</translation>
+        </message>
+        <message>
+            <source>Fit cancelled: the curve shown is the best fit found so far.</source>
+            <translation>Fit cancelled: the curve shown is the best fit found so far.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::FrogCanvas</name>

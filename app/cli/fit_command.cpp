@@ -72,6 +72,16 @@ Expected<CommandOutput> run(const Arguments& args)
     auto doublePoints = finiteDoubles(*points, false);
     if (!doublePoints)
         return doublePoints.error();
+    // The corrections project every point and refit, up to maxCorrections times: bounded,
+    // so that a large --iterate is refused at once rather than run for hours.
+    if (const double work = fitWork(doublePoints->size(), *degree, iterate, options.maxCorrections);
+        iterate && work > kMaxCliFitWork)
+        return makeError(ErrorCode::OutOfRange, "--iterate on " + std::to_string(doublePoints->size()) + " points at degree " +
+                                                    std::to_string(*degree) + " is too much work: (1 + " +
+                                                    std::to_string(options.maxCorrections) +
+                                                    " corrections) × points × (degree + 1)² = " + formatSignificant(work, 3) +
+                                                    ", more than " + formatSignificant(kMaxCliFitWork, 2) +
+                                                    "; lower the degree or the number of points, or leave out --iterate");
     auto fit = fitBezier(*doublePoints, options);
     if (!fit)
         return fit.error();

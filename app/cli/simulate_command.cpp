@@ -42,21 +42,19 @@ Expected<RecordedRun> runFromArguments(const Arguments& args, long* steps)
         auto text = readBoundedFile(*replay, kMaxFileBytes);
         if (!text)
             return text.error();
-        auto doc = Json::parse(*text);
-        if (!doc) {
-            std::string why = doc.error().message; // "JSON: …", said once
-            if (why.rfind("JSON: ", 0) == 0)
-                why.erase(0, 6);
-            return makeError(ErrorCode::InvalidInput, quotedForDisplay(*replay) + " is not JSON: " + why);
+        bool notJson = false;
+        auto recording = recordingFromText(*text, &notJson); // the events streamed, not held as Json
+        if (!recording) {
+            std::string why = recording.error().message;
+            if (notJson && why.rfind("JSON: ", 0) == 0)
+                why.erase(0, 6); // "JSON: …", said once
+            return makeError(ErrorCode::InvalidInput, quotedForDisplay(*replay) + (notJson ? " is not JSON: " : ": ") + why);
         }
-        auto recording = recordingFromJson(*doc);
-        if (!recording)
-            return makeError(ErrorCode::InvalidInput, quotedForDisplay(*replay) + ": " + recording.error().message);
         if (recording->steps > kMaxSteps)
             return makeError(ErrorCode::OutOfRange, "the recording has " + std::to_string(recording->steps) +
                                                         " steps, more than simulate runs (" + std::to_string(kMaxSteps) + ")");
         *steps = recording->steps;
-        return RecordedRun::load(*recording, kNoSnapshots);
+        return RecordedRun::load(std::move(recording).value(), kNoSnapshots);
     }
     auto chosen = sceneAndSolverFromArguments(args);
     if (!chosen)

@@ -229,7 +229,10 @@ private:
 /// Builds Json values from nlohmann's parsing events; refuses too deep nesting and numbers
 /// beyond a double, and turns every error into one of ours.
 struct Json::Reader final : nlohmann::json_sax<nlohmann::json> {
-    Reader(std::string_view text, const std::size_t& taken) : m_text(text), m_taken(taken) {}
+    Reader(std::string_view text, const std::size_t& taken, const ElementSink* sink = nullptr)
+        : m_text(text), m_taken(taken), m_sink(sink)
+    {
+    }
 
     bool null() override { return add(Json()); }
     bool boolean(bool b) override { return add(Json(b)); }
@@ -261,6 +264,11 @@ struct Json::Reader final : nlohmann::json_sax<nlohmann::json> {
     {
         if (!deeper())
             return false;
+        // The sink's array: the member sink->key of the top-level object.
+        if (m_sink && m_open.size() == 1 && m_open.front().isObject() && m_keys.back() == m_sink->key) {
+            m_streaming = true;
+            m_streamed = 0;
+        }
         m_open.push_back(Json::array());
         return true;
     }
@@ -350,11 +358,17 @@ private:
     {
         Json done = std::move(m_open.back());
         m_open.pop_back();
+        if (m_streaming && m_open.size() == 1)
+            m_streaming = false; // the sink's array itself, left empty
         return add(std::move(done));
     }
 
     bool add(Json v)
     {
+        if (m_streaming && m_open.size() == 2) {
+            m_sink->take(m_streamed++, std::move(v)); // an element of the sink's array
+            return true;
+        }
         if (m_open.empty())
             root = std::move(v);
         else if (m_open.back().isArray())
@@ -375,14 +389,19 @@ private:
 
     std::string_view m_text;
     const std::size_t& m_taken;      ///< bytes nlohmann's lexer has taken so far
+    const ElementSink* m_sink;       ///< where the elements of one array go, or nullptr
+    bool m_streaming = false;        ///< inside the sink's array (m_open[1])
+    std::size_t m_streamed = 0;      ///< its elements handed over so far
     std::vector<Json> m_open;        ///< the arrays and objects not yet closed, outermost first
     std::vector<std::string> m_keys; ///< for each open object, the key whose value comes next
 };
 
-Expected<Json> Json::parse(std::string_view text)
+Expected<Json> Json::parse(std::string_view text) { return parse(text, ElementSink{}); }
+
+Expected<Json> Json::parse(std::string_view text, const ElementSink& sink)
 {
     std::size_t taken = 0;
-    Reader reader(text, taken);
+    Reader reader(text, taken, sink.take ? &sink : nullptr);
     const CountingChars begin(text.data(), &taken), end(text.data() + text.size(), &taken);
     const bool ok = nlohmann::json::sax_parse(begin, end, &reader);
     // nlohmann's lexer takes a NUL byte for the end of the text, so what follows one would

@@ -11,6 +11,8 @@
 
 #include "core/base/expected.h"
 
+#include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -40,6 +42,19 @@ public:
     static Json array() { return Json(Array{}); }
     static Json object() { return Json(Object{}); }
     static Expected<Json> parse(std::string_view text);
+
+    /// Where parse() hands over the elements of one array instead of keeping them: the
+    /// array that is the member `key` of the top-level object. Each element is passed whole,
+    /// in order, with its index (0 again if the key is repeated: the last array is the
+    /// one that counts); the member itself is left an empty array. A file of millions of
+    /// small rows (a recording's events) is then never held as a tree of Json values,
+    /// some 200 bytes a row, beside what the reader makes of it.
+    struct ElementSink {
+        std::string key;
+        std::function<void(std::size_t index, Json&& element)> take;
+    };
+    /// parse(), with the elements of `sink.key` streamed to `sink.take`.
+    static Expected<Json> parse(std::string_view text, const ElementSink& sink);
 
     bool isNull() const { return std::holds_alternative<std::nullptr_t>(m_v); }
     bool isBool() const { return std::holds_alternative<bool>(m_v); }

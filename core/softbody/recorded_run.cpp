@@ -53,19 +53,85 @@ std::optional<long> wholeNumber(const Json& v, long lo, long hi)
 
 } // namespace
 
+Json eventToJson(const InputEvent& e)
+{
+    Json row = Json::array();
+    row.push(double(e.step)).push(std::string(nameOf(kInputNames, e.kind, "move")));
+    if (hasPoint(e.kind))
+        row.push(e.at.x).push(e.at.y);
+    else if (isKnob(e.kind))
+        row.push(e.value);
+    return row;
+}
+
 Json eventsToJson(const std::vector<InputEvent>& list)
 {
     Json events = Json::array();
-    for (const InputEvent& e : list) {
-        Json row = Json::array();
-        row.push(double(e.step)).push(std::string(nameOf(kInputNames, e.kind, "move")));
-        if (hasPoint(e.kind))
-            row.push(e.at.x).push(e.at.y);
-        else if (isKnob(e.kind))
-            row.push(e.value);
-        events.push(std::move(row));
-    }
+    for (const InputEvent& e : list)
+        events.push(eventToJson(e));
     return events;
+}
+
+void EventListReader::add(const Json& row)
+{
+    const std::size_t index = m_rows++;
+    if (m_bad || m_rows > static_cast<std::size_t>(kMaxRecordedEvents))
+        return;
+    const long last = m_events.empty() ? 0 : m_events.back().step;
+    const auto refuse = [&](std::string what) { m_bad = Bad{index, last, std::move(what)}; };
+    const Json::Array* a = row.asArray();
+    if (!a || a->size() < 2)
+        return refuse(" must be [step, kind, …]");
+    const auto step = wholeNumber((*a)[0], last, m_steps);
+    if (!step)
+        return refuse({}); // worded by finish(), for the steps known then
+    const auto name = (*a)[1].asString();
+    const auto k = name ? parseName(kInputNames, *name) : std::nullopt;
+    if (!k)
+        return refuse(": the kind must be press, move, release, spawn, release-spawn, substeps, edge_compliance "
+                      "or edge_damping_ratio");
+    InputEvent e{*step, *k, Point()};
+    if (hasPoint(*k)) {
+        const auto x = a->size() == 4 ? (*a)[2].asNumber() : std::nullopt;
+        const auto y = a->size() == 4 ? (*a)[3].asNumber() : std::nullopt;
+        if (!x || !y || !std::isfinite(*x) || !std::isfinite(*y))
+            return refuse(": " + *name + " needs finite x and y");
+        e.at = Point(*x, *y);
+    } else if (isKnob(*k)) {
+        const auto v = a->size() == 3 ? (*a)[2].asNumber() : std::nullopt;
+        if (!v)
+            return refuse(": " + *name + " needs its value");
+        if (const std::string why = knobValueError(*k, *v); !why.empty())
+            return refuse(": " + why);
+        e.value = *v;
+    } else if (a->size() != 2) {
+        return refuse(": " + *name + " takes no point");
+    }
+    m_events.push_back(e);
+}
+
+Expected<std::vector<InputEvent>> EventListReader::finish(long steps) &&
+{
+    if (m_rows > static_cast<std::size_t>(kMaxRecordedEvents))
+        return bad("more than " + std::to_string(kMaxRecordedEvents) + " events");
+    const auto stepError = [steps](std::size_t index, long last) {
+        return bad("event " + std::to_string(index + 1) + ": its step must be a whole number from " + std::to_string(last) +
+                   " (the event before) to " + std::to_string(steps) + " (the steps)");
+    };
+    // The events are in step order: the first beyond `steps` is the first bad one, if it
+    // comes before the bad row found while reading.
+    const auto beyond = std::upper_bound(m_events.begin(), m_events.end(), steps,
+                                         [](long s, const InputEvent& e) { return s < e.step; });
+    if (beyond != m_events.end()) {
+        const auto index = static_cast<std::size_t>(beyond - m_events.begin());
+        return stepError(index, index == 0 ? 0 : m_events[index - 1].step);
+    }
+    if (m_bad) {
+        if (m_bad->what.empty())
+            return stepError(m_bad->index, m_bad->last);
+        return bad("event " + std::to_string(m_bad->index + 1) + m_bad->what);
+    }
+    return std::move(m_events);
 }
 
 Expected<std::vector<InputEvent>> eventsFromJson(const Json& events, long steps)
@@ -74,44 +140,11 @@ Expected<std::vector<InputEvent>> eventsFromJson(const Json& events, long steps)
         return bad("\"events\" must be an array");
     if (static_cast<long>(events.asArray()->size()) > kMaxRecordedEvents)
         return bad("more than " + std::to_string(kMaxRecordedEvents) + " events");
-    std::vector<InputEvent> out;
-    out.reserve(events.asArray()->size());
-    long last = 0;
-    for (const Json& row : *events.asArray()) {
-        const std::string where = "event " + std::to_string(out.size() + 1);
-        const Json::Array* a = row.asArray();
-        if (!a || a->size() < 2)
-            return bad(where + " must be [step, kind, …]");
-        const auto step = wholeNumber((*a)[0], last, steps);
-        if (!step)
-            return bad(where + ": its step must be a whole number from " + std::to_string(last) + " (the event before) to " +
-                       std::to_string(steps) + " (the steps)");
-        const auto name = (*a)[1].asString();
-        const auto k = name ? parseName(kInputNames, *name) : std::nullopt;
-        if (!k)
-            return bad(where + ": the kind must be press, move, release, spawn, release-spawn, substeps, edge_compliance "
-                               "or edge_damping_ratio");
-        InputEvent e{*step, *k, Point()};
-        if (hasPoint(*k)) {
-            const auto x = a->size() == 4 ? (*a)[2].asNumber() : std::nullopt;
-            const auto y = a->size() == 4 ? (*a)[3].asNumber() : std::nullopt;
-            if (!x || !y || !std::isfinite(*x) || !std::isfinite(*y))
-                return bad(where + ": " + *name + " needs finite x and y");
-            e.at = Point(*x, *y);
-        } else if (isKnob(*k)) {
-            const auto v = a->size() == 3 ? (*a)[2].asNumber() : std::nullopt;
-            if (!v)
-                return bad(where + ": " + *name + " needs its value");
-            if (const std::string why = knobValueError(*k, *v); !why.empty())
-                return bad(where + ": " + why);
-            e.value = *v;
-        } else if (a->size() != 2) {
-            return bad(where + ": " + *name + " takes no point");
-        }
-        last = e.step;
-        out.push_back(e);
-    }
-    return out;
+    EventListReader reader(steps);
+    reader.reserve(events.asArray()->size());
+    for (const Json& row : *events.asArray())
+        reader.add(row);
+    return std::move(reader).finish(steps);
 }
 
 Json documentRunToJson(const RecordedRun& run)
@@ -161,7 +194,10 @@ Json recordingToJson(const Recording& r)
     return doc;
 }
 
-Expected<Recording> recordingFromJson(const Json& doc)
+namespace {
+
+/// Everything of a recording but its events (recordingFromJson's checks, in its order).
+Expected<Recording> recordingHeaderFromJson(const Json& doc)
 {
     if (!doc.isObject())
         return bad("not a JSON object");
@@ -189,13 +225,62 @@ Expected<Recording> recordingFromJson(const Json& doc)
     if (!n)
         return bad("\"steps\" must be a whole number from 0 to " + std::to_string(kMaxRecordedSteps));
     r.steps = *n;
+    return r;
+}
+
+} // namespace
+
+Expected<Recording> recordingFromJson(const Json& doc)
+{
+    auto r = recordingHeaderFromJson(doc);
+    if (!r)
+        return r.error();
     const Json* events = doc.find("events");
     if (!events)
         return bad("\"events\" must be an array");
-    auto list = eventsFromJson(*events, r.steps);
+    auto list = eventsFromJson(*events, r->steps);
     if (!list)
         return list.error();
-    r.events = std::move(list).value();
+    r->events = std::move(list).value();
+    return r;
+}
+
+Expected<Recording> recordingFromText(std::string_view text, bool* notJson)
+{
+    // The rows go straight into the reader: each is a small Json for a moment only. A
+    // repeated "events" key starts again (the last one counts, as in Json::parse).
+    std::optional<EventListReader> reader;
+    reader.emplace();
+    // Room for every event at once, rather than a vector growing to twice its size: each
+    // row has a '[' (so does every other array, and a string may hold some: an upper bound),
+    // and takes at least 13 bytes ([0,"release"]), which bounds it for text of nothing but '['.
+    constexpr std::size_t kShortestRow = 13;
+    reader->reserve(
+        std::min(static_cast<std::size_t>(std::count(text.begin(), text.end(), '[')), text.size() / kShortestRow + 1));
+    Json::ElementSink sink;
+    sink.key = "events";
+    bool started = false;
+    sink.take = [&reader, &started](std::size_t index, Json&& row) {
+        if (index == 0 && started)
+            reader.emplace(); // a second "events" array: it replaces the first
+        started = true;
+        reader->add(row);
+    };
+    auto doc = Json::parse(text, sink);
+    if (notJson)
+        *notJson = !doc.ok();
+    if (!doc)
+        return doc.error();
+    auto r = recordingHeaderFromJson(*doc);
+    if (!r)
+        return r.error();
+    const Json* events = doc->find("events");
+    if (!events || !events->isArray())
+        return bad("\"events\" must be an array");
+    auto list = std::move(*reader).finish(r->steps);
+    if (!list)
+        return list.error();
+    r->events = std::move(list).value();
     return r;
 }
 
@@ -219,12 +304,12 @@ Expected<RecordedRun> RecordedRun::start(const SceneSpec& scene, SolverKind solv
     return run;
 }
 
-Expected<RecordedRun> RecordedRun::load(const Recording& recording, int snapshotEvery)
+Expected<RecordedRun> RecordedRun::load(Recording recording, int snapshotEvery)
 {
     auto run = start(recording.scene, recording.solver, snapshotEvery);
     if (!run)
         return run.error();
-    run->m_recording = recording;
+    run->m_recording = std::move(recording);
     return run;
 }
 

@@ -15,6 +15,9 @@
 #include <algorithm>
 #include <functional>
 #include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace granota {
@@ -60,6 +63,42 @@ Expected<Recording> recordingFromJson(const Json& doc);
 /// The "events" array alone, as the recording file writes it, and read back with the same checks.
 Json eventsToJson(const std::vector<InputEvent>& events);
 Expected<std::vector<InputEvent>> eventsFromJson(const Json& events, long steps);
+/// One row of it, [step, kind, …].
+Json eventToJson(const InputEvent& event);
+
+/// Reads the rows of an "events" array one at a time, with eventsFromJson's checks and
+/// messages, so that a reader never holds all the rows as Json at once (2.4 million events
+/// are some 500 MB as a Json tree, 96 MB as InputEvents): recordingFromText streams the
+/// file's rows here, and the Frog tab its document's.
+class EventListReader {
+public:
+    /// The run's steps when known; a streaming reader learns them after the events, and gives them to finish().
+    explicit EventListReader(long steps = kMaxRecordedSteps) : m_steps(steps) {}
+    void reserve(std::size_t count) { m_events.reserve(std::min<std::size_t>(count, kMaxRecordedEvents)); }
+    /// The next row; after the first bad one the rest are only counted.
+    void add(const Json& row);
+    /// The events, or the first error as eventsFromJson words it, for a run of `steps` steps
+    /// (at most the constructor's): an event beyond them is an error in its place.
+    Expected<std::vector<InputEvent>> finish(long steps) &&;
+
+private:
+    long m_steps;
+    std::size_t m_rows = 0;
+    std::vector<InputEvent> m_events;
+    /// The first bad row: its index, the step of the event before it, and what is wrong
+    /// (empty: its step, worded by finish() for the steps known then).
+    struct Bad {
+        std::size_t index = 0;
+        long last = 0;
+        std::string what;
+    };
+    std::optional<Bad> m_bad;
+};
+
+/// recordingFromJson(Json::parse(text)), with the events streamed (Json::ElementSink) rather
+/// than held as a Json tree. `notJson`, when given, is set when the text is no JSON (the
+/// error is then Json::parse's), so that a caller can word the two kinds apart.
+Expected<Recording> recordingFromText(std::string_view text, bool* notJson = nullptr);
 
 /// A run as a document keeps it beside the scene it already holds (the Frog tab's
 /// "recording"): {"steps": N, "step": s, "events": […]}, "step" the step shown (optional, 0).
@@ -79,7 +118,7 @@ public:
     /// A new run of `scene` on `solver`, recording from step 0.
     static Expected<RecordedRun> start(const SceneSpec& scene, SolverKind solver, int snapshotEvery = 100);
     /// The recording ready to play back from step 0 (run() or seek() to go through it).
-    static Expected<RecordedRun> load(const Recording& recording, int snapshotEvery = 100);
+    static Expected<RecordedRun> load(Recording recording, int snapshotEvery = 100);
     /// Records a simulation already built (the Frog tab builds its own, and checks it):
     /// the scene and solver are its own. Errors: one that has already stepped (its start
     /// could not be replayed from the scene).

@@ -1118,9 +1118,11 @@ void DeCasteljauTab::updateExactPanel()
         else
             html += ExactPanel::note(
                 tr("The triangle is shown up to degree %1; this curve has degree %2.").arg(kMaxTableDegree).arg(n));
+        // c′(t) from the triangle, unless its doubles could not tell it from 0 and the exact
+        // control points gave it (curvature.h: near ±1e308 the triangle says (0, 0) for (21/4, 0)).
         html += QStringLiteral("<p>c(t) = %1 = %2<br>c′(t) = %3</p>")
                     .arg(levelName(QStringLiteral("0"), QString::number(n)), panelPointText(m_levels.point()),
-                         panelPointText(m_levels.tangent()));
+                         panelPointText(m_curvature.exact ? m_curvature.tangent : m_levels.tangent()));
         if (m_showSplit && n <= kMaxTableDegree)
             html += QStringLiteral("<p>%1</p>")
                         .arg(tr("Split at t: [0, t] has control points %1; [t, 1] has %2.")

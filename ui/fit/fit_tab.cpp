@@ -1,4 +1,5 @@
 #include "ui/fit/fit_tab.h"
+#include "ui/fit/background_fit.h"
 #include "core/base/number_format.h"
 #include "ui/common/canvas_legend.h"
 #include "ui/common/curvature_comb_scale_box.h"
@@ -11,6 +12,7 @@
 #include "core/io/point_list.h"
 #include "core/io/worked_examples.h"
 #include "ui/common/curve_canvas.h"
+#include "ui/common/drawable.h"
 #include "ui/common/exact_panel.h"
 #include "ui/fit/fit_exact_view.h"
 #include "ui/common/point_editor.h"
@@ -36,6 +38,7 @@
 #include <QMessageBox>
 #include <QPainter>
 #include <QPainterPath>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QSplitter>
@@ -128,6 +131,22 @@ QRectF boundsOf(const std::vector<Point>& a, const std::vector<Point>& b)
 /// Every `stride`-th index so that at most `limit` items are drawn (all of them below it).
 std::size_t strideFor(std::size_t count, std::size_t limit) { return count > limit ? (count + limit - 1) / limit : 1; }
 
+/// File ▸ Export of the tab: its canvas, once a fit running in the background is done.
+class FinishedFitView : public Drawable {
+public:
+    FinishedFitView(const FitTab* tab, Drawable* canvas) : m_tab(tab), m_canvas(canvas) {}
+    QSizeF exportSize() const override { return m_canvas->exportSize(); }
+    void render(QPainter& painter, const QRectF& target) override
+    {
+        m_tab->finishFit();
+        m_canvas->render(painter, target);
+    }
+
+private:
+    const FitTab* m_tab;
+    Drawable* m_canvas;
+};
+
 } // namespace
 
 FitTab::FitTab(QWidget* parent) : CurveTab(QStringLiteral("fit"), QT_TR_NOOP("Fitting"), parent)
@@ -140,8 +159,13 @@ FitTab::FitTab(QWidget* parent) : CurveTab(QStringLiteral("fit"), QT_TR_NOOP("Fi
     m_table = new PointTable(m_editor, this);
     // The table refreshes through updateTable(), which skips huge data sets (10^6 rows would hang).
     disconnect(m_editor, &PointEditor::pointsChanged, m_table, nullptr);
+    m_background = new BackgroundFit(this);
     buildUi();
 
+    connect(m_background, &BackgroundFit::finished, this, &FitTab::backgroundFitFinished);
+    connect(m_background, &BackgroundFit::progress, this, [this] { updateReadouts(); });
+    m_exportView = std::make_unique<FinishedFitView>(this, m_canvas);
+    setExportView(m_exportView.get());
     connect(m_editor, &PointEditor::pointsChanged, this, &FitTab::onPointsChanged);
     connect(m_editor, &PointEditor::message, this, &FitTab::statusMessage);
     connect(m_table, &PointTable::message, this, &FitTab::statusMessage);
@@ -162,6 +186,8 @@ FitTab::FitTab(QWidget* parent) : CurveTab(QStringLiteral("fit"), QT_TR_NOOP("Fi
     retranslate();
     m_canvas->fitToContent();
 }
+
+FitTab::~FitTab() = default; // the background fit, a child, supersedes a fit still running
 
 // ---------------------------------------------------------------- construction
 
@@ -225,6 +251,20 @@ void FitTab::buildUi()
     }
     m_warningLabel->setObjectName(QStringLiteral("fitWarning"));
     m_warningLabel->setStyleSheet(QStringLiteral("color: #8a3a00;"));
+    // A fit in the background: how far it is, and Cancel (hidden otherwise).
+    auto* busy = new QHBoxLayout;
+    m_progress = new QProgressBar(m_readoutGroup);
+    m_progress->setTextVisible(false);
+    m_cancel = new QPushButton(m_readoutGroup);
+    busy->addWidget(m_progress, 1);
+    busy->addWidget(m_cancel);
+    readouts->addLayout(busy);
+    m_progress->hide();
+    m_cancel->hide();
+    connect(m_cancel, &QPushButton::clicked, this, [this] {
+        m_background->cancel();
+        updateReadouts();
+    });
 
     m_exact = new ExactPanel(this);
     m_exact->setMinimumWidth(240);
@@ -481,6 +521,8 @@ void FitTab::retranslate()
     m_import->setText(tr("&Import CSV…"));
     m_import->setToolTip(tr("Read the data points Q_i from a CSV file (one “x,y” per line) or a JSON list [[x,y],…]."));
     m_showMatrices->setText(tr("Show &matrices"));
+    m_cancel->setText(tr("Cancel"));
+    m_cancel->setToolTip(tr("Stop correcting the parameters: the curve shown is then the best fit found so far."));
     m_combBox->setText(tr("Curvature com&b"));
     m_combBox->setToolTip(
         tr("The curvature comb of the fitted curve (beyond the thesis): teeth along the normal as long "
@@ -607,7 +649,24 @@ void FitTab::refit()
     options.maxCorrections = m_settings.iterations;
     m_lastFittedDegree = options.degree;
     m_refusal.clear();
-    Expected<FitResult> fit = fitBezier(q, options);
+    if (fitWork(q.size(), options.degree, options.correctParameters, options.maxCorrections) > kBackgroundFitWork) {
+        // Long: on a worker thread, superseding any fit still running there. Until it is
+        // done the tab shows no curve (not the last one, which belongs to other data) and
+        // says it is fitting.
+        m_fit.reset();
+        m_fitError.clear();
+        m_curve.clear();
+        m_background->start(q, options);
+        updateFitViews();
+    } else {
+        m_background->supersede(); // this quick fit is the newest
+        showFit(fitBezier(q, options));
+    }
+    updatePlot();
+}
+
+void FitTab::showFit(Expected<FitResult> fit)
+{
     if (fit) {
         m_fit = std::move(fit).value();
         m_fitError.clear();
@@ -617,13 +676,29 @@ void FitTab::refit()
         m_fitError = errorText(fit.error());
         m_curve.clear();
     }
+    updateFitViews();
+}
+
+void FitTab::updateFitViews()
+{
     updateComb();
     m_canvas->setContentBounds(contentBounds());
     m_canvas->update();
     updateReadouts();
-    updatePlot();
     updateExact();
 }
+
+void FitTab::backgroundFitFinished()
+{
+    showFit(m_background->takeResult());
+    if (m_fit && m_fit->cancelled)
+        emit statusMessage(tr("Fit cancelled: the curve shown is the best fit found so far."));
+    emit backgroundFitShown();
+}
+
+bool FitTab::isFitting() const { return m_background->running(); }
+
+void FitTab::finishFit() const { m_background->finish(); }
 
 QRectF FitTab::contentBounds() const
 {
@@ -648,7 +723,26 @@ void FitTab::updateReadouts()
     QStringList warnings;
     if (!m_refusal.isEmpty())
         warnings << m_refusal;
-    if (m_fit) {
+    const bool fitting = m_background->running();
+    m_progress->setVisible(fitting);
+    m_cancel->setVisible(fitting);
+    if (fitting) {
+        const int done = m_background->correctionsDone(), allowed = m_background->correctionsAllowed();
+        m_progress->setRange(0, std::max(allowed, 0)); // 0 … 0: busy, with no count
+        m_progress->setValue(std::min(done, allowed));
+        m_cancel->setEnabled(!m_background->cancelling() && allowed > 0);
+        if (m_background->cancelling())
+            m_sseLabel->setText(tr("Cancelling: the fit stops after the correction under way…"));
+        else if (allowed > 0)
+            m_sseLabel->setText(
+                tr("Fitting in the background: %1 of at most %2 parameter corrections made…").arg(done).arg(allowed));
+        else
+            m_sseLabel->setText(tr("Fitting in the background…"));
+        m_rmsLabel->clear();
+        m_maxLabel->clear();
+        m_condLabel->clear();
+        m_correctionsLabel->hide();
+    } else if (m_fit) {
         m_sseLabel->setText(tr("Squared error Σ‖Q_i − α(t_i)‖²: %1").arg(fittedValueText(m_fit->sse)));
         m_rmsLabel->setText(tr("RMS error √(Σ/(k+1)): %1").arg(fittedValueText(m_fit->rms)));
         m_maxLabel->setText(tr("Largest error max‖Q_i − α(t_i)‖: %1").arg(fittedValueText(m_fit->maxError)));
@@ -657,6 +751,11 @@ void FitTab::updateReadouts()
                                  : tr("Condition number cond₂(M): %1").arg(fittedValueText(m_fit->cond)));
         m_correctionsLabel->setVisible(m_settings.correctParameters);
         m_correctionsLabel->setText(tr("Parameter corrections that lowered the error: %1").arg(m_fit->corrections));
+        if (m_fit->cancelled)
+            warnings << tr("Cancelled after %1 of at most %2 parameter corrections: the curve shown is the best fit "
+                           "found until then.")
+                            .arg(m_fit->corrections)
+                            .arg(m_settings.iterations);
     } else {
         m_sseLabel->setText(tr("No fit: %1").arg(m_fitError));
         m_rmsLabel->clear();
@@ -669,11 +768,12 @@ void FitTab::updateReadouts()
     // The canvas, for screen readers: the degree, the data and the error.
     canvas()->setAccessibleName(tr("Fitting canvas"));
     canvas()->setAccessibleDescription(
-        m_fit ? tr("Least-squares Bézier curve of degree %1 through %n data point(s); squared error %2.", nullptr,
-                   static_cast<int>(q.size()))
-                    .arg(m_settings.degree)
-                    .arg(fittedValueText(m_fit->sse))
-              : tr("No fit: %1").arg(m_fitError));
+        fitting ? m_sseLabel->text()
+        : m_fit ? tr("Least-squares Bézier curve of degree %1 through %n data point(s); squared error %2.", nullptr,
+                     static_cast<int>(q.size()))
+                      .arg(m_settings.degree)
+                      .arg(fittedValueText(m_fit->sse))
+                : tr("No fit: %1").arg(m_fitError));
     m_condLabel->setVisible(m_fit.has_value());
     // The core decides what to warn about (fit_warning.h); the tab only words it.
     FitOptions options;
@@ -1009,6 +1109,7 @@ bool FitTab::loadSettings(const QJsonObject& state, const std::vector<Point>& po
 
 QString FitTab::csv() const
 {
+    finishFit(); // the finished fit, never a half state
     const std::vector<Point>& q = m_editor->points();
     // Shortest round-trip text (std::to_chars): exact, and fast enough for 10^6 rows.
     const auto f = [](double v) {
@@ -1040,6 +1141,7 @@ QString FitTab::csv() const
 
 void FitTab::drawTikz(TikzWriter& tikz) const
 {
+    finishFit(); // the finished fit, never a half state
     const std::vector<Point>& q = m_editor->points();
     const CanvasStyle style;
     tikz.comment(QStringLiteral("Granota: least-squares Bézier fit of degree %1 (%2 parameters), %3 data points")

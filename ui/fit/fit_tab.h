@@ -14,6 +14,7 @@
 #include "ui/common/curve_tab.h"
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 
 class QCheckBox;
@@ -22,18 +23,22 @@ class QCPItemText;
 class QCustomPlot;
 class QGroupBox;
 class QLabel;
+class QProgressBar;
 class QPushButton;
 class QSpinBox;
 class QSplitter;
 
 namespace granota::ui {
 
+class BackgroundFit;
 class CurvatureCombScaleBox;
+class Drawable;
 
 class FitTab : public CurveTab {
     Q_OBJECT
 public:
     explicit FitTab(QWidget* parent = nullptr);
+    ~FitTab() override;
 
     void retranslate() override;
     QString hint() const override;
@@ -49,8 +54,23 @@ public:
     void changeSettings(const FitSettings& after, const QString& undoText, int field = -1);
     /// The degree actually fitted: min(n, k).
     int fittedDegree() const;
-    /// The current fit, or nullptr when there is none (then fitError() says why).
+    /// The current fit, or nullptr when there is none (then fitError() says why, or a fit is
+    /// running in the background: isFitting()).
     const FitResult* currentFit() const { return m_fit ? &*m_fit : nullptr; }
+
+    /// A fit whose work (fitWork, least_squares_fit.h) is beyond this runs on a worker thread
+    /// (background_fit.h), with its progress and a Cancel button, so that opening a document
+    /// or dragging a point never waits for it: some 0.1 s on the reference machine. Below,
+    /// the fit is made at once, as before (the tests and exports of small fits see it at once).
+    static constexpr double kBackgroundFitWork = 2e7;
+    /// Whether a fit is running in the background (the readouts say "Fitting…").
+    bool isFitting() const;
+    /// Waits for a fit running in the background and shows it: File ▸ Export, TikZ, CSV and
+    /// `granota --screenshot` show the finished fit, never a half state.
+    void finishFit() const;
+    /// Stops the correction of a fit running in the background; the best fit found until then is shown.
+    QPushButton* cancelButton() const { return m_cancel; }
+    QProgressBar* fitProgress() const { return m_progress; }
     QString fitError() const { return m_fitError; }
     /// The readouts (error, RMS, max, cond₂) and the warnings as shown, for tests.
     QString readoutText() const;
@@ -80,6 +100,10 @@ public:
     /// What the plot says about where it stops (empty when it reaches the highest degree).
     QString plotNote() const;
 
+signals:
+    /// A fit made in the background is shown (not one superseded by a newer request).
+    void backgroundFitShown();
+
 protected:
     void drawTikz(TikzWriter& w) const override;
 
@@ -100,6 +124,11 @@ private:
     void updateControls();
     void onPointsChanged();
     void refit();
+    /// Takes the fit (or its error) as the current one, and shows it.
+    void showFit(Expected<FitResult> fit);
+    /// What depends on the fit: the comb, the canvas, the readouts, the exact panel.
+    void updateFitViews();
+    void backgroundFitFinished();
     void updateReadouts();
     void updatePlot();
     void updateExact();
@@ -141,7 +170,11 @@ private:
     QLabel* m_condLabel = nullptr;
     QLabel* m_correctionsLabel = nullptr;
     QLabel* m_warningLabel = nullptr;
-    QString m_refusal; ///< the last refused degree's reason, shown until the next fit
+    QString m_refusal;                  ///< the last refused degree's reason, shown until the next fit
+    QProgressBar* m_progress = nullptr; ///< corrections made by a fit in the background
+    QPushButton* m_cancel = nullptr;    ///< stops it
+    BackgroundFit* m_background = nullptr;
+    std::unique_ptr<Drawable> m_exportView; ///< the canvas, once the background fit is done
 
     FitSettings m_settings;
     std::optional<FitResult> m_fit;

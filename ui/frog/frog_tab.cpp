@@ -1099,7 +1099,7 @@ QJsonObject FrogTab::saveState() const
     state.insert(QStringLiteral("stable"), stable);
     // The run so far (docs/rewind.md): its events, how far it went, and the step shown.
     if (const RecordedRun* run = m_canvas->run())
-        state.insert(QStringLiteral("recording"), toQJson(documentRunToJson(*run)));
+        state.insert(QStringLiteral("recording"), documentRunToQJson(*run));
     return state;
 }
 
@@ -1235,7 +1235,7 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
     // The recorded run: checked whole before anything changes.
     std::optional<DocumentRun> recorded;
     if (state.contains(QStringLiteral("recording"))) {
-        auto parsed = documentRunFromJson(fromQJson(state.value(QStringLiteral("recording"))));
+        auto parsed = documentRunFromQJson(state.value(QStringLiteral("recording")));
         if (!parsed) {
             setError(error, tr("The frog's recording was refused: %1").arg(fromStd(parsed.error().message)));
             return false;

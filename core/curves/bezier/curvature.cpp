@@ -1,6 +1,7 @@
 #include "core/curves/bezier/curvature.h"
 
 #include "core/curves/bezier/de_casteljau.h"
+#include "core/curves/bezier/exact_hodograph.h"
 #include "core/curves/bezier/hodograph.h"
 #include "core/exact/square_root.h"
 
@@ -14,6 +15,74 @@ namespace granota {
 namespace {
 
 bool finite(double v) { return std::isfinite(v); }
+
+/// q = m · 2^e with 0.5 ≤ |m| < 1 (m = 0 for q = 0): a rational of any size as a double's
+/// mantissa and an exponent beyond a double's range.
+struct Binary {
+    double m = 0;
+    long e = 0;
+};
+
+Binary binary(const Rational& q)
+{
+    if (q == 0)
+        return {};
+    long en = 0, ed = 0;
+    const double mn = mpz_get_d_2exp(&en, q.get_num_mpz_t()), md = mpz_get_d_2exp(&ed, q.get_den_mpz_t());
+    int e = 0;
+    const double m = std::frexp(mn / md, &e);
+    return {m, en - ed + e};
+}
+
+/// ldexp for an exponent that may be beyond int: ±inf or 0 there.
+double scaled(double m, long e)
+{
+    const long clamped = std::clamp(e, -2200L, 2200L);
+    return std::ldexp(m, static_cast<int>(clamped));
+}
+
+/// κ and the rest from c′(t) = v and c″(t) = a exactly, v ≠ 0: when the doubles cannot tell
+/// c′(t) from 0 (exact_hodograph.h).
+void fromExact(CurvatureAt& out, const RPoint& v, const RPoint& a)
+{
+    out.exact = true;
+    out.tangent = Point(toDouble(v.x), toDouble(v.y));
+    // The unit tangent from v scaled by a power of two into the range of doubles.
+    const Binary bx = binary(v.x), by = binary(v.y);
+    const long e = std::max(bx.m != 0 ? bx.e : by.e, by.m != 0 ? by.e : bx.e);
+    const Point w(scaled(bx.m, bx.e - e), scaled(by.m, by.e - e));
+    const double length = norm(w);
+    const Point unit(w.x / length, w.y / length);
+    out.normal = Point(-unit.y, unit.x);
+    const Rational c = v.x * a.y - v.y * a.x;
+    if (c == 0) {
+        out.curvature = 0.0; // straight here (exactly): radius and centre infinite
+        return;
+    }
+    // κ = c / |v|³ = (m_c 2^e_c) / (m_s 2^e_s)^{3/2}, |v|² = m_s 2^e_s with e_s made even.
+    const Binary bc = binary(c);
+    Binary bs = binary(v.x * v.x + v.y * v.y);
+    if (bs.e % 2 != 0) {
+        bs.m *= 2;
+        bs.e -= 1;
+    }
+    const double k = scaled(bc.m / (bs.m * std::sqrt(bs.m)), bc.e - 3 * bs.e / 2);
+    if (!finite(k) || k == 0.0) {
+        out.normal.reset(); // beyond the range of doubles, as below
+        return;
+    }
+    out.curvature = k;
+    const double r = 1.0 / std::abs(k);
+    if (finite(r)) {
+        out.radius = r;
+        const double s = k > 0 ? r : -r;
+        const Point centre(out.point.x + s * out.normal->x, out.point.y + s * out.normal->y);
+        if (isFinite(centre))
+            out.center = centre;
+        else
+            out.radius.reset();
+    }
+}
 
 } // namespace
 
@@ -53,8 +122,15 @@ CurvatureAt curvatureAt(const std::vector<Point>& P, double t)
     const Point a = deCasteljauPoint(d2, t);
     out.tangent = Point(std::ldexp(v.x, e), std::ldexp(v.y, e));
     const double speed = norm(v);
-    if (!(speed > 1e-12 * n * h))
-        return out; // c′ = 0 relative to the curve's size: κ undefined
+    if (!(speed > 1e-12 * n * h)) {
+        // c′ = 0 relative to the curve's size, as far as doubles tell. The control points
+        // taken exactly decide (exact_hodograph.h): near ±1e308 a c′ of (21/4, 0) is below
+        // the doubles' rounding.
+        const std::optional<ExactDerivatives> exact = exactDerivativesAt(P, t);
+        if (exact && (exact->first.x != 0 || exact->first.y != 0))
+            fromExact(out, exact->first, exact->second);
+        return out; // otherwise c′ = 0: κ undefined
+    }
     const Point unit(v.x / speed, v.y / speed);
     out.normal = Point(-unit.y, unit.x);
     const double c = cross(v, a);

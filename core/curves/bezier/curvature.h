@@ -12,7 +12,10 @@
 /// is nullopt, never 0 and never NaN. "c′ = 0" is decided relative to the curve's size:
 /// |c′(t)| ≤ 1e-12 · n · h, with h the largest coordinate difference between control points
 /// (so a curve and the same curve scaled by 10^k agree; a single repeated point has h = 0
-/// and c′ ≡ 0). On a straight piece κ = 0 exactly — when x′y″ − y′x″ is below its own
+/// and c′ ≡ 0). Where that test says c′ = 0, the control points and t taken exactly (every
+/// double is a rational) decide, within kMaxExactWork (exact_hodograph.h): control points
+/// near ±1e308 round c′ by about 1e292, and an exact c′ of (21/4, 0) is then no cusp, with
+/// its κ computed from the exact c′ and c″. On a straight piece κ = 0 exactly — when x′y″ − y′x″ is below its own
 /// rounding error, 4(n+1)ε|c′||c″| — and the radius and centre are nullopt (infinite).
 /// The computation is scaled by a power of two, so coordinates from 1e-150 to 1e150 give
 /// finite κ where |c′|³ alone would overflow or underflow.
@@ -34,6 +37,10 @@ struct CurvatureAt {
     std::optional<double> curvature; ///< signed κ; nullopt where c′ = 0
     std::optional<double> radius;    ///< 1/|κ|; nullopt where κ = 0 or undefined
     std::optional<Point> center;     ///< point + normal/κ; nullopt likewise
+    /// c′ and c″ came from the control points taken exactly (exact_hodograph.h): the doubles
+    /// could not tell c′ from 0, and tangent is the exact c′ rounded (De Casteljau's triangle
+    /// in doubles gives rounding noise there).
+    bool exact = false;
 };
 
 /// Everything above at t (t is clamped to [0, 1]). P must not be empty.

@@ -2,11 +2,13 @@
 #include "core/curves/bezier/curve_features.h"
 
 #include "core/curves/bezier/bernstein_roots.h"
+#include "core/curves/bezier/exact_hodograph.h"
 #include "core/curves/bezier/hodograph.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace granota {
 
@@ -43,13 +45,31 @@ Point pointAt(const std::vector<double>& xs, const std::vector<double>& ys, doub
     return {bernsteinValue(xs, t), bernsteinValue(ys, t)};
 }
 
+/// The hodograph of P scaled by a power of two (exact) that brings every coordinate to at
+/// most 1 in magnitude: the differences n (P_{i+1} − P_i) of points near ±1e308 would
+/// overflow to infinity. Every feature here is a zero or a sign change, or a comparison
+/// relative to the hodograph's size, so the scale changes none of them.
+std::vector<Point> scaledHodograph(const std::vector<Point>& P)
+{
+    double m = 0;
+    for (const Point& p : P)
+        m = std::max({m, std::abs(p.x), std::abs(p.y)});
+    int e = 0;
+    if (m > 0 && std::isfinite(m))
+        std::frexp(m, &e);
+    std::vector<Point> Q(P);
+    for (Point& q : Q)
+        q = Point(std::ldexp(q.x, -e), std::ldexp(q.y, -e));
+    return hodograph(Q);
+}
+
 } // namespace
 
 std::vector<double> extremaParameters(const std::vector<Point>& P, int which)
 {
     if (P.size() < 2)
         return {};
-    const BernsteinRoots r = bernsteinRoots(coordinate(hodograph(P), which));
+    const BernsteinRoots r = bernsteinRoots(coordinate(scaledHodograph(P), which));
     return openInterval(r.roots);
 }
 
@@ -81,10 +101,12 @@ CurveBox tightBoundingBox(const std::vector<Point>& P)
 
 namespace {
 
-/// The cusps among the zeros rx of x′ and ry of y′ (the coordinates ax, ay of the hodograph,
-/// of size `size` > 0): those where |c′| is 0 within kCuspTolerance.
-std::vector<double> cuspsAmong(const std::vector<double>& ax, const std::vector<double>& ay, const BernsteinRoots& rx,
-                               const BernsteinRoots& ry, double size)
+/// The cusps of P among the zeros rx of x′ and ry of y′ (the coordinates ax, ay of its
+/// scaled hodograph, of size `size` > 0): those where |c′| is 0 within kCuspTolerance, unless
+/// the control points taken exactly show that x′ and y′ never vanish together
+/// (exact_hodograph.h: near ±1e308 the doubles' rounding hides a c′ of (21/4, 0)).
+std::vector<double> cuspsAmong(const std::vector<Point>& P, const std::vector<double>& ax, const std::vector<double>& ay,
+                               const BernsteinRoots& rx, const BernsteinRoots& ry, double size)
 {
     struct Candidate {
         double t;
@@ -110,6 +132,8 @@ std::vector<double> cuspsAmong(const std::vector<double>& ax, const std::vector<
         }
         merged.push_back(c);
     }
+    if (!merged.empty() && hodographVanishesSomewhere(P) == std::optional<bool>(false))
+        return {};
     std::vector<double> out;
     for (const Candidate& c : merged)
         out.push_back(c.t);
@@ -122,12 +146,12 @@ std::vector<double> cuspParameters(const std::vector<Point>& P)
 {
     if (P.size() < 2)
         return {};
-    const std::vector<Point> A = hodograph(P);
+    const std::vector<Point> A = scaledHodograph(P);
     const double size = hodographSize(A);
     if (size == 0.0)
         return {}; // stationary: c′ ≡ 0 (see CurveFeatures::stationary)
     const std::vector<double> ax = coordinate(A, 0), ay = coordinate(A, 1);
-    return cuspsAmong(ax, ay, bernsteinRoots(ax), bernsteinRoots(ay), size);
+    return cuspsAmong(P, ax, ay, bernsteinRoots(ax), bernsteinRoots(ay), size);
 }
 
 namespace {
@@ -181,7 +205,7 @@ std::vector<double> inflectionParameters(const std::vector<Point>& P)
 {
     if (P.size() < 3)
         return {};
-    const std::vector<Point> A = hodograph(P);
+    const std::vector<Point> A = scaledHodograph(P);
     const std::vector<double> D = curvatureNumeratorOf(A);
     if (straightWithinRounding(A, hodographSize(A), D))
         return {};
@@ -209,7 +233,7 @@ CurveFeatures curveFeatures(const std::vector<Point>& P)
         f.stationary = f.straight = true;
         return f;
     }
-    const std::vector<Point> A = hodograph(P);
+    const std::vector<Point> A = scaledHodograph(P);
     const double size = hodographSize(A);
     f.stationary = size == 0.0;
     const std::vector<double> D = P.size() < 3 ? std::vector<double>{} : curvatureNumeratorOf(A);
@@ -220,7 +244,7 @@ CurveFeatures curveFeatures(const std::vector<Point>& P)
         const BernsteinRoots rx = bernsteinRoots(ax), ry = bernsteinRoots(ay);
         f.extremaX = openInterval(rx.roots);
         f.extremaY = openInterval(ry.roots);
-        f.cusps = cuspsAmong(ax, ay, rx, ry, size);
+        f.cusps = cuspsAmong(P, ax, ay, rx, ry, size);
     }
     // The box from the extrema already found (tightBoundingBox would find them again).
     f.bbox = {P.front(), P.front()};

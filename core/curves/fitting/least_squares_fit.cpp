@@ -223,11 +223,34 @@ Expected<Solution> solve(const ScaledPoints& data, const std::vector<double>& t,
     return s;
 }
 
-double sumOfSquares(const std::vector<Point>& q, const std::vector<Point>& P, const std::vector<double>& t)
+/// FitOptions::keepGoing, asked at most every kAskEvery points; once it says stop, it stays stopped.
+class Cancellation {
+public:
+    explicit Cancellation(const FitOptions& options) : m_keepGoing(options.keepGoing) {}
+    /// How often the loops over the points ask (a few microseconds at degree 100).
+    static constexpr std::size_t kAskEvery = 1024;
+    /// Whether to go on, asked with `done` corrections made.
+    bool keepGoing(int done)
+    {
+        if (!m_stopped && m_keepGoing && !m_keepGoing(done))
+            m_stopped = true;
+        return !m_stopped;
+    }
+    /// Within a loop over the points: asks at point 0, kAskEvery, 2 kAskEvery…
+    bool keepGoingAt(std::size_t i, int done) { return i % kAskEvery != 0 || keepGoing(done); }
+    bool stopped() const { return m_stopped; }
+
+private:
+    const std::function<bool(int)>& m_keepGoing;
+    bool m_stopped = false;
+};
+
+double sumOfSquares(const std::vector<Point>& q, const std::vector<Point>& P, const std::vector<double>& t, Cancellation& cancel,
+                    int done)
 {
     std::vector<Point> work;
     double sse = 0;
-    for (std::size_t i = 0; i < q.size(); ++i) {
+    for (std::size_t i = 0; i < q.size() && cancel.keepGoingAt(i, done); ++i) {
         const Point r = q[i] - evaluateBezier(P, t[i], work);
         sse += dot(r, r);
     }
@@ -236,13 +259,15 @@ double sumOfSquares(const std::vector<Point>& q, const std::vector<Point>& P, co
 
 /// Projects every q_i onto the curve P by a few Newton steps on |α(t) − q_i|², starting at
 /// t_i and clamped to [0, 1]; a point keeps its t_i unless the step brings it closer.
-std::vector<double> project(const std::vector<Point>& q, const std::vector<Point>& P, const std::vector<double>& t)
+/// Stops early (the rest of the t_i as they were) when `cancel` says so.
+std::vector<double> project(const std::vector<Point>& q, const std::vector<Point>& P, const std::vector<double>& t,
+                            Cancellation& cancel, int done)
 {
     const std::vector<Point> d1 = derivativePoints(P);
     const std::vector<Point> d2 = derivativePoints(d1);
     std::vector<Point> work;
     std::vector<double> out = t;
-    for (std::size_t i = 0; i < q.size(); ++i) {
+    for (std::size_t i = 0; i < q.size() && cancel.keepGoingAt(i, done); ++i) {
         const Point start = evaluateBezier(P, t[i], work) - q[i];
         const double startDistance = dot(start, start);
         double ti = t[i];
@@ -289,6 +314,12 @@ std::optional<LeastSquaresSolver> parseLeastSquaresSolver(std::string_view text)
 }
 
 std::string toString(LeastSquaresSolver s) { return std::string(nameOf(kSolverNames, s, "qr")); }
+
+double fitWork(std::size_t points, int degree, bool correctParameters, int corrections)
+{
+    const double solve = static_cast<double>(points) * (degree + 1.0) * (degree + 1.0);
+    return solve * (1.0 + (correctParameters && degree > 0 ? std::max(corrections, 0) : 0));
+}
 
 Eigen::MatrixXd bernsteinMatrix(const std::vector<double>& t, int n)
 {
@@ -349,9 +380,14 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
         std::vector<Point> local(q.size());
         for (std::size_t i = 0; i < q.size(); ++i)
             local[i] = Point(data.x(i), data.y(i));
-        bestSse = best.sse >= 0 ? best.sse : sumOfSquares(local, best.P, t);
+        Cancellation cancel(options);
+        bestSse = best.sse >= 0 ? best.sse : sumOfSquares(local, best.P, t, cancel, 0);
         for (int iteration = 0; iteration < options.maxCorrections && bestSse > 0; ++iteration) {
-            std::vector<double> corrected = project(local, best.P, t);
+            if (!cancel.keepGoing(result.corrections))
+                break;
+            std::vector<double> corrected = project(local, best.P, t, cancel, result.corrections);
+            if (cancel.stopped())
+                break; // a correction half made: the best so far stands
             Expected<Solution> next = solve(data, corrected, n, options.solver);
             if (!next) {
                 FitWarning w;
@@ -360,8 +396,8 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
                 result.warningCodes.push_back(w);
                 break;
             }
-            const double sse = sumOfSquares(local, next->P, corrected);
-            if (!(sse < bestSse))
+            const double sse = sumOfSquares(local, next->P, corrected, cancel, result.corrections);
+            if (cancel.stopped() || !(sse < bestSse))
                 break;
             const double improvement = (bestSse - sse) / bestSse;
             best = std::move(next).value();
@@ -371,6 +407,7 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
             if (improvement < 1e-12)
                 break;
         }
+        result.cancelled = cancel.stopped();
     }
 
     // Back to the user's frame.

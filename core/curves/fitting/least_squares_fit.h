@@ -19,6 +19,7 @@
 
 #include <Eigen/Core>
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -48,6 +49,12 @@ struct FitOptions {
     bool correctParameters = false;
     /// At most this many refits when correcting (0: none).
     int maxCorrections = 50;
+    /// Asked between parameter corrections, and every few thousand points within one, with
+    /// the corrections made so far: false stops correcting there, and the fit returned is
+    /// the best one so far, with FitResult::cancelled set. The window runs long fits on a
+    /// worker thread and answers from its Cancel button and from newer requests (ui/fit);
+    /// empty (the default) is never asked. Called on the fitting thread.
+    std::function<bool(int corrections)> keepGoing;
 };
 
 struct FitResult {
@@ -59,6 +66,7 @@ struct FitResult {
     double maxError = 0;                  ///< max ‖Q_i − α(t_i)‖
     double cond = 1;                      ///< cond₂(M) = σ_max/σ_min (DBL_MAX when M is exactly singular)
     int corrections = 0;                  ///< parameter corrections that lowered the error
+    bool cancelled = false;               ///< FitOptions::keepGoing stopped the corrections
     std::vector<FitWarning> warningCodes; ///< ill-conditioning, rank deficiency, fallbacks (fit_warning.h)
     std::vector<std::string> warnings;    ///< their English text, fitWarningText(), as the CLI prints it
 };
@@ -66,6 +74,18 @@ struct FitResult {
 /// The highest degree fitBezier and fitBezierExact accept: beyond it the Bernstein basis
 /// at the data's parameters is too ill-conditioned for any solver (cond₂(M) grows like 2ⁿ).
 constexpr int kMaxFitDegree = 100;
+
+/// The work of a fit of `points` points at degree n in units of (k + 1)(n + 1)², about one
+/// least-squares solve (the QR factorisation of M, and a projection of every point onto the
+/// curve, are each a few of them): the first solve and, when correcting, `corrections` more
+/// solves and projections (an upper bound: the correction stops once the error stops
+/// dropping). One unit is 4 to 12 ns on the reference machine (2 cores, 2026; idle to
+/// loaded): 2 000 points at degree 100 with 1 000 corrections are 2·10¹⁰ units, some 90 s.
+double fitWork(std::size_t points, int degree, bool correctParameters, int corrections);
+/// The most work granota-cli's `fit --iterate` takes on (4 to 12 s); beyond it refuses, and
+/// says what to lower (docs/cli.md). The window has no such bound: it fits on a worker
+/// thread with a Cancel button (ui/fit/background_fit.h).
+constexpr double kMaxCliFitWork = 1e9;
 
 /// M of Lemma 2.2: row i holds B_0^n(t_i)..B_n^n(t_i) (via the recursion of Lemma 2.1).
 Eigen::MatrixXd bernsteinMatrix(const std::vector<double>& t, int n);
