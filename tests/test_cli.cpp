@@ -177,6 +177,23 @@ private slots:
         QCOMPARE(t[4].toDouble(), 1.0);
     }
 
+    // Annex III's BezParamProp (issue 33, part 3): d_j = |Q_{j−1}|, from the origin; Ex 2.9's
+    // points give |Q_0..Q_3| = 0, √10, √20, √68, so t = 0, 0, √10/Σ, (√10 + √20)/Σ, 1.
+    void fitAnnexIIIUsesDistancesFromTheOrigin()
+    {
+        const Run r = cli({"fit", "--points", kEx27, "--degree", "3", "--param", "annex-iii", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonArray t = r.json()["params"].toArray();
+        const double total = std::sqrt(10.0) + std::sqrt(20.0) + std::sqrt(68.0);
+        QCOMPARE(t[1].toDouble(), 0.0);
+        QVERIFY(std::abs(t[2].toDouble() - std::sqrt(10.0) / total) < 1e-14);
+        QVERIFY(std::abs(t[3].toDouble() - (std::sqrt(10.0) + std::sqrt(20.0)) / total) < 1e-14);
+        // Irrational |Q_1| = √10: no exact fit, and it says which distance spoils it.
+        const Run exact = cli({"fit", "--points", kEx27, "--degree", "3", "--param", "annex-iii", "--exact"});
+        QCOMPARE(exact.exitCode, 2);
+        QVERIFY2(exact.err.contains("|Q_1| = √(10)"), exact.err.constData());
+    }
+
     void catmullRomEx213()
     {
         const Run r = cli(

@@ -23,7 +23,7 @@
 namespace {
 
 /// The address space granota-cli gets, in KiB (`ulimit -v`): 4 GB.
-constexpr const char* kAddressSpaceKiB = "4000000";
+[[maybe_unused]] constexpr const char* kAddressSpaceKiB = "4000000";
 /// A hang guard only (never a measure of speed): a run refused or accepted here takes
 /// seconds; before the fixes some took hours.
 constexpr int kHangGuardMs = 300000;

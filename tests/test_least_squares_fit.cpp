@@ -120,8 +120,8 @@ QString warnings(const FitResult& f)
 }
 
 const LeastSquaresSolver kSolvers[] = {LeastSquaresSolver::Qr, LeastSquaresSolver::Normal, LeastSquaresSolver::Svd};
-const Parametrization kParametrizations[] = {Parametrization::Uniform, Parametrization::ChordLength,
-                                             Parametrization::Centripetal};
+const Parametrization kParametrizations[] = {Parametrization::Uniform, Parametrization::ChordLength, Parametrization::Centripetal,
+                                             Parametrization::AnnexIII};
 
 FitOptions options(int degree, Parametrization p = Parametrization::Uniform, LeastSquaresSolver s = LeastSquaresSolver::Qr)
 {
@@ -215,6 +215,36 @@ private slots:
         // Uniform: t_i = i/k always.
         QCOMPARE(*exactParameters(thesisPoints(), Parametrization::Uniform),
                  (std::vector<Rational>{R("0"), R("1/4"), R("1/2"), R("3/4"), R("1")}));
+    }
+
+    // Annex III's BezParamProp as the thesis computes it (issue 33, part 3): d_j = |Q_{j−1}|.
+    // Ex 2.9's points: |Q_0|, |Q_1|, |Q_2|, |Q_3| = 0, √10, √20, √68, so t = 0, 0,
+    // √10/Σ = 0.19913, (√10 + √20)/Σ = 0.48074, 1 (by hand; the issue's figures). With them
+    // the n = 3 fit is worse than uniform: Σ‖Q_i − α(t_i)‖² = 5.000 against 4.143, where the
+    // definition's chord length gives 0.237 (the issue's figures, computed apart).
+    void annexIIIParametersAreTheThesissOwn()
+    {
+        const std::vector<Point> q{{0, 0}, {1, 3}, {4, 2}, {8, -2}, {1, 5}};
+        const std::vector<double> t = parameters(q, Parametrization::AnnexIII);
+        const double sum = std::sqrt(10.0) + std::sqrt(20.0) + std::sqrt(68.0);
+        const double expected[] = {0, 0, std::sqrt(10.0) / sum, (std::sqrt(10.0) + std::sqrt(20.0)) / sum, 1};
+        for (int i = 0; i < 5; ++i)
+            QVERIFY2(std::fabs(t[std::size_t(i)] - expected[i]) < 1e-15, qPrintable(QString::number(t[std::size_t(i)])));
+        QVERIFY(std::fabs(t[2] - 0.19913) < 5e-6 && std::fabs(t[3] - 0.48074) < 5e-6);
+        const auto sse = [&q](Parametrization p) {
+            const auto f = fitBezier(q, options(3, p));
+            return f ? f->sse : -1.0;
+        };
+        QVERIFY2(std::fabs(sse(Parametrization::AnnexIII) - 5.000) < 5e-4,
+                 qPrintable(QString::number(sse(Parametrization::AnnexIII))));
+        QVERIFY(std::fabs(sse(Parametrization::Uniform) - 4.143) < 5e-4);
+        QVERIFY(std::fabs(sse(Parametrization::ChordLength) - 0.237) < 5e-4);
+        // Exactly, when every |Q_j| is rational: 5, 5, 10 give t = 0, 1/4, 1/2, 1.
+        const std::vector<RPoint> pythagorean{RPoint(3, 4), RPoint(0, 5), RPoint(6, 8), RPoint(1, 1)};
+        const auto exact = exactParameters(pythagorean, Parametrization::AnnexIII);
+        QVERIFY(exact.has_value());
+        QCOMPARE(*exact, (std::vector<Rational>{R("0"), R("1/4"), R("1/2"), R("1")}));
+        QVERIFY(!exactParameters(toRational(q), Parametrization::AnnexIII).has_value()); // √10
     }
 
     void parametersSurviveExtremeCoordinates()
@@ -691,8 +721,17 @@ private slots:
         const Point point(2.5, -1.25);
         const std::vector<Point> q(6, point);
         bool fellBack = false;
-        QCOMPARE(parameters(q, parametrization, &fellBack), parameters(q, Parametrization::Uniform));
-        QCOMPARE(fellBack, parametrization != Parametrization::Uniform);
+        const std::vector<double> t = parameters(q, parametrization, &fellBack),
+                                  uniform = parameters(q, Parametrization::Uniform);
+        if (parametrization == Parametrization::AnnexIII) {
+            // Annex III measures from the origin: equal |Q_j| ≠ 0 give uniform steps, no fallback.
+            QVERIFY(!fellBack);
+            for (std::size_t i = 0; i < t.size(); ++i)
+                QVERIFY(std::fabs(t[i] - uniform[i]) <= 1e-15);
+        } else {
+            QCOMPARE(t, uniform);
+            QCOMPARE(fellBack, parametrization != Parametrization::Uniform);
+        }
         for (int degree = 0; degree <= 5; ++degree) {
             const auto fit = fitBezier(q, options(degree, parametrization, solver));
             QVERIFY(fit.ok());
@@ -700,7 +739,7 @@ private slots:
             for (const Point& p : fit->controlPoints)
                 QVERIFY(norm(p - point) <= 1e-14);
             QCOMPARE(fit->sse, 0.0);
-            QCOMPARE(hasWarning(*fit, "coincide"), parametrization != Parametrization::Uniform);
+            QCOMPARE(hasWarning(*fit, "coincide"), fellBack); // the parameters fell back to uniform: said
         }
     }
 
@@ -758,6 +797,8 @@ private slots:
             q.emplace_back(scale * p.x + offset, scale * p.y - offset);
         for (Parametrization p : kParametrizations)
             for (LeastSquaresSolver s : kSolvers) {
+                if (p == Parametrization::AnnexIII && offset != 0)
+                    continue; // measured from the origin, Annex III's t change with a shift: its slip
                 const auto reference = fitBezier(base, options(5, p, s));
                 const auto fit = fitBezier(q, options(5, p, s));
                 QVERIFY(reference.ok());

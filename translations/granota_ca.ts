@@ -1728,6 +1728,14 @@
             <source>α(t) in powers of t is not shown beyond degree %1: its coefficients grow like C(n, k) and cancel each other.</source>
             <translation>No es mostra α(t) en potències de t més enllà del grau %1: els coeficients creixen com C(n, k) i es cancel·len entre ells.</translation>
         </message>
+        <message>
+            <source>Annex III&apos;s distances d_i = |Q_i−1| (BezParamProp)</source>
+            <translation>Distàncies de l&apos;Annex III d_i = |Q_i−1| (BezParamProp)</translation>
+        </message>
+        <message>
+            <source>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: d_i = |Q_i−1|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md).</source>
+            <translation>El BezParamProp de l&apos;Annex III, tal com el calcula el Matlab del treball: d_i = |Q_i−1|, la distància del punt anterior a l&apos;origen, no al seu veí — les Fig. 2.7 i 2.8 es van dibuixar amb aquests paràmetres (docs/thesis-errata.md).</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::FitTab</name>
@@ -2251,6 +2259,14 @@ a cada canvi alentiria la finestra.</translation>
         <message>
             <source>Fit cancelled: the curve shown is the best fit found so far.</source>
             <translation>Ajust cancel·lat: la corba que es mostra és el millor ajust trobat fins ara.</translation>
+        </message>
+        <message>
+            <source>Annex III (BezParamProp)</source>
+            <translation>Annex III (BezParamProp del treball)</translation>
+        </message>
+        <message>
+            <source>Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord lengths d_i = dist(Q_i−1, Q_i); centripetal, proportional to √d_i; or as Annex III&apos;s BezParamProp computes them, with |Q_i−1| in place of d_i (how Figs 2.7 and 2.8 were drawn).</source>
+            <translation>On ha de caure cada Q_i sobre la corba (§2.1.3): parametrització uniforme t_i = i/k; proporcional a les longituds de corda d_i = dist(Q_i−1, Q_i); centrípeta, proporcional a √d_i; o com la calcula el BezParamProp de l&apos;Annex III, amb |Q_i−1| en lloc de d_i (com es van dibuixar les Fig. 2.7 i 2.8).</translation>
         </message>
     </context>
     <context>

@@ -1728,6 +1728,14 @@
             <source>α(t) in powers of t is not shown beyond degree %1: its coefficients grow like C(n, k) and cancel each other.</source>
             <translation>α(t) in powers of t is not shown beyond degree %1: its coefficients grow like C(n, k) and cancel each other.</translation>
         </message>
+        <message>
+            <source>Annex III&apos;s distances d_i = |Q_i−1| (BezParamProp)</source>
+            <translation>Annex III&apos;s distances d_i = |Q_i−1| (BezParamProp)</translation>
+        </message>
+        <message>
+            <source>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: d_i = |Q_i−1|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md).</source>
+            <translation>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: d_i = |Q_i−1|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md).</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::FitTab</name>
@@ -2251,6 +2259,14 @@ on each change would slow the window.</translation>
         <message>
             <source>Fit cancelled: the curve shown is the best fit found so far.</source>
             <translation>Fit cancelled: the curve shown is the best fit found so far.</translation>
+        </message>
+        <message>
+            <source>Annex III (BezParamProp)</source>
+            <translation>Annex III (BezParamProp)</translation>
+        </message>
+        <message>
+            <source>Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord lengths d_i = dist(Q_i−1, Q_i); centripetal, proportional to √d_i; or as Annex III&apos;s BezParamProp computes them, with |Q_i−1| in place of d_i (how Figs 2.7 and 2.8 were drawn).</source>
+            <translation>Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord lengths d_i = dist(Q_i−1, Q_i); centripetal, proportional to √d_i; or as Annex III&apos;s BezParamProp computes them, with |Q_i−1| in place of d_i (how Figs 2.7 and 2.8 were drawn).</translation>
         </message>
     </context>
     <context>

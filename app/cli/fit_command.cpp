@@ -49,7 +49,7 @@ Expected<CommandOutput> run(const Arguments& args)
     auto degree = args.integer("degree", 0, kMaxFitDegree, std::nullopt);
     if (!degree)
         return degree.error();
-    auto paramName = args.choice("param", {"uniform", "chord", "centripetal"}, std::string("uniform"));
+    auto paramName = args.choice("param", {"uniform", "chord", "centripetal", "annex-iii"}, std::string("uniform"));
     if (!paramName)
         return paramName.error();
     auto solverName = args.choice("solver", {"qr", "normal", "svd"}, std::string("qr"));
@@ -159,7 +159,7 @@ Command fitCommand()
 {
     return {"fit",
             "--points Q | --points-file F  --degree n (0 to " + std::to_string(kMaxFitDegree) +
-                ")  [--param uniform|chord|centripetal] [--solver qr|normal|svd] "
+                ")  [--param uniform|chord|centripetal|annex-iii] [--solver qr|normal|svd] "
                 "[--iterate] [--exact] [--json]",
             "least-squares Bézier fit: control points, t_i, Σ‖Q_i − α(t_i)‖², cond₂(M); --exact adds M, MᵀM, (MᵀM)⁻¹, M⁺",
             {{"points", "points-file", "degree", "param", "solver"}, {"exact", "json", "iterate"}, {}},

@@ -79,11 +79,20 @@ QString FitExactView::html(const Input& in)
 
     // Chord lengths d_j = |Q_j − Q_{j−1}| (§2.1.3), in simplest radical form (Ex 2.9).
     if (byDistance && rational && count >= 2) {
-        html += ExactPanel::heading(tr("Chord lengths d_i = dist(Q_i−1, Q_i)"));
-        const auto d = exactChordLengths(*rational);
+        // Annex III's BezParamProp measures each point before from the origin instead.
+        const bool annex = in.parametrization == Parametrization::AnnexIII;
+        html += ExactPanel::heading(annex ? tr("Annex III's distances d_i = |Q_i−1| (BezParamProp)")
+                                          : tr("Chord lengths d_i = dist(Q_i−1, Q_i)"));
+        std::vector<std::optional<SimplifiedSquareRoot>> d;
+        if (annex)
+            for (std::size_t j = 0; j + 1 < rational->size(); ++j)
+                d.push_back(
+                    simplifySquareRoot(Rational((*rational)[j].x * (*rational)[j].x + (*rational)[j].y * (*rational)[j].y)));
+        else
+            d = exactChordLengths(*rational);
         for (std::size_t j = 0; j < d.size(); ++j) {
             const Point a = q[j], b = q[j + 1];
-            const double approx = norm(b - a);
+            const double approx = annex ? norm(a) : norm(b - a);
             const QString value = d[j] ? QString::fromStdString(toString(*d[j])) : decimal(approx);
             const bool isRational = d[j] && d[j]->radicand == 1;
             html += line(
@@ -95,6 +104,12 @@ QString FitExactView::html(const Input& in)
         if (thesisData && in.parametrization == Parametrization::ChordLength)
             html += ExactPanel::note(tr("The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has "
                                         "x = 8, so d_4 = √(49 + 49) = 7√2, which is used here."));
+        if (in.parametrization == Parametrization::AnnexIII)
+            html += QStringLiteral("<p>%1</p>")
+                        .arg(tr("Annex III's BezParamProp, as the thesis's Matlab computes it: d_i = |Q_i−1|, the "
+                                "distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 "
+                                "were drawn with these parameters (docs/thesis-errata.md).")
+                                 .toHtmlEscaped());
         if (in.parametrization == Parametrization::Centripetal)
             html += QStringLiteral("<p>%1</p>")
                         .arg(tr("Centripetal parameters (beyond the thesis) use √d_i instead of d_i.").toHtmlEscaped());

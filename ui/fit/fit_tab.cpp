@@ -211,7 +211,8 @@ void FitTab::buildUi()
     form->addRow(m_degreeLabel, m_degree);
     m_parametrization = new WholeComboBox(m_settingsGroup);
     m_parametrization->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-    for (Parametrization p : {Parametrization::Uniform, Parametrization::ChordLength, Parametrization::Centripetal})
+    for (Parametrization p :
+         {Parametrization::Uniform, Parametrization::ChordLength, Parametrization::Centripetal, Parametrization::AnnexIII})
         m_parametrization->addItem(QString(), static_cast<int>(p));
     m_parametrizationLabel = new QLabel(m_settingsGroup);
     m_parametrizationLabel->setBuddy(m_parametrization);
@@ -503,9 +504,11 @@ void FitTab::retranslate()
     m_parametrization->setItemText(0, tr("Uniform, i/k (Ex 2.7, 2.8)"));
     m_parametrization->setItemText(1, tr("Chord length (Ex 2.9, 2.10)"));
     m_parametrization->setItemText(2, tr("Centripetal (beyond the thesis)"));
+    m_parametrization->setItemText(3, tr("Annex III (BezParamProp)"));
     m_parametrization->setToolTip(
         tr("Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord "
-           "lengths d_i = dist(Q_i−1, Q_i); or centripetal, proportional to √d_i."));
+           "lengths d_i = dist(Q_i−1, Q_i); centripetal, proportional to √d_i; or as Annex III's BezParamProp "
+           "computes them, with |Q_i−1| in place of d_i (how Figs 2.7 and 2.8 were drawn)."));
     m_solverLabel->setText(tr("&Solver:"));
     m_solver->setItemText(0, tr("QR (default)"));
     m_solver->setItemText(1, tr("Normal equations (the thesis)"));

@@ -495,13 +495,14 @@ Expected<ExactFit> fitBezierExact(const std::vector<RPoint>& q, int degree, Para
         // Name the first distance that spoils it (Ex 2.9: d_1 = √10).
         std::string which;
         for (std::size_t j = 1; j < q.size() && which.empty(); ++j) {
-            const Rational dx = Rational(q[j].x - q[j - 1].x);
-            const Rational dy = Rational(q[j].y - q[j - 1].y);
+            const bool annex = p == Parametrization::AnnexIII; // |Q_{j−1}|, as BezParamProp
+            const Rational dx = annex ? q[j - 1].x : Rational(q[j].x - q[j - 1].x);
+            const Rational dy = annex ? q[j - 1].y : Rational(q[j].y - q[j - 1].y);
             const Rational squared = Rational(dx * dx + dy * dy);
             const std::optional<Rational> d = exactSqrt(squared);
             if (!d)
-                which = "d_" + std::to_string(j) + " = |Q_" + std::to_string(j) + " − Q_" + std::to_string(j - 1) + "| = √(" +
-                        toString(squared) + ")";
+                which = "d_" + std::to_string(j) + " = |Q_" + std::to_string(j - 1) + (annex ? "" : " − Q_" + std::to_string(j)) +
+                        "| = √(" + toString(squared) + ")";
             else if (p == Parametrization::Centripetal && !exactSqrt(*d))
                 which = "√d_" + std::to_string(j) + " = √(" + toString(*d) + ")";
         }

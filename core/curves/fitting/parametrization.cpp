@@ -11,10 +11,11 @@ namespace granota {
 
 namespace {
 
-constexpr std::array<EnumName<Parametrization>, 3> kParametrizationNames{{
+constexpr std::array<EnumName<Parametrization>, 4> kParametrizationNames{{
     {Parametrization::Uniform, "uniform"},
     {Parametrization::ChordLength, "chord"},
     {Parametrization::Centripetal, "centripetal"},
+    {Parametrization::AnnexIII, "annex-iii"},
 }};
 
 std::vector<double> uniformParameters(std::size_t count)
@@ -65,11 +66,14 @@ std::vector<double> parameters(const std::vector<Point>& q, Parametrization p, b
     const int exponent = (std::isfinite(largest) && largest > 0.0) ? std::ilogb(largest) : 0;
     const auto scaled = [exponent](double v) { return std::ldexp(v, -exponent); };
 
-    // d_j = dist(Q_{j−1}, Q_j) (§2.1.3), or √d_j for centripetal; t_i = Σ_{j≤i} d_j / Σ d_j.
+    // d_j = dist(Q_{j−1}, Q_j) (§2.1.3), or √d_j for centripetal, or |Q_{j−1}| as Annex III
+    // computes it; t_i = Σ_{j≤i} d_j / Σ d_j.
     std::vector<double> t(q.size(), 0.0);
     double total = 0.0;
     for (std::size_t j = 1; j < q.size(); ++j) {
-        double d = std::hypot(scaled(q[j].x) - scaled(q[j - 1].x), scaled(q[j].y) - scaled(q[j - 1].y));
+        double d = p == Parametrization::AnnexIII
+                       ? std::hypot(scaled(q[j - 1].x), scaled(q[j - 1].y))
+                       : std::hypot(scaled(q[j].x) - scaled(q[j - 1].x), scaled(q[j].y) - scaled(q[j - 1].y));
         if (std::isnan(d)) // Q contains NaN; inf differences of huge points are caught below
             d = std::numeric_limits<double>::infinity();
         if (p == Parametrization::Centripetal)
@@ -98,8 +102,9 @@ std::optional<std::vector<Rational>> exactParameters(const std::vector<RPoint>& 
     std::vector<Rational> t(q.size(), Rational(0));
     Rational total(0);
     for (std::size_t j = 1; j < q.size(); ++j) {
-        const Rational dx = Rational(q[j].x - q[j - 1].x);
-        const Rational dy = Rational(q[j].y - q[j - 1].y);
+        const bool annex = p == Parametrization::AnnexIII; // |Q_{j−1}|, as BezParamProp
+        const Rational dx = annex ? q[j - 1].x : Rational(q[j].x - q[j - 1].x);
+        const Rational dy = annex ? q[j - 1].y : Rational(q[j].y - q[j - 1].y);
         std::optional<Rational> d = exactSqrt(Rational(dx * dx + dy * dy));
         if (d && p == Parametrization::Centripetal)
             d = exactSqrt(*d);

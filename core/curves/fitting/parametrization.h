@@ -6,7 +6,11 @@
 ///  - chord length: t_i = Σ_{j≤i} d_j / Σ_j d_j with d_j = |Q_j − Q_{j−1}| (Ex 2.9, Ex 2.10,
 ///    Matlab `BezParamProp`). The thesis's Matlab code uses |Q_j| and Ex 2.9 writes (1 − 7)
 ///    where Q_3 has x = 8: Granota implements the definition, so Ex 2.9 has d_4 = 7√2;
-///  - centripetal (beyond the thesis): the same with √d_j.
+///  - centripetal (beyond the thesis): the same with √d_j;
+///  - Annex III (the thesis's own Matlab `BezParamProp`, as it computes): d_j = |Q_{j−1}|,
+///    the distance of the point before from the origin, not from its neighbour, so
+///    t_i = Σ_{j<i} |Q_j| / Σ_{j<k} |Q_j|. Figs 2.7/2.8 were drawn with it (Ex 2.9:
+///    t = 0, 0, 0.19913, 0.48074, 1); docs/thesis-errata.md.
 
 #include "core/exact/rational.h"
 #include "core/base/vec2.h"
@@ -22,9 +26,10 @@ enum class Parametrization {
     Uniform,     ///< t_i = i/k
     ChordLength, ///< proportional to the distances between consecutive points
     Centripetal, ///< proportional to the square roots of those distances
+    AnnexIII,    ///< as Annex III's BezParamProp computes them: proportional to |Q_{i−1}|
 };
 
-/// "uniform", "chord", "centripetal" (case-insensitive); nullopt for anything else.
+/// "uniform", "chord", "centripetal", "annex-iii" (case-insensitive); nullopt for anything else.
 std::optional<Parametrization> parseParametrization(std::string_view text);
 /// The name parseParametrization() reads back.
 std::string toString(Parametrization p);
