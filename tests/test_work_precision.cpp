@@ -2,6 +2,7 @@
 // here (orders of convergence, who loses digits where), never the times.
 #include "core/curves/bezier/arc_length.h"
 #include "core/reports/work_precision.h"
+#include "core/softbody/integrators.h"
 #include "core/reports/work_precision_reports.h"
 
 #include <QTest>
@@ -78,6 +79,8 @@ private slots:
         QTest::newRow("explicit Euler") << QStringLiteral("explicit Euler") << 1.0 << 1.0 / 32;
         QTest::newRow("semi-implicit Euler") << QStringLiteral("semi-implicit Euler") << 1.0 << 1.0 / 32;
         QTest::newRow("Verlet") << QStringLiteral("Verlet") << 2.0 << 1.0 / 8;
+        // Annex II's start x_-1 = x_0 - h v_0 makes Def 3.1 semi-implicit Euler: first order.
+        QTest::newRow("Verlet (Annex II start)") << QStringLiteral("Verlet (Annex II start)") << 1.0 << 1.0 / 32;
         QTest::newRow("RK4") << QStringLiteral("RK4") << 4.0 << 1.0 / 4;
     }
     void integratorsConvergeAtTheirOrder()
@@ -92,6 +95,34 @@ private slots:
         const double hMin = order == 4.0 ? 1.0 / 64 : 1.0 / 1024;
         const double p = observedOrder(*s, hMin, hMax);
         QVERIFY2(std::fabs(p - order) < 0.25, qPrintable(QStringLiteral("%1: observed order %2").arg(method).arg(p)));
+    }
+    // Issue 33, part 5: with Annex II's start Def 3.1 gives the positions of semi-implicit
+    // Euler (x_1 = x_0 + h v_0 + h² a_0 for both, the same recurrence after), so the two
+    // series agree to rounding; the issue's figures, computed apart (x'' = −x, T = 10): the
+    // Annex II start 3.85e-2 at h = 2⁻³ and 1.33e-4 at 2⁻¹¹, the Taylor start 7.45e-3 and
+    // 1.13e-7.
+    void verletWithAnnexIIStartIsSemiImplicitEuler()
+    {
+        const auto r = quickReport("integrators");
+        const auto [annex, semi, taylor] = seriesOf(r, "Verlet (Annex II start)", "semi-implicit Euler", "Verlet");
+        QVERIFY(annex && semi && taylor);
+        for (const auto& p : semi->samples)
+            QVERIFY2(std::fabs(errorAt(*annex, p.knob) - p.error) <= 1e-6 * p.error, qPrintable(QString::number(p.knob)));
+        const auto near = [](double a, double b) { return std::fabs(a - b) <= 0.005 * b; };
+        QVERIFY2(near(errorAt(*annex, 1.0 / 8), 3.85e-2), qPrintable(QString::number(errorAt(*annex, 1.0 / 8))));
+        QVERIFY2(near(errorAt(*taylor, 1.0 / 8), 7.45e-3), qPrintable(QString::number(errorAt(*taylor, 1.0 / 8))));
+        // h = 2⁻¹¹ is past the quick report's finest step: the same run, by hand.
+        const auto errorAtEnd = [](bool annexII) {
+            const double h = 1.0 / 2048;
+            auto a = [](Point x, Point) { return Point(-x.x, -x.y); };
+            ParticleState s = annexII ? startParticleAnnexII(Point(1, 0), Point(0, 1), h, a)
+                                      : startParticle(Point(1, 0), Point(0, 1), h, a);
+            for (long i = 0; i < 10 * 2048; ++i)
+                integrate(Integrator::Verlet, s, h, a);
+            return std::hypot(s.position.x - std::cos(10.0), s.position.y - std::sin(10.0));
+        };
+        QVERIFY2(near(errorAtEnd(true), 1.33e-4), qPrintable(QString::number(errorAtEnd(true))));
+        QVERIFY2(near(errorAtEnd(false), 1.13e-7), qPrintable(QString::number(errorAtEnd(false))));
     }
     void verletBeatsEulerAtEqualCost()
     {

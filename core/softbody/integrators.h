@@ -44,6 +44,18 @@ template <class Accel> ParticleState startParticle(Point x0, Point v0, double h,
     return {x0, v0, Point(x0.x - h * v0.x + 0.5 * h * h * a0.x, x0.y - h * v0.y + 0.5 * h * h * a0.y)};
 }
 
+/// Starts a particle as Annex II starts its vertices: x_{−1} = x0 − h v0 (the previous
+/// position one velocity step back, without the ½ h² a0 term). With this start Def 3.1's
+/// x_{t+1} = 2x_t − x_{t−1} + h² a_t gives exactly the positions of semi-implicit Euler,
+/// the update the thesis derives it from (x_1 = x0 + h v0 + h² a0 for both, and the
+/// recurrences agree from there): first order, not second (docs/thesis-errata.md).
+template <class Accel> ParticleState startParticleAnnexII(Point x0, Point v0, double h, Accel a)
+{
+    ParticleState s = startParticle(x0, v0, h, a);
+    s.previous = Point(x0.x - h * v0.x, x0.y - h * v0.y);
+    return s;
+}
+
 /// One step of size h. Verlet has no velocity of its own; for readouts (energy) it is
 /// estimated as (x_{t+1} − x_t)/h + ½ h a_t, which is v(t+1) to O(h²) — the plain
 /// difference quotient is v(t+½) and would show a spurious first-order energy error.
