@@ -194,6 +194,26 @@ private slots:
         QVERIFY2(exact.err.contains("|Q_1| = √(10)"), exact.err.constData());
     }
 
+    // fit --exact --json gives §2.1.3's checks (issue 33, part 4): the four Penrose
+    // conditions, and the Hessian 2MᵀM — Ex 2.7's MᵀM as printed, doubled — with positive
+    // eigenvalues that sum to its trace, 2·(177 + 68 + 177)/128 = 211/32 (by hand).
+    void fitExactChecksPenroseAndTheHessian()
+    {
+        const Run r = cli({"fit", "--points", kEx27, "--degree", "2", "--exact", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject j = r.json();
+        QCOMPARE(j["penrose"].toArray(), (QJsonArray{true, true, true, true}));
+        QCOMPARE(strings(j["hessian"].toArray()[0].toArray()), (QStringList{"177/64", "23/32", "17/64"}));
+        double sum = 0;
+        for (const QJsonValue& v : j["hessian_eigenvalues"].toArray()) {
+            QVERIFY(v.toDouble() > 0);
+            sum += v.toDouble();
+        }
+        QVERIFY(std::abs(sum - 211.0 / 32) < 1e-13);
+        const Run text = cli({"fit", "--points", kEx27, "--degree", "2", "--exact"});
+        QVERIFY2(text.out.contains("(M⁺M)ᵀ = M⁺M ✓") && text.out.contains("all positive"), text.out.constData());
+    }
+
     void catmullRomEx213()
     {
         const Run r = cli(

@@ -3,12 +3,15 @@
 // thesis's slips), the optimality of Prop 2.2, and the numerical behaviour the thesis does
 // not discuss: conditioning, rank deficiency, extreme data, parameter correction.
 #include "core/curves/fitting/least_squares_fit.h"
+#include "core/exact/moore_penrose.h"
 #include "core/curves/fitting/parametrization.h"
 #include "core/exact/polynomial.h"
 #include "core/exact/rational.h"
 #include "core/exact/rational_matrix.h"
 
 #include <Eigen/Dense>
+
+#include <algorithm>
 #include <QElapsedTimer>
 #include <QtTest>
 #include "tests/test_main.h"
@@ -320,6 +323,44 @@ private slots:
             // α′(0) = 3(P_1 − P_0) = 3(-3371/630 - 11/70) = -347/21 = -1735/105. The other
             // seven coefficients are as printed.
             << QStringList{"11/70", "-347/21", "608/7", "-208/3"} << QStringList{"-13/70", "275/7", "-800/7", "80"};
+    }
+    // §2.1.3 checked (issue 33, part 4): the thesis's M⁺ of Ex 2.7 (typed from the print)
+    // meets the four Penrose conditions in its order; one entry changed breaks them. The
+    // Hessian 2MᵀM is the thesis's MᵀM doubled, and its eigenvalues are 2σ_i², σ_i from
+    // Eigen's SVD of M (another algorithm), all positive: Prop 2.2's minimum.
+    void penroseConditionsAndTheHessian()
+    {
+        const RationalMatrix M{{R("1"), R("0"), R("0")},
+                               {R("9/16"), R("3/8"), R("1/16")},
+                               {R("1/4"), R("1/2"), R("1/4")},
+                               {R("1/16"), R("3/8"), R("9/16")},
+                               {R("0"), R("0"), R("1")}};
+        RationalMatrix Mplus{{R("31/35"), R("9/35"), R("-3/35"), R("-1/7"), R("3/35")},
+                             {R("-23/35"), R("22/35"), R("37/35"), R("22/35"), R("-23/35")},
+                             {R("3/35"), R("-1/7"), R("-3/35"), R("9/35"), R("31/35")}};
+        QCOMPARE(penroseConditions(M, Mplus), (std::array<bool, 4>{true, true, true, true}));
+        RationalMatrix wrong = Mplus;
+        wrong(1, 2) = R("36/35");
+        const auto broken = penroseConditions(M, wrong);
+        QVERIFY(!broken[0] || !broken[1] || !broken[2] || !broken[3]);
+        QVERIFY(!broken[0]);
+        QCOMPARE(penroseConditions(M, M), (std::array<bool, 4>{false, false, false, false})); // not even its shape
+        const RationalMatrix H = leastSquaresHessian(M);
+        QCOMPARE(str(H), QStringLiteral("[177/64, 23/32, 17/64; 23/32, 17/16, 23/32; 17/64, 23/32, 177/64]"));
+        Eigen::MatrixXd md(5, 3);
+        for (int r = 0; r < 5; ++r)
+            for (int c = 0; c < 3; ++c)
+                md(r, c) = toDouble(M(r, c));
+        const Eigen::JacobiSVD<Eigen::MatrixXd> svd(md);
+        std::vector<double> expected;
+        for (Eigen::Index i = 0; i < svd.singularValues().size(); ++i)
+            expected.push_back(2 * svd.singularValues()(i) * svd.singularValues()(i));
+        std::sort(expected.begin(), expected.end());
+        const std::vector<double> eigenvalues = symmetricEigenvalues(H);
+        QCOMPARE(eigenvalues.size(), expected.size());
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            QVERIFY(std::fabs(eigenvalues[i] - expected[i]) <= 1e-13 * expected.back());
+        QVERIFY(eigenvalues.front() > 0);
     }
     void thesisExamplesExactly()
     {

@@ -4,6 +4,7 @@
 #include "app/cli/finite_doubles.h"
 
 #include "core/curves/fitting/least_squares_fit.h"
+#include "core/exact/moore_penrose.h"
 #include "core/base/number_format.h"
 
 #include <sstream>
@@ -107,6 +108,19 @@ Expected<CommandOutput> run(const Arguments& args)
             .set("MtM", matrixJson(e->MtM))
             .set("MtM_inv", matrixJson(e->MtMinv))
             .set("M_pinv", matrixJson(e->Mplus));
+        // §2.1.3 checked: the four Penrose conditions of M⁺ (the thesis's order), and
+        // Prop 2.2's Hessian 2MᵀM with its eigenvalues 2σ_i², all positive (a minimum).
+        const std::array<bool, 4> penrose = penroseConditions(e->M, e->Mplus);
+        const RationalMatrix hessian = leastSquaresHessian(e->M);
+        const std::vector<double> eigenvalues = symmetricEigenvalues(hessian);
+        Json penroseJson = Json::array(), eigenJson = Json::array();
+        for (bool holds : penrose)
+            penroseJson.push(Json(holds));
+        for (double v : eigenvalues)
+            eigenJson.push(v);
+        out.json.set("penrose", std::move(penroseJson))
+            .set("hessian", matrixJson(hessian))
+            .set("hessian_eigenvalues", std::move(eigenJson));
         txt << "t_i: ";
         for (const Rational& t : e->params)
             txt << " " << toString(t);
@@ -119,6 +133,13 @@ Expected<CommandOutput> run(const Arguments& args)
         for (int j = 0; j < e->P.rows(); ++j)
             txt << "  P_" << j << " = " << text(RPoint(e->P(j, 0), e->P(j, 1))) << "\n";
         txt << "Σ‖Q_i − α(t_i)‖² = " << toString(e->sse) << "\n";
+        txt << "Penrose conditions of M⁺: MM⁺M = M " << (penrose[0] ? "✓" : "✗") << ", M⁺MM⁺ = M⁺ " << (penrose[1] ? "✓" : "✗")
+            << ", (MM⁺)ᵀ = MM⁺ " << (penrose[2] ? "✓" : "✗") << ", (M⁺M)ᵀ = M⁺M " << (penrose[3] ? "✓" : "✗") << "\n";
+        matrixText(txt, "Hessian 2MᵀM (Prop 2.2)", hessian);
+        txt << "its eigenvalues 2σ_i²:";
+        for (double v : eigenvalues)
+            txt << " " << formatSignificant(v, 6); // decimals from doubles: six digits, no rounding noise
+        txt << (!eigenvalues.empty() && eigenvalues.front() > 0 ? "  (all positive: the critical point is a minimum)\n" : "\n");
     } else {
         for (const Point& p : fit->controlPoints)
             control.push(point(p));
