@@ -200,6 +200,12 @@ private slots:
         for (const char* row : {"9/16\t3/8\t1/16", "177/128\t23/64\t17/128", "31/35\t-23/35\t3/35", "-23/35\t97/35\t-23/35",
                                 "31/35\t9/35\t-3/35\t-1/7\t3/35", "-23/35\t22/35\t37/35\t22/35\t-23/35"})
             QVERIFY2(matrices.contains(QString::fromUtf8(row)), row);
+        // §2.1.3 checked beside them (issue 33, part 4): the four Penrose conditions hold, and
+        // the Hessian is the printed MᵀM doubled (177/128 · 2 = 177/64) with positive eigenvalues.
+        QVERIFY2(matrices.contains(QStringLiteral("MM⁺M = M ✓, M⁺MM⁺ = M⁺ ✓, (MM⁺)ᵀ = MM⁺ ✓, (M⁺M)ᵀ = M⁺M ✓")),
+                 qPrintable(matrices));
+        QVERIFY(matrices.contains(QStringLiteral("177/64\t23/32\t17/64")));
+        QVERIFY(matrices.contains(QStringLiteral("all positive")));
     }
 
     void ex28Exact()

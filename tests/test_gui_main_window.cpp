@@ -585,7 +585,7 @@ private slots:
         QTest::newRow("bernstein") << QStringLiteral("bernstein") << 3;     // De Casteljau, Bernstein, Horner
         QTest::newRow("fit") << QStringLiteral("fit") << 3;                 // normal equations, QR, SVD
         QTest::newRow("catmull-rom") << QStringLiteral("catmull-rom") << 2;
-        QTest::newRow("frog") << QStringLiteral("frog") << 4; // Euler, semi-implicit, Verlet, RK4
+        QTest::newRow("frog") << QStringLiteral("frog") << 5; // Euler, semi-implicit, Verlet (two starts), RK4
     }
     void workPrecisionBelowEachTab()
     {

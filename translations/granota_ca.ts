@@ -1736,6 +1736,22 @@
             <source>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: d_i = |Q_i−1|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md).</source>
             <translation>El BezParamProp de l&apos;Annex III, tal com el calcula el Matlab del treball: d_i = |Q_i−1|, la distància del punt anterior a l&apos;origen, no al seu veí — les Fig. 2.7 i 2.8 es van dibuixar amb aquests paràmetres (docs/thesis-errata.md).</translation>
         </message>
+        <message>
+            <source>The Penrose conditions of M⁺ (§2.1.3), checked exactly: %1</source>
+            <translation>Les condicions de Penrose de M⁺ (§2.1.3), comprovades exactament: %1</translation>
+        </message>
+        <message>
+            <source>Hessian 2MᵀM (Prop 2.2)</source>
+            <translation>Hessiana 2MᵀM (Prop. 2.2)</translation>
+        </message>
+        <message>
+            <source>Its eigenvalues 2σᵢ²: %1 — all positive, so the error&apos;s critical point is its minimum.</source>
+            <translation>Els seus valors propis 2σᵢ²: %1 — tots positius, i per tant el punt crític de l&apos;error n&apos;és el mínim.</translation>
+        </message>
+        <message>
+            <source>Its eigenvalues 2σᵢ²: %1.</source>
+            <translation>Els seus valors propis 2σᵢ²: %1.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::FitTab</name>

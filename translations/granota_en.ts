@@ -1736,6 +1736,22 @@
             <source>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: d_i = |Q_i−1|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md).</source>
             <translation>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: d_i = |Q_i−1|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md).</translation>
         </message>
+        <message>
+            <source>The Penrose conditions of M⁺ (§2.1.3), checked exactly: %1</source>
+            <translation>The Penrose conditions of M⁺ (§2.1.3), checked exactly: %1</translation>
+        </message>
+        <message>
+            <source>Hessian 2MᵀM (Prop 2.2)</source>
+            <translation>Hessian 2MᵀM (Prop 2.2)</translation>
+        </message>
+        <message>
+            <source>Its eigenvalues 2σᵢ²: %1 — all positive, so the error&apos;s critical point is its minimum.</source>
+            <translation>Its eigenvalues 2σᵢ²: %1 — all positive, so the error&apos;s critical point is its minimum.</translation>
+        </message>
+        <message>
+            <source>Its eigenvalues 2σᵢ²: %1.</source>
+            <translation>Its eigenvalues 2σᵢ²: %1.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::FitTab</name>

@@ -1,4 +1,6 @@
 #include "ui/fit/fit_exact_view.h"
+
+#include "core/exact/moore_penrose.h"
 #include "ui/common/number_text.h"
 
 #include "core/curves/bezier/power_basis.h"
@@ -160,6 +162,23 @@ QString FitExactView::html(const Input& in)
             html += ExactPanel::matrix(QStringLiteral("MᵀM"), entries(exact->MtM));
             html += ExactPanel::matrix(QStringLiteral("(MᵀM)⁻¹"), entries(exact->MtMinv));
             html += ExactPanel::matrix(QStringLiteral("M⁺ = (MᵀM)⁻¹Mᵀ"), entries(exact->Mplus));
+            // §2.1.3 checked on these matrices: M⁺ meets the four Penrose conditions, and the
+            // Hessian 2MᵀM of Prop 2.2 is positive definite (core/exact/moore_penrose.h).
+            const std::array<bool, 4> penrose = penroseConditions(exact->M, exact->Mplus);
+            const QString conditions = QStringLiteral("MM⁺M = M %1, M⁺MM⁺ = M⁺ %2, (MM⁺)ᵀ = MM⁺ %3, (M⁺M)ᵀ = M⁺M %4")
+                                           .arg(ExactPanel::checkMark(penrose[0]), ExactPanel::checkMark(penrose[1]),
+                                                ExactPanel::checkMark(penrose[2]), ExactPanel::checkMark(penrose[3]));
+            html += line(tr("The Penrose conditions of M⁺ (§2.1.3), checked exactly: %1").arg(conditions));
+            const RationalMatrix hessian = leastSquaresHessian(exact->M);
+            html += ExactPanel::matrix(tr("Hessian 2MᵀM (Prop 2.2)"), entries(hessian));
+            const std::vector<double> values = symmetricEigenvalues(hessian);
+            QStringList eigenvalues;
+            for (double v : values)
+                eigenvalues << displaySignificant(v, 6);
+            html += line(!values.empty() && values.front() > 0
+                             ? tr("Its eigenvalues 2σᵢ²: %1 — all positive, so the error's critical point is its minimum.")
+                                   .arg(eigenvalues.join(QStringLiteral("; ")))
+                             : tr("Its eigenvalues 2σᵢ²: %1.").arg(eigenvalues.join(QStringLiteral("; "))));
         }
         html += ExactPanel::heading(tr("Control points P = M⁺Q"));
         std::vector<RPoint> P;
