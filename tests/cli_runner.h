@@ -31,7 +31,10 @@ inline CliRun runCliToFile(const QString& stdoutFile, const QStringList& args, i
 
 namespace cli_runner_detail {
 
-inline CliRun run(const QStringList& env, const QString& stdoutFile, const QStringList& args, int timeoutMs)
+/// `wrapper`, when given, is a command that runs granota-cli: its program and its first
+/// arguments, then granota-cli's path and `args` follow (a shell setting ulimit, say).
+inline CliRun run(const QStringList& env, const QString& stdoutFile, const QStringList& args, int timeoutMs,
+                  const QStringList& wrapper = {})
 {
     QProcess p;
     if (!stdoutFile.isEmpty())
@@ -42,7 +45,10 @@ inline CliRun run(const QStringList& env, const QString& stdoutFile, const QStri
             e.insert(kv.section(QLatin1Char('='), 0, 0), kv.section(QLatin1Char('='), 1));
         p.setProcessEnvironment(e);
     }
-    p.start(QStringLiteral(GRANOTA_CLI_PATH), args);
+    if (wrapper.isEmpty())
+        p.start(QStringLiteral(GRANOTA_CLI_PATH), args);
+    else
+        p.start(wrapper.front(), wrapper.mid(1) + QStringList{QStringLiteral(GRANOTA_CLI_PATH)} + args);
     CliRun r;
     if (!p.waitForFinished(timeoutMs)) {
         p.kill();
@@ -66,6 +72,14 @@ inline CliRun runCliWith(const QStringList& env, const QStringList& args, int ti
 inline CliRun runCliToFile(const QString& stdoutFile, const QStringList& args, int timeoutMs)
 {
     return cli_runner_detail::run({}, stdoutFile, args, timeoutMs);
+}
+
+/// Runs granota-cli with its address space limited to `kib` KiB (`ulimit -v`).
+inline CliRun runCliInAddressSpace(const QString& kib, const QStringList& args, int timeoutMs)
+{
+    return cli_runner_detail::run({}, QString(), args, timeoutMs,
+                                  {QStringLiteral("/bin/sh"), QStringLiteral("-c"),
+                                   QStringLiteral("ulimit -v %1; exec \"$0\" \"$@\"").arg(kib)});
 }
 
 /// What granota-cli does with bad input (docs/cli.md): exit 2 and "error: …" on standard

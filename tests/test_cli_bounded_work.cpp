@@ -12,13 +12,7 @@
 #include <QProcess>
 #include <QTemporaryDir>
 
-#if defined(__SANITIZE_ADDRESS__)
-#define GRANOTA_TEST_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define GRANOTA_TEST_ASAN 1
-#endif
-#endif
+#include "tests/asan.h"
 
 namespace {
 
@@ -36,21 +30,7 @@ CliRun runBounded(const QStringList& args)
 #ifdef GRANOTA_TEST_ASAN
     return runCli(args, kHangGuardMs);
 #else
-    QProcess p;
-    p.start(QStringLiteral("/bin/sh"), QStringList{"-c", QStringLiteral("ulimit -v %1; exec \"$0\" \"$@\"").arg(kAddressSpaceKiB),
-                                                   QStringLiteral(GRANOTA_CLI_PATH)} +
-                                           args);
-    CliRun r;
-    if (!p.waitForFinished(kHangGuardMs)) {
-        p.kill();
-        p.waitForFinished();
-        qWarning("granota-cli did not finish: %s", qPrintable(args.join(' ')));
-        return r;
-    }
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -2;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
+    return runCliInAddressSpace(QString::fromLatin1(kAddressSpaceKiB), args, kHangGuardMs);
 #endif
 }
 

@@ -18,15 +18,9 @@
 using namespace granota;
 Q_DECLARE_METATYPE(SolverKind)
 
-// Address-space limits do not work under AddressSanitizer (it reserves terabytes of shadow
-// memory): there the memory test runs without its limit.
-#if defined(__SANITIZE_ADDRESS__)
-#define GRANOTA_TEST_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define GRANOTA_TEST_ASAN 1
-#endif
-#endif
+// Address-space limits do not work under AddressSanitizer: there the memory test runs
+// without its limit (tests/asan.h).
+#include "tests/asan.h"
 
 namespace {
 
@@ -563,19 +557,14 @@ private slots:
         const QByteArray last = QByteArray::fromStdString(simulationTraceRow(replay->simulation()));
         r.events = {};
 
-        QProcess p;
-        QStringList args{QStringLiteral("simulate"), QStringLiteral("--replay"), file, QStringLiteral("--trace"), trace};
+        const QStringList args{QStringLiteral("simulate"), QStringLiteral("--replay"), file, QStringLiteral("--trace"), trace};
+        constexpr int kHangGuardMs = 300000; // a hang guard only
 #ifdef GRANOTA_TEST_ASAN
-        p.start(QStringLiteral(GRANOTA_CLI_PATH), args);
+        const CliRun run = runCli(args, kHangGuardMs);
 #else
-        constexpr int kLimitKiB = 300 * 1024;
-        args.prepend(QStringLiteral(GRANOTA_CLI_PATH));
-        args.prepend(QStringLiteral("ulimit -v %1 && exec \"$0\" \"$@\"").arg(kLimitKiB));
-        args.prepend(QStringLiteral("-c"));
-        p.start(QStringLiteral("/bin/bash"), args);
+        const CliRun run = runCliInAddressSpace(QString::number(300 * 1024), args, kHangGuardMs);
 #endif
-        QVERIFY(p.waitForFinished(300000)); // a hang guard only
-        QVERIFY2(p.exitStatus() == QProcess::NormalExit && p.exitCode() == 0, p.readAllStandardError().constData());
+        QVERIFY2(run.exitCode == 0, run.err.constData());
         QFile t(trace);
         QVERIFY(t.open(QIODevice::ReadOnly));
         const QList<QByteArray> rows = t.readAll().trimmed().split('\n');

@@ -787,8 +787,8 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="322" />
-            <source>Draw the natural C² cubic spline of Def 2.3 through the same points (a function of x: the abscissae must increase) and check its continuity at the knots: Bézier C^∞, Catmull-Rom C¹, cubic spline C² (§2.3, Ex 2.1).</source>
-            <translation>Dibuixa l'spline cúbic natural C² de la Def. 2.3 pels mateixos punts (una funció de x: les abscisses han de créixer) i comprova'n la continuïtat als nusos: Bézier C^∞, Catmull-Rom C¹, spline cúbic C² (§2.3, Ex. 2.1).</translation>
+            <source>Draw the C² cubic spline of Def 2.3 through the same points, with the ends chosen below (a function of x: the abscissae must increase), and check its continuity at the knots: Bézier C^∞, Catmull-Rom C¹, cubic spline C² (§2.3, Ex 2.1).</source>
+            <translation>Dibuixa l'spline cúbic C² de la Def. 2.3 pels mateixos punts, amb els extrems triats a sota (una funció de x: les abscisses han de créixer), i comprova'n la continuïtat als nusos: Bézier C^∞, Catmull-Rom C¹, spline cúbic C² (§2.3, Ex. 2.1).</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="325" />

@@ -18,18 +18,6 @@ namespace {
 constexpr int kMaxSamples = 100000;
 constexpr int kDefaultSamples = 11; // s = 0, 0.1, …, 1
 
-template <class S> Json coefficients(const Polynomial<S>& p, bool exact)
-{
-    Json a = Json::array();
-    for (const S& c : p.coefficients(3)) {
-        if constexpr (std::is_same_v<S, Rational>)
-            a.push(number(c, exact));
-        else
-            a.push(number(c));
-    }
-    return a;
-}
-
 /// Each segment's cubic Bézier control points b_0..b_3 (bezier_segments.h), segment order.
 Json bezierJson(const std::vector<Vec2<Polynomial<Rational>>>& segments)
 {
@@ -113,7 +101,7 @@ Expected<CommandOutput> run(const Arguments& args)
         for (std::size_t i = 0; i < segs->size(); ++i) {
             const auto& s = (*segs)[i];
             Json seg = Json::object();
-            seg.set("x", coefficients(s.x, true)).set("y", coefficients(s.y, true));
+            seg.set("x", cubicCoefficients(s.x, true)).set("y", cubicCoefficients(s.y, true));
             segments.push(std::move(seg));
             txt << "  p_" << i + 1 << "(s) = " << toText(s, "s") << "\n";
             for (int j = 0; withSamples && j < *samples; ++j) {
@@ -139,7 +127,7 @@ Expected<CommandOutput> run(const Arguments& args)
         for (std::size_t i = 0; i < segs->size(); ++i) {
             const auto& s = (*segs)[i];
             Json seg = Json::object();
-            seg.set("x", coefficients(s.x, false)).set("y", coefficients(s.y, false));
+            seg.set("x", cubicCoefficients(s.x, false)).set("y", cubicCoefficients(s.y, false));
             segments.push(std::move(seg));
             txt << "  p_" << i + 1 << "(s) = " << toText(s, "s") << "\n";
         }

@@ -5,9 +5,11 @@
 /// main() prints one of them.
 
 #include "app/cli/arguments.h"
+#include "core/exact/polynomial.h"
 #include "core/io/json.h"
 
 #include <string>
+#include <type_traits>
 
 namespace granota::cli {
 
@@ -44,6 +46,19 @@ Json number(const Rational& q, bool exact);
 Json number(double d);
 Json point(const RPoint& p, bool exact);
 Json point(const Point& p);
+/// A cubic's coefficients c0…c3 in powers of its variable: exact strings when `exact`
+/// (Rational only), doubles otherwise (the segments of catmull-rom, the pieces of spline).
+template <class S> Json cubicCoefficients(const Polynomial<S>& p, bool exact)
+{
+    Json a = Json::array();
+    for (const S& c : p.coefficients(3)) {
+        if constexpr (std::is_same_v<S, Rational>)
+            a.push(number(c, exact));
+        else
+            a.push(number(c));
+    }
+    return a;
+}
 std::string text(const RPoint& p);
 std::string text(const Point& p);
 /// Highest degree bezier and bernstein accept: beyond it the O(n²) triangle and the exact

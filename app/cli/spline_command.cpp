@@ -14,18 +14,6 @@ namespace granota::cli {
 
 namespace {
 
-template <class S> Json coefficients(const Polynomial<S>& p, bool exact)
-{
-    Json a = Json::array();
-    for (const S& c : p.coefficients(3)) {
-        if constexpr (std::is_same_v<S, Rational>)
-            a.push(number(c, exact));
-        else
-            a.push(number(c));
-    }
-    return a;
-}
-
 template <class S> Json knotNumber(const S& x, bool exact)
 {
     if constexpr (std::is_same_v<S, Rational>)
@@ -51,7 +39,7 @@ template <class S> void describe(const PiecewisePolynomial<S>& spline, bool exac
         const auto& from = spline.knots[static_cast<std::size_t>(i)];
         const auto& to = spline.knots[static_cast<std::size_t>(i) + 1];
         Json piece = Json::object();
-        piece.set("from", knotNumber(from, exact)).set("to", knotNumber(to, exact)).set("poly", coefficients(global, exact));
+        piece.set("from", knotNumber(from, exact)).set("to", knotNumber(to, exact)).set("poly", cubicCoefficients(global, exact));
         pieces.push(std::move(piece));
         txt << "  s_" << i + 1 << "(x) = " << toText(global, "x") << "   x ∈ [" << knotText(from) << ", " << knotText(to)
             << (i + 1 < spline.pieceCount() ? ")" : "]") << "\n";

@@ -2,7 +2,7 @@
 /// \file catmull_rom_curves.h
 /// What the Catmull-Rom tab draws, computed by the core from the points and the settings:
 /// one curve per τ (Def 2.10 in the chosen mode and spacing), the other end mode for Ex 2.13's
-/// comparison, the Bézier curve of the same points (§2.3) and the natural cubic spline
+/// comparison, the Bézier curve of the same points (§2.3) and the cubic spline with its chosen ends
 /// (Def 2.3), each also as cubic Bézier segments (bezier_segments.h: drawn and exported as
 /// cubic paths) and, for the κ(s) plot, as a curvature profile (curvature_profile.h). No
 /// mathematics here: only calls to core/curves/splines/catmull_rom.h, de_casteljau.h,
@@ -50,7 +50,7 @@ struct CatmullRomScene {
     std::vector<CatmullRomCurve> otherEnds; ///< compareEnds: one per τ in the other end mode
     std::vector<Point> bezier;              ///< the Bézier curve of the points (when shown)
     CurvatureProfile bezierCurvature;       ///< its κ(s): one segment of degree n (when plotted)
-    std::vector<Point> spline;              ///< the natural cubic spline (when shown and defined)
+    std::vector<Point> spline;              ///< the cubic spline with its chosen ends (when shown and defined)
     /// The spline's graph (x, s(x)) as parametric pieces (function_spline_segments.h), with
     /// their lengths h_i = x_{i+1} − x_i, as cubic Bézier segments and as κ(s) (when plotted).
     std::vector<Vec2<Polynomial<double>>> splineSegments;

@@ -398,9 +398,9 @@ void CatmullRomTab::retranslate()
                                  "Def 2.4): it passes only through q0 and qn, while Catmull-Rom passes through every "
                                  "point (§2.3)."));
     m_splineCheck->setText(tr("Cubic &spline (C²)"));
-    m_splineCheck->setToolTip(tr("Draw the natural C² cubic spline of Def 2.3 through the same points (a function of "
-                                 "x: the abscissae must increase) and check its continuity at the knots: Bézier C^∞, "
-                                 "Catmull-Rom C¹, cubic spline C² (§2.3, Ex 2.1)."));
+    m_splineCheck->setToolTip(tr("Draw the C² cubic spline of Def 2.3 through the same points, with the ends chosen below "
+                                 "(a function of x: the abscissae must increase), and check its continuity at the knots: "
+                                 "Bézier C^∞, Catmull-Rom C¹, cubic spline C² (§2.3, Ex 2.1)."));
     m_catmullRomCheck->setText(tr("Cat&mull-Rom curves"));
     m_catmullRomCheck->setToolTip(tr("Draw the Catmull-Rom curve of each tension. Hide them to see the cubic spline alone, "
                                      "as Fig 2.1 shows Ex 2.1's."));

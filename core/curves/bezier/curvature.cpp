@@ -16,6 +16,22 @@ namespace {
 
 bool finite(double v) { return std::isfinite(v); }
 
+/// κ, and the osculating circle of radius r on the side κ's sign gives (along the normal),
+/// kept only where the radius and the centre are finite doubles.
+void setOsculatingCircle(CurvatureAt& out, double k, double r)
+{
+    out.curvature = k;
+    if (!finite(r))
+        return;
+    out.radius = r;
+    const double s = k > 0 ? r : -r;
+    const Point centre(out.point.x + s * out.normal->x, out.point.y + s * out.normal->y);
+    if (isFinite(centre))
+        out.center = centre;
+    else
+        out.radius.reset();
+}
+
 /// q = m · 2^e with 0.5 ≤ |m| < 1 (m = 0 for q = 0): a rational of any size as a double's
 /// mantissa and an exponent beyond a double's range.
 struct Binary {
@@ -71,17 +87,7 @@ void fromExact(CurvatureAt& out, const RPoint& v, const RPoint& a)
         out.normal.reset(); // beyond the range of doubles, as below
         return;
     }
-    out.curvature = k;
-    const double r = 1.0 / std::abs(k);
-    if (finite(r)) {
-        out.radius = r;
-        const double s = k > 0 ? r : -r;
-        const Point centre(out.point.x + s * out.normal->x, out.point.y + s * out.normal->y);
-        if (isFinite(centre))
-            out.center = centre;
-        else
-            out.radius.reset();
-    }
+    setOsculatingCircle(out, k, 1.0 / std::abs(k));
 }
 
 } // namespace
@@ -148,17 +154,7 @@ CurvatureAt curvatureAt(const std::vector<Point>& P, double t)
         out.normal.reset();
         return out;
     }
-    out.curvature = k;
-    const double r = std::ldexp(1.0 / std::abs(kScaled), e);
-    if (finite(r)) {
-        out.radius = r;
-        const double s = k > 0 ? r : -r;
-        const Point centre(out.point.x + s * out.normal->x, out.point.y + s * out.normal->y);
-        if (isFinite(centre))
-            out.center = centre;
-        else
-            out.radius.reset();
-    }
+    setOsculatingCircle(out, k, std::ldexp(1.0 / std::abs(kScaled), e));
     return out;
 }
 
