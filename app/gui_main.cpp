@@ -1,4 +1,5 @@
 // granota: the desktop application (docs/tabs.md, docs/classroom.md).
+#include "core/io/thesis_figures.h"
 #include "core/softbody/scenes/scene.h"
 #include "ui/fit/fit_tab.h"
 #include "ui/frog/frog_canvas.h"
@@ -8,43 +9,78 @@
 #include "ui/shell/language.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/tab_page.h"
+#include "ui/shell/thesis_figure_export.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QFile>
+#include <QDir>
+#include <QFileInfo>
 #include <QSettings>
 #include <QSize>
 #include <QTemporaryDir>
 #include <QTextStream>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 
 namespace {
 
 /// With no display at all (over SSH, in CI), the options that print or render and then exit
-/// (--help, --version, --screenshot) use Qt's offscreen platform instead of aborting on
+/// (--help, --version, --screenshot, --list-figures, --figure … --export) use Qt's offscreen platform instead of aborting on
 /// "could not connect to display". A platform the user chose is kept.
+bool rendersAndExits(int argc, char* argv[])
+{
+    for (int i = 1; i < argc; ++i) {
+        const char* a = argv[i];
+        for (const char* option :
+             {"-h", "-?", "--help", "--help-all", "-v", "--version", "--screenshot", "--list-figures", "--export"}) {
+            const std::size_t n = std::strlen(option);
+            if (std::strcmp(a, option) == 0 || (std::strncmp(a, option, n) == 0 && a[n] == '=' && n > 2))
+                return true;
+        }
+    }
+    return false;
+}
+
 void offscreenWhenNothingIsShown(int argc, char* argv[])
 {
     if (!qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") || !qEnvironmentVariableIsEmpty("DISPLAY") ||
         !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY"))
         return;
-    for (int i = 1; i < argc; ++i) {
-        const char* a = argv[i];
-        for (const char* option : {"-h", "-?", "--help", "--help-all", "-v", "--version", "--screenshot"}) {
-            const std::size_t n = std::strlen(option);
-            if (std::strcmp(a, option) == 0 || (std::strncmp(a, option, n) == 0 && a[n] == '=' && n > 2)) {
-                qputenv("QT_QPA_PLATFORM", "offscreen");
-                return;
-            }
-        }
-    }
+    if (rendersAndExits(argc, argv))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
 }
 
 /// A text of the command line, in the interface's language (translations/, context
 /// "granota::CommandLine").
 QString say(const char* text) { return QCoreApplication::translate("granota::CommandLine", text); }
+
+/// Qt's messages as usual, without the two notices every render run would print on a
+/// machine without a desktop (the offscreen platform's "does not support
+/// propagateSizeHints()", QStandardPaths' "XDG_RUNTIME_DIR not set"): no news to a script.
+QtMessageHandler g_defaultHandler = nullptr;
+void quietOffscreen(QtMsgType type, const QMessageLogContext& context, const QString& message)
+{
+    if (message.contains(QLatin1String("propagateSizeHints")) || message.contains(QLatin1String("XDG_RUNTIME_DIR not set")))
+        return;
+    if (g_defaultHandler)
+        g_defaultHandler(type, context, message);
+    else
+        std::fprintf(stderr, "%s\n", qPrintable(qFormatLogMessage(type, context, message)));
+}
+
+/// "WxH" with each side in 100 … 10000, else an empty size.
+QSize sizeOf(const QString& text)
+{
+    const QStringList wh = text.split(QLatin1Char('x'));
+    bool okW = false, okH = false;
+    const int w = wh.size() == 2 ? wh[0].toInt(&okW) : 0, h = wh.size() == 2 ? wh[1].toInt(&okH) : 0;
+    if (!okW || !okH || w < 100 || h < 100 || w > 10000 || h > 10000)
+        return {};
+    return {w, h};
+}
 
 int fail(const QString& message)
 {
@@ -57,6 +93,8 @@ int fail(const QString& message)
 int main(int argc, char* argv[])
 {
     offscreenWhenNothingIsShown(argc, argv);
+    if (rendersAndExits(argc, argv))
+        g_defaultHandler = qInstallMessageHandler(quietOffscreen);
     QApplication app(argc, argv);
     QApplication::setApplicationName(QStringLiteral("Granota"));
     QApplication::setOrganizationName(QStringLiteral("Granota"));
@@ -103,8 +141,20 @@ int main(int argc, char* argv[])
                                     QStringLiteral("SOLVER"));
     QCommandLineOption stepsOption(QStringLiteral("steps"), say("Run the frog's scene N steps (0 … 100000) before showing it."),
                                    QStringLiteral("N"));
+    QCommandLineOption listFiguresOption(QStringLiteral("list-figures"),
+                                         say("List the thesis's figures: number, variants, caption; and exit."));
+    QCommandLineOption figureOption(QStringLiteral("figure"), say("Draw the thesis's figure N (2.1 … 4.13), with --export."),
+                                    QStringLiteral("N"));
+    QCommandLineOption variantOption(QStringLiteral("variant"), say("The figure's variant V (--list-figures names them)."),
+                                     QStringLiteral("V"));
+    QCommandLineOption exportOption(QStringLiteral("export"),
+                                    say("Write the figure's view alone to FILE (.svg, .pdf, .png, .tex or .csv) and exit."),
+                                    QStringLiteral("FILE"));
+    QCommandLineOption dpiOption(QStringLiteral("dpi"), say("Resolution of a PNG export, 24 … 1200 (96: one pixel per pixel)."),
+                                 QStringLiteral("D"));
     parser.addOptions({tabOption, langOption, exampleOption, sceneOption, presentOption, screenshotOption, sizeOption,
-                       plotsOption, plotBodyOption, solverOption, stepsOption});
+                       plotsOption, plotBodyOption, solverOption, stepsOption, listFiguresOption, figureOption, variantOption,
+                       exportOption, dpiOption});
     parser.addPositionalArgument(QStringLiteral("document"), say("A .granota document to open."));
     // Bad arguments are errors as granota-cli's are (status 2, "error: "), in the language above.
     if (!parser.parse(arguments))
@@ -119,7 +169,42 @@ int main(int argc, char* argv[])
         if (!granota::ui::availableLanguages().contains(language))
             return fail(say("unknown language “%1” (ca, en)").arg(language));
     }
-    const bool screenshot = parser.isSet(screenshotOption);
+    if (parser.isSet(listFiguresOption)) {
+        QTextStream out(stdout);
+        for (const granota::ThesisFigure& f : granota::thesisFigures())
+            out << QString::fromStdString(f.number) << '\t' << QString::fromStdString(granota::figureVariantNames(f)) << '\t'
+                << QString::fromStdString(f.caption.in(language.toStdString())) << '\n';
+        return 0;
+    }
+    // A figure run: the figure and its variant, the file and its format, checked before
+    // anything is built.
+    const granota::ThesisFigure* figure = nullptr;
+    const granota::FigureVariant* variant = nullptr;
+    QString figureFormat;
+    int dpi = 96;
+    if (parser.isSet(figureOption) || parser.isSet(exportOption) || parser.isSet(variantOption) || parser.isSet(dpiOption)) {
+        if (!parser.isSet(figureOption) || !parser.isSet(exportOption))
+            return fail(say("--figure N and --export FILE go together (--variant and --dpi with them)"));
+        figure = granota::findThesisFigure(parser.value(figureOption).toStdString());
+        if (!figure)
+            return fail(say("unknown figure “%1” (2.1 … 2.10, 4.1 … 4.13; --list-figures)").arg(parser.value(figureOption)));
+        variant = granota::findFigureVariant(*figure, parser.value(variantOption).toStdString());
+        if (!variant)
+            return fail(say("Fig %1 has no variant “%2” (%3)")
+                            .arg(parser.value(figureOption), parser.value(variantOption),
+                                 QString::fromStdString(granota::figureVariantNames(*figure))));
+        figureFormat = QFileInfo(parser.value(exportOption)).suffix().toLower();
+        if (!granota::ui::thesisFigureFormats().contains(figureFormat))
+            return fail(
+                say("cannot tell the format of “%1”: end it in .svg, .pdf, .png, .tex or .csv").arg(parser.value(exportOption)));
+        if (parser.isSet(dpiOption)) {
+            bool ok = false;
+            dpi = parser.value(dpiOption).toInt(&ok);
+            if (!ok || dpi < 24 || dpi > 1200)
+                return fail(say("bad resolution “%1” (24 … 1200)").arg(parser.value(dpiOption)));
+        }
+    }
+    const bool screenshot = parser.isSet(screenshotOption) || figure;
     // A screenshot is a one-off render: what it changes (the language it was asked for, the
     // document in Open Recent, its autosave) goes to a scratch folder removed on exit, and the
     // user's settings and data stay as they were. The saved language was read above.
@@ -205,13 +290,36 @@ int main(int argc, char* argv[])
         return fail(say("unknown tab “%1” (decasteljau, bernstein, fit, catmull-rom, frog)").arg(parser.value(tabOption)));
 
     QSize size = screenshot ? QSize(1280, 800) : window.size();
+    if (figure) {
+        // The window is laid out as on a 1280×800 screen but never shown; the figure's view
+        // alone is drawn at --size (800×600 unless asked).
+        QSize figureSize(800, 600);
+        if (parser.isSet(sizeOption)) {
+            const QSize asked = sizeOf(parser.value(sizeOption));
+            if (asked.isEmpty())
+                return fail(say("bad size “%1” (WxH, e.g. 800x570)").arg(parser.value(sizeOption)));
+            figureSize = asked;
+        }
+        window.resize(size);
+        window.setAttribute(Qt::WA_DontShowOnScreen);
+        window.show();
+        QApplication::processEvents();
+        QString error;
+        if (!granota::ui::showThesisFigure(window, *figure, *variant, false, &error))
+            return fail(error);
+        QApplication::processEvents();
+        if (auto* fit = qobject_cast<granota::ui::FitTab*>(window.currentTab()))
+            fit->finishFit();
+        if (const QString e = granota::ui::exportThesisFigure(window, *figure, figureFormat, parser.value(exportOption),
+                                                              figureSize, dpi);
+            !e.isEmpty())
+            return fail(e);
+        return 0;
+    }
     if (parser.isSet(sizeOption)) {
-        const QStringList wh = parser.value(sizeOption).split(QLatin1Char('x'));
-        bool okW = false, okH = false;
-        const int w = wh.size() == 2 ? wh[0].toInt(&okW) : 0, h = wh.size() == 2 ? wh[1].toInt(&okH) : 0;
-        if (!okW || !okH || w < 100 || h < 100 || w > 10000 || h > 10000)
+        size = sizeOf(parser.value(sizeOption));
+        if (size.isEmpty())
             return fail(say("bad size “%1” (WxH, e.g. 800x570)").arg(parser.value(sizeOption)));
-        size = QSize(w, h);
     }
     window.resize(size);
     if (screenshot) {

@@ -10,6 +10,7 @@
 #include "ui/shell/language.h"
 #include "ui/shell/shortcuts_help.h"
 #include "ui/shell/tab_page.h"
+#include "ui/shell/thesis_figures_dialog.h"
 #include "ui/shell/tikz_options_dialog.h"
 #include "ui/common/vertical_scroll_area.h"
 #include "ui/common/work_precision_panel.h"
@@ -180,6 +181,14 @@ bool MainWindow::loadExample(const QString& id)
     return page->loadExample(*example); // its own message, when it has one, follows
 }
 
+void MainWindow::showThesisFigures()
+{
+    if (!m_figuresDialog)
+        m_figuresDialog = new ThesisFiguresDialog(this);
+    m_figuresDialog->show();
+    m_figuresDialog->raise();
+}
+
 // ---------------------------------------------------------------- actions and menus
 
 void MainWindow::createActions()
@@ -306,6 +315,9 @@ void MainWindow::createActions()
     m_shortcutsAction = new QAction(this);
     m_shortcutsAction->setObjectName(QStringLiteral("keyboardShortcuts"));
     connect(m_shortcutsAction, &QAction::triggered, this, &MainWindow::showShortcuts);
+    m_figuresAction = new QAction(this);
+    m_figuresAction->setObjectName(QStringLiteral("thesisFiguresAction"));
+    connect(m_figuresAction, &QAction::triggered, this, &MainWindow::showThesisFigures);
     m_about = new QAction(this);
     connect(m_about, &QAction::triggered, this, &MainWindow::showAbout);
 }
@@ -355,6 +367,7 @@ void MainWindow::createMenus()
     m_helpMenu = menuBar()->addMenu(QString());
     m_helpMenu->addAction(m_guide);
     m_helpMenu->addAction(m_shortcutsAction);
+    m_helpMenu->addAction(m_figuresAction);
     m_helpMenu->addAction(m_about);
 }
 
@@ -419,6 +432,7 @@ void MainWindow::retranslate()
     m_helpMenu->setTitle(tr("&Help"));
     m_guide->setText(tr("&User guide"));
     m_shortcutsAction->setText(tr("&Keyboard shortcuts"));
+    m_figuresAction->setText(tr("Thesis &figures…"));
     m_about->setText(tr("&About Granota"));
     m_cursorLabel->setToolTip(tr("Position of the mouse in the plane"));
     m_document->retranslate();

@@ -25,6 +25,7 @@ namespace granota::ui {
 
 class TabPage;
 class FrogTab;
+class ThesisFiguresDialog;
 class WorkPrecisionPanel;
 
 class MainWindow : public QMainWindow {
@@ -45,6 +46,9 @@ public:
 
     /// Loads worked example `id` ("2.7") into its tab and shows the tab. False if unknown.
     bool loadExample(const QString& id);
+    /// Help ▸ Thesis figures: the gallery of the thesis's figures (thesis_figures_dialog.h),
+    /// beside the window, made once.
+    void showThesisFigures();
 
     /// The window's document: its file, unsaved changes, autosave and recovery
     /// (document_controller.h). The members below that speak of the document call it.
@@ -121,7 +125,8 @@ private:
     QAction* m_reportsAction = nullptr;
     QAction *m_presentationAction = nullptr, *m_zoomIn = nullptr, *m_zoomOut = nullptr, *m_fit = nullptr;
     QAction *m_catalan = nullptr, *m_english = nullptr;
-    QAction *m_guide = nullptr, *m_about = nullptr, *m_shortcutsAction = nullptr;
+    QAction *m_guide = nullptr, *m_about = nullptr, *m_shortcutsAction = nullptr, *m_figuresAction = nullptr;
+    ThesisFiguresDialog* m_figuresDialog = nullptr;
     QAction *m_nextTab = nullptr, *m_previousTab = nullptr;
     QVector<QAction*> m_tabActions;
     QVector<QAction*> m_exampleActions;
