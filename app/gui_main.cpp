@@ -28,14 +28,14 @@
 namespace {
 
 /// With no display at all (over SSH, in CI), the options that print or render and then exit
-/// (--help, --version, --screenshot, --list-figures, --figure … --export) use Qt's offscreen platform instead of aborting on
+/// (--help, --version, --screenshot, --list-figures, --figure, --export) use Qt's offscreen platform instead of aborting on
 /// "could not connect to display". A platform the user chose is kept.
 bool rendersAndExits(int argc, char* argv[])
 {
     for (int i = 1; i < argc; ++i) {
         const char* a = argv[i];
         for (const char* option :
-             {"-h", "-?", "--help", "--help-all", "-v", "--version", "--screenshot", "--list-figures", "--export"}) {
+             {"-h", "-?", "--help", "--help-all", "-v", "--version", "--screenshot", "--list-figures", "--figure", "--export"}) {
             const std::size_t n = std::strlen(option);
             if (std::strcmp(a, option) == 0 || (std::strncmp(a, option, n) == 0 && a[n] == '=' && n > 2))
                 return true;

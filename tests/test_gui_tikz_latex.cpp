@@ -3,9 +3,11 @@
 // beamer frame, and fits: no overfull box, no error, the picture no wider than the text and
 // its bottom above the frame's navigation bar. Without pdflatex this test fails (CI
 // installs it: .ci/deps.sh).
+#include "core/io/thesis_figures.h"
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/tab_page.h"
+#include "ui/shell/thesis_figure_export.h"
 #include "ui/shell/tikz_options.h"
 
 #include "main_window_steps.h"
@@ -161,6 +163,13 @@ class TestGuiTikzLatex : public QObject {
         QVERIFY(dir.isValid());
         const std::vector<Figure> figures = exportFigures(window, QDir(dir.path()), options, suffix);
         QCOMPARE(figures.size(), std::size_t(9));
+        checkDocuments(dir, figures, options);
+    }
+
+    /// Compiles `figures` (in `dir`) in an article and in beamer: no error, no overfull box,
+    /// each as wide as `options` ask at most and above beamer's navigation bar.
+    void checkDocuments(const QTemporaryDir& dir, const std::vector<Figure>& figures, const TikzOptions& options)
+    {
         for (const QString& documentClass : {QStringLiteral("article"), QStringLiteral("beamer")}) {
             QString error;
             const QString log = compile(QDir(dir.path()), documentClass, documentWith(documentClass, figures), &error);
@@ -194,6 +203,29 @@ class TestGuiTikzLatex : public QObject {
 private slots:
     // The default export (a beamer frame's text width with a margin) of every tab.
     void everyTabFitsArticleAndBeamer() { compileAndCheck(TikzOptions(), QString()); }
+
+    // The thesis's 23 figures (issue 33; granota --figure N --export F.tex), each in its
+    // default variant, compile in one beamer document (and an article) and fit their frames.
+    void everyThesisFigureCompiles()
+    {
+        MainWindow window;
+        window.resize(1280, 800);
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        std::vector<Figure> figures;
+        for (const granota::ThesisFigure& f : granota::thesisFigures()) {
+            QString error;
+            QVERIFY2(granota::ui::showThesisFigure(window, f, f.variants.front(), false, &error), qPrintable(error));
+            const QString name =
+                QStringLiteral("thesis-fig-%1").arg(QString::fromStdString(f.number)).replace(QLatin1Char('.'), QLatin1Char('_'));
+            const QString exported = granota::ui::exportThesisFigure(window, f, QStringLiteral("tex"),
+                                                                     dir.filePath(name + QStringLiteral(".tex")), QSize(), 96);
+            QVERIFY2(exported.isEmpty(), qPrintable(exported));
+            figures.push_back({name, QStringLiteral("Fig ") + QString::fromStdString(f.number)});
+        }
+        QCOMPARE(figures.size(), std::size_t(23));
+        checkDocuments(dir, figures, TikzOptions());
+    }
 
     // With axes, tick labels and a grid it still compiles and fits.
     void withAxesAndGrid()

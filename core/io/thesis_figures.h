@@ -34,14 +34,14 @@ struct FigureVariant {
 };
 
 struct ThesisFigure {
-    std::string number;  ///< "2.1" … "4.13"
-    std::string tab;     ///< decasteljau, bernstein, fit, catmull-rom, frog
-    std::string example; ///< the worked example it loads first ("2.9"), or empty
-    std::string scene;   ///< the Frog tab's scene (run on the seed solver), or empty
-    long steps = 0;      ///< the scene's steps before the picture
-    std::string art;     ///< "head" or "background": the frog's art alone (Figs 4.11, 4.12)
-    CaptionText caption; ///< the thesis's caption and its English
-    Json state = Json::Object{};       ///< settings over the example's, for every variant
+    std::string number;                  ///< "2.1" … "4.13"
+    std::string tab;                     ///< decasteljau, bernstein, fit, catmull-rom, frog
+    std::string example;                 ///< the worked example it loads first ("2.9"), or empty
+    std::string scene;                   ///< the Frog tab's scene (run on the seed solver), or empty
+    long steps = 0;                      ///< the scene's steps before the picture
+    std::string art;                     ///< "head" or "background": the frog's art alone (Figs 4.11, 4.12)
+    CaptionText caption;                 ///< the thesis's caption and its English
+    Json state = Json::Object{};         ///< settings over the example's, for every variant
     std::vector<FigureVariant> variants; ///< at least one; the first is the default
 };
 

@@ -74,27 +74,18 @@ QPaintEngine* PathRecorder::paintEngine() const { return m_engine.get(); }
 int PathRecorder::metric(PaintDeviceMetric metric) const
 {
     switch (metric) {
-    case PdmWidth:
-        return m_size.width();
-    case PdmHeight:
-        return m_size.height();
+    case PdmWidth: return m_size.width();
+    case PdmHeight: return m_size.height();
     case PdmDpiX:
     case PdmDpiY:
     case PdmPhysicalDpiX:
-    case PdmPhysicalDpiY:
-        return 96;
-    case PdmDevicePixelRatio:
-        return 1;
-    case PdmDevicePixelRatioScaled:
-        return static_cast<int>(devicePixelRatioFScale());
-    case PdmDepth:
-        return 32;
-    case PdmNumColors:
-        return 0x7fffffff;
-    case PdmWidthMM:
-        return static_cast<int>(m_size.width() * 25.4 / 96);
-    case PdmHeightMM:
-        return static_cast<int>(m_size.height() * 25.4 / 96);
+    case PdmPhysicalDpiY: return 96;
+    case PdmDevicePixelRatio: return 1;
+    case PdmDevicePixelRatioScaled: return static_cast<int>(devicePixelRatioFScale());
+    case PdmDepth: return 32;
+    case PdmNumColors: return 0x7fffffff;
+    case PdmWidthMM: return static_cast<int>(m_size.width() * 25.4 / 96);
+    case PdmHeightMM: return static_cast<int>(m_size.height() * 25.4 / 96);
     }
     return 0;
 }

@@ -89,9 +89,8 @@ QString artCsv(const std::vector<PathRecorder::Shape>& shapes)
     for (const PathRecorder::Shape& shape : shapes) {
         for (const QPolygonF& polygon : shape.path.toSubpathPolygons())
             for (const QPointF& p : polygon)
-                csv += QStringLiteral("%1,%2,%3\n")
-                           .arg(index)
-                           .arg(fromStd(formatFixed(p.x(), 3)), fromStd(formatFixed(p.y(), 3)));
+                csv +=
+                    QStringLiteral("%1,%2,%3\n").arg(index).arg(fromStd(formatFixed(p.x(), 3)), fromStd(formatFixed(p.y(), 3)));
         ++index;
     }
     return csv;
@@ -140,8 +139,7 @@ QJsonObject thesisFigureState(const TabPage& page, const ThesisFigure& figure, c
     return state;
 }
 
-bool showThesisFigure(MainWindow& window, const ThesisFigure& figure, const FigureVariant& variant, bool undoable,
-                      QString* error)
+bool showThesisFigure(MainWindow& window, const ThesisFigure& figure, const FigureVariant& variant, bool undoable, QString* error)
 {
     TabPage* page = window.tab(fromStd(figure.tab));
     if (!page) {
@@ -183,8 +181,8 @@ bool showThesisFigure(MainWindow& window, const ThesisFigure& figure, const Figu
     return true;
 }
 
-QString exportThesisFigure(MainWindow& window, const ThesisFigure& figure, const QString& format, const QString& file,
-                           QSize size, int dpi)
+QString exportThesisFigure(MainWindow& window, const ThesisFigure& figure, const QString& format, const QString& file, QSize size,
+                           int dpi)
 {
     const QString title = QStringLiteral("Granota — ") + thesisFigureCaption(figure);
     if (!figure.art.empty()) {

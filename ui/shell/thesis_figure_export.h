@@ -35,8 +35,8 @@ bool showThesisFigure(MainWindow& window, const ThesisFigure& figure, const Figu
 /// Exports the figure shown by showThesisFigure(): `format` svg, pdf, png (at `dpi`), tex
 /// (TikZ) or csv, the view alone drawn at `size` (logical pixels; PNG's pixels are size ×
 /// dpi/96; an empty size: the view's own). Empty, or a translated message.
-QString exportThesisFigure(MainWindow& window, const ThesisFigure& figure, const QString& format, const QString& file,
-                           QSize size, int dpi);
+QString exportThesisFigure(MainWindow& window, const ThesisFigure& figure, const QString& format, const QString& file, QSize size,
+                           int dpi);
 
 /// The export formats, as `--export`'s file suffixes: svg, pdf, png, tex, csv.
 QStringList thesisFigureFormats();

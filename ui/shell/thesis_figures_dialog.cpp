@@ -31,8 +31,8 @@ const ThesisFigure* figureAt(int row)
 
 ThesisFiguresDialog::ThesisFiguresDialog(MainWindow* window)
     : QDialog(window), m_window(window), m_list(new QListWidget(this)), m_variants(new QComboBox(this)),
-      m_variantLabel(new QLabel(this)), m_note(new QLabel(this)), m_show(new QPushButton(this)),
-      m_export(new QPushButton(this)), m_close(new QPushButton(this))
+      m_variantLabel(new QLabel(this)), m_note(new QLabel(this)), m_show(new QPushButton(this)), m_export(new QPushButton(this)),
+      m_close(new QPushButton(this))
 {
     setObjectName(QStringLiteral("thesisFigures"));
     m_list->setObjectName(QStringLiteral("figureList"));
@@ -113,8 +113,7 @@ void ThesisFiguresDialog::variantChosen(int index)
         return;
     QString note = thesisFigureNote(figure->variants[static_cast<std::size_t>(index)]);
     if (!figure->art.empty())
-        note += (note.isEmpty() ? QString() : QStringLiteral(" ")) +
-                tr("It has no tab of its own: Export… writes it.");
+        note += (note.isEmpty() ? QString() : QStringLiteral(" ")) + tr("It has no tab of its own: Export… writes it.");
     m_note->setText(note);
     m_show->setEnabled(figure->art.empty());
 }
