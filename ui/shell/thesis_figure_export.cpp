@@ -16,6 +16,7 @@
 #include <QCoreApplication>
 #include <QJsonArray>
 #include <QPainter>
+#include <QWidget>
 
 namespace granota::ui {
 
@@ -199,6 +200,14 @@ QString exportThesisFigure(MainWindow& window, const ThesisFigure& figure, const
         if (format == QLatin1String("csv"))
             return writeTextFile(file, artCsv(artShapes(art, art.exportSize())));
     } else if (TabPage* page = window.tab(fromStd(figure.tab)); page && page->exportView()) {
+        // The view laid out at the size asked, as on a screen of that size, and fitted there:
+        // its margins keep the points clear of the key. What the window's smallest size does
+        // not allow, the drawing's own scaling does.
+        if (auto* widget = dynamic_cast<QWidget*>(page->exportView()); widget && !size.isEmpty() && widget->size() != size) {
+            window.resize(window.size() + (size - widget->size()));
+            QCoreApplication::processEvents();
+            page->fitView();
+        }
         SizedView view(*page->exportView(), size);
         if (format == QLatin1String("svg"))
             return exportSvg(view, file, title);
