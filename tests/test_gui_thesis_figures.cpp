@@ -298,11 +298,10 @@ private slots:
         for (int c = 0; c < cols; ++c)
             for (int d = 0; d < 2; ++d) {
                 const double expected = a[std::size_t(c)][std::size_t(cols + d)] / a[std::size_t(c)][std::size_t(c)];
-                QVERIFY2(std::abs(thesis[std::size_t(c)][std::size_t(d)] - expected) < 1e-9,
-                         qPrintable(QStringLiteral("P%1: %2 against %3")
-                                        .arg(c)
-                                        .arg(thesis[std::size_t(c)][std::size_t(d)])
-                                        .arg(expected)));
+                QVERIFY2(
+                    std::abs(thesis[std::size_t(c)][std::size_t(d)] - expected) < 1e-9,
+                    qPrintable(
+                        QStringLiteral("P%1: %2 against %3").arg(c).arg(thesis[std::size_t(c)][std::size_t(d)]).arg(expected)));
             }
         const auto definition = controlPoints("definition");
         QCOMPARE(int(definition.size()), cols);
@@ -341,8 +340,9 @@ private slots:
         auto* dialog = window.findChild<granota::ui::ThesisFiguresDialog*>();
         QVERIFY(dialog);
         const auto& figures = thesisFigures();
-        const int row = int(std::find_if(figures.begin(), figures.end(), [](const ThesisFigure& f) { return f.number == "2.7"; }) -
-                            figures.begin());
+        const int row = int(
+            std::find_if(figures.begin(), figures.end(), [](const ThesisFigure& f) { return f.number == "2.7"; }) -
+            figures.begin());
         dialog->list()->setCurrentRow(row);
         dialog->variants()->setCurrentIndex(dialog->variants()->findText(QStringLiteral("thesis")));
         QVERIFY(dialog->note()->text().contains(QStringLiteral("BezParamProp")));
@@ -389,7 +389,8 @@ private slots:
                             continue;
                         const QString file = dir.filePath(QStringLiteral("fig.") + format);
                         QFile::remove(file);
-                        const QString what = QStringLiteral("Fig %1 %2 %3 (%4)").arg(str(f.number), str(v.name), format, language);
+                        const QString what =
+                            QStringLiteral("Fig %1 %2 %3 (%4)").arg(str(f.number), str(v.name), format, language);
                         const QString exported = granota::ui::exportThesisFigure(window, f, format, file, size, 96);
                         QVERIFY2(exported.isEmpty(), qPrintable(what + QStringLiteral(": ") + exported));
                         const QString problem = checkFile(file, format, size);
@@ -417,25 +418,27 @@ private slots:
         for (const QString& format : granota::ui::thesisFigureFormats()) {
             const QString file = dir.filePath(QStringLiteral("f.") + format);
             const Run run = runGranota({QStringLiteral("--figure"), QStringLiteral("2.8"), QStringLiteral("--variant"),
-                                     QStringLiteral("thesis"), QStringLiteral("--size"), QStringLiteral("500x400"),
-                                     QStringLiteral("--export"), file},
-                                    env);
+                                        QStringLiteral("thesis"), QStringLiteral("--size"), QStringLiteral("500x400"),
+                                        QStringLiteral("--export"), file},
+                                       env);
             QVERIFY2(run.status == 0, qPrintable(format + QStringLiteral(": ") + run.err));
             QVERIFY2(run.err.isEmpty(), qPrintable(run.err)); // no notices from Qt either
             const QString problem = checkFile(file, format, QSize(500, 400));
             QVERIFY2(problem.isEmpty(), qPrintable(format + QStringLiteral(": ") + problem));
         }
         const Run dpi = runGranota({QStringLiteral("--figure"), QStringLiteral("4.11"), QStringLiteral("--size"),
-                                 QStringLiteral("200x100"), QStringLiteral("--dpi"), QStringLiteral("192"),
-                                 QStringLiteral("--export"), dir.filePath(QStringLiteral("head.png"))},
-                                env);
+                                    QStringLiteral("200x100"), QStringLiteral("--dpi"), QStringLiteral("192"),
+                                    QStringLiteral("--export"), dir.filePath(QStringLiteral("head.png"))},
+                                   env);
         QCOMPARE(dpi.status, 0);
         QCOMPARE(QImage(dir.filePath(QStringLiteral("head.png"))).size(), QSize(400, 200));
         const QList<QStringList> bad = {
-            {QStringLiteral("--figure"), QStringLiteral("2.11"), QStringLiteral("--export"), dir.filePath(QStringLiteral("x.svg"))},
+            {QStringLiteral("--figure"), QStringLiteral("2.11"), QStringLiteral("--export"),
+             dir.filePath(QStringLiteral("x.svg"))},
             {QStringLiteral("--figure"), QStringLiteral("2.7"), QStringLiteral("--variant"), QStringLiteral("matlab"),
              QStringLiteral("--export"), dir.filePath(QStringLiteral("x.svg"))},
-            {QStringLiteral("--figure"), QStringLiteral("2.7"), QStringLiteral("--export"), dir.filePath(QStringLiteral("x.jpg"))},
+            {QStringLiteral("--figure"), QStringLiteral("2.7"), QStringLiteral("--export"),
+             dir.filePath(QStringLiteral("x.jpg"))},
             {QStringLiteral("--figure"), QStringLiteral("2.7")},
             {QStringLiteral("--figure"), QStringLiteral("2.7"), QStringLiteral("--dpi"), QStringLiteral("5000"),
              QStringLiteral("--export"), dir.filePath(QStringLiteral("x.png"))},
@@ -465,8 +468,8 @@ private slots:
         QVERIFY(std::setlocale(LC_ALL, kCatalanLocale)); // the locale exists on this machine
         std::setlocale(LC_ALL, "C");
         QTemporaryDir dir;
-        for (const QStringList& locale : {QStringList{QStringLiteral("LANG=C.UTF-8"), QStringLiteral("LC_ALL=C.UTF-8")},
-                                          catalanEnvironment()}) {
+        for (const QStringList& locale :
+             {QStringList{QStringLiteral("LANG=C.UTF-8"), QStringLiteral("LC_ALL=C.UTF-8")}, catalanEnvironment()}) {
             const QProcessEnvironment env = headless(dir, locale);
             for (const ThesisFigure& f : thesisFigures()) {
                 const QString file = dir.filePath(QStringLiteral("fig.csv"));
@@ -475,7 +478,8 @@ private slots:
                 QVERIFY2(run.status == 0, qPrintable(str(f.number) + run.err));
                 QFile csv(file);
                 QVERIFY(csv.open(QIODevice::ReadOnly));
-                const QString hash = QString::fromLatin1(QCryptographicHash::hash(csv.readAll(), QCryptographicHash::Sha256).toHex());
+                const QString hash = QString::fromLatin1(
+                    QCryptographicHash::hash(csv.readAll(), QCryptographicHash::Sha256).toHex());
                 QVERIFY2(hashes.contains(str(f.number)), qPrintable(QStringLiteral("no golden hash for Fig ") + str(f.number)));
                 QVERIFY2(hashes.value(str(f.number)) == hash,
                          qPrintable(QStringLiteral("Fig %1 under %2: %3").arg(str(f.number), locale.first(), hash)));

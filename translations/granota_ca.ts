@@ -3977,6 +3977,10 @@ Ja no és al disc.</translation>
             <translation>S&apos;ha recuperat %1. No s&apos;ha recuperat:
 %2</translation>
         </message>
+        <message>
+            <source>Thesis &amp;figures…</source>
+            <translation>&amp;Figures de la tesi…</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::PointEditor</name>
@@ -4555,6 +4559,46 @@ Ja no és al disc.</translation>
             <source>Splines and soft bodies, for the classroom.</source>
             <translation>Splines i cossos tous, per a l'aula.</translation>
         </message>
+        <message>
+            <source>List the thesis&apos;s figures: number, variants, caption; and exit.</source>
+            <translation>Llista les figures de la tesi: número, variants i peu; i surt.</translation>
+        </message>
+        <message>
+            <source>Draw the thesis&apos;s figure N (2.1 … 4.13), with --export.</source>
+            <translation>Dibuixa la figura N de la tesi (2.1 … 4.13), amb --export.</translation>
+        </message>
+        <message>
+            <source>The figure&apos;s variant V (--list-figures names them).</source>
+            <translation>La variant V de la figura (--list-figures les anomena).</translation>
+        </message>
+        <message>
+            <source>Write the figure&apos;s view alone to FILE (.svg, .pdf, .png, .tex or .csv) and exit.</source>
+            <translation>Escriu només la vista de la figura a FITXER (.svg, .pdf, .png, .tex o .csv) i surt.</translation>
+        </message>
+        <message>
+            <source>Resolution of a PNG export, 24 … 1200 (96: one pixel per pixel).</source>
+            <translation>Resolució d&apos;una exportació PNG, 24 … 1200 (96: un píxel per píxel).</translation>
+        </message>
+        <message>
+            <source>--figure N and --export FILE go together (--variant and --dpi with them)</source>
+            <translation>--figure N i --export FITXER van junts (--variant i --dpi amb ells)</translation>
+        </message>
+        <message>
+            <source>unknown figure “%1” (2.1 … 2.10, 4.1 … 4.13; --list-figures)</source>
+            <translation>figura desconeguda «%1» (2.1 … 2.10, 4.1 … 4.13; --list-figures)</translation>
+        </message>
+        <message>
+            <source>Fig %1 has no variant “%2” (%3)</source>
+            <translation>la Fig. %1 no té la variant «%2» (%3)</translation>
+        </message>
+        <message>
+            <source>cannot tell the format of “%1”: end it in .svg, .pdf, .png, .tex or .csv</source>
+            <translation>no se sap el format de «%1»: acabeu-lo en .svg, .pdf, .png, .tex o .csv</translation>
+        </message>
+        <message>
+            <source>bad resolution “%1” (24 … 1200)</source>
+            <translation>resolució incorrecta «%1» (24 … 1200)</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::CurveTab</name>
@@ -4947,6 +4991,75 @@ Ja no és al disc.</translation>
         <message>
             <source>Area error</source>
             <translation>Error d’àrea</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::ThesisFigures</name>
+        <message>
+            <source>Fig %1 — %2</source>
+            <translation>Fig. %1 — %2</translation>
+        </message>
+        <message>
+            <source>Fig %1</source>
+            <translation>Fig. %1</translation>
+        </message>
+        <message>
+            <source>Fig %1 names no tab of Granota.</source>
+            <translation>La Fig. %1 no correspon a cap pestanya del Granota.</translation>
+        </message>
+        <message>
+            <source>Fig %1 could not be shown.</source>
+            <translation>No s&apos;ha pogut mostrar la Fig. %1.</translation>
+        </message>
+        <message>
+            <source>Fig %1 could not be shown: %2</source>
+            <translation>No s&apos;ha pogut mostrar la Fig. %1: %2</translation>
+        </message>
+        <message>
+            <source>Unknown export format “%1” (svg, pdf, png, tex, csv).</source>
+            <translation>Format d&apos;exportació desconegut «%1» (svg, pdf, png, tex, csv).</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::ThesisFiguresDialog</name>
+        <message numerus="yes">
+            <source>Showing Fig %1 replaces the Frog tab&apos;s run of %n step(s), which cannot be undone. Show it?</source>
+            <translation>
+                <numerusform>Mostrar la Fig. %1 substitueix l&apos;execució de %n pas de la pestanya Granota, que no es pot desfer. La voleu mostrar?</numerusform>
+                <numerusform>Mostrar la Fig. %1 substitueix l&apos;execució de %n passos de la pestanya Granota, que no es pot desfer. La voleu mostrar?</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Thesis figures</source>
+            <translation>Figures de la tesi</translation>
+        </message>
+        <message>
+            <source>&amp;Variant:</source>
+            <translation>&amp;Variant:</translation>
+        </message>
+        <message>
+            <source>&amp;Show</source>
+            <translation>&amp;Mostra</translation>
+        </message>
+        <message>
+            <source>&amp;Export…</source>
+            <translation>&amp;Exporta…</translation>
+        </message>
+        <message>
+            <source>Close</source>
+            <translation>Tanca</translation>
+        </message>
+        <message>
+            <source>It has no tab of its own: Export… writes it.</source>
+            <translation>No té pestanya pròpia: Exporta… l&apos;escriu.</translation>
+        </message>
+        <message>
+            <source>Export figure</source>
+            <translation>Exporta la figura</translation>
+        </message>
+        <message>
+            <source>Figures (*.svg *.pdf *.png *.tex *.csv)</source>
+            <translation>Figures (*.svg *.pdf *.png *.tex *.csv)</translation>
         </message>
     </context>
 </TS>

@@ -3977,6 +3977,10 @@ It is no longer on disk.</translation>
             <translation>Recovered %1. Not recovered:
 %2</translation>
         </message>
+        <message>
+            <source>Thesis &amp;figures…</source>
+            <translation>Thesis &amp;figures…</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::PointEditor</name>
@@ -4555,6 +4559,46 @@ It is no longer on disk.</translation>
             <source>Splines and soft bodies, for the classroom.</source>
             <translation>Splines and soft bodies, for the classroom.</translation>
         </message>
+        <message>
+            <source>List the thesis&apos;s figures: number, variants, caption; and exit.</source>
+            <translation>List the thesis&apos;s figures: number, variants, caption; and exit.</translation>
+        </message>
+        <message>
+            <source>Draw the thesis&apos;s figure N (2.1 … 4.13), with --export.</source>
+            <translation>Draw the thesis&apos;s figure N (2.1 … 4.13), with --export.</translation>
+        </message>
+        <message>
+            <source>The figure&apos;s variant V (--list-figures names them).</source>
+            <translation>The figure&apos;s variant V (--list-figures names them).</translation>
+        </message>
+        <message>
+            <source>Write the figure&apos;s view alone to FILE (.svg, .pdf, .png, .tex or .csv) and exit.</source>
+            <translation>Write the figure&apos;s view alone to FILE (.svg, .pdf, .png, .tex or .csv) and exit.</translation>
+        </message>
+        <message>
+            <source>Resolution of a PNG export, 24 … 1200 (96: one pixel per pixel).</source>
+            <translation>Resolution of a PNG export, 24 … 1200 (96: one pixel per pixel).</translation>
+        </message>
+        <message>
+            <source>--figure N and --export FILE go together (--variant and --dpi with them)</source>
+            <translation>--figure N and --export FILE go together (--variant and --dpi with them)</translation>
+        </message>
+        <message>
+            <source>unknown figure “%1” (2.1 … 2.10, 4.1 … 4.13; --list-figures)</source>
+            <translation>unknown figure “%1” (2.1 … 2.10, 4.1 … 4.13; --list-figures)</translation>
+        </message>
+        <message>
+            <source>Fig %1 has no variant “%2” (%3)</source>
+            <translation>Fig %1 has no variant “%2” (%3)</translation>
+        </message>
+        <message>
+            <source>cannot tell the format of “%1”: end it in .svg, .pdf, .png, .tex or .csv</source>
+            <translation>cannot tell the format of “%1”: end it in .svg, .pdf, .png, .tex or .csv</translation>
+        </message>
+        <message>
+            <source>bad resolution “%1” (24 … 1200)</source>
+            <translation>bad resolution “%1” (24 … 1200)</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::CurveTab</name>
@@ -4947,6 +4991,75 @@ It is no longer on disk.</translation>
         <message>
             <source>Area error</source>
             <translation>Area error</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::ThesisFigures</name>
+        <message>
+            <source>Fig %1 — %2</source>
+            <translation>Fig %1 — %2</translation>
+        </message>
+        <message>
+            <source>Fig %1</source>
+            <translation>Fig %1</translation>
+        </message>
+        <message>
+            <source>Fig %1 names no tab of Granota.</source>
+            <translation>Fig %1 names no tab of Granota.</translation>
+        </message>
+        <message>
+            <source>Fig %1 could not be shown.</source>
+            <translation>Fig %1 could not be shown.</translation>
+        </message>
+        <message>
+            <source>Fig %1 could not be shown: %2</source>
+            <translation>Fig %1 could not be shown: %2</translation>
+        </message>
+        <message>
+            <source>Unknown export format “%1” (svg, pdf, png, tex, csv).</source>
+            <translation>Unknown export format “%1” (svg, pdf, png, tex, csv).</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::ThesisFiguresDialog</name>
+        <message numerus="yes">
+            <source>Showing Fig %1 replaces the Frog tab&apos;s run of %n step(s), which cannot be undone. Show it?</source>
+            <translation>
+                <numerusform>Showing Fig %1 replaces the Frog tab&apos;s run of %n step, which cannot be undone. Show it?</numerusform>
+                <numerusform>Showing Fig %1 replaces the Frog tab&apos;s run of %n steps, which cannot be undone. Show it?</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Thesis figures</source>
+            <translation>Thesis figures</translation>
+        </message>
+        <message>
+            <source>&amp;Variant:</source>
+            <translation>&amp;Variant:</translation>
+        </message>
+        <message>
+            <source>&amp;Show</source>
+            <translation>&amp;Show</translation>
+        </message>
+        <message>
+            <source>&amp;Export…</source>
+            <translation>&amp;Export…</translation>
+        </message>
+        <message>
+            <source>Close</source>
+            <translation>Close</translation>
+        </message>
+        <message>
+            <source>It has no tab of its own: Export… writes it.</source>
+            <translation>It has no tab of its own: Export… writes it.</translation>
+        </message>
+        <message>
+            <source>Export figure</source>
+            <translation>Export figure</translation>
+        </message>
+        <message>
+            <source>Figures (*.svg *.pdf *.png *.tex *.csv)</source>
+            <translation>Figures (*.svg *.pdf *.png *.tex *.csv)</translation>
         </message>
     </context>
 </TS>
