@@ -344,7 +344,8 @@ private slots:
             std::find_if(figures.begin(), figures.end(), [](const ThesisFigure& f) { return f.number == "2.7"; }) -
             figures.begin());
         dialog->list()->setCurrentRow(row);
-        dialog->variants()->setCurrentIndex(dialog->variants()->findText(QStringLiteral("thesis")));
+        dialog->variants()->setCurrentIndex(dialog->variants()->findData(QStringLiteral("thesis")));
+        QCOMPARE(dialog->variants()->currentText(), QStringLiteral("as the thesis computed it"));
         QVERIFY(dialog->note()->text().contains(QStringLiteral("BezParamProp")));
         const int steps = fit->undoStack()->count();
         QVERIFY(dialog->showChosen());
@@ -361,6 +362,7 @@ private slots:
         QCoreApplication::processEvents(); // the LanguageChange is posted
         QVERIFY2(dialog->list()->item(row)->text().contains(QStringLiteral("proporcionals a les distàncies")),
                  qPrintable(dialog->list()->item(row)->text()));
+        QCOMPARE(dialog->variants()->currentText(), QStringLiteral("com la va calcular la tesi")); // kept, translated
         granota::ui::setLanguage(QStringLiteral("en"), false);
         QCoreApplication::processEvents();
         QVERIFY(dialog->list()->item(row)->text().contains(QStringLiteral("proportional to the distances")));

@@ -5019,6 +5019,30 @@ Ja no és al disc.</translation>
             <source>Unknown export format “%1” (svg, pdf, png, tex, csv).</source>
             <translation>Format d&apos;exportació desconegut «%1» (svg, pdf, png, tex, csv).</translation>
         </message>
+        <message>
+            <source>as defined</source>
+            <translation>segons la definició</translation>
+        </message>
+        <message>
+            <source>as the thesis computed it</source>
+            <translation>com la va calcular la tesi</translation>
+        </message>
+        <message>
+            <source>every degree</source>
+            <translation>tots els graus</translation>
+        </message>
+        <message>
+            <source>(a) at rest</source>
+            <translation>(a) en repòs</translation>
+        </message>
+        <message>
+            <source>(b) grabbed</source>
+            <translation>(b) agafada</translation>
+        </message>
+        <message>
+            <source>degree n = %1</source>
+            <translation>grau n = %1</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::ThesisFiguresDialog</name>

@@ -5019,6 +5019,30 @@ It is no longer on disk.</translation>
             <source>Unknown export format “%1” (svg, pdf, png, tex, csv).</source>
             <translation>Unknown export format “%1” (svg, pdf, png, tex, csv).</translation>
         </message>
+        <message>
+            <source>as defined</source>
+            <translation>as defined</translation>
+        </message>
+        <message>
+            <source>as the thesis computed it</source>
+            <translation>as the thesis computed it</translation>
+        </message>
+        <message>
+            <source>every degree</source>
+            <translation>every degree</translation>
+        </message>
+        <message>
+            <source>(a) at rest</source>
+            <translation>(a) at rest</translation>
+        </message>
+        <message>
+            <source>(b) grabbed</source>
+            <translation>(b) grabbed</translation>
+        </message>
+        <message>
+            <source>degree n = %1</source>
+            <translation>degree n = %1</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::ThesisFiguresDialog</name>

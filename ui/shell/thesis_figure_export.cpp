@@ -110,6 +110,24 @@ QString thesisFigureCaption(const ThesisFigure& figure)
     return say("Fig %1 — %2").arg(fromStd(figure.number), fromStd(text));
 }
 
+QString thesisFigureVariantLabel(const FigureVariant& variant)
+{
+    const std::string& name = variant.name;
+    if (name == "definition")
+        return say("as defined");
+    if (name == "thesis")
+        return say("as the thesis computed it");
+    if (name == "all")
+        return say("every degree");
+    if (name == "rest")
+        return say("(a) at rest");
+    if (name == "grabbed")
+        return say("(b) grabbed");
+    if (name.size() == 2 && name[0] == 'n')
+        return say("degree n = %1").arg(QChar::fromLatin1(name[1]));
+    return fromStd(name);
+}
+
 QString thesisFigureNote(const FigureVariant& variant) { return fromStd(variant.note.in(currentLanguage().toStdString())); }
 
 QJsonObject thesisFigureState(const TabPage& page, const ThesisFigure& figure, const FigureVariant& variant)

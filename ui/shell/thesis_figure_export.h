@@ -43,6 +43,9 @@ QStringList thesisFigureFormats();
 
 /// "Fig 2.7 — caption", in the current language (the gallery, --list-figures).
 QString thesisFigureCaption(const ThesisFigure& figure);
+/// The variant's name as the gallery shows it, in the current language ("as the thesis
+/// computed it" for `thesis`); the command line uses the names themselves.
+QString thesisFigureVariantLabel(const FigureVariant& variant);
 /// The variant's note in the current language (empty for a figure with one way to draw it).
 QString thesisFigureNote(const FigureVariant& variant);
 

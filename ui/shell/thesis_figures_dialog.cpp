@@ -100,7 +100,7 @@ void ThesisFiguresDialog::figureChosen(int row)
     const QSignalBlocker block(m_variants);
     m_variants->clear();
     for (const FigureVariant& v : figure->variants)
-        m_variants->addItem(QString::fromStdString(v.name));
+        m_variants->addItem(thesisFigureVariantLabel(v), QString::fromStdString(v.name));
     m_variants->setCurrentIndex(std::max(0, keep));
     m_variants->setEnabled(figure->variants.size() > 1);
     variantChosen(m_variants->currentIndex());
