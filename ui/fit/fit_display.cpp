@@ -87,8 +87,8 @@ std::vector<std::vector<Point>> breakdownCurves(const std::vector<Point>& contro
         return curves;
     // n + 1 curves of 1 … n + 1 points cost about n³/6 operations a sample: fewer samples at a high degree.
     const double n = static_cast<double>(controlPoints.size());
-    const int part =
-        std::max(1, std::min(samples, std::max(kMinBreakdownSamples, static_cast<int>(kBreakdownBudget * 6.0 / (n * n * n)))));
+    const int part = std::max(1, std::min(samples, std::max(kMinBreakdownSamples,
+                                                            static_cast<int>(kBreakdownBudget * 6.0 / (n * n * n)))));
     for (std::size_t k = 1; k <= controlPoints.size(); ++k)
         curves.push_back(k == 1 ? std::vector<Point>{controlPoints[0]}
                                 : sampleBezier(std::vector<Point>(controlPoints.begin(),
@@ -177,7 +177,8 @@ void writeFitTikz(TikzWriter& w, const FitPicture& picture, const CurvatureComb*
         if (display.controlPoints)
             w.polyline(P, style.polygon, 0.6, true);
         if (comb) {
-            w.comment(QStringLiteral("curvature comb: teeth |kappa| x %1").arg(QString::fromStdString(formatDouble(comb->scale))));
+            w.comment(
+                QStringLiteral("curvature comb: teeth |kappa| x %1").arg(QString::fromStdString(formatDouble(comb->scale))));
             for (const auto& tooth : comb->teeth)
                 w.polyline({tooth.base, tooth.tip}, curvatureCombColor(), 0.3);
             for (const auto& stretch : comb->outline)

@@ -33,11 +33,11 @@ struct FitDisplay {
     static constexpr int kMinSamples = 1;     ///< one interval: the chord P_0 P_n
     static constexpr int kMaxSamples = 10000; ///< degree 100 × 10 000 samples: about 5·10⁷ operations a refit
 
-    bool controlPoints = true;                  ///< the fitted P_0…P_n, their labels and polygon (Matlab `puntsvis`)
-    bool residuals = true;                      ///< the segments from α(t_i) to Q_i
-    bool breakdown = false;                     ///< the curves of P_0…P_k, k = 0…n (Matlab `desglossar`)
-    int samples = kDefaultSamples;              ///< intervals of t the drawn curve goes through (Matlab `part`)
-    bool errorPlotAllParametrizations = false;  ///< the error-against-degree plot for every parametrization at once
+    bool controlPoints = true;                 ///< the fitted P_0…P_n, their labels and polygon (Matlab `puntsvis`)
+    bool residuals = true;                     ///< the segments from α(t_i) to Q_i
+    bool breakdown = false;                    ///< the curves of P_0…P_k, k = 0…n (Matlab `desglossar`)
+    int samples = kDefaultSamples;             ///< intervals of t the drawn curve goes through (Matlab `part`)
+    bool errorPlotAllParametrizations = false; ///< the error-against-degree plot for every parametrization at once
 
     friend bool operator==(const FitDisplay& a, const FitDisplay& b)
     {
@@ -59,10 +59,10 @@ std::vector<std::vector<Point>> breakdownCurves(const std::vector<Point>& contro
 
 /// What one picture of a fit is drawn from.
 struct FitPicture {
-    const std::vector<Point>& data;                       ///< Q_0…Q_k
-    const FitResult* fit;                                 ///< nullptr: no fit (nothing of it is drawn)
-    const std::vector<Point>& curve;                      ///< α sampled
-    const std::vector<std::vector<Point>>& breakdown;     ///< breakdownCurves() while shown
+    const std::vector<Point>& data;                   ///< Q_0…Q_k
+    const FitResult* fit;                             ///< nullptr: no fit (nothing of it is drawn)
+    const std::vector<Point>& curve;                  ///< α sampled
+    const std::vector<std::vector<Point>>& breakdown; ///< breakdownCurves() while shown
     const FitDisplay& display;
 };
 

@@ -49,8 +49,8 @@ void styleFitErrorPlot(QCustomPlot* plot, double scale)
     plot->graph(kCurrentGraph)->setPen(QPen(CanvasStyle::series(0), 1.5 * scale));
     plot->graph(kCurrentGraph)->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 5 * scale));
     plot->graph(kCircleGraph)
-        ->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(CanvasStyle::series(3), 2 * scale), Qt::NoBrush,
-                                          12 * scale));
+        ->setScatterStyle(
+            QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(CanvasStyle::series(3), 2 * scale), Qt::NoBrush, 12 * scale));
     for (std::size_t i = 0; i < kPlottedParametrizations.size(); ++i) {
         QCPGraph* g = plot->graph(kFirstAllGraph + static_cast<int>(i));
         const QColor c = CanvasStyle::series(kSeries[i]);
@@ -132,8 +132,9 @@ QCPGraph* fitErrorGraph(QCustomPlot* plot, Parametrization p, Parametrization cu
     if (!allParametrizations)
         return p == current ? plot->graph(kCurrentGraph) : nullptr;
     const auto it = std::find(kPlottedParametrizations.begin(), kPlottedParametrizations.end(), p);
-    return it == kPlottedParametrizations.end() ? nullptr
-                                                : plot->graph(kFirstAllGraph + static_cast<int>(it - kPlottedParametrizations.begin()));
+    return it == kPlottedParametrizations.end()
+               ? nullptr
+               : plot->graph(kFirstAllGraph + static_cast<int>(it - kPlottedParametrizations.begin()));
 }
 
 } // namespace granota::ui

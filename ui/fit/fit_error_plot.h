@@ -23,7 +23,7 @@ namespace granota::ui {
 
 /// Every parametrization the core knows (parametrization.h), in the order of their lines.
 constexpr std::array<Parametrization, 4> kPlottedParametrizations = {Parametrization::Uniform, Parametrization::ChordLength,
-                                                                    Parametrization::Centripetal, Parametrization::AnnexIII};
+                                                                     Parametrization::Centripetal, Parametrization::AnnexIII};
 
 /// Makes the graphs, the log axis and the integer ticks.
 void setUpFitErrorPlot(QCustomPlot* plot);
@@ -31,11 +31,11 @@ void setUpFitErrorPlot(QCustomPlot* plot);
 void styleFitErrorPlot(QCustomPlot* plot, double scale);
 
 struct FitErrorPlotInput {
-    const std::vector<Point>* points = nullptr; ///< Q_0…Q_k
+    const std::vector<Point>* points = nullptr;                 ///< Q_0…Q_k
     Parametrization parametrization = Parametrization::Uniform; ///< the tab's (its line, and the circle's)
     LeastSquaresSolver solver = LeastSquaresSolver::Qr;
-    int currentDegree = 0;       ///< circled
-    int lastDegree = 0;          ///< plotted from n = 1 up to this
+    int currentDegree = 0; ///< circled
+    int lastDegree = 0;    ///< plotted from n = 1 up to this
     bool allParametrizations = false;
     /// The lines' names in the key, in the order of kPlottedParametrizations (translated by the tab).
     std::array<QString, 4> names;
