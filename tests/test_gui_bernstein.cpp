@@ -11,6 +11,8 @@
 #include "gui_timeouts.h"
 
 #include <QCheckBox>
+#include <QImage>
+#include <QPainter>
 #include <QJsonObject>
 #include <QSlider>
 #include <QSpinBox>
@@ -304,6 +306,79 @@ private slots:
             QVERIFY(!error.isEmpty());
             QCOMPARE(other.bernstein.saveState(), saved);
         }
+    }
+
+    // Fig 2.4 one plot at a time: "mode": "single" with each degree Ex 2.4 prints (0 … 5) draws
+    // that degree's n + 1 polynomials and nothing else — with "t_marker": false not even the line
+    // at t — on the plot (what File ▸ Export draws), in the TikZ and in the CSV. The values are
+    // C(n, i) tⁱ (1 − t)ⁿ⁻ⁱ computed here (Def 2.5).
+    void oneDegreeAloneForFigure24()
+    {
+        Tabs tabs;
+        for (int n = 0; n <= 5; ++n) {
+            QString error;
+            QVERIFY2(tabs.bernstein.loadState(QJsonObject{{"degree", n}, {"mode", "single"}, {"t_marker", false}}, &error),
+                     qPrintable(error));
+            QCustomPlot* plot = tabs.bernstein.basisPlot();
+            QCOMPARE(plot->graphCount(), n + 1);
+            for (int i = 0; i <= n; ++i) {
+                const auto data = plot->graph(i)->data();
+                double binomial = 1;
+                for (int j = 1; j <= i; ++j)
+                    binomial = binomial * (n - i + j) / j;
+                for (int k = 0; k < data->size(); k += 20) {
+                    const double t = data->at(k)->key;
+                    QVERIFY(std::fabs(data->at(k)->value - binomial * std::pow(t, i) * std::pow(1 - t, n - i)) < 1e-12);
+                }
+            }
+            // Nothing but the graphs: no marker, no readout among the plot's items.
+            for (int k = 0; k < plot->itemCount(); ++k)
+                QVERIFY(!plot->item(k)->visible());
+            const QString tex = tabs.bernstein.tikz();
+            QCOMPARE(tex.count(QStringLiteral("\\draw")), 2 + n + 1); // the axes and the n + 1 polynomials
+            QVERIFY(!tex.contains(QStringLiteral("dashed")));
+            QCOMPARE(tabs.bernstein.csv().section(QLatin1Char('\n'), 0, 0).count(QLatin1Char(',')), n + 1);
+        }
+        // The marker back: one line more, in the document and undoable through its check box.
+        QCheckBox* marker = nullptr;
+        for (QCheckBox* box : tabs.bernstein.findChildren<QCheckBox*>())
+            if (box->text() == QStringLiteral("Mark t"))
+                marker = box;
+        QVERIFY(marker && !marker->isChecked());
+        marker->click();
+        QVERIFY(tabs.bernstein.tMarkerVisible());
+        QCOMPARE(tabs.bernstein.saveState().value(QStringLiteral("t_marker")).toBool(false), true);
+        QCOMPARE(tabs.bernstein.tikz().count(QStringLiteral("dashed")), 1);
+        tabs.bernstein.undoStack()->undo();
+        QVERIFY(!tabs.bernstein.tMarkerVisible() && !marker->isChecked());
+        QString error;
+        QVERIFY(tabs.bernstein.loadState(QJsonObject{{"degree", 2}}, &error)); // older documents: the marker shown
+        QVERIFY(tabs.bernstein.tMarkerVisible());
+        QVERIFY(!tabs.bernstein.loadState(QJsonObject{{"t_marker", 1}}, &error));
+    }
+
+    // The readout that follows the mouse is no part of the picture: an export made while it is
+    // shown is the export made without it, and the readout is still there afterwards.
+    void exportLeavesTheHoverReadoutOut()
+    {
+        Tabs tabs;
+        tabs.bernstein.resize(900, 700);
+        tabs.bernstein.show();
+        QVERIFY(waitExposed(&tabs.bernstein));
+        const auto render = [&tabs] {
+            granota::ui::Drawable* view = tabs.bernstein.exportView();
+            QImage image(view->exportSize().toSize(), QImage::Format_ARGB32);
+            QPainter painter(&image);
+            view->render(painter, QRectF(image.rect()));
+            return image;
+        };
+        const QImage without = render();
+        QCustomPlot* plot = tabs.bernstein.basisPlot();
+        QTest::mouseMove(plot, QPoint(static_cast<int>(plot->xAxis->coordToPixel(0.3)),
+                                      static_cast<int>(plot->yAxis->coordToPixel(0.5))));
+        QTRY_VERIFY_WITH_TIMEOUT(tabs.bernstein.readoutShown(), kEventWaitMs);
+        QCOMPARE(render(), without);
+        QVERIFY(tabs.bernstein.readoutShown());
     }
 
     void csvAndTikz()

@@ -856,6 +856,73 @@ private slots:
     }
 
     // Alt+letter: no two controls of the tab share one, in either language.
+    // Matlab Rep_CatmullRom with puntvis = false: the points q_i (handles, labels, polygon) leave the
+    // canvas, the PNG export (File ▸ Export) and the TikZ; the curves through them stay. One undo
+    // step; "control_points" round-trips, absent means shown.
+    void pointsCanBeHidden()
+    {
+        CatmullRomTab tab;
+        showTab(tab);
+        const auto png = [&tab] {
+            QTemporaryDir dir;
+            const QString file = dir.filePath(QStringLiteral("c.png"));
+            const QString error = granota::ui::exportPng(*tab.exportView(), file);
+            return error.isEmpty() ? QImage(file) : QImage();
+        };
+        const auto near = [](const QColor& a, const QColor& b) {
+            return std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue()) < 40;
+        };
+        const granota::Point q1 = tab.pointEditor()->points()[1];
+        const QPoint at = tab.canvas()->view().toScreen(q1).toPoint(); // a 96-DPI PNG has the canvas's pixels
+        const QColor handle = tab.canvas()->style().handle;
+        const QImage shown = png();
+        QVERIFY(!shown.isNull());
+        QVERIFY(near(shown.pixelColor(at), handle));
+        QVERIFY(tab.tikz().contains(QStringLiteral("q_{1}")));
+        QCheckBox* box = nullptr;
+        for (QCheckBox* b : tab.findChildren<QCheckBox*>())
+            if (b->text() == QStringLiteral("Poin&ts"))
+                box = b;
+        QVERIFY(box);
+        const int steps = tab.undoStack()->count();
+        box->click();
+        QCOMPARE(tab.undoStack()->count(), steps + 1);
+        QCOMPARE(tab.saveState().value(QStringLiteral("control_points")).toBool(true), false);
+        const QImage hidden = png();
+        QVERIFY(!near(hidden.pixelColor(at), handle));
+        // The curves still pass through q1 (Catmull-Rom interpolates): the colour of one of them is there.
+        bool curve = false;
+        for (int dy = -2; dy <= 2; ++dy)
+            for (int dx = -2; dx <= 2; ++dx)
+                for (int i = 0; i < static_cast<int>(tab.settings().taus.size()); ++i)
+                    curve = curve || near(hidden.pixelColor(at + QPoint(dx, dy)), CanvasStyle::series(i));
+        QVERIFY(curve);
+        const QString tex = tab.tikz();
+        QVERIFY(!tex.contains(QStringLiteral("q_{")));
+        QVERIFY(tex.contains(QStringLiteral("tau = 1/2")));
+        QCOMPARE(tab.pointEditor()->pick(at), -1);
+
+        const QJsonObject state = tab.saveState();
+        CatmullRomTab other;
+        QString error;
+        QVERIFY2(other.loadState(QJsonDocument::fromJson(QJsonDocument(state).toJson()).object(), &error), qPrintable(error));
+        QCOMPARE(other.saveState(), state);
+        QVERIFY(!other.settings().controlPoints);
+        QJsonObject old = state;
+        old.remove(QStringLiteral("control_points"));
+        QVERIFY2(other.loadState(old, &error), qPrintable(error));
+        QVERIFY(other.settings().controlPoints);
+        QJsonObject bad = state;
+        bad.insert(QStringLiteral("control_points"), QStringLiteral("no"));
+        QVERIFY(!other.loadState(bad, &error));
+
+        tab.undoStack()->undo();
+        QVERIFY(tab.settings().controlPoints && box->isChecked());
+        QVERIFY(near(png().pixelColor(at), handle));
+        tab.undoStack()->redo();
+        QVERIFY(!tab.settings().controlPoints && !box->isChecked());
+    }
+
     void mnemonicsDoNotClash_data()
     {
         QTest::addColumn<QString>("language");

@@ -1350,6 +1350,78 @@ private slots:
         QVERIFY(tab.t() < 0.99); // it looped past 1 back to the start
     }
 
+    // Matlab puntsvis = false (Rep_Bezier draws the curve alone): the control points, their labels
+    // and polygon leave the canvas, its exports and the TikZ, and the canvas no longer picks them;
+    // the curve stays. One undo step; "control_points" round-trips, absent means shown.
+    void controlPointsCanBeHidden()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        tab.setConstructionVisible(false); // nothing else near P1
+        tab.setT(1.0);                     // the whole curve drawn bold
+        const auto render = [&tab] {
+            QImage image(tab.canvas()->size(), QImage::Format_ARGB32);
+            image.fill(Qt::white);
+            QPainter painter(&image);
+            tab.canvas()->render(painter, QRectF(image.rect()));
+            return image;
+        };
+        const auto near = [](const QColor& a, const QColor& b) {
+            return std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue()) < 40;
+        };
+        // P1 = (1, 2) of the default cubic lies off the curve; c(1/4) = (58/64, 72/64) on it (Def 2.6 by
+        // hand: the weights at 1/4 are 27/64, 27/64, 9/64, 1/64, so x = (27 + 27 + 4)/64, y = (54 + 18)/64).
+        const QPoint p1 = screenOf(tab, {1, 2});
+        const QPoint onCurve = screenOf(tab, {58.0 / 64, 72.0 / 64});
+        const QColor handle = tab.canvas()->style().handle, curve = tab.canvas()->style().curve;
+        QImage shown = render();
+        QVERIFY(near(shown.pixelColor(p1), handle));
+        QVERIFY(near(shown.pixelColor(onCurve), curve));
+        QVERIFY(tab.tikz().contains(QStringLiteral("P_{1}")));
+        QVERIFY(tab.tikz().contains(QStringLiteral("dashed")));
+        QCOMPARE(tab.pointEditor()->pick(p1), 1);
+
+        QCheckBox* box = findByText<QCheckBox>(tab, QStringLiteral("Control points"));
+        QVERIFY(box);
+        const int steps = tab.undoStack()->count();
+        box->click();
+        QCOMPARE(tab.undoStack()->count(), steps + 1);
+        QCOMPARE(tab.saveState().value(QStringLiteral("control_points")).toBool(true), false);
+        QVERIFY(!tab.controlPointsVisible());
+        const QImage hidden = render();
+        QVERIFY(!near(hidden.pixelColor(p1), handle));
+        QVERIFY(near(hidden.pixelColor(onCurve), curve));
+        const QString tex = tab.tikz();
+        QVERIFY(!tex.contains(QStringLiteral("P_{")));
+        QVERIFY(!tex.contains(QStringLiteral("dashed")));
+        QVERIFY(tex.contains(QStringLiteral("line width=1.2pt"))); // the curve
+        QVERIFY(tex.contains(QStringLiteral("c(t)")));
+        QCOMPARE(tab.pointEditor()->pick(p1), -1);
+        QVERIFY(tab.csv().startsWith(QStringLiteral("i,x,y\n0,0,0\n1,1,2\n"))); // the data stay in the CSV
+
+        // Through a document and back; an older document (no key) shows them; a bad value is refused.
+        const QJsonObject state = tab.saveState();
+        DeCasteljauTab other;
+        QString error;
+        QVERIFY2(other.loadState(state, &error), qPrintable(error));
+        QVERIFY(!other.controlPointsVisible());
+        QCOMPARE(other.saveState(), state);
+        QJsonObject old = state;
+        old.remove(QStringLiteral("control_points"));
+        QVERIFY2(other.loadState(old, &error), qPrintable(error));
+        QVERIFY(other.controlPointsVisible());
+        QJsonObject bad = state;
+        bad.insert(QStringLiteral("control_points"), 0);
+        QVERIFY(!other.loadState(bad, &error));
+        QVERIFY(other.controlPointsVisible());
+
+        tab.undoStack()->undo();
+        QVERIFY(tab.controlPointsVisible() && box->isChecked());
+        QVERIFY(near(render().pixelColor(p1), handle));
+        tab.undoStack()->redo();
+        QVERIFY(!tab.controlPointsVisible() && !box->isChecked());
+    }
+
     void csvAndTikz()
     {
         DeCasteljauTab tab;

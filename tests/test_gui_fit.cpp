@@ -5,6 +5,7 @@
 #include "core/base/number_format.h"
 #include "core/curves/bezier/curvature.h"
 #include "core/exact/exact_cost.h"
+#include "core/curves/fitting/fit_error_by_degree.h"
 #include "core/curves/fitting/least_squares_fit.h"
 #include "core/exact/rational.h"
 #include "core/io/worked_examples.h"
@@ -15,11 +16,13 @@
 #include "ui/fit/fit_tab.h"
 #include "ui/common/point_editor.h"
 #include "ui/common/point_table.h"
+#include "ui/common/view_transform.h"
 #include "gui_timeouts.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QElapsedTimer>
+#include <QImage>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -36,6 +39,7 @@
 #include <qcustomplot.h>
 
 #include <cmath>
+#include <map>
 #include <limits>
 
 using granota::ui::FitSettings;
@@ -794,6 +798,234 @@ private slots:
         QVERIFY(std::isfinite(tab.currentFit()->sse));
         QVERIFY(!tab.csv().contains(QStringLiteral("nan")));
         QVERIFY(!tab.tikz().contains(QStringLiteral("nan")));
+    }
+
+    // What the Fitting tab draws is the document's: "control_points", "residuals", "breakdown",
+    // "samples" and "error_plot_all_parametrizations" round-trip, an older document (none of them)
+    // draws as before, a bad value is refused, and each check box or the samples is one undo step.
+    void drawingIsSavedAndUndone()
+    {
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.7"));
+        const QJsonObject before = tab.saveState();
+        // The defaults: everything shown as before, 400 points on the curve (399 intervals).
+        QCOMPARE(before.value(QStringLiteral("control_points")).toBool(false), true);
+        QCOMPARE(before.value(QStringLiteral("residuals")).toBool(false), true);
+        QCOMPARE(before.value(QStringLiteral("breakdown")).toBool(true), false);
+        QCOMPARE(before.value(QStringLiteral("samples")).toInt(), 399);
+        QCOMPARE(before.value(QStringLiteral("error_plot_all_parametrizations")).toBool(true), false);
+        QCOMPARE(tab.curve().size(), std::size_t(400));
+        const std::pair<QCheckBox*, const char*> boxes[] = {{tab.controlPointsBox(), "control_points"},
+                                                            {tab.residualsBox(), "residuals"},
+                                                            {tab.breakdownBox(), "breakdown"},
+                                                            {tab.allParametrizationsBox(), "error_plot_all_parametrizations"}};
+        for (const auto& [box, key] : boxes) {
+            const bool was = before.value(QLatin1String(key)).toBool();
+            const int steps = tab.undoStack()->count();
+            box->click();
+            QCOMPARE(tab.undoStack()->count(), steps + 1);
+            QCOMPARE(tab.saveState().value(QLatin1String(key)).toBool(), !was);
+            tab.undoStack()->undo();
+            QCOMPARE(tab.saveState().value(QLatin1String(key)).toBool(), was);
+            QCOMPARE(box->isChecked(), was);
+            tab.undoStack()->redo();
+            QCOMPARE(tab.saveState().value(QLatin1String(key)).toBool(), !was);
+        }
+        tab.samplesBox()->setValue(50);
+        tab.samplesBox()->setValue(60); // a spin box held down: one step
+        QCOMPARE(tab.saveState().value(QStringLiteral("samples")).toInt(), 60);
+        QCOMPARE(tab.curve().size(), std::size_t(61));
+        // The curve through part + 1 points, t = j/part (Matlab De_Casteljau(P, part)): α(1/2) is sample 30.
+        const std::vector<Point>& P = tab.currentFit()->controlPoints;
+        const Point half = 0.25 * P[0] + 0.5 * P[1] + 0.25 * P[2]; // B_i^2(1/2) = 1/4, 1/2, 1/4
+        QVERIFY(distance(tab.curve()[30], half) < 1e-12);
+        const QJsonObject all = tab.saveState();
+        tab.undoStack()->undo();
+        QCOMPARE(tab.saveState().value(QStringLiteral("samples")).toInt(), 399);
+        QCOMPARE(tab.curve().size(), std::size_t(400));
+        tab.undoStack()->redo();
+        QCOMPARE(tab.saveState(), all);
+
+        FitTab other;
+        QString error;
+        QVERIFY2(other.loadState(QJsonDocument::fromJson(QJsonDocument(all).toJson()).object(), &error), qPrintable(error));
+        QCOMPARE(other.saveState(), all);
+        QCOMPARE(other.display(), tab.display());
+        QVERIFY(!other.controlPointsBox()->isChecked() && !other.residualsBox()->isChecked());
+        QVERIFY(other.breakdownBox()->isChecked() && other.allParametrizationsBox()->isChecked());
+        QCOMPARE(other.samplesBox()->value(), 60);
+        QCOMPARE(other.breakdown().size(), std::size_t(3));
+        QJsonObject old = all;
+        for (const char* key : {"control_points", "residuals", "breakdown", "samples", "error_plot_all_parametrizations"})
+            old.remove(QLatin1String(key));
+        QVERIFY2(other.loadState(old, &error), qPrintable(error));
+        QCOMPARE(other.display(), granota::ui::FitDisplay{});
+        QCOMPARE(other.curve().size(), std::size_t(400));
+        for (const auto& [key, value] :
+             {std::pair{"residuals", QJsonValue(1)}, std::pair{"samples", QJsonValue(0)}, std::pair{"samples", QJsonValue(10001)},
+              std::pair{"samples", QJsonValue(2.5)}, std::pair{"breakdown", QJsonValue(QStringLiteral("yes"))}}) {
+            QJsonObject bad = all;
+            bad.insert(QLatin1String(key), value);
+            const QJsonObject kept = other.saveState();
+            QVERIFY2(!other.loadState(bad, &error), key);
+            QVERIFY(error.contains(QLatin1String(key)));
+            QCOMPARE(other.saveState(), kept);
+        }
+    }
+
+    // Matlab puntsvis = false and no residuals (Figs 2.5–2.8 as printed): the control points and
+    // the residual segments leave the canvas and the TikZ; the curve and the data points stay.
+    void controlPointsAndResidualsCanBeHidden()
+    {
+        FitTab tab;
+        tab.resize(1280, 800);
+        tab.show();
+        QVERIFY(waitExposed(&tab));
+        QVERIFY(loadEx(tab, "2.7"));
+        const auto render = [&tab] {
+            QImage image(tab.canvas()->size(), QImage::Format_ARGB32);
+            image.fill(Qt::white);
+            QPainter painter(&image);
+            tab.canvas()->render(painter, QRectF(image.rect()));
+            return image;
+        };
+        const auto near = [](const QColor& a, const QColor& b) {
+            return std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue()) < 60;
+        };
+        // Whether a pixel within 1 of `at` has colour `c` (a thin line is antialiased).
+        const auto around = [&near](const QImage& image, QPointF at, const QColor& c) {
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx)
+                    if (near(image.pixelColor(at.toPoint() + QPoint(dx, dy)), c))
+                        return true;
+            return false;
+        };
+        const granota::ui::ViewTransform& view = tab.canvas()->view();
+        const granota::ui::CanvasStyle& style = tab.canvas()->style();
+        // P1 of the n = 2 fit, off the curve (the curve only passes through P0 and P2).
+        const QPointF p1 = view.toScreen(tab.currentFit()->controlPoints[1]);
+        QVERIFY(tab.canvas()->rect().contains(p1.toPoint()));
+        // The middle of the longest residual segment α(t_i) → Q_i, well clear of Q_i's handle.
+        const auto& q = tab.pointEditor()->points();
+        const auto& r = tab.currentFit()->residuals;
+        std::size_t longest = 0;
+        for (std::size_t i = 1; i < q.size(); ++i)
+            if (std::hypot(r[i].x, r[i].y) > std::hypot(r[longest].x, r[longest].y))
+                longest = i;
+        const QPointF from = view.toScreen(q[longest] - r[longest]), to = view.toScreen(q[longest]);
+        QVERIFY2(std::hypot(to.x() - from.x(), to.y() - from.y()) > 4 * style.handleRadius(), "the residual is too short");
+        const QPointF middle = 0.5 * (from + to);
+        const QColor residual = granota::ui::CanvasStyle::series(4);
+        const QPointF onCurve = view.toScreen(tab.curve()[100]);
+
+        const QImage shown = render();
+        QVERIFY(near(shown.pixelColor(p1.toPoint()), style.curve)); // the square
+        QVERIFY(!near(shown.pixelColor(middle.toPoint()), Qt::white) || around(shown, middle, residual));
+        QString tex = tab.tikz();
+        QVERIFY(tex.contains(QStringLiteral("P_{1}")) && tex.contains(QStringLiteral("residuals")));
+
+        tab.controlPointsBox()->click();
+        tab.residualsBox()->click();
+        const QImage clean = render();
+        QVERIFY(!near(clean.pixelColor(p1.toPoint()), style.curve));
+        QVERIFY(!around(clean, middle, residual));
+        // The segment's pixels were drawn, and are not now.
+        int changed = 0;
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const QPoint at = middle.toPoint() + QPoint(dx, dy);
+                changed += !near(shown.pixelColor(at), clean.pixelColor(at));
+            }
+        QVERIFY(changed > 0);
+        QVERIFY(around(clean, onCurve, style.curve));
+        tex = tab.tikz();
+        QVERIFY(!tex.contains(QStringLiteral("P_{")) && !tex.contains(QStringLiteral("residuals")));
+        QVERIFY(!tex.contains(QStringLiteral("dashed")));                                        // the control polygon
+        QVERIFY(tex.contains(QStringLiteral("line width=1.2pt")));                               // the curve
+        QVERIFY(tex.contains(QStringLiteral("Q_{0}")) && tex.contains(QStringLiteral("Q_{4}"))); // the data
+    }
+
+    // Matlab desglossar (Rep_BezParamEqui → Rep_Bezier): the curves of the first 1, 2, …, n + 1
+    // fitted control points; curve k runs from P_0 to P_k (a Bézier curve interpolates its end
+    // points). Ex 2.8's P_j as the thesis prints them (checked in ex28Exact).
+    void breakdownDrawsTheCurvesOfTheFirstControlPoints()
+    {
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.8"));
+        QVERIFY(tab.breakdown().empty());
+        const QString plain = tab.tikz();
+        tab.breakdownBox()->click();
+        const std::vector<Point> P{
+            {11.0 / 70, -13.0 / 70}, {-3371.0 / 630, 2711.0 / 210}, {11399.0 / 630, -2539.0 / 210}, {81.0 / 70, 337.0 / 70}};
+        const auto& curves = tab.breakdown();
+        QCOMPARE(curves.size(), std::size_t(4));
+        QCOMPARE(curves[0].size(), std::size_t(1)); // P0 alone
+        for (std::size_t k = 0; k < curves.size(); ++k) {
+            QVERIFY2(distance(curves[k].front(), P[0]) < 1e-9, qPrintable(QString::number(k)));
+            QVERIFY2(distance(curves[k].back(), P[k]) < 1e-9, qPrintable(QString::number(k)));
+        }
+        QCOMPARE(curves[1].size(), std::size_t(400)); // the samples asked for, at this low degree
+        // The chord P0 P1 through 399 intervals: sample j is (1 − t) P0 + t P1 at t = j/399.
+        const double t = 200.0 / 399;
+        QVERIFY(distance(curves[1][200], (1 - t) * P[0] + t * P[1]) < 1e-9);
+        QVERIFY(distance(curves[3][199], tab.curve()[199]) < 1e-12); // the last is the fitted curve
+        // The TikZ gains the three curves and the point P0, and keeps everything else.
+        const QString tex = tab.tikz();
+        QVERIFY(tex.contains(QStringLiteral("desglossar")));
+        QCOMPARE(tex.count(QStringLiteral("line width=0.8pt")), plain.count(QStringLiteral("line width=0.8pt")) + 3);
+        QVERIFY(tex.contains(QStringLiteral("Q_{4}")) && tex.contains(QStringLiteral("P_{3}")));
+        tab.undoStack()->undo();
+        QVERIFY(tab.breakdown().empty());
+        QCOMPARE(tab.tikz(), plain);
+    }
+
+    // The error plot with every parametrization: one line each, in the key, equal to the core's
+    // fitErrorByDegree for it. Ex 2.8's data at n = 3 (issue 33, computed independently):
+    // Annex III's t give 5.000, uniform 4.143, the chord lengths of the definition 0.237.
+    void errorPlotShowsEveryParametrization()
+    {
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.8"));
+        QVERIFY(!tab.errorPlot()->legend->visible());
+        QVERIFY(!tab.errorGraph(Parametrization::ChordLength));
+        QCOMPARE(tab.errorGraph(Parametrization::Uniform), tab.errorPlot()->graph(0));
+        tab.allParametrizationsBox()->click();
+        QVERIFY(tab.errorPlot()->legend->visible());
+        QCOMPARE(tab.errorPlot()->legend->itemCount(), 4);
+        const std::vector<Point>& q = tab.pointEditor()->points();
+        std::map<Parametrization, double> atThree;
+        for (Parametrization p :
+             {Parametrization::Uniform, Parametrization::ChordLength, Parametrization::Centripetal, Parametrization::AnnexIII}) {
+            QCPGraph* graph = tab.errorGraph(p);
+            QVERIFY(graph);
+            QVERIFY(graph->visible());
+            FitOptions options;
+            options.parametrization = p;
+            const std::vector<DegreeError> expected = fitErrorByDegree(q, options, 4);
+            QCOMPARE(graph->dataCount(), 4); // n = 1 … k
+            for (int i = 0; i < 4; ++i) {
+                const DegreeError& e = expected[static_cast<std::size_t>(i)];
+                QCOMPARE(graph->data()->at(i)->key, double(e.degree));
+                if (e.sse > 1e-9)
+                    QCOMPARE(graph->data()->at(i)->value, e.sse);
+                else // n = k interpolates (but for Annex III's repeated t_0 = t_1 = 0): ~0, drawn at the plot's floor
+                    QVERIFY(graph->data()->at(i)->value < 1e-9);
+            }
+            atThree[p] = graph->data()->at(2)->value;
+        }
+        QVERIFY(std::fabs(atThree[Parametrization::AnnexIII] - 5.000) < 5e-4);
+        QVERIFY(std::fabs(atThree[Parametrization::Uniform] - 4.143) < 5e-4);
+        QVERIFY(std::fabs(atThree[Parametrization::ChordLength] - 0.237) < 5e-4);
+        QCOMPARE(tab.currentFit()->sse, atThree[Parametrization::Uniform]); // the circle's line
+        QCOMPARE(tab.errorPlot()->graph(1)->data()->at(0)->value, atThree[Parametrization::Uniform]);
+        // The CSV gains the plotted lines.
+        QVERIFY(tab.csv().contains(QStringLiteral("\nparametrization,degree,sse\n")));
+        QVERIFY(tab.csv().contains(
+            QStringLiteral("\nannex-iii,3,%1\n").arg(QString::fromStdString(formatDouble(atThree[Parametrization::AnnexIII])))));
+        tab.undoStack()->undo();
+        QVERIFY(!tab.errorPlot()->legend->visible());
+        QVERIFY(!tab.errorGraph(Parametrization::AnnexIII));
+        QVERIFY(!tab.csv().contains(QStringLiteral("parametrization,degree,sse")));
     }
 
     void csvAndTikz()

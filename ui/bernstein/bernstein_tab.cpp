@@ -56,6 +56,25 @@ QString basisHtml(const QString& i, const QString& n, const QString& arg = QStri
 }
 
 
+/// File ▸ Export of the basis plot: the plot as on screen, without the readout that follows the
+/// mouse (it belongs to the pointer, not to the picture).
+class BasisPlotExport : public Drawable {
+public:
+    BasisPlotExport(QCustomPlot* plot, QCPItemText* readout) : m_plot(plot), m_readout(readout) {}
+    QSizeF exportSize() const override { return m_plot.exportSize(); }
+    void render(QPainter& painter, const QRectF& target) override
+    {
+        const bool shown = m_readout->visible();
+        m_readout->setVisible(false);
+        m_plot.render(painter, target);
+        m_readout->setVisible(shown);
+    }
+
+private:
+    PlotDrawable m_plot;
+    QCPItemText* m_readout;
+};
+
 QString residualText(double r) { return r == 0.0 ? QStringLiteral("0") : displayText(QString::number(r, 'e', 1).toStdString()); }
 
 
@@ -63,14 +82,13 @@ QString residualText(double r) { return r == 0.0 ? QStringLiteral("0") : display
 
 BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
     : TabPage(QStringLiteral("bernstein"), QT_TR_NOOP("Bernstein"), deCasteljau->undoStack(), parent), m_deCasteljau(deCasteljau),
-      m_basisPlot(new QCustomPlot(this)), m_weightsPlot(new QCustomPlot(this)),
-      m_drawable(std::make_unique<PlotDrawable>(m_basisPlot)), m_exact(new ExactPanel(this)),
+      m_basisPlot(new QCustomPlot(this)), m_weightsPlot(new QCustomPlot(this)), m_exact(new ExactPanel(this)),
       m_parameter(new DeCasteljauParameterControl(this)), m_degreeLabel(new QLabel(this)), m_degreeBox(new QSpinBox(this)),
-      m_allBox(new QCheckBox(this)),
+      m_allBox(new QCheckBox(this)), m_markerBox(new QCheckBox(this)),
       m_checksGroup(new QGroupBox(this)), m_checkLabels{new QLabel(this), new QLabel(this), new QLabel(this)},
       m_weightsGroup(new QGroupBox(this)), m_curveLabel(new QLabel(this))
 {
-    setExportView(m_drawable.get());
+
     m_exact->setWordWrapMode(QTextOption::WordWrap); // break between terms, never inside "t^5"
     m_degreeBox->setRange(0, kMaxDegree);
     m_degreeBox->setValue(m_degree);
@@ -103,6 +121,9 @@ BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
     m_readout->setBrush(QColor(255, 255, 255, 225));
     m_readout->setPen(QPen(QColor(0xbb, 0xbb, 0xbb)));
     m_readout->setVisible(false);
+    m_drawable = std::make_unique<BasisPlotExport>(m_basisPlot, m_readout);
+    setExportView(m_drawable.get());
+    m_markerBox->setChecked(m_showMarker);
     m_basisPlot->setMouseTracking(true);
     connect(m_basisPlot, &QCustomPlot::mouseMove, this, &BernsteinTab::plotMouseMove);
     connect(m_basisPlot, &QCustomPlot::mousePress, this, &BernsteinTab::plotMousePress);
@@ -156,6 +177,8 @@ BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
     auto* right = new QWidget(this);
     auto* rightLayout = new QVBoxLayout(right);
     rightLayout->setContentsMargins(0, 0, 0, 0);
+    // Above the checks, the plot's own choice (the row above the plot has no width to spare at 800 pixels).
+    rightLayout->addWidget(m_markerBox);
     rightLayout->addWidget(m_checksGroup);
     rightLayout->addWidget(m_exact, 1);
 
@@ -171,9 +194,14 @@ BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
 
     constexpr int kDegreeMergeId = 0x42450001; // "BE": a spin box held down is one step
     connect(m_degreeBox, &QSpinBox::valueChanged, this, [this](int n) {
-        userChangedView({n, m_allDegrees}, tr("Degree n = %1").arg(n), kDegreeMergeId);
+        userChangedView({n, m_allDegrees, m_showMarker}, tr("Degree n = %1").arg(n), kDegreeMergeId);
     });
-    connect(m_allBox, &QCheckBox::toggled, this, [this](bool on) { userChangedView({m_degree, on}, tr("All degrees up to n")); });
+    connect(m_allBox, &QCheckBox::toggled, this, [this](bool on) {
+        userChangedView({m_degree, on, m_showMarker}, tr("All degrees up to n"));
+    });
+    connect(m_markerBox, &QCheckBox::toggled, this, [this](bool on) {
+        userChangedView({m_degree, m_allDegrees, on}, on ? tr("Mark t") : tr("Hide the mark at t"));
+    });
     // One t for both tabs: this tab's slider moves the De Casteljau tab's t, and back.
     connect(m_parameter, &DeCasteljauParameterControl::valueChanged, this,
             [this](double t) { userMovedT(t, m_parameter->gestureMergeId()); });
@@ -230,8 +258,23 @@ void BernsteinTab::userMovedT(double t, int mergeId)
 
 void BernsteinTab::applyView(const View& v)
 {
-    setAllDegrees(v.second);
-    setDegree(v.first);
+    setAllDegrees(v.allDegrees);
+    setDegree(v.degree);
+    setTMarkerVisible(v.marker);
+}
+
+void BernsteinTab::setTMarkerVisible(bool on)
+{
+    if (m_markerBox->isChecked() != on) {
+        const QSignalBlocker block(m_markerBox);
+        m_markerBox->setChecked(on);
+    }
+    if (on == m_showMarker)
+        return;
+    m_showMarker = on;
+    m_marker->setVisible(on);
+    m_basisPlot->replot(QCustomPlot::rpQueuedReplot);
+    emit documentChanged();
 }
 
 void BernsteinTab::userChangedView(const View& after, const QString& undoText, int mergeId)
@@ -507,6 +550,9 @@ void BernsteinTab::retranslate()
     m_degreeLabel->setToolTip(degreeTip);
     m_degreeBox->setToolTip(degreeTip);
     m_allBox->setText(tr("All degrees up to n"));
+    m_markerBox->setText(tr("Mark t"));
+    m_markerBox->setToolTip(tr("The dashed vertical line at the current t, shared with the De Casteljau tab. Off, the "
+                               "plot and its exports show the polynomials alone, as Figure 2.4 does."));
     m_allBox->setToolTip(tr("Overlay the polynomials of every degree 0…n, one colour per degree, like the tots option "
                             "of the thesis's Matlab Rep_Pol_Bernstein (Ex 2.4, Figure 2.4)."));
     m_basisPlot->yAxis->setLabel(tr("value"));
@@ -537,6 +583,7 @@ QJsonObject BernsteinTab::saveState() const
     state.insert(QStringLiteral("degree"), m_degree);
     state.insert(QStringLiteral("mode"), m_allDegrees ? QStringLiteral("all") : QStringLiteral("single"));
     state.insert(QStringLiteral("t"), t());
+    state.insert(QStringLiteral("t_marker"), m_showMarker);
     return state;
 }
 
@@ -560,6 +607,12 @@ bool BernsteinTab::loadState(const QJsonObject& state, QString* error)
             return fail(tr("The Bernstein mode must be \"single\" or \"all\"."));
         all = v.toString() == QLatin1String("all");
     }
+    bool marker = true; // older documents: shown
+    if (const QJsonValue v = state.value(QStringLiteral("t_marker")); !v.isUndefined()) {
+        if (!v.isBool())
+            return fail(tr("The Bernstein tab's “t_marker” must be true or false."));
+        marker = v.toBool();
+    }
     std::optional<double> tt;
     if (const QJsonValue v = state.value(QStringLiteral("t")); !v.isUndefined()) {
         if (!v.isDouble() || !std::isfinite(v.toDouble()) || v.toDouble() < 0 || v.toDouble() > 1)
@@ -568,6 +621,7 @@ bool BernsteinTab::loadState(const QJsonObject& state, QString* error)
     }
     setAllDegrees(all);
     setDegree(degree);
+    setTMarkerVisible(marker);
     if (tt)
         setT(*tt);
     return true;
@@ -578,7 +632,7 @@ bool BernsteinTab::loadExample(const granota::WorkedExample& example)
     const QString id = QString::fromStdString(example.id);
     if (example.kind == "bernstein" && example.degree >= 0 && example.degree <= kMaxDegree) {
         // Ex 2.4: every degree up to 5, as the thesis lists them.
-        userChangedView({example.degree, true}, tr("Load Ex %1").arg(id));
+        userChangedView({example.degree, true, m_showMarker}, tr("Load Ex %1").arg(id));
         emit statusMessage(tr("Ex %1: the Bernstein polynomials of every degree up to %2.").arg(id).arg(example.degree));
         return true;
     }
@@ -588,7 +642,7 @@ bool BernsteinTab::loadExample(const granota::WorkedExample& example)
         // bar says so, as for every example that changes another tab than the one shown.
         m_undo->beginMacro(tr("Load Ex %1").arg(id));
         m_deCasteljau->loadCurve(toDouble(example.points), tr("Load Ex %1").arg(id));
-        userChangedView({static_cast<int>(example.points.size()) - 1, false}, tr("Load Ex %1").arg(id));
+        userChangedView({static_cast<int>(example.points.size()) - 1, false, m_showMarker}, tr("Load Ex %1").arg(id));
         m_undo->endMacro();
         emit statusMessage(tr("Ex %1: the curve written in the Bernstein basis is in the panel on the right. Its "
                               "control points are now the De Casteljau tab's too (Ctrl+Z on either tab gives the old ones back).")
@@ -630,7 +684,8 @@ void BernsteinTab::drawTikz(TikzWriter& w) const
         for (int i = 0; i <= n; ++i)
             w.polyline(curves[static_cast<std::size_t>(i)], CanvasStyle::series(m_allDegrees ? n : i), 1.0);
     }
-    w.polyline({{t(), 0}, {t(), 1}}, QColor(0x33, 0x33, 0x33), 0.6, true);
+    if (m_showMarker)
+        w.polyline({{t(), 0}, {t(), 1}}, QColor(0x33, 0x33, 0x33), 0.6, true);
 }
 
 void BernsteinTab::setPresentation(bool on)

@@ -57,6 +57,10 @@ public:
     /// All degrees 0…N overlaid (the Matlab Rep_Pol_Bernstein(n, tots = true)).
     bool allDegrees() const { return m_allDegrees; }
     void setAllDegrees(bool on);
+    /// The dashed line at the current t on the plot (and in its exports); off, the basis alone
+    /// (Fig 2.4 as printed). The document's "t_marker".
+    bool tMarkerVisible() const { return m_showMarker; }
+    void setTMarkerVisible(bool on);
     /// The shared parameter t (the De Casteljau tab's).
     double t() const;
     void setT(double t);
@@ -94,8 +98,13 @@ private:
     void updateExactPanel();
     void applyPlotStyle();
     /// What the document keeps of this tab besides t: the degree and the all-degrees view.
-    using View = std::pair<int, bool>;
-    View view() const { return {m_degree, m_allDegrees}; }
+    struct View {
+        int degree = 3;
+        bool allDegrees = false;
+        bool marker = true;
+        bool operator==(const View& o) const { return degree == o.degree && allDegrees == o.allDegrees && marker == o.marker; }
+    };
+    View view() const { return {m_degree, m_allDegrees, m_showMarker}; }
     void applyView(const View& v);
     /// The user's changes: each is one undo step on this tab (docs/tabs.md, "Undo").
     void userChangedView(const View& after, const QString& undoText, int mergeId = -1);
@@ -107,7 +116,7 @@ private:
     DeCasteljauTab* m_deCasteljau;
     QCustomPlot* m_basisPlot;
     QCustomPlot* m_weightsPlot;
-    std::unique_ptr<PlotDrawable> m_drawable;
+    std::unique_ptr<Drawable> m_drawable; ///< the basis plot for File ▸ Export, without the hover readout
     QCPBars* m_bars = nullptr;
     QCPItemStraightLine* m_marker = nullptr;
     QCPItemText* m_readout = nullptr;
@@ -116,6 +125,7 @@ private:
     QLabel* m_degreeLabel;
     QSpinBox* m_degreeBox;
     QCheckBox* m_allBox;
+    QCheckBox* m_markerBox;
     QGroupBox* m_checksGroup;
     QLabel* m_checkLabels[3];
     QGroupBox* m_weightsGroup;
@@ -124,6 +134,7 @@ private:
 
     int m_degree = 3;
     bool m_allDegrees = false;
+    bool m_showMarker = true;
     bool m_presentation = false;
     bool m_dragging = false;
     int m_plotDrags = 0; ///< drags of t on the basis plot so far: one drag is one undo step

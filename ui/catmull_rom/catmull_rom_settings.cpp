@@ -12,8 +12,8 @@ bool CatmullRomSettings::operator==(const CatmullRomSettings& o) const
 {
     return taus == o.taus && selectedTau == o.selectedTau && ends == o.ends && spacing == o.spacing && bezier == o.bezier &&
            spline == o.spline && compareEnds == o.compareEnds && allTausInPlot == o.allTausInPlot &&
-           curvaturePlot == o.curvaturePlot && catmullRom == o.catmullRom && splineEnds == o.splineEnds &&
-           startSlope == o.startSlope && endSlope == o.endSlope;
+           curvaturePlot == o.curvaturePlot && catmullRom == o.catmullRom && controlPoints == o.controlPoints &&
+           splineEnds == o.splineEnds && startSlope == o.startSlope && endSlope == o.endSlope;
 }
 
 QString endsKey(CatmullRomEnds ends)
@@ -107,6 +107,7 @@ void writeSettings(const CatmullRomSettings& s, QJsonObject& json)
     json.insert(QStringLiteral("bezier"), s.bezier);
     json.insert(QStringLiteral("spline"), s.spline);
     json.insert(QStringLiteral("catmull_rom"), s.catmullRom);
+    json.insert(QStringLiteral("control_points"), s.controlPoints);
     json.insert(QStringLiteral("spline_ends"),
                 QString::fromUtf8(splineEndsName(s.splineEnds).data(), static_cast<int>(splineEndsName(s.splineEnds).size())));
     json.insert(QStringLiteral("spline_start_slope"), QString::fromStdString(toString(s.startSlope)));
@@ -186,6 +187,7 @@ std::optional<CatmullRomSettings> readSettings(const QJsonObject& json, QString*
     const std::pair<const char*, bool*> flags[] = {{"bezier", &s.bezier},
                                                    {"spline", &s.spline},
                                                    {"catmull_rom", &s.catmullRom},
+                                                   {"control_points", &s.controlPoints},
                                                    {"compare_ends", &s.compareEnds},
                                                    {"all_taus_in_plot", &s.allTausInPlot},
                                                    {"curvature_plot", &s.curvaturePlot}};

@@ -34,6 +34,7 @@ struct CatmullRomSettings {
     CatmullRomEnds ends = CatmullRomEnds::Open;
     CatmullRomSpacing spacing = CatmullRomSpacing::Uniform;
     bool bezier = false;                         ///< §2.3: the points as a Bézier control polygon too
+    bool controlPoints = true;                   ///< the points q_i, their labels and polygon (Matlab `puntvis`)
     bool catmullRom = true;                      ///< the Catmull-Rom curves of the tensions (off: Fig 2.1 shows the spline alone)
     bool spline = false;                         ///< Def 2.3: the C² cubic spline through the points
     SplineEnds splineEnds = SplineEnds::Natural; ///< its end conditions (cubic_spline.h)

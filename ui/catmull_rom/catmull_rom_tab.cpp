@@ -201,6 +201,7 @@ void CatmullRomTab::buildUi()
     m_bezierCheck = new QCheckBox(m_curveBox);
     m_splineCheck = new QCheckBox(m_curveBox);
     m_catmullRomCheck = new QCheckBox(m_curveBox);
+    m_pointsCheck = new QCheckBox(m_curveBox);
     m_splineEndsLabel = new QLabel(m_curveBox);
     m_splineEndsCombo = new QComboBox(m_curveBox);
     for (int i = 0; i < 4; ++i)
@@ -220,7 +221,12 @@ void CatmullRomTab::buildUi()
     curveLayout->addWidget(m_endsCombo, 0, 1);
     curveLayout->addWidget(m_spacingLabel, 1, 0);
     curveLayout->addWidget(m_spacingCombo, 1, 1);
-    curveLayout->addWidget(m_catmullRomCheck, 2, 0, 1, 2);
+    // The points and the Catmull-Rom curves side by side: two short check boxes, one row.
+    auto* shown = new QHBoxLayout;
+    shown->addWidget(m_catmullRomCheck);
+    shown->addWidget(m_pointsCheck);
+    shown->addStretch(1);
+    curveLayout->addLayout(shown, 2, 0, 1, 2);
     curveLayout->addWidget(m_bezierCheck, 3, 0, 1, 2);
     curveLayout->addWidget(m_splineCheck, 4, 0, 1, 2);
     // The spline's own rows, under its check box: their labels do not widen the first column.
@@ -237,6 +243,10 @@ void CatmullRomTab::buildUi()
     connect(m_catmullRomCheck, &QCheckBox::toggled, this, [this](bool on) {
         if (!m_syncing)
             setCatmullRomVisible(on);
+    });
+    connect(m_pointsCheck, &QCheckBox::toggled, this, [this](bool on) {
+        if (!m_syncing)
+            setControlPointsVisible(on);
     });
     connect(m_splineEndsCombo, &QComboBox::currentIndexChanged, this, [this](int i) {
         if (!m_syncing && i >= 0)
@@ -404,6 +414,10 @@ void CatmullRomTab::retranslate()
     m_catmullRomCheck->setText(tr("Cat&mull-Rom curves"));
     m_catmullRomCheck->setToolTip(tr("Draw the Catmull-Rom curve of each tension. Hide them to see the cubic spline alone, "
                                      "as Fig 2.1 shows Ex 2.1's."));
+    m_pointsCheck->setText(tr("Poin&ts"));
+    m_pointsCheck->setToolTip(tr("Draw the points q_i that the curves interpolate, their labels and their polygon; off, "
+                                 "the curves alone, like puntvis = false in the thesis's Matlab Rep_CatmullRom. The "
+                                 "table still edits the points."));
     m_splineEndsLabel->setText(tr("Spline e&nds:"));
     m_splineEndsCombo->setItemText(0, tr("Natural (s″ = 0)"));
     m_splineEndsCombo->setItemText(1, tr("Clamped (slopes)"));
@@ -494,6 +508,7 @@ void CatmullRomTab::syncControls()
     m_bezierCheck->setChecked(m_settings.bezier);
     m_splineCheck->setChecked(m_settings.spline);
     m_catmullRomCheck->setChecked(m_settings.catmullRom);
+    m_pointsCheck->setChecked(m_settings.controlPoints);
     m_splineEndsCombo->setCurrentIndex(static_cast<int>(m_settings.splineEnds));
     m_splineEndsCombo->setEnabled(m_settings.spline);
     m_splineEndsLabel->setEnabled(m_settings.spline);
@@ -533,6 +548,7 @@ void CatmullRomTab::changeSettings(const CatmullRomSettings& after, const QStrin
 void CatmullRomTab::applySettings(const CatmullRomSettings& s)
 {
     m_settings = s;
+    m_editor->setHandlesVisible(s.controlPoints);
     syncControls();
     recompute();
     emit documentChanged();
@@ -623,6 +639,13 @@ void CatmullRomTab::setSpacing(CatmullRomSpacing spacing)
     CatmullRomSettings after = m_settings;
     after.spacing = spacing;
     changeSettings(after, tr("Change the parametrization"));
+}
+
+void CatmullRomTab::setControlPointsVisible(bool on)
+{
+    CatmullRomSettings after = m_settings;
+    after.controlPoints = on;
+    changeSettings(after, on ? tr("Show the points") : tr("Hide the points"));
 }
 
 void CatmullRomTab::setBezierVisible(bool on)
@@ -969,6 +992,7 @@ bool CatmullRomTab::loadExample(const WorkedExample& example)
     s.bezier = false;
     s.spline = false;
     s.catmullRom = true;
+    s.controlPoints = true;
     s.splineEnds = SplineEnds::Natural;
     s.compareEnds = false;
     s.allTausInPlot = false;
@@ -1126,7 +1150,7 @@ void CatmullRomTab::drawTikz(TikzWriter& w) const
         w.bezierSegments(m_scene.curves[i].bezier, CanvasStyle::series(static_cast<int>(i)), 1.2);
     }
     const auto& points = m_editor->points();
-    for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t i = 0; m_settings.controlPoints && i < points.size(); ++i)
         w.point(points[i], CanvasStyle().handle, QStringLiteral("q_{%1}").arg(i));
 }
 

@@ -62,6 +62,9 @@ public:
     void setSplineSlopes(const Rational& start, const Rational& end);
     /// The Catmull-Rom curves of the tensions shown or hidden (Fig 2.1 shows the spline alone).
     void setCatmullRomVisible(bool on);
+    /// The points q_i, their labels and polygon (the Matlab Rep_CatmullRom `puntvis`); hidden,
+    /// the canvas no longer picks them (the table still edits them).
+    void setControlPointsVisible(bool on);
     void setCompareEnds(bool on);
     void setAllTausInPlot(bool on);
     void setCurvaturePlot(bool on);
@@ -116,6 +119,7 @@ private:
     QLabel* m_spacingLabel = nullptr;
     QComboBox* m_spacingCombo = nullptr;
     QCheckBox* m_bezierCheck = nullptr;
+    QCheckBox* m_pointsCheck = nullptr;
     QCheckBox* m_splineCheck = nullptr;
     QCheckBox* m_catmullRomCheck = nullptr;
     QLabel* m_splineEndsLabel = nullptr;

@@ -31,7 +31,7 @@ PointEditor::PointEditor(CurveCanvas* canvas, QUndoStack* undoStack, QObject* pa
 {
     m_canvas->installEventFilter(this);
     m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
-        if (m_points.empty())
+        if (m_points.empty() || !m_handlesVisible)
             return;
         if (m_polygonVisible && m_points.size() > 1) {
             QPen pen(style.polygon, style.thinLine(), Qt::DashLine);
@@ -73,6 +73,18 @@ PointEditor::PointEditor(CurveCanvas* canvas, QUndoStack* undoStack, QObject* pa
             }
         }
     });
+}
+
+void PointEditor::setHandlesVisible(bool on)
+{
+    if (on == m_handlesVisible)
+        return;
+    m_handlesVisible = on;
+    if (!on) {
+        setHovered(-1);
+        m_canvas->unsetCursor();
+    }
+    m_canvas->update();
 }
 
 void PointEditor::setHovered(int index)
@@ -221,6 +233,8 @@ void PointEditor::setCountLimits(int minimum, int maximum)
 
 int PointEditor::pick(const QPointF& screen) const
 {
+    if (!m_handlesVisible)
+        return -1; // nothing to pick where nothing is drawn
     const ViewTransform& view = m_canvas->view();
     const double r = m_canvas->style().pickRadius();
     int best = -1;
@@ -325,7 +339,8 @@ void PointEditor::showContextMenu(const QPointF& screen, const QPoint& global)
 
 bool PointEditor::eventFilter(QObject* watched, QEvent* event)
 {
-    if (watched != m_canvas || !m_enabled)
+    // Hidden handles take no new gesture; a drag under way (hidden by an undo) ends as usual.
+    if (watched != m_canvas || !m_enabled || (!m_handlesVisible && m_dragging < 0))
         return QObject::eventFilter(watched, event);
     switch (event->type()) {
     case QEvent::MouseButtonPress: {

@@ -99,8 +99,14 @@ public:
     /// Whether the editor draws the polygon through the points (control polygon).
     void setPolygonVisible(bool on) { m_polygonVisible = on; }
     void setEnabled(bool on) { m_enabled = on; }
+    /// Whether the handles, their labels and the polygon are drawn at all (the thesis's Matlab
+    /// `puntsvis`): hidden, the points are neither drawn nor picked by the mouse (nothing
+    /// invisible is dragged, added or deleted on the canvas); the table still edits them.
+    void setHandlesVisible(bool on);
+    bool handlesVisible() const { return m_handlesVisible; }
 
-    /// The index of the handle within pick distance of a widget position, or −1.
+    /// The index of the handle within pick distance of a widget position, or −1 (always −1 while
+    /// the handles are hidden).
     int pick(const QPointF& screen) const;
     /// Where double-clicking at model point `p` inserts a point: nearest polygon edge, or an end.
     int insertionIndex(Point p) const;
@@ -139,6 +145,7 @@ private:
     QColor m_color;
     bool m_polygonVisible = true;
     bool m_enabled = true;
+    bool m_handlesVisible = true;
     std::optional<bool> m_labelChoice;
 };
 

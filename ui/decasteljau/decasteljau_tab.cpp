@@ -218,6 +218,8 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent) : CurveTab(QStringLiteral("decas
     m_samplesBox->setKeyboardTracking(false);
     m_samplesLabel->setBuddy(m_samplesBox);
     m_raise = new QPushButton(this);
+    m_controlPoints = new QCheckBox(this);
+    m_controlPoints->setChecked(m_showControlPoints);
     m_construction = new QCheckBox(this);
     m_construction->setChecked(m_showConstruction);
     m_steps = new QCheckBox(this);
@@ -252,7 +254,7 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent) : CurveTab(QStringLiteral("decas
     samplesLayout->addWidget(m_samplesLabel);
     samplesLayout->addWidget(m_samplesBox);
     auto* row2 = new DeCasteljauFlowLayout;
-    for (QCheckBox* box : {m_construction, m_steps, m_tangent, m_split, m_speed, m_snap})
+    for (QCheckBox* box : {m_controlPoints, m_construction, m_steps, m_tangent, m_split, m_speed, m_snap})
         row2->addWidget(box);
     row2->addWidget(samples);
     row2->addWidget(m_raise);
@@ -314,6 +316,8 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent) : CurveTab(QStringLiteral("decas
     connect(m_samplesBox, &QSpinBox::valueChanged, this, &DeCasteljauTab::userSetSamples);
     connect(m_combScaleBox, &QDoubleSpinBox::valueChanged, this, &DeCasteljauTab::userSetCombScale);
     connect(m_raise, &QPushButton::clicked, this, &DeCasteljauTab::raiseDegree);
+    connect(m_controlPoints, &QCheckBox::toggled, this,
+            [this](bool on) { userToggled(m_showControlPoints, m_controlPoints, on, tr("Control points")); });
     connect(m_construction, &QCheckBox::toggled, this,
             [this](bool on) { userToggled(m_showConstruction, m_construction, on, tr("Construction")); });
     connect(m_steps, &QCheckBox::toggled, this, [this](bool on) { userToggled(m_showSteps, m_steps, on, tr("Step by step")); });
@@ -627,7 +631,7 @@ CanvasLegendBox DeCasteljauTab::legendBox(const ViewTransform& view, const Canva
         const QRectF text(s.x() + r + 3 * style.scale, s.y() - r - fm.ascent(), fm.horizontalAdvance(label), fm.height());
         avoid.keepClear.push_back(handle.united(text));
     };
-    for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t i = 0; m_showControlPoints && i < points.size(); ++i)
         marked(points[i], m_editor->labelPrefix() + QString::number(i));
     if (!m_levels.levels.empty()) {
         // c(t)'s label is below right of its dot.
@@ -872,6 +876,7 @@ void DeCasteljauTab::setToggle(bool& flag, QCheckBox* box, bool on)
     if (flag == on)
         return;
     flag = on;
+    m_editor->setHandlesVisible(m_showControlPoints);
     pointsChanged(); // recomputes what the toggle needs (step curves, split list in the panel)
 }
 
@@ -951,6 +956,7 @@ void DeCasteljauTab::userSetCombScale(double scale)
     emit documentChanged();
 }
 
+void DeCasteljauTab::setControlPointsVisible(bool on) { setToggle(m_showControlPoints, m_controlPoints, on); }
 void DeCasteljauTab::setConstructionVisible(bool on) { setToggle(m_showConstruction, m_construction, on); }
 void DeCasteljauTab::setStepByStep(bool on) { setToggle(m_showSteps, m_steps, on); }
 void DeCasteljauTab::setTangentVisible(bool on) { setToggle(m_showTangent, m_tangent, on); }
@@ -1215,6 +1221,9 @@ void DeCasteljauTab::retranslate()
     m_raise->setText(tr("Raise degree"));
     m_raise->setToolTip(tr("Degree elevation: the same curve written with one control point more "
                            "(Q_i = i/(n+1) P_(i−1) + (1 − i/(n+1)) P_i). Undoable."));
+    m_controlPoints->setText(tr("Control points"));
+    m_controlPoints->setToolTip(tr("Draw the control points P_i, their labels and the control polygon; off, the curve "
+                                   "alone, like puntsvis = false in the thesis's Matlab. The table still edits the points."));
     m_construction->setText(tr("Construction"));
     m_construction->setToolTip(tr("Draw every level P_i^r(t) of De Casteljau's algorithm (Def 2.4): the points of each "
                                   "level and the segments between them, one colour per level."));
@@ -1273,6 +1282,7 @@ void DeCasteljauTab::writeSettings(QJsonObject& state) const
 {
     state.insert(QStringLiteral("t"), m_t);
     state.insert(QStringLiteral("samples"), m_samples);
+    state.insert(QStringLiteral("control_points"), m_showControlPoints);
     state.insert(QStringLiteral("construction"), m_showConstruction);
     state.insert(QStringLiteral("stepByStep"), m_showSteps);
     state.insert(QStringLiteral("tangent"), m_showTangent);
@@ -1319,6 +1329,7 @@ bool DeCasteljauTab::loadSettings(const QJsonObject& state, const std::vector<Po
         samples = static_cast<int>(s);
     }
     bool ok = true;
+    const auto controlPoints = optionalBool(state, "control_points", &ok);
     const auto construction = optionalBool(state, "construction", &ok);
     const auto steps = optionalBool(state, "stepByStep", &ok);
     const auto tangent = optionalBool(state, "tangent", &ok);
@@ -1343,6 +1354,8 @@ bool DeCasteljauTab::loadSettings(const QJsonObject& state, const std::vector<Po
 
     m_playStartT = m_t; // a document replaces t: stopping the animation is no step of its own
     setPlaying(false);
+    m_showControlPoints = controlPoints.value_or(true); // older documents: shown
+    m_editor->setHandlesVisible(m_showControlPoints);
     m_showConstruction = construction.value_or(true);
     m_showSteps = steps.value_or(false);
     m_showTangent = tangent.value_or(false);
@@ -1356,10 +1369,11 @@ bool DeCasteljauTab::loadSettings(const QJsonObject& state, const std::vector<Po
     m_showHodograph = hodographShown.value_or(false);
     m_constantSpeed = speed.value_or(false);
     for (auto [check, on] :
-         {std::pair{m_construction, m_showConstruction}, std::pair{m_steps, m_showSteps}, std::pair{m_tangent, m_showTangent},
-          std::pair{m_split, m_showSplit}, std::pair{m_normal, m_showNormal}, std::pair{m_osculating, m_showOsculating},
-          std::pair{m_combBox, m_showComb}, std::pair{m_box, m_showBox}, std::pair{m_featuresBox, m_showFeatures},
-          std::pair{m_hodograph, m_showHodograph}, std::pair{m_speed, m_constantSpeed}}) {
+         {std::pair{m_controlPoints, m_showControlPoints}, std::pair{m_construction, m_showConstruction},
+          std::pair{m_steps, m_showSteps}, std::pair{m_tangent, m_showTangent}, std::pair{m_split, m_showSplit},
+          std::pair{m_normal, m_showNormal}, std::pair{m_osculating, m_showOsculating}, std::pair{m_combBox, m_showComb},
+          std::pair{m_box, m_showBox}, std::pair{m_featuresBox, m_showFeatures}, std::pair{m_hodograph, m_showHodograph},
+          std::pair{m_speed, m_constantSpeed}}) {
         const QSignalBlocker block(check);
         check->setChecked(on);
     }
@@ -1449,7 +1463,8 @@ void DeCasteljauTab::drawTikz(TikzWriter& w) const
     const CanvasStyle style;
     const auto& points = m_editor->points();
     w.comment(QStringLiteral("Bezier curve of degree %1 (De Casteljau, Def 2.4) at t = %2").arg(points.size() - 1).arg(m_t));
-    w.polyline(points, style.polygon, 0.6, true);
+    if (m_showControlPoints)
+        w.polyline(points, style.polygon, 0.6, true);
     if (m_showConstruction)
         for (int r = 1; r < m_levels.degree(); ++r)
             w.polyline(m_levels.levels[static_cast<std::size_t>(r)], CanvasStyle::series(r), 0.6);
@@ -1497,7 +1512,7 @@ void DeCasteljauTab::drawTikz(TikzWriter& w) const
             QStringLiteral("osculating circle at t, radius %1").arg(QString::fromStdString(formatDouble(*m_curvature.radius))));
         w.polyline(circle, kCircleColour, 0.8, false, true);
     }
-    for (std::size_t i = 0; i < points.size(); ++i)
+    for (std::size_t i = 0; m_showControlPoints && i < points.size(); ++i)
         w.point(points[i], style.handle, QStringLiteral("P_{%1}").arg(i));
     if (!m_levels.levels.empty())
         w.point(m_levels.point(), style.curve, QStringLiteral("c(t)"));

@@ -58,6 +58,10 @@ public:
     int samples() const { return m_samples; }
     void setSamples(int part);
 
+    /// The control points P_i, their polygon and labels (the Matlab `puntsvis`); hidden, the
+    /// curve and whatever else is shown stay (Fig 2.2 and 2.3 as printed).
+    bool controlPointsVisible() const { return m_showControlPoints; }
+    void setControlPointsVisible(bool on);
     bool constructionVisible() const { return m_showConstruction; }
     bool stepByStep() const { return m_showSteps; }
     bool tangentVisible() const { return m_showTangent; }
@@ -182,6 +186,7 @@ private:
 
     DeCasteljauParameterControl* m_parameter = nullptr;
     QToolButton* m_play = nullptr;
+    QCheckBox* m_controlPoints = nullptr;
     QCheckBox* m_construction = nullptr;
     QCheckBox* m_steps = nullptr;
     QCheckBox* m_tangent = nullptr;
@@ -210,6 +215,7 @@ private:
     double m_t = 0.5;
     double m_playStartT = 0.5; ///< where t was when Play was pressed: Pause makes one step from there
     int m_samples = 200;
+    bool m_showControlPoints = true;
     bool m_showConstruction = true;
     bool m_showSteps = false;
     bool m_showTangent = false;

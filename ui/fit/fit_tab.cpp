@@ -14,6 +14,7 @@
 #include "ui/common/curve_canvas.h"
 #include "ui/common/drawable.h"
 #include "ui/common/exact_panel.h"
+#include "ui/fit/fit_error_plot.h"
 #include "ui/fit/fit_exact_view.h"
 #include "ui/common/point_editor.h"
 #include "ui/common/point_extent.h"
@@ -56,14 +57,12 @@ namespace granota::ui {
 
 namespace {
 
-constexpr int kCurveSamples = 400;        ///< De Casteljau samples of the fitted curve
-constexpr std::size_t kDrawLimit = 5000;  ///< beyond this many points, residuals are drawn decimated
-constexpr int kMaxLabelledControls = 30;  ///< control points labelled P0… up to this degree
 constexpr int kMaxDegree = kMaxFitDegree; ///< the core's limit
 constexpr int kMaxIterations = 1000;
 /// Undo-merge fields of the settings' ValueCommand (changes of the same field merge).
 enum Field { DegreeField, ParametrizationField, SolverField, CorrectionField };
 constexpr int kFieldMergeIdBase = 0x46490000; ///< "FI": the merge id of field f is this + f
+constexpr int kSamplesMergeId = 0x46540002;   ///< "FT": the samples spin box held down is one step
 
 /// The degree spin box: refuses n > k with a reason instead of silently (docs/tabs.md).
 class DegreeSpinBox : public QSpinBox {
@@ -127,9 +126,6 @@ QRectF boundsOf(const std::vector<Point>& a, const std::vector<Point>& b)
     const double cx = 0.5 * box->minX + 0.5 * box->maxX, cy = 0.5 * box->minY + 0.5 * box->maxY;
     return QRectF(cx - 0.5 * w, cy - 0.5 * h, w, h);
 }
-
-/// Every `stride`-th index so that at most `limit` items are drawn (all of them below it).
-std::size_t strideFor(std::size_t count, std::size_t limit) { return count > limit ? (count + limit - 1) / limit : 1; }
 
 /// File ▸ Export of the tab: its canvas, once a fit running in the background is done.
 class FinishedFitView : public Drawable {
@@ -241,6 +237,49 @@ void FitTab::buildUi()
     m_combScaleBox->setEnabled(false);
     form->addRow(m_combBox, m_combScaleBox);
 
+    // What is drawn: the thesis's Matlab options (Annex III) and the error plot's lines.
+    m_displayGroup = new QGroupBox(this);
+    auto* display = new QFormLayout(m_displayGroup);
+    display->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    display->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    m_controlPointsBox = new QCheckBox(m_displayGroup);
+    m_residualsBox = new QCheckBox(m_displayGroup);
+    m_breakdownBox = new QCheckBox(m_displayGroup);
+    m_allParametrizationsBox = new QCheckBox(m_displayGroup);
+    m_samplesLabel = new QLabel(m_displayGroup);
+    m_samplesBox = new QSpinBox(m_displayGroup);
+    m_samplesBox->setRange(FitDisplay::kMinSamples, FitDisplay::kMaxSamples);
+    m_samplesBox->setKeyboardTracking(false);
+    m_samplesLabel->setBuddy(m_samplesBox);
+    auto* toggles = new QHBoxLayout;
+    toggles->addWidget(m_controlPointsBox);
+    toggles->addWidget(m_residualsBox);
+    toggles->addStretch(1);
+    display->addRow(toggles);
+    display->addRow(m_breakdownBox);
+    display->addRow(m_samplesLabel, m_samplesBox);
+    display->addRow(m_allParametrizationsBox);
+    const auto toggle = [this](QCheckBox* box, bool FitDisplay::*flag, const char* undoText) {
+        connect(box, &QCheckBox::toggled, this, [this, flag, undoText](bool on) {
+            if (m_updatingControls)
+                return;
+            FitDisplay after = m_display;
+            after.*flag = on;
+            changeDisplay(after, tr(undoText));
+        });
+    };
+    toggle(m_controlPointsBox, &FitDisplay::controlPoints, QT_TR_NOOP("Control points"));
+    toggle(m_residualsBox, &FitDisplay::residuals, QT_TR_NOOP("Residuals"));
+    toggle(m_breakdownBox, &FitDisplay::breakdown, QT_TR_NOOP("Step by step"));
+    toggle(m_allParametrizationsBox, &FitDisplay::errorPlotAllParametrizations, QT_TR_NOOP("Every parametrization in the plot"));
+    connect(m_samplesBox, qOverload<int>(&QSpinBox::valueChanged), this, [this](int part) {
+        if (m_updatingControls)
+            return;
+        FitDisplay after = m_display;
+        after.samples = part;
+        changeDisplay(after, tr("Samples: %1").arg(part), kSamplesMergeId);
+    });
+
     // Readouts.
     m_readoutGroup = new QGroupBox(this);
     auto* readouts = new QVBoxLayout(m_readoutGroup);
@@ -274,6 +313,7 @@ void FitTab::buildUi()
     auto* sideLayout = new QVBoxLayout(side);
     sideLayout->setContentsMargins(0, 0, 0, 0);
     sideLayout->addWidget(m_settingsGroup);
+    sideLayout->addWidget(m_displayGroup);
     sideLayout->addWidget(m_readoutGroup);
     sideLayout->addWidget(m_exact, 1);
     // On a small screen (800×600, presentation mode at 1024×768) the side scrolls rather than squeezing its rows.
@@ -282,21 +322,7 @@ void FitTab::buildUi()
     // The error against the degree.
     m_plot = new QCustomPlot(this);
     m_plot->setMinimumHeight(120);
-    m_plot->addGraph(); // Σ‖Q_i − α(t_i)‖² for n = 1..min(k, kMaxFitDegree)
-    m_plot->graph(0)->setPen(QPen(CanvasStyle::series(0), 1.5));
-    m_plot->graph(0)->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 5));
-    m_plot->addGraph(); // the current n
-    m_plot->graph(1)->setLineStyle(QCPGraph::lsNone);
-    m_plot->graph(1)->setScatterStyle(
-        QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(CanvasStyle::series(3), 2), Qt::NoBrush, 12));
-    m_plot->yAxis->setScaleType(QCPAxis::stLogarithmic);
-    m_plot->yAxis->setTicker(QSharedPointer<QCPAxisTickerLog>(new QCPAxisTickerLog));
-    m_plot->yAxis->setNumberFormat(QStringLiteral("eb"));
-    m_plot->yAxis->setNumberPrecision(0);
-    QSharedPointer<QCPAxisTickerFixed> integers(new QCPAxisTickerFixed);
-    integers->setTickStep(1);
-    integers->setScaleStrategy(QCPAxisTickerFixed::ssMultiples);
-    m_plot->xAxis->setTicker(integers);
+    setUpFitErrorPlot(m_plot); // Σ‖Q_i − α(t_i)‖² for n = 1..min(k, kMaxFitDegree)
     m_plotText = new QCPItemText(m_plot);
     m_plotText->position->setType(QCPItemPosition::ptAxisRectRatio);
     m_plotText->position->setCoords(0.98, 0.04);
@@ -446,49 +472,12 @@ void FitTab::addLayers()
                                   tr("curvature comb of the fit: teeth |κ| × %1").arg(displaySignificant(m_comb.scale, 6))});
         drawCanvasLegend(p, view, style, legend);
     });
-    // Residual vectors Q_i − α(t_i): thin segments from α(t_i) to Q_i.
+    // The residual segments, then the breakdown, the polygon, the curve and its control points (fit_display.h).
     m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
-        if (!m_fit)
-            return;
-        const std::vector<Point>& q = m_editor->points();
-        if (q.size() != m_fit->residuals.size())
-            return;
-        p.setPen(QPen(CanvasStyle::series(4), style.thinLine()));
-        const std::size_t stride = strideFor(q.size(), kDrawLimit);
-        for (std::size_t i = 0; i < q.size(); i += stride)
-            p.drawLine(view.toScreen(q[i] - m_fit->residuals[i]), view.toScreen(q[i]));
+        drawFitResiduals(p, view, style, {m_editor->points(), currentFit(), m_curve, m_breakdown, m_display});
     });
-    // The control polygon, the fitted curve and its control points P_0..P_n (not editable).
     m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
-        if (!m_fit)
-            return;
-        const std::vector<Point>& P = m_fit->controlPoints;
-        if (P.size() > 1) {
-            p.setPen(QPen(style.polygon, style.thinLine(), Qt::DashLine));
-            QPainterPath polygon(view.toScreen(P[0]));
-            for (std::size_t j = 1; j < P.size(); ++j)
-                polygon.lineTo(view.toScreen(P[j]));
-            p.drawPath(polygon);
-        }
-        if (m_curve.size() > 1) {
-            p.setPen(QPen(style.curve, style.lineWidth()));
-            QPainterPath curve(view.toScreen(m_curve[0]));
-            for (std::size_t j = 1; j < m_curve.size(); ++j)
-                curve.lineTo(view.toScreen(m_curve[j]));
-            p.drawPath(curve);
-        }
-        const double r = style.handleRadius() * 0.8;
-        p.setFont(style.labelFont());
-        for (std::size_t j = 0; j < P.size(); ++j) {
-            const QPointF s = view.toScreen(P[j]);
-            p.setPen(QPen(Qt::white, style.thinLine()));
-            p.setBrush(style.curve);
-            p.drawRect(QRectF(s.x() - r, s.y() - r, 2 * r, 2 * r)); // squares: computed, not dragged
-            if (P.size() <= kMaxLabelledControls + 1) {
-                p.setPen(style.curve);
-                p.drawText(s + QPointF(r + 3 * style.scale, r + p.fontMetrics().ascent()), QStringLiteral("P%1").arg(j));
-            }
-        }
+        drawFitCurve(p, view, style, {m_editor->points(), currentFit(), m_curve, m_breakdown, m_display});
     });
 }
 
@@ -533,6 +522,24 @@ void FitTab::retranslate()
     m_combScaleBox->retranslate();
     m_showMatrices->setToolTip(tr("Show M (Lemma 2.2), MᵀM, (MᵀM)⁻¹ and M⁺ = (MᵀM)⁻¹Mᵀ (Note 2.2), in fractions "
                                   "when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8."));
+    m_displayGroup->setTitle(tr("Drawing"));
+    m_controlPointsBox->setText(tr("Con&trol points"));
+    m_controlPointsBox->setToolTip(tr("Draw the fitted control points P_j (squares), their labels and the control "
+                                      "polygon. The thesis's Figs 2.5–2.8 show the curve and the data alone."));
+    m_residualsBox->setText(tr("&Residuals"));
+    m_residualsBox->setToolTip(tr("Draw the segments from α(t_i) to each data point Q_i: the errors the fit minimises."));
+    m_breakdownBox->setText(tr("Step by st&ep"));
+    m_breakdownBox->setToolTip(tr("Also draw the Bézier curves of the first 1, 2, …, n+1 fitted control points, thinner "
+                                  "and lighter, like the desglossar option of the thesis's Matlab Rep_BezParamEqui and "
+                                  "Rep_BezParamProp (Annex III)."));
+    m_samplesLabel->setText(tr("Samp&les:"));
+    const QString samplesTip = tr("Sampling precision: the fitted curve is drawn through this many intervals of t, like "
+                                  "part in the thesis's Matlab Rep_BezParamEqui(Q, n, part, desglossar).");
+    m_samplesLabel->setToolTip(samplesTip);
+    m_samplesBox->setToolTip(samplesTip);
+    m_allParametrizationsBox->setText(tr("Every parametri&zation in the error plot"));
+    m_allParametrizationsBox->setToolTip(tr("Plot the error against the degree for uniform, chord-length, centripetal and "
+                                            "Annex III parameters at once, one line each, to see where each wins."));
     m_readoutGroup->setTitle(tr("Quality of the fit (Prop 2.2)"));
     m_readoutGroup->setToolTip(tr("The error that the least-squares curve minimises, and how sensitive the "
                                   "solution is to the data."));
@@ -551,7 +558,7 @@ void FitTab::retranslate()
     updateTable();
     updateReadouts();
     updateExact();
-    m_plot->replot();
+    updatePlot(); // the key's names
 }
 
 QString FitTab::errorText(const Error& error) const
@@ -622,6 +629,11 @@ void FitTab::updateControls()
     m_correct->setChecked(m_settings.correctParameters);
     m_iterations->setValue(std::clamp(m_settings.iterations, 1, kMaxIterations));
     m_iterations->setEnabled(m_settings.correctParameters);
+    m_controlPointsBox->setChecked(m_display.controlPoints);
+    m_residualsBox->setChecked(m_display.residuals);
+    m_breakdownBox->setChecked(m_display.breakdown);
+    m_samplesBox->setValue(m_display.samples);
+    m_allParametrizationsBox->setChecked(m_display.errorPlotAllParametrizations);
     m_updatingControls = false;
 }
 
@@ -658,7 +670,7 @@ void FitTab::refit()
         // says it is fitting.
         m_fit.reset();
         m_fitError.clear();
-        m_curve.clear();
+        resample();
         m_background->start(q, options);
         updateFitViews();
     } else {
@@ -673,13 +685,45 @@ void FitTab::showFit(Expected<FitResult> fit)
     if (fit) {
         m_fit = std::move(fit).value();
         m_fitError.clear();
-        m_curve = sampleBezier(m_fit->controlPoints, kCurveSamples);
     } else {
         m_fit.reset();
         m_fitError = errorText(fit.error());
-        m_curve.clear();
     }
+    resample();
     updateFitViews();
+}
+
+void FitTab::resample()
+{
+    m_curve = m_fit ? sampleBezier(m_fit->controlPoints, m_display.samples + 1) : std::vector<Point>{};
+    m_breakdown = m_fit && m_display.breakdown ? breakdownCurves(m_fit->controlPoints, m_display.samples)
+                                               : std::vector<std::vector<Point>>{};
+}
+
+void FitTab::changeDisplay(const FitDisplay& after, const QString& undoText, int mergeId)
+{
+    if (after == m_display)
+        return;
+    m_undo->push(new ValueCommand<FitDisplay>([this](const FitDisplay& d) { applyDisplay(d); }, m_display, after, undoText,
+                                              mergeId, {/*dropWhenUnchanged=*/true}));
+}
+
+void FitTab::applyDisplay(const FitDisplay& d)
+{
+    const FitDisplay before = m_display;
+    m_display = d;
+    updateControls();
+    if (d.samples != before.samples || d.breakdown != before.breakdown)
+        resample();
+    if (d.errorPlotAllParametrizations != before.errorPlotAllParametrizations)
+        updatePlot();
+    m_canvas->update();
+    emit documentChanged();
+}
+
+QCPGraph* FitTab::errorGraph(Parametrization p) const
+{
+    return fitErrorGraph(m_plot, p, m_settings.parametrization, m_display.errorPlotAllParametrizations);
 }
 
 void FitTab::updateFitViews()
@@ -836,50 +880,33 @@ void FitTab::updatePlot()
 {
     if (!m_plot)
         return;
-    FitOptions options;
-    options.parametrization = m_settings.parametrization;
-    options.solver = m_settings.solver;
     const std::vector<Point>& q = m_editor->points();
-    // Every degree allowed, unless that would be too much work to redo on each change.
+    // Every degree allowed, unless that would be too much work to redo on each change (four
+    // times the work with every parametrization: the same budget goes to fewer degrees).
     const int highest = std::clamp(static_cast<int>(q.size()) - 1, 0, kMaxDegree);
+    const double lines = m_display.errorPlotAllParametrizations ? static_cast<double>(kPlottedParametrizations.size()) : 1.0;
     int plotted = 0;
     for (double work = 0; plotted < highest; ++plotted) {
-        work += static_cast<double>(q.size()) * (plotted + 2) * (plotted + 2);
+        work += lines * static_cast<double>(q.size()) * (plotted + 2) * (plotted + 2);
         if (work > kPlotWorkBudget)
             break;
     }
-    const std::vector<DegreeError> errors = fitErrorByDegree(q, options, plotted);
-    // Log scale: an interpolating fit has error ~0; show it at a floor far below the rest.
-    double largest = 0;
-    for (const DegreeError& e : errors)
-        if (e.ok)
-            largest = std::max(largest, e.sse);
-    const double floor = std::max(largest * 1e-20, std::numeric_limits<double>::min());
-    QVector<double> x, y, cx, cy;
-    for (const DegreeError& e : errors) {
-        if (!e.ok)
-            continue; // the normal equations broke down at this degree
-        x << e.degree;
-        y << std::max(e.sse, floor);
-        if (e.degree == fittedDegree()) {
-            cx << e.degree;
-            cy << std::max(e.sse, floor);
-        }
-    }
-    m_plot->graph(0)->setData(x, y, true);
-    m_plot->graph(1)->setData(cx, cy, true);
-    const int last = x.isEmpty() ? 1 : static_cast<int>(x.back());
-    m_plot->xAxis->setRange(0.5, std::max(last, 2) + 0.5);
-    if (!y.isEmpty()) {
-        const auto [lo, hi] = std::minmax_element(y.begin(), y.end());
-        m_plot->yAxis->setRange(*lo / 3, *hi * 3);
-    }
+    FitErrorPlotInput in;
+    in.points = &q;
+    in.parametrization = m_settings.parametrization;
+    in.solver = m_settings.solver;
+    in.currentDegree = fittedDegree();
+    in.lastDegree = plotted;
+    m_plotLastDegree = plotted;
+    in.allParametrizations = m_display.errorPlotAllParametrizations;
+    in.names = {tr("uniform"), tr("chord length"), tr("centripetal"), tr("Annex III")};
+    const int reached = fillFitErrorPlot(m_plot, in);
     // Where the plot stops short of the highest degree allowed, it says why, on the plot.
     m_plotNote.clear();
-    if (!errors.empty() && errors.back().degree < highest)
+    if (reached > 0 && reached < highest)
         m_plotNote =
             tr("Plotted up to n = %1 of %2:\nrefitting every degree for %3 points\non each change would slow the window.")
-                .arg(errors.back().degree)
+                .arg(reached)
                 .arg(highest)
                 .arg(q.size());
     m_plotText->setText(m_plotNote);
@@ -1018,6 +1045,7 @@ void FitTab::writeSettings(QJsonObject& state) const
     state.insert(QStringLiteral("showMatrices"), m_showMatrices->isChecked());
     state.insert(QStringLiteral("curvatureComb"), m_combBox->isChecked());
     state.insert(QStringLiteral("curvatureCombScale"), m_combScale);
+    writeFitDisplay(m_display, state);
 }
 
 PointListMessages FitTab::pointMessages() const
@@ -1088,6 +1116,15 @@ bool FitTab::loadSettings(const QJsonObject& state, const std::vector<Point>& po
         error = tr("“curvatureComb” must be true or false.");
         return false;
     }
+    QString badKey;
+    const std::optional<FitDisplay> display = readFitDisplay(state, &badKey); // older documents: as before the keys
+    if (!display) {
+        error =
+            badKey == QLatin1String("samples")
+                ? tr("“samples” must be a whole number from %1 to %2.").arg(FitDisplay::kMinSamples).arg(FitDisplay::kMaxSamples)
+                : tr("“%1” must be true or false.").arg(badKey);
+        return false;
+    }
     const QJsonValue combScale = state.value(QStringLiteral("curvatureCombScale")); // older documents: automatic
     if (!combScale.isUndefined() && (!combScale.isDouble() || !std::isfinite(combScale.toDouble()) || combScale.toDouble() < 0 ||
                                      combScale.toDouble() > CurvatureCombScaleBox::kMaxScale)) {
@@ -1100,7 +1137,8 @@ bool FitTab::loadSettings(const QJsonObject& state, const std::vector<Point>& po
     // clears the stacks), and a refused document must leave the user's history as it was.
     m_loading = true;
     m_settings = s;
-    m_editor->applyPoints(points); // refits once, with the new settings
+    m_display = *display;
+    m_editor->applyPoints(points); // refits once, with the new settings and drawing
     m_showMatrices->setChecked(matrices.toBool(false));
     m_combScale = combScale.toDouble(0.0);
     m_combScaleBox->setScale(m_combScale);
@@ -1139,6 +1177,20 @@ QString FitTab::csv() const
         for (std::size_t j = 0; j < m_fit->controlPoints.size(); ++j)
             out += QStringLiteral("%1,%2,%3\n").arg(j).arg(f(m_fit->controlPoints[j].x), f(m_fit->controlPoints[j].y));
     }
+    if (m_display.errorPlotAllParametrizations) {
+        // The error plot's lines, as fitErrorByDegree gives them (empty where that fit failed).
+        out += QStringLiteral("\nparametrization,degree,sse\n");
+        FitOptions options;
+        options.solver = m_settings.solver;
+        for (Parametrization p : kPlottedParametrizations) {
+            options.parametrization = p;
+            for (const DegreeError& e : fitErrorByDegree(q, options, m_plotLastDegree))
+                out += QStringLiteral("%1,%2,%3\n")
+                           .arg(QString::fromStdString(toString(p)))
+                           .arg(e.degree)
+                           .arg(e.ok ? f(e.sse) : QString());
+        }
+    }
     return out;
 }
 
@@ -1146,29 +1198,11 @@ void FitTab::drawTikz(TikzWriter& tikz) const
 {
     finishFit(); // the finished fit, never a half state
     const std::vector<Point>& q = m_editor->points();
-    const CanvasStyle style;
     tikz.comment(QStringLiteral("Granota: least-squares Bézier fit of degree %1 (%2 parameters), %3 data points")
                      .arg(fittedDegree())
                      .arg(QString::fromStdString(toString(m_settings.parametrization)))
                      .arg(q.size()));
-    if (m_fit) {
-        tikz.polyline(m_fit->controlPoints, style.polygon, 0.6, true);
-        if (m_combBox->isChecked()) {
-            tikz.comment(
-                QStringLiteral("curvature comb: teeth |kappa| x %1").arg(QString::fromStdString(formatDouble(m_comb.scale))));
-            for (const auto& tooth : m_comb.teeth)
-                tikz.polyline({tooth.base, tooth.tip}, curvatureCombColor(), 0.3);
-            for (const auto& stretch : m_comb.outline)
-                tikz.polyline(stretch, curvatureCombColor(), 0.6);
-        }
-        tikz.polyline(m_curve, style.curve, 1.2);
-        for (std::size_t j = 0; j < m_fit->controlPoints.size(); ++j)
-            tikz.point(m_fit->controlPoints[j], style.curve,
-                       m_fit->controlPoints.size() <= kMaxLabelledControls + 1 ? QStringLiteral("P_{%1}").arg(j) : QString());
-    }
-    const std::size_t stride = strideFor(q.size(), 2000);
-    for (std::size_t i = 0; i < q.size(); i += stride)
-        tikz.point(q[i], style.handle, q.size() <= 30 ? QStringLiteral("Q_{%1}").arg(i) : QString());
+    writeFitTikz(tikz, {q, currentFit(), m_curve, m_breakdown, m_display}, m_combBox->isChecked() ? &m_comb : nullptr);
 }
 
 // ---------------------------------------------------------------- view
@@ -1182,10 +1216,7 @@ void FitTab::presentationChanged(bool on)
         axis->setLabelFont(tickFont);
     }
     keepAxisTitlesWhole(m_plot);
-    m_plot->graph(0)->setPen(QPen(CanvasStyle::series(0), 1.5 * scale));
-    m_plot->graph(0)->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, 5 * scale));
-    m_plot->graph(1)->setScatterStyle(
-        QCPScatterStyle(QCPScatterStyle::ssCircle, QPen(CanvasStyle::series(3), 2 * scale), Qt::NoBrush, 12 * scale));
+    styleFitErrorPlot(m_plot, scale);
     m_plot->replot();
     const int total = m_mainSplitter->width();
     if (total > 0) // the side panel's texts grow with the font: give it more room

@@ -10,6 +10,7 @@
 
 #include "ui/common/curvature_comb.h"
 #include "core/curves/fitting/least_squares_fit.h"
+#include "ui/fit/fit_display.h"
 #include "ui/fit/fit_settings.h"
 #include "ui/common/curve_tab.h"
 
@@ -19,6 +20,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QCPGraph;
 class QCPItemText;
 class QCustomPlot;
 class QGroupBox;
@@ -52,6 +54,14 @@ public:
     /// The settings, and changing them as one undo step.
     const FitSettings& settings() const { return m_settings; }
     void changeSettings(const FitSettings& after, const QString& undoText, int field = -1);
+    /// What is drawn of the fit (fit_display.h), and changing it as one undo step (`mergeId` ≥ 0:
+    /// successive changes with it merge, a spin box held down).
+    const FitDisplay& display() const { return m_display; }
+    void changeDisplay(const FitDisplay& after, const QString& undoText, int mergeId = -1);
+    /// The fitted curve as drawn (display().samples intervals) and, while shown, the curves of
+    /// the first 1, 2, …, n + 1 control points (Matlab `desglossar`).
+    const std::vector<Point>& curve() const { return m_curve; }
+    const std::vector<std::vector<Point>>& breakdown() const { return m_breakdown; }
     /// The degree actually fitted: min(n, k).
     int fittedDegree() const;
     /// The current fit, or nullptr when there is none (then fitError() says why, or a fit is
@@ -84,6 +94,13 @@ public:
     QCheckBox* correctionBox() const { return m_correct; }
     QSpinBox* iterationsBox() const { return m_iterations; }
     QCheckBox* showMatricesBox() const { return m_showMatrices; }
+    QCheckBox* controlPointsBox() const { return m_controlPointsBox; }
+    QCheckBox* residualsBox() const { return m_residualsBox; }
+    QCheckBox* breakdownBox() const { return m_breakdownBox; }
+    QSpinBox* samplesBox() const { return m_samplesBox; }
+    QCheckBox* allParametrizationsBox() const { return m_allParametrizationsBox; }
+    /// The error plot's line of parametrization `p`, or nullptr when it is not shown.
+    QCPGraph* errorGraph(Parametrization p) const;
     /// The curvature comb of the fitted curve (ui/common/curvature_comb.h), on demand.
     QCheckBox* combBox() const { return m_combBox; }
     /// The comb's scale beside it (curvature_comb_scale_box.h: 0 is automatic); undoable, in the document.
@@ -121,6 +138,9 @@ private:
     void buildUi();
     void addLayers();
     void applySettings(const FitSettings& s);
+    void applyDisplay(const FitDisplay& d);
+    /// The curve (and its breakdown) sampled again from the current fit.
+    void resample();
     void updateControls();
     void onPointsChanged();
     void refit();
@@ -142,6 +162,7 @@ private:
     QCustomPlot* m_plot = nullptr;
     QCPItemText* m_plotText = nullptr; ///< on the plot: why it stops before the highest degree
     QString m_plotNote;
+    int m_plotLastDegree = 0; ///< the error plot's degrees: 1 … this
     QSplitter* m_mainSplitter = nullptr;
     QSplitter* m_leftSplitter = nullptr;
     QSplitter* m_bottomSplitter = nullptr;
@@ -163,6 +184,14 @@ private:
     CurvatureComb m_comb;   ///< of the fitted curve, while the comb is shown
     void updateComb();
 
+    QGroupBox* m_displayGroup = nullptr;
+    QCheckBox* m_controlPointsBox = nullptr;
+    QCheckBox* m_residualsBox = nullptr;
+    QCheckBox* m_breakdownBox = nullptr;
+    QLabel* m_samplesLabel = nullptr;
+    QSpinBox* m_samplesBox = nullptr;
+    QCheckBox* m_allParametrizationsBox = nullptr;
+
     QGroupBox* m_readoutGroup = nullptr;
     QLabel* m_sseLabel = nullptr;
     QLabel* m_rmsLabel = nullptr;
@@ -177,10 +206,12 @@ private:
     std::unique_ptr<Drawable> m_exportView; ///< the canvas, once the background fit is done
 
     FitSettings m_settings;
+    FitDisplay m_display;
     std::optional<FitResult> m_fit;
     QString m_fitError;
-    std::vector<Point> m_curve;  ///< the fitted curve, sampled by De Casteljau
-    int m_lastFittedDegree = -1; ///< to say when too few points lower the degree
+    std::vector<Point> m_curve;                  ///< the fitted curve, sampled by De Casteljau
+    std::vector<std::vector<Point>> m_breakdown; ///< breakdownCurves() of the fit, while shown
+    int m_lastFittedDegree = -1;                 ///< to say when too few points lower the degree
     bool m_updatingControls = false;
     bool m_loading = false; ///< examples and documents: no "degree lowered" message
 };
