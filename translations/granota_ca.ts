@@ -626,6 +626,22 @@
             <source>Bernstein</source>
             <translation>Bernstein</translation>
         </message>
+        <message>
+            <source>Mark t</source>
+            <translation>Marca t</translation>
+        </message>
+        <message>
+            <source>Hide the mark at t</source>
+            <translation>Amaga la marca a t</translation>
+        </message>
+        <message>
+            <source>The dashed vertical line at the current t, shared with the De Casteljau tab. Off, the plot and its exports show the polynomials alone, as Figure 2.4 does.</source>
+            <translation>La línia vertical discontínua a la t actual, compartida amb la pestanya De Casteljau. Desactivada, el gràfic i les seves exportacions mostren només els polinomis, com la Figura 2.4.</translation>
+        </message>
+        <message>
+            <source>The Bernstein tab&apos;s “t_marker” must be true or false.</source>
+            <translation>El «t_marker» de la pestanya Bernstein ha de ser cert o fals.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::CatmullRomTab</name>
@@ -1130,6 +1146,22 @@
             <source>Hide the Catmull-Rom curves</source>
             <translation>Amaga les corbes de Catmull-Rom</translation>
         </message>
+        <message>
+            <source>Poin&amp;ts</source>
+            <translation>Pun&amp;ts</translation>
+        </message>
+        <message>
+            <source>Draw the points q_i that the curves interpolate, their labels and their polygon; off, the curves alone, like puntvis = false in the thesis&apos;s Matlab Rep_CatmullRom. The table still edits the points.</source>
+            <translation>Dibuixa els punts q_i que interpolen les corbes, les seves etiquetes i el seu polígon; desactivat, només les corbes, com puntvis = false al Rep_CatmullRom del Matlab de la tesi. La taula continua editant els punts.</translation>
+        </message>
+        <message>
+            <source>Show the points</source>
+            <translation>Mostra els punts</translation>
+        </message>
+        <message>
+            <source>Hide the points</source>
+            <translation>Amaga els punts</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::DeCasteljauParameterControl</name>
@@ -1545,6 +1577,14 @@
             <location filename="../ui/decasteljau_tab.h" line="39" />
             <source>De Casteljau</source>
             <translation>De Casteljau</translation>
+        </message>
+        <message>
+            <source>Control points</source>
+            <translation>Punts de control</translation>
+        </message>
+        <message>
+            <source>Draw the control points P_i, their labels and the control polygon; off, the curve alone, like puntsvis = false in the thesis&apos;s Matlab. The table still edits the points.</source>
+            <translation>Dibuixa els punts de control P_i, les seves etiquetes i el polígon de control; desactivat, només la corba, com puntsvis = false al Matlab de la tesi. La taula continua editant els punts.</translation>
         </message>
     </context>
     <context>
@@ -2283,6 +2323,94 @@ a cada canvi alentiria la finestra.</translation>
         <message>
             <source>Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord lengths d_i = dist(Q_i−1, Q_i); centripetal, proportional to √d_i; or as Annex III&apos;s BezParamProp computes them, with |Q_i−1| in place of d_i (how Figs 2.7 and 2.8 were drawn).</source>
             <translation>On ha de caure cada Q_i sobre la corba (§2.1.3): parametrització uniforme t_i = i/k; proporcional a les longituds de corda d_i = dist(Q_i−1, Q_i); centrípeta, proporcional a √d_i; o com la calcula el BezParamProp de l&apos;Annex III, amb |Q_i−1| en lloc de d_i (com es van dibuixar les Fig. 2.7 i 2.8).</translation>
+        </message>
+        <message>
+            <source>Control points</source>
+            <translation>Punts de control</translation>
+        </message>
+        <message>
+            <source>Residuals</source>
+            <translation>Residus</translation>
+        </message>
+        <message>
+            <source>Step by step</source>
+            <translation>Pas a pas</translation>
+        </message>
+        <message>
+            <source>Every parametrization in the plot</source>
+            <translation>Totes les parametritzacions al gràfic</translation>
+        </message>
+        <message>
+            <source>Samples: %1</source>
+            <translation>Mostres: %1</translation>
+        </message>
+        <message>
+            <source>Drawing</source>
+            <translation>Dibuix</translation>
+        </message>
+        <message>
+            <source>Con&amp;trol points</source>
+            <translation>Pun&amp;ts de control</translation>
+        </message>
+        <message>
+            <source>Draw the fitted control points P_j (squares), their labels and the control polygon. The thesis&apos;s Figs 2.5–2.8 show the curve and the data alone.</source>
+            <translation>Dibuixa els punts de control ajustats P_j (quadrats), les seves etiquetes i el polígon de control. Les Fig. 2.5–2.8 de la tesi mostren només la corba i les dades.</translation>
+        </message>
+        <message>
+            <source>&amp;Residuals</source>
+            <translation>&amp;Residus</translation>
+        </message>
+        <message>
+            <source>Draw the segments from α(t_i) to each data point Q_i: the errors the fit minimises.</source>
+            <translation>Dibuixa els segments d&apos;α(t_i) a cada punt de dades Q_i: els errors que l&apos;ajust minimitza.</translation>
+        </message>
+        <message>
+            <source>Step by st&amp;ep</source>
+            <translation>Pas a pa&amp;s</translation>
+        </message>
+        <message>
+            <source>Also draw the Bézier curves of the first 1, 2, …, n+1 fitted control points, thinner and lighter, like the desglossar option of the thesis&apos;s Matlab Rep_BezParamEqui and Rep_BezParamProp (Annex III).</source>
+            <translation>Dibuixa també les corbes de Bézier dels primers 1, 2, …, n+1 punts de control ajustats, més primes i clares, com l&apos;opció desglossar del Matlab de la tesi, Rep_BezParamEqui i Rep_BezParamProp (Annex III).</translation>
+        </message>
+        <message>
+            <source>Samp&amp;les:</source>
+            <translation>M&amp;ostres:</translation>
+        </message>
+        <message>
+            <source>Sampling precision: the fitted curve is drawn through this many intervals of t, like part in the thesis&apos;s Matlab Rep_BezParamEqui(Q, n, part, desglossar).</source>
+            <translation>Precisió del mostreig: la corba ajustada es dibuixa amb aquest nombre d&apos;intervals de t, com part al Matlab de la tesi, Rep_BezParamEqui(Q, n, part, desglossar).</translation>
+        </message>
+        <message>
+            <source>Every parametri&amp;zation in the error plot</source>
+            <translation>Totes les parametritzacions al gràfic d&apos;&amp;error</translation>
+        </message>
+        <message>
+            <source>Plot the error against the degree for uniform, chord-length, centripetal and Annex III parameters at once, one line each, to see where each wins.</source>
+            <translation>Representa l&apos;error segons el grau per als paràmetres uniformes, de corda, centrípets i de l&apos;Annex III alhora, una línia cadascun, per veure on guanya cadascun.</translation>
+        </message>
+        <message>
+            <source>uniform</source>
+            <translation>uniforme</translation>
+        </message>
+        <message>
+            <source>chord length</source>
+            <translation>longitud de corda</translation>
+        </message>
+        <message>
+            <source>centripetal</source>
+            <translation>centrípeta</translation>
+        </message>
+        <message>
+            <source>Annex III</source>
+            <translation>annex III</translation>
+        </message>
+        <message>
+            <source>“samples” must be a whole number from %1 to %2.</source>
+            <translation>«samples» ha de ser un nombre enter de %1 a %2.</translation>
+        </message>
+        <message>
+            <source>“%1” must be true or false.</source>
+            <translation>«%1» ha de ser cert o fals.</translation>
         </message>
     </context>
     <context>

@@ -626,6 +626,22 @@
             <source>Bernstein</source>
             <translation>Bernstein</translation>
         </message>
+        <message>
+            <source>Mark t</source>
+            <translation>Mark t</translation>
+        </message>
+        <message>
+            <source>Hide the mark at t</source>
+            <translation>Hide the mark at t</translation>
+        </message>
+        <message>
+            <source>The dashed vertical line at the current t, shared with the De Casteljau tab. Off, the plot and its exports show the polynomials alone, as Figure 2.4 does.</source>
+            <translation>The dashed vertical line at the current t, shared with the De Casteljau tab. Off, the plot and its exports show the polynomials alone, as Figure 2.4 does.</translation>
+        </message>
+        <message>
+            <source>The Bernstein tab&apos;s “t_marker” must be true or false.</source>
+            <translation>The Bernstein tab&apos;s “t_marker” must be true or false.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::CatmullRomTab</name>
@@ -1130,6 +1146,22 @@
             <source>Hide the Catmull-Rom curves</source>
             <translation>Hide the Catmull-Rom curves</translation>
         </message>
+        <message>
+            <source>Poin&amp;ts</source>
+            <translation>Poin&amp;ts</translation>
+        </message>
+        <message>
+            <source>Draw the points q_i that the curves interpolate, their labels and their polygon; off, the curves alone, like puntvis = false in the thesis&apos;s Matlab Rep_CatmullRom. The table still edits the points.</source>
+            <translation>Draw the points q_i that the curves interpolate, their labels and their polygon; off, the curves alone, like puntvis = false in the thesis&apos;s Matlab Rep_CatmullRom. The table still edits the points.</translation>
+        </message>
+        <message>
+            <source>Show the points</source>
+            <translation>Show the points</translation>
+        </message>
+        <message>
+            <source>Hide the points</source>
+            <translation>Hide the points</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::DeCasteljauParameterControl</name>
@@ -1545,6 +1577,14 @@
             <location filename="../ui/decasteljau_tab.h" line="39" />
             <source>De Casteljau</source>
             <translation>De Casteljau</translation>
+        </message>
+        <message>
+            <source>Control points</source>
+            <translation>Control points</translation>
+        </message>
+        <message>
+            <source>Draw the control points P_i, their labels and the control polygon; off, the curve alone, like puntsvis = false in the thesis&apos;s Matlab. The table still edits the points.</source>
+            <translation>Draw the control points P_i, their labels and the control polygon; off, the curve alone, like puntsvis = false in the thesis&apos;s Matlab. The table still edits the points.</translation>
         </message>
     </context>
     <context>
@@ -2283,6 +2323,94 @@ on each change would slow the window.</translation>
         <message>
             <source>Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord lengths d_i = dist(Q_i−1, Q_i); centripetal, proportional to √d_i; or as Annex III&apos;s BezParamProp computes them, with |Q_i−1| in place of d_i (how Figs 2.7 and 2.8 were drawn).</source>
             <translation>Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord lengths d_i = dist(Q_i−1, Q_i); centripetal, proportional to √d_i; or as Annex III&apos;s BezParamProp computes them, with |Q_i−1| in place of d_i (how Figs 2.7 and 2.8 were drawn).</translation>
+        </message>
+        <message>
+            <source>Control points</source>
+            <translation>Control points</translation>
+        </message>
+        <message>
+            <source>Residuals</source>
+            <translation>Residuals</translation>
+        </message>
+        <message>
+            <source>Step by step</source>
+            <translation>Step by step</translation>
+        </message>
+        <message>
+            <source>Every parametrization in the plot</source>
+            <translation>Every parametrization in the plot</translation>
+        </message>
+        <message>
+            <source>Samples: %1</source>
+            <translation>Samples: %1</translation>
+        </message>
+        <message>
+            <source>Drawing</source>
+            <translation>Drawing</translation>
+        </message>
+        <message>
+            <source>Con&amp;trol points</source>
+            <translation>Con&amp;trol points</translation>
+        </message>
+        <message>
+            <source>Draw the fitted control points P_j (squares), their labels and the control polygon. The thesis&apos;s Figs 2.5–2.8 show the curve and the data alone.</source>
+            <translation>Draw the fitted control points P_j (squares), their labels and the control polygon. The thesis&apos;s Figs 2.5–2.8 show the curve and the data alone.</translation>
+        </message>
+        <message>
+            <source>&amp;Residuals</source>
+            <translation>&amp;Residuals</translation>
+        </message>
+        <message>
+            <source>Draw the segments from α(t_i) to each data point Q_i: the errors the fit minimises.</source>
+            <translation>Draw the segments from α(t_i) to each data point Q_i: the errors the fit minimises.</translation>
+        </message>
+        <message>
+            <source>Step by st&amp;ep</source>
+            <translation>Step by st&amp;ep</translation>
+        </message>
+        <message>
+            <source>Also draw the Bézier curves of the first 1, 2, …, n+1 fitted control points, thinner and lighter, like the desglossar option of the thesis&apos;s Matlab Rep_BezParamEqui and Rep_BezParamProp (Annex III).</source>
+            <translation>Also draw the Bézier curves of the first 1, 2, …, n+1 fitted control points, thinner and lighter, like the desglossar option of the thesis&apos;s Matlab Rep_BezParamEqui and Rep_BezParamProp (Annex III).</translation>
+        </message>
+        <message>
+            <source>Samp&amp;les:</source>
+            <translation>Samp&amp;les:</translation>
+        </message>
+        <message>
+            <source>Sampling precision: the fitted curve is drawn through this many intervals of t, like part in the thesis&apos;s Matlab Rep_BezParamEqui(Q, n, part, desglossar).</source>
+            <translation>Sampling precision: the fitted curve is drawn through this many intervals of t, like part in the thesis&apos;s Matlab Rep_BezParamEqui(Q, n, part, desglossar).</translation>
+        </message>
+        <message>
+            <source>Every parametri&amp;zation in the error plot</source>
+            <translation>Every parametri&amp;zation in the error plot</translation>
+        </message>
+        <message>
+            <source>Plot the error against the degree for uniform, chord-length, centripetal and Annex III parameters at once, one line each, to see where each wins.</source>
+            <translation>Plot the error against the degree for uniform, chord-length, centripetal and Annex III parameters at once, one line each, to see where each wins.</translation>
+        </message>
+        <message>
+            <source>uniform</source>
+            <translation>uniform</translation>
+        </message>
+        <message>
+            <source>chord length</source>
+            <translation>chord length</translation>
+        </message>
+        <message>
+            <source>centripetal</source>
+            <translation>centripetal</translation>
+        </message>
+        <message>
+            <source>Annex III</source>
+            <translation>Annex III</translation>
+        </message>
+        <message>
+            <source>“samples” must be a whole number from %1 to %2.</source>
+            <translation>“samples” must be a whole number from %1 to %2.</translation>
+        </message>
+        <message>
+            <source>“%1” must be true or false.</source>
+            <translation>“%1” must be true or false.</translation>
         </message>
     </context>
     <context>
