@@ -1,15 +1,19 @@
 // granota-cli report NAME|all --out DIR (docs/work-precision.md): one CSV with the machine and the build in
 // its header, and an SVG and a PNG plot per report, from the real binary.
 #include "cli_runner.h"
+#include "energy_drift_closed_forms.h"
 #include "full_disk.h"
 
 #include <QDir>
 #include <QFile>
 #include <QImage>
+#include <QSet>
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QTest>
 #include "tests/test_main.h"
+
+#include <cmath>
 
 class TestCliReport : public QObject {
     Q_OBJECT
@@ -51,6 +55,46 @@ private slots:
             const QImage png(base + QStringLiteral(".png"));
             QCOMPARE(png.size(), QSize(900, 600));
         }
+    }
+
+    // energy-drift (issue 33, part 5): `method,step,energy_error`, the five methods, and values
+    // against the closed forms of tests/energy_drift_closed_forms.h (9 significant digits; 10⁵
+    // steps move the phase by about 1e-11).
+    void energyDriftWritesItsSeries()
+    {
+        QTemporaryDir dir;
+        const CliRun run = runCli({"report", "energy-drift", "--out", dir.path()});
+        QCOMPARE(run.exitCode, 0);
+        QVERIFY2(run.err.isEmpty(), run.err.constData());
+        QVERIFY2(run.out.contains("energy-drift: ") && run.out.contains("symplectic"), run.out.constData());
+        const QString base = QDir(dir.path()).filePath(QStringLiteral("energy-drift"));
+        QFile csv(base + QStringLiteral(".csv"));
+        QVERIFY(csv.open(QIODevice::ReadOnly | QIODevice::Text));
+        const QStringList lines = QString::fromUtf8(csv.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QVERIFY(lines.contains(QStringLiteral("# x axis: step")));
+        const auto header = lines.indexOf(QStringLiteral("method,step,energy_error"));
+        QVERIFY(header > 0);
+        QSet<QString> methods;
+        int checked = 0;
+        for (const QString& line : lines.mid(header + 1)) {
+            const QStringList f = line.split(QLatin1Char(','));
+            QCOMPARE(f.size(), 3);
+            methods.insert(f[0]);
+            bool ok1 = false, ok2 = false;
+            const double step = f[1].toDouble(&ok1), value = f[2].toDouble(&ok2);
+            QVERIFY(ok1 && ok2 && std::isfinite(value));
+            if (step == 1 || step == 10 || step == 1000 || step == 100000) {
+                const double expected = energy_drift::closedForm(f[0].toStdString(), step);
+                QVERIFY2(std::fabs(value - expected) <= 1e-10 + 1e-8 * std::fabs(expected),
+                         qPrintable(line + QStringLiteral(": closed form %1").arg(expected, 0, 'g', 12)));
+                ++checked;
+            }
+        }
+        QCOMPARE(methods, QSet<QString>({"explicit Euler", "semi-implicit Euler", "Verlet", "Verlet (Annex II start)", "RK4"}));
+        QCOMPARE(checked, 5 * 4 - 1); // explicit Euler's series ends before step 10⁵ (its energy overflows)
+        QVERIFY(lines.contains(QStringLiteral("RK4,100000,-0.00138619114"))); // g^(10⁵) − 1, the issue's −1.39e-3
+        QVERIFY(QSvgRenderer(base + QStringLiteral(".svg")).isValid());
+        QCOMPARE(QImage(base + QStringLiteral(".png")).size(), QSize(900, 600));
     }
 
     // A report file that cannot be written (each of the three, on a full disk: a link to

@@ -84,6 +84,23 @@ private slots:
             QCOMPARE(a[i], b[i]);
     }
 
+    // Issue 33, part 7: `--set first_frame=sketch` starts the frog as the sketch does, built
+    // before size() in Processing's 100 × 100 frame (r = 16 at (50, 50)); the trace is
+    // `java SeedFrog trace 200 center=50,50 radius=16`'s, byte for byte.
+    void traceOfTheSketchsFirstFrame()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath("trace.csv");
+        const Run r = cli({"simulate", "--scene", "frog", "--solver", "seed", "--steps", "200", "--set", "first_frame=sketch",
+                           "--trace", path});
+        QCOMPARE(r.exitCode, 0);
+        QFile mine(path), reference(QStringLiteral(GRANOTA_SOURCE_DIR "/tests/data/seed_trace_sketch_first_frame.csv"));
+        QVERIFY(mine.open(QIODevice::ReadOnly) && reference.open(QIODevice::ReadOnly));
+        const QByteArray a = mine.readAll();
+        QVERIFY(a.split('\n').at(1).startsWith("0,50.0,34.0,")); // vertex 0 on top: (50, 50 − 16)
+        QVERIFY(a == reference.readAll());
+    }
+
     // --series: one row a step (docs/plots-over-time.md), the same columns for every solver,
     // numbers with a point on a Catalan desktop, the last row the state the JSON reports.
     void seriesColumns_data()
@@ -329,6 +346,9 @@ private slots:
         QTest::newRow("NaN setting") << QStringList{"simulate", "--scene", "frog", "--set", "gravity=nan,0"};
         QTest::newRow("negative steps") << QStringList{"simulate", "--scene", "frog", "--steps", "-1"};
         QTest::newRow("unwritable trace") << QStringList{"simulate", "--scene", "frog", "--trace", "/nonexistent/dir/t.csv"};
+        QTest::newRow("first frame, unknown word") << QStringList{"simulate", "--scene", "frog", "--set", "first_frame=nope"};
+        QTest::newRow("first frame, not the frog")
+            << QStringList{"simulate", "--scene", "springs", "--set", "first_frame=sketch"};
         QTest::newRow("bench zero bodies") << QStringList{"bench", "--scene", "frog", "--bodies", "0"};
     }
     void badSettings() { verifyRowIsRefused(); }

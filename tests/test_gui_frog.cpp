@@ -132,6 +132,34 @@ private slots:
         QCOMPARE(again, fromImage); // the cached image, drawn again
     }
 
+    // Issue 33, part 7: on the seed solver the head is drawn as Annex II draws it (l. 543:
+    // image(cap, vert[0] − (1109/16, 747/16), 1109/8 × 747/8), upright, its box's centre at
+    // vertex 0 + (0, ½) by Java's int division), however the body has turned; on the stable
+    // solver Granota's head turns with it, along v₉ → v₁. A frog pushed sideways by gravity
+    // with an x part has turned after 150 steps.
+    void seedHeadIsAnnexIIsStableHeadTurns()
+    {
+        QVERIFY(tab().setScene("frog", nullptr));
+        QVERIFY(tab().applyParameter(QStringLiteral("gravity"), QJsonArray{0.6, 0.75}, nullptr));
+        for (SolverKind solver : {SolverKind::Seed, SolverKind::Stable}) {
+            QVERIFY(tab().setSolver(solver, nullptr));
+            steps(tab(), 150);
+            std::vector<Point> v;
+            tab().canvas()->simulation()->bodyVertices(0, v);
+            const Point along = v[1] - v[v.size() - 1];
+            const double turned = std::atan2(along.y, along.x); // computed here, not by head_pose
+            QVERIFY2(std::fabs(turned) > 0.05, qPrintable(QString::number(turned)));
+            const HeadPose pose = tab().canvas()->headPose(0);
+            if (solver == SolverKind::Seed) {
+                QCOMPARE(pose.angle, 0.0);
+                QCOMPARE(pose.centre, Point(v[0].x - 69 + 138 / 2.0, v[0].y - 46 + 93 / 2.0));
+            } else {
+                QCOMPARE(pose.angle, turned);
+                QCOMPARE(pose.centre, v[0]);
+            }
+        }
+    }
+
     void startsOnTheFrogWithTheSeed()
     {
         QCOMPARE(tab().sceneName(), QStringLiteral("frog"));

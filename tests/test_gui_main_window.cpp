@@ -691,6 +691,32 @@ private slots:
         QCOMPARE(plot->graph(0)->data()->at(0)->key, samples.front().seconds);
     }
 
+    // Issue 33, part 5: the Frog tab's reports include energy-drift, drawn against the step
+    // number on log axes, |E/E0 − 1| with its five methods; nothing is timed, so the x axis
+    // cannot be switched to run time.
+    void frogHasTheEnergyDriftReport()
+    {
+        MainWindow window;
+        auto* panel = measuredPanel(window, QStringLiteral("frog"), "energy-drift");
+        QVERIFY(panel);
+        QCOMPARE(QString::fromStdString(panel->report()->name), QStringLiteral("energy-drift"));
+        auto* plot = panel->plot();
+        QCOMPARE(plot->graphCount(), 5);
+        QCOMPARE(plot->graph(3)->name(), granota::ui::reportMethod("Verlet (Annex II start)"));
+        QVERIFY(plot->xAxis->scaleType() == QCPAxis::stLogarithmic && plot->yAxis->scaleType() == QCPAxis::stLogarithmic);
+        QCOMPARE(plot->xAxis->label(), granota::ui::reportAxisTitle(*panel->report(), granota::WorkPrecisionAxis::Knob));
+        QVERIFY(plot->xAxis->range().contains(1) && plot->xAxis->range().contains(100000));
+        // RK4's last point: |g^(10⁵) − 1| = 1.386e-3 (closed form in tests/energy_drift_closed_forms.h).
+        const auto rk4 = plot->graph(4)->data();
+        QVERIFY(std::fabs((rk4->end() - 1)->value - 1.38619e-3) < 1e-8);
+        // Explicit Euler's 10³⁰⁵ leaves the frame at the report's ceiling.
+        QCOMPARE(plot->yAxis->range().upper, 1e3);
+        panel->setAxis(granota::WorkPrecisionAxis::Seconds);
+        QCOMPARE(plot->xAxis->label(), granota::ui::reportAxisTitle(*panel->report(), granota::WorkPrecisionAxis::Knob));
+        auto* axisBox = panel->findChildren<QComboBox*>().at(1);
+        QVERIFY(!axisBox->isEnabled());
+    }
+
     // The Catmull-Rom tab measures a Catmull-Rom curve, not the De Casteljau tab's Bézier curve.
     void catmullRomTabHasItsOwnReport()
     {

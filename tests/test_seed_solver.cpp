@@ -1,6 +1,7 @@
 // The `seed` solver: Annex II's Poligon, Pota and Granota reproduced headless (§4.2–4.16).
 // Checked against traces of the seed itself (reference/SeedFrog.java, single precision),
 // on extreme settings (docs/extreme-cases.md), and for the interaction of Annex II (grab, respawn).
+#include "core/softbody/head_pose.h"
 #include "core/softbody/seed/seed_frog.h"
 #include "core/softbody/seed/seed_trace.h"
 #include "core/softbody/scenes/scene.h"
@@ -333,6 +334,12 @@ private slots:
                                           << "spring_length=20";
         QTest::newRow("the thesis's constants") << "seed_frog_trace.csv"
                                                 << "";
+        // Issue 33, part 7: the sketch's true first frame, the frog built before size() in
+        // Processing's 100 × 100 default frame (`java SeedFrog trace 200 center=50,50
+        // radius=16`: r = 100/6 = 16 at (50, 50); its construction-time fita() on [0, 99]
+        // clamps nothing, the vertices span [34, 71]).
+        QTest::newRow("the sketch's first frame") << "seed_trace_sketch_first_frame.csv"
+                                                  << "first_frame=sketch";
     }
     void frogSceneIsTheSeed()
     {
@@ -379,6 +386,58 @@ private slots:
         QVERIFY(!scene.radiusFromFrame && scene.centerFromFrame);
         QCOMPARE(sceneToJson(scene).find("params")->find("radius")->asNumber().value_or(0), 90.0);
         QVERIFY(!parseScene(Json::parse(R"({"name":"x","model":"body","params":{"radius":"half"}})").value()).ok());
+    }
+
+    // first_frame=sketch: r and the centre from Processing's default 100 × 100 frame (as
+    // Annex II builds its frog before size()), kept in the file, refused off the frog scene;
+    // first_frame=window derives them from width × height again.
+    void sketchFirstFrame()
+    {
+        SceneSpec scene = loadScene("frog").value();
+        QVERIFY(!scene.sketchFirstFrame);
+        QVERIFY(applySetting(scene, "radius=90").ok());
+        QVERIFY(applySetting(scene, "first_frame=sketch").ok());
+        QCOMPARE(scene.params.radius, 16.0); // 100/6 in whole numbers; derived again
+        QCOMPARE(scene.params.center, Point(50, 50));
+        QVERIFY(applySetting(scene, "height=600").ok()); // the window, not the first frame
+        QCOMPARE(scene.params.radius, 16.0);
+        const Json doc = sceneToJson(scene);
+        QCOMPARE(QString::fromStdString(doc.find("first_frame")->asString().value_or("")), QStringLiteral("sketch"));
+        const SceneSpec back = parseScene(doc).value();
+        QVERIFY(back.sketchFirstFrame);
+        QCOMPARE(back.params.center, Point(50, 50));
+        QVERIFY(applySetting(scene, "first_frame=window").ok());
+        QCOMPARE(scene.params.radius, 100.0);
+        QCOMPARE(scene.params.center, Point(640, 300));
+        QVERIFY(!sceneToJson(scene).find("first_frame"));
+        const auto word = applySetting(scene, "first_frame=processing");
+        QVERIFY(!word.ok());
+        QVERIFY2(word.error().message.find("window") != std::string::npos, word.error().message.c_str());
+        SceneSpec polygon = loadScene("springs").value();
+        QVERIFY(!applySetting(polygon, "first_frame=sketch").ok());
+    }
+
+    // Annex II's head (l. 543): image(cap, vert[0].x − 1109/16, vert[0].y − 747/16, 1109/8,
+    // 747/8): by hand, 1109/16 = 69, 747/16 = 46, 1109/8 = 138, 747/8 = 93 in Java's int
+    // division, so the box's centre is vertex 0 + (−69 + 69, −46 + 46.5) = vertex 0 + (0, ½), and
+    // nothing turns it. After 150 steps of a frog pushed sideways the body has turned, the
+    // turning head with it, Annex II's not.
+    void annexIIHeadIsUpright()
+    {
+        SceneSpec scene = loadScene("frog").value();
+        QVERIFY(applySetting(scene, "gravity=0.6,0.75").ok());
+        auto sim = Simulation::create(scene, SolverKind::Seed).value();
+        for (int s = 0; s < 150; ++s)
+            sim->step();
+        std::vector<Point> v;
+        sim->bodyVertices(0, v);
+        const HeadPose annex = annexIIHeadPose(v), turning = turningHeadPose(v);
+        QVERIFY2(std::fabs(turning.angle) > 0.05, qPrintable(QString::number(turning.angle)));
+        QCOMPARE(annex.angle, 0.0);
+        QCOMPARE(annex.centre, Point(v[0].x, v[0].y + 0.5));
+        QCOMPARE(turning.centre, v[0]);
+        QCOMPARE(kHeadImageWidth, 138);
+        QCOMPARE(kHeadImageHeight, 93);
     }
 
     void legsLeaveTheFrameAsInAnnexII()

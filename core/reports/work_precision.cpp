@@ -20,8 +20,8 @@ const char* toString(WorkPrecisionAxis axis) { return axis == WorkPrecisionAxis:
 
 std::vector<std::string> workPrecisionReportNames()
 {
-    return {"curve-sampling", "catmull-rom-sampling", "bezier-evaluation", "least-squares", "integrators", "soft-body",
-            "arc-length"};
+    return {"curve-sampling", "catmull-rom-sampling", "bezier-evaluation", "least-squares",
+            "integrators",    "energy-drift",         "soft-body",         "arc-length"};
 }
 
 Expected<WorkPrecisionReport> runWorkPrecisionReport(std::string_view name, const WorkPrecisionOptions& options)
@@ -36,6 +36,8 @@ Expected<WorkPrecisionReport> runWorkPrecisionReport(std::string_view name, cons
         return reports::leastSquares(options);
     if (name == "integrators")
         return reports::integrators(options);
+    if (name == "energy-drift")
+        return reports::energyDrift(options);
     if (name == "soft-body")
         return reports::softBody(options);
     if (name == "arc-length")
@@ -70,13 +72,16 @@ std::string workPrecisionCsv(const WorkPrecisionReport& report, const std::vecto
     out += "# error: " + report.error + "\n";
     out += "# reference: " + report.reference + "\n";
     out += "# lesson: " + report.lesson + "\n";
-    out += std::string("# x axis: ") + toString(report.xAxis) + "\n";
+    // The x axis names its column: "seconds", or the knob's ("knob"; "step" in energy-drift).
+    const bool againstSeconds = report.timed && report.xAxis == WorkPrecisionAxis::Seconds;
+    out += "# x axis: " + (againstSeconds ? std::string(toString(WorkPrecisionAxis::Seconds)) : report.knobColumn) + "\n";
     for (const auto& line : context)
         out += "# " + line + "\n";
-    out += "method,knob,error,seconds\n";
+    out += "method," + report.knobColumn + "," + report.errorColumn + (report.timed ? ",seconds\n" : "\n");
     for (const auto& s : report.series)
         for (const auto& p : s.samples)
-            out += csvField(s.method) + "," + full(p.knob) + "," + full(p.error) + "," + full(p.seconds) + "\n";
+            out += csvField(s.method) + "," + full(p.knob) + "," + full(p.error) +
+                   (report.timed ? "," + full(p.seconds) + "\n" : "\n");
     return out;
 }
 

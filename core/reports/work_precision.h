@@ -17,8 +17,8 @@ namespace granota {
 
 struct WorkPrecisionSample {
     double knob = 0;    ///< the method's setting: samples, degree, step size h, substeps
-    double error = 0;   ///< against the reference, in the report's unit
-    double seconds = 0; ///< run time of one call at this setting
+    double error = 0;   ///< against the reference, in the report's unit; signed in energy-drift (E/E0 - 1)
+    double seconds = 0; ///< run time of one call at this setting (0 in an untimed report)
 };
 
 struct WorkPrecisionSeries {
@@ -36,7 +36,7 @@ enum class WorkPrecisionAxis {
 const char* toString(WorkPrecisionAxis axis);
 
 struct WorkPrecisionReport {
-    std::string name;      ///< curve-sampling, catmull-rom-sampling, bezier-evaluation, least-squares, integrators, soft-body
+    std::string name;      ///< curve-sampling, …, integrators, energy-drift, soft-body, arc-length
     std::string title;     ///< English; the GUI translates it
     std::string knob;      ///< what the knob is: "samples", "degree", "step h", "substeps"
     std::string error;     ///< what the error is: "max distance to the curve", …
@@ -45,6 +45,15 @@ struct WorkPrecisionReport {
     /// The x axis the lesson reads from. The sampling reports count their cost in points
     /// (evaluations of the curve): their run time also pays for choosing the points.
     WorkPrecisionAxis xAxis = WorkPrecisionAxis::Seconds;
+    /// false: nothing is timed (energy-drift follows one run step by step, the knob is the step
+    /// number): the CSV has no seconds column and the plot is against the knob only.
+    bool timed = true;
+    /// The CSV's names of the knob and error columns (energy-drift: "step" and "energy_error").
+    std::string knobColumn = "knob";
+    std::string errorColumn = "error";
+    /// > 0: the plot's error axis ends here, so that a series growing without bound (explicit
+    /// Euler's energy) leaves the frame instead of squeezing the others into its bottom.
+    double plotErrorCeiling = 0;
     std::vector<WorkPrecisionSeries> series;
 
     const WorkPrecisionSeries* find(std::string_view method) const;
@@ -60,15 +69,16 @@ struct WorkPrecisionOptions {
     std::function<bool(double)> progress;
 };
 
-/// curve-sampling, catmull-rom-sampling, bezier-evaluation, least-squares, integrators, soft-body,
-/// arc-length.
+/// curve-sampling, catmull-rom-sampling, bezier-evaluation, least-squares, integrators,
+/// energy-drift, soft-body, arc-length.
 std::vector<std::string> workPrecisionReportNames();
 
 /// Runs a report. Errors: an unknown name, or "cancelled" when `progress` returned false.
 Expected<WorkPrecisionReport> runWorkPrecisionReport(std::string_view name, const WorkPrecisionOptions& options = {});
 
 /// The report as CSV: `# key: value` header lines (title, knob, error, reference, lesson,
-/// x axis and each line of `context`, e.g. machine and build type), then `method,knob,error,seconds`.
+/// x axis and each line of `context`, e.g. machine and build type), then `method,knob,error,seconds`
+/// (an untimed report: `method,<knobColumn>,<errorColumn>`, e.g. `method,step,energy_error`).
 std::string workPrecisionCsv(const WorkPrecisionReport& report, const std::vector<std::string>& context);
 
 /// Least-squares slope of log(error) against log(knob) over the samples with knob in

@@ -34,6 +34,7 @@ Expected<WorkPrecisionReport> catmullRomSampling(const WorkPrecisionOptions& opt
 Expected<WorkPrecisionReport> bezierEvaluation(const WorkPrecisionOptions& options);
 Expected<WorkPrecisionReport> leastSquares(const WorkPrecisionOptions& options);
 Expected<WorkPrecisionReport> integrators(const WorkPrecisionOptions& options);
+Expected<WorkPrecisionReport> energyDrift(const WorkPrecisionOptions& options);
 Expected<WorkPrecisionReport> softBody(const WorkPrecisionOptions& options);
 Expected<WorkPrecisionReport> arcLength(const WorkPrecisionOptions& options);
 

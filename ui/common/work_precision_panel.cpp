@@ -133,7 +133,8 @@ void WorkPrecisionPanel::cancel() { m_cancelRequested = true; }
 
 void WorkPrecisionPanel::showReport()
 {
-    m_axis->setEnabled(m_report.has_value());
+    // An untimed report (energy-drift: the energy step by step) has only its knob for an x axis.
+    m_axis->setEnabled(m_report.has_value() && m_report->timed);
     if (m_report) {
         // The knob's own name in the choice ("against points", "against degree").
         m_axis->setItemText(1, tr("against %1").arg(reportKnob(*m_report)));

@@ -1119,17 +1119,27 @@ void FrogCanvas::drawHead(QPainter& p, int body)
     const std::size_t n = m_vertices.size();
     if (n < 3 || !isFinite(m_vertices[0]) || !isFinite(m_vertices[1]) || !isFinite(m_vertices[n - 1]))
         return;
-    // Annex II: image(cap, vert[0] − size/2, size) — centred on vertex 0; here also turned
-    // with the body, along v_{N−1} → v_1.
-    const Point along = m_vertices[1] - m_vertices[n - 1];
-    const double angle = norm(along) > 1e-9 ? std::atan2(along.y, along.x) : 0.0;
+    const HeadPose pose = headPose(m_vertices);
     double target = sim()->bodyTargetArea(body);
     if (!(target > 0))
         target = sim()->bodyArea(body);
     const double scale = std::clamp(std::sqrt(std::max(target, 0.0) / kSeedTargetArea), 0.12, 3.0);
-    const QPointF at = q(m_vertices[0]);
+    const QPointF at = q(pose.centre);
     const QPointF look = m_mouseKnown ? q(m_mouse) : at + QPointF(0, 200);
-    m_art.paintHead(p, at, angle, scale, look);
+    m_art.paintHead(p, at, pose.angle, scale, look);
+}
+
+HeadPose FrogCanvas::headPose(const std::vector<Point>& vertices) const
+{
+    // The seed draws the head as Annex II does: upright, its 138 × 93 box at vertex 0 − (69, 46)
+    // (head_pose.h). The stable solver keeps Granota's head, turned with the body.
+    return sim()->solver() == SolverKind::Seed ? annexIIHeadPose(vertices) : turningHeadPose(vertices);
+}
+
+HeadPose FrogCanvas::headPose(int body)
+{
+    sim()->bodyVertices(body, m_work);
+    return headPose(m_work);
 }
 
 const std::vector<Point>& FrogCanvas::bodyOutline(int body)

@@ -7,6 +7,7 @@
 /// or Enter, Esc: docs/classroom.md), and a focus frame shows when the keys go here. Drawing reuses
 /// member buffers: a frame allocates nothing in this class once warm.
 
+#include "core/softbody/head_pose.h"
 #include "core/softbody/link_angles.h"
 #include "core/softbody/recorded_run.h"
 #include "core/softbody/simulation.h"
@@ -117,6 +118,10 @@ public:
     /// §4.15, the protractor (Overlays::protractor): each limited link's angle and range,
     /// drawn at its joint; the text panel counts the joints held at a limit.
     std::vector<LinkAngleReading> linkAngles(int chain) const;
+    /// Where the head of `body` is drawn (core/softbody/head_pose.h): on the seed solver as
+    /// Annex II draws it, upright, its 138 × 93 box at vertex 0 − (69, 46); on the stable
+    /// solver Granota's head, turned with the body.
+    HeadPose headPose(int body);
     /// The ghost (Overlays::ghost): the other solver's simulation, at the same step, or null
     /// (off, or a scene the other solver refuses).
     const Simulation* ghost() const { return m_ghost ? &m_ghost->simulation() : nullptr; }
@@ -302,6 +307,7 @@ private:
     void drawScene(QPainter& p, double pixel);
     void drawBody(QPainter& p, int body, double pixel);
     void drawHead(QPainter& p, int body);
+    HeadPose headPose(const std::vector<Point>& vertices) const;
     void drawLeg(QPainter& p, int chain, double pixel);
     void drawPendulum(QPainter& p, double pixel);
     void drawObstacles(QPainter& p);

@@ -48,7 +48,7 @@ std::vector<std::string> reportsOf(const QString& key)
         return {"least-squares"};
     if (key == QLatin1String("catmull-rom"))
         return {"catmull-rom-sampling"};
-    return {"integrators", "soft-body"};
+    return {"integrators", "energy-drift", "soft-body"};
 }
 
 constexpr double kPresentationFont = 1.5; ///< font scale in presentation mode

@@ -23,10 +23,12 @@ Point frameCenter(double width, double height)
 
 void deriveFromFrame(SceneSpec& scene)
 {
+    const double width = scene.sketchFirstFrame ? kSketchDefaultSize : scene.params.width;
+    const double height = scene.sketchFirstFrame ? kSketchDefaultSize : scene.params.height;
     if (scene.radiusFromFrame)
-        scene.params.radius = frameRadius(scene.params.height);
+        scene.params.radius = frameRadius(height);
     if (scene.centerFromFrame)
-        scene.params.center = frameCenter(scene.params.width, scene.params.height);
+        scene.params.center = frameCenter(width, height);
 }
 
 } // namespace granota

@@ -67,6 +67,20 @@ Expected<void> setStableSetting(SceneSpec& s, const std::string& key, const Json
     return {};
 }
 
+/// `first_frame` (frame_derived.h): "window" or "sketch", on the frog scene only (the sketch whose
+/// first frame is known is Annex II's).
+Expected<void> setFirstFrame(SceneSpec& s, const Json& v)
+{
+    const auto word = v.asString();
+    if (s.model != SceneModel::Frog)
+        return bad(s.name, std::string(kFirstFrameKey) + " belongs to the frog scene (Annex II builds its frog before size())");
+    if (word != kWindowFrame && word != kSketchFrame)
+        return bad(s.name, std::string(kFirstFrameKey) + " must be " + kWindowFrame + " (r and centre from width × height) or " +
+                               kSketchFrame + " (from the sketch's first 100 × 100 frame: r = 16 at (50, 50))");
+    s.sketchFirstFrame = word == kSketchFrame;
+    return {};
+}
+
 std::optional<Point> pointOf(const Json& v)
 {
     const auto* a = v.asArray();
@@ -470,6 +484,11 @@ Expected<SceneSpec> parseScene(const Json& doc)
                 return ok.error();
         }
     }
+    if (const Json* firstFrame = doc.find(kFirstFrameKey)) {
+        auto ok = setFirstFrame(s, *firstFrame);
+        if (!ok)
+            return ok.error();
+    }
     deriveFromFrame(s);
     auto ok = validate(s);
     if (!ok)
@@ -483,6 +502,19 @@ Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
     if (eq == std::string::npos || eq == 0)
         return makeError(ErrorCode::InvalidInput, "--set takes key=value, got " + quotedForDisplay(keyValue));
     const std::string key = keyValue.substr(0, eq), value = keyValue.substr(eq + 1);
+    if (key == kFirstFrameKey) { // both derived again, from the frame it names
+        SceneSpec changed = scene;
+        auto ok = setFirstFrame(changed, Json(value));
+        if (!ok)
+            return ok;
+        changed.radiusFromFrame = changed.centerFromFrame = true;
+        deriveFromFrame(changed);
+        ok = validate(changed);
+        if (!ok)
+            return ok;
+        scene = std::move(changed);
+        return {};
+    }
     if (isStableKey(key)) {
         const auto q = parseRational(value);
         if (!q)
@@ -501,7 +533,8 @@ Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
             keys += (keys.empty() ? "" : ", ") + k;
         return makeError(ErrorCode::InvalidInput,
                          "scene " + quotedForDisplay(scene.name) + " has no parameter " + quotedForDisplay(key) +
-                             " (it has: " + keys + "; and for the stable solver: substeps, edge_compliance, edge_damping_ratio)");
+                             " (it has: " + keys + (scene.model == SceneModel::Frog ? ", first_frame" : "") +
+                             "; and for the stable solver: substeps, edge_compliance, edge_damping_ratio)");
     }
     const SceneParameter* param = findSceneParameter(key);
     if (param && !param->settable())
@@ -639,6 +672,8 @@ Json sceneToJson(const SceneSpec& s)
         .set("order", s.order)
         .set("components", components)
         .set("params", params);
+    if (s.sketchFirstFrame)
+        doc.set(kFirstFrameKey, kSketchFrame);
     if (!s.stable.isDefault()) {
         Json stable = Json::object();
         stable.set("substeps", s.stable.substeps).set("edge_compliance", s.stable.edgeCompliance);

@@ -61,6 +61,13 @@ struct SceneSpec {
     /// derived value, which follows width and height until a number is set.
     bool radiusFromFrame = false;
     bool centerFromFrame = false;
+    /// The frame those derived values come from. Annex II builds its frog in a field initialiser
+    /// (l. 15), before setup() calls size(1280, 720) (l. 19): Processing's width and height are
+    /// still their defaults, 100 × 100, so the sketch's true first frog has r = 100/6 = 16 at
+    /// (50, 50). `"first_frame": "sketch"` (the file's top level) or `--set first_frame=sketch`
+    /// asks for that, on the frog scene only; "window" (the default) derives them from width ×
+    /// height, as the sketch's space-bar respawn and the reference trace do.
+    bool sketchFirstFrame = false;
     /// The stable solver's substeps and edge stiffness (every scene has them; the seed
     /// ignores them). `--set substeps=16` and `--set edge_compliance=0.01` set them.
     StableSettings stable;
@@ -77,7 +84,8 @@ Expected<SceneSpec> parseScene(const Json& doc);
 
 /// Applies "key=value" (docs/scenes.md keys: gravity=gx,gy, friction=fx,fy, v0=vx,vy,
 /// area_factor=C, sides=N, target_area=A, spring_length=L, velmax=V, center=x,y,
-/// radius=r, width=W, height=H; and the scene's own: bodies, bezier_samples, …).
+/// radius=r, width=W, height=H; and the scene's own: bodies, bezier_samples, …; on the
+/// frog, first_frame=window|sketch, which also makes radius and centre derived again).
 /// A key the scene does not have, a malformed value, or a value that makes no sense
 /// (negative sides, a frame of zero size, more bodies than the frame holds side by side)
 /// is an error with a message.
