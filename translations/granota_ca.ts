@@ -4453,6 +4453,26 @@ Ja no és al disc.</translation>
             <source>max relative error of L over four curves, one with a cusp</source>
             <translation>error relatiu màxim de L en quatre corbes, una amb una cúspide</translation>
         </message>
+        <message>
+            <source>Energy drift: E/E₀ − 1 over 10⁵ steps of x″ = −x</source>
+            <translation>Deriva de l&apos;energia: E/E₀ − 1 en 10⁵ passos de x″ = −x</translation>
+        </message>
+        <message>
+            <source>Explicit Euler multiplies the energy by 1 + h² every step: it grows without bound (×2·10⁴ after 10³ steps). RK4 loses the same tiny fraction every step (1.4·10⁻⁸ at h = 0.1), a drift that grows linearly (−1.39·10⁻³ after 10⁵ steps). Semi-implicit Euler and Verlet are symplectic: each keeps a modified energy exactly (x² + v² − h x v; v² + (1 − h²/4) x²), so their error stays bounded however long the run, about h/2 and h²/4.</source>
+            <translation>Euler explícit multiplica l&apos;energia per 1 + h² a cada pas: creix sense límit (×2·10⁴ després de 10³ passos). RK4 perd la mateixa fracció minúscula a cada pas (1,4·10⁻⁸ amb h = 0,1), una deriva que creix linealment (−1,39·10⁻³ després de 10⁵ passos). Euler semiimplícit i Verlet són simplèctics: cadascun conserva exactament una energia modificada (x² + v² − h x v; v² + (1 − h²/4) x²), de manera que el seu error es manté fitat per llarga que sigui l&apos;execució, al voltant de h/2 i h²/4.</translation>
+        </message>
+        <message>
+            <source>Verlet (Annex II start)</source>
+            <translation>Verlet (inici de l&apos;annex II)</translation>
+        </message>
+        <message>
+            <source>step n</source>
+            <translation>pas n</translation>
+        </message>
+        <message>
+            <source>|E/E₀ − 1|, E = (v² + x²)/2</source>
+            <translation>|E/E₀ − 1|, amb E = (v² + x²)/2</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::WorkPrecisionPanel</name>
