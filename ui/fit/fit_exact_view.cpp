@@ -105,12 +105,13 @@ QString FitExactView::html(const Input& in)
         }
         if (thesisData && in.parametrization == Parametrization::ChordLength)
             html += ExactPanel::note(tr("The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has "
-                                        "x = 8, so d_4 = √(49 + 49) = 7√2, which is used here."));
+                                        "x = 8, so d_4 = √(49 + 49) = 7√2, which is used here "
+                                        "(docs/thesis-errata.md, “Ex 2.9 and 2.10”)."));
         if (in.parametrization == Parametrization::AnnexIII)
             html += QStringLiteral("<p>%1</p>")
                         .arg(tr("Annex III's BezParamProp, as the thesis's Matlab computes it: d_i = |Q_i−1|, the "
                                 "distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 "
-                                "were drawn with these parameters (docs/thesis-errata.md).")
+                                "were drawn with these parameters (docs/thesis-errata.md, “Annex III”).")
                                  .toHtmlEscaped());
         if (in.parametrization == Parametrization::Centripetal)
             html += QStringLiteral("<p>%1</p>")
@@ -197,10 +198,13 @@ QString FitExactView::html(const Input& in)
         if (thesisData && in.parametrization == Parametrization::Uniform && n == 2)
             html += ExactPanel::note(tr("Ex 2.7: the thesis prints α(t) = (−8/7 + 726/35 t − 600/35 t², 46/35 − 130/35 t + "
                                         "200/35 t²), the same curve with unreduced fractions (600/35 = 120/7, "
-                                        "130/35 = 26/7, 200/35 = 40/7)."));
+                                        "130/35 = 26/7, 200/35 = 40/7); its sum runs k = 0…4 where n = 2 has three "
+                                        "control points (docs/thesis-errata.md, “Ex 2.7 and 2.8”)."));
         if (thesisData && in.parametrization == Parametrization::Uniform && n == 3)
             html += ExactPanel::note(tr("Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is "
-                                        "3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here."));
+                                        "3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here "
+                                        "(docs/thesis-errata.md, “Ex 2.8”). Its sum also runs k = 0…4, with B_k², "
+                                        "where n = 3 (“Ex 2.7 and 2.8”)."));
         return html;
     }
 
