@@ -188,10 +188,13 @@ private slots:
         QCOMPARE(t[1].toDouble(), 0.0);
         QVERIFY(std::abs(t[2].toDouble() - std::sqrt(10.0) / total) < 1e-14);
         QVERIFY(std::abs(t[3].toDouble() - (std::sqrt(10.0) + std::sqrt(20.0)) / total) < 1e-14);
-        // Irrational |Q_1| = √10: no exact fit, and it says which distance spoils it.
+        // Irrational |Q_1| = √10: no exact fit — it says which distance spoils it — but the t_i
+        // in radicals: t_2 = √10/(√10 + 2√5 + 2√17) ≈ 0.199128 (the doubles above), which sympy
+        // rationalises to (−145√2 − 195 + 20√85 + 19√170)/161.
         const Run exact = cli({"fit", "--points", kEx27, "--degree", "3", "--param", "annex-iii", "--exact"});
-        QCOMPARE(exact.exitCode, 2);
-        QVERIFY2(exact.err.contains("|Q_1| = √(10)"), exact.err.constData());
+        QCOMPARE(exact.exitCode, 0);
+        QVERIFY2(exact.out.contains("|Q_1| = √(10)"), exact.out.constData());
+        QVERIFY2(exact.out.contains("t_2 = (−145√2 + 20√85 + 19√170 − 195)/161 ≈ 0.199128"), exact.out.constData());
     }
 
     // fit --exact --json gives §2.1.3's checks (issue 33, part 4): the four Penrose
@@ -212,6 +215,36 @@ private slots:
         QVERIFY(std::abs(sum - 211.0 / 32) < 1e-13);
         const Run text = cli({"fit", "--points", kEx27, "--degree", "2", "--exact"});
         QVERIFY2(text.out.contains("(M⁺M)ᵀ = M⁺M ✓") && text.out.contains("all positive"), text.out.constData());
+    }
+
+    // fit --exact with chord lengths (issue 33, part 4): the t_i of Ex 2.9/2.10 are irrational,
+    // so the fit is the floating-point one (exit 0, no matrices), with the t_i in radicals —
+    // (11√5 − 10)/101 … by hand and by sympy (docs/thesis-errata-checks.py) — and, for the
+    // thesis's data, the t_i it prints from d_4 = √85 and printed − right (sympy:
+    // 0.004635073328, 0.009270146656, 0.017561617890).
+    void fitExactChordGivesParametersInRadicals()
+    {
+        const Run r = cli({"fit", "--points", kEx27, "--degree", "3", "--param", "chord", "--exact", "--json"});
+        QCOMPARE(r.exitCode, 0);
+        const QJsonObject j = r.json();
+        QCOMPARE(strings(j["t_radicals"].toArray()),
+                 (QStringList{"0", "(11√5 − 10)/101", "(22√5 − 20)/101", "(14√5 + 24)/101", "1"}));
+        QCOMPARE(strings(j["t_printed"].toArray())[1], QStringLiteral("(744√5 − 65√34 − 160√170 + 1540)/4951"));
+        const QJsonArray difference = j["t_printed_difference"].toArray();
+        QCOMPARE(difference.size(), 5);
+        const double expected[] = {0, 0.004635073328, 0.009270146656, 0.017561617890, 0};
+        for (int i = 0; i < 5; ++i)
+            QVERIFY2(std::abs(difference[i].toDouble() - expected[i]) < 1e-11, qPrintable(QString::number(i)));
+        QVERIFY(!j.contains("M")); // nothing exact to show but the parameters
+        QVERIFY(std::abs(j["params"].toArray()[1].toDouble() - 0.144522254975) < 1e-12);
+        // Other data: the radicals, but nothing printed to compare with.
+        const Run other = cli({"fit", "--points", "0,0;1,1;2,3", "--degree", "1", "--param", "chord", "--exact", "--json"});
+        QCOMPARE(other.exitCode, 0);
+        QCOMPARE(strings(other.json()["t_radicals"].toArray()), (QStringList{"0", "(√10 − 2)/3", "1"})); // √2(√5 − √2)/(5 − 2)
+        QVERIFY(!other.json().contains("t_printed"));
+        // Without --exact, no radicals.
+        const Run plain = cli({"fit", "--points", kEx27, "--degree", "3", "--param", "chord", "--json"});
+        QVERIFY(!plain.json().contains("t_radicals"));
     }
 
     void catmullRomEx213()
@@ -369,8 +402,8 @@ private slots:
         QTest::newRow("too few points") << QStringList{"fit", "--points", "1,1", "--degree", "0"};
         QTest::newRow("bad param") << QStringList{"fit", "--points", kEx27, "--degree", "2", "--param", "arc"};
         QTest::newRow("bad solver") << QStringList{"fit", "--points", kEx27, "--degree", "2", "--solver", "lu"};
-        QTest::newRow("exact chord, irrational")
-            << QStringList{"fit", "--points", kEx27, "--degree", "2", "--param", "chord", "--exact"};
+        QTest::newRow("exact centripetal, irrational")
+            << QStringList{"fit", "--points", kEx27, "--degree", "2", "--param", "centripetal", "--exact"};
         QTest::newRow("normal eq. singular")
             << QStringList{"fit", "--points", "0,0;0,0;0,0;1,1", "--degree", "2", "--param", "chord", "--solver", "normal"};
         QTest::newRow("too few for cyclic") << QStringList{"catmull-rom", "--points", "0,0;1,1", "--mode", "cyclic"};

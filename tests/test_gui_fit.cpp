@@ -242,10 +242,23 @@ private slots:
         QVERIFY(text.contains(QStringLiteral("d4 = 7√2")));
         QVERIFY(!text.contains(QStringLiteral("d4 = √85")));
         QVERIFY(text.contains(QStringLiteral("√85"))); // the slip, in the note
-        // Decimal results: t_1 = √10 / (2√10 + 4√2 + 7√2).
+        // The t_i in radicals with their decimals (t_1 = √10 / (2√10 + 4√2 + 7√2) in doubles),
+        // and beside them the t_i the thesis prints from its √85 and printed − right
+        // ((11√5 − 10)/101 and 0.004635 by hand and sympy: docs/thesis-errata-checks.py).
         const double t1 = std::sqrt(10.0) / (2 * std::sqrt(10.0) + 11 * std::sqrt(2.0));
-        QVERIFY2(text.contains(QStringLiteral("t1 = %1").arg(number(t1))), qPrintable(text));
+        const double printed1 = std::sqrt(10.0) / (2 * std::sqrt(10.0) + 4 * std::sqrt(2.0) + std::sqrt(85.0));
+        QVERIFY2(text.contains(QStringLiteral("t1\t(11√5 − 10)/101\t%1\t%2\t+0.00464").arg(number(t1), number(printed1))),
+                 qPrintable(text));
+        QVERIFY(text.contains(QStringLiteral("t3\t(14√5 + 24)/101")));
+        QVERIFY(text.contains(QStringLiteral("t_1 = (744√5 − 65√34 − 160√170 + 1540)/4951"))); // the printed one
         QVERIFY(!text.contains(QStringLiteral("nan")));
+        // Other data with chord lengths: radicals, but nothing printed to compare with.
+        // √2/(√2 + √5) = √2(√5 − √2)/(5 − 2) = (√10 − 2)/3.
+        tab.pointEditor()->setPoints({Point(0, 0), Point(1, 1), Point(2, 3)}, QStringLiteral("three points"));
+        const QString other = tab.exactPanel()->plainText();
+        QVERIFY2(other.contains(QStringLiteral("t1\t(√10 − 2)/3\t")), qPrintable(other));
+        QVERIFY(!other.contains(QStringLiteral("the thesis prints")));
+        QVERIFY(loadEx(tab, "2.9"));
         // Uniform parameters for the same data: no chord lengths, no note.
         tab.parametrizationBox()->setCurrentIndex(0);
         QVERIFY(!tab.exactPanel()->plainText().contains(QStringLiteral("7√2")));

@@ -1,12 +1,15 @@
 // granota-cli fit: least-squares Bézier fitting (§2.1.3, Lemma 2.2, Prop 2.2).
-// --exact reproduces the matrices of Ex 2.7 and Ex 2.8 as fractions.
+// --exact reproduces the matrices of Ex 2.7 and Ex 2.8 as fractions, and the chord-length
+// t_i of Ex 2.9 and Ex 2.10 in radicals beside the ones the thesis prints.
 #include "app/cli/command.h"
 #include "app/cli/finite_doubles.h"
 
 #include "core/curves/fitting/least_squares_fit.h"
 #include "core/exact/moore_penrose.h"
 #include "core/base/number_format.h"
+#include "core/io/worked_examples.h"
 
+#include <optional>
 #include <sstream>
 
 namespace granota::cli {
@@ -40,6 +43,40 @@ void matrixText(std::ostringstream& txt, const char* name, const RationalMatrix&
         }
         txt << " ]\n";
     }
+}
+
+/// With --exact and distance parameters: the t_i in radicals ("t_radicals"), and for the
+/// thesis's data of Ex 2.9/2.10 the t_i it prints from its d_4 = √85 ("t_printed") and
+/// printed − right ("t_printed_difference"); docs/thesis-errata.md, “Ex 2.9 and 2.10”.
+void addRadicalParameters(const std::vector<RPoint>& points, Parametrization param, CommandOutput& out, std::ostringstream& txt)
+{
+    const auto radicals = radicalParameters(points, param);
+    if (!radicals)
+        return;
+    Json strings = Json::array();
+    txt << "t_i in radicals:\n";
+    for (std::size_t i = 0; i < radicals->size(); ++i) {
+        const RadicalQuotient& t = (*radicals)[i];
+        strings.push(toString(t));
+        txt << "  t_" << i << " = " << toString(t) << " ≈ " << formatSignificant(t.toDouble(), 6) << "\n";
+    }
+    out.json.set("t_radicals", std::move(strings));
+    const WorkedExample* ex = findWorkedExample("2.9");
+    if (param != Parametrization::ChordLength || !ex || ex->points != points || ex->printedParameters.size() != radicals->size())
+        return;
+    Json printed = Json::array(), difference = Json::array();
+    txt << "as the thesis prints them (Ex 2.9, Ex 2.10, from its d_4 = √85), and printed − right:\n";
+    for (std::size_t i = 0; i < radicals->size(); ++i) {
+        const RadicalSum& p = ex->printedParameters[i];
+        const RadicalQuotient& t = (*radicals)[i];
+        // Exactly when the right t_i is rationalised, so that only the last step rounds.
+        const double d = t.rationalised() ? (p - t.numerator).toDouble() : p.toDouble() - t.toDouble();
+        printed.push(toString(p));
+        difference.push(d);
+        txt << "  t_" << i << " = " << toString(p) << " ≈ " << formatSignificant(p.toDouble(), 6) << "   "
+            << formatSignificant(d, 3) << "\n";
+    }
+    out.json.set("t_printed", std::move(printed)).set("t_printed_difference", std::move(difference));
 }
 
 Expected<CommandOutput> run(const Arguments& args)
@@ -87,15 +124,25 @@ Expected<CommandOutput> run(const Arguments& args)
     if (!fit)
         return fit.error();
 
+    std::optional<Expected<ExactFit>> exactFit;
+    if (exact) {
+        exactFit = fitBezierExact(*points, *degree, param);
+        // Irrational distance parameters: the fit is the floating-point one, and the t_i are
+        // given in radicals after it; without radicals to give, --exact refuses as before.
+        if (!*exactFit && !((*exactFit).error().code == ErrorCode::NotRational && radicalParameters(*points, param)))
+            return (*exactFit).error();
+    }
+    const bool exactDone = exactFit && *exactFit;
+
     CommandOutput out;
     std::ostringstream txt;
     txt << "Least-squares Bézier fit (§2.1.3): " << points->size() << " points, degree " << *degree << ", " << *paramName
-        << " parameters, solver " << (exact ? "exact rational" : *solverName) << "\n";
+        << " parameters, solver " << (exactDone ? "exact rational" : *solverName) << "\n";
+    if (exact && !exactDone)
+        txt << "not exact: " << (*exactFit).error().message << "; the fit is in floating point, the t_i follow in radicals\n";
     Json control = Json::array(), params = Json::array();
-    if (exact) {
-        auto e = fitBezierExact(*points, *degree, param);
-        if (!e)
-            return e.error();
+    if (exactDone) {
+        const auto& e = *exactFit;
         for (int j = 0; j < e->P.rows(); ++j)
             control.push(point(RPoint(e->P(j, 0), e->P(j, 1)), true));
         for (const Rational& t : e->params)
@@ -163,6 +210,8 @@ Expected<CommandOutput> run(const Arguments& args)
         if (iterate)
             txt << "parameter corrections: " << fit->corrections << "\n";
     }
+    if (exact)
+        addRadicalParameters(*points, param, out, txt);
     txt << "cond₂(M) = " << formatDouble(fit->cond) << "\n";
     Json warnings = Json::array();
     for (const std::string& w : fit->warnings) {

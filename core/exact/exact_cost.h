@@ -27,6 +27,7 @@
 
 #include "core/exact/rational.h"
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,14 @@ namespace granota {
 /// The most estimated bit operations an exact computation may take: a few seconds on the
 /// reference machine (2 cores, 2026); beyond it the CLI refuses and the GUI shows decimals.
 constexpr double kMaxExactWork = 1e9;
+
+/// Parameters t_i in radicals (radical_sum.h, parametrization.h) are written for at most
+/// this many data points: beyond, each t_i is a sum of dozens of roots that no one reads.
+constexpr std::size_t kMaxRadicalPoints = 40;
+/// A quotient of sums of square roots is rationalised when its denominator's radicands have
+/// at most this many pairwise coprime factors: each factor can double the numerator's terms
+/// (2⁴ = 16 at most); beyond, the quotient is written as it stands.
+constexpr int kMaxRadicalGenerators = 4;
 
 /// Bits of |numerator| plus bits of the denominator (1/2: 1 + 2 = 3).
 long bitLength(const Rational& q);

@@ -41,6 +41,14 @@ WorkedExample parseExample(const Json& e)
             ex.modes.push_back(m.asString().value_or(""));
     if (const Json* note = e.find("note"))
         ex.note = note->asString().value_or("");
+    if (const Json* printed = e.find("t_as_printed"))
+        for (const Json& t : *printed->asArray()) {
+            RadicalSum sum;
+            for (const Json& term : *t.asArray())
+                sum += RadicalSum(SimplifiedSquareRoot{
+                    rationalOf((*term.asArray())[0]), mpz_class(static_cast<long>((*term.asArray())[1].asNumber().value_or(1)))});
+            ex.printedParameters.push_back(sum);
+        }
     return ex;
 }
 

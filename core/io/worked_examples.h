@@ -4,6 +4,7 @@
 /// compiled into the core so that the GUI's Examples menu, the CLI and the tests share it.
 
 #include "core/io/json.h"
+#include "core/exact/radical_sum.h"
 #include "core/exact/rational.h"
 
 #include <string>
@@ -23,7 +24,10 @@ struct WorkedExample {
     std::vector<Rational> taus;     ///< tensions τ (Ex 2.11, 2.12; Ex 2.13 has one)
     std::vector<std::string> modes; ///< Catmull-Rom modes (Ex 2.13: cyclic, open)
     std::string note;               ///< the thesis's slip, where it has one
-    Json data;                      ///< the whole entry, including what the thesis prints
+    /// The t_i as the thesis prints them, in radicals (Ex 2.9: from its d_4 = √85), when it
+    /// prints them; "t_as_printed" holds each as [coefficient, square-free radicand] terms.
+    std::vector<RadicalSum> printedParameters;
+    Json data; ///< the whole entry, including what the thesis prints
 };
 
 /// The text of resources/examples/chapter2.json.

@@ -10,7 +10,9 @@
 namespace granota {
 
 /// θ_0 = −π/2 as in Annex II (`ang = -HALF_PI`): in screen coordinates (y down) the
-/// first vertex is the top one. §4.1 writes π/2 + iα with y up; it is the same polygon.
+/// first vertex is the top one and the angle grows clockwise on the screen. §4.1's
+/// π/2 + iα would start at the bottom on Processing's screen; read with y up it starts at
+/// the top but runs the other way round (docs/thesis-errata.md, “§4.1”).
 constexpr double kSeedStartAngle = -1.5707963267948966;
 
 /// `sides` ≥ 3 vertices; radius ≥ 0.

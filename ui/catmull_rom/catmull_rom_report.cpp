@@ -436,10 +436,10 @@ QString example21Section(const std::vector<RPoint>& data, SplineEnds ends)
         html += ExactPanel::note(
             ends == SplineEnds::AsEx21
                 ? CatmullRomReport::tr("With Ex 2.1's ends — s₁‴ = 0 (s₁ is a parabola) and no x² term in s₃ — the "
-                                       "pieces above are exactly the corrected ones (docs/thesis-errata.md).")
+                                       "pieces above are exactly the corrected ones (docs/thesis-errata.md, “Ex 2.1”).")
                 : CatmullRomReport::tr("Ex 2.1's spline is a cubic spline (Def 2.3) but not the natural one: s″ ≠ 0 at its "
                                        "ends, so its pieces differ from those above. Choose the ends “As Ex 2.1” to get "
-                                       "them."));
+                                       "them (docs/thesis-errata.md, “Ex 2.1”)."));
     }
     return html;
 }

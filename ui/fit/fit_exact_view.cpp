@@ -5,6 +5,7 @@
 
 #include "core/curves/bezier/power_basis.h"
 #include "core/exact/polynomial_text.h"
+#include "core/exact/radical_sum.h"
 #include "core/exact/rational_approximation.h"
 #include "core/exact/square_root.h"
 #include "core/io/worked_examples.h"
@@ -58,6 +59,48 @@ bool isThesisData(const std::optional<std::vector<RPoint>>& rational)
     return rational && example && *rational == example->points;
 }
 
+/// The chord-length (or Annex III) t_i in radicals with their decimals; for the thesis's
+/// data of Ex 2.9/2.10, beside them the t_i the thesis prints (from its d_4 = √85) and
+/// printed − right.
+QString radicalParametersHtml(const std::vector<RadicalQuotient>& t, const std::vector<RadicalSum>* printed)
+{
+    QString html = ExactPanel::heading(FitExactView::tr("Parameters t_i in radicals"));
+    QStringList header{QString(), FitExactView::tr("in radicals"), FitExactView::tr("decimal")};
+    if (printed)
+        header << FitExactView::tr("the thesis prints") << FitExactView::tr("printed − right");
+    std::vector<QStringList> rows;
+    bool allRationalised = true;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        allRationalised = allRationalised && t[i].rationalised();
+        QStringList row{ExactPanel::subscripted(QStringLiteral("t"), static_cast<int>(i)),
+                        QString::fromStdString(toString(t[i])).toHtmlEscaped(), decimal(t[i].toDouble())};
+        if (printed) {
+            const RadicalSum& p = (*printed)[i];
+            // Exactly when t_i is rationalised, so that only the last step rounds.
+            const double d = t[i].rationalised() ? (p - t[i].numerator).toDouble() : p.toDouble() - t[i].toDouble();
+            row << decimal(p.toDouble()) << (d > 0 ? QStringLiteral("+") : QString()) + decimal(d, 3);
+        }
+        rows.push_back(row);
+    }
+    html += ExactPanel::table(header, rows);
+    if (!allRationalised)
+        html += QStringLiteral("<p>%1</p>")
+                    .arg(FitExactView::tr("A quotient whose denominator has more than %1 coprime radicands is left "
+                                          "as it stands, not rationalised.")
+                             .arg(kMaxRadicalGenerators)
+                             .toHtmlEscaped());
+    if (printed) {
+        QStringList asPrinted;
+        for (std::size_t i = 1; i + 1 < printed->size(); ++i)
+            asPrinted << QStringLiteral("t_%1 = %2").arg(i).arg(QString::fromStdString(toString((*printed)[i])));
+        html += ExactPanel::note(FitExactView::tr("Ex 2.9 and Ex 2.10 print t_i rationalised from their d_4 = √85: %1. "
+                                                  "Each is too large by the difference above (docs/thesis-errata.md, "
+                                                  "“Ex 2.9 and 2.10”).")
+                                     .arg(asPrinted.join(QStringLiteral(", "))));
+    }
+    return html;
+}
+
 QString curveHtml(const std::string& x, const std::string& y)
 {
     return line(QStringLiteral("x(t) = ") + ExactPanel::polynomialHtml(x)) +
@@ -105,12 +148,13 @@ QString FitExactView::html(const Input& in)
         }
         if (thesisData && in.parametrization == Parametrization::ChordLength)
             html += ExactPanel::note(tr("The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has "
-                                        "x = 8, so d_4 = √(49 + 49) = 7√2, which is used here."));
+                                        "x = 8, so d_4 = √(49 + 49) = 7√2, which is used here "
+                                        "(docs/thesis-errata.md, “Ex 2.9 and 2.10”)."));
         if (in.parametrization == Parametrization::AnnexIII)
             html += QStringLiteral("<p>%1</p>")
                         .arg(tr("Annex III's BezParamProp, as the thesis's Matlab computes it: d_i = |Q_i−1|, the "
                                 "distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 "
-                                "were drawn with these parameters (docs/thesis-errata.md).")
+                                "were drawn with these parameters (docs/thesis-errata.md, “Annex III”).")
                                  .toHtmlEscaped());
         if (in.parametrization == Parametrization::Centripetal)
             html += QStringLiteral("<p>%1</p>")
@@ -197,17 +241,30 @@ QString FitExactView::html(const Input& in)
         if (thesisData && in.parametrization == Parametrization::Uniform && n == 2)
             html += ExactPanel::note(tr("Ex 2.7: the thesis prints α(t) = (−8/7 + 726/35 t − 600/35 t², 46/35 − 130/35 t + "
                                         "200/35 t²), the same curve with unreduced fractions (600/35 = 120/7, "
-                                        "130/35 = 26/7, 200/35 = 40/7)."));
+                                        "130/35 = 26/7, 200/35 = 40/7); its sum runs k = 0…4 where n = 2 has three "
+                                        "control points (docs/thesis-errata.md, “Ex 2.7 and 2.8”)."));
         if (thesisData && in.parametrization == Parametrization::Uniform && n == 3)
             html += ExactPanel::note(tr("Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is "
-                                        "3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here."));
+                                        "3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here "
+                                        "(docs/thesis-errata.md, “Ex 2.8”). Its sum also runs k = 0…4, with B_k², "
+                                        "where n = 3 (“Ex 2.7 and 2.8”)."));
         return html;
     }
 
     // Decimals: the chord-length examples (Ex 2.9, Ex 2.10), drawn data, large data sets.
     if (!whyNotExact.isEmpty())
         html += QStringLiteral("<p>%1</p>").arg(whyNotExact.toHtmlEscaped());
-    if (count <= kMaxListedPoints) {
+    // Chord-length parameters of rational data are quotients of sums of square roots: in
+    // radicals (Ex 2.9/2.10's t_i, as the thesis prints them), unless corrected numerically.
+    const std::optional<std::vector<RadicalQuotient>> radicals = rational && !in.correctParameters
+                                                                     ? radicalParameters(*rational, in.parametrization)
+                                                                     : std::nullopt;
+    const WorkedExample* ex29 = findWorkedExample("2.9");
+    const bool printedToo = radicals && thesisData && in.parametrization == Parametrization::ChordLength && ex29 &&
+                            ex29->printedParameters.size() == radicals->size();
+    if (radicals) {
+        html += radicalParametersHtml(*radicals, printedToo ? &ex29->printedParameters : nullptr);
+    } else if (count <= kMaxListedPoints) {
         html += ExactPanel::heading(tr("Parameters t_i"));
         QStringList ts;
         for (std::size_t i = 0; i < fit.params.size(); ++i)

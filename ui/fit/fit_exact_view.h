@@ -4,7 +4,8 @@
 /// d_i in simplest radical form, the matrices M, MᵀM, (MᵀM)⁻¹, M⁺ (Ex 2.7, Ex 2.8), the
 /// control points P = M⁺Q and the curve α(t) in powers of t — as fractions when the data
 /// and the parameters are rational, in decimals otherwise — with the thesis's slips
-/// (Ex 2.8's −1636/105, Ex 2.9's √85) noted where the data are the thesis's. It only
+/// (Ex 2.8's −1636/105, Ex 2.9's √85) noted where the data are the thesis's, and chord-length t_i
+/// in radicals beside the ones Ex 2.9/2.10 print (radical_sum.h). It only
 /// formats: every value comes from the core.
 
 #include "core/exact/exact_cost.h"

@@ -600,7 +600,9 @@ void MainWindow::showGuide()
                    "<p>Double-click to add a point, Delete to remove it, arrows to nudge it, "
                    "Ctrl+Z to undo. The Examples menu loads every worked example of chapter 2. "
                    "F11 switches presentation mode.</p>") +
-                tr("<p>Everything can be done with the keyboard alone: Help ▸ Keyboard shortcuts lists every key.</p>"));
+                tr("<p>Everything can be done with the keyboard alone: Help ▸ Keyboard shortcuts lists every key.</p>") +
+                tr("<p>Where a printed example of the thesis slips, the tab says so beside the right value; "
+                   "docs/thesis-errata.md, in Granota's sources, lists every slip and where Granota shows it.</p>"));
     box.exec();
 }
 

@@ -1,6 +1,7 @@
 #include "core/curves/fitting/parametrization.h"
 
 #include "core/base/enum_names.h"
+#include "core/exact/square_root.h"
 
 #include <algorithm>
 #include <cctype>
@@ -120,6 +121,29 @@ std::optional<std::vector<Rational>> exactParameters(const std::vector<RPoint>& 
     }
     for (std::size_t i = 1; i < q.size(); ++i)
         t[i] /= total;
+    return t;
+}
+
+std::optional<std::vector<RadicalQuotient>> radicalParameters(const std::vector<RPoint>& q, Parametrization p)
+{
+    if ((p != Parametrization::ChordLength && p != Parametrization::AnnexIII) || q.size() < 2 || q.size() > kMaxRadicalPoints)
+        return std::nullopt;
+    std::vector<RadicalSum> partial(q.size()); // S_i = d_1 + … + d_i, S_0 = 0
+    for (std::size_t j = 1; j < q.size(); ++j) {
+        const bool annex = p == Parametrization::AnnexIII; // |Q_{j−1}|, as BezParamProp
+        const Rational dx = annex ? q[j - 1].x : Rational(q[j].x - q[j - 1].x);
+        const Rational dy = annex ? q[j - 1].y : Rational(q[j].y - q[j - 1].y);
+        const std::optional<SimplifiedSquareRoot> d = simplifySquareRoot(Rational(dx * dx + dy * dy));
+        if (!d)
+            return std::nullopt; // too large to simplify quickly
+        partial[j] = partial[j - 1] + RadicalSum(*d);
+    }
+    const RadicalSum& total = partial.back();
+    if (total.isZero())
+        return std::nullopt; // all coincide: parameters() falls back to uniform
+    std::vector<RadicalQuotient> t;
+    for (const RadicalSum& s : partial)
+        t.push_back(*divide(s, total)); // total ≠ 0
     return t;
 }
 

@@ -12,6 +12,7 @@
 ///    t_i = Σ_{j<i} |Q_j| / Σ_{j<k} |Q_j|. Figs 2.7/2.8 were drawn with it (Ex 2.9:
 ///    t = 0, 0, 0.19913, 0.48074, 1); docs/thesis-errata.md.
 
+#include "core/exact/radical_sum.h"
 #include "core/exact/rational.h"
 #include "core/base/vec2.h"
 
@@ -47,5 +48,13 @@ std::vector<double> parameters(const std::vector<Point>& q, Parametrization p, b
 /// back to uniform, as above, when all the points coincide.
 std::optional<std::vector<Rational>> exactParameters(const std::vector<RPoint>& q, Parametrization p,
                                                      bool* fellBackToUniform = nullptr);
+
+/// Chord-length and Annex III parameters in radicals, t_i = S_i / S_k with S_i the sum of
+/// the first i distances, each in simplest radical form (square_root.h), rationalised when
+/// radical_sum.h can (Ex 2.9: t_1 = (11√5 − 10)/101). nullopt for uniform and centripetal
+/// parameters (uniform ones are exactParameters'; centripetal ones are fourth roots), for
+/// fewer than 2 or more than kMaxRadicalPoints points, when a distance is too large to
+/// simplify, and when all the points coincide.
+std::optional<std::vector<RadicalQuotient>> radicalParameters(const std::vector<RPoint>& q, Parametrization p);
 
 } // namespace granota
