@@ -13,7 +13,10 @@ using namespace granota;
 
 namespace {
 
-RadicalSum root(long coefficient, long radicand) { return RadicalSum(SimplifiedSquareRoot{Rational(coefficient), mpz_class(radicand)}); }
+RadicalSum root(long coefficient, long radicand)
+{
+    return RadicalSum(SimplifiedSquareRoot{Rational(coefficient), mpz_class(radicand)});
+}
 
 std::vector<RPoint> ex29Points() { return findWorkedExample("2.9")->points; }
 
@@ -50,7 +53,8 @@ private slots:
                                    root(7, 2),
                                    RadicalSum(SimplifiedSquareRoot{Rational(1, 2), mpz_class(10)}),
                                    root(-1, 5),
-                                   RadicalSum(SimplifiedSquareRoot{Rational(11, 101), mpz_class(5)}) + RadicalSum(Rational(-10, 101)),
+                                   RadicalSum(SimplifiedSquareRoot{Rational(11, 101), mpz_class(5)}) +
+                                       RadicalSum(Rational(-10, 101)),
                                    root(3, 2) + RadicalSum(Rational(1))};
         QCOMPARE(QString::fromStdString(toString(sums[which])), text);
     }
@@ -125,7 +129,8 @@ private slots:
         QCOMPARE(QString::fromStdString(toString((*t)[6])), QStringLiteral("1"));
         QVERIFY(!(*t)[1].rationalised());
         QCOMPARE(QString::fromStdString(toString((*t)[1])), QStringLiteral("√2/(√2 + √5 + √13 + √17 + √29 + √37)"));
-        const double total = std::sqrt(2.0) + std::sqrt(5.0) + std::sqrt(13.0) + std::sqrt(17.0) + std::sqrt(29.0) + std::sqrt(37.0);
+        const double total = std::sqrt(2.0) + std::sqrt(5.0) + std::sqrt(13.0) + std::sqrt(17.0) + std::sqrt(29.0) +
+                             std::sqrt(37.0);
         QVERIFY(std::abs((*t)[2].toDouble() - (std::sqrt(2.0) + std::sqrt(5.0)) / total) < 1e-15);
     }
 
@@ -133,7 +138,7 @@ private slots:
     {
         QVERIFY(!divide(root(1, 2), RadicalSum()).has_value());
         QVERIFY(!radicalParameters(ex29Points(), Parametrization::Uniform));
-        QVERIFY(!radicalParameters(ex29Points(), Parametrization::Centripetal)); // fourth roots
+        QVERIFY(!radicalParameters(ex29Points(), Parametrization::Centripetal));             // fourth roots
         QVERIFY(!radicalParameters({{1, 1}, {1, 1}, {1, 1}}, Parametrization::ChordLength)); // all coincide
         std::vector<RPoint> many;
         for (std::size_t i = 0; i <= kMaxRadicalPoints; ++i)

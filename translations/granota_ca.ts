@@ -428,6 +428,14 @@
             <source>Ex 2.1&apos;s spline is a cubic spline (Def 2.3) but not the natural one: s″ ≠ 0 at its ends, so its pieces differ from those above. Choose the ends “As Ex 2.1” to get them.</source>
             <translation>L&apos;spline de l&apos;Ex. 2.1 és un spline cúbic (Def. 2.3) però no el natural: s″ ≠ 0 als extrems, i per això els seus trossos difereixen dels de dalt. Trieu els extrems «Com a l&apos;Ex. 2.1» per obtenir-les.</translation>
         </message>
+        <message>
+            <source>With Ex 2.1&apos;s ends — s₁‴ = 0 (s₁ is a parabola) and no x² term in s₃ — the pieces above are exactly the corrected ones (docs/thesis-errata.md, “Ex 2.1”).</source>
+            <translation>Amb els extrems de l&apos;Ex. 2.1 — s₁‴ = 0 (s₁ és una paràbola) i cap terme en x² a s₃ — els trossos de dalt són exactament els corregits (docs/thesis-errata.md, «Ex 2.1»).</translation>
+        </message>
+        <message>
+            <source>Ex 2.1&apos;s spline is a cubic spline (Def 2.3) but not the natural one: s″ ≠ 0 at its ends, so its pieces differ from those above. Choose the ends “As Ex 2.1” to get them (docs/thesis-errata.md, “Ex 2.1”).</source>
+            <translation>L&apos;spline de l&apos;Ex. 2.1 és un spline cúbic (Def. 2.3) però no el natural: s″ ≠ 0 als extrems, i per això els seus trossos difereixen dels de dalt. Trieu els extrems «Com a l&apos;Ex. 2.1» per obtenir-los (docs/thesis-errata.md, «Ex 2.1»).</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::BernsteinTab</name>
@@ -1792,6 +1800,50 @@
             <source>Its eigenvalues 2σᵢ²: %1.</source>
             <translation>Els seus valors propis 2σᵢ²: %1.</translation>
         </message>
+        <message>
+            <source>Parameters t_i in radicals</source>
+            <translation>Paràmetres t_i amb radicals</translation>
+        </message>
+        <message>
+            <source>in radicals</source>
+            <translation>amb radicals</translation>
+        </message>
+        <message>
+            <source>decimal</source>
+            <translation>en decimals</translation>
+        </message>
+        <message>
+            <source>the thesis prints</source>
+            <translation>la tesi imprimeix</translation>
+        </message>
+        <message>
+            <source>printed − right</source>
+            <translation>imprès − correcte</translation>
+        </message>
+        <message>
+            <source>A quotient whose denominator has more than %1 coprime radicands is left as it stands, not rationalised.</source>
+            <translation>Un quocient amb més de %1 radicands primers entre si al denominador es deixa tal qual, sense racionalitzar.</translation>
+        </message>
+        <message>
+            <source>Ex 2.9 and Ex 2.10 print t_i rationalised from their d_4 = √85: %1. Each is too large by the difference above (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</source>
+            <translation>Els Ex 2.9 i Ex 2.10 imprimeixen els t_i racionalitzats a partir del seu d_4 = √85: %1. Cadascun és massa gran en la diferència de dalt (docs/thesis-errata.md, «Ex 2.9 and 2.10»).</translation>
+        </message>
+        <message>
+            <source>The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has x = 8, so d_4 = √(49 + 49) = 7√2, which is used here (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</source>
+            <translation>La tesi (Ex 2.9) escriu d_4 = √85, a partir de (1 − 7)² + (5 + 2)²; però Q_3 té x = 8, per tant d_4 = √(49 + 49) = 7√2, que és el que s&apos;usa aquí (docs/thesis-errata.md, «Ex 2.9 and 2.10»).</translation>
+        </message>
+        <message>
+            <source>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: d_i = |Q_i−1|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md, “Annex III”).</source>
+            <translation>El BezParamProp de l&apos;Annex III, tal com el calcula el Matlab del treball: d_i = |Q_i−1|, la distància del punt anterior a l&apos;origen, no al seu veí — les Fig. 2.7 i 2.8 es van dibuixar amb aquests paràmetres (docs/thesis-errata.md, «Annex III»).</translation>
+        </message>
+        <message>
+            <source>Ex 2.7: the thesis prints α(t) = (−8/7 + 726/35 t − 600/35 t², 46/35 − 130/35 t + 200/35 t²), the same curve with unreduced fractions (600/35 = 120/7, 130/35 = 26/7, 200/35 = 40/7); its sum runs k = 0…4 where n = 2 has three control points (docs/thesis-errata.md, “Ex 2.7 and 2.8”).</source>
+            <translation>Ex 2.7: la tesi escriu α(t) = (−8/7 + 726/35 t − 600/35 t², 46/35 − 130/35 t + 200/35 t²), la mateixa corba amb fraccions sense simplificar (600/35 = 120/7, 130/35 = 26/7, 200/35 = 40/7); el seu sumatori va de k = 0 a 4 on n = 2 té tres punts de control (docs/thesis-errata.md, «Ex 2.7 and 2.8»).</translation>
+        </message>
+        <message>
+            <source>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here (docs/thesis-errata.md, “Ex 2.8”). Its sum also runs k = 0…4, with B_k², where n = 3 (“Ex 2.7 and 2.8”).</source>
+            <translation>Ex 2.8: la tesi escriu −1636/105 com a coeficient de t a x(t). És 3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, que és el que es mostra aquí (docs/thesis-errata.md, «Ex 2.8»). El seu sumatori també va de k = 0 a 4, amb B_k², on n = 3 («Ex 2.7 and 2.8»).</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::FitTab</name>
@@ -2338,7 +2390,7 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <source>Every parametrization in the plot</source>
-            <translation>Totes les parametritzacions al gràfic</translation>
+            <translation>Cada parametrització al gràfic</translation>
         </message>
         <message>
             <source>Samples: %1</source>
@@ -2382,7 +2434,7 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <source>Every parametri&amp;zation in the error plot</source>
-            <translation>Totes les parametritzacions al gràfic d&apos;&amp;error</translation>
+            <translation>Cada parametrització al gràfic d&apos;&amp;error</translation>
         </message>
         <message>
             <source>Plot the error against the degree for uniform, chord-length, centripetal and Annex III parameters at once, one line each, to see where each wins.</source>
@@ -4109,6 +4161,10 @@ Ja no és al disc.</translation>
             <source>Thesis &amp;figures…</source>
             <translation>&amp;Figures de la tesi…</translation>
         </message>
+        <message>
+            <source>&lt;p&gt;Where a printed example of the thesis slips, the tab says so beside the right value; docs/thesis-errata.md, in Granota&apos;s sources, lists every slip and where Granota shows it.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;Quan un exemple imprès de la tesi s&apos;equivoca, la pestanya ho diu al costat del valor correcte; docs/thesis-errata.md, a les fonts del Granota, recull totes les errades i on les mostra el Granota.&lt;/p&gt;</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::PointEditor</name>
@@ -4455,7 +4511,7 @@ Ja no és al disc.</translation>
         </message>
         <message>
             <source>Energy drift: E/E₀ − 1 over 10⁵ steps of x″ = −x</source>
-            <translation>Deriva de l&apos;energia: E/E₀ − 1 en 10⁵ passos de x″ = −x</translation>
+            <translation>Deriva d&apos;energia: E/E₀ − 1, 10⁵ passos de x″ = −x</translation>
         </message>
         <message>
             <source>Explicit Euler multiplies the energy by 1 + h² every step: it grows without bound (×2·10⁴ after 10³ steps). RK4 loses the same tiny fraction every step (1.4·10⁻⁸ at h = 0.1), a drift that grows linearly (−1.39·10⁻³ after 10⁵ steps). Semi-implicit Euler and Verlet are symplectic: each keeps a modified energy exactly (x² + v² − h x v; v² + (1 − h²/4) x²), so their error stays bounded however long the run, about h/2 and h²/4.</source>

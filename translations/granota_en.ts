@@ -428,6 +428,14 @@
             <source>Ex 2.1&apos;s spline is a cubic spline (Def 2.3) but not the natural one: s″ ≠ 0 at its ends, so its pieces differ from those above. Choose the ends “As Ex 2.1” to get them.</source>
             <translation>Ex 2.1&apos;s spline is a cubic spline (Def 2.3) but not the natural one: s″ ≠ 0 at its ends, so its pieces differ from those above. Choose the ends “As Ex 2.1” to get them.</translation>
         </message>
+        <message>
+            <source>With Ex 2.1&apos;s ends — s₁‴ = 0 (s₁ is a parabola) and no x² term in s₃ — the pieces above are exactly the corrected ones (docs/thesis-errata.md, “Ex 2.1”).</source>
+            <translation>With Ex 2.1&apos;s ends — s₁‴ = 0 (s₁ is a parabola) and no x² term in s₃ — the pieces above are exactly the corrected ones (docs/thesis-errata.md, “Ex 2.1”).</translation>
+        </message>
+        <message>
+            <source>Ex 2.1&apos;s spline is a cubic spline (Def 2.3) but not the natural one: s″ ≠ 0 at its ends, so its pieces differ from those above. Choose the ends “As Ex 2.1” to get them (docs/thesis-errata.md, “Ex 2.1”).</source>
+            <translation>Ex 2.1&apos;s spline is a cubic spline (Def 2.3) but not the natural one: s″ ≠ 0 at its ends, so its pieces differ from those above. Choose the ends “As Ex 2.1” to get them (docs/thesis-errata.md, “Ex 2.1”).</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::BernsteinTab</name>
@@ -1791,6 +1799,50 @@
         <message>
             <source>Its eigenvalues 2σᵢ²: %1.</source>
             <translation>Its eigenvalues 2σᵢ²: %1.</translation>
+        </message>
+        <message>
+            <source>Parameters t_i in radicals</source>
+            <translation>Parameters t_i in radicals</translation>
+        </message>
+        <message>
+            <source>in radicals</source>
+            <translation>in radicals</translation>
+        </message>
+        <message>
+            <source>decimal</source>
+            <translation>decimal</translation>
+        </message>
+        <message>
+            <source>the thesis prints</source>
+            <translation>the thesis prints</translation>
+        </message>
+        <message>
+            <source>printed − right</source>
+            <translation>printed − right</translation>
+        </message>
+        <message>
+            <source>A quotient whose denominator has more than %1 coprime radicands is left as it stands, not rationalised.</source>
+            <translation>A quotient whose denominator has more than %1 coprime radicands is left as it stands, not rationalised.</translation>
+        </message>
+        <message>
+            <source>Ex 2.9 and Ex 2.10 print t_i rationalised from their d_4 = √85: %1. Each is too large by the difference above (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</source>
+            <translation>Ex 2.9 and Ex 2.10 print t_i rationalised from their d_4 = √85: %1. Each is too large by the difference above (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</translation>
+        </message>
+        <message>
+            <source>The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has x = 8, so d_4 = √(49 + 49) = 7√2, which is used here (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</source>
+            <translation>The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has x = 8, so d_4 = √(49 + 49) = 7√2, which is used here (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</translation>
+        </message>
+        <message>
+            <source>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: d_i = |Q_i−1|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md, “Annex III”).</source>
+            <translation>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: d_i = |Q_i−1|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md, “Annex III”).</translation>
+        </message>
+        <message>
+            <source>Ex 2.7: the thesis prints α(t) = (−8/7 + 726/35 t − 600/35 t², 46/35 − 130/35 t + 200/35 t²), the same curve with unreduced fractions (600/35 = 120/7, 130/35 = 26/7, 200/35 = 40/7); its sum runs k = 0…4 where n = 2 has three control points (docs/thesis-errata.md, “Ex 2.7 and 2.8”).</source>
+            <translation>Ex 2.7: the thesis prints α(t) = (−8/7 + 726/35 t − 600/35 t², 46/35 − 130/35 t + 200/35 t²), the same curve with unreduced fractions (600/35 = 120/7, 130/35 = 26/7, 200/35 = 40/7); its sum runs k = 0…4 where n = 2 has three control points (docs/thesis-errata.md, “Ex 2.7 and 2.8”).</translation>
+        </message>
+        <message>
+            <source>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here (docs/thesis-errata.md, “Ex 2.8”). Its sum also runs k = 0…4, with B_k², where n = 3 (“Ex 2.7 and 2.8”).</source>
+            <translation>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here (docs/thesis-errata.md, “Ex 2.8”). Its sum also runs k = 0…4, with B_k², where n = 3 (“Ex 2.7 and 2.8”).</translation>
         </message>
     </context>
     <context>
@@ -4108,6 +4160,10 @@ It is no longer on disk.</translation>
         <message>
             <source>Thesis &amp;figures…</source>
             <translation>Thesis &amp;figures…</translation>
+        </message>
+        <message>
+            <source>&lt;p&gt;Where a printed example of the thesis slips, the tab says so beside the right value; docs/thesis-errata.md, in Granota&apos;s sources, lists every slip and where Granota shows it.&lt;/p&gt;</source>
+            <translation>&lt;p&gt;Where a printed example of the thesis slips, the tab says so beside the right value; docs/thesis-errata.md, in Granota&apos;s sources, lists every slip and where Granota shows it.&lt;/p&gt;</translation>
         </message>
     </context>
     <context>
