@@ -24,6 +24,8 @@
 #include "ui/common/view_transform.h"
 #include "ui/shell/tikz_options.h"
 
+#include "canvas_pixels.h"
+
 #include <QCheckBox>
 #include <QFile>
 #include <QProcess>
@@ -1359,16 +1361,8 @@ private slots:
         showTab(tab);
         tab.setConstructionVisible(false); // nothing else near P1
         tab.setT(1.0);                     // the whole curve drawn bold
-        const auto render = [&tab] {
-            QImage image(tab.canvas()->size(), QImage::Format_ARGB32);
-            image.fill(Qt::white);
-            QPainter painter(&image);
-            tab.canvas()->render(painter, QRectF(image.rect()));
-            return image;
-        };
-        const auto near = [](const QColor& a, const QColor& b) {
-            return std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue()) < 40;
-        };
+        const auto render = [&tab] { return renderedPixels(tab.canvas()); };
+        const auto near = [](const QColor& a, const QColor& b) { return nearColour(a, b, 40); };
         // P1 = (1, 2) of the default cubic lies off the curve; c(1/4) = (58/64, 72/64) on it (Def 2.6 by
         // hand: the weights at 1/4 are 27/64, 27/64, 9/64, 1/64, so x = (27 + 27 + 4)/64, y = (54 + 18)/64).
         const QPoint p1 = screenOf(tab, {1, 2});

@@ -19,6 +19,8 @@
 #include "ui/common/view_transform.h"
 #include "gui_timeouts.h"
 
+#include "canvas_pixels.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QElapsedTimer>
@@ -895,16 +897,8 @@ private slots:
         tab.show();
         QVERIFY(waitExposed(&tab));
         QVERIFY(loadEx(tab, "2.7"));
-        const auto render = [&tab] {
-            QImage image(tab.canvas()->size(), QImage::Format_ARGB32);
-            image.fill(Qt::white);
-            QPainter painter(&image);
-            tab.canvas()->render(painter, QRectF(image.rect()));
-            return image;
-        };
-        const auto near = [](const QColor& a, const QColor& b) {
-            return std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue()) < 60;
-        };
+        const auto render = [&tab] { return renderedPixels(tab.canvas()); };
+        const auto near = [](const QColor& a, const QColor& b) { return nearColour(a, b, 60); };
         // Whether a pixel within 1 of `at` has colour `c` (a thin line is antialiased).
         const auto around = [&near](const QImage& image, QPointF at, const QColor& c) {
             for (int dy = -1; dy <= 1; ++dy)

@@ -18,6 +18,9 @@
 #include <QPainter>
 #include <QWidget>
 
+#include <functional>
+#include <memory>
+
 namespace granota::ui {
 
 namespace {
@@ -203,20 +206,18 @@ bool showThesisFigure(MainWindow& window, const ThesisFigure& figure, const Figu
 QString exportThesisFigure(MainWindow& window, const ThesisFigure& figure, const QString& format, const QString& file, QSize size,
                            int dpi)
 {
+    if (!thesisFigureFormats().contains(format))
+        return say("Unknown export format “%1” (svg, pdf, png, tex, csv).").arg(format);
     const QString title = QStringLiteral("Granota — ") + thesisFigureCaption(figure);
+    // The view drawn and, for the two text formats, the figure's TikZ and CSV.
+    std::unique_ptr<FrogArtView> art;
+    Drawable* drawn = nullptr;
+    std::function<QString()> tikz, csv;
     if (!figure.art.empty()) {
-        FrogArtView art(figure.art == "head" ? FrogArtView::Piece::Head : FrogArtView::Piece::Background);
-        SizedView view(art, size);
-        if (format == QLatin1String("svg"))
-            return exportSvg(view, file, title);
-        if (format == QLatin1String("pdf"))
-            return exportPdf(view, file, title);
-        if (format == QLatin1String("png"))
-            return exportPng(view, file, dpi);
-        if (format == QLatin1String("tex"))
-            return writeTextFile(file, artTikz(artShapes(art, art.exportSize())));
-        if (format == QLatin1String("csv"))
-            return writeTextFile(file, artCsv(artShapes(art, art.exportSize())));
+        art = std::make_unique<FrogArtView>(figure.art == "head" ? FrogArtView::Piece::Head : FrogArtView::Piece::Background);
+        drawn = art.get();
+        tikz = [&art] { return artTikz(artShapes(*art, art->exportSize())); };
+        csv = [&art] { return artCsv(artShapes(*art, art->exportSize())); };
     } else if (TabPage* page = window.tab(fromStd(figure.tab)); page && page->exportView()) {
         // The view laid out at the size asked, as on a screen of that size, and fitted there:
         // its margins keep the points clear of the key. What the window's smallest size does
@@ -226,19 +227,20 @@ QString exportThesisFigure(MainWindow& window, const ThesisFigure& figure, const
             QCoreApplication::processEvents();
             page->fitView();
         }
-        SizedView view(*page->exportView(), size);
-        if (format == QLatin1String("svg"))
-            return exportSvg(view, file, title);
-        if (format == QLatin1String("pdf"))
-            return exportPdf(view, file, title);
-        if (format == QLatin1String("png"))
-            return exportPng(view, file, dpi);
-        if (format == QLatin1String("tex"))
-            return writeTextFile(file, page->tikz());
-        if (format == QLatin1String("csv"))
-            return writeTextFile(file, page->csv());
+        drawn = page->exportView();
+        tikz = [page] { return page->tikz(); };
+        csv = [page] { return page->csv(); };
+    } else {
+        return say("Fig %1 names no tab of Granota.").arg(fromStd(figure.number));
     }
-    return say("Unknown export format “%1” (svg, pdf, png, tex, csv).").arg(format);
+    SizedView view(*drawn, size);
+    if (format == QLatin1String("svg"))
+        return exportSvg(view, file, title);
+    if (format == QLatin1String("pdf"))
+        return exportPdf(view, file, title);
+    if (format == QLatin1String("png"))
+        return exportPng(view, file, dpi);
+    return writeTextFile(file, format == QLatin1String("tex") ? tikz() : csv());
 }
 
 } // namespace granota::ui
