@@ -12,7 +12,7 @@ namespace granota {
 namespace {
 
 /// Deepest halving: 2⁻¹⁰⁰ is below the spacing of doubles anywhere but right next to 0.
-constexpr int kMaxDepth = 100;
+constexpr int kMaxRootDepth = 100;
 /// Above this degree C(n, i) could overflow in the Horner-like scheme: De Casteljau instead.
 constexpr int kHornerMaxDegree = 500;
 
@@ -253,7 +253,7 @@ public:
                     left = signOf(b[i]);
                 // The end values b_0 = p(a), b_n = p(a + w) carry the rounding of `depth`
                 // halvings, each at most n + 1 roundings of values ≤ max |b_i|: far below
-                // 32 × globalTolerance_ for depth ≤ kMaxDepth.
+                // 32 × globalTolerance_ for depth ≤ kMaxRootDepth.
                 const double clear = 32.0 * globalTolerance_;
                 const bool bracketed = b[0] * b[n] < 0.0 && std::fabs(b[0]) > clear && std::fabs(b[n]) > clear;
                 found.push_back({polishRoot(b, n, a, w, left), 0.0, true, false, 3, bracketed});
@@ -263,7 +263,7 @@ public:
             for (int i = 0; i <= n; ++i)
                 maxAbs = std::max(maxAbs, std::fabs(b[i]));
             const double mid = a + 0.5 * w;
-            if ((maxAbs <= globalTolerance_ && maxAbs <= localTolerance(a, a + w)) || depth >= kMaxDepth ||
+            if ((maxAbs <= globalTolerance_ && maxAbs <= localTolerance(a, a + w)) || depth >= kMaxRootDepth ||
                 !(mid > a && mid < a + w)) {
                 tangentialRoot(b, a, w);
                 return;
@@ -437,7 +437,7 @@ BernsteinRoots bernsteinRoots(const std::vector<double>& coefficients)
     found.clear();
     merged.clear();
     magnitude.clear();
-    const std::size_t need = static_cast<std::size_t>(kMaxDepth + 2) * static_cast<std::size_t>(n + 1);
+    const std::size_t need = static_cast<std::size_t>(kMaxRootDepth + 2) * static_cast<std::size_t>(n + 1);
     if (work.size() < need)
         work.resize(need);
     std::copy(coefficients.begin(), coefficients.end(), work.begin());
