@@ -1,8 +1,11 @@
-// Issue 34, item 2: the mouse wheel over the side panels' fields
+// Issue 34, items 2 and 3: the mouse wheel and the undo keys over the side panels' fields
 // (ui/common/field_input_filter.h, docs/classroom.md "Wheel and undo in the fields"), and the
 // Frog run a parameter change replaces, kept for Undo (docs/rewind.md "A change of the scene").
 // The events go through Qt's own delivery as a desktop's do: wheel events spontaneous, to the
-// widget under the pointer (Qt passes an ignored one on to its parents). tests/real_window/run.sh runs the same suite under Xvfb and openbox.
+// widget under the pointer (Qt passes an ignored one on to its parents); keys through the
+// shortcut machinery (QTest::keyClick sends the ShortcutOverride first, and the window's
+// shortcuts answer once it is active). tests/real_window/run.sh runs the same suite under Xvfb
+// and openbox.
 #include "core/softbody/recorded_run.h"
 #include "core/softbody/simulation.h"
 #include "core/softbody/simulation_trace.h"
@@ -170,6 +173,24 @@ void recordAThrow(FrogTab& tab)
         canvas->step();
 }
 
+/// The value of a spin box, whole or decimal.
+double numberIn(const QAbstractSpinBox* box)
+{
+    if (const auto* whole = qobject_cast<const QSpinBox*>(box))
+        return whole->value();
+    return static_cast<const QDoubleSpinBox*>(box)->value();
+}
+
+/// The spin box whose label (its buddy) reads `text` on `page`.
+QAbstractSpinBox* spinBoxLabelled(QWidget* page, const QString& text)
+{
+    for (QLabel* label : page->findChildren<QLabel*>())
+        if (label->text().remove(QLatin1Char('&')) == text)
+            if (auto* box = qobject_cast<QAbstractSpinBox*>(label->buddy()))
+                return box;
+    return nullptr;
+}
+
 } // namespace
 
 class TestGuiFieldInput : public QObject {
@@ -229,13 +250,15 @@ private slots:
             // Down the page where there is more below, else up.
             const int delta = !canScroll || barBefore < bar->maximum() ? -120 : 120;
             wheelAt(window, centre, delta);
-            QVERIFY2(valueOf(control) == before, qPrintable(QStringLiteral("%1 (%2): %3 → %4")
-                                                                .arg(control->objectName(),
-                                                                     QString::fromLatin1(control->metaObject()->className()),
-                                                                     before, valueOf(control))));
+            QVERIFY2(valueOf(control) == before,
+                     qPrintable(QStringLiteral("%1 (%2): %3 → %4")
+                                    .arg(control->objectName(), QString::fromLatin1(control->metaObject()->className()), before,
+                                         valueOf(control))));
             QVERIFY2(!control->hasFocus(), qPrintable(control->objectName()));
             if (canScroll) {
-                QVERIFY2(bar->value() != barBefore, qPrintable(QStringLiteral("%1 (%2): the panel did not scroll").arg(control->objectName(), QString::fromLatin1(control->metaObject()->className()))));
+                QVERIFY2(bar->value() != barBefore,
+                         qPrintable(QStringLiteral("%1 (%2): the panel did not scroll")
+                                        .arg(control->objectName(), QString::fromLatin1(control->metaObject()->className()))));
                 ++scrolled;
             }
         }
@@ -264,6 +287,79 @@ private slots:
         QCOMPARE(factor->value(), before + factor->singleStep());
     }
 
+    // Item 3: Ctrl+Z typed in a spin box's line edit undoes the document's last step (the
+    // field's text committed first); Ctrl+Shift+Z and Ctrl+Y redo it.
+    void undoKeysInAFieldAreTheDocuments_data()
+    {
+        QTest::addColumn<QString>("tab");
+        QTest::addColumn<QString>("field"); // its label, or its object name
+        QTest::addColumn<QString>("typed");
+        QTest::addColumn<QString>("typedLater"); // without Enter
+        QTest::newRow("Fitting, degree 3") << "fit"
+                                           << "Degree n:"
+                                           << "3"
+                                           << "4";
+        QTest::newRow("Frog, area factor") << "frog"
+                                           << "param_area_factor__0"
+                                           << "1.5"
+                                           << "1.2";
+        QTest::newRow("De Casteljau, samples") << "decasteljau"
+                                               << "Samples:"
+                                               << "50"
+                                               << "60";
+    }
+    void undoKeysInAFieldAreTheDocuments()
+    {
+        QFETCH(QString, tab);
+        QFETCH(QString, field);
+        QFETCH(QString, typed);
+        QFETCH(QString, typedLater);
+        MainWindow window;
+        QVERIFY(loadExamples(window, {"2.9"})); // five points fitted with degree 2: room for 3
+        QVERIFY(showOnTab(window, tab));
+        TabPage* page = window.currentTab();
+        QAbstractSpinBox* box = page->findChild<QAbstractSpinBox*>(field);
+        if (!box)
+            box = spinBoxLabelled(page, field);
+        QVERIFY2(box, qPrintable(field));
+        if (auto* scroll = qobject_cast<QScrollArea*>(scrollAreaOf(box)))
+            scroll->ensureWidgetVisible(box);
+        box->setFocus(Qt::TabFocusReason);
+        QLineEdit* edit = box->findChild<QLineEdit*>();
+        QTRY_VERIFY_WITH_TIMEOUT(edit->hasFocus(), kEventWaitMs);
+        QUndoStack* undo = page->undoStack();
+        const int index = undo->index();
+        const QString before = box->text();
+        // Type the value and Enter: one undo step.
+        QTest::keyClick(edit, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(edit, typed);
+        QTest::keyClick(edit, Qt::Key_Return);
+        QCOMPARE(undo->index(), index + 1);
+        const QString after = box->text();
+        QVERIFY(after != before);
+        // Ctrl+Z in the field: the document's undo.
+        QTest::keyClick(edit, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(undo->index(), index);
+        QCOMPARE(box->text(), before);
+        // Ctrl+Shift+Z, and Ctrl+Y after another Ctrl+Z: its redo.
+        QTest::keyClick(edit, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+        QCOMPARE(undo->index(), index + 1);
+        QCOMPARE(box->text(), after);
+        QTest::keyClick(edit, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(box->text(), before);
+        QTest::keyClick(edit, Qt::Key_Y, Qt::ControlModifier);
+        QCOMPARE(undo->index(), index + 1);
+        QCOMPARE(box->text(), after);
+        // Typed without Enter, the text is committed first (a step, which may merge with the
+        // last change of the same field) and then undone; Redo brings the typed value back.
+        QTest::keyClick(edit, Qt::Key_A, Qt::ControlModifier);
+        QTest::keyClicks(edit, typedLater);
+        QTest::keyClick(edit, Qt::Key_Z, Qt::ControlModifier);
+        QVERIFY2(box->text() == after || box->text() == before, qPrintable(box->text()));
+        QTest::keyClick(edit, Qt::Key_Y, Qt::ControlModifier);
+        QCOMPARE(numberIn(box), typedLater.toDouble()); // the test types in English (a point)
+    }
+
     // Item 2: a parameter change replaces the Frog's run (the scene is built again), and
     // Undo brings the run back as it was — its steps, its recorded events and every position
     // — while Redo brings back the run of the new value; the status bar says so.
@@ -287,7 +383,7 @@ private slots:
         connect(&tab, &TabPage::statusMessage, &tab, [&messages](const QString& text) { messages << text; });
         FrogCanvas* canvas = tab.canvas();
         recordAThrow(tab);
-        tab.toggleMark(); // the stopwatch at step 180
+        tab.toggleMark();  // the stopwatch at step 180
         canvas->seek(150); // shown at step 150 of 180
         const RunState run = runState(*canvas);
         QCOMPARE(run.step, 150L);

@@ -4,6 +4,8 @@
 #include <QAbstractSpinBox>
 #include <QApplication>
 #include <QComboBox>
+#include <QKeyEvent>
+#include <QLineEdit>
 #include <QPointer>
 #include <QScrollBar>
 
@@ -20,6 +22,18 @@ bool isValueControl(const QObject* object)
     return qobject_cast<const QAbstractSpinBox*>(object) || qobject_cast<const QComboBox*>(object) ||
            qobject_cast<const QAbstractSlider*>(object);
 }
+
+/// The spin box `object` is, or whose line edit it is; null otherwise.
+QAbstractSpinBox* spinBoxOf(QObject* object)
+{
+    if (auto* box = qobject_cast<QAbstractSpinBox*>(object))
+        return box;
+    if (auto* edit = qobject_cast<QLineEdit*>(object))
+        return qobject_cast<QAbstractSpinBox*>(edit->focusProxy()); // a spin box's line edit hands it the focus
+    return nullptr;
+}
+
+bool isUndoOrRedo(const QKeyEvent* key) { return key->matches(QKeySequence::Undo) || key->matches(QKeySequence::Redo); }
 
 } // namespace
 
@@ -52,8 +66,23 @@ bool FieldInputFilter::eventFilter(QObject* watched, QEvent* event)
             return true;
         }
         break;
-    default:
-        break;
+    case QEvent::ShortcutOverride:
+    case QEvent::KeyPress: {
+        auto* key = static_cast<QKeyEvent*>(event);
+        if (!isUndoOrRedo(key))
+            break;
+        QAbstractSpinBox* box = spinBoxOf(watched);
+        if (!box)
+            break;
+        // The typed text becomes the value (an undo step of its own where the tab makes
+        // one), and the key is left to the window's Undo or Redo: neither the line edit nor
+        // the spin box (which hands the event to its line edit) may claim it.
+        if (event->type() == QEvent::ShortcutOverride)
+            box->interpretText();
+        event->ignore();
+        return true;
+    }
+    default: break;
     }
     return QObject::eventFilter(watched, event);
 }
