@@ -96,17 +96,81 @@ void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
         }
     }
     rebuildGhost();
-    updateWork();
     if (sim() && sim()->scene().name != m_trailScene) { // another stage: its own default point
         m_trailScene = sim()->scene().name;
         m_trailPoint.index = -1;
     }
     restartTrail();
     m_frameCount = 0;
-    m_pacer.restart();
     m_series.clear();
     if (sim() && m_recording)
         m_series.record(*sim());
+    m_startAreaError = sim() && sim()->bodyCount() > 0 ? sim()->readouts().areaErrorPercent : 0;
+    runShown(true);
+}
+
+std::size_t FrogCanvas::KeptRun::bytes() const
+{
+    std::size_t bytes = 0;
+    for (const RecordedRun* r : {run.get(), ghost.get()})
+        if (r)
+            bytes += (r->snapshotCount() + 1) * r->simulation().pointCount() * kSnapshotBytesPerPoint;
+    return bytes;
+}
+
+std::unique_ptr<FrogCanvas::KeptRun> FrogCanvas::takeRun()
+{
+    if (!m_run)
+        return nullptr;
+    auto kept = std::make_unique<KeptRun>();
+    kept->run = std::move(m_run);
+    kept->ghost = std::move(m_ghost);
+    std::swap(kept->series, m_series); // the plots read m_series: its contents move, not the object
+    kept->trail = std::move(m_trail);
+    kept->trailPoint = m_trailPoint;
+    kept->trailScene = m_trailScene;
+    kept->frameCount = m_frameCount;
+    kept->startAreaError = m_startAreaError;
+    return kept;
+}
+
+std::unique_ptr<FrogCanvas::KeptRun> FrogCanvas::replaceRun(std::unique_ptr<Simulation> simulation)
+{
+    std::unique_ptr<KeptRun> kept = takeRun();
+    setSimulation(std::move(simulation));
+    return kept;
+}
+
+std::unique_ptr<FrogCanvas::KeptRun> FrogCanvas::restoreRun(std::unique_ptr<KeptRun> kept)
+{
+    if (!kept || !kept->run)
+        return kept;
+    std::unique_ptr<KeptRun> replaced = takeRun();
+    m_run = std::move(kept->run);
+    m_ghost = std::move(kept->ghost);
+    if (m_overlays.ghost != bool(m_ghost)) // the overlay was turned since the run was set aside
+        rebuildGhost();
+    std::swap(m_series, kept->series);
+    if (m_recording != !m_series.samples().empty()) { // the plots were shown or hidden since
+        m_series.clear();
+        if (m_recording)
+            m_series.record(*sim());
+    }
+    m_trail = std::move(kept->trail);
+    m_trailPoint = kept->trailPoint;
+    m_trailScene = kept->trailScene;
+    if (!m_overlays.trail || m_trail.empty()) // the overlay was turned since
+        restartTrail();
+    m_frameCount = kept->frameCount;
+    m_startAreaError = kept->startAreaError;
+    runShown(false);
+    return replaced;
+}
+
+void FrogCanvas::runShown(bool fresh)
+{
+    updateWork();
+    m_pacer.restart();
     m_fitter.reset();
     m_previousValid = false;
     m_pressed = false;
@@ -116,15 +180,18 @@ void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
     m_fits = 0;
     m_fitShownUs = 0;
     m_backgroundSize = QSize(); // the frame may have another size
-    if (m_run && m_mouseKnown && underMouse())
-        send(InputKind::Move, m_mouse); // Processing's mouseX/mouseY hold from the first frame (§4.1, §4.13)
+    // Processing's mouseX/mouseY hold from the first frame (§4.1, §4.13); a run brought back
+    // is not sent one (recorded, it would cut off the run's recorded future).
+    if (fresh && m_run && m_mouseKnown && underMouse())
+        send(InputKind::Move, m_mouse);
     m_reportedRadius = -1;
     reportMouseRadius();
-    m_startAreaError = sim() && sim()->bodyCount() > 0 ? sim()->readouts().areaErrorPercent : 0;
     unsetCursor();
     refreshTexts();
     updateTimer();
     update();
+    if (!fresh)
+        emit timelineChanged();
 }
 
 void FrogCanvas::setRunning(bool running)

@@ -200,6 +200,29 @@ public:
     void setMarkedBody(int body);
     int markedBody() const { return m_markedBody; }
 
+    /// A run set aside whole, as a change of the scene (a parameter, the stage, the solver)
+    /// replaced it: its simulation and recording, its ghost, the plots' series and the trail.
+    /// The Frog tab keeps it with the undo step of the change, so that Undo brings it back
+    /// (docs/rewind.md, "A change of the scene").
+    struct KeptRun {
+        std::unique_ptr<RecordedRun> run;
+        std::unique_ptr<RecordedRun> ghost;
+        SeriesRecorder series{std::size_t(kSeriesSeconds) * kFramesPerSecond};
+        std::deque<Point> trail;
+        TrailPoint trailPoint;
+        std::string trailScene;
+        long frameCount = 0;
+        double startAreaError = 0;
+        /// What it holds, counted as kSnapshotBytes counts a run: kSnapshotBytesPerPoint a
+        /// point for its state and each snapshot, the ghost's too.
+        std::size_t bytes() const;
+    };
+    /// setSimulation(), handing back the run it replaces (null when there was none).
+    std::unique_ptr<KeptRun> replaceRun(std::unique_ptr<Simulation> simulation);
+    /// Shows `kept` again, at the step it was left at, and hands back the run it replaces (or
+    /// `kept` itself, unchanged, when it holds no run).
+    std::unique_ptr<KeptRun> restoreRun(std::unique_ptr<KeptRun> kept);
+
     void setOverlays(const Overlays& overlays);
     const Overlays& overlays() const { return m_overlays; }
     void setBezierOutline(BezierOutline mode);
@@ -264,7 +287,11 @@ private:
     Simulation* sim() const { return m_run ? &m_run->simulation() : nullptr; }
     void tick();
     void advance();
-    void updateWork(); ///< m_stepWork and the pacer, after a spawn (live, replayed or sought)
+    void updateWork();                  ///< m_stepWork and the pacer, after a spawn (live, replayed or sought)
+    std::unique_ptr<KeptRun> takeRun(); ///< the run shown, set aside (null without one)
+    /// After a new run or one restored: the pacing, the grab and the texts start afresh.
+    /// `fresh`: a new run, which takes the mouse's position as Processing's mouseX does.
+    void runShown(bool fresh);
     /// Whether a press at `at` would grab: asked of a copy, so that going back in a run, a
     /// click that grabs nothing does not cut off the recorded future.
     bool wouldGrab(Point at) const;

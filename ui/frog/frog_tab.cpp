@@ -40,6 +40,7 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <limits>
 
 namespace granota::ui {
@@ -77,6 +78,14 @@ std::vector<Point> flipped(const std::vector<Point>& points, double height)
 } // namespace
 
 const long FrogTab::kLoadSeekWork = 600 * FrogCanvas::kFrameWork;
+const std::size_t FrogTab::kKeptRunBytes = FrogCanvas::kSnapshotBytes;
+
+struct FrogTab::KeptRun {
+    std::unique_ptr<FrogCanvas::KeptRun> canvas;
+    SceneSpec scene;
+    SolverKind solver = SolverKind::Seed;
+    long mark = -1;
+};
 
 FrogTab::FrogTab(QWidget* parent)
     : TabPage(QStringLiteral("frog"), QT_TR_NOOP("Frog"), parent), m_canvas(new FrogCanvas(this)),
@@ -431,14 +440,94 @@ bool FrogTab::rebuild(const SceneSpec& scene, SolverKind solver, QString* error)
         setError(error, tr("The simulation cannot be built with these values: %1").arg(fromStd(sim.error().message)));
         return false;
     }
+    auto replaced = std::make_unique<KeptRun>();
+    replaced->scene = m_scene;
+    replaced->solver = m_solver;
+    replaced->mark = m_mark;
     m_scene = scene;
     m_solver = solver;
     m_mark = -1; // a new run: the stopwatch's mark was of the old one
-    m_canvas->setSimulation(std::move(sim).value());
+    replaced->canvas = m_canvas->replaceRun(std::move(sim).value());
+    m_replaced.reset();
+    if (replaced->canvas) {
+        m_replaced = std::make_shared<RunSlot>();
+        m_replaced->run = std::move(replaced);
+    }
     if (m_plots)
         m_plots->refresh(true); // a new run: a new series
     updateTimeline();
     return true;
+}
+
+std::shared_ptr<FrogTab::RunSlot> FrogTab::takeReplaced()
+{
+    std::shared_ptr<RunSlot> slot = std::move(m_replaced);
+    m_replaced.reset();
+    if (!slot)
+        slot = std::make_shared<RunSlot>();
+    keepWithinBudget(slot);
+    return slot;
+}
+
+void FrogTab::keepWithinBudget(const std::shared_ptr<RunSlot>& slot)
+{
+    // Newest last; the expired (steps gone from the history) and `slot`'s old place go.
+    m_keptSlots.erase(std::remove_if(m_keptSlots.begin(), m_keptSlots.end(),
+                                     [&slot](const std::weak_ptr<RunSlot>& w) {
+                                         const auto s = w.lock();
+                                         return !s || s == slot;
+                                     }),
+                      m_keptSlots.end());
+    m_keptSlots.push_back(slot);
+    std::size_t total = 0;
+    for (const auto& w : m_keptSlots)
+        if (const auto s = w.lock(); s && s->run)
+            total += s->run->canvas->bytes();
+    for (const auto& w : m_keptSlots) {
+        if (total <= kKeptRunBytes)
+            break;
+        const auto s = w.lock();
+        if (s && s->run && s != slot) {
+            total -= s->run->canvas->bytes();
+            s->run.reset();
+            s->released = true;
+        }
+    }
+}
+
+void FrogTab::swapRun(RunSlot& slot)
+{
+    std::unique_ptr<KeptRun> shown;
+    if (m_replaced) // the run shown before the undo step applied its state
+        shown = std::move(m_replaced->run);
+    m_replaced.reset();
+    if (slot.run) {
+        m_scene = slot.run->scene;
+        m_solver = slot.run->solver;
+        m_canvas->restoreRun(std::move(slot.run->canvas)); // the run just built is let go
+        m_mark = slot.run->mark;
+        if (m_plots)
+            m_plots->refresh(true);
+        updateTimeline();
+    } else if (slot.released) {
+        emit statusMessage(tr("The run from before this step was not kept (too much memory): the scene starts again."));
+    }
+    slot.run = std::move(shown);
+    slot.released = false;
+    const auto kept = std::find_if(m_keptSlots.begin(), m_keptSlots.end(),
+                                   [&slot](const std::weak_ptr<RunSlot>& w) { return w.lock().get() == &slot; });
+    if (kept != m_keptSlots.end())
+        keepWithinBudget(kept->lock()); // the newest kept now
+}
+
+void FrogTab::sayRunReplaced(const RunSlot& slot)
+{
+    if (!slot.run)
+        return;
+    const long steps = slot.run->canvas->run->recordedSteps();
+    if (steps > 0)
+        emit statusMessage(tr("The scene starts again; Undo brings back the run of %n step(s) it replaced.", nullptr,
+                              int(std::min<long>(steps, std::numeric_limits<int>::max()))));
 }
 
 QString FrogTab::sceneLoadError(const QString& name, const std::string& coreMessage)
@@ -458,6 +547,7 @@ bool FrogTab::setScene(const QString& name, QString* error)
     if (!switchScene(name, error))
         return false;
     m_undo->clear(); // a scene set from outside (a document, the command line) starts a history
+    m_replaced.reset();
     return true;
 }
 
@@ -520,13 +610,17 @@ void FrogTab::pushSceneStep(const QJsonObject& before, const QString& undoText)
     const QJsonObject after = sceneState();
     if (after == before)
         return;
-    auto apply = [this](const QJsonObject& state) {
+    const std::shared_ptr<RunSlot> kept = takeReplaced(); // the run before the change, for Undo
+    auto apply = [this, kept](const QJsonObject& state) {
         QString error;
-        if (!applyState(state, &error)) // states this tab wrote itself: cannot be refused
+        if (applyState(state, &error)) // states this tab wrote itself: cannot be refused
+            swapRun(*kept);
+        else
             showRefusal(error);
         emit documentChanged();
     };
     m_undo->push(new ValueCommand<QJsonObject>(apply, before, after, undoText, -1, {false, /*appliedAlready=*/true}));
+    sayRunReplaced(*kept);
 }
 
 void FrogTab::sceneChosen(int index)
@@ -560,6 +654,7 @@ void FrogTab::reset()
         showRefusal(error);
     else
         emit statusMessage(tr("The scene starts again."));
+    m_replaced.reset(); // Reset lets the run go
 }
 
 void FrogTab::showScene()
@@ -638,10 +733,23 @@ bool FrogTab::editParameter(const QString& key, const QJsonValue& value, QString
     const QJsonValue before = paramValue(m_scene, key);
     if (!applyParameter(key, value, error))
         return false;
-    // Consecutive edits of the same parameter merge, so that spinning an arrow is one step.
-    m_undo->push(new ValueCommand<QJsonValue>([this, key](const QJsonValue& v) { applyParameter(key, v, nullptr); }, before,
-                                              value, tr("Change %1").arg(key), valueMergeId(kParameterMergeIdBase, key),
+    // The run the value replaced goes with the step: Undo brings it back as it was.
+    const std::shared_ptr<RunSlot> kept = takeReplaced();
+    auto apply = [this, key, kept](const QJsonValue& v) {
+        if (applyParameter(key, v, nullptr))
+            swapRun(*kept);
+    };
+    // Consecutive edits of the same parameter merge, so that spinning an arrow is one step:
+    // the step keeps the run from before the first of them.
+    const int index = m_undo->index();
+    m_undo->push(new ValueCommand<QJsonValue>(apply, before, value, tr("Change %1").arg(key),
+                                              valueMergeId(kParameterMergeIdBase, key),
                                               {/*dropWhenUnchanged=*/false, /*appliedAlready=*/true}));
+    const bool merged = m_undo->index() == index;
+    if (!merged)
+        m_lastParameterSlot = kept;
+    if (const auto shown = merged ? m_lastParameterSlot.lock() : kept)
+        sayRunReplaced(*shown);
     return true;
 }
 
@@ -1110,6 +1218,7 @@ bool FrogTab::loadState(const QJsonObject& state, QString* error)
     if (!applyState(state, error))
         return false;
     m_undo->clear();
+    m_replaced.reset();
     return true;
 }
 

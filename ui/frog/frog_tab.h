@@ -10,6 +10,9 @@
 
 #include <QJsonValue>
 
+#include <memory>
+#include <vector>
+
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
@@ -78,6 +81,10 @@ public:
     /// much work (Simulation::workPerStep × steps): 600 frames' budget, about two seconds;
     /// past it, the run loads at step 0 and the tab says so.
     static const long kLoadSeekWork;
+    /// The runs that changes of the scene replaced, kept for Undo, take at most this much
+    /// together (FrogCanvas::KeptRun::bytes: as much as one run's snapshots may take); past
+    /// it the oldest are let go, and their undo steps say that the scene starts again.
+    static const std::size_t kKeptRunBytes;
     /// Shows the plots over time under the canvas (the canvas records the series meanwhile).
     void setPlotsShown(bool on);
     FrogPlotPanel* plotPanel() const { return m_plots; }
@@ -92,7 +99,25 @@ protected:
 
 private:
     void fitSidePanel();
+    /// A new run of `scene` on `solver`; the run it replaces waits in m_replaced for the undo
+    /// step of the change (takeReplaced), until the next rebuild.
     bool rebuild(const SceneSpec& scene, SolverKind solver, QString* error);
+    /// A run a change of the scene replaced, with the scene, solver and stopwatch mark it had
+    /// (docs/rewind.md, "A change of the scene"); `released` when it was let go to stay within
+    /// kKeptRunBytes. The undo step of the change holds it and swaps it with the run shown.
+    struct KeptRun;
+    struct RunSlot {
+        std::unique_ptr<KeptRun> run;
+        bool released = false;
+    };
+    std::shared_ptr<RunSlot> takeReplaced();
+    /// What an undo or redo of a change of the scene does once it has applied its state: shows
+    /// the run `slot` keeps, and keeps in its place the run that was shown.
+    void swapRun(RunSlot& slot);
+    /// Keeps `slot` as the newest of the runs kept, letting the oldest go past kKeptRunBytes.
+    void keepWithinBudget(const std::shared_ptr<RunSlot>& slot);
+    /// The status bar's word on a change of the scene: the run it replaced, and that Undo brings it back.
+    void sayRunReplaced(const RunSlot& slot);
     void showScene();
     void sceneChosen(int index);
     void solverChosen(int index);
@@ -162,6 +187,9 @@ private:
     int m_timelineDigits = -1; ///< digits of the recorded steps the label's width was set for
     QPushButton* m_markButton = nullptr;
     long m_mark = -1;
+    std::shared_ptr<RunSlot> m_replaced;             ///< the run the last rebuild replaced (rebuild)
+    std::vector<std::weak_ptr<RunSlot>> m_keptSlots; ///< the undo steps' kept runs, oldest first
+    std::weak_ptr<RunSlot> m_lastParameterSlot;      ///< the kept run of the last parameter step (merges)
     QPushButton *m_pause, *m_step, *m_reset;
     QRadioButton *m_precomputed, *m_fit;
     QCheckBox *m_showVertices, *m_showSprings, *m_showArea, *m_showVelocities, *m_showReadouts, *m_showFrameTime, *m_showGhost,

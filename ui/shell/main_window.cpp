@@ -12,6 +12,7 @@
 #include "ui/shell/tab_page.h"
 #include "ui/shell/thesis_figures_dialog.h"
 #include "ui/shell/tikz_options_dialog.h"
+#include "ui/common/field_input_filter.h"
 #include "ui/common/vertical_scroll_area.h"
 #include "ui/common/work_precision_panel.h"
 
@@ -60,6 +61,7 @@ const char* const kExampleIds[] = {"2.1", "2.2", "2.3", "2.4", "2.5", "2.6", "2.
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWidget(this))
 {
     setObjectName(QStringLiteral("MainWindow"));
+    FieldInputFilter::install(); // the wheel scrolls the panels; Ctrl+Z in a field is the document's
     m_normalFont = QApplication::font();
     auto* deCasteljau = new DeCasteljauTab(this);
     m_pages = {deCasteljau, new BernsteinTab(deCasteljau, this), new FitTab(this), new CatmullRomTab(this), new FrogTab(this)};
