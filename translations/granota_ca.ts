@@ -2939,6 +2939,13 @@ a cada canvi alentiria la finestra.</translation>
     </context>
     <context>
         <name>granota::ui::FrogTab</name>
+        <message numerus="yes">
+            <source>The scene starts again; Undo brings back the run of %n step(s) it replaced.</source>
+            <translation>
+                <numerusform>L&apos;escena torna a començar; Desfés recupera l&apos;execució d&apos;%n pas que ha substituït.</numerusform>
+                <numerusform>L&apos;escena torna a començar; Desfés recupera l&apos;execució de %n passos que ha substituït.</numerusform>
+            </translation>
+        </message>
         <message>
             <source>A dashpot along each edge, as a damping ratio: 0 none, 1 critical (an edge stretched and let go comes back without ringing), above 1 slower still. What it takes shows in the plots as damping. The run goes on with it from the next step, and the recording keeps the change.</source>
             <translation>Un amortidor al llarg de cada aresta, com a raó d'esmorteïment: 0 cap, 1 crític (una aresta estirada i deixada anar torna sense vibrar), per sobre d'1 encara més lenta. El que s'emporta surt als gràfics com a esmorteïment. La simulació continua amb el valor nou des del pas següent, i l'enregistrament guarda el canvi.</translation>
@@ -3617,6 +3624,10 @@ a cada canvi alentiria la finestra.</translation>
         <message>
             <source>The ruler must be four numbers: x and y of each end, in px.</source>
             <translation>El regle han de ser quatre nombres: x i y de cada extrem, en px.</translation>
+        </message>
+        <message>
+            <source>The run from before this step was not kept (too much memory): the scene starts again.</source>
+            <translation>L&apos;execució d&apos;abans d&apos;aquest pas no s&apos;ha conservat (massa memòria): l&apos;escena torna a començar.</translation>
         </message>
     </context>
     <context>

@@ -2939,6 +2939,13 @@ on each change would slow the window.</translation>
     </context>
     <context>
         <name>granota::ui::FrogTab</name>
+        <message numerus="yes">
+            <source>The scene starts again; Undo brings back the run of %n step(s) it replaced.</source>
+            <translation>
+                <numerusform>The scene starts again; Undo brings back the run of %n step it replaced.</numerusform>
+                <numerusform>The scene starts again; Undo brings back the run of %n steps it replaced.</numerusform>
+            </translation>
+        </message>
         <message>
             <source>A dashpot along each edge, as a damping ratio: 0 none, 1 critical (an edge stretched and let go comes back without ringing), above 1 slower still. What it takes shows in the plots as damping. The run goes on with it from the next step, and the recording keeps the change.</source>
             <translation>A dashpot along each edge, as a damping ratio: 0 none, 1 critical (an edge stretched and let go comes back without ringing), above 1 slower still. What it takes shows in the plots as damping. The run goes on with it from the next step, and the recording keeps the change.</translation>
@@ -3617,6 +3624,10 @@ on each change would slow the window.</translation>
         <message>
             <source>The ruler must be four numbers: x and y of each end, in px.</source>
             <translation>The ruler must be four numbers: x and y of each end, in px.</translation>
+        </message>
+        <message>
+            <source>The run from before this step was not kept (too much memory): the scene starts again.</source>
+            <translation>The run from before this step was not kept (too much memory): the scene starts again.</translation>
         </message>
     </context>
     <context>
