@@ -110,11 +110,12 @@ private slots:
 
     void aFailingSceneShowsTheCoresMessage()
     {
-        const QString known = granota::ui::FrogTab::sceneLoadError(QStringLiteral("frog"),
-                                                                   "JSON: bad number at line 3, column 7");
+        const QString known = granota::ui::FrogTab::sceneLoadError(
+            QStringLiteral("frog"), granota::makeError(granota::ErrorCode::InvalidInput, "JSON: bad number at line 3, column 7"));
         QVERIFY2(known.contains(QStringLiteral("JSON: bad number at line 3, column 7")), qPrintable(known));
         QVERIFY2(known.contains(QStringLiteral("frog")), qPrintable(known));
-        const QString unknown = granota::ui::FrogTab::sceneLoadError(QStringLiteral("dragons"), "unknown scene");
+        const QString unknown = granota::ui::FrogTab::sceneLoadError(
+            QStringLiteral("dragons"), granota::makeError(granota::ErrorCode::InvalidInput, "unknown scene"));
         QVERIFY2(unknown.contains(QStringLiteral("dragons")) && unknown.contains(QStringLiteral("frog")), qPrintable(unknown));
         QVERIFY(unknown != known);
     }
