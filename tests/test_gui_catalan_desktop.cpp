@@ -267,6 +267,18 @@ private slots:
         QCOMPARE(table->item(0, 0)->text(), QStringLiteral("0,05688"));
     }
 
+    // Issue 34, item 8: nothing shows a minus on a zero ("-0,0 %" was an area error of
+    // −0.0001 % at one decimal); a number that is not zero keeps its sign.
+    void noNumberShowsMinusZero()
+    {
+        QCOMPARE(granota::ui::displayFixed(-0.0001, 1), QStringLiteral("0,0"));
+        QCOMPARE(granota::ui::displayFixed(-0.0, 2), QStringLiteral("0,00"));
+        QCOMPARE(granota::ui::displayNumber(-0.0), QStringLiteral("0"));
+        QCOMPARE(granota::ui::displaySignificant(-0.0, 4), QStringLiteral("0"));
+        QCOMPARE(granota::ui::displayFixed(-0.06, 1), QStringLiteral("-0,1"));
+        QCOMPARE(granota::ui::displaySignificant(-1e-300, 2), QStringLiteral("-1e-300"));
+    }
+
     void aCatalanSpinBoxReadsACommaOrAPoint()
     {
         granota::ui::DecimalSpinBox spin;
