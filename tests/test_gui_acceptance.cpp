@@ -6,7 +6,9 @@
 #include "ui/bernstein/bernstein_tab.h"
 #include "ui/decasteljau/decasteljau_parameter_control.h"
 #include "ui/decasteljau/decasteljau_tab.h"
+#include "ui/fit/fit_tab.h"
 #include "ui/frog/frog_canvas.h"
+#include "ui/frog/frog_tab.h"
 #include "ui/shell/language.h"
 #include "ui/common/canvas_style.h"
 #include "ui/common/curve_canvas.h"
@@ -18,6 +20,9 @@
 #include <QAbstractButton>
 #include <QApplication>
 #include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QJsonDocument>
 #include <QComboBox>
 #include <QImage>
 #include <QLabel>
@@ -498,6 +503,76 @@ private slots:
         QVERIFY2(canvas->textPanelWidth() <= canvas->textPanelRoom(),
                  qPrintable(QStringLiteral("%1 > %2").arg(canvas->textPanelWidth()).arg(canvas->textPanelRoom())));
         window.setPresentation(false, false);
+    }
+    // Issue 34, item 5: in Catalan, what the core refuses reaches the user in Catalan — a
+    // scene's limit typed in the Frog tab's panel, a CSV file the fitting tab cannot import,
+    // a document whose frog parameters are wrong — with none of the core's English (the CLI
+    // keeps it: test_cli_simulate, test_point_list). The English fragments are the core's own
+    // words for each refusal (scene.cpp, point_list.cpp, stage_body.cpp); the Catalan ones
+    // those of translations/granota_ca.ts.
+    void catalanRefusalsHoldNoEnglishCoreText()
+    {
+        granota::ui::setLanguage(QStringLiteral("ca"), false);
+        struct English {
+            ~English() { granota::ui::setLanguage(QStringLiteral("en"), false); }
+        } backToEnglish;
+        const auto noEnglish = [](const QString& text, std::initializer_list<const char*> core) {
+            for (const char* words : core)
+                if (text.contains(QLatin1String(words), Qt::CaseInsensitive))
+                    return false;
+            return !text.isEmpty();
+        };
+        MainWindow window;
+        window.show();
+        QVERIFY(waitExposed(&window));
+
+        // A scene limit, typed as a student types it: many-bodies with 200 bodies of radius 40
+        // (12 × 10 vertices side by side fit; 200 × 10 = 2000 do not fit 1280 × 720 px).
+        QVERIFY(window.showTab(QStringLiteral("frog")));
+        QString error;
+        QVERIFY2(window.frogTab()->setScene(QStringLiteral("many-bodies"), &error), qPrintable(error));
+        auto* bodies = window.frogTab()->findChild<QDoubleSpinBox*>(QStringLiteral("param_bodies__0"));
+        QVERIFY(bodies);
+        bodies->setValue(200);
+        const QString refusal = window.statusBar()->currentMessage();
+        QVERIFY2(noEnglish(refusal, {"scene", "bodies of radius", "do not fit", "side by side", "piled", "lower bodies"}),
+                 qPrintable(refusal));
+        QVERIFY2(refusal.contains(QStringLiteral("no caben")) && refusal.contains(QStringLiteral("200")), qPrintable(refusal));
+
+        // The CSV import: a line that is no pair, and a coordinate that is no number.
+        QTemporaryDir dir;
+        const QList<QPair<QByteArray, QString>> files = {{"x,y\n1,2\n3\n", QStringLiteral("Línia 3")},
+                                                         {"1;2\n3;dos\n", QStringLiteral("Línia 2")}};
+        auto* fit = qobject_cast<granota::ui::FitTab*>(window.tab(QStringLiteral("fit")));
+        QVERIFY(fit);
+        for (const auto& [bytes, where] : files) {
+            const QString path = dir.filePath(QStringLiteral("punts.csv"));
+            QFile file(path);
+            QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+            file.write(bytes);
+            file.close();
+            QVERIFY(!fit->importFile(path, &error));
+            QVERIFY2(noEnglish(error, {"line ", "point ", "expected", "got ", "is not a finite number", "write integers"}),
+                     qPrintable(error));
+            QVERIFY2(error.contains(where) && error.contains(QStringLiteral("punt")), qPrintable(error));
+        }
+
+        // A document whose frog part asks for a polygon of 2 sides.
+        const QJsonObject frog{{"scene", "frog"}, {"params", QJsonObject{{"sides", 2}}}};
+        const QJsonObject root{{"format", "granota"}, {"version", 1}, {"tabs", QJsonObject{{"frog", frog}}}};
+        const QString document = dir.filePath(QStringLiteral("dolent.granota"));
+        QFile out(document);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(QJsonDocument(root).toJson());
+        out.close();
+        QVERIFY(!window.openFile(document, &error));
+        QVERIFY2(noEnglish(error, {"sides must", "at least 3", "polygon", "got 2", "scene"}), qPrintable(error));
+        QVERIFY2(error.contains(QStringLiteral("«Costats N»")) && error.contains(QStringLiteral("10000")), qPrintable(error));
+
+        // The undo entries name a parameter by its label on screen, not its key.
+        QVERIFY(window.frogTab()->editParameter(QStringLiteral("area_factor"), 1.5, &error));
+        const QString undoText = window.frogTab()->undoStack()->undoText();
+        QVERIFY2(!undoText.contains(QLatin1String("area_factor")), qPrintable(undoText));
     }
 };
 

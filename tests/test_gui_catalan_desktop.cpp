@@ -110,11 +110,12 @@ private slots:
 
     void aFailingSceneShowsTheCoresMessage()
     {
-        const QString known = granota::ui::FrogTab::sceneLoadError(QStringLiteral("frog"),
-                                                                   "JSON: bad number at line 3, column 7");
+        const QString known = granota::ui::FrogTab::sceneLoadError(
+            QStringLiteral("frog"), granota::makeError(granota::ErrorCode::InvalidInput, "JSON: bad number at line 3, column 7"));
         QVERIFY2(known.contains(QStringLiteral("JSON: bad number at line 3, column 7")), qPrintable(known));
         QVERIFY2(known.contains(QStringLiteral("frog")), qPrintable(known));
-        const QString unknown = granota::ui::FrogTab::sceneLoadError(QStringLiteral("dragons"), "unknown scene");
+        const QString unknown = granota::ui::FrogTab::sceneLoadError(
+            QStringLiteral("dragons"), granota::makeError(granota::ErrorCode::InvalidInput, "unknown scene"));
         QVERIFY2(unknown.contains(QStringLiteral("dragons")) && unknown.contains(QStringLiteral("frog")), qPrintable(unknown));
         QVERIFY(unknown != known);
     }
@@ -264,6 +265,18 @@ private slots:
         QVERIFY(granota::ui::setLanguage(QStringLiteral("ca"), false));
         QCoreApplication::processEvents();
         QCOMPARE(table->item(0, 0)->text(), QStringLiteral("0,05688"));
+    }
+
+    // Issue 34, item 8: nothing shows a minus on a zero ("-0,0 %" was an area error of
+    // −0.0001 % at one decimal); a number that is not zero keeps its sign.
+    void noNumberShowsMinusZero()
+    {
+        QCOMPARE(granota::ui::displayFixed(-0.0001, 1), QStringLiteral("0,0"));
+        QCOMPARE(granota::ui::displayFixed(-0.0, 2), QStringLiteral("0,00"));
+        QCOMPARE(granota::ui::displayNumber(-0.0), QStringLiteral("0"));
+        QCOMPARE(granota::ui::displaySignificant(-0.0, 4), QStringLiteral("0"));
+        QCOMPARE(granota::ui::displayFixed(-0.06, 1), QStringLiteral("-0,1"));
+        QCOMPARE(granota::ui::displaySignificant(-1e-300, 2), QStringLiteral("-1e-300"));
     }
 
     void aCatalanSpinBoxReadsACommaOrAPoint()

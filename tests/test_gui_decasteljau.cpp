@@ -1164,6 +1164,28 @@ private slots:
         QCOMPARE(moved[3], before[3]);
     }
 
+    // Issue 34, item 8: a keyboard mold stores the decimal the step meant, not the double sum.
+    // At t = 0 only P_0 moves (B_0^n(0) = 1, the others 0), by the whole step: 0.2 + 1/10 is
+    // 0.3 and 0.7 + 1/10 is 0.8 as decimals; in doubles 0.30000000000000004 and
+    // 0.7999999999999999 (checked below), which the table and the CSV showed.
+    void keyboardMoldingStoresTheDecimalMeant()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        tab.pointEditor()->setPoints({{0.2, 0.7}, {3, 2}, {5, 0}}, QStringLiteral("points"));
+        tab.pointEditor()->setGridStep(0.1);
+        tab.pointEditor()->setSnapEnabled(true);
+        tab.setT(0);
+        QVERIFY(0.2 + 0.1 != 0.3 && 0.7 + 0.1 != 0.8); // the noise this test is about
+        QTest::keyClick(tab.canvas(), Qt::Key_Right, Qt::AltModifier);
+        QTest::keyClick(tab.canvas(), Qt::Key_Up, Qt::AltModifier);
+        const auto after = tab.pointEditor()->points();
+        QVERIFY2(after[0].x == 0.3, qPrintable(QString::number(after[0].x, 'g', 17))); // exactly: QCOMPARE is fuzzy
+        QVERIFY2(after[0].y == 0.8, qPrintable(QString::number(after[0].y, 'g', 17)));
+        QCOMPARE(after[1], Point(3, 2));
+        QCOMPARE(granota::formatDouble(after[0].x), std::string("0.3"));
+    }
+
     // Undo in the middle of a mold ends it: the undone state stays, the release adds no step.
     void undoWhileMoldingEndsTheMold()
     {

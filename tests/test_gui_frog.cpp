@@ -912,7 +912,7 @@ private slots:
         bad["stable"] = QJsonObject{{"substeps", 8}, {"edge_compliance", 0.002}, {"edge_damping_ratio", 2.5}};
         QString error;
         QVERIFY(!tab().loadState(bad, &error));
-        QVERIFY2(error.contains("edge_damping_ratio must be a number from 0 (no damping) to 2"), qPrintable(error));
+        QVERIFY2(error.contains("a damping ratio from 0 to 2"), qPrintable(error));
         damping->setValue(0);
         tab().reset();
         QVERIFY(tab().setScene("pendulum-limits", nullptr)); // no springs: nothing to set
@@ -1407,7 +1407,7 @@ private slots:
         QJsonObject fewerSides = frog;
         fewerSides["params"] = QJsonObject{{"bodies", 5000}};
         QVERIFY(!tab().loadState(fewerSides, &error));
-        QVERIFY2(error.contains("raise width and height"), qPrintable(error));
+        QVERIFY2(error.contains("or widen the frame"), qPrintable(error));
         QCOMPARE(tab().saveState(), before);
     }
 
@@ -1423,7 +1423,7 @@ private slots:
         const QJsonObject before = tab().saveState();
         QString error;
         QVERIFY(!tab().loadState(frog, &error));
-        QVERIFY2(error.contains("lower sides or bezier_samples"), qPrintable(error));
+        QVERIFY2(error.contains("lower the sides or the Bézier samples"), qPrintable(error));
         QCOMPARE(tab().saveState(), before);
 
         // The spin box: 2000 points are accepted at 10 sides (10·11/2·2000 = 110 000), then
@@ -1442,7 +1442,7 @@ private slots:
         QCOMPARE(tab().scene().params.sides, 10);
         QCOMPARE(tab().parametersPanel()->spinBox("sides")->value(), 10.0);
         QVERIFY(!said.isEmpty());
-        QVERIFY2(said.last().at(0).toString().contains("lower sides or bezier_samples"),
+        QVERIFY2(said.last().at(0).toString().contains("lower the sides or the Bézier samples"),
                  qPrintable(said.last().at(0).toString()));
         QCOMPARE(tab().canvas()->simulation()->scene().params.sides, 10); // the running body too
         // At these 2000 points the budget holds 706 sides (706·707/2·2000 = 499 142 000 ≤ 5·10⁸;

@@ -55,6 +55,56 @@ private slots:
         QVERIFY(bad.error().message.find("'two'") != std::string::npos);
     }
 
+    // Issue 34, item 9: what a spreadsheet saves. LibreOffice or Excel in Catalan writes
+    // "x;y" with decimal commas; a tab between the columns comes with either decimal sign.
+    // Expected values are the fractions the decimals denote, written by hand.
+    void spreadsheetColumns_data()
+    {
+        QTest::addColumn<QString>("text");
+        QTest::newRow("semicolons, decimal commas") << "x;y\r\n0,5;-1,25\r\n2;3,75\r\n";
+        QTest::newRow("tabs, decimal points") << "x\ty\n0.5\t-1.25\n2\t3.75\n";
+        QTest::newRow("tabs, decimal commas") << "0,5\t-1,25\n2\t3,75\n";
+        QTest::newRow("commas, decimal points") << "x,y\n0.5,-1.25\n2,3.75\n";
+        QTest::newRow("semicolons, spaces") << " 0,5 ; -1,25\n2 ; 3,75\n";
+    }
+    void spreadsheetColumns()
+    {
+        QFETCH(QString, text);
+        auto p = parsePointCsv(text.toStdString());
+        QVERIFY2(p.ok(), p.ok() ? "" : p.error().message.c_str());
+        QCOMPARE(int(p->size()), 2);
+        QCOMPARE((*p)[0].x, frac(1, 2));
+        QCOMPARE((*p)[0].y, frac(-5, 4));
+        QCOMPARE((*p)[1].x, Rational(2));
+        QCOMPARE((*p)[1].y, frac(15, 4));
+        QVERIFY(parsePointFile(text.toStdString()).ok()); // what Fitting ▸ Import CSV reads
+    }
+
+    // Issue 34, item 5: an error names its sentence and values for the GUI's translation
+    // (message_id.h) and keeps the English the CLI prints, as before.
+    void errorsNameTheirSentence()
+    {
+        auto notANumber = parsePointCsv("0,0\n1,3\n4,two\n");
+        QVERIFY(!notANumber.ok());
+        const Error& e = notANumber.error();
+        QCOMPARE(e.message, std::string("line 3: point 2: y = 'two' is not a finite number (write integers, decimals or "
+                                        "fractions p/q)"));
+        QCOMPARE(int(e.id), int(MessageId::CoordinateNotANumber));
+        QCOMPARE(e.line, 3L);
+        QCOMPARE(int(e.args.size()), 3);
+        QCOMPARE(*e.args[0].number, 2.0);
+        QCOMPARE(e.args[1].text, std::string("y"));
+        QCOMPARE(e.args[2].text, std::string("'two'"));
+        // Still three numbers on a line of a spreadsheet's file: no pair, said as such.
+        auto three = parsePointCsv("1;2;3\n");
+        QVERIFY(!three.ok());
+        QCOMPARE(int(three.error().id), int(MessageId::PointNotAPair));
+        QCOMPARE(three.error().line, 1L);
+        QCOMPARE(three.error().message, std::string("line 1: point 0: expected \"x,y\", got '1;2;3'"));
+        auto none = parsePointCsv("# nothing\n");
+        QCOMPARE(int(none.error().id), int(MessageId::FileHoldsNoPoints));
+    }
+
     void json()
     {
         auto p = parsePointJson(" [[0, 0], [\"7/2\", -2.5], [1e2,5]] ");

@@ -295,6 +295,15 @@ private slots:
         QVERIFY2(r.error().message.find("lower bodies, sides or radius, or raise width and height") != std::string::npos,
                  r.error().message.c_str());
         QCOMPARE(s->bodies, 12); // unchanged
+        // The GUI's translation gets the sentence and its values (issue 34, item 5): the
+        // bodies, the radius, the frame and the vertices, 5000 × 10 sides, as the file says.
+        QCOMPARE(int(r.error().id), int(MessageId::BodiesDoNotFit));
+        QCOMPARE(int(r.error().args.size()), 6);
+        QCOMPARE(*r.error().args[0].number, 5000.0);
+        QCOMPARE(*r.error().args[1].number, 40.0);
+        QCOMPARE(*r.error().args[2].number, 1280.0);
+        QCOMPARE(*r.error().args[3].number, 720.0);
+        QCOMPARE(*r.error().args[4].number, 50000.0);
         // A few bodies may start piled (120 vertices), many may not (1200).
         QVERIFY(applySetting(*s, "radius=300").ok());
         QVERIFY(!applySetting(*s, "sides=100").ok());

@@ -5,11 +5,14 @@
 /// (C++17 has no std::expected; this is the small part of it Granota needs.)
 /// Expected<void> is a check or an action that has no result: success is `return {};`.
 
+#include "core/base/message_id.h"
+
 #include <cassert>
 #include <optional>
 #include <string>
 #include <utility>
 #include <variant>
+#include <vector>
 
 namespace granota {
 
@@ -30,8 +33,11 @@ enum class ErrorCode {
 
 struct Error {
     ErrorCode code = ErrorCode::InvalidInput;
-    std::string message;
-    int systemError = 0; ///< the errno of a refused read or write (ENOSPC, EROFS, EACCES…), else 0
+    std::string message;            ///< English, as the CLI prints it
+    int systemError = 0;            ///< the errno of a refused read or write (ENOSPC, EROFS, EACCES…), else 0
+    MessageId id = MessageId::None; ///< the sentence, for the GUI's translation (message_id.h)
+    std::vector<MessageArg> args;   ///< the values the sentence quotes, in order
+    long line = 0;                  ///< the line of a text file the error is on, else 0
 };
 
 template <class T> class Expected {
@@ -94,6 +100,21 @@ private:
     std::optional<Error> m_error;
 };
 
-inline Error makeError(ErrorCode code, std::string message) { return Error{code, std::move(message), 0}; }
+inline Error makeError(ErrorCode code, std::string message) { return Error{code, std::move(message), 0, MessageId::None, {}, 0}; }
+
+/// An Error that the GUI translates: `message` in English for the CLI, `id` and `args` for
+/// the GUI's own words (ui/common/error_text.cpp).
+inline Error makeError(ErrorCode code, std::string message, MessageId id, std::vector<MessageArg> args)
+{
+    return Error{code, std::move(message), 0, id, std::move(args), 0};
+}
+
+/// `error` with `context` before its English ("scene 'x': …", "line 3: …"); the sentence the
+/// GUI translates, its arguments and its line stay.
+inline Error withContext(std::string context, Error error)
+{
+    error.message = std::move(context) + error.message;
+    return error;
+}
 
 } // namespace granota

@@ -1,4 +1,5 @@
 #include "ui/catmull_rom/catmull_rom_curves.h"
+#include "ui/common/error_text.h"
 
 #include "core/curves/bezier/de_casteljau.h"
 #include "core/curves/splines/cubic_spline.h"
@@ -76,7 +77,7 @@ QString translatedError(const Error& error, CatmullRomEnds ends)
     case ErrorCode::Singular:
         return CatmullRomCurves::tr("No unique cubic spline with these ends: as Ex 2.1, the last but one abscissa must not "
                                     "be 0.");
-    default: return QString::fromStdString(error.message);
+    default: return ErrorText::of(error);
     }
 }
 

@@ -82,7 +82,10 @@ QString ExactPanel::matrix(const QString& name, const std::vector<std::vector<st
     for (const auto& row : entries) {
         html += QStringLiteral("<tr><td>[</td>");
         for (const auto& e : row)
-            html += QStringLiteral("<td align=\"right\">%1</td>").arg(QString::fromStdString(e).toHtmlEscaped());
+            // An entry never breaks over lines ("-1,234e-05" in 3 pieces): a wide matrix
+            // scrolls sideways instead, as the De Casteljau triangle does.
+            html += QStringLiteral("<td align=\"right\" style=\"white-space:nowrap; padding: 0 4px\">%1</td>")
+                        .arg(QString::fromStdString(e).toHtmlEscaped());
         html += QStringLiteral("<td>]</td></tr>");
     }
     return html + QStringLiteral("</table>");

@@ -34,11 +34,23 @@ QString localized(const std::string& cText)
     return s;
 }
 
+/// A number's C text without the minus of a zero: −0 and −0.0001 at one decimal read "-0",
+/// "-0.0" ("-0,0 %" on the Frog canvas), and a person reads no sign on nothing.
+std::string unsignedZero(std::string text)
+{
+    if (!text.empty() && text.front() == '-') {
+        const std::size_t exponent = text.find_first_of("eE");
+        if (text.find_first_of("123456789") >= exponent)
+            text.erase(0, 1);
+    }
+    return text;
+}
+
 } // namespace
 
-QString displayNumber(double v) { return localized(formatDouble(v)); }
-QString displayFixed(double v, int decimals) { return localized(formatFixed(v, decimals)); }
-QString displaySignificant(double v, int digits) { return localized(formatSignificant(v, digits)); }
+QString displayNumber(double v) { return localized(unsignedZero(formatDouble(v))); }
+QString displayFixed(double v, int decimals) { return localized(unsignedZero(formatFixed(v, decimals))); }
+QString displaySignificant(double v, int digits) { return localized(unsignedZero(formatSignificant(v, digits))); }
 QString displayText(const std::string& cText) { return localized(cText); }
 
 QString displayPair(const QString& x, const QString& y)

@@ -7,6 +7,7 @@
 #include "core/exact/polynomial_text.h"
 #include "core/exact/radical_sum.h"
 #include "core/exact/rational_approximation.h"
+#include "core/exact/rounding_residue.h"
 #include "core/exact/square_root.h"
 #include "core/io/worked_examples.h"
 #include "ui/common/exact_panel.h"
@@ -306,7 +307,9 @@ QString FitExactView::html(const Input& in)
     if (n <= kMaxPowerDegree) {
         html += ExactPanel::heading(tr("Fitted curve α(t) = Σ Bⱼⁿ(t) Pⱼ"));
         const Vec2<Polynomial<double>> alpha = bezierToPowerBasis(fit.controlPoints);
-        html += curveHtml(toText(rounded(alpha.x)), toText(rounded(alpha.y)));
+        // Rounding residue dropped (rounding_residue.h), then 6 significant digits.
+        const double residue = fitResidueRelative(n, fit.cond);
+        html += curveHtml(toText(rounded(withoutResidue(alpha.x, residue))), toText(rounded(withoutResidue(alpha.y, residue))));
     } else {
         html += QStringLiteral("<p>%1</p>")
                     .arg(tr("α(t) in powers of t is not shown beyond degree %1: its coefficients "

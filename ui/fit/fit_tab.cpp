@@ -1,4 +1,5 @@
 #include "ui/fit/fit_tab.h"
+#include "ui/common/error_text.h"
 #include "ui/fit/background_fit.h"
 #include "core/base/number_format.h"
 #include "ui/common/canvas_legend.h"
@@ -996,8 +997,7 @@ bool FitTab::importFile(const QString& path, QString* error)
         std::string_view(bytes->constData(), static_cast<std::size_t>(bytes->size())));
     QApplication::restoreOverrideCursor();
     if (!parsed) {
-        *error = tr("“%1” holds no valid data points, nothing was changed: %2")
-                     .arg(name, QString::fromStdString(parsed.error().message));
+        *error = tr("“%1” holds no valid data points, nothing was changed: %2").arg(name, ErrorText::of(parsed.error()));
         return false;
     }
     if (parsed->size() < 2) {

@@ -1,4 +1,5 @@
 #include "ui/frog/frog_canvas.h"
+#include "ui/common/error_text.h"
 #include "core/base/math_constants.h"
 #include "ui/common/focus_frame.h"
 #include "ui/common/number_text.h"
@@ -660,7 +661,7 @@ void FrogCanvas::rebuildGhost()
     const SolverKind other = sim()->solver() == SolverKind::Seed ? SolverKind::Stable : SolverKind::Seed;
     auto built = Simulation::create(sim()->scene(), other);
     if (!built) {
-        emit statusMessage(tr("The other solver cannot run this scene: %1").arg(QString::fromStdString(built.error().message)));
+        emit statusMessage(tr("The other solver cannot run this scene: %1").arg(ErrorText::of(built.error())));
         return;
     }
     const long catchUp = (*built)->workPerStep() * sim()->stepCount();
@@ -733,7 +734,7 @@ bool FrogCanvas::setRecording(std::vector<InputEvent> events, long steps, QStrin
     auto ok = m_run->setRecording(std::move(events), steps);
     if (!ok) {
         if (error)
-            *error = QString::fromStdString(ok.error().message);
+            *error = ErrorText::of(ok.error());
         return false;
     }
     if (m_recording) {

@@ -1,4 +1,5 @@
 #include "ui/frog/frog_tab.h"
+#include "ui/common/error_text.h"
 #include "ui/common/number_text.h"
 
 #include "core/softbody/outline.h"
@@ -437,7 +438,7 @@ bool FrogTab::rebuild(const SceneSpec& scene, SolverKind solver, QString* error)
 {
     auto sim = Simulation::create(scene, solver);
     if (!sim) {
-        setError(error, tr("The simulation cannot be built with these values: %1").arg(fromStd(sim.error().message)));
+        setError(error, tr("The simulation cannot be built with these values: %1").arg(ErrorText::of(sim.error())));
         return false;
     }
     auto replaced = std::make_unique<KeptRun>();
@@ -530,15 +531,18 @@ void FrogTab::sayRunReplaced(const RunSlot& slot)
                               int(std::min<long>(steps, std::numeric_limits<int>::max()))));
 }
 
-QString FrogTab::sceneLoadError(const QString& name, const std::string& coreMessage)
+QString FrogTab::sceneLoadError(const QString& name, const Error& coreError)
 {
     QStringList names;
     for (const std::string& n : sceneNames())
         names << fromStd(n);
     // A known scene that fails to load is a fault in its file (or in how it is read):
     // the core's own message says which, and hiding it behind "unknown" hides the cause.
+    // A fault of the installation's own file is named in the core's words, as a report would
+    // quote them; a refusal the core names a sentence for is said in the interface's language.
     if (names.contains(name))
-        return tr("The scene “%1” cannot be loaded: %2").arg(name, fromStd(coreMessage));
+        return tr("The scene “%1” cannot be loaded: %2")
+            .arg(name, coreError.id == MessageId::None ? fromStd(coreError.message) : ErrorText::of(coreError));
     return tr("Unknown scene “%1”. The scenes are: %2.").arg(name, names.join(QStringLiteral(", ")));
 }
 
@@ -555,7 +559,7 @@ bool FrogTab::switchScene(const QString& name, QString* error)
 {
     auto spec = loadScene(name.toStdString());
     if (!spec) {
-        setError(error, sceneLoadError(name, spec.error().message));
+        setError(error, sceneLoadError(name, spec.error()));
         return false;
     }
     // The seed never had collisions (§5.2 is future work): those scenes start on the stable
@@ -715,7 +719,7 @@ bool FrogTab::applyParameter(const QString& key, const QJsonValue& value, QStrin
     doc.set("params", params);
     auto spec = parseScene(doc);
     if (!spec) {
-        setError(error, tr("This value was refused: %1").arg(fromStd(spec.error().message)));
+        setError(error, tr("This value was refused: %1").arg(ErrorText::of(spec.error())));
         return false;
     }
     // The core has no setter on a running Simulation: the scene is built again with the new
@@ -742,7 +746,7 @@ bool FrogTab::editParameter(const QString& key, const QJsonValue& value, QString
     // Consecutive edits of the same parameter merge, so that spinning an arrow is one step:
     // the step keeps the run from before the first of them.
     const int index = m_undo->index();
-    m_undo->push(new ValueCommand<QJsonValue>(apply, before, value, tr("Change %1").arg(key),
+    m_undo->push(new ValueCommand<QJsonValue>(apply, before, value, tr("Change %1").arg(ErrorText::parameterLabel(key.toStdString())),
                                               valueMergeId(kParameterMergeIdBase, key),
                                               {/*dropWhenUnchanged=*/false, /*appliedAlready=*/true}));
     const bool merged = m_undo->index() == index;
@@ -1064,7 +1068,7 @@ bool FrogTab::editStableSetting(const QString& key, double value, QString* error
     SceneSpec changed = sceneWithKnobsInForce();
     const auto ok = applySetting(changed, key.toStdString() + "=" + formatDouble(value));
     if (!ok) {
-        setError(error, tr("This value was refused: %1").arg(fromStd(ok.error().message)));
+        setError(error, tr("This value was refused: %1").arg(ErrorText::of(ok.error())));
         return false;
     }
     const StableSettings before = knobsInForce(), after = changed.stable;
@@ -1072,8 +1076,13 @@ bool FrogTab::editStableSetting(const QString& key, double value, QString* error
         return true;
     if (!applyStableSettings(after, error))
         return false;
+    // The undo entry names the knob by its label on screen, not its key in the file.
+    const QLabel* label = key == QLatin1String("substeps")          ? m_substepsLabel
+                          : key == QLatin1String("edge_compliance") ? m_complianceLabel
+                                                                    : m_dampingLabel;
     m_undo->push(new ValueCommand<StableSettings>([this](const StableSettings& s) { applyStableSettings(s, nullptr); }, before,
-                                                  after, tr("Change %1").arg(key), valueMergeId(kStableMergeIdBase, key),
+                                                  after, tr("Change %1").arg(label->text().remove(QLatin1Char('&'))),
+                                                  valueMergeId(kStableMergeIdBase, key),
                                                   {/*dropWhenUnchanged=*/false, /*appliedAlready=*/true}));
     return true;
 }
@@ -1227,7 +1236,7 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
     const QString name = state.value(QStringLiteral("scene")).toString();
     auto spec = loadScene(name.toStdString());
     if (!spec) {
-        setError(error, sceneLoadError(name, spec.error().message));
+        setError(error, sceneLoadError(name, spec.error()));
         return false;
     }
     SolverKind solver = SolverKind::Seed;
@@ -1259,7 +1268,7 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
         doc.set("params", merged);
         auto parsed = parseScene(doc);
         if (!parsed) {
-            setError(error, tr("This value was refused: %1").arg(fromStd(parsed.error().message)));
+            setError(error, tr("This value was refused: %1").arg(ErrorText::of(parsed.error())));
             return false;
         }
         spec = std::move(parsed);
@@ -1321,7 +1330,7 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
         doc.set("stable", fromQJson(state.value(QStringLiteral("stable"))));
         auto parsed = parseScene(doc);
         if (!parsed) {
-            setError(error, tr("This value was refused: %1").arg(fromStd(parsed.error().message)));
+            setError(error, tr("This value was refused: %1").arg(ErrorText::of(parsed.error())));
             return false;
         }
         spec = std::move(parsed);
@@ -1346,7 +1355,7 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
     if (state.contains(QStringLiteral("recording"))) {
         auto parsed = documentRunFromQJson(state.value(QStringLiteral("recording")));
         if (!parsed) {
-            setError(error, tr("The frog's recording was refused: %1").arg(fromStd(parsed.error().message)));
+            setError(error, tr("The frog's recording was refused: %1").arg(ErrorText::of(parsed.error())));
             return false;
         }
         recorded = std::move(parsed).value();

@@ -46,7 +46,7 @@ public:
     /// Opens scene `name` (docs/scenes.md) (`--scene`). False with a message for an unknown name.
     bool setScene(const QString& name, QString* error);
     /// Why the scene `name` did not load: unknown, or the core's own message for a known one.
-    static QString sceneLoadError(const QString& name, const std::string& coreMessage);
+    static QString sceneLoadError(const QString& name, const Error& coreError);
     /// Writes `frames` frames of the running scene as frame_0000.png … into `directory`,
     /// stepping the simulation at the canvas's fixed step. Empty on success, else a message.
     QString exportFrames(const QString& directory, int frames);

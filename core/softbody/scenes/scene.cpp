@@ -49,6 +49,13 @@ Error bad(const std::string& scene, const std::string& what)
     return makeError(ErrorCode::InvalidInput, "scene " + quotedForDisplay(scene) + ": " + what);
 }
 
+/// bad(), with the sentence the GUI translates (message_id.h).
+Error bad(const std::string& scene, const std::string& what, MessageId id, std::vector<MessageArg> args,
+          ErrorCode code = ErrorCode::InvalidInput)
+{
+    return makeError(code, "scene " + quotedForDisplay(scene) + ": " + what, id, std::move(args));
+}
+
 /// The keys of "stable" (StableSettings), also taken by --set on any scene.
 bool isStableKey(const std::string& key)
 {
@@ -63,7 +70,7 @@ Expected<void> setStableSetting(SceneSpec& s, const std::string& key, const Json
         return bad(s.name, "\"stable\" has substeps, edge_compliance and edge_damping_ratio, not " + quotedForDisplay(key));
     const auto number = v.asNumber();
     if (!number || !setStableKnob(s.stable, key, *number))
-        return bad(s.name, key + " must be " + stableKnobRange(key));
+        return bad(s.name, key + " must be " + stableKnobRange(key), MessageId::StableKnobOutOfRange, {textArg(key)});
     return {};
 }
 
@@ -189,15 +196,17 @@ Expected<void> setParam(SceneSpec& s, const std::string& key, const Json& v)
 {
     const SceneParameter* param = findSceneParameter(key);
     if (!param)
-        return bad(s.name, "unknown parameter " + quotedForDisplay(key));
+        return bad(s.name, "unknown parameter " + quotedForDisplay(key), MessageId::SceneUnknownParameter,
+                   {textArg(quotedForDisplay(key))});
     switch (param->type) {
     case ParameterType::Integer: {
         if (!v.isNumber() || *v.asNumber() != std::trunc(*v.asNumber()))
-            return bad(s.name, key + " must be a whole number");
+            return bad(s.name, key + " must be a whole number", MessageId::ParameterNotWhole, {textArg(key)});
         const auto n = wholeNumber(v, param->min, param->max);
         if (!n)
-            return makeError(ErrorCode::OutOfRange, "scene " + quotedForDisplay(s.name) + ": " + key + " must be between " +
-                                                        std::to_string(param->min) + " and " + std::to_string(param->max));
+            return bad(s.name, key + " must be between " + std::to_string(param->min) + " and " + std::to_string(param->max),
+                       MessageId::ParameterOutOfRange, {textArg(key), numberArg(param->min), numberArg(param->max)},
+                       ErrorCode::OutOfRange);
         param->integerIn(s) = *n;
         return {};
     }
@@ -208,7 +217,8 @@ Expected<void> setParam(SceneSpec& s, const std::string& key, const Json& v)
             return {};
         }
         if (!v.isNumber())
-            return bad(s.name, key + (radius ? " must be a number or \"frame\" (|height/6|, as Annex II)" : " must be a number"));
+            return bad(s.name, key + (radius ? " must be a number or \"frame\" (|height/6|, as Annex II)" : " must be a number"),
+                       MessageId::ParameterNotANumber, {textArg(key)});
         param->numberIn(s) = *v.asNumber();
         if (radius)
             s.radiusFromFrame = false;
@@ -222,8 +232,10 @@ Expected<void> setParam(SceneSpec& s, const std::string& key, const Json& v)
         }
         auto q = pointOf(v);
         if (!q)
-            return bad(s.name, key + (center ? " must be a pair x,y or \"frame\" (the frame's centre, as Annex II)"
-                                             : " must be a pair x,y"));
+            return bad(s.name,
+                       key + (center ? " must be a pair x,y or \"frame\" (the frame's centre, as Annex II)"
+                                     : " must be a pair x,y"),
+                       MessageId::ParameterNotAPair, {textArg(key)});
         param->pairIn(s) = *q;
         if (center)
             s.centerFromFrame = false;
@@ -286,7 +298,8 @@ Expected<void> setParam(SceneSpec& s, const std::string& key, const Json& v)
     case ParameterType::Shapes:
         return setList(s, key, v, s.shapes, [&](const Json& o, ShapeSpec& spec) { return readShape(s, o, spec); });
     }
-    return bad(s.name, "unknown parameter " + quotedForDisplay(key));
+    return bad(s.name, "unknown parameter " + quotedForDisplay(key), MessageId::SceneUnknownParameter,
+               {textArg(quotedForDisplay(key))});
 }
 
 /// The name of the first number of the scene beyond ±kMaxMagnitude, if any.
@@ -332,23 +345,28 @@ Expected<void> validate(const SceneSpec& s)
 {
     auto ok = validateFrogParams(s.params);
     if (!ok)
-        return makeError(ok.error().code, "scene " + quotedForDisplay(s.name) + ": " + ok.error().message);
+        return withContext("scene " + quotedForDisplay(s.name) + ": ", ok.error());
     if (auto big = tooLarge(s))
-        return makeError(ErrorCode::OutOfRange,
-                         "scene " + quotedForDisplay(s.name) + ": " + *big + " must be at most 1e15 in magnitude");
+        return bad(s.name, *big + " must be at most 1e15 in magnitude", MessageId::ParameterTooLarge, {textArg(*big)},
+                   ErrorCode::OutOfRange);
     if (sceneVertexCount(s) > kMaxVertices)
-        return makeError(ErrorCode::OutOfRange, "scene " + quotedForDisplay(s.name) + ": bodies × sides must be at most " +
-                                                    std::to_string(kMaxVertices) + " vertices in all: lower bodies or sides");
+        return bad(s.name,
+                   "bodies × sides must be at most " + std::to_string(kMaxVertices) + " vertices in all: lower bodies or sides",
+                   MessageId::TooManyVertices, {numberArg(static_cast<double>(kMaxVertices))}, ErrorCode::OutOfRange);
     // §4.9: the body's points are sampled once from a Bézier curve of degree `sides`, a
     // cost of sides² × bezier_samples (10 000 sides and 2000 points froze the window 48 s).
     if (s.has("outline-bezier") && s.bezierSamples >= 3 &&
         bezierBodyPointsWork(s.params.sides, s.bezierSamples) > kMaxBezierOutlineWork)
-        return makeError(ErrorCode::OutOfRange, "scene " + quotedForDisplay(s.name) + ": a Bézier curve of degree " +
-                                                    std::to_string(s.params.sides) + " sampled at " +
-                                                    std::to_string(s.bezierSamples) + " points is " +
-                                                    formatDouble(bezierBodyPointsWork(s.params.sides, s.bezierSamples)) +
-                                                    " interpolations, more than " + formatDouble(kMaxBezierOutlineWork) +
-                                                    " (sides × (sides + 1) / 2 × bezier_samples): lower sides or bezier_samples");
+        return bad(s.name,
+                   "a Bézier curve of degree " + std::to_string(s.params.sides) + " sampled at " +
+                       std::to_string(s.bezierSamples) + " points is " +
+                       formatDouble(bezierBodyPointsWork(s.params.sides, s.bezierSamples)) + " interpolations, more than " +
+                       formatDouble(kMaxBezierOutlineWork) +
+                       " (sides × (sides + 1) / 2 × bezier_samples): lower sides or bezier_samples",
+                   MessageId::BezierOutlineTooCostly,
+                   {numberArg(s.params.sides), numberArg(s.bezierSamples),
+                    numberArg(bezierBodyPointsWork(s.params.sides, s.bezierSamples)), numberArg(kMaxBezierOutlineWork)},
+                   ErrorCode::OutOfRange);
     // A document may also give the vertices themselves (shapes) or obstacles' corners.
     std::size_t shapePoints = 0, obstaclePoints = 0;
     for (const auto& sh : s.shapes)
@@ -361,12 +379,16 @@ Expected<void> validate(const SceneSpec& s)
                              (shapePoints > static_cast<std::size_t>(kMaxVertices) ? "shapes" : "obstacles") +
                              " must have at most " + std::to_string(kMaxVertices) + " points in all: lower the number of points");
     if (const long vertices = sceneVertexCount(s); s.hasParam("bodies") && vertices > kMaxPiledVertices && !bodiesFitFrame(s))
-        return makeError(ErrorCode::OutOfRange,
-                         "scene " + quotedForDisplay(s.name) + ": " + std::to_string(s.bodies) + " bodies of radius " +
-                             formatDouble(s.params.radius) + " do not fit side by side in a " + formatDouble(s.params.width) +
-                             " × " + formatDouble(s.params.height) + " px frame, and piled up their " + std::to_string(vertices) +
-                             " vertices would all touch (at most " + std::to_string(kMaxPiledVertices) +
-                             " may start piled): lower bodies, sides or radius, or raise width and height");
+        return bad(s.name,
+                   std::to_string(s.bodies) + " bodies of radius " + formatDouble(s.params.radius) +
+                       " do not fit side by side in a " + formatDouble(s.params.width) + " × " + formatDouble(s.params.height) +
+                       " px frame, and piled up their " + std::to_string(vertices) + " vertices would all touch (at most " +
+                       std::to_string(kMaxPiledVertices) +
+                       " may start piled): lower bodies, sides or radius, or raise width and height",
+                   MessageId::BodiesDoNotFit,
+                   {numberArg(s.bodies), numberArg(s.params.radius), numberArg(s.params.width), numberArg(s.params.height),
+                    numberArg(static_cast<double>(vertices)), numberArg(static_cast<double>(kMaxPiledVertices))},
+                   ErrorCode::OutOfRange);
     for (double l : s.chain)
         if (!(l >= 0) || !std::isfinite(l))
             return makeError(ErrorCode::OutOfRange,

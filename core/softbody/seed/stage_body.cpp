@@ -15,21 +15,28 @@ bool finite(Point p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 Expected<void> validateFrogParams(const FrogParams& p)
 {
     if (p.sides < 3)
-        return makeError(ErrorCode::OutOfRange, "sides must be at least 3 (a polygon), got " + std::to_string(p.sides));
+        return makeError(ErrorCode::OutOfRange, "sides must be at least 3 (a polygon), got " + std::to_string(p.sides),
+                         MessageId::SidesTooFew, {numberArg(p.sides)});
     if (p.sides > 10000)
-        return makeError(ErrorCode::OutOfRange, "sides must be at most 10000, got " + std::to_string(p.sides));
+        return makeError(ErrorCode::OutOfRange, "sides must be at most 10000, got " + std::to_string(p.sides),
+                         MessageId::SidesTooMany, {numberArg(p.sides), numberArg(10000)});
     if (!(p.width >= 1) || !(p.height >= 1) || !std::isfinite(p.width) || !std::isfinite(p.height))
-        return makeError(ErrorCode::OutOfRange, "the frame must be at least 1 × 1 px");
+        return makeError(ErrorCode::OutOfRange, "the frame must be at least 1 × 1 px", MessageId::FrameTooSmall, {});
     if (!(p.radius >= 0) || !std::isfinite(p.radius))
-        return makeError(ErrorCode::OutOfRange, "radius must be a finite number ≥ 0");
+        return makeError(ErrorCode::OutOfRange, "radius must be a finite number ≥ 0", MessageId::ParameterNotFinite,
+                         {textArg("radius"), textArg("≥ 0")});
     if (!(p.targetArea >= 0) || !std::isfinite(p.targetArea))
-        return makeError(ErrorCode::OutOfRange, "target_area must be a finite number ≥ 0");
+        return makeError(ErrorCode::OutOfRange, "target_area must be a finite number ≥ 0", MessageId::ParameterNotFinite,
+                         {textArg("target_area"), textArg("≥ 0")});
     if (!(p.springLength >= 0) || !std::isfinite(p.springLength))
-        return makeError(ErrorCode::OutOfRange, "spring_length must be a finite number ≥ 0");
+        return makeError(ErrorCode::OutOfRange, "spring_length must be a finite number ≥ 0", MessageId::ParameterNotFinite,
+                         {textArg("spring_length"), textArg("≥ 0")});
     if (!(p.velmax >= 0) || !std::isfinite(p.velmax))
-        return makeError(ErrorCode::OutOfRange, "velmax must be a finite number ≥ 0");
+        return makeError(ErrorCode::OutOfRange, "velmax must be a finite number ≥ 0", MessageId::ParameterNotFinite,
+                         {textArg("velmax"), textArg("≥ 0")});
     if (!std::isfinite(p.areaFactor))
-        return makeError(ErrorCode::InvalidInput, "area_factor must be a finite number");
+        return makeError(ErrorCode::InvalidInput, "area_factor must be a finite number", MessageId::ParameterNotFinite,
+                         {textArg("area_factor"), textArg("")});
     for (Point q : {p.gravity, p.friction, p.v0, p.center})
         if (!finite(q))
             return makeError(ErrorCode::InvalidInput, "gravity, friction, v0 and center must be finite");
