@@ -178,6 +178,34 @@ private slots:
         QVERIFY2(bottom.top() > 2, "the bottom is taken: the inset goes up");
     }
 
+    // The Catmull-Rom TikZ has what the canvas shows: the dashed polygon of the points q_i
+    // (their coordinates, in order) and the key with a line per τ, its colour and the text
+    // of the canvas's key in TeX.
+    void catmullRomTikzHasTheKeyAndThePolygon()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("catmull-rom")));
+        QVERIFY(loadExamples(window, {"2.13"}));
+        auto* tab = window.findChild<CatmullRomTab*>();
+        QVERIFY(tab);
+        const QString tex = tab->tikz();
+        const auto& points = tab->pointEditor()->points();
+        // The polygon: a dashed line through as many coordinates as there are points.
+        bool polygon = false;
+        for (const QString& line : tex.split(QLatin1Char('\n')))
+            if (line.contains(QStringLiteral("dashed")) && line.startsWith(QStringLiteral("  \\draw[")) &&
+                coordinatesOf(line).size() == points.size() && !line.contains(QStringLiteral("cycle")))
+                polygon = true;
+        QVERIFY2(polygon, qPrintable(tex));
+        // The key: one line per entry of the canvas's key, τ written as TeX.
+        QVERIFY2(tex.contains(QStringLiteral("% key")), qPrintable(tex));
+        const auto legend = tab->legend();
+        QVERIFY(!legend.entries.empty());
+        for (const auto& entry : legend.entries)
+            QVERIFY2(tex.contains(TikzWriter::texText(entry.text)), qPrintable(entry.text));
+        QVERIFY(tex.contains(QStringLiteral("$\\tau$ = 1/2")));
+    }
+
     // De Casteljau's tangent and normal are arrows in TikZ, as on the canvas: each `\draw`
     // from c(t) has an arrowhead (-stealth).
     void deCasteljauVectorsAreArrows()
