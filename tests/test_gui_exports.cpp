@@ -218,6 +218,35 @@ private slots:
         const QStringList arrows = tex.split(QLatin1Char('\n')).filter(QStringLiteral("-stealth"));
         QVERIFY2(arrows.size() >= 2, qPrintable(tex));
     }
+
+    // The frog's TikZ is drawn as the canvas draws it: bodies filled with the skin's colour,
+    // legs filled, feet drawn, everything clipped to the frame (the feet of the frog on the
+    // floor reach below it; the canvas clips them).
+    void frogTikzIsFilledAndInsideTheFrame()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("frog")));
+        auto* tab = window.findChild<FrogTab*>();
+        QVERIFY(tab);
+        const QString tex = tab->tikz();
+        QVERIFY2(tex.contains(QStringLiteral("fill=g30A130")), qPrintable(tex)); // the seed's fill(48, 161, 48)
+        const int clip = static_cast<int>(tex.indexOf(QStringLiteral("\\clip")));
+        QVERIFY2(clip > 0, qPrintable(tex));
+        // The frame is the first \draw; the clip is its rectangle.
+        const QStringList lines = tex.split(QLatin1Char('\n'));
+        std::vector<QPointF> frame;
+        for (const QString& line : lines)
+            if (line.contains(QStringLiteral("\\draw[")) && frame.empty())
+                frame = coordinatesOf(line);
+        QCOMPARE(frame.size(), std::size_t(4));
+        const QRectF box = QRectF(frame[0], frame[2]).normalized();
+        const QString clipLine = tex.mid(clip, tex.indexOf(QLatin1Char('\n'), clip) - clip);
+        const std::vector<QPointF> corners = coordinatesOf(clipLine);
+        QCOMPARE(corners.size(), std::size_t(2));
+        QCOMPARE(QRectF(corners[0], corners[1]).normalized(), box);
+        // Every body and leg is drawn after the clip, inside its scope.
+        QVERIFY(tex.indexOf(QStringLiteral("fill=g30A130")) > clip);
+    }
 };
 
 GRANOTA_TEST_MAIN(TestGuiExports)

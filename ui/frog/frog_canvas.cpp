@@ -27,7 +27,7 @@ namespace {
 /// Samples of the per-frame least-squares Bézier curve (§4.9's abandoned option).
 constexpr int kFitSamples = 160;
 /// Annex II, Pota.dibuixar: `factor = 7`, the half-thickness of a leg.
-constexpr double kLegFactor = 7;
+constexpr double kLegFactor = FrogCanvas::kLegHalfWidth;
 /// The head image's size in Annex II belongs to the frog's target area, Areal = 20000 px².
 constexpr double kSeedTargetArea = 20000;
 /// Velocity arrows: the step's displacement drawn this many times longer.

@@ -216,6 +216,10 @@ public:
     /// curveVertex outline, the closed Catmull-Rom curve or the fitted Bézier curve, as the
     /// scene's components say. Valid until the next call.
     const std::vector<Point>& bodyOutline(int body);
+    /// The art the canvas paints with (its colours and the feet), for the TikZ picture.
+    const FrogArt& art() const { return m_art; }
+    /// The half width of a leg's outline (Annex II, Pota.dibuixar: the factor 7).
+    static constexpr double kLegHalfWidth = 7;
 
     /// The letterbox transform of the widget: scene pixels ↔ widget pixels.
     QPointF toWidget(const Point& scenePoint) const;
