@@ -47,6 +47,42 @@ using granota::ui::TikzWriter;
 
 namespace {
 
+/// The QSettings key of the folder used last (ui/shell/file_dialogs.h), written out: the
+/// test sets it as a user's earlier session would have.
+const QString kLastFolder = QStringLiteral("files/lastFolder");
+
+/// Runs `open` (which shows modal dialogs) and answers them as a user would: an input dialog
+/// with `answerInput` (or accepted as it is), the first file dialog with `answerFile` (or
+/// rejected). Returns the folder the file dialog opened in (empty if none opened).
+QString folderOfFileDialog(const std::function<void()>& open,
+                           const std::function<void(QFileDialog&)>& answerFile = nullptr,
+                           const std::function<void(QInputDialog&)>& answerInput = nullptr)
+{
+    QString folder;
+    QTimer poll;
+    poll.setInterval(10);
+    QObject::connect(&poll, &QTimer::timeout, [&] {
+        QWidget* modal = QApplication::activeModalWidget();
+        if (auto* input = qobject_cast<QInputDialog*>(modal)) {
+            if (answerInput)
+                answerInput(*input);
+            input->accept();
+        } else if (auto* files = qobject_cast<QFileDialog*>(modal)) {
+            folder = files->directory().absolutePath();
+            if (answerFile)
+                answerFile(*files);
+            else
+                files->reject();
+        } else if (modal) {
+            modal->close(); // a message box: not what is tested
+        }
+    });
+    poll.start();
+    open();
+    poll.stop();
+    return folder;
+}
+
 /// Every "(x,y)" of `line`, in cm.
 std::vector<QPointF> coordinatesOf(const QString& line)
 {
@@ -246,6 +282,69 @@ private slots:
         QCOMPARE(QRectF(corners[0], corners[1]).normalized(), box);
         // Every body and leg is drawn after the clip, inside its scope.
         QVERIFY(tex.indexOf(QStringLiteral("fill=g30A130")) > clip);
+    }
+
+    // Every file dialog opens in the folder used last (a setting kept across sessions), not
+    // in $HOME or the working folder; a file saved elsewhere makes its folder the one used last.
+    void fileDialogsOpenInTheFolderUsedLast()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("fit")));
+        QTemporaryDir first, second;
+        QSettings().setValue(kLastFolder, first.path());
+        const QString expected = QDir(first.path()).absolutePath();
+        const auto action = [&window](const QString& text) -> QAction* {
+            for (QAction* a : window.findChildren<QAction*>())
+                if (a->text() == text)
+                    return a;
+            return nullptr;
+        };
+        for (const char* text : {"&Open…", "Save &As…", "SVG drawing…"}) {
+            QAction* a = action(MainWindow::tr(text));
+            QVERIFY2(a, text);
+            QCOMPARE(folderOfFileDialog([a] { a->trigger(); }), expected);
+        }
+        QAbstractButton* import = nullptr;
+        for (QAbstractButton* b : window.findChildren<QAbstractButton*>())
+            if (b->text() == QCoreApplication::translate("granota::ui::FitTab", "&Import CSV…"))
+                import = b;
+        QVERIFY(import);
+        QCOMPARE(folderOfFileDialog([import] { import->click(); }), expected);
+        QVERIFY(window.showTab(QStringLiteral("frog")));
+        QAction* frames = action(MainWindow::tr("Frog animation as PNG frames…"));
+        QVERIFY(frames);
+        QCOMPARE(folderOfFileDialog([frames] { frames->trigger(); }), expected);
+        // A drawing saved in the second folder: the next dialog opens there.
+        QVERIFY(window.showTab(QStringLiteral("fit")));
+        const QString svg = QDir(second.path()).filePath(QStringLiteral("fit.svg"));
+        folderOfFileDialog([&] { action(MainWindow::tr("SVG drawing…"))->trigger(); },
+                           [&svg](QFileDialog& d) {
+                               d.selectFile(svg);
+                               QMetaObject::invokeMethod(&d, "accept"); // a protected slot
+                           });
+        QVERIFY(QFileInfo::exists(svg));
+        QCOMPARE(folderOfFileDialog([&] { action(MainWindow::tr("&Open…"))->trigger(); }),
+                 QDir(second.path()).absolutePath());
+    }
+
+    // No dialog of the application calls QFileDialog's static functions itself: they all go
+    // through ui/shell/file_dialogs (which remembers the folder).
+    void everyFileDialogGoesThroughTheHelper()
+    {
+        QDirIterator it(QStringLiteral(GRANOTA_SOURCE_DIR "/ui"), {QStringLiteral("*.cpp")}, QDir::Files,
+                        QDirIterator::Subdirectories);
+        int files = 0;
+        while (it.hasNext()) {
+            const QString path = it.next();
+            ++files;
+            if (path.endsWith(QStringLiteral("shell/file_dialogs.cpp")))
+                continue;
+            QFile f(path);
+            QVERIFY(f.open(QIODevice::ReadOnly));
+            const QString text = QString::fromUtf8(f.readAll());
+            QVERIFY2(!text.contains(QStringLiteral("QFileDialog::get")), qPrintable(path));
+        }
+        QVERIFY(files > 20);
     }
 };
 

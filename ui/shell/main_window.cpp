@@ -5,6 +5,7 @@
 #include "ui/catmull_rom/catmull_rom_tab.h"
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/shell/exporter.h"
+#include "ui/shell/file_dialogs.h"
 #include "ui/fit/fit_tab.h"
 #include "ui/frog/frog_tab.h"
 #include "ui/shell/language.h"
@@ -20,7 +21,6 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QFile>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
 #include <QLabel>
@@ -500,8 +500,8 @@ void MainWindow::exportDialog(const QString& format)
     if (format == QLatin1String("tikz") && !TikzOptionsDialog::ask(this, &tikz))
         return;
     const QString extension = format == QLatin1String("tikz") ? QStringLiteral("tex") : format;
-    const QString file = QFileDialog::getSaveFileName(this, tr("Export"), page->key() + QLatin1Char('.') + extension,
-                                                      tr("%1 files (*.%2)").arg(format.toUpper(), extension));
+    const QString file = saveFileName(this, tr("Export"), page->key() + QLatin1Char('.') + extension,
+                                      tr("%1 files (*.%2)").arg(format.toUpper(), extension));
     if (file.isEmpty())
         return;
     const QString error = exportCurrent(format, file, dpi, tikz);
@@ -519,7 +519,7 @@ void MainWindow::exportFramesDialog()
                                             &ok);
     if (!ok)
         return;
-    const QString directory = QFileDialog::getExistingDirectory(this, tr("Folder for the frames"));
+    const QString directory = existingFolder(this, tr("Folder for the frames"));
     if (directory.isEmpty())
         return;
     const QString error = frog->exportFrames(directory, frames);
