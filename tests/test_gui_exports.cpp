@@ -284,6 +284,67 @@ private slots:
         QVERIFY(tex.indexOf(QStringLiteral("fill=g30A130")) > clip);
     }
 
+    // File ▸ Export ▸ Frog animation as PNG frames, through its dialogs while the run goes on:
+    // 3 frames of the size chosen (the default, 1280 × 720, even sides), frame k the picture
+    // of the run at the step shown when the menu was chosen plus k (rendered here after
+    // going back to that step), without the text panel although the frame time and the
+    // readouts are on (the canvas's own rendering with them differs).
+    void frogFramesAreOneStepApartAtVideoSize()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("frog")));
+        auto* tab = window.findChild<FrogTab*>();
+        auto* canvas = window.findChild<granota::ui::FrogCanvas*>();
+        QVERIFY(tab && canvas);
+        QTRY_VERIFY(canvas->simulation() && canvas->simulation()->stepCount() > 5); // running
+        granota::ui::FrogCanvas::Overlays live;
+        live.frameTime = true;
+        live.readouts = true;
+        canvas->setOverlays(live);
+        QTemporaryDir dir;
+        QAction* frames = nullptr;
+        for (QAction* a : window.findChildren<QAction*>())
+            if (a->text() == MainWindow::tr("Frog animation as PNG frames…"))
+                frames = a;
+        QVERIFY(frames);
+        long shown = -1;
+        folderOfFileDialog(
+            [&] {
+                shown = canvas->simulation()->stepCount();
+                frames->trigger();
+            },
+            [&](QFileDialog& d) {
+                d.setDirectory(dir.path());
+                QMetaObject::invokeMethod(&d, "accept"); // a protected slot
+            },
+            [](QInputDialog& d) {
+                if (d.inputMode() == QInputDialog::IntInput)
+                    d.setIntValue(3);
+            });
+        QDir out(dir.path());
+        QCOMPARE(out.entryList({QStringLiteral("frame_*.png")}, QDir::Files).size(), 3);
+        const auto picture = [canvas](QSize size, bool textPanel) {
+            QImage image(size, QImage::Format_ARGB32_Premultiplied);
+            image.fill(Qt::white);
+            QPainter p(&image);
+            if (textPanel)
+                canvas->render(p, QRectF(QPointF(0, 0), QSizeF(size)));
+            else
+                canvas->renderFrame(p, QRectF(QPointF(0, 0), QSizeF(size)));
+            p.end();
+            return image.convertToFormat(QImage::Format_ARGB32);
+        };
+        for (int k = 0; k < 3; ++k) {
+            const QImage frame(out.filePath(QStringLiteral("frame_%1.png").arg(k, 4, 10, QLatin1Char('0'))));
+            QCOMPARE(frame.size(), QSize(1280, 720));
+            QVERIFY(canvas->seek(shown + k));
+            const QImage expected = picture(frame.size(), false);
+            QVERIFY2(frame.convertToFormat(QImage::Format_ARGB32) == expected,
+                     qPrintable(QStringLiteral("frame %1 is not step %2").arg(k).arg(shown + k)));
+            QVERIFY(picture(frame.size(), true) != expected); // the readouts were on
+        }
+    }
+
     // Every file dialog opens in the folder used last (a setting kept across sessions), not
     // in $HOME or the working folder; a file saved elsewhere makes its folder the one used last.
     void fileDialogsOpenInTheFolderUsedLast()

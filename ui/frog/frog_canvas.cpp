@@ -907,7 +907,11 @@ void FrogCanvas::paintEvent(QPaintEvent*)
     ++m_draws;
 }
 
-void FrogCanvas::render(QPainter& p, const QRectF& target)
+void FrogCanvas::render(QPainter& p, const QRectF& target) { renderScene(p, target, true); }
+
+void FrogCanvas::renderFrame(QPainter& p, const QRectF& target) { renderScene(p, target, false); }
+
+void FrogCanvas::renderScene(QPainter& p, const QRectF& target, bool textPanel)
 {
     p.save();
     p.setRenderHint(QPainter::Antialiasing, true);
@@ -982,7 +986,8 @@ void FrogCanvas::render(QPainter& p, const QRectF& target)
     // The text panel may run below a small scene (presentation mode on a narrow canvas): it
     // is clipped to the canvas, not to the scene.
     p.setClipRect(target);
-    drawTextPanel(p, r);
+    if (textPanel)
+        drawTextPanel(p, r);
     p.restore();
 }
 

@@ -227,6 +227,9 @@ public:
 
     QSizeF exportSize() const override { return size(); }
     void render(QPainter& painter, const QRectF& target) override;
+    /// The scene and its overlays as render() draws them, without the text panel: a frame of
+    /// an animation carries no live readout (frame time, energies) that would be stale in it.
+    void renderFrame(QPainter& painter, const QRectF& target);
 
     QSize sizeHint() const override { return {960, 540}; }
     QSize minimumSizeHint() const override { return {80, 45}; }
@@ -317,6 +320,7 @@ private:
     void drawObstacles(QPainter& p);
     void drawOverlays(QPainter& p, double pixel);
     void drawTextPanel(QPainter& p, const QRectF& sceneRect);
+    void renderScene(QPainter& p, const QRectF& target, bool textPanel);
     void fillPath(const std::vector<Point>& points, bool close);
 
     std::unique_ptr<RecordedRun> m_run;

@@ -1382,22 +1382,36 @@ void FrogTab::drawTikz(TikzWriter& w) const
         }
 }
 
-QString FrogTab::exportFrames(const QString& directory, int frames)
+long FrogTab::shownStep() const
+{
+    const Simulation* sim = m_canvas->simulation();
+    return sim ? sim->stepCount() : 0;
+}
+
+QString FrogTab::exportFrames(const QString& directory, int frames, QSize size, long firstStep)
 {
     if (frames < 1)
         return tr("The number of frames must be at least 1.");
     if (directory.isEmpty() || (!QDir(directory).exists() && !QDir().mkpath(directory)))
         return tr("Cannot create the folder “%1”.").arg(directory);
+    if (!m_canvas->simulation())
+        return tr("There is no scene to export.");
     const QDir dir(directory);
-    QSize size = m_canvas->size();
+    size = QSize(size.width() / 2 * 2, size.height() / 2 * 2); // even sides: yuv420p video
     if (size.width() < 16 || size.height() < 16)
-        size = QSize(1280, 720); // a canvas never shown: the seed's own frame
+        size = kFrameSize;
+    // The run pauses (its timer would step it between frames) and goes back to the step the
+    // user saw; the recorded run replays from there exactly.
+    if (!m_pause->isChecked())
+        m_pause->setChecked(true);
+    if (firstStep >= 0 && firstStep != shownStep() && !m_canvas->seek(firstStep))
+        return tr("Step %1 is no longer recorded.").arg(firstStep);
     QImage image(size, QImage::Format_ARGB32_Premultiplied);
     for (int i = 0; i < frames; ++i) {
         image.fill(Qt::white);
         {
             QPainter p(&image);
-            m_canvas->render(p, QRectF(QPointF(0, 0), QSizeF(size)));
+            m_canvas->renderFrame(p, QRectF(QPointF(0, 0), QSizeF(size)));
         }
         const QString file = dir.filePath(QStringLiteral("frame_%1.png").arg(i, 4, 10, QLatin1Char('0')));
         if (const QString error = writePngFile(image, file); !error.isEmpty())

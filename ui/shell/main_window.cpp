@@ -514,15 +514,25 @@ void MainWindow::exportDialog(const QString& format)
 void MainWindow::exportFramesDialog()
 {
     FrogTab* frog = frogTab();
+    // The frames start at the step shown now: the run goes on behind the dialogs.
+    const long shown = frog->shownStep();
     bool ok = false;
     const int frames = QInputDialog::getInt(this, tr("Frog animation"), tr("Number of frames (60 per second):"), 120, 1, 3600, 1,
                                             &ok);
     if (!ok)
         return;
+    const QList<QSize> sizes = {FrogTab::kFrameSize, {1920, 1080}, {854, 480}};
+    QStringList names;
+    for (const QSize& s : sizes)
+        names << tr("%1 × %2 pixels").arg(s.width()).arg(s.height());
+    const QString name = QInputDialog::getItem(this, tr("Frog animation"), tr("Size of the frames (video):"), names, 0, false,
+                                               &ok);
+    if (!ok)
+        return;
     const QString directory = existingFolder(this, tr("Folder for the frames"));
     if (directory.isEmpty())
         return;
-    const QString error = frog->exportFrames(directory, frames);
+    const QString error = frog->exportFrames(directory, frames, sizes.value(names.indexOf(name), FrogTab::kFrameSize), shown);
     if (error.isEmpty())
         showMessage(tr("Wrote %n frames.", nullptr, frames));
     else
