@@ -203,7 +203,9 @@ void MainWindow::createActions()
     m_save->setShortcut(QKeySequence::Save);
     connect(m_save, &QAction::triggered, this, [this] { m_document->saveDialog(false); });
     m_saveAs = new QAction(this);
-    m_saveAs->setShortcut(QKeySequence::SaveAs);
+    // QKeySequence::SaveAs is empty in some key themes (X11 without KDE, offscreen):
+    // docs/classroom.md promises Ctrl+Shift+S everywhere.
+    m_saveAs->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
     connect(m_saveAs, &QAction::triggered, this, [this] { m_document->saveDialog(true); });
     m_quit = new QAction(this);
     m_quit->setShortcut(QKeySequence::Quit);
