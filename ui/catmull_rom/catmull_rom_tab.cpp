@@ -959,6 +959,11 @@ void CatmullRomTab::drawCurves(QPainter& p, const ViewTransform& view, const Can
 
 void CatmullRomTab::drawLegend(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const
 {
+    drawCanvasLegend(p, view, style, legend());
+}
+
+CanvasLegend CatmullRomTab::legend() const
+{
     CanvasLegend legend;
     legend.alertColor = kErrorColor;
     for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.curves.size(); ++i) {
@@ -977,7 +982,7 @@ void CatmullRomTab::drawLegend(QPainter& p, const ViewTransform& view, const Can
     for (const auto& c : m_scene.curves)
         if (!c.error.isEmpty())
             legend.note = c.error;
-    drawCanvasLegend(p, view, style, legend);
+    return legend;
 }
 
 // ---------------------------------------------------------------- examples and documents
@@ -1138,8 +1143,12 @@ QString CatmullRomTab::csv() const
 void CatmullRomTab::drawTikz(TikzWriter& w) const
 {
     w.comment(QStringLiteral("Catmull-Rom curves (thesis §2.2), mode %1").arg(endsKey(m_settings.ends)));
+    const auto& points = m_editor->points();
+    // The polygon of the points q_i, dashed and thin, as the point editor draws it.
+    if (m_settings.controlPoints && m_editor->polygonVisible())
+        w.polyline(points, CanvasStyle().polygon, 0.6, true);
     if (!m_scene.bezier.empty())
-        w.polyline(m_scene.bezier, kBezierColor, 1.0, true);
+        w.polyline(m_scene.bezier, kBezierColor, 1.0, Qt::DashDotLine);
     // The Catmull-Rom segments and the spline's pieces are cubics: written as Bézier segments.
     if (!m_scene.splineBezier.empty())
         w.bezierSegments(m_scene.splineBezier, kSplineColor, 1.0);
@@ -1149,9 +1158,14 @@ void CatmullRomTab::drawTikz(TikzWriter& w) const
         w.comment(QStringLiteral("tau = %1").arg(tauString(m_scene.curves[i].tau)));
         w.bezierSegments(m_scene.curves[i].bezier, CanvasStyle::series(static_cast<int>(i)), 1.2);
     }
-    const auto& points = m_editor->points();
     for (std::size_t i = 0; m_settings.controlPoints && i < points.size(); ++i)
         w.point(points[i], CanvasStyle().handle, QStringLiteral("q_{%1}").arg(i));
+    // The canvas's key: the same lines in TeX.
+    const CanvasLegend key = legend();
+    std::vector<TikzLegendEntry> entries;
+    for (const CanvasLegendEntry& e : key.entries)
+        entries.push_back({e.color, e.pen, TikzWriter::texText(e.text)});
+    w.legend(entries, TikzWriter::texText(key.note), key.alertColor);
 }
 
 void CatmullRomTab::presentationChanged(bool)

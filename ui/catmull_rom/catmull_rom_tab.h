@@ -10,6 +10,7 @@
 
 #include "ui/catmull_rom/catmull_rom_curves.h"
 #include "ui/catmull_rom/catmull_rom_settings.h"
+#include "ui/common/canvas_legend.h"
 #include "ui/common/curve_tab.h"
 
 class QCheckBox;
@@ -68,6 +69,9 @@ public:
     void setCompareEnds(bool on);
     void setAllTausInPlot(bool on);
     void setCurvaturePlot(bool on);
+    /// The key in the canvas's corner (and in the TikZ picture): each τ's colour, the compared
+    /// ends, the Bézier curve and the spline, and a refusal as its note.
+    CanvasLegend legend() const;
 
 protected:
     void drawTikz(TikzWriter& w) const override;

@@ -55,17 +55,20 @@ QSizeF canvasLegendSize(const ViewTransform& view, const CanvasStyle& style, con
     return legendMetrics(view, style, legend, compact).size;
 }
 
+double canvasCoverCost(const QRectF& box, const CanvasLegendObstacles& obstacles)
+{
+    double c = 0;
+    for (const QRectF& r : obstacles.keepClear)
+        c += box.intersects(r) ? CanvasLegendObstacles::kKeepClearCost : 0.0;
+    for (const QPointF& q : obstacles.points)
+        c += box.contains(q) ? 1.0 : 0.0;
+    return c;
+}
+
 CanvasLegendBox canvasLegendRect(const ViewTransform& view, const CanvasStyle& style, const CanvasLegend& legend,
                                  const CanvasLegendObstacles& obstacles)
 {
-    const auto cost = [&obstacles](const QRectF& box) {
-        double c = 0;
-        for (const QRectF& r : obstacles.keepClear)
-            c += box.intersects(r) ? CanvasLegendObstacles::kKeepClearCost : 0.0;
-        for (const QPointF& q : obstacles.points)
-            c += box.contains(q) ? 1.0 : 0.0;
-        return c;
-    };
+    const auto cost = [&obstacles](const QRectF& box) { return canvasCoverCost(box, obstacles); };
     const QRectF area = view.viewport().adjusted(8 * style.scale, 8 * style.scale, -8 * style.scale, -8 * style.scale);
     CanvasLegendBox best;
     double bestCost = std::numeric_limits<double>::infinity();

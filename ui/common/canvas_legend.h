@@ -43,6 +43,11 @@ struct CanvasLegendObstacles {
     static constexpr double kKeepClearCost = 1000.0;
 };
 
+/// What covering `box` costs (the measure canvasLegendRect() minimises): 1 a point inside it,
+/// kKeepClearCost a keepClear rectangle it overlaps. The De Casteljau tab places its
+/// hodograph's inset with it too.
+double canvasCoverCost(const QRectF& box, const CanvasLegendObstacles& obstacles);
+
 /// Where a key is drawn, and whether in its compact form (a smaller font, tighter lines and
 /// shorter swatches: for a small canvas, where the full key would cover a point).
 struct CanvasLegendBox {

@@ -98,6 +98,7 @@ public:
     void setHandleColor(const QColor& c) { m_color = c; }
     /// Whether the editor draws the polygon through the points (control polygon).
     void setPolygonVisible(bool on) { m_polygonVisible = on; }
+    bool polygonVisible() const { return m_polygonVisible; }
     void setEnabled(bool on) { m_enabled = on; }
     /// Whether the handles, their labels and the polygon are drawn at all (the thesis's Matlab
     /// `puntsvis`): hidden, the points are neither drawn nor picked by the mouse (nothing

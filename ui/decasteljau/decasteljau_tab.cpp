@@ -44,6 +44,7 @@
 #include <algorithm>
 #include <functional>
 #include <initializer_list>
+#include <limits>
 #include <cmath>
 #include <optional>
 
@@ -614,6 +615,14 @@ QRectF DeCasteljauTab::legendRect(const ViewTransform& view, const CanvasStyle& 
 
 CanvasLegendBox DeCasteljauTab::legendBox(const ViewTransform& view, const CanvasStyle& style) const
 {
+    CanvasLegendObstacles avoid = drawnObstacles(view, style);
+    if (const QRectF inset = hodographInset(view, style); !inset.isEmpty())
+        avoid.keepClear.push_back(inset);
+    return canvasLegendRect(view, style, legend(), avoid);
+}
+
+CanvasLegendObstacles DeCasteljauTab::drawnObstacles(const ViewTransform& view, const CanvasStyle& style) const
+{
     CanvasLegendObstacles avoid;
     for (const Point& q : m_curve)
         avoid.points.push_back(view.toScreen(q));
@@ -640,25 +649,37 @@ CanvasLegendBox DeCasteljauTab::legendBox(const ViewTransform& view, const Canva
             QRectF(s - QPointF(r, r),
                    QSizeF(2 * r + 4 * style.scale + fm.horizontalAdvance(QStringLiteral("c(t)")), 2 * r + 12 * style.scale)));
     }
-    if (const QRectF inset = hodographInset(view.viewport(), style); !inset.isEmpty())
-        avoid.keepClear.push_back(inset);
-    return canvasLegendRect(view, style, legend(), avoid);
+    return avoid;
 }
 
-QRectF DeCasteljauTab::hodographInset(const QRectF& viewport, const CanvasStyle& style) const
+QRectF DeCasteljauTab::hodographInset(const ViewTransform& view, const CanvasStyle& style) const
 {
     if (!m_showHodograph || m_hodoLevels.levels.empty())
         return {};
+    const QRectF viewport = view.viewport();
     const double margin = 8 * style.scale;
-    // A corner of the canvas, small enough to leave the curve its room (in presentation mode too).
+    // A corner of the canvas, small enough to leave the curve its room (in presentation mode
+    // too): the one that covers least of what is drawn, as the key chooses its place.
     const double w = std::min(viewport.width() * 0.3, 260.0 * style.scale);
     const double h = std::min(w * 0.75, viewport.height() * 0.32);
-    return QRectF(viewport.right() - margin - w, viewport.bottom() - margin - h, w, h);
+    const double left = viewport.left() + margin, right = viewport.right() - margin - w;
+    const double top = viewport.top() + margin, bottom = viewport.bottom() - margin - h;
+    const CanvasLegendObstacles avoid = drawnObstacles(view, style);
+    QRectF best;
+    double least = std::numeric_limits<double>::infinity();
+    for (const QPointF& corner : {QPointF(right, bottom), QPointF(left, bottom), QPointF(right, top), QPointF(left, top)}) {
+        const QRectF box(corner, QSizeF(w, h));
+        if (const double cost = canvasCoverCost(box, avoid); cost < least) {
+            least = cost;
+            best = box;
+        }
+    }
+    return best;
 }
 
 void DeCasteljauTab::drawHodographInset(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const
 {
-    const QRectF inset = hodographInset(view.viewport(), style);
+    const QRectF inset = hodographInset(view, style);
     if (inset.isEmpty())
         return;
     p.setPen(QPen(style.gridMajor, style.thinLine()));
@@ -1490,13 +1511,14 @@ void DeCasteljauTab::drawTikz(TikzWriter& w) const
             w.point(deCasteljauPoint(points, t), kCuspColour, QStringLiteral("\\mathrm{cusp}"));
     }
     const int n = m_levels.degree();
+    // Arrows, as on the canvas: c′(t)/n and N(t) are vectors from c(t).
     if (m_showTangent && n >= 1 && isFinite(m_levels.point()) && isFinite(m_levels.tangent()))
-        w.polyline({m_levels.point(), m_levels.point() + (1.0 / n) * m_levels.tangent()}, kTangentColour, 1.0);
+        w.arrow(m_levels.point(), m_levels.point() + (1.0 / n) * m_levels.tangent(), kTangentColour, 1.0);
     if (m_showNormal && n >= 1 && m_curvature.normal) {
         const double length = std::hypot(m_curvature.tangent.x, m_curvature.tangent.y) / n;
         const Point tip = m_curvature.point + length * *m_curvature.normal;
         if (isFinite(tip))
-            w.polyline({m_curvature.point, tip}, kNormalColour, 1.0);
+            w.arrow(m_curvature.point, tip, kNormalColour, 1.0);
     }
     const QRectF content = contentBounds();
     const double contentSize = std::max(content.width(), content.height());
@@ -1534,10 +1556,16 @@ void DeCasteljauTab::drawTikz(TikzWriter& w) const
                 w.polyline(m_hodoLevels.levels[static_cast<std::size_t>(r)], CanvasStyle::series(r), 0.4);
         for (const Point& q : H)
             w.point(q, style.handle);
-        w.polyline({{0, 0}, m_hodoLevels.point()}, kTangentColour, 0.8);
+        w.arrow({0, 0}, m_hodoLevels.point(), kTangentColour, 0.8);
         w.point(m_hodoLevels.point(), style.curve, QStringLiteral("c'(t)"));
         w.endInset();
     }
+    // The canvas's key, placed as it is: where it covers least, clear of the inset.
+    const CanvasLegend key = legend();
+    std::vector<TikzLegendEntry> entries;
+    for (const CanvasLegendEntry& e : key.entries)
+        entries.push_back({e.color, e.pen, TikzWriter::texText(e.text)});
+    w.legend(entries, TikzWriter::texText(key.note), key.alertColor);
 }
 
 void DeCasteljauTab::presentationChanged(bool on)

@@ -105,8 +105,10 @@ public:
     QString readout() const;
     /// The hodograph's control points n (P_{i+1} − P_i) and its construction at t.
     const DeCasteljauTable<double>& hodographTable() const { return m_hodoLevels; }
-    /// Where the hodograph's inset is drawn in a viewport (empty when it is hidden).
-    QRectF hodographInset(const QRectF& viewport, const CanvasStyle& style) const;
+    /// Where the hodograph's inset is drawn in a view (empty when it is hidden): the corner of
+    /// the viewport that covers least of the curve, the handles, their labels and c(t) (as the
+    /// key is placed; the lower right winning a tie, then lower left, upper right, upper left).
+    QRectF hodographInset(const ViewTransform& view, const CanvasStyle& style) const;
     DeCasteljauCurveDrag* curveDrag() const { return m_curveDrag; }
 
     bool isPlaying() const;
@@ -130,6 +132,9 @@ public:
     QRectF legendRect(const ViewTransform& view, const CanvasStyle& style) const;
     /// The same, and whether the key is compact (a small canvas).
     CanvasLegendBox legendBox(const ViewTransform& view, const CanvasStyle& style) const;
+    /// What the key and the inset should not cover in a view: the curve's samples, the
+    /// construction's points, the handles with their labels and c(t) with its label.
+    CanvasLegendObstacles drawnObstacles(const ViewTransform& view, const CanvasStyle& style) const;
     /// The side of the squares that mark the halves' control points (over the level's dots).
     static double splitSquareSide(const CanvasStyle& style);
     /// The warning shown for high degrees; empty when there is none.

@@ -24,6 +24,7 @@
 #include "ui/common/presentation_scale.h"
 #include "ui/common/vertical_scroll_area.h"
 #include "ui/common/value_command.h"
+#include "ui/shell/file_dialogs.h"
 #include "ui/shell/tikz_writer.h"
 #include "ui/shell/user_file.h"
 
@@ -31,7 +32,6 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFile>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -1024,8 +1024,7 @@ bool FitTab::importFile(const QString& path, QString* error)
 
 void FitTab::importDialog()
 {
-    const QString path = QFileDialog::getOpenFileName(this, tr("Import data points"), QString(),
-                                                      tr("Point files (*.csv *.txt *.json);;All files (*)"));
+    const QString path = openFileName(this, tr("Import data points"), tr("Point files (*.csv *.txt *.json);;All files (*)"));
     if (path.isEmpty())
         return;
     QString error;

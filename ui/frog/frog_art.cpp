@@ -18,6 +18,19 @@ namespace {
 // The seed's body colour, fill(48, 161, 48) (Annex II, Poligon.dibuixar and Pota.dibuixar).
 const QColor kSeedGreen(48, 161, 48);
 const QColor kOutline(22, 66, 30);
+// Each body's skin: the seed's green and three neighbouring shades.
+const std::array<QColor, 4> kSkins = {kSeedGreen, QColor(70, 150, 40), QColor(36, 140, 70), QColor(90, 165, 55)};
+const QColor kStoneLight(0xa8, 0xa0, 0x92), kStoneDark(0x74, 0x6c, 0x60);
+
+/// `path` (drawn along +x from the origin) at the wrist, turned by `angle`, scaled.
+QTransform footTransform(QPointF wrist, double angle, double scale)
+{
+    QTransform t;
+    t.translate(wrist.x(), wrist.y());
+    t.rotate(angle * 180 / kPi);
+    t.scale(scale, scale);
+    return t;
+}
 
 QBrush shadedSkin(const QColor& base)
 {
@@ -34,15 +47,13 @@ QBrush shadedSkin(const QColor& base)
 
 FrogArt::FrogArt()
 {
-    m_skins[0] = shadedSkin(kSeedGreen);
-    m_skins[1] = shadedSkin(QColor(70, 150, 40));
-    m_skins[2] = shadedSkin(QColor(36, 140, 70));
-    m_skins[3] = shadedSkin(QColor(90, 165, 55));
+    for (std::size_t i = 0; i < kSkins.size(); ++i)
+        m_skins[i] = shadedSkin(kSkins[i]);
 
     QLinearGradient stone(0, 0, 0, 1);
     stone.setCoordinateMode(QGradient::ObjectBoundingMode);
-    stone.setColorAt(0, QColor(0xa8, 0xa0, 0x92));
-    stone.setColorAt(1, QColor(0x74, 0x6c, 0x60));
+    stone.setColorAt(0, kStoneLight);
+    stone.setColorAt(1, kStoneDark);
     m_stone = QBrush(stone);
     m_jointBrush = QBrush(QColor(0xf2, 0xb1, 0x34));
     m_pinBrush = QBrush(QColor(0x37, 0x47, 0x4f));
@@ -94,6 +105,24 @@ FrogArt::FrogArt()
 }
 
 const QBrush& FrogArt::skin(int index) const { return m_skins[((index % 4) + 4) % 4]; }
+
+QColor FrogArt::skinColour(int index) { return kSkins[static_cast<std::size_t>(((index % 4) + 4) % 4)]; }
+
+QColor FrogArt::stoneColour()
+{
+    return QColor((kStoneLight.red() + kStoneDark.red()) / 2, (kStoneLight.green() + kStoneDark.green()) / 2,
+                  (kStoneLight.blue() + kStoneDark.blue()) / 2);
+}
+
+QPainterPath FrogArt::footWeb(QPointF wrist, double angle, double scale) const
+{
+    return footTransform(wrist, angle, scale).map(m_footWeb);
+}
+
+QPainterPath FrogArt::footToes(QPointF wrist, double angle, double scale) const
+{
+    return footTransform(wrist, angle, scale).map(m_foot);
+}
 
 void FrogArt::setLineScale(double k)
 {
@@ -329,9 +358,7 @@ void FrogArt::paintHead(QPainter& p, QPointF at, double angle, double scale, QPo
 void FrogArt::paintFoot(QPainter& p, QPointF wrist, double angle, double scale) const
 {
     p.save();
-    p.translate(wrist);
-    p.rotate(angle * 180 / kPi);
-    p.scale(scale, scale);
+    p.setTransform(footTransform(wrist, angle, scale), true);
     p.setPen(m_footEdgePen);
     p.setBrush(Qt::NoBrush);
     p.drawPath(m_footWeb);

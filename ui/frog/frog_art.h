@@ -38,9 +38,21 @@ public:
     /// A webbed foot at the wrist, toes along `angle` (the direction of the lower bone).
     void paintFoot(QPainter& painter, QPointF wrist, double angle, double scale) const;
 
+    /// The web (its lines) and the toes (their outlines) of the foot paintFoot draws, in
+    /// scene coordinates: for a picture drawn without a QPainter (TikZ).
+    QPainterPath footWeb(QPointF wrist, double angle, double scale) const;
+    QPainterPath footToes(QPointF wrist, double angle, double scale) const;
+    const QPen& footEdgePen() const { return m_footEdgePen; }
+    const QPen& footWebPen() const { return m_footWebPen; }
+    QColor toeColour() const { return m_toeBrush.color(); }
+
     /// Skin of body `index` (the seed's fill(48, 161, 48), a shade lighter or darker for
     /// neighbours), shaded top to bottom.
     const QBrush& skin(int index) const;
+    /// Its colour without the shading (the middle of the gradient).
+    static QColor skinColour(int index);
+    /// The stones' colour without the shading.
+    static QColor stoneColour();
 
     /// Pens and brushes, made once per line scale (presentation mode thickens them) so that
     /// a frame only uses them. Widths are in scene pixels.

@@ -28,7 +28,7 @@ namespace {
 /// Samples of the per-frame least-squares Bézier curve (§4.9's abandoned option).
 constexpr int kFitSamples = 160;
 /// Annex II, Pota.dibuixar: `factor = 7`, the half-thickness of a leg.
-constexpr double kLegFactor = 7;
+constexpr double kLegFactor = FrogCanvas::kLegHalfWidth;
 /// The head image's size in Annex II belongs to the frog's target area, Areal = 20000 px².
 constexpr double kSeedTargetArea = 20000;
 /// Velocity arrows: the step's displacement drawn this many times longer.
@@ -975,7 +975,11 @@ void FrogCanvas::paintEvent(QPaintEvent*)
     ++m_draws;
 }
 
-void FrogCanvas::render(QPainter& p, const QRectF& target)
+void FrogCanvas::render(QPainter& p, const QRectF& target) { renderScene(p, target, true); }
+
+void FrogCanvas::renderFrame(QPainter& p, const QRectF& target) { renderScene(p, target, false); }
+
+void FrogCanvas::renderScene(QPainter& p, const QRectF& target, bool textPanel)
 {
     p.save();
     p.setRenderHint(QPainter::Antialiasing, true);
@@ -1050,7 +1054,8 @@ void FrogCanvas::render(QPainter& p, const QRectF& target)
     // The text panel may run below a small scene (presentation mode on a narrow canvas): it
     // is clipped to the canvas, not to the scene.
     p.setClipRect(target);
-    drawTextPanel(p, r);
+    if (textPanel)
+        drawTextPanel(p, r);
     p.restore();
 }
 

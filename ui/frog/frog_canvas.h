@@ -239,6 +239,10 @@ public:
     /// curveVertex outline, the closed Catmull-Rom curve or the fitted Bézier curve, as the
     /// scene's components say. Valid until the next call.
     const std::vector<Point>& bodyOutline(int body);
+    /// The art the canvas paints with (its colours and the feet), for the TikZ picture.
+    const FrogArt& art() const { return m_art; }
+    /// The half width of a leg's outline (Annex II, Pota.dibuixar: the factor 7).
+    static constexpr double kLegHalfWidth = 7;
 
     /// The letterbox transform of the widget: scene pixels ↔ widget pixels.
     QPointF toWidget(const Point& scenePoint) const;
@@ -246,6 +250,9 @@ public:
 
     QSizeF exportSize() const override { return size(); }
     void render(QPainter& painter, const QRectF& target) override;
+    /// The scene and its overlays as render() draws them, without the text panel: a frame of
+    /// an animation carries no live readout (frame time, energies) that would be stale in it.
+    void renderFrame(QPainter& painter, const QRectF& target);
 
     QSize sizeHint() const override { return {960, 540}; }
     QSize minimumSizeHint() const override { return {80, 45}; }
@@ -340,6 +347,7 @@ private:
     void drawObstacles(QPainter& p);
     void drawOverlays(QPainter& p, double pixel);
     void drawTextPanel(QPainter& p, const QRectF& sceneRect);
+    void renderScene(QPainter& p, const QRectF& target, bool textPanel);
     void fillPath(const std::vector<Point>& points, bool close);
 
     std::unique_ptr<RecordedRun> m_run;

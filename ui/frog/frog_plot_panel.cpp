@@ -5,10 +5,10 @@
 #include "ui/common/presentation_scale.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/shell/exporter.h"
+#include "ui/shell/file_dialogs.h"
 
 #include <QComboBox>
 #include <QEvent>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -425,8 +425,7 @@ bool FrogPlotPanel::exportCsv(const QString& path, QString* error) const
 
 void FrogPlotPanel::chooseExportFile()
 {
-    const QString file = QFileDialog::getSaveFileName(this, tr("Export the series"), QStringLiteral("series.csv"),
-                                                      tr("CSV files (*.csv)"));
+    const QString file = saveFileName(this, tr("Export the series"), QStringLiteral("series.csv"), tr("CSV files (*.csv)"));
     if (file.isEmpty())
         return;
     QString error;

@@ -4,6 +4,7 @@
 
 #include "core/softbody/outline.h"
 #include "core/softbody/scenes/scene_texts.h"
+#include "core/base/math_constants.h"
 #include "core/base/number_format.h"
 #include "ui/common/value_command.h"
 #include "ui/frog/frog_canvas.h"
@@ -27,6 +28,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QPainter>
+#include <QPainterPath>
 #include <QPushButton>
 #include <QRadioButton>
 #include <QRegularExpression>
@@ -1434,25 +1436,57 @@ void FrogTab::drawTikz(TikzWriter& w) const
     w.comment(QStringLiteral("Granota: scene %1 (%2), solver %3, step %4")
                   .arg(fromStd(m_scene.name), fromStd(m_scene.section), fromStd(solverName(m_solver)))
                   .arg(sim->stepCount()));
-    // The frame, so that the picture keeps the scene's proportions.
+    // The frame, so that the picture keeps the scene's proportions; what is drawn is clipped
+    // to it, as the canvas clips to the scene (a foot past the floor is not drawn).
     const double W = m_scene.params.width;
     w.polyline({{0, 0}, {W, 0}, {W, H}, {0, H}}, QColor(0x9a, 0x9a, 0x9a), 0.4, false, true);
-    for (const ObstacleSpec& o : sim->obstacles())
-        w.polyline(flipped(o.points, H), QColor(0x6e, 0x4b, 0x2c), 1.2, false, o.closed);
+    w.clipTo({0, 0}, {W, H});
+    // As FrogCanvas::drawScene paints them: filled stones and bodies, legs with their feet.
+    const FrogArt& art = m_canvas->art();
+    for (const ObstacleSpec& o : sim->obstacles()) {
+        if (o.closed)
+            w.polygon(flipped(o.points, H), art.stonePen().color(), FrogArt::stoneColour(), 0.8);
+        else
+            w.polyline(flipped(o.points, H), art.logPen().color(), 3.0);
+    }
     std::vector<Point> pts;
-    const QColor green(48, 161, 48);
+    const auto path = [H](const QPolygonF& polygon) {
+        std::vector<Point> out;
+        for (const QPointF& q : polygon)
+            out.emplace_back(q.x(), H - q.y());
+        return out;
+    };
     const auto leg = [&](int c) {
         sim->chainJoints(c, pts);
-        if (pts.size() >= 3)
-            w.polyline(flipped(legOutline(pts[0], pts[1], pts[2], 7, 6), H), green, 1.0, false, true);
+        if (pts.size() < 3 || !isFinite(pts[0]) || !isFinite(pts[1]) || !isFinite(pts[2]))
+            return;
+        // FrogCanvas::drawLeg: the foot at the wrist along the lower bone, then the leg over it.
+        const Point bone = pts[2] - pts[1];
+        const double angle = norm(bone) > 1e-9 ? std::atan2(bone.y, bone.x) : kPi / 2;
+        const QPointF wrist(pts[2].x, pts[2].y);
+        const double scale = c < 2 ? 0.8 : 1.0;
+        for (const QPolygonF& line : art.footWeb(wrist, angle, scale).toSubpathPolygons()) {
+            w.polyline(path(line), art.footEdgePen().color(), 1.4);
+            w.polyline(path(line), art.footWebPen().color(), 0.8);
+        }
+        for (const QPolygonF& toe : art.footToes(wrist, angle, scale).toFillPolygons())
+            w.polygon(path(toe), art.footEdgePen().color(), art.toeColour(), 0.3);
+        w.polygon(flipped(legOutline(pts[0], pts[1], pts[2], FrogCanvas::kLegHalfWidth, 6), H), art.legPen().color(),
+                  FrogArt::skinColour(0), 0.6);
     };
     const bool frog = m_scene.model == SceneModel::Frog && sim->chainCount() >= 4;
     if (frog) {
         leg(2);
         leg(3);
     }
-    for (int i = 0; i < sim->bodyCount(); ++i)
-        w.polyline(flipped(m_canvas->bodyOutline(i), H), green, 1.2, false, true);
+    const bool filled = m_scene.has("fill");
+    for (int i = 0; i < sim->bodyCount(); ++i) {
+        const std::vector<Point> outline = flipped(m_canvas->bodyOutline(i), H);
+        if (filled)
+            w.polygon(outline, art.bodyPen().color(), FrogArt::skinColour(i), 0.8);
+        else
+            w.polyline(outline, art.inkPen().color(), 0.7, false, true);
+    }
     if (frog) {
         leg(0);
         leg(1);
@@ -1466,22 +1500,36 @@ void FrogTab::drawTikz(TikzWriter& w) const
         }
 }
 
-QString FrogTab::exportFrames(const QString& directory, int frames)
+long FrogTab::shownStep() const
+{
+    const Simulation* sim = m_canvas->simulation();
+    return sim ? sim->stepCount() : 0;
+}
+
+QString FrogTab::exportFrames(const QString& directory, int frames, QSize size, long firstStep)
 {
     if (frames < 1)
         return tr("The number of frames must be at least 1.");
     if (directory.isEmpty() || (!QDir(directory).exists() && !QDir().mkpath(directory)))
         return tr("Cannot create the folder “%1”.").arg(directory);
+    if (!m_canvas->simulation())
+        return tr("There is no scene to export.");
     const QDir dir(directory);
-    QSize size = m_canvas->size();
+    size = QSize(size.width() / 2 * 2, size.height() / 2 * 2); // even sides: yuv420p video
     if (size.width() < 16 || size.height() < 16)
-        size = QSize(1280, 720); // a canvas never shown: the seed's own frame
+        size = kFrameSize;
+    // The run pauses (its timer would step it between frames) and goes back to the step the
+    // user saw; the recorded run replays from there exactly.
+    if (!m_pause->isChecked())
+        m_pause->setChecked(true);
+    if (firstStep >= 0 && firstStep != shownStep() && !m_canvas->seek(firstStep))
+        return tr("Step %1 is no longer recorded.").arg(firstStep);
     QImage image(size, QImage::Format_ARGB32_Premultiplied);
     for (int i = 0; i < frames; ++i) {
         image.fill(Qt::white);
         {
             QPainter p(&image);
-            m_canvas->render(p, QRectF(QPointF(0, 0), QSizeF(size)));
+            m_canvas->renderFrame(p, QRectF(QPointF(0, 0), QSizeF(size)));
         }
         const QString file = dir.filePath(QStringLiteral("frame_%1.png").arg(i, 4, 10, QLatin1Char('0')));
         if (const QString error = writePngFile(image, file); !error.isEmpty())

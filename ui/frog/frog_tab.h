@@ -9,6 +9,7 @@
 #include "ui/shell/tab_page.h"
 
 #include <QJsonValue>
+#include <QSize>
 
 #include <memory>
 #include <vector>
@@ -47,9 +48,16 @@ public:
     bool setScene(const QString& name, QString* error);
     /// Why the scene `name` did not load: unknown, or the core's own message for a known one.
     static QString sceneLoadError(const QString& name, const Error& coreError);
-    /// Writes `frames` frames of the running scene as frame_0000.png … into `directory`,
-    /// stepping the simulation at the canvas's fixed step. Empty on success, else a message.
-    QString exportFrames(const QString& directory, int frames);
+    /// Writes `frames` frames of the run as frame_0000.png … into `directory`, each `size`
+    /// pixels (rounded down to even sides, as video encoders ask), exactly one fixed step
+    /// apart from `firstStep` (−1: the step shown now; File ▸ Export gives the step shown when
+    /// it was chosen). The run pauses while they are written; each frame is
+    /// FrogCanvas::renderFrame, without the live readouts. Empty on success, else a message.
+    QString exportFrames(const QString& directory, int frames, QSize size = kFrameSize, long firstStep = -1);
+    /// The default size of the frames: 720p video.
+    static constexpr QSize kFrameSize{1280, 720};
+    /// The step of the run shown now (0 without a simulation).
+    long shownStep() const;
 
     /// The solver (rebuilds the scene on it). False with a message when the core refuses.
     bool setSolver(SolverKind solver, QString* error);

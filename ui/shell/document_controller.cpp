@@ -1,6 +1,7 @@
 #include "ui/shell/document_controller.h"
 
 #include "ui/shell/document.h"
+#include "ui/shell/file_dialogs.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/tab_page.h"
 #include "ui/shell/user_file.h"
@@ -216,7 +217,7 @@ bool DocumentController::confirmOverwriteOfChangedFile(QString* file)
 
 QString DocumentController::askDocumentName()
 {
-    QFileDialog dialog(m_window, MainWindow::tr("Save document"), m_file.isEmpty() ? QString() : QFileInfo(m_file).path(),
+    QFileDialog dialog(m_window, MainWindow::tr("Save document"), m_file.isEmpty() ? lastFileFolder() : QFileInfo(m_file).path(),
                        MainWindow::tr("Granota documents (*.granota)"));
     dialog.setObjectName(QStringLiteral("saveDocumentDialog"));
     dialog.setAcceptMode(QFileDialog::AcceptSave);
@@ -226,6 +227,7 @@ QString DocumentController::askDocumentName()
     if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty())
         return QString();
     QString file = dialog.selectedFiles().constFirst();
+    rememberFileFolder(file);
     if (file.endsWith(QLatin1String(".granota")))
         return file;
     // A platform's own dialog may not add the suffix: add it, and ask as the dialog would.
@@ -242,8 +244,8 @@ void DocumentController::openDialog()
 {
     if (!maybeSave())
         return;
-    const QString file = QFileDialog::getOpenFileName(m_window, MainWindow::tr("Open document"), QString(),
-                                                      MainWindow::tr("Granota documents (*.granota);;All files (*)"));
+    const QString file = openFileName(m_window, MainWindow::tr("Open document"),
+                                      MainWindow::tr("Granota documents (*.granota);;All files (*)"));
     if (file.isEmpty())
         return;
     QString error;

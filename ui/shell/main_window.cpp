@@ -5,6 +5,7 @@
 #include "ui/catmull_rom/catmull_rom_tab.h"
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/shell/exporter.h"
+#include "ui/shell/file_dialogs.h"
 #include "ui/fit/fit_tab.h"
 #include "ui/frog/frog_tab.h"
 #include "ui/shell/language.h"
@@ -21,7 +22,6 @@
 #include <QApplication>
 #include <QCloseEvent>
 #include <QFile>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QInputDialog>
 #include <QLabel>
@@ -205,7 +205,9 @@ void MainWindow::createActions()
     m_save->setShortcut(QKeySequence::Save);
     connect(m_save, &QAction::triggered, this, [this] { m_document->saveDialog(false); });
     m_saveAs = new QAction(this);
-    m_saveAs->setShortcut(QKeySequence::SaveAs);
+    // QKeySequence::SaveAs is empty in some key themes (X11 without KDE, offscreen):
+    // docs/classroom.md promises Ctrl+Shift+S everywhere.
+    m_saveAs->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
     connect(m_saveAs, &QAction::triggered, this, [this] { m_document->saveDialog(true); });
     m_quit = new QAction(this);
     m_quit->setShortcut(QKeySequence::Quit);
@@ -502,8 +504,8 @@ void MainWindow::exportDialog(const QString& format)
     if (format == QLatin1String("tikz") && !TikzOptionsDialog::ask(this, &tikz))
         return;
     const QString extension = format == QLatin1String("tikz") ? QStringLiteral("tex") : format;
-    const QString file = QFileDialog::getSaveFileName(this, tr("Export"), page->key() + QLatin1Char('.') + extension,
-                                                      tr("%1 files (*.%2)").arg(format.toUpper(), extension));
+    const QString file = saveFileName(this, tr("Export"), page->key() + QLatin1Char('.') + extension,
+                                      tr("%1 files (*.%2)").arg(format.toUpper(), extension));
     if (file.isEmpty())
         return;
     const QString error = exportCurrent(format, file, dpi, tikz);
@@ -516,15 +518,25 @@ void MainWindow::exportDialog(const QString& format)
 void MainWindow::exportFramesDialog()
 {
     FrogTab* frog = frogTab();
+    // The frames start at the step shown now: the run goes on behind the dialogs.
+    const long shown = frog->shownStep();
     bool ok = false;
     const int frames = QInputDialog::getInt(this, tr("Frog animation"), tr("Number of frames (60 per second):"), 120, 1, 3600, 1,
                                             &ok);
     if (!ok)
         return;
-    const QString directory = QFileDialog::getExistingDirectory(this, tr("Folder for the frames"));
+    const QList<QSize> sizes = {FrogTab::kFrameSize, {1920, 1080}, {854, 480}};
+    QStringList names;
+    for (const QSize& s : sizes)
+        names << tr("%1 × %2 pixels").arg(s.width()).arg(s.height());
+    const QString name = QInputDialog::getItem(this, tr("Frog animation"), tr("Size of the frames (video):"), names, 0, false,
+                                               &ok);
+    if (!ok)
+        return;
+    const QString directory = existingFolder(this, tr("Folder for the frames"));
     if (directory.isEmpty())
         return;
-    const QString error = frog->exportFrames(directory, frames);
+    const QString error = frog->exportFrames(directory, frames, sizes.value(names.indexOf(name), FrogTab::kFrameSize), shown);
     if (error.isEmpty())
         showMessage(tr("Wrote %n frames.", nullptr, frames));
     else

@@ -5,12 +5,12 @@
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_tab.h"
 #include "ui/shell/main_window.h"
+#include "ui/shell/file_dialogs.h"
 #include "ui/shell/thesis_figure_export.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QEvent>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -153,8 +153,7 @@ void ThesisFiguresDialog::exportChosen()
     if (figure->art.empty() && !showChosen())
         return;
     const QString name = QStringLiteral("fig-%1.svg").arg(QString::fromStdString(figure->number));
-    const QString file = QFileDialog::getSaveFileName(this, tr("Export figure"), name,
-                                                      tr("Figures (*.svg *.pdf *.png *.tex *.csv)"));
+    const QString file = saveFileName(this, tr("Export figure"), name, tr("Figures (*.svg *.pdf *.png *.tex *.csv)"));
     if (file.isEmpty())
         return;
     const QString format = QFileInfo(file).suffix().toLower();

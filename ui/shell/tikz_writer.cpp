@@ -3,6 +3,7 @@
 #include "core/base/number_format.h"
 
 #include <QMap>
+#include <QRectF>
 #include <QStringList>
 
 #include <algorithm>
@@ -28,6 +29,18 @@ constexpr double kInsetPadCm = 0.1;   // inside the inset's frame
 constexpr double kInsetTitleCm = 0.3; // its title's line (scriptsize)
 /// Below this half-span (in model units) the scale, cm per unit, would overflow a double.
 constexpr double kMinHalfSpan = 1e-290;
+// The key, in \scriptsize (8 pt in an 11 pt beamer frame): the room one character of text
+// may take (generous: a key a little wide rather than text over its frame), a line, a swatch.
+constexpr double kKeyCharCm = 0.16;
+constexpr double kKeyLineCm = 0.36;
+constexpr double kKeySwatchCm = 0.5;
+constexpr double kKeyPadCm = 0.1;
+/// What one covered thing costs a place for the inset or the key (canvas_legend.h's measure):
+/// a sample of a line 1, a dot or its label kCoverKeepClear.
+constexpr double kCoverKeepClear = 1000.0;
+/// Samples of a line at most this far apart (cm), of a cubic segment this many.
+constexpr double kCoverSampleCm = 0.15;
+constexpr int kCoverBezierSamples = 24;
 
 /// A length in cm as TikZ reads it: three decimals (0.01 mm), a point, no "-0".
 QString cm(double v)
@@ -115,12 +128,130 @@ void addExtremes(const std::array<Point, 4>& b, std::vector<Point>& out)
     }
 }
 
+/// TikZ's name for a line style.
+QString dashOption(Qt::PenStyle pen)
+{
+    switch (pen) {
+    case Qt::DashLine: return QStringLiteral(", dashed");
+    case Qt::DotLine: return QStringLiteral(", dotted");
+    case Qt::DashDotLine: return QStringLiteral(", dash dot");
+    case Qt::DashDotDotLine: return QStringLiteral(", dash dot dot");
+    default: return QString();
+    }
+}
+
+/// The characters a TeX text shows, about: a command counts one, `$`, braces and `\` none.
+int shownLength(const QString& tex)
+{
+    int n = 0;
+    for (qsizetype i = 0; i < tex.size(); ++i) {
+        const QChar c = tex[i];
+        if (c == QLatin1Char('\\')) {
+            ++n;
+            while (i + 1 < tex.size() && tex[i + 1].isLetter())
+                ++i;
+        } else if (c != QLatin1Char('$') && c != QLatin1Char('{') && c != QLatin1Char('}')) {
+            ++n;
+        }
+    }
+    return n;
+}
+
+/// What a box laid over the drawing would cover, in cm from its lower left corner.
+struct Cover {
+    std::vector<QPointF> points;   ///< samples of the lines and curves: 1 each
+    std::vector<QRectF> keepClear; ///< dots with their labels, the inset: kCoverKeepClear each
+    double cost(const QRectF& box) const
+    {
+        double c = 0;
+        for (const QRectF& r : keepClear)
+            c += box.intersects(r) ? kCoverKeepClear : 0.0;
+        for (const QPointF& q : points)
+            c += box.contains(q) ? 1.0 : 0.0;
+        return c;
+    }
+    /// Of boxes of `size` with their lower left corners at `at`, the first of least cost.
+    QRectF best(const std::vector<QPointF>& at, const QSizeF& size) const
+    {
+        QRectF out;
+        double least = std::numeric_limits<double>::infinity();
+        for (const QPointF& corner : at) {
+            const QRectF box(corner, size);
+            if (const double c = cost(box); c < least) {
+                least = c;
+                out = box;
+            }
+        }
+        return out;
+    }
+};
+
 } // namespace
+
+QString TikzWriter::texText(const QString& text)
+{
+    static const QMap<QChar, QString> symbols = {
+        {QChar(0x03C4), QStringLiteral("\\tau")},   {QChar(0x03BA), QStringLiteral("\\kappa")},
+        {QChar(0x2032), QStringLiteral("'")},       {QChar(0x2212), QStringLiteral("-")},
+        {QChar(0x2264), QStringLiteral("\\le")},    {QChar(0x2265), QStringLiteral("\\ge")},
+        {QChar(0x00D7), QStringLiteral("\\times")}, {QChar(0x2248), QStringLiteral("\\approx")},
+        {QChar(0x2260), QStringLiteral("\\ne")},    {QChar(0x25C6), QStringLiteral("\\diamond")},
+        {QChar(0x221E), QStringLiteral("\\infty")}, {QChar(0x25CB), QStringLiteral("\\circ")},
+        {QChar(0x007C), QStringLiteral("|")},       {QChar(0x1D62), QStringLiteral("_i")},
+        {QChar(0x03B1), QStringLiteral("\\alpha")}, {QChar(0x0394), QStringLiteral("\\Delta")}};
+    QString out;
+    bool inMath = false; // the last thing written is a formula: the next symbol joins it ("Pᵢ²": P$_i^2$)
+    QChar script;        // '_' or '^' when that formula ends in a sub- or superscript group
+    const auto math = [&out, &inMath, &script](const QString& m) {
+        if (inMath)
+            out.chop(1);
+        out += (inMath ? QString() : QStringLiteral("$")) + m + QLatin1Char('$');
+        inMath = true;
+        script = QChar();
+    };
+    // A sub- or superscript digit: the digits of one number in one group ("P₁₀": P$_{10}$).
+    const auto digit = [&](QChar kind, int d) {
+        if (inMath && script == kind) {
+            out.chop(2); // "}$"
+            out += QString::number(d) + QStringLiteral("}$");
+        } else {
+            math(QString(kind) + QStringLiteral("{%1}").arg(d));
+            script = kind;
+        }
+    };
+    const auto textOut = [&out, &inMath](const QString& t) {
+        out += t;
+        inMath = false;
+    };
+    for (const QChar c : text) {
+        const char16_t u = c.unicode();
+        if (c == QLatin1Char('\\'))
+            textOut(QStringLiteral("\\textbackslash{}"));
+        else if (c == QLatin1Char('~'))
+            textOut(QStringLiteral("\\textasciitilde{}"));
+        else if (c == QLatin1Char('^'))
+            textOut(QStringLiteral("\\textasciicircum{}"));
+        else if (QStringLiteral("#$%&_{}").contains(c))
+            textOut(QLatin1Char('\\') + c);
+        else if (u >= 0x2080 && u <= 0x2089) // subscript digits
+            digit(QLatin1Char('_'), u - 0x2080);
+        else if ((u >= 0x2074 && u <= 0x2079) || u == 0x2070) // superscript digits
+            digit(QLatin1Char('^'), u - 0x2070);
+        else if (u == 0x00B9 || u == 0x00B2 || u == 0x00B3)
+            digit(QLatin1Char('^'), u == 0x00B9 ? 1 : u - 0x00B0);
+        else if (const auto it = symbols.find(c); it != symbols.end())
+            math(*it);
+        else
+            textOut(QString(c));
+    }
+    return out;
+}
 
 void TikzWriter::bezierSegments(const std::vector<std::array<Point, 4>>& segments, const QColor& color, double widthPt,
                                 bool dashed)
 {
-    Item item{Item::Bezier, {}, color, widthPt, dashed, false, {}, m_inInset, {}};
+    Item item{Item::Bezier,        {}, color, widthPt, dashed ? Qt::DashLine : Qt::SolidLine, false, {}, m_inInset, {}, {}, false,
+              m_clip && !m_inInset};
     for (const auto& b : segments) {
         if (!std::all_of(b.begin(), b.end(), [](const Point& p) { return isFinite(p); }))
             continue;
@@ -133,21 +264,64 @@ void TikzWriter::bezierSegments(const std::vector<std::array<Point, 4>>& segment
 
 void TikzWriter::polyline(const std::vector<Point>& points, const QColor& color, double widthPt, bool dashed, bool closed)
 {
+    polyline(points, color, widthPt, dashed ? Qt::DashLine : Qt::SolidLine, closed);
+}
+
+void TikzWriter::polyline(const std::vector<Point>& points, const QColor& color, double widthPt, Qt::PenStyle pen, bool closed)
+{
     if (points.size() < 2)
         return;
-    m_items.push_back({Item::Line, points, color, widthPt, dashed, closed, {}, m_inInset, {}});
+    m_items.push_back({Item::Line, points, color, widthPt, pen, closed, {}, m_inInset, {}, {}, false, m_clip && !m_inInset});
+}
+
+void TikzWriter::polygon(const std::vector<Point>& points, const QColor& stroke, const QColor& fill, double widthPt)
+{
+    if (points.size() < 3)
+        return;
+    m_items.push_back({Item::Line,
+                       points,
+                       stroke,
+                       widthPt,
+                       stroke.isValid() ? Qt::SolidLine : Qt::NoPen,
+                       true,
+                       {},
+                       m_inInset,
+                       {},
+                       fill,
+                       false,
+                       m_clip && !m_inInset});
+}
+
+void TikzWriter::arrow(Point from, Point to, const QColor& color, double widthPt)
+{
+    m_items.push_back(
+        {Item::Line, {from, to}, color, widthPt, Qt::SolidLine, false, {}, m_inInset, {}, {}, true, m_clip && !m_inInset});
 }
 
 void TikzWriter::point(Point p, const QColor& color, const QString& label)
 {
-    m_items.push_back({Item::Dot, {p}, color, 1.0, false, false, label, m_inInset, {}});
+    m_items.push_back({Item::Dot, {p}, color, 1.0, Qt::SolidLine, false, label, m_inInset, {}, {}, false, m_clip && !m_inInset});
 }
 
 void TikzWriter::comment(const QString& text)
 {
     QString line = text;
     line.replace(QLatin1Char('\n'), QLatin1Char(' ')).replace(QLatin1Char('\r'), QLatin1Char(' '));
-    m_items.push_back({Item::Comment, {}, {}, 0, false, false, line, m_inInset, {}});
+    m_items.push_back({Item::Comment, {}, {}, 0, Qt::SolidLine, false, line, m_inInset, {}, {}, false, false});
+}
+
+void TikzWriter::clipTo(Point lo, Point hi)
+{
+    m_clip = true;
+    m_clipLo = Point(std::min(lo.x, hi.x), std::min(lo.y, hi.y));
+    m_clipHi = Point(std::max(lo.x, hi.x), std::max(lo.y, hi.y));
+}
+
+void TikzWriter::legend(const std::vector<TikzLegendEntry>& entries, const QString& note, const QColor& alertColor)
+{
+    m_legend = entries;
+    m_legendNote = note;
+    m_legendAlert = alertColor;
 }
 
 void TikzWriter::beginInset(const QString& title)
@@ -170,8 +344,10 @@ QString TikzWriter::str() const
             continue;
         }
         labels = labels || (item.kind == Item::Dot && !item.text.isEmpty());
-        for (const Point& p : item.kind == Item::Bezier ? item.extent : item.points)
+        for (Point p : item.kind == Item::Bezier ? item.extent : item.points)
             if (isFinite(p)) {
+                if (item.clipped) // what the clip hides takes no room
+                    p = Point(std::clamp(p.x, m_clipLo.x, m_clipHi.x), std::clamp(p.y, m_clipLo.y, m_clipHi.y));
                 x = {std::min(x.lo, p.x), std::max(x.hi, p.x)};
                 y = {std::min(y.lo, p.y), std::max(y.hi, p.y)};
             }
@@ -245,15 +421,27 @@ QString TikzWriter::str() const
     // The items of the main picture (inset false) or of the inset, through `at`.
     const auto write = [&](bool inset, const std::function<QString(const Point&)>& at) {
         const QString dotRadius = inset ? QStringLiteral("1.2pt") : QStringLiteral("2pt");
+        bool clipping = false; // inside the scope that clips to clipTo's rectangle
         for (const Item& item : m_items) {
             if (item.inset != inset)
                 continue;
+            if (item.kind != Item::Comment && item.clipped != clipping) {
+                clipping = item.clipped;
+                body += clipping ? QStringLiteral("  \\begin{scope}\n  \\clip %1 rectangle %2;\n").arg(at(m_clipLo), at(m_clipHi))
+                                 : QStringLiteral("  \\end{scope}\n");
+            }
             switch (item.kind) {
             case Item::Comment: body += QStringLiteral("  % %1\n").arg(item.text); break;
             case Item::Line: {
-                body += QStringLiteral("  \\draw[%1, line width=%2pt%3] ")
-                            .arg(colourName(item.color), QString::fromStdString(formatSignificant(item.width, 3)),
-                                 item.dashed ? QStringLiteral(", dashed") : QString());
+                QString options = item.pen == Qt::NoPen ? QStringLiteral("draw=none")
+                                                        : colourName(item.color) + QStringLiteral(", line width=") +
+                                                              QString::fromStdString(formatSignificant(item.width, 3)) +
+                                                              QStringLiteral("pt") + dashOption(item.pen);
+                if (item.fill.isValid())
+                    options += QStringLiteral(", fill=") + colourName(item.fill);
+                if (item.arrow)
+                    options += QStringLiteral(", -stealth");
+                body += QStringLiteral("  \\draw[%1] ").arg(options);
                 QStringList parts;
                 for (const Point& p : item.points)
                     if (isFinite(p))
@@ -277,7 +465,7 @@ QString TikzWriter::str() const
                     body += QStringLiteral("  \\path %1 rectangle %2;\n").arg(at(Point(x0, y0)), at(Point(x1, y1)));
                 body += QStringLiteral("  \\draw[%1, line width=%2pt%3, overlay] ")
                             .arg(colourName(item.color), QString::fromStdString(formatSignificant(item.width, 3)),
-                                 item.dashed ? QStringLiteral(", dashed") : QString());
+                                 dashOption(item.pen));
                 QString end; // where the path is, as written: a segment starting there continues it
                 for (std::size_t i = 0; i + 3 < item.points.size(); i += 4) {
                     const Point* b = &item.points[i];
@@ -302,14 +490,63 @@ QString TikzWriter::str() const
                 break;
             }
         }
+        if (clipping)
+            body += QStringLiteral("  \\end{scope}\n");
     };
     write(false, [&](const Point& p) { return coord(p.x, p.y); });
+    // What the inset and the key would cover of the main picture, in cm: samples of its lines
+    // and curves, its dots with their labels.
+    Cover cover;
+    const double W = cx(x.hi), H = cy(y.hi);
+    {
+        const auto toCm = [&](const Point& p) { return QPointF(cx(p.x), cy(p.y)); };
+        const auto sample = [&](const QPointF& a, const QPointF& b) {
+            const double length = std::hypot(b.x() - a.x(), b.y() - a.y());
+            const int n = std::clamp(static_cast<int>(std::ceil(length / kCoverSampleCm)), 1, 1000);
+            for (int k = 0; k < n; ++k)
+                cover.points.push_back(a + (b - a) * (static_cast<double>(k) / n));
+            cover.points.push_back(b);
+        };
+        for (const Item& item : m_items) {
+            if (item.inset || item.kind == Item::Comment)
+                continue;
+            if (item.kind == Item::Dot) {
+                if (!isFinite(item.points[0]))
+                    continue;
+                const QPointF c = toCm(item.points[0]);
+                QRectF dot(c - QPointF(kEdgeCm, kEdgeCm), QSizeF(2 * kEdgeCm, 2 * kEdgeCm));
+                if (!item.text.isEmpty())
+                    dot = dot.united(QRectF(c, QSizeF(kLabelRightCm, kLabelTopCm)));
+                cover.keepClear.push_back(dot);
+            } else if (item.kind == Item::Line) {
+                std::vector<QPointF> at;
+                for (const Point& p : item.points)
+                    if (isFinite(p))
+                        at.push_back(toCm(p));
+                if (item.closed && at.size() > 2)
+                    at.push_back(at.front());
+                for (std::size_t i = 0; i + 1 < at.size(); ++i)
+                    sample(at[i], at[i + 1]);
+            } else if (item.kind == Item::Bezier) {
+                for (std::size_t i = 0; i + 3 < item.points.size(); i += 4) {
+                    const Point* b = &item.points[i];
+                    for (int k = 0; k <= kCoverBezierSamples; ++k) {
+                        const double t = static_cast<double>(k) / kCoverBezierSamples, u = 1 - t;
+                        cover.points.push_back(
+                            toCm(u * u * u * b[0] + 3 * u * u * t * b[1] + 3 * u * t * t * b[2] + t * t * t * b[3]));
+                    }
+                }
+            }
+        }
+    }
     if (insetShown) {
-        // The inset, like the canvas's: in the lower right corner of the drawing, kInsetShare
-        // of its width wide and at most three quarters of that tall, on white, framed.
-        const double W = cx(x.hi), H = cy(y.hi);
+        // The inset, like the canvas's: in a corner of the drawing, the one that covers least
+        // of it (the lower right first), kInsetShare of its width wide and at most three
+        // quarters of that tall, on white, framed.
         const double w = kInsetShare * W, h = std::min(0.75 * w, std::max(0.32 * H, 0.5 * w));
-        const double left = W - w, right = W, bottom = 0, top = h;
+        const QRectF place = cover.best({{W - w, 0}, {0, 0}, {W - w, H - h}, {0, H - h}}, QSizeF(w, h));
+        cover.keepClear.push_back(place); // the key keeps clear of it
+        const double left = place.left(), right = place.right(), bottom = place.top(), top = place.bottom();
         const auto c = [](double px, double py) { return QStringLiteral("(%1,%2)").arg(cm(px), cm(py)); };
         body += QStringLiteral("  % inset: %1\n").arg(m_insetTitle);
         body += QStringLiteral(
@@ -341,6 +578,54 @@ QString TikzWriter::str() const
                     .arg(c(areaL, uy(0)), c(areaR, uy(0)), c(ux(0), areaB), c(ux(0), areaT));
         write(true, [&](const Point& p) { return c(ux(p.x), uy(p.y)); });
         body += QStringLiteral("  \\end{scope}\n");
+    }
+    if (!m_legend.empty() || !m_legendNote.isEmpty()) {
+        // The key, laid out here (its size must be known to place it): a swatch and a text a
+        // line, the note wrapped under them, at most 0.6 of the drawing's width for the note.
+        double textCm = 0;
+        for (const TikzLegendEntry& e : m_legend)
+            textCm = std::max(textCm, kKeyCharCm * shownLength(e.text));
+        const double entriesW = kKeySwatchCm + kKeyPadCm + textCm;
+        const double noteFull = kKeyCharCm * shownLength(m_legendNote);
+        const double noteW = m_legendNote.isEmpty() ? 0.0 : std::min(noteFull, std::max(entriesW, 0.6 * W));
+        const double noteLines = noteW > 0 ? std::ceil(noteFull / noteW) : 0.0;
+        const QSizeF size(std::max(entriesW, noteW) + 2 * kKeyPadCm,
+                          kKeyLineCm * (static_cast<double>(m_legend.size()) + noteLines) + 2 * kKeyPadCm);
+        // The corners (top left first, as the canvas's key), then along the edges.
+        const double l = 0, r = std::max(0.0, W - size.width()), b = 0, t = std::max(0.0, H - size.height());
+        std::vector<QPointF> at = {{l, t}, {r, t}, {l, b}, {r, b}};
+        constexpr int kSteps = 8;
+        for (int k = 1; k < kSteps; ++k) {
+            const double f = static_cast<double>(k) / kSteps;
+            at.insert(at.end(), {{l + f * (r - l), t}, {l + f * (r - l), b}, {l, b + f * (t - b)}, {r, b + f * (t - b)}});
+        }
+        const QRectF box = cover.best(at, size);
+        const auto c = [](double px, double py) { return QStringLiteral("(%1,%2)").arg(cm(px), cm(py)); };
+        if (size.width() > W || size.height() > H) { // a small picture: the key would overflow it
+            body += QStringLiteral("  % key left out: %1 cm x %2 cm, larger than the drawing\n")
+                        .arg(cm(size.width()), cm(size.height()));
+        } else {
+            body += QStringLiteral("  % key\n");
+            body += QStringLiteral("  \\filldraw[fill=white, fill opacity=0.85, draw=black!30, line width=0.4pt, rounded "
+                                   "corners=1.5pt] %1 rectangle %2;\n")
+                        .arg(c(box.left(), box.top()), c(box.right(), box.bottom()));
+            double lineY = box.bottom() - kKeyPadCm - kKeyLineCm / 2; // the middle of the first line
+            const double swatchL = box.left() + kKeyPadCm, textL = swatchL + kKeySwatchCm + kKeyPadCm;
+            for (const TikzLegendEntry& e : m_legend) {
+                if (e.pen != Qt::NoPen)
+                    body += QStringLiteral("  \\draw[%1, line width=0.8pt%2] %3 -- %4;\n")
+                                .arg(colourName(e.color), dashOption(e.pen), c(swatchL, lineY), c(swatchL + kKeySwatchCm, lineY));
+                body += QStringLiteral("  \\node[anchor=west, inner sep=0pt, font=\\scriptsize%1] at %2 {%3};\n")
+                            .arg(e.pen == Qt::NoPen ? QStringLiteral(", text=") + colourName(m_legendAlert) : QString(),
+                                 c(e.pen == Qt::NoPen ? swatchL : textL, lineY), e.text);
+                lineY -= kKeyLineCm;
+            }
+            if (!m_legendNote.isEmpty())
+                body += QStringLiteral(
+                            "  \\node[anchor=north west, inner sep=0pt, font=\\scriptsize, align=left, text width=%1cm, "
+                            "text=%2] at %3 {%4};\n")
+                            .arg(cm(noteW), colourName(m_legendAlert), c(swatchL, lineY + kKeyLineCm / 2), m_legendNote);
+        }
     }
     // Every line outside the picture ends in a comment, so that \input adds no space.
     QString out = QStringLiteral("%% Made with Granota. Needs \\usepackage{tikz}.\n"
