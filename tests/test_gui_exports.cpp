@@ -54,8 +54,7 @@ const QString kLastFolder = QStringLiteral("files/lastFolder");
 /// Runs `open` (which shows modal dialogs) and answers them as a user would: an input dialog
 /// with `answerInput` (or accepted as it is), the first file dialog with `answerFile` (or
 /// rejected). Returns the folder the file dialog opened in (empty if none opened).
-QString folderOfFileDialog(const std::function<void()>& open,
-                           const std::function<void(QFileDialog&)>& answerFile = nullptr,
+QString folderOfFileDialog(const std::function<void()>& open, const std::function<void(QFileDialog&)>& answerFile = nullptr,
                            const std::function<void(QInputDialog&)>& answerInput = nullptr)
 {
     QString folder;
@@ -126,8 +125,7 @@ std::vector<QPointF> mainPictureCoordinates(const QString& tex)
     return out;
 }
 
-template <class Tab>
-void show(Tab& tab)
+template <class Tab> void show(Tab& tab)
 {
     tab.resize(1100, 700);
     tab.show();
@@ -384,8 +382,7 @@ private slots:
                                QMetaObject::invokeMethod(&d, "accept"); // a protected slot
                            });
         QVERIFY(QFileInfo::exists(svg));
-        QCOMPARE(folderOfFileDialog([&] { action(MainWindow::tr("&Open…"))->trigger(); }),
-                 QDir(second.path()).absolutePath());
+        QCOMPARE(folderOfFileDialog([&] { action(MainWindow::tr("&Open…"))->trigger(); }), QDir(second.path()).absolutePath());
     }
 
     // No dialog of the application calls QFileDialog's static functions itself: they all go

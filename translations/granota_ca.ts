@@ -3629,6 +3629,14 @@ a cada canvi alentiria la finestra.</translation>
             <source>The run from before this step was not kept (too much memory): the scene starts again.</source>
             <translation>L&apos;execució d&apos;abans d&apos;aquest pas no s&apos;ha conservat (massa memòria): l&apos;escena torna a començar.</translation>
         </message>
+        <message>
+            <source>There is no scene to export.</source>
+            <translation>No hi ha cap escena per exportar.</translation>
+        </message>
+        <message>
+            <source>Step %1 is no longer recorded.</source>
+            <translation>El pas %1 ja no està enregistrat.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::MainWindow</name>
@@ -4175,6 +4183,14 @@ Ja no és al disc.</translation>
         <message>
             <source>&lt;p&gt;Where a printed example of the thesis slips, the tab says so beside the right value; docs/thesis-errata.md, in Granota&apos;s sources, lists every slip and where Granota shows it.&lt;/p&gt;</source>
             <translation>&lt;p&gt;Quan un exemple imprès de la tesi s&apos;equivoca, la pestanya ho diu al costat del valor correcte; docs/thesis-errata.md, a les fonts del Granota, recull totes les errades i on les mostra el Granota.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>%1 × %2 pixels</source>
+            <translation>%1 × %2 píxels</translation>
+        </message>
+        <message>
+            <source>Size of the frames (video):</source>
+            <translation>Mida dels fotogrames (vídeo):</translation>
         </message>
     </context>
     <context>
@@ -5299,6 +5315,141 @@ Ja no és al disc.</translation>
         <message>
             <source>Figures (*.svg *.pdf *.png *.tex *.csv)</source>
             <translation>Figures (*.svg *.pdf *.png *.tex *.csv)</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::ErrorText</name>
+        <message>
+            <source>point %1 is %2, not two numbers: write “x,y” with decimal points, “x;y” with decimal commas (as a spreadsheet in Catalan saves it), or x and y separated by a tab; one point a line.</source>
+            <translation>el punt %1 és %2, no dos nombres: escriviu «x,y» amb punts decimals, «x;y» amb comes decimals (com ho desa un full de càlcul en català) o x i y separats per un tabulador; un punt per línia.</translation>
+        </message>
+        <message>
+            <source>point %1: %2 is %3 characters long, more than %4, the longest number Granota reads.</source>
+            <translation>punt %1: %2 té %3 caràcters, més de %4, el nombre més llarg que llegeix Granota.</translation>
+        </message>
+        <message>
+            <source>point %1: %2 = %3 is not a number (write integers, decimals or fractions p/q).</source>
+            <translation>punt %1: %2 = %3 no és un nombre (escriviu enters, decimals o fraccions p/q).</translation>
+        </message>
+        <message>
+            <source>point %1: %2 = %3 is too large (the largest double is about 1.8e308).</source>
+            <translation>punt %1: %2 = %3 és massa gran (el double més gran és d&apos;uns 1,8e308).</translation>
+        </message>
+        <message>
+            <source>point %1: %2 = %3 is too close to zero to read.</source>
+            <translation>punt %1: %2 = %3 és massa a prop de zero per llegir-lo.</translation>
+        </message>
+        <message>
+            <source>No points were given.</source>
+            <translation>No s&apos;ha donat cap punt.</translation>
+        </message>
+        <message>
+            <source>The file holds no points.</source>
+            <translation>El fitxer no conté cap punt.</translation>
+        </message>
+        <message>
+            <source>There are more than %1 points, the most Granota reads.</source>
+            <translation>Hi ha més de %1 punts, el màxim que llegeix Granota.</translation>
+        </message>
+        <message>
+            <source>The text is not a JSON list of points [[x,y],…].</source>
+            <translation>El text no és una llista JSON de punts [[x,y],…].</translation>
+        </message>
+        <message>
+            <source>The JSON text is %1, not a list of points [[x,y],…].</source>
+            <translation>El text JSON és %1, no una llista de punts [[x,y],…].</translation>
+        </message>
+        <message>
+            <source>JSON point %1 is %2, not a pair [x,y].</source>
+            <translation>El punt JSON %1 és %2, no un parell [x,y].</translation>
+        </message>
+        <message>
+            <source>The scene has no parameter %1.</source>
+            <translation>L&apos;escena no té el paràmetre %1.</translation>
+        </message>
+        <message>
+            <source>“%1” must be a whole number.</source>
+            <translation>«%1» ha de ser un nombre enter.</translation>
+        </message>
+        <message>
+            <source>“%1” must be from %2 to %3.</source>
+            <translation>«%1» ha d&apos;anar de %2 a %3.</translation>
+        </message>
+        <message>
+            <source>“%1” must be a number.</source>
+            <translation>«%1» ha de ser un nombre.</translation>
+        </message>
+        <message>
+            <source>“%1” must be a pair of numbers x, y.</source>
+            <translation>«%1» ha de ser un parell de nombres x, y.</translation>
+        </message>
+        <message>
+            <source>“%1” must be a finite number.</source>
+            <translation>«%1» ha de ser un nombre finit.</translation>
+        </message>
+        <message>
+            <source>“%1” must be a finite number ≥ 0.</source>
+            <translation>«%1» ha de ser un nombre finit ≥ 0.</translation>
+        </message>
+        <message>
+            <source>“%1” must be at most 1e15 in magnitude.</source>
+            <translation>«%1» ha de ser com a màxim 1e15 en valor absolut.</translation>
+        </message>
+        <message>
+            <source>A body needs at least 3 sides (a polygon), not %1.</source>
+            <translation>Un cos necessita almenys 3 costats (un polígon), no %1.</translation>
+        </message>
+        <message>
+            <source>A body has at most %2 sides, not %1.</source>
+            <translation>Un cos té com a màxim %2 costats, no %1.</translation>
+        </message>
+        <message>
+            <source>The frame must be at least 1 × 1 px.</source>
+            <translation>El marc ha de fer almenys 1 × 1 px.</translation>
+        </message>
+        <message>
+            <source>Bodies × sides must be at most %1 vertices in all: lower the bodies or the sides.</source>
+            <translation>Cossos × costats han de ser com a màxim %1 vèrtexs en total: reduïu els cossos o els costats.</translation>
+        </message>
+        <message>
+            <source>A Bézier outline of degree %1 sampled at %2 points costs %3 interpolations, more than %4: lower the sides or the Bézier samples.</source>
+            <translation>Una silueta de Bézier de grau %1 mostrejada en %2 punts costa %3 interpolacions, més de %4: reduïu els costats o les mostres de Bézier.</translation>
+        </message>
+        <message>
+            <source>%1 bodies of radius %2 px do not fit side by side in a %3 × %4 px frame, and piled up their %5 vertices would all touch (at most %6 may start piled): lower the bodies, the sides or the radius, or widen the frame.</source>
+            <translation>%1 cossos de radi %2 px no caben l&apos;un al costat de l&apos;altre en un marc de %3 × %4 px, i apilats els seus %5 vèrtexs es tocarien tots (com a màxim %6 poden començar apilats): reduïu els cossos, els costats o el radi, o eixampleu el marc.</translation>
+        </message>
+        <message>
+            <source>The stable solver takes substeps from %1 to %2, an edge compliance from 0 to %3 and a damping ratio from 0 to %4.</source>
+            <translation>El mètode estable admet de %1 a %2 subpassos, una flexibilitat de les arestes de 0 a %3 i una raó d&apos;esmorteïment de 0 a %4.</translation>
+        </message>
+        <message>
+            <source>There are too few points.</source>
+            <translation>Hi ha massa pocs punts.</translation>
+        </message>
+        <message>
+            <source>A value is outside the range Granota accepts.</source>
+            <translation>Un valor és fora de l&apos;interval que accepta Granota.</translation>
+        </message>
+        <message>
+            <source>The path is not a file.</source>
+            <translation>El camí no és un fitxer.</translation>
+        </message>
+        <message>
+            <source>The text is cut off before its end.</source>
+            <translation>El text s&apos;acaba abans d&apos;hora.</translation>
+        </message>
+        <message>
+            <source>The system refused to read or write the file.</source>
+            <translation>El sistema ha refusat llegir o escriure el fitxer.</translation>
+        </message>
+        <message>
+            <source>A value is not written in a form Granota reads.</source>
+            <translation>Un valor no està escrit en una forma que Granota llegeixi.</translation>
+        </message>
+        <message>
+            <source>Line %1: %2</source>
+            <translation>Línia %1: %2</translation>
         </message>
     </context>
 </TS>

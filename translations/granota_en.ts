@@ -3629,6 +3629,14 @@ on each change would slow the window.</translation>
             <source>The run from before this step was not kept (too much memory): the scene starts again.</source>
             <translation>The run from before this step was not kept (too much memory): the scene starts again.</translation>
         </message>
+        <message>
+            <source>There is no scene to export.</source>
+            <translation>There is no scene to export.</translation>
+        </message>
+        <message>
+            <source>Step %1 is no longer recorded.</source>
+            <translation>Step %1 is no longer recorded.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::MainWindow</name>
@@ -4175,6 +4183,14 @@ It is no longer on disk.</translation>
         <message>
             <source>&lt;p&gt;Where a printed example of the thesis slips, the tab says so beside the right value; docs/thesis-errata.md, in Granota&apos;s sources, lists every slip and where Granota shows it.&lt;/p&gt;</source>
             <translation>&lt;p&gt;Where a printed example of the thesis slips, the tab says so beside the right value; docs/thesis-errata.md, in Granota&apos;s sources, lists every slip and where Granota shows it.&lt;/p&gt;</translation>
+        </message>
+        <message>
+            <source>%1 × %2 pixels</source>
+            <translation>%1 × %2 pixels</translation>
+        </message>
+        <message>
+            <source>Size of the frames (video):</source>
+            <translation>Size of the frames (video):</translation>
         </message>
     </context>
     <context>
@@ -5299,6 +5315,141 @@ It is no longer on disk.</translation>
         <message>
             <source>Figures (*.svg *.pdf *.png *.tex *.csv)</source>
             <translation>Figures (*.svg *.pdf *.png *.tex *.csv)</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::ErrorText</name>
+        <message>
+            <source>point %1 is %2, not two numbers: write “x,y” with decimal points, “x;y” with decimal commas (as a spreadsheet in Catalan saves it), or x and y separated by a tab; one point a line.</source>
+            <translation>point %1 is %2, not two numbers: write “x,y” with decimal points, “x;y” with decimal commas (as a spreadsheet in Catalan saves it), or x and y separated by a tab; one point a line.</translation>
+        </message>
+        <message>
+            <source>point %1: %2 is %3 characters long, more than %4, the longest number Granota reads.</source>
+            <translation>point %1: %2 is %3 characters long, more than %4, the longest number Granota reads.</translation>
+        </message>
+        <message>
+            <source>point %1: %2 = %3 is not a number (write integers, decimals or fractions p/q).</source>
+            <translation>point %1: %2 = %3 is not a number (write integers, decimals or fractions p/q).</translation>
+        </message>
+        <message>
+            <source>point %1: %2 = %3 is too large (the largest double is about 1.8e308).</source>
+            <translation>point %1: %2 = %3 is too large (the largest double is about 1.8e308).</translation>
+        </message>
+        <message>
+            <source>point %1: %2 = %3 is too close to zero to read.</source>
+            <translation>point %1: %2 = %3 is too close to zero to read.</translation>
+        </message>
+        <message>
+            <source>No points were given.</source>
+            <translation>No points were given.</translation>
+        </message>
+        <message>
+            <source>The file holds no points.</source>
+            <translation>The file holds no points.</translation>
+        </message>
+        <message>
+            <source>There are more than %1 points, the most Granota reads.</source>
+            <translation>There are more than %1 points, the most Granota reads.</translation>
+        </message>
+        <message>
+            <source>The text is not a JSON list of points [[x,y],…].</source>
+            <translation>The text is not a JSON list of points [[x,y],…].</translation>
+        </message>
+        <message>
+            <source>The JSON text is %1, not a list of points [[x,y],…].</source>
+            <translation>The JSON text is %1, not a list of points [[x,y],…].</translation>
+        </message>
+        <message>
+            <source>JSON point %1 is %2, not a pair [x,y].</source>
+            <translation>JSON point %1 is %2, not a pair [x,y].</translation>
+        </message>
+        <message>
+            <source>The scene has no parameter %1.</source>
+            <translation>The scene has no parameter %1.</translation>
+        </message>
+        <message>
+            <source>“%1” must be a whole number.</source>
+            <translation>“%1” must be a whole number.</translation>
+        </message>
+        <message>
+            <source>“%1” must be from %2 to %3.</source>
+            <translation>“%1” must be from %2 to %3.</translation>
+        </message>
+        <message>
+            <source>“%1” must be a number.</source>
+            <translation>“%1” must be a number.</translation>
+        </message>
+        <message>
+            <source>“%1” must be a pair of numbers x, y.</source>
+            <translation>“%1” must be a pair of numbers x, y.</translation>
+        </message>
+        <message>
+            <source>“%1” must be a finite number.</source>
+            <translation>“%1” must be a finite number.</translation>
+        </message>
+        <message>
+            <source>“%1” must be a finite number ≥ 0.</source>
+            <translation>“%1” must be a finite number ≥ 0.</translation>
+        </message>
+        <message>
+            <source>“%1” must be at most 1e15 in magnitude.</source>
+            <translation>“%1” must be at most 1e15 in magnitude.</translation>
+        </message>
+        <message>
+            <source>A body needs at least 3 sides (a polygon), not %1.</source>
+            <translation>A body needs at least 3 sides (a polygon), not %1.</translation>
+        </message>
+        <message>
+            <source>A body has at most %2 sides, not %1.</source>
+            <translation>A body has at most %2 sides, not %1.</translation>
+        </message>
+        <message>
+            <source>The frame must be at least 1 × 1 px.</source>
+            <translation>The frame must be at least 1 × 1 px.</translation>
+        </message>
+        <message>
+            <source>Bodies × sides must be at most %1 vertices in all: lower the bodies or the sides.</source>
+            <translation>Bodies × sides must be at most %1 vertices in all: lower the bodies or the sides.</translation>
+        </message>
+        <message>
+            <source>A Bézier outline of degree %1 sampled at %2 points costs %3 interpolations, more than %4: lower the sides or the Bézier samples.</source>
+            <translation>A Bézier outline of degree %1 sampled at %2 points costs %3 interpolations, more than %4: lower the sides or the Bézier samples.</translation>
+        </message>
+        <message>
+            <source>%1 bodies of radius %2 px do not fit side by side in a %3 × %4 px frame, and piled up their %5 vertices would all touch (at most %6 may start piled): lower the bodies, the sides or the radius, or widen the frame.</source>
+            <translation>%1 bodies of radius %2 px do not fit side by side in a %3 × %4 px frame, and piled up their %5 vertices would all touch (at most %6 may start piled): lower the bodies, the sides or the radius, or widen the frame.</translation>
+        </message>
+        <message>
+            <source>The stable solver takes substeps from %1 to %2, an edge compliance from 0 to %3 and a damping ratio from 0 to %4.</source>
+            <translation>The stable solver takes substeps from %1 to %2, an edge compliance from 0 to %3 and a damping ratio from 0 to %4.</translation>
+        </message>
+        <message>
+            <source>There are too few points.</source>
+            <translation>There are too few points.</translation>
+        </message>
+        <message>
+            <source>A value is outside the range Granota accepts.</source>
+            <translation>A value is outside the range Granota accepts.</translation>
+        </message>
+        <message>
+            <source>The path is not a file.</source>
+            <translation>The path is not a file.</translation>
+        </message>
+        <message>
+            <source>The text is cut off before its end.</source>
+            <translation>The text is cut off before its end.</translation>
+        </message>
+        <message>
+            <source>The system refused to read or write the file.</source>
+            <translation>The system refused to read or write the file.</translation>
+        </message>
+        <message>
+            <source>A value is not written in a form Granota reads.</source>
+            <translation>A value is not written in a form Granota reads.</translation>
+        </message>
+        <message>
+            <source>Line %1: %2</source>
+            <translation>Line %1: %2</translation>
         </message>
     </context>
 </TS>

@@ -748,7 +748,8 @@ bool FrogTab::editParameter(const QString& key, const QJsonValue& value, QString
     // Consecutive edits of the same parameter merge, so that spinning an arrow is one step:
     // the step keeps the run from before the first of them.
     const int index = m_undo->index();
-    m_undo->push(new ValueCommand<QJsonValue>(apply, before, value, tr("Change %1").arg(ErrorText::parameterLabel(key.toStdString())),
+    m_undo->push(new ValueCommand<QJsonValue>(apply, before, value,
+                                              tr("Change %1").arg(ErrorText::parameterLabel(key.toStdString())),
                                               valueMergeId(kParameterMergeIdBase, key),
                                               {/*dropWhenUnchanged=*/false, /*appliedAlready=*/true}));
     const bool merged = m_undo->index() == index;
