@@ -337,9 +337,12 @@ int main(int argc, char* argv[])
             return fail(error);
         return 0;
     }
+    if (parser.isSet(sizeOption))
+        window.show(); // the size asked for
+    else
+        window.showFitted(); // maximised on a small screen
     if (parser.isSet(presentOption))
         window.setPresentation(true);
-    window.show();
     if (!openError.isEmpty())
         window.showOpenError(openError);
     else

@@ -4,8 +4,12 @@
 // Nothing may be elided or clipped — a label's, button's, group box's, combo box's or spin
 // box's text fits its widget, a plot's axis titles fit the plot — and no widget lies outside
 // the window (or outside the viewport of the scroll area that scrolls it); the window's
-// minimumSizeHint fits the size, so a window manager lets the window be that small.
+// minimumSizeHint fits the size, so a window manager lets the window be that small. In
+// presentation mode the side panels are folded away (a drawer, View ▸ Side panel) and the
+// canvas has the window's width; opened, the drawer shows everything whole too.
 #include "main_window_steps.h"
+#include "ui/common/curve_canvas.h"
+#include "ui/frog/frog_canvas.h"
 #include "ui/shell/language.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/tab_page.h"
@@ -276,6 +280,38 @@ QStringList layoutProblems(MainWindow& window, QSize size)
     return problems;
 }
 
+/// The tab's canvas (or, in the Bernstein tab, its plot): the largest drawing it shows.
+QWidget* canvasOf(granota::ui::TabPage* page)
+{
+    QWidget* best = nullptr;
+    const auto area = [](const QWidget* w) { return w->width() * w->height(); };
+    for (QWidget* w : page->findChildren<QWidget*>())
+        if (w->isVisible() &&
+            (qobject_cast<granota::ui::CurveCanvas*>(w) || qobject_cast<granota::ui::FrogCanvas*>(w) ||
+             qobject_cast<QCustomPlot*>(w)) &&
+            (!best || area(w) > area(best)))
+            best = w;
+    return best;
+}
+
+/// In presentation mode with the drawer folded: the canvas has (nearly) the tab's width and
+/// at least 40 % of its area (it was 545×225 in the Fitting tab at 1024×768).
+QString canvasProblem(granota::ui::TabPage* page)
+{
+    const QWidget* canvas = canvasOf(page);
+    if (!canvas)
+        return QStringLiteral("no canvas");
+    const double share = double(canvas->width()) * canvas->height() / (double(page->width()) * page->height());
+    if (canvas->width() < page->width() * 9 / 10 || share < 0.4)
+        return QStringLiteral("the canvas is %1×%2 in a tab of %3×%4 (%5 % of it)")
+            .arg(canvas->width())
+            .arg(canvas->height())
+            .arg(page->width())
+            .arg(page->height())
+            .arg(int(share * 100));
+    return QString();
+}
+
 } // namespace
 
 class TestGuiLayout : public QObject {
@@ -304,15 +340,17 @@ private slots:
         QTest::addColumn<QSize>("size");
         QTest::addColumn<bool>("presentation");
         QTest::addColumn<bool>("reports");
+        QTest::addColumn<bool>("drawer"); // presentation mode's side panels opened
         for (const char* language : {"en", "ca"})
             for (bool reports : {false, true}) {
                 const char* r = reports ? " reports" : "";
                 QTest::addRow("%s 800x600%s", language, r)
-                    << QString::fromLatin1(language) << QSize(800, 600 - kTitleBar) << false << reports;
+                    << QString::fromLatin1(language) << QSize(800, 600 - kTitleBar) << false << reports << true;
                 QTest::addRow("%s 1280x800%s", language, r)
-                    << QString::fromLatin1(language) << QSize(1280, 800 - kTitleBar) << false << reports;
-                QTest::addRow("%s 1024x768 presentation%s", language, r)
-                    << QString::fromLatin1(language) << QSize(1024, 768 - kTitleBar) << true << reports;
+                    << QString::fromLatin1(language) << QSize(1280, 800 - kTitleBar) << false << reports << true;
+                for (bool drawer : {false, true})
+                    QTest::addRow("%s 1024x768 presentation%s%s", language, r, drawer ? " side panel" : "")
+                        << QString::fromLatin1(language) << QSize(1024, 768 - kTitleBar) << true << reports << drawer;
             }
     }
 
@@ -322,12 +360,16 @@ private slots:
         QFETCH(QSize, size);
         QFETCH(bool, presentation);
         QFETCH(bool, reports);
+        QFETCH(bool, drawer);
         QVERIFY(granota::ui::setLanguage(language, false));
         QStringList problems;
         {
             MainWindow window;
-            if (presentation)
+            if (presentation) {
                 window.setPresentation(true, false);
+                QVERIFY(!window.sidePanelsShown()); // folded away
+                window.setSidePanelsShown(drawer);
+            }
             window.resize(size);
             window.show();
             QVERIFY(waitExposed(&window));
@@ -345,6 +387,9 @@ private slots:
                 QApplication::processEvents();
                 for (const QString& problem : layoutProblems(window, size))
                     problems << page->key() + QStringLiteral(": ") + problem;
+                if (presentation && !drawer && !reports)
+                    if (const QString problem = canvasProblem(page); !problem.isEmpty())
+                        problems << page->key() + QStringLiteral(": ") + problem;
             }
             if (presentation)
                 window.setPresentation(false, false);

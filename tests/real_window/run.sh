@@ -5,6 +5,8 @@
 # Ctrl+Shift+Z; offscreen it is Ctrl+Y). README.md beside this file says how the tests stay
 # independent of the window manager's timing.
 #   tests/real_window/run.sh TEST_BINARY [arguments…]
+# GRANOTA_SCREEN=WxH picks the screen's size (1280x1024 unless set): a projector's 1024x768
+# or 800x600 (tests/test_gui_screen_fit.cpp).
 # Xvfb picks a free display itself (-displayfd) and says which, so any number of these can
 # run at once (xvfb-run -a guesses a free number, and two started together may guess the same).
 set -euo pipefail
@@ -17,7 +19,7 @@ cleanup() {
   rm -rf "$scratch"
 }
 trap cleanup EXIT
-Xvfb -displayfd 3 -screen 0 1280x1024x24 -nolisten tcp 3>"$scratch/display" 2>"$scratch/xvfb.log" &
+Xvfb -displayfd 3 -screen 0 "${GRANOTA_SCREEN:-1280x1024}x24" -nolisten tcp 3>"$scratch/display" 2>"$scratch/xvfb.log" &
 xvfb=$!
 for _ in $(seq 300); do
   [ -s "$scratch/display" ] && break

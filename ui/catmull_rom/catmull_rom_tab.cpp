@@ -354,6 +354,7 @@ void CatmullRomTab::buildUi()
     auto* split = new QSplitter(Qt::Horizontal, this);
     split->addWidget(left);
     split->addWidget(right);
+    setSidePanel(right);
     split->setStretchFactor(0, 1);
     split->setStretchFactor(1, 0);
     split->setSizes({830, 450});

@@ -39,6 +39,7 @@ QString axisLabel(double v, double step)
 CurveCanvas::CurveCanvas(QWidget* parent) : QWidget(parent)
 {
     setFocusPolicy(Qt::StrongFocus);
+    setDrawsOwnFocusFrame(this);
     setMouseTracking(true);
     setAttribute(Qt::WA_OpaquePaintEvent);
     m_view.setViewport(rect());

@@ -111,6 +111,12 @@ void CurveTab::showEvent(QShowEvent* event)
     });
 }
 
+QString CurveTab::keyboardHint() const
+{
+    return tr("Keys: ] and [ select a point, the arrows nudge it (Shift: ten times more), Delete removes it; Tab "
+              "leaves the canvas.");
+}
+
 void CurveTab::zoom(double factor) { m_canvas->zoom(factor); }
 
 void CurveTab::fitView()

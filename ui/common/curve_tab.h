@@ -56,6 +56,8 @@ public:
     void zoom(double factor) final;
     /// Frames contentBounds().
     void fitView() final;
+    /// The curve canvas's keys (docs/classroom.md, "Keyboard").
+    QString keyboardHint() const override;
 
 protected:
     /// Makes the canvas (the export view). The tab makes the editor, the table and the exact

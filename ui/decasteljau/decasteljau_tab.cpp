@@ -23,6 +23,7 @@
 #include "ui/common/point_editor.h"
 #include "ui/common/point_extent.h"
 #include "ui/common/point_table.h"
+#include "ui/common/tab_order.h"
 #include "ui/common/value_command.h"
 #include "ui/shell/tikz_writer.h"
 
@@ -299,12 +300,18 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent) : CurveTab(QStringLiteral("decas
     sideLayout->addWidget(geometry);
     sideLayout->addWidget(m_sideSplitter, 1);
     m_mainSplitter->addWidget(side);
+    setSidePanel(side);
     m_mainSplitter->setStretchFactor(0, 3);
     m_mainSplitter->setStretchFactor(1, 2);
     m_mainSplitter->setSizes({780, 480});
     m_mainSplitter->setChildrenCollapsible(false);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_mainSplitter);
+    // Tab as the tab reads: t and the rows above the canvas, the canvas, then the side panel
+    // top to bottom (the canvas, the table and the exact panel were made first).
+    setTabOrderOf({m_parameter, m_play,         m_controlPoints, m_construction, m_steps,     m_tangent, m_split,
+                   m_speed,     m_snap,         m_samplesBox,    m_raise,        m_canvas,    m_normal,  m_osculating,
+                   m_combBox,   m_combScaleBox, m_box,           m_featuresBox,  m_hodograph, m_table,   m_exact});
 
     connect(m_editor, &PointEditor::pointsChanged, this, &DeCasteljauTab::pointsChanged);
     connect(m_editor, &PointEditor::message, this, &TabPage::statusMessage);

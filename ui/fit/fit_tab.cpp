@@ -358,6 +358,7 @@ void FitTab::buildUi()
     m_mainSplitter = new QSplitter(Qt::Horizontal, this);
     m_mainSplitter->addWidget(m_leftSplitter);
     m_mainSplitter->addWidget(sideArea);
+    setSidePanel(sideArea);
     m_mainSplitter->setStretchFactor(0, 2);
     m_mainSplitter->setStretchFactor(1, 1);
     m_mainSplitter->setSizes({830, 450});
@@ -1217,12 +1218,11 @@ void FitTab::presentationChanged(bool on)
     keepAxisTitlesWhole(m_plot);
     styleFitErrorPlot(m_plot, scale);
     m_plot->replot();
-    const int total = m_mainSplitter->width();
-    if (total > 0) // the side panel's texts grow with the font: give it more room
-        m_mainSplitter->setSizes({total * (on ? 52 : 65) / 100, total * (on ? 48 : 35) / 100});
-    const int height = m_leftSplitter->height();
-    if (height > 0) // and the plot's labels too
-        m_leftSplitter->setSizes({height * (on ? 64 : 70) / 100, height * (on ? 36 : 30) / 100});
+    // Shares, not pixels (QSplitter scales them to its size, laid out or not): the side panel's
+    // texts grow with the font, so it gets more of the width when the drawer is open
+    // (MainWindow::setSidePanelsShown); the canvas keeps two thirds of the height.
+    m_mainSplitter->setSizes({on ? 5200 : 6500, on ? 4800 : 3500});
+    m_leftSplitter->setSizes({on ? 6600 : 7000, on ? 3400 : 3000});
     m_canvas->fitToContent();
 }
 

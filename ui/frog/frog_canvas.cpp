@@ -66,6 +66,7 @@ FrogCanvas::FrogCanvas(QWidget* parent) : QWidget(parent)
 {
     setMouseTracking(true); // Processing's mouseX/mouseY are always current (§4.1, §4.13)
     setFocusPolicy(Qt::StrongFocus);
+    setDrawsOwnFocusFrame(this);
     setAttribute(Qt::WA_OpaquePaintEvent);
     m_timer.setTimerType(Qt::PreciseTimer);
     connect(&m_timer, &QTimer::timeout, this, &FrogCanvas::tick);
@@ -1561,6 +1562,27 @@ bool FrogCanvas::insideABody(Point at)
     return false;
 }
 
+Point FrogCanvas::bodyCentre(int body)
+{
+    sim()->bodyVertices(body, m_vertices);
+    Point sum{0, 0};
+    for (const Point& v : m_vertices)
+        sum = {sum.x + v.x / double(m_vertices.size()), sum.y + v.y / double(m_vertices.size())};
+    return sum;
+}
+
+void FrogCanvas::placeKeyboardCursor()
+{
+    if (m_mouseKnown || !sim())
+        return;
+    // On the body nearest the middle of the view, where the keys can grab it at once (the
+    // view's middle if the scene has none), never in a corner half out of sight.
+    m_mouse = toScene(QPointF(rect().center()));
+    if (const int body = nearestBody(m_mouse); body >= 0)
+        m_mouse = bodyCentre(body);
+    m_mouseKnown = true;
+}
+
 int FrogCanvas::nearestBody(Point at)
 {
     int best = -1;
@@ -1582,18 +1604,10 @@ bool FrogCanvas::keyboardGrab()
 {
     if (!sim() || m_pressed)
         return false;
-    if (!m_mouseKnown) {
-        m_mouse = toScene(QPointF(rect().center()));
-        m_mouseKnown = true;
-    }
+    placeKeyboardCursor();
     // Outside every body, the cursor first jumps to the centre of the nearest one.
-    if (const int body = insideABody(m_mouse) ? -1 : nearestBody(m_mouse); body >= 0) {
-        sim()->bodyVertices(body, m_vertices);
-        Point sum{0, 0};
-        for (const Point& v : m_vertices)
-            sum = {sum.x + v.x / double(m_vertices.size()), sum.y + v.y / double(m_vertices.size())};
-        m_mouse = sum;
-    }
+    if (const int body = insideABody(m_mouse) ? -1 : nearestBody(m_mouse); body >= 0)
+        m_mouse = bodyCentre(body);
     if (m_run->playingBack() && !wouldGrab(m_mouse)) {
         emit statusMessage(tr("Playing the recorded run back: move the cursor inside a body to take over from step %1.")
                                .arg(sim()->stepCount()));
@@ -1627,10 +1641,7 @@ void FrogCanvas::moveKeyboardCursor(double dx, double dy)
 {
     if (!sim())
         return;
-    if (!m_mouseKnown) {
-        m_mouse = toScene(QPointF(rect().center()));
-        m_mouseKnown = true;
-    }
+    placeKeyboardCursor();
     const double W = sim()->scene().params.width, H = sim()->scene().params.height;
     m_mouse = {std::clamp(m_mouse.x + dx, 0.0, W - 1), std::clamp(m_mouse.y + dy, 0.0, H - 1)};
     if (m_rulerPlacing && m_ruler)
@@ -1676,10 +1687,7 @@ void FrogCanvas::keyPressEvent(QKeyEvent* event)
     case Qt::Key_L: // the ruler from the keyboard: one end at the cursor, the arrows, L again
         if (event->isAutoRepeat() || !sim())
             return;
-        if (!m_mouseKnown) {
-            m_mouse = toScene(QPointF(rect().center()));
-            m_mouseKnown = true;
-        }
+        placeKeyboardCursor();
         if (m_rulerPlacing) {
             m_rulerPlacing = false;
             emit statusMessage(tr("Ruler: %1. Esc or a right click clears it.").arg(rulerText()));
@@ -1758,6 +1766,7 @@ void FrogCanvas::hideEvent(QHideEvent* event)
 
 void FrogCanvas::focusInEvent(QFocusEvent* event)
 {
+    placeKeyboardCursor();
     update(); // the focus frame and the keyboard cursor
     QWidget::focusInEvent(event);
 }

@@ -111,6 +111,9 @@ public:
     /// the arrows, and L again; Esc or a right click clears it. Nothing is recorded; a document
     /// saved keeps it, and it is not an edit (no undo step).
     const std::optional<std::pair<Point, Point>>& ruler() const { return m_ruler; }
+    /// The keyboard cursor (the simulation's mouse, scene px): on the body nearest the view's
+    /// middle from the canvas's first focus on.
+    Point keyboardCursor() const { return m_mouse; }
     /// Sets or clears the ruler (a document's).
     void setRuler(const std::optional<std::pair<Point, Point>>& ruler);
     /// What the ruler says: its length and its run and rise, in px.
@@ -335,6 +338,10 @@ private:
     bool keyboardGrab();
     void keyboardRelease();
     int nearestBody(Point at);
+    /// The mean of body `body`'s vertices.
+    Point bodyCentre(int body);
+    /// Before the keyboard first uses the cursor: on the body nearest the view's middle.
+    void placeKeyboardCursor();
     bool insideABody(Point at); ///< inside the polygon of some body (reuses m_vertices)
     void drawKeyboardCursor(QPainter& p) const;
 

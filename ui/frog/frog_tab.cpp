@@ -7,6 +7,7 @@
 #include "core/base/math_constants.h"
 #include "core/base/number_format.h"
 #include "ui/common/value_command.h"
+#include "ui/common/tab_order.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_json.h"
 #include "ui/frog/frog_parameters_panel.h"
@@ -331,12 +332,15 @@ FrogTab::FrogTab(QWidget* parent)
     auto* splitter = new QSplitter(Qt::Horizontal, this);
     splitter->addWidget(left);
     splitter->addWidget(scroll);
+    setSidePanel(scroll);
     splitter->setStretchFactor(0, 1);
     splitter->setStretchFactor(1, 0);
     splitter->setCollapsible(0, false);
     auto* layout = new QHBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(splitter);
+    // Tab reaches the canvas first, then its timeline, then the side panel.
+    setTabOrderOf({m_canvas, m_explosionReset, m_explosionStable, m_timeline, m_markButton, m_plots, side});
 
     connect(m_sceneCombo, &QComboBox::activated, this, &FrogTab::sceneChosen);
     connect(m_solverCombo, &QComboBox::activated, this, &FrogTab::solverChosen);
@@ -864,6 +868,12 @@ QString FrogTab::sceneHint() const
 QString FrogTab::hint() const
 {
     return tr("Drag the body with the mouse; Space on the canvas spawns one at the mouse. P pauses, S steps, R resets.");
+}
+
+QString FrogTab::keyboardHint() const
+{
+    return tr("Keys: the arrows move the cursor, G grabs, L lays a ruler, Space spawns a body; P pauses, S steps, R "
+              "resets.");
 }
 
 void FrogTab::retranslate()

@@ -39,6 +39,7 @@ public:
 
     void retranslate() override;
     QString hint() const override;
+    QString keyboardHint() const override;
     QJsonObject saveState() const override;
     bool loadState(const QJsonObject& state, QString* error) override;
     QString csv() const override;

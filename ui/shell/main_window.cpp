@@ -9,31 +9,47 @@
 #include "ui/fit/fit_tab.h"
 #include "ui/frog/frog_tab.h"
 #include "ui/shell/language.h"
+#include "ui/shell/shortcuts_dialog.h"
 #include "ui/shell/shortcuts_help.h"
 #include "ui/shell/tab_page.h"
 #include "ui/shell/thesis_figures_dialog.h"
 #include "ui/shell/tikz_options_dialog.h"
 #include "ui/common/field_input_filter.h"
+#include "ui/common/focus_frame.h"
+#include "ui/common/presentation_scale.h"
 #include "ui/common/vertical_scroll_area.h"
+#include "ui/shell/blank_screen.h"
 #include "ui/common/work_precision_panel.h"
 
+#include <QAbstractItemView>
+#include <QAbstractSlider>
+#include <QAbstractSpinBox>
 #include <QAction>
 #include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QComboBox>
 #include <QFile>
 #include <QFileInfo>
 #include <QInputDialog>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPlainTextEdit>
 #include <QScreen>
 #include <QSplitter>
 #include <QStandardPaths>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTabWidget>
+#include <QTextEdit>
+#include <QTimer>
 #include <QUndoGroup>
 #include <QUndoStack>
+#include <QWindow>
+
+#include <algorithm>
 
 namespace granota::ui {
 
@@ -52,6 +68,11 @@ std::vector<std::string> reportsOf(const QString& key)
     return {"integrators", "energy-drift", "soft-body"};
 }
 
+/// The window's size in a classroom (and of the README's screenshots).
+constexpr QSize kClassroomSize(1280, 800);
+/// A window manager's frame before the window is shown and the manager says how thick it is:
+/// a title bar of up to 40 px (openbox's is 20, GNOME's about 37) and borders of 8.
+constexpr QMargins kFrameGuess(8, 40, 8, 8);
 constexpr double kPresentationFont = 1.5; ///< font scale in presentation mode
 /// The status bar's, smaller: its hints are for the one at the keyboard, and a whole hint fits 1024 px.
 constexpr double kPresentationStatusFont = 1.25;
@@ -99,7 +120,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
         if (index >= 0 && index < m_pages.size()) {
             m_undoGroup->setActiveStack(m_pages[index]->undoStack());
             statusBar()->clearMessage(); // the last tab's passing message is not about this one
-            m_hintLabel->setText(m_pages[index]->hint());
+            updateHint();
             if (m_reportsAction)
                 m_reportsAction->setChecked(!m_reportAreas[index]->isHidden());
         }
@@ -120,17 +141,33 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
     m_cursorLabel = new QLabel(this);
     statusBar()->addPermanentWidget(m_cursorLabel);
 
+    m_blank = new BlankScreen(this);
+    m_focusRing = new FocusRing(this);
     createActions();
     createMenus();
+    // Alt+letter, then Esc: the menu closes and the keyboard goes back where it was, as after
+    // a second Esc (Qt keeps it in the menu bar, nothing highlighted, Tab and arrows dead).
+    for (QAction* a : menuBar()->actions())
+        if (QMenu* menu = a->menu())
+            connect(menu, &QMenu::aboutToHide, this, [this] {
+                // Queued: Qt gives the menu bar the keyboard after the menu is hidden.
+                QTimer::singleShot(0, this, [this] {
+                    if (menuBar()->hasFocus() && !QApplication::activePopupWidget()) {
+                        QKeyEvent escape(QEvent::KeyPress, Qt::Key_Escape, Qt::NoModifier);
+                        QCoreApplication::sendEvent(menuBar(), &escape);
+                    }
+                });
+            });
+    // The keys a control of this window uses itself before the window's single-key shortcuts
+    // (Page Up/Down, B): see eventFilter.
+    qApp->installEventFilter(this);
+    // The status bar speaks of the keys while a canvas has the keyboard, of the mouse otherwise.
+    connect(qApp, &QApplication::focusChanged, this, [this] { updateHint(); });
 
     m_document = new DocumentController(this, m_recentMenu);
     connect(m_document, &DocumentController::message, this, &MainWindow::showMessage);
 
-    // The classroom size, but never larger than the screen (an 800×600 projector).
-    QSize size(1280, 800);
-    if (const QScreen* screen = this->screen())
-        size = size.boundedTo(screen->availableGeometry().size());
-    resize(size);
+    resize(fittedSize());
     retranslate();
 }
 
@@ -139,6 +176,39 @@ MainWindow::~MainWindow()
     // The tabs' undo stacks leave the group as the widgets below are deleted, and the group
     // says so: not to this window any more, which is half destroyed by then.
     disconnect(m_undoGroup, nullptr, this, nullptr);
+    // Nor the focus moving as the window closes (updateHint would read deleted tabs).
+    disconnect(qApp, nullptr, this, nullptr);
+    qApp->removeEventFilter(this);
+}
+
+QMargins MainWindow::frameAllowance() const
+{
+    // The larger of the guess and the frame known: a maximised window has no borders, and a
+    // dialog it opens has (openbox: 1 px at the sides, 5 below).
+    const QWindow* handle = windowHandle();
+    const QMargins known = handle ? handle->frameMargins() : QMargins();
+    return {std::max(known.left(), kFrameGuess.left()), std::max(known.top(), kFrameGuess.top()),
+            std::max(known.right(), kFrameGuess.right()), std::max(known.bottom(), kFrameGuess.bottom())};
+}
+
+QSize MainWindow::fittedSize() const
+{
+    const QScreen* screen = this->screen();
+    if (!screen)
+        return kClassroomSize;
+    const QMargins frame = frameAllowance();
+    const QSize room = screen->availableGeometry().size().shrunkBy(frame);
+    return kClassroomSize.boundedTo(room);
+}
+
+void MainWindow::showFitted()
+{
+    resize(fittedSize());
+    // A screen with no room for the classroom size and a frame (1024×768, 800×600, a
+    // 1366×768 laptop): maximised, the window manager fits the frame to the screen.
+    if (fittedSize() != kClassroomSize)
+        setWindowState(windowState() | Qt::WindowMaximized);
+    show();
 }
 
 // ---------------------------------------------------------------- tabs and examples
@@ -248,6 +318,14 @@ void MainWindow::createActions()
             redoKeys << key;
     m_redo->setShortcuts(redoKeys);
 
+    // F9, as a file manager's side bar: the tabs' side panels, folded away in presentation mode.
+    m_sidePanelAction = new QAction(this);
+    m_sidePanelAction->setObjectName(QStringLiteral("sidePanelAction"));
+    m_sidePanelAction->setCheckable(true);
+    m_sidePanelAction->setChecked(true);
+    m_sidePanelAction->setShortcut(QKeySequence(Qt::Key_F9));
+    connect(m_sidePanelAction, &QAction::toggled, this, &MainWindow::setSidePanelsShown);
+
     m_reportsAction = new QAction(this);
     m_reportsAction->setCheckable(true);
     m_reportsAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_T));
@@ -255,7 +333,16 @@ void MainWindow::createActions()
 
     m_presentationAction = new QAction(this);
     m_presentationAction->setCheckable(true);
-    m_presentationAction->setShortcuts({QKeySequence(Qt::Key_F11), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P)});
+    // F5: a presenter remote's "start the slide show" key.
+    m_presentationAction->setShortcuts(
+        {QKeySequence(Qt::Key_F11), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_P), QKeySequence(Qt::Key_F5)});
+    // B: a presenter remote's blank key (blank_screen.h).
+    m_blankAction = new QAction(this);
+    m_blankAction->setObjectName(QStringLiteral("blankScreenAction"));
+    m_blankAction->setCheckable(true);
+    m_blankAction->setShortcut(QKeySequence(Qt::Key_B));
+    connect(m_blankAction, &QAction::toggled, m_blank, &BlankScreen::setBlank);
+    connect(m_blank, &BlankScreen::dismissed, this, [this] { m_blankAction->setChecked(false); });
     connect(m_presentationAction, &QAction::toggled, this, [this](bool on) { setPresentation(on); });
     m_zoomIn = new QAction(this);
     m_zoomIn->setShortcuts({QKeySequence::ZoomIn, QKeySequence(Qt::CTRL | Qt::Key_Equal)});
@@ -282,15 +369,29 @@ void MainWindow::createActions()
         m_tabActions.push_back(a);
     }
     // Ctrl+Tab and Ctrl+Page Down, Ctrl+Shift+Tab and Ctrl+Page Up, wherever the focus is
-    // (QTabWidget's own only while the focus is inside it, and never Page Up/Down).
+    // (QTabWidget's own only while the focus is inside it, and never Page Up/Down); Page Down
+    // and Page Up alone too, a presenter remote's next and previous slide, but for a control
+    // that pages itself (eventFilter).
     const auto cycle = [this](int by) {
         m_tabs->setCurrentIndex((m_tabs->currentIndex() + by + m_tabs->count()) % m_tabs->count());
+        // The keyboard on the new tab's canvas, else on the tab bar: where the next Page
+        // Up/Down still turns the tab (Qt would give it to the tab's first field).
+        QWidget* canvas = nullptr;
+        if (TabPage* page = currentTab())
+            for (QWidget* w : page->findChildren<QWidget*>())
+                if (drawsOwnFocusFrame(w) && w->isVisible() && (w->focusPolicy() & Qt::TabFocus)) {
+                    canvas = w;
+                    break;
+                }
+        (canvas ? canvas : m_tabs->tabBar())->setFocus(Qt::TabFocusReason);
     };
     m_nextTab = new QAction(this);
-    m_nextTab->setShortcuts({QKeySequence(Qt::CTRL | Qt::Key_Tab), QKeySequence(Qt::CTRL | Qt::Key_PageDown)});
+    m_nextTab->setShortcuts(
+        {QKeySequence(Qt::CTRL | Qt::Key_Tab), QKeySequence(Qt::CTRL | Qt::Key_PageDown), QKeySequence(Qt::Key_PageDown)});
     connect(m_nextTab, &QAction::triggered, this, [cycle] { cycle(1); });
     m_previousTab = new QAction(this);
-    m_previousTab->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Tab), QKeySequence(Qt::CTRL | Qt::Key_PageUp)});
+    m_previousTab->setShortcuts({QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Tab), QKeySequence(Qt::CTRL | Qt::Key_PageUp),
+                                 QKeySequence(Qt::Key_PageUp)});
     connect(m_previousTab, &QAction::triggered, this, [cycle] { cycle(-1); });
 
     auto* languages = new QActionGroup(this);
@@ -349,6 +450,8 @@ void MainWindow::createMenus()
 
     m_viewMenu = menuBar()->addMenu(QString());
     m_viewMenu->addAction(m_presentationAction);
+    m_viewMenu->addAction(m_blankAction);
+    m_viewMenu->addAction(m_sidePanelAction);
     m_viewMenu->addAction(m_reportsAction);
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(m_zoomIn);
@@ -387,8 +490,7 @@ void MainWindow::retranslateUndoRedo()
 void MainWindow::retranslate()
 {
     m_tabs->setAccessibleName(tr("Tabs"));
-    if (TabPage* page = currentTab())
-        m_hintLabel->setText(page->hint());
+    updateHint();
     m_fileMenu->setTitle(tr("&File"));
     m_new->setText(tr("&New"));
     m_open->setText(tr("&Open…"));
@@ -408,6 +510,11 @@ void MainWindow::retranslate()
     m_viewMenu->setTitle(tr("&View"));
     m_presentationAction->setText(tr("&Presentation mode"));
     m_presentationAction->setToolTip(tr("Full screen, larger text and thicker lines for the classroom."));
+    m_sidePanelAction->setText(tr("&Side panel"));
+    m_sidePanelAction->setToolTip(tr("The settings and results beside the canvas; presentation mode folds them away "
+                                     "so that the canvas has the width."));
+    m_blankAction->setText(tr("&Blank the screen"));
+    m_blankAction->setToolTip(tr("Black over the whole window until B again or a click (a presenter remote's blank key)."));
     m_reportsAction->setText(tr("&Error against run time"));
     m_reportsAction->setToolTip(tr("Show, below the tab, how accurate each numerical method is for the time it "
                                    "takes (work-precision plot)."));
@@ -564,10 +671,58 @@ void MainWindow::setPresentation(bool on, bool fullScreen)
         page->setPresentation(on);
     for (WorkPrecisionPanel* report : m_reports)
         report->setPresentation(on);
-    if (on && fullScreen)
+    m_focusRing->setScale(presentationScale(on));
+    // The canvas has the room in presentation mode; F9 opens the side panel like a drawer.
+    setSidePanelsShown(!on);
+    if (on && fullScreen) {
+        m_stateBeforePresentation = windowState() & Qt::WindowMaximized;
         showFullScreen();
-    else if (!on && isFullScreen())
+    } else if (!on && isFullScreen()) {
+        // The normal font's layouts first: the window's minimum size is still presentation
+        // mode's, and a window manager would keep the window that large (975 px wide on an
+        // 800 px screen).
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+        if (layout())
+            layout()->activate();
+        // Back as it was: at its own size, never past the screen (full screen may have grown
+        // it past a small one), then maximised if it was.
         showNormal();
+        resize(size().boundedTo(fittedSize()));
+        if (m_stateBeforePresentation & Qt::WindowMaximized)
+            showMaximized();
+        m_refitAfterPresentation = true; // resizeEvent: the size the window system gives it next
+    }
+}
+
+void MainWindow::setSidePanelsShown(bool shown)
+{
+    for (TabPage* page : m_pages)
+        if (QWidget* panel = page->sidePanel())
+            panel->setVisible(shown);
+    if (m_sidePanelAction->isChecked() != shown)
+        m_sidePanelAction->setChecked(shown);
+}
+
+bool MainWindow::sidePanelsShown() const { return m_sidePanelAction->isChecked(); }
+
+void MainWindow::resizeEvent(QResizeEvent* event)
+{
+    QMainWindow::resizeEvent(event);
+    // Back from full screen on a small screen, a window system may give the window the width
+    // presentation mode's layout needed (992 px on an 800 px screen): once, as it arrives, the
+    // window is fitted again (maximised again if it was).
+    const QScreen* screen = this->screen();
+    if (!m_refitAfterPresentation || m_presentation || isFullScreen() || !screen)
+        return;
+    const QSize room = screen->availableGeometry().size();
+    if (width() <= room.width() && height() <= room.height())
+        return;
+    m_refitAfterPresentation = false;
+    const bool maximised = isMaximized();
+    showNormal();
+    resize(fittedSize());
+    if (maximised)
+        showMaximized();
 }
 
 WorkPrecisionPanel* MainWindow::workPrecisionPanel(const QString& key) const
@@ -598,6 +753,43 @@ bool MainWindow::workPrecisionVisible() const
     return index >= 0 && !m_reportAreas[index]->isHidden();
 }
 
+void MainWindow::updateHint()
+{
+    TabPage* page = currentTab();
+    if (!page || !m_hintLabel)
+        return;
+    // A canvas draws its own focus ring (focus_frame.h): while one of the tab has the keyboard.
+    const QWidget* focus = focusWidget();
+    const bool keyboard = focus && drawsOwnFocusFrame(focus) && page->isAncestorOf(focus) && !page->keyboardHint().isEmpty();
+    m_hintLabel->setText(keyboard ? page->keyboardHint() : page->hint());
+}
+
+bool MainWindow::eventFilter(QObject* watched, QEvent* event)
+{
+    // A single key the window uses (Page Up/Down for the tabs, B for the blank screen) stays
+    // with a control of this window that uses it itself: a spin box steps by ten with Page
+    // Up/Down, a list or a table pages, a slider jumps; a list or a combo box finds an entry
+    // by its letter (a field being typed in keeps its letters without help).
+    if (event->type() == QEvent::ShortcutOverride && watched->isWidgetType()) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        auto* widget = static_cast<QWidget*>(watched);
+        const bool page = key->key() == Qt::Key_PageUp || key->key() == Qt::Key_PageDown;
+        const bool letter = key->key() == Qt::Key_B;
+        if ((page || letter) && key->modifiers() == Qt::NoModifier && widget->window() == this)
+            for (QWidget* w = widget; w && w != this; w = w->parentWidget()) {
+                const bool pages = qobject_cast<QAbstractSpinBox*>(w) || qobject_cast<QAbstractSlider*>(w) ||
+                                   qobject_cast<QAbstractItemView*>(w) || qobject_cast<QTextEdit*>(w) ||
+                                   qobject_cast<QPlainTextEdit*>(w) || qobject_cast<QComboBox*>(w);
+                const bool searches = qobject_cast<QAbstractItemView*>(w) || qobject_cast<QComboBox*>(w);
+                if ((page && pages) || (letter && searches)) {
+                    event->accept();
+                    return true;
+                }
+            }
+    }
+    return QMainWindow::eventFilter(watched, event);
+}
+
 void MainWindow::showMessage(const QString& text) { statusBar()->showMessage(text, 8000); }
 
 void MainWindow::showGuide()
@@ -620,7 +812,7 @@ void MainWindow::showGuide()
     box.exec();
 }
 
-QString MainWindow::shortcutsHelp() const
+QList<QAction*> MainWindow::shortcutActions() const
 {
     QList<QAction*> actions;
     for (QMenu* menu : {m_fileMenu, m_editMenu, m_viewMenu, m_examplesMenu, m_helpMenu})
@@ -629,16 +821,16 @@ QString MainWindow::shortcutsHelp() const
                 actions += a->menu()->actions();
             else
                 actions += a;
-    return ShortcutsHelp::html(actions);
+    return actions;
 }
+
+QString MainWindow::shortcutsHelp() const { return ShortcutsHelp::html(shortcutActions()); }
 
 void MainWindow::showShortcuts()
 {
-    QMessageBox box(this);
-    box.setWindowTitle(tr("Keyboard shortcuts"));
-    box.setTextFormat(Qt::RichText);
-    box.setText(shortcutsHelp());
-    box.exec();
+    if (!m_shortcutsDialog)
+        m_shortcutsDialog = new ShortcutsDialog(this);
+    m_shortcutsDialog->present(ShortcutsHelp::twoColumnHtml(shortcutActions()), frameAllowance());
 }
 
 void MainWindow::showAbout()

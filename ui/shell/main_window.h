@@ -6,6 +6,7 @@
 /// (document_controller.h); the window wires the File menu to it.
 
 #include <QFont>
+#include <QMargins>
 #include <QMainWindow>
 #include <QVector>
 
@@ -25,6 +26,9 @@ namespace granota::ui {
 
 class TabPage;
 class FrogTab;
+class BlankScreen;
+class FocusRing;
+class ShortcutsDialog;
 class ThesisFiguresDialog;
 class WorkPrecisionPanel;
 
@@ -41,6 +45,9 @@ public:
     /// Help ▸ Keyboard shortcuts, as rich text: every action's keys, then the canvases' and
     /// the Frog tab's (shortcuts_help.h).
     QString shortcutsHelp() const;
+    /// Help ▸ Keyboard shortcuts, shown (made once): the keys in two columns that scroll,
+    /// within the screen (shortcuts_dialog.h).
+    void showShortcuts();
     const QVector<TabPage*>& tabs() const { return m_pages; }
     FrogTab* frogTab() const;
 
@@ -65,8 +72,26 @@ public:
     QString exportCurrent(const QString& format, const QString& file, int dpi = 96, const TikzOptions& tikz = TikzOptions());
 
     /// Presentation mode: larger text and lines; `fullScreen` false keeps the window's size
-    /// (screenshots of presentation mode at 1280×800).
+    /// (screenshots of presentation mode at 1280×800). Leaving it gives the window back the
+    /// state it had (maximised or not), its frame within the screen.
     void setPresentation(bool on, bool fullScreen = true);
+
+    /// Shows the window as `granota` opens it: at the classroom size when that size and a
+    /// window manager's frame fit the screen's available area, else maximised, so that the
+    /// frame (title bar included) never reaches past the screen (docs/classroom.md, "Small
+    /// screens").
+    void showFitted();
+    /// The window's size before it is shown: the classroom size 1280×800, but never more than
+    /// the screen's available area less a window manager's frame (frameAllowance()).
+    QSize fittedSize() const;
+    /// The room a window manager's frame takes: a generous guess (a title bar of 40 px,
+    /// borders of 8), or the window's own frame where that is larger.
+    QMargins frameAllowance() const;
+
+    /// The tabs' side panels (TabPage::sidePanel) shown or folded away: View ▸ Side panel (F9).
+    /// Presentation mode folds them, so that the canvas has the width; leaving it shows them.
+    void setSidePanelsShown(bool shown);
+    bool sidePanelsShown() const;
 
     /// The work-precision section below each tab (docs/work-precision.md), hidden until asked for.
     WorkPrecisionPanel* workPrecisionPanel(const QString& key) const;
@@ -87,8 +112,14 @@ public:
     /// blocking, in the window.
     void showOpenError(const QString& error) { m_document->showOpenError(error); }
 
+    /// The ring round the focused control (focus_frame.h) and the blank screen (B).
+    FocusRing* focusRing() const { return m_focusRing; }
+    BlankScreen* blankScreen() const { return m_blank; }
+
 protected:
     void closeEvent(QCloseEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
     void changeEvent(QEvent* event) override;
 
 private:
@@ -100,9 +131,13 @@ private:
     void exportDialog(const QString& format);
     void exportFramesDialog();
     void showMessage(const QString& text);
+    /// The status bar's hint: the shown tab's keys while its canvas has the keyboard focus,
+    /// its mouse hint otherwise.
+    void updateHint();
     void showGuide();
-    void showShortcuts();
     void showAbout();
+    /// The menus' actions, in menu order, submenus flattened: what the shortcuts help lists.
+    QList<QAction*> shortcutActions() const;
 
     QTabWidget* m_tabs = nullptr;
     QVector<TabPage*> m_pages;
@@ -114,6 +149,9 @@ private:
     QLabel* m_cursorLabel = nullptr;
     DocumentController* m_document = nullptr;
     bool m_presentation = false;
+    /// Maximised or not before presentation mode, to come back to.
+    Qt::WindowStates m_stateBeforePresentation;
+    bool m_refitAfterPresentation = false; ///< see resizeEvent
     QFont m_normalFont;
 
     QMenu *m_fileMenu = nullptr, *m_recentMenu = nullptr, *m_exportMenu = nullptr, *m_editMenu = nullptr, *m_viewMenu = nullptr,
@@ -123,10 +161,15 @@ private:
             *m_exportTikz = nullptr, *m_exportFrames = nullptr;
     QAction *m_undo = nullptr, *m_redo = nullptr;
     QAction* m_reportsAction = nullptr;
+    QAction* m_blankAction = nullptr;
+    QAction* m_sidePanelAction = nullptr;
+    BlankScreen* m_blank = nullptr;
+    FocusRing* m_focusRing = nullptr;
     QAction *m_presentationAction = nullptr, *m_zoomIn = nullptr, *m_zoomOut = nullptr, *m_fit = nullptr;
     QAction *m_catalan = nullptr, *m_english = nullptr;
     QAction *m_guide = nullptr, *m_about = nullptr, *m_shortcutsAction = nullptr, *m_figuresAction = nullptr;
     ThesisFiguresDialog* m_figuresDialog = nullptr;
+    ShortcutsDialog* m_shortcutsDialog = nullptr;
     QAction *m_nextTab = nullptr, *m_previousTab = nullptr;
     QVector<QAction*> m_tabActions;
     QVector<QAction*> m_exampleActions;

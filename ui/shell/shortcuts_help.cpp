@@ -21,6 +21,22 @@ QString table(const QString& title, const QString& rows)
 
 QString ShortcutsHelp::html(const QList<QAction*>& actions)
 {
+    const Parts parts = sections(actions);
+    return parts.window + parts.canvases;
+}
+
+QString ShortcutsHelp::twoColumnHtml(const QList<QAction*>& actions)
+{
+    // Two cells side by side: the window's keys, then the canvases' and the Frog tab's.
+    const Parts parts = sections(actions);
+    return QStringLiteral("<table width=\"100%\" cellspacing=\"0\" cellpadding=\"0\"><tr>"
+                          "<td valign=\"top\" width=\"50%\">%1</td><td width=\"16\"></td>"
+                          "<td valign=\"top\">%2</td></tr></table>")
+        .arg(parts.window, parts.canvases);
+}
+
+ShortcutsHelp::Parts ShortcutsHelp::sections(const QList<QAction*>& actions)
+{
     QString window;
     for (const QAction* a : actions) {
         if (a->shortcuts().isEmpty())
@@ -48,10 +64,12 @@ QString ShortcutsHelp::html(const QList<QAction*>& actions)
         row(tr("L"), tr("On the canvas: a ruler from the cursor; move it with the arrows, L again to fix it")) +
         row(tr("Right drag, or Ctrl+drag"), tr("On the canvas: measure in px with the ruler")) +
         row(tr("Space"), tr("On the canvas: a new body at the cursor, held until released"));
-    return table(tr("The window"), window) + table(tr("De Casteljau, Fitting and Catmull-Rom canvases"), curves) +
-           table(
-               tr("Frog tab (P, S, the comma and the period, R, M, [ and ] whenever the tab is shown, unless a field is being typed in)"),
-               frog);
+    return {
+        table(tr("The window"), window),
+        table(tr("De Casteljau, Fitting and Catmull-Rom canvases"), curves) +
+            table(
+                tr("Frog tab (P, S, the comma and the period, R, M, [ and ] whenever the tab is shown, unless a field is being typed in)"),
+                frog)};
 }
 
 } // namespace granota::ui

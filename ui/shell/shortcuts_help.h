@@ -19,6 +19,16 @@ public:
     /// The help as rich text: a table of the actions that have a shortcut (in the order
     /// given), then the keys of the curve canvases, the Frog tab and its canvas.
     static QString html(const QList<QAction*>& actions);
+    /// The same in two columns, the window's keys beside the rest: what the dialog shows, so
+    /// that it fits a projector's 768 px or 600 px (ShortcutsDialog).
+    static QString twoColumnHtml(const QList<QAction*>& actions);
+
+private:
+    struct Parts {
+        QString window;   ///< the actions' table
+        QString canvases; ///< the canvases' and the Frog tab's tables
+    };
+    static Parts sections(const QList<QAction*>& actions);
 };
 
 } // namespace granota::ui

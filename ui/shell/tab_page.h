@@ -62,6 +62,9 @@ public:
     /// What the user can do here, in a line, in the current language: the main window's status
     /// bar shows the hint of the tab shown (passing messages cover it for a few seconds).
     virtual QString hint() const = 0;
+    /// The same while the tab's canvas (its export view) has the keyboard focus: its keys, not
+    /// the mouse's. Empty: hint() then too.
+    virtual QString keyboardHint() const { return QString(); }
 
     /// The undo stack of the tab's edits (the main window's Edit menu follows the current tab).
     /// Every change the document keeps is one step on it (docs/tabs.md, "Undo").
@@ -81,6 +84,11 @@ public:
 
     /// Presentation mode: larger lines, handles and labels (docs/classroom.md).
     virtual void setPresentation(bool on) { (void)on; }
+    /// The panel beside the canvas (settings, tables, exact results): in presentation mode the
+    /// main window folds it away like a drawer, so that the canvas has the width, and View ▸
+    /// Side panel (F9) opens it again (docs/classroom.md, "Presentation mode").
+    QWidget* sidePanel() const { return m_sidePanel; }
+
     /// View ▸ Zoom in/out (factor > 1 zooms in) and View ▸ Fit.
     virtual void zoom(double factor) { (void)factor; }
     virtual void fitView() {}
@@ -99,6 +107,8 @@ protected:
 
     /// The tab's view for File ▸ Export (it stays the tab's; set in the constructor).
     void setExportView(Drawable* view) { m_exportView = view; }
+    /// The tab's side panel (sidePanel(); set in the constructor).
+    void setSidePanel(QWidget* panel) { m_sidePanel = panel; }
 
     void changeEvent(QEvent* event) override
     {
@@ -113,6 +123,7 @@ private:
     const QString m_key;
     const char* const m_title;
     Drawable* m_exportView = nullptr;
+    QWidget* m_sidePanel = nullptr;
 };
 
 } // namespace granota::ui
