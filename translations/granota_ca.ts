@@ -3637,6 +3637,10 @@ a cada canvi alentiria la finestra.</translation>
             <source>Step %1 is no longer recorded.</source>
             <translation>El pas %1 ja no està enregistrat.</translation>
         </message>
+        <message>
+            <source>Keys: the arrows move the cursor, G grabs, L lays a ruler, Space spawns a body; P pauses, S steps, R resets.</source>
+            <translation>Tecles: les fletxes mouen el cursor, G agafa, L posa un regle, l&apos;espai fa aparèixer un cos; P atura, S avança un pas, R reinicia.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::MainWindow</name>
@@ -4191,6 +4195,22 @@ Ja no és al disc.</translation>
         <message>
             <source>Size of the frames (video):</source>
             <translation>Mida dels fotogrames (vídeo):</translation>
+        </message>
+        <message>
+            <source>&amp;Side panel</source>
+            <translation>&amp;Tauler lateral</translation>
+        </message>
+        <message>
+            <source>The settings and results beside the canvas; presentation mode folds them away so that the canvas has the width.</source>
+            <translation>Els paràmetres i els resultats al costat del llenç; el mode de presentació els amaga perquè el llenç tingui tota l&apos;amplada.</translation>
+        </message>
+        <message>
+            <source>&amp;Blank the screen</source>
+            <translation>Pantalla en &amp;negre</translation>
+        </message>
+        <message>
+            <source>Black over the whole window until B again or a click (a presenter remote&apos;s blank key).</source>
+            <translation>Negre sobre tota la finestra fins que torneu a prémer B o feu un clic (la tecla de pantalla en negre d&apos;un comandament de presentacions).</translation>
         </message>
     </context>
     <context>
@@ -4837,6 +4857,10 @@ Ja no és al disc.</translation>
             <source>“pointLabels” is not true or false.</source>
             <translation>«pointLabels» no és ni true ni false.</translation>
         </message>
+        <message>
+            <source>Keys: ] and [ select a point, the arrows nudge it (Shift: ten times more), Delete removes it; Tab leaves the canvas.</source>
+            <translation>Tecles: ] i [ seleccionen un punt, les fletxes el mouen una mica (Maj: deu vegades més), Supr l&apos;elimina; Tab surt del llenç.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::TikzOptionsDialog</name>
@@ -5450,6 +5474,17 @@ Ja no és al disc.</translation>
         <message>
             <source>Line %1: %2</source>
             <translation>Línia %1: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::ShortcutsDialog</name>
+        <message>
+            <source>Keyboard shortcuts</source>
+            <translation>Dreceres de teclat</translation>
+        </message>
+        <message>
+            <source>&amp;Close</source>
+            <translation>&amp;Tanca</translation>
         </message>
     </context>
 </TS>

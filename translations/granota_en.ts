@@ -3637,6 +3637,10 @@ on each change would slow the window.</translation>
             <source>Step %1 is no longer recorded.</source>
             <translation>Step %1 is no longer recorded.</translation>
         </message>
+        <message>
+            <source>Keys: the arrows move the cursor, G grabs, L lays a ruler, Space spawns a body; P pauses, S steps, R resets.</source>
+            <translation>Keys: the arrows move the cursor, G grabs, L lays a ruler, Space spawns a body; P pauses, S steps, R resets.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::MainWindow</name>
@@ -4191,6 +4195,22 @@ It is no longer on disk.</translation>
         <message>
             <source>Size of the frames (video):</source>
             <translation>Size of the frames (video):</translation>
+        </message>
+        <message>
+            <source>&amp;Side panel</source>
+            <translation>&amp;Side panel</translation>
+        </message>
+        <message>
+            <source>The settings and results beside the canvas; presentation mode folds them away so that the canvas has the width.</source>
+            <translation>The settings and results beside the canvas; presentation mode folds them away so that the canvas has the width.</translation>
+        </message>
+        <message>
+            <source>&amp;Blank the screen</source>
+            <translation>&amp;Blank the screen</translation>
+        </message>
+        <message>
+            <source>Black over the whole window until B again or a click (a presenter remote&apos;s blank key).</source>
+            <translation>Black over the whole window until B again or a click (a presenter remote&apos;s blank key).</translation>
         </message>
     </context>
     <context>
@@ -4837,6 +4857,10 @@ It is no longer on disk.</translation>
             <source>“pointLabels” is not true or false.</source>
             <translation>“pointLabels” is not true or false.</translation>
         </message>
+        <message>
+            <source>Keys: ] and [ select a point, the arrows nudge it (Shift: ten times more), Delete removes it; Tab leaves the canvas.</source>
+            <translation>Keys: ] and [ select a point, the arrows nudge it (Shift: ten times more), Delete removes it; Tab leaves the canvas.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::TikzOptionsDialog</name>
@@ -5450,6 +5474,17 @@ It is no longer on disk.</translation>
         <message>
             <source>Line %1: %2</source>
             <translation>Line %1: %2</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::ShortcutsDialog</name>
+        <message>
+            <source>Keyboard shortcuts</source>
+            <translation>Keyboard shortcuts</translation>
+        </message>
+        <message>
+            <source>&amp;Close</source>
+            <translation>&amp;Close</translation>
         </message>
     </context>
 </TS>

@@ -1571,15 +1571,21 @@ Point FrogCanvas::bodyCentre(int body)
     return sum;
 }
 
+Point FrogCanvas::keyboardCursorStart()
+{
+    // On the body nearest the middle of the view, where the keys can grab it at once (the
+    // view's middle if the scene has none), never in a corner half out of sight.
+    const Point middle = toScene(QPointF(rect().center()));
+    if (const int body = nearestBody(middle); body >= 0)
+        return bodyCentre(body);
+    return middle;
+}
+
 void FrogCanvas::placeKeyboardCursor()
 {
     if (m_mouseKnown || !sim())
         return;
-    // On the body nearest the middle of the view, where the keys can grab it at once (the
-    // view's middle if the scene has none), never in a corner half out of sight.
-    m_mouse = toScene(QPointF(rect().center()));
-    if (const int body = nearestBody(m_mouse); body >= 0)
-        m_mouse = bodyCentre(body);
+    m_mouse = keyboardCursorStart();
     m_mouseKnown = true;
 }
 
@@ -1766,7 +1772,10 @@ void FrogCanvas::hideEvent(QHideEvent* event)
 
 void FrogCanvas::focusInEvent(QFocusEvent* event)
 {
-    placeKeyboardCursor();
+    // The cursor is drawn where the keys will start, but the scene is not told of a mouse
+    // until a key moves or uses it (the §4.1 polygon's radius follows the mouse).
+    if (!m_mouseKnown && sim())
+        m_mouse = keyboardCursorStart();
     update(); // the focus frame and the keyboard cursor
     QWidget::focusInEvent(event);
 }

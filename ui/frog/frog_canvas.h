@@ -335,6 +335,8 @@ private:
     /// The keyboard's grab: the cursor (the simulation's mouse) moved by the arrows, drawn
     /// while the canvas has the focus; G or Enter grabs at it, again or Esc lets go.
     void moveKeyboardCursor(double dx, double dy);
+    /// Where the keyboard cursor starts: on the body nearest the view's middle.
+    Point keyboardCursorStart();
     bool keyboardGrab();
     void keyboardRelease();
     int nearestBody(Point at);
