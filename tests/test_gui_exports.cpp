@@ -47,6 +47,10 @@ using granota::ui::TikzWriter;
 
 namespace {
 
+/// A cubic from the upper left to the lower right of its box, bulging up: its end P3 is in
+/// the lower right corner of the view, the lower left corner is empty.
+const std::vector<Point> kEndsLowerRight = {{0, 3}, {2, 3}, {4, 2}, {6, 0}};
+
 /// The QSettings key of the folder used last (ui/shell/file_dialogs.h), written out: the
 /// test sets it as a user's earlier session would have.
 const QString kLastFolder = QStringLiteral("files/lastFolder");
@@ -141,16 +145,26 @@ class TestGuiExports : public QObject {
 private slots:
     void initTestCase() { useTestSettings(); }
 
-    // Ex 2.3 with the hodograph: its curve ends at P4 = P0 in the canvas's lower right, where
-    // the inset used to be drawn over it. On screen the inset now covers no handle, no label
-    // and no sample of the curve (a corner is free at this size: the key finds one too).
+    // A curve that ends in the lower right corner of its view (P3), where the inset used to
+    // be drawn over its end, and Ex 2.3 (the example): on screen the inset covers no
+    // handle and no sample of the curve, and the key keeps clear of it.
+    void theHodographInsetCoversNothingOnScreen_data()
+    {
+        QTest::addColumn<QString>("example");
+        QTest::newRow("end in the lower right") << QString();
+        QTest::newRow("Ex 2.3") << QStringLiteral("2.3");
+    }
     void theHodographInsetCoversNothingOnScreen()
     {
+        QFETCH(QString, example);
         MainWindow window;
         QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
-        QVERIFY(loadExamples(window, {"2.3"}));
         auto* tab = window.findChild<DeCasteljauTab*>();
         QVERIFY(tab);
+        if (example.isEmpty())
+            tab->loadCurve(kEndsLowerRight, QStringLiteral("curve"));
+        else
+            QVERIFY(window.loadExample(example));
         tab->setHodographVisible(true);
         QCoreApplication::processEvents();
         const auto& view = tab->canvas()->view();
@@ -166,19 +180,23 @@ private slots:
         }
         for (const Point& q : tab->curve())
             QVERIFY2(!inset.contains(view.toScreen(q)), "the curve under the inset");
-        // The key keeps clear of it.
         QVERIFY(!tab->legendRect(view, style).intersects(inset));
     }
 
-    // The same in TikZ: no coordinate of the main picture (the curve's polyline, the
-    // polygon, the points) lies inside the inset's frame, and the key's frame keeps clear of
-    // both the inset and the points.
+    // The same in TikZ: no coordinate of the main picture (the curve's polyline, the polygon,
+    // the points) lies inside the inset's frame.
+    void theHodographInsetCoversNothingInTikz_data() { theHodographInsetCoversNothingOnScreen_data(); }
     void theHodographInsetCoversNothingInTikz()
     {
+        QFETCH(QString, example);
         MainWindow window;
         QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
-        QVERIFY(loadExamples(window, {"2.3"}));
         auto* tab = window.findChild<DeCasteljauTab*>();
+        QVERIFY(tab);
+        if (example.isEmpty())
+            tab->loadCurve(kEndsLowerRight, QStringLiteral("curve"));
+        else
+            QVERIFY(window.loadExample(example));
         tab->setHodographVisible(true);
         const QString tex = tab->tikz();
         const QRectF inset = boxAfter(tex, QStringLiteral("% inset"));
