@@ -453,7 +453,10 @@ private slots:
                      qPrintable(QStringLiteral("a message of the last tab stays: ") + window.statusBar()->currentMessage()));
             QVERIFY2(!hint->text().isEmpty(), qPrintable(window.currentTab()->key()));
             QVERIFY2(!hints.contains(hint->text()), qPrintable(hint->text()));
-            QCOMPARE(hint->text(), window.currentTab()->hint());
+            // The tab's hint, or its keys' while its canvas has the keyboard (a real window
+            // gives the canvas focus; docs/classroom.md).
+            QVERIFY2(hint->text() == window.currentTab()->hint() || hint->text() == window.currentTab()->keyboardHint(),
+                     qPrintable(hint->text()));
             hints << hint->text();
             window.statusBar()->showMessage(QStringLiteral("a passing message of this tab"), 8000);
         }
@@ -471,7 +474,8 @@ private slots:
         QVERIFY(granota::ui::setLanguage(QStringLiteral("ca"), false));
         QTRY_VERIFY2_WITH_TIMEOUT(hint->text() != hints.last(), qPrintable(hint->text()),
                                   kEventWaitMs); // the Frog tab's, in Catalan
-        QCOMPARE(hint->text(), window.currentTab()->hint());
+        QVERIFY2(hint->text() == window.currentTab()->hint() || hint->text() == window.currentTab()->keyboardHint(),
+                 qPrintable(hint->text()));
         QVERIFY(granota::ui::setLanguage(QStringLiteral("en"), false));
         QTRY_COMPARE_WITH_TIMEOUT(hint->text(), hints.last(), kEventWaitMs);
     }
