@@ -154,6 +154,27 @@ private slots:
         QTest::newRow("end in the lower right") << QString();
         QTest::newRow("Ex 2.3") << QStringLiteral("2.3");
     }
+    // Issue 34, item 11: the labels now write their indices as Unicode sub- and superscripts;
+    // TikZ turns each run of them into one LaTeX group (expected strings written by hand from
+    // LaTeX's syntax: "Pᵢ₊₁" is P with the subscript i+1).
+    void texTextGroupsIndices_data()
+    {
+        QTest::addColumn<QString>("label");
+        QTest::addColumn<QString>("tex");
+        QTest::newRow("P_{i+1}") << QStringLiteral("Pᵢ₊₁") << QStringLiteral("P$_{i+1}$");
+        QTest::newRow("B_i^n") << QStringLiteral("Bᵢⁿ(t)") << QStringLiteral("B$_{i}^{n}$(t)");
+        QTest::newRow("10^16") << QStringLiteral("10¹⁶") << QStringLiteral("10$^{16}$");
+        QTest::newRow("w_j") << QStringLiteral("wⱼ(t, τ)") << QStringLiteral("w$_{j}$(t, $\\tau$)");
+        QTest::newRow("P_{10}") << QStringLiteral("P₁₀") << QStringLiteral("P$_{10}$");
+        QTest::newRow("M^T") << QStringLiteral("MᵀM") << QStringLiteral("M$^{T}$M");
+    }
+    void texTextGroupsIndices()
+    {
+        QFETCH(QString, label);
+        QFETCH(QString, tex);
+        QCOMPARE(TikzWriter::texText(label), tex);
+    }
+
     void theHodographInsetCoversNothingOnScreen()
     {
         QFETCH(QString, example);

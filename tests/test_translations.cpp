@@ -106,6 +106,31 @@ private slots:
             QVERIFY(differing > messages.size() * 3 / 4); // Catalan really is Catalan
     }
 
+    // Issue 34, item 11: labels, tooltips and the status bar write indices as the panels do
+    // (tᵢ, wⱼ, Bᵢⁿ, 10¹⁶), never as typed markup ("t_i", "w_j", "B_i^n", "10^16"): a plain-text
+    // widget would show the underscore and caret as they are.
+    void noTypedMarkupInAnyMessage_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("ca") << QStringLiteral("ca");
+        QTest::newRow("en") << QStringLiteral("en");
+    }
+    void noTypedMarkupInAnyMessage()
+    {
+        QFETCH(QString, language);
+        // A single letter with an index after "_" ("t_i", "q_{i+1}", "P_(i−1)"), or a number or
+        // letter raised with "^" ("t^i", "10^16", "^(n−i)"); names such as "area_factor" are not.
+        static const QRegularExpression markup(
+            QStringLiteral("(?<![A-Za-z_])[A-Za-zσ]_(?:[ijkn0-9]\\b|[{(])|[A-Za-z0-9)]\\^(?:[0-9ni(]|\\{)"));
+        const auto messages = readTs(QStringLiteral(GRANOTA_SOURCE_DIR "/translations/granota_%1.ts").arg(language));
+        QStringList found;
+        for (const auto& m : messages)
+            for (const QString& text : QStringList{m.source} + m.translations)
+                if (text.contains(markup))
+                    found << m.context + QStringLiteral(": ") + text.left(80);
+        QVERIFY2(found.isEmpty(), qPrintable(found.join(QLatin1Char('\n'))));
+    }
+
     // Item 18 of the classroom pass: one word per concept (translations/GLOSSARY.md). Every
     // Catalan message whose source names a concept of the glossary uses the glossary's word
     // for it and none of the words it replaced; the English interface shows no Catalan word.
@@ -146,7 +171,9 @@ private slots:
         QStringList failures;
         const auto catalan = readTs(QStringLiteral(GRANOTA_SOURCE_DIR "/translations/granota_ca.ts"));
         for (const Row& row : rows) {
-            const QRegularExpression term(QStringLiteral("\\b") + QRegularExpression::escape(row.english),
+            // Not inside a file name ("docs/thesis-errata.md").
+            const QRegularExpression term(QStringLiteral("\\b") + QRegularExpression::escape(row.english) +
+                                              QStringLiteral("(?![-.])"),
                                           QRegularExpression::CaseInsensitiveOption);
             int uses = 0;
             for (const Message& m : catalan) {

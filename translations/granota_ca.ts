@@ -150,8 +150,8 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="207" />
-            <source>Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)</source>
-            <translation>Funcions de mescla w_j(t, τ) (Def. 2.9, Cor. 2.1)</translation>
+            <source>Blending functions wⱼ(t, τ) (Def 2.9, Cor 2.1)</source>
+            <translation>Funcions de mescla wⱼ(t, τ) (Def. 2.9, Cor. 2.1)</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="220" />
@@ -166,7 +166,7 @@
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="255" />
             <source>Ex 2.1 as printed in the thesis</source>
-            <translation>L'Ex. 2.1 tal com apareix al treball</translation>
+            <translation>L'Ex. 2.1 tal com apareix a la tesi</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="261" />
@@ -200,8 +200,8 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="309" />
-            <source>In decimals, each piece in powers of u = x − x_i:</source>
-            <translation>En decimals, cada tros en potències de u = x − x_i:</translation>
+            <source>In decimals, each piece in powers of u = x − xᵢ:</source>
+            <translation>En decimals, cada tros en potències de u = x − xᵢ:</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="326" />
@@ -245,8 +245,8 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="371" />
-            <source>Catmull-Rom curves are C¹: at every knot c_i′(1) = c_{i+1}′(0) = τ(q_{i+1} − q_{i−1}).</source>
-            <translation>Les corbes de Catmull-Rom són C¹: a cada nus c_i′(1) = c_{i+1}′(0) = τ(q_{i+1} − q_{i−1}).</translation>
+            <source>Catmull-Rom curves are C¹: at every knot cᵢ′(1) = cᵢ₊₁′(0) = τ(qᵢ₊₁ − qᵢ₋₁).</source>
+            <translation>Les corbes de Catmull-Rom són C¹: a cada nus cᵢ′(1) = cᵢ₊₁′(0) = τ(qᵢ₊₁ − qᵢ₋₁).</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="394" />
@@ -322,7 +322,7 @@
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="410" />
             <source>The Bézier curve only approaches the inner points: Catmull-Rom passes through all of them, which is why the thesis chose it for the frog (§2.3, §4.12).</source>
-            <translation>La corba de Bézier només s'acosta als punts interiors: la de Catmull-Rom passa per tots, i per això el treball la va triar per a la granota (§2.3, §4.12).</translation>
+            <translation>La corba de Bézier només s'acosta als punts interiors: la de Catmull-Rom passa per tots, i per això la tesi la va triar per a la granota (§2.3, §4.12).</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="1" />
@@ -387,8 +387,8 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="1" />
-            <source>Centripetal and chordal spacing: the derivatives are taken in the knot parameter u, in which segment i has length h_i = |q_{i+1} − q_i|^α. There the curve is C¹; in the local parameters the tangents are only parallel (G¹).</source>
-            <translation>Espaiat centrípet i de corda: les derivades es prenen en el paràmetre dels nusos u, en què el segment i té longitud h_i = |q_{i+1} − q_i|^α. En aquest paràmetre la corba és C¹; en els paràmetres locals les tangents només són paral·leles (G¹).</translation>
+            <source>Centripetal and chordal spacing: the derivatives are taken in the knot parameter u, in which segment i has length hᵢ = |qᵢ₊₁ − qᵢ|ᵅ. There the curve is C¹; in the local parameters the tangents are only parallel (G¹).</source>
+            <translation>Espaiat centrípet i de corda: les derivades es prenen en el paràmetre dels nusos u, en què el segment i té longitud hᵢ = |qᵢ₊₁ − qᵢ|ᵅ. En aquest paràmetre la corba és C¹; en els paràmetres locals les tangents només són paral·leles (G¹).</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="1" />
@@ -397,8 +397,8 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="1" />
-            <source>Its graph (x, s(x)) piece by piece, x = x_i + h_i u, u ∈ [0, 1]; the derivatives in x.</source>
-            <translation>El seu gràfic (x, s(x)) tros a tros, x = x_i + h_i u, u ∈ [0, 1]; les derivades en x.</translation>
+            <source>Its graph (x, s(x)) piece by piece, x = xᵢ + hᵢ u, u ∈ [0, 1]; the derivatives in x.</source>
+            <translation>El seu gràfic (x, s(x)) tros a tros, x = xᵢ + hᵢ u, u ∈ [0, 1]; les derivades en x.</translation>
         </message>
         <message>
             <source>Cubic spline C² (Def 2.3), %1</source>
@@ -526,8 +526,8 @@
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="469" />
-            <source>The degree n of the Bernstein polynomials B_i^n(t) = C(n,i) t^i (1−t)^(n−i) (Def 2.5).</source>
-            <translation>El grau n dels polinomis de Bernstein B_i^n(t) = C(n,i) t^i (1−t)^(n−i) (Def 2.5).</translation>
+            <source>The degree n of the Bernstein polynomials Bᵢⁿ(t) = C(n,i) tⁱ (1−t)ⁿ⁻ⁱ (Def 2.5).</source>
+            <translation>El grau n dels polinomis de Bernstein Bᵢⁿ(t) = C(n,i) tⁱ (1−t)ⁿ⁻ⁱ (Def 2.5).</translation>
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="472" />
@@ -537,7 +537,7 @@
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="473" />
             <source>Overlay the polynomials of every degree 0…n, one colour per degree, like the tots option of the thesis's Matlab Rep_Pol_Bernstein (Ex 2.4, Figure 2.4).</source>
-            <translation>Superposa els polinomis de cada grau 0…n, un color per grau, com l'opció tots de la funció de Matlab Rep_Pol_Bernstein del treball (Ex 2.4, Figura 2.4).</translation>
+            <translation>Superposa els polinomis de cada grau 0…n, un color per grau, com l'opció tots de la funció de Matlab Rep_Pol_Bernstein de la tesi (Ex 2.4, Figura 2.4).</translation>
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="475" />
@@ -551,8 +551,8 @@
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="478" />
-            <source>Def 2.6: c(t) = Σ B_i^n(t) P_i. Each bar is the weight of one control point of the De Casteljau tab at the current t; they sum to 1 (partition of unity).</source>
-            <translation>Def 2.6: c(t) = Σ B_i^n(t) P_i. Cada barra és el pes d'un punt de control de la pestanya De Casteljau al t actual; sumen 1 (partició de la unitat).</translation>
+            <source>Def 2.6: c(t) = Σ Bᵢⁿ(t) Pᵢ. Each bar is the weight of one control point of the De Casteljau tab at the current t; they sum to 1 (partition of unity).</source>
+            <translation>Def 2.6: c(t) = Σ Bᵢⁿ(t) Pᵢ. Cada barra és el pes d'un punt de control de la pestanya De Casteljau al t actual; sumen 1 (partició de la unitat).</translation>
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="480" />
@@ -581,13 +581,13 @@
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="487" />
-            <source>Symmetry: B_i^n(t) = B_(n−i)^n(1 − t).</source>
-            <translation>Simetria: B_i^n(t) = B_(n−i)^n(1 − t).</translation>
+            <source>Symmetry: Bᵢⁿ(t) = Bₙ₋ᵢⁿ(1 − t).</source>
+            <translation>Simetria: Bᵢⁿ(t) = Bₙ₋ᵢⁿ(1 − t).</translation>
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="488" />
-            <source>Lemma 2.1: B_i^n = (1 − t) B_i^(n−1) + t B_(i−1)^(n−1).</source>
-            <translation>Lema 2.1: B_i^n = (1 − t) B_i^(n−1) + t B_(i−1)^(n−1).</translation>
+            <source>Lemma 2.1: Bᵢⁿ = (1 − t) Bᵢⁿ⁻¹ + t Bᵢ₋₁ⁿ⁻¹.</source>
+            <translation>Lema 2.1: Bᵢⁿ = (1 − t) Bᵢⁿ⁻¹ + t Bᵢ₋₁ⁿ⁻¹.</translation>
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="489" />
@@ -626,8 +626,8 @@
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="613" />
-            <source>Move the mouse over the plot to read B_i^n(t); click or drag to move t.</source>
-            <translation>Moveu el ratolí per sobre del gràfic per llegir B_i^n(t); feu clic o arrossegueu per moure t.</translation>
+            <source>Move the mouse over the plot to read Bᵢⁿ(t); click or drag to move t.</source>
+            <translation>Moveu el ratolí per sobre del gràfic per llegir Bᵢⁿ(t); feu clic o arrossegueu per moure t.</translation>
         </message>
         <message>
             <location filename="../ui/bernstein_tab.h" line="46" />
@@ -777,7 +777,7 @@
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="311" />
             <source>uniform (thesis)</source>
-            <translation>uniforme (treball)</translation>
+            <translation>uniforme (tesi)</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="312" />
@@ -791,8 +791,8 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="314" />
-            <source>Knot spacing |q_{i+1} − q_i|^α. The thesis uses uniform spacing (α = 0). Beyond it: centripetal (α = 1/2) avoids cusps and loops, chordal (α = 1) follows the chord lengths; the segments then join with parallel tangents (G¹).</source>
-            <translation>Separació dels nusos |q_{i+1} − q_i|^α. El treball fa servir la parametrització uniforme (α = 0). Més enllà: la centrípeta (α = 1/2) evita cúspides i bucles, la de longitud de corda (α = 1) segueix les longituds de les cordes; aleshores els segments s'uneixen amb tangents paral·leles (G¹).</translation>
+            <source>Knot spacing |qᵢ₊₁ − qᵢ|ᵅ. The thesis uses uniform spacing (α = 0). Beyond it: centripetal (α = 1/2) avoids cusps and loops, chordal (α = 1) follows the chord lengths; the segments then join with parallel tangents (G¹).</source>
+            <translation>Separació dels nusos |qᵢ₊₁ − qᵢ|ᵅ. La tesi fa servir la parametrització uniforme (α = 0). Més enllà: la centrípeta (α = 1/2) evita cúspides i bucles, la de longitud de corda (α = 1) segueix les longituds de les cordes; aleshores els segments s'uneixen amb tangents paral·leles (G¹).</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="317" />
@@ -826,13 +826,13 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="328" />
-            <source>Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)</source>
-            <translation>Funcions de mescla w_j(t, τ) (Def. 2.9, Cor. 2.1)</translation>
+            <source>Blending functions wⱼ(t, τ) (Def 2.9, Cor 2.1)</source>
+            <translation>Funcions de mescla wⱼ(t, τ) (Def. 2.9, Cor. 2.1)</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="329" />
-            <source>p(t) = Σ w_j(t, τ) p_j: the weight of each of the four points along a segment. They always add up to 1.</source>
-            <translation>p(t) = Σ w_j(t, τ) p_j: el pes de cadascun dels quatre punts al llarg d'un segment. Sempre sumen 1.</translation>
+            <source>p(t) = Σ wⱼ(t, τ) pⱼ: the weight of each of the four points along a segment. They always add up to 1.</source>
+            <translation>p(t) = Σ wⱼ(t, τ) pⱼ: el pes de cadascun dels quatre punts al llarg d'un segment. Sempre sumen 1.</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="331" />
@@ -846,8 +846,8 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="334" />
-            <source>The blending functions w_0…w_3 of Cor 2.1 on t ∈ [0, 1].</source>
-            <translation>Les funcions de mescla w_0…w_3 del Cor. 2.1 en t ∈ [0, 1].</translation>
+            <source>The blending functions w₀…w₃ of Cor 2.1 on t ∈ [0, 1].</source>
+            <translation>Les funcions de mescla w₀…w₃ del Cor. 2.1 en t ∈ [0, 1].</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="335" />
@@ -981,7 +981,7 @@
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="689" />
             <source>dashed: %1 ends</source>
-            <translation>discontínua: extrems de tipus %1</translation>
+            <translation>discontínua: la corba %1</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="691" />
@@ -1159,8 +1159,8 @@
             <translation>Pun&amp;ts</translation>
         </message>
         <message>
-            <source>Draw the points q_i that the curves interpolate, their labels and their polygon; off, the curves alone, like puntvis = false in the thesis&apos;s Matlab Rep_CatmullRom. The table still edits the points.</source>
-            <translation>Dibuixa els punts q_i que interpolen les corbes, les seves etiquetes i el seu polígon; desactivat, només les corbes, com puntvis = false al Rep_CatmullRom del Matlab de la tesi. La taula continua editant els punts.</translation>
+            <source>Draw the points qᵢ that the curves interpolate, their labels and their polygon; off, the curves alone, like puntvis = false in the thesis&apos;s Matlab Rep_CatmullRom. The table still edits the points.</source>
+            <translation>Dibuixa els punts qᵢ que interpolen les corbes, les seves etiquetes i el seu polígon; desactivat, només les corbes, com puntvis = false al Rep_CatmullRom del Matlab de la tesi. La taula continua editant els punts.</translation>
         </message>
         <message>
             <source>Show the points</source>
@@ -1206,8 +1206,8 @@
             <translation>En reproduir, mou c(t) per passos iguals de longitud d'arc en lloc de passos iguals de t: t no és la distància al llarg de la corba.</translation>
         </message>
         <message>
-            <source>The hodograph c′ in the corner: a Bézier curve of degree n − 1 with control points n (P_(i+1) − P_i), with its own De Casteljau construction at the same t; its point is c′(t).</source>
-            <translation>L'hodògraf c′ a la cantonada: una corba de Bézier de grau n − 1 amb punts de control n (P_(i+1) − P_i), amb la seva pròpia construcció de De Casteljau al mateix t; el seu punt és c′(t).</translation>
+            <source>The hodograph c′ in the corner: a Bézier curve of degree n − 1 with control points n (Pᵢ₊₁ − Pᵢ), with its own De Casteljau construction at the same t; its point is c′(t).</source>
+            <translation>L'hodògraf c′ a la cantonada: una corba de Bézier de grau n − 1 amb punts de control n (Pᵢ₊₁ − Pᵢ), amb la seva pròpia construcció de De Casteljau al mateix t; el seu punt és c′(t).</translation>
         </message>
         <message>
             <source>Inflection points ○, where x′y″ − y′x″ changes sign (the curve turns the other way), and cusps ×, where c′ = 0.</source>
@@ -1464,7 +1464,7 @@
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="658" />
             <source>Sampling precision: the curve is drawn through this many intervals of t, like part in the thesis's Matlab De_Casteljau(P, part).</source>
-            <translation>Precisió del mostreig: la corba es dibuixa amb aquest nombre d'intervals de t, com part a la funció de Matlab De_Casteljau(P, part) del treball.</translation>
+            <translation>Precisió del mostreig: la corba es dibuixa amb aquest nombre d'intervals de t, com part a la funció de Matlab De_Casteljau(P, part) de la tesi.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="662" />
@@ -1473,8 +1473,8 @@
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="663" />
-            <source>Degree elevation: the same curve written with one control point more (Q_i = i/(n+1) P_(i−1) + (1 − i/(n+1)) P_i). Undoable.</source>
-            <translation>Elevació del grau: la mateixa corba escrita amb un punt de control més (Q_i = i/(n+1) P_(i−1) + (1 − i/(n+1)) P_i). Es pot desfer.</translation>
+            <source>Degree elevation: the same curve written with one control point more (Qᵢ = i/(n+1) Pᵢ₋₁ + (1 − i/(n+1)) Pᵢ). Undoable.</source>
+            <translation>Elevació del grau: la mateixa corba escrita amb un punt de control més (Qᵢ = i/(n+1) Pᵢ₋₁ + (1 − i/(n+1)) Pᵢ). Es pot desfer.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="665" />
@@ -1483,8 +1483,8 @@
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="666" />
-            <source>Draw every level P_i^r(t) of De Casteljau's algorithm (Def 2.4): the points of each level and the segments between them, one colour per level.</source>
-            <translation>Dibuixa cada nivell P_i^r(t) de l'algorisme de De Casteljau (Def 2.4): els punts de cada nivell i els segments que els uneixen, un color per nivell.</translation>
+            <source>Draw every level Pᵢʳ(t) of De Casteljau's algorithm (Def 2.4): the points of each level and the segments between them, one colour per level.</source>
+            <translation>Dibuixa cada nivell Pᵢʳ(t) de l'algorisme de De Casteljau (Def 2.4): els punts de cada nivell i els segments que els uneixen, un color per nivell.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="668" />
@@ -1494,7 +1494,7 @@
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="669" />
             <source>Overlay the curves of the first 1, 2, …, n+1 control points, like the desglossar option of the thesis's Matlab Rep_Bezier.</source>
-            <translation>Superposa les corbes dels primers 1, 2, …, n+1 punts de control, com l'opció desglossar de la funció de Matlab Rep_Bezier del treball.</translation>
+            <translation>Superposa les corbes dels primers 1, 2, …, n+1 punts de control, com l'opció desglossar de la funció de Matlab Rep_Bezier de la tesi.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="671" />
@@ -1503,8 +1503,8 @@
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="672" />
-            <source>The tangent vector c′(t) = n (P_1^(n−1)(t) − P_0^(n−1)(t)), read off the last level but one of the construction; the arrow at c(t) is c′(t)/n, that last segment.</source>
-            <translation>El vector tangent c′(t) = n (P_1^(n−1)(t) − P_0^(n−1)(t)), llegit al penúltim nivell de la construcció; la fletxa a c(t) és c′(t)/n, aquest últim segment.</translation>
+            <source>The tangent vector c′(t) = n (P₁ⁿ⁻¹(t) − P₀ⁿ⁻¹(t)), read off the last level but one of the construction; the arrow at c(t) is c′(t)/n, that last segment.</source>
+            <translation>El vector tangent c′(t) = n (P₁ⁿ⁻¹(t) − P₀ⁿ⁻¹(t)), llegit al penúltim nivell de la construcció; la fletxa a c(t) és c′(t)/n, aquest últim segment.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="674" />
@@ -1533,8 +1533,8 @@
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="682" />
-            <source>De Casteljau's triangle P_i^r(t) at the current t and, for rational points, every level in powers of t, as in Ex 2.2 and Ex 2.3.</source>
-            <translation>Triangle de De Casteljau P_i^r(t) al t actual i, per a punts racionals, cada nivell en potències de t, com a l'Ex 2.2 i l'Ex 2.3.</translation>
+            <source>De Casteljau's triangle Pᵢʳ(t) at the current t and, for rational points, every level in powers of t, as in Ex 2.2 and Ex 2.3.</source>
+            <translation>Triangle de De Casteljau Pᵢʳ(t) al t actual i, per a punts racionals, cada nivell en potències de t, com a l'Ex 2.2 i l'Ex 2.3.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="717" />
@@ -1574,7 +1574,7 @@
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="789" />
             <source>Ex %1: the tables of the thesis are in the panel on the right at t = 1/2.</source>
-            <translation>Ex %1: les taules del treball són al quadre de la dreta, a t = 1/2.</translation>
+            <translation>Ex %1: les taules de la tesi són al quadre de la dreta, a t = 1/2.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="847" />
@@ -1591,8 +1591,8 @@
             <translation>Punts de control</translation>
         </message>
         <message>
-            <source>Draw the control points P_i, their labels and the control polygon; off, the curve alone, like puntsvis = false in the thesis&apos;s Matlab. The table still edits the points.</source>
-            <translation>Dibuixa els punts de control P_i, les seves etiquetes i el polígon de control; desactivat, només la corba, com puntsvis = false al Matlab de la tesi. La taula continua editant els punts.</translation>
+            <source>Draw the control points Pᵢ, their labels and the control polygon; off, the curve alone, like puntsvis = false in the thesis&apos;s Matlab. The table still edits the points.</source>
+            <translation>Dibuixa els punts de control Pᵢ, les seves etiquetes i el polígon de control; desactivat, només la corba, com puntsvis = false al Matlab de la tesi. La taula continua editant els punts.</translation>
         </message>
     </context>
     <context>
@@ -1686,23 +1686,23 @@
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="80" />
-            <source>Chord lengths d_i = dist(Q_i−1, Q_i)</source>
-            <translation>Longituds de corda d_i = dist(Q_i−1, Q_i)</translation>
+            <source>Chord lengths dᵢ = dist(Qᵢ₋₁, Qᵢ)</source>
+            <translation>Longituds de corda dᵢ = dist(Qᵢ₋₁, Qᵢ)</translation>
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="92" />
-            <source>The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has x = 8, so d_4 = √(49 + 49) = 7√2, which is used here.</source>
-            <translation>La tesi (Ex 2.9) escriu d_4 = √85, a partir de (1 − 7)² + (5 + 2)²; però Q_3 té x = 8, per tant d_4 = √(49 + 49) = 7√2, que és el que s'usa aquí.</translation>
+            <source>The thesis (Ex 2.9) writes d₄ = √85, from (1 − 7)² + (5 + 2)²; but Q₃ has x = 8, so d₄ = √(49 + 49) = 7√2, which is used here.</source>
+            <translation>La tesi (Ex 2.9) escriu d₄ = √85, a partir de (1 − 7)² + (5 + 2)²; però Q₃ té x = 8, per tant d₄ = √(49 + 49) = 7√2, que és el que s'usa aquí.</translation>
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="95" />
-            <source>Centripetal parameters (beyond the thesis) use √d_i instead of d_i.</source>
-            <translation>Els paràmetres centrípets (més enllà de la tesi) usen √d_i en lloc de d_i.</translation>
+            <source>Centripetal parameters (beyond the thesis) use √dᵢ instead of dᵢ.</source>
+            <translation>Els paràmetres centrípets (més enllà de la tesi) usen √dᵢ en lloc de dᵢ.</translation>
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="107" />
-            <source>Parameter correction moves the t_i to where the points project onto the curve: the results are shown in decimals.</source>
-            <translation>La correcció dels paràmetres mou els t_i allà on els punts es projecten sobre la corba: els resultats es mostren en decimals.</translation>
+            <source>Parameter correction moves the tᵢ to where the points project onto the curve: the results are shown in decimals.</source>
+            <translation>La correcció dels paràmetres mou els tᵢ allà on els punts es projecten sobre la corba: els resultats es mostren en decimals.</translation>
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="110" />
@@ -1732,8 +1732,8 @@
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="129" />
             <location filename="../ui/fit_exact_view.cpp" line="169" />
-            <source>Parameters t_i</source>
-            <translation>Paràmetres t_i</translation>
+            <source>Parameters tᵢ</source>
+            <translation>Paràmetres tᵢ</translation>
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="136" />
@@ -1758,8 +1758,8 @@
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="160" />
-            <source>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here.</source>
-            <translation>Ex 2.8: la tesi escriu −1636/105 com a coeficient de t a x(t). És 3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, que és el que es mostra aquí.</translation>
+            <source>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P₁ − P₀) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here.</source>
+            <translation>Ex 2.8: la tesi escriu −1636/105 com a coeficient de t a x(t). És 3(P₁ − P₀) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, que és el que es mostra aquí.</translation>
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="175" />
@@ -1777,12 +1777,12 @@
             <translation>No es mostra α(t) en potències de t més enllà del grau %1: els coeficients creixen com C(n, k) i es cancel·len entre ells.</translation>
         </message>
         <message>
-            <source>Annex III&apos;s distances d_i = |Q_i−1| (BezParamProp)</source>
-            <translation>Distàncies de l&apos;Annex III d_i = |Q_i−1| (BezParamProp)</translation>
+            <source>Annex III&apos;s distances dᵢ = |Qᵢ₋₁| (BezParamProp)</source>
+            <translation>Distàncies de l&apos;Annex III dᵢ = |Qᵢ₋₁| (BezParamProp)</translation>
         </message>
         <message>
-            <source>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: d_i = |Q_i−1|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md).</source>
-            <translation>El BezParamProp de l&apos;Annex III, tal com el calcula el Matlab del treball: d_i = |Q_i−1|, la distància del punt anterior a l&apos;origen, no al seu veí — les Fig. 2.7 i 2.8 es van dibuixar amb aquests paràmetres (docs/thesis-errata.md).</translation>
+            <source>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: dᵢ = |Qᵢ₋₁|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md).</source>
+            <translation>El BezParamProp de l&apos;Annex III, tal com el calcula el Matlab de la tesi: dᵢ = |Qᵢ₋₁|, la distància del punt anterior a l&apos;origen, no al seu veí — les Fig. 2.7 i 2.8 es van dibuixar amb aquests paràmetres (docs/thesis-errata.md).</translation>
         </message>
         <message>
             <source>The Penrose conditions of M⁺ (§2.1.3), checked exactly: %1</source>
@@ -1801,8 +1801,8 @@
             <translation>Els seus valors propis 2σᵢ²: %1.</translation>
         </message>
         <message>
-            <source>Parameters t_i in radicals</source>
-            <translation>Paràmetres t_i amb radicals</translation>
+            <source>Parameters tᵢ in radicals</source>
+            <translation>Paràmetres tᵢ amb radicals</translation>
         </message>
         <message>
             <source>in radicals</source>
@@ -1825,24 +1825,24 @@
             <translation>Un quocient amb més de %1 radicands primers entre si al denominador es deixa tal qual, sense racionalitzar.</translation>
         </message>
         <message>
-            <source>Ex 2.9 and Ex 2.10 print t_i rationalised from their d_4 = √85: %1. Each is too large by the difference above (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</source>
-            <translation>Els Ex 2.9 i Ex 2.10 imprimeixen els t_i racionalitzats a partir del seu d_4 = √85: %1. Cadascun és massa gran en la diferència de dalt (docs/thesis-errata.md, «Ex 2.9 and 2.10»).</translation>
+            <source>Ex 2.9 and Ex 2.10 print tᵢ rationalised from their d₄ = √85: %1. Each is too large by the difference above (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</source>
+            <translation>Els Ex 2.9 i Ex 2.10 imprimeixen els tᵢ racionalitzats a partir del seu d₄ = √85: %1. Cadascun és massa gran en la diferència de dalt (docs/thesis-errata.md, «Ex 2.9 and 2.10»).</translation>
         </message>
         <message>
-            <source>The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has x = 8, so d_4 = √(49 + 49) = 7√2, which is used here (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</source>
-            <translation>La tesi (Ex 2.9) escriu d_4 = √85, a partir de (1 − 7)² + (5 + 2)²; però Q_3 té x = 8, per tant d_4 = √(49 + 49) = 7√2, que és el que s&apos;usa aquí (docs/thesis-errata.md, «Ex 2.9 and 2.10»).</translation>
+            <source>The thesis (Ex 2.9) writes d₄ = √85, from (1 − 7)² + (5 + 2)²; but Q₃ has x = 8, so d₄ = √(49 + 49) = 7√2, which is used here (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</source>
+            <translation>La tesi (Ex 2.9) escriu d₄ = √85, a partir de (1 − 7)² + (5 + 2)²; però Q₃ té x = 8, per tant d₄ = √(49 + 49) = 7√2, que és el que s&apos;usa aquí (docs/thesis-errata.md, «Ex 2.9 and 2.10»).</translation>
         </message>
         <message>
-            <source>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: d_i = |Q_i−1|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md, “Annex III”).</source>
-            <translation>El BezParamProp de l&apos;Annex III, tal com el calcula el Matlab del treball: d_i = |Q_i−1|, la distància del punt anterior a l&apos;origen, no al seu veí — les Fig. 2.7 i 2.8 es van dibuixar amb aquests paràmetres (docs/thesis-errata.md, «Annex III»).</translation>
+            <source>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: dᵢ = |Qᵢ₋₁|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md, “Annex III”).</source>
+            <translation>El BezParamProp de l&apos;Annex III, tal com el calcula el Matlab de la tesi: dᵢ = |Qᵢ₋₁|, la distància del punt anterior a l&apos;origen, no al seu veí — les Fig. 2.7 i 2.8 es van dibuixar amb aquests paràmetres (docs/thesis-errata.md, «Annex III»).</translation>
         </message>
         <message>
             <source>Ex 2.7: the thesis prints α(t) = (−8/7 + 726/35 t − 600/35 t², 46/35 − 130/35 t + 200/35 t²), the same curve with unreduced fractions (600/35 = 120/7, 130/35 = 26/7, 200/35 = 40/7); its sum runs k = 0…4 where n = 2 has three control points (docs/thesis-errata.md, “Ex 2.7 and 2.8”).</source>
             <translation>Ex 2.7: la tesi escriu α(t) = (−8/7 + 726/35 t − 600/35 t², 46/35 − 130/35 t + 200/35 t²), la mateixa corba amb fraccions sense simplificar (600/35 = 120/7, 130/35 = 26/7, 200/35 = 40/7); el seu sumatori va de k = 0 a 4 on n = 2 té tres punts de control (docs/thesis-errata.md, «Ex 2.7 and 2.8»).</translation>
         </message>
         <message>
-            <source>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here (docs/thesis-errata.md, “Ex 2.8”). Its sum also runs k = 0…4, with B_k², where n = 3 (“Ex 2.7 and 2.8”).</source>
-            <translation>Ex 2.8: la tesi escriu −1636/105 com a coeficient de t a x(t). És 3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, que és el que es mostra aquí (docs/thesis-errata.md, «Ex 2.8»). El seu sumatori també va de k = 0 a 4, amb B_k², on n = 3 («Ex 2.7 and 2.8»).</translation>
+            <source>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P₁ − P₀) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here (docs/thesis-errata.md, “Ex 2.8”). Its sum also runs k = 0…4, with Bₖ², where n = 3 (“Ex 2.7 and 2.8”).</source>
+            <translation>Ex 2.8: la tesi escriu −1636/105 com a coeficient de t a x(t). És 3(P₁ − P₀) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, que és el que es mostra aquí (docs/thesis-errata.md, «Ex 2.8»). El seu sumatori també va de k = 0 a 4, amb Bₖ², on n = 3 («Ex 2.7 and 2.8»).</translation>
         </message>
     </context>
     <context>
@@ -1908,8 +1908,8 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="146" />
-            <source>Drag Q_i: the curve is refitted as it moves; Delete removes it.</source>
-            <translation>Arrossegueu Q_i: la corba es torna a ajustar mentre es mou; Supr l'elimina.</translation>
+            <source>Drag Qᵢ: the curve is refitted as it moves; Delete removes it.</source>
+            <translation>Arrossegueu Qᵢ: la corba es torna a ajustar mentre es mou; Supr l'elimina.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="174" />
@@ -1949,13 +1949,13 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="382" />
-            <source>n: the fitted Bézier curve has n + 1 control points P_0…P_n, so n + 1 ≤ k + 1 data points (§2.1.3, Lemma 2.2). Ex 2.7 uses n = 2, Ex 2.8 n = 3.</source>
-            <translation>n: la corba de Bézier ajustada té n + 1 punts de control P_0…P_n, per tant n + 1 ≤ k + 1 punts de dades (§2.1.3, Lema 2.2). L'Ex 2.7 usa n = 2 i l'Ex 2.8, n = 3.</translation>
+            <source>n: the fitted Bézier curve has n + 1 control points P₀…Pₙ, so n + 1 ≤ k + 1 data points (§2.1.3, Lemma 2.2). Ex 2.7 uses n = 2, Ex 2.8 n = 3.</source>
+            <translation>n: la corba de Bézier ajustada té n + 1 punts de control P₀…Pₙ, per tant n + 1 ≤ k + 1 punts de dades (§2.1.3, Lema 2.2). L'Ex 2.7 usa n = 2 i l'Ex 2.8, n = 3.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="384" />
-            <source>&amp;Parameters t_i:</source>
-            <translation>&amp;Paràmetres t_i:</translation>
+            <source>&amp;Parameters tᵢ:</source>
+            <translation>&amp;Paràmetres tᵢ:</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="385" />
@@ -1974,8 +1974,8 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="389" />
-            <source>Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord lengths d_i = dist(Q_i−1, Q_i); or centripetal, proportional to √d_i.</source>
-            <translation>On ha de caure cada Q_i sobre la corba (§2.1.3): parametrització uniforme t_i = i/k; proporcional a les longituds de corda d_i = dist(Q_i−1, Q_i); o centrípeta, proporcional a √d_i.</translation>
+            <source>Where on the curve each Qᵢ should fall (§2.1.3): uniform tᵢ = i/k; proportional to the chord lengths dᵢ = dist(Qᵢ₋₁, Qᵢ); or centripetal, proportional to √dᵢ.</source>
+            <translation>On ha de caure cada Qᵢ sobre la corba (§2.1.3): parametrització uniforme tᵢ = i/k; proporcional a les longituds de corda dᵢ = dist(Qᵢ₋₁, Qᵢ); o centrípeta, proporcional a √dᵢ.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="391" />
@@ -2009,8 +2009,8 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="399" />
-            <source>Beyond the thesis: project each Q_i onto the fitted curve, take the new t_i and fit again, while the error Σ‖Q_i − α(t_i)‖² drops.</source>
-            <translation>Més enllà de la tesi: projecta cada Q_i sobre la corba ajustada, pren els nous t_i i torna a ajustar, mentre l'error Σ‖Q_i − α(t_i)‖² baixi.</translation>
+            <source>Beyond the thesis: project each Qᵢ onto the fitted curve, take the new tᵢ and fit again, while the error Σ‖Qᵢ − α(tᵢ)‖² drops.</source>
+            <translation>Més enllà de la tesi: projecta cada Qᵢ sobre la corba ajustada, pren els nous tᵢ i torna a ajustar, mentre l'error Σ‖Qᵢ − α(tᵢ)‖² baixi.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="401" />
@@ -2029,8 +2029,8 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="404" />
-            <source>Read the data points Q_i from a CSV file (one “x,y” per line) or a JSON list [[x,y],…].</source>
-            <translation>Llegeix els punts de dades Q_i d'un fitxer CSV (un «x,y» per línia) o d'una llista JSON [[x,y],…].</translation>
+            <source>Read the data points Qᵢ from a CSV file (one “x,y” per line) or a JSON list [[x,y],…].</source>
+            <translation>Llegeix els punts de dades Qᵢ d'un fitxer CSV (un «x,y» per línia) o d'una llista JSON [[x,y],…].</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="405" />
@@ -2054,8 +2054,8 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="411" />
-            <source>The data points Q_i (round, draggable), the fitted Bézier curve α(t), its control points P_j (square) and control polygon, and the residuals Q_i − α(t_i).</source>
-            <translation>Els punts de dades Q_i (rodons, es poden arrossegar), la corba de Bézier ajustada α(t), els seus punts de control P_j (quadrats) i el polígon de control, i els residus Q_i − α(t_i).</translation>
+            <source>The data points Qᵢ (round, draggable), the fitted Bézier curve α(t), its control points Pⱼ (square) and control polygon, and the residuals Qᵢ − α(tᵢ).</source>
+            <translation>Els punts de dades Qᵢ (rodons, es poden arrossegar), la corba de Bézier ajustada α(t), els seus punts de control Pⱼ (quadrats) i el polígon de control, i els residus Qᵢ − α(tᵢ).</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="413" />
@@ -2064,8 +2064,8 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="415" />
-            <source>The least-squares error Σ‖Q_i − α(t_i)‖² of the best curve of each degree n for the current parameters (without correction); the circle marks the current n. With fixed t_i it can only go down as n grows, unless the solver loses accuracy.</source>
-            <translation>L'error de mínims quadrats Σ‖Q_i − α(t_i)‖² de la millor corba de cada grau n per als paràmetres actuals (sense correcció); el cercle marca la n actual. Amb els t_i fixos només pot baixar en augmentar n, tret que el mètode perdi precisió.</translation>
+            <source>The least-squares error Σ‖Qᵢ − α(tᵢ)‖² of the best curve of each degree n for the current parameters (without correction); the circle marks the current n. With fixed tᵢ it can only go down as n grows, unless the solver loses accuracy.</source>
+            <translation>L'error de mínims quadrats Σ‖Qᵢ − α(tᵢ)‖² de la millor corba de cada grau n per als paràmetres actuals (sense correcció); el cercle marca la n actual. Amb els tᵢ fixos només pot baixar en augmentar n, tret que el mètode perdi precisió.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="418" />
@@ -2094,8 +2094,8 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="437" />
-            <source>The normal equations MᵀM P = MᵀQ cannot be solved here: MᵀM is numerically singular (coincident points, or cond₂(MᵀM) = cond₂(M)² beyond 10^16). Choose QR or SVD.</source>
-            <translation>Les equacions normals MᵀM P = MᵀQ no es poden resoldre aquí: MᵀM és numèricament singular (punts coincidents, o cond₂(MᵀM) = cond₂(M)² més enllà de 10^16). Trieu QR o SVD.</translation>
+            <source>The normal equations MᵀM P = MᵀQ cannot be solved here: MᵀM is numerically singular (coincident points, or cond₂(MᵀM) = cond₂(M)² beyond 10¹⁶). Choose QR or SVD.</source>
+            <translation>Les equacions normals MᵀM P = MᵀQ no es poden resoldre aquí: MᵀM és numèricament singular (punts coincidents, o cond₂(MᵀM) = cond₂(M)² més enllà de 10¹⁶). Trieu QR o SVD.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="439" />
@@ -2119,8 +2119,8 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="546" />
-            <source>Squared error Σ‖Q_i − α(t_i)‖²: %1</source>
-            <translation>Error quadràtic Σ‖Q_i − α(t_i)‖²: %1</translation>
+            <source>Squared error Σ‖Qᵢ − α(tᵢ)‖²: %1</source>
+            <translation>Error quadràtic Σ‖Qᵢ − α(tᵢ)‖²: %1</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="547" />
@@ -2129,8 +2129,8 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="548" />
-            <source>Largest error max‖Q_i − α(t_i)‖: %1</source>
-            <translation>Error màxim max‖Q_i − α(t_i)‖: %1</translation>
+            <source>Largest error max‖Qᵢ − α(tᵢ)‖: %1</source>
+            <translation>Error màxim max‖Qᵢ − α(tᵢ)‖: %1</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="550" />
@@ -2164,8 +2164,8 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="575" />
-            <source>⚠ Only %1 distinct parameters t_i for %2 control points: M is rank deficient, and the control points shown are the minimum-norm least-squares solution.</source>
-            <translation>⚠ Només %1 paràmetres t_i diferents per a %2 punts de control: M no té rang màxim, i els punts de control que es mostren són la solució de mínims quadrats de norma mínima.</translation>
+            <source>⚠ Only %1 distinct parameters tᵢ for %2 control points: M is rank deficient, and the control points shown are the minimum-norm least-squares solution.</source>
+            <translation>⚠ Només %1 paràmetres tᵢ diferents per a %2 punts de control: M no té rang màxim, i els punts de control que es mostren són la solució de mínims quadrats de norma mínima.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="580" />
@@ -2184,10 +2184,10 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message numerus="yes">
             <location filename="../ui/fit_tab.cpp" line="597" />
-            <source>Q%1 and Q%2 coincide: a zero chord length gives them the same parameter t_i (%n such pair(s)).</source>
+            <source>Q%1 and Q%2 coincide: a zero chord length gives them the same parameter tᵢ (%n such pair(s)).</source>
             <translation>
-                <numerusform>Q%1 i Q%2 coincideixen: una longitud de corda zero els dona el mateix paràmetre t_i (%n parell(s) així).</numerusform>
-                <numerusform>Q%1 i Q%2 coincideixen: una longitud de corda zero els dona el mateix paràmetre t_i (%n parell(s) així).</numerusform>
+                <numerusform>Q%1 i Q%2 coincideixen: una longitud de corda zero els dona el mateix paràmetre tᵢ (%n parell(s) així).</numerusform>
+                <numerusform>Q%1 i Q%2 coincideixen: una longitud de corda zero els dona el mateix paràmetre tᵢ (%n parell(s) així).</numerusform>
             </translation>
         </message>
         <message>
@@ -2332,8 +2332,8 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="960" />
-            <source>Drag a data point Q_i and the curve is refitted; double-click adds a point, Delete removes it.</source>
-            <translation>Arrossegueu un punt de dades Q_i i la corba es torna a ajustar; amb doble clic s'afegeix un punt, Supr l'elimina.</translation>
+            <source>Drag a data point Qᵢ and the curve is refitted; double-click adds a point, Delete removes it.</source>
+            <translation>Arrossegueu un punt de dades Qᵢ i la corba es torna a ajustar; amb doble clic s'afegeix un punt, Supr l'elimina.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.h" line="40" />
@@ -2370,11 +2370,11 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <source>Annex III (BezParamProp)</source>
-            <translation>Annex III (BezParamProp del treball)</translation>
+            <translation>Annex III (BezParamProp de la tesi)</translation>
         </message>
         <message>
-            <source>Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord lengths d_i = dist(Q_i−1, Q_i); centripetal, proportional to √d_i; or as Annex III&apos;s BezParamProp computes them, with |Q_i−1| in place of d_i (how Figs 2.7 and 2.8 were drawn).</source>
-            <translation>On ha de caure cada Q_i sobre la corba (§2.1.3): parametrització uniforme t_i = i/k; proporcional a les longituds de corda d_i = dist(Q_i−1, Q_i); centrípeta, proporcional a √d_i; o com la calcula el BezParamProp de l&apos;Annex III, amb |Q_i−1| en lloc de d_i (com es van dibuixar les Fig. 2.7 i 2.8).</translation>
+            <source>Where on the curve each Qᵢ should fall (§2.1.3): uniform tᵢ = i/k; proportional to the chord lengths dᵢ = dist(Qᵢ₋₁, Qᵢ); centripetal, proportional to √dᵢ; or as Annex III&apos;s BezParamProp computes them, with |Qᵢ₋₁| in place of dᵢ (how Figs 2.7 and 2.8 were drawn).</source>
+            <translation>On ha de caure cada Qᵢ sobre la corba (§2.1.3): parametrització uniforme tᵢ = i/k; proporcional a les longituds de corda dᵢ = dist(Qᵢ₋₁, Qᵢ); centrípeta, proporcional a √dᵢ; o com la calcula el BezParamProp de l&apos;Annex III, amb |Qᵢ₋₁| en lloc de dᵢ (com es van dibuixar les Fig. 2.7 i 2.8).</translation>
         </message>
         <message>
             <source>Control points</source>
@@ -2405,16 +2405,16 @@ a cada canvi alentiria la finestra.</translation>
             <translation>Pun&amp;ts de control</translation>
         </message>
         <message>
-            <source>Draw the fitted control points P_j (squares), their labels and the control polygon. The thesis&apos;s Figs 2.5–2.8 show the curve and the data alone.</source>
-            <translation>Dibuixa els punts de control ajustats P_j (quadrats), les seves etiquetes i el polígon de control. Les Fig. 2.5–2.8 de la tesi mostren només la corba i les dades.</translation>
+            <source>Draw the fitted control points Pⱼ (squares), their labels and the control polygon. The thesis&apos;s Figs 2.5–2.8 show the curve and the data alone.</source>
+            <translation>Dibuixa els punts de control ajustats Pⱼ (quadrats), les seves etiquetes i el polígon de control. Les Fig. 2.5–2.8 de la tesi mostren només la corba i les dades.</translation>
         </message>
         <message>
             <source>&amp;Residuals</source>
             <translation>&amp;Residus</translation>
         </message>
         <message>
-            <source>Draw the segments from α(t_i) to each data point Q_i: the errors the fit minimises.</source>
-            <translation>Dibuixa els segments d&apos;α(t_i) a cada punt de dades Q_i: els errors que l&apos;ajust minimitza.</translation>
+            <source>Draw the segments from α(tᵢ) to each data point Qᵢ: the errors the fit minimises.</source>
+            <translation>Dibuixa els segments d&apos;α(tᵢ) a cada punt de dades Qᵢ: els errors que l&apos;ajust minimitza.</translation>
         </message>
         <message>
             <source>Step by st&amp;ep</source>
@@ -3134,7 +3134,7 @@ a cada canvi alentiria la finestra.</translation>
         </message>
         <message>
             <source>The seed solver has no angle constraints: these shapes round into blobs. The Stable solver keeps their form.</source>
-            <translation>El mètode Llavor no té restriccions d'angle: aquestes formes s'arrodoneixen fins a semblar bombolles. El mètode Estable en manté la forma.</translation>
+            <translation>El mètode de la llavor no té restriccions d'angle: aquestes formes s'arrodoneixen fins a semblar bombolles. El mètode estable en manté la forma.</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="229" />
@@ -3307,7 +3307,7 @@ a cada canvi alentiria la finestra.</translation>
         <message>
             <location filename="../ui/frog_tab.cpp" line="488" />
             <source>The polygon's vertices are the control points of one Bézier curve, sampled once. Beside it, the per-frame least-squares fit that the thesis abandoned, with its cost.</source>
-            <translation>Els vèrtexs del polígon són els punts de control d'una corba de Bézier, mostrejada una sola vegada. Al costat, l'ajust per mínims quadrats a cada fotograma que el treball va descartar, amb el seu cost.</translation>
+            <translation>Els vèrtexs del polígon són els punts de control d'una corba de Bézier, mostrejada una sola vegada. Al costat, l'ajust per mínims quadrats a cada fotograma que la tesi va descartar, amb el seu cost.</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="491" />
@@ -3392,7 +3392,7 @@ a cada canvi alentiria la finestra.</translation>
         <message>
             <location filename="../ui/frog_tab.cpp" line="533" />
             <source>The stages of chapter 4, in the thesis's order, and the future work of §5.2. Each scene builds, draws and shows only its own components.</source>
-            <translation>Les etapes del capítol 4, en l'ordre del treball, i el treball futur de §5.2. Cada escena construeix, dibuixa i mostra només els seus components.</translation>
+            <translation>Les etapes del capítol 4, en l'ordre de la tesi, i les propostes de treball futur del §5.2. Cada escena construeix, dibuixa i mostra només els seus components.</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="536" />
@@ -3412,7 +3412,7 @@ a cada canvi alentiria la finestra.</translation>
         <message>
             <location filename="../ui/frog_tab.cpp" line="539" />
             <source>Seed: the thesis's own schemes, reproduced faithfully (Annex II). Stable: beyond the thesis, position-based constraints with compliance (XPBD) that hold the target area and stay stable on stiff and extreme settings. Switching starts the scene again.</source>
-            <translation>Llavor: els esquemes del mateix treball, reproduïts fidelment (Annex II). Estable: més enllà del treball, restriccions sobre les posicions amb flexibilitat (XPBD) que mantenen l'àrea desitjada i són estables amb valors rígids i extrems. En canviar, l'escena torna a començar.</translation>
+            <translation>Llavor: els esquemes de la mateixa tesi, reproduïts fidelment (Annex II). Estable: més enllà de la tesi, restriccions sobre les posicions amb flexibilitat (XPBD) que mantenen l'àrea desitjada i són estables amb valors rígids i extrems. En canviar, l'escena torna a començar.</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="542" />
@@ -3462,7 +3462,7 @@ a cada canvi alentiria la finestra.</translation>
         <message>
             <location filename="../ui/frog_tab.cpp" line="551" />
             <source>The thesis's choice (§4.9, §4.10): the polygon is the control polygon of a Bézier curve sampled once by De Casteljau (Def 2.4); the samples are the body's vertices.</source>
-            <translation>L'opció del treball (§4.9, §4.10): el polígon és el polígon de control d'una corba de Bézier mostrejada una sola vegada amb De Casteljau (Def 2.4); les mostres són els vèrtexs del cos.</translation>
+            <translation>L'opció de la tesi (§4.9, §4.10): el polígon és el polígon de control d'una corba de Bézier mostrejada una sola vegada amb De Casteljau (Def 2.4); les mostres són els vèrtexs del cos.</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="553" />
@@ -3562,7 +3562,7 @@ a cada canvi alentiria la finestra.</translation>
         <message>
             <location filename="../ui/frog_tab.cpp" line="625" />
             <source>Unknown solver “%1” (seed or stable).</source>
-            <translation>Mètode desconegut «%1» (seed o stable).</translation>
+            <translation>Mètode desconegut «%1» (seed, el de la llavor, o stable, l’estable).</translation>
         </message>
         <message>
             <location filename="../ui/frog_tab.cpp" line="633" />
@@ -4144,7 +4144,7 @@ Deseu el document (Ctrl+S) per conservar-los. El Granota ho continuarà intentan
         <message>
             <location filename="../ui/main_window.cpp" line="717" />
             <source>&lt;h3&gt;Granota&lt;/h3&gt;&lt;p&gt;Splines and soft bodies for the classroom, from the thesis “Animació procedimental per a cossos tous”.&lt;/p&gt;</source>
-            <translation>&lt;h3&gt;Granota&lt;/h3&gt;&lt;p&gt;Corbes i cossos tous per a l'aula, a partir del treball «Animació procedimental per a cossos tous».&lt;/p&gt;</translation>
+            <translation>&lt;h3&gt;Granota&lt;/h3&gt;&lt;p&gt;Corbes i cossos tous per a l'aula, a partir de la tesi «Animació procedimental per a cossos tous».&lt;/p&gt;</translation>
         </message>
         <message>
             <source>Cannot save “%1”: %2. The file on disk is unchanged, and your changes are still here: save them elsewhere (Save As).</source>
@@ -5185,7 +5185,7 @@ Ja no és al disc.</translation>
         </message>
         <message>
             <source>Energies in px²/step², unit masses. The seed's springs and area are corrections, not forces: it stores no elastic energy and books no losses; total = kinetic + gravitational.</source>
-            <translation>Energies en px²/pas², masses unitàries. Els molls i l’àrea de la Llavor són correccions, no forces: no desa energia elàstica ni comptabilitza pèrdues; total = cinètica + gravitatòria.</translation>
+            <translation>Energies en px²/pas², masses unitàries. Els molls i l’àrea de la llavor són correccions, no forces: no desa energia elàstica ni comptabilitza pèrdues; total = cinètica + gravitatòria.</translation>
         </message>
         <message>
             <source>Plots over time</source>

@@ -150,8 +150,8 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="207" />
-            <source>Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)</source>
-            <translation>Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)</translation>
+            <source>Blending functions wⱼ(t, τ) (Def 2.9, Cor 2.1)</source>
+            <translation>Blending functions wⱼ(t, τ) (Def 2.9, Cor 2.1)</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="220" />
@@ -200,8 +200,8 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="309" />
-            <source>In decimals, each piece in powers of u = x − x_i:</source>
-            <translation>In decimals, each piece in powers of u = x − x_i:</translation>
+            <source>In decimals, each piece in powers of u = x − xᵢ:</source>
+            <translation>In decimals, each piece in powers of u = x − xᵢ:</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="326" />
@@ -245,8 +245,8 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="371" />
-            <source>Catmull-Rom curves are C¹: at every knot c_i′(1) = c_{i+1}′(0) = τ(q_{i+1} − q_{i−1}).</source>
-            <translation>Catmull-Rom curves are C¹: at every knot c_i′(1) = c_{i+1}′(0) = τ(q_{i+1} − q_{i−1}).</translation>
+            <source>Catmull-Rom curves are C¹: at every knot cᵢ′(1) = cᵢ₊₁′(0) = τ(qᵢ₊₁ − qᵢ₋₁).</source>
+            <translation>Catmull-Rom curves are C¹: at every knot cᵢ′(1) = cᵢ₊₁′(0) = τ(qᵢ₊₁ − qᵢ₋₁).</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="394" />
@@ -387,8 +387,8 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="1" />
-            <source>Centripetal and chordal spacing: the derivatives are taken in the knot parameter u, in which segment i has length h_i = |q_{i+1} − q_i|^α. There the curve is C¹; in the local parameters the tangents are only parallel (G¹).</source>
-            <translation>Centripetal and chordal spacing: the derivatives are taken in the knot parameter u, in which segment i has length h_i = |q_{i+1} − q_i|^α. There the curve is C¹; in the local parameters the tangents are only parallel (G¹).</translation>
+            <source>Centripetal and chordal spacing: the derivatives are taken in the knot parameter u, in which segment i has length hᵢ = |qᵢ₊₁ − qᵢ|ᵅ. There the curve is C¹; in the local parameters the tangents are only parallel (G¹).</source>
+            <translation>Centripetal and chordal spacing: the derivatives are taken in the knot parameter u, in which segment i has length hᵢ = |qᵢ₊₁ − qᵢ|ᵅ. There the curve is C¹; in the local parameters the tangents are only parallel (G¹).</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="1" />
@@ -397,8 +397,8 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_report.cpp" line="1" />
-            <source>Its graph (x, s(x)) piece by piece, x = x_i + h_i u, u ∈ [0, 1]; the derivatives in x.</source>
-            <translation>Its graph (x, s(x)) piece by piece, x = x_i + h_i u, u ∈ [0, 1]; the derivatives in x.</translation>
+            <source>Its graph (x, s(x)) piece by piece, x = xᵢ + hᵢ u, u ∈ [0, 1]; the derivatives in x.</source>
+            <translation>Its graph (x, s(x)) piece by piece, x = xᵢ + hᵢ u, u ∈ [0, 1]; the derivatives in x.</translation>
         </message>
         <message>
             <source>Cubic spline C² (Def 2.3), %1</source>
@@ -526,8 +526,8 @@
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="469" />
-            <source>The degree n of the Bernstein polynomials B_i^n(t) = C(n,i) t^i (1−t)^(n−i) (Def 2.5).</source>
-            <translation>The degree n of the Bernstein polynomials B_i^n(t) = C(n,i) t^i (1−t)^(n−i) (Def 2.5).</translation>
+            <source>The degree n of the Bernstein polynomials Bᵢⁿ(t) = C(n,i) tⁱ (1−t)ⁿ⁻ⁱ (Def 2.5).</source>
+            <translation>The degree n of the Bernstein polynomials Bᵢⁿ(t) = C(n,i) tⁱ (1−t)ⁿ⁻ⁱ (Def 2.5).</translation>
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="472" />
@@ -551,8 +551,8 @@
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="478" />
-            <source>Def 2.6: c(t) = Σ B_i^n(t) P_i. Each bar is the weight of one control point of the De Casteljau tab at the current t; they sum to 1 (partition of unity).</source>
-            <translation>Def 2.6: c(t) = Σ B_i^n(t) P_i. Each bar is the weight of one control point of the De Casteljau tab at the current t; they sum to 1 (partition of unity).</translation>
+            <source>Def 2.6: c(t) = Σ Bᵢⁿ(t) Pᵢ. Each bar is the weight of one control point of the De Casteljau tab at the current t; they sum to 1 (partition of unity).</source>
+            <translation>Def 2.6: c(t) = Σ Bᵢⁿ(t) Pᵢ. Each bar is the weight of one control point of the De Casteljau tab at the current t; they sum to 1 (partition of unity).</translation>
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="480" />
@@ -581,13 +581,13 @@
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="487" />
-            <source>Symmetry: B_i^n(t) = B_(n−i)^n(1 − t).</source>
-            <translation>Symmetry: B_i^n(t) = B_(n−i)^n(1 − t).</translation>
+            <source>Symmetry: Bᵢⁿ(t) = Bₙ₋ᵢⁿ(1 − t).</source>
+            <translation>Symmetry: Bᵢⁿ(t) = Bₙ₋ᵢⁿ(1 − t).</translation>
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="488" />
-            <source>Lemma 2.1: B_i^n = (1 − t) B_i^(n−1) + t B_(i−1)^(n−1).</source>
-            <translation>Lemma 2.1: B_i^n = (1 − t) B_i^(n−1) + t B_(i−1)^(n−1).</translation>
+            <source>Lemma 2.1: Bᵢⁿ = (1 − t) Bᵢⁿ⁻¹ + t Bᵢ₋₁ⁿ⁻¹.</source>
+            <translation>Lemma 2.1: Bᵢⁿ = (1 − t) Bᵢⁿ⁻¹ + t Bᵢ₋₁ⁿ⁻¹.</translation>
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="489" />
@@ -626,8 +626,8 @@
         </message>
         <message>
             <location filename="../ui/bernstein_tab.cpp" line="613" />
-            <source>Move the mouse over the plot to read B_i^n(t); click or drag to move t.</source>
-            <translation>Move the mouse over the plot to read B_i^n(t); click or drag to move t.</translation>
+            <source>Move the mouse over the plot to read Bᵢⁿ(t); click or drag to move t.</source>
+            <translation>Move the mouse over the plot to read Bᵢⁿ(t); click or drag to move t.</translation>
         </message>
         <message>
             <location filename="../ui/bernstein_tab.h" line="46" />
@@ -791,8 +791,8 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="314" />
-            <source>Knot spacing |q_{i+1} − q_i|^α. The thesis uses uniform spacing (α = 0). Beyond it: centripetal (α = 1/2) avoids cusps and loops, chordal (α = 1) follows the chord lengths; the segments then join with parallel tangents (G¹).</source>
-            <translation>Knot spacing |q_{i+1} − q_i|^α. The thesis uses uniform spacing (α = 0). Beyond it: centripetal (α = 1/2) avoids cusps and loops, chordal (α = 1) follows the chord lengths; the segments then join with parallel tangents (G¹).</translation>
+            <source>Knot spacing |qᵢ₊₁ − qᵢ|ᵅ. The thesis uses uniform spacing (α = 0). Beyond it: centripetal (α = 1/2) avoids cusps and loops, chordal (α = 1) follows the chord lengths; the segments then join with parallel tangents (G¹).</source>
+            <translation>Knot spacing |qᵢ₊₁ − qᵢ|ᵅ. The thesis uses uniform spacing (α = 0). Beyond it: centripetal (α = 1/2) avoids cusps and loops, chordal (α = 1) follows the chord lengths; the segments then join with parallel tangents (G¹).</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="317" />
@@ -826,13 +826,13 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="328" />
-            <source>Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)</source>
-            <translation>Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)</translation>
+            <source>Blending functions wⱼ(t, τ) (Def 2.9, Cor 2.1)</source>
+            <translation>Blending functions wⱼ(t, τ) (Def 2.9, Cor 2.1)</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="329" />
-            <source>p(t) = Σ w_j(t, τ) p_j: the weight of each of the four points along a segment. They always add up to 1.</source>
-            <translation>p(t) = Σ w_j(t, τ) p_j: the weight of each of the four points along a segment. They always add up to 1.</translation>
+            <source>p(t) = Σ wⱼ(t, τ) pⱼ: the weight of each of the four points along a segment. They always add up to 1.</source>
+            <translation>p(t) = Σ wⱼ(t, τ) pⱼ: the weight of each of the four points along a segment. They always add up to 1.</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="331" />
@@ -846,8 +846,8 @@
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="334" />
-            <source>The blending functions w_0…w_3 of Cor 2.1 on t ∈ [0, 1].</source>
-            <translation>The blending functions w_0…w_3 of Cor 2.1 on t ∈ [0, 1].</translation>
+            <source>The blending functions w₀…w₃ of Cor 2.1 on t ∈ [0, 1].</source>
+            <translation>The blending functions w₀…w₃ of Cor 2.1 on t ∈ [0, 1].</translation>
         </message>
         <message>
             <location filename="../ui/catmull_rom_tab.cpp" line="335" />
@@ -1159,8 +1159,8 @@
             <translation>Poin&amp;ts</translation>
         </message>
         <message>
-            <source>Draw the points q_i that the curves interpolate, their labels and their polygon; off, the curves alone, like puntvis = false in the thesis&apos;s Matlab Rep_CatmullRom. The table still edits the points.</source>
-            <translation>Draw the points q_i that the curves interpolate, their labels and their polygon; off, the curves alone, like puntvis = false in the thesis&apos;s Matlab Rep_CatmullRom. The table still edits the points.</translation>
+            <source>Draw the points qᵢ that the curves interpolate, their labels and their polygon; off, the curves alone, like puntvis = false in the thesis&apos;s Matlab Rep_CatmullRom. The table still edits the points.</source>
+            <translation>Draw the points qᵢ that the curves interpolate, their labels and their polygon; off, the curves alone, like puntvis = false in the thesis&apos;s Matlab Rep_CatmullRom. The table still edits the points.</translation>
         </message>
         <message>
             <source>Show the points</source>
@@ -1206,8 +1206,8 @@
             <translation>When playing, move c(t) by equal steps of arc length instead of equal steps of t: t is not distance along the curve.</translation>
         </message>
         <message>
-            <source>The hodograph c′ in the corner: a Bézier curve of degree n − 1 with control points n (P_(i+1) − P_i), with its own De Casteljau construction at the same t; its point is c′(t).</source>
-            <translation>The hodograph c′ in the corner: a Bézier curve of degree n − 1 with control points n (P_(i+1) − P_i), with its own De Casteljau construction at the same t; its point is c′(t).</translation>
+            <source>The hodograph c′ in the corner: a Bézier curve of degree n − 1 with control points n (Pᵢ₊₁ − Pᵢ), with its own De Casteljau construction at the same t; its point is c′(t).</source>
+            <translation>The hodograph c′ in the corner: a Bézier curve of degree n − 1 with control points n (Pᵢ₊₁ − Pᵢ), with its own De Casteljau construction at the same t; its point is c′(t).</translation>
         </message>
         <message>
             <source>Inflection points ○, where x′y″ − y′x″ changes sign (the curve turns the other way), and cusps ×, where c′ = 0.</source>
@@ -1473,8 +1473,8 @@
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="663" />
-            <source>Degree elevation: the same curve written with one control point more (Q_i = i/(n+1) P_(i−1) + (1 − i/(n+1)) P_i). Undoable.</source>
-            <translation>Degree elevation: the same curve written with one control point more (Q_i = i/(n+1) P_(i−1) + (1 − i/(n+1)) P_i). Undoable.</translation>
+            <source>Degree elevation: the same curve written with one control point more (Qᵢ = i/(n+1) Pᵢ₋₁ + (1 − i/(n+1)) Pᵢ). Undoable.</source>
+            <translation>Degree elevation: the same curve written with one control point more (Qᵢ = i/(n+1) Pᵢ₋₁ + (1 − i/(n+1)) Pᵢ). Undoable.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="665" />
@@ -1483,8 +1483,8 @@
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="666" />
-            <source>Draw every level P_i^r(t) of De Casteljau's algorithm (Def 2.4): the points of each level and the segments between them, one colour per level.</source>
-            <translation>Draw every level P_i^r(t) of De Casteljau's algorithm (Def 2.4): the points of each level and the segments between them, one colour per level.</translation>
+            <source>Draw every level Pᵢʳ(t) of De Casteljau's algorithm (Def 2.4): the points of each level and the segments between them, one colour per level.</source>
+            <translation>Draw every level Pᵢʳ(t) of De Casteljau's algorithm (Def 2.4): the points of each level and the segments between them, one colour per level.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="668" />
@@ -1503,8 +1503,8 @@
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="672" />
-            <source>The tangent vector c′(t) = n (P_1^(n−1)(t) − P_0^(n−1)(t)), read off the last level but one of the construction; the arrow at c(t) is c′(t)/n, that last segment.</source>
-            <translation>The tangent vector c′(t) = n (P_1^(n−1)(t) − P_0^(n−1)(t)), read off the last level but one of the construction; the arrow at c(t) is c′(t)/n, that last segment.</translation>
+            <source>The tangent vector c′(t) = n (P₁ⁿ⁻¹(t) − P₀ⁿ⁻¹(t)), read off the last level but one of the construction; the arrow at c(t) is c′(t)/n, that last segment.</source>
+            <translation>The tangent vector c′(t) = n (P₁ⁿ⁻¹(t) − P₀ⁿ⁻¹(t)), read off the last level but one of the construction; the arrow at c(t) is c′(t)/n, that last segment.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="674" />
@@ -1533,8 +1533,8 @@
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="682" />
-            <source>De Casteljau's triangle P_i^r(t) at the current t and, for rational points, every level in powers of t, as in Ex 2.2 and Ex 2.3.</source>
-            <translation>De Casteljau's triangle P_i^r(t) at the current t and, for rational points, every level in powers of t, as in Ex 2.2 and Ex 2.3.</translation>
+            <source>De Casteljau's triangle Pᵢʳ(t) at the current t and, for rational points, every level in powers of t, as in Ex 2.2 and Ex 2.3.</source>
+            <translation>De Casteljau's triangle Pᵢʳ(t) at the current t and, for rational points, every level in powers of t, as in Ex 2.2 and Ex 2.3.</translation>
         </message>
         <message>
             <location filename="../ui/decasteljau_tab.cpp" line="717" />
@@ -1591,8 +1591,8 @@
             <translation>Control points</translation>
         </message>
         <message>
-            <source>Draw the control points P_i, their labels and the control polygon; off, the curve alone, like puntsvis = false in the thesis&apos;s Matlab. The table still edits the points.</source>
-            <translation>Draw the control points P_i, their labels and the control polygon; off, the curve alone, like puntsvis = false in the thesis&apos;s Matlab. The table still edits the points.</translation>
+            <source>Draw the control points Pᵢ, their labels and the control polygon; off, the curve alone, like puntsvis = false in the thesis&apos;s Matlab. The table still edits the points.</source>
+            <translation>Draw the control points Pᵢ, their labels and the control polygon; off, the curve alone, like puntsvis = false in the thesis&apos;s Matlab. The table still edits the points.</translation>
         </message>
     </context>
     <context>
@@ -1686,23 +1686,23 @@
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="80" />
-            <source>Chord lengths d_i = dist(Q_i−1, Q_i)</source>
-            <translation>Chord lengths d_i = dist(Q_i−1, Q_i)</translation>
+            <source>Chord lengths dᵢ = dist(Qᵢ₋₁, Qᵢ)</source>
+            <translation>Chord lengths dᵢ = dist(Qᵢ₋₁, Qᵢ)</translation>
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="92" />
-            <source>The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has x = 8, so d_4 = √(49 + 49) = 7√2, which is used here.</source>
-            <translation>The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has x = 8, so d_4 = √(49 + 49) = 7√2, which is used here.</translation>
+            <source>The thesis (Ex 2.9) writes d₄ = √85, from (1 − 7)² + (5 + 2)²; but Q₃ has x = 8, so d₄ = √(49 + 49) = 7√2, which is used here.</source>
+            <translation>The thesis (Ex 2.9) writes d₄ = √85, from (1 − 7)² + (5 + 2)²; but Q₃ has x = 8, so d₄ = √(49 + 49) = 7√2, which is used here.</translation>
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="95" />
-            <source>Centripetal parameters (beyond the thesis) use √d_i instead of d_i.</source>
-            <translation>Centripetal parameters (beyond the thesis) use √d_i instead of d_i.</translation>
+            <source>Centripetal parameters (beyond the thesis) use √dᵢ instead of dᵢ.</source>
+            <translation>Centripetal parameters (beyond the thesis) use √dᵢ instead of dᵢ.</translation>
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="107" />
-            <source>Parameter correction moves the t_i to where the points project onto the curve: the results are shown in decimals.</source>
-            <translation>Parameter correction moves the t_i to where the points project onto the curve: the results are shown in decimals.</translation>
+            <source>Parameter correction moves the tᵢ to where the points project onto the curve: the results are shown in decimals.</source>
+            <translation>Parameter correction moves the tᵢ to where the points project onto the curve: the results are shown in decimals.</translation>
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="110" />
@@ -1732,8 +1732,8 @@
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="129" />
             <location filename="../ui/fit_exact_view.cpp" line="169" />
-            <source>Parameters t_i</source>
-            <translation>Parameters t_i</translation>
+            <source>Parameters tᵢ</source>
+            <translation>Parameters tᵢ</translation>
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="136" />
@@ -1758,8 +1758,8 @@
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="160" />
-            <source>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here.</source>
-            <translation>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here.</translation>
+            <source>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P₁ − P₀) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here.</source>
+            <translation>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P₁ − P₀) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here.</translation>
         </message>
         <message>
             <location filename="../ui/fit_exact_view.cpp" line="175" />
@@ -1777,12 +1777,12 @@
             <translation>α(t) in powers of t is not shown beyond degree %1: its coefficients grow like C(n, k) and cancel each other.</translation>
         </message>
         <message>
-            <source>Annex III&apos;s distances d_i = |Q_i−1| (BezParamProp)</source>
-            <translation>Annex III&apos;s distances d_i = |Q_i−1| (BezParamProp)</translation>
+            <source>Annex III&apos;s distances dᵢ = |Qᵢ₋₁| (BezParamProp)</source>
+            <translation>Annex III&apos;s distances dᵢ = |Qᵢ₋₁| (BezParamProp)</translation>
         </message>
         <message>
-            <source>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: d_i = |Q_i−1|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md).</source>
-            <translation>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: d_i = |Q_i−1|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md).</translation>
+            <source>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: dᵢ = |Qᵢ₋₁|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md).</source>
+            <translation>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: dᵢ = |Qᵢ₋₁|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md).</translation>
         </message>
         <message>
             <source>The Penrose conditions of M⁺ (§2.1.3), checked exactly: %1</source>
@@ -1801,8 +1801,8 @@
             <translation>Its eigenvalues 2σᵢ²: %1.</translation>
         </message>
         <message>
-            <source>Parameters t_i in radicals</source>
-            <translation>Parameters t_i in radicals</translation>
+            <source>Parameters tᵢ in radicals</source>
+            <translation>Parameters tᵢ in radicals</translation>
         </message>
         <message>
             <source>in radicals</source>
@@ -1825,24 +1825,24 @@
             <translation>A quotient whose denominator has more than %1 coprime radicands is left as it stands, not rationalised.</translation>
         </message>
         <message>
-            <source>Ex 2.9 and Ex 2.10 print t_i rationalised from their d_4 = √85: %1. Each is too large by the difference above (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</source>
-            <translation>Ex 2.9 and Ex 2.10 print t_i rationalised from their d_4 = √85: %1. Each is too large by the difference above (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</translation>
+            <source>Ex 2.9 and Ex 2.10 print tᵢ rationalised from their d₄ = √85: %1. Each is too large by the difference above (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</source>
+            <translation>Ex 2.9 and Ex 2.10 print tᵢ rationalised from their d₄ = √85: %1. Each is too large by the difference above (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</translation>
         </message>
         <message>
-            <source>The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has x = 8, so d_4 = √(49 + 49) = 7√2, which is used here (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</source>
-            <translation>The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has x = 8, so d_4 = √(49 + 49) = 7√2, which is used here (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</translation>
+            <source>The thesis (Ex 2.9) writes d₄ = √85, from (1 − 7)² + (5 + 2)²; but Q₃ has x = 8, so d₄ = √(49 + 49) = 7√2, which is used here (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</source>
+            <translation>The thesis (Ex 2.9) writes d₄ = √85, from (1 − 7)² + (5 + 2)²; but Q₃ has x = 8, so d₄ = √(49 + 49) = 7√2, which is used here (docs/thesis-errata.md, “Ex 2.9 and 2.10”).</translation>
         </message>
         <message>
-            <source>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: d_i = |Q_i−1|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md, “Annex III”).</source>
-            <translation>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: d_i = |Q_i−1|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md, “Annex III”).</translation>
+            <source>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: dᵢ = |Qᵢ₋₁|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md, “Annex III”).</source>
+            <translation>Annex III&apos;s BezParamProp, as the thesis&apos;s Matlab computes it: dᵢ = |Qᵢ₋₁|, the distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 were drawn with these parameters (docs/thesis-errata.md, “Annex III”).</translation>
         </message>
         <message>
             <source>Ex 2.7: the thesis prints α(t) = (−8/7 + 726/35 t − 600/35 t², 46/35 − 130/35 t + 200/35 t²), the same curve with unreduced fractions (600/35 = 120/7, 130/35 = 26/7, 200/35 = 40/7); its sum runs k = 0…4 where n = 2 has three control points (docs/thesis-errata.md, “Ex 2.7 and 2.8”).</source>
             <translation>Ex 2.7: the thesis prints α(t) = (−8/7 + 726/35 t − 600/35 t², 46/35 − 130/35 t + 200/35 t²), the same curve with unreduced fractions (600/35 = 120/7, 130/35 = 26/7, 200/35 = 40/7); its sum runs k = 0…4 where n = 2 has three control points (docs/thesis-errata.md, “Ex 2.7 and 2.8”).</translation>
         </message>
         <message>
-            <source>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here (docs/thesis-errata.md, “Ex 2.8”). Its sum also runs k = 0…4, with B_k², where n = 3 (“Ex 2.7 and 2.8”).</source>
-            <translation>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here (docs/thesis-errata.md, “Ex 2.8”). Its sum also runs k = 0…4, with B_k², where n = 3 (“Ex 2.7 and 2.8”).</translation>
+            <source>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P₁ − P₀) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here (docs/thesis-errata.md, “Ex 2.8”). Its sum also runs k = 0…4, with Bₖ², where n = 3 (“Ex 2.7 and 2.8”).</source>
+            <translation>Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is 3(P₁ − P₀) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here (docs/thesis-errata.md, “Ex 2.8”). Its sum also runs k = 0…4, with Bₖ², where n = 3 (“Ex 2.7 and 2.8”).</translation>
         </message>
     </context>
     <context>
@@ -1908,8 +1908,8 @@ on each change would slow the window.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="146" />
-            <source>Drag Q_i: the curve is refitted as it moves; Delete removes it.</source>
-            <translation>Drag Q_i: the curve is refitted as it moves; Delete removes it.</translation>
+            <source>Drag Qᵢ: the curve is refitted as it moves; Delete removes it.</source>
+            <translation>Drag Qᵢ: the curve is refitted as it moves; Delete removes it.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="174" />
@@ -1949,13 +1949,13 @@ on each change would slow the window.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="382" />
-            <source>n: the fitted Bézier curve has n + 1 control points P_0…P_n, so n + 1 ≤ k + 1 data points (§2.1.3, Lemma 2.2). Ex 2.7 uses n = 2, Ex 2.8 n = 3.</source>
-            <translation>n: the fitted Bézier curve has n + 1 control points P_0…P_n, so n + 1 ≤ k + 1 data points (§2.1.3, Lemma 2.2). Ex 2.7 uses n = 2, Ex 2.8 n = 3.</translation>
+            <source>n: the fitted Bézier curve has n + 1 control points P₀…Pₙ, so n + 1 ≤ k + 1 data points (§2.1.3, Lemma 2.2). Ex 2.7 uses n = 2, Ex 2.8 n = 3.</source>
+            <translation>n: the fitted Bézier curve has n + 1 control points P₀…Pₙ, so n + 1 ≤ k + 1 data points (§2.1.3, Lemma 2.2). Ex 2.7 uses n = 2, Ex 2.8 n = 3.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="384" />
-            <source>&amp;Parameters t_i:</source>
-            <translation>&amp;Parameters t_i:</translation>
+            <source>&amp;Parameters tᵢ:</source>
+            <translation>&amp;Parameters tᵢ:</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="385" />
@@ -1974,8 +1974,8 @@ on each change would slow the window.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="389" />
-            <source>Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord lengths d_i = dist(Q_i−1, Q_i); or centripetal, proportional to √d_i.</source>
-            <translation>Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord lengths d_i = dist(Q_i−1, Q_i); or centripetal, proportional to √d_i.</translation>
+            <source>Where on the curve each Qᵢ should fall (§2.1.3): uniform tᵢ = i/k; proportional to the chord lengths dᵢ = dist(Qᵢ₋₁, Qᵢ); or centripetal, proportional to √dᵢ.</source>
+            <translation>Where on the curve each Qᵢ should fall (§2.1.3): uniform tᵢ = i/k; proportional to the chord lengths dᵢ = dist(Qᵢ₋₁, Qᵢ); or centripetal, proportional to √dᵢ.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="391" />
@@ -2009,8 +2009,8 @@ on each change would slow the window.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="399" />
-            <source>Beyond the thesis: project each Q_i onto the fitted curve, take the new t_i and fit again, while the error Σ‖Q_i − α(t_i)‖² drops.</source>
-            <translation>Beyond the thesis: project each Q_i onto the fitted curve, take the new t_i and fit again, while the error Σ‖Q_i − α(t_i)‖² drops.</translation>
+            <source>Beyond the thesis: project each Qᵢ onto the fitted curve, take the new tᵢ and fit again, while the error Σ‖Qᵢ − α(tᵢ)‖² drops.</source>
+            <translation>Beyond the thesis: project each Qᵢ onto the fitted curve, take the new tᵢ and fit again, while the error Σ‖Qᵢ − α(tᵢ)‖² drops.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="401" />
@@ -2029,8 +2029,8 @@ on each change would slow the window.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="404" />
-            <source>Read the data points Q_i from a CSV file (one “x,y” per line) or a JSON list [[x,y],…].</source>
-            <translation>Read the data points Q_i from a CSV file (one “x,y” per line) or a JSON list [[x,y],…].</translation>
+            <source>Read the data points Qᵢ from a CSV file (one “x,y” per line) or a JSON list [[x,y],…].</source>
+            <translation>Read the data points Qᵢ from a CSV file (one “x,y” per line) or a JSON list [[x,y],…].</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="405" />
@@ -2054,8 +2054,8 @@ on each change would slow the window.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="411" />
-            <source>The data points Q_i (round, draggable), the fitted Bézier curve α(t), its control points P_j (square) and control polygon, and the residuals Q_i − α(t_i).</source>
-            <translation>The data points Q_i (round, draggable), the fitted Bézier curve α(t), its control points P_j (square) and control polygon, and the residuals Q_i − α(t_i).</translation>
+            <source>The data points Qᵢ (round, draggable), the fitted Bézier curve α(t), its control points Pⱼ (square) and control polygon, and the residuals Qᵢ − α(tᵢ).</source>
+            <translation>The data points Qᵢ (round, draggable), the fitted Bézier curve α(t), its control points Pⱼ (square) and control polygon, and the residuals Qᵢ − α(tᵢ).</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="413" />
@@ -2064,8 +2064,8 @@ on each change would slow the window.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="415" />
-            <source>The least-squares error Σ‖Q_i − α(t_i)‖² of the best curve of each degree n for the current parameters (without correction); the circle marks the current n. With fixed t_i it can only go down as n grows, unless the solver loses accuracy.</source>
-            <translation>The least-squares error Σ‖Q_i − α(t_i)‖² of the best curve of each degree n for the current parameters (without correction); the circle marks the current n. With fixed t_i it can only go down as n grows, unless the solver loses accuracy.</translation>
+            <source>The least-squares error Σ‖Qᵢ − α(tᵢ)‖² of the best curve of each degree n for the current parameters (without correction); the circle marks the current n. With fixed tᵢ it can only go down as n grows, unless the solver loses accuracy.</source>
+            <translation>The least-squares error Σ‖Qᵢ − α(tᵢ)‖² of the best curve of each degree n for the current parameters (without correction); the circle marks the current n. With fixed tᵢ it can only go down as n grows, unless the solver loses accuracy.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="418" />
@@ -2094,8 +2094,8 @@ on each change would slow the window.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="437" />
-            <source>The normal equations MᵀM P = MᵀQ cannot be solved here: MᵀM is numerically singular (coincident points, or cond₂(MᵀM) = cond₂(M)² beyond 10^16). Choose QR or SVD.</source>
-            <translation>The normal equations MᵀM P = MᵀQ cannot be solved here: MᵀM is numerically singular (coincident points, or cond₂(MᵀM) = cond₂(M)² beyond 10^16). Choose QR or SVD.</translation>
+            <source>The normal equations MᵀM P = MᵀQ cannot be solved here: MᵀM is numerically singular (coincident points, or cond₂(MᵀM) = cond₂(M)² beyond 10¹⁶). Choose QR or SVD.</source>
+            <translation>The normal equations MᵀM P = MᵀQ cannot be solved here: MᵀM is numerically singular (coincident points, or cond₂(MᵀM) = cond₂(M)² beyond 10¹⁶). Choose QR or SVD.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="439" />
@@ -2119,8 +2119,8 @@ on each change would slow the window.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="546" />
-            <source>Squared error Σ‖Q_i − α(t_i)‖²: %1</source>
-            <translation>Squared error Σ‖Q_i − α(t_i)‖²: %1</translation>
+            <source>Squared error Σ‖Qᵢ − α(tᵢ)‖²: %1</source>
+            <translation>Squared error Σ‖Qᵢ − α(tᵢ)‖²: %1</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="547" />
@@ -2129,8 +2129,8 @@ on each change would slow the window.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="548" />
-            <source>Largest error max‖Q_i − α(t_i)‖: %1</source>
-            <translation>Largest error max‖Q_i − α(t_i)‖: %1</translation>
+            <source>Largest error max‖Qᵢ − α(tᵢ)‖: %1</source>
+            <translation>Largest error max‖Qᵢ − α(tᵢ)‖: %1</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="550" />
@@ -2164,8 +2164,8 @@ on each change would slow the window.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="575" />
-            <source>⚠ Only %1 distinct parameters t_i for %2 control points: M is rank deficient, and the control points shown are the minimum-norm least-squares solution.</source>
-            <translation>⚠ Only %1 distinct parameters t_i for %2 control points: M is rank deficient, and the control points shown are the minimum-norm least-squares solution.</translation>
+            <source>⚠ Only %1 distinct parameters tᵢ for %2 control points: M is rank deficient, and the control points shown are the minimum-norm least-squares solution.</source>
+            <translation>⚠ Only %1 distinct parameters tᵢ for %2 control points: M is rank deficient, and the control points shown are the minimum-norm least-squares solution.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="580" />
@@ -2184,10 +2184,10 @@ on each change would slow the window.</translation>
         </message>
         <message numerus="yes">
             <location filename="../ui/fit_tab.cpp" line="597" />
-            <source>Q%1 and Q%2 coincide: a zero chord length gives them the same parameter t_i (%n such pair(s)).</source>
+            <source>Q%1 and Q%2 coincide: a zero chord length gives them the same parameter tᵢ (%n such pair(s)).</source>
             <translation>
-                <numerusform>Q%1 and Q%2 coincide: a zero chord length gives them the same parameter t_i (%n such pair(s)).</numerusform>
-                <numerusform>Q%1 and Q%2 coincide: a zero chord length gives them the same parameter t_i (%n such pair(s)).</numerusform>
+                <numerusform>Q%1 and Q%2 coincide: a zero chord length gives them the same parameter tᵢ (%n such pair(s)).</numerusform>
+                <numerusform>Q%1 and Q%2 coincide: a zero chord length gives them the same parameter tᵢ (%n such pair(s)).</numerusform>
             </translation>
         </message>
         <message>
@@ -2332,8 +2332,8 @@ on each change would slow the window.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.cpp" line="960" />
-            <source>Drag a data point Q_i and the curve is refitted; double-click adds a point, Delete removes it.</source>
-            <translation>Drag a data point Q_i and the curve is refitted; double-click adds a point, Delete removes it.</translation>
+            <source>Drag a data point Qᵢ and the curve is refitted; double-click adds a point, Delete removes it.</source>
+            <translation>Drag a data point Qᵢ and the curve is refitted; double-click adds a point, Delete removes it.</translation>
         </message>
         <message>
             <location filename="../ui/fit_tab.h" line="40" />
@@ -2373,8 +2373,8 @@ on each change would slow the window.</translation>
             <translation>Annex III (BezParamProp)</translation>
         </message>
         <message>
-            <source>Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord lengths d_i = dist(Q_i−1, Q_i); centripetal, proportional to √d_i; or as Annex III&apos;s BezParamProp computes them, with |Q_i−1| in place of d_i (how Figs 2.7 and 2.8 were drawn).</source>
-            <translation>Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord lengths d_i = dist(Q_i−1, Q_i); centripetal, proportional to √d_i; or as Annex III&apos;s BezParamProp computes them, with |Q_i−1| in place of d_i (how Figs 2.7 and 2.8 were drawn).</translation>
+            <source>Where on the curve each Qᵢ should fall (§2.1.3): uniform tᵢ = i/k; proportional to the chord lengths dᵢ = dist(Qᵢ₋₁, Qᵢ); centripetal, proportional to √dᵢ; or as Annex III&apos;s BezParamProp computes them, with |Qᵢ₋₁| in place of dᵢ (how Figs 2.7 and 2.8 were drawn).</source>
+            <translation>Where on the curve each Qᵢ should fall (§2.1.3): uniform tᵢ = i/k; proportional to the chord lengths dᵢ = dist(Qᵢ₋₁, Qᵢ); centripetal, proportional to √dᵢ; or as Annex III&apos;s BezParamProp computes them, with |Qᵢ₋₁| in place of dᵢ (how Figs 2.7 and 2.8 were drawn).</translation>
         </message>
         <message>
             <source>Control points</source>
@@ -2405,16 +2405,16 @@ on each change would slow the window.</translation>
             <translation>Con&amp;trol points</translation>
         </message>
         <message>
-            <source>Draw the fitted control points P_j (squares), their labels and the control polygon. The thesis&apos;s Figs 2.5–2.8 show the curve and the data alone.</source>
-            <translation>Draw the fitted control points P_j (squares), their labels and the control polygon. The thesis&apos;s Figs 2.5–2.8 show the curve and the data alone.</translation>
+            <source>Draw the fitted control points Pⱼ (squares), their labels and the control polygon. The thesis&apos;s Figs 2.5–2.8 show the curve and the data alone.</source>
+            <translation>Draw the fitted control points Pⱼ (squares), their labels and the control polygon. The thesis&apos;s Figs 2.5–2.8 show the curve and the data alone.</translation>
         </message>
         <message>
             <source>&amp;Residuals</source>
             <translation>&amp;Residuals</translation>
         </message>
         <message>
-            <source>Draw the segments from α(t_i) to each data point Q_i: the errors the fit minimises.</source>
-            <translation>Draw the segments from α(t_i) to each data point Q_i: the errors the fit minimises.</translation>
+            <source>Draw the segments from α(tᵢ) to each data point Qᵢ: the errors the fit minimises.</source>
+            <translation>Draw the segments from α(tᵢ) to each data point Qᵢ: the errors the fit minimises.</translation>
         </message>
         <message>
             <source>Step by st&amp;ep</source>

@@ -547,7 +547,7 @@ void BernsteinTab::retranslate()
 {
     m_parameter->retranslate();
     m_degreeLabel->setText(tr("Degree n:"));
-    const QString degreeTip = tr("The degree n of the Bernstein polynomials B_i^n(t) = C(n,i) t^i (1−t)^(n−i) (Def 2.5).");
+    const QString degreeTip = tr("The degree n of the Bernstein polynomials Bᵢⁿ(t) = C(n,i) tⁱ (1−t)ⁿ⁻ⁱ (Def 2.5).");
     m_degreeLabel->setToolTip(degreeTip);
     m_degreeBox->setToolTip(degreeTip);
     m_allBox->setText(tr("All degrees up to n"));
@@ -559,7 +559,7 @@ void BernsteinTab::retranslate()
     m_basisPlot->yAxis->setLabel(tr("value"));
     m_basisPlot->setToolTip(tr("The Bernstein polynomials on [0, 1] (Def 2.5). Move the mouse to read their values; "
                                "click or drag to move t, shared with the De Casteljau tab."));
-    m_weightsGroup->setToolTip(tr("Def 2.6: c(t) = Σ B_i^n(t) P_i. Each bar is the weight of one control point of the "
+    m_weightsGroup->setToolTip(tr("Def 2.6: c(t) = Σ Bᵢⁿ(t) Pᵢ. Each bar is the weight of one control point of the "
                                   "De Casteljau tab at the current t; they sum to 1 (partition of unity)."));
     m_weightsPlot->yAxis->setLabel(tr("weight"));
     m_curveLabel->setToolTip(tr("The point c(t) from the Bernstein sum (Def 2.6) and from De Casteljau's algorithm "
@@ -568,8 +568,8 @@ void BernsteinTab::retranslate()
     m_checksGroup->setToolTip(tr("Each property is checked twice: in floating point at t (the residual) and exactly, "
                                  "as polynomials with rational coefficients."));
     m_checkLabels[0]->setToolTip(tr("Partition of unity: the Bernstein polynomials of one degree sum to 1."));
-    m_checkLabels[1]->setToolTip(tr("Symmetry: B_i^n(t) = B_(n−i)^n(1 − t)."));
-    m_checkLabels[2]->setToolTip(tr("Lemma 2.1: B_i^n = (1 − t) B_i^(n−1) + t B_(i−1)^(n−1)."));
+    m_checkLabels[1]->setToolTip(tr("Symmetry: Bᵢⁿ(t) = Bₙ₋ᵢⁿ(1 − t)."));
+    m_checkLabels[2]->setToolTip(tr("Lemma 2.1: Bᵢⁿ = (1 − t) Bᵢⁿ⁻¹ + t Bᵢ₋₁ⁿ⁻¹."));
     m_exact->setToolTip(tr("The Bernstein polynomials expanded in powers of t (Ex 2.4) and the De Casteljau tab's curve "
                            "written in the Bernstein basis (Ex 2.5, Ex 2.6)."));
     updateWeights();
@@ -697,6 +697,6 @@ void BernsteinTab::setPresentation(bool on)
     updateExactPanel();
 }
 
-QString BernsteinTab::hint() const { return tr("Move the mouse over the plot to read B_i^n(t); click or drag to move t."); }
+QString BernsteinTab::hint() const { return tr("Move the mouse over the plot to read Bᵢⁿ(t); click or drag to move t."); }
 
 } // namespace granota::ui

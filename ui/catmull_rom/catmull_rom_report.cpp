@@ -294,7 +294,7 @@ QString bezierSection(const std::vector<Point>& points, const std::optional<std:
     if (settings.spacing != CatmullRomSpacing::Uniform)
         html += ExactPanel::note(CatmullRomReport::tr("Centripetal and chordal spacing: the derivatives are taken in "
                                                       "the knot parameter u, in which segment i has length "
-                                                      "h_i = |q_{i+1} − q_i|^α. There the curve is C¹; in the local "
+                                                      "hᵢ = |qᵢ₊₁ − qᵢ|ᵅ. There the curve is C¹; in the local "
                                                       "parameters the tangents are only parallel (G¹)."));
     const auto knotName = [&](int fromSegment, int offset) {
         return ExactPanel::subscripted(QStringLiteral("q"), (fromSegment + offset + 1) % std::max(count, 1));
@@ -318,7 +318,7 @@ QString bezierSection(const std::vector<Point>& points, const std::optional<std:
     }
     if (settings.spline && scene.splineError.isEmpty()) {
         html += para(QStringLiteral("<b>%1</b>").arg(CatmullRomReport::tr("Cubic spline C² (Def 2.3)").toHtmlEscaped()));
-        html += para(CatmullRomReport::tr("Its graph (x, s(x)) piece by piece, x = x_i + h_i u, u ∈ [0, 1]; the "
+        html += para(CatmullRomReport::tr("Its graph (x, s(x)) piece by piece, x = xᵢ + hᵢ u, u ∈ [0, 1]; the "
                                           "derivatives in x.")
                          .toHtmlEscaped());
         const auto splineKnot = [&](int fromSegment) { return ExactPanel::subscripted(QStringLiteral("q"), fromSegment + 1); };
@@ -361,7 +361,7 @@ QString matrixSection(const CatmullRomSettings& settings)
 
 QString blendingSection(const CatmullRomSettings& settings)
 {
-    QString html = ExactPanel::heading(CatmullRomReport::tr("Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)"));
+    QString html = ExactPanel::heading(CatmullRomReport::tr("Blending functions wⱼ(t, τ) (Def 2.9, Cor 2.1)"));
     for (const Rational& tau : settings.taus) {
         const auto w = blendingFunctions(tau);
         std::vector<QStringList> rows;
@@ -474,7 +474,7 @@ QString splineSection(const std::vector<Point>& points, const std::optional<std:
                                                                             toDouble(settings.endSlope)});
         if (!spline)
             return html + ExactPanel::note(translatedError(spline.error(), CatmullRomEnds::Open));
-        html += para(CatmullRomReport::tr("In decimals, each piece in powers of u = x − x_i:").toHtmlEscaped());
+        html += para(CatmullRomReport::tr("In decimals, each piece in powers of u = x − xᵢ:").toHtmlEscaped());
         std::vector<QStringList> rows;
         const int shown = std::min(spline->pieceCount(), CatmullRomReport::kMaxListedSegments);
         for (int i = 0; i < shown; ++i)
@@ -545,7 +545,7 @@ QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRo
 
     // Prop 2.3, knot by knot for the selected τ.
     html += ExactPanel::heading(tr("Tangents at the knots (Prop 2.3)"));
-    html += para(tr("Catmull-Rom curves are C¹: at every knot c_i′(1) = c_{i+1}′(0) = τ(q_{i+1} − q_{i−1}).").toHtmlEscaped());
+    html += para(tr("Catmull-Rom curves are C¹: at every knot cᵢ′(1) = cᵢ₊₁′(0) = τ(qᵢ₊₁ − qᵢ₋₁).").toHtmlEscaped());
     // The lowest C order over the knots (2 when there are none: one polynomial, checked up to C²).
     const auto lowestOrder = [](const auto& knots) {
         int order = 2;

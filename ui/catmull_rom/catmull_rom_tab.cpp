@@ -401,7 +401,7 @@ void CatmullRomTab::retranslate()
     m_spacingCombo->setItemText(0, tr("uniform (thesis)"));
     m_spacingCombo->setItemText(1, tr("centripetal (α = 1/2)"));
     m_spacingCombo->setItemText(2, tr("chordal (α = 1)"));
-    m_spacingCombo->setToolTip(tr("Knot spacing |q_{i+1} − q_i|^α. The thesis uses uniform spacing (α = 0). Beyond "
+    m_spacingCombo->setToolTip(tr("Knot spacing |qᵢ₊₁ − qᵢ|ᵅ. The thesis uses uniform spacing (α = 0). Beyond "
                                   "it: centripetal (α = 1/2) avoids cusps and loops, chordal (α = 1) follows the "
                                   "chord lengths; the segments then join with parallel tangents (G¹)."));
     m_bezierCheck->setText(tr("Compare with &Bézier"));
@@ -416,7 +416,7 @@ void CatmullRomTab::retranslate()
     m_catmullRomCheck->setToolTip(tr("Draw the Catmull-Rom curve of each tension. Hide them to see the cubic spline alone, "
                                      "as Fig 2.1 shows Ex 2.1's."));
     m_pointsCheck->setText(tr("Poin&ts"));
-    m_pointsCheck->setToolTip(tr("Draw the points q_i that the curves interpolate, their labels and their polygon; off, "
+    m_pointsCheck->setToolTip(tr("Draw the points qᵢ that the curves interpolate, their labels and their polygon; off, "
                                  "the curves alone, like puntvis = false in the thesis's Matlab Rep_CatmullRom. The "
                                  "table still edits the points."));
     m_splineEndsLabel->setText(tr("Spline e&nds:"));
@@ -467,10 +467,10 @@ void CatmullRomTab::updatePlotTexts()
         m_plot->setToolTip(tr("κ(s) of every curve drawn, in its colour and line style as on the canvas; the light "
                               "vertical lines are the knots of the selected τ."));
     } else {
-        m_plotTitle->setText(tr("Blending functions w_j(t, τ) (Def 2.9, Cor 2.1)"));
-        m_plotTitle->setToolTip(tr("p(t) = Σ w_j(t, τ) p_j: the weight of each of the four points along a segment. "
+        m_plotTitle->setText(tr("Blending functions wⱼ(t, τ) (Def 2.9, Cor 2.1)"));
+        m_plotTitle->setToolTip(tr("p(t) = Σ wⱼ(t, τ) pⱼ: the weight of each of the four points along a segment. "
                                    "They always add up to 1."));
-        m_plot->setToolTip(tr("The blending functions w_0…w_3 of Cor 2.1 on t ∈ [0, 1]."));
+        m_plot->setToolTip(tr("The blending functions w₀…w₃ of Cor 2.1 on t ∈ [0, 1]."));
     }
 }
 
@@ -760,7 +760,7 @@ void CatmullRomTab::updatePlot()
         return;
     }
     m_plot->xAxis->setLabel(QStringLiteral("t"));
-    m_plot->yAxis->setLabel(QStringLiteral("w_j(t, τ)"));
+    m_plot->yAxis->setLabel(QStringLiteral("wⱼ(t, τ)"));
     std::vector<int> shown;
     if (m_settings.allTausInPlot) {
         for (int i = 0; i < static_cast<int>(m_settings.taus.size()); ++i)
@@ -801,7 +801,7 @@ void CatmullRomTab::updatePlot()
             key->setName(QStringLiteral("τ = %1").arg(tauString(m_settings.taus[static_cast<std::size_t>(shown[n])])));
         }
     if (shown.size() == 1) // the plot alone tells which tension it shows
-        m_plot->yAxis->setLabel(QStringLiteral("w_j(t, %1)").arg(tauString(m_settings.taus[static_cast<std::size_t>(shown[0])])));
+        m_plot->yAxis->setLabel(QStringLiteral("wⱼ(t, %1)").arg(tauString(m_settings.taus[static_cast<std::size_t>(shown[0])])));
     keepAxisTitlesWhole(m_plot);
     const double pad = (hi - lo) * 0.05;
     m_plot->xAxis->setRange(0, 1);

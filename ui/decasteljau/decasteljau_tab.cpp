@@ -1248,18 +1248,18 @@ void DeCasteljauTab::retranslate()
     m_samplesBox->setToolTip(samplesTip);
     m_raise->setText(tr("Raise degree"));
     m_raise->setToolTip(tr("Degree elevation: the same curve written with one control point more "
-                           "(Q_i = i/(n+1) P_(i−1) + (1 − i/(n+1)) P_i). Undoable."));
+                           "(Qᵢ = i/(n+1) Pᵢ₋₁ + (1 − i/(n+1)) Pᵢ). Undoable."));
     m_controlPoints->setText(tr("Control points"));
-    m_controlPoints->setToolTip(tr("Draw the control points P_i, their labels and the control polygon; off, the curve "
+    m_controlPoints->setToolTip(tr("Draw the control points Pᵢ, their labels and the control polygon; off, the curve "
                                    "alone, like puntsvis = false in the thesis's Matlab. The table still edits the points."));
     m_construction->setText(tr("Construction"));
-    m_construction->setToolTip(tr("Draw every level P_i^r(t) of De Casteljau's algorithm (Def 2.4): the points of each "
+    m_construction->setToolTip(tr("Draw every level Pᵢʳ(t) of De Casteljau's algorithm (Def 2.4): the points of each "
                                   "level and the segments between them, one colour per level."));
     m_steps->setText(tr("Step by step"));
     m_steps->setToolTip(tr("Overlay the curves of the first 1, 2, …, n+1 control points, like the desglossar option of "
                            "the thesis's Matlab Rep_Bezier."));
     m_tangent->setText(tr("Tangent"));
-    m_tangent->setToolTip(tr("The tangent vector c′(t) = n (P_1^(n−1)(t) − P_0^(n−1)(t)), read off the last level "
+    m_tangent->setToolTip(tr("The tangent vector c′(t) = n (P₁ⁿ⁻¹(t) − P₀ⁿ⁻¹(t)), read off the last level "
                              "but one of the construction; the arrow at c(t) is c′(t)/n, that last segment."));
     m_split->setText(tr("Split at t"));
     m_split->setToolTip(tr("Split the curve at t: the two edges of De Casteljau's triangle are the control polygons "
@@ -1284,7 +1284,7 @@ void DeCasteljauTab::retranslate()
                                  "and cusps ×, where c′ = 0."));
     m_hodograph->setText(tr("Hodograph"));
     m_hodograph->setToolTip(tr("The hodograph c′ in the corner: a Bézier curve of degree n − 1 with control points "
-                               "n (P_(i+1) − P_i), with its own De Casteljau construction at the same t; its point is c′(t)."));
+                               "n (Pᵢ₊₁ − Pᵢ), with its own De Casteljau construction at the same t; its point is c′(t)."));
     m_speed->setText(tr("Constant speed"));
     m_speed->setToolTip(tr("When playing, move c(t) by equal steps of arc length instead of equal steps of t: t is not "
                            "distance along the curve."));
@@ -1298,7 +1298,7 @@ void DeCasteljauTab::retranslate()
         tr("Control points P0…Pn of the Bézier curve (Def 2.4): drag a point, double-click to add "
            "one on the nearest edge, Delete removes the selected one, arrows nudge it. Drag the curve "
            "itself to mold it, or mold it at t with Alt+arrows; near the curve its closest point and t are shown."));
-    m_exact->setToolTip(tr("De Casteljau's triangle P_i^r(t) at the current t and, for rational points, every level "
+    m_exact->setToolTip(tr("De Casteljau's triangle Pᵢʳ(t) at the current t and, for rational points, every level "
                            "in powers of t, as in Ex 2.2 and Ex 2.3."));
     m_table->retranslate();
     updateWarning();

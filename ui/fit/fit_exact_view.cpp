@@ -65,7 +65,7 @@ bool isThesisData(const std::optional<std::vector<RPoint>>& rational)
 /// printed − right.
 QString radicalParametersHtml(const std::vector<RadicalQuotient>& t, const std::vector<RadicalSum>* printed)
 {
-    QString html = ExactPanel::heading(FitExactView::tr("Parameters t_i in radicals"));
+    QString html = ExactPanel::heading(FitExactView::tr("Parameters tᵢ in radicals"));
     QStringList header{QString(), FitExactView::tr("in radicals"), FitExactView::tr("decimal")};
     if (printed)
         header << FitExactView::tr("the thesis prints") << FitExactView::tr("printed − right");
@@ -94,7 +94,7 @@ QString radicalParametersHtml(const std::vector<RadicalQuotient>& t, const std::
         QStringList asPrinted;
         for (std::size_t i = 1; i + 1 < printed->size(); ++i)
             asPrinted << QStringLiteral("t_%1 = %2").arg(i).arg(QString::fromStdString(toString((*printed)[i])));
-        html += ExactPanel::note(FitExactView::tr("Ex 2.9 and Ex 2.10 print t_i rationalised from their d_4 = √85: %1. "
+        html += ExactPanel::note(FitExactView::tr("Ex 2.9 and Ex 2.10 print tᵢ rationalised from their d₄ = √85: %1. "
                                                   "Each is too large by the difference above (docs/thesis-errata.md, "
                                                   "“Ex 2.9 and 2.10”).")
                                      .arg(asPrinted.join(QStringLiteral(", "))));
@@ -127,8 +127,8 @@ QString FitExactView::html(const Input& in)
     if (byDistance && rational && count >= 2) {
         // Annex III's BezParamProp measures each point before from the origin instead.
         const bool annex = in.parametrization == Parametrization::AnnexIII;
-        html += ExactPanel::heading(annex ? tr("Annex III's distances d_i = |Q_i−1| (BezParamProp)")
-                                          : tr("Chord lengths d_i = dist(Q_i−1, Q_i)"));
+        html += ExactPanel::heading(annex ? tr("Annex III's distances dᵢ = |Qᵢ₋₁| (BezParamProp)")
+                                          : tr("Chord lengths dᵢ = dist(Qᵢ₋₁, Qᵢ)"));
         std::vector<std::optional<SimplifiedSquareRoot>> d;
         if (annex)
             for (std::size_t j = 0; j + 1 < rational->size(); ++j)
@@ -148,18 +148,18 @@ QString FitExactView::html(const Input& in)
                           .arg(ExactPanel::subscripted(QStringLiteral("d"), static_cast<int>(j) + 1), value, decimal(approx)));
         }
         if (thesisData && in.parametrization == Parametrization::ChordLength)
-            html += ExactPanel::note(tr("The thesis (Ex 2.9) writes d_4 = √85, from (1 − 7)² + (5 + 2)²; but Q_3 has "
-                                        "x = 8, so d_4 = √(49 + 49) = 7√2, which is used here "
+            html += ExactPanel::note(tr("The thesis (Ex 2.9) writes d₄ = √85, from (1 − 7)² + (5 + 2)²; but Q₃ has "
+                                        "x = 8, so d₄ = √(49 + 49) = 7√2, which is used here "
                                         "(docs/thesis-errata.md, “Ex 2.9 and 2.10”)."));
         if (in.parametrization == Parametrization::AnnexIII)
             html += QStringLiteral("<p>%1</p>")
-                        .arg(tr("Annex III's BezParamProp, as the thesis's Matlab computes it: d_i = |Q_i−1|, the "
+                        .arg(tr("Annex III's BezParamProp, as the thesis's Matlab computes it: dᵢ = |Qᵢ₋₁|, the "
                                 "distance of the point before from the origin, not from its neighbour — Figs 2.7 and 2.8 "
                                 "were drawn with these parameters (docs/thesis-errata.md, “Annex III”).")
                                  .toHtmlEscaped());
         if (in.parametrization == Parametrization::Centripetal)
             html += QStringLiteral("<p>%1</p>")
-                        .arg(tr("Centripetal parameters (beyond the thesis) use √d_i instead of d_i.").toHtmlEscaped());
+                        .arg(tr("Centripetal parameters (beyond the thesis) use √dᵢ instead of dᵢ.").toHtmlEscaped());
     }
 
     if (!in.fit)
@@ -170,7 +170,7 @@ QString FitExactView::html(const Input& in)
     std::optional<ExactFit> exact;
     QString whyNotExact;
     if (in.correctParameters)
-        whyNotExact = tr("Parameter correction moves the t_i to where the points project onto the curve: the "
+        whyNotExact = tr("Parameter correction moves the tᵢ to where the points project onto the curve: the "
                          "results are shown in decimals.");
     else if (count > kMaxExactPoints)
         whyNotExact = tr("Exact fractions are shown for up to %1 data points; these %2 are shown in decimals.")
@@ -195,7 +195,7 @@ QString FitExactView::html(const Input& in)
     }
 
     if (exact) {
-        html += ExactPanel::heading(tr("Parameters t_i"));
+        html += ExactPanel::heading(tr("Parameters tᵢ"));
         QStringList ts;
         for (std::size_t i = 0; i < exact->params.size(); ++i)
             ts << QStringLiteral("%1 = %2").arg(ExactPanel::subscripted(QStringLiteral("t"), static_cast<int>(i)),
@@ -246,8 +246,8 @@ QString FitExactView::html(const Input& in)
                                         "control points (docs/thesis-errata.md, “Ex 2.7 and 2.8”)."));
         if (thesisData && in.parametrization == Parametrization::Uniform && n == 3)
             html += ExactPanel::note(tr("Ex 2.8: the thesis prints −1636/105 as the coefficient of t in x(t). It is "
-                                        "3(P_1 − P_0) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here "
-                                        "(docs/thesis-errata.md, “Ex 2.8”). Its sum also runs k = 0…4, with B_k², "
+                                        "3(P₁ − P₀) = 3(−3371/630 − 11/70) = −347/21 = −1735/105, shown here "
+                                        "(docs/thesis-errata.md, “Ex 2.8”). Its sum also runs k = 0…4, with Bₖ², "
                                         "where n = 3 (“Ex 2.7 and 2.8”)."));
         return html;
     }
@@ -266,7 +266,7 @@ QString FitExactView::html(const Input& in)
     if (radicals) {
         html += radicalParametersHtml(*radicals, printedToo ? &ex29->printedParameters : nullptr);
     } else if (count <= kMaxListedPoints) {
-        html += ExactPanel::heading(tr("Parameters t_i"));
+        html += ExactPanel::heading(tr("Parameters tᵢ"));
         QStringList ts;
         for (std::size_t i = 0; i < fit.params.size(); ++i)
             ts << QStringLiteral("%1 = %2").arg(ExactPanel::subscripted(QStringLiteral("t"), static_cast<int>(i)),

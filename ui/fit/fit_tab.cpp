@@ -168,7 +168,7 @@ FitTab::FitTab(QWidget* parent) : CurveTab(QStringLiteral("fit"), QT_TR_NOOP("Fi
     connect(m_table, &PointTable::message, this, &FitTab::statusMessage);
     connect(m_canvas, &CurveCanvas::cursorMoved, this, [this](double x, double y) {
         if (m_editor->pick(m_canvas->view().toScreen(Point(x, y))) >= 0)
-            emit statusMessage(tr("Drag Q_i: the curve is refitted as it moves; Delete removes it."));
+            emit statusMessage(tr("Drag Qᵢ: the curve is refitted as it moves; Delete removes it."));
     });
 
     // A sensible start: the data of Ex 2.7 with n = 2, uniform parameters (no undo step).
@@ -489,17 +489,17 @@ void FitTab::retranslate()
 {
     m_settingsGroup->setTitle(tr("Least-squares fit (§2.1.3)"));
     m_degreeLabel->setText(tr("&Degree n:"));
-    m_degree->setToolTip(tr("n: the fitted Bézier curve has n + 1 control points P_0…P_n, so n + 1 ≤ k + 1 data "
+    m_degree->setToolTip(tr("n: the fitted Bézier curve has n + 1 control points P₀…Pₙ, so n + 1 ≤ k + 1 data "
                             "points (§2.1.3, Lemma 2.2). Ex 2.7 uses n = 2, Ex 2.8 n = 3."));
-    m_parametrizationLabel->setText(tr("&Parameters t_i:"));
+    m_parametrizationLabel->setText(tr("&Parameters tᵢ:"));
     m_parametrization->setItemText(0, tr("Uniform, i/k (Ex 2.7, 2.8)"));
     m_parametrization->setItemText(1, tr("Chord length (Ex 2.9, 2.10)"));
     m_parametrization->setItemText(2, tr("Centripetal (beyond the thesis)"));
     m_parametrization->setItemText(3, tr("Annex III (BezParamProp)"));
     m_parametrization->setToolTip(
-        tr("Where on the curve each Q_i should fall (§2.1.3): uniform t_i = i/k; proportional to the chord "
-           "lengths d_i = dist(Q_i−1, Q_i); centripetal, proportional to √d_i; or as Annex III's BezParamProp "
-           "computes them, with |Q_i−1| in place of d_i (how Figs 2.7 and 2.8 were drawn)."));
+        tr("Where on the curve each Qᵢ should fall (§2.1.3): uniform tᵢ = i/k; proportional to the chord "
+           "lengths dᵢ = dist(Qᵢ₋₁, Qᵢ); centripetal, proportional to √dᵢ; or as Annex III's BezParamProp "
+           "computes them, with |Qᵢ₋₁| in place of dᵢ (how Figs 2.7 and 2.8 were drawn)."));
     m_solverLabel->setText(tr("&Solver:"));
     m_solver->setItemText(0, tr("QR (default)"));
     m_solver->setItemText(1, tr("Normal equations (the thesis)"));
@@ -508,12 +508,12 @@ void FitTab::retranslate()
                             "equations MᵀM P = MᵀQ (Prop 2.2), which square the condition number; QR and SVD "
                             "work on M itself and stay accurate at high degree."));
     m_correct->setText(tr("&Correct parameters, at most"));
-    m_correct->setToolTip(tr("Beyond the thesis: project each Q_i onto the fitted curve, take the new t_i and fit "
-                             "again, while the error Σ‖Q_i − α(t_i)‖² drops."));
+    m_correct->setToolTip(tr("Beyond the thesis: project each Qᵢ onto the fitted curve, take the new tᵢ and fit "
+                             "again, while the error Σ‖Qᵢ − α(tᵢ)‖² drops."));
     m_iterations->setSuffix(tr(" times"));
     m_iterations->setToolTip(tr("The largest number of parameter corrections (re-projection and refit)."));
     m_import->setText(tr("&Import CSV…"));
-    m_import->setToolTip(tr("Read the data points Q_i from a CSV file (one “x,y” per line) or a JSON list [[x,y],…]."));
+    m_import->setToolTip(tr("Read the data points Qᵢ from a CSV file (one “x,y” per line) or a JSON list [[x,y],…]."));
     m_showMatrices->setText(tr("Show &matrices"));
     m_cancel->setText(tr("Cancel"));
     m_cancel->setToolTip(tr("Stop correcting the parameters: the curve shown is then the best fit found so far."));
@@ -526,10 +526,10 @@ void FitTab::retranslate()
                                   "when the data and the parameters are rational, as in Ex 2.7 and Ex 2.8."));
     m_displayGroup->setTitle(tr("Drawing"));
     m_controlPointsBox->setText(tr("Con&trol points"));
-    m_controlPointsBox->setToolTip(tr("Draw the fitted control points P_j (squares), their labels and the control "
+    m_controlPointsBox->setToolTip(tr("Draw the fitted control points Pⱼ (squares), their labels and the control "
                                       "polygon. The thesis's Figs 2.5–2.8 show the curve and the data alone."));
     m_residualsBox->setText(tr("&Residuals"));
-    m_residualsBox->setToolTip(tr("Draw the segments from α(t_i) to each data point Q_i: the errors the fit minimises."));
+    m_residualsBox->setToolTip(tr("Draw the segments from α(tᵢ) to each data point Qᵢ: the errors the fit minimises."));
     m_breakdownBox->setText(tr("Step by st&ep"));
     m_breakdownBox->setToolTip(tr("Also draw the Bézier curves of the first 1, 2, …, n+1 fitted control points, thinner "
                                   "and lighter, like the desglossar option of the thesis's Matlab Rep_BezParamEqui and "
@@ -545,13 +545,13 @@ void FitTab::retranslate()
     m_readoutGroup->setTitle(tr("Quality of the fit (Prop 2.2)"));
     m_readoutGroup->setToolTip(tr("The error that the least-squares curve minimises, and how sensitive the "
                                   "solution is to the data."));
-    m_canvas->setToolTip(tr("The data points Q_i (round, draggable), the fitted Bézier curve α(t), its control "
-                            "points P_j (square) and control polygon, and the residuals Q_i − α(t_i)."));
+    m_canvas->setToolTip(tr("The data points Qᵢ (round, draggable), the fitted Bézier curve α(t), its control "
+                            "points Pⱼ (square) and control polygon, and the residuals Qᵢ − α(tᵢ)."));
     m_exact->setToolTip(tr("The parameters, the control points P = M⁺Q and the curve α(t) in powers of t, exact "
                            "when possible (Ex 2.7–2.10)."));
-    m_plot->setToolTip(tr("The least-squares error Σ‖Q_i − α(t_i)‖² of the best curve of each degree n for the "
+    m_plot->setToolTip(tr("The least-squares error Σ‖Qᵢ − α(tᵢ)‖² of the best curve of each degree n for the "
                           "current parameters (without correction); the circle marks the current n. With fixed "
-                          "t_i it can only go down as n grows, unless the solver loses accuracy."));
+                          "tᵢ it can only go down as n grows, unless the solver loses accuracy."));
     m_plot->xAxis->setLabel(tr("degree n"));
     m_plot->yAxis->setLabel(tr("squared error (log)"));
     keepAxisTitlesWhole(m_plot);
@@ -572,7 +572,7 @@ QString FitTab::errorText(const Error& error) const
     case ErrorCode::Singular:
         return m_settings.solver == LeastSquaresSolver::Normal
                    ? tr("The normal equations MᵀM P = MᵀQ cannot be solved here: MᵀM is numerically singular "
-                        "(coincident points, or cond₂(MᵀM) = cond₂(M)² beyond 10^16). Choose QR or SVD.")
+                        "(coincident points, or cond₂(MᵀM) = cond₂(M)² beyond 10¹⁶). Choose QR or SVD.")
                    : tr("The least-squares system has no usable solution here.");
     case ErrorCode::OutOfRange: return tr("The fitted curve does not fit in double precision: lower the degree.");
     case ErrorCode::InvalidInput:
@@ -792,9 +792,9 @@ void FitTab::updateReadouts()
         m_condLabel->clear();
         m_correctionsLabel->hide();
     } else if (m_fit) {
-        m_sseLabel->setText(tr("Squared error Σ‖Q_i − α(t_i)‖²: %1").arg(fittedValueText(m_fit->sse)));
+        m_sseLabel->setText(tr("Squared error Σ‖Qᵢ − α(tᵢ)‖²: %1").arg(fittedValueText(m_fit->sse)));
         m_rmsLabel->setText(tr("RMS error √(Σ/(k+1)): %1").arg(fittedValueText(m_fit->rms)));
-        m_maxLabel->setText(tr("Largest error max‖Q_i − α(t_i)‖: %1").arg(fittedValueText(m_fit->maxError)));
+        m_maxLabel->setText(tr("Largest error max‖Qᵢ − α(tᵢ)‖: %1").arg(fittedValueText(m_fit->maxError)));
         m_condLabel->setText(m_fit->cond >= std::numeric_limits<double>::max()
                                  ? tr("Condition number cond₂(M): infinite (M is singular)")
                                  : tr("Condition number cond₂(M): %1").arg(fittedValueText(m_fit->cond)));
@@ -849,7 +849,7 @@ void FitTab::updateReadouts()
                             .arg(normalEquationsDigitsLost(w.cond));
             break;
         case FitWarningCode::RepeatedParameters:
-            warnings << tr("⚠ Only %1 distinct parameters t_i for %2 control points: M is rank deficient, and the "
+            warnings << tr("⚠ Only %1 distinct parameters tᵢ for %2 control points: M is rank deficient, and the "
                            "control points shown are the minimum-norm least-squares solution.")
                             .arg(w.distinct)
                             .arg(w.degree + 1);
@@ -860,7 +860,7 @@ void FitTab::updateReadouts()
                                       : tr("All the data points coincide: the curve is that point."));
             break;
         case FitWarningCode::ZeroChords:
-            warnings << tr("Q%1 and Q%2 coincide: a zero chord length gives them the same parameter t_i (%n such "
+            warnings << tr("Q%1 and Q%2 coincide: a zero chord length gives them the same parameter tᵢ (%n such "
                            "pair(s)).",
                            nullptr, w.pairs)
                             .arg(w.first - 1)
@@ -1228,7 +1228,7 @@ void FitTab::presentationChanged(bool on)
 
 QString FitTab::hint() const
 {
-    return tr("Drag a data point Q_i and the curve is refitted; double-click adds a point, Delete "
+    return tr("Drag a data point Qᵢ and the curve is refitted; double-click adds a point, Delete "
               "removes it.");
 }
 

@@ -197,8 +197,17 @@ QString TikzWriter::texText(const QString& text)
         {QChar(0x00D7), QStringLiteral("\\times")}, {QChar(0x2248), QStringLiteral("\\approx")},
         {QChar(0x2260), QStringLiteral("\\ne")},    {QChar(0x25C6), QStringLiteral("\\diamond")},
         {QChar(0x221E), QStringLiteral("\\infty")}, {QChar(0x25CB), QStringLiteral("\\circ")},
-        {QChar(0x007C), QStringLiteral("|")},       {QChar(0x1D62), QStringLiteral("_i")},
-        {QChar(0x03B1), QStringLiteral("\\alpha")}, {QChar(0x0394), QStringLiteral("\\Delta")}};
+        {QChar(0x007C), QStringLiteral("|")},       {QChar(0x03B1), QStringLiteral("\\alpha")},
+        {QChar(0x0394), QStringLiteral("\\Delta")}};
+    // The letters and signs the labels write as sub- and superscripts ("Pᵢ₊₁", "Bᵢⁿ", "10¹⁶").
+    static const QMap<QChar, QString> subscripts = {{QChar(0x1D62), QStringLiteral("i")}, {QChar(0x2C7C), QStringLiteral("j")},
+                                                    {QChar(0x2096), QStringLiteral("k")}, {QChar(0x2099), QStringLiteral("n")},
+                                                    {QChar(0x1D63), QStringLiteral("r")}, {QChar(0x2093), QStringLiteral("x")},
+                                                    {QChar(0x208A), QStringLiteral("+")}, {QChar(0x208B), QStringLiteral("-")}};
+    static const QMap<QChar, QString> superscripts = {
+        {QChar(0x207F), QStringLiteral("n")},      {QChar(0x2071), QStringLiteral("i")}, {QChar(0x02B3), QStringLiteral("r")},
+        {QChar(0x1D40), QStringLiteral("T")},      {QChar(0x207A), QStringLiteral("+")}, {QChar(0x207B), QStringLiteral("-")},
+        {QChar(0x1D45), QStringLiteral("\\alpha")}};
     QString out;
     bool inMath = false; // the last thing written is a formula: the next symbol joins it ("Pᵢ²": P$_i^2$)
     QChar script;        // '_' or '^' when that formula ends in a sub- or superscript group
@@ -209,16 +218,17 @@ QString TikzWriter::texText(const QString& text)
         inMath = true;
         script = QChar();
     };
-    // A sub- or superscript digit: the digits of one number in one group ("P₁₀": P$_{10}$).
-    const auto digit = [&](QChar kind, int d) {
+    // A sub- or superscript: the characters of one run in one group ("P₁₀": P$_{10}$, "Pᵢ₊₁": P$_{i+1}$).
+    const auto scripted = [&](QChar kind, const QString& s) {
         if (inMath && script == kind) {
             out.chop(2); // "}$"
-            out += QString::number(d) + QStringLiteral("}$");
+            out += s + QStringLiteral("}$");
         } else {
-            math(QString(kind) + QStringLiteral("{%1}").arg(d));
+            math(QString(kind) + QLatin1Char('{') + s + QLatin1Char('}'));
             script = kind;
         }
     };
+    const auto digit = [&](QChar kind, int d) { scripted(kind, QString::number(d)); };
     const auto textOut = [&out, &inMath](const QString& t) {
         out += t;
         inMath = false;
@@ -239,6 +249,10 @@ QString TikzWriter::texText(const QString& text)
             digit(QLatin1Char('^'), u - 0x2070);
         else if (u == 0x00B9 || u == 0x00B2 || u == 0x00B3)
             digit(QLatin1Char('^'), u == 0x00B9 ? 1 : u - 0x00B0);
+        else if (const auto sub = subscripts.find(c); sub != subscripts.end())
+            scripted(QLatin1Char('_'), *sub);
+        else if (const auto sup = superscripts.find(c); sup != superscripts.end())
+            scripted(QLatin1Char('^'), *sup);
         else if (const auto it = symbols.find(c); it != symbols.end())
             math(*it);
         else
