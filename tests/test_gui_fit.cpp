@@ -1035,6 +1035,26 @@ private slots:
         QVERIFY(!tab.csv().contains(QStringLiteral("parametrization,degree,sse")));
     }
 
+    // Issue 34, item 8: the CSV beside the panel's 11/70 says 0.157142857142857 (11/70 to 15
+    // digits by long division: 0.157142857 142857 142…), not the solver's 0.15714285714285747;
+    // no number in it has more than 15 significant digits.
+    void csvCarriesNoBinaryNoise()
+    {
+        FitTab tab;
+        QVERIFY(loadEx(tab, "2.8"));
+        const QString csv = tab.csv();
+        QVERIFY2(csv.contains(QStringLiteral("\nj,P_x,P_y\n0,0.157142857142857,")), qPrintable(csv));
+        static const QRegularExpression number(QStringLiteral("-?\\d+(?:\\.\\d+)?(?:e[-+]?\\d+)?"));
+        for (auto it = number.globalMatch(csv); it.hasNext();) {
+            const QString text = it.next().captured(0);
+            QString mantissa = text.section(QLatin1Char('e'), 0, 0).remove(QLatin1Char('-'));
+            mantissa.remove(QLatin1Char('.'));
+            while (mantissa.startsWith(QLatin1Char('0')))
+                mantissa.remove(0, 1);
+            QVERIFY2(mantissa.size() <= 15, qPrintable(text + QStringLiteral(" in the CSV")));
+        }
+    }
+
     void csvAndTikz()
     {
         FitTab tab;

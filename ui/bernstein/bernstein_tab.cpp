@@ -661,9 +661,9 @@ QString BernsteinTab::csv() const
     QString out = header.join(QLatin1Char(',')) + QLatin1Char('\n');
     for (int j = 0; j < kCsvSamples; ++j) {
         const double tt = static_cast<double>(j) / (kCsvSamples - 1);
-        QStringList row{QString::fromStdString(formatDouble(tt))};
+        QStringList row{QString::fromStdString(formatReadable(tt))};
         for (double b : bernsteinAll(m_degree, tt))
-            row << QString::fromStdString(formatDouble(b));
+            row << QString::fromStdString(formatReadable(b));
         out += row.join(QLatin1Char(',')) + QLatin1Char('\n');
     }
     return out;

@@ -1103,7 +1103,7 @@ QString CatmullRomTab::csv() const
     for (std::size_t i = 0; i < points.size(); ++i)
         out += QStringLiteral("q%1,%2,%3\n")
                    .arg(i)
-                   .arg(QString::fromStdString(formatDouble(points[i].x)), QString::fromStdString(formatDouble(points[i].y)));
+                   .arg(QString::fromStdString(formatReadable(points[i].x)), QString::fromStdString(formatReadable(points[i].y)));
     out += QStringLiteral("\ntau,segment,t,x,y\n");
     const int samples = CatmullRomScene::kSamplesPerSegment;
     for (const CatmullRomCurve& c : m_scene.curves) {
@@ -1114,14 +1114,14 @@ QString CatmullRomTab::csv() const
             out += QStringLiteral("%1,%2,%3,%4,%5\n")
                        .arg(tau)
                        .arg(segment)
-                       .arg(QString::fromStdString(formatDouble(t)), QString::fromStdString(formatDouble(c.samples[k].x)),
-                            QString::fromStdString(formatDouble(c.samples[k].y)));
+                       .arg(QString::fromStdString(formatReadable(t)), QString::fromStdString(formatReadable(c.samples[k].x)),
+                            QString::fromStdString(formatReadable(c.samples[k].y)));
         }
     }
     if (m_settings.curvaturePlot) {
         // κ(s) as plotted: a knot appears twice, the end of one segment and the start of the next.
         out += QStringLiteral("\ncurve,tau,ends,segment,s,kappa\n");
-        const auto number = [](double v) { return QString::fromStdString(formatDouble(v)); };
+        const auto number = [](double v) { return QString::fromStdString(formatReadable(v)); };
         auto write = [&](const QString& curve, const QString& tau, const QString& ends, int firstSegment,
                          const CurvatureProfile& profile) {
             for (std::size_t i = 0; i < profile.samples.size(); ++i)

@@ -1453,15 +1453,16 @@ QString DeCasteljauTab::csv() const
     for (std::size_t i = 0; i < points.size(); ++i)
         out += QStringLiteral("%1,%2,%3\n")
                    .arg(i)
-                   .arg(QString::fromStdString(formatDouble(points[i].x)), QString::fromStdString(formatDouble(points[i].y)));
+                   .arg(QString::fromStdString(formatReadable(points[i].x)), QString::fromStdString(formatReadable(points[i].y)));
     out += QStringLiteral("\nt,x,y\n");
     const double part = static_cast<double>(m_curve.size() > 1 ? m_curve.size() - 1 : 1);
     for (std::size_t j = 0; j < m_curve.size(); ++j)
         out += QStringLiteral("%1,%2,%3\n")
-                   .arg(QString::fromStdString(formatDouble(static_cast<double>(j) / part)),
-                        QString::fromStdString(formatDouble(m_curve[j].x)), QString::fromStdString(formatDouble(m_curve[j].y)));
+                   .arg(QString::fromStdString(formatReadable(static_cast<double>(j) / part)),
+                        QString::fromStdString(formatReadable(m_curve[j].x)),
+                        QString::fromStdString(formatReadable(m_curve[j].y)));
     // The readouts at t (empty where undefined: a cusp has no curvature, a straight piece no radius).
-    const auto f = [](double v) { return QString::fromStdString(formatDouble(v)); };
+    const auto f = [](double v) { return QString::fromStdString(formatReadable(v)); };
     const auto opt = [&f](const std::optional<double>& v) { return v ? f(*v) : QString(); };
     out += QStringLiteral("\nt,arc_length,length,curvature,radius\n");
     out += QStringLiteral("%1,%2,%3,%4,%5\n")

@@ -1152,12 +1152,9 @@ QString FitTab::csv() const
 {
     finishFit(); // the finished fit, never a half state
     const std::vector<Point>& q = m_editor->points();
-    // Shortest round-trip text (std::to_chars): exact, and fast enough for 10^6 rows.
-    const auto f = [](double v) {
-        char buffer[32];
-        const auto result = std::to_chars(buffer, buffer + sizeof buffer, v);
-        return QString::fromLatin1(buffer, static_cast<int>(result.ptr - buffer));
-    };
+    // At most 15 significant digits: the data as typed, the fit without binary noise
+    // (0.157142857142857, not 0.15714285714285747 beside the panel's 11/70).
+    const auto f = [](double v) { return QString::fromStdString(formatReadable(v)); };
     QString out = QStringLiteral("i,x,y,t,alpha_x,alpha_y,residual_x,residual_y\n");
     out.reserve(static_cast<qsizetype>(q.size()) * 160);
     const bool fitted = m_fit && m_fit->residuals.size() == q.size();
