@@ -220,9 +220,15 @@ void PointEditor::setSelected(int index)
 
 Point PointEditor::snapped(Point p) const
 {
-    if (!m_snap)
+    // Where the pointer puts a point: on the grid when snapping, else on the round step of one
+    // pixel (1, 2 or 5 × 10^k). Exactly, as a nudge: the table then reads 2.34 rather than
+    // 2.3456789012345678, and 7 grid steps of 0.1 are 0.7, not 0.7000000000000001.
+    const double scale = m_canvas->view().scale();
+    if (!isFinite(p) || !(scale > 0))
         return p;
-    return {std::round(p.x / m_gridStep) * m_gridStep, std::round(p.y / m_gridStep) * m_gridStep};
+    const Rational step = m_snap ? meantRational(m_gridStep) : roundStepAtMost(1.0 / scale).exact();
+    const auto on = [&step](double v) { return toDouble(nearestMultiple(meantRational(v), step)); };
+    return {on(p.x), on(p.y)};
 }
 
 void PointEditor::setCountLimits(int minimum, int maximum)
