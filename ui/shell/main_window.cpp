@@ -681,6 +681,8 @@ void MainWindow::setPresentation(bool on, bool fullScreen)
         // The normal font's layouts first: the window's minimum size is still presentation
         // mode's, and a window manager would keep the window that large (975 px wide on an
         // 800 px screen).
+        // Every posted event first (the font changes are posted too), then the layouts.
+        QCoreApplication::sendPostedEvents();
         QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
         if (layout())
             layout()->activate();
