@@ -13,7 +13,9 @@
 #include "core/exact/rational.h"
 #include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
+#include "ui/common/canvas_legend.h"
 #include "ui/common/curvature_comb_scale_box.h"
+#include "ui/common/presentation_scale.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/decasteljau/decasteljau_curve_drag.h"
 #include "ui/decasteljau/decasteljau_parameter_control.h"
@@ -261,6 +263,25 @@ private slots:
         view.setScale(granota::ui::ViewTransform::kMinScale);
         tab.canvas()->repaint();
         QVERIFY2(clock.elapsed() < 20000, qPrintable(QString::number(clock.elapsed())));
+    }
+
+    // Issue 34, item 4: in presentation mode the key's text grows with the points' names (the
+    // style's scale), not only its swatches and margins: the whole key is about `scale` times
+    // as wide as on a desk, under the same application font.
+    void theKeyGrowsLikeTheLabelsInPresentation()
+    {
+        DeCasteljauTab tab;
+        showTab(tab);
+        granota::ui::CanvasLegend legend;
+        legend.entries = {{granota::ui::CanvasStyle::series(1), Qt::SolidLine, QStringLiteral("level 1: the points P₁¹(t)")}};
+        const granota::ui::ViewTransform& view = tab.canvas()->view();
+        granota::ui::CanvasStyle desk, room;
+        room.scale = granota::ui::presentationScale(true);
+        QVERIFY(room.scale > 1.2);
+        const QSizeF a = granota::ui::canvasLegendSize(view, desk, legend);
+        const QSizeF b = granota::ui::canvasLegendSize(view, room, legend);
+        QVERIFY2(b.width() >= 0.95 * room.scale * a.width(),
+                 qPrintable(QStringLiteral("%1 px on a desk, %2 px in presentation").arg(a.width()).arg(b.width())));
     }
 
     // Issue 34, item 8: a point snapped to a grid of 0.1 lands on the double nearest to 7/10

@@ -12,11 +12,11 @@ namespace granota::ui {
 
 namespace {
 
-/// The application font (already larger in presentation mode), a little smaller: the legend
-/// must not hide the points.
-QFont legendFont(bool compact)
+/// The labels' font (the application font, larger in presentation mode, × the style's scale,
+/// as the points' names are), a little smaller: the legend must not hide the points.
+QFont legendFont(const CanvasStyle& style, bool compact)
 {
-    QFont font;
+    QFont font = style.labelFont();
     font.setPointSizeF(font.pointSizeF() * (compact ? CanvasLegendBox::kCompactFont : 0.9));
     return font;
 }
@@ -30,7 +30,7 @@ struct LegendMetrics {
 LegendMetrics legendMetrics(const ViewTransform& view, const CanvasStyle& style, const CanvasLegend& legend, bool compact)
 {
     LegendMetrics m;
-    const QFontMetricsF fm(legendFont(compact));
+    const QFontMetricsF fm(legendFont(style, compact));
     m.line = fm.height() * (compact ? 1.0 : 1.15);
     m.swatch = (compact ? 16 : 26) * style.scale;
     m.pad = (compact ? 3 : 6) * style.scale;
@@ -113,7 +113,7 @@ QRectF drawCanvasLegend(QPainter& p, const ViewTransform& view, const CanvasStyl
     if (box.isEmpty() || (legend.entries.empty() && legend.note.isEmpty()))
         return {};
     const LegendMetrics m = legendMetrics(view, style, legend, where.compact);
-    p.setFont(legendFont(where.compact));
+    p.setFont(legendFont(style, where.compact));
     p.setPen(QPen(style.gridMajor, style.thinLine()));
     p.setBrush(QColor(255, 255, 255, 215));
     p.drawRoundedRect(box, 4, 4);
