@@ -13,10 +13,11 @@ namespace granota::ui {
 namespace {
 
 /// The labels' font (the application font, larger in presentation mode, × the style's scale,
-/// as the points' names are), a little smaller: the legend must not hide the points.
+/// as the points' names are), a little smaller: the legend must not hide the points. The
+/// compact form, for a canvas without room, keeps to the application font.
 QFont legendFont(const CanvasStyle& style, bool compact)
 {
-    QFont font = style.labelFont();
+    QFont font = compact ? QFont() : style.labelFont();
     font.setPointSizeF(font.pointSizeF() * (compact ? CanvasLegendBox::kCompactFont : 0.9));
     return font;
 }

@@ -53,7 +53,7 @@ double canvasCoverCost(const QRectF& box, const CanvasLegendObstacles& obstacles
 struct CanvasLegendBox {
     QRectF box;
     bool compact = false;
-    static constexpr double kCompactFont = 0.8; ///< × the application font (the full key: 0.9)
+    static constexpr double kCompactFont = 0.8; ///< × the application font (the full key: 0.9 × the labels' font)
 };
 
 /// Positions tried along each edge of the canvas, between and besides its corners.
