@@ -238,7 +238,25 @@ private:
     int addParticle(Point x, Point v, double invMass);
     void rescaleRest(Body& b);
     void findContactPairs();
+    /// One substep's constants: its length h, 1/h², the step's fraction done at its end
+    /// (for what moves over the step: the mouse, fixed anchors), the speed cap and the
+    /// velocity the damping keeps, f^h.
+    struct Substep {
+        double h = 0, invH2 = 0, fraction = 0, vCap = 0;
+        Point keep;
+    };
+    /// The stages of a substep, in order (xpbd_step.cpp).
     void solveSubstep(double h, double fraction);
+    void integrate(const Substep& s);
+    void solveBodies(const Substep& s);
+    void solveGrab(const Substep& s);
+    void solveObstacleContacts();
+    void solveBodyContacts();
+    void solveChains(const Substep& s);
+    void solveFrame(const Substep& s);
+    void updateVelocities(const Substep& s);
+    void dampEdges(const Substep& s);
+    void applyFriction(const Substep& s);
     void updateValidity();
     void placeChainRoots(double fraction);
     bool checkValid(const Body& b) const;
