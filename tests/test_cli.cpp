@@ -562,7 +562,7 @@ private slots:
     }
 
     // Every command's answer, written to a full disk: the failed write is said on stderr,
-    // with the reason, and the status is 2 like every other error (README, --help).
+    // with the reason, and the status is 2 like every other error (docs/cli.md, --help).
     void failedWriteSaysSo_data()
     {
         QTest::addColumn<QStringList>("args");

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Every speed target of the project measured in one run, the seed's own program (Annex II
-# as Java, SeedFrog.java) as the baseline in the same run; prints the README's table.
+# as Java, SeedFrog.java) as the baseline in the same run; prints the targets table of docs/performance.md.
 #   bash tests/benchmarks/targets.sh [BUILD_DIR] [PATH/TO/SeedFrog.java]
 # Timings are medians of three repetitions (Google Benchmark) on whatever else the machine
 # is doing: compare the ratios, not the absolute numbers of two different runs.
