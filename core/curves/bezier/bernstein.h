@@ -14,19 +14,29 @@ namespace granota {
 
 /// All of B_0^n(t) … B_n^n(t) at once through the recursion of Lemma 2.1,
 /// B_i^n = (1−t) B_i^{n−1} + t B_{i−1}^{n−1}: only sums of products of numbers in [0,1]
-/// for t ∈ [0,1], so no binomial coefficient ever overflows or cancels.
-template <class S> std::vector<S> bernsteinAll(int n, const S& t)
+/// for t ∈ [0,1], so no binomial coefficient ever overflows or cancels. Into b[0..n], with
+/// no allocation (a row of the fit's matrix M, Lemma 2.2).
+template <class S> void bernsteinAllInto(int n, const S& t, S* b)
 {
     assert(n >= 0);
-    std::vector<S> b(static_cast<std::size_t>(n + 1), S(0));
+    for (int i = 1; i <= n; ++i)
+        b[i] = S(0);
     b[0] = S(1);
     const S u = S(S(1) - t);
     for (int m = 1; m <= n; ++m) {
         // In place from the top so that b[i−1] is still of degree m−1 when b[i] is formed.
         for (int i = m; i >= 1; --i)
-            b[static_cast<std::size_t>(i)] = S(u * b[static_cast<std::size_t>(i)] + t * b[static_cast<std::size_t>(i - 1)]);
+            b[i] = S(u * b[i] + t * b[i - 1]);
         b[0] = S(u * b[0]);
     }
+}
+
+/// The same as a vector.
+template <class S> std::vector<S> bernsteinAll(int n, const S& t)
+{
+    assert(n >= 0);
+    std::vector<S> b(static_cast<std::size_t>(n + 1), S(0));
+    bernsteinAllInto(n, t, b.data());
     return b;
 }
 

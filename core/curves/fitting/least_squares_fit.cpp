@@ -3,6 +3,9 @@
 #include "core/curves/fitting/bernstein_block.h"
 #include "core/base/enum_names.h"
 #include "core/base/number_format.h"
+#include "core/curves/bezier/bernstein.h"
+#include "core/curves/bezier/de_casteljau.h"
+#include "core/curves/bezier/hodograph.h"
 #include "core/curves/fitting/tall_skinny_qr.h"
 
 #include <Eigen/Cholesky>
@@ -22,46 +25,13 @@ namespace granota {
 
 namespace {
 
-/// B_0^n(t)..B_n^n(t) into b[0..n] by the recursion of Lemma 2.1,
-/// B_j^r(t) = (1 − t) B_j^{r−1}(t) + t B_{j−1}^{r−1}(t), for double and for Rational.
-template <class S> void bernsteinRow(int n, const S& t, S* b)
-{
-    const S u = S(S(1) - t);
-    b[0] = S(1);
-    for (int r = 1; r <= n; ++r) {
-        S previous(0); // B_{j−1}^{r−1}
-        for (int j = 0; j < r; ++j) {
-            S current = b[j]; // B_j^{r−1}
-            b[j] = S(u * current + t * previous);
-            previous = std::move(current);
-        }
-        b[r] = S(t * previous);
-    }
-}
-
-/// De Casteljau's algorithm (Def 2.4) on the control points P, with scratch space.
+/// c(t) of the control points P (De Casteljau, Def 2.4), with scratch space.
 Point evaluateBezier(const std::vector<Point>& P, double t, std::vector<Point>& work)
 {
     if (P.empty())
         return Point();
     work.assign(P.begin(), P.end());
-    const double u = 1.0 - t;
-    for (std::size_t r = 1; r < P.size(); ++r)
-        for (std::size_t i = 0; i + r < P.size(); ++i)
-            work[i] = Point(u * work[i].x + t * work[i + 1].x, u * work[i].y + t * work[i + 1].y);
-    return work[0];
-}
-
-/// The control points of the hodograph: n (P_{j+1} − P_j).
-std::vector<Point> derivativePoints(const std::vector<Point>& P)
-{
-    std::vector<Point> d;
-    if (P.size() < 2)
-        return d;
-    const double n = static_cast<double>(P.size() - 1);
-    for (std::size_t j = 0; j + 1 < P.size(); ++j)
-        d.push_back(n * (P[j + 1] - P[j]));
-    return d;
+    return deCasteljauInPlace(work, t);
 }
 
 template <class S> int countDistinct(const std::vector<S>& t)
@@ -263,8 +233,8 @@ double sumOfSquares(const std::vector<Point>& q, const std::vector<Point>& P, co
 std::vector<double> project(const std::vector<Point>& q, const std::vector<Point>& P, const std::vector<double>& t,
                             Cancellation& cancel, int done)
 {
-    const std::vector<Point> d1 = derivativePoints(P);
-    const std::vector<Point> d2 = derivativePoints(d1);
+    const std::vector<Point> d1 = hodograph(P);
+    const std::vector<Point> d2 = hodograph(d1);
     std::vector<Point> work;
     std::vector<double> out = t;
     for (std::size_t i = 0; i < q.size() && cancel.keepGoingAt(i, done); ++i) {
@@ -327,7 +297,7 @@ Eigen::MatrixXd bernsteinMatrix(const std::vector<double>& t, int n)
     Eigen::MatrixXd M(static_cast<Eigen::Index>(t.size()), n + 1);
     std::vector<double> row(static_cast<std::size_t>(n + 1));
     for (std::size_t i = 0; i < t.size(); ++i) {
-        bernsteinRow(n, t[i], row.data());
+        bernsteinAllInto(n, t[i], row.data());
         for (int j = 0; j <= n; ++j)
             M(static_cast<Eigen::Index>(i), j) = row[static_cast<std::size_t>(j)];
     }
@@ -524,7 +494,7 @@ Expected<ExactFit> fitBezierExact(const std::vector<RPoint>& q, int degree, Para
     fit.M = RationalMatrix(rows, n + 1);
     std::vector<Rational> row(static_cast<std::size_t>(n + 1));
     for (int i = 0; i < rows; ++i) {
-        bernsteinRow(n, fit.params[static_cast<std::size_t>(i)], row.data());
+        bernsteinAllInto(n, fit.params[static_cast<std::size_t>(i)], row.data());
         for (int j = 0; j <= n; ++j)
             fit.M(i, j) = row[static_cast<std::size_t>(j)];
     }

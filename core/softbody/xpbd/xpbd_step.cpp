@@ -109,16 +109,16 @@ void XpbdWorld::solveSubstep(double h, double fraction)
     // Velocity kept per substep: f per step (dt = 1) becomes f^h, so n substeps keep f.
     s.keep = Point(std::pow(p.damping.x, h), std::pow(p.damping.y, h));
 
-    integrate(s);              // 1. predict
-    solveBodies(s);            // 2. constraints, one pass, λ = 0 at the start
-    solveGrab(s);              //    the mouse's ropes
-    solveObstacleContacts();   // 3. contacts: obstacles (§5.2.1)
-    solveBodyContacts();       //    bodies against bodies (§5.2.2)
-    solveChains(s);            //    the legs and ropes, after what moves what they hang from
-    solveFrame(s);             //    the frame, last
-    updateVelocities(s);       // 4. velocities, with restitution
-    dampEdges(s);              //    what the edges' dashpots took
-    applyFriction(s);          //    contact friction, then the speed cap
+    integrate(s);            // 1. predict
+    solveBodies(s);          // 2. constraints, one pass, λ = 0 at the start
+    solveGrab(s);            //    the mouse's ropes
+    solveObstacleContacts(); // 3. contacts: obstacles (§5.2.1)
+    solveBodyContacts();     //    bodies against bodies (§5.2.2)
+    solveChains(s);          //    the legs and ropes, after what moves what they hang from
+    solveFrame(s);           //    the frame, last
+    updateVelocities(s);     // 4. velocities, with restitution
+    dampEdges(s);            //    what the edges' dashpots took
+    applyFriction(s);        //    contact friction, then the speed cap
 }
 
 // 1. Predict: the damping f^h and gravity on every velocity, the speed cap, x += v h.
@@ -275,10 +275,12 @@ void XpbdWorld::solveBodyContacts()
         const int i = cand.particle;
         const Body& b = m_bodies[at(cand.body)];
         BodyContact contact;
-        const bool kept = cand.touching && solvePointAgainstEdge(x, w, i, b.first + cand.edge, b.first + (cand.edge + 1) % b.count,
-                                                                 b.orientationSign, margin, &contact);
-        cand.touching = kept || (m_tightBoxes[at(cand.body)].contains(x[i]) &&
-                                 solvePointInBody(x, w, i, Point(), b.first, b.count, b.orientationSign, margin, &contact, &cand.edge));
+        const bool kept = cand.touching &&
+                          solvePointAgainstEdge(x, w, i, b.first + cand.edge, b.first + (cand.edge + 1) % b.count,
+                                                b.orientationSign, margin, &contact);
+        cand.touching = kept ||
+                        (m_tightBoxes[at(cand.body)].contains(x[i]) &&
+                         solvePointInBody(x, w, i, Point(), b.first, b.count, b.orientationSign, margin, &contact, &cand.edge));
         if (cand.touching) {
             contact.friction = p.contactFriction;
             m_bodyContacts.push_back(contact);
