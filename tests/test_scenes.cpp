@@ -104,8 +104,8 @@ private slots:
         auto s = loadScene(scene.toStdString());
         QVERIFY(s.ok());
         QStringList got;
-        for (const auto& c : s->components)
-            got << QString::fromStdString(c);
+        for (const SceneComponent c : s->components)
+            got << QString::fromStdString(std::string(sceneComponentName(c)));
         QCOMPARE(got, components);
     }
 
@@ -216,6 +216,30 @@ private slots:
         QVERIFY(!r.ok());
         QVERIFY(!r.error().message.empty());
         QCOMPARE(sceneToJson(*s).dump(), sceneToJson(before).dump()); // nothing changed
+    }
+
+    // Issue 35, part 2: a scene file's components are a closed set. A typo ("outline-bezer")
+    // used to be kept as a string that matched nothing, so the scene silently lost its Bézier
+    // outline; it is refused now, naming the unknown component. Every known name reads back.
+    void unknownComponentIsRefused()
+    {
+        Json doc = sceneToJson(*loadScene("bezier"));
+        Json components = Json::array();
+        components.push(Json(std::string("outline-bezer")));
+        doc.set("components", components);
+        auto s = parseScene(doc);
+        QVERIFY(!s.ok());
+        QVERIFY2(s.error().message.find("'outline-bezer'") != std::string::npos, s.error().message.c_str());
+        QCOMPARE(s.error().id, MessageId::SceneUnknownComponent);
+        for (const auto& entry : kSceneComponentNames) {
+            Json one = Json::array();
+            one.push(Json(std::string(entry.name)));
+            doc.set("components", one);
+            auto ok = parseScene(doc);
+            QVERIFY2(ok.ok(), std::string(entry.name).c_str());
+            QVERIFY(ok->has(entry.value));
+            QCOMPARE(static_cast<int>(ok->components.size()), 1);
+        }
     }
 
     void numbersBeyondTheLimitAreRefused()

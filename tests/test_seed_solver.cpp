@@ -447,7 +447,7 @@ private slots:
         // scene names `legs-in-frame`, and then never past the wall.
         SceneSpec scene = loadScene("frog").value();
         QVERIFY(applySetting(scene, "gravity=0.6,0.75").ok());
-        QVERIFY(!scene.has("legs-in-frame"));
+        QVERIFY(!scene.has(SceneComponent::LegsInFrame));
         const auto furthest = [](const SceneSpec& sc) {
             auto sim = Simulation::create(sc, SolverKind::Seed).value();
             double x = 0;
@@ -463,7 +463,7 @@ private slots:
             return x;
         };
         QVERIFY2(furthest(scene) > scene.params.width - 1 + 5, qPrintable(QString::number(furthest(scene))));
-        scene.components.push_back("legs-in-frame");
+        scene.components.push_back(SceneComponent::LegsInFrame);
         QCOMPARE(furthest(scene), scene.params.width - 1);
     }
 

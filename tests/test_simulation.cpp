@@ -86,7 +86,7 @@ private slots:
         QVERIFY(std::isfinite(r.areaErrorPercent) && std::isfinite(r.kineticEnergy) && std::isfinite(r.potentialEnergy));
         // Bodies where the scene has bodies, chains where it has legs: nothing else built.
         QCOMPARE(sim->bodyCount() > 0, sim->scene().model != SceneModel::Pendulum);
-        QCOMPARE(sim->chainCount() > 0, sim->scene().has("legs"));
+        QCOMPARE(sim->chainCount() > 0, sim->scene().has(SceneComponent::Legs));
     }
 
     void seedFrogReproducesTheReferenceTrace()

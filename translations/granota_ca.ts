@@ -5475,6 +5475,10 @@ Ja no és al disc.</translation>
             <source>Line %1: %2</source>
             <translation>Línia %1: %2</translation>
         </message>
+        <message>
+            <source>The scene names a component %1 that does not exist (the components are %2).</source>
+            <translation>L’escena anomena un component %1 que no existeix (els components són %2).</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::ShortcutsDialog</name>

@@ -5475,6 +5475,10 @@ It is no longer on disk.</translation>
             <source>Line %1: %2</source>
             <translation>Line %1: %2</translation>
         </message>
+        <message>
+            <source>The scene names a component %1 that does not exist (the components are %2).</source>
+            <translation>The scene names a component %1 that does not exist (the components are %2).</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::ShortcutsDialog</name>

@@ -44,7 +44,7 @@ Expected<SolverKind> solverFromArguments(const Arguments& args, const SceneSpec&
             return makeError(ErrorCode::InvalidInput, "--solver " + quotedForDisplay(*name) + " is not one of: seed, stable");
         return *kind;
     }
-    return scene.has("collisions") || scene.has("obstacles") ? SolverKind::Stable : SolverKind::Seed;
+    return scene.has(SceneComponent::Collisions) || scene.has(SceneComponent::Obstacles) ? SolverKind::Stable : SolverKind::Seed;
 }
 
 Expected<std::pair<SceneSpec, SolverKind>> sceneAndSolverFromArguments(const Arguments& args)

@@ -181,9 +181,10 @@ Expected<CommandOutput> run(const Arguments& args)
         << escapedForDisplay(scene.title, 200) << "), solver " << solverName(s.solver()) << ", " << *steps << " steps\n";
     Json components = Json::array();
     std::string componentText;
-    for (const auto& c : scene.components) {
-        components.push(c);
-        componentText += (componentText.empty() ? "" : ", ") + escapedForDisplay(c);
+    for (const SceneComponent c : scene.components) {
+        const std::string name(sceneComponentName(c));
+        components.push(name);
+        componentText += (componentText.empty() ? "" : ", ") + name;
     }
     txt << "components: " << (componentText.empty() ? "(none)" : componentText) << "\n";
     Json bodies = Json::array();

@@ -30,6 +30,7 @@ enum class MessageId {
     // A scene's parameters (core/softbody/scenes/scene.cpp, seed/stage_body.cpp). %1 is the
     // parameter's key, which the GUI shows as its panel label (scene_parameters.h).
     SceneUnknownParameter,  ///< %1 is no parameter of a scene
+    SceneUnknownComponent,  ///< %1 is no component of a scene (scene_component.h); %2 lists them
     ParameterNotWhole,      ///< %1 must be a whole number
     ParameterOutOfRange,    ///< %1 must be from %2 to %3
     ParameterNotANumber,    ///< %1 must be a number

@@ -11,10 +11,10 @@ namespace granota {
 /// the springs (§4.4), the area (§4.5).
 template <class Components> void setSharedComponents(Components& c, const SceneSpec& scene)
 {
-    c.gravity = scene.has("gravity");
-    c.bounds = scene.has("bounds");
-    c.springs = scene.has("springs");
-    c.area = scene.has("area");
+    c.gravity = scene.has(SceneComponent::Gravity);
+    c.bounds = scene.has(SceneComponent::Bounds);
+    c.springs = scene.has(SceneComponent::Springs);
+    c.area = scene.has(SceneComponent::Area);
 }
 
 /// §4.1–4.5 on the seed's explicit scheme (StageBody).

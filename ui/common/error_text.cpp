@@ -57,6 +57,9 @@ QString ErrorText::of(const Error& error)
     case MessageId::JsonPointsNotAList: text = tr("The JSON text is %1, not a list of points [[x,y],…].").arg(a(0)); break;
     case MessageId::JsonPointNotAPair: text = tr("JSON point %1 is %2, not a pair [x,y].").arg(a(0), a(1)); break;
     case MessageId::SceneUnknownParameter: text = tr("The scene has no parameter %1.").arg(a(0)); break;
+    case MessageId::SceneUnknownComponent:
+        text = tr("The scene names a component %1 that does not exist (the components are %2).").arg(a(0), a(1));
+        break;
     case MessageId::ParameterNotWhole: text = tr("“%1” must be a whole number.").arg(label(0)); break;
     case MessageId::ParameterOutOfRange: text = tr("“%1” must be from %2 to %3.").arg(label(0), a(1), a(2)); break;
     case MessageId::ParameterNotANumber: text = tr("“%1” must be a number.").arg(label(0)); break;

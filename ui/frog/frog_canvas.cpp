@@ -847,7 +847,7 @@ void FrogCanvas::refreshTexts()
         else if (m_pacer.speed() > 1)
             lines << tr("Fast, %1× real time: %n steps a frame", "", m_pacer.stepsPerFrame())
                          .arg(speedLabel(m_pacer.effectiveSpeed()));
-        if (scene.has("outline-bezier")) {
+        if (scene.has(SceneComponent::OutlineBezier)) {
             if (m_bezier == BezierOutline::Fit)
                 lines << tr("Least-squares Bézier fit, degree %1 through %2 points: %3 µs per frame")
                              .arg(m_fitter ? m_fitter->degree() : scene.bezierFitDegree)
@@ -1119,7 +1119,7 @@ void FrogCanvas::fillPath(const std::vector<Point>& points, bool close)
 void FrogCanvas::drawScene(QPainter& p, double pixel)
 {
     const SceneSpec& scene = sim()->scene();
-    if (scene.has("obstacles"))
+    if (scene.has(SceneComponent::Obstacles))
         drawObstacles(p);
     if (scene.model == SceneModel::Pendulum) {
         drawPendulum(p, pixel);
@@ -1137,7 +1137,7 @@ void FrogCanvas::drawScene(QPainter& p, double pixel)
         drawLeg(p, 0, pixel);
         drawLeg(p, 1, pixel);
     }
-    if (scene.model == SceneModel::Frog && scene.has("head") && sim()->bodyCount() > 0) {
+    if (scene.model == SceneModel::Frog && scene.has(SceneComponent::Head) && sim()->bodyCount() > 0) {
         sim()->bodyVertices(0, m_vertices);
         drawHead(p, 0);
     }
@@ -1221,7 +1221,7 @@ const std::vector<Point>& FrogCanvas::bodyOutline(int body)
     const SceneSpec& scene = sim()->scene();
     sim()->bodyVertices(body, m_vertices);
     const std::size_t n = m_vertices.size();
-    if (scene.has("outline-bezier") && m_bezier == BezierOutline::Fit && n >= 3) {
+    if (scene.has(SceneComponent::OutlineBezier) && m_bezier == BezierOutline::Fit && n >= 3) {
         // §4.9, the abandoned option: every frame, the least-squares Bézier curve through the
         // closed outline (M⁺ computed once per vertex count), then sampled by De Casteljau.
         const int degree = std::clamp(scene.bezierFitDegree, 1, static_cast<int>(n));
@@ -1234,7 +1234,7 @@ const std::vector<Point>& FrogCanvas::bodyOutline(int body)
         ++m_fits;
         return m_fitCurve;
     }
-    if (scene.has("outline-catmull-rom") && n >= 3) {
+    if (scene.has(SceneComponent::OutlineCatmullRom) && n >= 3) {
         // The seed's curveVertex outline (Annex II, Poligon.dibuixar) for §4.12 and the frog;
         // the future work of §5.2 draws the smooth closed curve of Def 2.10.
         const int samples = samplesPerSegment(n);
@@ -1254,7 +1254,7 @@ void FrogCanvas::drawBody(QPainter& p, int body, double)
     if (m_vertices.size() < 2)
         return;
     fillPath(outline, true);
-    if (scene.has("fill")) {
+    if (scene.has(SceneComponent::Fill)) {
         p.setBrush(m_art.skin(body));
         p.setPen(m_art.bodyPen());
     } else {
@@ -1262,7 +1262,7 @@ void FrogCanvas::drawBody(QPainter& p, int body, double)
         p.setPen(m_art.inkPen());
     }
     p.drawPath(m_path);
-    if (scene.has("head") && scene.model != SceneModel::Frog)
+    if (scene.has(SceneComponent::Head) && scene.model != SceneModel::Frog)
         drawHead(p, body);
 }
 
@@ -1473,7 +1473,7 @@ void FrogCanvas::mousePressEvent(QMouseEvent* event)
         emit timelineChanged();
     if (held && sim()->grabbing())
         setCursor(Qt::ClosedHandCursor);
-    else if (!held && sim()->scene().has("grab"))
+    else if (!held && sim()->scene().has(SceneComponent::Grab))
         emit statusMessage(tr("Press inside the body to grab it."));
     update();
 }
@@ -1491,7 +1491,7 @@ void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
     if (m_pressed || !m_run->playingBack()) // hovering over a run played back changes nothing
         send(InputKind::Move, m_mouse);
     reportMouseRadius();
-    if (!m_pressed && sim()->scene().has("grab")) {
+    if (!m_pressed && sim()->scene().has(SceneComponent::Grab)) {
         if (insideABody(m_mouse))
             setCursor(Qt::OpenHandCursor);
         else
@@ -1627,7 +1627,7 @@ bool FrogCanvas::keyboardGrab()
     m_keyboardHeld = m_pressed;
     if (branch)
         emit timelineChanged();
-    if (!m_pressed && sim()->scene().has("grab"))
+    if (!m_pressed && sim()->scene().has(SceneComponent::Grab))
         emit statusMessage(tr("Nothing to grab here: move the cursor inside the body with the arrows."));
     update();
     return m_pressed;

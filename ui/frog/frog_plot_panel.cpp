@@ -378,7 +378,7 @@ void FrogPlotPanel::drawPhase()
     }
     // §4.15: the first link's angle is limited from the vertical on both solvers; an orbit
     // that reaches a limit is cut off there.
-    if (m_scene && m_scene->has("angle-limits") && links > 0)
+    if (m_scene && m_scene->has(SceneComponent::AngleLimits) && links > 0)
         for (double limit : {m_scene->chainShoulderMin, m_scene->chainShoulderMax}) {
             auto* line = new QCPItemStraightLine(m_plot);
             line->point1->setCoords(limit, 0);
@@ -392,7 +392,7 @@ void FrogPlotPanel::drawPhase()
     const double px = 0.05 * x.size(), py = 0.05 * y.size();
     m_plot->xAxis->setRange(x.lower - px, x.upper + px);
     m_plot->yAxis->setRange(y.lower - py, y.upper + py);
-    m_note->setText(m_scene && m_scene->has("angle-limits")
+    m_note->setText(m_scene && m_scene->has(SceneComponent::AngleLimits)
                         ? tr("Phase plot of the last %1 s: each link's orbit. The dashed lines are the first link's "
                              "limits (§4.15): an orbit that reaches one is cut off.")
                               .arg(displayFixed(m_window, m_window < 10 ? 1 : 0))

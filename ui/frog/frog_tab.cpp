@@ -572,7 +572,7 @@ bool FrogTab::switchScene(const QString& name, QString* error)
     // solver, as in granota-cli; the solver box switches back to compare.
     spec->stable = knobsInForce(); // the solver's knobs stay with the solver
     SolverKind solver = m_solver;
-    const bool collisions = spec->has("collisions") || spec->has("obstacles");
+    const bool collisions = spec->has(SceneComponent::Collisions) || spec->has(SceneComponent::Obstacles);
     if (collisions)
         solver = SolverKind::Stable;
     if (!rebuild(*spec, solver, error))
@@ -674,7 +674,7 @@ void FrogTab::showScene()
     m_sceneCombo->setCurrentIndex(std::max(0, m_sceneCombo->findData(name)));
     m_solverCombo->setCurrentIndex(m_solver == SolverKind::Stable ? 1 : 0);
     m_params->setScene(m_scene);
-    m_bezierBox->setVisible(m_scene.has("outline-bezier"));
+    m_bezierBox->setVisible(m_scene.has(SceneComponent::OutlineBezier));
     retranslate();
     fitSidePanel();
 }
@@ -857,7 +857,7 @@ QString FrogTab::sceneHint() const
     if (m_scene.model == SceneModel::Stage) {
         if (m_scene.components.empty())
             return tr("Move the mouse up and down: the radius is r = |mouseY − h/2| (§4.1).");
-        if (m_scene.has("bounce"))
+        if (m_scene.has(SceneComponent::Bounce))
             return tr("Click to start the polygon again at the mouse (§4.3).");
         return tr("Reset (R) drops the polygon again.");
     }
@@ -1490,7 +1490,7 @@ void FrogTab::drawTikz(TikzWriter& w) const
         leg(2);
         leg(3);
     }
-    const bool filled = m_scene.has("fill");
+    const bool filled = m_scene.has(SceneComponent::Fill);
     for (int i = 0; i < sim->bodyCount(); ++i) {
         const std::vector<Point> outline = flipped(m_canvas->bodyOutline(i), H);
         if (filled)

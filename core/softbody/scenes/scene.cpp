@@ -355,7 +355,7 @@ Expected<void> validate(const SceneSpec& s)
                    MessageId::TooManyVertices, {numberArg(static_cast<double>(kMaxVertices))}, ErrorCode::OutOfRange);
     // §4.9: the body's points are sampled once from a Bézier curve of degree `sides`, a
     // cost of sides² × bezier_samples (10 000 sides and 2000 points froze the window 48 s).
-    if (s.has("outline-bezier") && s.bezierSamples >= 3 &&
+    if (s.has(SceneComponent::OutlineBezier) && s.bezierSamples >= 3 &&
         bezierBodyPointsWork(s.params.sides, s.bezierSamples) > kMaxBezierOutlineWork)
         return bad(s.name,
                    "a Bézier curve of degree " + std::to_string(s.params.sides) + " sampled at " +
@@ -402,7 +402,7 @@ Expected<void> validate(const SceneSpec& s)
 
 } // namespace
 
-bool SceneSpec::has(const std::string& component) const
+bool SceneSpec::has(SceneComponent component) const
 {
     return std::find(components.begin(), components.end(), component) != components.end();
 }
@@ -484,9 +484,21 @@ Expected<SceneSpec> parseScene(const Json& doc)
         s.order = *place;
     }
     if (const Json* c = doc.find("components"); c && c->asArray())
-        for (const Json& name : *c->asArray())
-            if (name.asString())
-                s.components.push_back(*name.asString());
+        for (const Json& name : *c->asArray()) {
+            // A name the code does not know would silently build nothing ("outline-bezer").
+            const std::optional<SceneComponent> component = name.asString() ? sceneComponentNamed(*name.asString())
+                                                                            : std::nullopt;
+            if (!component) {
+                const std::string shown = name.asString() ? quotedForDisplay(*name.asString()) : name.dump();
+                std::string known;
+                for (const auto& entry : kSceneComponentNames)
+                    known += (known.empty() ? "" : ", ") + std::string(entry.name);
+                return bad(s.name, "unknown component " + shown + " (the components are " + known + ")",
+                           MessageId::SceneUnknownComponent, {textArg(shown), textArg(known)});
+            }
+            if (!s.has(*component))
+                s.components.push_back(*component);
+        }
     const Json* params = doc.find("params");
     if (!params || !params->isObject())
         return bad(s.name, "a scene needs a \"params\" object");
@@ -679,8 +691,8 @@ Json sceneToJson(const SceneSpec& s)
         }
     }
     Json components = Json::array();
-    for (const auto& c : s.components)
-        components.push(c);
+    for (const SceneComponent c : s.components)
+        components.push(std::string(sceneComponentName(c)));
     const char* model = s.model == SceneModel::Stage      ? "stage"
                         : s.model == SceneModel::Body     ? "body"
                         : s.model == SceneModel::Pendulum ? "pendulum"

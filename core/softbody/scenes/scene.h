@@ -9,6 +9,7 @@
 #include "core/softbody/scenes/frog_params.h"
 #include "core/softbody/scenes/stable_settings.h"
 #include "core/softbody/scenes/grab_mode.h"
+#include "core/softbody/scenes/scene_component.h"
 #include "core/io/json.h"
 
 #include <algorithm>
@@ -42,9 +43,9 @@ struct SceneSpec {
     std::string title;       ///< English title (the GUI translates it)
     std::string description; ///< one sentence
     SceneModel model = SceneModel::Body;
-    int order = 0; ///< position in the thesis's order
-    std::vector<std::string> components;
-    std::vector<std::string> paramKeys; ///< the parameters this scene has, in file order
+    int order = 0;                          ///< position in the thesis's order
+    std::vector<SceneComponent> components; ///< in file order
+    std::vector<std::string> paramKeys;     ///< the parameters this scene has, in file order
 
     FrogParams params;
     GrabMode grab = GrabMode::Anchors;
@@ -72,7 +73,7 @@ struct SceneSpec {
     /// ignores them). `--set substeps=16` and `--set edge_compliance=0.01` set them.
     StableSettings stable;
 
-    bool has(const std::string& component) const;
+    bool has(SceneComponent component) const;
     bool hasParam(const std::string& key) const;
 };
 

@@ -83,7 +83,7 @@ std::optional<std::vector<Point>> customRestShape(const SceneSpec& s, std::size_
 {
     if (!s.shapes.empty())
         return s.shapes[i].points;
-    if (s.has("outline-bezier") && s.bezierSamples >= 3) // §4.9: the precomputed points
+    if (s.has(SceneComponent::OutlineBezier) && s.bezierSamples >= 3) // §4.9: the precomputed points
         return bezierBodyPoints(regularPolygon(Point(0, 0), s.params.radius, s.params.sides), s.bezierSamples);
     return std::nullopt;
 }

@@ -22,10 +22,10 @@ SeedComponents componentsOf(const SceneSpec& s)
 {
     SeedComponents c;
     setSharedComponents(c, s);
-    c.legs = s.has("legs");
-    c.grab = s.has("grab");
-    c.angleLimits = s.has("angle-limits");
-    c.clampLegs = s.has("legs-in-frame"); // Annex II keeps only the wrists above the floor
+    c.legs = s.has(SceneComponent::Legs);
+    c.grab = s.has(SceneComponent::Grab);
+    c.angleLimits = s.has(SceneComponent::AngleLimits);
+    c.clampLegs = s.has(SceneComponent::LegsInFrame); // Annex II keeps only the wrists above the floor
     c.grabMode = s.grab;
     return c;
 }
@@ -148,7 +148,7 @@ public:
         if (m_held)
             return;
         if (m_frog ? m_frog->respawn(p) : m_bodies.front().respawn(p)) {
-            m_held = scene().has("grab");
+            m_held = scene().has(SceneComponent::Grab);
             m_heldBody = 0;
         }
     }
@@ -202,9 +202,9 @@ public:
             r.kineticEnergy += 0.5 * dot(v, v);
         }
         const FrogParams& p = scene().params;
-        if (scene().has("gravity"))
+        if (scene().has(SceneComponent::Gravity))
             r.potentialEnergy = potentialEnergy(x, p.gravity, p.width, p.height);
-        if (scene().has("bounds"))
+        if (scene().has(SceneComponent::Bounds))
             r.contacts = pointsOnFrameEdge(x, p.width, p.height);
         return r;
     }
@@ -247,7 +247,7 @@ public:
         const SceneSpec& s = scene();
         if (s.chain.empty())
             return makeError(ErrorCode::InvalidInput, "scene '" + s.name + "' needs a chain of link lengths");
-        if (!s.has("gravity")) { // §4.14: kinematic
+        if (!s.has(SceneComponent::Gravity)) { // §4.14: kinematic
             m_chain = std::make_unique<FollowChain>(m_clau, s.chain);
             return {};
         }
@@ -314,7 +314,7 @@ public:
             joints.erase(joints.begin()); // the clau does not fall
             r.potentialEnergy = potentialEnergy(joints, scene().params.gravity, scene().params.width, scene().params.height);
         }
-        if (scene().has("bounds"))
+        if (scene().has(SceneComponent::Bounds))
             r.contacts = pointsOnFrameEdge(joints, scene().params.width, scene().params.height);
         return r;
     }

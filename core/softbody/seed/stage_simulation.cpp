@@ -19,12 +19,15 @@ public:
     int bodyCount() const override { return 1; }
     void bodyVertices(int, std::vector<Point>& out) const override { out = m_body.vertices(); }
     double bodyArea(int) const override { return polygonArea(m_body.vertices()); }
-    double bodyTargetArea(int) const override { return scene().has("area") ? scene().params.targetArea : restArea(); }
+    double bodyTargetArea(int) const override
+    {
+        return scene().has(SceneComponent::Area) ? scene().params.targetArea : restArea();
+    }
 
     // §4.1: the radius follows the mouse; §4.3 on: a click respawns at the mouse.
     bool press(Point p) override
     {
-        if (scene().has("bounce")) {
+        if (scene().has(SceneComponent::Bounce)) {
             m_body.respawn(p);
             return true;
         }
@@ -47,15 +50,16 @@ public:
         const double target = bodyTargetArea(0);
         if (target > 0)
             r.areaErrorPercent = 100 * (polygonArea(x) - target) / target;
-        const double rest = scene().has("springs") ? scene().params.springLength : 2 * m_body.radius() * std::sin(kPi / x.size());
+        const double rest = scene().has(SceneComponent::Springs) ? scene().params.springLength
+                                                                 : 2 * m_body.radius() * std::sin(kPi / x.size());
         for (std::size_t i = 0; i < x.size(); ++i)
             if (rest > 0)
                 r.maxStretch = std::max(r.maxStretch, std::abs(distance(x[i], x[(i + 1) % x.size()]) / rest - 1));
         for (const Point& v : m_body.velocities())
             r.kineticEnergy += 0.5 * dot(v, v);
-        if (scene().has("gravity"))
+        if (scene().has(SceneComponent::Gravity))
             r.potentialEnergy = potentialEnergy(x, scene().params.gravity, scene().params.width, scene().params.height);
-        if (scene().has("bounds"))
+        if (scene().has(SceneComponent::Bounds))
             r.contacts = pointsOnFrameEdge(x, scene().params.width, scene().params.height);
         return r;
     }
@@ -80,7 +84,7 @@ Expected<std::unique_ptr<Simulation>> makeStageSimulation(const SceneSpec& scene
 {
     StageComponents c;
     setSharedComponents(c, scene);
-    c.bounce = scene.has("bounce");
+    c.bounce = scene.has(SceneComponent::Bounce);
     FrogParams params = scene.params;
     if (!scene.hasParam("v0"))
         params.v0 = Point(0, 0); // §4.1's polygon does not move

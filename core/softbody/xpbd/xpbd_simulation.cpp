@@ -21,21 +21,21 @@ constexpr double kNoConstraint = 1e12; // compliance of a constraint a scene doe
 XpbdParams paramsOf(const SceneSpec& s)
 {
     XpbdParams p;
-    p.gravity = s.has("gravity") ? s.params.gravity : Point(0, 0);
-    p.damping = s.hasParam("friction") && !s.has("bounce") ? s.params.friction : Point(1, 1);
+    p.gravity = s.has(SceneComponent::Gravity) ? s.params.gravity : Point(0, 0);
+    p.damping = s.hasParam("friction") && !s.has(SceneComponent::Bounce) ? s.params.friction : Point(1, 1);
     // f > 1 would add energy every step (the seed lets it, its velmax clamp bounds it); the
     // constraint solver keeps at most all of the velocity.
     p.damping = Point(std::clamp(p.damping.x, 0.0, 1.0), std::clamp(p.damping.y, 0.0, 1.0));
     // The friction f of §4.3 is the share of speed kept at a bounce: a restitution.
-    p.restitution = s.has("bounce") ? std::clamp(0.5 * (s.params.friction.x + s.params.friction.y), 0.0, 1.0) : 0.0;
+    p.restitution = s.has(SceneComponent::Bounce) ? std::clamp(0.5 * (s.params.friction.x + s.params.friction.y), 0.0, 1.0) : 0.0;
     p.width = s.params.width;
     p.height = s.params.height;
     if (s.hasParam("velmax"))
         p.velmax = std::max(s.params.velmax, 1e-9);
     p.substeps = s.stable.substeps;
-    p.edgeCompliance = s.has("springs") ? s.stable.edgeCompliance : kNoConstraint;
-    p.edgeDampingRatio = s.has("springs") ? s.stable.edgeDampingRatio : 0.0;
-    if (!s.has("area"))
+    p.edgeCompliance = s.has(SceneComponent::Springs) ? s.stable.edgeCompliance : kNoConstraint;
+    p.edgeDampingRatio = s.has(SceneComponent::Springs) ? s.stable.edgeDampingRatio : 0.0;
+    if (!s.has(SceneComponent::Area))
         p.areaCompliance = kNoConstraint;
     p.grabMode = s.grab;
     return p;
@@ -48,7 +48,7 @@ std::vector<Point> shapeAt(const SceneSpec& s, std::size_t i, Point centre)
         // A body of radius 0 has no rest shape to keep; the stable solver needs one, so it
         // takes the regular polygon of the target area (or of 1 px² when that is 0 too).
         const double n = std::max<std::size_t>(3, shape.size());
-        const double area = std::max(1.0, s.has("area") ? s.params.targetArea : 1.0);
+        const double area = std::max(1.0, s.has(SceneComponent::Area) ? s.params.targetArea : 1.0);
         shape = regularPolygon(Point(0, 0), std::sqrt(2 * area / (n * std::sin(2 * kPi / n))), static_cast<int>(n));
     }
     for (Point& p : shape)
@@ -74,7 +74,7 @@ public:
             chain.joints.push_back(s.params.center);
             for (double l : s.chain) // hanging straight down; a zero link is nudged to 1e-6 px
                 chain.joints.emplace_back(s.params.center.x, chain.joints.back().y + std::max(l, 1e-6));
-            if (s.has("angle-limits")) {
+            if (s.has(SceneComponent::AngleLimits)) {
                 chain.limits.push_back(AngleLimit{s.chainShoulderMin, s.chainShoulderMax, AngleReference::World});
                 for (std::size_t k = 1; k < s.chain.size(); ++k)
                     chain.limits.push_back(AngleLimit{s.chainElbowMin, s.chainElbowMax, AngleReference::Parent});
@@ -86,24 +86,24 @@ public:
         }
         const auto starts = bodyStarts(s);
         BodyOptions options;
-        options.bending = !s.shapes.empty() && s.has("angle-limits");
-        options.collides = s.has("collisions");
+        options.bending = !s.shapes.empty() && s.has(SceneComponent::AngleLimits);
+        options.collides = s.has(SceneComponent::Collisions);
         for (std::size_t i = 0; i < starts.size(); ++i) {
             const auto shape = shapeAt(s, i, starts[i]);
             // Without the area component the rest shape keeps its own area.
-            const double target = s.has("area") ? s.params.targetArea : polygonArea(shape);
+            const double target = s.has(SceneComponent::Area) ? s.params.targetArea : polygonArea(shape);
             auto b = m_world.addBody(shape, target, s.hasParam("v0") ? s.params.v0 : Point(0, 0), options);
             if (!b)
                 return b.error();
         }
-        if (s.model == SceneModel::Frog && s.has("legs"))
+        if (s.model == SceneModel::Frog && s.has(SceneComponent::Legs))
             for (int leg = 0; leg < 4; ++leg) {
                 const ChainAnchor anchor = frogLegAnchor(0, leg, s.params.sides);
                 auto c = addChain(frogLegChain(s.params.legs[std::size_t(leg)], anchor, m_world.anchorPoint(anchor)));
                 if (!c)
                     return c.error();
             }
-        if (s.has("obstacles"))
+        if (s.has(SceneComponent::Obstacles))
             for (const auto& o : s.obstacles) {
                 auto ok = o.closed ? m_world.addPolygonObstacle(o.points) : m_world.addSegmentObstacle(o.points[0], o.points[1]);
                 if (!ok)
@@ -117,7 +117,7 @@ public:
     {
         XpbdParams p = m_world.params();
         p.substeps = s.substeps;
-        if (scene().has("springs")) { // without springs the edges stay unconstrained (paramsOf)
+        if (scene().has(SceneComponent::Springs)) { // without springs the edges stay unconstrained (paramsOf)
             p.edgeCompliance = s.edgeCompliance;
             p.edgeDampingRatio = s.edgeDampingRatio;
         }
@@ -128,7 +128,7 @@ public:
     int bodyCount() const override { return m_world.bodyCount(); }
     std::optional<EdgeSpring> edgeSpring(int i) const override
     {
-        if (!scene().has("springs") || i < 0 || i >= bodyCount() || m_world.bodyRange(i).count < 2)
+        if (!scene().has(SceneComponent::Springs) || i < 0 || i >= bodyCount() || m_world.bodyRange(i).count < 2)
             return std::nullopt;
         const XpbdWorld::EdgeRest e = m_world.edgeRest(i, 0);
         return EdgeSpring{e.length, e.vertexMass};
@@ -147,11 +147,11 @@ public:
             move(p);
             return true;
         }
-        if (scene().has("bounce") && !scene().has("grab")) { // §4.3: a click respawns
+        if (scene().has(SceneComponent::Bounce) && !scene().has(SceneComponent::Grab)) { // §4.3: a click respawns
             respawnAt(p);
             return true;
         }
-        return scene().has("grab") && m_world.press(p);
+        return scene().has(SceneComponent::Grab) && m_world.press(p);
     }
     void move(Point p) override
     {
@@ -177,7 +177,7 @@ public:
         if (m_world.grabbedBody() >= 0 || bodyCount() == 0)
             return;
         respawnAt(p);
-        if (scene().has("grab") && scene().grab == GrabMode::Anchors) {
+        if (scene().has(SceneComponent::Grab) && scene().grab == GrabMode::Anchors) {
             // Annex II keeps vertex 0 10 px above the mouse and the body hanging below it
             // (seed_body_step.inc): spawn it there, so that the short ropes hold it hanging,
             // not balanced upside down on ropes as long as its height.
@@ -186,7 +186,7 @@ public:
             if (below > 0 && y + below <= scene().params.height - 1)
                 respawnAt(Point(p.x, y + below));
         }
-        if (scene().has("grab")) {
+        if (scene().has(SceneComponent::Grab)) {
             m_world.press(p);
             m_spawned = true;
         }
