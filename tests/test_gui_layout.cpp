@@ -9,6 +9,7 @@
 // canvas has the window's width; opened, the drawer shows everything whole too.
 #include "main_window_steps.h"
 #include "ui/common/curve_canvas.h"
+#include "ui/common/plot_tick_room.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/shell/language.h"
 #include "ui/shell/main_window.h"
@@ -221,6 +222,29 @@ void checkPlot(QCustomPlot* plot, QStringList& problems)
             }
             if (axis->label().isEmpty() && !axis->tickLabels())
                 continue;
+            // Each tick label is centred on its tick along the axis: the outermost ones must
+            // not reach past the plot's edges ("−0,5" at the left end read "0,5").
+            if (axis->tickLabels()) {
+                const QVector<double> ticks = axis->tickVector();
+                const QVector<QString> labels = axis->tickVectorLabels();
+                const int extent = horizontal ? plot->width() : plot->height();
+                for (int i = 0; i < ticks.size() && i < labels.size(); ++i) {
+                    if (!axis->range().contains(ticks[i]) || labels[i].isEmpty())
+                        continue;
+                    const double at = axis->coordToPixel(ticks[i]);
+                    const QRect box = tickMetrics.boundingRect(labels[i]);
+                    const double half = 0.5 * (horizontal ? box.width() : box.height());
+                    if (at - half < 0 || at + half > extent)
+                        problems << QStringLiteral(
+                                        "tick label \"%1\" of axis %2 reaches past the plot's edge (%3 ± %4 in %5): %6")
+                                        .arg(labels[i])
+                                        .arg(int(axis->axisType()))
+                                        .arg(at)
+                                        .arg(half)
+                                        .arg(extent)
+                                        .arg(describe(plot));
+                }
+            }
             if (std::min(margin, room) < needed)
                 problems << QStringLiteral("axis %1 \"%2\" needs %3 px beside the plot area, has %4: %5")
                                 .arg(int(axis->axisType()))
@@ -332,6 +356,67 @@ private slots:
                                 .arg(window.height())
                                 .arg(available.width())
                                 .arg(available.height())));
+    }
+
+    // Issue 34, item 8: "−0,5" read "0,5" at the left edge. The canvas's grid labels: a label
+    // starts 3 px right of its line, so the line just off the left edge had its label cut there,
+    // minus sign first. Every label drawn lies wholly inside the canvas, and names its own line.
+    void gridLabelsAreWholeAndTheirLines()
+    {
+        granota::ui::CurveCanvas canvas;
+        canvas.resize(400, 300);
+        canvas.show();
+        QVERIFY(waitExposed(&canvas));
+        int labelled = 0;
+        // The view's left edge slides across the grid lines near x = −0.5, a pixel at a time.
+        for (int shift = 0; shift < 60; ++shift) {
+            canvas.setContentBounds(QRectF(-0.45 + shift * 0.002, -1, 2, 2));
+            canvas.fitToContent();
+            const auto& view = canvas.view();
+            for (const auto& label : canvas.gridLabels()) {
+                QVERIFY2(view.viewport().contains(label.box), qPrintable(QStringLiteral("\"%1\" at %2 in a canvas from %3")
+                                                                             .arg(label.text)
+                                                                             .arg(label.box.left())
+                                                                             .arg(view.viewport().left())));
+                // An x label's line is 3 px left of its start, a y label's 3 px below its baseline
+                // (curve_canvas.cpp), at the value it names.
+                const double value = label.text.toDouble();
+                const bool xLine = std::fabs(view.toModel(label.baseline - QPointF(3, 0)).x - value) < 1e-6;
+                const bool yLine = std::fabs(view.toModel(label.baseline + QPointF(0, 3)).y - value) < 1e-6;
+                QVERIFY2(xLine || yLine, qPrintable(label.text));
+                labelled += xLine && value < 0;
+            }
+        }
+        QVERIFY(labelled > 0); // negative x labels were there to check
+    }
+
+    // Issue 34, item 8, for the plots: a QCustomPlot centres a tick label on its tick, so the
+    // label of a tick at the left end of the x axis reaches half its width into the left margin.
+    // keepTickLabelsInside (every plot of the application has it) widens the margin to hold it.
+    void plotTickLabelsStayInsideThePlot()
+    {
+        for (const bool kept : {false, true}) {
+            QCustomPlot plot;
+            if (kept)
+                granota::ui::keepTickLabelsInside(&plot);
+            plot.resize(300, 200);
+            QFont large; // presentation mode's size, and a y axis whose labels take no room
+            large.setPointSizeF(large.pointSizeF() * 1.6);
+            plot.xAxis->setTickLabelFont(large);
+            plot.yAxis->setTickLabels(false);
+            plot.xAxis->setRange(-0.25, 1);
+            plot.yAxis->setRange(0, 1);
+            plot.replot();
+            plot.replot(); // the margins of the first layout are the estimate of the second
+            const QFontMetrics metrics(large);
+            const QVector<double> ticks = plot.xAxis->tickVector();
+            const QVector<QString> labels = plot.xAxis->tickVectorLabels();
+            QVERIFY(!ticks.isEmpty() && ticks.first() == -0.25);
+            QCOMPARE(labels.first(), QStringLiteral("-0.25"));
+            const double left = plot.xAxis->coordToPixel(ticks.first()) - metrics.boundingRect(labels.first()).width() / 2.0;
+            // Unkept, QCustomPlot's margin (15 px) cuts the label: the case the helper is for.
+            QVERIFY2((left >= 0) == kept, qPrintable(QStringLiteral("kept %1: the label starts at %2").arg(kept).arg(left)));
+        }
     }
 
     void everyTabFits_data()

@@ -11,6 +11,7 @@
 #include "ui/decasteljau/decasteljau_parameter_control.h"
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/common/exact_panel.h"
+#include "ui/common/plot_tick_room.h"
 #include "ui/common/point_editor.h"
 #include "ui/common/presentation_scale.h"
 #include "ui/common/value_command.h"
@@ -96,6 +97,8 @@ BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
 
     // The basis plot: B_i^n on [0, 1], the current t as a vertical line, a hover readout.
     m_basisPlot->setMinimumHeight(200);
+    keepTickLabelsInside(m_basisPlot);
+    keepTickLabelsInside(m_weightsPlot);
     m_basisPlot->xAxis->setRange(0, 1);
     m_basisPlot->yAxis->setRange(-0.02, 1.05);
     m_basisPlot->xAxis->setLabel(QStringLiteral("t"));

@@ -1,4 +1,5 @@
 #include "ui/catmull_rom/catmull_rom_tab.h"
+#include "ui/common/plot_tick_room.h"
 #include "ui/common/number_text.h"
 
 #include "core/base/number_format.h"
@@ -293,6 +294,7 @@ void CatmullRomTab::buildUi()
     m_allTausCheck = new QCheckBox(plotBox);
     m_plot = new QCustomPlot(plotBox);
     m_plot->setMinimumHeight(120);
+    keepTickLabelsInside(m_plot);
     m_plot->legend->setVisible(true);
     m_plot->legend->setBrush(QColor(255, 255, 255, 190));
     m_plot->legend->setFillOrder(QCPLayoutGrid::foRowsFirst);

@@ -19,6 +19,7 @@
 #include "ui/fit/fit_exact_view.h"
 #include "ui/common/point_editor.h"
 #include "ui/common/point_extent.h"
+#include "ui/common/plot_tick_room.h"
 #include "ui/common/point_table.h"
 #include "ui/common/plot_title_room.h"
 #include "ui/common/presentation_scale.h"
@@ -323,6 +324,7 @@ void FitTab::buildUi()
     // The error against the degree.
     m_plot = new QCustomPlot(this);
     m_plot->setMinimumHeight(120);
+    keepTickLabelsInside(m_plot);
     setUpFitErrorPlot(m_plot); // Σ‖Q_i − α(t_i)‖² for n = 1..min(k, kMaxFitDegree)
     m_plotText = new QCPItemText(m_plot);
     m_plotText->position->setType(QCPItemPosition::ptAxisRectRatio);
