@@ -753,6 +753,47 @@ private slots:
                  qPrintable(tab.plotNote()));
     }
 
+    // Issue 34, item 11: with the normal equations the fits of high degree fail. The plot leaves
+    // those degrees blank (no line drawn over them), and its axis ends at the degree its note
+    // names: the note and the plot tell the same story.
+    void errorPlotLeavesFailedDegreesBlank()
+    {
+        FitTab tab;
+        tab.pointEditor()->setPoints(smoothSamples(200), QStringLiteral("samples"));
+        tab.solverBox()->setCurrentIndex(tab.solverBox()->findData(static_cast<int>(LeastSquaresSolver::Normal)));
+        QVERIFY(tab.settings().solver == LeastSquaresSolver::Normal);
+        const QString note = tab.plotNote();
+        const QRegularExpressionMatch m = QRegularExpression(QStringLiteral("n = (\\d+) of")).match(note);
+        QVERIFY2(m.hasMatch(), qPrintable(note));
+        const int named = m.captured(1).toInt();
+        // Independently: the core's errors for every degree up to the one the note names.
+        FitOptions options;
+        options.parametrization = tab.settings().parametrization;
+        options.solver = LeastSquaresSolver::Normal;
+        const std::vector<DegreeError> errors = fitErrorByDegree(tab.pointEditor()->points(), options, named);
+        QCOMPARE(static_cast<int>(errors.size()), named);
+        int failed = 0, lastOk = 0;
+        for (const DegreeError& e : errors) {
+            failed += e.ok ? 0 : 1;
+            lastOk = e.ok ? e.degree : lastOk;
+        }
+        QVERIFY2(failed > 0 && lastOk < named, "the scenario must have failed fits at the end");
+        // The axis ends at the degree named, not at the last one that succeeded.
+        QCOMPARE(tab.errorPlot()->xAxis->range().upper, named + 0.5);
+        // A NaN (a gap) at each failed degree, a value at each other one.
+        QCPGraph* graph = tab.errorPlot()->graph(0);
+        QCOMPARE(graph->dataCount(), named);
+        for (const DegreeError& e : errors) {
+            const double value = graph->data()->at(e.degree - 1)->value;
+            QCOMPARE(graph->data()->at(e.degree - 1)->key, double(e.degree));
+            QVERIFY2(std::isnan(value) == !e.ok, qPrintable(QString::number(e.degree)));
+        }
+        // The note says how many degrees are blank.
+        // (English plurals come from granota_en.qm, which the tests need not load: "degree(s)" or "degrees".)
+        QVERIFY2(note.contains(QRegularExpression(QStringLiteral("\\b%1 degree(s|\\(s\\)) left blank").arg(failed))),
+                 qPrintable(note));
+    }
+
     // "Show matrices" with more points than are listed shows the top of M and says how large M is.
     void showMatricesWithManyPointsSaysWhatItShows()
     {

@@ -904,15 +904,18 @@ void FitTab::updatePlot()
     m_plotLastDegree = plotted;
     in.allParametrizations = m_display.errorPlotAllParametrizations;
     in.names = {tr("uniform"), tr("chord length"), tr("centripetal"), tr("Annex III")};
-    const int reached = fillFitErrorPlot(m_plot, in);
-    // Where the plot stops short of the highest degree allowed, it says why, on the plot.
-    m_plotNote.clear();
-    if (reached > 0 && reached < highest)
-        m_plotNote =
-            tr("Plotted up to n = %1 of %2:\nrefitting every degree for %3 points\non each change would slow the window.")
-                .arg(reached)
-                .arg(highest)
-                .arg(q.size());
+    const FitErrorPlotRange shown = fillFitErrorPlot(m_plot, in);
+    // Where the plot stops short of the highest degree allowed, it says why, on the plot; the
+    // degree it names is the one where the plot's axis ends (shown.lastDegree, failed or not).
+    QStringList note;
+    if (shown.lastDegree > 0 && shown.lastDegree < highest)
+        note << tr("Plotted up to n = %1 of %2:\nrefitting every degree for %3 points\non each change would slow the window.")
+                    .arg(shown.lastDegree)
+                    .arg(highest)
+                    .arg(q.size());
+    if (shown.failedDegrees > 0)
+        note << tr("%n degree(s) left blank: the fit failed there.\nChoose QR or SVD.", nullptr, shown.failedDegrees);
+    m_plotNote = note.join(QLatin1Char('\n'));
     m_plotText->setText(m_plotNote);
     m_plotText->setVisible(!m_plotNote.isEmpty());
     m_plot->replot(QCustomPlot::rpQueuedReplot); // not now: a synchronous repaint would flush the canvas too
