@@ -1,4 +1,5 @@
 #include "ui/catmull_rom/catmull_rom_tab.h"
+#include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/plot_tick_room.h"
 #include "ui/common/number_text.h"
 
@@ -45,6 +46,7 @@ namespace granota::ui {
 namespace {
 
 constexpr int kSliderSteps = 20;               ///< slider units per unit of τ: steps of 0.05
+constexpr int kTauListRows = 4;                ///< rows of the τ list, whatever their number (Ex 2.12 has 4 τ)
 constexpr int kSliderMergeIdBase = 0x43520000; ///< "CR": the merge ids of the τ slider's moves
 constexpr int kPlotSamples = 101;              ///< t = 0, 0.01, …, 1 (the Matlab linspace(0,1))
 const QColor kBezierColor(0x6a, 0x3d, 0x9a);
@@ -494,7 +496,7 @@ void CatmullRomTab::syncControls()
         QListWidgetItem* item = m_tauList->item(i);
         item->setText(tensionItemText(m_settings.taus[static_cast<std::size_t>(i)]));
         QPixmap swatch(14, 14);
-        swatch.fill(CanvasStyle::series(i));
+        swatch.fill(tensionColour(m_settings.taus[static_cast<std::size_t>(i)]));
         item->setIcon(QIcon(swatch));
     }
     m_tauList->setCurrentRow(m_settings.selectedTau);
@@ -525,8 +527,11 @@ void CatmullRomTab::syncControls()
     m_allTausCheck->setEnabled(!m_settings.curvaturePlot); // the blending functions only
     m_curvatureCheck->setChecked(m_settings.curvaturePlot);
     updatePlotTexts();
-    const int rows = std::clamp(count, 2, 6);
-    m_tauList->setFixedHeight(rows * (m_tauList->fontMetrics().height() + 6) + 6);
+    // The same height whatever the number of τ (it scrolls past kTauListRows), and room for two
+    // lines of the slider's label whatever τ it names: adding a τ never moves the check boxes
+    // below under the pointer.
+    m_tauList->setFixedHeight(kTauListRows * (m_tauList->fontMetrics().height() + 6) + 6);
+    m_sliderLabel->setMinimumHeight(2 * m_sliderLabel->fontMetrics().lineSpacing());
     m_syncing = false;
 }
 
@@ -843,11 +848,11 @@ void CatmullRomTab::updateCurvaturePlot(double scale)
     const double width = 2.0 * scale;
     for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
         const bool selected = static_cast<int>(i) == m_settings.selectedTau;
-        addProfile(m_scene.curves[i].curvature, QPen(CanvasStyle::series(static_cast<int>(i)), selected ? 1.5 * width : width),
+        addProfile(m_scene.curves[i].curvature, QPen(tensionColour(m_scene.curves[i].tau), selected ? 1.5 * width : width),
                    QStringLiteral("τ = %1").arg(tauString(m_scene.curves[i].tau)));
     }
     for (std::size_t i = 0; i < m_scene.otherEnds.size(); ++i)
-        addProfile(m_scene.otherEnds[i].curvature, QPen(CanvasStyle::series(static_cast<int>(i)), 0.75 * width, Qt::DashLine),
+        addProfile(m_scene.otherEnds[i].curvature, QPen(tensionColour(m_scene.otherEnds[i].tau), 0.75 * width, Qt::DashLine),
                    tr("τ = %1, %2 ends")
                        .arg(tauString(m_scene.otherEnds[i].tau), CatmullRomReport::endsName(m_scene.otherEnds[i].ends)));
     addProfile(m_scene.bezierCurvature, QPen(kBezierColor, width, Qt::DashDotLine), tr("Bézier"));
@@ -949,12 +954,12 @@ void CatmullRomTab::drawCurves(QPainter& p, const ViewTransform& view, const Can
     if (!m_settings.catmullRom)
         return;
     for (std::size_t i = 0; i < m_scene.otherEnds.size(); ++i) {
-        p.setPen(QPen(CanvasStyle::series(static_cast<int>(i)), style.lineWidth() * 0.75, Qt::DashLine));
+        p.setPen(QPen(tensionColour(m_scene.otherEnds[i].tau), style.lineWidth() * 0.75, Qt::DashLine));
         drawBezierSegments(p, view, m_scene.otherEnds[i].bezier);
     }
     for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
         const bool selected = static_cast<int>(i) == m_settings.selectedTau;
-        p.setPen(QPen(CanvasStyle::series(static_cast<int>(i)), style.lineWidth() * (selected ? 1.5 : 1.0), Qt::SolidLine,
+        p.setPen(QPen(tensionColour(m_scene.curves[i].tau), style.lineWidth() * (selected ? 1.5 : 1.0), Qt::SolidLine,
                       Qt::RoundCap, Qt::RoundJoin));
         drawBezierSegments(p, view, m_scene.curves[i].bezier);
     }
@@ -971,7 +976,7 @@ CanvasLegend CatmullRomTab::legend() const
     legend.alertColor = kErrorColor;
     for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.curves.size(); ++i) {
         const auto& c = m_scene.curves[i];
-        legend.entries.push_back({CanvasStyle::series(static_cast<int>(i)), c.error.isEmpty() ? Qt::SolidLine : Qt::NoPen,
+        legend.entries.push_back({tensionColour(c.tau), c.error.isEmpty() ? Qt::SolidLine : Qt::NoPen,
                                   QStringLiteral("τ = %1").arg(tauString(c.tau))});
     }
     if (m_settings.catmullRom && !m_scene.otherEnds.empty())
@@ -1156,10 +1161,10 @@ void CatmullRomTab::drawTikz(TikzWriter& w) const
     if (!m_scene.splineBezier.empty())
         w.bezierSegments(m_scene.splineBezier, kSplineColor, 1.0);
     for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.otherEnds.size(); ++i)
-        w.bezierSegments(m_scene.otherEnds[i].bezier, CanvasStyle::series(static_cast<int>(i)), 0.8, true);
+        w.bezierSegments(m_scene.otherEnds[i].bezier, tensionColour(m_scene.otherEnds[i].tau), 0.8, true);
     for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.curves.size(); ++i) {
         w.comment(QStringLiteral("tau = %1").arg(tauString(m_scene.curves[i].tau)));
-        w.bezierSegments(m_scene.curves[i].bezier, CanvasStyle::series(static_cast<int>(i)), 1.2);
+        w.bezierSegments(m_scene.curves[i].bezier, tensionColour(m_scene.curves[i].tau), 1.2);
     }
     for (std::size_t i = 0; m_settings.controlPoints && i < points.size(); ++i)
         w.point(points[i], CanvasStyle().handle, QStringLiteral("q_{%1}").arg(i));
