@@ -111,6 +111,11 @@ public:
     QSize minimumSizeHint() const override { return sizeHint(); }
 };
 
+/// The view takes in the fitted control points when they lie within this many times the
+/// data's size of the data's box (Ex 2.8's P2 lies 1.3 sizes beyond it), so that the data keep
+/// at least a seventh of the view; farther off (a high degree: × 10⁶) they are left out.
+constexpr double kControlPointReach = 3.0;
+
 /// A fitted value in a label: six significant digits.
 QString fittedValueText(double v) { return displaySignificant(v, 6); }
 
@@ -461,7 +466,7 @@ void FitTab::updateComb()
     m_combScaleBox->setEnabled(m_combBox->isChecked());
     if (m_combScale == 0 && !m_comb.empty())
         m_combScaleBox->setAutomaticScale(m_comb.scale);
-    m_canvas->update();
+    m_canvas->setContentBounds(contentBounds()); // the teeth are in the view (unless the user moved it)
 }
 
 void FitTab::addLayers()
@@ -753,15 +758,24 @@ void FitTab::finishFit() const { m_background->finish(); }
 
 QRectF FitTab::contentBounds() const
 {
-    // The view shows the data and the curve, and the control points unless they fly far off
-    // (high degrees put them orders of magnitude away: then the data would shrink to a dot).
-    QRectF bounds = boundsOf(m_editor->points(), m_curve);
-    if (m_fit) {
+    // The view shows the data and the curve; the control points when they are shown, unless
+    // they fly far off (high degrees put them orders of magnitude away: then the data would
+    // shrink to a dot); and the comb's teeth when it is shown (curvature_comb.h keeps them
+    // within half the curve's size of it).
+    const QRectF data = boundsOf(m_editor->points(), m_curve);
+    QRectF bounds = data;
+    if (m_fit && m_display.controlPoints) {
         const QRectF control = boundsOf(m_fit->controlPoints, {});
-        const double size = std::max(bounds.width(), bounds.height());
-        const QRectF near = bounds.adjusted(-0.5 * size, -0.5 * size, 0.5 * size, 0.5 * size);
-        if (near.contains(control))
+        const double size = std::max(data.width(), data.height());
+        const double reach = kControlPointReach * size;
+        if (data.adjusted(-reach, -reach, reach, reach).contains(control))
             bounds = bounds.united(control);
+    }
+    if (m_combBox && m_combBox->isChecked() && !m_comb.empty()) {
+        std::vector<Point> tips;
+        for (const CurvatureComb::Tooth& tooth : m_comb.teeth)
+            tips.push_back(tooth.tip);
+        bounds = bounds.united(boundsOf(tips, {}));
     }
     return bounds;
 }
