@@ -967,7 +967,29 @@ void CatmullRomTab::drawCurves(QPainter& p, const ViewTransform& view, const Can
 
 void CatmullRomTab::drawLegend(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const
 {
-    drawCanvasLegend(p, view, style, legend());
+    drawCanvasLegend(p, view, style, legend(), legendBox(view, style));
+}
+
+QRectF CatmullRomTab::legendRect(const ViewTransform& view, const CanvasStyle& style) const { return legendBox(view, style).box; }
+
+CanvasLegendBox CatmullRomTab::legendBox(const ViewTransform& view, const CanvasStyle& style) const
+{
+    // As the De Casteljau tab's key: where it covers least of the curves drawn, and clear of
+    // the points and their labels (Fig 2.10's key covered q0's label in the top-left corner).
+    CanvasLegendObstacles avoid;
+    const auto samples = [&](const std::vector<Point>& points) {
+        for (const Point& q : points)
+            avoid.points.push_back(view.toScreen(q));
+    };
+    for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.curves.size(); ++i)
+        samples(m_scene.curves[i].samples);
+    for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.otherEnds.size(); ++i)
+        samples(m_scene.otherEnds[i].samples);
+    samples(m_scene.bezier);
+    samples(m_scene.spline);
+    for (const PointEditor::Mark& mark : m_editor->marks(view, style))
+        avoid.keepClear.push_back(mark.label.isEmpty() ? mark.handle : mark.handle.united(mark.label));
+    return canvasLegendRect(view, style, legend(), avoid);
 }
 
 CanvasLegend CatmullRomTab::legend() const
