@@ -8,6 +8,7 @@
 // presentation mode the side panels are folded away (a drawer, View ▸ Side panel) and the
 // canvas has the window's width; opened, the drawer shows everything whole too.
 #include "main_window_steps.h"
+#include "ui/catmull_rom/catmull_rom_tab.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/plot_tick_room.h"
 #include "ui/frog/frog_canvas.h"
@@ -30,6 +31,7 @@
 #include <QRegularExpression>
 #include <QScreen>
 #include <QScrollArea>
+#include <QScopeGuard>
 #include <QStyleOptionComboBox>
 #include <QTest>
 #include "tests/test_main.h"
@@ -416,6 +418,45 @@ private slots:
             const double left = plot.xAxis->coordToPixel(ticks.first()) - metrics.boundingRect(labels.first()).width() / 2.0;
             // Unkept, QCustomPlot's margin (15 px) cuts the label: the case the helper is for.
             QVERIFY2((left >= 0) == kept, qPrintable(QStringLiteral("kept %1: the label starts at %2").arg(kept).arg(left)));
+        }
+    }
+
+    // Issue 34, item 11: at 800×600 the Catmull-Rom blending plot's area was ~60 px tall, the
+    // κ(s) plot's ~110 px. The plot area keeps at least kMinPlotArea pixels in both views.
+    void catmullRomPlotsTallEnoughAt800x600_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("en") << QStringLiteral("en");
+        QTest::newRow("ca") << QStringLiteral("ca");
+    }
+    void catmullRomPlotsTallEnoughAt800x600()
+    {
+        QFETCH(QString, language);
+        QVERIFY(granota::ui::setLanguage(language, false));
+        const auto english = qScopeGuard([] { granota::ui::setLanguage(QStringLiteral("en"), false); });
+        constexpr int kMinPlotArea = 100; ///< pixels of the plot's area, between its axes
+        MainWindow window;
+        const QSize size(800, 600 - kTitleBar);
+        window.resize(size);
+        window.show();
+        QVERIFY(waitExposed(&window));
+        QVERIFY(window.showTab(QStringLiteral("catmull-rom")));
+        auto* tab = qobject_cast<granota::ui::CatmullRomTab*>(window.tab(QStringLiteral("catmull-rom")));
+        QVERIFY(tab);
+        for (const bool curvature : {false, true}) {
+            tab->setCurvaturePlot(curvature);
+            QApplication::processEvents();
+            QApplication::processEvents();
+            QCustomPlot* plot = tab->blendingPlot();
+            plot->replot();
+            const QRect area = plot->axisRect()->rect();
+            QVERIFY2(area.height() >= kMinPlotArea,
+                     qPrintable(QStringLiteral("%1: a plot area of %2 px in a plot of %3 px")
+                                    .arg(curvature ? QStringLiteral("κ(s)") : QStringLiteral("blending"))
+                                    .arg(area.height())
+                                    .arg(plot->height())));
+            const QStringList problems = layoutProblems(window, size);
+            QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
         }
     }
 

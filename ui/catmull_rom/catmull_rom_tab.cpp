@@ -45,7 +45,9 @@ namespace granota::ui {
 
 namespace {
 
-constexpr int kSliderSteps = 20;               ///< slider units per unit of τ: steps of 0.05
+constexpr int kSliderSteps = 20; ///< slider units per unit of τ: steps of 0.05
+/// Pixels between the plot's axes, at least: on an 800×600 screen the blending plot kept 52.
+constexpr int kMinPlotArea = 100;
 constexpr int kTauListRows = 4;                ///< rows of the τ list, whatever their number (Ex 2.12 has 4 τ)
 constexpr int kSliderMergeIdBase = 0x43520000; ///< "CR": the merge ids of the τ slider's moves
 constexpr int kPlotSamples = 101;              ///< t = 0, 0.01, …, 1 (the Matlab linspace(0,1))
@@ -54,6 +56,15 @@ const QColor kSplineColor(0x33, 0x33, 0x33);
 const QColor kErrorColor(0xc6, 0x28, 0x28);
 
 QString tauString(const Rational& tau) { return QString::fromStdString(toString(tau)); }
+
+/// The height that leaves kMinPlotArea between the axes: below them the x axis's tick labels
+/// and title (a line each, with QCustomPlot's paddings), above them its 15 px margin.
+int minimumPlotHeight(const QCustomPlot* plot)
+{
+    const int tickLabels = QFontMetrics(plot->xAxis->tickLabelFont()).height();
+    const int title = QFontMetrics(plot->xAxis->labelFont()).height();
+    return kMinPlotArea + tickLabels + title + 15 + 3 * 5;
+}
 
 /// τ as Processing's curveTightness(s), s = 1 − 2τ, as a short fraction or decimal.
 QString tightnessString(const Rational& tau)
@@ -294,8 +305,7 @@ void CatmullRomTab::buildUi()
     auto* plotBox = new QWidget(this);
     m_plotTitle = new QLabel(plotBox);
     m_allTausCheck = new QCheckBox(plotBox);
-    m_plot = new QCustomPlot(plotBox);
-    m_plot->setMinimumHeight(120);
+    m_plot = new QCustomPlot(plotBox); // its minimum height follows its font (updatePlot)
     keepTickLabelsInside(m_plot);
     m_plot->legend->setVisible(true);
     m_plot->legend->setBrush(QColor(255, 255, 255, 190));
@@ -809,7 +819,7 @@ void CatmullRomTab::updatePlot()
         }
     if (shown.size() == 1) // the plot alone tells which tension it shows
         m_plot->yAxis->setLabel(QStringLiteral("w_j(t, %1)").arg(tauString(m_settings.taus[static_cast<std::size_t>(shown[0])])));
-    keepAxisTitlesWhole(m_plot);
+    keepAxisTitlesWhole(m_plot, minimumPlotHeight(m_plot));
     const double pad = (hi - lo) * 0.05;
     m_plot->xAxis->setRange(0, 1);
     m_plot->yAxis->setRange(lo - pad, hi + pad);
@@ -891,7 +901,7 @@ void CatmullRomTab::updateCurvaturePlot(double scale)
             hi += 0.08 * spread;
         }
     }
-    keepAxisTitlesWhole(m_plot);
+    keepAxisTitlesWhole(m_plot, minimumPlotHeight(m_plot));
     m_plot->xAxis->setRange(0, length > 0 && std::isfinite(length) ? length : 1.0);
     m_plot->yAxis->setRange(lo, hi);
     m_plot->replot(QCustomPlot::rpQueuedReplot);
