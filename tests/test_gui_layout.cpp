@@ -421,6 +421,63 @@ private slots:
         }
     }
 
+    // Issue 34, item 4: Catmull-Rom's "Totes les τ" (Every τ) beside the plot's title was cut
+    // with the drawer open in presentation mode at 1024×768, in Catalan; at 800×600 in Catalan
+    // (granota --lang ca --tab catmull-rom --size 800x570 --screenshot) it ran past the right
+    // edge of the plot's column. Entered as a teacher does — the window shown, then presentation
+    // mode, then View ▸ Side panel (F9) — it has its whole size hint, inside its column.
+    void everyTauWhole_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::addColumn<QSize>("size");
+        QTest::addColumn<bool>("presentation");
+        for (const char* language : {"ca", "en"}) {
+            QTest::addRow("%s 1024x768 presentation side panel", language)
+                << QString::fromLatin1(language) << QSize(1024, 768 - kTitleBar) << true;
+            QTest::addRow("%s 800x600", language) << QString::fromLatin1(language) << QSize(800, 600 - kTitleBar) << false;
+        }
+    }
+    void everyTauWhole()
+    {
+        QFETCH(QString, language);
+        QFETCH(QSize, size);
+        QFETCH(bool, presentation);
+        QVERIFY(granota::ui::setLanguage(language, false));
+        const auto english = qScopeGuard([] { granota::ui::setLanguage(QStringLiteral("en"), false); });
+        MainWindow window;
+        window.resize(size);
+        window.show();
+        QVERIFY(waitExposed(&window));
+        QVERIFY(window.showTab(QStringLiteral("catmull-rom")));
+        if (presentation) {
+            window.setPresentation(true, false);
+            window.resize(size);
+            QApplication::processEvents();
+            window.setSidePanelsShown(true);
+        }
+        QApplication::processEvents();
+        QApplication::processEvents();
+        QCheckBox* every = nullptr;
+        for (QCheckBox* box : window.tab(QStringLiteral("catmull-rom"))->findChildren<QCheckBox*>())
+            if (box->text() == QCoreApplication::translate("granota::ui::CatmullRomTab", "Every &τ"))
+                every = box;
+        QVERIFY(every);
+        QVERIFY(every->isVisible());
+        const QSize hint = every->sizeHint();
+        const QRect column = every->parentWidget()->rect();
+        const QRect box = every->geometry();
+        const QStringList problems = layoutProblems(window, size);
+        if (presentation)
+            window.setPresentation(false, false); // the application's font back for the next test
+        QVERIFY2(hint.width() <= box.width() && column.contains(box),
+                 qPrintable(QStringLiteral("needs %1, has %2 at %3 in a column of %4")
+                                .arg(hint.width())
+                                .arg(box.width())
+                                .arg(box.left())
+                                .arg(column.width())));
+        QVERIFY2(problems.isEmpty(), qPrintable(problems.join(QLatin1Char('\n'))));
+    }
+
     // Issue 34, item 11: at 800×600 the Catmull-Rom blending plot's area was ~60 px tall, the
     // κ(s) plot's ~110 px. The plot area keeps at least kMinPlotArea pixels in both views.
     void catmullRomPlotsTallEnoughAt800x600_data()
