@@ -173,6 +173,58 @@ private slots:
         QVERIFY(!r.contains(QStringLiteral("B₃")));
     }
 
+    // Issue 34, item 11: at n = 30 (all degrees on) the readout named B₀…B₁₁, all 0.0000 at
+    // t = 1/2. It lists the polynomials that matter: consecutive i around the peak i ≈ n t, each
+    // of them at least as large as any left out, in order of i, with "…" for those left out.
+    void hoverReadoutListsThePolynomialsThatMatter_data()
+    {
+        QTest::addColumn<double>("t");
+        QTest::newRow("t = 1/2") << 0.5;
+        QTest::newRow("t = 0.1") << 0.1;
+        QTest::newRow("t = 0.9") << 0.9;
+        QTest::newRow("t = 0") << 0.0;
+    }
+    void hoverReadoutListsThePolynomialsThatMatter()
+    {
+        QFETCH(double, t);
+        constexpr int n = 30;
+        Tabs tabs;
+        tabs.bernstein.setDegree(n);
+        tabs.bernstein.setAllDegrees(true);
+        const QStringList lines = tabs.bernstein.readout(t).split(QLatin1Char('\n'));
+        // Which B_i³⁰ are listed: the subscript digits after "B".
+        const QString subscripts = QStringLiteral("₀₁₂₃₄₅₆₇₈₉");
+        QList<int> listed;
+        for (const QString& line : lines) {
+            if (!line.startsWith(QLatin1Char('B')))
+                continue;
+            int i = 0;
+            for (int k = 1; k < line.size() && subscripts.contains(line[k]); ++k)
+                i = 10 * i + static_cast<int>(subscripts.indexOf(line[k]));
+            listed << i;
+        }
+        QVERIFY2(listed.size() >= 10, qPrintable(lines.join(QLatin1Char('|'))));
+        for (int k = 1; k < listed.size(); ++k)
+            QCOMPARE(listed[k], listed[k - 1] + 1); // consecutive, in order
+        // Independently: B_i^n(t) = C(n, i) tⁱ (1 − t)ⁿ⁻ⁱ (Def 2.5) by the closed form.
+        const auto value = [t](int i) {
+            return std::exp(std::lgamma(n + 1.0) - std::lgamma(i + 1.0) - std::lgamma(n - i + 1.0)) * std::pow(t, i) *
+                   std::pow(1 - t, n - i);
+        };
+        const int peak = static_cast<int>(std::lround(n * t));
+        QVERIFY2(listed.contains(peak), qPrintable(lines.join(QLatin1Char('|'))));
+        double smallestListed = 1, largestLeftOut = 0;
+        for (int i = 0; i <= n; ++i) {
+            if (listed.contains(i))
+                smallestListed = std::min(smallestListed, value(i));
+            else
+                largestLeftOut = std::max(largestLeftOut, value(i));
+        }
+        QVERIFY(smallestListed >= largestLeftOut * (1 - 1e-12));
+        QCOMPARE(lines.first(), QStringLiteral("t = %1").arg(QString::number(t, 'f', 3)));
+        QVERIFY(lines.contains(QStringLiteral("…"))); // some are left out, and it says so
+    }
+
     // The readout's values are those of the t it names (t to three decimals), and it leaves
     // the plot when t changes.
     void hoverReadoutMatchesItsT()

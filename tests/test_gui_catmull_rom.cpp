@@ -9,6 +9,7 @@
 #include "core/exact/polynomial_text.h"
 #include "core/io/worked_examples.h"
 #include "ui/catmull_rom/catmull_rom_tab.h"
+#include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
@@ -17,6 +18,7 @@
 #include "ui/shell/tikz_writer.h"
 #include "gui_timeouts.h"
 
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QGroupBox>
@@ -319,6 +321,69 @@ private slots:
         tab.undoStack()->undo();
         QCOMPARE(int(tab.settings().taus.size()), 3);
         QCOMPARE(int(tab.scene().curves.size()), 3);
+    }
+
+    // Issue 34, item 11: a curve's colour is a function of its τ (tension_colour.h), not of its
+    // place in the list: adding a τ or removing another one leaves it alone.
+    void tauColourFollowsTheValue()
+    {
+        CatmullRomTab tab;
+        const auto colourOf = [&tab](const QString& text) {
+            for (const CanvasLegendEntry& e : tab.legend().entries)
+                if (e.text == text)
+                    return e.color;
+            return QColor();
+        };
+        const QString half = QStringLiteral("τ = 1/2");
+        const QColor before = colourOf(half);
+        QVERIFY(before.isValid());
+        QVERIFY(tab.addTension(QStringLiteral("0.2")));
+        QCOMPARE(colourOf(half), before);
+        // Removing τ = 0, first in the list, handed τ = 1/2 the first colour.
+        const QColor fifth = colourOf(QStringLiteral("τ = 1/5"));
+        QVERIFY(tab.removeTension(0));
+        QCOMPARE(colourOf(half), before);
+        QCOMPARE(colourOf(QStringLiteral("τ = 1/5")), fifth);
+        // The same τ, the same colour, in another tab with another list.
+        CatmullRomTab other;
+        QVERIFY(other.removeTension(0));
+        QVERIFY(other.removeTension(0)); // τ = 2 alone
+        QVERIFY(other.addTension(QStringLiteral("1/2")));
+        QCOMPARE(colourOf(half), before);
+        QCOMPARE(other.legend().entries.at(1).color, before);
+        // Different tensions of the examples get clearly different hues (Ex 2.12: −2, 0, 1/2, 2).
+        const QList<double> taus{-2, 0, 0.5, 2, 1, -0.5};
+        for (int i = 0; i < taus.size(); ++i)
+            for (int j = i + 1; j < taus.size(); ++j)
+                QVERIFY(std::abs(tensionColour(taus[i]).hsvHue() - tensionColour(taus[j]).hsvHue()) >= 18);
+    }
+
+    // Issue 34, item 11: the check boxes under the τ list stay where they were when τ are added
+    // (they moved under the pointer as the list grew).
+    void checkBoxesStayWhenATauIsAdded()
+    {
+        CatmullRomTab tab;
+        tab.resize(800, 540); // an 800×600 screen: the side panel has no height to spare, it scrolls
+        tab.show();
+        QVERIFY(waitExposed(&tab));
+        const auto geometries = [&tab] {
+            QList<QRect> out;
+            for (QCheckBox* box : tab.findChildren<QCheckBox*>())
+                out << QRect(box->mapTo(&tab, QPoint(0, 0)), box->size());
+            return out;
+        };
+        const auto settle = [] {
+            for (int i = 0; i < 8; ++i) // the layouts settle, each level asking its parent in turn
+                QApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+        };
+        settle();
+        const QList<QRect> before = geometries();
+        QVERIFY(before.size() >= 5);
+        QVERIFY(tab.addTension(QStringLiteral("0.2")));
+        QVERIFY(tab.addTension(QStringLiteral("-0.35")));
+        QVERIFY(tab.addTension(QStringLiteral("0.7"))); // six τ: past the rows the list shows
+        settle();
+        QCOMPARE(geometries(), before);
     }
 
     void sliderMovesMergeIntoOneUndoStep()
@@ -894,8 +959,8 @@ private slots:
         bool curve = false;
         for (int dy = -2; dy <= 2; ++dy)
             for (int dx = -2; dx <= 2; ++dx)
-                for (int i = 0; i < static_cast<int>(tab.settings().taus.size()); ++i)
-                    curve = curve || near(hidden.pixelColor(at + QPoint(dx, dy)), CanvasStyle::series(i));
+                for (const Rational& tau : tab.settings().taus)
+                    curve = curve || near(hidden.pixelColor(at + QPoint(dx, dy)), tensionColour(tau));
         QVERIFY(curve);
         const QString tex = tab.tikz();
         QVERIFY(!tex.contains(QStringLiteral("q_{")));

@@ -593,6 +593,65 @@ private slots:
         QVERIFY(!other.loadState(old, &error));
     }
 
+    // Issue 34, item 11: at degree 30 the fitted control points lie ×10⁶ beyond the data; the
+    // automatic comb was scaled by their polygon, so its teeth left the canvas. Scaled by the
+    // curve's own box, and framed by the view, every tooth ends on the canvas.
+    void combTeethStayOnTheCanvasAtHighDegree()
+    {
+        FitTab tab;
+        tab.resize(1280, 760);
+        tab.show();
+        QVERIFY(waitExposed(&tab));
+        tab.pointEditor()->setPoints(smoothSamples(200), QStringLiteral("samples"));
+        tab.degreeBox()->setValue(30);
+        QTRY_VERIFY_WITH_TIMEOUT(!tab.isFitting(), kEventWaitMs);
+        QVERIFY(tab.currentFit());
+        QCOMPARE(tab.fittedDegree(), 30);
+        tab.combBox()->click();
+        QVERIFY(!tab.comb().empty());
+        // The scenario: the control polygon is far larger than the curve (the data's box).
+        const auto& P = tab.currentFit()->controlPoints;
+        double far = 0;
+        for (const Point& p : P)
+            far = std::max({far, std::fabs(p.x), std::fabs(p.y)});
+        QVERIFY2(far > 1e3, qPrintable(QString::number(far)));
+        const QRect canvas = tab.canvas()->rect();
+        for (const granota::ui::CurvatureComb::Tooth& tooth : tab.comb().teeth) {
+            const QPointF tip = tab.canvas()->view().toScreen(tooth.tip);
+            QVERIFY2(canvas.contains(tip.toPoint()), qPrintable(QStringLiteral("%1, %2").arg(tip.x()).arg(tip.y())));
+        }
+        // And the curve keeps most of the canvas: the comb frames it, it does not shrink it to a dot.
+        QRectF data;
+        for (const Point& q : tab.pointEditor()->points())
+            data = data.united(QRectF(tab.canvas()->view().toScreen(q), QSizeF(1, 1)));
+        QVERIFY2(data.width() > canvas.width() / 4.0 || data.height() > canvas.height() / 4.0,
+                 qPrintable(QStringLiteral("%1 × %2").arg(data.width()).arg(data.height())));
+    }
+
+    // Issue 34, item 11: Ex 2.8 from the examples: its fitted P1 and P2 lie beyond the data (by
+    // 1.3 times its size); with the control points shown, the view takes them in.
+    void ex28ControlPointsOnTheCanvas()
+    {
+        FitTab tab;
+        tab.resize(1280, 760);
+        tab.show();
+        QVERIFY(waitExposed(&tab));
+        QVERIFY(loadEx(tab, "2.8"));
+        QVERIFY(tab.controlPointsBox()->isChecked());
+        QVERIFY(tab.currentFit());
+        const QRect canvas = tab.canvas()->rect();
+        for (const Point& p : tab.currentFit()->controlPoints) {
+            const QPointF at = tab.canvas()->view().toScreen(p);
+            QVERIFY2(canvas.contains(at.toPoint()), qPrintable(QStringLiteral("(%1, %2) at %3, %4 in %5 × %6")
+                                                                   .arg(p.x)
+                                                                   .arg(p.y)
+                                                                   .arg(at.x())
+                                                                   .arg(at.y())
+                                                                   .arg(canvas.width())
+                                                                   .arg(canvas.height())));
+        }
+    }
+
     // The comb's scale beside it: automatic by default, then the user's number (typed in the
     // box), which makes every tooth |κ| × that long; one undo step; kept by the document.
     void curvatureCombScaleIsTheUsers()
@@ -616,15 +675,18 @@ private slots:
         QCOMPARE(tab.comb().teeth.size(), automatic.teeth.size());
         QCOMPARE(automatic.undefinedSamples, 0); // tooth k at t = k/160
         const auto& P = tab.currentFit()->controlPoints;
-        // A tooth is |κ| × the scale long, cut at the control polygon's size (curvature_comb.h).
-        double x0 = P[0].x, x1 = x0, y0 = P[0].y, y1 = y0;
-        for (const Point& q : P) {
+        // A tooth is |κ| × the scale long, cut at half the curve's size (curvature_comb.h): the
+        // diagonal of the box of the curve's points at t = k/160, the teeth's bases.
+        const Point b0 = granota::curvatureAt(P, 0.0).point;
+        double x0 = b0.x, x1 = x0, y0 = b0.y, y1 = y0;
+        for (int k = 0; k <= 160; ++k) {
+            const Point q = granota::curvatureAt(P, k / 160.0).point;
             x0 = std::min(x0, q.x);
             x1 = std::max(x1, q.x);
             y0 = std::min(y0, q.y);
             y1 = std::max(y1, q.y);
         }
-        const double size = std::hypot(x1 - x0, y1 - y0);
+        const double size = 0.5 * std::hypot(x1 - x0, y1 - y0);
         const double last = static_cast<double>(automatic.teeth.size() - 1);
         int proportional = 0;
         for (std::size_t k = 0; k < automatic.teeth.size(); ++k) {
@@ -751,6 +813,47 @@ private slots:
         QVERIFY(last > 30 && last < kMaxFitDegree);
         QVERIFY2(tab.plotNote().contains(QStringLiteral("n = %1 of %2").arg(last).arg(kMaxFitDegree)),
                  qPrintable(tab.plotNote()));
+    }
+
+    // Issue 34, item 11: with the normal equations the fits of high degree fail. The plot leaves
+    // those degrees blank (no line drawn over them), and its axis ends at the degree its note
+    // names: the note and the plot tell the same story.
+    void errorPlotLeavesFailedDegreesBlank()
+    {
+        FitTab tab;
+        tab.pointEditor()->setPoints(smoothSamples(200), QStringLiteral("samples"));
+        tab.solverBox()->setCurrentIndex(tab.solverBox()->findData(static_cast<int>(LeastSquaresSolver::Normal)));
+        QVERIFY(tab.settings().solver == LeastSquaresSolver::Normal);
+        const QString note = tab.plotNote();
+        const QRegularExpressionMatch m = QRegularExpression(QStringLiteral("n = (\\d+) of")).match(note);
+        QVERIFY2(m.hasMatch(), qPrintable(note));
+        const int named = m.captured(1).toInt();
+        // Independently: the core's errors for every degree up to the one the note names.
+        FitOptions options;
+        options.parametrization = tab.settings().parametrization;
+        options.solver = LeastSquaresSolver::Normal;
+        const std::vector<DegreeError> errors = fitErrorByDegree(tab.pointEditor()->points(), options, named);
+        QCOMPARE(static_cast<int>(errors.size()), named);
+        int failed = 0, lastOk = 0;
+        for (const DegreeError& e : errors) {
+            failed += e.ok ? 0 : 1;
+            lastOk = e.ok ? e.degree : lastOk;
+        }
+        QVERIFY2(failed > 0 && lastOk < named, "the scenario must have failed fits at the end");
+        // The axis ends at the degree named, not at the last one that succeeded.
+        QCOMPARE(tab.errorPlot()->xAxis->range().upper, named + 0.5);
+        // A NaN (a gap) at each failed degree, a value at each other one.
+        QCPGraph* graph = tab.errorPlot()->graph(0);
+        QCOMPARE(graph->dataCount(), named);
+        for (const DegreeError& e : errors) {
+            const double value = graph->data()->at(e.degree - 1)->value;
+            QCOMPARE(graph->data()->at(e.degree - 1)->key, double(e.degree));
+            QVERIFY2(std::isnan(value) == !e.ok, qPrintable(QString::number(e.degree)));
+        }
+        // The note says how many degrees are blank.
+        // (English plurals come from granota_en.qm, which the tests need not load: "degree(s)" or "degrees".)
+        QVERIFY2(note.contains(QRegularExpression(QStringLiteral("\\b%1 degree(s|\\(s\\)) left blank").arg(failed))),
+                 qPrintable(note));
     }
 
     // "Show matrices" with more points than are listed shows the top of M and says how large M is.

@@ -8,6 +8,9 @@
 #include "core/io/worked_examples.h"
 #include "core/softbody/recorded_run.h"
 #include "core/softbody/scenes/scene.h"
+#include "ui/catmull_rom/catmull_rom_tab.h"
+#include "ui/common/curve_canvas.h"
+#include "ui/common/point_editor.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_tab.h"
 #include "ui/shell/language.h"
@@ -24,6 +27,7 @@
 #include <QImage>
 #include <QListWidget>
 #include <QProcess>
+#include <QScopeGuard>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QUndoStack>
@@ -401,6 +405,69 @@ private slots:
                 }
         }
         granota::ui::setLanguage(QStringLiteral("en"), false);
+    }
+
+    // Issue 34, item 10: Fig 2.10's key was fixed in the top-left corner, over q0's label. The
+    // Catmull-Rom key goes where it covers least, as the De Casteljau tab's: clear of every
+    // point and label, over no more of the curves than the top-left corner would be.
+    void fig210KeyCoversNoLabel_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("en") << QStringLiteral("en");
+        QTest::newRow("ca") << QStringLiteral("ca"); // the longer key: "discontínua: extrems de tipus …"
+    }
+    void fig210KeyCoversNoLabel()
+    {
+        QFETCH(QString, language);
+        granota::ui::setLanguage(language, false);
+        const auto english = qScopeGuard([] { granota::ui::setLanguage(QStringLiteral("en"), false); });
+        MainWindow window;
+        window.resize(1280, 800);
+        window.show();
+        QVERIFY(waitExposed(&window));
+        const ThesisFigure* figure = granota::findThesisFigure("2.10");
+        QVERIFY(figure);
+        QString error;
+        QVERIFY2(granota::ui::showThesisFigure(window, *figure, figure->variants.front(), false, &error), qPrintable(error));
+        auto* tab = qobject_cast<granota::ui::CatmullRomTab*>(window.tab(QStringLiteral("catmull-rom")));
+        QVERIFY(tab);
+        // As `granota --figure 2.10 --export f.png` draws it: the canvas laid out at 800×600.
+        QTemporaryDir dir;
+        const QSize size(800, 600);
+        QCOMPARE(granota::ui::exportThesisFigure(window, *figure, QStringLiteral("png"), dir.filePath(QStringLiteral("f.png")),
+                                                 size, 96),
+                 QString());
+        // (800 × 578 here: what the window's smallest size leaves; the export scales that view.)
+        QVERIFY(std::abs(tab->canvas()->width() - size.width()) < 40 && std::abs(tab->canvas()->height() - size.height()) < 40);
+        const auto& view = tab->canvas()->view();
+        const auto& style = tab->canvas()->style();
+        const QRectF key = tab->legendRect(view, style);
+        QVERIFY(!key.isEmpty());
+        QVERIFY(view.viewport().contains(key));
+        // Each point's handle and label "q<i>", as the point editor draws them (point_editor.cpp:
+        // the text from (r + 3, −r) off the centre, on its baseline).
+        const QFontMetricsF fm(style.labelFont());
+        const double r = style.handleRadius();
+        const auto& q = tab->pointEditor()->points();
+        QVERIFY(!q.empty());
+        for (std::size_t i = 0; i < q.size(); ++i) {
+            const QPointF s = view.toScreen(q[i]);
+            const QRectF handle(s - QPointF(r, r), QSizeF(2 * r, 2 * r));
+            const QRectF label(s.x() + r + 3 * style.scale, s.y() - r - fm.ascent(),
+                               fm.horizontalAdvance(QStringLiteral("q%1").arg(i)), fm.height());
+            QVERIFY2(!key.intersects(handle) && !key.intersects(label), qPrintable(QStringLiteral("q%1 under the key").arg(i)));
+        }
+        // Over the curves, no more than the corner a fixed key took.
+        const auto samplesIn = [&](const QRectF& box) {
+            int k = 0;
+            for (const auto& curve : tab->scene().curves)
+                for (const granota::Point& p : curve.samples)
+                    k += box.contains(view.toScreen(p));
+            return k;
+        };
+        const QRectF topLeft(view.viewport().topLeft() + QPointF(8, 8) * style.scale, key.size());
+        QVERIFY2(samplesIn(key) <= samplesIn(topLeft),
+                 qPrintable(QStringLiteral("%1 > %2").arg(samplesIn(key)).arg(samplesIn(topLeft))));
     }
 
     // With no display at all: --list-figures prints the 23 figures (number, variants, the

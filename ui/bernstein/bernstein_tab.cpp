@@ -11,6 +11,7 @@
 #include "ui/decasteljau/decasteljau_parameter_control.h"
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/common/exact_panel.h"
+#include "ui/common/plot_tick_room.h"
 #include "ui/common/point_editor.h"
 #include "ui/common/presentation_scale.h"
 #include "ui/common/value_command.h"
@@ -96,6 +97,8 @@ BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
 
     // The basis plot: B_i^n on [0, 1], the current t as a vertical line, a hover readout.
     m_basisPlot->setMinimumHeight(200);
+    keepTickLabelsInside(m_basisPlot);
+    keepTickLabelsInside(m_weightsPlot);
     m_basisPlot->xAxis->setRange(0, 1);
     m_basisPlot->yAxis->setRange(-0.02, 1.05);
     m_basisPlot->xAxis->setLabel(QStringLiteral("t"));
@@ -435,10 +438,18 @@ QString BernsteinTab::readout(double tt) const
     // "t = 0.300" comes with B₀⁴ = 0.7⁴ = 0.2401, not the values a fraction of a pixel away.
     const double shown = std::round(tt * 1000) / 1000;
     const std::vector<double> b = bernsteinAll(m_degree, shown);
+    // With more than kMaxReadoutLines polynomials, the ones that matter: B_i^n(t) is unimodal
+    // in i with its peak at i ≈ n t (Def 2.5: the ratio B_{i+1}/B_i = (n − i) t / ((i + 1)(1 − t))
+    // falls through 1 there), so the kMaxReadoutLines largest are consecutive around the peak.
+    const int peak = static_cast<int>(std::max_element(b.begin(), b.end()) - b.begin());
+    const int first = std::clamp(peak - kMaxReadoutLines / 2, 0, std::max(0, m_degree + 1 - kMaxReadoutLines));
+    const int last = std::min(m_degree, first + kMaxReadoutLines - 1);
     QStringList lines{QStringLiteral("t = %1").arg(displayFixed(shown, 3))};
-    for (int i = 0; i <= m_degree && i < kMaxReadoutLines; ++i)
+    if (first > 0)
+        lines << QStringLiteral("…");
+    for (int i = first; i <= last; ++i)
         lines << QStringLiteral("%1 = %2").arg(basisName(i, m_degree)).arg(displayFixed(b[static_cast<std::size_t>(i)], 4));
-    if (m_degree + 1 > kMaxReadoutLines)
+    if (last < m_degree)
         lines << QStringLiteral("…");
     return lines.join(QLatin1Char('\n'));
 }

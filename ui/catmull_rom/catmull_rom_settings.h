@@ -25,7 +25,7 @@ enum class CatmullRomEnds { Open, Cyclic, Closed, Segment };
 enum class CatmullRomSpacing { Uniform, Centripetal, Chordal };
 
 struct CatmullRomSettings {
-    static constexpr int kMaxTensions = 10;   ///< one colour each (CanvasStyle::series)
+    static constexpr int kMaxTensions = 10;   ///< drawn at once (each in the colour of its value: tension_colour.h)
     static constexpr int kMaxTensionAbs = 10; ///< docs/extreme-cases.md: τ ∈ [−10, 10]
     static constexpr int kMaxPoints = 200;    ///< docs/extreme-cases.md (soft bodies up to 200 sides)
 

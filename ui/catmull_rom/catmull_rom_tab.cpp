@@ -1,4 +1,6 @@
 #include "ui/catmull_rom/catmull_rom_tab.h"
+#include "ui/catmull_rom/tension_colour.h"
+#include "ui/common/plot_tick_room.h"
 #include "ui/common/number_text.h"
 
 #include "core/base/number_format.h"
@@ -43,7 +45,10 @@ namespace granota::ui {
 
 namespace {
 
-constexpr int kSliderSteps = 20;               ///< slider units per unit of τ: steps of 0.05
+constexpr int kSliderSteps = 20; ///< slider units per unit of τ: steps of 0.05
+/// Pixels between the plot's axes, at least: on an 800×600 screen the blending plot kept 52.
+constexpr int kMinPlotArea = 100;
+constexpr int kTauListRows = 4;                ///< rows of the τ list, whatever their number (Ex 2.12 has 4 τ)
 constexpr int kSliderMergeIdBase = 0x43520000; ///< "CR": the merge ids of the τ slider's moves
 constexpr int kPlotSamples = 101;              ///< t = 0, 0.01, …, 1 (the Matlab linspace(0,1))
 const QColor kBezierColor(0x6a, 0x3d, 0x9a);
@@ -51,6 +56,15 @@ const QColor kSplineColor(0x33, 0x33, 0x33);
 const QColor kErrorColor(0xc6, 0x28, 0x28);
 
 QString tauString(const Rational& tau) { return QString::fromStdString(toString(tau)); }
+
+/// The height that leaves kMinPlotArea between the axes: below them the x axis's tick labels
+/// and title (a line each, with QCustomPlot's paddings), above them its 15 px margin.
+int minimumPlotHeight(const QCustomPlot* plot)
+{
+    const int tickLabels = QFontMetrics(plot->xAxis->tickLabelFont()).height();
+    const int title = QFontMetrics(plot->xAxis->labelFont()).height();
+    return kMinPlotArea + tickLabels + title + 15 + 3 * 5;
+}
 
 /// τ as Processing's curveTightness(s), s = 1 − 2τ, as a short fraction or decimal.
 QString tightnessString(const Rational& tau)
@@ -291,8 +305,8 @@ void CatmullRomTab::buildUi()
     auto* plotBox = new QWidget(this);
     m_plotTitle = new QLabel(plotBox);
     m_allTausCheck = new QCheckBox(plotBox);
-    m_plot = new QCustomPlot(plotBox);
-    m_plot->setMinimumHeight(120);
+    m_plot = new QCustomPlot(plotBox); // its minimum height follows its font (updatePlot)
+    keepTickLabelsInside(m_plot);
     m_plot->legend->setVisible(true);
     m_plot->legend->setBrush(QColor(255, 255, 255, 190));
     m_plot->legend->setFillOrder(QCPLayoutGrid::foRowsFirst);
@@ -492,7 +506,7 @@ void CatmullRomTab::syncControls()
         QListWidgetItem* item = m_tauList->item(i);
         item->setText(tensionItemText(m_settings.taus[static_cast<std::size_t>(i)]));
         QPixmap swatch(14, 14);
-        swatch.fill(CanvasStyle::series(i));
+        swatch.fill(tensionColour(m_settings.taus[static_cast<std::size_t>(i)]));
         item->setIcon(QIcon(swatch));
     }
     m_tauList->setCurrentRow(m_settings.selectedTau);
@@ -523,8 +537,11 @@ void CatmullRomTab::syncControls()
     m_allTausCheck->setEnabled(!m_settings.curvaturePlot); // the blending functions only
     m_curvatureCheck->setChecked(m_settings.curvaturePlot);
     updatePlotTexts();
-    const int rows = std::clamp(count, 2, 6);
-    m_tauList->setFixedHeight(rows * (m_tauList->fontMetrics().height() + 6) + 6);
+    // The same height whatever the number of τ (it scrolls past kTauListRows), and room for two
+    // lines of the slider's label whatever τ it names: adding a τ never moves the check boxes
+    // below under the pointer.
+    m_tauList->setFixedHeight(kTauListRows * (m_tauList->fontMetrics().height() + 6) + 6);
+    m_sliderLabel->setMinimumHeight(2 * m_sliderLabel->fontMetrics().lineSpacing());
     m_syncing = false;
 }
 
@@ -802,7 +819,7 @@ void CatmullRomTab::updatePlot()
         }
     if (shown.size() == 1) // the plot alone tells which tension it shows
         m_plot->yAxis->setLabel(QStringLiteral("wⱼ(t, %1)").arg(tauString(m_settings.taus[static_cast<std::size_t>(shown[0])])));
-    keepAxisTitlesWhole(m_plot);
+    keepAxisTitlesWhole(m_plot, minimumPlotHeight(m_plot));
     const double pad = (hi - lo) * 0.05;
     m_plot->xAxis->setRange(0, 1);
     m_plot->yAxis->setRange(lo - pad, hi + pad);
@@ -841,11 +858,11 @@ void CatmullRomTab::updateCurvaturePlot(double scale)
     const double width = 2.0 * scale;
     for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
         const bool selected = static_cast<int>(i) == m_settings.selectedTau;
-        addProfile(m_scene.curves[i].curvature, QPen(CanvasStyle::series(static_cast<int>(i)), selected ? 1.5 * width : width),
+        addProfile(m_scene.curves[i].curvature, QPen(tensionColour(m_scene.curves[i].tau), selected ? 1.5 * width : width),
                    QStringLiteral("τ = %1").arg(tauString(m_scene.curves[i].tau)));
     }
     for (std::size_t i = 0; i < m_scene.otherEnds.size(); ++i)
-        addProfile(m_scene.otherEnds[i].curvature, QPen(CanvasStyle::series(static_cast<int>(i)), 0.75 * width, Qt::DashLine),
+        addProfile(m_scene.otherEnds[i].curvature, QPen(tensionColour(m_scene.otherEnds[i].tau), 0.75 * width, Qt::DashLine),
                    tr("τ = %1, %2 ends")
                        .arg(tauString(m_scene.otherEnds[i].tau), CatmullRomReport::endsName(m_scene.otherEnds[i].ends)));
     addProfile(m_scene.bezierCurvature, QPen(kBezierColor, width, Qt::DashDotLine), tr("Bézier"));
@@ -884,7 +901,7 @@ void CatmullRomTab::updateCurvaturePlot(double scale)
             hi += 0.08 * spread;
         }
     }
-    keepAxisTitlesWhole(m_plot);
+    keepAxisTitlesWhole(m_plot, minimumPlotHeight(m_plot));
     m_plot->xAxis->setRange(0, length > 0 && std::isfinite(length) ? length : 1.0);
     m_plot->yAxis->setRange(lo, hi);
     m_plot->replot(QCustomPlot::rpQueuedReplot);
@@ -947,12 +964,12 @@ void CatmullRomTab::drawCurves(QPainter& p, const ViewTransform& view, const Can
     if (!m_settings.catmullRom)
         return;
     for (std::size_t i = 0; i < m_scene.otherEnds.size(); ++i) {
-        p.setPen(QPen(CanvasStyle::series(static_cast<int>(i)), style.lineWidth() * 0.75, Qt::DashLine));
+        p.setPen(QPen(tensionColour(m_scene.otherEnds[i].tau), style.lineWidth() * 0.75, Qt::DashLine));
         drawBezierSegments(p, view, m_scene.otherEnds[i].bezier);
     }
     for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
         const bool selected = static_cast<int>(i) == m_settings.selectedTau;
-        p.setPen(QPen(CanvasStyle::series(static_cast<int>(i)), style.lineWidth() * (selected ? 1.5 : 1.0), Qt::SolidLine,
+        p.setPen(QPen(tensionColour(m_scene.curves[i].tau), style.lineWidth() * (selected ? 1.5 : 1.0), Qt::SolidLine,
                       Qt::RoundCap, Qt::RoundJoin));
         drawBezierSegments(p, view, m_scene.curves[i].bezier);
     }
@@ -960,7 +977,29 @@ void CatmullRomTab::drawCurves(QPainter& p, const ViewTransform& view, const Can
 
 void CatmullRomTab::drawLegend(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const
 {
-    drawCanvasLegend(p, view, style, legend());
+    drawCanvasLegend(p, view, style, legend(), legendBox(view, style));
+}
+
+QRectF CatmullRomTab::legendRect(const ViewTransform& view, const CanvasStyle& style) const { return legendBox(view, style).box; }
+
+CanvasLegendBox CatmullRomTab::legendBox(const ViewTransform& view, const CanvasStyle& style) const
+{
+    // As the De Casteljau tab's key: where it covers least of the curves drawn, and clear of
+    // the points and their labels (Fig 2.10's key covered q0's label in the top-left corner).
+    CanvasLegendObstacles avoid;
+    const auto samples = [&](const std::vector<Point>& points) {
+        for (const Point& q : points)
+            avoid.points.push_back(view.toScreen(q));
+    };
+    for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.curves.size(); ++i)
+        samples(m_scene.curves[i].samples);
+    for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.otherEnds.size(); ++i)
+        samples(m_scene.otherEnds[i].samples);
+    samples(m_scene.bezier);
+    samples(m_scene.spline);
+    for (const PointEditor::Mark& mark : m_editor->marks(view, style))
+        avoid.keepClear.push_back(mark.label.isEmpty() ? mark.handle : mark.handle.united(mark.label));
+    return canvasLegendRect(view, style, legend(), avoid);
 }
 
 CanvasLegend CatmullRomTab::legend() const
@@ -969,7 +1008,7 @@ CanvasLegend CatmullRomTab::legend() const
     legend.alertColor = kErrorColor;
     for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.curves.size(); ++i) {
         const auto& c = m_scene.curves[i];
-        legend.entries.push_back({CanvasStyle::series(static_cast<int>(i)), c.error.isEmpty() ? Qt::SolidLine : Qt::NoPen,
+        legend.entries.push_back({tensionColour(c.tau), c.error.isEmpty() ? Qt::SolidLine : Qt::NoPen,
                                   QStringLiteral("τ = %1").arg(tauString(c.tau))});
     }
     if (m_settings.catmullRom && !m_scene.otherEnds.empty())
@@ -1154,10 +1193,10 @@ void CatmullRomTab::drawTikz(TikzWriter& w) const
     if (!m_scene.splineBezier.empty())
         w.bezierSegments(m_scene.splineBezier, kSplineColor, 1.0);
     for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.otherEnds.size(); ++i)
-        w.bezierSegments(m_scene.otherEnds[i].bezier, CanvasStyle::series(static_cast<int>(i)), 0.8, true);
+        w.bezierSegments(m_scene.otherEnds[i].bezier, tensionColour(m_scene.otherEnds[i].tau), 0.8, true);
     for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.curves.size(); ++i) {
         w.comment(QStringLiteral("tau = %1").arg(tauString(m_scene.curves[i].tau)));
-        w.bezierSegments(m_scene.curves[i].bezier, CanvasStyle::series(static_cast<int>(i)), 1.2);
+        w.bezierSegments(m_scene.curves[i].bezier, tensionColour(m_scene.curves[i].tau), 1.2);
     }
     for (std::size_t i = 0; m_settings.controlPoints && i < points.size(); ++i)
         w.point(points[i], CanvasStyle().handle, QStringLiteral("q_{%1}").arg(i));

@@ -72,6 +72,9 @@ public:
     /// The key in the canvas's corner (and in the TikZ picture): each τ's colour, the compared
     /// ends, the Bézier curve and the spline, and a refusal as its note.
     CanvasLegend legend() const;
+    /// Where the key is drawn in `view`: where it covers least of the curves, clear of the
+    /// points and their labels (canvasLegendRect()).
+    QRectF legendRect(const ViewTransform& view, const CanvasStyle& style) const;
 
 protected:
     void drawTikz(TikzWriter& w) const override;
@@ -106,6 +109,7 @@ private:
     void refuse(const QString& message);
     void drawCurves(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const;
     void drawLegend(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const;
+    CanvasLegendBox legendBox(const ViewTransform& view, const CanvasStyle& style) const;
     QString tensionItemText(const Rational& tau) const;
 
     QCustomPlot* m_plot = nullptr;

@@ -11,13 +11,17 @@
 namespace granota::ui {
 
 namespace {
-constexpr double kToothShare = 0.15; ///< an automatic comb: a typical tooth is this share of the polygon's size
+constexpr double kToothShare = 0.15; ///< an automatic comb: a typical tooth is this share of the curve's size
+constexpr double kToothCap = 0.5;    ///< no tooth is longer than this share of the curve's size (a cusp's)
 constexpr double kPercentile = 0.9;  ///< the typical tooth: the 90th percentile of |κ|, not a cusp's huge one
 
-double polygonSize(const std::vector<Point>& P)
+/// The diagonal of the box of the curve's samples: its size on the canvas. Not the control
+/// polygon's, which at a high fitted degree lies orders of magnitude beyond the curve
+/// (× 10⁶ at n = 30), so that teeth scaled by it would leave any view of the curve.
+double curveSize(const std::vector<Point>& samples)
 {
-    double x0 = P.front().x, x1 = x0, y0 = P.front().y, y1 = y0;
-    for (const Point& q : P) {
+    double x0 = samples.front().x, x1 = x0, y0 = samples.front().y, y1 = y0;
+    for (const Point& q : samples) {
         x0 = std::min(x0, q.x);
         x1 = std::max(x1, q.x);
         y0 = std::min(y0, q.y);
@@ -31,9 +35,6 @@ CurvatureComb curvatureComb(const std::vector<Point>& P, int samples, double sca
 {
     CurvatureComb comb;
     if (P.size() < 2 || samples < 1)
-        return comb;
-    const double size = polygonSize(P);
-    if (!(size > 0) || !std::isfinite(size))
         return comb;
     struct Sample {
         Point point, normal;
@@ -53,6 +54,13 @@ CurvatureComb curvatureComb(const std::vector<Point>& P, int samples, double sca
             magnitudes.push_back(std::fabs(s.kappa));
         }
     }
+    std::vector<Point> points;
+    points.reserve(at.size());
+    for (const Sample& s : at)
+        points.push_back(s.point);
+    const double size = curveSize(points);
+    if (!(size > 0) || !std::isfinite(size))
+        return {};
     if (!(scale > 0)) {
         double typical = 0;
         if (!magnitudes.empty()) {
@@ -72,8 +80,9 @@ CurvatureComb curvatureComb(const std::vector<Point>& P, int samples, double sca
             stretch.clear();
             continue;
         }
-        // Away from the centre of curvature c + N/κ: −κ N, cut at the polygon's size.
-        const double length = std::clamp(-s.kappa * scale, -size, size);
+        // Away from the centre of curvature c + N/κ: −κ N, cut at a share of the curve's size.
+        const double cap = kToothCap * size;
+        const double length = std::clamp(-s.kappa * scale, -cap, cap);
         const Point tip = s.point + length * s.normal;
         comb.teeth.push_back({s.point, tip});
         stretch.push_back(tip);

@@ -33,7 +33,9 @@ struct CurvatureComb {
 
 /// The comb of the curve with control points `P` at `samples` + 1 evenly spaced t. With
 /// `scale` ≤ 0 it is automatic: the teeth of the 90th percentile of |κ| are 15 % of the
-/// control polygon's size long (a tooth near a cusp is cut at the size itself).
+/// curve's size long (the diagonal of its samples' box, not of the control polygon, which a
+/// fit of high degree throws far away). Whatever the scale, no tooth is longer than half the
+/// curve's size (a tooth near a cusp is cut there).
 CurvatureComb curvatureComb(const std::vector<Point>& P, int samples, double scale = 0);
 
 /// The comb's colour (the legend shows it).

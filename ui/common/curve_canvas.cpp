@@ -4,10 +4,12 @@
 #include "ui/common/number_text.h"
 
 #include <QFocusEvent>
+#include <QFontMetricsF>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QWheelEvent>
 
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 
@@ -154,33 +156,99 @@ void CurveCanvas::render(QPainter& painter, const QRectF& target)
     painter.restore();
 }
 
-void CurveCanvas::drawGrid(QPainter& painter, const ViewTransform& view) const
+namespace {
+
+/// The grid lines of a view: x = (i0 + k) step for k = 0…nx, y = (j0 + k) step for k = 0…ny.
+struct GridSpan {
+    double step = 0, i0 = 0, j0 = 0;
+    int nx = -1, ny = -1; ///< −1: no grid
+    double x(int k) const { return (i0 + k) * step; }
+    double y(int k) const { return (j0 + k) * step; }
+};
+
+GridSpan gridSpan(const ViewTransform& view, const CanvasStyle& style)
 {
-    const QRectF area = view.viewport();
+    GridSpan g;
     const QRectF model = view.visibleModelRect();
-    const double step = niceStep(view.scale(), 60.0 * m_style.scale);
-    if (!std::isfinite(step) || step <= 0)
-        return;
+    g.step = niceStep(view.scale(), 60.0 * style.scale);
+    if (!std::isfinite(g.step) || g.step <= 0)
+        return g;
     // The lines are counted from the first multiple of the step, never stepped with x += step:
     // far from the origin at a deep zoom the step is below the coordinates' resolution, and
     // x += step would leave x where it is for ever. At most a few hundred lines, whatever the
     // zoom; none when the multiples of the step cannot be told apart at these coordinates.
-    const double i0 = std::floor(model.left() / step), j0 = std::floor(model.top() / step);
-    const double columns = std::floor(model.right() / step) - i0, rows = std::floor(model.bottom() / step) - j0;
+    g.i0 = std::floor(model.left() / g.step);
+    g.j0 = std::floor(model.top() / g.step);
+    const double columns = std::floor(model.right() / g.step) - g.i0, rows = std::floor(model.bottom() / g.step) - g.j0;
     constexpr double kMaxLines = 400, kExactIntegers = 9007199254740992.0; // 2^53
-    if (!(columns <= kMaxLines && rows <= kMaxLines) || !(std::fabs(i0) + columns < kExactIntegers) ||
-        !(std::fabs(j0) + rows < kExactIntegers))
+    if (!(columns <= kMaxLines && rows <= kMaxLines) || !(std::fabs(g.i0) + columns < kExactIntegers) ||
+        !(std::fabs(g.j0) + rows < kExactIntegers))
+        return g;
+    g.nx = static_cast<int>(columns);
+    g.ny = static_cast<int>(rows);
+    return g;
+}
+
+/// The font of the grid's labels.
+QFont gridLabelFont(const CanvasStyle& style)
+{
+    QFont font = style.labelFont();
+    font.setPointSizeF(font.pointSizeF() * 0.8);
+    return font;
+}
+
+} // namespace
+
+std::vector<CurveCanvas::GridLabel> CurveCanvas::gridLabels(const ViewTransform& view, const QFontMetricsF& metrics) const
+{
+    std::vector<GridLabel> labels;
+    const GridSpan g = gridSpan(view, m_style);
+    const QRectF area = view.viewport();
+    const QPointF origin = view.toScreen({0, 0});
+    const double ax = std::clamp(origin.x(), area.left(), area.right());
+    const double ay = std::clamp(origin.y(), area.top(), area.bottom());
+    // Only a label wholly inside the viewport: the label of a line just off the left edge
+    // starts off it too, and cut there "−0,5" read "0,5".
+    const auto add = [&](const QString& text, const QPointF& baseline) {
+        const QRectF box(baseline.x(), baseline.y() - metrics.ascent(), metrics.horizontalAdvance(text), metrics.height());
+        if (area.contains(box))
+            labels.push_back({text, baseline, box});
+    };
+    const double labelY = std::min(ay + 4 * m_style.scale, area.bottom() - metrics.height());
+    for (int k = 0; k <= g.nx; ++k) {
+        const double x = g.x(k);
+        if (std::fabs(x) < g.step * 1e-6)
+            continue;
+        add(axisLabel(x, g.step), QPointF(view.toScreen({x, 0}).x() + 3 * m_style.scale, labelY + metrics.ascent()));
+    }
+    const double labelX = std::min(ax + 4 * m_style.scale, area.right() - metrics.horizontalAdvance(QStringLiteral("-00000")));
+    for (int k = 0; k <= g.ny; ++k) {
+        const double y = g.y(k);
+        if (std::fabs(y) < g.step * 1e-6)
+            continue;
+        add(axisLabel(y, g.step), QPointF(labelX, view.toScreen({0, y}).y() - 3 * m_style.scale));
+    }
+    return labels;
+}
+
+std::vector<CurveCanvas::GridLabel> CurveCanvas::gridLabels() const
+{
+    return gridLabels(m_view, QFontMetricsF(gridLabelFont(m_style), this));
+}
+
+void CurveCanvas::drawGrid(QPainter& painter, const ViewTransform& view) const
+{
+    const QRectF area = view.viewport();
+    const GridSpan g = gridSpan(view, m_style);
+    if (g.nx < 0)
         return;
-    const int nx = static_cast<int>(columns), ny = static_cast<int>(rows);
-    const auto xAt = [&](int k) { return (i0 + k) * step; };
-    const auto yAt = [&](int k) { return (j0 + k) * step; };
     painter.setPen(QPen(m_style.gridMinor, m_style.thinLine()));
-    for (int k = 0; k <= nx; ++k) {
-        const double sx = view.toScreen({xAt(k), 0}).x();
+    for (int k = 0; k <= g.nx; ++k) {
+        const double sx = view.toScreen({g.x(k), 0}).x();
         painter.drawLine(QPointF(sx, area.top()), QPointF(sx, area.bottom()));
     }
-    for (int k = 0; k <= ny; ++k) {
-        const double sy = view.toScreen({0, yAt(k)}).y();
+    for (int k = 0; k <= g.ny; ++k) {
+        const double sy = view.toScreen({0, g.y(k)}).y();
         painter.drawLine(QPointF(area.left(), sy), QPointF(area.right(), sy));
     }
     // Axes through the origin when visible, labels along them (or along the edges).
@@ -190,27 +258,10 @@ void CurveCanvas::drawGrid(QPainter& painter, const ViewTransform& view) const
     painter.setPen(QPen(m_style.axis, m_style.thinLine() * 1.5));
     painter.drawLine(QPointF(area.left(), ay), QPointF(area.right(), ay));
     painter.drawLine(QPointF(ax, area.top()), QPointF(ax, area.bottom()));
-    QFont font = m_style.labelFont();
-    font.setPointSizeF(font.pointSizeF() * 0.8);
-    painter.setFont(font);
+    painter.setFont(gridLabelFont(m_style));
     painter.setPen(m_style.axis);
-    const double labelY = std::min(ay + 4 * m_style.scale, area.bottom() - painter.fontMetrics().height());
-    for (int k = 0; k <= nx; ++k) {
-        const double x = xAt(k);
-        if (std::fabs(x) < step * 1e-6)
-            continue;
-        const double sx = view.toScreen({x, 0}).x();
-        painter.drawText(QPointF(sx + 3 * m_style.scale, labelY + painter.fontMetrics().ascent()), axisLabel(x, step));
-    }
-    const double labelX = std::min(ax + 4 * m_style.scale,
-                                   area.right() - painter.fontMetrics().horizontalAdvance(QStringLiteral("-00000")));
-    for (int k = 0; k <= ny; ++k) {
-        const double y = yAt(k);
-        if (std::fabs(y) < step * 1e-6)
-            continue;
-        const double sy = view.toScreen({0, y}).y();
-        painter.drawText(QPointF(labelX, sy - 3 * m_style.scale), axisLabel(y, step));
-    }
+    for (const GridLabel& label : gridLabels(view, QFontMetricsF(painter.font(), painter.device())))
+        painter.drawText(label.baseline, label.text);
 }
 
 void CurveCanvas::paintEvent(QPaintEvent*)

@@ -11,6 +11,8 @@
 
 #include <QWidget>
 
+class QFontMetricsF;
+
 #include <functional>
 #include <vector>
 
@@ -58,6 +60,16 @@ public:
     QSizeF exportSize() const override { return size(); }
     void render(QPainter& painter, const QRectF& target) override;
 
+    /// A label of the grid's axes, as drawn: its text, where its baseline starts and its box
+    /// (widget pixels). Only labels wholly inside the viewport are drawn.
+    struct GridLabel {
+        QString text;
+        QPointF baseline;
+        QRectF box;
+    };
+    /// The grid's labels in the canvas's view, with the font they are drawn in.
+    std::vector<GridLabel> gridLabels() const;
+
     QSize sizeHint() const override { return {640, 480}; }
     QSize minimumSizeHint() const override { return {160, 120}; }
 
@@ -77,6 +89,7 @@ protected:
 
 private:
     void drawGrid(QPainter& painter, const ViewTransform& view) const;
+    std::vector<GridLabel> gridLabels(const ViewTransform& view, const QFontMetricsF& metrics) const;
 
     ViewTransform m_view;
     CanvasStyle m_style;

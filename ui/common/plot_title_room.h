@@ -9,8 +9,9 @@
 
 namespace granota::ui {
 
-/// Sets `plot`'s minimum size (nothing else sets it) so that every visible axis title of its main axis rect fits.
-inline void keepAxisTitlesWhole(QCustomPlot* plot)
+/// Sets `plot`'s minimum size (nothing else may set it: this call overrides it) so that every
+/// visible axis title of its main axis rect fits, and its height is at least `minimumHeight`.
+inline void keepAxisTitlesWhole(QCustomPlot* plot, int minimumHeight = 0)
 {
     int height = 0, width = 0;
     for (QCPAxis* axis : plot->axisRect()->axes()) {
@@ -22,7 +23,7 @@ inline void keepAxisTitlesWhole(QCustomPlot* plot)
         int& along = axis->orientation() == Qt::Vertical ? height : width;
         along = std::max(along, room);
     }
-    plot->setMinimumSize(width, height);
+    plot->setMinimumSize(width, std::max(height, minimumHeight));
 }
 
 } // namespace granota::ui

@@ -8,6 +8,7 @@
 #include "core/exact/round_step.h"
 
 #include <QContextMenuEvent>
+#include <QFontMetricsF>
 #include <QKeyEvent>
 #include <QMenu>
 #include <QMouseEvent>
@@ -42,37 +43,57 @@ PointEditor::PointEditor(CurveCanvas* canvas, QUndoStack* undoStack, QObject* pa
             p.drawPath(path);
         }
         p.setFont(style.labelFont());
-        // Past kLabelledPointsUpTo points (unless the user asks for labels) the handles are small
-        // and unlabelled, so that the curve stays visible; the selected one keeps both.
-        const bool labels = labelsShown() && !m_prefix.isEmpty();
-        const double r = style.handleRadius();
-        const double small = m_points.size() > kLabelledPointsUpTo && !m_labelChoice.value_or(false) ? r * 0.5 : r;
-        // Huge data sets (up to kMaxDataPoints in the fitting tab, docs/extreme-cases.md): draw every stride-th
-        // handle and no labels, so that painting stays fast; the selected one always.
-        constexpr std::size_t kMaxDrawnHandles = 5000;
-        const std::size_t stride = (m_points.size() + kMaxDrawnHandles - 1) / kMaxDrawnHandles;
-        for (std::size_t i = 0; i < m_points.size(); ++i) {
-            const bool sel = static_cast<int>(i) == m_selected;
-            if (stride > 1 && i % stride != 0 && !sel)
-                continue;
-            const QPointF s = view.toScreen(m_points[i]);
+        for (const Mark& mark : marks(view, style)) {
+            const bool sel = static_cast<int>(mark.index) == m_selected;
             p.setPen(QPen(Qt::white, style.thinLine()));
             p.setBrush(sel ? style.handleSelected : m_color);
-            p.drawEllipse(s, sel ? r * 1.3 : small, sel ? r * 1.3 : small);
-            const bool named = sel || static_cast<int>(i) == m_hovered; // labelled even when labels step aside
-            if (stride <= 1 && (labels || (named && !m_prefix.isEmpty()))) {
-                // Coincident points (Ex 2.3 closes its curve: P4 = P0) stack their labels.
-                int below = 0;
-                for (std::size_t j = 0; j < i && labels && m_points.size() <= kStackLabelsUpTo; ++j) {
-                    const QPointF d = view.toScreen(m_points[j]) - s;
-                    below += d.x() * d.x() + d.y() * d.y() < r * r;
-                }
+            p.drawEllipse(mark.handle);
+            if (!mark.label.isEmpty()) {
                 p.setPen(style.text);
-                p.drawText(s + QPointF(r + 3 * style.scale, -r + below * p.fontMetrics().height()),
-                           m_prefix + QString::number(i));
+                p.drawText(mark.labelBaseline, m_prefix + QString::number(mark.index));
             }
         }
     });
+}
+
+std::vector<PointEditor::Mark> PointEditor::marks(const ViewTransform& view, const CanvasStyle& style) const
+{
+    std::vector<Mark> out;
+    if (m_points.empty() || !m_handlesVisible)
+        return out;
+    const QFontMetricsF fm(style.labelFont());
+    // Past kLabelledPointsUpTo points (unless the user asks for labels) the handles are small
+    // and unlabelled, so that the curve stays visible; the selected one keeps both.
+    const bool labels = labelsShown() && !m_prefix.isEmpty();
+    const double r = style.handleRadius();
+    const double small = m_points.size() > kLabelledPointsUpTo && !m_labelChoice.value_or(false) ? r * 0.5 : r;
+    // Huge data sets (up to kMaxDataPoints in the fitting tab, docs/extreme-cases.md): draw every stride-th
+    // handle and no labels, so that painting stays fast; the selected one always.
+    constexpr std::size_t kMaxDrawnHandles = 5000;
+    const std::size_t stride = (m_points.size() + kMaxDrawnHandles - 1) / kMaxDrawnHandles;
+    for (std::size_t i = 0; i < m_points.size(); ++i) {
+        const bool sel = static_cast<int>(i) == m_selected;
+        if (stride > 1 && i % stride != 0 && !sel)
+            continue;
+        const QPointF s = view.toScreen(m_points[i]);
+        const double radius = sel ? r * 1.3 : small;
+        Mark mark{i, QRectF(s - QPointF(radius, radius), QSizeF(2 * radius, 2 * radius)), {}, {}};
+        const bool named = sel || static_cast<int>(i) == m_hovered; // labelled even when labels step aside
+        if (stride <= 1 && (labels || (named && !m_prefix.isEmpty()))) {
+            // Coincident points (Ex 2.3 closes its curve: P4 = P0) stack their labels.
+            int below = 0;
+            for (std::size_t j = 0; j < i && labels && m_points.size() <= kStackLabelsUpTo; ++j) {
+                const QPointF d = view.toScreen(m_points[j]) - s;
+                below += d.x() * d.x() + d.y() * d.y() < r * r;
+            }
+            mark.labelBaseline = s + QPointF(r + 3 * style.scale, -r + below * fm.height());
+            const QString text = m_prefix + QString::number(i);
+            mark.label = QRectF(mark.labelBaseline.x(), mark.labelBaseline.y() - fm.ascent(), fm.horizontalAdvance(text),
+                                fm.height());
+        }
+        out.push_back(mark);
+    }
+    return out;
 }
 
 void PointEditor::setHandlesVisible(bool on)

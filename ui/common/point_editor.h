@@ -17,9 +17,13 @@
 
 #include "core/base/vec2.h"
 #include "core/exact/rational.h"
+#include "ui/common/canvas_style.h"
+#include "ui/common/view_transform.h"
 
 #include <QColor>
 #include <QObject>
+#include <QPointF>
+#include <QRectF>
 #include <QString>
 
 #include <cstddef>
@@ -105,6 +109,17 @@ public:
     /// invisible is dragged, added or deleted on the canvas); the table still edits them.
     void setHandlesVisible(bool on);
     bool handlesVisible() const { return m_handlesVisible; }
+
+    /// A handle as drawn, in widget pixels: its disc and its label's box (empty when unlabelled).
+    struct Mark {
+        std::size_t index = 0;
+        QRectF handle;
+        QRectF label;
+        QPointF labelBaseline; ///< where the label's text starts, on its baseline
+    };
+    /// Every handle drawn in `view` (none while the handles are hidden), as the canvas shows it:
+    /// what a key or an inset placed over the canvas keeps clear of.
+    std::vector<Mark> marks(const ViewTransform& view, const CanvasStyle& style) const;
 
     /// The index of the handle within pick distance of a widget position, or −1 (always −1 while
     /// the handles are hidden).

@@ -1,6 +1,7 @@
 #include "ui/common/work_precision_plot.h"
 
 #include "ui/common/canvas_style.h"
+#include "ui/common/plot_tick_room.h"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -191,6 +192,7 @@ void plotWorkPrecision(QCustomPlot* plot, const WorkPrecisionReport& report, dou
     plot->clearGraphs();
     plot->clearItems();
     plot->plotLayout()->setAutoMargins(QCP::msAll);
+    keepTickLabelsInside(plot);
     QSharedPointer<QCPAxisTickerLog> logTicker(new QCPAxisTickerLog);
     for (QCPAxis* axis : {plot->xAxis, plot->yAxis}) {
         axis->setScaleType(QCPAxis::stLogarithmic);

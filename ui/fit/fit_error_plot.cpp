@@ -6,7 +6,9 @@
 #include <qcustomplot.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <set>
 
 namespace granota::ui {
 
@@ -60,7 +62,7 @@ void styleFitErrorPlot(QCustomPlot* plot, double scale)
     plot->legend->setFont(QFont());
 }
 
-int fillFitErrorPlot(QCustomPlot* plot, const FitErrorPlotInput& in)
+FitErrorPlotRange fillFitErrorPlot(QCustomPlot* plot, const FitErrorPlotInput& in)
 {
     FitOptions options;
     options.solver = in.solver;
@@ -85,7 +87,8 @@ int fillFitErrorPlot(QCustomPlot* plot, const FitErrorPlotInput& in)
     for (int g = 0; g < plot->graphCount(); ++g)
         if (g != kCircleGraph)
             plot->graph(g)->data()->clear();
-    int last = 0, tried = 0;
+    int tried = 0;
+    std::set<int> failed; // degrees, over every line
     QVector<double> cx, cy, all;
     const int circled = in.allParametrizations
                             ? kFirstAllGraph + static_cast<int>(std::find(kPlottedParametrizations.begin(),
@@ -96,18 +99,24 @@ int fillFitErrorPlot(QCustomPlot* plot, const FitErrorPlotInput& in)
         QVector<double> x, y;
         for (const DegreeError& e : errors) {
             tried = std::max(tried, e.degree);
-            if (!e.ok)
-                continue; // the normal equations broke down at this degree
             x << e.degree;
+            if (!e.ok) {
+                // The normal equations broke down at this degree: a gap (QCustomPlot breaks a
+                // line at NaN), never a line drawn across the degrees that have no value.
+                y << std::numeric_limits<double>::quiet_NaN();
+                failed.insert(e.degree);
+                continue;
+            }
             y << std::max(e.sse, floor);
-            last = std::max(last, e.degree);
             if (graph == circled && e.degree == in.currentDegree) {
                 cx << e.degree;
                 cy << std::max(e.sse, floor);
             }
         }
         plot->graph(graph)->setData(x, y, true);
-        all += y;
+        for (double v : y)
+            if (!std::isnan(v))
+                all << v;
     }
     plot->graph(kCircleGraph)->setData(cx, cy, true);
     for (std::size_t i = 0; i < kPlottedParametrizations.size(); ++i) {
@@ -119,12 +128,14 @@ int fillFitErrorPlot(QCustomPlot* plot, const FitErrorPlotInput& in)
             g->removeFromLegend();
     }
     plot->legend->setVisible(in.allParametrizations);
-    plot->xAxis->setRange(0.5, std::max(last, 2) + 0.5);
+    // The axis ends at the last degree tried, the one the tab's note names when the plot stops
+    // short: failed degrees at the end are gaps inside the range, not beyond it.
+    plot->xAxis->setRange(0.5, std::max(tried, 2) + 0.5);
     if (!all.isEmpty()) {
         const auto [lo, hi] = std::minmax_element(all.begin(), all.end());
         plot->yAxis->setRange(*lo / 3, *hi * 3);
     }
-    return tried;
+    return {tried, static_cast<int>(failed.size())};
 }
 
 QCPGraph* fitErrorGraph(QCustomPlot* plot, Parametrization p, Parametrization current, bool allParametrizations)

@@ -41,8 +41,15 @@ struct FitErrorPlotInput {
     std::array<QString, 4> names;
 };
 
-/// Fits and plots; returns the highest degree fitted (0 when none; also when its fit failed).
-int fillFitErrorPlot(QCustomPlot* plot, const FitErrorPlotInput& in);
+/// What the plot shows, for the note beside it: one place for the degree where the axis ends.
+struct FitErrorPlotRange {
+    int lastDegree = 0;    ///< the highest degree tried (0 when none), where the x axis ends
+    int failedDegrees = 0; ///< degrees whose fit failed on some line: gaps in it, no line across
+};
+
+/// Fits and plots: a degree whose fit failed is a gap in its line; the x axis ends at the
+/// highest degree tried, failed or not.
+FitErrorPlotRange fillFitErrorPlot(QCustomPlot* plot, const FitErrorPlotInput& in);
 
 /// The graph that shows `p` now, or nullptr.
 QCPGraph* fitErrorGraph(QCustomPlot* plot, Parametrization p, Parametrization current, bool allParametrizations);

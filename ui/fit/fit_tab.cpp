@@ -19,6 +19,7 @@
 #include "ui/fit/fit_exact_view.h"
 #include "ui/common/point_editor.h"
 #include "ui/common/point_extent.h"
+#include "ui/common/plot_tick_room.h"
 #include "ui/common/point_table.h"
 #include "ui/common/plot_title_room.h"
 #include "ui/common/presentation_scale.h"
@@ -109,6 +110,11 @@ public:
     using QComboBox::QComboBox;
     QSize minimumSizeHint() const override { return sizeHint(); }
 };
+
+/// The view takes in the fitted control points when they lie within this many times the
+/// data's size of the data's box (Ex 2.8's P2 lies 1.3 sizes beyond it), so that the data keep
+/// at least a seventh of the view; farther off (a high degree: × 10⁶) they are left out.
+constexpr double kControlPointReach = 3.0;
 
 /// A fitted value in a label: six significant digits.
 QString fittedValueText(double v) { return displaySignificant(v, 6); }
@@ -323,6 +329,7 @@ void FitTab::buildUi()
     // The error against the degree.
     m_plot = new QCustomPlot(this);
     m_plot->setMinimumHeight(120);
+    keepTickLabelsInside(m_plot);
     setUpFitErrorPlot(m_plot); // Σ‖Q_i − α(t_i)‖² for n = 1..min(k, kMaxFitDegree)
     m_plotText = new QCPItemText(m_plot);
     m_plotText->position->setType(QCPItemPosition::ptAxisRectRatio);
@@ -459,7 +466,7 @@ void FitTab::updateComb()
     m_combScaleBox->setEnabled(m_combBox->isChecked());
     if (m_combScale == 0 && !m_comb.empty())
         m_combScaleBox->setAutomaticScale(m_comb.scale);
-    m_canvas->update();
+    m_canvas->setContentBounds(contentBounds()); // the teeth are in the view (unless the user moved it)
 }
 
 void FitTab::addLayers()
@@ -751,15 +758,24 @@ void FitTab::finishFit() const { m_background->finish(); }
 
 QRectF FitTab::contentBounds() const
 {
-    // The view shows the data and the curve, and the control points unless they fly far off
-    // (high degrees put them orders of magnitude away: then the data would shrink to a dot).
-    QRectF bounds = boundsOf(m_editor->points(), m_curve);
-    if (m_fit) {
+    // The view shows the data and the curve; the control points when they are shown, unless
+    // they fly far off (high degrees put them orders of magnitude away: then the data would
+    // shrink to a dot); and the comb's teeth when it is shown (curvature_comb.h keeps them
+    // within half the curve's size of it).
+    const QRectF data = boundsOf(m_editor->points(), m_curve);
+    QRectF bounds = data;
+    if (m_fit && m_display.controlPoints) {
         const QRectF control = boundsOf(m_fit->controlPoints, {});
-        const double size = std::max(bounds.width(), bounds.height());
-        const QRectF near = bounds.adjusted(-0.5 * size, -0.5 * size, 0.5 * size, 0.5 * size);
-        if (near.contains(control))
+        const double size = std::max(data.width(), data.height());
+        const double reach = kControlPointReach * size;
+        if (data.adjusted(-reach, -reach, reach, reach).contains(control))
             bounds = bounds.united(control);
+    }
+    if (m_combBox && m_combBox->isChecked() && !m_comb.empty()) {
+        std::vector<Point> tips;
+        for (const CurvatureComb::Tooth& tooth : m_comb.teeth)
+            tips.push_back(tooth.tip);
+        bounds = bounds.united(boundsOf(tips, {}));
     }
     return bounds;
 }
@@ -902,15 +918,18 @@ void FitTab::updatePlot()
     m_plotLastDegree = plotted;
     in.allParametrizations = m_display.errorPlotAllParametrizations;
     in.names = {tr("uniform"), tr("chord length"), tr("centripetal"), tr("Annex III")};
-    const int reached = fillFitErrorPlot(m_plot, in);
-    // Where the plot stops short of the highest degree allowed, it says why, on the plot.
-    m_plotNote.clear();
-    if (reached > 0 && reached < highest)
-        m_plotNote =
-            tr("Plotted up to n = %1 of %2:\nrefitting every degree for %3 points\non each change would slow the window.")
-                .arg(reached)
-                .arg(highest)
-                .arg(q.size());
+    const FitErrorPlotRange shown = fillFitErrorPlot(m_plot, in);
+    // Where the plot stops short of the highest degree allowed, it says why, on the plot; the
+    // degree it names is the one where the plot's axis ends (shown.lastDegree, failed or not).
+    QStringList note;
+    if (shown.lastDegree > 0 && shown.lastDegree < highest)
+        note << tr("Plotted up to n = %1 of %2:\nrefitting every degree for %3 points\non each change would slow the window.")
+                    .arg(shown.lastDegree)
+                    .arg(highest)
+                    .arg(q.size());
+    if (shown.failedDegrees > 0)
+        note << tr("%n degree(s) left blank: the fit failed there.\nChoose QR or SVD.", nullptr, shown.failedDegrees);
+    m_plotNote = note.join(QLatin1Char('\n'));
     m_plotText->setText(m_plotNote);
     m_plotText->setVisible(!m_plotNote.isEmpty());
     m_plot->replot(QCustomPlot::rpQueuedReplot); // not now: a synchronous repaint would flush the canvas too

@@ -2,6 +2,7 @@
 
 #include "ui/common/canvas_style.h"
 #include "ui/common/number_text.h"
+#include "ui/common/plot_tick_room.h"
 #include "ui/common/presentation_scale.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/shell/exporter.h"
@@ -51,6 +52,7 @@ FrogPlotPanel::FrogPlotPanel(QWidget* parent)
     m_note->setWordWrap(true);
     m_note->setStyleSheet(QStringLiteral("color: #5a5a5a;"));
     m_plot->setMinimumHeight(110);
+    keepTickLabelsInside(m_plot);
     m_plot->setInteractions(QCP::iRangeZoom);
     m_plot->axisRect()->setRangeZoom(Qt::Horizontal);
     m_plot->setNoAntialiasingOnDrag(true);
