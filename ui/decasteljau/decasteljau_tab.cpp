@@ -25,6 +25,7 @@
 #include "ui/common/point_table.h"
 #include "ui/common/tab_order.h"
 #include "ui/common/value_command.h"
+#include "ui/common/widest_text_width.h"
 #include "ui/shell/tikz_writer.h"
 
 #include <QCheckBox>
@@ -202,6 +203,7 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent) : CurveTab(QStringLiteral("decas
     // The controls, in two compact rows above the canvas.
     m_parameter = new DeCasteljauParameterControl(this);
     m_play = new QToolButton(this);
+    m_play->setObjectName(QStringLiteral("decasteljauPlay"));
     m_play->setCheckable(true);
     m_play->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     m_timer = new QTimer(this);
@@ -239,6 +241,7 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent) : CurveTab(QStringLiteral("decas
     m_hodograph = new QCheckBox(this);
     m_speed = new QCheckBox(this);
     m_readout = new QLabel(this);
+    m_readout->setObjectName(QStringLiteral("decasteljauReadout"));
     m_readout->setWordWrap(true);
     m_readout->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_warningLabel = new QLabel(this);
@@ -808,7 +811,16 @@ QString DeCasteljauTab::readout() const
     return lengths + QStringLiteral(" · ") + kappa;
 }
 
-void DeCasteljauTab::updateReadout() { m_readout->setText(readout()); }
+void DeCasteljauTab::updateReadout()
+{
+    // The lengths on one line, the curvature on the next: as t plays, the numbers change
+    // their width, and one long line would wrap at some t and not at others (the panel jumped).
+    QString text = readout();
+    const int joint = text.indexOf(QStringLiteral(" · "));
+    if (joint >= 0)
+        text.replace(joint, 3, QLatin1Char('\n'));
+    m_readout->setText(text);
+}
 
 void DeCasteljauTab::pointsChanged()
 {
@@ -1238,7 +1250,8 @@ void DeCasteljauTab::retranslate()
 {
     updateCanvasSummary();
     m_parameter->retranslate();
-    setPlaying(isPlaying()); // the button's text
+    setPlaying(isPlaying());                                // the button's text
+    keepWidestTextWidth(m_play, {tr("Play"), tr("Pause")}); // one width, playing or not
     m_play->setToolTip(tr("Animate t from 0 to 1 and around again: watch c(t) trace the curve (Def 2.4)."));
     m_samplesLabel->setText(tr("Samples:"));
     const QString samplesTip = tr(

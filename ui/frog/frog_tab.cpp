@@ -8,6 +8,7 @@
 #include "core/base/number_format.h"
 #include "ui/common/value_command.h"
 #include "ui/common/tab_order.h"
+#include "ui/common/widest_text_width.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_json.h"
 #include "ui/frog/frog_parameters_panel.h"
@@ -260,9 +261,15 @@ FrogTab::FrogTab(QWidget* parent)
     m_hint = new QLabel(side);
     m_hint->setWordWrap(true);
     m_note = new QLabel(side);
+    m_note->setObjectName(QStringLiteral("frogNote"));
     m_note->setWordWrap(true);
     m_note->setStyleSheet(QStringLiteral("color: #a4431b;"));
     m_note->hide();
+    // A refusal that goes away leaves its room: the panel keeps its height, and its scroll
+    // bar stays where the user had it (at the bottom, it would have jumped).
+    QSizePolicy notePolicy = m_note->sizePolicy();
+    notePolicy.setRetainSizeWhenHidden(true);
+    m_note->setSizePolicy(notePolicy);
     column->addWidget(m_hint);
     column->addWidget(m_note);
     column->addStretch(1);
@@ -896,6 +903,7 @@ void FrogTab::retranslate()
         tr("Scene %1, %2 solver")
             .arg(sceneTitle(fromStd(m_scene.name)), m_solverCombo->itemText(m_solver == SolverKind::Stable ? 1 : 0)));
     m_pause->setText(m_pause->isChecked() ? tr("Run") : tr("Pause"));
+    keepWidestTextWidth(m_pause, {tr("Run"), tr("Pause")}); // one width, running or not
     m_pause->setToolTip(tr("Pause or run the animation, one fixed step per frame at 60 frames per second (P)."));
     m_step->setText(tr("Step"));
     m_step->setToolTip(tr("One fixed step, as one call of actualitza() in Annex II; pauses first (S or .)."));
@@ -1046,6 +1054,8 @@ void FrogTab::updateTimeline()
                                          .arg(m_mark);
     }
     m_timelineLabel->setText(shown);
+    // Room for the stopwatch's second line, marked or not: the canvas keeps its size when it appears.
+    m_timelineLabel->setMinimumHeight(2 * m_timelineLabel->fontMetrics().lineSpacing());
     // As wide as the widest text with this many digits, so that the slider does not jitter.
     const int digits = int(QString::number(end).size());
     if (digits == m_timelineDigits)
