@@ -1203,6 +1203,14 @@ void FrogCanvas::drawHead(QPainter& p, int body)
     m_art.paintHead(p, at, pose.angle, scale, look);
 }
 
+void FrogCanvas::paintHeadOf(QPainter& p, int index)
+{
+    if (!sim() || index < 0 || index >= sim()->bodyCount())
+        return;
+    sim()->bodyVertices(index, m_vertices);
+    drawHead(p, index);
+}
+
 HeadPose FrogCanvas::headPose(const std::vector<Point>& vertices) const
 {
     // The seed draws the head as Annex II does: upright, its 138 × 93 box at vertex 0 − (69, 46)

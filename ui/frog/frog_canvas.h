@@ -244,6 +244,9 @@ public:
     const std::vector<Point>& bodyOutline(int body);
     /// The art the canvas paints with (its colours and the feet), for the TikZ picture.
     const FrogArt& art() const { return m_art; }
+    /// The head of body `index` as the canvas paints it (FrogArt::paintHead at its pose), in
+    /// scene coordinates: for the TikZ export, which records it as paths (path_recorder.h).
+    void paintHeadOf(QPainter& p, int index);
     /// The half width of a leg's outline (Annex II, Pota.dibuixar: the factor 7).
     static constexpr double kLegHalfWidth = 7;
 

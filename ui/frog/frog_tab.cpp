@@ -1,6 +1,7 @@
 #include "ui/frog/frog_tab.h"
 #include "ui/common/error_text.h"
 #include "ui/common/number_text.h"
+#include "ui/common/path_recorder.h"
 
 #include "core/softbody/outline.h"
 #include "core/softbody/scenes/scene_texts.h"
@@ -46,6 +47,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace granota::ui {
@@ -1512,6 +1514,8 @@ void FrogTab::drawTikz(TikzWriter& w) const
         leg(0);
         leg(1);
     }
+    if (m_scene.model == SceneModel::Frog && m_scene.has("head") && sim->bodyCount() > 0)
+        drawTikzHead(w);
     if (m_scene.model == SceneModel::Pendulum)
         for (int c = 0; c < sim->chainCount(); ++c) {
             sim->chainJoints(c, pts);
@@ -1519,6 +1523,35 @@ void FrogTab::drawTikz(TikzWriter& w) const
             for (const Point& p : pts)
                 w.point(Point(p.x, H - p.y), QColor(0xf2, 0xb1, 0x34));
         }
+}
+
+void FrogTab::drawTikzHead(TikzWriter& w) const
+{
+    // The head as the canvas paints it over the body (FrogCanvas::drawScene), recorded as
+    // paths (as Figs 4.11 and 4.12 are): each filled outline filled, each line drawn.
+    const double H = m_scene.params.height;
+    PathRecorder recorder(QSize(int(std::ceil(m_scene.params.width)), int(std::ceil(H))));
+    {
+        QPainter p(&recorder);
+        m_canvas->paintHeadOf(p, 0);
+    }
+    w.comment(QStringLiteral("the head"));
+    const auto opaque = [](const QColor& c) { return c.isValid() ? QColor(c.red(), c.green(), c.blue()) : QColor(); };
+    for (const PathRecorder::Shape& shape : recorder.shapes()) {
+        // Scene px to the picture's pt, as the body's 4 px pen is drawn 0.8 pt above.
+        const double width = std::max(0.2, shape.strokeWidth * 0.2);
+        for (const QPolygonF& polygon : shape.path.toSubpathPolygons()) {
+            if (polygon.size() < 2)
+                continue;
+            std::vector<Point> points;
+            for (const QPointF& q : polygon)
+                points.emplace_back(q.x(), H - q.y());
+            if (shape.fill.isValid() && polygon.size() > 2)
+                w.polygon(points, opaque(shape.stroke), opaque(shape.fill), width);
+            else if (shape.stroke.isValid())
+                w.polyline(points, opaque(shape.stroke), width, false, polygon.isClosed());
+        }
+    }
 }
 
 long FrogTab::shownStep() const
