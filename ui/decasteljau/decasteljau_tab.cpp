@@ -78,6 +78,7 @@ const QColor kTangentColour(0x6a, 0x3d, 0x9a);
 const QColor kNormalColour(0xb1, 0x59, 0x28);
 const QColor kCircleColour(0x7b, 0x8d, 0x2a);
 const QColor kBoxColour(0x5e, 0x6a, 0x78);
+const QColor kExtremumEdge(0x1c, 0x2a, 0x33); ///< the edge of an extremum's ◆
 const QColor kInflectionColour(0xd6, 0x27, 0x8b);
 const QColor kCuspColour(0xc0, 0x20, 0x20);
 
@@ -417,8 +418,10 @@ void DeCasteljauTab::buildLayers()
         p.setPen(QPen(kBoxColour, style.thinLine() * 1.3, Qt::DashDotLine));
         p.setBrush(Qt::NoBrush);
         p.drawRect(QRectF(view.toScreen(box.min), view.toScreen(box.max)).normalized());
-        const double r = style.handleRadius() * 0.75;
-        p.setPen(QPen(Qt::white, style.thinLine()));
+        // Large, with a dark edge of the canvas's line width: a white 1 px edge round a slate
+        // diamond of 9 px was lost on a projector (issue 34).
+        const double r = style.handleRadius();
+        p.setPen(QPen(kExtremumEdge, style.lineWidth(), Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
         p.setBrush(kBoxColour);
         const auto& points = m_editor->points();
         for (const auto* list : {&m_features.extremaX, &m_features.extremaY})

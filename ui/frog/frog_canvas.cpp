@@ -47,6 +47,8 @@ const QColor kVelocityColour(0x1f, 0x5f, 0xd8);
 const QColor kGhostColour(0x5a, 0x2d, 0x82);
 const QColor kTrailColour(0xe0, 0x6c, 0x00);
 const QColor kPairColour(0xc2, 0x18, 0x5b);
+/// The thinnest the bare polygon of §4.1–4.7 is drawn, in widget pixels (before presentation mode's scale).
+constexpr double kInkMinimumPx = 2.5;
 const QColor kProtractorColour(0x1e, 0x5a, 0x9c);
 const QColor kMarkedBodyColour(0xd8, 0x1b, 0x60); // the body the plots show alone
 const QColor kAtLimitColour(0xc6, 0x28, 0x28);
@@ -460,9 +462,10 @@ void FrogCanvas::drawPairs(QPainter& p)
     sim()->broadPhasePairs(m_pairs);
     if (m_pairs.empty())
         return;
-    QPen box(kPairColour, 1.2 * m_style.scale, Qt::DashLine);
+    // Thick enough for a projector (they were 1.2 px): widget pixels, scaled in presentation mode.
+    QPen box(kPairColour, 2.5 * m_style.scale, Qt::DashLine);
     box.setCosmetic(true);
-    QPen link(kPairColour, 2 * m_style.scale);
+    QPen link(kPairColour, 3 * m_style.scale);
     link.setCosmetic(true);
     p.save();
     p.setBrush(Qt::NoBrush);
@@ -1255,7 +1258,7 @@ const std::vector<Point>& FrogCanvas::bodyOutline(int body)
     return m_vertices; // §4.1–4.8 and the precomputed Bézier points: the polygon itself
 }
 
-void FrogCanvas::drawBody(QPainter& p, int body, double)
+void FrogCanvas::drawBody(QPainter& p, int body, double pixel)
 {
     const SceneSpec& scene = sim()->scene();
     const std::vector<Point>& outline = bodyOutline(body);
@@ -1267,7 +1270,11 @@ void FrogCanvas::drawBody(QPainter& p, int body, double)
         p.setPen(m_art.bodyPen());
     } else {
         p.setBrush(Qt::NoBrush);
-        p.setPen(m_art.inkPen());
+        // §4.1–4.7's bare polygon: never thinner than kInkMinimumPx on screen (its 3 scene px
+        // were 1 px on a small canvas, too faint for a projector), thicker in presentation mode.
+        QPen ink = m_art.inkPen();
+        ink.setWidthF(std::max(ink.widthF(), kInkMinimumPx * m_style.scale * pixel));
+        p.setPen(ink);
     }
     p.drawPath(m_path);
     if (scene.has("head") && scene.model != SceneModel::Frog)
