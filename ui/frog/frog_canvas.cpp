@@ -1,4 +1,5 @@
 #include "ui/frog/frog_canvas.h"
+#include "ui/common/segment_clip.h"
 #include "ui/common/error_text.h"
 #include "core/base/math_constants.h"
 #include "ui/common/focus_frame.h"
@@ -49,6 +50,8 @@ const QColor kTrailColour(0xe0, 0x6c, 0x00);
 const QColor kPairColour(0xc2, 0x18, 0x5b);
 /// The thinnest the bare polygon of §4.1–4.7 is drawn, in widget pixels (before presentation mode's scale).
 constexpr double kInkMinimumPx = 2.5;
+/// How much of the trail is drawn at most: this many times the frame's width plus height.
+constexpr double kTrailInkBudget = 20;
 const QColor kProtractorColour(0x1e, 0x5a, 0x9c);
 const QColor kMarkedBodyColour(0xd8, 0x1b, 0x60); // the body the plots show alone
 const QColor kAtLimitColour(0xc6, 0x28, 0x28);
@@ -608,16 +611,35 @@ void FrogCanvas::drawRuler(QPainter& p, double pixel)
 
 void FrogCanvas::drawTrail(QPainter& p)
 {
+    m_trailSegmentsDrawn = 0;
     if (m_trail.size() < 2)
         return;
-    QPen pen(kTrailColour, 2 * m_style.scale, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin);
+    // Square caps: Qt strokes a thick round cap as a curve, a hundred times slower.
+    QPen pen(kTrailColour, 2 * m_style.scale, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin);
     pen.setCosmetic(true);
-    m_work.assign(m_trail.begin(), m_trail.end());
-    fillPath(m_work, false);
+    // Only what the frame shows (the canvas clips to it), each segment cut to it and stroked
+    // on its own: a blown-up seed's trail crosses the frame hundreds of times, and stroking it
+    // as one path with round joins and caps (its outline overlapping itself everywhere) took
+    // Qt 4.7 s a frame (tests/benchmarks/bench_gui.cpp, BM_GuiSeedExplodedTrail).
+    const SceneSpec& scene = sim()->scene();
+    const double margin = 0.05 * std::max(scene.params.width, scene.params.height);
+    const QRectF frame = QRectF(0, 0, scene.params.width, scene.params.height).adjusted(-margin, -margin, margin, margin);
+    // The newest first, up to kTrailInkBudget frames' worth of line: a trail that sweeps the
+    // frame back and forth every step (a blown-up body) is noise past that, and each sweep
+    // costs a frame's width of stroking; an ordinary trail stays far below it.
+    const double budget = kTrailInkBudget * (scene.params.width + scene.params.height);
+    double ink = 0;
+    m_trailLines.clear();
+    for (std::size_t i = m_trail.size() - 1; i >= 1 && ink < budget; --i)
+        if (const auto part = clipSegment(m_trail[i - 1], m_trail[i], frame)) {
+            m_trailLines.emplace_back(part->first.x, part->first.y, part->second.x, part->second.y);
+            ink += m_trailLines.back().length();
+        }
+    m_trailSegmentsDrawn = int(m_trailLines.size());
     p.save();
     p.setPen(pen);
     p.setBrush(Qt::NoBrush);
-    p.drawPath(m_path);
+    p.drawLines(m_trailLines.data(), int(m_trailLines.size()));
     p.restore();
 }
 
