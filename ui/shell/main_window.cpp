@@ -184,6 +184,10 @@ MainWindow::~MainWindow()
     // Nor the focus moving as the window closes (updateHint would read deleted tabs).
     disconnect(qApp, nullptr, this, nullptr);
     qApp->removeEventFilter(this);
+    // Nor a tab's message: a field still being typed in commits its text as it loses the
+    // focus while the window closes, and the tab says so to a status bar already deleted.
+    for (TabPage* page : m_pages)
+        disconnect(page, nullptr, this, nullptr);
 }
 
 QMargins MainWindow::frameAllowance() const
