@@ -321,6 +321,27 @@ private slots:
         QVERIFY(tex.indexOf(QStringLiteral("fill=g30A130")) > clip);
     }
 
+    // Issue 34, item 10: the frog's head is in its TikZ, over the body, as the canvas paints
+    // it: after a "% the head" comment, its paths, the eye whites filled with their colour. At least the parts FrogArt draws for it are there: the outline, two
+    // cheeks, two eye whites, two nostrils, the mouth and two pupils (frog_art.cpp,
+    // paintHeadStill and paintPupils), 10 paths. The export compiles with the rest in
+    // test_gui_tikz_latex (its frog figure is this scene).
+    void frogTikzHasTheHead()
+    {
+        MainWindow window;
+        QVERIFY(showOnTab(window, QStringLiteral("frog")));
+        auto* tab = window.findChild<FrogTab*>();
+        QVERIFY(tab);
+        const QString tex = tab->tikz();
+        const int head = static_cast<int>(tex.indexOf(QStringLiteral("% the head")));
+        QVERIFY2(head > 0, qPrintable(tex));
+        const QString after = tex.mid(head);
+        const QStringList paths =
+            after.split(QLatin1Char('\n')).filter(QRegularExpression(QStringLiteral("^\\s*\\\\(draw|fill|filldraw)\\b")));
+        QVERIFY2(paths.size() >= 10, qPrintable(after));
+        QVERIFY2(after.contains(QStringLiteral("fill=gFDFDF4")), qPrintable(after)); // the eye whites, frog_art.cpp
+    }
+
     // File ▸ Export ▸ Frog animation as PNG frames, through its dialogs while the run goes on:
     // 3 frames of the size chosen (the default, 1280 × 720, even sides), frame k the picture
     // of the run at the step shown when the menu was chosen plus k (rendered here after

@@ -151,9 +151,42 @@ void BM_GuiFrog200Plots(benchmark::State& state)
     state.counters["samples"] = static_cast<double>(tab.canvas()->series().samples().size());
 }
 
+// Issue 34: a seed body that has blown up (Ex "area" with velmax 1000: its vertices fly
+// thousands of scene px away, and on) with the trail on — the trail's 600 points far outside
+// the canvas — painted as on screen. It was 7 frames a second in the classroom.
+void BM_GuiSeedExplodedTrail(benchmark::State& state)
+{
+    ensureApplication();
+    FrogTab tab;
+    tab.resize(1280, 760);
+    QString error;
+    if (!tab.setScene(QStringLiteral("area"), &error) || !tab.setSolver(SolverKind::Seed, &error) ||
+        !tab.editParameter(QStringLiteral("velmax"), 1000, &error)) {
+        state.SkipWithError(qPrintable(error));
+        return;
+    }
+    FrogCanvas* canvas = tab.canvas();
+    canvas->setRunning(false);
+    FrogCanvas::Overlays overlays = canvas->overlays();
+    overlays.trail = state.range(0) != 0; // 0: the body alone, to compare
+    canvas->setOverlays(overlays);
+    tab.show();
+    QCoreApplication::processEvents();
+    for (int i = 0; i < 600; ++i)
+        canvas->step(); // blown up, and the trail full
+    for (auto _ : state) {
+        canvas->step();
+        canvas->repaint();
+    }
+    state.counters["frame_budget_ms"] = 1000.0 / 60.0;
+    state.counters["trail_points"] = static_cast<double>(canvas->trail().size());
+    state.counters["trail_segments_drawn"] = static_cast<double>(canvas->trailSegmentsDrawn());
+}
+
 } // namespace
 
 BENCHMARK(BM_GuiFrog200Plots)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GuiDragDegree30)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GuiDragDegree30AllOverlays)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GuiFrog200)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GuiSeedExplodedTrail)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);

@@ -12,6 +12,11 @@
 ///   committed first (QAbstractSpinBox::interpretText), then the key goes to the window's
 ///   Edit ▸ Undo or Redo instead of the field's own text undo (QLineEdit would take it as a
 ///   ShortcutOverride).
+/// - **A typed value out of range is refused with a word.** Qt's spin box drops a digit that
+///   takes the number past its maximum, and on Enter or when the field is left puts the last
+///   value back, both in silence (sides `2` became 10 again; `20000` in a box of maximum 2000
+///   was 2000). The status bar (a tooltip in a dialog) says "… must be between 3 and 64."; Enter
+///   leaves the typed text in the field to be corrected, applying nothing (issue 34, item 11).
 ///
 /// Installed once on the QApplication (MainWindow's constructor does it).
 #include <QObject>

@@ -53,7 +53,9 @@ private:
             shape.fill = colourOf(m_brush);
         if (m_pen.style() != Qt::NoPen) {
             shape.stroke = colourOf(m_pen.brush());
-            shape.strokeWidth = m_pen.widthF() * std::sqrt(std::abs(m_transform.determinant()));
+            // A cosmetic pen is as wide on the device whatever the transform.
+            shape.strokeWidth = m_pen.isCosmetic() ? m_pen.widthF()
+                                                   : m_pen.widthF() * std::sqrt(std::abs(m_transform.determinant()));
         }
         if (shape.fill.isValid() || shape.stroke.isValid())
             m_device->m_shapes.push_back(std::move(shape));

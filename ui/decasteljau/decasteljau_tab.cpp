@@ -25,6 +25,7 @@
 #include "ui/common/point_table.h"
 #include "ui/common/tab_order.h"
 #include "ui/common/value_command.h"
+#include "ui/common/widest_text_width.h"
 #include "ui/shell/tikz_writer.h"
 
 #include <QCheckBox>
@@ -77,6 +78,7 @@ const QColor kTangentColour(0x6a, 0x3d, 0x9a);
 const QColor kNormalColour(0xb1, 0x59, 0x28);
 const QColor kCircleColour(0x7b, 0x8d, 0x2a);
 const QColor kBoxColour(0x5e, 0x6a, 0x78);
+const QColor kExtremumEdge(0x1c, 0x2a, 0x33); ///< the edge of an extremum's ◆
 const QColor kInflectionColour(0xd6, 0x27, 0x8b);
 const QColor kCuspColour(0xc0, 0x20, 0x20);
 
@@ -202,6 +204,7 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent) : CurveTab(QStringLiteral("decas
     // The controls, in two compact rows above the canvas.
     m_parameter = new DeCasteljauParameterControl(this);
     m_play = new QToolButton(this);
+    m_play->setObjectName(QStringLiteral("decasteljauPlay"));
     m_play->setCheckable(true);
     m_play->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     m_timer = new QTimer(this);
@@ -239,6 +242,7 @@ DeCasteljauTab::DeCasteljauTab(QWidget* parent) : CurveTab(QStringLiteral("decas
     m_hodograph = new QCheckBox(this);
     m_speed = new QCheckBox(this);
     m_readout = new QLabel(this);
+    m_readout->setObjectName(QStringLiteral("decasteljauReadout"));
     m_readout->setWordWrap(true);
     m_readout->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_warningLabel = new QLabel(this);
@@ -414,8 +418,10 @@ void DeCasteljauTab::buildLayers()
         p.setPen(QPen(kBoxColour, style.thinLine() * 1.3, Qt::DashDotLine));
         p.setBrush(Qt::NoBrush);
         p.drawRect(QRectF(view.toScreen(box.min), view.toScreen(box.max)).normalized());
-        const double r = style.handleRadius() * 0.75;
-        p.setPen(QPen(Qt::white, style.thinLine()));
+        // Large, with a dark edge of the canvas's line width: a white 1 px edge round a slate
+        // diamond of 9 px was lost on a projector (issue 34).
+        const double r = style.handleRadius();
+        p.setPen(QPen(kExtremumEdge, style.lineWidth(), Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin));
         p.setBrush(kBoxColour);
         const auto& points = m_editor->points();
         for (const auto* list : {&m_features.extremaX, &m_features.extremaY})
@@ -808,7 +814,16 @@ QString DeCasteljauTab::readout() const
     return lengths + QStringLiteral(" · ") + kappa;
 }
 
-void DeCasteljauTab::updateReadout() { m_readout->setText(readout()); }
+void DeCasteljauTab::updateReadout()
+{
+    // The lengths on one line, the curvature on the next: as t plays, the numbers change
+    // their width, and one long line would wrap at some t and not at others (the panel jumped).
+    QString text = readout();
+    const int joint = text.indexOf(QStringLiteral(" · "));
+    if (joint >= 0)
+        text.replace(joint, 3, QLatin1Char('\n'));
+    m_readout->setText(text);
+}
 
 void DeCasteljauTab::pointsChanged()
 {
@@ -1238,7 +1253,8 @@ void DeCasteljauTab::retranslate()
 {
     updateCanvasSummary();
     m_parameter->retranslate();
-    setPlaying(isPlaying()); // the button's text
+    setPlaying(isPlaying());                                // the button's text
+    keepWidestTextWidth(m_play, {tr("Play"), tr("Pause")}); // one width, playing or not
     m_play->setToolTip(tr("Animate t from 0 to 1 and around again: watch c(t) trace the curve (Def 2.4)."));
     m_samplesLabel->setText(tr("Samples:"));
     const QString samplesTip = tr(

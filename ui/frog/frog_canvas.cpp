@@ -1,4 +1,5 @@
 #include "ui/frog/frog_canvas.h"
+#include "ui/common/segment_clip.h"
 #include "ui/common/error_text.h"
 #include "core/base/math_constants.h"
 #include "ui/common/focus_frame.h"
@@ -47,6 +48,10 @@ const QColor kVelocityColour(0x1f, 0x5f, 0xd8);
 const QColor kGhostColour(0x5a, 0x2d, 0x82);
 const QColor kTrailColour(0xe0, 0x6c, 0x00);
 const QColor kPairColour(0xc2, 0x18, 0x5b);
+/// The thinnest the bare polygon of §4.1–4.7 is drawn, in widget pixels (before presentation mode's scale).
+constexpr double kInkMinimumPx = 2.5;
+/// How much of the trail is drawn at most: this many times the frame's width plus height.
+constexpr double kTrailInkBudget = 20;
 const QColor kProtractorColour(0x1e, 0x5a, 0x9c);
 const QColor kMarkedBodyColour(0xd8, 0x1b, 0x60); // the body the plots show alone
 const QColor kAtLimitColour(0xc6, 0x28, 0x28);
@@ -460,9 +465,10 @@ void FrogCanvas::drawPairs(QPainter& p)
     sim()->broadPhasePairs(m_pairs);
     if (m_pairs.empty())
         return;
-    QPen box(kPairColour, 1.2 * m_style.scale, Qt::DashLine);
+    // Thick enough for a projector (they were 1.2 px): widget pixels, scaled in presentation mode.
+    QPen box(kPairColour, 2.5 * m_style.scale, Qt::DashLine);
     box.setCosmetic(true);
-    QPen link(kPairColour, 2 * m_style.scale);
+    QPen link(kPairColour, 3 * m_style.scale);
     link.setCosmetic(true);
     p.save();
     p.setBrush(Qt::NoBrush);
@@ -605,16 +611,35 @@ void FrogCanvas::drawRuler(QPainter& p, double pixel)
 
 void FrogCanvas::drawTrail(QPainter& p)
 {
+    m_trailSegmentsDrawn = 0;
     if (m_trail.size() < 2)
         return;
-    QPen pen(kTrailColour, 2 * m_style.scale, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin);
+    // Square caps: Qt strokes a thick round cap as a curve, a hundred times slower.
+    QPen pen(kTrailColour, 2 * m_style.scale, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin);
     pen.setCosmetic(true);
-    m_work.assign(m_trail.begin(), m_trail.end());
-    fillPath(m_work, false);
+    // Only what the frame shows (the canvas clips to it), each segment cut to it and stroked
+    // on its own: a blown-up seed's trail crosses the frame hundreds of times, and stroking it
+    // as one path with round joins and caps (its outline overlapping itself everywhere) took
+    // Qt 4.7 s a frame (tests/benchmarks/bench_gui.cpp, BM_GuiSeedExplodedTrail).
+    const SceneSpec& scene = sim()->scene();
+    const double margin = 0.05 * std::max(scene.params.width, scene.params.height);
+    const QRectF frame = QRectF(0, 0, scene.params.width, scene.params.height).adjusted(-margin, -margin, margin, margin);
+    // The newest first, up to kTrailInkBudget frames' worth of line: a trail that sweeps the
+    // frame back and forth every step (a blown-up body) is noise past that, and each sweep
+    // costs a frame's width of stroking; an ordinary trail stays far below it.
+    const double budget = kTrailInkBudget * (scene.params.width + scene.params.height);
+    double ink = 0;
+    m_trailLines.clear();
+    for (std::size_t i = m_trail.size() - 1; i >= 1 && ink < budget; --i)
+        if (const auto part = clipSegment(m_trail[i - 1], m_trail[i], frame)) {
+            m_trailLines.emplace_back(part->first.x, part->first.y, part->second.x, part->second.y);
+            ink += m_trailLines.back().length();
+        }
+    m_trailSegmentsDrawn = int(m_trailLines.size());
     p.save();
     p.setPen(pen);
     p.setBrush(Qt::NoBrush);
-    p.drawPath(m_path);
+    p.drawLines(m_trailLines.data(), int(m_trailLines.size()));
     p.restore();
 }
 
@@ -1203,6 +1228,14 @@ void FrogCanvas::drawHead(QPainter& p, int body)
     m_art.paintHead(p, at, pose.angle, scale, look);
 }
 
+void FrogCanvas::paintHeadOf(QPainter& p, int index)
+{
+    if (!sim() || index < 0 || index >= sim()->bodyCount())
+        return;
+    sim()->bodyVertices(index, m_vertices);
+    drawHead(p, index);
+}
+
 HeadPose FrogCanvas::headPose(const std::vector<Point>& vertices) const
 {
     // The seed draws the head as Annex II does: upright, its 138 × 93 box at vertex 0 − (69, 46)
@@ -1247,7 +1280,7 @@ const std::vector<Point>& FrogCanvas::bodyOutline(int body)
     return m_vertices; // §4.1–4.8 and the precomputed Bézier points: the polygon itself
 }
 
-void FrogCanvas::drawBody(QPainter& p, int body, double)
+void FrogCanvas::drawBody(QPainter& p, int body, double pixel)
 {
     const SceneSpec& scene = sim()->scene();
     const std::vector<Point>& outline = bodyOutline(body);
@@ -1259,7 +1292,11 @@ void FrogCanvas::drawBody(QPainter& p, int body, double)
         p.setPen(m_art.bodyPen());
     } else {
         p.setBrush(Qt::NoBrush);
-        p.setPen(m_art.inkPen());
+        // §4.1–4.7's bare polygon: never thinner than kInkMinimumPx on screen (its 3 scene px
+        // were 1 px on a small canvas, too faint for a projector), thicker in presentation mode.
+        QPen ink = m_art.inkPen();
+        ink.setWidthF(std::max(ink.widthF(), kInkMinimumPx * m_style.scale * pixel));
+        p.setPen(ink);
     }
     p.drawPath(m_path);
     if (scene.has(SceneComponent::Head) && scene.model != SceneModel::Frog)

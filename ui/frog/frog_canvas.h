@@ -18,6 +18,7 @@
 #include "ui/frog/frog_art.h"
 
 #include <QElapsedTimer>
+#include <QLineF>
 #include <QPainterPath>
 #include <QPixmap>
 #include <QStaticText>
@@ -104,6 +105,10 @@ public:
     /// The trail's points, oldest first (one a step while the overlay is on; a new run or a
     /// seek starts it again).
     const std::deque<Point>& trail() const { return m_trail; }
+    /// The trail's segments the last paint drew: those in the frame, cut to it, the newest
+    /// first up to 20 times the frame's width plus height of line (a blown-up body's trail
+    /// sweeps the frame every step; frog_canvas.cpp, kTrailInkBudget).
+    int trailSegmentsDrawn() const { return m_trailSegmentsDrawn; }
     /// Follows the vertex or joint nearest to `at` (scene px), within 30 px; false if none.
     bool chooseTrailPoint(Point at);
     /// The ruler: a measure in scene px between two points the user set, dragged with the
@@ -244,6 +249,9 @@ public:
     const std::vector<Point>& bodyOutline(int body);
     /// The art the canvas paints with (its colours and the feet), for the TikZ picture.
     const FrogArt& art() const { return m_art; }
+    /// The head of body `index` as the canvas paints it (FrogArt::paintHead at its pose), in
+    /// scene coordinates: for the TikZ export, which records it as paths (path_recorder.h).
+    void paintHeadOf(QPainter& p, int index);
     /// The half width of a leg's outline (Annex II, Pota.dibuixar: the factor 7).
     static constexpr double kLegHalfWidth = 7;
 
@@ -371,7 +379,9 @@ private:
     std::vector<ProtractorLabel> m_protractorLabels; // drawProtractor's, kept for their capacity
     std::vector<QRectF> m_protractorBoxes;
     std::deque<Point> m_trail;
-    std::string m_trailScene; // the stage m_trailPoint was chosen in
+    int m_trailSegmentsDrawn = 0;
+    std::vector<QLineF> m_trailLines; ///< reused by drawTrail: a frame allocates nothing
+    std::string m_trailScene;         // the stage m_trailPoint was chosen in
     std::vector<Point> m_trailBuffer;
     FrogArt m_art;
     CanvasStyle m_style;

@@ -1,6 +1,7 @@
 #include "ui/frog/frog_tab.h"
 #include "ui/common/error_text.h"
 #include "ui/common/number_text.h"
+#include "ui/common/path_recorder.h"
 
 #include "core/softbody/outline.h"
 #include "core/softbody/scenes/scene_texts.h"
@@ -8,6 +9,7 @@
 #include "core/base/number_format.h"
 #include "ui/common/value_command.h"
 #include "ui/common/tab_order.h"
+#include "ui/common/widest_text_width.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_json.h"
 #include "ui/frog/frog_parameters_panel.h"
@@ -45,6 +47,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace granota::ui {
@@ -260,9 +263,15 @@ FrogTab::FrogTab(QWidget* parent)
     m_hint = new QLabel(side);
     m_hint->setWordWrap(true);
     m_note = new QLabel(side);
+    m_note->setObjectName(QStringLiteral("frogNote"));
     m_note->setWordWrap(true);
     m_note->setStyleSheet(QStringLiteral("color: #a4431b;"));
     m_note->hide();
+    // A refusal that goes away leaves its room: the panel keeps its height, and its scroll
+    // bar stays where the user had it (at the bottom, it would have jumped).
+    QSizePolicy notePolicy = m_note->sizePolicy();
+    notePolicy.setRetainSizeWhenHidden(true);
+    m_note->setSizePolicy(notePolicy);
     column->addWidget(m_hint);
     column->addWidget(m_note);
     column->addStretch(1);
@@ -896,6 +905,7 @@ void FrogTab::retranslate()
         tr("Scene %1, %2 solver")
             .arg(sceneTitle(fromStd(m_scene.name)), m_solverCombo->itemText(m_solver == SolverKind::Stable ? 1 : 0)));
     m_pause->setText(m_pause->isChecked() ? tr("Run") : tr("Pause"));
+    keepWidestTextWidth(m_pause, {tr("Run"), tr("Pause")}); // one width, running or not
     m_pause->setToolTip(tr("Pause or run the animation, one fixed step per frame at 60 frames per second (P)."));
     m_step->setText(tr("Step"));
     m_step->setToolTip(tr("One fixed step, as one call of actualitza() in Annex II; pauses first (S or .)."));
@@ -1046,6 +1056,8 @@ void FrogTab::updateTimeline()
                                          .arg(m_mark);
     }
     m_timelineLabel->setText(shown);
+    // Room for the stopwatch's second line, marked or not: the canvas keeps its size when it appears.
+    m_timelineLabel->setMinimumHeight(2 * m_timelineLabel->fontMetrics().lineSpacing());
     // As wide as the widest text with this many digits, so that the slider does not jitter.
     const int digits = int(QString::number(end).size());
     if (digits == m_timelineDigits)
@@ -1502,6 +1514,8 @@ void FrogTab::drawTikz(TikzWriter& w) const
         leg(0);
         leg(1);
     }
+    if (m_scene.model == SceneModel::Frog && m_scene.has("head") && sim->bodyCount() > 0)
+        drawTikzHead(w);
     if (m_scene.model == SceneModel::Pendulum)
         for (int c = 0; c < sim->chainCount(); ++c) {
             sim->chainJoints(c, pts);
@@ -1509,6 +1523,35 @@ void FrogTab::drawTikz(TikzWriter& w) const
             for (const Point& p : pts)
                 w.point(Point(p.x, H - p.y), QColor(0xf2, 0xb1, 0x34));
         }
+}
+
+void FrogTab::drawTikzHead(TikzWriter& w) const
+{
+    // The head as the canvas paints it over the body (FrogCanvas::drawScene), recorded as
+    // paths (as Figs 4.11 and 4.12 are): each filled outline filled, each line drawn.
+    const double H = m_scene.params.height;
+    PathRecorder recorder(QSize(int(std::ceil(m_scene.params.width)), int(std::ceil(H))));
+    {
+        QPainter p(&recorder);
+        m_canvas->paintHeadOf(p, 0);
+    }
+    w.comment(QStringLiteral("the head"));
+    const auto opaque = [](const QColor& c) { return c.isValid() ? QColor(c.red(), c.green(), c.blue()) : QColor(); };
+    for (const PathRecorder::Shape& shape : recorder.shapes()) {
+        // Scene px to the picture's pt, as the body's 4 px pen is drawn 0.8 pt above.
+        const double width = std::max(0.2, shape.strokeWidth * 0.2);
+        for (const QPolygonF& polygon : shape.path.toSubpathPolygons()) {
+            if (polygon.size() < 2)
+                continue;
+            std::vector<Point> points;
+            for (const QPointF& q : polygon)
+                points.emplace_back(q.x(), H - q.y());
+            if (shape.fill.isValid() && polygon.size() > 2)
+                w.polygon(points, opaque(shape.stroke), opaque(shape.fill), width);
+            else if (shape.stroke.isValid())
+                w.polyline(points, opaque(shape.stroke), width, false, polygon.isClosed());
+        }
+    }
 }
 
 long FrogTab::shownStep() const

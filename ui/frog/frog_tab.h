@@ -107,6 +107,8 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+    /// The frog's head in the TikZ picture, over the body (issue 34, item 10).
+    void drawTikzHead(TikzWriter& w) const;
     void fitSidePanel();
     /// A new run of `scene` on `solver`; the run it replaces waits in m_replaced for the undo
     /// step of the change (takeReplaced), until the next rebuild.

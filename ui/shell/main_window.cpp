@@ -2,6 +2,8 @@
 
 #include "core/io/worked_examples.h"
 #include "ui/bernstein/bernstein_tab.h"
+#include "ui/common/curve_canvas.h"
+#include "ui/common/curve_tab.h"
 #include "ui/catmull_rom/catmull_rom_tab.h"
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/shell/exporter.h"
@@ -74,6 +76,9 @@ constexpr QSize kClassroomSize(1280, 800);
 /// a title bar of up to 40 px (openbox's is 20, GNOME's about 37) and borders of 8.
 constexpr QMargins kFrameGuess(8, 40, 8, 8);
 constexpr double kPresentationFont = 1.5; ///< font scale in presentation mode
+/// The height of canvas the work-precision section leaves a tab when it opens (or all the canvas
+/// had, if less): on an 800×600 screen it had shrunk the Frog canvas to 240×145 (issue 34).
+constexpr int kCanvasKeptUnderReport = 220;
 /// The status bar's, smaller: its hints are for the one at the keyboard, and a whole hint fits 1024 px.
 constexpr double kPresentationStatusFont = 1.25;
 const char* const kExampleIds[] = {"2.1", "2.2", "2.3", "2.4", "2.5", "2.6", "2.7", "2.8", "2.9", "2.10", "2.11", "2.12", "2.13"};
@@ -179,6 +184,10 @@ MainWindow::~MainWindow()
     // Nor the focus moving as the window closes (updateHint would read deleted tabs).
     disconnect(qApp, nullptr, this, nullptr);
     qApp->removeEventFilter(this);
+    // Nor a tab's message: a field still being typed in commits its text as it loses the
+    // focus while the window closes, and the tab says so to a status bar already deleted.
+    for (TabPage* page : m_pages)
+        disconnect(page, nullptr, this, nullptr);
 }
 
 QMargins MainWindow::frameAllowance() const
@@ -740,10 +749,25 @@ void MainWindow::setWorkPrecisionVisible(bool visible)
     const int index = m_tabs->currentIndex();
     if (index < 0)
         return;
+    // The canvas's height before the section takes its share (the splitter lays out at once):
+    // the export view, or the curve canvas of a tab that exports more than it (Fitting).
+    const QWidget* canvas = dynamic_cast<const QWidget*>(m_pages[index]->exportView());
+    if (auto* curves = qobject_cast<const CurveTab*>(m_pages[index]); curves && !canvas)
+        canvas = curves->canvas();
+    const int canvasHeight = canvas && canvas->isVisible() ? canvas->height() : -1;
+    const bool opening = visible && m_reportAreas[index]->isHidden(); // not again from the action's toggle
     m_reportAreas[index]->setVisible(visible);
-    if (visible) {
-        const int total = m_splitters[index]->height();
-        m_splitters[index]->setSizes({total * 3 / 5, total * 2 / 5});
+    if (opening) {
+        const int handle = m_splitters[index]->handleWidth();
+        const int total = m_splitters[index]->height() - handle;
+        // Two fifths, but never the canvas's last kCanvasKeptUnderReport px (the section and
+        // the handle come out of the canvas's height): on a small screen the section is lower,
+        // and scrolls.
+        int report = total * 2 / 5;
+        if (canvasHeight >= 0)
+            report = std::min(report, std::max(canvasHeight - std::min(canvasHeight, kCanvasKeptUnderReport) - handle,
+                                               m_reportAreas[index]->minimumSizeHint().height()));
+        m_splitters[index]->setSizes({total - report, report});
     }
     if (m_reportsAction->isChecked() != visible)
         m_reportsAction->setChecked(visible);
