@@ -1847,6 +1847,16 @@
     </context>
     <context>
         <name>granota::ui::FitTab</name>
+        <message numerus="yes">
+            <source>%n degree(s) left blank: the fit failed there.
+Choose QR or SVD.</source>
+            <translation>
+                <numerusform>%n grau en blanc: l’ajust hi ha fallat.
+Trieu QR o SVD.</numerusform>
+                <numerusform>%n graus en blanc: l’ajust hi ha fallat.
+Trieu QR o SVD.</numerusform>
+            </translation>
+        </message>
         <message>
             <source>Comb scale</source>
             <translation>Escala de la pinta</translation>
@@ -5489,6 +5499,21 @@ Ja no és al disc.</translation>
         <message>
             <source>&amp;Close</source>
             <translation>&amp;Tanca</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FieldInputFilter</name>
+        <message>
+            <source>%1 must be between %2 and %3.</source>
+            <translation>%1 ha d’estar entre %2 i %3.</translation>
+        </message>
+        <message>
+            <source>%1 was not applied.</source>
+            <translation>No s’ha aplicat %1.</translation>
+        </message>
+        <message>
+            <source>The value must be between %1 and %2.</source>
+            <translation>El valor ha d’estar entre %1 i %2.</translation>
         </message>
     </context>
 </TS>

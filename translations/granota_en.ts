@@ -1847,6 +1847,16 @@
     </context>
     <context>
         <name>granota::ui::FitTab</name>
+        <message numerus="yes">
+            <source>%n degree(s) left blank: the fit failed there.
+Choose QR or SVD.</source>
+            <translation>
+                <numerusform>%n degree left blank: the fit failed there.
+Choose QR or SVD.</numerusform>
+                <numerusform>%n degrees left blank: the fit failed there.
+Choose QR or SVD.</numerusform>
+            </translation>
+        </message>
         <message>
             <source>Comb scale</source>
             <translation>Comb scale</translation>
@@ -5489,6 +5499,21 @@ It is no longer on disk.</translation>
         <message>
             <source>&amp;Close</source>
             <translation>&amp;Close</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FieldInputFilter</name>
+        <message>
+            <source>%1 must be between %2 and %3.</source>
+            <translation>%1 must be between %2 and %3.</translation>
+        </message>
+        <message>
+            <source>%1 was not applied.</source>
+            <translation>%1 was not applied.</translation>
+        </message>
+        <message>
+            <source>The value must be between %1 and %2.</source>
+            <translation>The value must be between %1 and %2.</translation>
         </message>
     </context>
 </TS>

@@ -1514,7 +1514,7 @@ void FrogTab::drawTikz(TikzWriter& w) const
         leg(0);
         leg(1);
     }
-    if (m_scene.model == SceneModel::Frog && m_scene.has("head") && sim->bodyCount() > 0)
+    if (m_scene.model == SceneModel::Frog && m_scene.has(SceneComponent::Head) && sim->bodyCount() > 0)
         drawTikzHead(w);
     if (m_scene.model == SceneModel::Pendulum)
         for (int c = 0; c < sim->chainCount(); ++c) {
