@@ -1,6 +1,8 @@
 #pragma once
 // How the GUI tests wait for what a desktop does in its own time.
+#include <QCoreApplication>
 #include <QDebug>
+#include <QSize>
 #include <QTest>
 #include <QWidget>
 
@@ -55,4 +57,17 @@ inline bool waitActive(QWidget* window)
     qWarning().noquote() << "the window manager never activated the window" << describeWindow(window) << "in"
                          << (kWindowExposedMs + kWindowExposedMs / 3) / 1000 << "s";
     return false;
+}
+
+/// A 1024×768 projector's screen less a title bar: the window size the classroom tests use.
+inline const QSize kProjectorWindow(1024, 738);
+
+/// Lets the layouts settle: the requests they post, and what the tabs queue after them (the
+/// Frog's side panel fits its width in a queued call).
+inline void settle()
+{
+    for (int round = 0; round < 3; ++round) {
+        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+        QCoreApplication::processEvents();
+    }
 }

@@ -50,6 +50,17 @@ inline bool showOnTab(granota::ui::MainWindow& window, const QString& key)
     return waitExposed(&window) && waitActive(&window) && window.showTab(key);
 }
 
+/// showOnTab, then the window at a 1024×768 projector's size (kProjectorWindow) with its
+/// layouts settled.
+inline bool showOnProjector(granota::ui::MainWindow& window, const QString& key)
+{
+    if (!showOnTab(window, key))
+        return false;
+    window.resize(kProjectorWindow);
+    settle();
+    return true;
+}
+
 /// A document file `name` in a fresh temporary folder, removed with it: where a round trip
 /// saves a window's document and opens it again.
 class TemporaryDocument {

@@ -35,6 +35,7 @@
 #include <QUndoStack>
 #include <QWheelEvent>
 #include "tests/test_main.h"
+#include "gui_timeouts.h"
 
 #include <string>
 #include <vector>
@@ -88,15 +89,6 @@ void wheelAt(QWidget& window, const QPoint& pos, int delta)
     QCoreApplication::processEvents();
 }
 
-/// Lets the layouts settle: the requests they post, and what the tabs queue after them (the
-/// Frog's side panel fits its width in a queued call).
-void settle()
-{
-    for (int round = 0; round < 3; ++round) {
-        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
-        QCoreApplication::processEvents();
-    }
-}
 
 /// The scroll area that scrolls `w`, or null.
 QAbstractScrollArea* scrollAreaOf(QWidget* w)

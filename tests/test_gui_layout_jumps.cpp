@@ -30,16 +30,6 @@ using granota::ui::MainWindow;
 
 namespace {
 
-/// A 1024×768 screen less a title bar.
-const QSize kProjector(1024, 738);
-
-void settle()
-{
-    for (int round = 0; round < 3; ++round) {
-        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
-        QCoreApplication::processEvents();
-    }
-}
 
 /// The geometry of `w` in its window's coordinates.
 QRect inWindow(const QWidget* w) { return QRect(w->mapTo(w->window(), QPoint()), w->size()); }
@@ -83,7 +73,7 @@ private slots:
         QVERIFY(granota::ui::setLanguage(language, false));
         MainWindow window;
         QVERIFY(showOnTab(window, tab));
-        window.resize(kProjector);
+        window.resize(kProjectorWindow);
         settle();
         auto* play = window.currentTab()->findChild<QAbstractButton*>(button);
         QVERIFY(play);
@@ -115,9 +105,7 @@ private slots:
         QFETCH(QString, language);
         QVERIFY(granota::ui::setLanguage(language, false));
         MainWindow window;
-        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
-        window.resize(kProjector);
-        settle();
+        QVERIFY(showOnProjector(window, QStringLiteral("decasteljau")));
         auto* tab = qobject_cast<granota::ui::DeCasteljauTab*>(window.currentTab());
         QVERIFY(tab);
         auto* readout = tab->findChild<QLabel*>(QStringLiteral("decasteljauReadout"));
@@ -145,9 +133,7 @@ private slots:
     {
         QVERIFY(granota::ui::setLanguage(QStringLiteral("en"), false));
         MainWindow window;
-        QVERIFY(showOnTab(window, QStringLiteral("frog")));
-        window.resize(kProjector);
-        settle();
+        QVERIFY(showOnProjector(window, QStringLiteral("frog")));
         granota::ui::FrogTab* tab = window.frogTab();
         tab->findChild<QPushButton*>(QStringLiteral("frogPause"))->setChecked(true);
         for (int i = 0; i < 30; ++i)
@@ -170,9 +156,7 @@ private slots:
     {
         QVERIFY(granota::ui::setLanguage(QStringLiteral("en"), false));
         MainWindow window;
-        QVERIFY(showOnTab(window, QStringLiteral("frog")));
-        window.resize(kProjector);
-        settle();
+        QVERIFY(showOnProjector(window, QStringLiteral("frog")));
         granota::ui::FrogTab* tab = window.frogTab();
         QString error;
         // many-bodies refuses 200 bodies of radius 40 (test_gui_acceptance): a refusal under the panel.

@@ -36,15 +36,6 @@ using granota::ui::PathRecorder;
 
 namespace {
 
-const QSize kProjector(1024, 738);
-
-void settle()
-{
-    for (int round = 0; round < 3; ++round) {
-        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
-        QCoreApplication::processEvents();
-    }
-}
 
 /// WCAG's relative luminance of an opaque colour.
 double luminance(const QColor& c)
@@ -85,9 +76,7 @@ private slots:
     void bareBodyOutlineIsTwoPixelsWide()
     {
         MainWindow window;
-        QVERIFY(showOnTab(window, QStringLiteral("frog")));
-        window.resize(kProjector);
-        settle();
+        QVERIFY(showOnProjector(window, QStringLiteral("frog")));
         granota::ui::FrogTab* tab = window.frogTab();
         QString error;
         QVERIFY2(tab->setScene(QStringLiteral("polygon"), &error), qPrintable(error)); // §4.1, a bare polygon
@@ -134,9 +123,7 @@ private slots:
     void broadPhaseBoxesAreThickAndDark()
     {
         MainWindow window;
-        QVERIFY(showOnTab(window, QStringLiteral("frog")));
-        window.resize(kProjector);
-        settle();
+        QVERIFY(showOnProjector(window, QStringLiteral("frog")));
         granota::ui::FrogTab* tab = window.frogTab();
         QString error;
         QVERIFY2(tab->setScene(QStringLiteral("many-bodies"), &error), qPrintable(error)); // the stable solver's collisions
@@ -168,9 +155,7 @@ private slots:
     void extremaDiamondsAreThickAndDark()
     {
         MainWindow window;
-        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
-        window.resize(kProjector);
-        settle();
+        QVERIFY(showOnProjector(window, QStringLiteral("decasteljau")));
         auto* tab = qobject_cast<granota::ui::DeCasteljauTab*>(window.currentTab());
         QVERIFY(tab);
         QVERIFY(window.loadExample(QStringLiteral("2.3"))); // a curve with extrema of x and y inside it

@@ -23,13 +23,6 @@ using granota::ui::MainWindow;
 
 namespace {
 
-void settle()
-{
-    for (int round = 0; round < 3; ++round) {
-        QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
-        QCoreApplication::processEvents();
-    }
-}
 
 /// The largest canvas of `page` (a curve canvas or the Frog's).
 QWidget* canvasOf(QWidget* page)
