@@ -805,7 +805,7 @@ void CatmullRomTab::updatePlot()
             g->setData(t, y, true);
             g->setPen(
                 QPen(CanvasStyle::series(j), 2.0 * scale, shown.size() > 1 ? tauPenStyle(static_cast<int>(n)) : Qt::SolidLine));
-            g->setName(QStringLiteral("w%1").arg(j));
+            g->setName(QStringLiteral("w") + subscriptDigits(j));
             if (n > 0)
                 g->removeFromLegend();
         }
