@@ -839,14 +839,14 @@ private slots:
         tab.setBoundingBoxVisible(true);
         tab.setInflectionsVisible(true);
         const granota::CurveFeatures expected = granota::curveFeatures(P);
-        QCOMPARE(tab.features().bbox.min, expected.bbox.min);
-        QCOMPARE(tab.features().bbox.max, expected.bbox.max);
+        QCOMPARE(tab.features().bbox.minCorner(), expected.bbox.minCorner());
+        QCOMPARE(tab.features().bbox.maxCorner(), expected.bbox.maxCorner());
         QCOMPARE(tab.features().extremaX, expected.extremaX);
         QCOMPARE(tab.features().extremaY, expected.extremaY);
         // The box holds every sample of the curve, and touches it at its extrema.
         for (const Point& q : tab.curve())
-            QVERIFY(q.x >= expected.bbox.min.x - 1e-12 && q.x <= expected.bbox.max.x + 1e-12 &&
-                    q.y >= expected.bbox.min.y - 1e-12 && q.y <= expected.bbox.max.y + 1e-12);
+            QVERIFY(q.x >= expected.bbox.minX - 1e-12 && q.x <= expected.bbox.maxX + 1e-12 && q.y >= expected.bbox.minY - 1e-12 &&
+                    q.y <= expected.bbox.maxY + 1e-12);
         QCOMPARE(tab.features().inflections.size(), std::size_t(2));
         QVERIFY(std::fabs(tab.features().inflections[0] - 0.5) < 1e-12);
         QVERIFY(std::fabs(tab.features().inflections[1] - 0.8) < 1e-12);

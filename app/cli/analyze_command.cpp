@@ -81,8 +81,8 @@ Expected<CommandOutput> run(const Arguments& args)
     Json extrema = Json::object();
     extrema.set("x", list(f.extremaX)).set("y", list(f.extremaY));
     Json bbox = Json::array();
-    bbox.push(point(f.bbox.min));
-    bbox.push(point(f.bbox.max));
+    bbox.push(point(f.bbox.minCorner()));
+    bbox.push(point(f.bbox.maxCorner()));
     out.json.set("degree", n)
         .set("hodograph", std::move(hodographJson))
         .set("length", L)
@@ -95,7 +95,7 @@ Expected<CommandOutput> run(const Arguments& args)
     txt << "Bézier curve of degree " << n << "\n"
         << "  length L = " << formatDouble(L) << "\n"
         << "  extrema of x at t = " << listText(f.extremaX) << "; of y at t = " << listText(f.extremaY) << "\n"
-        << "  bounding box " << text(f.bbox.min) << " – " << text(f.bbox.max) << "\n"
+        << "  bounding box " << text(f.bbox.minCorner()) << " – " << text(f.bbox.maxCorner()) << "\n"
         << "  inflections at t = " << listText(f.inflections) << (f.straight ? " (the curve is straight)" : "") << "\n"
         << "  cusps (c' = 0) at t = " << listText(f.cusps)
         << (f.stationary ? " (every control point is the same point: c' = 0 everywhere)" : "") << "\n";

@@ -89,20 +89,4 @@ Point vertexCentroid(const Point* x, int n)
     return n > 0 ? Point(c.x / n, c.y / n) : c;
 }
 
-Aabb boundingBox(const Point* x, int n)
-{
-    Aabb b;
-    if (n <= 0)
-        return b;
-    b.minX = b.maxX = x[0].x;
-    b.minY = b.maxY = x[0].y;
-    for (int i = 1; i < n; ++i) {
-        b.minX = std::min(b.minX, x[i].x);
-        b.maxX = std::max(b.maxX, x[i].x);
-        b.minY = std::min(b.minY, x[i].y);
-        b.maxY = std::max(b.maxY, x[i].y);
-    }
-    return b;
-}
-
 } // namespace granota

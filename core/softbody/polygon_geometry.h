@@ -23,6 +23,7 @@
 /// The seed solver keeps its own area loop (SeedBody::area, Annex II's calculaarea in its
 /// float lanes and its order of operations) so that it reproduces the thesis's program.
 
+#include "core/base/aabb.h"
 #include "core/base/vec2.h"
 
 #include <vector>
@@ -71,22 +72,5 @@ bool pointInPolygon(const Point* poly, int n, const Point& p, int* nearestCrossi
 
 /// Mean of n points (the centre of mass of equal masses); the origin for none.
 Point vertexCentroid(const Point* x, int n);
-
-/// Axis-aligned box; a box with min > max is empty.
-struct Aabb {
-    double minX = 0;
-    double minY = 0;
-    double maxX = -1;
-    double maxY = -1;
-
-    bool overlaps(const Aabb& o) const { return minX <= o.maxX && o.minX <= maxX && minY <= o.maxY && o.minY <= maxY; }
-    bool contains(const Point& p, double margin = 0) const
-    {
-        return p.x >= minX - margin && p.x <= maxX + margin && p.y >= minY - margin && p.y <= maxY + margin;
-    }
-};
-
-/// The box of n points (empty for none).
-Aabb boundingBox(const Point* x, int n);
 
 } // namespace granota

@@ -412,12 +412,12 @@ void DeCasteljauTab::buildLayers()
     m_canvas->addLayer([this](QPainter& p, const ViewTransform& view, const CanvasStyle& style) {
         if (!m_showBox || m_editor->points().empty())
             return;
-        const CurveBox& box = m_features.bbox;
-        if (!isFinite(box.min) || !isFinite(box.max))
+        const Aabb& box = m_features.bbox;
+        if (!isFinite(box.minCorner()) || !isFinite(box.maxCorner()))
             return;
         p.setPen(QPen(kBoxColour, style.thinLine() * 1.3, Qt::DashDotLine));
         p.setBrush(Qt::NoBrush);
-        p.drawRect(QRectF(view.toScreen(box.min), view.toScreen(box.max)).normalized());
+        p.drawRect(QRectF(view.toScreen(box.minCorner()), view.toScreen(box.maxCorner())).normalized());
         // Large, with a dark edge of the canvas's line width: a white 1 px edge round a slate
         // diamond of 9 px was lost on a projector (issue 34).
         const double r = style.handleRadius();
@@ -1519,10 +1519,10 @@ void DeCasteljauTab::drawTikz(TikzWriter& w) const
         for (const auto& stretch : m_comb.outline)
             w.polyline(stretch, curvatureCombColor(), 0.6);
     }
-    if (m_showBox && isFinite(m_features.bbox.min) && isFinite(m_features.bbox.max)) {
-        const CurveBox& b = m_features.bbox;
+    if (m_showBox && isFinite(m_features.bbox.minCorner()) && isFinite(m_features.bbox.maxCorner())) {
+        const Aabb& b = m_features.bbox;
         w.comment(QStringLiteral("tight bounding box and the extrema of x and y"));
-        w.polyline({b.min, {b.max.x, b.min.y}, b.max, {b.min.x, b.max.y}}, kBoxColour, 0.6, true, true);
+        w.polyline({b.minCorner(), {b.maxX, b.minY}, b.maxCorner(), {b.minX, b.maxY}}, kBoxColour, 0.6, true, true);
         for (const auto* list : {&m_features.extremaX, &m_features.extremaY})
             for (double t : *list)
                 w.point(deCasteljauPoint(points, t), kBoxColour);

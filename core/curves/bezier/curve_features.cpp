@@ -73,28 +73,21 @@ std::vector<double> extremaParameters(const std::vector<Point>& P, int which)
     return openInterval(r.roots);
 }
 
-CurveBox tightBoundingBox(const std::vector<Point>& P)
+Aabb tightBoundingBox(const std::vector<Point>& P)
 {
     if (P.empty())
         return {};
-    CurveBox box{P.front(), P.front()};
-    auto include = [&box](const Point& p) {
-        box.min.x = std::min(box.min.x, p.x);
-        box.min.y = std::min(box.min.y, p.y);
-        box.max.x = std::max(box.max.x, p.x);
-        box.max.y = std::max(box.max.y, p.y);
-    };
-    include(P.back());
+    Aabb box = Aabb::around(P.front());
+    box.includeX(P.back().x); // not include(): a NaN corner stays in the box, as callers check
+    box.includeY(P.back().y);
     const std::vector<double> xs = coordinate(P, 0), ys = coordinate(P, 1);
     for (double t : extremaParameters(P, 0)) {
         const double x = bernsteinValue(xs, t);
-        box.min.x = std::min(box.min.x, x);
-        box.max.x = std::max(box.max.x, x);
+        box.includeX(x);
     }
     for (double t : extremaParameters(P, 1)) {
         const double y = bernsteinValue(ys, t);
-        box.min.y = std::min(box.min.y, y);
-        box.max.y = std::max(box.max.y, y);
+        box.includeY(y);
     }
     return box;
 }
@@ -247,16 +240,10 @@ CurveFeatures curveFeatures(const std::vector<Point>& P)
         f.cusps = cuspsAmong(P, ax, ay, rx, ry, size);
     }
     // The box from the extrema already found (tightBoundingBox would find them again).
-    f.bbox = {P.front(), P.front()};
+    f.bbox = Aabb::around(P.front());
     const std::vector<double> xs = coordinate(P, 0), ys = coordinate(P, 1);
-    auto includeX = [&f](double x) {
-        f.bbox.min.x = std::min(f.bbox.min.x, x);
-        f.bbox.max.x = std::max(f.bbox.max.x, x);
-    };
-    auto includeY = [&f](double y) {
-        f.bbox.min.y = std::min(f.bbox.min.y, y);
-        f.bbox.max.y = std::max(f.bbox.max.y, y);
-    };
+    const auto includeX = [&f](double x) { f.bbox.includeX(x); };
+    const auto includeY = [&f](double y) { f.bbox.includeY(y); };
     includeX(P.back().x);
     includeY(P.back().y);
     for (double t : f.extremaX)

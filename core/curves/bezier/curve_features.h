@@ -9,23 +9,19 @@
 ///  - inflections: the sign changes of x′y″ − y′x″, a polynomial of degree 2n − 4;
 ///  - cusps: the t where c′ = 0 (both coordinates at once).
 
+#include "core/base/aabb.h"
 #include "core/base/vec2.h"
 
 #include <vector>
 
 namespace granota {
 
-struct CurveBox {
-    Point min;
-    Point max;
-};
-
 struct CurveFeatures {
     /// t in (0, 1) where x′ = 0, resp. y′ = 0, ascending, once each (a double zero once).
     /// Empty when that coordinate is constant (x′ ≡ 0: every t would do).
     std::vector<double> extremaX, extremaY;
     /// The tight axis-aligned box of the curve over [0, 1].
-    CurveBox bbox;
+    Aabb bbox;
     /// t in (0, 1) where x′y″ − y′x″ changes sign (a touching zero is not an inflection).
     std::vector<double> inflections;
     /// t in [0, 1] where c′ = 0 (coincident end control points give 0 or 1).
@@ -43,7 +39,7 @@ CurveFeatures curveFeatures(const std::vector<Point>& P);
 /// The t in (0, 1) where the coordinate (0 = x, 1 = y) of c′ vanishes.
 std::vector<double> extremaParameters(const std::vector<Point>& P, int coordinate);
 /// The tight box from the ends and the extrema of x and y.
-CurveBox tightBoundingBox(const std::vector<Point>& P);
+Aabb tightBoundingBox(const std::vector<Point>& P);
 /// The t in [0, 1] where c′ = 0, within 10⁻⁹ of the size of the hodograph (max |n (P_{i+1} − P_i)|).
 std::vector<double> cuspParameters(const std::vector<Point>& P);
 /// The sign changes of x′y″ − y′x″ in (0, 1).
