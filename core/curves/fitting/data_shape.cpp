@@ -1,5 +1,7 @@
 #include "core/curves/fitting/data_shape.h"
 
+#include "core/base/aabb.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -24,14 +26,8 @@ DataShape analyseDataShape(const std::vector<Point>& q, double relativeTolerance
         return shape;
     }
     // The extent of the data, and the point farthest from Q_0 (an end of a line through them).
-    double minX = finite[0].x, maxX = minX, minY = finite[0].y, maxY = minY;
-    for (const Point& p : finite) {
-        minX = std::min(minX, p.x);
-        maxX = std::max(maxX, p.x);
-        minY = std::min(minY, p.y);
-        maxY = std::max(maxY, p.y);
-    }
-    const double extent = std::max(maxX - minX, maxY - minY);
+    const Aabb box = boundingBox(finite.data(), static_cast<int>(finite.size()));
+    const double extent = std::max(box.width(), box.height());
     if (!(extent > 0)) {
         shape.allCoincide = shape.collinear = true;
         return shape;

@@ -1,6 +1,7 @@
 #include "core/curves/fitting/least_squares_fit.h"
 
 #include "core/curves/fitting/bernstein_block.h"
+#include "core/base/aabb.h"
 #include "core/base/enum_names.h"
 #include "core/base/number_format.h"
 #include "core/curves/bezier/bernstein.h"
@@ -326,15 +327,9 @@ Expected<FitResult> fitBezier(const std::vector<Point>& q, const FitOptions& opt
 
     // Work in a centred, scaled frame: the fit is affine-invariant (the rows of M sum to 1,
     // Prop 2.1), and data around 1e9 or 1e−9 keep their relative accuracy.
-    double minX = q[0].x, maxX = q[0].x, minY = q[0].y, maxY = q[0].y;
-    for (const Point& p : q) {
-        minX = std::min(minX, p.x);
-        maxX = std::max(maxX, p.x);
-        minY = std::min(minY, p.y);
-        maxY = std::max(maxY, p.y);
-    }
-    const Point centre(0.5 * minX + 0.5 * maxX, 0.5 * minY + 0.5 * maxY);
-    const double halfSize = std::max(0.5 * maxX - 0.5 * minX, 0.5 * maxY - 0.5 * minY);
+    const Aabb box = boundingBox(q.data(), static_cast<int>(q.size()));
+    const Point centre(0.5 * box.minX + 0.5 * box.maxX, 0.5 * box.minY + 0.5 * box.maxY);
+    const double halfSize = std::max(0.5 * box.maxX - 0.5 * box.minX, 0.5 * box.maxY - 0.5 * box.minY);
     const double scale = halfSize > 0 && std::isfinite(halfSize) ? halfSize : 1.0;
     const ScaledPoints data{q.data(), q.size(), centre, scale};
 
