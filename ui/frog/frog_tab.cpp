@@ -728,11 +728,8 @@ bool FrogTab::applyParameter(const QString& key, const QJsonValue& value, QStrin
         setError(error, tr("Scene “%1” has no parameter “%2”.").arg(fromStd(m_scene.name), key));
         return false;
     }
-    Json doc = sceneToJson(m_scene);
-    Json params = *doc.find("params");
-    params.set(key.toStdString(), fromQJson(value));
-    doc.set("params", params);
-    auto spec = parseScene(doc);
+    // One member set and checked: the scene is not written to JSON and read back (issue 35).
+    auto spec = withParameter(m_scene, key.toStdString(), fromQJson(value));
     if (!spec) {
         setError(error, tr("This value was refused: %1").arg(ErrorText::of(spec.error())));
         return false;

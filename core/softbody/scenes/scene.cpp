@@ -596,16 +596,26 @@ Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
         }
         json = count == 1 ? (*list.asArray())[0] : list;
     }
-    SceneSpec changed = scene;
-    auto ok = setParam(changed, key, json);
-    if (!ok)
-        return ok;
-    deriveFromFrame(changed);
-    ok = validate(changed);
-    if (!ok)
-        return ok;
-    scene = std::move(changed);
+    auto changed = withParameter(scene, key, json);
+    if (!changed)
+        return changed.error();
+    scene = std::move(*changed);
     return {};
+}
+
+Expected<SceneSpec> withParameter(SceneSpec scene, const std::string& key, const Json& value)
+{
+    if (!scene.hasParam(key))
+        return bad(scene.name, "unknown parameter " + quotedForDisplay(key), MessageId::SceneUnknownParameter,
+                   {textArg(quotedForDisplay(key))});
+    auto ok = setParam(scene, key, value);
+    if (!ok)
+        return ok.error();
+    deriveFromFrame(scene);
+    ok = validate(scene);
+    if (!ok)
+        return ok.error();
+    return scene;
 }
 
 Expected<SceneSpec> withBodies(SceneSpec scene, int bodies)

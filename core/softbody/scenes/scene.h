@@ -92,6 +92,12 @@ Expected<SceneSpec> parseScene(const Json& doc);
 /// is an error with a message.
 Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue);
 
+/// The scene with its parameter `key` set to `value` (the scene file's form of it), checked as
+/// a scene file is: one edit of the Frog tab's panel or of `--set`, without writing the scene
+/// to JSON and reading it back. A key the scene does not have, or a value it refuses, is an
+/// error with a message; `scene` is taken by value and never half changed.
+Expected<SceneSpec> withParameter(SceneSpec scene, const std::string& key, const Json& value);
+
 /// `bodies` bodies at the scene's density: where the scene's frame was drawn for fewer,
 /// it grows as frameForBodies() says (core/softbody/scenes/scene_layout.h) so that the bodies fit (a
 /// thousand frogs do not fit in 1280 × 720 px; piled up, they would measure a pile, not the
