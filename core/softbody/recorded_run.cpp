@@ -13,14 +13,15 @@ namespace granota {
 namespace {
 
 // The knobs take the names of the scene file's "stable" keys.
-constexpr std::array<EnumName<InputKind>, 8> kInputNames{{{InputKind::Press, "press"},
-                                                          {InputKind::Move, "move"},
-                                                          {InputKind::Release, "release"},
-                                                          {InputKind::Spawn, "spawn"},
-                                                          {InputKind::ReleaseSpawn, "release-spawn"},
-                                                          {InputKind::Substeps, "substeps"},
-                                                          {InputKind::EdgeCompliance, "edge_compliance"},
-                                                          {InputKind::EdgeDampingRatio, "edge_damping_ratio"}}};
+constexpr std::array<EnumName<InputKind>, 8> kInputNames{
+    {{InputKind::Press, "press"},
+     {InputKind::Move, "move"},
+     {InputKind::Release, "release"},
+     {InputKind::Spawn, "spawn"},
+     {InputKind::ReleaseSpawn, "release-spawn"},
+     {InputKind::Substeps, stableKnobName(StableKnob::Substeps)},
+     {InputKind::EdgeCompliance, stableKnobName(StableKnob::EdgeCompliance)},
+     {InputKind::EdgeDampingRatio, stableKnobName(StableKnob::EdgeDampingRatio)}}};
 
 bool hasPoint(InputKind k) { return k == InputKind::Press || k == InputKind::Move || k == InputKind::Spawn; }
 

@@ -377,24 +377,26 @@ FrogTab::FrogTab(QWidget* parent)
     connect(m_canvas, &FrogCanvas::statusMessage, this, &TabPage::statusMessage);
     connect(m_canvas, &FrogCanvas::timelineChanged, this, &FrogTab::updateTimeline);
     connect(m_canvas, &FrogCanvas::blownUpChanged, this, &FrogTab::showExplosion);
-    const auto knob = [this](const QString& key, double value) {
+    const auto knob = [this](StableKnob k, double value) {
+        const std::string_view name = stableKnobName(k);
+        const QString key = QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
         QString error;
         if (!editStableSetting(key, value, &error)) {
             showStableSettings(); // the knob shows the value in force again
             showRefusal(error);
         }
     };
-    connect(m_substeps, &QSpinBox::valueChanged, this, [knob](int n) { knob(QStringLiteral("substeps"), n); });
-    connect(m_compliance, &QDoubleSpinBox::valueChanged, this, [knob](double a) { knob(QStringLiteral("edge_compliance"), a); });
+    connect(m_substeps, &QSpinBox::valueChanged, this, [knob](int n) { knob(StableKnob::Substeps, n); });
+    connect(m_compliance, &QDoubleSpinBox::valueChanged, this, [knob](double a) { knob(StableKnob::EdgeCompliance, a); });
     connect(m_hertz, &QDoubleSpinBox::valueChanged, this, [this, knob](double hertz) {
         // A frequency is a compliance for this scene's edge (edgeComplianceForHertz).
         const auto spring = edgeSpringShown();
         if (spring && hertz > 0)
-            knob(QStringLiteral("edge_compliance"),
+            knob(StableKnob::EdgeCompliance,
                  std::clamp(edgeComplianceForHertz(hertz, spring->restLength, spring->vertexMass, kStepsPerSecond), 0.0,
                             StableSettings::kMaxEdgeCompliance));
     });
-    connect(m_damping, &QDoubleSpinBox::valueChanged, this, [knob](double z) { knob(QStringLiteral("edge_damping_ratio"), z); });
+    connect(m_damping, &QDoubleSpinBox::valueChanged, this, [knob](double z) { knob(StableKnob::EdgeDampingRatio, z); });
     connect(m_softBodyReport, &QPushButton::clicked, this, [this] { emit reportRequested(QStringLiteral("soft-body")); });
     connect(m_explosionReset, &QPushButton::clicked, this, &FrogTab::reset);
     connect(m_explosionStable, &QPushButton::clicked, this, [this] {
@@ -1230,12 +1232,7 @@ QJsonObject FrogTab::saveState() const
     if (const auto& ruler = m_canvas->ruler()) // a measure shown goes with the document, as the overlays do
         state.insert(QStringLiteral("ruler"), QJsonArray{ruler->first.x, ruler->first.y, ruler->second.x, ruler->second.y});
     // The knobs the run started with; the recording's events turn them on the way.
-    QJsonObject stable;
-    stable.insert(QStringLiteral("substeps"), m_scene.stable.substeps);
-    stable.insert(QStringLiteral("edge_compliance"), m_scene.stable.edgeCompliance);
-    if (m_scene.stable.edgeDampingRatio != 0)
-        stable.insert(QStringLiteral("edge_damping_ratio"), m_scene.stable.edgeDampingRatio);
-    state.insert(QStringLiteral("stable"), stable);
+    state.insert(QStringLiteral("stable"), toQJson(stableSettingsToJson(m_scene.stable)));
     // The run so far (docs/rewind.md): its events, how far it went, and the step shown.
     if (const RecordedRun* run = m_canvas->run())
         state.insert(QStringLiteral("recording"), documentRunToQJson(*run));

@@ -719,13 +719,19 @@ Json sceneToJson(const SceneSpec& s)
     if (s.sketchFirstFrame)
         doc.set(kFirstFrameKey, kSketchFrame);
     if (!s.stable.isDefault()) {
-        Json stable = Json::object();
-        stable.set("substeps", s.stable.substeps).set("edge_compliance", s.stable.edgeCompliance);
-        if (s.stable.edgeDampingRatio != 0) // written only when set, as "stable" itself
-            stable.set("edge_damping_ratio", s.stable.edgeDampingRatio);
-        doc.set("stable", stable);
+        doc.set("stable", stableSettingsToJson(s.stable));
     }
     return doc;
+}
+
+Json stableSettingsToJson(const StableSettings& stable)
+{
+    Json out = Json::object();
+    const auto key = [](StableKnob k) { return std::string(stableKnobName(k)); };
+    out.set(key(StableKnob::Substeps), stable.substeps).set(key(StableKnob::EdgeCompliance), stable.edgeCompliance);
+    if (stable.edgeDampingRatio != 0) // written only when set, as "stable" itself
+        out.set(key(StableKnob::EdgeDampingRatio), stable.edgeDampingRatio);
+    return out;
 }
 
 } // namespace granota

@@ -107,6 +107,10 @@ Expected<SceneSpec> withBodies(SceneSpec scene, int bodies);
 
 /// The scene as its file: only its own keys, with their current values.
 Json sceneToJson(const SceneSpec& scene);
+/// The file's "stable" object: {"substeps": n, "edge_compliance": α[, "edge_damping_ratio": ζ
+/// when not 0]} (sceneToJson writes it when the knobs differ from their defaults; a Frog
+/// document always).
+Json stableSettingsToJson(const StableSettings& stable);
 
 /// The soft-body vertices the scene's bodies start with, all together: bodies × sides, or
 /// × bezier_samples where §4.9 samples the body from a Bézier curve (the larger); what the

@@ -4,35 +4,60 @@
 
 namespace granota {
 
+bool setStableKnob(StableSettings& s, StableKnob k, double value)
+{
+    switch (k) {
+    case StableKnob::Substeps:
+        if (!StableSettings::validSubsteps(value))
+            return false;
+        s.substeps = static_cast<int>(value);
+        return true;
+    case StableKnob::EdgeCompliance:
+        if (!StableSettings::validEdgeCompliance(value))
+            return false;
+        s.edgeCompliance = value;
+        return true;
+    case StableKnob::EdgeDampingRatio:
+        if (!StableSettings::validEdgeDampingRatio(value))
+            return false;
+        s.edgeDampingRatio = value;
+        return true;
+    }
+    return false;
+}
+
 bool setStableKnob(StableSettings& s, const std::string& key, double value)
 {
-    if (key == "substeps" && StableSettings::validSubsteps(value))
-        s.substeps = static_cast<int>(value);
-    else if (key == "edge_compliance" && StableSettings::validEdgeCompliance(value))
-        s.edgeCompliance = value;
-    else if (key == "edge_damping_ratio" && StableSettings::validEdgeDampingRatio(value))
-        s.edgeDampingRatio = value;
-    else
-        return false;
-    return true;
+    const std::optional<StableKnob> k = parseName(kStableKnobNames, key);
+    return k && setStableKnob(s, *k, value);
 }
 
 const std::vector<std::string>& stableKnobKeys()
 {
-    static const std::vector<std::string> keys{"substeps", "edge_compliance", "edge_damping_ratio"};
+    static const std::vector<std::string> keys = [] {
+        std::vector<std::string> out;
+        for (const auto& entry : kStableKnobNames)
+            out.emplace_back(entry.name);
+        return out;
+    }();
     return keys;
 }
 
 std::string stableKnobRange(const std::string& key)
 {
-    if (key == "substeps")
+    switch (parseName(kStableKnobNames, key).value_or(StableKnob(-1))) {
+    case StableKnob::Substeps:
         return "a whole number from " + std::to_string(StableSettings::kMinSubsteps) + " to " +
                std::to_string(StableSettings::kMaxSubsteps);
-    if (key == "edge_compliance")
+    case StableKnob::EdgeCompliance:
         return "a number from 0 (rigid edges) to " + formatDouble(StableSettings::kMaxEdgeCompliance);
-    if (key == "edge_damping_ratio")
+    case StableKnob::EdgeDampingRatio:
         return "a number from 0 (no damping) to " + formatDouble(StableSettings::kMaxEdgeDampingRatio);
-    return "one of substeps, edge_compliance, edge_damping_ratio";
+    }
+    std::string names;
+    for (const auto& entry : kStableKnobNames)
+        names += (names.empty() ? "" : ", ") + std::string(entry.name);
+    return "one of " + names;
 }
 
 double edgeRingHertz(double edgeCompliance, double restLength, double mass, double stepsPerSecond)

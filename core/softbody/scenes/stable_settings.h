@@ -8,7 +8,10 @@
 /// when they differ from these defaults, which are XpbdParams' own
 /// (core/softbody/xpbd/xpbd_params.h).
 
+#include "core/base/enum_names.h"
 #include "core/base/math_constants.h"
+
+#include <array>
 
 #include <cmath>
 #include <limits>
@@ -59,9 +62,19 @@ inline double edgeRingPeriodSteps(double edgeCompliance, double restLength, doub
     return k > 0 ? 2 * kPi * std::sqrt(k) : std::numeric_limits<double>::infinity();
 }
 
-/// The knobs by the names of the scene file's "stable" keys, of --set and of a recording's
-/// knob events: one of them set to `value` in `s`, or false (and `s` as it was) for a value
-/// out of range; an unknown key is false too.
+/// The knobs, and their names: the scene file's "stable" keys, --set's and a recording's knob
+/// events (recorded_run.h), the one list of them.
+enum class StableKnob { Substeps, EdgeCompliance, EdgeDampingRatio };
+inline constexpr std::array<EnumName<StableKnob>, 3> kStableKnobNames{{
+    {StableKnob::Substeps, "substeps"},
+    {StableKnob::EdgeCompliance, "edge_compliance"},
+    {StableKnob::EdgeDampingRatio, "edge_damping_ratio"},
+}};
+constexpr std::string_view stableKnobName(StableKnob k) { return nameOf(kStableKnobNames, k); }
+
+/// Knob `k` set to `value` in `s`, or false (and `s` as it was) for a value out of its range.
+bool setStableKnob(StableSettings& s, StableKnob k, double value);
+/// The same by the knob's name; an unknown name is false too.
 bool setStableKnob(StableSettings& s, const std::string& key, double value);
 /// "substeps", "edge_compliance", "edge_damping_ratio".
 const std::vector<std::string>& stableKnobKeys();
