@@ -95,11 +95,13 @@ std::optional<Rational> parseTension(const QString& text, TensionProblem* proble
     return value;
 }
 
+QString tensionText(const Rational& tau) { return QString::fromStdString(toString(tau)); }
+
 void writeSettings(const CatmullRomSettings& s, QJsonObject& json)
 {
     QJsonArray taus;
     for (const Rational& t : s.taus)
-        taus.append(QString::fromStdString(toString(t)));
+        taus.append(tensionText(t));
     json.insert(QStringLiteral("taus"), taus);
     json.insert(QStringLiteral("selected_tau"), s.selectedTau);
     json.insert(QStringLiteral("mode"), endsKey(s.ends));
@@ -110,8 +112,8 @@ void writeSettings(const CatmullRomSettings& s, QJsonObject& json)
     json.insert(QStringLiteral("control_points"), s.controlPoints);
     json.insert(QStringLiteral("spline_ends"),
                 QString::fromUtf8(splineEndsName(s.splineEnds).data(), static_cast<int>(splineEndsName(s.splineEnds).size())));
-    json.insert(QStringLiteral("spline_start_slope"), QString::fromStdString(toString(s.startSlope)));
-    json.insert(QStringLiteral("spline_end_slope"), QString::fromStdString(toString(s.endSlope)));
+    json.insert(QStringLiteral("spline_start_slope"), tensionText(s.startSlope));
+    json.insert(QStringLiteral("spline_end_slope"), tensionText(s.endSlope));
     json.insert(QStringLiteral("compare_ends"), s.compareEnds);
     json.insert(QStringLiteral("all_taus_in_plot"), s.allTausInPlot);
     json.insert(QStringLiteral("curvature_plot"), s.curvaturePlot);

@@ -61,6 +61,8 @@ CatmullRomMode coreMode(CatmullRomEnds ends);
 enum class TensionProblem { None, NotANumber, OutOfRange };
 /// Reads "1/2", "-0.25", "−1/2" (Unicode minus too); nullopt with the problem otherwise.
 std::optional<Rational> parseTension(const QString& text, TensionProblem* problem = nullptr);
+/// A tension (or an end slope) as its exact text, "1/2" or "-2", as the document writes it.
+QString tensionText(const Rational& tau);
 
 /// The settings as JSON (taus as exact texts "1/2") and back. fromJson checks everything
 /// (known keys, τ in range, counts) and returns nullopt with `error` set (in English; the

@@ -1,22 +1,21 @@
 #include "ui/catmull_rom/catmull_rom_tab.h"
-#include "ui/catmull_rom/tension_colour.h"
-#include "ui/common/plot_tick_room.h"
-#include "ui/common/number_text.h"
 
-#include "core/base/number_format.h"
 #include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
+#include "ui/catmull_rom/catmull_rom_drawing.h"
+#include "ui/catmull_rom/catmull_rom_example.h"
+#include "ui/catmull_rom/catmull_rom_export.h"
+#include "ui/catmull_rom/catmull_rom_plot.h"
 #include "ui/catmull_rom/catmull_rom_report.h"
+#include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_legend.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/exact_panel.h"
+#include "ui/common/number_text.h"
 #include "ui/common/point_editor.h"
-#include "ui/common/point_extent.h"
 #include "ui/common/point_table.h"
-#include "ui/common/plot_title_room.h"
 #include "ui/common/presentation_scale.h"
 #include "ui/common/value_command.h"
-#include "ui/shell/tikz_writer.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -27,7 +26,6 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPainter>
-#include <QPainterPath>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSlider>
@@ -39,32 +37,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace granota::ui {
 
 namespace {
 
-constexpr int kSliderSteps = 20; ///< slider units per unit of τ: steps of 0.05
-/// Pixels between the plot's axes, at least: on an 800×600 screen the blending plot kept 52.
-constexpr int kMinPlotArea = 100;
+constexpr int kSliderSteps = 20;               ///< slider units per unit of τ: steps of 0.05
 constexpr int kTauListRows = 4;                ///< rows of the τ list, whatever their number (Ex 2.12 has 4 τ)
 constexpr int kSliderMergeIdBase = 0x43520000; ///< "CR": the merge ids of the τ slider's moves
-constexpr int kPlotSamples = 101;              ///< t = 0, 0.01, …, 1 (the Matlab linspace(0,1))
-const QColor kBezierColor(0x6a, 0x3d, 0x9a);
-const QColor kSplineColor(0x33, 0x33, 0x33);
-const QColor kErrorColor(0xc6, 0x28, 0x28);
-
-QString tauString(const Rational& tau) { return QString::fromStdString(toString(tau)); }
-
-/// The height that leaves kMinPlotArea between the axes: below them the x axis's tick labels
-/// and title (a line each, with QCustomPlot's paddings), above them its 15 px margin.
-int minimumPlotHeight(const QCustomPlot* plot)
-{
-    const int tickLabels = QFontMetrics(plot->xAxis->tickLabelFont()).height();
-    const int title = QFontMetrics(plot->xAxis->labelFont()).height();
-    return kMinPlotArea + tickLabels + title + 15 + 3 * 5;
-}
 
 /// τ as Processing's curveTightness(s), s = 1 − 2τ, as a short fraction or decimal.
 QString tightnessString(const Rational& tau)
@@ -75,71 +55,14 @@ QString tightnessString(const Rational& tau)
     return displayNumber(s);
 }
 
-Qt::PenStyle tauPenStyle(int i)
-{
-    static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine, Qt::DashDotLine, Qt::DashDotDotLine};
-    return styles[i % 5];
-}
-
-void drawPolyline(QPainter& p, const ViewTransform& view, const std::vector<Point>& points)
-{
-    if (points.size() < 2)
-        return;
-    QPolygonF poly;
-    poly.reserve(static_cast<int>(points.size()));
-    for (const Point& q : points)
-        if (isFinite(q))
-            poly << view.toScreen(q);
-    p.drawPolyline(poly);
-}
-
-/// Cubic Bézier segments as one path of cubicTo (SVG `C`, PDF `c`): the curve itself, not
-/// a polyline of samples. A segment with a point that is not finite is left out.
-void drawBezierSegments(QPainter& p, const ViewTransform& view, const std::vector<BezierSegment<double>>& segments)
-{
-    QPainterPath path;
-    bool open = false; // the path ends at the previous segment's end
-    for (const auto& b : segments) {
-        if (!isFinite(b[0]) || !isFinite(b[1]) || !isFinite(b[2]) || !isFinite(b[3])) {
-            open = false;
-            continue;
-        }
-        const QPointF start = view.toScreen(b[0]);
-        // A segment starts where the previous one ends (up to rounding): one path, with its joins.
-        if (!open || QLineF(path.currentPosition(), start).length() > 1e-6)
-            path.moveTo(start);
-        path.cubicTo(view.toScreen(b[1]), view.toScreen(b[2]), view.toScreen(b[3]));
-        open = true;
-    }
-    p.setBrush(Qt::NoBrush);
-    p.drawPath(path);
-}
-
-/// The rectangle holding the points, never empty (one point or coincident points get a unit box).
-QRectF pointBounds(const std::vector<Point>& points)
-{
-    const std::optional<PointExtent> box = finiteExtent(points);
-    if (!box)
-        return {-1, -1, 2, 2};
-    const double x0 = box->minX, y0 = box->minY;
-    double w = box->width(), h = box->height();
-    const double size = std::max({w, h, 0.0});
-    const double pad = size > 0 ? 0.0
-                                : std::max(1e-9, std::max(std::fabs(x0), std::fabs(y0)) * 0.1 + (x0 == 0 && y0 == 0 ? 1.0 : 0.0));
-    if (w < size * 0.05 || w == 0)
-        w = std::max(size * 0.05, pad);
-    if (h < size * 0.05 || h == 0)
-        h = std::max(size * 0.05, pad);
-    const QPointF c((box->minX + box->maxX) / 2, (box->minY + box->maxY) / 2);
-    return QRectF(c.x() - w / 2, c.y() - h / 2, w, h);
-}
-
 } // namespace
 
 CatmullRomTab::CatmullRomTab(QWidget* parent) : CurveTab(QStringLiteral("catmull-rom"), QT_TR_NOOP("Catmull-Rom"), parent)
 {
     // Curves under the handles, the legend on top.
-    m_canvas->addLayer([this](QPainter& p, const ViewTransform& v, const CanvasStyle& s) { drawCurves(p, v, s); });
+    m_canvas->addLayer([this](QPainter& p, const ViewTransform& v, const CanvasStyle& s) {
+        drawCatmullRomCurves(p, v, s, m_settings, m_scene);
+    });
     m_editor = new PointEditor(m_canvas, m_undo, this);
     m_editor->setLabelPrefix(QStringLiteral("q"));
     m_editor->setCountLimits(2, CatmullRomSettings::kMaxPoints);
@@ -306,13 +229,7 @@ void CatmullRomTab::buildUi()
     m_plotTitle = new QLabel(plotBox);
     m_allTausCheck = new QCheckBox(plotBox);
     m_plot = new QCustomPlot(plotBox); // its minimum height follows its font (updatePlot)
-    keepTickLabelsInside(m_plot);
-    m_plot->legend->setVisible(true);
-    m_plot->legend->setBrush(QColor(255, 255, 255, 190));
-    m_plot->legend->setFillOrder(QCPLayoutGrid::foRowsFirst);
-    m_plot->legend->setWrap(4); // w0…w3 in one column, the line style of each τ in the next
-    m_plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
-    m_plot->xAxis->setRange(0, 1);
+    setUpCatmullRomPlot(m_plot);
     auto* plotHeader = new QHBoxLayout;
     plotHeader->addWidget(m_plotTitle, 1);
     plotHeader->addWidget(m_allTausCheck);
@@ -469,28 +386,9 @@ void CatmullRomTab::retranslate()
     recompute();
 }
 
-/// The plot's title and tooltips follow what it shows (syncControls()).
-void CatmullRomTab::updatePlotTexts()
-{
-    if (m_settings.curvaturePlot) {
-        m_plotTitle->setText(tr("Curvature κ against arc length s (§2.3)"));
-        m_plotTitle->setToolTip(tr("κ = (x′y″ − y′x″)/|p′|³, positive where the curve turns left. A Catmull-Rom "
-                                   "curve is C¹ but not C²: p″ jumps at its knots and so does κ (a break in the "
-                                   "line). The C² cubic spline's κ is continuous, and the Bézier curve is one "
-                                   "polynomial (C^∞)."));
-        m_plot->setToolTip(tr("κ(s) of every curve drawn, in its colour and line style as on the canvas; the light "
-                              "vertical lines are the knots of the selected τ."));
-    } else {
-        m_plotTitle->setText(tr("Blending functions wⱼ(t, τ) (Def 2.9, Cor 2.1)"));
-        m_plotTitle->setToolTip(tr("p(t) = Σ wⱼ(t, τ) pⱼ: the weight of each of the four points along a segment. "
-                                   "They always add up to 1."));
-        m_plot->setToolTip(tr("The blending functions w₀…w₃ of Cor 2.1 on t ∈ [0, 1]."));
-    }
-}
-
 QString CatmullRomTab::tensionItemText(const Rational& tau) const
 {
-    return tr("τ = %1   (curveTightness %2)").arg(tauString(tau), tightnessString(tau));
+    return tr("τ = %1   (curveTightness %2)").arg(tensionText(tau), tightnessString(tau));
 }
 
 void CatmullRomTab::syncControls()
@@ -516,7 +414,8 @@ void CatmullRomTab::syncControls()
     if (hasSelection) {
         const Rational& tau = m_settings.taus[static_cast<std::size_t>(m_settings.selectedTau)];
         m_tauSlider->setValue(static_cast<int>(std::lround(toDouble(tau) * kSliderSteps)));
-        m_sliderLabel->setText(tr("Selected: τ = %1, Processing's curveTightness(%2)").arg(tauString(tau), tightnessString(tau)));
+        m_sliderLabel->setText(
+            tr("Selected: τ = %1, Processing's curveTightness(%2)").arg(tensionText(tau), tightnessString(tau)));
     }
     m_endsCombo->setCurrentIndex(static_cast<int>(m_settings.ends));
     m_spacingCombo->setCurrentIndex(static_cast<int>(m_settings.spacing));
@@ -528,15 +427,15 @@ void CatmullRomTab::syncControls()
     m_splineEndsCombo->setEnabled(m_settings.spline);
     m_splineEndsLabel->setEnabled(m_settings.spline);
     const bool clamped = m_settings.spline && m_settings.splineEnds == SplineEnds::Clamped;
-    m_startSlopeEdit->setText(tauString(m_settings.startSlope));
-    m_endSlopeEdit->setText(tauString(m_settings.endSlope));
+    m_startSlopeEdit->setText(tensionText(m_settings.startSlope));
+    m_endSlopeEdit->setText(tensionText(m_settings.endSlope));
     for (QWidget* w : std::initializer_list<QWidget*>{m_slopesLabel, m_startSlopeEdit, m_endSlopeEdit})
         w->setVisible(clamped);
     m_compareCheck->setChecked(m_settings.compareEnds);
     m_allTausCheck->setChecked(m_settings.allTausInPlot);
     m_allTausCheck->setEnabled(!m_settings.curvaturePlot); // the blending functions only
     m_curvatureCheck->setChecked(m_settings.curvaturePlot);
-    updatePlotTexts();
+    setCatmullRomPlotTexts(m_plotTitle, m_plot, m_settings.curvaturePlot);
     // The same height whatever the number of τ (it scrolls past kTauListRows), and room for two
     // lines of the slider's label whatever τ it names: adding a τ never moves the check boxes
     // below under the pointer.
@@ -584,7 +483,7 @@ bool CatmullRomTab::addTension(const QString& text)
         return false;
     }
     if (std::find(m_settings.taus.begin(), m_settings.taus.end(), *tau) != m_settings.taus.end()) {
-        refuse(tr("τ = %1 is already in the list.").arg(tauString(*tau)));
+        refuse(tr("τ = %1 is already in the list.").arg(tensionText(*tau)));
         return false;
     }
     if (static_cast<int>(m_settings.taus.size()) >= CatmullRomSettings::kMaxTensions) {
@@ -594,8 +493,8 @@ bool CatmullRomTab::addTension(const QString& text)
     CatmullRomSettings after = m_settings;
     after.taus.push_back(*tau);
     after.selectedTau = static_cast<int>(after.taus.size()) - 1;
-    changeSettings(after, tr("Add τ = %1").arg(tauString(*tau)));
-    refuse(tr("Added τ = %1.").arg(tauString(*tau)));
+    changeSettings(after, tr("Add τ = %1").arg(tensionText(*tau)));
+    refuse(tr("Added τ = %1.").arg(tensionText(*tau)));
     return true;
 }
 
@@ -611,7 +510,7 @@ bool CatmullRomTab::removeTension(int index)
     const Rational removed = after.taus[static_cast<std::size_t>(index)];
     after.taus.erase(after.taus.begin() + index);
     after.selectedTau = std::min(index, static_cast<int>(after.taus.size()) - 1);
-    changeSettings(after, tr("Remove τ = %1").arg(tauString(removed)));
+    changeSettings(after, tr("Remove τ = %1").arg(tensionText(removed)));
     return true;
 }
 
@@ -622,7 +521,7 @@ void CatmullRomTab::setSelectedTension(int index)
     // The document keeps which τ is selected (the slider edits it): one undo step.
     CatmullRomSettings after = m_settings;
     after.selectedTau = index;
-    changeSettings(after, tr("Select τ = %1").arg(tauString(after.taus[static_cast<std::size_t>(index)])));
+    changeSettings(after, tr("Select τ = %1").arg(tensionText(after.taus[static_cast<std::size_t>(index)])));
 }
 
 void CatmullRomTab::sliderMoved(int value)
@@ -633,7 +532,7 @@ void CatmullRomTab::sliderMoved(int value)
     const Rational tau = frac(value, kSliderSteps);
     for (std::size_t i = 0; i < m_settings.taus.size(); ++i)
         if (static_cast<int>(i) != index && m_settings.taus[i] == tau) {
-            refuse(tr("τ = %1 is already in the list.").arg(tauString(tau)));
+            refuse(tr("τ = %1 is already in the list.").arg(tensionText(tau)));
             syncControls(); // the slider back on the selected τ
             return;
         }
@@ -759,179 +658,9 @@ void CatmullRomTab::updateCanvasSummary()
             .arg(taus.isEmpty() ? tr("none") : taus.join(QStringLiteral("; "))));
 }
 
-void CatmullRomTab::updatePlot()
-{
-    const double scale = presentationScale(presentation());
-    m_plot->clearGraphs();
-    QFont font = this->font();
-    m_plot->legend->setFont(font);
-    m_plot->xAxis->setTickLabelFont(font);
-    m_plot->yAxis->setTickLabelFont(font);
-    m_plot->xAxis->setLabelFont(font);
-    m_plot->yAxis->setLabelFont(font);
-    m_plot->clearItems(); // the knot marks of the κ plot
-    // κ(s) has the colours and line styles of the canvas, whose legend names them.
-    m_plot->legend->setVisible(!m_settings.curvaturePlot);
-    if (m_settings.curvaturePlot) {
-        updateCurvaturePlot(scale);
-        return;
-    }
-    m_plot->xAxis->setLabel(QStringLiteral("t"));
-    m_plot->yAxis->setLabel(QStringLiteral("wⱼ(t, τ)"));
-    std::vector<int> shown;
-    if (m_settings.allTausInPlot) {
-        for (int i = 0; i < static_cast<int>(m_settings.taus.size()); ++i)
-            shown.push_back(i);
-    } else if (m_settings.selectedTau >= 0 && m_settings.selectedTau < static_cast<int>(m_settings.taus.size())) {
-        shown.push_back(m_settings.selectedTau);
-    }
-    // Two columns of legend entries: w0…w3 (and a τ per line style) stay short in a low plot.
-    m_plot->legend->setWrap(shown.size() > 1 ? 4 : 2);
-    QVector<double> t(kPlotSamples);
-    for (int k = 0; k < kPlotSamples; ++k)
-        t[k] = static_cast<double>(k) / (kPlotSamples - 1);
-    double lo = 0, hi = 1;
-    for (std::size_t n = 0; n < shown.size(); ++n) {
-        const int i = shown[n];
-        const auto w = blendingFunctions(toDouble(m_settings.taus[static_cast<std::size_t>(i)]));
-        for (int j = 0; j < 4; ++j) {
-            QVector<double> y(kPlotSamples);
-            for (int k = 0; k < kPlotSamples; ++k) {
-                y[k] = w[static_cast<std::size_t>(j)](t[k]);
-                lo = std::min(lo, y[k]);
-                hi = std::max(hi, y[k]);
-            }
-            QCPGraph* g = m_plot->addGraph();
-            g->setData(t, y, true);
-            g->setPen(
-                QPen(CanvasStyle::series(j), 2.0 * scale, shown.size() > 1 ? tauPenStyle(static_cast<int>(n)) : Qt::SolidLine));
-            g->setName(QStringLiteral("w") + subscriptDigits(j));
-            if (n > 0)
-                g->removeFromLegend();
-        }
-    }
-    // With several τ, one legend entry per line style.
-    if (shown.size() > 1)
-        for (std::size_t n = 0; n < shown.size(); ++n) {
-            QCPGraph* key = m_plot->addGraph();
-            key->setPen(QPen(QColor(0x55, 0x55, 0x55), 1.5 * scale, tauPenStyle(static_cast<int>(n))));
-            key->setName(QStringLiteral("τ = %1").arg(tauString(m_settings.taus[static_cast<std::size_t>(shown[n])])));
-        }
-    if (shown.size() == 1) // the plot alone tells which tension it shows
-        m_plot->yAxis->setLabel(QStringLiteral("wⱼ(t, %1)").arg(tauString(m_settings.taus[static_cast<std::size_t>(shown[0])])));
-    keepAxisTitlesWhole(m_plot, minimumPlotHeight(m_plot));
-    const double pad = (hi - lo) * 0.05;
-    m_plot->xAxis->setRange(0, 1);
-    m_plot->yAxis->setRange(lo - pad, hi + pad);
-    m_plot->replot(QCustomPlot::rpQueuedReplot);
-}
+void CatmullRomTab::updatePlot() { updateCatmullRomPlot(m_plot, font(), m_settings, m_scene, presentationScale(presentation())); }
 
-void CatmullRomTab::updateCurvaturePlot(double scale)
-{
-    m_plot->xAxis->setLabel(tr("arc length s"));
-    m_plot->yAxis->setLabel(tr("curvature κ"));
-    std::vector<double> values; // every κ shown, for the range
-    double length = 0;
-    auto addProfile = [&](const CurvatureProfile& profile, const QPen& pen, const QString& name) {
-        if (profile.samples.empty())
-            return;
-        QVector<double> s, kappa;
-        const double nan = std::numeric_limits<double>::quiet_NaN();
-        for (std::size_t i = 0; i < profile.samples.size(); ++i) {
-            if (i > 0 && !profile.samples[i].empty()) { // a gap between segments: a jump of κ is a break, not a slope
-                s << profile.samples[i].front().s;
-                kappa << nan;
-            }
-            for (const CurvatureSample& sample : profile.samples[i]) {
-                s << sample.s;
-                kappa << (sample.kappa ? *sample.kappa : nan); // undefined (a cusp): a gap, never 0
-                if (sample.kappa)
-                    values.push_back(*sample.kappa);
-            }
-        }
-        length = std::max(length, profile.length());
-        QCPGraph* g = m_plot->addGraph();
-        g->setData(s, kappa, true); // in order: the two samples of a knot keep their sides
-        g->setPen(pen);
-        g->setName(name);
-    };
-    const double width = 2.0 * scale;
-    for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
-        const bool selected = static_cast<int>(i) == m_settings.selectedTau;
-        addProfile(m_scene.curves[i].curvature, QPen(tensionColour(m_scene.curves[i].tau), selected ? 1.5 * width : width),
-                   QStringLiteral("τ = %1").arg(tauString(m_scene.curves[i].tau)));
-    }
-    for (std::size_t i = 0; i < m_scene.otherEnds.size(); ++i)
-        addProfile(m_scene.otherEnds[i].curvature, QPen(tensionColour(m_scene.otherEnds[i].tau), 0.75 * width, Qt::DashLine),
-                   tr("τ = %1, %2 ends")
-                       .arg(tauString(m_scene.otherEnds[i].tau), CatmullRomReport::endsName(m_scene.otherEnds[i].ends)));
-    addProfile(m_scene.bezierCurvature, QPen(kBezierColor, width, Qt::DashDotLine), tr("Bézier"));
-    addProfile(m_scene.splineCurvature, QPen(kSplineColor, width), tr("cubic spline C²"));
-
-    // The knots of the selected τ, where its κ may jump.
-    if (m_settings.selectedTau >= 0 && m_settings.selectedTau < static_cast<int>(m_scene.curves.size())) {
-        const CurvatureProfile& profile = m_scene.curves[static_cast<std::size_t>(m_settings.selectedTau)].curvature;
-        const bool closed = m_settings.ends == CatmullRomEnds::Closed;
-        for (std::size_t k = 0; k < profile.knots.size(); ++k) {
-            if (!closed && (k == 0 || k + 1 == profile.knots.size()))
-                continue; // the ends of an open curve are no knots
-            auto* line = new QCPItemStraightLine(m_plot);
-            line->point1->setCoords(profile.knots[k], 0);
-            line->point2->setCoords(profile.knots[k], 1);
-            line->setPen(QPen(QColor(0x60, 0x60, 0x60, 170), scale, Qt::DashLine));
-            line->setLayer(QStringLiteral("grid"));
-        }
-    }
-
-    // The range of most values: a near-cusp's spike would flatten every other curve.
-    double lo = -1, hi = 1;
-    if (!values.empty()) {
-        std::sort(values.begin(), values.end());
-        const auto at = [&values](double q) {
-            return values[static_cast<std::size_t>(std::lround(q * static_cast<double>(values.size() - 1)))];
-        };
-        lo = std::min(0.0, at(0.01));
-        hi = std::max(0.0, at(0.99));
-        const double spread = hi - lo;
-        if (!(spread > 0) || !std::isfinite(spread)) {
-            lo -= 1;
-            hi += 1;
-        } else {
-            lo -= 0.08 * spread;
-            hi += 0.08 * spread;
-        }
-    }
-    keepAxisTitlesWhole(m_plot, minimumPlotHeight(m_plot));
-    m_plot->xAxis->setRange(0, length > 0 && std::isfinite(length) ? length : 1.0);
-    m_plot->yAxis->setRange(lo, hi);
-    m_plot->replot(QCustomPlot::rpQueuedReplot);
-}
-
-QRectF CatmullRomTab::contentBounds() const
-{
-    const QRectF box = pointBounds(m_editor->points());
-    // The curves overshoot the points for large |τ|; include them, up to one box size around.
-    const QRectF limit = box.adjusted(-box.width(), -box.height(), box.width(), box.height());
-    double x0 = box.left(), x1 = box.right(), y0 = box.top(), y1 = box.bottom();
-    auto include = [&](const std::vector<Point>& samples) {
-        for (const Point& p : samples)
-            if (isFinite(p) && limit.contains(QPointF(p.x, p.y))) {
-                x0 = std::min(x0, p.x);
-                x1 = std::max(x1, p.x);
-                y0 = std::min(y0, p.y);
-                y1 = std::max(y1, p.y);
-            }
-    };
-    for (const auto& c : m_scene.curves)
-        if (m_settings.catmullRom)
-            include(c.samples);
-    for (const auto& c : m_scene.otherEnds)
-        if (m_settings.catmullRom)
-            include(c.samples);
-    include(m_scene.spline);
-    include(m_scene.bezier);
-    return QRectF(QPointF(x0, y0), QPointF(x1, y1));
-}
+QRectF CatmullRomTab::contentBounds() const { return catmullRomContentBounds(m_editor->points(), m_settings, m_scene); }
 
 void CatmullRomTab::updateContentBounds(bool force)
 {
@@ -951,30 +680,6 @@ void CatmullRomTab::updateContentBounds(bool force)
     m_canvas->setContentBounds(contentBounds());
 }
 
-void CatmullRomTab::drawCurves(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const
-{
-    if (!m_scene.bezier.empty()) {
-        p.setPen(QPen(kBezierColor, style.lineWidth(), Qt::DashDotLine, Qt::RoundCap, Qt::RoundJoin));
-        drawPolyline(p, view, m_scene.bezier);
-    }
-    if (!m_scene.splineBezier.empty()) {
-        p.setPen(QPen(kSplineColor, style.lineWidth(), Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-        drawBezierSegments(p, view, m_scene.splineBezier);
-    }
-    if (!m_settings.catmullRom)
-        return;
-    for (std::size_t i = 0; i < m_scene.otherEnds.size(); ++i) {
-        p.setPen(QPen(tensionColour(m_scene.otherEnds[i].tau), style.lineWidth() * 0.75, Qt::DashLine));
-        drawBezierSegments(p, view, m_scene.otherEnds[i].bezier);
-    }
-    for (std::size_t i = 0; i < m_scene.curves.size(); ++i) {
-        const bool selected = static_cast<int>(i) == m_settings.selectedTau;
-        p.setPen(QPen(tensionColour(m_scene.curves[i].tau), style.lineWidth() * (selected ? 1.5 : 1.0), Qt::SolidLine,
-                      Qt::RoundCap, Qt::RoundJoin));
-        drawBezierSegments(p, view, m_scene.curves[i].bezier);
-    }
-}
-
 void CatmullRomTab::drawLegend(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const
 {
     drawCanvasLegend(p, view, style, legend(), legendBox(view, style));
@@ -986,114 +691,26 @@ CanvasLegendBox CatmullRomTab::legendBox(const ViewTransform& view, const Canvas
 {
     // As the De Casteljau tab's key: where it covers least of the curves drawn, and clear of
     // the points and their labels (Fig 2.10's key covered q0's label in the top-left corner).
-    CanvasLegendObstacles avoid;
-    const auto samples = [&](const std::vector<Point>& points) {
-        for (const Point& q : points)
-            avoid.points.push_back(view.toScreen(q));
-    };
-    for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.curves.size(); ++i)
-        samples(m_scene.curves[i].samples);
-    for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.otherEnds.size(); ++i)
-        samples(m_scene.otherEnds[i].samples);
-    samples(m_scene.bezier);
-    samples(m_scene.spline);
+    CanvasLegendObstacles avoid = catmullRomLegendObstacles(view, m_settings, m_scene);
     for (const PointEditor::Mark& mark : m_editor->marks(view, style))
         avoid.keepClear.push_back(mark.label.isEmpty() ? mark.handle : mark.handle.united(mark.label));
     return canvasLegendRect(view, style, legend(), avoid);
 }
 
-CanvasLegend CatmullRomTab::legend() const
-{
-    CanvasLegend legend;
-    legend.alertColor = kErrorColor;
-    for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.curves.size(); ++i) {
-        const auto& c = m_scene.curves[i];
-        legend.entries.push_back({tensionColour(c.tau), c.error.isEmpty() ? Qt::SolidLine : Qt::NoPen,
-                                  QStringLiteral("τ = %1").arg(tauString(c.tau))});
-    }
-    if (m_settings.catmullRom && !m_scene.otherEnds.empty())
-        legend.entries.push_back({QColor(0x77, 0x77, 0x77), Qt::DashLine,
-                                  tr("dashed: %1 ends").arg(CatmullRomReport::endsName(comparedEnds(m_settings.ends)))});
-    if (!m_scene.bezier.empty())
-        legend.entries.push_back({kBezierColor, Qt::DashDotLine, tr("Bézier curve of the same points")});
-    if (m_settings.spline)
-        legend.entries.push_back({kSplineColor, m_scene.spline.empty() ? Qt::NoPen : Qt::SolidLine,
-                                  m_scene.spline.empty() ? tr("no cubic spline: x must increase") : tr("cubic spline C²")});
-    for (const auto& c : m_scene.curves)
-        if (!c.error.isEmpty())
-            legend.note = c.error;
-    return legend;
-}
+CanvasLegend CatmullRomTab::legend() const { return catmullRomLegend(m_settings, m_scene); }
 
 // ---------------------------------------------------------------- examples and documents
 
 bool CatmullRomTab::loadExample(const WorkedExample& example)
 {
-    if (example.tab != "catmull-rom")
+    const auto state = catmullRomExample(example, m_editor->points(), m_settings);
+    if (!state)
         return false;
-    CatmullRomSettings s = m_settings;
-    std::vector<Point> points = m_editor->points();
-    s.spacing = CatmullRomSpacing::Uniform;
-    s.bezier = false;
-    s.spline = false;
-    s.catmullRom = true;
-    s.controlPoints = true;
-    s.splineEnds = SplineEnds::Natural;
-    s.compareEnds = false;
-    s.allTausInPlot = false;
-    auto useTaus = [&s](const std::vector<Rational>& taus) {
-        if (taus.empty() || static_cast<int>(taus.size()) > CatmullRomSettings::kMaxTensions)
-            return false;
-        s.taus = taus;
-        // Select τ = 1/2, the usual value (Def 2.8), when the example has it.
-        const auto half = std::find(taus.begin(), taus.end(), frac(1, 2));
-        s.selectedTau = half != taus.end() ? static_cast<int>(half - taus.begin()) : 0;
-        return true;
-    };
-    if (example.kind == "cubic-spline") { // Ex 2.1
-        points = toDouble(example.points);
-        useTaus({frac(1, 2)});
-        s.ends = CatmullRomEnds::Open;
-        s.spline = true;
-        // Fig 2.1: Ex 2.1's own spline, whose ends are not natural, alone.
-        s.splineEnds = SplineEnds::AsEx21;
-        s.catmullRom = false;
-    } else if (example.kind == "catmull-rom-segment") { // Ex 2.11
-        points = toDouble(example.points);
-        if (!useTaus(example.taus))
-            return false;
-        s.ends = CatmullRomEnds::Segment;
-    } else if (example.kind == "blending") { // Ex 2.12: the points stay
-        if (!useTaus(example.taus))
-            return false;
-        s.allTausInPlot = true;
-        s.curvaturePlot = false;                // Ex 2.12 is about the blending functions
-    } else if (example.kind == "catmull-rom") { // Ex 2.13
-        points = toDouble(example.points);
-        if (!useTaus(example.taus))
-            return false;
-        const auto mode = example.modes.empty() ? std::optional<CatmullRomMode>(CatmullRomMode::Open)
-                                                : parseCatmullRomMode(example.modes.front());
-        if (!mode)
-            return false;
-        s.ends = *mode == CatmullRomMode::Cyclic   ? CatmullRomEnds::Cyclic
-                 : *mode == CatmullRomMode::Closed ? CatmullRomEnds::Closed
-                                                   : CatmullRomEnds::Open;
-        s.compareEnds = example.modes.size() > 1;
-    } else {
-        return false;
-    }
-    for (const Rational& tau : s.taus)
-        if (abs(tau) > CatmullRomSettings::kMaxTensionAbs)
-            return false;
-    if (points.size() < 2 || static_cast<int>(points.size()) > CatmullRomSettings::kMaxPoints)
-        return false;
-
     const QString id = QString::fromStdString(example.id);
     m_undo->beginMacro(tr("Load Ex %1").arg(id));
-    if (points != m_editor->points())
-        m_editor->setPoints(points, tr("Load Ex %1").arg(id));
-    changeSettings(s, tr("Load Ex %1").arg(id));
+    if (state->points != m_editor->points())
+        m_editor->setPoints(state->points, tr("Load Ex %1").arg(id));
+    changeSettings(state->settings, tr("Load Ex %1").arg(id));
     m_undo->endMacro();
     updateContentBounds(true);
     m_canvas->fitToContent();
@@ -1135,77 +752,11 @@ bool CatmullRomTab::loadSettings(const QJsonObject& state, const std::vector<Poi
 
 // ---------------------------------------------------------------- exports and view
 
-QString CatmullRomTab::csv() const
-{
-    QString out = QStringLiteral("point,x,y\n");
-    const auto& points = m_editor->points();
-    for (std::size_t i = 0; i < points.size(); ++i)
-        out += QStringLiteral("q%1,%2,%3\n")
-                   .arg(i)
-                   .arg(QString::fromStdString(formatReadable(points[i].x)), QString::fromStdString(formatReadable(points[i].y)));
-    out += QStringLiteral("\ntau,segment,t,x,y\n");
-    const int samples = CatmullRomScene::kSamplesPerSegment;
-    for (const CatmullRomCurve& c : m_scene.curves) {
-        const QString tau = tauString(c.tau);
-        for (std::size_t k = 0; k < c.samples.size(); ++k) {
-            const int segment = static_cast<int>(k) / samples + 1 + firstSegmentStart(c.ends);
-            const double t = static_cast<double>(static_cast<int>(k) % samples) / (samples - 1);
-            out += QStringLiteral("%1,%2,%3,%4,%5\n")
-                       .arg(tau)
-                       .arg(segment)
-                       .arg(QString::fromStdString(formatReadable(t)), QString::fromStdString(formatReadable(c.samples[k].x)),
-                            QString::fromStdString(formatReadable(c.samples[k].y)));
-        }
-    }
-    if (m_settings.curvaturePlot) {
-        // κ(s) as plotted: a knot appears twice, the end of one segment and the start of the next.
-        out += QStringLiteral("\ncurve,tau,ends,segment,s,kappa\n");
-        const auto number = [](double v) { return QString::fromStdString(formatReadable(v)); };
-        auto write = [&](const QString& curve, const QString& tau, const QString& ends, int firstSegment,
-                         const CurvatureProfile& profile) {
-            for (std::size_t i = 0; i < profile.samples.size(); ++i)
-                for (const CurvatureSample& sample : profile.samples[i])
-                    out += QStringLiteral("%1,%2,%3,%4,%5,%6\n")
-                               .arg(curve, tau, ends)
-                               .arg(static_cast<int>(i) + firstSegment)
-                               .arg(number(sample.s), sample.kappa ? number(*sample.kappa) : QString());
-        };
-        for (const CatmullRomCurve& c : m_scene.curves)
-            write(QStringLiteral("catmull-rom"), tauString(c.tau), endsKey(c.ends), 1 + firstSegmentStart(c.ends), c.curvature);
-        for (const CatmullRomCurve& c : m_scene.otherEnds)
-            write(QStringLiteral("catmull-rom"), tauString(c.tau), endsKey(c.ends), 1 + firstSegmentStart(c.ends), c.curvature);
-        write(QStringLiteral("bezier"), QString(), QString(), 1, m_scene.bezierCurvature);
-        write(QStringLiteral("spline"), QString(), QString(), 1, m_scene.splineCurvature);
-    }
-    return out;
-}
+QString CatmullRomTab::csv() const { return catmullRomCsv(m_editor->points(), m_settings, m_scene); }
 
 void CatmullRomTab::drawTikz(TikzWriter& w) const
 {
-    w.comment(QStringLiteral("Catmull-Rom curves (thesis §2.2), mode %1").arg(endsKey(m_settings.ends)));
-    const auto& points = m_editor->points();
-    // The polygon of the points q_i, dashed and thin, as the point editor draws it.
-    if (m_settings.controlPoints && m_editor->polygonVisible())
-        w.polyline(points, CanvasStyle().polygon, 0.6, true);
-    if (!m_scene.bezier.empty())
-        w.polyline(m_scene.bezier, kBezierColor, 1.0, Qt::DashDotLine);
-    // The Catmull-Rom segments and the spline's pieces are cubics: written as Bézier segments.
-    if (!m_scene.splineBezier.empty())
-        w.bezierSegments(m_scene.splineBezier, kSplineColor, 1.0);
-    for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.otherEnds.size(); ++i)
-        w.bezierSegments(m_scene.otherEnds[i].bezier, tensionColour(m_scene.otherEnds[i].tau), 0.8, true);
-    for (std::size_t i = 0; m_settings.catmullRom && i < m_scene.curves.size(); ++i) {
-        w.comment(QStringLiteral("tau = %1").arg(tauString(m_scene.curves[i].tau)));
-        w.bezierSegments(m_scene.curves[i].bezier, tensionColour(m_scene.curves[i].tau), 1.2);
-    }
-    for (std::size_t i = 0; m_settings.controlPoints && i < points.size(); ++i)
-        w.point(points[i], CanvasStyle().handle, QStringLiteral("q_{%1}").arg(i));
-    // The canvas's key: the same lines in TeX.
-    const CanvasLegend key = legend();
-    std::vector<TikzLegendEntry> entries;
-    for (const CanvasLegendEntry& e : key.entries)
-        entries.push_back({e.color, e.pen, TikzWriter::texText(e.text)});
-    w.legend(entries, TikzWriter::texText(key.note), key.alertColor);
+    writeCatmullRomTikz(w, m_editor->points(), m_editor->polygonVisible(), m_settings, m_scene);
 }
 
 void CatmullRomTab::presentationChanged(bool)

@@ -99,15 +99,11 @@ private:
     /// The canvas's accessible name and description: the tensions and the points (screen readers).
     void updateCanvasSummary();
     void syncControls();
-    void updatePlotTexts();
+    /// The plot under the canvas for the current settings and scene (catmull_rom_plot.h).
     void updatePlot();
-    /// §2.3 made visible: signed κ against arc length s of every curve drawn, a gap at each
-    /// knot (so a jump of κ shows as a break) and the selected τ's knots marked.
-    void updateCurvaturePlot(double scale);
     void updateContentBounds(bool force);
     void sliderMoved(int value);
     void refuse(const QString& message);
-    void drawCurves(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const;
     void drawLegend(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const;
     CanvasLegendBox legendBox(const ViewTransform& view, const CanvasStyle& style) const;
     QString tensionItemText(const Rational& tau) const;
