@@ -10,6 +10,8 @@
 namespace granota::ui {
 
 struct FitSettings {
+    static constexpr int kMaxIterations = 1000; ///< the most corrections one may ask for (docs/file-formats.md)
+
     int degree = 2;                                             ///< n (the fit uses min(n, k))
     Parametrization parametrization = Parametrization::Uniform; ///< how the t_i are chosen (§2.1.3)
     LeastSquaresSolver solver = LeastSquaresSolver::Qr;         ///< how MP = Q is solved

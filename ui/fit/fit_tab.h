@@ -11,6 +11,7 @@
 #include "ui/common/curvature_comb.h"
 #include "core/curves/fitting/least_squares_fit.h"
 #include "ui/fit/fit_display.h"
+#include "ui/fit/fit_drawing_panel.h"
 #include "ui/fit/fit_settings.h"
 #include "ui/common/curve_tab.h"
 
@@ -23,7 +24,6 @@ class QComboBox;
 class QCPGraph;
 class QCPItemText;
 class QCustomPlot;
-class QGroupBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -33,6 +33,8 @@ class QSplitter;
 namespace granota::ui {
 
 class BackgroundFit;
+class FitReadoutPanel;
+class FitSettingsPanel;
 class CurvatureCombScaleBox;
 class Drawable;
 
@@ -79,8 +81,8 @@ public:
     /// `granota --screenshot` show the finished fit, never a half state.
     void finishFit() const;
     /// Stops the correction of a fit running in the background; the best fit found until then is shown.
-    QPushButton* cancelButton() const { return m_cancel; }
-    QProgressBar* fitProgress() const { return m_progress; }
+    QPushButton* cancelButton() const;
+    QProgressBar* fitProgress() const;
     QString fitError() const { return m_fitError; }
     /// The readouts (error, RMS, max, cond₂) and the warnings as shown, for tests.
     QString readoutText() const;
@@ -94,11 +96,11 @@ public:
     QCheckBox* correctionBox() const { return m_correct; }
     QSpinBox* iterationsBox() const { return m_iterations; }
     QCheckBox* showMatricesBox() const { return m_showMatrices; }
-    QCheckBox* controlPointsBox() const { return m_controlPointsBox; }
-    QCheckBox* residualsBox() const { return m_residualsBox; }
-    QCheckBox* breakdownBox() const { return m_breakdownBox; }
-    QSpinBox* samplesBox() const { return m_samplesBox; }
-    QCheckBox* allParametrizationsBox() const { return m_allParametrizationsBox; }
+    QCheckBox* controlPointsBox() const { return m_drawing->controlPointsBox(); }
+    QCheckBox* residualsBox() const { return m_drawing->residualsBox(); }
+    QCheckBox* breakdownBox() const { return m_drawing->breakdownBox(); }
+    QSpinBox* samplesBox() const { return m_drawing->samplesBox(); }
+    QCheckBox* allParametrizationsBox() const { return m_drawing->allParametrizationsBox(); }
     /// The error plot's line of parametrization `p`, or nullptr when it is not shown.
     QCPGraph* errorGraph(Parametrization p) const;
     /// The curvature comb of the fitted curve (ui/common/curvature_comb.h), on demand.
@@ -154,9 +156,6 @@ private:
     void updateExact();
     void updateTable();
     void importDialog();
-    QString errorText(const Error& error) const;
-    /// Why the degree `asked` is refused (more than k, or more than kMaxFitDegree).
-    QString refusalText(int asked) const;
 
     QLabel* m_tableNote = nullptr;
     QCustomPlot* m_plot = nullptr;
@@ -167,16 +166,12 @@ private:
     QSplitter* m_leftSplitter = nullptr;
     QSplitter* m_bottomSplitter = nullptr;
 
-    QGroupBox* m_settingsGroup = nullptr;
-    QLabel* m_degreeLabel = nullptr;
+    FitSettingsPanel* m_settingsPanel = nullptr; ///< the settings' fields, kept below for the tab's use
     QSpinBox* m_degree = nullptr;
-    QLabel* m_parametrizationLabel = nullptr;
     QComboBox* m_parametrization = nullptr;
-    QLabel* m_solverLabel = nullptr;
     QComboBox* m_solver = nullptr;
     QCheckBox* m_correct = nullptr;
     QSpinBox* m_iterations = nullptr;
-    QPushButton* m_import = nullptr;
     QCheckBox* m_showMatrices = nullptr;
     QCheckBox* m_combBox = nullptr;
     CurvatureCombScaleBox* m_combScaleBox = nullptr;
@@ -184,24 +179,10 @@ private:
     CurvatureComb m_comb;   ///< of the fitted curve, while the comb is shown
     void updateComb();
 
-    QGroupBox* m_displayGroup = nullptr;
-    QCheckBox* m_controlPointsBox = nullptr;
-    QCheckBox* m_residualsBox = nullptr;
-    QCheckBox* m_breakdownBox = nullptr;
-    QLabel* m_samplesLabel = nullptr;
-    QSpinBox* m_samplesBox = nullptr;
-    QCheckBox* m_allParametrizationsBox = nullptr;
+    FitDrawingPanel* m_drawing = nullptr;
 
-    QGroupBox* m_readoutGroup = nullptr;
-    QLabel* m_sseLabel = nullptr;
-    QLabel* m_rmsLabel = nullptr;
-    QLabel* m_maxLabel = nullptr;
-    QLabel* m_condLabel = nullptr;
-    QLabel* m_correctionsLabel = nullptr;
-    QLabel* m_warningLabel = nullptr;
-    QString m_refusal;                  ///< the last refused degree's reason, shown until the next fit
-    QProgressBar* m_progress = nullptr; ///< corrections made by a fit in the background
-    QPushButton* m_cancel = nullptr;    ///< stops it
+    FitReadoutPanel* m_readouts = nullptr;
+    QString m_refusal; ///< the last refused degree's reason, shown until the next fit
     BackgroundFit* m_background = nullptr;
     std::unique_ptr<Drawable> m_exportView; ///< the canvas, once the background fit is done
 
