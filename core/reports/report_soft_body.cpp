@@ -16,8 +16,8 @@
 namespace granota::reports {
 
 namespace {
-constexpr int kSteps = 240;     ///< 4 s at 60 steps/s: a fall, an impact on the floor, rest
-constexpr double kRadius = 120; ///< the frog's body (frog.json)
+constexpr int kSoftBodySteps = 240; ///< 4 s at 60 steps/s: a fall, an impact on the floor, rest
+constexpr double kRadius = 120;     ///< the frog's body (frog.json)
 constexpr int kSides = 10;
 
 struct Run {
@@ -39,14 +39,14 @@ Expected<Run> runXpbd(int substeps)
     if (!body)
         return body.error();
     Run run;
-    for (int s = 0; s < kSteps; ++s) {
+    for (int s = 0; s < kSoftBodySteps; ++s) {
         world->step();
         const double a = world->areaErrorPercent(*body) / 100.0, e = world->maxEdgeStretch(*body);
         run.areaError += a * a;
         run.edgeError += e * e;
     }
-    run.areaError = std::sqrt(run.areaError / kSteps);
-    run.edgeError = std::sqrt(run.edgeError / kSteps);
+    run.areaError = std::sqrt(run.areaError / kSoftBodySteps);
+    run.edgeError = std::sqrt(run.edgeError / kSoftBodySteps);
     return run;
 }
 } // namespace
@@ -71,7 +71,7 @@ Expected<WorkPrecisionReport> softBody(const WorkPrecisionOptions& options)
         if (!run)
             return run.error();
         const double seconds = secondsPerCall([&] { return runXpbd(substeps)->areaError; }, options.minSecondsPerPoint, &sink) /
-                               kSteps;
+                               kSoftBodySteps;
         area.samples.push_back({double(substeps), std::max(run->areaError, 1e-18), seconds});
         edges.samples.push_back({double(substeps), std::max(run->edgeError, 1e-18), seconds});
         if (!progress.tick(level + 1, maxLevel + 2))
@@ -86,17 +86,18 @@ Expected<WorkPrecisionReport> softBody(const WorkPrecisionOptions& options)
         if (!sim)
             return sim.error();
         double sum = 0;
-        for (int s = 0; s < kSteps; ++s) {
+        for (int s = 0; s < kSoftBodySteps; ++s) {
             (*sim)->step();
             const double a = ((*sim)->bodyArea(0) - (*sim)->bodyTargetArea(0)) / (*sim)->bodyTargetArea(0);
             sum += a * a;
         }
-        return std::sqrt(sum / kSteps);
+        return std::sqrt(sum / kSoftBodySteps);
     };
     auto seedError = runSeed();
     if (!seedError)
         return seedError.error();
-    const double seedSeconds = secondsPerCall([&] { return runSeed().value(); }, options.minSecondsPerPoint, &sink) / kSteps;
+    const double seedSeconds = secondsPerCall([&] { return runSeed().value(); }, options.minSecondsPerPoint, &sink) /
+                               kSoftBodySteps;
     r.series = {std::move(area), std::move(edges), {"seed area (Annex II)", {{1.0, *seedError, seedSeconds}}}};
     progress.tick(1, 1);
     return r;

@@ -27,7 +27,8 @@ bool finiteCoefficients(const std::array<Point, 4>& c)
 /// Horner in each coordinate as Polynomial::operator() does; the first sample is skipped
 /// when `out` already ends at the join (as outline.cpp's appendSegment). Returns false when
 /// a coefficient overflows.
-bool appendSegment(std::vector<Point>& out, Point p0, Point p1, Point p2, Point p3, double tau, int samples, bool checkFinite)
+bool appendCatmullRomSegment(std::vector<Point>& out, Point p0, Point p1, Point p2, Point p3, double tau, int samples,
+                             bool checkFinite)
 {
     const std::array<Point, 4> c = catmullRomCoefficients(p0, p1, p2, p3, tau);
     if (checkFinite && !finiteCoefficients(c))
@@ -57,7 +58,8 @@ void sampleSeedBodyOutline(const std::vector<Point>& v, int samplesPerSegment, s
     const std::size_t n = v.size(), count = n + 3;
     const auto control = [&](std::size_t k) -> const Point& { return k >= 1 && k <= n ? v[k - 1] : v[0]; };
     for (std::size_t i = 1; i + 2 < count; ++i)
-        appendSegment(out, control(i - 1), control(i), control(i + 1), control(i + 2), kProcessingTau, samplesPerSegment, false);
+        appendCatmullRomSegment(out, control(i - 1), control(i), control(i + 1), control(i + 2), kProcessingTau,
+                                samplesPerSegment, false);
 }
 
 void sampleClosedCatmullRomOutline(const std::vector<Point>& v, int samplesPerSegment, double tau, std::vector<Point>& out)
@@ -71,7 +73,7 @@ void sampleClosedCatmullRomOutline(const std::vector<Point>& v, int samplesPerSe
     const long size = static_cast<long>(v.size());
     const auto q = [&](long j) -> const Point& { return v[static_cast<std::size_t>(((j % size) + size) % size)]; };
     for (long i = 1; i <= size; ++i)
-        if (!appendSegment(out, q(i - 2), q(i - 1), q(i), q(i + 1), tau, samplesPerSegment, true))
+        if (!appendCatmullRomSegment(out, q(i - 2), q(i - 1), q(i), q(i + 1), tau, samplesPerSegment, true))
             return polygon();
 }
 
@@ -87,7 +89,7 @@ void sampleLegOutline(Point m, Point e, Point w, double f, int samplesPerSegment
     const Point wPlus(w.x + d2.y * f, w.y - d2.x * f), wMinus(w.x - d2.y * f, w.y + d2.x * f);
     const std::array<Point, 8> c{mPlus, mPlus, ePlus, wPlus, wMinus, eMinus, mMinus, mPlus};
     for (std::size_t i = 1; i + 2 < c.size(); ++i)
-        appendSegment(out, c[i - 1], c[i], c[i + 1], c[i + 2], kProcessingTau, samplesPerSegment, false);
+        appendCatmullRomSegment(out, c[i - 1], c[i], c[i + 1], c[i + 2], kProcessingTau, samplesPerSegment, false);
 }
 
 void sampleBezierCurve(const std::vector<Point>& control, int samples, std::vector<Point>& work, std::vector<Point>& out)

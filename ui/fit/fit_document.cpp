@@ -45,15 +45,14 @@ PointListMessages FitDocument::pointMessages()
 
 std::optional<FitDocument> FitDocument::read(const QJsonObject& state, QString& error)
 {
-    constexpr int kMaxDegree = kMaxFitDegree; // the core's limit
     FitDocument doc;
     FitSettings& s = doc.settings;
     const QJsonValue degree = state.value(QStringLiteral("degree"));
     if (!degree.isUndefined()) {
         const double d = degree.toDouble(-1);
-        if (!degree.isDouble() || d != std::floor(d) || d < 0 || d > kMaxDegree) {
+        if (!degree.isDouble() || d != std::floor(d) || d < 0 || d > kMaxFitDegree) {
             error = QCoreApplication::translate("granota::ui::FitTab", "The degree must be a whole number from 0 to %1.")
-                        .arg(kMaxDegree);
+                        .arg(kMaxFitDegree);
             return std::nullopt;
         }
         s.degree = static_cast<int>(d);

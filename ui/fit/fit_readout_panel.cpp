@@ -228,19 +228,18 @@ QString FitReadoutPanel::errorText(const Error& error, int degree, LeastSquaresS
 
 QString FitReadoutPanel::refusalText(int asked, int count)
 {
-    constexpr int kMaxDegree = kMaxFitDegree; // the core's limit
-    if (asked > kMaxDegree)
+    if (asked > kMaxFitDegree)
         return QCoreApplication::translate("granota::ui::FitTab",
                                            "Degree %1 is refused: the highest is %2, beyond which the Bernstein basis is too "
                                            "ill-conditioned for any solver.")
             .arg(asked)
-            .arg(kMaxDegree);
+            .arg(kMaxFitDegree);
     return QCoreApplication::translate("granota::ui::FitTab",
                                        "Degree %1 needs %2 data points (n + 1 ≤ k + 1); there are %3, so n ≤ %4.")
         .arg(asked)
         .arg(asked + 1)
         .arg(count)
-        .arg(std::min(count - 1, kMaxDegree));
+        .arg(std::min(count - 1, kMaxFitDegree));
 }
 
 } // namespace granota::ui

@@ -17,8 +17,6 @@ namespace granota::ui {
 
 namespace {
 
-constexpr int kMaxDegree = kMaxFitDegree; ///< the core's limit
-
 /// A combo box that never truncates its items (in Catalan, in presentation mode): when the
 /// side panel is narrow, the form wraps its label above it instead.
 class WholeComboBox : public QComboBox {
@@ -35,7 +33,7 @@ FitSettingsPanel::FitSettingsPanel(QWidget* parent) : QGroupBox(parent)
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     form->setRowWrapPolicy(QFormLayout::WrapLongRows); // narrow (presentation, Catalan): labels above the fields
     m_degree = new FitDegreeBox(this);
-    m_degree->setRange(0, kMaxDegree);
+    m_degree->setRange(0, kMaxFitDegree);
     m_degreeLabel = new QLabel(this);
     m_degreeLabel->setBuddy(m_degree);
     form->addRow(m_degreeLabel, m_degree);
@@ -74,7 +72,7 @@ FitSettingsPanel::FitSettingsPanel(QWidget* parent) : QGroupBox(parent)
 
 void FitSettingsPanel::showSettings(const FitSettings& s, int k, int fittedDegree)
 {
-    m_degree->setMaximum(std::clamp(k, 0, kMaxDegree));
+    m_degree->setMaximum(std::clamp(k, 0, kMaxFitDegree));
     m_degree->setValue(fittedDegree);
     m_parametrization->setCurrentIndex(m_parametrization->findData(static_cast<int>(s.parametrization)));
     m_solver->setCurrentIndex(m_solver->findData(static_cast<int>(s.solver)));

@@ -53,8 +53,6 @@
 namespace granota::ui {
 
 namespace {
-
-constexpr int kMaxDegree = kMaxFitDegree; ///< the core's limit
 /// Undo-merge fields of the settings' ValueCommand (changes of the same field merge).
 enum Field { DegreeField, ParametrizationField, SolverField, CorrectionField };
 constexpr int kFieldMergeIdBase = 0x46490000; ///< "FI": the merge id of field f is this + f
@@ -519,7 +517,7 @@ void FitTab::updatePlot()
     const std::vector<Point>& q = m_editor->points();
     // Every degree allowed, unless that would be too much work to redo on each change (four
     // times the work with every parametrization: the same budget goes to fewer degrees).
-    const int highest = std::clamp(static_cast<int>(q.size()) - 1, 0, kMaxDegree);
+    const int highest = std::clamp(static_cast<int>(q.size()) - 1, 0, kMaxFitDegree);
     const double lines = m_display.errorPlotAllParametrizations ? static_cast<double>(kPlottedParametrizations.size()) : 1.0;
     int plotted = 0;
     for (double work = 0; plotted < highest; ++plotted) {
@@ -605,7 +603,7 @@ bool FitTab::loadExample(const granota::WorkedExample& example)
         return false;
     const std::optional<Parametrization> p = parseParametrization(example.parametrization);
     FitSettings after = m_settings;
-    after.degree = std::clamp(example.degree, 0, kMaxDegree);
+    after.degree = std::clamp(example.degree, 0, kMaxFitDegree);
     after.parametrization = p.value_or(Parametrization::Uniform);
     after.solver = LeastSquaresSolver::Qr;
     after.correctParameters = false;
