@@ -3515,11 +3515,6 @@ a cada canvi alentiria la finestra.</translation>
             <translation>Els vèrtexs del cos, numerats com als vectors de l'Annex II (v₀ sota el cap), i les articulacions de les potes.</translation>
         </message>
         <message>
-            <location filename="../ui/frog_tab.cpp" line="571" />
-            <source>Springs</source>
-            <translation>Molls</translation>
-        </message>
-        <message>
             <location filename="../ui/frog_tab.cpp" line="572" />
             <source>The polygon's edges: the springs of §4.4 that keep neighbours at their length.</source>
             <translation>Els costats del polígon: els molls de §4.4 que mantenen els veïns a la seua distància.</translation>

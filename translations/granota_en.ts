@@ -3515,11 +3515,6 @@ on each change would slow the window.</translation>
             <translation>The body's vertices, numbered as in Annex II's arrays (v₀ under the head), and the joints of the legs.</translation>
         </message>
         <message>
-            <location filename="../ui/frog_tab.cpp" line="571" />
-            <source>Springs</source>
-            <translation>Springs</translation>
-        </message>
-        <message>
             <location filename="../ui/frog_tab.cpp" line="572" />
             <source>The polygon's edges: the springs of §4.4 that keep neighbours at their length.</source>
             <translation>The polygon's edges: the springs of §4.4 that keep neighbours at their length.</translation>
