@@ -14,8 +14,10 @@ export QT_QPA_PLATFORM=xcb QT_SCALE_FACTOR=1
 scratch="$(mktemp -d "${TMPDIR:-/tmp}/granota-xvfb.XXXXXX")"
 xvfb="" wm=""
 cleanup() {
-  for pid in $wm $xvfb; do kill "$pid" 2>/dev/null || true; done
-  for pid in $wm $xvfb; do wait "$pid" 2>/dev/null || true; done
+  # Xvfb first: openbox ends with its display, and the supervisor, which starts openbox again
+  # only while Xvfb lives, ends after it.
+  for pid in $xvfb $wm; do kill "$pid" 2>/dev/null || true; done
+  for pid in $xvfb $wm; do wait "$pid" 2>/dev/null || true; done
   rm -rf "$scratch"
 }
 trap cleanup EXIT
@@ -28,12 +30,30 @@ for _ in $(seq 300); do
 done
 [ -s "$scratch/display" ] || { echo "error: Xvfb named no display in 30 s" >&2; exit 1; }
 export DISPLAY=":$(head -1 "$scratch/display")"
-openbox >/dev/null 2>&1 &
+# openbox under a supervisor: should it ever exit (a CI run once saw every window of a suite
+# left unframed, as with no window manager at all), it is started again at once, and takes
+# over the windows already mapped, as a window manager does when it starts.
+(
+  while kill -0 "$xvfb" 2>/dev/null; do
+    openbox >>"$scratch/openbox.log" 2>&1 || true
+    echo "openbox exited; started again" >>"$scratch/openbox.log"
+    sleep 0.2
+  done
+) &
 wm=$!
-for _ in $(seq 300); do xprop -root _NET_SUPPORTING_WM_CHECK 2>/dev/null | grep -q window && break; sleep 0.1; done
+managed=""
+for _ in $(seq 600); do
+  if xprop -root _NET_SUPPORTING_WM_CHECK 2>/dev/null | grep -q window; then managed=1; break; fi
+  sleep 0.1
+done
+[ -n "$managed" ] || { echo "error: openbox did not start on $DISPLAY in 60 s:" >&2; cat "$scratch/openbox.log" >&2; exit 1; }
 # openbox announces itself before it manages new windows: a window mapped in that moment
 # may never be exposed (tests/gui_timeouts.h shows it again if so).
 sleep 1
 status=0
 "$@" || status=$?
+if [ "$status" -ne 0 ] && [ -s "$scratch/openbox.log" ]; then
+  echo "openbox said:" >&2
+  tail -20 "$scratch/openbox.log" >&2
+fi
 exit "$status"
