@@ -142,6 +142,22 @@ template <class Tab> void show(Tab& tab)
 class TestGuiExports : public QObject {
     Q_OBJECT
 
+private:
+    /// The De Casteljau tab of `window` on screen with its hodograph shown, on `example` (or,
+    /// for none, a curve ending in the lower right corner); nullptr if that cannot be done.
+    static DeCasteljauTab* showHodographOf(MainWindow& window, const QString& example)
+    {
+        auto* tab = window.findChild<DeCasteljauTab*>();
+        if (!showOnTab(window, QStringLiteral("decasteljau")) || !tab)
+            return nullptr;
+        if (example.isEmpty())
+            tab->loadCurve(kEndsLowerRight, QStringLiteral("curve"));
+        else if (!window.loadExample(example))
+            return nullptr;
+        tab->setHodographVisible(true);
+        return tab;
+    }
+
 private slots:
     void initTestCase() { useTestSettings(); }
 
@@ -179,14 +195,8 @@ private slots:
     {
         QFETCH(QString, example);
         MainWindow window;
-        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
-        auto* tab = window.findChild<DeCasteljauTab*>();
+        DeCasteljauTab* tab = showHodographOf(window, example);
         QVERIFY(tab);
-        if (example.isEmpty())
-            tab->loadCurve(kEndsLowerRight, QStringLiteral("curve"));
-        else
-            QVERIFY(window.loadExample(example));
-        tab->setHodographVisible(true);
         QCoreApplication::processEvents();
         const auto& view = tab->canvas()->view();
         const auto& style = tab->canvas()->style();
@@ -211,14 +221,8 @@ private slots:
     {
         QFETCH(QString, example);
         MainWindow window;
-        QVERIFY(showOnTab(window, QStringLiteral("decasteljau")));
-        auto* tab = window.findChild<DeCasteljauTab*>();
+        DeCasteljauTab* tab = showHodographOf(window, example);
         QVERIFY(tab);
-        if (example.isEmpty())
-            tab->loadCurve(kEndsLowerRight, QStringLiteral("curve"));
-        else
-            QVERIFY(window.loadExample(example));
-        tab->setHodographVisible(true);
         const QString tex = tab->tikz();
         const QRectF inset = boxAfter(tex, QStringLiteral("% inset"));
         QVERIFY2(!inset.isEmpty(), qPrintable(tex));
