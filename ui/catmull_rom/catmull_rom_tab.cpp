@@ -634,7 +634,8 @@ void CatmullRomTab::pointsEdited()
 void CatmullRomTab::recompute()
 {
     m_scene = computeScene(m_editor->points(), m_settings);
-    m_exact->setContent(CatmullRomReport::html(m_editor->points(), m_settings, m_scene));
+    m_exact->setContent(
+        CatmullRomReport::html(m_editor->points(), m_settings, m_scene, computeAnalysis(m_editor->points(), m_settings)));
     updatePlot();
     m_canvas->update();
     updateCanvasSummary();
