@@ -1,6 +1,7 @@
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/common/number_text.h"
 
+#include "core/base/aabb.h"
 #include "core/base/math_constants.h"
 #include "core/curves/bezier/bernstein_properties.h"
 #include "core/curves/bezier/curve_features.h"
@@ -21,7 +22,6 @@
 #include "ui/decasteljau/decasteljau_parameter_control.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
-#include "ui/common/point_extent.h"
 #include "ui/common/point_table.h"
 #include "ui/common/tab_order.h"
 #include "ui/common/value_command.h"
@@ -1223,7 +1223,7 @@ QString DeCasteljauTab::exactCurvatureHtml() const
 
 QRectF DeCasteljauTab::contentBounds() const
 {
-    const std::optional<PointExtent> box = finiteExtent(m_editor->points());
+    const std::optional<Aabb> box = finiteBox(m_editor->points());
     if (!box)
         return {-1, -1, 2, 2};
     double pad = 0.05 * std::max(box->width(), box->height());
