@@ -122,7 +122,7 @@ std::string roundedDecimal(const Rational& q, int digits)
         ++e;
     }
     std::string text = r.get_str(); // `digits` digits: d.ddd… × 10^e
-    const int point = e + 1;       // digits before the decimal point
+    const int point = e + 1;        // digits before the decimal point
     if (point <= 0)
         text.insert(0, std::string(static_cast<std::size_t>(1 - point), '0'));
     else if (point > static_cast<int>(text.size()))
