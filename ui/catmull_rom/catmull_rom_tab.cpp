@@ -753,7 +753,7 @@ bool CatmullRomTab::loadSettings(const QJsonObject& state, const std::vector<Poi
 
 // ---------------------------------------------------------------- exports and view
 
-QString CatmullRomTab::csv() const { return catmullRomCsv(m_editor->points(), m_settings, m_scene); }
+QString CatmullRomTab::csv() const { return catmullRomCsv(m_editor->points(), m_editor->exactPoints(), m_settings, m_scene); }
 
 void CatmullRomTab::drawTikz(TikzWriter& w) const
 {
