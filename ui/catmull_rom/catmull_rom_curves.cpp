@@ -4,7 +4,6 @@
 #include "core/curves/bezier/de_casteljau.h"
 #include "core/curves/splines/cubic_spline.h"
 #include "core/curves/splines/function_spline_segments.h"
-#include "core/exact/rational_approximation.h"
 
 #include <algorithm>
 
@@ -115,7 +114,7 @@ CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomS
     return scene;
 }
 
-CatmullRomAnalysis computeAnalysis(const std::vector<Point>& points, const CatmullRomSettings& settings)
+CatmullRomAnalysis computeAnalysis(const std::optional<std::vector<RPoint>>& exactPoints, const CatmullRomSettings& settings)
 {
     CatmullRomQuestion q;
     q.taus = settings.taus;
@@ -125,7 +124,7 @@ CatmullRomAnalysis computeAnalysis(const std::vector<Point>& points, const Catmu
     q.uniform = settings.spacing == CatmullRomSpacing::Uniform;
     q.spline = settings.spline;
     q.splineEnds = SplineEndConditions<Rational>{settings.splineEnds, settings.startSlope, settings.endSlope};
-    return analyseCatmullRom(smallRationalPoints(points), q);
+    return analyseCatmullRom(exactPoints, q);
 }
 
 } // namespace granota::ui

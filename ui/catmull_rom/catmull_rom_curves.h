@@ -72,9 +72,10 @@ QString translatedError(const Error& error, CatmullRomEnds ends);
 
 CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomSettings& settings);
 
-/// The exact side of the same points and settings (catmull_rom_analysis.h): empty unless
-/// the points are small fractions. Computed once per change, for the side panel.
-CatmullRomAnalysis computeAnalysis(const std::vector<Point>& points, const CatmullRomSettings& settings);
+/// The exact side of the same settings (catmull_rom_analysis.h) for the points exactly as the
+/// point editor keeps them (PointEditor::allExactPoints), empty when some coordinate has no
+/// exact form. Computed once per change, for the side panel.
+CatmullRomAnalysis computeAnalysis(const std::optional<std::vector<RPoint>>& exactPoints, const CatmullRomSettings& settings);
 
 class CatmullRomCurves {
     Q_DECLARE_TR_FUNCTIONS(CatmullRomCurves)

@@ -1,13 +1,11 @@
 #include "ui/catmull_rom/catmull_rom_report.h"
 
-#include "core/base/number_format.h"
 #include "core/curves/splines/bezier_segments.h"
 #include "core/curves/splines/continuity_check.h"
 #include "core/curves/splines/cubic_spline.h"
 #include "core/curves/splines/function_spline_segments.h"
 #include "core/curves/splines/knot_continuity.h"
 #include "core/exact/polynomial_text.h"
-#include "core/exact/rational_approximation.h"
 #include "core/curves/splines/segment_joins.h"
 #include "core/curves/splines/spline_offset_correction.h"
 #include "core/io/worked_examples.h"
@@ -376,10 +374,8 @@ QString processingSection(const CatmullRomSettings& settings)
                      .toHtmlEscaped());
     std::vector<QStringList> rows;
     for (const Rational& tau : settings.taus) {
-        const double s = tauToCurveTightness(toDouble(tau));
-        const auto exact = smallRational(s);
-        rows.push_back({QStringLiteral("τ = %1").arg(tauText(tau)),
-                        QStringLiteral("curveTightness(%1)").arg(exact ? tauText(*exact) : text(formatDouble(s)))});
+        const Rational s = Rational(1) - Rational(2) * tau; // tauToCurveTightness, exactly
+        rows.push_back({QStringLiteral("τ = %1").arg(tauText(tau)), QStringLiteral("curveTightness(%1)").arg(tauText(s))});
     }
     return html + ExactPanel::table({}, rows);
 }
@@ -501,7 +497,7 @@ QString CatmullRomReport::endsName(CatmullRomEnds ends)
 QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRomSettings& settings, const CatmullRomScene& scene,
                                const CatmullRomAnalysis& analysis)
 {
-    const auto rational = smallRationalPoints(points);
+    const auto& rational = analysis.points;
     const bool uniform = settings.spacing == CatmullRomSpacing::Uniform;
     const bool exact = analysis.exactCurves;
     const int count = static_cast<int>(points.size());

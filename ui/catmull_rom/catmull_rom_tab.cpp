@@ -635,7 +635,7 @@ void CatmullRomTab::recompute()
 {
     m_scene = computeScene(m_editor->points(), m_settings);
     m_exact->setContent(
-        CatmullRomReport::html(m_editor->points(), m_settings, m_scene, computeAnalysis(m_editor->points(), m_settings)));
+        CatmullRomReport::html(m_editor->points(), m_settings, m_scene, computeAnalysis(m_editor->allExactPoints(), m_settings)));
     updatePlot();
     m_canvas->update();
     updateCanvasSummary();

@@ -27,6 +27,7 @@ int CatmullRomAnalysis::selectedOrder() const
 CatmullRomAnalysis analyseCatmullRom(const std::optional<std::vector<RPoint>>& points, const CatmullRomQuestion& question)
 {
     CatmullRomAnalysis a;
+    a.points = points;
     if (!points)
         return a;
     if (question.uniform) {

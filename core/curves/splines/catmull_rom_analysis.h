@@ -44,6 +44,8 @@ struct CatmullRomAnalysis {
         std::vector<Curve> curves; ///< one per τ, in the order asked
     };
 
+    /// The points exactly; nullopt when they are not all fractions (then nothing below is set).
+    std::optional<std::vector<RPoint>> points;
     /// The Catmull-Rom segments are exact: the points are fractions and the spacing uniform.
     bool exactCurves = false;
     /// The chosen ends, then the compared ends when asked; empty unless exactCurves.
@@ -54,9 +56,9 @@ struct CatmullRomAnalysis {
 
     /// The cubic spline (Def 2.3) when asked; nullopt also when the points are not fractions.
     std::optional<Expected<PiecewisePolynomial<Rational>>> spline;
-    ContinuityReport<Rational> splineCheck; ///< s, s′, s″, s‴ at the knots and the data (when the spline exists)
-    std::vector<BezierSegment<Rational>> splineBezier;   ///< its graph (x, s(x)) as cubic Bézier segments
-    std::vector<KnotContinuity<Rational>> splineKnots;   ///< and knot by knot in x
+    ContinuityReport<Rational> splineCheck;            ///< s, s′, s″, s‴ at the knots and the data (when the spline exists)
+    std::vector<BezierSegment<Rational>> splineBezier; ///< its graph (x, s(x)) as cubic Bézier segments
+    std::vector<KnotContinuity<Rational>> splineKnots; ///< and knot by knot in x
 
     /// The selected τ's curve, when it exists exactly.
     const Curve* selected(int selectedTau) const;
