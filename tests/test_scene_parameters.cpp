@@ -30,16 +30,26 @@ private slots:
         QTest::addColumn<int>("part");
         QTest::addColumn<int>("index");
         QTest::addColumn<double>("value");
-        QTest::newRow("integer") << "frog" << "sides" << 0 << 0 << 12.0;
-        QTest::newRow("number") << "frog" << "spring_length" << 0 << 0 << 7.5;
-        QTest::newRow("pair y") << "frog" << "gravity" << 0 << 1 << 0.5;
-        QTest::newRow("centre x, no longer the frame's") << "frog" << "center" << 0 << 0 << 300.0;
-        QTest::newRow("radius, no longer the frame's") << "frog" << "radius" << 0 << 0 << 40.0;
-        QTest::newRow("grab: above") << "frog" << "grab" << 0 << 0 << 1.0;
-        QTest::newRow("back legs, lower") << "frog" << "legs" << 1 << 1 << 33.0;
-        QTest::newRow("front elbows, max") << "frog" << "angle_limits" << 4 << 1 << 0.5;
-        QTest::newRow("pendulum's elbow, min") << "pendulum-limits" << "angle_limits" << 1 << 0 << -0.25;
-        QTest::newRow("second link") << "pendulum-limits" << "chain" << 1 << 0 << 55.0;
+        QTest::newRow("integer") << "frog"
+                                 << "sides" << 0 << 0 << 12.0;
+        QTest::newRow("number") << "frog"
+                                << "spring_length" << 0 << 0 << 7.5;
+        QTest::newRow("pair y") << "frog"
+                                << "gravity" << 0 << 1 << 0.5;
+        QTest::newRow("centre x, no longer the frame's") << "frog"
+                                                         << "center" << 0 << 0 << 300.0;
+        QTest::newRow("radius, no longer the frame's") << "frog"
+                                                       << "radius" << 0 << 0 << 40.0;
+        QTest::newRow("grab: above") << "frog"
+                                     << "grab" << 0 << 0 << 1.0;
+        QTest::newRow("back legs, lower") << "frog"
+                                          << "legs" << 1 << 1 << 33.0;
+        QTest::newRow("front elbows, max") << "frog"
+                                           << "angle_limits" << 4 << 1 << 0.5;
+        QTest::newRow("pendulum's elbow, min") << "pendulum-limits"
+                                               << "angle_limits" << 1 << 0 << -0.25;
+        QTest::newRow("second link") << "pendulum-limits"
+                                     << "chain" << 1 << 0 << 55.0;
     }
     void aTickIsTheFileValue()
     {
@@ -113,9 +123,9 @@ private slots:
     void aPlaceTheParameterLacksIsRefused()
     {
         const auto frog = loadScene("frog");
-        QVERIFY(!withParameter(*frog, "gravity", 0, 2, 1.0).ok()); // a pair has x and y
-        QVERIFY(!withParameter(*frog, "legs", 2, 0, 1.0).ok());    // front and back only
-        QVERIFY(!withParameter(*frog, "grab", 0, 0, 3.0).ok());    // three choices
+        QVERIFY(!withParameter(*frog, "gravity", 0, 2, 1.0).ok());     // a pair has x and y
+        QVERIFY(!withParameter(*frog, "legs", 2, 0, 1.0).ok());        // front and back only
+        QVERIFY(!withParameter(*frog, "grab", 0, 0, 3.0).ok());        // three choices
         const auto unknown = withParameter(*frog, "chain", 0, 0, 1.0); // the frog has no chain
         QVERIFY(!unknown.ok());
         QCOMPARE(unknown.error().id, MessageId::SceneUnknownParameter);
