@@ -74,9 +74,9 @@ private slots:
         QVERIFY(read->overlays == current.overlays);
         QCOMPARE(read->speed, current.speed);
         QVERIFY(read->paused && read->fitOutline);
-        QCOMPARE(read->scene.stable.substeps, 12);          // the knobs in force
+        QCOMPARE(read->scene.stable.substeps, 12);                                   // the knobs in force
         QCOMPARE(read->scene.params.gravity.y, loadScene("frog")->params.gravity.y); // the file's
-        QCOMPARE(read->solver, SolverKind::Seed); // a document that names no solver: the seed
+        QCOMPARE(read->solver, SolverKind::Seed);                                    // a document that names no solver: the seed
         QVERIFY(!read->ruler);
         const auto none = FrogDocument::fromJson(QJsonObject(), current, &error);
         QVERIFY(!none);
@@ -119,7 +119,8 @@ private slots:
         QVERIFY(wide.ok());
         const QJsonObject params{{"bodies", 200}, {"width", wide->params.width}, {"height", wide->params.height}};
         QString error;
-        const auto read = FrogDocument::fromJson(QJsonObject{{"scene", "many-bodies"}, {"params", params}}, FrogDocument(), &error);
+        const auto read = FrogDocument::fromJson(QJsonObject{{"scene", "many-bodies"}, {"params", params}}, FrogDocument(),
+                                                 &error);
         QVERIFY2(read, qPrintable(error));
         QCOMPARE(read->scene.bodies, 200);
     }

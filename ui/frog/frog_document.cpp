@@ -36,12 +36,15 @@ bool readParams(const QJsonValue& params, const QString& name, SceneSpec& spec, 
     const QJsonObject p = params.toObject();
     for (auto it = p.begin(); it != p.end(); ++it) {
         if (!spec.hasParam(it.key().toStdString()))
-            return refuse(error, QCoreApplication::translate("granota::ui::FrogTab", "Scene “%1” has no parameter “%2”.").arg(name, it.key()));
+            return refuse(
+                error,
+                QCoreApplication::translate("granota::ui::FrogTab", "Scene “%1” has no parameter “%2”.").arg(name, it.key()));
         values.emplace_back(it.key().toStdString(), fromQJson(it.value()));
     }
     auto changed = withParameters(spec, values);
     if (!changed)
-        return refuse(error, QCoreApplication::translate("granota::ui::FrogTab", "This value was refused: %1").arg(ErrorText::of(changed.error())));
+        return refuse(error, QCoreApplication::translate("granota::ui::FrogTab", "This value was refused: %1")
+                                 .arg(ErrorText::of(changed.error())));
     spec = std::move(changed).value();
     return true;
 }
@@ -56,7 +59,8 @@ bool readOverlays(const QJsonValue& v, FrogOverlays& overlays, QString* error)
         if (f.isUndefined())
             continue;
         if (!f.isBool())
-            return refuse(error, QCoreApplication::translate("granota::ui::FrogTab", "The overlay “%1” must be true or false.").arg(QLatin1String(overlay.key)));
+            return refuse(error, QCoreApplication::translate("granota::ui::FrogTab", "The overlay “%1” must be true or false.")
+                                     .arg(QLatin1String(overlay.key)));
         overlays.*overlay.flag = f.toBool();
     }
     return true;
@@ -76,7 +80,8 @@ QString frogSceneLoadError(const QString& name, const Error& coreError)
     if (names.contains(name))
         return QCoreApplication::translate("granota::ui::FrogTab", "The scene “%1” cannot be loaded: %2")
             .arg(name, coreError.id == MessageId::None ? QString::fromStdString(coreError.message) : ErrorText::of(coreError));
-    return QCoreApplication::translate("granota::ui::FrogTab", "Unknown scene “%1”. The scenes are: %2.").arg(name, names.join(QStringLiteral(", ")));
+    return QCoreApplication::translate("granota::ui::FrogTab", "Unknown scene “%1”. The scenes are: %2.")
+        .arg(name, names.join(QStringLiteral(", ")));
 }
 
 QJsonObject FrogDocument::toJson(const RecordedRun* run) const
@@ -131,7 +136,9 @@ std::optional<FrogDocument> FrogDocument::fromJson(const QJsonObject& state, con
     if (state.contains(QStringLiteral("bezier_outline"))) {
         const QString b = state.value(QStringLiteral("bezier_outline")).toString();
         if (b != QLatin1String("fit") && b != QLatin1String("precomputed")) {
-            refuse(error, QCoreApplication::translate("granota::ui::FrogTab", "The Bézier outline must be “precomputed” or “fit”, not “%1”.").arg(b));
+            refuse(error, QCoreApplication::translate("granota::ui::FrogTab",
+                                                      "The Bézier outline must be “precomputed” or “fit”, not “%1”.")
+                              .arg(b));
             return std::nullopt;
         }
         doc.fitOutline = b == QLatin1String("fit");
@@ -147,7 +154,8 @@ std::optional<FrogDocument> FrogDocument::fromJson(const QJsonObject& state, con
         const QJsonValue v = state.value(QStringLiteral("speed"));
         const auto& speeds = StepPacer::kSpeeds;
         if (!v.isDouble() || std::find(speeds.begin(), speeds.end(), v.toDouble()) == speeds.end()) {
-            refuse(error, QCoreApplication::translate("granota::ui::FrogTab", "The speed must be one of 0.125, 0.25, 0.5, 1, 2 and 4."));
+            refuse(error,
+                   QCoreApplication::translate("granota::ui::FrogTab", "The speed must be one of 0.125, 0.25, 0.5, 1, 2 and 4."));
             return std::nullopt;
         }
         doc.speed = v.toDouble();
@@ -158,7 +166,8 @@ std::optional<FrogDocument> FrogDocument::fromJson(const QJsonObject& state, con
         doc.scene.stable = StableSettings();
         auto knobs = withStableSettings(doc.scene, fromQJson(state.value(QStringLiteral("stable"))));
         if (!knobs) {
-            refuse(error, QCoreApplication::translate("granota::ui::FrogTab", "This value was refused: %1").arg(ErrorText::of(knobs.error())));
+            refuse(error, QCoreApplication::translate("granota::ui::FrogTab", "This value was refused: %1")
+                              .arg(ErrorText::of(knobs.error())));
             return std::nullopt;
         }
         doc.scene = std::move(knobs).value();
@@ -172,7 +181,8 @@ std::optional<FrogDocument> FrogDocument::fromJson(const QJsonObject& state, con
                             return v.isDouble() && std::isfinite(v.toDouble()) && std::abs(v.toDouble()) <= kMaxRulerCoordinate;
                         });
         if (!ok) {
-            refuse(error, QCoreApplication::translate("granota::ui::FrogTab", "The ruler must be four numbers: x and y of each end, in px."));
+            refuse(error, QCoreApplication::translate("granota::ui::FrogTab",
+                                                      "The ruler must be four numbers: x and y of each end, in px."));
             return std::nullopt;
         }
         doc.ruler = std::pair{Point(r[0].toDouble(), r[1].toDouble()), Point(r[2].toDouble(), r[3].toDouble())};
@@ -181,7 +191,8 @@ std::optional<FrogDocument> FrogDocument::fromJson(const QJsonObject& state, con
     if (state.contains(QStringLiteral("recording"))) {
         auto parsed = documentRunFromQJson(state.value(QStringLiteral("recording")));
         if (!parsed) {
-            refuse(error, QCoreApplication::translate("granota::ui::FrogTab", "The frog's recording was refused: %1").arg(ErrorText::of(parsed.error())));
+            refuse(error, QCoreApplication::translate("granota::ui::FrogTab", "The frog's recording was refused: %1")
+                              .arg(ErrorText::of(parsed.error())));
             return std::nullopt;
         }
         doc.recording = std::move(parsed).value();

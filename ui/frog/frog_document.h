@@ -28,7 +28,7 @@ struct FrogDocument {
     FrogOverlays overlays;
     bool fitOutline = false; ///< §4.9: "bezier_outline" is "fit" (else "precomputed")
     bool paused = false;
-    double speed = 1; ///< one of StepPacer::kSpeeds
+    double speed = 1;                             ///< one of StepPacer::kSpeeds
     std::optional<std::pair<Point, Point>> ruler; ///< its two ends, scene px
     /// The run read from "recording" (fromJson only: toJson writes the run itself).
     std::optional<DocumentRun> recording;

@@ -42,8 +42,8 @@ QString FrogTab::csv() const
     QString out;
     QTextStream s(&out);
     const Simulation* sim = m_canvas->simulation();
-    s << "# scene " << QString::fromStdString(m_scene.name) << " (" << QString::fromStdString(m_scene.section) << "), solver " << QString::fromStdString(solverName(m_solver))
-      << ", step " << (sim ? sim->stepCount() : 0) << "\n";
+    s << "# scene " << QString::fromStdString(m_scene.name) << " (" << QString::fromStdString(m_scene.section) << "), solver "
+      << QString::fromStdString(solverName(m_solver)) << ", step " << (sim ? sim->stepCount() : 0) << "\n";
     s << "kind,index,point,x,y\n";
     if (!sim)
         return out;
@@ -71,7 +71,8 @@ void FrogTab::drawTikz(TikzWriter& w) const
         return;
     const double H = m_scene.params.height;
     w.comment(QStringLiteral("Granota: scene %1 (%2), solver %3, step %4")
-                  .arg(QString::fromStdString(m_scene.name), QString::fromStdString(m_scene.section), QString::fromStdString(solverName(m_solver)))
+                  .arg(QString::fromStdString(m_scene.name), QString::fromStdString(m_scene.section),
+                       QString::fromStdString(solverName(m_solver)))
                   .arg(sim->stepCount()));
     // The frame, so that the picture keeps the scene's proportions; what is drawn is clipped
     // to it, as the canvas clips to the scene (a foot past the floor is not drawn).

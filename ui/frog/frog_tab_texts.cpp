@@ -83,9 +83,9 @@ void FrogTab::retranslate()
                                  "thesis, position-based constraints with compliance (XPBD) that hold the target "
                                  "area and stay stable on stiff and extreme settings. Switching starts the scene again."));
     m_canvas->setAccessibleName(tr("Frog canvas"));
-    m_canvas->setSceneSummary(
-        tr("Scene %1, %2 solver")
-            .arg(sceneTitle(QString::fromStdString(m_scene.name)), m_solverCombo->itemText(m_solver == SolverKind::Stable ? 1 : 0)));
+    m_canvas->setSceneSummary(tr("Scene %1, %2 solver")
+                                  .arg(sceneTitle(QString::fromStdString(m_scene.name)),
+                                       m_solverCombo->itemText(m_solver == SolverKind::Stable ? 1 : 0)));
     m_pause->setText(m_pause->isChecked() ? tr("Run") : tr("Pause"));
     keepWidestTextWidth(m_pause, {tr("Run"), tr("Pause")}); // one width, running or not
     m_pause->setToolTip(tr("Pause or run the animation, one fixed step per frame at 60 frames per second (P)."));

@@ -413,7 +413,7 @@ Error notInScene(const SceneSpec& s, const std::string& key)
 
 /// `s` after parameters were set: what follows the frame follows it again, and the whole scene
 /// is checked as a file is.
-Expected<SceneSpec> checked(SceneSpec s)
+Expected<SceneSpec> checkedScene(SceneSpec s)
 {
     deriveFromFrame(s);
     auto ok = validate(s);
@@ -634,7 +634,7 @@ Expected<SceneSpec> withParameters(SceneSpec scene, const std::vector<std::pair<
         if (!ok)
             return ok.error();
     }
-    return checked(std::move(scene));
+    return checkedScene(std::move(scene));
 }
 
 Expected<SceneSpec> withParameter(SceneSpec scene, const std::string& key, int part, int index, double value)
@@ -684,7 +684,7 @@ Expected<SceneSpec> withParameter(SceneSpec scene, const std::string& key, int p
     case ParameterType::Obstacles:
     case ParameterType::Shapes: break; // no numbers (parameterPartCount is 0): refused above
     }
-    return checked(std::move(scene));
+    return checkedScene(std::move(scene));
 }
 
 Expected<SceneSpec> withParameterOf(SceneSpec scene, const SceneSpec& source, const std::string& key)
@@ -720,7 +720,7 @@ Expected<SceneSpec> withParameterOf(SceneSpec scene, const SceneSpec& source, co
     case ParameterType::Obstacles: scene.obstacles = source.obstacles; break;
     case ParameterType::Shapes: scene.shapes = source.shapes; break;
     }
-    return checked(std::move(scene));
+    return checkedScene(std::move(scene));
 }
 
 Expected<SceneSpec> withStableSettings(SceneSpec scene, const Json& stable)
