@@ -16,6 +16,7 @@
 #include "ui/common/canvas_style.h"
 #include "ui/common/drawable.h"
 #include "ui/frog/frog_art.h"
+#include "ui/frog/frog_overlays.h"
 
 #include <QElapsedTimer>
 #include <QLineF>
@@ -39,32 +40,8 @@ namespace granota::ui {
 class FrogCanvas : public QWidget, public Drawable {
     Q_OBJECT
 public:
-    /// What is drawn over the scene (the tab's Overlays checkboxes).
-    struct Overlays {
-        bool vertices = false;   ///< body vertices and joints, numbered
-        bool springs = false;    ///< the polygon's edges (the springs of §4.4)
-        bool area = false;       ///< area against the target area (§4.5), text and bar
-        bool velocities = false; ///< each vertex's displacement over the last step (Verlet's x − x_prev)
-        bool readouts = false;   ///< the Readouts of the solver: area error, stretch, forces, energies
-        bool frameTime = false;  ///< frame, step and drawing time
-        /// Both solvers at once: the other solver's run of the same scene, fed the same mouse,
-        /// drawn as a ghost over this one (docs/solvers.md#both-at-once).
-        bool ghost = false;
-        /// The path of one vertex or joint over the last kTrailSteps steps (Shift+click
-        /// chooses which).
-        bool trail = false;
-        /// §5.2.2: the broad phase's candidate pairs (their boxes, a line between them) and
-        /// the number of contacts (stable solver).
-        bool pairs = false;
-        /// §4.15: each link's angle against the range its limits allow (link_angles.h).
-        bool protractor = false;
-        bool operator==(const Overlays& o) const
-        {
-            return vertices == o.vertices && springs == o.springs && area == o.area && velocities == o.velocities &&
-                   readouts == o.readouts && frameTime == o.frameTime && ghost == o.ghost && trail == o.trail &&
-                   pairs == o.pairs && protractor == o.protractor;
-        }
-    };
+    /// What is drawn over the scene (the tab's Overlays check boxes; frog_overlays.h).
+    using Overlays = FrogOverlays;
     /// §4.9/4.10: how a Bézier scene draws its body.
     enum class BezierOutline {
         Precomputed, ///< the thesis's choice: the body's vertices are the precomputed Bézier points
