@@ -7,6 +7,7 @@
 #include "core/exact/rational.h"
 #include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
+#include "ui/common/bezier_exact_html.h"
 #include "ui/common/canvas_style.h"
 #include "ui/decasteljau/decasteljau_parameter_control.h"
 #include "ui/decasteljau/decasteljau_tab.h"
@@ -50,12 +51,6 @@ constexpr double kPresentationBasisWidth = 3.6;
 
 /// B_i^n in plain Unicode (legend, readout): B₂⁵.
 QString basisName(int i, int n) { return QStringLiteral("B") + subscriptDigits(i) + superscriptDigits(n); }
-/// B_i^n(t) in HTML.
-QString basisHtml(const QString& i, const QString& n, const QString& arg = QStringLiteral("t"))
-{
-    return QStringLiteral("B<sub>%1</sub><sup>%2</sup>(%3)").arg(i, n, arg);
-}
-
 
 /// File ▸ Export of the basis plot: the plot as on screen, without the readout that follows the
 /// mouse (it belongs to the pointer, not to the picture).
@@ -406,7 +401,7 @@ void BernsteinTab::updateWeights()
     m_curveLabel->setText(tr("At t = %1 the weights sum to %2.<br>Def 2.6: %3 = %4<br>De Casteljau: %5 = %6 (difference %7)")
                               .arg(panelNumber(tt), displaySignificant(sum, 17),
                                    QStringLiteral("Σ %1 P<sub>i</sub>").arg(basisHtml(QStringLiteral("i"), QString::number(n))),
-                                   panelPointText(viaBernstein), QStringLiteral("P<sub>0</sub><sup>%1</sup>(t)").arg(n),
+                                   panelPointText(viaBernstein), levelHtml(QStringLiteral("0"), QString::number(n)),
                                    panelPointText(viaDeCasteljau), residualText(distance(viaBernstein, viaDeCasteljau))));
     m_weightsGroup->setTitle(tr("Weights of the %n control points of the De Casteljau tab at t (Def 2.6)", nullptr, n + 1));
 }
@@ -514,42 +509,7 @@ QString BernsteinTab::curvePointText() const { return m_curveLabel->text(); }
 
 void BernsteinTab::updateExactPanel()
 {
-    QString html;
-    // Ex 2.4: B_i^n expanded in powers of t.
-    for (int n = m_allDegrees ? 0 : m_degree; n <= m_degree; ++n) {
-        html += ExactPanel::heading(tr("Bernstein polynomials of degree %1 (Def 2.5)").arg(n));
-        html += QStringLiteral("<p>");
-        for (int i = 0; i <= n; ++i)
-            html += QStringLiteral("%1 = %2<br>")
-                        .arg(basisHtml(QString::number(i), QString::number(n)),
-                             ExactPanel::polynomialHtml(toText(bernsteinPolynomial(i, n))));
-        html += QStringLiteral("</p>");
-    }
-    // Ex 2.5, Ex 2.6: the De Casteljau tab's curve written with Def 2.6, term by term.
-    const auto& points = m_deCasteljau->pointEditor()->points();
-    const int n = static_cast<int>(points.size()) - 1;
-    html += ExactPanel::heading(tr("The De Casteljau tab's curve in the Bernstein basis (Def 2.6)"));
-    const auto exact = smallRationalPoints(points);
-    if (!exact) {
-        html += ExactPanel::note(tr("The control points are not small fractions, so the curve is not expanded exactly."));
-    } else if (n > kMaxExactCurve) {
-        html += ExactPanel::note(
-            tr("The expansion is shown up to degree %1; the curve has degree %2.").arg(kMaxExactCurve).arg(n));
-    } else {
-        const QString nText = QString::number(n);
-        html += QStringLiteral("<p>α(t) = Σ<sub>k=0</sub><sup>%1</sup> %2 P<sub>k</sub></p><p>")
-                    .arg(nText, basisHtml(QStringLiteral("k"), nText));
-        const auto terms = bernsteinTerms(*exact);
-        for (int k = 0; k <= n; ++k)
-            html += QStringLiteral("%1 P<sub>%2</sub> = (%3) · %4 = %5<br>")
-                        .arg(basisHtml(QString::number(k), nText))
-                        .arg(k)
-                        .arg(ExactPanel::polynomialHtml(toText(bernsteinPolynomial(k, n))),
-                             panelPointText((*exact)[static_cast<std::size_t>(k)]),
-                             ExactPanel::polynomialHtml(toText(terms[static_cast<std::size_t>(k)])));
-        html += QStringLiteral("</p><p><b>α(t) = %1</b></p>").arg(ExactPanel::polynomialHtml(toText(bernsteinSum(*exact))));
-    }
-    m_exact->setContent(html);
+    m_exact->setContent(bernsteinPanelHtml(m_degree, m_allDegrees, m_deCasteljau->pointEditor()->points()));
 }
 
 // ---------------------------------------------------------------- TabPage

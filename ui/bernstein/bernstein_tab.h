@@ -10,6 +10,7 @@
 /// are steps on it, and loading Ex 2.5 or Ex 2.6 (the points, t and the degree) is one step.
 
 #include "core/curves/bezier/bernstein_properties.h"
+#include "ui/common/bezier_exact_html.h"
 #include "ui/common/plot_drawable.h"
 #include "ui/shell/tab_page.h"
 
@@ -83,9 +84,9 @@ public:
     /// The x position (t) of the vertical line marking the current t.
     double markerT() const;
 
-    static constexpr int kMaxDegree = 30;    ///< the spin box's range: 0…30
-    static constexpr int kMaxExactCurve = 8; ///< the curve in powers of t up to this degree
-    static constexpr int kPlotSamples = 201; ///< t samples per graph (Matlab linspace(0, 1, 200))
+    static constexpr int kMaxDegree = 30;                        ///< the spin box's range: 0…30
+    static constexpr int kMaxExactCurve = kMaxExactBezierDegree; ///< the curve in powers of t up to this degree
+    static constexpr int kPlotSamples = 201;                     ///< t samples per graph (Matlab linspace(0, 1, 200))
 
 protected:
     void drawTikz(TikzWriter& w) const override;

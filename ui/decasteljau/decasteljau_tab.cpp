@@ -2,16 +2,16 @@
 #include "ui/common/number_text.h"
 
 #include "core/base/math_constants.h"
+#include "core/base/number_format.h"
 #include "core/curves/bezier/bernstein_properties.h"
 #include "core/curves/bezier/curve_features.h"
 #include "core/curves/bezier/de_casteljau.h"
 #include "core/curves/bezier/degree_elevation.h"
 #include "core/curves/bezier/hodograph.h"
-#include "core/exact/polynomial.h"
-#include "core/exact/polynomial_text.h"
 #include "core/exact/rational.h"
 #include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
+#include "ui/common/bezier_exact_html.h"
 #include "ui/common/canvas_legend.h"
 #include "ui/common/curvature_comb_scale_box.h"
 #include "ui/common/curve_canvas.h"
@@ -54,25 +54,18 @@ namespace granota::ui {
 
 namespace {
 
-using RPoly = Polynomial<Rational>;
-
 constexpr int kDefaultSamples = 200; ///< Matlab `part`: the curve through part + 1 points
 constexpr int kMinSamples = 1;       ///< one interval: the chord P_0 P_n
 constexpr int kMaxSamples = 5000;    ///< 200 points × 5000 samples: about 1e8 operations
 constexpr double kStepBudget = 2e7;  ///< operations allowed for the step-by-step curves per update
 constexpr int kMinStepSamples = 16;
-constexpr int kAnimationMs = 30;             ///< timer period of the t animation
-constexpr int kPanelMs = 100;                ///< exact panel refresh period while dragging or playing
-constexpr double kAnimationStep = 0.004;     ///< t per tick: one sweep of [0, 1] in about 7.5 s
-constexpr long kExactTDenominator = 16;      ///< t = p/q with q ≤ 16 gives the triangle in fractions
-constexpr long kMaxShownDenominator = 10000; ///< larger denominators: the triangle at t in decimals
-constexpr int kLevelsPerTable = 3;           ///< symbolic table columns per block, as the thesis prints them
-constexpr int kNumericLevelsPerTable = 5;
+constexpr int kAnimationMs = 30;         ///< timer period of the t animation
+constexpr int kPanelMs = 100;            ///< exact panel refresh period while dragging or playing
+constexpr double kAnimationStep = 0.004; ///< t per tick: one sweep of [0, 1] in about 7.5 s
 
-constexpr int kCombSamples = 160;                    ///< teeth of the curvature comb
-constexpr int kHodographSamples = 120;               ///< the hodograph's curve in its inset
-constexpr int kCircleSegments = 96;                  ///< the osculating circle as a polygon (TikZ)
-constexpr long kExactCurvatureDenominator = 1000000; ///< κ in fractions while they stay this small
+constexpr int kCombSamples = 160;      ///< teeth of the curvature comb
+constexpr int kHodographSamples = 120; ///< the hodograph's curve in its inset
+constexpr int kCircleSegments = 96;    ///< the osculating circle as a polygon (TikZ)
 
 const QColor kTangentColour(0x6a, 0x3d, 0x9a);
 const QColor kNormalColour(0xb1, 0x59, 0x28);
@@ -95,46 +88,6 @@ bool fitsInDoubles(const DeCasteljauTable<double>& table)
             if (!isFinite(p))
                 return false;
     return isFinite(table.tangent());
-}
-
-template <class P> QString joinPoints(const std::vector<P>& points)
-{
-    QStringList parts;
-    for (const P& p : points)
-        parts << panelPointText(p);
-    return parts.join(QStringLiteral(", "));
-}
-
-/// P_i^r(t) as HTML.
-QString levelName(const QString& i, const QString& r) { return QStringLiteral("P<sub>%1</sub><sup>%2</sup>(t)").arg(i, r); }
-
-/// A polynomial pair in one unbroken line (the panel scrolls sideways instead).
-QString unbrokenPolynomial(const std::string& text)
-{
-    return QStringLiteral("<span style=\"white-space:nowrap\">%1</span>").arg(ExactPanel::polynomialHtml(text));
-}
-
-/// The triangle laid out as the thesis does: one row per i, one column per level r, in
-/// blocks of `perTable` levels; `cell(r, i)` gives the HTML of P_i^r.
-template <class Cell> QString triangleHtml(int n, int lastLevel, int perTable, Cell cell)
-{
-    // The cells never break inside (white-space: nowrap): a wide table scrolls sideways.
-    QString html;
-    for (int r0 = 0; r0 <= lastLevel; r0 += perTable) {
-        const int r1 = std::min(lastLevel, r0 + perTable - 1);
-        html += QStringLiteral("<table border=\"1\" cellspacing=\"0\"><tr><th></th>");
-        for (int r = r0; r <= r1; ++r)
-            html += QStringLiteral("<th>%1</th>").arg(levelName(QStringLiteral("i"), QString::number(r)));
-        html += QStringLiteral("</tr>");
-        for (int i = 0; i <= n - r0; ++i) {
-            html += QStringLiteral("<tr><td style=\"white-space:nowrap\">i = %1</td>").arg(i);
-            for (int r = r0; r <= r1; ++r)
-                html += QStringLiteral("<td style=\"white-space:nowrap\">%1</td>").arg(i <= n - r ? cell(r, i) : QString());
-            html += QStringLiteral("</tr>");
-        }
-        html += QStringLiteral("</table><p></p>");
-    }
-    return html;
 }
 
 void drawArrow(QPainter& p, const QPointF& from, const QPointF& to, double head)
@@ -1079,146 +1032,22 @@ void DeCasteljauTab::updateWarning()
         emit statusMessage(m_warningText);
 }
 
-void DeCasteljauTab::updateExactSymbolic()
-{
-    m_symbolicHtml.clear();
-    const auto& points = m_editor->points();
-    const int n = static_cast<int>(points.size()) - 1;
-    const auto exact = smallRationalPoints(points);
-    if (!exact) {
-        m_symbolicHtml = ExactPanel::note(tr("The exact polynomials need control points that are small fractions: "
-                                             "type them in the table (1/3 is accepted) or turn on Snap to grid."));
-        return;
-    }
-    if (n > kMaxExactDegree) {
-        m_symbolicHtml = ExactPanel::note(tr("The levels in powers of t are shown up to degree %1; at degree %2 "
-                                             "their coefficients would no longer be readable.")
-                                              .arg(kMaxExactDegree)
-                                              .arg(n));
-        return;
-    }
-    // Def 2.4 run on polynomials: t is the polynomial t, every P_i^r(t) comes out expanded.
-    std::vector<Vec2<RPoly>> symbolic;
-    for (const RPoint& p : *exact)
-        symbolic.emplace_back(RPoly(p.x), RPoly(p.y));
-    const auto table = deCasteljau(symbolic, RPoly::identity());
-    QString html = QStringLiteral("<h3>%1</h3>")
-                       .arg(
-                           tr("The levels %1 in powers of t (Def 2.4)").arg(levelName(QStringLiteral("i"), QStringLiteral("r"))));
-    if (n >= 1)
-        html += triangleHtml(n, n - 1, kLevelsPerTable, [&table](int r, int i) {
-            return unbrokenPolynomial(toText(table.levels[static_cast<std::size_t>(r)][static_cast<std::size_t>(i)]));
-        });
-    html += QStringLiteral("<p>%1 = c(t) = %2</p>")
-                .arg(levelName(QStringLiteral("0"), QString::number(n)), unbrokenPolynomial(toText(table.point())));
-    m_symbolicHtml = html;
-}
+void DeCasteljauTab::updateExactSymbolic() { m_symbolicHtml = deCasteljauSymbolicHtml(m_editor->points()); }
 
 void DeCasteljauTab::updateExactPanel()
 {
     const auto& points = m_editor->points();
     if (points.empty() || m_levels.levels.empty())
         return;
-    const int n = static_cast<int>(points.size()) - 1;
-    const auto exactPoints = smallRationalPoints(points);
-    const auto exactT = smallRational(m_t, kExactTDenominator);
-    QString html;
-    std::optional<DeCasteljauTable<Rational>> exactTable;
-    if (exactPoints && exactT && n <= kMaxExactDegree) {
-        exactTable = deCasteljau(*exactPoints, *exactT);
-        // Fractions only while they stay readable; decimals otherwise.
-        bool readable = true;
-        for (const auto& level : exactTable->levels)
-            for (const RPoint& q : level)
-                readable = readable && q.x.get_den() <= kMaxShownDenominator && q.y.get_den() <= kMaxShownDenominator;
-        if (!readable)
-            exactTable.reset();
-    }
-    if (exactTable) {
-        // Rational points at a rational t: the triangle in fractions.
-        const auto& table = *exactTable;
-        html += ExactPanel::heading(
-            tr("De Casteljau's triangle at t = %1 (Def 2.4)").arg(QString::fromStdString(toString(*exactT))));
-        html += triangleHtml(n, n, kNumericLevelsPerTable, [&table](int r, int i) {
-            return panelPointText(table.levels[static_cast<std::size_t>(r)][static_cast<std::size_t>(i)]);
-        });
-        html += QStringLiteral("<p>c(t) = %1 = %2<br>c′(t) = %3</p>")
-                    .arg(levelName(QStringLiteral("0"), QString::number(n)), panelPointText(table.point()),
-                         panelPointText(table.tangent()));
-        if (m_showSplit)
-            html += QStringLiteral("<p>%1</p>")
-                        .arg(tr("Split at t: [0, t] has control points %1; [t, 1] has %2.")
-                                 .arg(joinPoints(table.leftHalf()), joinPoints(table.rightHalf())));
-    } else {
-        const QString tText = exactT ? QString::fromStdString(toString(*exactT)) : panelNumber(m_t);
-        html += ExactPanel::heading(tr("De Casteljau's triangle at t = %1 (Def 2.4)").arg(tText));
-        if (!fitsInDoubles(m_levels)) {
-            // No wrong number: the values themselves do not exist in double precision.
-            html += ExactPanel::note(tr("The values are too large for a double (beyond ±1.8e308): a level of the "
-                                        "triangle or c′(t) overflows. Move the control points closer to the origin."));
-            html += m_symbolicHtml;
-            m_exact->setContent(html);
-            return;
-        }
-        if (n <= kMaxTableDegree)
-            html += triangleHtml(n, n, kNumericLevelsPerTable, [this](int r, int i) {
-                return panelPointText(m_levels.levels[static_cast<std::size_t>(r)][static_cast<std::size_t>(i)]);
-            });
-        else
-            html += ExactPanel::note(
-                tr("The triangle is shown up to degree %1; this curve has degree %2.").arg(kMaxTableDegree).arg(n));
-        // c′(t) from the triangle, unless its doubles could not tell it from 0 and the exact
-        // control points gave it (curvature.h: near ±1e308 the triangle says (0, 0) for (21/4, 0)).
-        html += QStringLiteral("<p>c(t) = %1 = %2<br>c′(t) = %3</p>")
-                    .arg(levelName(QStringLiteral("0"), QString::number(n)), panelPointText(m_levels.point()),
-                         panelPointText(m_curvature.exact ? m_curvature.tangent : m_levels.tangent()));
-        if (m_showSplit && n <= kMaxTableDegree)
-            html += QStringLiteral("<p>%1</p>")
-                        .arg(tr("Split at t: [0, t] has control points %1; [t, 1] has %2.")
-                                 .arg(joinPoints(m_levels.leftHalf()), joinPoints(m_levels.rightHalf())));
-    }
-    html += exactCurvatureHtml();
-    html += m_symbolicHtml;
-    if (!m_warningText.isEmpty())
-        html += ExactPanel::note(m_warningText);
-    m_exact->setContent(html);
-}
-
-QString DeCasteljauTab::exactCurvatureHtml() const
-{
-    const auto& points = m_editor->points();
-    if (points.empty() || !m_arc)
-        return QString();
-    QString html = ExactPanel::heading(tr("Arc length and curvature at t"));
-    html += QStringLiteral("<p>%1</p>").arg(tr("s(t) = %1, L = %2").arg(panelNumber(arcLengthAtT()), panelNumber(totalLength())));
-    // κ = (x′y″ − y′x″)/|c′|³: exact as k/(d√d) with k and d = |c′|² fractions, for rational points and t.
-    const int n = static_cast<int>(points.size()) - 1;
-    const auto exactPoints = smallRationalPoints(points);
-    const auto exactT = smallRational(m_t, kExactTDenominator);
-    std::optional<QString> exact;
-    if (exactPoints && exactT && n >= 1 && n <= kMaxExactDegree) {
-        const auto H = hodograph(*exactPoints);
-        const RPoint d1 = deCasteljauPoint(H, *exactT), d2 = deCasteljauPoint(hodograph(H), *exactT);
-        const ExactCurvature k = exactCurvatureAt(*exactPoints, *exactT);
-        const auto small = [](const Rational& q) {
-            return abs(q.get_num()) <= kExactCurvatureDenominator && q.get_den() <= kExactCurvatureDenominator;
-        };
-        const auto text = [](const Rational& q) { return QString::fromStdString(toString(q)); };
-        if (k.speedSquared == 0)
-            exact = tr("κ(t) is undefined: c′(t) = 0 (a cusp, or coincident control points), so there is no normal "
-                       "and no osculating circle.");
-        else if (small(k.numerator) && small(k.speedSquared))
-            if (const auto value = exactCurvatureText(k))
-                exact = tr("c′(t) = %1, c″(t) = %2<br>x′y″ − y′x″ = %3, |c′(t)|² = %4<br>κ(t) = (x′y″ − y′x″)/|c′|³ = %5 ≈ %6")
-                            .arg(panelPointText(d1), panelPointText(d2), text(k.numerator), text(k.speedSquared),
-                                 QString::fromStdString(*value),
-                                 panelNumber(k.numerator.get_d() / std::pow(k.speedSquared.get_d(), 1.5)));
-    }
-    if (exact)
-        html += QStringLiteral("<p>%1</p>").arg(*exact);
-    else
-        html += QStringLiteral("<p>%1</p>").arg(readout().section(QStringLiteral(" · "), 1));
-    return html;
+    DeCasteljauPanelInput in{points, m_t, m_levels, m_curvature};
+    in.showSplit = m_showSplit;
+    if (m_arc)
+        in.arcLength = arcLengthAtT();
+    in.totalLength = totalLength();
+    in.curvatureReadout = readout().section(QStringLiteral(" · "), 1);
+    in.symbolicHtml = m_symbolicHtml;
+    in.warning = m_warningText;
+    m_exact->setContent(deCasteljauPanelHtml(in));
 }
 
 QRectF DeCasteljauTab::contentBounds() const

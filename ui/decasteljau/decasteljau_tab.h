@@ -15,8 +15,9 @@
 #include "core/curves/bezier/curvature.h"
 #include "core/curves/bezier/curve_features.h"
 #include "core/curves/bezier/de_casteljau.h"
-#include "ui/common/curvature_comb.h"
+#include "ui/common/bezier_exact_html.h"
 #include "ui/common/canvas_legend.h"
+#include "ui/common/curvature_comb.h"
 #include "ui/common/curve_tab.h"
 
 #include <QString>
@@ -140,10 +141,10 @@ public:
     /// The warning shown for high degrees; empty when there is none.
     QString warning() const { return m_warningText; }
 
-    static constexpr int kMaxPoints = 200;     ///< docs/extreme-cases.md: the editor refuses more
-    static constexpr int kMaxExactDegree = 8;  ///< above, the symbolic P_i^r(t) would not be readable
-    static constexpr int kMaxTableDegree = 20; ///< above, the numeric triangle is not shown either
-    static constexpr int kWarnDegree = 20;     ///< from here on, the conditioning warning
+    static constexpr int kMaxPoints = 200;                        ///< docs/extreme-cases.md: the editor refuses more
+    static constexpr int kMaxExactDegree = kMaxExactBezierDegree; ///< above, the symbolic P_i^r(t) would not be readable
+    static constexpr int kMaxTableDegree = kMaxTriangleDegree;    ///< above, the numeric triangle is not shown either
+    static constexpr int kWarnDegree = 20;                        ///< from here on, the conditioning warning
 
 signals:
     void tChanged(double t);
@@ -176,7 +177,6 @@ private:
     void updateGeometry();
     void updateCurvatureAtT();
     void drawHodographInset(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const;
-    QString exactCurvatureHtml() const;
     void setToggle(bool& flag, QCheckBox* box, bool on);
     /// The user's changes (docs/tabs.md, "Undo"): each is one undo step that gives the
     /// document's value back; the programmatic setters above push nothing.
