@@ -82,7 +82,8 @@ QString exactCurvatureHtml(const DeCasteljauPanelInput& in)
     const auto& points = in.points;
     if (points.empty() || !in.arcLength)
         return QString();
-    QString html = ExactPanel::heading(QCoreApplication::translate("granota::ui::DeCasteljauTab", "Arc length and curvature at t"));
+    QString html = ExactPanel::heading(
+        QCoreApplication::translate("granota::ui::DeCasteljauTab", "Arc length and curvature at t"));
     html += QStringLiteral("<p>%1</p>")
                 .arg(QCoreApplication::translate("granota::ui::DeCasteljauTab", "s(t) = %1, L = %2")
                          .arg(panelNumber(*in.arcLength), panelNumber(in.totalLength)));
@@ -133,9 +134,9 @@ QString deCasteljauSymbolicHtml(const std::vector<Point>& points)
     const int n = static_cast<int>(points.size()) - 1;
     const auto exact = smallRationalPoints(points);
     if (!exact)
-        return ExactPanel::note(QCoreApplication::translate(
-            "granota::ui::DeCasteljauTab", "The exact polynomials need control points that are small fractions: "
-                                           "type them in the table (1/3 is accepted) or turn on Snap to grid."));
+        return ExactPanel::note(QCoreApplication::translate("granota::ui::DeCasteljauTab",
+                                                            "The exact polynomials need control points that are small fractions: "
+                                                            "type them in the table (1/3 is accepted) or turn on Snap to grid."));
     if (n > kMaxExactBezierDegree)
         return ExactPanel::note(QCoreApplication::translate("granota::ui::DeCasteljauTab",
                                                             "The levels in powers of t are shown up to degree %1; at degree "
@@ -167,10 +168,10 @@ QString deCasteljauPanelHtml(const DeCasteljauPanelInput& in)
     const int n = static_cast<int>(points.size()) - 1;
     const auto exactPoints = smallRationalPoints(points);
     const auto exactT = smallRational(in.t, kExactTDenominator);
-    const QString triangleTitle =
-        QCoreApplication::translate("granota::ui::DeCasteljauTab", "De Casteljau's triangle at t = %1 (Def 2.4)");
-    const QString splitText =
-        QCoreApplication::translate("granota::ui::DeCasteljauTab", "Split at t: [0, t] has control points %1; [t, 1] has %2.");
+    const QString triangleTitle = QCoreApplication::translate("granota::ui::DeCasteljauTab",
+                                                              "De Casteljau's triangle at t = %1 (Def 2.4)");
+    const QString splitText = QCoreApplication::translate("granota::ui::DeCasteljauTab",
+                                                          "Split at t: [0, t] has control points %1; [t, 1] has %2.");
     QString html;
     std::optional<DeCasteljauTable<Rational>> exactTable;
     if (exactPoints && exactT && n <= kMaxExactBezierDegree) {
@@ -194,7 +195,8 @@ QString deCasteljauPanelHtml(const DeCasteljauPanelInput& in)
                     .arg(levelHtml(QStringLiteral("0"), QString::number(n)), panelPointText(table.point()),
                          panelPointText(table.tangent()));
         if (in.showSplit)
-            html += QStringLiteral("<p>%1</p>").arg(splitText.arg(joinPanelPoints(table.leftHalf()), joinPanelPoints(table.rightHalf())));
+            html += QStringLiteral("<p>%1</p>")
+                        .arg(splitText.arg(joinPanelPoints(table.leftHalf()), joinPanelPoints(table.rightHalf())));
     } else {
         const QString tText = exactT ? QString::fromStdString(toString(*exactT)) : panelNumber(in.t);
         html += ExactPanel::heading(triangleTitle.arg(tText));
@@ -211,17 +213,19 @@ QString deCasteljauPanelHtml(const DeCasteljauPanelInput& in)
                 return panelPointText(levels.levels[static_cast<std::size_t>(r)][static_cast<std::size_t>(i)]);
             });
         else
-            html += ExactPanel::note(QCoreApplication::translate("granota::ui::DeCasteljauTab",
-                                                                 "The triangle is shown up to degree %1; this curve has degree %2.")
-                                         .arg(kMaxTriangleDegree)
-                                         .arg(n));
+            html += ExactPanel::note(
+                QCoreApplication::translate("granota::ui::DeCasteljauTab",
+                                            "The triangle is shown up to degree %1; this curve has degree %2.")
+                    .arg(kMaxTriangleDegree)
+                    .arg(n));
         // c′(t) from the triangle, unless its doubles could not tell it from 0 and the exact
         // control points gave it (curvature.h: near ±1e308 the triangle says (0, 0) for (21/4, 0)).
         html += QStringLiteral("<p>c(t) = %1 = %2<br>c′(t) = %3</p>")
                     .arg(levelHtml(QStringLiteral("0"), QString::number(n)), panelPointText(levels.point()),
                          panelPointText(in.curvature.exact ? in.curvature.tangent : levels.tangent()));
         if (in.showSplit && n <= kMaxTriangleDegree)
-            html += QStringLiteral("<p>%1</p>").arg(splitText.arg(joinPanelPoints(levels.leftHalf()), joinPanelPoints(levels.rightHalf())));
+            html += QStringLiteral("<p>%1</p>")
+                        .arg(splitText.arg(joinPanelPoints(levels.leftHalf()), joinPanelPoints(levels.rightHalf())));
     }
     html += exactCurvatureHtml(in);
     html += in.symbolicHtml;
@@ -246,8 +250,8 @@ QString bernsteinPanelHtml(int degree, bool allDegrees, const std::vector<Point>
     }
     // Ex 2.5, Ex 2.6: the De Casteljau tab's curve written with Def 2.6, term by term.
     const int n = static_cast<int>(points.size()) - 1;
-    html += ExactPanel::heading(
-        QCoreApplication::translate("granota::ui::BernsteinTab", "The De Casteljau tab's curve in the Bernstein basis (Def 2.6)"));
+    html += ExactPanel::heading(QCoreApplication::translate("granota::ui::BernsteinTab",
+                                                            "The De Casteljau tab's curve in the Bernstein basis (Def 2.6)"));
     const auto exact = smallRationalPoints(points);
     if (!exact) {
         html += ExactPanel::note(QCoreApplication::translate(

@@ -812,9 +812,10 @@ void DeCasteljauTab::pointsChanged()
 
 void DeCasteljauTab::refreshPanel()
 {
+    // The warning first: the panel ends with it.
+    updateWarning();
     updateExactSymbolic();
     updateExactPanel();
-    updateWarning();
 }
 
 void DeCasteljauTab::schedulePanel()
