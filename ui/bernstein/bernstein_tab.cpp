@@ -7,13 +7,12 @@
 #include "core/exact/rational.h"
 #include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
+#include "ui/common/bezier_curve_model.h"
 #include "ui/common/bezier_exact_html.h"
 #include "ui/common/canvas_style.h"
 #include "ui/decasteljau/decasteljau_parameter_control.h"
-#include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/plot_tick_room.h"
-#include "ui/common/point_editor.h"
 #include "ui/common/presentation_scale.h"
 #include "ui/common/value_command.h"
 #include "ui/shell/tikz_writer.h"
@@ -76,8 +75,8 @@ QString residualText(double r) { return r == 0.0 ? QStringLiteral("0") : display
 
 } // namespace
 
-BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
-    : TabPage(QStringLiteral("bernstein"), QT_TR_NOOP("Bernstein"), deCasteljau->undoStack(), parent), m_deCasteljau(deCasteljau),
+BernsteinTab::BernsteinTab(BezierCurveModel* curve, QWidget* parent)
+    : TabPage(QStringLiteral("bernstein"), QT_TR_NOOP("Bernstein"), curve->undoStack(), parent), m_curve(curve),
       m_basisPlot(new QCustomPlot(this)), m_weightsPlot(new QCustomPlot(this)), m_exact(new ExactPanel(this)),
       m_parameter(new DeCasteljauParameterControl(this)), m_degreeLabel(new QLabel(this)), m_degreeBox(new QSpinBox(this)),
       m_allBox(new QCheckBox(this)), m_markerBox(new QCheckBox(this)),
@@ -201,16 +200,17 @@ BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
     connect(m_markerBox, &QCheckBox::toggled, this, [this](bool on) {
         userChangedView({m_degree, m_allDegrees, on}, on ? tr("Mark t") : tr("Hide the mark at t"));
     });
-    // One t for both tabs: this tab's slider moves the De Casteljau tab's t, and back.
+    // One t for both tabs: this tab's slider moves the curve's t, and so the De Casteljau tab's.
     connect(m_parameter, &DeCasteljauParameterControl::valueChanged, this,
             [this](double t) { userMovedT(t, m_parameter->gestureMergeId()); });
-    connect(m_deCasteljau, &DeCasteljauTab::tChanged, this, [this](double t) {
+    connect(m_curve, &BezierCurveModel::tChanged, this, [this](double t) {
         m_parameter->setValue(t);
         updateMarker();
         updateWeights();
         updateChecks();
     });
-    connect(m_deCasteljau->pointEditor(), &PointEditor::pointsChanged, this, [this] {
+    connect(m_curve, &BezierCurveModel::documentChanged, this, &TabPage::documentChanged);
+    connect(m_curve, &BezierCurveModel::pointsChanged, this, [this] {
         updateWeights();
         updateExactPanel();
     });
@@ -225,12 +225,12 @@ BernsteinTab::~BernsteinTab() = default;
 
 // ---------------------------------------------------------------- settings
 
-double BernsteinTab::t() const { return m_deCasteljau->t(); }
+double BernsteinTab::t() const { return m_curve->t(); }
 
 void BernsteinTab::setT(double t)
 {
-    m_deCasteljau->setT(t); // comes back through tChanged
-    m_parameter->setValue(m_deCasteljau->t());
+    m_curve->setT(t); // comes back through tChanged
+    m_parameter->setValue(m_curve->t());
 }
 
 int BernsteinTab::plotDragMergeId() const
@@ -243,15 +243,9 @@ void BernsteinTab::userMovedT(double t, int mergeId)
 {
     const double before = this->t();
     setT(t);
-    const double after = this->t();
-    if (after == before)
+    if (this->t() == before)
         return;
-    auto apply = [this](double v) {
-        setT(v);
-        emit documentChanged();
-    };
-    m_undo->push(new ValueCommand<double>(apply, before, after, tr("Move t"), mergeId,
-                                          {/*dropWhenUnchanged=*/true, /*appliedAlready=*/true}));
+    m_curve->pushT(before, mergeId, tr("Move t"));
     emit documentChanged();
 }
 
@@ -372,7 +366,7 @@ double BernsteinTab::markerT() const { return m_marker->point1->coords().x(); }
 
 void BernsteinTab::updateWeights()
 {
-    const auto& points = m_deCasteljau->pointEditor()->points();
+    const auto& points = m_curve->points();
     if (points.empty())
         return;
     const int n = static_cast<int>(points.size()) - 1;
@@ -507,10 +501,7 @@ QStringList BernsteinTab::checkTexts() const
 
 QString BernsteinTab::curvePointText() const { return m_curveLabel->text(); }
 
-void BernsteinTab::updateExactPanel()
-{
-    m_exact->setContent(bernsteinPanelHtml(m_degree, m_allDegrees, m_deCasteljau->pointEditor()->points()));
-}
+void BernsteinTab::updateExactPanel() { m_exact->setContent(bernsteinPanelHtml(m_degree, m_allDegrees, m_curve->points())); }
 
 // ---------------------------------------------------------------- TabPage
 
@@ -613,7 +604,7 @@ bool BernsteinTab::loadExample(const granota::WorkedExample& example)
         // The points and t are the De Casteljau tab's (one history for both tabs): the status
         // bar says so, as for every example that changes another tab than the one shown.
         m_undo->beginMacro(tr("Load Ex %1").arg(id));
-        m_deCasteljau->loadCurve(toDouble(example.points), tr("Load Ex %1").arg(id));
+        m_curve->loadCurve(toDouble(example.points), tr("Load Ex %1").arg(id));
         userChangedView({static_cast<int>(example.points.size()) - 1, false, m_showMarker}, tr("Load Ex %1").arg(id));
         m_undo->endMacro();
         emit statusMessage(tr("Ex %1: the curve written in the Bernstein basis is in the panel on the right. Its "

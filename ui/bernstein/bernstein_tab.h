@@ -33,15 +33,15 @@ class QUndoStack;
 
 namespace granota::ui {
 
+class BezierCurveModel;
 class DeCasteljauParameterControl;
-class DeCasteljauTab;
 class ExactPanel;
 
 class BernsteinTab : public TabPage {
     Q_OBJECT
 public:
-    /// Shares the control points and the parameter t of the De Casteljau tab (docs/tabs.md).
-    explicit BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent = nullptr);
+    /// Shows the curve the De Casteljau tab edits: its control points, t and history (docs/tabs.md).
+    explicit BernsteinTab(BezierCurveModel* curve, QWidget* parent = nullptr);
     ~BernsteinTab() override;
 
     void retranslate() override;
@@ -62,7 +62,7 @@ public:
     /// (Fig 2.4 as printed). The document's "t_marker".
     bool tMarkerVisible() const { return m_showMarker; }
     void setTMarkerVisible(bool on);
-    /// The shared parameter t (the De Casteljau tab's).
+    /// The shared parameter t (the curve's, bezier_curve_model.h).
     double t() const;
     void setT(double t);
 
@@ -114,7 +114,7 @@ private:
     void plotMouseMove(QMouseEvent* event);
     void plotMousePress(QMouseEvent* event);
 
-    DeCasteljauTab* m_deCasteljau;
+    BezierCurveModel* m_curve;
     QCustomPlot* m_basisPlot;
     QCustomPlot* m_weightsPlot;
     std::unique_ptr<Drawable> m_drawable; ///< the basis plot for File ▸ Export, without the hover readout

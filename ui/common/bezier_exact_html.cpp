@@ -28,16 +28,6 @@ constexpr int kLevelsPerTable = 3;           ///< symbolic table columns per blo
 constexpr int kNumericLevelsPerTable = 5;
 constexpr long kExactCurvatureDenominator = 1000000; ///< κ in fractions while they stay this small
 
-/// Whether every level P_i^r(t) and c′(t) fits in a double (Def 2.4): control points
-/// near ±1e308 make n (P_1 − P_0) or a level overflow to inf, or inf − inf to NaN.
-bool triangleFitsInDoubles(const DeCasteljauTable<double>& table)
-{
-    for (const auto& level : table.levels)
-        for (const Point& p : level)
-            if (!isFinite(p))
-                return false;
-    return isFinite(table.tangent());
-}
 
 template <class P> QString joinPanelPoints(const std::vector<P>& points)
 {
@@ -121,6 +111,15 @@ QString exactCurvatureHtml(const DeCasteljauPanelInput& in)
 }
 
 } // namespace
+
+bool triangleFitsInDoubles(const DeCasteljauTable<double>& table)
+{
+    for (const auto& level : table.levels)
+        for (const Point& p : level)
+            if (!isFinite(p))
+                return false;
+    return isFinite(table.tangent());
+}
 
 QString levelHtml(const QString& i, const QString& r) { return QStringLiteral("P<sub>%1</sub><sup>%2</sup>(t)").arg(i, r); }
 

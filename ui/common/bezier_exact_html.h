@@ -22,6 +22,10 @@ constexpr int kMaxExactBezierDegree = 8;
 /// Above this degree the numeric triangle is not shown either.
 constexpr int kMaxTriangleDegree = 20;
 
+/// Whether every level P_i^r(t) and c′(t) fits in a double (Def 2.4): control points
+/// near ±1e308 make n (P_1 − P_0) or a level overflow to inf, or inf − inf to NaN.
+bool triangleFitsInDoubles(const DeCasteljauTable<double>& table);
+
 /// P_i^r(t) as HTML.
 QString levelHtml(const QString& i, const QString& r);
 /// B_i^n(arg) as HTML.
