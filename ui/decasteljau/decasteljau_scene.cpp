@@ -55,7 +55,8 @@ void moveSceneTo(DeCasteljauScene& scene, double t)
         return;
     scene.levels = deCasteljau(scene.points, t);
     scene.curvature = curvatureAt(scene.points, t);
-    scene.hodoLevels = scene.finite && scene.view.hodograph ? deCasteljau(hodograph(scene.points), t) : DeCasteljauTable<double>{};
+    scene.hodoLevels = scene.finite && scene.view.hodograph ? deCasteljau(hodograph(scene.points), t)
+                                                            : DeCasteljauTable<double>{};
 }
 
 

@@ -33,7 +33,7 @@ struct DeCasteljauScene {
     CurvatureComb comb;                         ///< while the comb is shown
     std::vector<Point> hodoCurve;               ///< the hodograph sampled, while it is shown
     std::optional<ArcLengthParametrization> arc;
-    CurvatureAt curvature;                 ///< κ, the normal and the osculating circle at t
+    CurvatureAt curvature;               ///< κ, the normal and the osculating circle at t
     DeCasteljauTable<double> hodoLevels; ///< the hodograph's construction at t, while it is shown
 };
 

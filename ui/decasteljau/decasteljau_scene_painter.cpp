@@ -248,10 +248,10 @@ void drawDeCasteljauArrow(QPainter& p, const QPointF& from, const QPointF& to, d
 
 const std::vector<DeCasteljauLayer>& deCasteljauLayers()
 {
-    static const std::vector<DeCasteljauLayer> layers = {
-        drawStepCurvesLayer, drawTracedCurveLayer, drawCombLayer,       drawBoundingBoxLayer,
-        drawConstructionLayer, drawSplitLayer,     drawFeaturesLayer,   drawOsculatingCircleLayer,
-        drawNormalLayer,     drawTangentLayer,     drawCurvePointLayer};
+    static const std::vector<DeCasteljauLayer> layers = {drawStepCurvesLayer,  drawTracedCurveLayer,      drawCombLayer,
+                                                         drawBoundingBoxLayer, drawConstructionLayer,     drawSplitLayer,
+                                                         drawFeaturesLayer,    drawOsculatingCircleLayer, drawNormalLayer,
+                                                         drawTangentLayer,     drawCurvePointLayer};
     return layers;
 }
 
@@ -265,50 +265,77 @@ CanvasLegend deCasteljauLegend(const DeCasteljauScene& s)
         for (int r = first; r <= last; ++r) {
             if (r - first == kMaxLegendLines - 1 && r < last) {
                 legend.entries.push_back(
-                    {CanvasStyle::series(r), Qt::DotLine, QCoreApplication::translate("granota::ui::DeCasteljauTab", "… %1 more, one colour each").arg(last - r + 1)});
+                    {CanvasStyle::series(r), Qt::DotLine,
+                     QCoreApplication::translate("granota::ui::DeCasteljauTab", "… %1 more, one colour each").arg(last - r + 1)});
                 return;
             }
             legend.entries.push_back({CanvasStyle::series(r), Qt::SolidLine, text(r)});
         }
     };
     if (s.view.construction && n >= 2)
-        lines(1, n - 1,
-              [](int r) { return QCoreApplication::translate("granota::ui::DeCasteljauTab", "level %1: the points %2(t)").arg(r).arg(QStringLiteral("Pᵢ") + superscriptDigits(r)); });
+        lines(1, n - 1, [](int r) {
+            return QCoreApplication::translate("granota::ui::DeCasteljauTab", "level %1: the points %2(t)")
+                .arg(r)
+                .arg(QStringLiteral("Pᵢ") + superscriptDigits(r));
+        });
     if (s.view.stepByStep && !s.stepCurves.empty())
-        lines(0, static_cast<int>(s.stepCurves.size()) - 1,
-              [](int k) { return k == 0 ? QCoreApplication::translate("granota::ui::DeCasteljauTab", "the point P₀ alone") : QCoreApplication::translate("granota::ui::DeCasteljauTab", "the curve of P₀…P%1").arg(subscriptDigits(k)); });
+        lines(0, static_cast<int>(s.stepCurves.size()) - 1, [](int k) {
+            return k == 0 ? QCoreApplication::translate("granota::ui::DeCasteljauTab", "the point P₀ alone")
+                          : QCoreApplication::translate("granota::ui::DeCasteljauTab", "the curve of P₀…P%1")
+                                .arg(subscriptDigits(k));
+        });
     if (s.view.split && n >= 1) {
-        legend.entries.push_back({kDeCasteljauSplit[0], Qt::DashLine, QCoreApplication::translate("granota::ui::DeCasteljauTab", "polygon of the half on [0, t]")});
-        legend.entries.push_back({kDeCasteljauSplit[1], Qt::DashLine, QCoreApplication::translate("granota::ui::DeCasteljauTab", "polygon of the half on [t, 1]")});
+        legend.entries.push_back({kDeCasteljauSplit[0], Qt::DashLine,
+                                  QCoreApplication::translate("granota::ui::DeCasteljauTab", "polygon of the half on [0, t]")});
+        legend.entries.push_back({kDeCasteljauSplit[1], Qt::DashLine,
+                                  QCoreApplication::translate("granota::ui::DeCasteljauTab", "polygon of the half on [t, 1]")});
     }
     if (s.view.tangent && n >= 1)
-        legend.entries.push_back({kDeCasteljauTangent, Qt::SolidLine, n == 1 ? QCoreApplication::translate("granota::ui::DeCasteljauTab", "tangent c′(t)") : QCoreApplication::translate("granota::ui::DeCasteljauTab", "tangent c′(t)/%1").arg(n)});
+        legend.entries.push_back({kDeCasteljauTangent, Qt::SolidLine,
+                                  n == 1
+                                      ? QCoreApplication::translate("granota::ui::DeCasteljauTab", "tangent c′(t)")
+                                      : QCoreApplication::translate("granota::ui::DeCasteljauTab", "tangent c′(t)/%1").arg(n)});
     if (s.view.normal && n >= 1)
-        legend.entries.push_back(s.curvature.normal ? CanvasLegendEntry{kDeCasteljauNormal, Qt::SolidLine, QCoreApplication::translate("granota::ui::DeCasteljauTab", "unit normal N(t)")}
-                                                    : CanvasLegendEntry{kDeCasteljauNormal, Qt::NoPen, QCoreApplication::translate("granota::ui::DeCasteljauTab", "no normal: c′(t) = 0")});
+        legend.entries.push_back(
+            s.curvature.normal
+                ? CanvasLegendEntry{kDeCasteljauNormal, Qt::SolidLine,
+                                    QCoreApplication::translate("granota::ui::DeCasteljauTab", "unit normal N(t)")}
+                : CanvasLegendEntry{kDeCasteljauNormal, Qt::NoPen,
+                                    QCoreApplication::translate("granota::ui::DeCasteljauTab", "no normal: c′(t) = 0")});
     if (s.view.osculatingCircle && n >= 1) {
         if (s.curvature.radius)
             legend.entries.push_back(
-                {kDeCasteljauCircle, Qt::SolidLine, QCoreApplication::translate("granota::ui::DeCasteljauTab", "osculating circle, r = 1/|κ| = %1").arg(panelNumber(*s.curvature.radius))});
+                {kDeCasteljauCircle, Qt::SolidLine,
+                 QCoreApplication::translate("granota::ui::DeCasteljauTab", "osculating circle, r = 1/|κ| = %1")
+                     .arg(panelNumber(*s.curvature.radius))});
         else if (s.curvature.curvature)
-            legend.entries.push_back({kDeCasteljauCircle, Qt::NoPen, QCoreApplication::translate("granota::ui::DeCasteljauTab", "no osculating circle: κ(t) = 0")});
+            legend.entries.push_back(
+                {kDeCasteljauCircle, Qt::NoPen,
+                 QCoreApplication::translate("granota::ui::DeCasteljauTab", "no osculating circle: κ(t) = 0")});
         else
-            legend.entries.push_back({kDeCasteljauCircle, Qt::NoPen, QCoreApplication::translate("granota::ui::DeCasteljauTab", "no osculating circle: κ undefined")});
+            legend.entries.push_back(
+                {kDeCasteljauCircle, Qt::NoPen,
+                 QCoreApplication::translate("granota::ui::DeCasteljauTab", "no osculating circle: κ undefined")});
     }
     if (s.view.comb && n >= 1 && !s.comb.empty())
-        legend.entries.push_back(
-            {curvatureCombColor(), Qt::SolidLine, QCoreApplication::translate("granota::ui::DeCasteljauTab", "curvature comb: teeth |κ| × %1").arg(panelNumber(s.comb.scale))});
+        legend.entries.push_back({curvatureCombColor(), Qt::SolidLine,
+                                  QCoreApplication::translate("granota::ui::DeCasteljauTab", "curvature comb: teeth |κ| × %1")
+                                      .arg(panelNumber(s.comb.scale))});
     if (s.view.boundingBox && n >= 0)
-        legend.entries.push_back({kDeCasteljauBox, Qt::DashDotLine, QCoreApplication::translate("granota::ui::DeCasteljauTab", "bounding box, ◆ extrema of x and y")});
-    if (s.view.inflections && n >= 1) {
         legend.entries.push_back(
-            {kDeCasteljauInflection, Qt::SolidLine,
-             QCoreApplication::translate("granota::ui::DeCasteljauTab", "○ inflections: %1 · × cusps: %2").arg(s.features.inflections.size()).arg(s.features.cusps.size())});
+            {kDeCasteljauBox, Qt::DashDotLine,
+             QCoreApplication::translate("granota::ui::DeCasteljauTab", "bounding box, ◆ extrema of x and y")});
+    if (s.view.inflections && n >= 1) {
+        legend.entries.push_back({kDeCasteljauInflection, Qt::SolidLine,
+                                  QCoreApplication::translate("granota::ui::DeCasteljauTab", "○ inflections: %1 · × cusps: %2")
+                                      .arg(s.features.inflections.size())
+                                      .arg(s.features.cusps.size())});
     }
     return legend;
 }
 
-CanvasLegendBox deCasteljauLegendBox(const DeCasteljauScene& s, const QString& labelPrefix, const ViewTransform& view, const CanvasStyle& style)
+CanvasLegendBox deCasteljauLegendBox(const DeCasteljauScene& s, const QString& labelPrefix, const ViewTransform& view,
+                                     const CanvasStyle& style)
 {
     CanvasLegendObstacles avoid = deCasteljauObstacles(s, labelPrefix, view, style);
     if (const QRectF inset = deCasteljauHodographInset(s, labelPrefix, view, style); !inset.isEmpty())
@@ -316,7 +343,8 @@ CanvasLegendBox deCasteljauLegendBox(const DeCasteljauScene& s, const QString& l
     return canvasLegendRect(view, style, deCasteljauLegend(s), avoid);
 }
 
-CanvasLegendObstacles deCasteljauObstacles(const DeCasteljauScene& s, const QString& labelPrefix, const ViewTransform& view, const CanvasStyle& style)
+CanvasLegendObstacles deCasteljauObstacles(const DeCasteljauScene& s, const QString& labelPrefix, const ViewTransform& view,
+                                           const CanvasStyle& style)
 {
     CanvasLegendObstacles avoid;
     for (const Point& q : s.curve)
@@ -347,7 +375,8 @@ CanvasLegendObstacles deCasteljauObstacles(const DeCasteljauScene& s, const QStr
     return avoid;
 }
 
-QRectF deCasteljauHodographInset(const DeCasteljauScene& s, const QString& labelPrefix, const ViewTransform& view, const CanvasStyle& style)
+QRectF deCasteljauHodographInset(const DeCasteljauScene& s, const QString& labelPrefix, const ViewTransform& view,
+                                 const CanvasStyle& style)
 {
     if (!s.view.hodograph || s.hodoLevels.levels.empty())
         return {};
@@ -372,7 +401,8 @@ QRectF deCasteljauHodographInset(const DeCasteljauScene& s, const QString& label
     return best;
 }
 
-void drawDeCasteljauHodographInset(QPainter& p, const ViewTransform& view, const CanvasStyle& style, const DeCasteljauScene& s, const QString& labelPrefix)
+void drawDeCasteljauHodographInset(QPainter& p, const ViewTransform& view, const CanvasStyle& style, const DeCasteljauScene& s,
+                                   const QString& labelPrefix)
 {
     const QRectF inset = deCasteljauHodographInset(s, labelPrefix, view, style);
     if (inset.isEmpty())

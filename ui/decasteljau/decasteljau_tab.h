@@ -9,7 +9,8 @@
 /// bounding box with the extrema of x and y, the inflections and cusps, the hodograph c′
 /// in an inset of its own with its own construction at t; the readouts s(t), L and κ(t);
 /// playing at constant speed (by arc length); dragging the curve itself to mold it.
-/// The Bernstein tab shares this tab's control points and its t.
+/// The Bernstein tab shows the same curve: its control points, t and history are one
+/// BezierCurveModel (ui/common/bezier_curve_model.h), made here.
 
 #include "ui/common/bezier_exact_html.h"
 #include "ui/common/canvas_legend.h"

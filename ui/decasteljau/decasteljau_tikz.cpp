@@ -101,7 +101,8 @@ void writeDeCasteljauTikz(TikzWriter& w, const DeCasteljauScene& s, const QRectF
         // The inset of the canvas: c′ with its control polygon, its curve, its construction at t
         // and c′(t) as the vector from the origin.
         const auto& H = s.hodoLevels.levels.front();
-        const QString title = literalTexText(QCoreApplication::translate("granota::ui::DeCasteljauTab", "hodograph c′")).replace(QStringLiteral("c′"), QStringLiteral("$c'$"));
+        const QString title = literalTexText(QCoreApplication::translate("granota::ui::DeCasteljauTab", "hodograph c′"))
+                                  .replace(QStringLiteral("c′"), QStringLiteral("$c'$"));
         w.beginInset(title);
         QStringList coordinates;
         for (const Point& q : H)

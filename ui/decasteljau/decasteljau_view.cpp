@@ -76,13 +76,15 @@ std::optional<DeCasteljauView> readDeCasteljauView(const QJsonObject& json, QStr
         if (v.isUndefined())
             continue;
         if (!v.isBool()) {
-            error = QCoreApplication::translate("granota::ui::DeCasteljauTab", "A De Casteljau display option is not true or false.");
+            error = QCoreApplication::translate("granota::ui::DeCasteljauTab",
+                                                "A De Casteljau display option is not true or false.");
             return std::nullopt;
         }
         view.*member = v.toBool();
     }
     if (const QJsonValue v = json.value(QStringLiteral("curvatureCombScale")); !v.isUndefined()) {
-        if (!v.isDouble() || !std::isfinite(v.toDouble()) || v.toDouble() < 0 || v.toDouble() > CurvatureCombScaleBox::kMaxScale) {
+        if (!v.isDouble() || !std::isfinite(v.toDouble()) || v.toDouble() < 0 ||
+            v.toDouble() > CurvatureCombScaleBox::kMaxScale) {
             error = QCoreApplication::translate("granota::ui::DeCasteljauTab",
                                                 "The comb's scale must be 0 (automatic) or a positive number up to %1.")
                         .arg(displayNumber(CurvatureCombScaleBox::kMaxScale));
