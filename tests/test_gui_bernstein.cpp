@@ -31,7 +31,7 @@ namespace {
 /// The two tabs, as the main window builds them.
 struct Tabs {
     DeCasteljauTab deCasteljau;
-    BernsteinTab bernstein{&deCasteljau};
+    BernsteinTab bernstein{deCasteljau.curveModel()};
 };
 
 const granota::WorkedExample& example(const char* id)

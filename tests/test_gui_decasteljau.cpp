@@ -714,6 +714,30 @@ private slots:
         QCOMPARE(tab.pointEditor()->points().size(), std::size_t(DeCasteljauTab::kMaxPoints));
     }
 
+    // The exact panel ends with the warning of the degree it shows. refreshPanel once typeset the
+    // panel before it recomputed the warning: degree 20 showed none, degree 21 the one of degree 20.
+    void thePanelWarnsOfItsOwnDegree()
+    {
+        DeCasteljauTab tab;
+        const auto ofDegree = [](int n) {
+            std::vector<Point> points;
+            for (int i = 0; i <= n; ++i)
+                points.push_back({i * 0.1, std::sin(i * 0.7) * 3.0});
+            return points;
+        };
+        const auto says = [&tab](int n) {
+            return tab.exactPanel()->plainText().contains(QStringLiteral("Degree %1 is high").arg(n));
+        };
+        tab.pointEditor()->setPoints(ofDegree(DeCasteljauTab::kWarnDegree - 1), QStringLiteral("19"));
+        QVERIFY(tab.warning().isEmpty());
+        QVERIFY(!says(DeCasteljauTab::kWarnDegree - 1));
+        tab.pointEditor()->setPoints(ofDegree(DeCasteljauTab::kWarnDegree), QStringLiteral("20"));
+        QVERIFY2(says(DeCasteljauTab::kWarnDegree), qPrintable(tab.exactPanel()->plainText().right(300)));
+        tab.pointEditor()->setPoints(ofDegree(DeCasteljauTab::kWarnDegree + 1), QStringLiteral("21"));
+        QVERIFY(says(DeCasteljauTab::kWarnDegree + 1));
+        QVERIFY(!says(DeCasteljauTab::kWarnDegree));
+    }
+
     void saveLoadRoundTrip()
     {
         DeCasteljauTab tab;

@@ -87,7 +87,7 @@ public:
     Tabs() : m_owner(std::make_unique<QWidget>())
     {
         auto* deCasteljau = new ui::DeCasteljauTab(m_owner.get());
-        pages = {deCasteljau, new ui::BernsteinTab(deCasteljau, m_owner.get()), new ui::FitTab(m_owner.get()),
+        pages = {deCasteljau, new ui::BernsteinTab(deCasteljau->curveModel(), m_owner.get()), new ui::FitTab(m_owner.get()),
                  new ui::CatmullRomTab(m_owner.get()), new ui::FrogTab(m_owner.get())};
     }
     QVector<TabPage*> pages;

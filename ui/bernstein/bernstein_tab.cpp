@@ -6,9 +6,10 @@
 #include "core/exact/polynomial_text.h"
 #include "core/exact/rational.h"
 #include "core/io/worked_examples.h"
+#include "ui/common/bezier_curve_model.h"
+#include "ui/common/bezier_exact_html.h"
 #include "ui/common/canvas_style.h"
 #include "ui/decasteljau/decasteljau_parameter_control.h"
-#include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/plot_tick_room.h"
 #include "ui/common/point_editor.h"
@@ -49,12 +50,6 @@ constexpr double kPresentationBasisWidth = 3.6;
 
 /// B_i^n in plain Unicode (legend, readout): B₂⁵.
 QString basisName(int i, int n) { return QStringLiteral("B") + subscriptDigits(i) + superscriptDigits(n); }
-/// B_i^n(t) in HTML.
-QString basisHtml(const QString& i, const QString& n, const QString& arg = QStringLiteral("t"))
-{
-    return QStringLiteral("B<sub>%1</sub><sup>%2</sup>(%3)").arg(i, n, arg);
-}
-
 
 /// File ▸ Export of the basis plot: the plot as on screen, without the readout that follows the
 /// mouse (it belongs to the pointer, not to the picture).
@@ -80,8 +75,8 @@ QString residualText(double r) { return r == 0.0 ? QStringLiteral("0") : display
 
 } // namespace
 
-BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
-    : TabPage(QStringLiteral("bernstein"), QT_TR_NOOP("Bernstein"), deCasteljau->undoStack(), parent), m_deCasteljau(deCasteljau),
+BernsteinTab::BernsteinTab(BezierCurveModel* curve, QWidget* parent)
+    : TabPage(QStringLiteral("bernstein"), QT_TR_NOOP("Bernstein"), curve->undoStack(), parent), m_curve(curve),
       m_basisPlot(new QCustomPlot(this)), m_weightsPlot(new QCustomPlot(this)), m_exact(new ExactPanel(this)),
       m_parameter(new DeCasteljauParameterControl(this)), m_degreeLabel(new QLabel(this)), m_degreeBox(new QSpinBox(this)),
       m_allBox(new QCheckBox(this)), m_markerBox(new QCheckBox(this)),
@@ -205,16 +200,17 @@ BernsteinTab::BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent)
     connect(m_markerBox, &QCheckBox::toggled, this, [this](bool on) {
         userChangedView({m_degree, m_allDegrees, on}, on ? tr("Mark t") : tr("Hide the mark at t"));
     });
-    // One t for both tabs: this tab's slider moves the De Casteljau tab's t, and back.
+    // One t for both tabs: this tab's slider moves the curve's t, and so the De Casteljau tab's.
     connect(m_parameter, &DeCasteljauParameterControl::valueChanged, this,
             [this](double t) { userMovedT(t, m_parameter->gestureMergeId()); });
-    connect(m_deCasteljau, &DeCasteljauTab::tChanged, this, [this](double t) {
+    connect(m_curve, &BezierCurveModel::tChanged, this, [this](double t) {
         m_parameter->setValue(t);
         updateMarker();
         updateWeights();
         updateChecks();
     });
-    connect(m_deCasteljau->pointEditor(), &PointEditor::pointsChanged, this, [this] {
+    connect(m_curve, &BezierCurveModel::documentChanged, this, &TabPage::documentChanged);
+    connect(m_curve, &BezierCurveModel::pointsChanged, this, [this] {
         updateWeights();
         updateExactPanel();
     });
@@ -229,12 +225,12 @@ BernsteinTab::~BernsteinTab() = default;
 
 // ---------------------------------------------------------------- settings
 
-double BernsteinTab::t() const { return m_deCasteljau->t(); }
+double BernsteinTab::t() const { return m_curve->t(); }
 
 void BernsteinTab::setT(double t)
 {
-    m_deCasteljau->setT(t); // comes back through tChanged
-    m_parameter->setValue(m_deCasteljau->t());
+    m_curve->setT(t); // comes back through tChanged
+    m_parameter->setValue(m_curve->t());
 }
 
 int BernsteinTab::plotDragMergeId() const
@@ -247,15 +243,9 @@ void BernsteinTab::userMovedT(double t, int mergeId)
 {
     const double before = this->t();
     setT(t);
-    const double after = this->t();
-    if (after == before)
+    if (this->t() == before)
         return;
-    auto apply = [this](double v) {
-        setT(v);
-        emit documentChanged();
-    };
-    m_undo->push(new ValueCommand<double>(apply, before, after, tr("Move t"), mergeId,
-                                          {/*dropWhenUnchanged=*/true, /*appliedAlready=*/true}));
+    m_curve->pushT(before, mergeId, tr("Move t"));
     emit documentChanged();
 }
 
@@ -376,7 +366,7 @@ double BernsteinTab::markerT() const { return m_marker->point1->coords().x(); }
 
 void BernsteinTab::updateWeights()
 {
-    const auto& points = m_deCasteljau->pointEditor()->points();
+    const auto& points = m_curve->points();
     if (points.empty())
         return;
     const int n = static_cast<int>(points.size()) - 1;
@@ -405,7 +395,7 @@ void BernsteinTab::updateWeights()
     m_curveLabel->setText(tr("At t = %1 the weights sum to %2.<br>Def 2.6: %3 = %4<br>De Casteljau: %5 = %6 (difference %7)")
                               .arg(panelNumber(tt), displaySignificant(sum, 17),
                                    QStringLiteral("Σ %1 P<sub>i</sub>").arg(basisHtml(QStringLiteral("i"), QString::number(n))),
-                                   panelPointText(viaBernstein), QStringLiteral("P<sub>0</sub><sup>%1</sup>(t)").arg(n),
+                                   panelPointText(viaBernstein), levelHtml(QStringLiteral("0"), QString::number(n)),
                                    panelPointText(viaDeCasteljau), residualText(distance(viaBernstein, viaDeCasteljau))));
     m_weightsGroup->setTitle(tr("Weights of the %n control points of the De Casteljau tab at t (Def 2.6)", nullptr, n + 1));
 }
@@ -511,45 +501,7 @@ QStringList BernsteinTab::checkTexts() const
 
 QString BernsteinTab::curvePointText() const { return m_curveLabel->text(); }
 
-void BernsteinTab::updateExactPanel()
-{
-    QString html;
-    // Ex 2.4: B_i^n expanded in powers of t.
-    for (int n = m_allDegrees ? 0 : m_degree; n <= m_degree; ++n) {
-        html += ExactPanel::heading(tr("Bernstein polynomials of degree %1 (Def 2.5)").arg(n));
-        html += QStringLiteral("<p>");
-        for (int i = 0; i <= n; ++i)
-            html += QStringLiteral("%1 = %2<br>")
-                        .arg(basisHtml(QString::number(i), QString::number(n)),
-                             ExactPanel::polynomialHtml(toText(bernsteinPolynomial(i, n))));
-        html += QStringLiteral("</p>");
-    }
-    // Ex 2.5, Ex 2.6: the De Casteljau tab's curve written with Def 2.6, term by term.
-    const auto& points = m_deCasteljau->pointEditor()->points();
-    const int n = static_cast<int>(points.size()) - 1;
-    html += ExactPanel::heading(tr("The De Casteljau tab's curve in the Bernstein basis (Def 2.6)"));
-    const auto exact = m_deCasteljau->pointEditor()->allExactPoints();
-    if (!exact) {
-        html += ExactPanel::note(tr("The control points are not small fractions, so the curve is not expanded exactly."));
-    } else if (n > kMaxExactCurve) {
-        html += ExactPanel::note(
-            tr("The expansion is shown up to degree %1; the curve has degree %2.").arg(kMaxExactCurve).arg(n));
-    } else {
-        const QString nText = QString::number(n);
-        html += QStringLiteral("<p>α(t) = Σ<sub>k=0</sub><sup>%1</sup> %2 P<sub>k</sub></p><p>")
-                    .arg(nText, basisHtml(QStringLiteral("k"), nText));
-        const auto terms = bernsteinTerms(*exact);
-        for (int k = 0; k <= n; ++k)
-            html += QStringLiteral("%1 P<sub>%2</sub> = (%3) · %4 = %5<br>")
-                        .arg(basisHtml(QString::number(k), nText))
-                        .arg(k)
-                        .arg(ExactPanel::polynomialHtml(toText(bernsteinPolynomial(k, n))),
-                             panelPointText((*exact)[static_cast<std::size_t>(k)]),
-                             ExactPanel::polynomialHtml(toText(terms[static_cast<std::size_t>(k)])));
-        html += QStringLiteral("</p><p><b>α(t) = %1</b></p>").arg(ExactPanel::polynomialHtml(toText(bernsteinSum(*exact))));
-    }
-    m_exact->setContent(html);
-}
+void BernsteinTab::updateExactPanel() { m_exact->setContent(bernsteinPanelHtml(m_degree, m_allDegrees, m_curve->points(), m_curve->pointEditor()->allExactPoints())); }
 
 // ---------------------------------------------------------------- TabPage
 
@@ -652,7 +604,7 @@ bool BernsteinTab::loadExample(const granota::WorkedExample& example)
         // The points and t are the De Casteljau tab's (one history for both tabs): the status
         // bar says so, as for every example that changes another tab than the one shown.
         m_undo->beginMacro(tr("Load Ex %1").arg(id));
-        m_deCasteljau->loadCurve(toDouble(example.points), tr("Load Ex %1").arg(id));
+        m_curve->loadCurve(toDouble(example.points), tr("Load Ex %1").arg(id));
         userChangedView({static_cast<int>(example.points.size()) - 1, false, m_showMarker}, tr("Load Ex %1").arg(id));
         m_undo->endMacro();
         emit statusMessage(tr("Ex %1: the curve written in the Bernstein basis is in the panel on the right. Its "

@@ -10,6 +10,7 @@
 /// are steps on it, and loading Ex 2.5 or Ex 2.6 (the points, t and the degree) is one step.
 
 #include "core/curves/bezier/bernstein_properties.h"
+#include "ui/common/bezier_exact_html.h"
 #include "ui/common/plot_drawable.h"
 #include "ui/shell/tab_page.h"
 
@@ -32,15 +33,15 @@ class QUndoStack;
 
 namespace granota::ui {
 
+class BezierCurveModel;
 class DeCasteljauParameterControl;
-class DeCasteljauTab;
 class ExactPanel;
 
 class BernsteinTab : public TabPage {
     Q_OBJECT
 public:
-    /// Shares the control points and the parameter t of the De Casteljau tab (docs/tabs.md).
-    explicit BernsteinTab(DeCasteljauTab* deCasteljau, QWidget* parent = nullptr);
+    /// Shows the curve the De Casteljau tab edits: its control points, t and history (docs/tabs.md).
+    explicit BernsteinTab(BezierCurveModel* curve, QWidget* parent = nullptr);
     ~BernsteinTab() override;
 
     void retranslate() override;
@@ -61,7 +62,7 @@ public:
     /// (Fig 2.4 as printed). The document's "t_marker".
     bool tMarkerVisible() const { return m_showMarker; }
     void setTMarkerVisible(bool on);
-    /// The shared parameter t (the De Casteljau tab's).
+    /// The shared parameter t (the curve's, bezier_curve_model.h).
     double t() const;
     void setT(double t);
 
@@ -83,9 +84,9 @@ public:
     /// The x position (t) of the vertical line marking the current t.
     double markerT() const;
 
-    static constexpr int kMaxDegree = 30;    ///< the spin box's range: 0…30
-    static constexpr int kMaxExactCurve = 8; ///< the curve in powers of t up to this degree
-    static constexpr int kPlotSamples = 201; ///< t samples per graph (Matlab linspace(0, 1, 200))
+    static constexpr int kMaxDegree = 30;                        ///< the spin box's range: 0…30
+    static constexpr int kMaxExactCurve = kMaxExactBezierDegree; ///< the curve in powers of t up to this degree
+    static constexpr int kPlotSamples = 201;                     ///< t samples per graph (Matlab linspace(0, 1, 200))
 
 protected:
     void drawTikz(TikzWriter& w) const override;
@@ -113,7 +114,7 @@ private:
     void plotMouseMove(QMouseEvent* event);
     void plotMousePress(QMouseEvent* event);
 
-    DeCasteljauTab* m_deCasteljau;
+    BezierCurveModel* m_curve;
     QCustomPlot* m_basisPlot;
     QCustomPlot* m_weightsPlot;
     std::unique_ptr<Drawable> m_drawable; ///< the basis plot for File ▸ Export, without the hover readout

@@ -9,19 +9,17 @@
 /// bounding box with the extrema of x and y, the inflections and cusps, the hodograph c′
 /// in an inset of its own with its own construction at t; the readouts s(t), L and κ(t);
 /// playing at constant speed (by arc length); dragging the curve itself to mold it.
-/// The Bernstein tab shares this tab's control points and its t.
+/// The Bernstein tab shows the same curve: its control points, t and history are one
+/// BezierCurveModel (ui/common/bezier_curve_model.h), made here.
 
-#include "core/curves/bezier/arc_length.h"
-#include "core/curves/bezier/curvature.h"
-#include "core/curves/bezier/curve_features.h"
-#include "core/curves/bezier/de_casteljau.h"
-#include "ui/common/curvature_comb.h"
+#include "ui/common/bezier_exact_html.h"
 #include "ui/common/canvas_legend.h"
 #include "ui/common/curve_tab.h"
+#include "ui/decasteljau/decasteljau_scene.h"
+#include "ui/decasteljau/decasteljau_view.h"
 
 #include <QString>
 
-#include <optional>
 #include <vector>
 
 class QCheckBox;
@@ -34,6 +32,7 @@ class QToolButton;
 
 namespace granota::ui {
 
+class BezierCurveModel;
 class CurvatureCombScaleBox;
 class DeCasteljauCurveDrag;
 class DeCasteljauParameterControl;
@@ -49,37 +48,46 @@ public:
     QString csv() const override;
 
     DeCasteljauParameterControl* parameterControl() const { return m_parameter; }
+    /// The curve (points, t, undo history) this tab shares with the Bernstein tab.
+    BezierCurveModel* curveModel() const { return m_model; }
 
     /// The parameter t ∈ [0, 1], shared with the Bernstein tab.
-    double t() const { return m_t; }
+    double t() const;
     void setT(double t);
 
+    /// What the tab shows (decasteljau_view.h): the document keeps it, a change of it is one undo step.
+    const DeCasteljauView& view() const { return m_view; }
+    /// Makes `view` current (clamped) without an undo step, and recomputes the scene.
+    void setView(const DeCasteljauView& view);
+    /// Everything drawn, computed from the points, t and the view (decasteljau_scene.h).
+    const DeCasteljauScene& scene() const { return m_scene; }
+
     /// Sampling precision: the curve is drawn through samples() + 1 points (Matlab `part`).
-    int samples() const { return m_samples; }
+    int samples() const { return m_view.samples; }
     void setSamples(int part);
 
     /// The control points P_i, their polygon and labels (the Matlab `puntsvis`); hidden, the
     /// curve and whatever else is shown stay (Fig 2.2 and 2.3 as printed).
-    bool controlPointsVisible() const { return m_showControlPoints; }
+    bool controlPointsVisible() const { return m_view.controlPoints; }
     void setControlPointsVisible(bool on);
-    bool constructionVisible() const { return m_showConstruction; }
-    bool stepByStep() const { return m_showSteps; }
-    bool tangentVisible() const { return m_showTangent; }
-    bool splitVisible() const { return m_showSplit; }
+    bool constructionVisible() const { return m_view.construction; }
+    bool stepByStep() const { return m_view.stepByStep; }
+    bool tangentVisible() const { return m_view.tangent; }
+    bool splitVisible() const { return m_view.split; }
     void setConstructionVisible(bool on);
     void setStepByStep(bool on);
     void setTangentVisible(bool on);
     void setSplitVisible(bool on);
 
     /// The overlays beyond the thesis, each a toggle the document keeps.
-    bool normalVisible() const { return m_showNormal; }
-    bool osculatingCircleVisible() const { return m_showOsculating; }
-    bool combVisible() const { return m_showComb; }
-    bool boundingBoxVisible() const { return m_showBox; }
-    bool inflectionsVisible() const { return m_showFeatures; }
-    bool hodographVisible() const { return m_showHodograph; }
+    bool normalVisible() const { return m_view.normal; }
+    bool osculatingCircleVisible() const { return m_view.osculatingCircle; }
+    bool combVisible() const { return m_view.comb; }
+    bool boundingBoxVisible() const { return m_view.boundingBox; }
+    bool inflectionsVisible() const { return m_view.inflections; }
+    bool hodographVisible() const { return m_view.hodograph; }
     /// Playing moves c(t) by equal steps of arc length instead of t.
-    bool constantSpeed() const { return m_constantSpeed; }
+    bool constantSpeed() const { return m_view.constantSpeed; }
     void setNormalVisible(bool on);
     void setOsculatingCircleVisible(bool on);
     void setCombVisible(bool on);
@@ -88,23 +96,23 @@ public:
     void setHodographVisible(bool on);
     void setConstantSpeed(bool on);
     /// The comb's scale (curvature_comb_scale_box.h): 0 is automatic, the default.
-    double combScale() const { return m_combScale; }
+    double combScale() const { return m_view.combScale; }
     void setCombScale(double scale);
     CurvatureCombScaleBox* combScaleBox() const { return m_combScaleBox; }
 
     /// κ, the normal and the osculating circle at the current t.
-    const CurvatureAt& curvatureAtT() const { return m_curvature; }
+    const CurvatureAt& curvatureAtT() const { return m_scene.curvature; }
     /// The comb drawn (computed while it is shown).
-    const CurvatureComb& comb() const { return m_comb; }
+    const CurvatureComb& comb() const { return m_scene.comb; }
     /// Extrema, box, inflections and cusps of the curve (computed while one of them is shown).
-    const CurveFeatures& features() const { return m_features; }
+    const CurveFeatures& features() const { return m_scene.features; }
     /// s(t) and L.
     double arcLengthAtT() const;
     double totalLength() const;
     /// The readouts line under the canvas: s(t), L and κ(t).
     QString readout() const;
     /// The hodograph's control points n (P_{i+1} − P_i) and its construction at t.
-    const DeCasteljauTable<double>& hodographTable() const { return m_hodoLevels; }
+    const DeCasteljauTable<double>& hodographTable() const { return m_scene.hodoLevels; }
     /// Where the hodograph's inset is drawn in a view (empty when it is hidden): the corner of
     /// the viewport that covers least of the curve, the handles, their labels and c(t) (as the
     /// key is placed; the lower right winning a tie, then lower left, upper right, upper left).
@@ -122,9 +130,9 @@ public:
     void loadCurve(const std::vector<Point>& points, const QString& undoText);
 
     /// The De Casteljau table at the current t (every level P_i^r(t)).
-    const DeCasteljauTable<double>& table() const { return m_levels; }
+    const DeCasteljauTable<double>& table() const { return m_scene.levels; }
     /// The sampled curve (samples() + 1 points).
-    const std::vector<Point>& curve() const { return m_curve; }
+    const std::vector<Point>& curve() const { return m_scene.curve; }
     /// The key in the canvas's corner: the levels', step curves' and halves' colours.
     CanvasLegend legend() const;
     /// Where the key goes in a view: the corner that covers no handle, label, c(t) or inset if
@@ -140,10 +148,10 @@ public:
     /// The warning shown for high degrees; empty when there is none.
     QString warning() const { return m_warningText; }
 
-    static constexpr int kMaxPoints = 200;     ///< docs/extreme-cases.md: the editor refuses more
-    static constexpr int kMaxExactDegree = 8;  ///< above, the symbolic P_i^r(t) would not be readable
-    static constexpr int kMaxTableDegree = 20; ///< above, the numeric triangle is not shown either
-    static constexpr int kWarnDegree = 20;     ///< from here on, the conditioning warning
+    static constexpr int kMaxPoints = 200;                        ///< docs/extreme-cases.md: the editor refuses more
+    static constexpr int kMaxExactDegree = kMaxExactBezierDegree; ///< above, the symbolic P_i^r(t) would not be readable
+    static constexpr int kMaxTableDegree = kMaxTriangleDegree;    ///< above, the numeric triangle is not shown either
+    static constexpr int kWarnDegree = 20;                        ///< from here on, the conditioning warning
 
 signals:
     void tChanged(double t);
@@ -172,19 +180,25 @@ private:
     void updateCanvasSummary();
     void advanceAnimation();
     void updateReadout();
-    /// What the overlays shown need of the curve (features, comb, arc length, hodograph).
-    void updateGeometry();
-    void updateCurvatureAtT();
-    void drawHodographInset(QPainter& p, const ViewTransform& view, const CanvasStyle& style) const;
-    QString exactCurvatureHtml() const;
-    void setToggle(bool& flag, QCheckBox* box, bool on);
+    /// The scene again from the points, t and the view (and the comb's automatic scale shown).
+    void recomputeScene();
+    /// The check boxes and spin boxes, the handles and snapping as m_view says.
+    void showView();
     /// The user's changes (docs/tabs.md, "Undo"): each is one undo step that gives the
     /// document's value back; the programmatic setters above push nothing.
     void userMovedT(double t);
-    void userToggled(bool& flag, QCheckBox* box, bool on, const QString& undoText);
-    void userSetSamples(int part);
-    void userSetCombScale(double scale);
-    void pushT(double before, double after, int mergeId, const QString& undoText);
+    /// A check box, the view's flag it shows and the undo step's text (the box's own).
+    struct Toggle {
+        QCheckBox* box;
+        bool DeCasteljauView::*flag;
+        const char* undoText;
+    };
+    std::vector<Toggle> toggles() const;
+    void setFlag(bool DeCasteljauView::*flag, bool on);
+    /// One undo step for any change of the view (the spin boxes merge while held, by `mergeId`).
+    void userChangedView(const DeCasteljauView& after, const QString& undoText, int mergeId = -1);
+    /// One undo step from `before` to the current t.
+    void pushT(double before, int mergeId, const QString& undoText);
 
     QSplitter* m_mainSplitter = nullptr;
     QSplitter* m_sideSplitter = nullptr;
@@ -217,34 +231,11 @@ private:
     void refreshPanel();
     void schedulePanel();
 
-    double m_t = 0.5;
+    BezierCurveModel* m_model = nullptr;
     double m_playStartT = 0.5; ///< where t was when Play was pressed: Pause makes one step from there
-    int m_samples = 200;
-    bool m_showControlPoints = true;
-    bool m_showConstruction = true;
-    bool m_showSteps = false;
-    bool m_showTangent = false;
-    bool m_showSplit = false;
-    bool m_showNormal = false;
-    bool m_showOsculating = false;
-    bool m_showComb = false;
-    bool m_showBox = false;
-    bool m_showFeatures = false;
-    bool m_showHodograph = false;
-    bool m_constantSpeed = false;
-    double m_combScale = 0; ///< 0: automatic
-
-    // Derived from the points (and t): recomputed on change, drawn from here.
-    std::vector<Point> m_curve;
-    std::vector<std::vector<Point>> m_stepCurves;
-    DeCasteljauTable<double> m_levels;
-    CurvatureAt m_curvature;
-    CurvatureComb m_comb;
-    CurveFeatures m_features;
-    std::optional<ArcLengthParametrization> m_arc;
-    std::vector<Point> m_hodoCurve;        ///< the hodograph sampled (while it is shown)
-    DeCasteljauTable<double> m_hodoLevels; ///< its construction at t
-    QString m_symbolicHtml;                ///< the exact P_i^r(t) in powers of t (depends on the points only)
+    DeCasteljauView m_view;
+    DeCasteljauScene m_scene; ///< derived from the points, t and the view: recomputed on change, drawn from here
+    QString m_symbolicHtml;   ///< the exact P_i^r(t) in powers of t (depends on the points only)
     QString m_warningText;
 };
 

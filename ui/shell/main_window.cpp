@@ -89,7 +89,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
     FieldInputFilter::install(); // the wheel scrolls the panels; Ctrl+Z in a field is the document's
     m_normalFont = QApplication::font();
     auto* deCasteljau = new DeCasteljauTab(this);
-    m_pages = {deCasteljau, new BernsteinTab(deCasteljau, this), new FitTab(this), new CatmullRomTab(this), new FrogTab(this)};
+    m_pages = {deCasteljau, new BernsteinTab(deCasteljau->curveModel(), this), new FitTab(this), new CatmullRomTab(this),
+               new FrogTab(this)};
     m_undoGroup = new QUndoGroup(this);
     for (TabPage* page : m_pages) {
         // Below every tab, its work-precision section (docs/work-precision.md), collapsed until View ▸ Error
