@@ -67,119 +67,44 @@ QPointF q(const Point& p) { return QPointF(p.x, p.y); }
 
 } // namespace
 
-FrogCanvas::FrogCanvas(QWidget* parent) : QWidget(parent)
+FrogCanvas::FrogCanvas(FrogRun* run, QWidget* parent) : QWidget(parent), m_run(run)
 {
     setMouseTracking(true); // Processing's mouseX/mouseY are always current (§4.1, §4.13)
     setFocusPolicy(Qt::StrongFocus);
     setDrawsOwnFocusFrame(this);
     setAttribute(Qt::WA_OpaquePaintEvent);
-    m_timer.setTimerType(Qt::PreciseTimer);
-    connect(&m_timer, &QTimer::timeout, this, &FrogCanvas::tick);
     m_clock.start();
     m_textClock.start();
     buildPens();
+    observe();
+}
+
+FrogCanvas::FrogCanvas(QWidget* parent) : FrogCanvas(new FrogRun, parent) { m_run->setParent(this); }
+
+void FrogCanvas::observe()
+{
+    connect(m_run, &FrogRun::stepped, this, [this] {
+        refreshTexts();
+        update();
+    });
+    connect(m_run, &FrogRun::frameRan, this, [this] {
+        if (m_textClock.nsecsElapsed() >= kTextRefreshNs)
+            refreshTexts();
+        update();
+    });
+    connect(m_run, &FrogRun::changed, this, [this] {
+        refreshTexts();
+        update();
+    });
+    connect(m_run, &FrogRun::runShown, this, &FrogCanvas::runShown);
+    connect(m_run, &FrogRun::grabLost, this, &FrogCanvas::letGo);
 }
 
 FrogCanvas::~FrogCanvas() = default;
 
-Expected<RecordedRun> FrogCanvas::recordRun(std::unique_ptr<Simulation> simulation, long work)
-{
-    auto run = RecordedRun::adopt(std::move(simulation), int(std::clamp<long>(kScrubWork / std::max(1L, work), 1, 100)));
-    if (run)
-        run->limitSnapshotCost(RecordedRun::kSnapshotCostShare);
-    return run;
-}
-
-void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
-{
-    m_run.reset();
-    if (simulation) {
-        const long work = std::max<long>(1, simulation->workPerStep());
-        const std::size_t points = std::max<std::size_t>(1, simulation->pointCount());
-        auto run = recordRun(std::move(simulation), work);
-        if (run) {
-            m_run = std::make_unique<RecordedRun>(std::move(run).value());
-            m_run->setMaxSnapshots(kSnapshotBytes / (points * kSnapshotBytesPerPoint));
-        }
-    }
-    rebuildGhost();
-    if (sim() && sim()->scene().name != m_trailScene) { // another stage: its own default point
-        m_trailScene = sim()->scene().name;
-        m_trailPoint.index = -1;
-    }
-    restartTrail();
-    m_frameCount = 0;
-    m_series.clear();
-    if (sim() && m_recording)
-        m_series.record(*sim());
-    m_startAreaError = sim() && sim()->bodyCount() > 0 ? sim()->readouts().areaErrorPercent : 0;
-    runShown(true);
-}
-
-std::size_t FrogCanvas::KeptRun::bytes() const
-{
-    std::size_t bytes = 0;
-    for (const RecordedRun* r : {run.get(), ghost.get()})
-        if (r)
-            bytes += (r->snapshotCount() + 1) * r->simulation().pointCount() * kSnapshotBytesPerPoint;
-    return bytes;
-}
-
-std::unique_ptr<FrogCanvas::KeptRun> FrogCanvas::takeRun()
-{
-    if (!m_run)
-        return nullptr;
-    auto kept = std::make_unique<KeptRun>();
-    kept->run = std::move(m_run);
-    kept->ghost = std::move(m_ghost);
-    std::swap(kept->series, m_series); // the plots read m_series: its contents move, not the object
-    kept->trail = std::move(m_trail);
-    kept->trailPoint = m_trailPoint;
-    kept->trailScene = m_trailScene;
-    kept->frameCount = m_frameCount;
-    kept->startAreaError = m_startAreaError;
-    return kept;
-}
-
-std::unique_ptr<FrogCanvas::KeptRun> FrogCanvas::replaceRun(std::unique_ptr<Simulation> simulation)
-{
-    std::unique_ptr<KeptRun> kept = takeRun();
-    setSimulation(std::move(simulation));
-    return kept;
-}
-
-std::unique_ptr<FrogCanvas::KeptRun> FrogCanvas::restoreRun(std::unique_ptr<KeptRun> kept)
-{
-    if (!kept || !kept->run)
-        return kept;
-    std::unique_ptr<KeptRun> replaced = takeRun();
-    m_run = std::move(kept->run);
-    m_ghost = std::move(kept->ghost);
-    if (m_overlays.ghost != bool(m_ghost)) // the overlay was turned since the run was set aside
-        rebuildGhost();
-    std::swap(m_series, kept->series);
-    if (m_recording != !m_series.samples().empty()) { // the plots were shown or hidden since
-        m_series.clear();
-        if (m_recording)
-            m_series.record(*sim());
-    }
-    m_trail = std::move(kept->trail);
-    m_trailPoint = kept->trailPoint;
-    m_trailScene = kept->trailScene;
-    if (!m_overlays.trail || m_trail.empty()) // the overlay was turned since
-        restartTrail();
-    m_frameCount = kept->frameCount;
-    m_startAreaError = kept->startAreaError;
-    runShown(false);
-    return replaced;
-}
-
 void FrogCanvas::runShown(bool fresh)
 {
-    updateWork();
-    m_pacer.restart();
     m_fitter.reset();
-    m_previousValid = false;
     m_pressed = false;
     m_keyboardHeld = false;
     m_spawnHeld = false;
@@ -189,46 +114,30 @@ void FrogCanvas::runShown(bool fresh)
     m_backgroundSize = QSize(); // the frame may have another size
     // Processing's mouseX/mouseY hold from the first frame (§4.1, §4.13); a run brought back
     // is not sent one (recorded, it would cut off the run's recorded future).
-    if (fresh && m_run && m_mouseKnown && underMouse())
-        send(InputKind::Move, m_mouse);
+    if (fresh && sim() && m_mouseKnown && underMouse())
+        m_run->send(InputKind::Move, m_mouse);
     m_reportedRadius = -1;
     reportMouseRadius();
     unsetCursor();
     refreshTexts();
-    updateTimer();
-    update();
-    if (!fresh)
-        emit timelineChanged();
-}
-
-void FrogCanvas::setRunning(bool running)
-{
-    m_running = running;
-    m_lastFrameNs = -1;
-    updateTimer();
-    refreshTexts();
     update();
 }
 
-void FrogCanvas::step()
+void FrogCanvas::letGo()
 {
-    advance();
-    refreshTexts();
-    update();
+    m_pressed = false;
+    m_keyboardHeld = false;
+    m_spawnHeld = false;
+    unsetCursor();
+    reportMouseRadius();
 }
 
 void FrogCanvas::setOverlays(const Overlays& overlays)
 {
-    const bool ghostChanged = overlays.ghost != m_overlays.ghost, trailChanged = overlays.trail != m_overlays.trail;
     m_overlays = overlays;
-    if (ghostChanged) {
-        rebuildGhost();
-        updateWork();
-    }
-    if (trailChanged)
-        restartTrail();
-    if (!overlays.velocities)
-        m_previousValid = false;
+    m_run->setGhostShown(overlays.ghost);
+    m_run->setTrailShown(overlays.trail);
+    m_run->setKeepsPrevious(overlays.velocities);
     refreshTexts();
     update();
 }
@@ -274,190 +183,12 @@ void FrogCanvas::buildPens()
     m_numberFont.setPixelSize(std::max(1, int(std::lround(11 * k))));
 }
 
-// ---------------------------------------------------------------- time
-
-void FrogCanvas::updateTimer()
-{
-    if (m_running && sim() && isVisible()) {
-        if (!m_timer.isActive()) {
-            m_lastFrameNs = -1;
-            m_timer.start(17);
-        }
-    } else {
-        m_timer.stop();
-    }
-}
-
-void FrogCanvas::tick()
-{
-    // 17, 17, 16 ms: three frames in 50 ms, 60 frames per second on average.
-    m_tick = (m_tick + 1) % 3;
-    m_timer.setInterval(m_tick == 2 ? 16 : 17);
-    const qint64 now = m_clock.nsecsElapsed();
-    if (m_lastFrameNs >= 0) {
-        m_frameNsSum += double(now - m_lastFrameNs);
-        ++m_frames;
-    }
-    m_lastFrameNs = now;
-    runFrame();
-    if (m_textClock.nsecsElapsed() >= kTextRefreshNs)
-        refreshTexts();
-    update();
-}
-
 QStringList FrogCanvas::textLines() const
 {
     QStringList lines;
     for (const QStaticText& t : m_lines)
         lines << t.text();
     return lines;
-}
-
-void FrogCanvas::runFrame()
-{
-    ++m_frameCount;
-    // Processing's draw(): one actualitza() per frame, a fixed step — slow motion waits a
-    // few frames between steps, fast runs several, and a step that is more work than a frame
-    // holds runs every few frames (StepPacer).
-    for (int n = m_pacer.stepsThisFrame(); n > 0; --n)
-        advance();
-}
-
-int FrogCanvas::framesPerStep() const { return m_pacer.framesPerStep(); }
-
-QString FrogCanvas::speedLabel(double speed)
-{
-    if (speed == 0.125)
-        return QStringLiteral("⅛");
-    if (speed == 0.25)
-        return QStringLiteral("¼");
-    if (speed == 0.5)
-        return QStringLiteral("½");
-    return QLocale().toString(speed, 'g', 3);
-}
-
-int FrogCanvas::workFramesPerStep() const
-{
-    return static_cast<int>(std::max<long>(1, (m_stepWork + kFrameWork - 1) / kFrameWork));
-}
-
-void FrogCanvas::setRecordingSeries(bool on)
-{
-    if (on == m_recording)
-        return;
-    m_recording = on;
-    m_series.clear();
-    if (on && sim())
-        m_series.record(*sim());
-}
-
-bool FrogCanvas::setSpeed(double speed)
-{
-    if (!m_pacer.setSpeed(speed))
-        return false;
-    m_pacer.restart();
-    refreshTexts();
-    update();
-    return true;
-}
-
-void FrogCanvas::advance()
-{
-    if (!sim())
-        return;
-    if (m_overlays.velocities) { // keep x_prev to draw x − x_prev
-        m_previous.clear();
-        m_previousOffset.clear();
-        for (int i = 0; i < sim()->bodyCount(); ++i) {
-            sim()->bodyVertices(i, m_vertices);
-            m_previousOffset.push_back(m_previous.size());
-            m_previous.insert(m_previous.end(), m_vertices.begin(), m_vertices.end());
-        }
-        m_previousOffset.push_back(m_previous.size());
-        m_previousValid = true;
-    }
-    const qint64 t0 = m_clock.nsecsElapsed();
-    const bool replaying = m_run->playingBack();
-    m_run->step();
-    if (m_ghost) // in step with the run: the same events at the same steps
-        while (m_ghost->stepCount() < m_run->stepCount())
-            m_ghost->step();
-    if (replaying) // a recorded spawn adds work
-        updateWork();
-    if (m_recording)
-        m_series.record(*sim());
-    if (m_overlays.trail)
-        if (const auto at = trailPosition()) {
-            m_trail.push_back(*at);
-            while (m_trail.size() > std::size_t(kTrailSteps))
-                m_trail.pop_front();
-        }
-    m_stepNsSum += double(m_clock.nsecsElapsed() - t0);
-    ++m_steps;
-    emit timelineChanged();
-}
-
-void FrogCanvas::restartTrail()
-{
-    m_trail.clear();
-    const Simulation* s = sim();
-    if (s && !trailPosition()) { // none chosen in this scene: the pendulum's tip, else the first body's vertex 0
-        m_trailPoint = TrailPoint{};
-        if (s->bodyCount() == 0 && s->chainCount() > 0) {
-            s->chainJoints(0, m_work);
-            m_trailPoint = {true, 0, std::max(0, int(m_work.size()) - 1)};
-        }
-    }
-    if (m_overlays.trail)
-        if (const auto at = trailPosition())
-            m_trail.push_back(*at);
-}
-
-std::optional<Point> FrogCanvas::trailPosition()
-{
-    const Simulation* s = sim();
-    if (!s)
-        return std::nullopt;
-    std::vector<Point>& points = m_trailBuffer; // reused: this runs every step
-    points.clear();
-    if (m_trailPoint.joint && m_trailPoint.owner < s->chainCount())
-        s->chainJoints(m_trailPoint.owner, points);
-    else if (!m_trailPoint.joint && m_trailPoint.owner < s->bodyCount())
-        s->bodyVertices(m_trailPoint.owner, points);
-    if (m_trailPoint.index < 0 || m_trailPoint.index >= int(points.size()))
-        return std::nullopt;
-    return points[std::size_t(m_trailPoint.index)];
-}
-
-bool FrogCanvas::chooseTrailPoint(Point at)
-{
-    const Simulation* s = sim();
-    if (!s)
-        return false;
-    double best = 30;
-    std::optional<TrailPoint> chosen;
-    const auto consider = [&](bool joint, int owner) {
-        for (std::size_t k = 0; k < m_work.size(); ++k)
-            if (const double d = std::hypot(m_work[k].x - at.x, m_work[k].y - at.y); d <= best) {
-                best = d;
-                chosen = TrailPoint{joint, owner, int(k)};
-            }
-    };
-    for (int i = 0; i < s->bodyCount(); ++i) {
-        s->bodyVertices(i, m_work);
-        consider(false, i);
-    }
-    for (int c = 0; c < s->chainCount(); ++c) {
-        s->chainJoints(c, m_work);
-        consider(true, c);
-    }
-    if (!chosen)
-        return false;
-    m_trailPoint = *chosen;
-    restartTrail();
-    refreshTexts();
-    update();
-    return true;
 }
 
 void FrogCanvas::drawPairs(QPainter& p)
@@ -612,7 +343,8 @@ void FrogCanvas::drawRuler(QPainter& p, double pixel)
 void FrogCanvas::drawTrail(QPainter& p)
 {
     m_trailSegmentsDrawn = 0;
-    if (m_trail.size() < 2)
+    const std::deque<Point>& trail = m_run->trail();
+    if (trail.size() < 2)
         return;
     // Square caps: Qt strokes a thick round cap as a curve, a hundred times slower.
     QPen pen(kTrailColour, 2 * m_style.scale, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin);
@@ -630,8 +362,8 @@ void FrogCanvas::drawTrail(QPainter& p)
     const double budget = kTrailInkBudget * (scene.params.width + scene.params.height);
     double ink = 0;
     m_trailLines.clear();
-    for (std::size_t i = m_trail.size() - 1; i >= 1 && ink < budget; --i)
-        if (const auto part = clipSegment(m_trail[i - 1], m_trail[i], frame)) {
+    for (std::size_t i = trail.size() - 1; i >= 1 && ink < budget; --i)
+        if (const auto part = clipSegment(trail[i - 1], trail[i], frame)) {
             m_trailLines.emplace_back(part->first.x, part->first.y, part->second.x, part->second.y);
             ink += m_trailLines.back().length();
         }
@@ -641,140 +373,6 @@ void FrogCanvas::drawTrail(QPainter& p)
     p.setBrush(Qt::NoBrush);
     p.drawLines(m_trailLines.data(), int(m_trailLines.size()));
     p.restore();
-}
-
-bool FrogCanvas::send(InputKind kind, Point at)
-{
-    bool held = false;
-    for (RecordedRun* run : {m_run.get(), m_ghost.get()}) {
-        if (!run)
-            continue;
-        bool h = false;
-        switch (kind) {
-        case InputKind::Press: h = run->press(at); break;
-        case InputKind::Move: run->move(at); break;
-        case InputKind::Release: run->release(); break;
-        case InputKind::Spawn: run->spawn(at); break;
-        case InputKind::ReleaseSpawn: run->releaseSpawn(); break;
-        case InputKind::Substeps:
-        case InputKind::EdgeCompliance:
-        case InputKind::EdgeDampingRatio: break; // setStableSettings
-        }
-        if (run == m_run.get())
-            held = h;
-    }
-    return held;
-}
-
-bool FrogCanvas::setStableSettings(const StableSettings& settings)
-{
-    if (!m_run || !m_run->setStableSettings(settings))
-        return false;
-    if (m_ghost) // the seed keeps them and steps as before; a stable ghost takes them
-        m_ghost->setStableSettings(settings);
-    updateWork();
-    refreshTexts();
-    update();
-    emit timelineChanged(); // the recording has a new end
-    return true;
-}
-
-void FrogCanvas::rebuildGhost()
-{
-    m_ghost.reset();
-    if (!m_overlays.ghost || !m_run)
-        return;
-    const SolverKind other = sim()->solver() == SolverKind::Seed ? SolverKind::Stable : SolverKind::Seed;
-    auto built = Simulation::create(sim()->scene(), other);
-    if (!built) {
-        emit statusMessage(tr("The other solver cannot run this scene: %1").arg(ErrorText::of(built.error())));
-        return;
-    }
-    const long catchUp = (*built)->workPerStep() * sim()->stepCount();
-    if (catchUp > kGhostCatchUpWork) {
-        emit statusMessage(tr("The ghost starts with the next Reset: the run so far is too long to replay for it."));
-        return;
-    }
-    auto ghost = recordRun(std::move(built).value(), m_stepWork);
-    if (!ghost || !ghost->setRecording(m_run->recording().events, m_run->recordedSteps()).ok() ||
-        !ghost->seek(sim()->stepCount()).ok())
-        return;
-    m_ghost = std::make_unique<RecordedRun>(std::move(ghost).value());
-}
-
-void FrogCanvas::updateWork()
-{
-    m_stepWork = (sim() ? sim()->workPerStep() : 0) + (m_ghost ? m_ghost->simulation().workPerStep() : 0);
-    m_pacer.setWork(m_stepWork, kFrameWork);
-}
-
-bool FrogCanvas::wouldGrab(Point at) const
-{
-    const std::unique_ptr<Simulation> copy = sim()->clone();
-    copy->move(at);
-    return copy->press(at);
-}
-
-bool FrogCanvas::seek(long step)
-{
-    if (!m_run || step < 0 || step > m_run->recordedSteps())
-        return false;
-    const long from = sim()->stepCount();
-    if (step != from) {
-        // Forward by a little with the plots shown: step through, so that each step is
-        // sampled; else restore a snapshot, and the plots keep the samples up to the step.
-        if (m_recording && step > from && (step - from) * std::max(1L, m_stepWork) <= 4 * kScrubWork) {
-            while (sim()->stepCount() < step)
-                advance();
-        } else {
-            (void)m_run->seek(step); // inside the range: cannot fail
-            if (m_ghost && !m_ghost->seek(step).ok())
-                rebuildGhost();
-            if (m_recording) {
-                m_series.truncateAfter(step);
-                if (m_series.samples().empty() || m_series.samples().back().step != step) {
-                    m_series.clear();
-                    m_series.record(*sim());
-                }
-            }
-        }
-    }
-    updateWork();
-    restartTrail(); // the path so far belongs to where the run was
-    m_previousValid = false;
-    m_pressed = false;
-    m_keyboardHeld = false;
-    m_spawnHeld = false;
-    unsetCursor();
-    reportMouseRadius();
-    refreshTexts();
-    update();
-    emit timelineChanged();
-    return true;
-}
-
-bool FrogCanvas::setRecording(std::vector<InputEvent> events, long steps, QString* error)
-{
-    if (!m_run)
-        return false;
-    auto ok = m_run->setRecording(std::move(events), steps);
-    if (!ok) {
-        if (error)
-            *error = ErrorText::of(ok.error());
-        return false;
-    }
-    if (m_recording) {
-        m_series.clear();
-        m_series.record(*sim());
-    }
-    rebuildGhost();
-    updateWork();
-    restartTrail();
-    m_previousValid = false;
-    refreshTexts();
-    update();
-    emit timelineChanged();
-    return true;
 }
 
 void FrogCanvas::setSceneSummary(const QString& summary)
@@ -802,10 +400,7 @@ void FrogCanvas::refreshTexts()
         count = 0;
         return v;
     };
-    if (m_frames > 0 || !m_running)
-        m_frameShownMs = mean(m_frameNsSum, m_frames, 1e6);
-    if (m_steps > 0)
-        m_stepShownMs = mean(m_stepNsSum, m_steps, 1e6);
+    m_run->averageTimings();
     if (m_draws > 0)
         m_drawShownMs = mean(m_drawNsSum, m_draws, 1e6);
     if (m_fits > 0)
@@ -814,18 +409,17 @@ void FrogCanvas::refreshTexts()
 
     QStringList lines;
     const auto num = [](double v, int decimals) { return displayFixed(v, decimals); };
-    bool blownUpLine = false; // lines[0], wrapped to the canvas: it must be read whole
+    const bool blownUpLine = sim() && m_run->blownUp(); // lines[0], wrapped to the canvas: it must be read whole
     if (sim()) {
         const SceneSpec& scene = sim()->scene();
-        if (sim()->solver() == SolverKind::Seed && sim()->bodyCount() > 0) {
+        if (blownUpLine) {
             const double error = sim()->readouts().areaErrorPercent;
-            if ((blownUpLine = blownUp(error, m_startAreaError)))
-                lines << tr("The body has blown up (area error %1 %): press Reset (R), or switch to the Stable solver")
-                             .arg(!std::isfinite(error) ? QStringLiteral("∞")
-                                                        : (error > 0 ? QStringLiteral("+") : QString()) + displayFixed(error, 0));
+            lines << tr("The body has blown up (area error %1 %): press Reset (R), or switch to the Stable solver")
+                         .arg(!std::isfinite(error) ? QStringLiteral("∞")
+                                                    : (error > 0 ? QStringLiteral("+") : QString()) + displayFixed(error, 0));
         }
-        if (m_ghost) {
-            const Simulation& g = m_ghost->simulation();
+        if (const Simulation* ghost = m_run->ghost()) {
+            const Simulation& g = *ghost;
             const bool seed = g.solver() == SolverKind::Seed;
             if (g.bodyCount() > 0)
                 lines << (seed ? tr("Dashed ghost: the seed solver fed the same mouse, area error %1 %")
@@ -855,23 +449,21 @@ void FrogCanvas::refreshTexts()
                                    : tr("Protractor: %n of %1 joints held at a limit (red)", "", held).arg(limited));
         }
         if (m_overlays.trail)
-            lines << (m_trailPoint.joint ? tr("Trail of joint %1 of chain %2 (Shift+click a point to follow another)")
+            lines << (trailPoint().joint ? tr("Trail of joint %1 of chain %2 (Shift+click a point to follow another)")
                                          : tr("Trail of vertex %1 of body %2 (Shift+click a point to follow another)"))
-                         .arg(m_trailPoint.index)
-                         .arg(m_trailPoint.owner + 1);
+                         .arg(trailPoint().index)
+                         .arg(trailPoint().owner + 1);
         if (m_run->playingBack())
             lines << tr("Replaying the recorded run, step %1 of %2: a press on a body takes over from there")
                          .arg(sim()->stepCount())
                          .arg(m_run->recordedSteps());
-        if (const int slower = workFramesPerStep(); slower > 1)
+        if (const int slower = m_run->workFramesPerStep(); slower > 1)
             lines << tr("Running %n× slower than real time: a step of this scene is more work than a frame holds", "", slower);
-        if (m_pacer.speed() < 1)
-            lines << tr("Slow motion, %1× real time: one step every %n frames, the step itself unchanged", "",
-                        m_pacer.framesPerStep())
-                         .arg(speedLabel(m_pacer.speed()));
-        else if (m_pacer.speed() > 1)
-            lines << tr("Fast, %1× real time: %n steps a frame", "", m_pacer.stepsPerFrame())
-                         .arg(speedLabel(m_pacer.effectiveSpeed()));
+        if (speed() < 1)
+            lines << tr("Slow motion, %1× real time: one step every %n frames, the step itself unchanged", "", framesPerStep())
+                         .arg(speedLabel(speed()));
+        else if (speed() > 1)
+            lines << tr("Fast, %1× real time: %n steps a frame", "", stepsPerFrame()).arg(speedLabel(effectiveSpeed()));
         if (scene.has(SceneComponent::OutlineBezier)) {
             if (m_bezier == BezierOutline::Fit)
                 lines << tr("Least-squares Bézier fit, degree %1 through %2 points: %3 µs per frame")
@@ -912,12 +504,13 @@ void FrogCanvas::refreshTexts()
         if (m_overlays.velocities && sim()->bodyCount() == 0)
             lines << tr("Velocities: this scene has no soft body");
         if (m_overlays.frameTime) {
-            if (m_running)
+            const double frameMs = m_run->frameMs(), stepMs = m_run->stepMs();
+            if (running())
                 lines << tr("Frame %1 ms (%2 frames per second) · step %3 ms · drawing %4 ms")
-                             .arg(num(m_frameShownMs, 1), num(m_frameShownMs > 0 ? 1000 / m_frameShownMs : 0.0, 0),
-                                  num(m_stepShownMs, 3), num(m_drawShownMs, 2));
+                             .arg(num(frameMs, 1), num(frameMs > 0 ? 1000 / frameMs : 0.0, 0), num(stepMs, 3),
+                                  num(m_drawShownMs, 2));
             else
-                lines << tr("Paused · step %1 ms · drawing %2 ms").arg(num(m_stepShownMs, 3), num(m_drawShownMs, 2));
+                lines << tr("Paused · step %1 ms · drawing %2 ms").arg(num(stepMs, 3), num(m_drawShownMs, 2));
             lines << tr("Step %1").arg(sim()->stepCount());
         }
     }
@@ -936,10 +529,6 @@ void FrogCanvas::refreshTexts()
             t.setTextWidth(room);
             t.prepare(QTransform(), font);
         }
-    }
-    if (blownUpLine != m_blownUp) {
-        m_blownUp = blownUpLine;
-        emit blownUpChanged(m_blownUp);
     }
 }
 
@@ -1064,7 +653,7 @@ void FrogCanvas::renderScene(QPainter& p, const QRectF& target, bool textPanel)
     p.scale(s, s);
     const double pixel = 1 / s; // one widget pixel in scene pixels
     drawScene(p, pixel);
-    if (m_ghost)
+    if (m_run->ghost())
         drawGhost(p);
     if (m_overlays.trail)
         drawTrail(p);
@@ -1100,7 +689,7 @@ void FrogCanvas::drawGhost(QPainter& p)
 {
     // The other solver's bodies and chains, pale and dashed over this one's: where they part
     // is what the two solvers do differently with the same input.
-    const Simulation& g = m_ghost->simulation();
+    const Simulation& g = *m_run->ghost();
     const double k = m_style.scale;
     QPen pen(kGhostColour, 2.5 * k, Qt::DashLine, Qt::RoundCap, Qt::RoundJoin);
     pen.setCosmetic(true);
@@ -1171,7 +760,7 @@ void FrogCanvas::drawScene(QPainter& p, double pixel)
 
 void FrogCanvas::setMarkedBody(int body)
 {
-    m_series.setBodiesAsked(body >= 0); // a scene of many bodies keeps them only while asked
+    m_run->setSeriesBodiesAsked(body >= 0); // a scene of many bodies keeps them only while asked
     if (body == m_markedBody)
         return;
     m_markedBody = body;
@@ -1385,10 +974,11 @@ void FrogCanvas::drawOverlays(QPainter& p, double pixel)
     for (int i = 0; i < sim()->bodyCount(); ++i) {
         sim()->bodyVertices(i, m_vertices);
         drawPoints(m_vertices, true);
-        if (o.velocities && m_previousValid && std::size_t(i) + 1 < m_previousOffset.size() &&
-            m_previousOffset[std::size_t(i) + 1] - m_previousOffset[std::size_t(i)] == m_vertices.size()) {
+        const std::vector<std::size_t>& offset = m_run->previousOffset();
+        if (o.velocities && m_run->previousValid() && std::size_t(i) + 1 < offset.size() &&
+            offset[std::size_t(i) + 1] - offset[std::size_t(i)] == m_vertices.size()) {
             p.setPen(m_velocityPen);
-            const Point* prev = m_previous.data() + m_previousOffset[std::size_t(i)];
+            const Point* prev = m_run->previous().data() + offset[std::size_t(i)];
             for (std::size_t v = 0; v < m_vertices.size(); ++v) {
                 const Point tip = m_vertices[v] + kVelocityScale * (m_vertices[v] - prev[v]);
                 if (isFinite(tip) && isFinite(m_vertices[v]))
@@ -1496,18 +1086,15 @@ void FrogCanvas::mousePressEvent(QMouseEvent* event)
     }
     // Annex II, mousePressed: grab when the cursor is inside the body. Going back in a run
     // (docs/rewind.md), a press that grabs nothing leaves the recorded future alone.
-    if (m_run->playingBack() && !wouldGrab(m_mouse)) {
+    if (m_run->playingBack() && !m_run->wouldGrab(m_mouse)) {
         emit statusMessage(
             tr("Playing the recorded run back: press inside a body to take over from step %1.").arg(sim()->stepCount()));
         return;
     }
-    const bool branch = m_run->playingBack();
-    send(InputKind::Move, m_mouse);
+    m_run->send(InputKind::Move, m_mouse);
     reportMouseRadius();
     m_pressed = true;
-    const bool held = send(InputKind::Press, m_mouse);
-    if (branch)
-        emit timelineChanged();
+    const bool held = m_run->send(InputKind::Press, m_mouse);
     if (held && sim()->grabbing())
         setCursor(Qt::ClosedHandCursor);
     else if (!held && sim()->scene().has(SceneComponent::Grab))
@@ -1526,7 +1113,7 @@ void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
         update();
     }
     if (m_pressed || !m_run->playingBack()) // hovering over a run played back changes nothing
-        send(InputKind::Move, m_mouse);
+        m_run->send(InputKind::Move, m_mouse);
     reportMouseRadius();
     if (!m_pressed && sim()->scene().has(SceneComponent::Grab)) {
         if (insideABody(m_mouse))
@@ -1534,7 +1121,7 @@ void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
         else
             unsetCursor();
     }
-    if (!m_running)
+    if (!running())
         update(); // the eyes follow the mouse even when paused
 }
 
@@ -1562,7 +1149,7 @@ void FrogCanvas::mouseReleaseEvent(QMouseEvent* event)
     if (!sim() || event->button() != Qt::LeftButton || !m_pressed)
         return;
     m_keyboardHeld = false;
-    send(InputKind::Release); // Annex II, mouseReleased
+    m_run->send(InputKind::Release); // Annex II, mouseReleased
     m_pressed = false;
     unsetCursor();
     update();
@@ -1651,19 +1238,16 @@ bool FrogCanvas::keyboardGrab()
     // Outside every body, the cursor first jumps to the centre of the nearest one.
     if (const int body = insideABody(m_mouse) ? -1 : nearestBody(m_mouse); body >= 0)
         m_mouse = bodyCentre(body);
-    if (m_run->playingBack() && !wouldGrab(m_mouse)) {
+    if (m_run->playingBack() && !m_run->wouldGrab(m_mouse)) {
         emit statusMessage(tr("Playing the recorded run back: move the cursor inside a body to take over from step %1.")
                                .arg(sim()->stepCount()));
         update();
         return false;
     }
-    const bool branch = m_run->playingBack();
-    send(InputKind::Move, m_mouse);
+    m_run->send(InputKind::Move, m_mouse);
     reportMouseRadius();
-    m_pressed = send(InputKind::Press, m_mouse);
+    m_pressed = m_run->send(InputKind::Press, m_mouse);
     m_keyboardHeld = m_pressed;
-    if (branch)
-        emit timelineChanged();
     if (!m_pressed && sim()->scene().has(SceneComponent::Grab))
         emit statusMessage(tr("Nothing to grab here: move the cursor inside the body with the arrows."));
     update();
@@ -1674,7 +1258,7 @@ void FrogCanvas::keyboardRelease()
 {
     if (!sim() || !m_keyboardHeld)
         return;
-    send(InputKind::Release);
+    m_run->send(InputKind::Release);
     m_pressed = false;
     m_keyboardHeld = false;
     update();
@@ -1690,7 +1274,7 @@ void FrogCanvas::moveKeyboardCursor(double dx, double dy)
     if (m_rulerPlacing && m_ruler)
         m_ruler->second = m_mouse;
     if (m_pressed || !m_run->playingBack())
-        send(InputKind::Move, m_mouse);
+        m_run->send(InputKind::Move, m_mouse);
     reportMouseRadius();
     update();
 }
@@ -1755,12 +1339,8 @@ void FrogCanvas::keyPressEvent(QKeyEvent* event)
         m_mouse = toScene(mapFromGlobal(QCursor::pos()));
         m_mouseKnown = true;
     }
-    const bool branch = m_run->playingBack();
-    send(InputKind::Spawn, m_mouse);
-    updateWork();
+    m_run->send(InputKind::Spawn, m_mouse); // a new body: more work a step
     m_spawnHeld = true;
-    if (branch)
-        emit timelineChanged();
     update();
 }
 
@@ -1774,8 +1354,8 @@ void FrogCanvas::keyReleaseEvent(QKeyEvent* event)
     if (event->isAutoRepeat() || !m_spawnHeld)
         return;
     m_spawnHeld = false;
-    if (m_run)
-        send(InputKind::ReleaseSpawn); // Annex II, keyReleased(' ')
+    if (sim())
+        m_run->send(InputKind::ReleaseSpawn); // Annex II, keyReleased(' ')
     update();
 }
 
@@ -1791,7 +1371,7 @@ void FrogCanvas::enterEvent(QEnterEvent* event)
 void FrogCanvas::showEvent(QShowEvent* event)
 {
     QWidget::showEvent(event);
-    updateTimer();
+    m_run->setShown(isVisible());
 }
 
 void FrogCanvas::resizeEvent(QResizeEvent* event)
@@ -1804,7 +1384,7 @@ void FrogCanvas::resizeEvent(QResizeEvent* event)
 void FrogCanvas::hideEvent(QHideEvent* event)
 {
     QWidget::hideEvent(event); // a hidden tab costs nothing
-    updateTimer();
+    m_run->setShown(isVisible());
 }
 
 void FrogCanvas::focusInEvent(QFocusEvent* event)
@@ -1822,8 +1402,8 @@ void FrogCanvas::focusOutEvent(QFocusEvent* event)
     keyboardRelease();
     update();
     // The key release would go elsewhere: let go of a frog held by the space bar now.
-    if (m_spawnHeld && m_run)
-        send(InputKind::ReleaseSpawn);
+    if (m_spawnHeld && sim())
+        m_run->send(InputKind::ReleaseSpawn);
     m_spawnHeld = false;
     QWidget::focusOutEvent(event);
 }

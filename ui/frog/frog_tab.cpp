@@ -85,19 +85,20 @@ std::vector<Point> flipped(const std::vector<Point>& points, double height)
 } // namespace
 
 const long FrogTab::kLoadSeekWork = 600 * FrogCanvas::kFrameWork;
-const std::size_t FrogTab::kKeptRunBytes = FrogCanvas::kSnapshotBytes;
+const std::size_t FrogTab::kKeptRunBytes = FrogRun::kSnapshotBytes;
 
 struct FrogTab::KeptRun {
-    std::unique_ptr<FrogCanvas::KeptRun> canvas;
+    std::unique_ptr<FrogRun::KeptRun> canvas;
     SceneSpec scene;
     SolverKind solver = SolverKind::Seed;
     long mark = -1;
 };
 
 FrogTab::FrogTab(QWidget* parent)
-    : TabPage(QStringLiteral("frog"), QT_TR_NOOP("Frog"), parent), m_canvas(new FrogCanvas(this)),
+    : TabPage(QStringLiteral("frog"), QT_TR_NOOP("Frog"), parent), m_run(new FrogRun), m_canvas(new FrogCanvas(m_run, this)),
       m_params(new FrogParametersPanel(this))
 {
+    m_run->setParent(this); // after the canvas: the run outlives its view
     setExportView(m_canvas);
     auto* side = new QWidget(this);
     auto* column = new QVBoxLayout(side);
@@ -375,8 +376,9 @@ FrogTab::FrogTab(QWidget* parent)
             m_fitCost->setText(tr("Cost of the fit: %1 µs per frame.").arg(displayFixed(us, 1)));
     });
     connect(m_canvas, &FrogCanvas::statusMessage, this, &TabPage::statusMessage);
-    connect(m_canvas, &FrogCanvas::timelineChanged, this, &FrogTab::updateTimeline);
-    connect(m_canvas, &FrogCanvas::blownUpChanged, this, &FrogTab::showExplosion);
+    connect(m_run, &FrogRun::statusMessage, this, &TabPage::statusMessage);
+    connect(m_run, &FrogRun::timelineChanged, this, &FrogTab::updateTimeline);
+    connect(m_run, &FrogRun::blownUpChanged, this, &FrogTab::showExplosion);
     const auto knob = [this](StableKnob k, double value) {
         const std::string_view name = stableKnobName(k);
         const QString key = QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
@@ -1019,7 +1021,7 @@ void FrogTab::setPlotsShown(bool on)
         m_showPlots->setChecked(on);
     }
     m_canvas->setRecordingSeries(on);
-    m_plots->setSeries(&m_canvas->series(), &m_scene);
+    m_plots->setRun(m_run, &m_scene);
     m_plots->setVisible(on); // at the height it asks for (FrogPlotPanel::sizeHint), the canvas the rest
     m_canvas->setMarkedBody(on ? m_plots->body() : -1);
 }

@@ -31,6 +31,7 @@ namespace granota::ui {
 class FrogCanvas;
 class FrogParametersPanel;
 class FrogPlotPanel;
+class FrogRun;
 
 class FrogTab : public TabPage {
     Q_OBJECT
@@ -99,6 +100,7 @@ public:
     FrogPlotPanel* plotPanel() const { return m_plots; }
 
     FrogCanvas* canvas() const { return m_canvas; }
+    FrogRun* frogRun() const { return m_run; }
     FrogParametersPanel* parametersPanel() const { return m_params; }
 
 protected:
@@ -164,6 +166,7 @@ private:
     QString sceneDescription(const QString& name) const;
     QString sceneHint() const;
 
+    FrogRun* m_run; // the run the canvas shows and the plots read
     FrogCanvas* m_canvas;
     FrogParametersPanel* m_params;
     FrogPlotPanel* m_plots = nullptr;
