@@ -11,14 +11,11 @@
 #include "core/softbody/link_angles.h"
 #include "ui/common/canvas_style.h"
 #include "ui/common/drawable.h"
-#include "ui/frog/frog_art.h"
+#include "ui/frog/frog_overlay_painter.h"
 #include "ui/frog/frog_run.h"
+#include "ui/frog/frog_scene_painter.h"
 
 #include <QElapsedTimer>
-#include <QLineF>
-#include <QPainterPath>
-#include <QPixmap>
-#include <QStaticText>
 #include <QWidget>
 
 #include <deque>
@@ -26,46 +23,15 @@
 #include <optional>
 #include <vector>
 
-namespace granota {
-class OutlineFitter;
-}
-
 namespace granota::ui {
 
 class FrogCanvas : public QWidget, public Drawable {
     Q_OBJECT
 public:
-    /// What is drawn over the scene (the tab's Overlays checkboxes).
-    struct Overlays {
-        bool vertices = false;   ///< body vertices and joints, numbered
-        bool springs = false;    ///< the polygon's edges (the springs of §4.4)
-        bool area = false;       ///< area against the target area (§4.5), text and bar
-        bool velocities = false; ///< each vertex's displacement over the last step (Verlet's x − x_prev)
-        bool readouts = false;   ///< the Readouts of the solver: area error, stretch, forces, energies
-        bool frameTime = false;  ///< frame, step and drawing time
-        /// Both solvers at once: the other solver's run of the same scene, fed the same mouse,
-        /// drawn as a ghost over this one (docs/solvers.md#both-at-once).
-        bool ghost = false;
-        /// The path of one vertex or joint over the last kTrailSteps steps (Shift+click
-        /// chooses which).
-        bool trail = false;
-        /// §5.2.2: the broad phase's candidate pairs (their boxes, a line between them) and
-        /// the number of contacts (stable solver).
-        bool pairs = false;
-        /// §4.15: each link's angle against the range its limits allow (link_angles.h).
-        bool protractor = false;
-        bool operator==(const Overlays& o) const
-        {
-            return vertices == o.vertices && springs == o.springs && area == o.area && velocities == o.velocities &&
-                   readouts == o.readouts && frameTime == o.frameTime && ghost == o.ghost && trail == o.trail &&
-                   pairs == o.pairs && protractor == o.protractor;
-        }
-    };
-    /// §4.9/4.10: how a Bézier scene draws its body.
-    enum class BezierOutline {
-        Precomputed, ///< the thesis's choice: the body's vertices are the precomputed Bézier points
-        Fit,         ///< the option it abandoned: a least-squares Bézier curve fitted every frame
-    };
+    /// What is drawn over the scene (the tab's Overlays checkboxes) and how a Bézier scene
+    /// draws its body (the painters', frog_overlay_painter.h and frog_scene_painter.h).
+    using Overlays = FrogOverlayPainter::Overlays;
+    using BezierOutline = FrogScenePainter::BezierOutline;
 
     /// The run's constants and types (frog_run.h), named here as the tests and the tab do.
     static constexpr int kFramesPerSecond = FrogRun::kFramesPerSecond;
@@ -97,7 +63,7 @@ public:
     /// The trail's segments the last paint drew: those in the frame, cut to it, the newest
     /// first up to 20 times the frame's width plus height of line (a blown-up body's trail
     /// sweeps the frame every step; frog_canvas.cpp, kTrailInkBudget).
-    int trailSegmentsDrawn() const { return m_trailSegmentsDrawn; }
+    int trailSegmentsDrawn() const { return m_overlayPainter.trailSegmentsDrawn(); }
     bool chooseTrailPoint(Point at) { return m_run->chooseTrailPoint(at); }
     /// The ruler: a measure in scene px between two points the user set, dragged with the
     /// right button (or Ctrl and the left), or placed from the keyboard with L at the cursor,
@@ -117,7 +83,7 @@ public:
     /// Where the head of `body` is drawn (core/softbody/head_pose.h): on the seed solver as
     /// Annex II draws it, upright, its 138 × 93 box at vertex 0 − (69, 46); on the stable
     /// solver Granota's head, turned with the body.
-    HeadPose headPose(int body);
+    HeadPose headPose(int body) { return m_scenePainter.headPose(*sim(), body); }
     const Simulation* ghost() const { return m_run->ghost(); }
     const RecordedRun* run() const { return m_run->recorded(); }
     long recordedSteps() const { return m_run->recordedSteps(); }
@@ -167,9 +133,9 @@ public:
     void setOverlays(const Overlays& overlays);
     const Overlays& overlays() const { return m_overlays; }
     void setBezierOutline(BezierOutline mode);
-    BezierOutline bezierOutline() const { return m_bezier; }
+    BezierOutline bezierOutline() const { return m_scenePainter.bezierOutline(); }
     /// Average cost of the per-frame least-squares fit and its sampling, µs (0 before any).
-    double fitMicroseconds() const { return m_fitShownUs; }
+    double fitMicroseconds() const { return m_scenePainter.fitMicroseconds(); }
 
     void setPresentation(bool on);
     /// What the canvas shows, for screen readers (the tab gives the scene and the solver): its
@@ -179,14 +145,14 @@ public:
     /// The outline drawn for body `body`, in scene pixels: the polygon, the seed's
     /// curveVertex outline, the closed Catmull-Rom curve or the fitted Bézier curve, as the
     /// scene's components say. Valid until the next call.
-    const std::vector<Point>& bodyOutline(int body);
+    const std::vector<Point>& bodyOutline(int body) { return m_scenePainter.bodyOutline(*sim(), body); }
     /// The art the canvas paints with (its colours and the feet), for the TikZ picture.
-    const FrogArt& art() const { return m_art; }
+    const FrogArt& art() const { return m_scenePainter.art(); }
     /// The head of body `index` as the canvas paints it (FrogArt::paintHead at its pose), in
     /// scene coordinates: for the TikZ export, which records it as paths (path_recorder.h).
     void paintHeadOf(QPainter& p, int index);
     /// The half width of a leg's outline (Annex II, Pota.dibuixar: the factor 7).
-    static constexpr double kLegHalfWidth = 7;
+    static constexpr double kLegHalfWidth = FrogScenePainter::kLegHalfWidth;
 
     /// The letterbox transform of the widget: scene pixels ↔ widget pixels.
     QPointF toWidget(const Point& scenePoint) const;
@@ -236,23 +202,12 @@ private:
     /// run, which takes the mouse's position as Processing's mouseX does.
     void runShown(bool fresh);
     void letGo(); ///< the run went to another step: the canvas's grab ends
-    void drawTrail(QPainter& p);
-    void drawMarkedBody(QPainter& p, double pixel);
-    void drawPairs(QPainter& p);
-    void drawProtractor(QPainter& p, double pixel);
-    void drawRuler(QPainter& p, double pixel);
-    std::vector<std::pair<int, int>> m_pairs; // drawPairs' buffer
-    std::vector<LinkAngleReading> m_angles;   // drawProtractor's buffer
-    // The ruler (scene px): its two ends, while dragged (right button or Ctrl+left) or
-    // placed from the keyboard (L, then the arrows, then L).
-    std::optional<std::pair<Point, Point>> m_ruler;
-    bool m_rulerDragging = false;
-    bool m_rulerPlacing = false;
-    void drawGhost(QPainter& p);
     void refreshTexts();
+    QStringList composeTexts(bool blownUpLine); ///< the text panel's lines (frog_canvas_texts.cpp)
     void updateAccessibleDescription();
     void reportMouseRadius();
     QRectF sceneRectIn(const QRectF& target) const;
+    void renderScene(QPainter& p, const QRectF& target, bool textPanel);
     /// The keyboard's grab: the cursor (the simulation's mouse) moved by the arrows, drawn
     /// while the canvas has the focus; G or Enter grabs at it, again or Esc lets go.
     void moveKeyboardCursor(double dx, double dy);
@@ -267,34 +222,19 @@ private:
     void placeKeyboardCursor();
     bool insideABody(Point at); ///< inside the polygon of some body (reuses m_vertices)
     void drawKeyboardCursor(QPainter& p) const;
-
-    void drawScene(QPainter& p, double pixel);
-    void drawBody(QPainter& p, int body, double pixel);
-    void drawHead(QPainter& p, int body);
-    HeadPose headPose(const std::vector<Point>& vertices) const;
-    void drawLeg(QPainter& p, int chain, double pixel);
-    void drawPendulum(QPainter& p, double pixel);
-    void drawObstacles(QPainter& p);
-    void drawOverlays(QPainter& p, double pixel);
-    void drawTextPanel(QPainter& p, const QRectF& sceneRect);
-    void renderScene(QPainter& p, const QRectF& target, bool textPanel);
-    void fillPath(const std::vector<Point>& points, bool close);
+    void buildPens(); ///< the painters' pens and fonts at the presentation scale
 
     FrogRun* m_run;
+    FrogScenePainter m_scenePainter;
+    FrogOverlayPainter m_overlayPainter;
     int m_markedBody = -1;
-    struct ProtractorLabel {
-        QPointF at;
-        QString text;
-        bool atLimit = false;
-    };
-    std::vector<ProtractorLabel> m_protractorLabels; // drawProtractor's, kept for their capacity
-    std::vector<QRectF> m_protractorBoxes;
-    int m_trailSegmentsDrawn = 0;
-    std::vector<QLineF> m_trailLines; ///< reused by drawTrail: a frame allocates nothing
-    FrogArt m_art;
+    // The ruler (scene px): its two ends, while dragged (right button or Ctrl+left) or
+    // placed from the keyboard (L, then the arrows, then L).
+    std::optional<std::pair<Point, Point>> m_ruler;
+    bool m_rulerDragging = false;
+    bool m_rulerPlacing = false;
     CanvasStyle m_style;
     Overlays m_overlays;
-    BezierOutline m_bezier = BezierOutline::Precomputed;
 
     // Interaction (Annex II: mousePressed, mouseReleased, keyPressed, keyReleased).
     Point m_mouse{0, 0};
@@ -305,27 +245,17 @@ private:
     QString m_sceneSummary;       // setSceneSummary
     double m_reportedRadius = -1; // last mouseRadiusChanged, −1 before any
 
-    // Buffers reused every frame.
-    std::vector<Point> m_vertices, m_outline, m_joints, m_fitControl, m_fitCurve, m_work;
-    QPainterPath m_path;
-    std::unique_ptr<OutlineFitter> m_fitter;
+    // Buffers reused by the text panel and the keyboard's grab.
+    std::vector<Point> m_vertices, m_joints;
+    std::vector<std::pair<int, int>> m_pairs;
+    std::vector<LinkAngleReading> m_angles;
 
-    // Background art, cached for the screen at the size last drawn.
-    QPixmap m_background;
-    QSize m_backgroundSize;
-
-    // Timing, averaged and shown a few times a second.
+    // Drawing time, averaged and shown a few times a second.
     QElapsedTimer m_clock, m_textClock;
-    double m_drawNsSum = 0, m_fitNsSum = 0;
-    int m_draws = 0, m_fits = 0;
-    double m_drawShownMs = 0, m_fitShownUs = 0;
-    std::vector<QStaticText> m_lines;
-    std::vector<QString> m_numbers;
-    // Pens, brushes and fonts of the overlays, made once per presentation scale.
-    QPen m_framePen, m_edgePen, m_velocityPen, m_ringPen, m_numberPen, m_markPen;
-    QBrush m_panelBrush, m_trackBrush, m_goodBrush, m_offBrush, m_jointDotBrush;
-    QFont m_font, m_numberFont;
-    void buildPens(); ///< "0", "1", … for the vertex overlay, made once
+    double m_drawNsSum = 0;
+    int m_draws = 0;
+    double m_drawShownMs = 0;
+    QPen m_framePen;
 };
 
 } // namespace granota::ui

@@ -206,10 +206,7 @@ QString FrogRun::speedLabel(double speed)
     return QLocale().toString(speed, 'g', 3);
 }
 
-int FrogRun::workFramesPerStep() const
-{
-    return static_cast<int>(std::max<long>(1, (m_stepWork + kFrameWork - 1) / kFrameWork));
-}
+int FrogRun::workFramesPerStep() const { return static_cast<int>(std::max<long>(1, (m_stepWork + kFrameWork - 1) / kFrameWork)); }
 
 bool FrogRun::setSpeed(double speed)
 {
