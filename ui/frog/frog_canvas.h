@@ -62,7 +62,7 @@ public:
     const std::deque<Point>& trail() const { return m_run->trail(); }
     /// The trail's segments the last paint drew: those in the frame, cut to it, the newest
     /// first up to 20 times the frame's width plus height of line (a blown-up body's trail
-    /// sweeps the frame every step; frog_canvas.cpp, kTrailInkBudget).
+    /// sweeps the frame every step; frog_overlay_painter.cpp, kTrailInkBudget).
     int trailSegmentsDrawn() const { return m_overlayPainter.trailSegmentsDrawn(); }
     bool chooseTrailPoint(Point at) { return m_run->chooseTrailPoint(at); }
     /// The ruler: a measure in scene px between two points the user set, dragged with the

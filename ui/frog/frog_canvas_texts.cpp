@@ -19,8 +19,8 @@ QStringList FrogCanvas::composeTexts(bool blownUpLine)
         if (blownUpLine) {
             const double error = sim()->readouts().areaErrorPercent;
             lines << tr("The body has blown up (area error %1 %): press Reset (R), or switch to the Stable solver")
-                             .arg(!std::isfinite(error) ? QStringLiteral("∞")
-                                                        : (error > 0 ? QStringLiteral("+") : QString()) + displayFixed(error, 0));
+                         .arg(!std::isfinite(error) ? QStringLiteral("∞")
+                                                    : (error > 0 ? QStringLiteral("+") : QString()) + displayFixed(error, 0));
         }
         if (const Simulation* ghost = m_run->ghost()) {
             const Simulation& g = *ghost;

@@ -69,8 +69,8 @@ public:
         const FrogArt& art;
         int markedBody = -1; ///< the body the plots show alone, −1 none
         const std::optional<std::pair<Point, Point>>& ruler;
-        QString rulerText;  ///< what the ruler says (FrogCanvas::rulerText)
-        QSizeF bounds;      ///< the widget: the ruler's label stays inside it
+        QString rulerText; ///< what the ruler says (FrogCanvas::rulerText)
+        QSizeF bounds;     ///< the widget: the ruler's label stays inside it
         bool textPanel = true;
     };
     /// The text panel: from the frame's corner, and inside it, px (× presentation scale).
