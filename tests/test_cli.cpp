@@ -268,6 +268,34 @@ private slots:
         QCOMPARE(strings(samples[11].toArray()), QStringList({"7", "5"}));
     }
 
+    // --exact names every knot's continuity (catmull_rom_analysis.h). The closed curve through
+    // Ex 2.13's five points has five knots, q_1 … q_4 and the closing q_0. τ = 1/2: C¹ and G¹
+    // at least (Prop 2.3). τ = 0: Def 2.8 gives p′(0) = p′(1) = 0, so the first derivatives agree
+    // (C¹) but there is no tangent direction (G⁰ only); p″(1) = −6(p_2 − p_1) of one segment
+    // against p″(0) = 6(p_2 − p_1) of the next differ unless the points repeat, so not C².
+    void catmullRomKnots()
+    {
+        const Run half = cli({"catmull-rom", "--points", kEx213, "--tau", "1/2", "--mode", "closed", "--exact", "--json"});
+        QCOMPARE(half.exitCode, 0);
+        const QJsonArray knots = half.json()["knots"].toArray();
+        QCOMPARE(knots.size(), 5);
+        for (int i = 0; i < knots.size(); ++i) {
+            const QJsonObject k = knots[i].toObject();
+            QCOMPARE(k["knot"].toInt(), (i + 1) % 5);
+            QVERIFY(k["C"].toInt() >= 1);
+            QVERIFY(k["G"].toInt() >= 1);
+        }
+        const Run zero = cli({"catmull-rom", "--points", kEx213, "--tau", "0", "--exact"});
+        QCOMPARE(zero.exitCode, 0);
+        const QString text = QString::fromUtf8(zero.out);
+        for (const char* knot : {"q_1", "q_2", "q_3"})
+            QVERIFY2(text.contains(QStringLiteral("  %1: C^1, G^0\n").arg(QLatin1String(knot))), qPrintable(text));
+        QVERIFY(!text.contains(QStringLiteral("q_4:"))); // open: the joins of four segments are q_1 … q_3
+        // Without --exact there is no analysis to print.
+        const Run doubles = cli({"catmull-rom", "--points", kEx213, "--tau", "0", "--json"});
+        QVERIFY(!doubles.json().contains("knots"));
+    }
+
     // "bezier": one entry per segment, b_0 and b_3 the segment's ends (q_i, q_{i+1}), and for
     // the uniform curve b_1 = p_1 + τ(p_2 − p_0)/3, b_2 = p_2 − τ(p_3 − p_1)/3. Ex 2.13, τ = 1/2:
     // p_2 from (q_0, q_1, q_2, q_3): b_1 = (2,2) + ((6,0) − (3,5))/6 = (5/2, 7/6),

@@ -1,5 +1,6 @@
 // Extrema, tight bounding box, inflections and cusps of Bézier curves
 // (core/curves/bezier/curve_features.h), against values known in closed form.
+#include "core/base/aabb.h"
 #include "core/curves/bezier/bernstein.h"
 #include "core/curves/bezier/curve_features.h"
 
@@ -7,6 +8,7 @@
 #include "tests/test_main.h"
 
 #include <cmath>
+#include <limits>
 
 using namespace granota;
 
@@ -33,6 +35,23 @@ Aabb sampledBox(const std::vector<Point>& P, int m)
 class TestCurveFeatures : public QObject {
     Q_OBJECT
 private slots:
+    // The frame of a curve tab's canvas (aabb.h's finiteBox): the finite points of both lists,
+    // NaN and infinities skipped; none finite, no box. A single point has zero width and height.
+    void finiteBoxSkipsWhatIsNotFinite()
+    {
+        const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+        QVERIFY(!finiteBox({}));
+        QVERIFY(!finiteBox({Point(nan, 0), Point(inf, 1)}));
+        const auto one = finiteBox({Point(2, -3)});
+        QVERIFY(one && one->width() == 0 && one->height() == 0 && one->minX == 2 && one->minY == -3);
+        const auto both = finiteBox({Point(1, 5), Point(nan, nan)}, {Point(-2, 7), Point(4, inf)});
+        QVERIFY(both);
+        QCOMPARE(both->minX, -2.0);
+        QCOMPARE(both->maxX, 1.0);
+        QCOMPARE(both->minY, 5.0);
+        QCOMPARE(both->maxY, 7.0);
+    }
+
     void inflectionsOfTheIssueCubic()
     {
         // (0,0),(1,0.25),(0,1),(1,0): x′y″ − y′x″ = 18(1−t)² − 22.5 t(1−t) + 4.5 t²

@@ -7,7 +7,9 @@
 #include "core/curves/splines/catmull_rom.h"
 #include "core/curves/splines/segment_joins.h"
 #include "core/exact/polynomial_text.h"
+#include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
+#include "ui/catmull_rom/catmull_rom_report.h"
 #include "ui/catmull_rom/catmull_rom_tab.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/curve_canvas.h"
@@ -919,6 +921,30 @@ private slots:
             QStringLiteral("catmull-rom,1/2,open,1,0,%1")
                 .arg(QString::fromStdString(granota::formatDouble(*tab.scene().curves[1].curvature.samples[0][0].kappa)))));
     }
+
+    // The side panel's Bézier points of the spline's graph are those of the spline with the
+    // ends chosen, not always the natural one (it solved a natural spline of its own there).
+    // Points (0,0), (1,1), (2,0): symmetric about x = 1, so s′(1) = 0. Clamped with s′(0) = 0,
+    // the first piece is the Hermite cubic 3x² − 2x³ and its graph's b1 = b0 + (1, s′(0))/3 =
+    // (1/3, 0); natural (s″(0) = 0) it is 3x/2 − x³/2, b1 = (1/3, 1/2). By hand, not by the code.
+    void splineBezierPointsFollowTheChosenEnds()
+    {
+        const std::vector<Point> points{{0, 0}, {1, 1}, {2, 0}};
+        CatmullRomSettings s;
+        s.spline = true;
+        s.splineEnds = SplineEnds::Clamped;
+        const auto panel = [&] {
+            return CatmullRomReport::html(points, s, computeScene(points, s), computeAnalysis(smallRationalPoints(points), s));
+        };
+        const QString clamped = panel();
+        QVERIFY2(clamped.contains(QStringLiteral("(1/3, 0)")), qPrintable(clamped));
+        QVERIFY(!clamped.contains(QStringLiteral("(1/3, 1/2)")));
+        s.splineEnds = SplineEnds::Natural;
+        const QString natural = panel();
+        QVERIFY(natural.contains(QStringLiteral("(1/3, 1/2)")));
+        QVERIFY(!natural.contains(QStringLiteral("(1/3, 0)")));
+    }
+
 
     // Alt+letter: no two controls of the tab share one, in either language.
     // Matlab Rep_CatmullRom with puntvis = false: the points q_i (handles, labels, polygon) leave the

@@ -1182,6 +1182,7 @@ private slots:
         QVERIFY(fit);
         granota::ui::FitExactView::Input in;
         in.points = &q;
+        in.exact = tab.pointEditor()->allExactPoints(); // Ex 2.7's fractions, as the tab passes them
         in.degree = tab.fittedDegree();
         in.fit = fit;
         const QString note = granota::ui::FitExactView::tr(

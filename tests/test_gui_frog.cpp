@@ -1219,6 +1219,40 @@ private slots:
         QCOMPARE(tab().undoStack()->count(), 1);
     }
 
+    // Issue 35: a tick of the panel is one call into the core (FrogTab::editParameterNumber →
+    // withParameter(scene, key, part, index, value)); the scene is never written to JSON on the
+    // way, which the scene writer's counter shows over many ticks of three kinds of field.
+    void aParameterTickWritesNoScene()
+    {
+        QVERIFY(tab().setScene("frog", nullptr));
+        tab().findChild<QPushButton*>("frogPause")->click();
+        QDoubleSpinBox* gy = tab().parametersPanel()->spinBox("gravity", 1);
+        QDoubleSpinBox* backLower = tab().parametersPanel()->spinBox("legs", 3);
+        QDoubleSpinBox* sides = tab().parametersPanel()->spinBox("sides");
+        QVERIFY(gy && backLower && sides);
+        const double gravity = tab().scene().params.gravity.y, lower = tab().scene().params.legs[2].lower;
+        const int sideCount = tab().scene().params.sides;
+        const long writes = sceneWriteCount();
+        const int ticks = 10;
+        for (int i = 0; i < ticks; ++i) {
+            gy->stepBy(1);
+            backLower->stepBy(-1);
+            sides->stepBy(1);
+        }
+        QCOMPARE(sceneWriteCount(), writes);
+        // Each tick moved its number by the table's step (scene_parameters.cpp: 0.05, 5, 1).
+        QCOMPARE(tab().scene().params.gravity.y, gravity + ticks * 0.05);
+        QCOMPARE(tab().scene().params.legs[2].lower, lower - ticks * 5);
+        QCOMPARE(tab().scene().params.sides, sideCount + ticks);
+        // The ticks of one field merge into one step; undone, each number is as it was.
+        QUndoStack* undo = tab().undoStack();
+        while (undo->canUndo())
+            undo->undo();
+        QCOMPARE(tab().scene().params.gravity.y, gravity);
+        QCOMPARE(tab().scene().params.legs[2].lower, lower);
+        QCOMPARE(tab().scene().params.sides, sideCount);
+    }
+
     void radiusFollowsTheFrameUntilSet()
     {
         // Annex II's r = |height/6|: the panel shows the derived value, a new height moves it,

@@ -2,6 +2,7 @@
 #include "core/exact/polynomial.h"
 #include "core/exact/polynomial_text.h"
 #include "core/exact/rational.h"
+#include "core/exact/exact_point.h"
 #include "core/exact/number_column.h"
 #include "core/exact/rational_approximation.h"
 #include "core/exact/round_step.h"
@@ -239,6 +240,45 @@ private slots:
         QCOMPARE(columnEntry(0.05688, ColumnNotation::Decimals), std::string("0.05688"));
         QCOMPARE(columnEntry(-0.0, ColumnNotation::Decimals), std::string("0"));
         QCOMPARE(columnEntry(1.0 / 3, ColumnNotation::Decimals), std::string("0.3333333333333333"));
+    }
+
+    // Exact values beside their doubles (exact_point.h): written from the rational, never from
+    // the double's binary digits. Expected texts by long division by hand (and Python's decimal).
+    void exactValuesAreWrittenExactly()
+    {
+        QCOMPARE(terminatingDecimal(frac(11, 100), 17), std::optional<std::string>("0.11"));
+        QCOMPARE(terminatingDecimal(frac(-259, 125), 17), std::optional<std::string>("-2.072"));
+        QCOMPARE(terminatingDecimal(frac(7, 1), 17), std::optional<std::string>("7"));
+        QCOMPARE(terminatingDecimal(Rational(0), 17), std::optional<std::string>("0"));
+        QCOMPARE(terminatingDecimal(frac(1, 1024), 17), std::optional<std::string>("0.0009765625"));
+        QVERIFY(!terminatingDecimal(frac(1, 3), 17));
+        QVERIFY(!terminatingDecimal(exactRational(0.1), 17)); // 55 significant digits
+        QCOMPARE(roundedDecimal(frac(1, 3), 16), std::string("0.3333333333333333"));
+        QCOMPARE(roundedDecimal(frac(-2, 3), 16), std::string("-0.6666666666666667"));
+        QCOMPARE(roundedDecimal(frac(54, 6125), 16), std::string("0.008816326530612245")); // the double: …244
+        QCOMPARE(roundedDecimal(frac(99999999, 10), 3), std::string("10000000"));          // rounds up a digit
+        QCOMPARE(roundedDecimal(frac(125, 10), 16), std::string("12.5"));
+        // 0.1 nudged five times by 0.01 in doubles is 0.15000000000000002; kept exact it is 3/20.
+        const double sum = 0.1 + 0.01 + 0.01 + 0.01 + 0.01 + 0.01;
+        QVERIFY(sum != 0.15);
+        QCOMPARE(readableExact(frac(3, 20), 0.15), std::string("0.15"));
+        QCOMPARE(readableExact(std::nullopt, 0.1 + 0.2), std::string("0.3"));
+        QCOMPARE(readableExact(frac(1, 3), 1.0 / 3), std::string("0.333333333333333"));
+        QCOMPARE(readableExact(std::nullopt, 0.1 + 0.2), std::string("0.3"));
+        using C = std::vector<ExactCoordinate>;
+        QCOMPARE(columnNotation(C{frac(1, 3), Rational(2)}), ColumnNotation::Fractions);
+        QCOMPARE(columnNotation(C{frac(1, 3), std::nullopt}), ColumnNotation::Decimals);
+        QCOMPARE(columnNotation(C{frac(1, 3), frac(1, 1225)}), ColumnNotation::Decimals);
+        QCOMPARE(columnEntry(frac(6206, 6125), 6206.0 / 6125, ColumnNotation::Decimals), std::string("1.013224489795918"));
+        QCOMPARE(columnEntry(std::nullopt, 1.0000000000000007, ColumnNotation::Decimals), std::string("1.0000000000000007"));
+        QCOMPARE(columnEntry(frac(1, 3), 1.0 / 3, ColumnNotation::Fractions), std::string("1/3"));
+        // A point given as doubles keeps the small fractions they were written as, else none.
+        const ExactPoint written = writtenExact(Point(1.0 / 3, 2.7182818284590451));
+        QCOMPARE(written.x, ExactCoordinate(frac(1, 3)));
+        QVERIFY(!written.y);
+        QVERIFY(!allExact({written}, 1));
+        QVERIFY(allExact({ExactPoint{frac(1, 3), Rational(2)}}, 1));
+        QVERIFY(!allExact({}, 1));
     }
 };
 

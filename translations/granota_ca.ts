@@ -4866,6 +4866,14 @@ Ja no és al disc.</translation>
             <source>Keys: ] and [ select a point, the arrows nudge it (Shift: ten times more), Delete removes it; Tab leaves the canvas.</source>
             <translation>Tecles: ] i [ seleccionen un punt, les fletxes el mouen una mica (Maj: deu vegades més), Supr l&apos;elimina; Tab surt del llenç.</translation>
         </message>
+        <message>
+            <source>“exactPoints” is not a list of [x, y] pairs, one for each point.</source>
+            <translation>“exactPoints” no és una llista de parells [x, y], un per a cada punt.</translation>
+        </message>
+        <message>
+            <source>“exactPoints” entry %1 is not a pair of exact values of point %1 (fractions such as “1/3”, or null).</source>
+            <translation>L&apos;entrada %1 de “exactPoints” no és un parell de valors exactes del punt %1 (fraccions com ara “1/3”, o null).</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::TikzOptionsDialog</name>

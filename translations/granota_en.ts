@@ -4866,6 +4866,14 @@ It is no longer on disk.</translation>
             <source>Keys: ] and [ select a point, the arrows nudge it (Shift: ten times more), Delete removes it; Tab leaves the canvas.</source>
             <translation>Keys: ] and [ select a point, the arrows nudge it (Shift: ten times more), Delete removes it; Tab leaves the canvas.</translation>
         </message>
+        <message>
+            <source>“exactPoints” is not a list of [x, y] pairs, one for each point.</source>
+            <translation>“exactPoints” is not a list of [x, y] pairs, one for each point.</translation>
+        </message>
+        <message>
+            <source>“exactPoints” entry %1 is not a pair of exact values of point %1 (fractions such as “1/3”, or null).</source>
+            <translation>“exactPoints” entry %1 is not a pair of exact values of point %1 (fractions such as “1/3”, or null).</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::TikzOptionsDialog</name>

@@ -6,6 +6,7 @@
 #include "core/base/input_limits.h"
 #include "core/curves/splines/bezier_segments.h"
 #include "core/curves/splines/catmull_rom.h"
+#include "core/curves/splines/catmull_rom_analysis.h"
 #include "core/exact/exact_cost.h"
 #include "core/exact/polynomial_text.h"
 
@@ -94,8 +95,17 @@ Expected<CommandOutput> run(const Arguments& args)
         txt << ", α = " << toString(*alpha);
     txt << "; segments in powers of s ∈ [0,1]:\n";
     Json segments = Json::array(), sampleJson = Json::array(), bezier = Json::array();
+    Json knots = Json::array();
     if (exact) {
-        auto segs = catmullRomSegments(*points, *tau, mode);
+        // The segments and their knots as the Catmull-Rom tab's side panel shows them (§2.3, Prop 2.3).
+        CatmullRomQuestion question;
+        question.taus = {*tau};
+        question.selectedTau = 0;
+        question.ends = mode == CatmullRomMode::Cyclic   ? CatmullRomEnds::Cyclic
+                        : mode == CatmullRomMode::Closed ? CatmullRomEnds::Closed
+                                                         : CatmullRomEnds::Open;
+        const CatmullRomAnalysis analysis = analyseCatmullRom(*points, question);
+        const auto& segs = analysis.ends.front().curves.front().segments;
         if (!segs)
             return segs.error();
         for (std::size_t i = 0; i < segs->size(); ++i) {
@@ -110,6 +120,16 @@ Expected<CommandOutput> run(const Arguments& args)
             }
         }
         bezier = bezierJson(*segs);
+        if (!analysis.selectedKnots.empty())
+            txt << "knots (C^k: derivatives equal up to order k; G^k: tangent direction, curvature):\n";
+        for (const auto& k : analysis.selectedKnots) {
+            const std::size_t at = (static_cast<std::size_t>(k.fromSegment) + 1) % points->size();
+            const std::string name = "q_" + std::to_string(at);
+            txt << "  " << name << ": C^" << k.parametricOrder() << ", G^" << k.geometricOrder() << "\n";
+            Json knot = Json::object();
+            knot.set("knot", Json(static_cast<int>(at))).set("C", Json(k.parametricOrder())).set("G", Json(k.geometricOrder()));
+            knots.push(std::move(knot));
+        }
     } else {
         // Exact coordinates beyond the doubles are named here; an overflow while computing
         // is the core's OutOfRange (it checks every coefficient, like fitting does).
@@ -138,6 +158,8 @@ Expected<CommandOutput> run(const Arguments& args)
     }
     txt << "(" << *samples << " samples per segment with --json)\n";
     out.json.set("segments", std::move(segments)).set("samples", std::move(sampleJson)).set("bezier", std::move(bezier));
+    if (exact)
+        out.json.set("knots", std::move(knots));
     out.text = txt.str();
     return out;
 }

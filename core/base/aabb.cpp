@@ -18,4 +18,16 @@ Aabb boundingBox(const Point* x, int n)
     return b;
 }
 
+std::optional<Aabb> finiteBox(const std::vector<Point>& a, const std::vector<Point>& b)
+{
+    Aabb box;
+    for (const auto* list : {&a, &b})
+        for (const Point& p : *list)
+            if (isFinite(p))
+                box.include(p);
+    if (box.empty())
+        return std::nullopt;
+    return box;
+}
+
 } // namespace granota

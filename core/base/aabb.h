@@ -2,12 +2,15 @@
 /// \file aabb.h
 /// An axis-aligned box, the one form of a bounding box in the core: the tight box of a Bézier
 /// curve (curve_features.h), the soft bodies' boxes of the broad phase and the contacts
-/// (xpbd_broad_phase.h), the boxes of points. A default box is empty (min > max); a box of one
+/// (xpbd_broad_phase.h), the boxes of points, and the frame of a curve tab's canvas (finiteBox:
+/// each tab adds its own margin). A default box is empty (min > max); a box of one
 /// point has zero width and height.
 
 #include "core/base/vec2.h"
 
 #include <algorithm>
+#include <optional>
+#include <vector>
 
 namespace granota {
 
@@ -56,5 +59,8 @@ struct Aabb {
 
 /// The box of n points (empty for none).
 Aabb boundingBox(const Point* x, int n);
+/// The box of the finite points of `a` and `b` together (NaN and infinite points skipped);
+/// nullopt when none is finite. It may have zero width or height (points on a line, one point).
+std::optional<Aabb> finiteBox(const std::vector<Point>& a, const std::vector<Point>& b = {});
 
 } // namespace granota

@@ -5,20 +5,6 @@
 
 namespace granota {
 
-namespace {
-
-/// Whether q is an integer over 2^a 5^b: it has a finite decimal expansion.
-bool terminates(const Rational& q)
-{
-    mpz_class d = q.get_den();
-    for (unsigned long p : {2UL, 5UL})
-        while (mpz_divisible_ui_p(d.get_mpz_t(), p))
-            d /= p;
-    return d == 1;
-}
-
-} // namespace
-
 ColumnNotation columnNotation(const std::vector<double>& values)
 {
     bool repeating = false;
@@ -39,6 +25,29 @@ std::string columnEntry(double v, ColumnNotation notation)
         if (const auto q = smallRational(v, kColumnFractionDenominator))
             return toString(*q);
     return formatDouble(v);
+}
+
+ColumnNotation columnNotation(const std::vector<ExactCoordinate>& exact)
+{
+    bool repeating = false;
+    for (const ExactCoordinate& q : exact) {
+        if (!q || q->get_den() > kColumnFractionDenominator)
+            return ColumnNotation::Decimals;
+        repeating = repeating || !terminates(*q);
+    }
+    return repeating ? ColumnNotation::Fractions : ColumnNotation::Decimals;
+}
+
+std::string columnEntry(const ExactCoordinate& exact, double v, ColumnNotation notation)
+{
+    if (!exact)
+        return columnEntry(v, ColumnNotation::Decimals);
+    if (notation == ColumnNotation::Fractions)
+        return toString(*exact);
+    if (auto text = terminatingDecimal(*exact, kExactDecimalDigits))
+        return *text;
+    constexpr int kRepeatingDigits = 16; // a double holds 15 to 17; the 17th tells only its rounding
+    return roundedDecimal(*exact, kRepeatingDigits);
 }
 
 } // namespace granota

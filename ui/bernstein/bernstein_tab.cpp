@@ -5,7 +5,6 @@
 #include "core/curves/bezier/de_casteljau.h"
 #include "core/exact/polynomial_text.h"
 #include "core/exact/rational.h"
-#include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
 #include "ui/common/canvas_style.h"
 #include "ui/decasteljau/decasteljau_parameter_control.h"
@@ -529,7 +528,7 @@ void BernsteinTab::updateExactPanel()
     const auto& points = m_deCasteljau->pointEditor()->points();
     const int n = static_cast<int>(points.size()) - 1;
     html += ExactPanel::heading(tr("The De Casteljau tab's curve in the Bernstein basis (Def 2.6)"));
-    const auto exact = smallRationalPoints(points);
+    const auto exact = m_deCasteljau->pointEditor()->allExactPoints();
     if (!exact) {
         html += ExactPanel::note(tr("The control points are not small fractions, so the curve is not expanded exactly."));
     } else if (n > kMaxExactCurve) {

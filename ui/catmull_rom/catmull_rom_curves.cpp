@@ -9,23 +9,6 @@
 
 namespace granota::ui {
 
-namespace {
-
-/// Segment mode: the open curve without its two end segments (those are the ones Def 2.10
-/// has to invent neighbours for); with 4 points, the single segment of Def 2.8.
-template <class S>
-Expected<std::vector<Vec2<Polynomial<S>>>> interiorOnly(Expected<std::vector<Vec2<Polynomial<S>>>> open, std::size_t count)
-{
-    if (!open)
-        return open;
-    if (count < 4)
-        return makeError(ErrorCode::TooFewPoints, "A single segment needs 4 points.");
-    std::vector<Vec2<Polynomial<S>>> inner(open->begin() + 1, open->end() - 1);
-    return inner;
-}
-
-} // namespace
-
 std::vector<std::vector<Point>> controlPolygons(const std::vector<BezierSegment<double>>& segments)
 {
     std::vector<std::vector<Point>> out;
@@ -33,31 +16,6 @@ std::vector<std::vector<Point>> controlPolygons(const std::vector<BezierSegment<
     for (const auto& b : segments)
         out.push_back({b[0], b[1], b[2], b[3]});
     return out;
-}
-
-CatmullRomEnds comparedEnds(CatmullRomEnds ends)
-{
-    return ends == CatmullRomEnds::Open ? CatmullRomEnds::Cyclic : CatmullRomEnds::Open;
-}
-
-int firstSegmentStart(CatmullRomEnds ends) { return ends == CatmullRomEnds::Segment ? 1 : 0; }
-
-Expected<std::vector<Vec2<Polynomial<Rational>>>> exactCurveSegments(const std::vector<RPoint>& q, const Rational& tau,
-                                                                     CatmullRomEnds ends)
-{
-    auto segs = catmullRomSegments(q, tau, coreMode(ends));
-    if (ends == CatmullRomEnds::Segment)
-        return interiorOnly(std::move(segs), q.size());
-    return segs;
-}
-
-Expected<std::vector<Vec2<Polynomial<double>>>> curveSegments(const std::vector<Point>& q, double tau, CatmullRomEnds ends,
-                                                              double alpha)
-{
-    auto segs = catmullRomSegments(q, tau, coreMode(ends), alpha);
-    if (ends == CatmullRomEnds::Segment)
-        return interiorOnly(std::move(segs), q.size());
-    return segs;
 }
 
 QString translatedError(const Error& error, CatmullRomEnds ends)
@@ -143,6 +101,7 @@ CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomS
                     scene.spline.push_back({x, spline->evaluatePiece(i, x)});
                 }
             }
+            scene.splinePieces = *spline;
             auto graph = functionSplineSegments(*spline);
             scene.splineSegments = std::move(graph.segments);
             scene.splineIntervals = std::move(graph.intervals);
@@ -153,6 +112,19 @@ CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomS
         }
     }
     return scene;
+}
+
+CatmullRomAnalysis computeAnalysis(const std::optional<std::vector<RPoint>>& exactPoints, const CatmullRomSettings& settings)
+{
+    CatmullRomQuestion q;
+    q.taus = settings.taus;
+    q.selectedTau = settings.selectedTau;
+    q.ends = settings.ends;
+    q.compareEnds = settings.compareEnds;
+    q.uniform = settings.spacing == CatmullRomSpacing::Uniform;
+    q.spline = settings.spline;
+    q.splineEnds = SplineEndConditions<Rational>{settings.splineEnds, settings.startSlope, settings.endSlope};
+    return analyseCatmullRom(exactPoints, q);
 }
 
 } // namespace granota::ui

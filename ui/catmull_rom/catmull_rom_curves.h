@@ -14,12 +14,15 @@
 #include "core/exact/rational.h"
 #include "core/base/vec2.h"
 #include "core/curves/splines/bezier_segments.h"
+#include "core/curves/splines/catmull_rom_analysis.h"
 #include "core/curves/splines/curvature_profile.h"
+#include "core/curves/splines/piecewise_polynomial.h"
 #include "ui/catmull_rom/catmull_rom_settings.h"
 
 #include <QCoreApplication>
 #include <QString>
 
+#include <optional>
 #include <vector>
 
 namespace granota::ui {
@@ -50,7 +53,8 @@ struct CatmullRomScene {
     std::vector<CatmullRomCurve> otherEnds; ///< compareEnds: one per τ in the other end mode
     std::vector<Point> bezier;              ///< the Bézier curve of the points (when shown)
     CurvatureProfile bezierCurvature;       ///< its κ(s): one segment of degree n (when plotted)
-    std::vector<Point> spline;              ///< the cubic spline with its chosen ends (when shown and defined)
+    std::vector<Point> spline;              ///< the cubic spline with its chosen ends (when shown and defined), sampled
+    std::optional<PiecewisePolynomial<double>> splinePieces; ///< and its pieces, solved once (the side panel formats them)
     /// The spline's graph (x, s(x)) as parametric pieces (function_spline_segments.h), with
     /// their lengths h_i = x_{i+1} − x_i, as cubic Bézier segments and as κ(s) (when plotted).
     std::vector<Vec2<Polynomial<double>>> splineSegments;
@@ -63,23 +67,15 @@ struct CatmullRomScene {
 /// The control polygons of cubic Bézier segments, as curvatureProfile() takes them.
 std::vector<std::vector<Point>> controlPolygons(const std::vector<BezierSegment<double>>& segments);
 
-/// The mode Ex 2.13 compares with: cyclic for an open curve, open otherwise.
-CatmullRomEnds comparedEnds(CatmullRomEnds ends);
-
-/// The segments of the curve through `q` (Def 2.10; Segment: the open curve's interior
-/// segments, Def 2.8). Exact with Rational (uniform spacing only).
-Expected<std::vector<Vec2<Polynomial<Rational>>>> exactCurveSegments(const std::vector<RPoint>& q, const Rational& tau,
-                                                                     CatmullRomEnds ends);
-Expected<std::vector<Vec2<Polynomial<double>>>> curveSegments(const std::vector<Point>& q, double tau, CatmullRomEnds ends,
-                                                              double alpha);
-
-/// The index of the first point of segment 0 (1 for Segment mode: the first segment starts at q1).
-int firstSegmentStart(CatmullRomEnds ends);
-
 /// A core error in the user's language.
 QString translatedError(const Error& error, CatmullRomEnds ends);
 
 CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomSettings& settings);
+
+/// The exact side of the same settings (catmull_rom_analysis.h) for the points exactly as the
+/// point editor keeps them (PointEditor::allExactPoints), empty when some coordinate has no
+/// exact form. Computed once per change, for the side panel.
+CatmullRomAnalysis computeAnalysis(const std::optional<std::vector<RPoint>>& exactPoints, const CatmullRomSettings& settings);
 
 class CatmullRomCurves {
     Q_DECLARE_TR_FUNCTIONS(CatmullRomCurves)

@@ -1,9 +1,10 @@
 #include "ui/catmull_rom/catmull_rom_drawing.h"
 
+#include "core/base/aabb.h"
+
 #include "ui/catmull_rom/catmull_rom_report.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_style.h"
-#include "ui/common/point_extent.h"
 #include "ui/common/view_transform.h"
 
 #include <QCoreApplication>
@@ -56,7 +57,7 @@ void drawBezierSegments(QPainter& p, const ViewTransform& view, const std::vecto
 /// The rectangle holding the points, never empty (one point or coincident points get a unit box).
 QRectF pointBounds(const std::vector<Point>& points)
 {
-    const std::optional<PointExtent> box = finiteExtent(points);
+    const std::optional<Aabb> box = finiteBox(points);
     if (!box)
         return {-1, -1, 2, 2};
     const double x0 = box->minX, y0 = box->minY;

@@ -8,13 +8,16 @@
 
 namespace granota::ui {
 
-QString catmullRomCsv(const std::vector<Point>& points, const CatmullRomSettings& settings, const CatmullRomScene& scene)
+QString catmullRomCsv(const std::vector<Point>& points, const std::vector<ExactPoint>& exact, const CatmullRomSettings& settings,
+                      const CatmullRomScene& scene)
 {
     QString out = QStringLiteral("point,x,y\n");
+    const bool haveExact = exact.size() == points.size();
     for (std::size_t i = 0; i < points.size(); ++i)
         out += QStringLiteral("q%1,%2,%3\n")
                    .arg(i)
-                   .arg(QString::fromStdString(formatReadable(points[i].x)), QString::fromStdString(formatReadable(points[i].y)));
+                   .arg(QString::fromStdString(haveExact ? readableExact(exact[i].x, points[i].x) : formatReadable(points[i].x)),
+                        QString::fromStdString(haveExact ? readableExact(exact[i].y, points[i].y) : formatReadable(points[i].y)));
     out += QStringLiteral("\ntau,segment,t,x,y\n");
     const int samples = CatmullRomScene::kSamplesPerSegment;
     for (const CatmullRomCurve& c : scene.curves) {

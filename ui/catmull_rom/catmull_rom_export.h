@@ -5,6 +5,7 @@
 /// plotted; and the TikZ picture of the canvas, each Catmull-Rom segment and spline piece as a
 /// cubic Bézier segment, with the canvas's key (catmull_rom_drawing.h).
 
+#include "core/exact/exact_point.h"
 #include "ui/catmull_rom/catmull_rom_curves.h"
 #include "ui/catmull_rom/catmull_rom_settings.h"
 
@@ -16,9 +17,11 @@ namespace granota::ui {
 
 class TikzWriter;
 
-/// The points q_i, then "tau,segment,t,x,y" for every curve, then (settings.curvaturePlot)
+/// The points q_i (their exact values' decimals, readableExact, with `exact` index by index),
+/// then "tau,segment,t,x,y" for every curve, then (settings.curvaturePlot)
 /// "curve,tau,ends,segment,s,kappa": numbers as formatReadable writes them.
-QString catmullRomCsv(const std::vector<Point>& points, const CatmullRomSettings& settings, const CatmullRomScene& scene);
+QString catmullRomCsv(const std::vector<Point>& points, const std::vector<ExactPoint>& exact, const CatmullRomSettings& settings,
+                      const CatmullRomScene& scene);
 
 /// The canvas in TikZ: the points' polygon (when `polygonVisible`, as the point editor draws
 /// it), the comparisons, the curves of every τ, the points and the key.

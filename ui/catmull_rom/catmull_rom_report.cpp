@@ -1,13 +1,11 @@
 #include "ui/catmull_rom/catmull_rom_report.h"
 
-#include "core/base/number_format.h"
 #include "core/curves/splines/bezier_segments.h"
 #include "core/curves/splines/continuity_check.h"
 #include "core/curves/splines/cubic_spline.h"
 #include "core/curves/splines/function_spline_segments.h"
 #include "core/curves/splines/knot_continuity.h"
 #include "core/exact/polynomial_text.h"
-#include "core/exact/rational_approximation.h"
 #include "core/curves/splines/segment_joins.h"
 #include "core/curves/splines/spline_offset_correction.h"
 #include "core/io/worked_examples.h"
@@ -275,8 +273,8 @@ template <class S, class Name> QString continuityTable(const std::vector<KnotCon
 
 /// §2.3 knot by knot for the selected τ (and the spline): its cubic Bézier segments and the
 /// continuity at every knot, exactly when the segment polynomials are exact.
-QString bezierSection(const std::vector<Point>& points, const std::optional<std::vector<RPoint>>& rational,
-                      const CatmullRomSettings& settings, const CatmullRomScene& scene, bool exact)
+QString bezierSection(const std::vector<Point>& points, const CatmullRomSettings& settings, const CatmullRomScene& scene,
+                      const CatmullRomAnalysis& analysis)
 {
     const int selected = settings.selectedTau;
     if (selected < 0 || selected >= static_cast<int>(settings.taus.size()))
@@ -301,12 +299,12 @@ QString bezierSection(const std::vector<Point>& points, const std::optional<std:
     };
     html += para(QStringLiteral("<b>τ = %1</b>, %2").arg(tauText(tau), CatmullRomReport::endsName(ends).toHtmlEscaped()));
     const int offset = firstSegmentStart(ends);
-    if (exact) {
-        const auto segs = exactCurveSegments(*rational, tau, ends);
+    if (analysis.exactCurves) {
+        const auto& segs = analysis.ends.front().curves[static_cast<std::size_t>(selected)].segments;
         if (!segs)
             return html + ExactPanel::note(translatedError(segs.error(), ends));
-        html += bezierTable(bezierSegments(*segs), QStringLiteral("p"), 1 + offset);
-        html += continuityTable(knotContinuity(*segs, {}, closed),
+        html += bezierTable(analysis.selectedBezier, QStringLiteral("p"), 1 + offset);
+        html += continuityTable(analysis.selectedKnots,
                                 [&](const KnotContinuity<Rational>& k) { return knotName(k.fromSegment, offset); });
     } else if (selected < static_cast<int>(scene.curves.size())) {
         const CatmullRomCurve& c = scene.curves[static_cast<std::size_t>(selected)];
@@ -322,14 +320,9 @@ QString bezierSection(const std::vector<Point>& points, const std::optional<std:
                                           "derivatives in x.")
                          .toHtmlEscaped());
         const auto splineKnot = [&](int fromSegment) { return ExactPanel::subscripted(QStringLiteral("q"), fromSegment + 1); };
-        std::optional<PiecewisePolynomial<Rational>> exactSpline;
-        if (rational)
-            if (auto s = naturalCubicSpline(*rational))
-                exactSpline = std::move(*s);
-        if (exactSpline) {
-            const auto graph = functionSplineSegments(*exactSpline);
-            html += bezierTable(bezierSegments(graph.segments), QStringLiteral("s"), 1);
-            html += continuityTable(knotContinuity(graph.segments, graph.intervals),
+        if (analysis.spline && *analysis.spline) {
+            html += bezierTable(analysis.splineBezier, QStringLiteral("s"), 1);
+            html += continuityTable(analysis.splineKnots,
                                     [&](const KnotContinuity<Rational>& k) { return splineKnot(k.fromSegment); });
         } else if (!scene.splineSegments.empty()) {
             html += bezierTable(scene.splineBezier, QStringLiteral("s"), 1);
@@ -381,10 +374,8 @@ QString processingSection(const CatmullRomSettings& settings)
                      .toHtmlEscaped());
     std::vector<QStringList> rows;
     for (const Rational& tau : settings.taus) {
-        const double s = tauToCurveTightness(toDouble(tau));
-        const auto exact = smallRational(s);
-        rows.push_back({QStringLiteral("τ = %1").arg(tauText(tau)),
-                        QStringLiteral("curveTightness(%1)").arg(exact ? tauText(*exact) : text(formatDouble(s)))});
+        const Rational s = Rational(1) - Rational(2) * tau; // tauToCurveTightness, exactly
+        rows.push_back({QStringLiteral("τ = %1").arg(tauText(tau)), QStringLiteral("curveTightness(%1)").arg(tauText(s))});
     }
     return html + ExactPanel::table({}, rows);
 }
@@ -445,16 +436,14 @@ QString example21Section(const std::vector<RPoint>& data, SplineEnds ends)
 }
 
 QString splineSection(const std::vector<Point>& points, const std::optional<std::vector<RPoint>>& rational,
-                      const CatmullRomSettings& settings, const CatmullRomScene& scene)
+                      const CatmullRomSettings& settings, const CatmullRomScene& scene, const CatmullRomAnalysis& analysis)
 {
     QString html = ExactPanel::heading(
         CatmullRomReport::tr("Cubic spline C² (Def 2.3), %1").arg(CatmullRomReport::splineEndsName(settings.splineEnds)));
     if (!scene.splineError.isEmpty())
         return html + ExactPanel::note(scene.splineError);
-    constexpr int kChecked = 3; // s, s′, s″ must match; s‴ shows that it is not more than C²
-    if (rational) {
-        const auto spline = cubicSpline(*rational, SplineEndConditions<Rational>{settings.splineEnds, settings.startSlope,
-                                                                                 settings.endSlope});
+    if (rational && analysis.spline) {
+        const auto& spline = *analysis.spline;
         if (!spline)
             return html + ExactPanel::note(translatedError(spline.error(), CatmullRomEnds::Open));
         std::vector<QStringList> rows;
@@ -466,21 +455,16 @@ QString splineSection(const std::vector<Point>& points, const std::optional<std:
                                      tauText(spline->knots[static_cast<std::size_t>(i) + 1])),
                             poly(spline->pieces[static_cast<std::size_t>(i)], "x")});
         html += ExactPanel::table({}, rows);
-        const auto report = checkContinuity(*spline, kChecked, *rational);
-        html += continuitySummary(report, 2) + knotTable(*spline, report);
+        html += continuitySummary(analysis.splineCheck, 2) + knotTable(*spline, analysis.splineCheck);
         html += example21Section(*rational, settings.splineEnds);
-    } else {
-        const auto spline = cubicSpline(points, SplineEndConditions<double>{settings.splineEnds, toDouble(settings.startSlope),
-                                                                            toDouble(settings.endSlope)});
-        if (!spline)
-            return html + ExactPanel::note(translatedError(spline.error(), CatmullRomEnds::Open));
+    } else if (const auto& spline = scene.splinePieces) {
         html += para(CatmullRomReport::tr("In decimals, each piece in powers of u = x − xᵢ:").toHtmlEscaped());
         std::vector<QStringList> rows;
         const int shown = std::min(spline->pieceCount(), CatmullRomReport::kMaxListedSegments);
         for (int i = 0; i < shown; ++i)
             rows.push_back({ExactPanel::subscripted(QStringLiteral("s"), i + 1), poly(spline->localPiece(i), "u")});
         html += ExactPanel::table({}, rows);
-        const auto report = checkContinuity(*spline, kChecked, points, kTolerance);
+        const auto report = checkContinuity(*spline, kSplineCheckedOrder, points, kTolerance);
         html += continuitySummary(report, 2) + knotTable(*spline, report);
     }
     return html;
@@ -510,15 +494,16 @@ QString CatmullRomReport::endsName(CatmullRomEnds ends)
     return {};
 }
 
-QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRomSettings& settings, const CatmullRomScene& scene)
+QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRomSettings& settings, const CatmullRomScene& scene,
+                               const CatmullRomAnalysis& analysis)
 {
-    const auto rational = smallRationalPoints(points);
+    const auto& rational = analysis.points;
     const bool uniform = settings.spacing == CatmullRomSpacing::Uniform;
-    const bool exact = rational.has_value() && uniform;
+    const bool exact = analysis.exactCurves;
     const int count = static_cast<int>(points.size());
     QString html;
     if (settings.spline)
-        html += splineSection(points, rational, settings, scene);
+        html += splineSection(points, rational, settings, scene, analysis);
 
     // Segments (Def 2.10), the current mode and, for Ex 2.13, the other one.
     std::vector<CatmullRomEnds> modes{settings.ends};
@@ -535,7 +520,7 @@ QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRo
             const Rational& tau = settings.taus[i];
             html += para(QStringLiteral("<b>τ = %1</b>").arg(tauText(tau)));
             if (exact) {
-                const auto segs = exactCurveSegments(*rational, tau, ends);
+                const auto& segs = analysis.ends[m].curves[i].segments;
                 html += segs ? segmentTable(*segs, ends) : ExactPanel::note(translatedError(segs.error(), ends));
             } else if (i < curves.size()) {
                 html += curves[i].error.isEmpty() ? segmentTable(curves[i].segments, ends) : ExactPanel::note(curves[i].error);
@@ -547,7 +532,7 @@ QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRo
     html += ExactPanel::heading(tr("Tangents at the knots (Prop 2.3)"));
     html += para(tr("Catmull-Rom curves are C¹: at every knot cᵢ′(1) = cᵢ₊₁′(0) = τ(qᵢ₊₁ − qᵢ₋₁).").toHtmlEscaped());
     // The lowest C order over the knots (2 when there are none: one polynomial, checked up to C²).
-    const auto lowestOrder = [](const auto& knots) {
+    const auto lowestOrder = [](const std::vector<KnotContinuity<double>>& knots) {
         int order = 2;
         for (const auto& k : knots)
             order = std::min(order, k.parametricOrder());
@@ -559,12 +544,12 @@ QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRo
         const bool table = static_cast<int>(i) == settings.selectedTau;
         const bool closed = settings.ends == CatmullRomEnds::Closed;
         if (exact) {
-            const auto segs = exactCurveSegments(*rational, tau, settings.ends);
+            const auto& segs = analysis.ends.front().curves[i].segments;
             if (!segs)
                 continue;
             html += tangentSection(*segs, tau, settings.ends, count, true, table);
             if (table)
-                selectedOrder = lowestOrder(knotContinuity(*segs, {}, closed));
+                selectedOrder = analysis.selectedOrder();
         } else if (i < scene.curves.size() && scene.curves[i].error.isEmpty()) {
             html += tangentSection(scene.curves[i].segments, tau, settings.ends, count, uniform, table);
             if (table) // in the knot parameter, as the knot table above: centripetal and chordal curves are C¹
@@ -574,7 +559,7 @@ QString CatmullRomReport::html(const std::vector<Point>& points, const CatmullRo
     }
 
     // §2.3 knot by knot: Bézier segments, C and G orders, the jumps.
-    html += bezierSection(points, rational, settings, scene, exact);
+    html += bezierSection(points, settings, scene, analysis);
 
     // §2.3: what each kind of curve guarantees.
     if (settings.bezier || settings.spline) {

@@ -63,17 +63,6 @@ double spacingAlpha(CatmullRomSpacing spacing)
     return 0.0;
 }
 
-CatmullRomMode coreMode(CatmullRomEnds ends)
-{
-    switch (ends) {
-    case CatmullRomEnds::Cyclic: return CatmullRomMode::Cyclic;
-    case CatmullRomEnds::Closed: return CatmullRomMode::Closed;
-    case CatmullRomEnds::Open:
-    case CatmullRomEnds::Segment: return CatmullRomMode::Open;
-    }
-    return CatmullRomMode::Open;
-}
-
 std::optional<Rational> parseTension(const QString& text, TensionProblem* problem)
 {
     QString t = text.trimmed();

@@ -4,7 +4,7 @@
 /// Def 2.10, the knot spacing and the comparisons of §2.3. A plain value, so that an undo
 /// step can hold the settings before and after, and the document can save them.
 
-#include "core/curves/splines/catmull_rom.h"
+#include "core/curves/splines/catmull_rom_ends.h"
 #include "core/curves/splines/cubic_spline.h"
 #include "core/exact/rational.h"
 
@@ -15,11 +15,6 @@
 #include <vector>
 
 namespace granota::ui {
-
-/// The end modes of the mode combo: Def 2.10's three (as the Matlab `Rep_CatmullRom`) and
-/// the single segment of Def 2.8 (only the segments that have both neighbours: with 4 points,
-/// the segment from q1 to q2 of Ex 2.11).
-enum class CatmullRomEnds { Open, Cyclic, Closed, Segment };
 
 /// Knot spacing h_i = |q_{i+1} − q_i|^α: the thesis's uniform spacing and two beyond it.
 enum class CatmullRomSpacing { Uniform, Centripetal, Chordal };
@@ -54,8 +49,6 @@ QString spacingKey(CatmullRomSpacing spacing);
 std::optional<CatmullRomSpacing> spacingFromKey(const QString& key);
 /// α of the spacing: 0, 1/2, 1.
 double spacingAlpha(CatmullRomSpacing spacing);
-/// The core's mode for the ends (Segment uses the open curve's interior segments).
-CatmullRomMode coreMode(CatmullRomEnds ends);
 
 /// Why a typed tension is refused.
 enum class TensionProblem { None, NotANumber, OutOfRange };

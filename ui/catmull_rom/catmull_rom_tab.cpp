@@ -634,7 +634,8 @@ void CatmullRomTab::pointsEdited()
 void CatmullRomTab::recompute()
 {
     m_scene = computeScene(m_editor->points(), m_settings);
-    m_exact->setContent(CatmullRomReport::html(m_editor->points(), m_settings, m_scene));
+    m_exact->setContent(
+        CatmullRomReport::html(m_editor->points(), m_settings, m_scene, computeAnalysis(m_editor->allExactPoints(), m_settings)));
     updatePlot();
     m_canvas->update();
     updateCanvasSummary();
@@ -752,7 +753,7 @@ bool CatmullRomTab::loadSettings(const QJsonObject& state, const std::vector<Poi
 
 // ---------------------------------------------------------------- exports and view
 
-QString CatmullRomTab::csv() const { return catmullRomCsv(m_editor->points(), m_settings, m_scene); }
+QString CatmullRomTab::csv() const { return catmullRomCsv(m_editor->points(), m_editor->exactPoints(), m_settings, m_scene); }
 
 void CatmullRomTab::drawTikz(TikzWriter& w) const
 {

@@ -5,6 +5,8 @@
 #include "ui/common/point_editor.h"
 #include "ui/common/presentation_scale.h"
 
+#include "core/exact/exact_point.h"
+
 #include <QJsonArray>
 #include <QJsonObject>
 #include <QJsonValue>
@@ -25,6 +27,18 @@ QJsonObject CurveTab::saveState() const
         points.append(QJsonArray{p.x, p.y});
     QJsonObject state;
     state.insert(QStringLiteral("points"), points);
+    // The exact forms beside the doubles, when a double alone does not carry them (a point
+    // molded to 108/1225, or one without an exact form): documents that need none stay as before.
+    const std::vector<ExactPoint>& exact = m_editor->exactPoints();
+    if (exact != writtenExact(m_editor->points())) {
+        const auto text = [](const ExactCoordinate& q) {
+            return q ? QJsonValue(QString::fromStdString(toString(*q))) : QJsonValue();
+        };
+        QJsonArray exactPoints;
+        for (const ExactPoint& q : exact)
+            exactPoints.append(QJsonArray{text(q.x), text(q.y)});
+        state.insert(QStringLiteral("exactPoints"), exactPoints);
+    }
     if (const std::optional<bool> labels = m_editor->labelChoice())
         state.insert(QStringLiteral("pointLabels"), *labels);
     writeSettings(state);
@@ -68,6 +82,36 @@ std::optional<std::vector<Point>> CurveTab::readPoints(const QJsonValue& value, 
     return points;
 }
 
+std::optional<std::vector<ExactPoint>> CurveTab::readExactPoints(const QJsonValue& value, const std::vector<Point>& points,
+                                                                 QString& error) const
+{
+    const QJsonArray array = value.toArray();
+    if (!value.isArray() || array.size() != static_cast<qsizetype>(points.size())) {
+        error = tr("“exactPoints” is not a list of [x, y] pairs, one for each point.");
+        return std::nullopt;
+    }
+    std::vector<ExactPoint> exact;
+    exact.reserve(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const QJsonArray xy = array.at(static_cast<qsizetype>(i)).toArray();
+        // Each entry is a fraction or decimal that the stored double rounds, or null (no exact form).
+        const auto read = [](const QJsonValue& v, double d, ExactCoordinate& q) {
+            if (v.isNull())
+                return true;
+            q = v.isString() ? parseRational(v.toString().toStdString()) : std::nullopt;
+            return q && toDouble(*q) == d;
+        };
+        ExactPoint p;
+        if (xy.size() != 2 || !read(xy.at(0), points[i].x, p.x) || !read(xy.at(1), points[i].y, p.y)) {
+            error =
+                tr("“exactPoints” entry %1 is not a pair of exact values of point %1 (fractions such as “1/3”, or null).").arg(i);
+            return std::nullopt;
+        }
+        exact.push_back(std::move(p));
+    }
+    return exact;
+}
+
 bool CurveTab::loadState(const QJsonObject& state, QString* error)
 {
     // Validate everything first: a bad document changes nothing (loadSettings checks the
@@ -77,6 +121,12 @@ bool CurveTab::loadState(const QJsonObject& state, QString* error)
     const QJsonValue labels = state.value(QStringLiteral("pointLabels"));
     if (points && !labels.isUndefined() && !labels.isBool())
         message = tr("“pointLabels” is not true or false.");
+    // Absent (older documents, and points whose doubles carry their exact forms): the editor takes
+    // the small fractions the doubles were written as (writtenExact).
+    const QJsonValue exactValue = state.value(QStringLiteral("exactPoints"));
+    std::optional<std::vector<ExactPoint>> exact;
+    if (points && message.isEmpty() && !exactValue.isUndefined())
+        exact = readExactPoints(exactValue, *points, message);
     // The choice of labels is made first, so that the points arrive under it (no note that
     // their labels are hidden when the document shows them); a refused document restores it.
     const std::optional<bool> labelsBefore = m_editor->labelChoice();
@@ -88,6 +138,10 @@ bool CurveTab::loadState(const QJsonObject& state, QString* error)
             *error = message;
         return false;
     }
+    // The tab made the points current with the exact forms their doubles carry; a document that
+    // holds others (exactPoints) restores them.
+    if (exact && m_editor->points() == *points && m_editor->exactPoints() != *exact)
+        m_editor->applyPoints(*points, *exact);
     fitView();
     return true;
 }

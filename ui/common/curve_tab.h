@@ -2,12 +2,14 @@
 /// \file curve_tab.h
 /// What the three curve tabs (De Casteljau, Fitting, Catmull-Rom) share: points edited on a
 /// CurveCanvas with a PointEditor and a PointTable, an ExactPanel beside them, and so the
-/// same document format for the points ("points": [[x, y], …], read with one set of checks),
+/// same document format for the points ("points": [[x, y], …], and "exactPoints" beside them when
+/// the doubles do not carry the exact forms; read with one set of checks),
 /// the same export view (the canvas), zoom, fit-to-view and presentation mode. Each tab adds
 /// its own settings, drawings and panels, and says in its own words what is wrong with a
 /// document's points (PointListMessages).
 
 #include "core/base/vec2.h"
+#include "core/exact/exact_point.h"
 #include "ui/shell/tab_page.h"
 
 #include <QRectF>
@@ -86,6 +88,10 @@ protected:
 
 private:
     std::optional<std::vector<Point>> readPoints(const QJsonValue& value, QString& error) const;
+    /// The points' exact forms ("exactPoints": [[x, y], …], each "p/q" or null), checked against
+    /// the points' doubles.
+    std::optional<std::vector<ExactPoint>> readExactPoints(const QJsonValue& value, const std::vector<Point>& points,
+                                                           QString& error) const;
 
     bool m_presentation = false;
 };

@@ -9,14 +9,42 @@ namespace {
 constexpr int kNudgeCommandId = 0x4e55; // "NU"
 } // namespace
 
-PointsCommand::PointsCommand(PointEditor* editor, std::vector<Point> before, std::vector<Point> after, const QString& text,
-                             int nudged)
+bool operator==(const EditedPoints& a, const EditedPoints& b) { return a.points == b.points && a.exact == b.exact; }
+
+const ExactPoint& EditedPoints::exactAt(std::size_t i) const
+{
+    static const ExactPoint none;
+    return exact.size() == points.size() ? exact[i] : none;
+}
+
+void EditedPoints::set(std::size_t i, Point p, const ExactPoint& q)
+{
+    if (exact.size() == points.size())
+        exact[i] = q;
+    points[i] = p;
+}
+
+void EditedPoints::insert(std::size_t i, Point p, const ExactPoint& q)
+{
+    if (exact.size() == points.size())
+        exact.insert(exact.begin() + static_cast<std::ptrdiff_t>(i), q);
+    points.insert(points.begin() + static_cast<std::ptrdiff_t>(i), p);
+}
+
+void EditedPoints::erase(std::size_t i)
+{
+    if (exact.size() == points.size())
+        exact.erase(exact.begin() + static_cast<std::ptrdiff_t>(i));
+    points.erase(points.begin() + static_cast<std::ptrdiff_t>(i));
+}
+
+PointsCommand::PointsCommand(PointEditor* editor, EditedPoints before, EditedPoints after, const QString& text, int nudged)
     : QUndoCommand(text), m_editor(editor), m_before(std::move(before)), m_after(std::move(after)), m_nudged(nudged)
 {
 }
 
-void PointsCommand::undo() { m_editor->applyPoints(m_before); }
-void PointsCommand::redo() { m_editor->applyPoints(m_after); }
+void PointsCommand::undo() { m_editor->applyPoints(m_before.points, m_before.exact); }
+void PointsCommand::redo() { m_editor->applyPoints(m_after.points, m_after.exact); }
 
 int PointsCommand::id() const { return m_nudged >= 0 ? kNudgeCommandId : -1; }
 

@@ -6,6 +6,7 @@
 /// where they started, they leave no step at all.
 
 #include "core/base/vec2.h"
+#include "core/exact/exact_point.h"
 
 #include <QUndoCommand>
 
@@ -15,6 +16,22 @@ namespace granota::ui {
 
 class PointEditor;
 
+/// The editor's points: the doubles, and index by index their exact forms (exact_point.h).
+struct EditedPoints {
+    std::vector<Point> points;
+    /// One per point, or empty: none has an exact form (a list beyond kExactFormsUpTo points).
+    std::vector<ExactPoint> exact;
+
+    /// Point i's exact form (none when the list keeps none).
+    const ExactPoint& exactAt(std::size_t i) const;
+    /// Edits that keep `exact` in step with `points`.
+    void set(std::size_t i, Point p, const ExactPoint& q);
+    void insert(std::size_t i, Point p, const ExactPoint& q);
+    void erase(std::size_t i);
+};
+bool operator==(const EditedPoints& a, const EditedPoints& b);
+inline bool operator!=(const EditedPoints& a, const EditedPoints& b) { return !(a == b); }
+
 class PointsCommand : public QUndoCommand {
 public:
     /// `nudged` ≥ 0: the step is an arrow-key nudge of that point, merged with the next nudge
@@ -23,7 +40,7 @@ public:
     /// point has this index, so its run merges only with itself.
     static constexpr int kCurveNudge = 1 << 20;
 
-    PointsCommand(PointEditor* editor, std::vector<Point> before, std::vector<Point> after, const QString& text, int nudged = -1);
+    PointsCommand(PointEditor* editor, EditedPoints before, EditedPoints after, const QString& text, int nudged = -1);
     void undo() override;
     void redo() override;
     int id() const override;
@@ -31,7 +48,7 @@ public:
 
 private:
     PointEditor* m_editor;
-    std::vector<Point> m_before, m_after;
+    EditedPoints m_before, m_after;
     int m_nudged;
 };
 

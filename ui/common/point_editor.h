@@ -9,15 +9,19 @@
 /// Keys: Delete removes the selected point, arrows nudge it to the next multiple of a round
 /// step (the grid step when snapping, else 1, 2 or 5 × 10^k worth at most kNudgePixels on
 /// screen; Shift ×10), exactly (round_step.h), ] and [ select the next and the previous point (Tab moves the
-/// focus on, as everywhere). Every edit goes
+/// focus on, as everywhere). Beside each double the editor keeps the coordinate's exact form
+/// (exact_point.h): typed in the table (1/3, 0.1), loaded, or where a nudge, a snap or a drag
+/// step put it; nullopt where a value has none. Every edit goes
 /// through the QUndoStack given to the constructor; successive nudges of one point are one step.
 ///
 /// Past kLabelledPointsUpTo points the handles are drawn small and unlabelled (the selected one
 /// keeps its size and label, the one under the mouse its label) unless the user chooses "Show point labels" (the canvas's menu).
 
 #include "core/base/vec2.h"
+#include "core/exact/exact_point.h"
 #include "core/exact/rational.h"
 #include "ui/common/canvas_style.h"
+#include "ui/common/point_commands.h"
 #include "ui/common/view_transform.h"
 
 #include <QColor>
@@ -28,6 +32,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <utility>
 #include <vector>
 
 class QUndoStack;
@@ -41,19 +46,32 @@ class PointEditor : public QObject {
 public:
     PointEditor(CurveCanvas* canvas, QUndoStack* undoStack, QObject* parent = nullptr);
 
-    const std::vector<Point>& points() const { return m_points; }
+    const std::vector<Point>& points() const { return m_edited.points; }
+    /// The exact form of each point, index by index (nullopt coordinates have none), or empty
+    /// when none has one (beyond kExactFormsUpTo points).
+    const std::vector<ExactPoint>& exactPoints() const { return m_edited.exact; }
+    /// Point i's exact form.
+    const ExactPoint& exactAt(std::size_t i) const { return m_edited.exactAt(i); }
+    /// Every point exactly, or nullopt when a coordinate has no exact form.
+    std::optional<std::vector<RPoint>> allExactPoints() const { return allExact(m_edited.exact, m_edited.points.size()); }
+    const EditedPoints& edited() const { return m_edited; }
     QUndoStack* undoStack() const { return m_undo; }
     CurveCanvas* canvas() const { return m_canvas; }
 
-    /// Undoable edits (each one step; `undoText` names it in Edit ▸ Undo).
+    /// Undoable edits (each one step; `undoText` names it in Edit ▸ Undo). Points given as
+    /// doubles alone keep the small fractions they were written as (writtenExact()).
     void setPoints(const std::vector<Point>& points, const QString& undoText);
-    void movePoint(int index, Point to);
-    void insertPoint(int index, Point p);
+    void setPoints(const std::vector<Point>& points, const std::vector<ExactPoint>& exact, const QString& undoText);
+    void movePoint(int index, Point to) { movePoint(index, to, writtenExact(to)); }
+    void movePoint(int index, Point to, const ExactPoint& exact);
+    void insertPoint(int index, Point p) { insertPoint(index, p, writtenExact(p)); }
+    void insertPoint(int index, Point p, const ExactPoint& exact);
     void removePoint(int index);
 
     /// Replaces the points without an undo step (used by the undo commands themselves, and by
     /// loading a document). A drag in progress is dropped: its point may be gone.
-    void applyPoints(const std::vector<Point>& points);
+    void applyPoints(const std::vector<Point>& points) { applyPoints(points, writtenExact(points)); }
+    void applyPoints(const std::vector<Point>& points, const std::vector<ExactPoint>& exact);
 
     int selected() const { return m_selected; }
     /// A point is being dragged: views may defer costly refreshes until it is dropped.
@@ -64,8 +82,10 @@ public:
     void setSnapEnabled(bool on) { m_snap = on; }
     double gridStep() const { return m_gridStep; }
     void setGridStep(double step) { m_gridStep = step > 0 ? step : m_gridStep; }
-    /// Rounds to the grid when snapping is on.
-    Point snapped(Point p) const;
+    /// Rounds to the grid when snapping is on, else to the round step of one pixel.
+    Point snapped(Point p) const { return snappedExactly(p).first; }
+    /// The same with the exact multiple it is (nullopt coordinates for a point not finite).
+    std::pair<Point, ExactPoint> snappedExactly(Point p) const;
 
     /// What one arrow key press moves a coordinate by: the grid step when snapping, else the
     /// largest round step (1, 2 or 5 × 10^k) of at most kNudgePixels at the current zoom;
@@ -148,8 +168,8 @@ private:
 
     CurveCanvas* m_canvas;
     QUndoStack* m_undo;
-    std::vector<Point> m_points;
-    std::vector<Point> m_dragStart; ///< the points when a drag began: one undo step per drag
+    EditedPoints m_edited;    ///< the points and their exact forms
+    EditedPoints m_dragStart; ///< the points when a drag began: one undo step per drag
     int m_selected = -1;
     int m_dragging = -1;
     int m_hovered = -1;

@@ -47,17 +47,22 @@ void PointTable::retranslate()
 
 ColumnNotation PointTable::notation(int column) const
 {
-    std::vector<double> values;
-    values.reserve(m_editor->points().size());
-    for (const Point& p : m_editor->points())
+    const std::size_t count = m_editor->points().size();
+    if (m_editor->exactPoints().size() != count)
+        return ColumnNotation::Decimals; // none has an exact form
+    std::vector<ExactCoordinate> values;
+    values.reserve(count);
+    for (const ExactPoint& p : m_editor->exactPoints())
         values.push_back(column == 0 ? p.x : p.y);
     return columnNotation(values);
 }
 
 QString PointTable::cellText(int row, int column) const
 {
-    const Point& p = m_editor->points()[static_cast<std::size_t>(row)];
-    return displayText(columnEntry(column == 0 ? p.x : p.y, m_notation[column]));
+    const auto i = static_cast<std::size_t>(row);
+    const Point& p = m_editor->points()[i];
+    const ExactPoint& q = m_editor->exactAt(i);
+    return displayText(column == 0 ? columnEntry(q.x, p.x, m_notation[0]) : columnEntry(q.y, p.y, m_notation[1]));
 }
 
 void PointTable::refresh()
@@ -117,9 +122,11 @@ void PointTable::cellEdited(int row, int column)
         refresh();
         return;
     }
-    Point p = m_editor->points()[row];
+    Point p = m_editor->points()[static_cast<std::size_t>(row)];
+    ExactPoint exact = m_editor->exactAt(static_cast<std::size_t>(row));
     (column == 0 ? p.x : p.y) = v;
-    m_editor->movePoint(row, p);
+    (column == 0 ? exact.x : exact.y) = *q;
+    m_editor->movePoint(row, p, exact);
 }
 
 void PointTable::changeEvent(QEvent* event)

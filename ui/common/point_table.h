@@ -3,9 +3,11 @@
 /// The numeric table beside a canvas: one row per point of a PointEditor, x and y editable.
 /// It edits the same points through the same undo stack; fractions ("1/3") and decimals are
 /// accepted, anything else is refused with a message and the cell shows the old value.
-/// Each column has one notation (core/exact/number_column.h): fractions for all when some
-/// entry is a repeating small fraction such as 1/3 and all are small fractions, else decimals
-/// for all, each the shortest that reads back as the stored double (a typed 0.05688 is 0.05688).
+/// Each column has one notation (core/exact/number_column.h), read from the exact forms the
+/// editor keeps (exact_point.h): fractions for all when some entry is a repeating small fraction
+/// such as 1/3 and all are small fractions, else decimals for all — an exact value's decimal
+/// expansion (a typed 0.05688 is 0.05688, 0.1 nudged by 0.01 is 0.11), a repeating one to 16
+/// digits, and a value without an exact form the shortest that reads back as its double.
 
 #include "core/exact/number_column.h"
 

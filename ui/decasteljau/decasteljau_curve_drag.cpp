@@ -78,53 +78,55 @@ void DeCasteljauCurveDrag::finishMold()
     if (!m_molding)
         return;
     m_molding = false;
-    const auto now = m_editor->points();
+    const EditedPoints now = m_editor->edited();
     if (now != m_moldStart)
         m_undo->push(
             new PointsCommand(m_editor, m_moldStart, now, tr("Mold the curve at t = %1").arg(displaySignificant(m_moldT, 4))));
     else
-        m_editor->applyPoints(now); // the tab refreshes what it deferred while molding
+        m_editor->applyPoints(now.points, now.exact); // the tab refreshes what it deferred while molding
 }
 
 namespace {
 
-/// The control points after moving c(t) by `step` × (dx, dy). Exactly, on the fractions the
-/// points and t stand for (meantRational), when that costs no more than an exact panel may
-/// (exact_cost.h): at t = 0, P_0 at 0.2 moved by a step of 1/10 stores 0.3, not the double sum
-/// 0.30000000000000004 — what the table, the CSV and the panels then show. In doubles beyond.
-std::vector<Point> moldedByStep(const std::vector<Point>& points, double t, const Rational& step, int dx, int dy)
+/// The control points after moving c(t) by `step` × (dx, dy). Exactly, on the points' exact
+/// forms (else their doubles' values) and the fraction t stands for (meantRational), when that
+/// costs no more than an exact panel may (exact_cost.h): at t = 0, P_0 at 0.2 moved by a step of
+/// 1/10 is 3/10, not the double sum 0.30000000000000004, and the editor keeps the fractions —
+/// what the table, the CSV and the panels then show. In doubles beyond, without exact forms.
+EditedPoints moldedByStep(const EditedPoints& points, double t, const Rational& step, int dx, int dy)
 {
     std::vector<RPoint> exact;
-    exact.reserve(points.size());
-    for (const Point& p : points)
-        exact.emplace_back(meantRational(p.x), meantRational(p.y));
+    exact.reserve(points.points.size());
+    for (std::size_t i = 0; i < points.points.size(); ++i)
+        exact.emplace_back(exactOr(points.exactAt(i).x, points.points[i].x), exactOr(points.exactAt(i).y, points.points[i].y));
     const Rational exactT = meantRational(t);
-    const int degree = static_cast<int>(points.size()) - 1;
+    const int degree = static_cast<int>(exact.size()) - 1;
     if (!exactWorkAllowed(deCasteljauExactWork(degree, maxBitLength(exact), bitLength(exactT)))) {
-        const Point target = deCasteljauPoint(points, t) + toDouble(step) * Point(dx, dy);
-        return moldCurve(points, t, target);
+        const Point target = deCasteljauPoint(points.points, t) + toDouble(step) * Point(dx, dy);
+        return {moldCurve(points.points, t, target), std::vector<ExactPoint>()}; // none has an exact form
     }
     const RPoint target = deCasteljauPoint(exact, exactT) + RPoint(Rational(step * dx), Rational(step * dy));
-    return toDouble(moldCurve(exact, exactT, target));
+    const std::vector<RPoint> molded = moldCurve(exact, exactT, target);
+    return {toDouble(molded), exactForms(molded)};
 }
 
 } // namespace
 
 void DeCasteljauCurveDrag::moldByKey(int dx, int dy, bool tenTimes)
 {
-    const auto& points = m_editor->points();
-    if (points.empty() || !m_parameter || m_molding)
+    const EditedPoints points = m_editor->edited();
+    if (points.points.empty() || !m_parameter || m_molding)
         return;
     const double t = m_parameter();
     const Rational exactStep = m_editor->nudgeStep(tenTimes);
     const double step = toDouble(exactStep);
     const auto molded = moldedByStep(points, t, exactStep, dx, dy);
-    for (const Point& q : molded)
+    for (const Point& q : molded.points)
         if (!isFinite(q)) {
             emit message(tr("Refused: a coordinate must be a finite number."));
             return;
         }
-    if (molded == points)
+    if (molded.points == points.points)
         return; // too far from the origin for this step to change the doubles
     // Merged with the next key of the run, as the nudges of a control point are.
     m_undo->push(new PointsCommand(m_editor, points, molded, tr("Mold the curve at t = %1").arg(displaySignificant(t, 4)),
@@ -149,7 +151,7 @@ bool DeCasteljauCurveDrag::eventFilter(QObject* watched, QEvent* event)
         m_editor->setSelected(-1);
         m_molding = true;
         m_moldT = m_hover->t;
-        m_moldStart = m_editor->points();
+        m_moldStart = m_editor->edited();
         return true;
     }
     case QEvent::MouseMove: {
@@ -168,14 +170,15 @@ bool DeCasteljauCurveDrag::eventFilter(QObject* watched, QEvent* event)
         if (!isFinite(target))
             return false;
         // From the points the drag began with: the point at t is exactly where the mouse is.
-        const auto molded = moldCurve(m_moldStart, m_moldT, target);
+        // Where the mouse happens to be: the molded points have no exact form.
+        const auto molded = moldCurve(m_moldStart.points, m_moldT, target);
         bool finite = true;
         for (const Point& q : molded)
             finite = finite && isFinite(q);
-        if (finite && molded.size() == m_moldStart.size()) {
+        if (finite && molded.size() == m_moldStart.points.size()) {
             m_hover = ClosestPoint{m_moldT, target, 0.0};
-            m_editor->applyPoints(molded); // undone at the release, as one step
-            m_molding = true;              // applyPoints ends the editor's drags, not this one
+            m_editor->applyPoints(molded, std::vector<ExactPoint>()); // none exact; undone at the release, as one step
+            m_molding = true;                                         // applyPoints ends the editor's drags, not this one
         }
         return false; // the canvas still reports the cursor position
     }

@@ -12,6 +12,7 @@
 
 #include "core/base/vec2.h"
 #include "core/curves/bezier/closest_point.h"
+#include "ui/common/point_commands.h"
 
 #include <QObject>
 #include <QPointF>
@@ -69,7 +70,7 @@ private:
     std::optional<ClosestPoint> m_hover;
     bool m_molding = false;
     double m_moldT = 0;
-    std::vector<Point> m_moldStart; ///< the points when the mold began: one undo step per drag
+    EditedPoints m_moldStart; ///< the points when the mold began: one undo step per drag
     std::function<double()> m_parameter;
 };
 

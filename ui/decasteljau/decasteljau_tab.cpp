@@ -1,6 +1,7 @@
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/common/number_text.h"
 
+#include "core/base/aabb.h"
 #include "core/base/math_constants.h"
 #include "core/curves/bezier/bernstein_properties.h"
 #include "core/curves/bezier/curve_features.h"
@@ -21,7 +22,6 @@
 #include "ui/decasteljau/decasteljau_parameter_control.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
-#include "ui/common/point_extent.h"
 #include "ui/common/point_table.h"
 #include "ui/common/tab_order.h"
 #include "ui/common/value_command.h"
@@ -1055,10 +1055,14 @@ void DeCasteljauTab::raiseDegree()
     }
     // n + 1 control points make a curve of degree n; one point more is degree n + 1.
     const int raisedDegree = static_cast<int>(points.size());
-    // Small fractions are elevated exactly, so that the exact tables survive the step.
-    const auto exact = smallRationalPoints(points);
-    m_editor->setPoints(exact ? toDouble(elevateDegree(*exact)) : elevateDegree(points),
-                        tr("Raise degree to %1").arg(raisedDegree));
+    // Exact points are elevated exactly, so that the exact tables survive the step.
+    const auto exact = m_editor->allExactPoints();
+    if (exact) {
+        const auto elevated = elevateDegree(*exact);
+        m_editor->setPoints(toDouble(elevated), exactForms(elevated), tr("Raise degree to %1").arg(raisedDegree));
+    } else {
+        m_editor->setPoints(elevateDegree(points), tr("Raise degree to %1").arg(raisedDegree));
+    }
     emit statusMessage(tr("Degree raised to %1: the same curve with one control point more.").arg(raisedDegree));
 }
 
@@ -1084,7 +1088,7 @@ void DeCasteljauTab::updateExactSymbolic()
     m_symbolicHtml.clear();
     const auto& points = m_editor->points();
     const int n = static_cast<int>(points.size()) - 1;
-    const auto exact = smallRationalPoints(points);
+    const auto exact = m_editor->allExactPoints();
     if (!exact) {
         m_symbolicHtml = ExactPanel::note(tr("The exact polynomials need control points that are small fractions: "
                                              "type them in the table (1/3 is accepted) or turn on Snap to grid."));
@@ -1120,7 +1124,7 @@ void DeCasteljauTab::updateExactPanel()
     if (points.empty() || m_levels.levels.empty())
         return;
     const int n = static_cast<int>(points.size()) - 1;
-    const auto exactPoints = smallRationalPoints(points);
+    const auto exactPoints = m_editor->allExactPoints();
     const auto exactT = smallRational(m_t, kExactTDenominator);
     QString html;
     std::optional<DeCasteljauTable<Rational>> exactTable;
@@ -1193,7 +1197,7 @@ QString DeCasteljauTab::exactCurvatureHtml() const
     html += QStringLiteral("<p>%1</p>").arg(tr("s(t) = %1, L = %2").arg(panelNumber(arcLengthAtT()), panelNumber(totalLength())));
     // κ = (x′y″ − y′x″)/|c′|³: exact as k/(d√d) with k and d = |c′|² fractions, for rational points and t.
     const int n = static_cast<int>(points.size()) - 1;
-    const auto exactPoints = smallRationalPoints(points);
+    const auto exactPoints = m_editor->allExactPoints();
     const auto exactT = smallRational(m_t, kExactTDenominator);
     std::optional<QString> exact;
     if (exactPoints && exactT && n >= 1 && n <= kMaxExactDegree) {
@@ -1223,7 +1227,7 @@ QString DeCasteljauTab::exactCurvatureHtml() const
 
 QRectF DeCasteljauTab::contentBounds() const
 {
-    const std::optional<PointExtent> box = finiteExtent(m_editor->points());
+    const std::optional<Aabb> box = finiteBox(m_editor->points());
     if (!box)
         return {-1, -1, 2, 2};
     double pad = 0.05 * std::max(box->width(), box->height());
@@ -1469,7 +1473,8 @@ QString DeCasteljauTab::csv() const
     for (std::size_t i = 0; i < points.size(); ++i)
         out += QStringLiteral("%1,%2,%3\n")
                    .arg(i)
-                   .arg(QString::fromStdString(formatReadable(points[i].x)), QString::fromStdString(formatReadable(points[i].y)));
+                   .arg(QString::fromStdString(readableExact(m_editor->exactAt(i).x, points[i].x)),
+                        QString::fromStdString(readableExact(m_editor->exactAt(i).y, points[i].y)));
     out += QStringLiteral("\nt,x,y\n");
     const double part = static_cast<double>(m_curve.size() > 1 ? m_curve.size() - 1 : 1);
     for (std::size_t j = 0; j < m_curve.size(); ++j)

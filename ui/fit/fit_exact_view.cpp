@@ -6,7 +6,6 @@
 #include "core/curves/bezier/power_basis.h"
 #include "core/exact/polynomial_text.h"
 #include "core/exact/radical_sum.h"
-#include "core/exact/rational_approximation.h"
 #include "core/exact/rounding_residue.h"
 #include "core/exact/square_root.h"
 #include "core/io/worked_examples.h"
@@ -119,7 +118,7 @@ QString FitExactView::html(const Input& in)
 
     std::optional<std::vector<RPoint>> rational;
     if (count <= kMaxListedPoints)
-        rational = smallRationalPoints(q);
+        rational = in.exact;
     const bool thesisData = isThesisData(rational);
     const bool byDistance = in.parametrization != Parametrization::Uniform;
 

@@ -9,12 +9,14 @@
 /// formats: every value comes from the core.
 
 #include "core/exact/exact_cost.h"
+#include "core/exact/rational.h"
 #include "core/curves/fitting/least_squares_fit.h"
 #include "ui/fit/fit_settings.h"
 
 #include <QCoreApplication>
 #include <QString>
 
+#include <optional>
 #include <vector>
 
 namespace granota::ui {
@@ -32,7 +34,9 @@ public:
 
     struct Input {
         const std::vector<Point>* points = nullptr; ///< Q_0..Q_k as the editor holds them
-        int degree = 0;                             ///< the degree actually fitted
+        /// Their exact values (PointEditor::allExactPoints()); nullopt when one has none.
+        std::optional<std::vector<RPoint>> exact;
+        int degree = 0; ///< the degree actually fitted
         Parametrization parametrization = Parametrization::Uniform;
         bool correctParameters = false;
         const FitResult* fit = nullptr; ///< nullptr when the fit failed

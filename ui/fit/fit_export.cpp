@@ -16,8 +16,14 @@ QString fitCsv(const FitCsvInput& in)
     QString out = QStringLiteral("i,x,y,t,alpha_x,alpha_y,residual_x,residual_y\n");
     out.reserve(static_cast<qsizetype>(q.size()) * 160);
     const bool fitted = in.fit && in.fit->residuals.size() == q.size();
+    const auto exactText = [&in](std::size_t i, bool x) {
+        const Point& p = in.data[i];
+        if (in.exact.size() != in.data.size())
+            return QString::fromStdString(formatReadable(x ? p.x : p.y));
+        return QString::fromStdString(x ? readableExact(in.exact[i].x, p.x) : readableExact(in.exact[i].y, p.y));
+    };
     for (std::size_t i = 0; i < q.size(); ++i) {
-        out += QStringLiteral("%1,%2,%3").arg(i).arg(f(q[i].x), f(q[i].y));
+        out += QStringLiteral("%1,%2,%3").arg(i).arg(exactText(i, true), exactText(i, false));
         if (fitted) {
             const Point r = in.fit->residuals[i];
             const Point a = q[i] - r;

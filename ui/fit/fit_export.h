@@ -5,6 +5,7 @@
 /// picture as the screen, fit_display.h), and File ▸ Export's image through the canvas.
 
 #include "core/curves/fitting/least_squares_fit.h"
+#include "core/exact/exact_point.h"
 #include "ui/common/drawable.h"
 #include "ui/fit/fit_display.h"
 
@@ -20,8 +21,9 @@ struct CurvatureComb;
 
 /// What the CSV is written from.
 struct FitCsvInput {
-    const std::vector<Point>& data; ///< Q_0…Q_k
-    const FitResult* fit;           ///< nullptr: no fit (its columns are left empty)
+    const std::vector<Point>& data;       ///< Q_0…Q_k
+    const std::vector<ExactPoint>& exact; ///< their exact forms, index by index (exact_point.h)
+    const FitResult* fit;                 ///< nullptr: no fit (its columns are left empty)
     /// The error plot's lines for every parametrization (fitErrorByDegree, n = 1 … lastDegree)
     /// are appended when `allParametrizations`.
     bool allParametrizations = false;
@@ -31,7 +33,8 @@ struct FitCsvInput {
 
 /// `i,x,y,t,alpha_x,alpha_y,residual_x,residual_y` per data point, then `j,P_x,P_y` per
 /// control point, then `parametrization,degree,sse` per line of the error plot (empty where
-/// that fit failed). At most 15 significant digits: the data as typed, the fit without binary noise.
+/// that fit failed). The data as their exact values' decimals (readableExact: as typed), the
+/// rest at most 15 significant digits, the fit without binary noise.
 QString fitCsv(const FitCsvInput& in);
 
 /// The TikZ figure: a comment naming the fit, then writeFitTikz()'s picture.

@@ -88,7 +88,7 @@ FitTab::FitTab(QWidget* parent) : CurveTab(QStringLiteral("fit"), QT_TR_NOOP("Fi
     if (const WorkedExample* example = findWorkedExample("2.7")) {
         m_loading = true;
         m_settings.degree = example->degree;
-        m_editor->applyPoints(toDouble(example->points));
+        m_editor->applyPoints(toDouble(example->points), exactForms(example->points));
         m_loading = false;
     }
     updateControls();
@@ -559,6 +559,7 @@ void FitTab::updateExact()
         return;
     FitExactView::Input in;
     in.points = &m_editor->points();
+    in.exact = m_editor->allExactPoints();
     in.degree = fittedDegree();
     in.parametrization = m_settings.parametrization;
     in.correctParameters = m_settings.correctParameters;
@@ -610,7 +611,7 @@ bool FitTab::loadExample(const granota::WorkedExample& example)
     const QString id = QString::fromStdString(example.id);
     m_loading = true;
     m_undo->beginMacro(tr("Load Ex %1").arg(id));
-    m_editor->setPoints(toDouble(example.points), tr("Ex %1 data").arg(id));
+    m_editor->setPoints(toDouble(example.points), exactForms(example.points), tr("Ex %1 data").arg(id));
     m_undo->push(new ValueCommand<FitSettings>([this](const FitSettings& s) { applySettings(s); }, m_settings, after,
                                                tr("Ex %1 settings").arg(id)));
     m_undo->endMacro();
@@ -645,7 +646,7 @@ bool FitTab::importFile(const QString& path, QString* error)
         return false;
     }
     QApplication::setOverrideCursor(Qt::WaitCursor);
-    m_editor->setPoints(points, tr("Import %1").arg(name));
+    m_editor->setPoints(points, exactForms(*parsed), tr("Import %1").arg(name)); // the values as the file writes them
     QApplication::restoreOverrideCursor();
     m_canvas->fitToContent();
     QString imported = tr("Imported %n data points from “%1”.", nullptr, static_cast<int>(points.size())).arg(name);
@@ -705,8 +706,8 @@ bool FitTab::loadSettings(const QJsonObject& state, const std::vector<Point>& po
 QString FitTab::csv() const
 {
     finishFit(); // the finished fit, never a half state
-    return fitCsv(
-        {m_editor->points(), currentFit(), m_display.errorPlotAllParametrizations, m_settings.solver, m_plotLastDegree});
+    return fitCsv({m_editor->points(), m_editor->exactPoints(), currentFit(), m_display.errorPlotAllParametrizations,
+                   m_settings.solver, m_plotLastDegree});
 }
 
 void FitTab::drawTikz(TikzWriter& tikz) const

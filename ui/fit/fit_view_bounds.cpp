@@ -1,7 +1,8 @@
 #include "ui/fit/fit_view_bounds.h"
 
+#include "core/base/aabb.h"
+
 #include "ui/common/curvature_comb.h"
-#include "ui/common/point_extent.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +14,7 @@ namespace {
 
 QRectF boundsOf(const std::vector<Point>& a, const std::vector<Point>& b)
 {
-    const std::optional<PointExtent> box = finiteExtent(a, b);
+    const std::optional<Aabb> box = finiteBox(a, b);
     if (!box)
         return QRectF(-1, -1, 2, 2);
     double w = box->width(), h = box->height();

@@ -8,6 +8,7 @@
 
 #include "core/base/vec2.h"
 #include "core/softbody/link_angles.h"
+#include "ui/frog/frog_overlays.h"
 
 #include <QBrush>
 #include <QFont>
@@ -36,32 +37,8 @@ class FrogRun;
 
 class FrogOverlayPainter {
 public:
-    /// What is drawn over the scene (the tab's Overlays checkboxes).
-    struct Overlays {
-        bool vertices = false;   ///< body vertices and joints, numbered
-        bool springs = false;    ///< the polygon's edges (the springs of §4.4)
-        bool area = false;       ///< area against the target area (§4.5), text and bar
-        bool velocities = false; ///< each vertex's displacement over the last step (Verlet's x − x_prev)
-        bool readouts = false;   ///< the Readouts of the solver: area error, stretch, forces, energies
-        bool frameTime = false;  ///< frame, step and drawing time
-        /// Both solvers at once: the other solver's run of the same scene, fed the same mouse,
-        /// drawn as a ghost over this one (docs/solvers.md#both-at-once).
-        bool ghost = false;
-        /// The path of one vertex or joint over the last FrogRun::kTrailSteps steps
-        /// (Shift+click chooses which).
-        bool trail = false;
-        /// §5.2.2: the broad phase's candidate pairs (their boxes, a line between them) and
-        /// the number of contacts (stable solver).
-        bool pairs = false;
-        /// §4.15: each link's angle against the range its limits allow (link_angles.h).
-        bool protractor = false;
-        bool operator==(const Overlays& o) const
-        {
-            return vertices == o.vertices && springs == o.springs && area == o.area && velocities == o.velocities &&
-                   readouts == o.readouts && frameTime == o.frameTime && ghost == o.ghost && trail == o.trail &&
-                   pairs == o.pairs && protractor == o.protractor;
-        }
-    };
+    /// What is drawn over the scene (the tab's Overlays check boxes; frog_overlays.h).
+    using Overlays = FrogOverlays;
     /// One frame's overlays: the run they show and what the view adds to it.
     struct Frame {
         const FrogRun& run;

@@ -4,13 +4,11 @@
 #include "core/base/math_constants.h"
 #include "core/softbody/scenes/scene.h"
 #include "core/softbody/scenes/scene_parameters.h"
-#include "ui/frog/frog_json.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QGridLayout>
-#include <QJsonArray>
 #include <QEvent>
 #include <QLabel>
 
@@ -57,7 +55,7 @@ void FrogParametersPanel::clear()
     m_fileOnly = nullptr;
 }
 
-void FrogParametersPanel::addRow(const QString& key, const QString& sub, int count, double factor)
+void FrogParametersPanel::addRow(const QString& key, const QString& sub, int part, int count, double factor)
 {
     const int row = m_grid->rowCount();
     auto* label = new QLabel(this);
@@ -83,13 +81,15 @@ void FrogParametersPanel::addRow(const QString& key, const QString& sub, int cou
         Field f;
         f.key = key;
         f.sub = sub;
+        f.part = part;
         f.index = i;
         f.spin = spin;
         f.factor = factor;
         m_fields.push_back(f);
-        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, key] {
+        const std::size_t at = m_fields.size() - 1;
+        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, at] {
             if (!m_updating)
-                fieldChanged(key);
+                fieldChanged(m_fields[at]);
         });
     }
 }
@@ -98,14 +98,10 @@ void FrogParametersPanel::setScene(const SceneSpec& scene)
 {
     clear();
     m_keys.clear();
-    m_model = scene.model == SceneModel::Pendulum ? QStringLiteral("pendulum") : QString();
-    const Json doc = sceneToJson(scene);
-    const QJsonObject params = toQJson(*doc.find("params")).toObject();
     QStringList fileOnly;
     for (const std::string& k : scene.paramKeys) {
         const QString key = QString::fromStdString(k);
         m_keys << key;
-        const QJsonValue value = params.value(key);
         switch (parameter(key).type) {
         case ParameterType::Choice: {
             const int row = m_grid->rowCount();
@@ -122,32 +118,27 @@ void FrogParametersPanel::setScene(const SceneSpec& scene)
             m_grid->addWidget(m_grab, row, 1, 1, 2);
             connect(m_grab, &QComboBox::currentIndexChanged, this, [this, key] {
                 if (!m_updating)
-                    emit edited(key, m_grab->currentData().toString());
+                    emit edited(key, 0, 0, m_grab->currentIndex()); // the box lists grabChoices() in order
             });
             break;
         }
         case ParameterType::Legs:
-            for (const ParameterPart& part : legParts())
-                addRow(key, QString::fromLatin1(part.name), 2, 1);
+            for (int part = 0; part < parameterPartCount(scene, parameter(key)); ++part)
+                addRow(key, QString::fromLatin1(legParts()[static_cast<std::size_t>(part)].name), part, 2, 1);
             break;
-        case ParameterType::AngleLimits: {
-            const QJsonObject limits = value.toObject();
-            for (const AngleLimitParameter& limit : angleLimits())
-                if (limits.contains(QLatin1String(limit.name)))
-                    addRow(key, QString::fromLatin1(limit.name), 2, kDegrees);
+        case ParameterType::AngleLimits:
+            for (int part = 0; part < parameterPartCount(scene, parameter(key)); ++part)
+                addRow(key, QString::fromLatin1(angleLimitOf(scene, part)->name), part, 2, kDegrees);
             break;
-        }
-        case ParameterType::Chain: {
-            const int links = value.toArray().size();
-            for (int i = 0; i < links; ++i)
-                addRow(key, QString::number(i), 1, 1);
+        case ParameterType::Chain:
+            for (int link = 0; link < parameterPartCount(scene, parameter(key)); ++link)
+                addRow(key, QString::number(link), link, 1, 1);
             break;
-        }
         case ParameterType::Obstacles:
         case ParameterType::Shapes: fileOnly << key; break;
-        case ParameterType::Pair: addRow(key, QString(), 2, 1); break;
+        case ParameterType::Pair: addRow(key, QString(), 0, 2, 1); break;
         case ParameterType::Integer:
-        case ParameterType::Number: addRow(key, QString(), 1, 1); break;
+        case ParameterType::Number: addRow(key, QString(), 0, 1, 1); break;
         }
     }
     if (!fileOnly.isEmpty()) {
@@ -163,30 +154,14 @@ void FrogParametersPanel::setScene(const SceneSpec& scene)
 void FrogParametersPanel::setValues(const SceneSpec& scene)
 {
     m_updating = true;
-    const Json doc = sceneToJson(scene);
-    m_values = toQJson(*doc.find("params")).toObject();
-    SceneSpec values = scene; // the accessors take a SceneSpec&; only read
     for (Field& f : m_fields) {
-        QJsonValue v = m_values.value(f.key);
-        if (v.isString()) { // "frame": derived from the frame as Annex II does (frame_derived.h)
-            const SceneParameter& p = parameter(f.key);
-            v = p.type == ParameterType::Pair ? QJsonValue(QJsonArray{p.pairIn(values).x, p.pairIn(values).y})
-                                              : QJsonValue(p.numberIn(values));
-        }
-        if (parameter(f.key).type == ParameterType::Chain)
-            v = v.toArray().at(f.sub.toInt());
-        else if (!f.sub.isEmpty())
-            v = v.toObject().value(f.sub);
-        if (v.isArray())
-            v = v.toArray().at(f.index);
-        f.exact = v.toDouble();
+        // The model's own number (a radius or centre derived from the frame included).
+        f.exact = parameterNumber(scene, parameter(f.key), f.part, f.index);
         f.spin->setValue(f.exact * f.factor);
         f.shown = f.spin->value();
     }
-    if (m_grab) {
-        const int i = m_grab->findData(m_values.value(QStringLiteral("grab")).toString());
-        m_grab->setCurrentIndex(std::max(0, i));
-    }
+    if (m_grab)
+        m_grab->setCurrentIndex(static_cast<int>(parameterNumber(scene, parameter(m_grab->property("key").toString()), 0, 0)));
     m_updating = false;
 }
 
@@ -196,39 +171,10 @@ double FrogParametersPanel::modelValue(const Field& f) const
     return f.spin->value() == f.shown ? f.exact : f.spin->value() / f.factor;
 }
 
-void FrogParametersPanel::fieldChanged(const QString& key)
+void FrogParametersPanel::fieldChanged(const Field& f)
 {
-    QJsonValue value;
-    const ParameterType type = parameter(key).type;
-    if (type == ParameterType::Legs || type == ParameterType::AngleLimits) {
-        QJsonObject o;
-        for (const Field& f : m_fields)
-            if (f.key == key) {
-                QJsonArray pair = o.value(f.sub).toArray();
-                while (pair.size() <= f.index)
-                    pair.append(0.0);
-                pair[f.index] = modelValue(f);
-                o.insert(f.sub, pair);
-            }
-        value = o;
-    } else if (type == ParameterType::Chain) {
-        QJsonArray links;
-        for (const Field& f : m_fields)
-            if (f.key == key)
-                links.append(modelValue(f));
-        value = links;
-    } else if (type == ParameterType::Pair) {
-        QJsonArray pair;
-        for (const Field& f : m_fields)
-            if (f.key == key)
-                pair.append(modelValue(f));
-        value = pair;
-    } else {
-        for (const Field& f : m_fields)
-            if (f.key == key)
-                value = modelValue(f);
-    }
-    emit edited(key, value);
+    const QString key = f.key; // a copy: the tab's answer may build the rows again
+    emit edited(key, f.part, f.index, modelValue(f));
 }
 
 int FrogParametersPanel::spinMinimumWidth() const

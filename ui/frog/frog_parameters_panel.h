@@ -2,10 +2,10 @@
 /// \file frog_parameters_panel.h
 /// The parameters of the active scene, and only those (docs/scenes.md): one row per key of the
 /// scene's file, with the thesis's names and units, spin boxes wide enough in range for the
-/// extreme cases of docs/extreme-cases.md. An edit emits the key's whole new value (as the scene file
-/// writes it); the tab validates it through the core and applies it live.
+/// extreme cases of docs/extreme-cases.md. Every spin box is one number of the core's table
+/// (parameterNumber, scene_parameters.h); an edit emits that number, and the tab sets it through
+/// the core (withParameter, scene.h) and applies it live: no JSON on the way.
 
-#include <QJsonObject>
 #include <QStringList>
 #include <QWidget>
 
@@ -38,8 +38,9 @@ public:
     void retranslate();
 
 signals:
-    /// `key` was edited; `value` is its whole new value in the scene file's form.
-    void edited(const QString& key, const QJsonValue& value);
+    /// The number (`part`, `index`) of `key` was edited to `value` (withParameter's arguments; for
+    /// the grab, `value` is the index of grabChoices()).
+    void edited(const QString& key, int part, int index, double value);
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -48,8 +49,9 @@ private:
     int spinMinimumWidth() const;
     struct Field {
         QString key;
-        QString sub;   ///< legs: front/back; angle_limits: the limit's name
-        int index = 0; ///< position inside the key's value
+        QString sub;   ///< legs: front/back; angle_limits: the limit's name; chain: the link
+        int part = 0;  ///< which leg pair, limit or link (parameterNumber's part)
+        int index = 0; ///< which coordinate of it (parameterNumber's index)
         QDoubleSpinBox* spin = nullptr;
         double exact = 0; ///< the model's value, kept while the shown (rounded) one is untouched
         double shown = 0;
@@ -61,8 +63,8 @@ private:
     };
 
     void clear();
-    void addRow(const QString& key, const QString& sub, int count, double factor);
-    void fieldChanged(const QString& key);
+    void addRow(const QString& key, const QString& sub, int part, int count, double factor);
+    void fieldChanged(const Field& f);
     double modelValue(const Field& f) const;
     QString labelFor(const QString& key, const QString& sub) const;
     QString tipFor(const QString& key, const QString& sub) const;
@@ -70,12 +72,10 @@ private:
 
     QGridLayout* m_grid;
     QStringList m_keys;
-    QString m_model; ///< "pendulum" or other: the angle limits read differently
     std::vector<Field> m_fields;
     std::vector<Row> m_rows;
     QComboBox* m_grab = nullptr;
     QLabel* m_fileOnly = nullptr;
-    QJsonObject m_values;
     bool m_updating = false;
 };
 

@@ -6,12 +6,16 @@
 
 #include "core/softbody/scenes/scene.h"
 #include "core/softbody/simulation.h"
+#include "ui/frog/frog_document.h"
+#include "ui/frog/frog_overlays.h"
 #include "ui/shell/tab_page.h"
 
 #include <QJsonValue>
 #include <QSize>
 
+#include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QCheckBox;
@@ -67,10 +71,14 @@ public:
     QString sceneName() const { return QString::fromStdString(m_scene.name); }
     const SceneSpec& scene() const { return m_scene; }
     /// Edits parameter `key` (docs/scenes.md name) to `value` in the scene file's form, live and
-    /// undoable (the parameter panel does this). False with a message when the core refuses.
+    /// undoable. False with a message when the core refuses.
     bool editParameter(const QString& key, const QJsonValue& value, QString* error);
-    /// Sets `key` without an undo step (the undo commands call it).
+    /// Sets `key` to `value` in the scene file's form without an undo step.
     bool applyParameter(const QString& key, const QJsonValue& value, QString* error);
+    /// Edits one number of parameter `key`, live and undoable: what a tick of the parameter
+    /// panel does, one call into the core (withParameter(scene, key, part, index, value),
+    /// scene.h) with nothing written to JSON. False with a message when the core refuses.
+    bool editParameterNumber(const QString& key, int part, int index, double value, QString* error);
     /// Builds the scene again from its parameters (Reset).
     void reset();
     /// The stable solver's knobs (docs/solvers.md#knobs): "substeps" (1–32),
@@ -92,7 +100,7 @@ public:
     /// past it, the run loads at step 0 and the tab says so.
     static const long kLoadSeekWork;
     /// The runs that changes of the scene replaced, kept for Undo, take at most this much
-    /// together (FrogCanvas::KeptRun::bytes: as much as one run's snapshots may take); past
+    /// together (FrogRun::KeptRun::bytes: as much as one run's snapshots may take); past
     /// it the oldest are let go, and their undo steps say that the scene starts again.
     static const std::size_t kKeptRunBytes;
     /// Shows the plots over time under the canvas (the canvas records the series meanwhile).
@@ -109,6 +117,15 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+    /// The side panel and the stage, built (frog_tab_controls.cpp); their signals, wired.
+    void buildControls();
+    void connectControls();
+    /// Shows the scene `spec` (a new run with it) or says why the core refused it.
+    bool showParameter(const Expected<SceneSpec>& spec, QString* error);
+    /// The undo step of an edit of `key`, from the scene `before` to the one shown.
+    void pushParameterStep(const QString& key, std::shared_ptr<const SceneSpec> before);
+    /// The tab's part of a document as it stands (saveState, and what applyState keeps).
+    FrogDocument document() const;
     /// The frog's head in the TikZ picture, over the body (issue 34, item 10).
     void drawTikzHead(TikzWriter& w) const;
     void fitSidePanel();
@@ -144,12 +161,9 @@ private:
     void pushSceneStep(const QJsonObject& before, const QString& undoText);
     /// The scene `name` on the current solver (or the stable one, for collisions).
     bool switchScene(const QString& name, QString* error);
-    /// The overlay boxes' states as an undo step restores them.
-    using OverlayFlags = std::array<bool, 10>;
-    using OverlayBoxes = std::array<QCheckBox*, 10>;
-    OverlayBoxes overlayBoxes() const; ///< in OverlayFlags' order
-    OverlayFlags overlayFlags() const;
-    void applyOverlayFlags(const OverlayFlags& flags);
+    /// The overlays the boxes show; showOverlays sets the boxes (without signals) and the canvas.
+    FrogOverlays overlaysChecked() const;
+    void showOverlays(const FrogOverlays& overlays);
     void setPaused(bool paused);
     void updateTimeline();
     void showExplosion(bool blownUp);
@@ -206,8 +220,7 @@ private:
     std::weak_ptr<RunSlot> m_lastParameterSlot;      ///< the kept run of the last parameter step (merges)
     QPushButton *m_pause, *m_step, *m_reset;
     QRadioButton *m_precomputed, *m_fit;
-    QCheckBox *m_showVertices, *m_showSprings, *m_showArea, *m_showVelocities, *m_showReadouts, *m_showFrameTime, *m_showGhost,
-        *m_showTrail, *m_showPairs, *m_showProtractor;
+    std::array<QCheckBox*, kFrogOverlayCount> m_overlayBoxes{}; ///< one per row of frogOverlays(), in its order
 };
 
 } // namespace granota::ui

@@ -74,6 +74,20 @@ Expected<void> setStableSetting(SceneSpec& s, const std::string& key, const Json
     return {};
 }
 
+/// The file's "stable" object into `s` (setStableSetting for each key).
+Expected<void> readStable(SceneSpec& s, const Json& stable)
+{
+    if (!stable.isObject())
+        return bad(s.name, "\"stable\" must be an object: {\"substeps\": n, \"edge_compliance\": α, "
+                           "\"edge_damping_ratio\": ζ}");
+    for (const auto& [key, value] : *stable.asObject()) {
+        auto ok = setStableSetting(s, key, value);
+        if (!ok)
+            return ok;
+    }
+    return {};
+}
+
 /// `first_frame` (frame_derived.h): "window" or "sketch", on the frog scene only (the sketch whose
 /// first frame is known is Annex II's).
 Expected<void> setFirstFrame(SceneSpec& s, const Json& v)
@@ -123,21 +137,6 @@ std::optional<std::vector<double>> numbersOf(const Json& v)
         out.push_back(*x.asNumber());
     }
     return out;
-}
-
-Json pointJson(Point p)
-{
-    Json a = Json::array();
-    a.push(p.x).push(p.y);
-    return a;
-}
-
-Json pointsJson(const std::vector<Point>& points)
-{
-    Json a = Json::array();
-    for (Point q : points)
-        a.push(pointJson(q));
-    return a;
 }
 
 /// A list parameter (obstacles, shapes): `out` becomes the items `one` reads from the list `v`.
@@ -190,6 +189,21 @@ Expected<void> readShape(const SceneSpec& s, const Json& o, ShapeSpec& spec)
     return {};
 }
 
+/// An Integer parameter `param` from the number `v`, whole and within the table's range.
+Expected<void> setWhole(SceneSpec& s, const SceneParameter& param, const Json& v)
+{
+    const std::string key = param.key;
+    if (!v.isNumber() || *v.asNumber() != std::trunc(*v.asNumber()))
+        return bad(s.name, key + " must be a whole number", MessageId::ParameterNotWhole, {textArg(key)});
+    const auto n = wholeNumber(v, param.min, param.max);
+    if (!n)
+        return bad(s.name, key + " must be between " + std::to_string(param.min) + " and " + std::to_string(param.max),
+                   MessageId::ParameterOutOfRange, {textArg(key), numberArg(param.min), numberArg(param.max)},
+                   ErrorCode::OutOfRange);
+    param.integerIn(s) = *n;
+    return {};
+}
+
 /// Reads one parameter from its JSON value into the scene. Shared by the file reader
 /// and by --set (which first turns "0,0.75" into [0,0.75]).
 Expected<void> setParam(SceneSpec& s, const std::string& key, const Json& v)
@@ -199,17 +213,7 @@ Expected<void> setParam(SceneSpec& s, const std::string& key, const Json& v)
         return bad(s.name, "unknown parameter " + quotedForDisplay(key), MessageId::SceneUnknownParameter,
                    {textArg(quotedForDisplay(key))});
     switch (param->type) {
-    case ParameterType::Integer: {
-        if (!v.isNumber() || *v.asNumber() != std::trunc(*v.asNumber()))
-            return bad(s.name, key + " must be a whole number", MessageId::ParameterNotWhole, {textArg(key)});
-        const auto n = wholeNumber(v, param->min, param->max);
-        if (!n)
-            return bad(s.name, key + " must be between " + std::to_string(param->min) + " and " + std::to_string(param->max),
-                       MessageId::ParameterOutOfRange, {textArg(key), numberArg(param->min), numberArg(param->max)},
-                       ErrorCode::OutOfRange);
-        param->integerIn(s) = *n;
-        return {};
-    }
+    case ParameterType::Integer: return setWhole(s, *param, v);
     case ParameterType::Number: {
         const bool radius = key == "radius";
         if (radius && v.asString() == kFromFrame) {
@@ -400,6 +404,24 @@ Expected<void> validate(const SceneSpec& s)
     return {};
 }
 
+/// `key` is not a parameter of the scene: the reader's message for an unknown parameter.
+Error notInScene(const SceneSpec& s, const std::string& key)
+{
+    return bad(s.name, "unknown parameter " + quotedForDisplay(key), MessageId::SceneUnknownParameter,
+               {textArg(quotedForDisplay(key))});
+}
+
+/// `s` after parameters were set: what follows the frame follows it again, and the whole scene
+/// is checked as a file is.
+Expected<SceneSpec> checkedScene(SceneSpec s)
+{
+    deriveFromFrame(s);
+    auto ok = validate(s);
+    if (!ok)
+        return ok.error();
+    return s;
+}
+
 } // namespace
 
 bool SceneSpec::has(SceneComponent component) const
@@ -509,14 +531,9 @@ Expected<SceneSpec> parseScene(const Json& doc)
         s.paramKeys.push_back(key);
     }
     if (const Json* stable = doc.find("stable")) {
-        if (!stable->isObject())
-            return bad(s.name, "\"stable\" must be an object: {\"substeps\": n, \"edge_compliance\": α, "
-                               "\"edge_damping_ratio\": ζ}");
-        for (const auto& [key, value] : *stable->asObject()) {
-            auto ok = setStableSetting(s, key, value);
-            if (!ok)
-                return ok.error();
-        }
+        auto ok = readStable(s, *stable);
+        if (!ok)
+            return ok.error();
     }
     if (const Json* firstFrame = doc.find(kFirstFrameKey)) {
         auto ok = setFirstFrame(s, *firstFrame);
@@ -605,14 +622,110 @@ Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue)
 
 Expected<SceneSpec> withParameter(SceneSpec scene, const std::string& key, const Json& value)
 {
+    return withParameters(std::move(scene), {{key, value}});
+}
+
+Expected<SceneSpec> withParameters(SceneSpec scene, const std::vector<std::pair<std::string, Json>>& values)
+{
+    for (const auto& [key, value] : values) {
+        if (!scene.hasParam(key))
+            return notInScene(scene, key);
+        auto ok = setParam(scene, key, value);
+        if (!ok)
+            return ok.error();
+    }
+    return checkedScene(std::move(scene));
+}
+
+Expected<SceneSpec> withParameter(SceneSpec scene, const std::string& key, int part, int index, double value)
+{
     if (!scene.hasParam(key))
-        return bad(scene.name, "unknown parameter " + quotedForDisplay(key), MessageId::SceneUnknownParameter,
-                   {textArg(quotedForDisplay(key))});
-    auto ok = setParam(scene, key, value);
-    if (!ok)
-        return ok.error();
-    deriveFromFrame(scene);
-    ok = validate(scene);
+        return notInScene(scene, key);
+    const SceneParameter& param = *findSceneParameter(key); // every key a scene has is in the table
+    if (part < 0 || part >= parameterPartCount(scene, param) || index < 0 || index >= parameterComponentCount(param))
+        return bad(scene.name, key + " has no number at part " + std::to_string(part) + ", index " + std::to_string(index));
+    const auto set = [index](Point& q, double v) { (index == 0 ? q.x : q.y) = v; };
+    switch (param.type) {
+    case ParameterType::Integer: {
+        auto ok = setWhole(scene, param, Json(value));
+        if (!ok)
+            return ok.error();
+        break;
+    }
+    case ParameterType::Number:
+        param.numberIn(scene) = value;
+        if (key == "radius") // a number set: no longer derived from the frame
+            scene.radiusFromFrame = false;
+        break;
+    case ParameterType::Pair:
+        set(param.pairIn(scene), value);
+        if (key == "center")
+            scene.centerFromFrame = false;
+        break;
+    case ParameterType::Choice: {
+        const auto& choices = grabChoices();
+        if (!(value >= 0 && value < static_cast<double>(choices.size())) || value != std::trunc(value))
+            return bad(scene.name, key + " has no choice " + formatDouble(value));
+        scene.grab = choices[static_cast<std::size_t>(value)].mode;
+        break;
+    }
+    case ParameterType::Chain: scene.chain[static_cast<std::size_t>(part)] = value; break;
+    case ParameterType::Legs: // a pair of legs: 2·part and 2·part + 1, as the file's "front" and "back"
+        for (std::size_t leg = 2 * static_cast<std::size_t>(part); leg < 2 * static_cast<std::size_t>(part) + 2; ++leg)
+            (index == 0 ? scene.params.legs[leg].upper : scene.params.legs[leg].lower) = value;
+        break;
+    case ParameterType::AngleLimits: {
+        const AngleLimitParameter& limit = *angleLimitOf(scene, part);
+        Point q = limit.in(scene);
+        set(q, value);
+        limit.setIn(scene, q);
+        break;
+    }
+    case ParameterType::Obstacles:
+    case ParameterType::Shapes: break; // no numbers (parameterPartCount is 0): refused above
+    }
+    return checkedScene(std::move(scene));
+}
+
+Expected<SceneSpec> withParameterOf(SceneSpec scene, const SceneSpec& source, const std::string& key)
+{
+    if (!scene.hasParam(key))
+        return notInScene(scene, key);
+    const SceneParameter& param = *findSceneParameter(key);
+    SceneSpec& from = const_cast<SceneSpec&>(source); // only read, as in tooLarge
+    switch (param.type) {
+    case ParameterType::Integer: param.integerIn(scene) = param.integerIn(from); break;
+    case ParameterType::Number:
+        param.numberIn(scene) = param.numberIn(from);
+        if (key == "radius")
+            scene.radiusFromFrame = source.radiusFromFrame;
+        break;
+    case ParameterType::Pair:
+        param.pairIn(scene) = param.pairIn(from);
+        if (key == "center")
+            scene.centerFromFrame = source.centerFromFrame;
+        break;
+    case ParameterType::Choice: scene.grab = source.grab; break;
+    case ParameterType::Chain: scene.chain = source.chain; break;
+    case ParameterType::Legs:
+        for (std::size_t i = 0; i < scene.params.legs.size(); ++i) {
+            scene.params.legs[i].upper = source.params.legs[i].upper;
+            scene.params.legs[i].lower = source.params.legs[i].lower;
+        }
+        break;
+    case ParameterType::AngleLimits:
+        for (const AngleLimitParameter& limit : angleLimits())
+            limit.setIn(scene, limit.in(source));
+        break;
+    case ParameterType::Obstacles: scene.obstacles = source.obstacles; break;
+    case ParameterType::Shapes: scene.shapes = source.shapes; break;
+    }
+    return checkedScene(std::move(scene));
+}
+
+Expected<SceneSpec> withStableSettings(SceneSpec scene, const Json& stable)
+{
+    auto ok = readStable(scene, stable);
     if (!ok)
         return ok.error();
     return scene;
@@ -632,106 +745,6 @@ Expected<SceneSpec> withBodies(SceneSpec scene, int bodies)
     if (!ok)
         return ok.error();
     return scene;
-}
-
-Json sceneToJson(const SceneSpec& s)
-{
-    const FrogParams& p = s.params;
-    Json params = Json::object();
-    SceneSpec& values = const_cast<SceneSpec&>(s); // only read, as in tooLarge
-    for (const std::string& key : s.paramKeys) {
-        const SceneParameter* param = findSceneParameter(key);
-        if (!param)
-            continue;
-        switch (param->type) {
-        case ParameterType::Integer: params.set(key, param->integerIn(values)); break;
-        case ParameterType::Number:
-            if (key == "radius" && s.radiusFromFrame)
-                params.set(key, kFromFrame);
-            else
-                params.set(key, param->numberIn(values));
-            break;
-        case ParameterType::Pair:
-            if (key == "center" && s.centerFromFrame)
-                params.set(key, kFromFrame);
-            else
-                params.set(key, pointJson(param->pairIn(values)));
-            break;
-        case ParameterType::Choice:
-            for (const GrabChoice& c : grabChoices())
-                if (c.mode == s.grab)
-                    params.set(key, c.name);
-            break;
-        case ParameterType::Chain: {
-            Json a = Json::array();
-            for (double l : s.chain)
-                a.push(l);
-            params.set(key, a);
-            break;
-        }
-        case ParameterType::Legs: {
-            Json legs = Json::object();
-            for (std::size_t i = 0; i < legParts().size(); ++i)
-                legs.set(legParts()[i].name, pointJson(Point(p.legs[2 * i].upper, p.legs[2 * i].lower)));
-            params.set(key, legs);
-            break;
-        }
-        case ParameterType::AngleLimits: {
-            Json limits = Json::object();
-            for (const AngleLimitParameter& l : angleLimits())
-                if (l.pendulum() == (s.model == SceneModel::Pendulum))
-                    limits.set(l.name, pointJson(l.in(s)));
-            params.set(key, limits);
-            break;
-        }
-        case ParameterType::Obstacles: {
-            Json list = Json::array();
-            for (const auto& o : s.obstacles)
-                list.push(Json::object().set(o.closed ? "polygon" : "segment", pointsJson(o.points)));
-            params.set(key, list);
-            break;
-        }
-        case ParameterType::Shapes: {
-            Json list = Json::array();
-            for (const auto& sh : s.shapes)
-                list.push(Json::object().set("name", sh.name).set("points", pointsJson(sh.points)).set("at", pointJson(sh.at)));
-            params.set(key, list);
-            break;
-        }
-        }
-    }
-    Json components = Json::array();
-    for (const SceneComponent c : s.components)
-        components.push(std::string(sceneComponentName(c)));
-    const char* model = s.model == SceneModel::Stage      ? "stage"
-                        : s.model == SceneModel::Body     ? "body"
-                        : s.model == SceneModel::Pendulum ? "pendulum"
-                                                          : "frog";
-    Json doc = Json::object();
-    doc.set("name", s.name)
-        .set("section", s.section)
-        .set("title", s.title)
-        .set("description", s.description)
-        .set("model", model)
-        .set("order", s.order)
-        .set("components", components)
-        .set("params", params);
-    if (s.sketchFirstFrame)
-        doc.set(kFirstFrameKey, kSketchFrame);
-    if (!s.stable.isDefault()) {
-        doc.set("stable", stableSettingsToJson(s.stable));
-    }
-    return doc;
-}
-
-Json stableSettingsToJson(const StableSettings& stable)
-{
-    Json out = Json::object();
-    const auto key = [](StableKnob k) { return std::string(stableKnobName(k)); };
-    out.set(key(StableKnob::Substeps), stable.substeps).set(key(StableKnob::EdgeCompliance), stable.edgeCompliance);
-    if (stable.edgeDampingRatio != 0) // written only when set, as "stable" itself
-        out.set(key(StableKnob::EdgeDampingRatio), stable.edgeDampingRatio);
-    return out;
 }
 
 } // namespace granota

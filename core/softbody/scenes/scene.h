@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace granota {
@@ -92,11 +93,27 @@ Expected<SceneSpec> parseScene(const Json& doc);
 /// is an error with a message.
 Expected<void> applySetting(SceneSpec& scene, const std::string& keyValue);
 
-/// The scene with its parameter `key` set to `value` (the scene file's form of it), checked as
-/// a scene file is: one edit of the Frog tab's panel or of `--set`, without writing the scene
-/// to JSON and reading it back. A key the scene does not have, or a value it refuses, is an
-/// error with a message; `scene` is taken by value and never half changed.
+/// The scene with its parameter `key` set to `value` in the scene file's form (what `--set` and
+/// a document's "params" give), checked as a scene file is, without writing the scene to JSON
+/// and reading it back. A key the scene does not have, or a value it refuses, is an error with a
+/// message; `scene` is taken by value and never half changed.
 Expected<SceneSpec> withParameter(SceneSpec scene, const std::string& key, const Json& value);
+/// As withParameter, for several keys at once (a document's "params"): all are set, then the
+/// scene is checked once, so that keys that only make sense together (bodies and the frame
+/// that holds them) are taken in any order.
+Expected<SceneSpec> withParameters(SceneSpec scene, const std::vector<std::pair<std::string, Json>>& values);
+/// One number of parameter `key` set to `value` and the scene checked: what one tick of the Frog
+/// tab's parameter panel does, with no JSON on the way. `part` and `index` say which number
+/// (parameterNumber, scene_parameters.h): the leg pair, the angle limit or the link, and the
+/// coordinate; a whole number for Integer, the index of grabChoices() for Choice. Errors and
+/// guarantees as withParameter; a part or index the parameter does not have is an error too.
+Expected<SceneSpec> withParameter(SceneSpec scene, const std::string& key, int part, int index, double value);
+/// The scene with parameter `key` as `source` has it (every number of it, and whether radius or
+/// centre follow the frame), checked: what an undo of the panel's edits gives back.
+Expected<SceneSpec> withParameterOf(SceneSpec scene, const SceneSpec& source, const std::string& key);
+/// The scene with the stable solver's knobs of a scene file's "stable" object (a document's
+/// "stable"), with the reader's checks and messages.
+Expected<SceneSpec> withStableSettings(SceneSpec scene, const Json& stable);
 
 /// `bodies` bodies at the scene's density: where the scene's frame was drawn for fewer,
 /// it grows as frameForBodies() says (core/softbody/scenes/scene_layout.h) so that the bodies fit (a
@@ -105,8 +122,11 @@ Expected<SceneSpec> withParameter(SceneSpec scene, const std::string& key, const
 /// here. Errors as applySetting.
 Expected<SceneSpec> withBodies(SceneSpec scene, int bodies);
 
-/// The scene as its file: only its own keys, with their current values.
+/// The scene as its file: only its own keys, with their current values (scene_writer.cpp).
 Json sceneToJson(const SceneSpec& scene);
+/// How many times sceneToJson has run in this process: a test counts that a parameter tick
+/// writes nothing (issue 35).
+long sceneWriteCount();
 /// The file's "stable" object: {"substeps": n, "edge_compliance": α[, "edge_damping_ratio": ζ
 /// when not 0]} (sceneToJson writes it when the knobs differ from their defaults; a Frog
 /// document always).

@@ -380,6 +380,64 @@ void AngleLimitParameter::setIn(SceneSpec& s, Point q) const
     }
 }
 
+bool AngleLimitParameter::belongsTo(const SceneSpec& s) const { return pendulum() == (s.model == SceneModel::Pendulum); }
+
+const AngleLimitParameter* angleLimitOf(const SceneSpec& s, int part)
+{
+    for (const AngleLimitParameter& l : angleLimits())
+        if (l.belongsTo(s) && part-- == 0)
+            return &l;
+    return nullptr;
+}
+
+int parameterPartCount(const SceneSpec& s, const SceneParameter& p)
+{
+    switch (p.type) {
+    case ParameterType::Legs: return static_cast<int>(legParts().size());
+    case ParameterType::AngleLimits:
+        return static_cast<int>(std::count_if(angleLimits().begin(), angleLimits().end(),
+                                              [&s](const AngleLimitParameter& l) { return l.belongsTo(s); }));
+    case ParameterType::Chain: return static_cast<int>(s.chain.size());
+    case ParameterType::Obstacles:
+    case ParameterType::Shapes: return 0;
+    default: return 1;
+    }
+}
+
+int parameterComponentCount(const SceneParameter& p)
+{
+    return p.type == ParameterType::Pair || p.type == ParameterType::Legs || p.type == ParameterType::AngleLimits ? 2 : 1;
+}
+
+double parameterNumber(const SceneSpec& s, const SceneParameter& p, int part, int index)
+{
+    if (part < 0 || part >= parameterPartCount(s, p) || index < 0 || index >= parameterComponentCount(p))
+        return 0;
+    SceneSpec& values = const_cast<SceneSpec&>(s); // only read: the accessors take a SceneSpec& for the reader's sake
+    const auto coordinate = [index](Point q) { return index == 0 ? q.x : q.y; };
+    switch (p.type) {
+    case ParameterType::Integer: return p.integerIn(values);
+    case ParameterType::Number: return p.numberIn(values);
+    case ParameterType::Pair: return coordinate(p.pairIn(values));
+    case ParameterType::Choice: {
+        const auto& choices = grabChoices();
+        for (std::size_t i = 0; i < choices.size(); ++i)
+            if (choices[i].mode == s.grab)
+                return static_cast<double>(i);
+        return 0;
+    }
+    case ParameterType::Chain: return s.chain[static_cast<std::size_t>(part)];
+    case ParameterType::Legs: { // a pair's two legs have the same lengths (legs 2·part and 2·part + 1)
+        const LegParams& l = s.params.legs[static_cast<std::size_t>(2 * part)];
+        return index == 0 ? l.upper : l.lower;
+    }
+    case ParameterType::AngleLimits: return coordinate(angleLimitOf(s, part)->in(s));
+    case ParameterType::Obstacles:
+    case ParameterType::Shapes: break;
+    }
+    return 0;
+}
+
 const std::vector<GrabChoice>& grabChoices()
 {
     static const std::vector<GrabChoice> choices = {

@@ -106,12 +106,26 @@ struct AngleLimitParameter {
     int leg; ///< FrogParams::legs index (an elbow limit: this leg and the next), or kChain
 
     bool pendulum() const { return leg == kChain; }
+    /// The frog's limits belong to every scene but the pendulum's, the pendulum's to it alone.
+    bool belongsTo(const SceneSpec& s) const;
     /// The limit's [min, max] in `s`; setIn writes it (an elbow limit to both legs of its pair).
     Point in(const SceneSpec& s) const;
     void setIn(SceneSpec& s, Point q) const;
 };
 /// The frog's six (four shoulders, two elbow pairs), then the pendulum's two, in the panel's order.
 const std::vector<AngleLimitParameter>& angleLimits();
+
+/// The numbers a panel shows of parameter `p` in `s`: parts × components. Parts: the leg pairs
+/// (legParts()), the angle limits that belong to the scene (in angleLimits()' order), the links
+/// of the chain, or 1; none for Obstacles and Shapes (the file gives them). Components: 2 for
+/// Pair, Legs and AngleLimits (x and y, upper and lower, min and max), else 1.
+int parameterPartCount(const SceneSpec& s, const SceneParameter& p);
+int parameterComponentCount(const SceneParameter& p);
+/// The number at (part, index) of `p` in `s` (radians for angle limits; the index of
+/// grabChoices() for Choice); what withParameter (scene.h) sets. 0 for a place `p` lacks.
+double parameterNumber(const SceneSpec& s, const SceneParameter& p, int part, int index);
+/// The part-th angle limit of `s` (parameterPartCount), or nullptr.
+const AngleLimitParameter* angleLimitOf(const SceneSpec& s, int part);
 
 /// One value of `grab`.
 struct GrabChoice {
