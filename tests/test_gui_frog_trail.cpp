@@ -2,7 +2,7 @@
 // points swept the frame back and forth every step; stroked as one path with round joins and
 // caps it took 4.7 s a frame (tests/benchmarks/bench_gui.cpp, BM_GuiSeedExplodedTrail; never
 // timed here). The canvas now draws only the segments in the frame, each cut to it, the newest
-// first up to 20 times the frame's width plus height of line (frog_canvas.cpp, kTrailInkBudget).
+// first up to 20 times the frame's width plus height of line (frog_overlay_painter.cpp, kTrailInkBudget).
 // Here: the cut (ui/common/segment_clip.h) on cases worked by hand, the number of segments a
 // blown-up trail draws against a count made here from the trail itself, and an ordinary trail
 // drawn whole.

@@ -139,7 +139,7 @@ private slots:
         }
         QVERIFY2(!candidates.empty(), "the bodies never came near each other");
         settle();
-        // kPairColour (frog_canvas.cpp), the colour the boxes and links are drawn in.
+        // kPairColour (frog_overlay_painter.cpp), the colour the boxes and links are drawn in.
         const QColor pairColour(0xc2, 0x18, 0x5b);
         int drawn = 0;
         for (const PathRecorder::Shape& shape : recorded(canvas, canvas->size()))

@@ -105,8 +105,8 @@ public:
     virtual std::optional<EdgeSpring> edgeSpring(int) const { return std::nullopt; }
     /// Every body's vertices and every chain's joints.
     std::size_t pointCount() const;
-    /// The counted work of one step, pointCount() × substeps(): what the frog canvas budgets
-    /// its frames by (ui/frog/frog_canvas.cpp). The stable solver costs 45 ns to 480 ns per unit
+    /// The counted work of one step, pointCount() × substeps(): what the frog's run budgets
+    /// its frames by (ui/frog/frog_run.cpp). The stable solver costs 45 ns to 480 ns per unit
     /// (a body of 100 sides to one of 10000: 37 µs to 39 ms a step), the seed less.
     long workPerStep() const { return static_cast<long>(pointCount()) * substeps(); }
 

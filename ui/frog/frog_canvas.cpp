@@ -1,13 +1,8 @@
 #include "ui/frog/frog_canvas.h"
-#include "ui/common/segment_clip.h"
-#include "ui/common/error_text.h"
-#include "core/base/math_constants.h"
 #include "ui/common/focus_frame.h"
 #include "ui/common/number_text.h"
 #include "ui/common/presentation_scale.h"
 
-#include "core/softbody/outline.h"
-#include "core/softbody/outline_sampling.h"
 #include "core/softbody/polygon_geometry.h"
 
 #include <QAbstractSpinBox>
@@ -26,219 +21,89 @@ namespace granota::ui {
 
 namespace {
 
-/// Samples of the per-frame least-squares Bézier curve (§4.9's abandoned option).
-constexpr int kFitSamples = 160;
-/// Annex II, Pota.dibuixar: `factor = 7`, the half-thickness of a leg.
-constexpr double kLegFactor = FrogCanvas::kLegHalfWidth;
-/// The head image's size in Annex II belongs to the frog's target area, Areal = 20000 px².
-constexpr double kSeedTargetArea = 20000;
-/// Velocity arrows: the step's displacement drawn this many times longer.
-constexpr double kVelocityScale = 4;
 /// How often the text overlays and the averaged timings refresh.
 constexpr qint64 kTextRefreshNs = 250'000'000;
-
 const QColor kLetterbox(0x26, 0x30, 0x36);
 const QColor kSkyTop(0xb9, 0xdc, 0xee);                  // FrogArt's sky, top
-const QColor kFrameCaptionColour(0x26, 0x30, 0x36, 190); // the frame's caption, over the sky
-constexpr double kPanelMargin = 8;                       // the text panel: from the frame's corner, px (× presentation scale)
-constexpr double kPanelPad = 6;                          // and inside it
 const QColor kMudBottom(0x86, 0x6a, 0x44);               // FrogArt's bank, bottom
-const QColor kEdgeColour(0xff, 0x8a, 0x1e);
-const QColor kVelocityColour(0x1f, 0x5f, 0xd8);
-const QColor kGhostColour(0x5a, 0x2d, 0x82);
-const QColor kTrailColour(0xe0, 0x6c, 0x00);
-const QColor kPairColour(0xc2, 0x18, 0x5b);
-/// The thinnest the bare polygon of §4.1–4.7 is drawn, in widget pixels (before presentation mode's scale).
-constexpr double kInkMinimumPx = 2.5;
-/// How much of the trail is drawn at most: this many times the frame's width plus height.
-constexpr double kTrailInkBudget = 20;
-const QColor kProtractorColour(0x1e, 0x5a, 0x9c);
-const QColor kMarkedBodyColour(0xd8, 0x1b, 0x60); // the body the plots show alone
-const QColor kAtLimitColour(0xc6, 0x28, 0x28);
-const QColor kRulerColour(0x21, 0x21, 0x21);
-
-/// Samples per Catmull-Rom segment: smooth for the seed's 10 vertices, few for 200.
-int samplesPerSegment(std::size_t vertices)
-{
-    return std::clamp(static_cast<int>(1200 / std::max<std::size_t>(vertices, 1)), 2, 12);
-}
-
-QPointF q(const Point& p) { return QPointF(p.x, p.y); }
+const QColor kFrameCaptionColour(0x26, 0x30, 0x36, 190); // the frame's caption, over the sky
 
 } // namespace
 
-FrogCanvas::FrogCanvas(QWidget* parent) : QWidget(parent)
+FrogCanvas::FrogCanvas(FrogRun* run, QWidget* parent) : QWidget(parent), m_run(run)
 {
     setMouseTracking(true); // Processing's mouseX/mouseY are always current (§4.1, §4.13)
     setFocusPolicy(Qt::StrongFocus);
     setDrawsOwnFocusFrame(this);
     setAttribute(Qt::WA_OpaquePaintEvent);
-    m_timer.setTimerType(Qt::PreciseTimer);
-    connect(&m_timer, &QTimer::timeout, this, &FrogCanvas::tick);
     m_clock.start();
     m_textClock.start();
     buildPens();
+    observe();
+}
+
+FrogCanvas::FrogCanvas(QWidget* parent) : FrogCanvas(new FrogRun, parent) { m_run->setParent(this); }
+
+void FrogCanvas::observe()
+{
+    connect(m_run, &FrogRun::stepped, this, [this] {
+        refreshTexts();
+        update();
+    });
+    connect(m_run, &FrogRun::frameRan, this, [this] {
+        if (m_textClock.nsecsElapsed() >= kTextRefreshNs)
+            refreshTexts();
+        update();
+    });
+    connect(m_run, &FrogRun::changed, this, [this] {
+        refreshTexts();
+        update();
+    });
+    connect(m_run, &FrogRun::runShown, this, &FrogCanvas::runShown);
+    connect(m_run, &FrogRun::grabLost, this, &FrogCanvas::letGo);
 }
 
 FrogCanvas::~FrogCanvas() = default;
 
-Expected<RecordedRun> FrogCanvas::recordRun(std::unique_ptr<Simulation> simulation, long work)
-{
-    auto run = RecordedRun::adopt(std::move(simulation), int(std::clamp<long>(kScrubWork / std::max(1L, work), 1, 100)));
-    if (run)
-        run->limitSnapshotCost(RecordedRun::kSnapshotCostShare);
-    return run;
-}
-
-void FrogCanvas::setSimulation(std::unique_ptr<Simulation> simulation)
-{
-    m_run.reset();
-    if (simulation) {
-        const long work = std::max<long>(1, simulation->workPerStep());
-        const std::size_t points = std::max<std::size_t>(1, simulation->pointCount());
-        auto run = recordRun(std::move(simulation), work);
-        if (run) {
-            m_run = std::make_unique<RecordedRun>(std::move(run).value());
-            m_run->setMaxSnapshots(kSnapshotBytes / (points * kSnapshotBytesPerPoint));
-        }
-    }
-    rebuildGhost();
-    if (sim() && sim()->scene().name != m_trailScene) { // another stage: its own default point
-        m_trailScene = sim()->scene().name;
-        m_trailPoint.index = -1;
-    }
-    restartTrail();
-    m_frameCount = 0;
-    m_series.clear();
-    if (sim() && m_recording)
-        m_series.record(*sim());
-    m_startAreaError = sim() && sim()->bodyCount() > 0 ? sim()->readouts().areaErrorPercent : 0;
-    runShown(true);
-}
-
-std::size_t FrogCanvas::KeptRun::bytes() const
-{
-    std::size_t bytes = 0;
-    for (const RecordedRun* r : {run.get(), ghost.get()})
-        if (r)
-            bytes += (r->snapshotCount() + 1) * r->simulation().pointCount() * kSnapshotBytesPerPoint;
-    return bytes;
-}
-
-std::unique_ptr<FrogCanvas::KeptRun> FrogCanvas::takeRun()
-{
-    if (!m_run)
-        return nullptr;
-    auto kept = std::make_unique<KeptRun>();
-    kept->run = std::move(m_run);
-    kept->ghost = std::move(m_ghost);
-    std::swap(kept->series, m_series); // the plots read m_series: its contents move, not the object
-    kept->trail = std::move(m_trail);
-    kept->trailPoint = m_trailPoint;
-    kept->trailScene = m_trailScene;
-    kept->frameCount = m_frameCount;
-    kept->startAreaError = m_startAreaError;
-    return kept;
-}
-
-std::unique_ptr<FrogCanvas::KeptRun> FrogCanvas::replaceRun(std::unique_ptr<Simulation> simulation)
-{
-    std::unique_ptr<KeptRun> kept = takeRun();
-    setSimulation(std::move(simulation));
-    return kept;
-}
-
-std::unique_ptr<FrogCanvas::KeptRun> FrogCanvas::restoreRun(std::unique_ptr<KeptRun> kept)
-{
-    if (!kept || !kept->run)
-        return kept;
-    std::unique_ptr<KeptRun> replaced = takeRun();
-    m_run = std::move(kept->run);
-    m_ghost = std::move(kept->ghost);
-    if (m_overlays.ghost != bool(m_ghost)) // the overlay was turned since the run was set aside
-        rebuildGhost();
-    std::swap(m_series, kept->series);
-    if (m_recording != !m_series.samples().empty()) { // the plots were shown or hidden since
-        m_series.clear();
-        if (m_recording)
-            m_series.record(*sim());
-    }
-    m_trail = std::move(kept->trail);
-    m_trailPoint = kept->trailPoint;
-    m_trailScene = kept->trailScene;
-    if (!m_overlays.trail || m_trail.empty()) // the overlay was turned since
-        restartTrail();
-    m_frameCount = kept->frameCount;
-    m_startAreaError = kept->startAreaError;
-    runShown(false);
-    return replaced;
-}
-
 void FrogCanvas::runShown(bool fresh)
 {
-    updateWork();
-    m_pacer.restart();
-    m_fitter.reset();
-    m_previousValid = false;
+    m_scenePainter.restart();
     m_pressed = false;
     m_keyboardHeld = false;
     m_spawnHeld = false;
-    m_fitNsSum = 0;
-    m_fits = 0;
-    m_fitShownUs = 0;
-    m_backgroundSize = QSize(); // the frame may have another size
     // Processing's mouseX/mouseY hold from the first frame (§4.1, §4.13); a run brought back
     // is not sent one (recorded, it would cut off the run's recorded future).
-    if (fresh && m_run && m_mouseKnown && underMouse())
-        send(InputKind::Move, m_mouse);
+    if (fresh && sim() && m_mouseKnown && underMouse())
+        m_run->send(InputKind::Move, m_mouse);
     m_reportedRadius = -1;
     reportMouseRadius();
     unsetCursor();
     refreshTexts();
-    updateTimer();
-    update();
-    if (!fresh)
-        emit timelineChanged();
-}
-
-void FrogCanvas::setRunning(bool running)
-{
-    m_running = running;
-    m_lastFrameNs = -1;
-    updateTimer();
-    refreshTexts();
     update();
 }
 
-void FrogCanvas::step()
+void FrogCanvas::letGo()
 {
-    advance();
-    refreshTexts();
-    update();
+    m_pressed = false;
+    m_keyboardHeld = false;
+    m_spawnHeld = false;
+    unsetCursor();
+    reportMouseRadius();
 }
 
 void FrogCanvas::setOverlays(const Overlays& overlays)
 {
-    const bool ghostChanged = overlays.ghost != m_overlays.ghost, trailChanged = overlays.trail != m_overlays.trail;
     m_overlays = overlays;
-    if (ghostChanged) {
-        rebuildGhost();
-        updateWork();
-    }
-    if (trailChanged)
-        restartTrail();
-    if (!overlays.velocities)
-        m_previousValid = false;
+    m_run->setGhostShown(overlays.ghost);
+    m_run->setTrailShown(overlays.trail);
+    m_run->setKeepsPrevious(overlays.velocities);
     refreshTexts();
     update();
 }
 
 void FrogCanvas::setBezierOutline(BezierOutline mode)
 {
-    m_bezier = mode;
-    m_fitNsSum = 0;
-    m_fits = 0;
-    m_fitShownUs = 0;
+    m_scenePainter.setBezierOutline(mode);
     refreshTexts();
     update();
 }
@@ -253,242 +118,12 @@ void FrogCanvas::setPresentation(bool on)
 
 void FrogCanvas::buildPens()
 {
-    const double k = m_style.scale;
-    m_art.setLineScale(k);
+    m_scenePainter.setScale(m_style.scale);
+    m_overlayPainter.setStyle(m_style.scale, m_style.labelFont(), font());
     m_framePen = QPen(QColor(0x26, 0x30, 0x36, 45), 1);
-    m_edgePen = QPen(kEdgeColour, 2 * k);
-    m_edgePen.setCosmetic(true);
-    m_velocityPen = QPen(kVelocityColour, 2 * k, Qt::SolidLine, Qt::RoundCap);
-    m_velocityPen.setCosmetic(true);
-    m_ringPen = QPen(QColor(0x1c, 0x2a, 0x33), 1.2 * k);
-    m_ringPen.setCosmetic(true);
-    m_numberPen = QPen(QColor(0x10, 0x18, 0x1c));
-    m_markPen = QPen(Qt::white, 2 * k);
-    m_panelBrush = QBrush(QColor(0x10, 0x1c, 0x22, 170));
-    m_trackBrush = QBrush(QColor(255, 255, 255, 50));
-    m_goodBrush = QBrush(QColor(0x6c, 0xc2, 0x4a));
-    m_offBrush = QBrush(QColor(0xf0, 0xa2, 0x3a));
-    m_jointDotBrush = QBrush(QColor(0xff, 0xe0, 0x8a));
-    m_font = m_style.labelFont();
-    m_numberFont = font();
-    m_numberFont.setPixelSize(std::max(1, int(std::lround(11 * k))));
 }
 
-// ---------------------------------------------------------------- time
-
-void FrogCanvas::updateTimer()
-{
-    if (m_running && sim() && isVisible()) {
-        if (!m_timer.isActive()) {
-            m_lastFrameNs = -1;
-            m_timer.start(17);
-        }
-    } else {
-        m_timer.stop();
-    }
-}
-
-void FrogCanvas::tick()
-{
-    // 17, 17, 16 ms: three frames in 50 ms, 60 frames per second on average.
-    m_tick = (m_tick + 1) % 3;
-    m_timer.setInterval(m_tick == 2 ? 16 : 17);
-    const qint64 now = m_clock.nsecsElapsed();
-    if (m_lastFrameNs >= 0) {
-        m_frameNsSum += double(now - m_lastFrameNs);
-        ++m_frames;
-    }
-    m_lastFrameNs = now;
-    runFrame();
-    if (m_textClock.nsecsElapsed() >= kTextRefreshNs)
-        refreshTexts();
-    update();
-}
-
-QStringList FrogCanvas::textLines() const
-{
-    QStringList lines;
-    for (const QStaticText& t : m_lines)
-        lines << t.text();
-    return lines;
-}
-
-void FrogCanvas::runFrame()
-{
-    ++m_frameCount;
-    // Processing's draw(): one actualitza() per frame, a fixed step — slow motion waits a
-    // few frames between steps, fast runs several, and a step that is more work than a frame
-    // holds runs every few frames (StepPacer).
-    for (int n = m_pacer.stepsThisFrame(); n > 0; --n)
-        advance();
-}
-
-int FrogCanvas::framesPerStep() const { return m_pacer.framesPerStep(); }
-
-QString FrogCanvas::speedLabel(double speed)
-{
-    if (speed == 0.125)
-        return QStringLiteral("⅛");
-    if (speed == 0.25)
-        return QStringLiteral("¼");
-    if (speed == 0.5)
-        return QStringLiteral("½");
-    return QLocale().toString(speed, 'g', 3);
-}
-
-int FrogCanvas::workFramesPerStep() const
-{
-    return static_cast<int>(std::max<long>(1, (m_stepWork + kFrameWork - 1) / kFrameWork));
-}
-
-void FrogCanvas::setRecordingSeries(bool on)
-{
-    if (on == m_recording)
-        return;
-    m_recording = on;
-    m_series.clear();
-    if (on && sim())
-        m_series.record(*sim());
-}
-
-bool FrogCanvas::setSpeed(double speed)
-{
-    if (!m_pacer.setSpeed(speed))
-        return false;
-    m_pacer.restart();
-    refreshTexts();
-    update();
-    return true;
-}
-
-void FrogCanvas::advance()
-{
-    if (!sim())
-        return;
-    if (m_overlays.velocities) { // keep x_prev to draw x − x_prev
-        m_previous.clear();
-        m_previousOffset.clear();
-        for (int i = 0; i < sim()->bodyCount(); ++i) {
-            sim()->bodyVertices(i, m_vertices);
-            m_previousOffset.push_back(m_previous.size());
-            m_previous.insert(m_previous.end(), m_vertices.begin(), m_vertices.end());
-        }
-        m_previousOffset.push_back(m_previous.size());
-        m_previousValid = true;
-    }
-    const qint64 t0 = m_clock.nsecsElapsed();
-    const bool replaying = m_run->playingBack();
-    m_run->step();
-    if (m_ghost) // in step with the run: the same events at the same steps
-        while (m_ghost->stepCount() < m_run->stepCount())
-            m_ghost->step();
-    if (replaying) // a recorded spawn adds work
-        updateWork();
-    if (m_recording)
-        m_series.record(*sim());
-    if (m_overlays.trail)
-        if (const auto at = trailPosition()) {
-            m_trail.push_back(*at);
-            while (m_trail.size() > std::size_t(kTrailSteps))
-                m_trail.pop_front();
-        }
-    m_stepNsSum += double(m_clock.nsecsElapsed() - t0);
-    ++m_steps;
-    emit timelineChanged();
-}
-
-void FrogCanvas::restartTrail()
-{
-    m_trail.clear();
-    const Simulation* s = sim();
-    if (s && !trailPosition()) { // none chosen in this scene: the pendulum's tip, else the first body's vertex 0
-        m_trailPoint = TrailPoint{};
-        if (s->bodyCount() == 0 && s->chainCount() > 0) {
-            s->chainJoints(0, m_work);
-            m_trailPoint = {true, 0, std::max(0, int(m_work.size()) - 1)};
-        }
-    }
-    if (m_overlays.trail)
-        if (const auto at = trailPosition())
-            m_trail.push_back(*at);
-}
-
-std::optional<Point> FrogCanvas::trailPosition()
-{
-    const Simulation* s = sim();
-    if (!s)
-        return std::nullopt;
-    std::vector<Point>& points = m_trailBuffer; // reused: this runs every step
-    points.clear();
-    if (m_trailPoint.joint && m_trailPoint.owner < s->chainCount())
-        s->chainJoints(m_trailPoint.owner, points);
-    else if (!m_trailPoint.joint && m_trailPoint.owner < s->bodyCount())
-        s->bodyVertices(m_trailPoint.owner, points);
-    if (m_trailPoint.index < 0 || m_trailPoint.index >= int(points.size()))
-        return std::nullopt;
-    return points[std::size_t(m_trailPoint.index)];
-}
-
-bool FrogCanvas::chooseTrailPoint(Point at)
-{
-    const Simulation* s = sim();
-    if (!s)
-        return false;
-    double best = 30;
-    std::optional<TrailPoint> chosen;
-    const auto consider = [&](bool joint, int owner) {
-        for (std::size_t k = 0; k < m_work.size(); ++k)
-            if (const double d = std::hypot(m_work[k].x - at.x, m_work[k].y - at.y); d <= best) {
-                best = d;
-                chosen = TrailPoint{joint, owner, int(k)};
-            }
-    };
-    for (int i = 0; i < s->bodyCount(); ++i) {
-        s->bodyVertices(i, m_work);
-        consider(false, i);
-    }
-    for (int c = 0; c < s->chainCount(); ++c) {
-        s->chainJoints(c, m_work);
-        consider(true, c);
-    }
-    if (!chosen)
-        return false;
-    m_trailPoint = *chosen;
-    restartTrail();
-    refreshTexts();
-    update();
-    return true;
-}
-
-void FrogCanvas::drawPairs(QPainter& p)
-{
-    sim()->broadPhasePairs(m_pairs);
-    if (m_pairs.empty())
-        return;
-    // Thick enough for a projector (they were 1.2 px): widget pixels, scaled in presentation mode.
-    QPen box(kPairColour, 2.5 * m_style.scale, Qt::DashLine);
-    box.setCosmetic(true);
-    QPen link(kPairColour, 3 * m_style.scale);
-    link.setCosmetic(true);
-    p.save();
-    p.setBrush(Qt::NoBrush);
-    const auto boxAndCentre = [this](int body) {
-        sim()->bodyVertices(body, m_work);
-        const Aabb b = boundingBox(m_work.data(), int(m_work.size()));
-        return std::pair{QRectF(QPointF(b.minX, b.minY), QPointF(b.maxX, b.maxY)),
-                         Point(0.5 * (b.minX + b.maxX), 0.5 * (b.minY + b.maxY))};
-    };
-    for (const auto& [a, b] : m_pairs) {
-        const auto [boxA, centreA] = boxAndCentre(a);
-        const auto [boxB, centreB] = boxAndCentre(b);
-        p.setPen(box);
-        p.drawRect(boxA);
-        p.drawRect(boxB);
-        p.setPen(link);
-        p.drawLine(QPointF(centreA.x, centreA.y), QPointF(centreB.x, centreB.y));
-    }
-    p.restore();
-}
+QStringList FrogCanvas::textLines() const { return m_overlayPainter.lines(); }
 
 std::vector<LinkAngleReading> FrogCanvas::linkAngles(int chain) const
 {
@@ -497,66 +132,6 @@ std::vector<LinkAngleReading> FrogCanvas::linkAngles(int chain) const
     if (sim() && chain >= 0 && chain < sim()->chainCount())
         readLinkAngles(*sim(), chain, joints, out);
     return out;
-}
-
-void FrogCanvas::drawProtractor(QPainter& p, double pixel)
-{
-    // At each limited joint: the range its limits allow, shaded, and the link's angle in
-    // degrees beyond its tip, red when the joint is held at a limit (§4.15). On a small
-    // canvas a label that would cover another is left out, those at a limit first kept.
-    const double k = m_style.scale;
-    const QTransform world = p.worldTransform();
-    std::vector<ProtractorLabel>& labels = m_protractorLabels; // capacities reused frame to frame
-    labels.clear();
-    for (int c = 0; c < sim()->chainCount(); ++c) {
-        readLinkAngles(*sim(), c, m_joints, m_angles);
-        for (std::size_t l = 0; l < m_angles.size(); ++l) {
-            const LinkAngleReading& a = m_angles[l];
-            if (!a.limit)
-                continue;
-            const Point at = m_joints[l];
-            const Point d = m_joints[l + 1] - at;
-            const double length = std::sqrt(d.x * d.x + d.y * d.y);
-            const double radius = std::max(0.6 * length, 8 * k * pixel);
-            const double span = a.limit->max - a.limit->min;
-            const int n = std::max(4, int(std::ceil(span / (kPi / 36))));
-            QPolygonF sector;
-            sector << q(at);
-            for (int i = 0; i <= n; ++i)
-                sector << q(at + radius * seedDirection(a.reference + a.limit->min + span * i / n));
-            const QColor colour = a.atLimit ? kAtLimitColour : kProtractorColour;
-            QColor fill = colour;
-            fill.setAlpha(40);
-            QPen edge(colour, 1.2 * k);
-            edge.setCosmetic(true);
-            p.setPen(edge);
-            p.setBrush(fill);
-            p.drawPolygon(sector);
-            const double degrees = std::round(a.angle * 180 / kPi) + 0.0; // + 0.0: a −0 reads 0
-            labels.push_back({world.map(q(at + (radius + 12 * k * pixel) * seedDirection(a.reference + a.angle))),
-                              displayFixed(degrees, 0) + QStringLiteral("°"), a.atLimit});
-        }
-    }
-    std::stable_partition(labels.begin(), labels.end(), [](const ProtractorLabel& l) { return l.atLimit; });
-    p.save();
-    p.resetTransform();
-    p.setFont(m_numberFont);
-    const QFontMetricsF fm(m_numberFont);
-    std::vector<QRectF>& drawn = m_protractorBoxes;
-    drawn.clear();
-    for (const ProtractorLabel& l : labels) {
-        QRectF box(0, 0, fm.horizontalAdvance(l.text) + 6 * k, fm.height() + 2 * k);
-        box.moveCenter(l.at);
-        if (std::any_of(drawn.begin(), drawn.end(), [&box](const QRectF& r) { return r.intersects(box); }))
-            continue;
-        drawn.push_back(box);
-        p.setPen(Qt::NoPen);
-        p.setBrush(QColor(255, 255, 255, 210));
-        p.drawRoundedRect(box, 3 * k, 3 * k);
-        p.setPen(l.atLimit ? kAtLimitColour : kProtractorColour);
-        p.drawText(box, Qt::AlignCenter, l.text);
-    }
-    p.restore();
 }
 
 void FrogCanvas::setRuler(const std::optional<std::pair<Point, Point>>& ruler)
@@ -573,208 +148,6 @@ QString FrogCanvas::rulerText() const
     const Point d = m_ruler->second - m_ruler->first;
     return tr("%1 px (Δx %2, Δy %3)")
         .arg(displayFixed(std::sqrt(d.x * d.x + d.y * d.y), 1), displayFixed(d.x, 1), displayFixed(d.y, 1));
-}
-
-void FrogCanvas::drawRuler(QPainter& p, double pixel)
-{
-    const double k = m_style.scale;
-    const Point a = m_ruler->first, b = m_ruler->second;
-    const Point d = b - a;
-    const double length = std::sqrt(d.x * d.x + d.y * d.y);
-    const Point across = length > 0 ? Point(-d.y / length, d.x / length) : Point(0, 1);
-    const double tick = 7 * k * pixel;
-    p.save();
-    for (const auto& [colour, width] : {std::pair{QColor(Qt::white), 4.0 * k}, std::pair{kRulerColour, 1.6 * k}}) {
-        QPen pen(colour, width, Qt::SolidLine, Qt::FlatCap);
-        pen.setCosmetic(true);
-        p.setPen(pen);
-        p.drawLine(q(a), q(b));
-        for (const Point& end : {a, b})
-            p.drawLine(q(end - tick * across), q(end + tick * across));
-    }
-    // The length, beside the middle, on a pale box, kept inside the canvas.
-    const QTransform world = p.worldTransform();
-    const QString text = rulerText();
-    p.resetTransform();
-    p.setFont(m_numberFont);
-    const QFontMetricsF fm(m_numberFont);
-    QRectF box(0, 0, fm.horizontalAdvance(text) + 8 * k, fm.height() + 4 * k);
-    box.moveCenter(world.map(q(0.5 * (a + b) + (2.2 * tick) * across)));
-    box.moveLeft(std::clamp(box.left(), 0.0, std::max(0.0, width() - box.width())));
-    box.moveTop(std::clamp(box.top(), 0.0, std::max(0.0, height() - box.height())));
-    p.setPen(QPen(kRulerColour, 1));
-    p.setBrush(QColor(255, 255, 255, 230));
-    p.drawRoundedRect(box, 3 * k, 3 * k);
-    p.drawText(box, Qt::AlignCenter, text);
-    p.restore();
-}
-
-void FrogCanvas::drawTrail(QPainter& p)
-{
-    m_trailSegmentsDrawn = 0;
-    if (m_trail.size() < 2)
-        return;
-    // Square caps: Qt strokes a thick round cap as a curve, a hundred times slower.
-    QPen pen(kTrailColour, 2 * m_style.scale, Qt::SolidLine, Qt::SquareCap, Qt::MiterJoin);
-    pen.setCosmetic(true);
-    // Only what the frame shows (the canvas clips to it), each segment cut to it and stroked
-    // on its own: a blown-up seed's trail crosses the frame hundreds of times, and stroking it
-    // as one path with round joins and caps (its outline overlapping itself everywhere) took
-    // Qt 4.7 s a frame (tests/benchmarks/bench_gui.cpp, BM_GuiSeedExplodedTrail).
-    const SceneSpec& scene = sim()->scene();
-    const double margin = 0.05 * std::max(scene.params.width, scene.params.height);
-    const QRectF frame = QRectF(0, 0, scene.params.width, scene.params.height).adjusted(-margin, -margin, margin, margin);
-    // The newest first, up to kTrailInkBudget frames' worth of line: a trail that sweeps the
-    // frame back and forth every step (a blown-up body) is noise past that, and each sweep
-    // costs a frame's width of stroking; an ordinary trail stays far below it.
-    const double budget = kTrailInkBudget * (scene.params.width + scene.params.height);
-    double ink = 0;
-    m_trailLines.clear();
-    for (std::size_t i = m_trail.size() - 1; i >= 1 && ink < budget; --i)
-        if (const auto part = clipSegment(m_trail[i - 1], m_trail[i], frame)) {
-            m_trailLines.emplace_back(part->first.x, part->first.y, part->second.x, part->second.y);
-            ink += m_trailLines.back().length();
-        }
-    m_trailSegmentsDrawn = int(m_trailLines.size());
-    p.save();
-    p.setPen(pen);
-    p.setBrush(Qt::NoBrush);
-    p.drawLines(m_trailLines.data(), int(m_trailLines.size()));
-    p.restore();
-}
-
-bool FrogCanvas::send(InputKind kind, Point at)
-{
-    bool held = false;
-    for (RecordedRun* run : {m_run.get(), m_ghost.get()}) {
-        if (!run)
-            continue;
-        bool h = false;
-        switch (kind) {
-        case InputKind::Press: h = run->press(at); break;
-        case InputKind::Move: run->move(at); break;
-        case InputKind::Release: run->release(); break;
-        case InputKind::Spawn: run->spawn(at); break;
-        case InputKind::ReleaseSpawn: run->releaseSpawn(); break;
-        case InputKind::Substeps:
-        case InputKind::EdgeCompliance:
-        case InputKind::EdgeDampingRatio: break; // setStableSettings
-        }
-        if (run == m_run.get())
-            held = h;
-    }
-    return held;
-}
-
-bool FrogCanvas::setStableSettings(const StableSettings& settings)
-{
-    if (!m_run || !m_run->setStableSettings(settings))
-        return false;
-    if (m_ghost) // the seed keeps them and steps as before; a stable ghost takes them
-        m_ghost->setStableSettings(settings);
-    updateWork();
-    refreshTexts();
-    update();
-    emit timelineChanged(); // the recording has a new end
-    return true;
-}
-
-void FrogCanvas::rebuildGhost()
-{
-    m_ghost.reset();
-    if (!m_overlays.ghost || !m_run)
-        return;
-    const SolverKind other = sim()->solver() == SolverKind::Seed ? SolverKind::Stable : SolverKind::Seed;
-    auto built = Simulation::create(sim()->scene(), other);
-    if (!built) {
-        emit statusMessage(tr("The other solver cannot run this scene: %1").arg(ErrorText::of(built.error())));
-        return;
-    }
-    const long catchUp = (*built)->workPerStep() * sim()->stepCount();
-    if (catchUp > kGhostCatchUpWork) {
-        emit statusMessage(tr("The ghost starts with the next Reset: the run so far is too long to replay for it."));
-        return;
-    }
-    auto ghost = recordRun(std::move(built).value(), m_stepWork);
-    if (!ghost || !ghost->setRecording(m_run->recording().events, m_run->recordedSteps()).ok() ||
-        !ghost->seek(sim()->stepCount()).ok())
-        return;
-    m_ghost = std::make_unique<RecordedRun>(std::move(ghost).value());
-}
-
-void FrogCanvas::updateWork()
-{
-    m_stepWork = (sim() ? sim()->workPerStep() : 0) + (m_ghost ? m_ghost->simulation().workPerStep() : 0);
-    m_pacer.setWork(m_stepWork, kFrameWork);
-}
-
-bool FrogCanvas::wouldGrab(Point at) const
-{
-    const std::unique_ptr<Simulation> copy = sim()->clone();
-    copy->move(at);
-    return copy->press(at);
-}
-
-bool FrogCanvas::seek(long step)
-{
-    if (!m_run || step < 0 || step > m_run->recordedSteps())
-        return false;
-    const long from = sim()->stepCount();
-    if (step != from) {
-        // Forward by a little with the plots shown: step through, so that each step is
-        // sampled; else restore a snapshot, and the plots keep the samples up to the step.
-        if (m_recording && step > from && (step - from) * std::max(1L, m_stepWork) <= 4 * kScrubWork) {
-            while (sim()->stepCount() < step)
-                advance();
-        } else {
-            (void)m_run->seek(step); // inside the range: cannot fail
-            if (m_ghost && !m_ghost->seek(step).ok())
-                rebuildGhost();
-            if (m_recording) {
-                m_series.truncateAfter(step);
-                if (m_series.samples().empty() || m_series.samples().back().step != step) {
-                    m_series.clear();
-                    m_series.record(*sim());
-                }
-            }
-        }
-    }
-    updateWork();
-    restartTrail(); // the path so far belongs to where the run was
-    m_previousValid = false;
-    m_pressed = false;
-    m_keyboardHeld = false;
-    m_spawnHeld = false;
-    unsetCursor();
-    reportMouseRadius();
-    refreshTexts();
-    update();
-    emit timelineChanged();
-    return true;
-}
-
-bool FrogCanvas::setRecording(std::vector<InputEvent> events, long steps, QString* error)
-{
-    if (!m_run)
-        return false;
-    auto ok = m_run->setRecording(std::move(events), steps);
-    if (!ok) {
-        if (error)
-            *error = ErrorText::of(ok.error());
-        return false;
-    }
-    if (m_recording) {
-        m_series.clear();
-        m_series.record(*sim());
-    }
-    rebuildGhost();
-    updateWork();
-    restartTrail();
-    m_previousValid = false;
-    refreshTexts();
-    update();
-    emit timelineChanged();
-    return true;
 }
 
 void FrogCanvas::setSceneSummary(const QString& summary)
@@ -796,166 +169,26 @@ void FrogCanvas::refreshTexts()
 {
     m_textClock.restart();
     updateAccessibleDescription();
-    const auto mean = [](double& sum, int& count, double unit) {
-        const double v = count > 0 ? sum / count / unit : 0;
-        sum = 0;
-        count = 0;
-        return v;
-    };
-    if (m_frames > 0 || !m_running)
-        m_frameShownMs = mean(m_frameNsSum, m_frames, 1e6);
-    if (m_steps > 0)
-        m_stepShownMs = mean(m_stepNsSum, m_steps, 1e6);
-    if (m_draws > 0)
-        m_drawShownMs = mean(m_drawNsSum, m_draws, 1e6);
-    if (m_fits > 0)
-        m_fitShownUs = mean(m_fitNsSum, m_fits, 1e3);
-    emit fitCostChanged(m_fitShownUs);
-
-    QStringList lines;
-    const auto num = [](double v, int decimals) { return displayFixed(v, decimals); };
-    bool blownUpLine = false; // lines[0], wrapped to the canvas: it must be read whole
-    if (sim()) {
-        const SceneSpec& scene = sim()->scene();
-        if (sim()->solver() == SolverKind::Seed && sim()->bodyCount() > 0) {
-            const double error = sim()->readouts().areaErrorPercent;
-            if ((blownUpLine = blownUp(error, m_startAreaError)))
-                lines << tr("The body has blown up (area error %1 %): press Reset (R), or switch to the Stable solver")
-                             .arg(!std::isfinite(error) ? QStringLiteral("∞")
-                                                        : (error > 0 ? QStringLiteral("+") : QString()) + displayFixed(error, 0));
-        }
-        if (m_ghost) {
-            const Simulation& g = m_ghost->simulation();
-            const bool seed = g.solver() == SolverKind::Seed;
-            if (g.bodyCount() > 0)
-                lines << (seed ? tr("Dashed ghost: the seed solver fed the same mouse, area error %1 %")
-                               : tr("Dashed ghost: the stable solver fed the same mouse, area error %1 %"))
-                             .arg(num(g.readouts().areaErrorPercent, 1));
-            else
-                lines << (seed ? tr("Dashed ghost: the seed solver fed the same mouse")
-                               : tr("Dashed ghost: the stable solver fed the same mouse"));
-        }
-        if (m_overlays.pairs) {
-            sim()->broadPhasePairs(m_pairs);
-            lines << (sim()->solver() == SolverKind::Seed
-                          ? tr("Broad phase: none, the seed has no collisions (§5.2 is future work)")
-                          : tr("Broad phase: %n candidate pairs, %1 contacts", "", int(m_pairs.size()))
-                                .arg(sim()->readouts().contacts));
-        }
-        if (m_overlays.protractor) {
-            int limited = 0, held = 0;
-            for (int c = 0; c < sim()->chainCount(); ++c) {
-                readLinkAngles(*sim(), c, m_joints, m_angles);
-                for (const LinkAngleReading& a : m_angles) {
-                    limited += a.limit ? 1 : 0;
-                    held += a.atLimit ? 1 : 0;
-                }
-            }
-            lines << (limited == 0 ? tr("Protractor: no joint of this scene has angle limits")
-                                   : tr("Protractor: %n of %1 joints held at a limit (red)", "", held).arg(limited));
-        }
-        if (m_overlays.trail)
-            lines << (m_trailPoint.joint ? tr("Trail of joint %1 of chain %2 (Shift+click a point to follow another)")
-                                         : tr("Trail of vertex %1 of body %2 (Shift+click a point to follow another)"))
-                         .arg(m_trailPoint.index)
-                         .arg(m_trailPoint.owner + 1);
-        if (m_run->playingBack())
-            lines << tr("Replaying the recorded run, step %1 of %2: a press on a body takes over from there")
-                         .arg(sim()->stepCount())
-                         .arg(m_run->recordedSteps());
-        if (const int slower = workFramesPerStep(); slower > 1)
-            lines << tr("Running %n× slower than real time: a step of this scene is more work than a frame holds", "", slower);
-        if (m_pacer.speed() < 1)
-            lines << tr("Slow motion, %1× real time: one step every %n frames, the step itself unchanged", "",
-                        m_pacer.framesPerStep())
-                         .arg(speedLabel(m_pacer.speed()));
-        else if (m_pacer.speed() > 1)
-            lines << tr("Fast, %1× real time: %n steps a frame", "", m_pacer.stepsPerFrame())
-                         .arg(speedLabel(m_pacer.effectiveSpeed()));
-        if (scene.has(SceneComponent::OutlineBezier)) {
-            if (m_bezier == BezierOutline::Fit)
-                lines << tr("Least-squares Bézier fit, degree %1 through %2 points: %3 µs per frame")
-                             .arg(m_fitter ? m_fitter->degree() : scene.bezierFitDegree)
-                             .arg(m_fitter ? m_fitter->vertexCount() + 1 : scene.bezierSamples + 1)
-                             .arg(num(m_fitShownUs, 1));
-            else
-                lines << tr("Precomputed Bézier points (§4.9): computed once, nothing per frame");
-        }
-        // With several bodies each figure says whose it is: the area line is the first body's,
-        // the solver's area error the mean over all of them.
-        const int bodies = sim()->bodyCount();
-        if (m_overlays.area && bodies > 0) {
-            const double area = sim()->bodyArea(0), target = sim()->bodyTargetArea(0);
-            if (bodies > 1 && target > 0)
-                lines << tr("Body 1 of %1: area %2 px² · target %3 px² (%4 %)")
-                             .arg(bodies)
-                             .arg(num(area, 0), num(target, 0), num(100 * (area - target) / target, 1));
-            else if (bodies > 1)
-                lines << tr("Body 1 of %1: area %2 px² · target %3 px²").arg(bodies).arg(num(area, 0), num(target, 0));
-            else if (target > 0)
-                lines << tr("Area %1 px² · target %2 px² (%3 %)")
-                             .arg(num(area, 0), num(target, 0), num(100 * (area - target) / target, 1));
-            else
-                lines << tr("Area %1 px² · target %2 px²").arg(num(area, 0), num(target, 0));
-        }
-        if (m_overlays.readouts) {
-            const Readouts r = sim()->readouts();
-            if (bodies > 1)
-                lines << tr("Area error, mean of the %1 bodies, %2 % · largest stretch %3 %")
-                             .arg(bodies)
-                             .arg(num(r.areaErrorPercent, 2), num(100 * r.maxStretch, 1));
-            else
-                lines << tr("Area error %1 % · largest stretch %2 %").arg(num(r.areaErrorPercent, 2), num(100 * r.maxStretch, 1));
-            lines << tr("Largest correction %1 · kinetic energy %2 · potential energy %3")
-                         .arg(num(r.constraintForce, 3), num(r.kineticEnergy, 1), num(r.potentialEnergy, 0));
-        }
-        if (m_overlays.velocities && sim()->bodyCount() == 0)
-            lines << tr("Velocities: this scene has no soft body");
-        if (m_overlays.frameTime) {
-            if (m_running)
-                lines << tr("Frame %1 ms (%2 frames per second) · step %3 ms · drawing %4 ms")
-                             .arg(num(m_frameShownMs, 1), num(m_frameShownMs > 0 ? 1000 / m_frameShownMs : 0.0, 0),
-                                  num(m_stepShownMs, 3), num(m_drawShownMs, 2));
-            else
-                lines << tr("Paused · step %1 ms · drawing %2 ms").arg(num(m_stepShownMs, 3), num(m_drawShownMs, 2));
-            lines << tr("Step %1").arg(sim()->stepCount());
-        }
+    m_run->averageTimings();
+    if (m_draws > 0) {
+        m_drawShownMs = m_drawNsSum / m_draws / 1e6;
+        m_drawNsSum = 0;
+        m_draws = 0;
     }
-    const QFont& font = m_font;
-    m_lines.resize(static_cast<std::size_t>(lines.size()));
-    const double room = std::max(120.0, textPanelRoom());
-    for (int i = 0; i < lines.size(); ++i) {
-        QStaticText& t = m_lines[static_cast<std::size_t>(i)];
-        t.setTextFormat(Qt::PlainText);
-        t.setText(lines[i]);
-        t.setTextWidth(i == 0 && blownUpLine ? room : -1);
-        t.prepare(QTransform(), font);
-        // A line wider than the canvas leaves (large text in presentation mode, a narrow
-        // window) wraps at its spaces instead of running off the canvas.
-        if (t.size().width() > room) {
-            t.setTextWidth(room);
-            t.prepare(QTransform(), font);
-        }
-    }
-    if (blownUpLine != m_blownUp) {
-        m_blownUp = blownUpLine;
-        emit blownUpChanged(m_blownUp);
-    }
+    m_scenePainter.averageFitCost();
+    emit fitCostChanged(fitMicroseconds());
+    const bool blownUpLine = sim() && m_run->blownUp(); // lines[0], wrapped to the canvas: it must be read whole
+    m_overlayPainter.setLines(composeTexts(blownUpLine), std::max(120.0, textPanelRoom()), blownUpLine);
 }
 
 double FrogCanvas::textPanelRoom() const
 {
     // What the text panel's margins and padding leave of the scene's width.
-    return sceneRectIn(QRectF(rect())).width() - 2 * (kPanelMargin + kPanelPad) * m_style.scale;
+    return sceneRectIn(QRectF(rect())).width() -
+           2 * (FrogOverlayPainter::kPanelMargin + FrogOverlayPainter::kPanelPad) * m_style.scale;
 }
 
-double FrogCanvas::textPanelWidth() const
-{
-    double width = 0;
-    for (const QStaticText& t : m_lines)
-        width = std::max(width, t.size().width());
-    return width;
-}
+double FrogCanvas::textPanelWidth() const { return m_overlayPainter.linesWidth(); }
 
 // ---------------------------------------------------------------- coordinates
 
@@ -1016,7 +249,6 @@ void FrogCanvas::renderScene(QPainter& p, const QRectF& target, bool textPanel)
         p.restore();
         return;
     }
-    const double W = sim()->scene().params.width, H = sim()->scene().params.height;
     // Bars above and below continue the sky and the mud; the frame's edge stays visible.
     if (r.top() > target.top() + 0.5) {
         p.fillRect(QRectF(target.left(), target.top(), target.width(), r.top() - target.top()), kSkyTop);
@@ -1028,60 +260,20 @@ void FrogCanvas::renderScene(QPainter& p, const QRectF& target, bool textPanel)
     p.drawRect(r.adjusted(-0.5, -0.5, 0.5, 0.5));
     // The frame's top edge, a thin line across the sky: say what it is.
     p.setPen(kFrameCaptionColour);
-    p.setFont(m_numberFont);
+    p.setFont(m_overlayPainter.numberFont());
     const QRectF caption = frameCaptionRect(target);
     p.drawText(caption, Qt::AlignRight | Qt::AlignVCenter,
-               QFontMetricsF(m_numberFont).elidedText(frameCaption(), Qt::ElideRight, caption.width()));
+               QFontMetricsF(m_overlayPainter.numberFont()).elidedText(frameCaption(), Qt::ElideRight, caption.width()));
     p.restore();
     p.setClipRect(r, Qt::IntersectClip);
-
-    // The background: cached as a pixmap on screen, painted as vectors in every export.
-    if (p.device() == this) {
-        const double dpr = devicePixelRatioF();
-        const QSize px(std::max(1, int(std::ceil(r.width() * dpr))), std::max(1, int(std::ceil(r.height() * dpr))));
-        if (px != m_backgroundSize) {
-            m_background = QPixmap(px);
-            m_background.setDevicePixelRatio(dpr);
-            QPainter bp(&m_background);
-            bp.setRenderHint(QPainter::Antialiasing, true);
-            bp.scale(px.width() / dpr / W, px.height() / dpr / H);
-            m_art.paintBackground(bp, W, H);
-            m_backgroundSize = px;
-        }
-        p.drawPixmap(r, m_background, QRectF(QPointF(0, 0), QSizeF(m_background.size())));
-    } else {
-        p.save();
-        p.translate(r.topLeft());
-        p.scale(r.width() / W, r.height() / H);
-        m_art.paintBackground(p, W, H);
-        p.restore();
-    }
-
-    const QTransform base = p.worldTransform();
-    p.save();
-    p.translate(r.topLeft());
-    const double s = r.width() / W;
-    p.scale(s, s);
-    const double pixel = 1 / s; // one widget pixel in scene pixels
-    drawScene(p, pixel);
-    if (m_ghost)
-        drawGhost(p);
-    if (m_overlays.trail)
-        drawTrail(p);
-    if (m_overlays.pairs)
-        drawPairs(p);
-    drawOverlays(p, pixel);
-    if (m_overlays.protractor)
-        drawProtractor(p, pixel);
-    if (m_ruler)
-        drawRuler(p, pixel);
-    p.restore();
-    p.setWorldTransform(base);
-    // The text panel may run below a small scene (presentation mode on a narrow canvas): it
-    // is clipped to the canvas, not to the scene.
-    p.setClipRect(target);
-    if (textPanel)
-        drawTextPanel(p, r);
+    // One path for the screen and every export: the scene, then what is drawn over it. The
+    // pond is a pixmap on screen only (a vector drawing in an export).
+    const std::optional<Point> look = m_mouseKnown ? std::optional<Point>(m_mouse) : std::nullopt;
+    m_scenePainter.draw(p, *sim(), r, p.device() == this ? devicePixelRatioF() : 0.0, look);
+    const FrogOverlayPainter::Frame frame{*m_run,         m_overlays, m_scenePainter.art(),
+                                          m_markedBody,   m_ruler,    m_ruler ? rulerText() : QString(),
+                                          QSizeF(size()), textPanel};
+    m_overlayPainter.draw(p, frame, r, target);
     p.restore();
 }
 
@@ -1091,382 +283,24 @@ QRectF FrogCanvas::frameCaptionRect(const QRectF& target) const
 {
     // Just above the line when the sky bar over the frame has room for it, else just below.
     const QRectF r = sceneRectIn(target);
-    const double h = QFontMetricsF(m_numberFont).height() + 2, margin = 6 * m_style.scale;
+    const double h = QFontMetricsF(m_overlayPainter.numberFont()).height() + 2, margin = 6 * m_style.scale;
     const double top = r.top() - target.top() >= h + 2 ? r.top() - h - 1 : r.top() + 1;
     return QRectF(r.left() + margin, top, r.width() - 2 * margin, h);
 }
 
-void FrogCanvas::drawGhost(QPainter& p)
-{
-    // The other solver's bodies and chains, pale and dashed over this one's: where they part
-    // is what the two solvers do differently with the same input.
-    const Simulation& g = m_ghost->simulation();
-    const double k = m_style.scale;
-    QPen pen(kGhostColour, 2.5 * k, Qt::DashLine, Qt::RoundCap, Qt::RoundJoin);
-    pen.setCosmetic(true);
-    p.save();
-    p.setPen(pen);
-    p.setBrush(QColor(255, 255, 255, 70));
-    for (int i = 0; i < g.bodyCount(); ++i) {
-        g.bodyVertices(i, m_work);
-        fillPath(m_work, true);
-        p.drawPath(m_path);
-    }
-    p.setBrush(Qt::NoBrush);
-    for (int c = 0; c < g.chainCount(); ++c) {
-        g.chainJoints(c, m_work);
-        fillPath(m_work, false);
-        p.drawPath(m_path);
-    }
-    p.restore();
-}
-
-void FrogCanvas::fillPath(const std::vector<Point>& points, bool close)
-{
-    m_path.clear();
-    m_path.setFillRule(Qt::WindingFill);
-    m_path.reserve(static_cast<int>(points.size()) + 1);
-    bool started = false;
-    for (const Point& pt : points) {
-        if (!isFinite(pt))
-            continue;
-        if (started) {
-            m_path.lineTo(pt.x, pt.y);
-        } else {
-            m_path.moveTo(pt.x, pt.y);
-            started = true;
-        }
-    }
-    if (close && started)
-        m_path.closeSubpath();
-}
-
-void FrogCanvas::drawScene(QPainter& p, double pixel)
-{
-    const SceneSpec& scene = sim()->scene();
-    if (scene.has(SceneComponent::Obstacles))
-        drawObstacles(p);
-    if (scene.model == SceneModel::Pendulum) {
-        drawPendulum(p, pixel);
-        return;
-    }
-    // Annex II, Granota.dibuixar: back legs, body, front legs, head.
-    const bool frog = scene.model == SceneModel::Frog && sim()->chainCount() >= 4;
-    if (frog) {
-        drawLeg(p, 2, pixel);
-        drawLeg(p, 3, pixel);
-    }
-    for (int i = 0; i < sim()->bodyCount(); ++i)
-        drawBody(p, i, pixel);
-    if (frog) {
-        drawLeg(p, 0, pixel);
-        drawLeg(p, 1, pixel);
-    }
-    if (scene.model == SceneModel::Frog && scene.has(SceneComponent::Head) && sim()->bodyCount() > 0) {
-        sim()->bodyVertices(0, m_vertices);
-        drawHead(p, 0);
-    }
-    drawMarkedBody(p, pixel);
-}
-
 void FrogCanvas::setMarkedBody(int body)
 {
-    m_series.setBodiesAsked(body >= 0); // a scene of many bodies keeps them only while asked
+    m_run->setSeriesBodiesAsked(body >= 0); // a scene of many bodies keeps them only while asked
     if (body == m_markedBody)
         return;
     m_markedBody = body;
     update();
 }
 
-void FrogCanvas::drawMarkedBody(QPainter& p, double pixel)
-{
-    if (m_markedBody < 0 || m_markedBody >= sim()->bodyCount())
-        return;
-    sim()->bodyVertices(m_markedBody, m_work);
-    if (m_work.size() < 3 || !std::all_of(m_work.begin(), m_work.end(), [](Point v) { return isFinite(v); }))
-        return;
-    const Aabb box = boundingBox(m_work.data(), int(m_work.size()));
-    // Sizes in screen px (`pixel`: scene px per screen px), so the mark reads at any zoom.
-    const double grow = 6 * m_style.scale * pixel;
-    const QRectF around(QPointF(box.minX - grow, box.minY - grow), QPointF(box.maxX + grow, box.maxY + grow));
-    p.save();
-    QPen pen(kMarkedBodyColour, 2.5 * m_style.scale, Qt::DashLine);
-    pen.setCosmetic(true);
-    p.setPen(pen);
-    p.setBrush(Qt::NoBrush);
-    p.drawRoundedRect(around, grow, grow);
-    // Its number, as the plots' list names it, above the box (below it at the frame's top).
-    QFont font = p.font();
-    font.setBold(true);
-    font.setPixelSize(std::max(1, int(std::lround(15 * m_style.scale * pixel))));
-    p.setFont(font);
-    const QString label = QString::number(m_markedBody + 1);
-    const QFontMetricsF metrics(font);
-    const QSizeF size(metrics.horizontalAdvance(label) + 8 * m_style.scale * pixel, metrics.height() + 2 * m_style.scale * pixel);
-    const double top = around.top() - size.height() >= 0 ? around.top() - size.height() : around.bottom();
-    const QRectF tag(QPointF(around.center().x() - size.width() / 2, top), size);
-    p.setPen(Qt::NoPen);
-    p.setBrush(kMarkedBodyColour);
-    p.drawRoundedRect(tag, 3 * m_style.scale * pixel, 3 * m_style.scale * pixel);
-    p.setPen(Qt::white);
-    p.drawText(tag, Qt::AlignCenter, label);
-    p.restore();
-}
-
-void FrogCanvas::drawHead(QPainter& p, int body)
-{
-    const std::size_t n = m_vertices.size();
-    if (n < 3 || !isFinite(m_vertices[0]) || !isFinite(m_vertices[1]) || !isFinite(m_vertices[n - 1]))
-        return;
-    const HeadPose pose = headPose(m_vertices);
-    double target = sim()->bodyTargetArea(body);
-    if (!(target > 0))
-        target = sim()->bodyArea(body);
-    const double scale = std::clamp(std::sqrt(std::max(target, 0.0) / kSeedTargetArea), 0.12, 3.0);
-    const QPointF at = q(pose.centre);
-    const QPointF look = m_mouseKnown ? q(m_mouse) : at + QPointF(0, 200);
-    m_art.paintHead(p, at, pose.angle, scale, look);
-}
-
 void FrogCanvas::paintHeadOf(QPainter& p, int index)
 {
-    if (!sim() || index < 0 || index >= sim()->bodyCount())
-        return;
-    sim()->bodyVertices(index, m_vertices);
-    drawHead(p, index);
-}
-
-HeadPose FrogCanvas::headPose(const std::vector<Point>& vertices) const
-{
-    // The seed draws the head as Annex II does: upright, its 138 × 93 box at vertex 0 − (69, 46)
-    // (head_pose.h). The stable solver keeps Granota's head, turned with the body.
-    return sim()->solver() == SolverKind::Seed ? annexIIHeadPose(vertices) : turningHeadPose(vertices);
-}
-
-HeadPose FrogCanvas::headPose(int body)
-{
-    sim()->bodyVertices(body, m_work);
-    return headPose(m_work);
-}
-
-const std::vector<Point>& FrogCanvas::bodyOutline(int body)
-{
-    const SceneSpec& scene = sim()->scene();
-    sim()->bodyVertices(body, m_vertices);
-    const std::size_t n = m_vertices.size();
-    if (scene.has(SceneComponent::OutlineBezier) && m_bezier == BezierOutline::Fit && n >= 3) {
-        // §4.9, the abandoned option: every frame, the least-squares Bézier curve through the
-        // closed outline (M⁺ computed once per vertex count), then sampled by De Casteljau.
-        const int degree = std::clamp(scene.bezierFitDegree, 1, static_cast<int>(n));
-        if (!m_fitter || m_fitter->vertexCount() != static_cast<int>(n) || m_fitter->degree() != degree)
-            m_fitter = std::make_unique<OutlineFitter>(static_cast<int>(n), degree);
-        const qint64 t0 = m_clock.nsecsElapsed();
-        m_fitter->fit(m_vertices, m_fitControl);
-        sampleBezierCurve(m_fitControl, kFitSamples, m_work, m_fitCurve);
-        m_fitNsSum += double(m_clock.nsecsElapsed() - t0);
-        ++m_fits;
-        return m_fitCurve;
-    }
-    if (scene.has(SceneComponent::OutlineCatmullRom) && n >= 3) {
-        // The seed's curveVertex outline (Annex II, Poligon.dibuixar) for §4.12 and the frog;
-        // the future work of §5.2 draws the smooth closed curve of Def 2.10.
-        const int samples = samplesPerSegment(n);
-        if (scene.model == SceneModel::Frog || scene.section == "4.12")
-            sampleSeedBodyOutline(m_vertices, samples, m_outline);
-        else
-            sampleClosedCatmullRomOutline(m_vertices, samples, 0.5, m_outline);
-        return m_outline;
-    }
-    return m_vertices; // §4.1–4.8 and the precomputed Bézier points: the polygon itself
-}
-
-void FrogCanvas::drawBody(QPainter& p, int body, double pixel)
-{
-    const SceneSpec& scene = sim()->scene();
-    const std::vector<Point>& outline = bodyOutline(body);
-    if (m_vertices.size() < 2)
-        return;
-    fillPath(outline, true);
-    if (scene.has(SceneComponent::Fill)) {
-        p.setBrush(m_art.skin(body));
-        p.setPen(m_art.bodyPen());
-    } else {
-        p.setBrush(Qt::NoBrush);
-        // §4.1–4.7's bare polygon: never thinner than kInkMinimumPx on screen (its 3 scene px
-        // were 1 px on a small canvas, too faint for a projector), thicker in presentation mode.
-        QPen ink = m_art.inkPen();
-        ink.setWidthF(std::max(ink.widthF(), kInkMinimumPx * m_style.scale * pixel));
-        p.setPen(ink);
-    }
-    p.drawPath(m_path);
-    if (scene.has(SceneComponent::Head) && scene.model != SceneModel::Frog)
-        drawHead(p, body);
-}
-
-void FrogCanvas::drawLeg(QPainter& p, int chain, double)
-{
-    sim()->chainJoints(chain, m_joints);
-    if (m_joints.size() < 3)
-        return;
-    const Point &m = m_joints[0], &e = m_joints[1], &w = m_joints[2];
-    if (!isFinite(m) || !isFinite(e) || !isFinite(w))
-        return;
-    const Point bone = w - e;
-    const double footAngle = norm(bone) > 1e-9 ? std::atan2(bone.y, bone.x) : kPi / 2;
-    m_art.paintFoot(p, q(w), footAngle, chain < 2 ? 0.8 : 1.0);
-    sampleLegOutline(m, e, w, kLegFactor, 6, m_outline);
-    fillPath(m_outline, true);
-    p.setBrush(m_art.skin(0));
-    p.setPen(m_art.legPen());
-    p.drawPath(m_path);
-}
-
-void FrogCanvas::drawPendulum(QPainter& p, double)
-{
-    for (int c = 0; c < sim()->chainCount(); ++c) {
-        sim()->chainJoints(c, m_joints);
-        if (m_joints.empty())
-            continue;
-        fillPath(m_joints, false);
-        p.setBrush(Qt::NoBrush);
-        p.setPen(m_art.rodPen());
-        p.drawPath(m_path);
-        p.setPen(m_art.jointPen());
-        for (std::size_t k = 1; k < m_joints.size(); ++k) {
-            if (!isFinite(m_joints[k]))
-                continue;
-            p.setBrush(m_art.jointBrush());
-            p.drawEllipse(q(m_joints[k]), 10 * m_style.scale, 10 * m_style.scale);
-        }
-        if (isFinite(m_joints[0])) { // the clau the pendulum hangs from (§4.14)
-            p.setBrush(m_art.pinBrush());
-            p.drawEllipse(q(m_joints[0]), 8 * m_style.scale, 8 * m_style.scale);
-            p.setBrush(m_art.whiteBrush());
-            p.setPen(Qt::NoPen);
-            p.drawEllipse(q(m_joints[0]), 3 * m_style.scale, 3 * m_style.scale);
-        }
-    }
-}
-
-void FrogCanvas::drawObstacles(QPainter& p)
-{
-    for (const ObstacleSpec& o : sim()->obstacles()) {
-        fillPath(o.points, o.closed);
-        if (o.closed) {
-            p.setBrush(m_art.stoneBrush());
-            p.setPen(m_art.stonePen());
-            p.drawPath(m_path);
-        } else {
-            p.setBrush(Qt::NoBrush);
-            p.setPen(m_art.logPen());
-            p.drawPath(m_path);
-            p.setPen(m_art.logHighlightPen());
-            p.drawPath(m_path);
-        }
-    }
-}
-
-void FrogCanvas::drawOverlays(QPainter& p, double pixel)
-{
-    const Overlays& o = m_overlays;
-    if (!o.vertices && !o.springs && !o.velocities)
-        return;
-    const double k = m_style.scale;
-    const double dot = 3.5 * k * pixel;
-
-    const auto drawPoints = [&](const std::vector<Point>& pts, bool closed) {
-        if (o.springs) {
-            fillPath(pts, closed);
-            p.setBrush(Qt::NoBrush);
-            p.setPen(m_edgePen);
-            p.drawPath(m_path);
-        }
-    };
-    for (int i = 0; i < sim()->bodyCount(); ++i) {
-        sim()->bodyVertices(i, m_vertices);
-        drawPoints(m_vertices, true);
-        if (o.velocities && m_previousValid && std::size_t(i) + 1 < m_previousOffset.size() &&
-            m_previousOffset[std::size_t(i) + 1] - m_previousOffset[std::size_t(i)] == m_vertices.size()) {
-            p.setPen(m_velocityPen);
-            const Point* prev = m_previous.data() + m_previousOffset[std::size_t(i)];
-            for (std::size_t v = 0; v < m_vertices.size(); ++v) {
-                const Point tip = m_vertices[v] + kVelocityScale * (m_vertices[v] - prev[v]);
-                if (isFinite(tip) && isFinite(m_vertices[v]))
-                    p.drawLine(q(m_vertices[v]), q(tip));
-            }
-        }
-        if (o.vertices) {
-            p.setPen(m_ringPen);
-            p.setBrush(m_art.whiteBrush());
-            for (const Point& v : m_vertices)
-                if (isFinite(v))
-                    p.drawEllipse(q(v), dot, dot);
-            if (m_vertices.size() <= 40) { // numbered as in Annex II's arrays, v_0 first
-                while (m_numbers.size() < m_vertices.size())
-                    m_numbers.push_back(QString::number(m_numbers.size()));
-                p.setPen(m_numberPen);
-                p.save();
-                const QTransform world = p.worldTransform();
-                p.resetTransform();
-                p.setFont(m_numberFont);
-                for (std::size_t v = 0; v < m_vertices.size(); ++v)
-                    if (isFinite(m_vertices[v]))
-                        p.drawText(world.map(q(m_vertices[v])) + QPointF(5 * k, -5 * k), m_numbers[v]);
-                p.restore();
-            }
-        }
-    }
-    for (int c = 0; c < sim()->chainCount(); ++c) {
-        sim()->chainJoints(c, m_joints);
-        drawPoints(m_joints, false);
-        if (o.vertices) {
-            p.setPen(m_ringPen);
-            p.setBrush(m_jointDotBrush);
-            for (const Point& v : m_joints)
-                if (isFinite(v))
-                    p.drawEllipse(q(v), dot, dot);
-        }
-    }
-}
-
-void FrogCanvas::drawTextPanel(QPainter& p, const QRectF& sceneRect)
-{
-    const bool bar = m_overlays.area && sim()->bodyCount() > 0;
-    if (m_lines.empty() && !bar)
-        return;
-    const double k = m_style.scale, margin = kPanelMargin * k, pad = kPanelPad * k;
-    double width = 0, height = 0;
-    for (const QStaticText& t : m_lines) {
-        width = std::max(width, t.size().width());
-        height += t.size().height();
-    }
-    const double barHeight = bar ? 10 * k : 0, barWidth = 220 * k;
-    if (bar) {
-        width = std::max(width, barWidth);
-        height += barHeight + pad;
-    }
-    const QRectF box(sceneRect.left() + margin, sceneRect.top() + margin, width + 2 * pad, height + 2 * pad);
-    p.setPen(Qt::NoPen);
-    p.setBrush(m_panelBrush);
-    p.drawRoundedRect(box, 6 * k, 6 * k);
-    p.setPen(QColor(0xf6, 0xf7, 0xf2));
-    p.setFont(m_font);
-    double y = box.top() + pad;
-    for (const QStaticText& t : m_lines) {
-        p.drawStaticText(QPointF(box.left() + pad, y), t);
-        y += t.size().height();
-    }
-    if (bar) { // area against target (§4.5): the bar spans 0 … 2 A₀, the mark is A₀
-        const double area = sim()->bodyArea(0), target = sim()->bodyTargetArea(0);
-        const double share = target > 0 && std::isfinite(area) ? std::clamp(area / (2 * target), 0.0, 1.0) : 0.0;
-        const QRectF track(box.left() + pad, y + pad, barWidth, barHeight);
-        p.setBrush(m_trackBrush);
-        p.drawRect(track);
-        p.setBrush(std::abs(share - 0.5) < 0.05 ? m_goodBrush : m_offBrush);
-        p.drawRect(QRectF(track.left(), track.top(), track.width() * share, track.height()));
-        p.setPen(m_markPen);
-        p.drawLine(QPointF(track.center().x(), track.top() - 2 * k), QPointF(track.center().x(), track.bottom() + 2 * k));
-    }
+    if (sim())
+        m_scenePainter.paintHead(p, *sim(), index, m_mouseKnown ? std::optional<Point>(m_mouse) : std::nullopt);
 }
 
 // ---------------------------------------------------------------- mouse and keys
@@ -1496,18 +330,15 @@ void FrogCanvas::mousePressEvent(QMouseEvent* event)
     }
     // Annex II, mousePressed: grab when the cursor is inside the body. Going back in a run
     // (docs/rewind.md), a press that grabs nothing leaves the recorded future alone.
-    if (m_run->playingBack() && !wouldGrab(m_mouse)) {
+    if (m_run->playingBack() && !m_run->wouldGrab(m_mouse)) {
         emit statusMessage(
             tr("Playing the recorded run back: press inside a body to take over from step %1.").arg(sim()->stepCount()));
         return;
     }
-    const bool branch = m_run->playingBack();
-    send(InputKind::Move, m_mouse);
+    m_run->send(InputKind::Move, m_mouse);
     reportMouseRadius();
     m_pressed = true;
-    const bool held = send(InputKind::Press, m_mouse);
-    if (branch)
-        emit timelineChanged();
+    const bool held = m_run->send(InputKind::Press, m_mouse);
     if (held && sim()->grabbing())
         setCursor(Qt::ClosedHandCursor);
     else if (!held && sim()->scene().has(SceneComponent::Grab))
@@ -1526,7 +357,7 @@ void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
         update();
     }
     if (m_pressed || !m_run->playingBack()) // hovering over a run played back changes nothing
-        send(InputKind::Move, m_mouse);
+        m_run->send(InputKind::Move, m_mouse);
     reportMouseRadius();
     if (!m_pressed && sim()->scene().has(SceneComponent::Grab)) {
         if (insideABody(m_mouse))
@@ -1534,7 +365,7 @@ void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
         else
             unsetCursor();
     }
-    if (!m_running)
+    if (!running())
         update(); // the eyes follow the mouse even when paused
 }
 
@@ -1562,7 +393,7 @@ void FrogCanvas::mouseReleaseEvent(QMouseEvent* event)
     if (!sim() || event->button() != Qt::LeftButton || !m_pressed)
         return;
     m_keyboardHeld = false;
-    send(InputKind::Release); // Annex II, mouseReleased
+    m_run->send(InputKind::Release); // Annex II, mouseReleased
     m_pressed = false;
     unsetCursor();
     update();
@@ -1651,19 +482,16 @@ bool FrogCanvas::keyboardGrab()
     // Outside every body, the cursor first jumps to the centre of the nearest one.
     if (const int body = insideABody(m_mouse) ? -1 : nearestBody(m_mouse); body >= 0)
         m_mouse = bodyCentre(body);
-    if (m_run->playingBack() && !wouldGrab(m_mouse)) {
+    if (m_run->playingBack() && !m_run->wouldGrab(m_mouse)) {
         emit statusMessage(tr("Playing the recorded run back: move the cursor inside a body to take over from step %1.")
                                .arg(sim()->stepCount()));
         update();
         return false;
     }
-    const bool branch = m_run->playingBack();
-    send(InputKind::Move, m_mouse);
+    m_run->send(InputKind::Move, m_mouse);
     reportMouseRadius();
-    m_pressed = send(InputKind::Press, m_mouse);
+    m_pressed = m_run->send(InputKind::Press, m_mouse);
     m_keyboardHeld = m_pressed;
-    if (branch)
-        emit timelineChanged();
     if (!m_pressed && sim()->scene().has(SceneComponent::Grab))
         emit statusMessage(tr("Nothing to grab here: move the cursor inside the body with the arrows."));
     update();
@@ -1674,7 +502,7 @@ void FrogCanvas::keyboardRelease()
 {
     if (!sim() || !m_keyboardHeld)
         return;
-    send(InputKind::Release);
+    m_run->send(InputKind::Release);
     m_pressed = false;
     m_keyboardHeld = false;
     update();
@@ -1690,7 +518,7 @@ void FrogCanvas::moveKeyboardCursor(double dx, double dy)
     if (m_rulerPlacing && m_ruler)
         m_ruler->second = m_mouse;
     if (m_pressed || !m_run->playingBack())
-        send(InputKind::Move, m_mouse);
+        m_run->send(InputKind::Move, m_mouse);
     reportMouseRadius();
     update();
 }
@@ -1755,12 +583,8 @@ void FrogCanvas::keyPressEvent(QKeyEvent* event)
         m_mouse = toScene(mapFromGlobal(QCursor::pos()));
         m_mouseKnown = true;
     }
-    const bool branch = m_run->playingBack();
-    send(InputKind::Spawn, m_mouse);
-    updateWork();
+    m_run->send(InputKind::Spawn, m_mouse); // a new body: more work a step
     m_spawnHeld = true;
-    if (branch)
-        emit timelineChanged();
     update();
 }
 
@@ -1774,8 +598,8 @@ void FrogCanvas::keyReleaseEvent(QKeyEvent* event)
     if (event->isAutoRepeat() || !m_spawnHeld)
         return;
     m_spawnHeld = false;
-    if (m_run)
-        send(InputKind::ReleaseSpawn); // Annex II, keyReleased(' ')
+    if (sim())
+        m_run->send(InputKind::ReleaseSpawn); // Annex II, keyReleased(' ')
     update();
 }
 
@@ -1791,7 +615,7 @@ void FrogCanvas::enterEvent(QEnterEvent* event)
 void FrogCanvas::showEvent(QShowEvent* event)
 {
     QWidget::showEvent(event);
-    updateTimer();
+    m_run->setShown(isVisible());
 }
 
 void FrogCanvas::resizeEvent(QResizeEvent* event)
@@ -1804,7 +628,7 @@ void FrogCanvas::resizeEvent(QResizeEvent* event)
 void FrogCanvas::hideEvent(QHideEvent* event)
 {
     QWidget::hideEvent(event); // a hidden tab costs nothing
-    updateTimer();
+    m_run->setShown(isVisible());
 }
 
 void FrogCanvas::focusInEvent(QFocusEvent* event)
@@ -1822,8 +646,8 @@ void FrogCanvas::focusOutEvent(QFocusEvent* event)
     keyboardRelease();
     update();
     // The key release would go elsewhere: let go of a frog held by the space bar now.
-    if (m_spawnHeld && m_run)
-        send(InputKind::ReleaseSpawn);
+    if (m_spawnHeld && sim())
+        m_run->send(InputKind::ReleaseSpawn);
     m_spawnHeld = false;
     QWidget::focusOutEvent(event);
 }

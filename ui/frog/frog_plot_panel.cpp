@@ -4,7 +4,7 @@
 #include "ui/common/number_text.h"
 #include "ui/common/plot_tick_room.h"
 #include "ui/common/presentation_scale.h"
-#include "ui/frog/frog_canvas.h"
+#include "ui/frog/frog_run.h"
 #include "ui/shell/exporter.h"
 #include "ui/shell/file_dialogs.h"
 
@@ -95,9 +95,9 @@ FrogPlotPanel::FrogPlotPanel(QWidget* parent)
     retranslate();
 }
 
-void FrogPlotPanel::setSeries(const SeriesRecorder* series, const SceneSpec* scene)
+void FrogPlotPanel::setRun(const FrogRun* run, const SceneSpec* scene)
 {
-    m_series = series;
+    m_series = run ? &run->series() : nullptr; // the same object for every run (FrogRun::restoreRun)
     m_scene = scene;
     refresh(true);
 }
@@ -153,7 +153,7 @@ void FrogPlotPanel::setWindowSeconds(double seconds)
 {
     if (!std::isfinite(seconds))
         return;
-    m_window = std::clamp(seconds, 1.0, double(FrogCanvas::kSeriesSeconds));
+    m_window = std::clamp(seconds, 1.0, double(FrogRun::kSeriesSeconds));
     refresh(true);
 }
 
@@ -454,7 +454,7 @@ void FrogPlotPanel::retranslate()
                           "body chosen. The CSV holds what is plotted."));
     m_export->setText(tr("Export CSV…"));
     m_export->setToolTip(tr("Every step kept (the last %1 minutes), in the columns of granota-cli simulate --series.")
-                             .arg(FrogCanvas::kSeriesSeconds / 60));
+                             .arg(FrogRun::kSeriesSeconds / 60));
     m_plot->setAccessibleName(tr("Plots over time"));
     refresh(true);
 }

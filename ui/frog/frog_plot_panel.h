@@ -1,6 +1,6 @@
 #pragma once
 /// \file frog_plot_panel.h
-/// The plots over time under the Frog canvas (docs/plots-over-time.md): the canvas's series
+/// The plots over time under the Frog canvas (docs/plots-over-time.md): the run's series
 /// drawn as a scrolling window of the last seconds — energies and what damping and the rest
 /// took, the area error, the largest stretch, the contacts — or, for the pendulums, the phase
 /// plot (each link's angle against its angular velocity, with §4.15's limits); summed over
@@ -21,6 +21,8 @@ class QPushButton;
 
 namespace granota::ui {
 
+class FrogRun;
+
 class FrogPlotPanel : public QWidget {
     Q_OBJECT
 public:
@@ -28,8 +30,8 @@ public:
 
     explicit FrogPlotPanel(QWidget* parent = nullptr);
 
-    /// The series drawn (the canvas's), and the scene it comes from (its angle limits).
-    void setSeries(const SeriesRecorder* series, const SceneSpec* scene);
+    /// The run whose series is drawn (frog_run.h), and the scene it comes from (its angle limits).
+    void setRun(const FrogRun* run, const SceneSpec* scene);
     /// Draws the series again if it has grown (a timer does so ten times a second while the
     /// panel is shown; the tab calls it after a single step or a new run).
     void refresh(bool force = false);

@@ -42,19 +42,20 @@ constexpr int kParameterMergeIdBase = 0x46520000; ///< "FR": a parameter's edits
 } // namespace
 
 const long FrogTab::kLoadSeekWork = 600 * FrogCanvas::kFrameWork;
-const std::size_t FrogTab::kKeptRunBytes = FrogCanvas::kSnapshotBytes;
+const std::size_t FrogTab::kKeptRunBytes = FrogRun::kSnapshotBytes;
 
 struct FrogTab::KeptRun {
-    std::unique_ptr<FrogCanvas::KeptRun> canvas;
+    std::unique_ptr<FrogRun::KeptRun> canvas;
     SceneSpec scene;
     SolverKind solver = SolverKind::Seed;
     long mark = -1;
 };
 
 FrogTab::FrogTab(QWidget* parent)
-    : TabPage(QStringLiteral("frog"), QT_TR_NOOP("Frog"), parent), m_canvas(new FrogCanvas(this)),
+    : TabPage(QStringLiteral("frog"), QT_TR_NOOP("Frog"), parent), m_run(new FrogRun), m_canvas(new FrogCanvas(m_run, this)),
       m_params(new FrogParametersPanel(this))
 {
+    m_run->setParent(this); // after the canvas: the run outlives its view
     setExportView(m_canvas);
     buildControls();
     connectControls();
@@ -460,7 +461,7 @@ void FrogTab::setPlotsShown(bool on)
         m_showPlots->setChecked(on);
     }
     m_canvas->setRecordingSeries(on);
-    m_plots->setSeries(&m_canvas->series(), &m_scene);
+    m_plots->setRun(m_run, &m_scene);
     m_plots->setVisible(on); // at the height it asks for (FrogPlotPanel::sizeHint), the canvas the rest
     m_canvas->setMarkedBody(on ? m_plots->body() : -1);
 }

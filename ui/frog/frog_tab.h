@@ -35,6 +35,7 @@ namespace granota::ui {
 class FrogCanvas;
 class FrogParametersPanel;
 class FrogPlotPanel;
+class FrogRun;
 
 class FrogTab : public TabPage {
     Q_OBJECT
@@ -99,7 +100,7 @@ public:
     /// past it, the run loads at step 0 and the tab says so.
     static const long kLoadSeekWork;
     /// The runs that changes of the scene replaced, kept for Undo, take at most this much
-    /// together (FrogCanvas::KeptRun::bytes: as much as one run's snapshots may take); past
+    /// together (FrogRun::KeptRun::bytes: as much as one run's snapshots may take); past
     /// it the oldest are let go, and their undo steps say that the scene starts again.
     static const std::size_t kKeptRunBytes;
     /// Shows the plots over time under the canvas (the canvas records the series meanwhile).
@@ -107,6 +108,7 @@ public:
     FrogPlotPanel* plotPanel() const { return m_plots; }
 
     FrogCanvas* canvas() const { return m_canvas; }
+    FrogRun* frogRun() const { return m_run; }
     FrogParametersPanel* parametersPanel() const { return m_params; }
 
 protected:
@@ -178,6 +180,7 @@ private:
     QString sceneDescription(const QString& name) const;
     QString sceneHint() const;
 
+    FrogRun* m_run; // the run the canvas shows and the plots read
     FrogCanvas* m_canvas;
     FrogParametersPanel* m_params;
     FrogPlotPanel* m_plots = nullptr;

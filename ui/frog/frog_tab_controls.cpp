@@ -306,8 +306,9 @@ void FrogTab::connectControls()
             m_fitCost->setText(tr("Cost of the fit: %1 µs per frame.").arg(displayFixed(us, 1)));
     });
     connect(m_canvas, &FrogCanvas::statusMessage, this, &TabPage::statusMessage);
-    connect(m_canvas, &FrogCanvas::timelineChanged, this, &FrogTab::updateTimeline);
-    connect(m_canvas, &FrogCanvas::blownUpChanged, this, &FrogTab::showExplosion);
+    connect(m_run, &FrogRun::statusMessage, this, &TabPage::statusMessage);
+    connect(m_run, &FrogRun::timelineChanged, this, &FrogTab::updateTimeline);
+    connect(m_run, &FrogRun::blownUpChanged, this, &FrogTab::showExplosion);
     const auto knob = [this](StableKnob k, double value) {
         const std::string_view name = stableKnobName(k);
         const QString key = QString::fromLatin1(name.data(), static_cast<qsizetype>(name.size()));
