@@ -5,10 +5,10 @@
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_plot_panel.h"
 #include "ui/frog/frog_tab.h"
-#include "ui/shell/exporter.h"
-#include "ui/shell/language.h"
+#include "ui/files/exporter.h"
+#include "ui/common/language.h"
 #include "ui/shell/main_window.h"
-#include "ui/shell/tab_page.h"
+#include "ui/common/tab_page.h"
 #include "ui/shell/thesis_figure_export.h"
 
 #include <QApplication>
@@ -332,7 +332,7 @@ int main(int argc, char* argv[])
         if (auto* fit = qobject_cast<granota::ui::FitTab*>(window.currentTab()))
             fit->finishFit();
         const QString file = parser.value(screenshotOption);
-        // Replaces the file whole (ui/shell/exporter.h): a full disk keeps the old one.
+        // Replaces the file whole (ui/files/exporter.h): a full disk keeps the old one.
         if (const QString error = granota::ui::writePngFile(window.grab().toImage(), file); !error.isEmpty())
             return fail(error);
         return 0;

@@ -4,7 +4,7 @@
 // a file to save it in.
 #include "ui/shell/document.h"
 #include "ui/shell/main_window.h"
-#include "ui/shell/tab_page.h"
+#include "ui/common/tab_page.h"
 #include "gui_timeouts.h"
 
 #include <QByteArray>

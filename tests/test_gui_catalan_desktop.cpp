@@ -11,10 +11,10 @@
 #include "ui/common/drawable.h"
 #include "ui/frog/frog_parameters_panel.h"
 #include "ui/frog/frog_tab.h"
-#include "ui/shell/language.h"
+#include "ui/common/language.h"
 #include "ui/shell/main_window.h"
 #include "ui/common/number_text.h"
-#include "ui/shell/tab_page.h"
+#include "ui/common/tab_page.h"
 
 #include "core/softbody/scenes/scene.h"
 

@@ -15,9 +15,9 @@
 #include "ui/common/curve_canvas.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
-#include "ui/shell/exporter.h"
-#include "ui/shell/language.h"
-#include "ui/shell/tikz_writer.h"
+#include "ui/files/exporter.h"
+#include "ui/common/language.h"
+#include "ui/files/tikz_writer.h"
 #include "gui_timeouts.h"
 
 #include <QApplication>

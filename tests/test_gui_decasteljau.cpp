@@ -24,7 +24,7 @@
 #include "ui/common/point_editor.h"
 #include "ui/common/point_table.h"
 #include "ui/common/view_transform.h"
-#include "ui/shell/tikz_options.h"
+#include "ui/files/tikz_options.h"
 
 #include "canvas_pixels.h"
 

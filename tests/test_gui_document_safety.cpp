@@ -7,10 +7,10 @@
 #include "ui/shell/autosave.h"
 #include "ui/shell/document.h"
 #include "ui/fit/fit_tab.h"
-#include "ui/shell/language.h"
+#include "ui/common/language.h"
 #include "ui/shell/main_window.h"
 #include "ui/common/point_editor.h"
-#include "ui/shell/tab_page.h"
+#include "ui/common/tab_page.h"
 
 #include <QDir>
 #include <QFile>

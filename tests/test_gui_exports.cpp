@@ -12,7 +12,7 @@
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_tab.h"
 #include "ui/shell/main_window.h"
-#include "ui/shell/tikz_writer.h"
+#include "ui/files/tikz_writer.h"
 
 #include "main_window_steps.h"
 
@@ -51,7 +51,7 @@ namespace {
 /// the lower right corner of the view, the lower left corner is empty.
 const std::vector<Point> kEndsLowerRight = {{0, 3}, {2, 3}, {4, 2}, {6, 0}};
 
-/// The QSettings key of the folder used last (ui/shell/file_dialogs.h), written out: the
+/// The QSettings key of the folder used last (ui/files/file_dialogs.h), written out: the
 /// test sets it as a user's earlier session would have.
 const QString kLastFolder = QStringLiteral("files/lastFolder");
 
@@ -459,7 +459,7 @@ private slots:
         while (it.hasNext()) {
             const QString path = it.next();
             ++files;
-            if (path.endsWith(QStringLiteral("shell/file_dialogs.cpp")))
+            if (path.endsWith(QStringLiteral("files/file_dialogs.cpp")))
                 continue;
             QFile f(path);
             QVERIFY(f.open(QIODevice::ReadOnly));

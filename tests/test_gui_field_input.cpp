@@ -11,9 +11,9 @@
 #include "core/softbody/simulation_trace.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_tab.h"
-#include "ui/shell/language.h"
+#include "ui/common/language.h"
 #include "ui/shell/main_window.h"
-#include "ui/shell/tab_page.h"
+#include "ui/common/tab_page.h"
 
 #include "main_window_steps.h"
 

@@ -9,7 +9,7 @@
 #include "ui/shell/autosave.h"
 #include "ui/shell/document.h"
 #include "ui/shell/document_controller.h"
-#include "ui/shell/language.h"
+#include "ui/common/language.h"
 #include "ui/shell/main_window.h"
 
 #include <QApplication>

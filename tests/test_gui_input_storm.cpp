@@ -15,10 +15,10 @@
 #include "ui/shell/document.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_tab.h"
-#include "ui/shell/language.h"
+#include "ui/common/language.h"
 #include "ui/shell/main_window.h"
 #include "ui/common/point_editor.h"
-#include "ui/shell/tab_page.h"
+#include "ui/common/tab_page.h"
 #include "gui_timeouts.h"
 
 #include <QAbstractButton>

@@ -12,9 +12,9 @@
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_tab.h"
-#include "ui/shell/language.h"
+#include "ui/common/language.h"
 #include "ui/shell/main_window.h"
-#include "ui/shell/tab_page.h"
+#include "ui/common/tab_page.h"
 #include "gui_timeouts.h"
 
 #include <QAbstractButton>

@@ -14,7 +14,7 @@
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_tab.h"
-#include "ui/shell/language.h"
+#include "ui/common/language.h"
 #include "ui/shell/main_window.h"
 #include "gui_timeouts.h"
 

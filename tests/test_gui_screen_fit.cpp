@@ -6,10 +6,10 @@
 // 1280×1024, 1024×768 and 800×600 (tests/CMakeLists.txt), where a window manager's frame
 // exists: the frame is known only once the manager has framed the window, so each check
 // waits for that first (waitFramed) and then for the frame to fit — a wait, never a time.
-#include "ui/shell/language.h"
+#include "ui/common/language.h"
 #include "ui/shell/main_window.h"
 #include "ui/shell/shortcuts_dialog.h"
-#include "ui/shell/tab_page.h"
+#include "ui/common/tab_page.h"
 
 #include "main_window_steps.h"
 

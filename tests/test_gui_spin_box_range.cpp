@@ -6,7 +6,7 @@
 // the maximum is refused, and that is said too. The keys are real QTest key clicks into the
 // spin box, as a student types them.
 #include "ui/frog/frog_tab.h"
-#include "ui/shell/language.h"
+#include "ui/common/language.h"
 #include "ui/shell/main_window.h"
 
 #include "main_window_steps.h"

@@ -13,9 +13,9 @@
 #include "ui/common/point_editor.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_tab.h"
-#include "ui/shell/language.h"
+#include "ui/common/language.h"
 #include "ui/shell/main_window.h"
-#include "ui/shell/tab_page.h"
+#include "ui/common/tab_page.h"
 #include "ui/shell/thesis_figure_export.h"
 #include "ui/shell/thesis_figures_dialog.h"
 

@@ -6,9 +6,9 @@
 #include "core/io/thesis_figures.h"
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/shell/main_window.h"
-#include "ui/shell/tab_page.h"
+#include "ui/common/tab_page.h"
 #include "ui/shell/thesis_figure_export.h"
-#include "ui/shell/tikz_options.h"
+#include "ui/files/tikz_options.h"
 
 #include "main_window_steps.h"
 

@@ -7,8 +7,8 @@
 #include "ui/shell/document.h"
 #include "ui/fit/fit_tab.h"
 #include "ui/frog/frog_tab.h"
-#include "ui/shell/language.h"
-#include "ui/shell/tab_page.h"
+#include "ui/common/language.h"
+#include "ui/common/tab_page.h"
 
 #include <QCoreApplication>
 #include <QFile>

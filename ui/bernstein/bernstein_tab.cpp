@@ -15,7 +15,7 @@
 #include "ui/common/point_editor.h"
 #include "ui/common/presentation_scale.h"
 #include "ui/common/value_command.h"
-#include "ui/shell/tikz_writer.h"
+#include "ui/files/tikz_writer.h"
 
 #include <QCheckBox>
 #include <QGroupBox>
@@ -501,7 +501,10 @@ QStringList BernsteinTab::checkTexts() const
 
 QString BernsteinTab::curvePointText() const { return m_curveLabel->text(); }
 
-void BernsteinTab::updateExactPanel() { m_exact->setContent(bernsteinPanelHtml(m_degree, m_allDegrees, m_curve->points(), m_curve->pointEditor()->allExactPoints())); }
+void BernsteinTab::updateExactPanel()
+{
+    m_exact->setContent(bernsteinPanelHtml(m_degree, m_allDegrees, m_curve->points(), m_curve->pointEditor()->allExactPoints()));
+}
 
 // ---------------------------------------------------------------- TabPage
 

@@ -12,7 +12,7 @@
 #include "core/curves/bezier/bernstein_properties.h"
 #include "ui/common/bezier_exact_html.h"
 #include "ui/common/plot_drawable.h"
-#include "ui/shell/tab_page.h"
+#include "ui/common/tab_page.h"
 
 #include <QString>
 

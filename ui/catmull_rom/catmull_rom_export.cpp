@@ -4,7 +4,7 @@
 #include "ui/catmull_rom/catmull_rom_drawing.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_style.h"
-#include "ui/shell/tikz_writer.h"
+#include "ui/files/tikz_writer.h"
 
 namespace granota::ui {
 

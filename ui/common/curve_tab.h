@@ -10,7 +10,7 @@
 
 #include "core/base/vec2.h"
 #include "core/exact/exact_point.h"
-#include "ui/shell/tab_page.h"
+#include "ui/common/tab_page.h"
 
 #include <QRectF>
 #include <QString>

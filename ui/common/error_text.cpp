@@ -3,7 +3,7 @@
 #include "core/softbody/scenes/scene_parameters.h"
 #include "core/softbody/scenes/stable_settings.h"
 #include "ui/common/number_text.h"
-#include "ui/shell/language.h"
+#include "ui/common/language.h"
 
 namespace granota::ui {
 

@@ -1,7 +1,7 @@
 #include "ui/common/number_text.h"
 
 #include "core/base/number_format.h"
-#include "ui/shell/language.h"
+#include "ui/common/language.h"
 
 #include <cmath>
 

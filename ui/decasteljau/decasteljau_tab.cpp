@@ -29,7 +29,7 @@
 #include "ui/common/tab_order.h"
 #include "ui/common/value_command.h"
 #include "ui/common/widest_text_width.h"
-#include "ui/shell/tikz_writer.h"
+#include "ui/files/tikz_writer.h"
 
 #include <QCheckBox>
 #include <QHBoxLayout>
@@ -555,7 +555,10 @@ void DeCasteljauTab::updateWarning()
         emit statusMessage(m_warningText);
 }
 
-void DeCasteljauTab::updateExactSymbolic() { m_symbolicHtml = deCasteljauSymbolicHtml(m_editor->points(), m_editor->allExactPoints()); }
+void DeCasteljauTab::updateExactSymbolic()
+{
+    m_symbolicHtml = deCasteljauSymbolicHtml(m_editor->points(), m_editor->allExactPoints());
+}
 
 void DeCasteljauTab::updateExactPanel()
 {

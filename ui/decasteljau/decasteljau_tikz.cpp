@@ -4,7 +4,7 @@
 #include "core/base/number_format.h"
 #include "ui/common/bezier_exact_html.h"
 #include "ui/decasteljau/decasteljau_scene_painter.h"
-#include "ui/shell/tikz_writer.h"
+#include "ui/files/tikz_writer.h"
 
 #include <QCoreApplication>
 #include <QStringList>

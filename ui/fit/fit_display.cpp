@@ -5,7 +5,7 @@
 #include "ui/common/canvas_style.h"
 #include "ui/common/curvature_comb.h"
 #include "ui/common/view_transform.h"
-#include "ui/shell/tikz_writer.h"
+#include "ui/files/tikz_writer.h"
 
 #include <QJsonValue>
 #include <QPainter>

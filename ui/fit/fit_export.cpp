@@ -3,7 +3,7 @@
 #include "core/base/number_format.h"
 #include "core/curves/fitting/fit_error_by_degree.h"
 #include "ui/fit/fit_error_plot.h"
-#include "ui/shell/tikz_writer.h"
+#include "ui/files/tikz_writer.h"
 
 namespace granota::ui {
 

@@ -28,9 +28,9 @@
 #include "ui/common/presentation_scale.h"
 #include "ui/common/vertical_scroll_area.h"
 #include "ui/common/value_command.h"
-#include "ui/shell/file_dialogs.h"
-#include "ui/shell/tikz_writer.h"
-#include "ui/shell/user_file.h"
+#include "ui/files/file_dialogs.h"
+#include "ui/files/tikz_writer.h"
+#include "ui/files/user_file.h"
 
 #include <QApplication>
 #include <QCheckBox>

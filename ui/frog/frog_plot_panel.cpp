@@ -5,8 +5,8 @@
 #include "ui/common/plot_tick_room.h"
 #include "ui/common/presentation_scale.h"
 #include "ui/frog/frog_run.h"
-#include "ui/shell/exporter.h"
-#include "ui/shell/file_dialogs.h"
+#include "ui/files/exporter.h"
+#include "ui/files/file_dialogs.h"
 
 #include <QComboBox>
 #include <QEvent>

@@ -8,7 +8,7 @@
 #include "core/softbody/simulation.h"
 #include "ui/frog/frog_document.h"
 #include "ui/frog/frog_overlays.h"
-#include "ui/shell/tab_page.h"
+#include "ui/common/tab_page.h"
 
 #include <QJsonValue>
 #include <QSize>

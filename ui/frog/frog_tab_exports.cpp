@@ -4,8 +4,8 @@
 #include "core/softbody/outline.h"
 #include "ui/common/path_recorder.h"
 #include "ui/frog/frog_canvas.h"
-#include "ui/shell/exporter.h"
-#include "ui/shell/tikz_writer.h"
+#include "ui/files/exporter.h"
+#include "ui/files/tikz_writer.h"
 
 #include <QDir>
 #include <QImage>

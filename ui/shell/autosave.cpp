@@ -1,7 +1,7 @@
 #include "ui/shell/autosave.h"
 
 #include "ui/shell/document.h"
-#include "ui/shell/user_file.h"
+#include "ui/files/user_file.h"
 
 #include <QCoreApplication>
 #include <QDir>
@@ -49,7 +49,7 @@ bool Autosave::write(const QByteArray& bytes, QString* error)
     QDir().mkpath(m_folder);
     if (!m_lock->isLocked())
         m_lock->tryLock(0);
-    // Replaced whole (ui/shell/user_file.h): on a full disk the last good autosave stays.
+    // Replaced whole (ui/files/user_file.h): on a full disk the last good autosave stays.
     QString reason;
     if (!writeUserFile(m_path, bytes, &reason)) {
         *error = QCoreApplication::translate("granota::ui::Autosave", "Cannot write the autosave “%1”: %2.")

@@ -1,6 +1,6 @@
 #include "ui/shell/document.h"
 
-#include "ui/shell/tab_page.h"
+#include "ui/common/tab_page.h"
 
 #include "core/io/json.h"
 

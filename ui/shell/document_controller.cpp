@@ -1,10 +1,10 @@
 #include "ui/shell/document_controller.h"
 
 #include "ui/shell/document.h"
-#include "ui/shell/file_dialogs.h"
+#include "ui/files/file_dialogs.h"
 #include "ui/shell/main_window.h"
-#include "ui/shell/tab_page.h"
-#include "ui/shell/user_file.h"
+#include "ui/common/tab_page.h"
+#include "ui/files/user_file.h"
 
 #include <QApplication>
 #include <QCryptographicHash>

@@ -43,7 +43,7 @@ public:
     void setModified(bool modified);
 
     /// File operations without dialogs (the menu actions and the tests use them). A save
-    /// replaces the file whole (ui/shell/user_file.h): when it fails, the file on disk is
+    /// replaces the file whole (ui/files/user_file.h): when it fails, the file on disk is
     /// as it was, the window keeps its changes and `error` says why.
     bool openFile(const QString& file, QString* error);
     bool saveFile(const QString& file, QString* error);

@@ -11,7 +11,7 @@
 #include <QVector>
 
 #include "ui/shell/document_controller.h"
-#include "ui/shell/tikz_options.h"
+#include "ui/files/tikz_options.h"
 
 class QAction;
 class QActionGroup;

@@ -7,11 +7,11 @@
 #include "ui/common/value_command.h"
 #include "ui/frog/frog_art_view.h"
 #include "ui/frog/frog_json.h"
-#include "ui/shell/exporter.h"
-#include "ui/shell/language.h"
+#include "ui/files/exporter.h"
+#include "ui/common/language.h"
 #include "ui/shell/main_window.h"
-#include "ui/shell/tab_page.h"
-#include "ui/shell/tikz_writer.h"
+#include "ui/common/tab_page.h"
+#include "ui/files/tikz_writer.h"
 
 #include <QCoreApplication>
 #include <QJsonArray>

@@ -5,7 +5,7 @@
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_tab.h"
 #include "ui/shell/main_window.h"
-#include "ui/shell/file_dialogs.h"
+#include "ui/files/file_dialogs.h"
 #include "ui/shell/thesis_figure_export.h"
 
 #include <QComboBox>

@@ -4,7 +4,7 @@
 /// picture's width and greatest height in cm, axes with tick labels, a grid. It starts from
 /// the last choice (TikzOptions::load) and keeps the new one when the teacher accepts.
 
-#include "ui/shell/tikz_options.h"
+#include "ui/files/tikz_options.h"
 
 #include <QDialog>
 

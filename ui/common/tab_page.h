@@ -6,7 +6,7 @@
 /// this interface only; what the tabs say alike (key, title, undo stack, export view) is
 /// held here once, what each says in its own way is virtual.
 
-#include "ui/shell/tikz_writer.h"
+#include "ui/files/tikz_writer.h"
 
 #include <QEvent>
 #include <QJsonObject>

@@ -1,4 +1,4 @@
-#include "ui/shell/tikz_writer.h"
+#include "ui/files/tikz_writer.h"
 
 #include "core/base/number_format.h"
 

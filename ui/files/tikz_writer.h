@@ -10,7 +10,7 @@
 /// where it covers least too, clear of the inset, as canvasLegendRect() places the canvas's.
 
 #include "core/base/vec2.h"
-#include "ui/shell/tikz_options.h"
+#include "ui/files/tikz_options.h"
 
 #include <QColor>
 #include <QString>

@@ -1,4 +1,4 @@
-#include "ui/shell/tikz_options.h"
+#include "ui/files/tikz_options.h"
 
 #include <QSettings>
 #include <QString>

@@ -1,7 +1,7 @@
-#include "ui/shell/exporter.h"
+#include "ui/files/exporter.h"
 
 #include "ui/common/drawable.h"
-#include "ui/shell/user_file.h"
+#include "ui/files/user_file.h"
 
 #include <QBuffer>
 #include <QCoreApplication>

@@ -2,7 +2,7 @@
 /// \file exporter.h
 /// Exports of any Drawable (docs/tabs.md): PNG at a chosen DPI, SVG and PDF, all through the
 /// view's own render(), plus plain text files (CSV, TikZ). Each is made in memory and then
-/// replaces the file whole (ui/shell/user_file.h): a full disk keeps the old file. Each
+/// replaces the file whole (ui/files/user_file.h): a full disk keeps the old file. Each
 /// returns an empty string on success and a translated message, with the reason, otherwise;
 /// nothing here ever throws or aborts.
 

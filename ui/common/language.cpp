@@ -1,4 +1,4 @@
-#include "ui/shell/language.h"
+#include "ui/common/language.h"
 
 #include "ui/common/number_text.h"
 

@@ -1,4 +1,4 @@
-#include "ui/shell/user_file.h"
+#include "ui/files/user_file.h"
 
 #include "core/base/bounded_file.h"
 #include "core/base/file_replacement.h"

@@ -1,4 +1,4 @@
-#include "ui/shell/file_dialogs.h"
+#include "ui/files/file_dialogs.h"
 
 #include <QDir>
 #include <QFileDialog>
