@@ -27,6 +27,8 @@
 #include <QListWidget>
 #include <QPainter>
 #include <QPushButton>
+#include "ui/common/vertical_scroll_area.h"
+
 #include <QScrollArea>
 #include <QSlider>
 #include <QSplitter>
@@ -259,12 +261,7 @@ void CatmullRomTab::buildUi()
     controlsLayout->addWidget(m_tensionBox);
     controlsLayout->addWidget(m_curveBox);
     controlsLayout->addStretch(1);
-    auto* scroll = new QScrollArea(this);
-    scroll->setFocusPolicy(Qt::NoFocus); // Tab goes to its controls, and it scrolls to the one focused
-    scroll->setWidget(controls);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    auto* scroll = new VerticalScrollArea(controls, this); // Tab goes to its controls, and it scrolls to the one focused
 
     auto* right = new QSplitter(Qt::Vertical, this);
     right->addWidget(scroll);

@@ -19,6 +19,8 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QRadioButton>
+#include "ui/common/vertical_scroll_area.h"
+
 #include <QScrollArea>
 #include <QShortcut>
 #include <QSlider>
@@ -204,12 +206,7 @@ void FrogTab::buildControls()
     column->addWidget(m_note);
     column->addStretch(1);
 
-    auto* scroll = new QScrollArea(this);
-    scroll->setFocusPolicy(Qt::NoFocus); // Tab goes to its controls, and it scrolls to the one focused
-    scroll->setWidget(side);
-    scroll->setWidgetResizable(true);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setFrameShape(QFrame::NoFrame);
+    auto* scroll = new VerticalScrollArea(side, this); // Tab goes to its controls, and it scrolls to the one focused
     m_scroll = scroll;
     m_side = side;
     side->installEventFilter(this); // its layout changes with the scene: keep it unclipped
