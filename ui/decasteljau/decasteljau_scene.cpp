@@ -15,10 +15,12 @@ constexpr int kSceneHodographSamples = 120; ///< the hodograph's curve in its in
 
 } // namespace
 
-DeCasteljauScene computeScene(const std::vector<Point>& points, double t, const DeCasteljauView& view)
+DeCasteljauScene computeScene(const std::vector<Point>& points, const std::optional<std::vector<RPoint>>& exactPoints, double t,
+                              const DeCasteljauView& view)
 {
     DeCasteljauScene scene;
     scene.points = points;
+    scene.exactPoints = exactPoints;
     scene.t = t;
     scene.view = view;
     if (points.empty())

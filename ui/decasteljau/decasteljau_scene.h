@@ -21,6 +21,9 @@ namespace granota::ui {
 
 struct DeCasteljauScene {
     std::vector<Point> points; ///< P_0…P_n
+    /// The same points exactly, as the point editor keeps them (exact_point.h), or nullopt when
+    /// one has no exact form: the exact panel's triangle, c(t) in powers of t and κ read these.
+    std::optional<std::vector<RPoint>> exactPoints;
     double t = 0.5;
     DeCasteljauView view;
 
@@ -37,11 +40,13 @@ struct DeCasteljauScene {
     DeCasteljauTable<double> hodoLevels; ///< the hodograph's construction at t, while it is shown
 };
 
-/// The scene of `points` at `t` seen through `view` (empty points: an empty scene).
-DeCasteljauScene computeScene(const std::vector<Point>& points, double t, const DeCasteljauView& view);
+/// The scene of `points` (and of `exactPoints`, PointEditor::allExactPoints) at `t` seen
+/// through `view` (empty points: an empty scene).
+DeCasteljauScene computeScene(const std::vector<Point>& points, const std::optional<std::vector<RPoint>>& exactPoints, double t,
+                              const DeCasteljauView& view);
 
 /// Moves a computed scene to another t: only what depends on t (the levels, the curvature and
-/// the hodograph's construction) is computed again. The same as computeScene(points, t, view).
+/// the hodograph's construction) is computed again. The same as computeScene(points, exact, t, view).
 void moveSceneTo(DeCasteljauScene& scene, double t);
 
 

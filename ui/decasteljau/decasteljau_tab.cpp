@@ -301,7 +301,7 @@ QRectF DeCasteljauTab::hodographInset(const ViewTransform& view, const CanvasSty
 
 void DeCasteljauTab::recomputeScene()
 {
-    m_scene = computeScene(m_editor->points(), m_model->t(), m_view);
+    m_scene = computeScene(m_editor->points(), m_editor->allExactPoints(), m_model->t(), m_view);
     m_combScaleBox->setEnabled(m_view.comb);
     m_combScaleLabel->setEnabled(m_view.comb);
     if (m_view.comb && m_view.combScale == 0 && m_scene.finite)
@@ -555,10 +555,7 @@ void DeCasteljauTab::updateWarning()
         emit statusMessage(m_warningText);
 }
 
-void DeCasteljauTab::updateExactSymbolic()
-{
-    m_symbolicHtml = deCasteljauSymbolicHtml(m_editor->points(), m_editor->allExactPoints());
-}
+void DeCasteljauTab::updateExactSymbolic() { m_symbolicHtml = deCasteljauSymbolicHtml(m_scene.points, m_scene.exactPoints); }
 
 void DeCasteljauTab::updateExactPanel()
 {
@@ -566,7 +563,7 @@ void DeCasteljauTab::updateExactPanel()
     if (points.empty() || m_scene.levels.levels.empty())
         return;
     DeCasteljauPanelInput in{points, m_model->t(), m_scene.levels, m_scene.curvature};
-    in.exactPoints = m_editor->allExactPoints();
+    in.exactPoints = m_scene.exactPoints;
     in.showSplit = m_view.split;
     if (m_scene.arc)
         in.arcLength = arcLengthAtT();
