@@ -607,7 +607,7 @@ bool BernsteinTab::loadExample(const granota::WorkedExample& example)
         // The points and t are the De Casteljau tab's (one history for both tabs): the status
         // bar says so, as for every example that changes another tab than the one shown.
         m_undo->beginMacro(tr("Load Ex %1").arg(id));
-        m_curve->loadCurve(toDouble(example.points), tr("Load Ex %1").arg(id));
+        m_curve->loadCurve(example.points, tr("Load Ex %1").arg(id));
         userChangedView({static_cast<int>(example.points.size()) - 1, false, m_showMarker}, tr("Load Ex %1").arg(id));
         m_undo->endMacro();
         emit statusMessage(tr("Ex %1: the curve written in the Bernstein basis is in the panel on the right. Its "

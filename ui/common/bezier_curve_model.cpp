@@ -1,6 +1,7 @@
 #include "ui/common/bezier_curve_model.h"
 
 #include "ui/common/point_editor.h"
+#include "core/exact/exact_point.h"
 #include "ui/common/value_command.h"
 
 #include <QUndoStack>
@@ -43,9 +44,19 @@ void BezierCurveModel::pushT(double before, int mergeId, const QString& undoText
 
 void BezierCurveModel::loadCurve(const std::vector<Point>& points, const QString& undoText)
 {
+    loadPoints([&] { m_points->setPoints(points, undoText); }, undoText);
+}
+
+void BezierCurveModel::loadCurve(const std::vector<RPoint>& points, const QString& undoText)
+{
+    loadPoints([&] { m_points->setPoints(toDouble(points), exactForms(points), undoText); }, undoText);
+}
+
+void BezierCurveModel::loadPoints(const std::function<void()>& setPoints, const QString& undoText)
+{
     emit curveLoading();
     m_undo->beginMacro(undoText);
-    m_points->setPoints(points, undoText);
+    setPoints();
     const double before = m_t;
     setT(0.5);
     pushT(before, -1, undoText);

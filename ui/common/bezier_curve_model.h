@@ -6,8 +6,10 @@
 /// a curve through the model and follows its signals; neither drives the other.
 
 #include "core/base/vec2.h"
+#include "core/exact/rational.h"
 
 #include <QObject>
+#include <functional>
 #include <QString>
 
 #include <vector>
@@ -39,6 +41,8 @@ public:
     /// Loads a curve: its points and t = 1/2 as one undo step named `undoText`, between
     /// curveLoading() and curveLoaded() (Ex 2.2, 2.3, and Ex 2.5, 2.6 from the Bernstein tab).
     void loadCurve(const std::vector<Point>& points, const QString& undoText);
+    /// The same for points known exactly (a worked example's fractions): the editor keeps them as they are.
+    void loadCurve(const std::vector<RPoint>& points, const QString& undoText);
 
 signals:
     void tChanged(double t);
@@ -49,6 +53,9 @@ signals:
     void documentChanged();
 
 private:
+    /// One undo step: the points (`setPoints`) and t = 1/2, between curveLoading() and curveLoaded().
+    void loadPoints(const std::function<void()>& setPoints, const QString& undoText);
+
     PointEditor* m_points;
     QUndoStack* m_undo;
     double m_t = 0.5;

@@ -731,7 +731,7 @@ bool DeCasteljauTab::loadExample(const granota::WorkedExample& example)
     if (example.kind != "bezier" || example.points.empty())
         return false;
     const QString id = QString::fromStdString(example.id);
-    loadCurve(toDouble(example.points), tr("Load Ex %1").arg(id));
+    m_model->loadCurve(example.points, tr("Load Ex %1").arg(id)); // stops playing first, fits the view after
     emit statusMessage(tr("Ex %1: the tables of the thesis are in the panel on the right at t = 1/2.").arg(id));
     return true;
 }
