@@ -1559,10 +1559,12 @@ private slots:
         QVERIFY(radius);
         QCOMPARE(radius->value(), 120.0);
         const double h = tab().scene().params.height;
+        double set = 0; // the radius the mouse set last
         for (double y : {h / 2 + 200, h / 2 - 50}) {
             const QPoint at = canvas->toWidget(Point(640, y)).toPoint();
             QTest::mouseMove(canvas, at);
             const double expected = std::abs(canvas->toScene(QPointF(at)).y - h / 2); // r = |mouseY − h/2|
+            set = expected;
             QVERIFY2(std::abs(radius->value() - expected) < 0.051,
                      qPrintable(QString("field %1, mouse radius %2").arg(radius->value()).arg(expected)));
             std::vector<Point> v;
@@ -1570,6 +1572,12 @@ private slots:
             QVERIFY(std::abs(distance(v[0], Point(640, h / 2)) - expected) < 0.01); // the polygon is that size
         }
         QVERIFY(!tab().undoStack()->canUndo()); // the mouse is not an edit
+
+        // The tab keeps no scene of its own (issue 35): the radius the mouse set lives in the
+        // run, which the panel and an edit start from.
+        QCOMPARE(&tab().scene(), &tab().frogRun()->scene());
+        QCOMPARE(tab().frogRun()->sceneAsEdited().params.radius, set);
+        QVERIFY(tab().frogRun()->sceneAsEdited().radiusFromFrame); // still the frame's until typed (§4.1)
     }
 
     // The thin line across the sky is the frame's top edge: a caption says so, in the sky

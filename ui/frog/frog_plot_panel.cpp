@@ -95,10 +95,10 @@ FrogPlotPanel::FrogPlotPanel(QWidget* parent)
     retranslate();
 }
 
-void FrogPlotPanel::setRun(const FrogRun* run, const SceneSpec* scene)
+void FrogPlotPanel::setRun(const FrogRun* run)
 {
     m_series = run ? &run->series() : nullptr; // the same object for every run (FrogRun::restoreRun)
-    m_scene = scene;
+    m_run = run;
     refresh(true);
 }
 
@@ -380,8 +380,8 @@ void FrogPlotPanel::drawPhase()
     }
     // §4.15: the first link's angle is limited from the vertical on both solvers; an orbit
     // that reaches a limit is cut off there.
-    if (m_scene && m_scene->has(SceneComponent::AngleLimits) && links > 0)
-        for (double limit : {m_scene->chainShoulderMin, m_scene->chainShoulderMax}) {
+    if (m_run && m_run->scene().has(SceneComponent::AngleLimits) && links > 0)
+        for (double limit : {m_run->scene().chainShoulderMin, m_run->scene().chainShoulderMax}) {
             auto* line = new QCPItemStraightLine(m_plot);
             line->point1->setCoords(limit, 0);
             line->point2->setCoords(limit, 1);
@@ -394,7 +394,7 @@ void FrogPlotPanel::drawPhase()
     const double px = 0.05 * x.size(), py = 0.05 * y.size();
     m_plot->xAxis->setRange(x.lower - px, x.upper + px);
     m_plot->yAxis->setRange(y.lower - py, y.upper + py);
-    m_note->setText(m_scene && m_scene->has(SceneComponent::AngleLimits)
+    m_note->setText(m_run && m_run->scene().has(SceneComponent::AngleLimits)
                         ? tr("Phase plot of the last %1 s: each link's orbit. The dashed lines are the first link's "
                              "limits (§4.15): an orbit that reaches one is cut off.")
                               .arg(displayFixed(m_window, m_window < 10 ? 1 : 0))

@@ -31,7 +31,7 @@ public:
     explicit FrogPlotPanel(QWidget* parent = nullptr);
 
     /// The run whose series is drawn (frog_run.h), and the scene it comes from (its angle limits).
-    void setRun(const FrogRun* run, const SceneSpec* scene);
+    void setRun(const FrogRun* run);
     /// Draws the series again if it has grown (a timer does so ten times a second while the
     /// panel is shown; the tab calls it after a single step or a new run).
     void refresh(bool force = false);
@@ -76,7 +76,7 @@ private:
     void updateBodies();
 
     const SeriesRecorder* m_series = nullptr;
-    const SceneSpec* m_scene = nullptr;
+    const FrogRun* m_run = nullptr;
     QComboBox* m_view;
     QComboBox* m_body;
     QPushButton* m_export;

@@ -26,6 +26,28 @@ Expected<RecordedRun> FrogRun::recordRun(std::unique_ptr<Simulation> simulation,
     return run;
 }
 
+const SceneSpec& FrogRun::scene() const
+{
+    static const SceneSpec none;
+    return sim() ? sim()->scene() : none;
+}
+
+SceneSpec FrogRun::sceneAsEdited() const
+{
+    SceneSpec spec = scene();
+    if (const Simulation* s = sim(); s && spec.hasParam("radius"))
+        spec.params.radius = s->mouseRadius().value_or(spec.params.radius);
+    return spec;
+}
+
+SceneSpec FrogRun::sceneInForce() const
+{
+    SceneSpec spec = sceneAsEdited();
+    if (const Simulation* s = sim())
+        spec.stable = s->stableSettings();
+    return spec;
+}
+
 void FrogRun::setSimulation(std::unique_ptr<Simulation> simulation)
 {
     m_run.reset();

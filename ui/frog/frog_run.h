@@ -93,6 +93,19 @@ public:
     /// The simulation. Everything that drives it goes through the recorded run, so this is
     /// read-only; a seek may replace it (do not keep the pointer across one).
     const Simulation* simulation() const { return sim(); }
+    /// The scene the run was built from, with the stable knobs it started with
+    /// (Simulation::scene): the one copy of the scene the Frog tab, its plots and its exports
+    /// read. An empty scene without a simulation.
+    const SceneSpec& scene() const;
+    /// The solver it runs on (the seed without a simulation).
+    SolverKind solver() const { return sim() ? sim()->solver() : SolverKind::Seed; }
+    /// scene() as the user has it at the step shown: with the radius the mouse has set in
+    /// §4.1's polygon (Simulation::mouseRadius). What the parameters panel shows, an edit of a
+    /// parameter starts from and a document saves.
+    SceneSpec sceneAsEdited() const;
+    /// sceneAsEdited() with the stable knobs as turned live since the start
+    /// (Simulation::stableSettings): what Reset, a stage or a solver starts the next run with.
+    SceneSpec sceneInForce() const;
     /// The run as recorded, its mouse and key events with their steps (null without one).
     const RecordedRun* recorded() const { return m_run.get(); }
     /// The furthest step recorded (the timeline's end), 0 without a simulation.

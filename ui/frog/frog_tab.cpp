@@ -46,8 +46,6 @@ const std::size_t FrogTab::kKeptRunBytes = FrogRun::kSnapshotBytes;
 
 struct FrogTab::KeptRun {
     std::unique_ptr<FrogRun::KeptRun> canvas;
-    SceneSpec scene;
-    SolverKind solver = SolverKind::Seed;
     long mark = -1;
 };
 
@@ -77,11 +75,7 @@ bool FrogTab::rebuild(const SceneSpec& scene, SolverKind solver, QString* error)
         return false;
     }
     auto replaced = std::make_unique<KeptRun>();
-    replaced->scene = m_scene;
-    replaced->solver = m_solver;
     replaced->mark = m_mark;
-    m_scene = scene;
-    m_solver = solver;
     m_mark = -1; // a new run: the stopwatch's mark was of the old one
     replaced->canvas = m_canvas->replaceRun(std::move(sim).value());
     m_replaced.reset();
@@ -138,8 +132,6 @@ void FrogTab::swapRun(RunSlot& slot)
         shown = std::move(m_replaced->run);
     m_replaced.reset();
     if (slot.run) {
-        m_scene = slot.run->scene;
-        m_solver = slot.run->solver;
         m_canvas->restoreRun(std::move(slot.run->canvas)); // the run just built is let go
         m_mark = slot.run->mark;
         if (m_plots)
@@ -187,7 +179,7 @@ bool FrogTab::switchScene(const QString& name, QString* error)
     // The seed never had collisions (§5.2 is future work): those scenes start on the stable
     // solver, as in granota-cli; the solver box switches back to compare.
     spec->stable = knobsInForce(); // the solver's knobs stay with the solver
-    SolverKind solver = m_solver;
+    SolverKind solver = m_run->solver();
     const bool collisions = spec->has(SceneComponent::Collisions) || spec->has(SceneComponent::Obstacles);
     if (collisions)
         solver = SolverKind::Stable;
@@ -199,22 +191,15 @@ bool FrogTab::switchScene(const QString& name, QString* error)
     return true;
 }
 
-StableSettings FrogTab::knobsInForce() const
-{
-    const Simulation* sim = m_canvas->simulation();
-    return sim ? sim->stableSettings() : m_scene.stable;
-}
+const SceneSpec& FrogTab::scene() const { return m_run->scene(); }
 
-SceneSpec FrogTab::sceneWithKnobsInForce() const
-{
-    SceneSpec spec = m_scene;
-    spec.stable = knobsInForce();
-    return spec;
-}
+SolverKind FrogTab::solver() const { return m_run->solver(); }
+
+StableSettings FrogTab::knobsInForce() const { return m_run->sceneInForce().stable; }
 
 bool FrogTab::setSolver(SolverKind solver, QString* error)
 {
-    if (!rebuild(sceneWithKnobsInForce(), solver, error))
+    if (!rebuild(m_run->sceneInForce(), solver, error))
         return false;
     m_note->hide();
     showScene();
@@ -276,7 +261,7 @@ void FrogTab::solverChosen(int index)
 void FrogTab::reset()
 {
     QString error;
-    if (!rebuild(sceneWithKnobsInForce(), m_solver, &error)) // a new run with the knobs as they are
+    if (!rebuild(m_run->sceneInForce(), m_run->solver(), &error)) // a new run with the knobs as they are
         showRefusal(error);
     else
         emit statusMessage(tr("The scene starts again."));
@@ -285,12 +270,13 @@ void FrogTab::reset()
 
 void FrogTab::showScene()
 {
-    const QString name = fromStd(m_scene.name);
+    const SceneSpec& scene = m_run->scene();
+    const QString name = fromStd(scene.name);
     const QSignalBlocker b1(m_sceneCombo), b2(m_solverCombo);
     m_sceneCombo->setCurrentIndex(std::max(0, m_sceneCombo->findData(name)));
-    m_solverCombo->setCurrentIndex(m_solver == SolverKind::Stable ? 1 : 0);
-    m_params->setScene(m_scene);
-    m_bezierBox->setVisible(m_scene.has(SceneComponent::OutlineBezier));
+    m_solverCombo->setCurrentIndex(m_run->solver() == SolverKind::Stable ? 1 : 0);
+    m_params->setScene(m_run->sceneAsEdited());
+    m_bezierBox->setVisible(scene.has(SceneComponent::OutlineBezier));
     retranslate();
     fitSidePanel();
 }
@@ -331,12 +317,12 @@ void FrogTab::showRefusal(const QString& message)
 
 bool FrogTab::applyParameter(const QString& key, const QJsonValue& value, QString* error)
 {
-    if (!m_scene.hasParam(key.toStdString())) {
-        setError(error, tr("Scene “%1” has no parameter “%2”.").arg(fromStd(m_scene.name), key));
+    if (!scene().hasParam(key.toStdString())) {
+        setError(error, tr("Scene “%1” has no parameter “%2”.").arg(fromStd(scene().name), key));
         return false;
     }
     // The scene file's form of the value (a document's, a test's): read as the file reader reads it.
-    return showParameter(withParameter(m_scene, key.toStdString(), fromQJson(value)), error);
+    return showParameter(withParameter(m_run->sceneAsEdited(), key.toStdString(), fromQJson(value)), error);
 }
 
 bool FrogTab::showParameter(const Expected<SceneSpec>& spec, QString* error)
@@ -347,9 +333,9 @@ bool FrogTab::showParameter(const Expected<SceneSpec>& spec, QString* error)
     }
     // The core has no setter on a running Simulation: the scene is built again with the new
     // value (the bodies start again; pause, overlays, solver and outline stay).
-    if (!rebuild(*spec, m_solver, error))
+    if (!rebuild(*spec, m_run->solver(), error))
         return false;
-    m_params->setValues(m_scene);
+    m_params->setValues(m_run->sceneAsEdited());
     m_note->hide();
     emit documentChanged();
     return true;
@@ -357,7 +343,7 @@ bool FrogTab::showParameter(const Expected<SceneSpec>& spec, QString* error)
 
 bool FrogTab::editParameter(const QString& key, const QJsonValue& value, QString* error)
 {
-    auto before = std::make_shared<const SceneSpec>(m_scene);
+    auto before = std::make_shared<const SceneSpec>(m_run->sceneAsEdited());
     if (!applyParameter(key, value, error))
         return false;
     pushParameterStep(key, std::move(before));
@@ -366,13 +352,13 @@ bool FrogTab::editParameter(const QString& key, const QJsonValue& value, QString
 
 bool FrogTab::editParameterNumber(const QString& key, int part, int index, double value, QString* error)
 {
-    if (!m_scene.hasParam(key.toStdString())) {
-        setError(error, tr("Scene “%1” has no parameter “%2”.").arg(fromStd(m_scene.name), key));
+    if (!scene().hasParam(key.toStdString())) {
+        setError(error, tr("Scene “%1” has no parameter “%2”.").arg(fromStd(scene().name), key));
         return false;
     }
-    auto before = std::make_shared<const SceneSpec>(m_scene);
+    auto before = std::make_shared<const SceneSpec>(m_run->sceneAsEdited());
     // One number set through the core's table and the scene checked: nothing is written to JSON (issue 35).
-    if (!showParameter(withParameter(m_scene, key.toStdString(), part, index, value), error))
+    if (!showParameter(withParameter(m_run->sceneAsEdited(), key.toStdString(), part, index, value), error))
         return false;
     pushParameterStep(key, std::move(before));
     return true;
@@ -384,14 +370,14 @@ void FrogTab::pushParameterStep(const QString& key, std::shared_ptr<const SceneS
     const std::shared_ptr<RunSlot> kept = takeReplaced();
     // Undo and redo give `key` the value the scene they hold has, and only that parameter.
     auto apply = [this, key, kept](const std::shared_ptr<const SceneSpec>& scene) {
-        if (showParameter(withParameterOf(m_scene, *scene, key.toStdString()), nullptr))
+        if (showParameter(withParameterOf(m_run->sceneAsEdited(), *scene, key.toStdString()), nullptr))
             swapRun(*kept);
     };
     // Consecutive edits of the same parameter merge, so that spinning an arrow is one step:
     // the step keeps the run from before the first of them.
     const int index = m_undo->index();
     m_undo->push(new ValueCommand<std::shared_ptr<const SceneSpec>>(
-        apply, std::move(before), std::make_shared<const SceneSpec>(m_scene),
+        apply, std::move(before), std::make_shared<const SceneSpec>(m_run->sceneAsEdited()),
         tr("Change %1").arg(ErrorText::parameterLabel(key.toStdString())), valueMergeId(kParameterMergeIdBase, key),
         {/*dropWhenUnchanged=*/false, /*appliedAlready=*/true}));
     const bool merged = m_undo->index() == index;
@@ -461,7 +447,7 @@ void FrogTab::setPlotsShown(bool on)
         m_showPlots->setChecked(on);
     }
     m_canvas->setRecordingSeries(on);
-    m_plots->setRun(m_run, &m_scene);
+    m_plots->setRun(m_run);
     m_plots->setVisible(on); // at the height it asks for (FrogPlotPanel::sizeHint), the canvas the rest
     m_canvas->setMarkedBody(on ? m_plots->body() : -1);
 }
@@ -469,7 +455,7 @@ void FrogTab::setPlotsShown(bool on)
 void FrogTab::showExplosion(bool blownUp)
 {
     m_explosion->setVisible(blownUp);
-    m_explosionStable->setVisible(m_solver == SolverKind::Seed);
+    m_explosionStable->setVisible(m_run->solver() == SolverKind::Seed);
 }
 
 void FrogTab::timelineMoved(int step)
@@ -518,8 +504,8 @@ void FrogTab::setSpeed(double speed)
 FrogDocument FrogTab::document() const
 {
     FrogDocument doc;
-    doc.scene = m_scene;
-    doc.solver = m_solver;
+    doc.scene = m_run->sceneAsEdited();
+    doc.solver = m_run->solver();
     doc.overlays = m_canvas->overlays();
     doc.fitOutline = m_fit->isChecked();
     doc.paused = !m_canvas->running();

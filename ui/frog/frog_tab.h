@@ -67,9 +67,10 @@ public:
 
     /// The solver (rebuilds the scene on it). False with a message when the core refuses.
     bool setSolver(SolverKind solver, QString* error);
-    SolverKind solver() const { return m_solver; }
-    QString sceneName() const { return QString::fromStdString(m_scene.name); }
-    const SceneSpec& scene() const { return m_scene; }
+    SolverKind solver() const;
+    QString sceneName() const { return QString::fromStdString(scene().name); }
+    /// The scene of the run shown (FrogRun::scene): the tab keeps no copy of its own.
+    const SceneSpec& scene() const;
     /// Edits parameter `key` (docs/scenes.md name) to `value` in the scene file's form, live and
     /// undoable. False with a message when the core refuses.
     bool editParameter(const QString& key, const QJsonValue& value, QString* error);
@@ -132,7 +133,7 @@ private:
     /// A new run of `scene` on `solver`; the run it replaces waits in m_replaced for the undo
     /// step of the change (takeReplaced), until the next rebuild.
     bool rebuild(const SceneSpec& scene, SolverKind solver, QString* error);
-    /// A run a change of the scene replaced, with the scene, solver and stopwatch mark it had
+    /// A run a change of the scene replaced (its scene and solver are its simulation's), with the stopwatch mark it had
     /// (docs/rewind.md, "A change of the scene"); `released` when it was let go to stay within
     /// kKeptRunBytes. The undo step of the change holds it and swaps it with the run shown.
     struct KeptRun;
@@ -170,8 +171,6 @@ private:
     bool applyStableSettings(const StableSettings& settings, QString* error);
     /// The stable solver's knobs as the run has them now (turned live since its start).
     StableSettings knobsInForce() const;
-    /// The scene with them: what Reset, a stage or a solver starts the next run with.
-    SceneSpec sceneWithKnobsInForce() const;
     void showStableSettings();
     void timelineMoved(int step);
     void stepOnce();
@@ -185,8 +184,6 @@ private:
     FrogParametersPanel* m_params;
     FrogPlotPanel* m_plots = nullptr;
     QCheckBox* m_showPlots = nullptr;
-    SceneSpec m_scene;
-    SolverKind m_solver = SolverKind::Seed;
 
     QScrollArea* m_scroll = nullptr;
     QWidget* m_side = nullptr;

@@ -334,17 +334,16 @@ void FrogTab::connectControls()
     });
     connect(m_timeline, &QSlider::valueChanged, this, &FrogTab::timelineMoved);
     connect(m_markButton, &QPushButton::clicked, this, &FrogTab::toggleMark);
-    connect(m_canvas, &FrogCanvas::mouseRadiusChanged, this, [this](double radius) {
+    connect(m_canvas, &FrogCanvas::mouseRadiusChanged, this, [this](double) {
         // §4.1: the mouse sets the radius; the field shows it (no undo step, nothing rebuilt).
-        if (!m_scene.hasParam("radius") || m_scene.params.radius == radius)
-            return;
-        m_scene.params.radius = radius;
-        m_params->setValues(m_scene);
+        // The run holds it (FrogRun::sceneAsEdited): the panel shows it.
+        if (scene().hasParam("radius"))
+            m_params->setValues(m_run->sceneAsEdited());
     });
     connect(m_params, &FrogParametersPanel::edited, this, [this](const QString& key, int part, int index, double value) {
         QString error;
         if (!editParameterNumber(key, part, index, value, &error)) {
-            m_params->setValues(m_scene); // the field shows the value in force again
+            m_params->setValues(m_run->sceneAsEdited()); // the field shows the value in force again
             showRefusal(error);
         }
     });

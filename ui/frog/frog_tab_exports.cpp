@@ -42,8 +42,8 @@ QString FrogTab::csv() const
     QString out;
     QTextStream s(&out);
     const Simulation* sim = m_canvas->simulation();
-    s << "# scene " << QString::fromStdString(m_scene.name) << " (" << QString::fromStdString(m_scene.section) << "), solver "
-      << QString::fromStdString(solverName(m_solver)) << ", step " << (sim ? sim->stepCount() : 0) << "\n";
+    s << "# scene " << QString::fromStdString(scene().name) << " (" << QString::fromStdString(scene().section) << "), solver "
+      << QString::fromStdString(solverName(m_run->solver())) << ", step " << (sim ? sim->stepCount() : 0) << "\n";
     s << "kind,index,point,x,y\n";
     if (!sim)
         return out;
@@ -69,14 +69,14 @@ void FrogTab::drawTikz(TikzWriter& w) const
     const Simulation* sim = m_canvas->simulation();
     if (!sim)
         return;
-    const double H = m_scene.params.height;
+    const double H = scene().params.height;
     w.comment(QStringLiteral("Granota: scene %1 (%2), solver %3, step %4")
-                  .arg(QString::fromStdString(m_scene.name), QString::fromStdString(m_scene.section),
-                       QString::fromStdString(solverName(m_solver)))
+                  .arg(QString::fromStdString(scene().name), QString::fromStdString(scene().section),
+                       QString::fromStdString(solverName(m_run->solver())))
                   .arg(sim->stepCount()));
     // The frame, so that the picture keeps the scene's proportions; what is drawn is clipped
     // to it, as the canvas clips to the scene (a foot past the floor is not drawn).
-    const double W = m_scene.params.width;
+    const double W = scene().params.width;
     w.polyline({{0, 0}, {W, 0}, {W, H}, {0, H}}, QColor(0x9a, 0x9a, 0x9a), 0.4, false, true);
     w.clipTo({0, 0}, {W, H});
     // As FrogCanvas::drawScene paints them: filled stones and bodies, legs with their feet.
@@ -112,12 +112,12 @@ void FrogTab::drawTikz(TikzWriter& w) const
         w.polygon(flippedForTikz(legOutline(pts[0], pts[1], pts[2], FrogCanvas::kLegHalfWidth, 6), H), art.legPen().color(),
                   FrogArt::skinColour(0), 0.6);
     };
-    const bool frog = m_scene.model == SceneModel::Frog && sim->chainCount() >= 4;
+    const bool frog = scene().model == SceneModel::Frog && sim->chainCount() >= 4;
     if (frog) {
         leg(2);
         leg(3);
     }
-    const bool filled = m_scene.has(SceneComponent::Fill);
+    const bool filled = scene().has(SceneComponent::Fill);
     for (int i = 0; i < sim->bodyCount(); ++i) {
         const std::vector<Point> outline = flippedForTikz(m_canvas->bodyOutline(i), H);
         if (filled)
@@ -129,9 +129,9 @@ void FrogTab::drawTikz(TikzWriter& w) const
         leg(0);
         leg(1);
     }
-    if (m_scene.model == SceneModel::Frog && m_scene.has(SceneComponent::Head) && sim->bodyCount() > 0)
+    if (scene().model == SceneModel::Frog && scene().has(SceneComponent::Head) && sim->bodyCount() > 0)
         drawTikzHead(w);
-    if (m_scene.model == SceneModel::Pendulum)
+    if (scene().model == SceneModel::Pendulum)
         for (int c = 0; c < sim->chainCount(); ++c) {
             sim->chainJoints(c, pts);
             w.polyline(flippedForTikz(pts, H), QColor(0x37, 0x47, 0x4f), 1.5);
@@ -144,8 +144,8 @@ void FrogTab::drawTikzHead(TikzWriter& w) const
 {
     // The head as the canvas paints it over the body (FrogCanvas::drawScene), recorded as
     // paths (as Figs 4.11 and 4.12 are): each filled outline filled, each line drawn.
-    const double H = m_scene.params.height;
-    PathRecorder recorder(QSize(int(std::ceil(m_scene.params.width)), int(std::ceil(H))));
+    const double H = scene().params.height;
+    PathRecorder recorder(QSize(int(std::ceil(scene().params.width)), int(std::ceil(H))));
     {
         QPainter p(&recorder);
         m_canvas->paintHeadOf(p, 0);

@@ -47,7 +47,7 @@ bool FrogTab::applyStableSettings(const StableSettings& settings, QString* error
 
 bool FrogTab::editStableSetting(const QString& key, double value, QString* error)
 {
-    SceneSpec changed = sceneWithKnobsInForce();
+    SceneSpec changed = m_run->sceneInForce();
     const auto ok = applySetting(changed, key.toStdString() + "=" + formatDouble(value));
     if (!ok) {
         if (error)
@@ -84,7 +84,7 @@ void FrogTab::showStableSettings()
     m_substeps->setValue(knobs.substeps);
     m_compliance->setValue(knobs.edgeCompliance);
     m_damping->setValue(knobs.edgeDampingRatio);
-    m_stableBox->setVisible(m_solver == SolverKind::Stable);
+    m_stableBox->setVisible(m_run->solver() == SolverKind::Stable);
     // What α means for this scene: the first edge of the first body, at rest, its vertex's mass.
     const auto spring = edgeSpringShown();
     // Rigid edges, or none: no frequency to state ("—").

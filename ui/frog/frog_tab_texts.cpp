@@ -43,12 +43,12 @@ QString FrogTab::sceneDescription(const QString& name) const
 
 QString FrogTab::sceneHint() const
 {
-    if (m_scene.model == SceneModel::Pendulum)
+    if (scene().model == SceneModel::Pendulum)
         return tr("The pendulum hangs from the mouse: move the mouse over the picture.");
-    if (m_scene.model == SceneModel::Stage) {
-        if (m_scene.components.empty())
+    if (scene().model == SceneModel::Stage) {
+        if (scene().components.empty())
             return tr("Move the mouse up and down: the radius is r = |mouseY − h/2| (§4.1).");
-        if (m_scene.has(SceneComponent::Bounce))
+        if (scene().has(SceneComponent::Bounce))
             return tr("Click to start the polygon again at the mouse (§4.3).");
         return tr("Reset (R) drops the polygon again.");
     }
@@ -75,7 +75,7 @@ void FrogTab::retranslate()
         m_sceneCombo->setItemText(i, sceneTitle(m_sceneCombo->itemData(i).toString()));
     m_sceneCombo->setToolTip(tr("The stages of chapter 4, in the thesis's order, and the future work of §5.2. "
                                 "Each scene builds, draws and shows only its own components."));
-    m_description->setText(sceneDescription(QString::fromStdString(m_scene.name)));
+    m_description->setText(sceneDescription(QString::fromStdString(scene().name)));
     m_solverLabel->setText(tr("Solver"));
     m_solverCombo->setItemText(0, tr("Seed (Annex II)"));
     m_solverCombo->setItemText(1, tr("Stable (XPBD)"));
@@ -84,8 +84,8 @@ void FrogTab::retranslate()
                                  "area and stay stable on stiff and extreme settings. Switching starts the scene again."));
     m_canvas->setAccessibleName(tr("Frog canvas"));
     m_canvas->setSceneSummary(tr("Scene %1, %2 solver")
-                                  .arg(sceneTitle(QString::fromStdString(m_scene.name)),
-                                       m_solverCombo->itemText(m_solver == SolverKind::Stable ? 1 : 0)));
+                                  .arg(sceneTitle(QString::fromStdString(scene().name)),
+                                       m_solverCombo->itemText(m_run->solver() == SolverKind::Stable ? 1 : 0)));
     m_pause->setText(m_pause->isChecked() ? tr("Run") : tr("Pause"));
     keepWidestTextWidth(m_pause, {tr("Run"), tr("Pause")}); // one width, running or not
     m_pause->setToolTip(tr("Pause or run the animation, one fixed step per frame at 60 frames per second (P)."));
@@ -141,7 +141,7 @@ void FrogTab::retranslate()
     m_explosionReset->setToolTip(m_reset->toolTip());
     m_solverNote->setText(tr("The seed solver has no angle constraints: these shapes round into blobs. The Stable "
                              "solver keeps their form."));
-    m_solverNote->setVisible(m_solver == SolverKind::Seed && seedRoundsShapes(m_scene));
+    m_solverNote->setVisible(m_run->solver() == SolverKind::Seed && seedRoundsShapes(scene()));
 
     m_bezierBox->setTitle(tr("Bézier outline (§4.9)"));
     m_precomputed->setText(tr("Precomputed points"));
