@@ -266,7 +266,7 @@ int main(int argc, char* argv[])
         if (!ok || steps < 0 || steps > 100000)
             return fail(say("bad number of steps “%1” (0 … 100000)").arg(parser.value(stepsOption)));
         for (int i = 0; i < steps; ++i)
-            window.frogTab()->canvas()->step();
+            window.frogTab()->frogRun()->step();
         window.frogTab()->plotPanel()->refresh(true);
     }
     if (parser.isSet(plotBodyOption)) {
@@ -274,7 +274,7 @@ int main(int argc, char* argv[])
         if (!frog->plotPanel()->isVisibleTo(&window) && !parser.isSet(plotsOption))
             frog->setPlotsShown(true);
         frog->plotPanel()->refresh(true);
-        const int bodies = frog->canvas()->series().bodies();
+        const int bodies = frog->frogRun()->series().bodies();
         bool ok = false;
         const int k = parser.value(plotBodyOption).toInt(&ok);
         if (bodies < 2)

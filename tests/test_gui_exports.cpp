@@ -358,7 +358,7 @@ private slots:
         auto* tab = window.findChild<FrogTab*>();
         auto* canvas = window.findChild<granota::ui::FrogCanvas*>();
         QVERIFY(tab && canvas);
-        QTRY_VERIFY(canvas->simulation() && canvas->simulation()->stepCount() > 5); // running
+        QTRY_VERIFY(canvas->frogRun()->simulation() && canvas->frogRun()->simulation()->stepCount() > 5); // running
         granota::ui::FrogCanvas::Overlays live;
         live.frameTime = true;
         live.readouts = true;
@@ -372,7 +372,7 @@ private slots:
         long shown = -1;
         folderOfFileDialog(
             [&] {
-                shown = canvas->simulation()->stepCount();
+                shown = canvas->frogRun()->simulation()->stepCount();
                 frames->trigger();
             },
             [&](QFileDialog& d) {
@@ -399,7 +399,7 @@ private slots:
         for (int k = 0; k < 3; ++k) {
             const QImage frame(out.filePath(QStringLiteral("frame_%1.png").arg(k, 4, 10, QLatin1Char('0'))));
             QCOMPARE(frame.size(), QSize(1280, 720));
-            QVERIFY(canvas->seek(shown + k));
+            QVERIFY(canvas->frogRun()->seek(shown + k));
             const QImage expected = picture(frame.size(), false);
             QVERIFY2(frame.convertToFormat(QImage::Format_ARGB32) == expected,
                      qPrintable(QStringLiteral("frame %1 is not step %2").arg(k).arg(shown + k)));

@@ -124,8 +124,8 @@ struct RunState {
 };
 RunState runState(const FrogCanvas& canvas)
 {
-    const Simulation& sim = *canvas.simulation();
-    RunState s{sim.stepCount(), canvas.recordedSteps(), granota::simulationTraceRow(sim), {}};
+    const Simulation& sim = *canvas.frogRun()->simulation();
+    RunState s{sim.stepCount(), canvas.frogRun()->recordedSteps(), granota::simulationTraceRow(sim), {}};
     std::vector<Point> v;
     for (int b = 0; b < sim.bodyCount(); ++b) {
         sim.bodyVertices(b, v);
@@ -151,18 +151,18 @@ void recordAThrow(FrogTab& tab)
 {
     FrogCanvas* canvas = tab.canvas();
     for (int i = 0; i < 60; ++i)
-        canvas->step();
-    const QPoint at = canvas->toWidget(centroid(*canvas->simulation())).toPoint();
+        canvas->frogRun()->step();
+    const QPoint at = canvas->toWidget(centroid(*canvas->frogRun()->simulation())).toPoint();
     QTest::mouseMove(canvas, at);
     QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, at);
     for (int i = 1; i <= 15; ++i) {
         QTest::mouseMove(canvas, at + QPoint(8 * i, -5 * i));
-        canvas->step();
-        canvas->step();
+        canvas->frogRun()->step();
+        canvas->frogRun()->step();
     }
     QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, at + QPoint(120, -75));
     for (int i = 0; i < 90; ++i)
-        canvas->step();
+        canvas->frogRun()->step();
 }
 
 /// The value of a spin box, whole or decimal.
@@ -375,12 +375,12 @@ private slots:
         connect(&tab, &TabPage::statusMessage, &tab, [&messages](const QString& text) { messages << text; });
         FrogCanvas* canvas = tab.canvas();
         recordAThrow(tab);
-        tab.toggleMark();  // the stopwatch at step 180
-        canvas->seek(150); // shown at step 150 of 180
+        tab.toggleMark();             // the stopwatch at step 180
+        canvas->frogRun()->seek(150); // shown at step 150 of 180
         const RunState run = runState(*canvas);
         QCOMPARE(run.step, 150L);
         QCOMPARE(run.recorded, 180L);
-        const std::size_t events = canvas->run()->recording().events.size();
+        const std::size_t events = canvas->frogRun()->recorded()->recording().events.size();
         QVERIFY(events > 10);
         // Two notches of the area factor (one merged undo step), as a spin box gives them.
         auto* factor = tab.findChild<QDoubleSpinBox*>(QStringLiteral("param_area_factor__0"));
@@ -392,29 +392,29 @@ private slots:
         const double changedTo = factor->value();
         QVERIFY(changedTo > was);
         QCOMPARE(tab.undoStack()->count(), count + 1);
-        QCOMPARE(canvas->recordedSteps(), 0L); // a new run
+        QCOMPARE(canvas->frogRun()->recordedSteps(), 0L); // a new run
         QVERIFY2(messages.join('\n').contains(QStringLiteral("Undo brings back the run of 180 step")),
                  qPrintable(messages.join('\n')));
         for (int i = 0; i < 40; ++i)
-            canvas->step();
+            canvas->frogRun()->step();
         const RunState changed = runState(*canvas);
         tab.undoStack()->undo();
         QCOMPARE(factor->value(), was);
         QVERIFY(runState(*canvas) == run);
-        QCOMPARE(canvas->run()->recording().events.size(), events);
+        QCOMPARE(canvas->frogRun()->recorded()->recording().events.size(), events);
         QCOMPARE(tab.markedStep(), 180L);
         QCOMPARE(tab.timeline()->maximum(), 180);
         QCOMPARE(tab.timeline()->value(), 150);
         // The run goes on as it went: to its end, as recorded.
-        canvas->seek(180);
-        QCOMPARE(canvas->simulation()->stepCount(), 180L);
+        canvas->frogRun()->seek(180);
+        QCOMPARE(canvas->frogRun()->simulation()->stepCount(), 180L);
         // Redo: the new value with the 40 steps it had run.
         tab.undoStack()->redo();
         QCOMPARE(factor->value(), changedTo);
         QVERIFY(runState(*canvas) == changed);
         tab.undoStack()->undo();
-        QCOMPARE(canvas->simulation()->stepCount(), 180L);
-        QCOMPARE(canvas->recordedSteps(), 180L);
+        QCOMPARE(canvas->frogRun()->simulation()->stepCount(), 180L);
+        QCOMPARE(canvas->frogRun()->recordedSteps(), 180L);
     }
 
     // The same for the stage and the solver, chosen in their boxes.
@@ -437,19 +437,19 @@ private slots:
         };
         choose(solverBox, 1 - solverBox->currentIndex());
         QCOMPARE(tab.solver(), SolverKind::Stable);
-        QCOMPARE(canvas->recordedSteps(), 0L);
+        QCOMPARE(canvas->frogRun()->recordedSteps(), 0L);
         for (int i = 0; i < 20; ++i)
-            canvas->step();
+            canvas->frogRun()->step();
         auto* sceneBox = tab.findChild<QComboBox*>(QStringLiteral("frogScene"));
         choose(sceneBox, 0);
         QCOMPARE(tab.sceneName(), QStringLiteral("polygon"));
-        QCOMPARE(canvas->recordedSteps(), 0L);
+        QCOMPARE(canvas->frogRun()->recordedSteps(), 0L);
         tab.undoStack()->undo();
         QCOMPARE(tab.sceneName(), QStringLiteral("frog"));
-        QCOMPARE(canvas->recordedSteps(), 20L); // the stable solver's run of 20 steps
+        QCOMPARE(canvas->frogRun()->recordedSteps(), 20L); // the stable solver's run of 20 steps
         tab.undoStack()->undo();
         QVERIFY(runState(*canvas) == run);
-        QCOMPARE(canvas->simulation()->solver(), SolverKind::Seed);
+        QCOMPARE(canvas->frogRun()->simulation()->solver(), SolverKind::Seed);
     }
 };
 

@@ -57,7 +57,7 @@ Point centroid(const Simulation& sim, int body = 0)
 void steps(FrogTab& tab, int n)
 {
     for (int i = 0; i < n; ++i)
-        tab.canvas()->step();
+        tab.frogRun()->step();
 }
 
 /// How many different colours a coarse grid of the image has: a drawn scene has many.
@@ -145,7 +145,7 @@ private slots:
             QVERIFY(tab().setSolver(solver, nullptr));
             steps(tab(), 150);
             std::vector<Point> v;
-            tab().canvas()->simulation()->bodyVertices(0, v);
+            tab().frogRun()->simulation()->bodyVertices(0, v);
             const Point along = v[1] - v[v.size() - 1];
             const double turned = std::atan2(along.y, along.x); // computed here, not by head_pose
             QVERIFY2(std::fabs(turned) > 0.05, qPrintable(QString::number(turned)));
@@ -184,7 +184,7 @@ private slots:
         overlays.readouts = true;
         canvas->setOverlays(overlays);
         QVERIFY(tab().setScene("many-bodies", nullptr));
-        const int bodies = canvas->simulation()->bodyCount();
+        const int bodies = canvas->frogRun()->simulation()->bodyCount();
         QVERIFY(bodies > 1);
         const QString first = QStringLiteral("Body 1 of %1: area").arg(bodies);
         const QString mean = QStringLiteral("Area error, mean of the %1 bodies,").arg(bodies);
@@ -195,7 +195,7 @@ private slots:
         QVERIFY2(!lines.contains(QStringLiteral("Area error ")), qPrintable(lines));
 
         QVERIFY(tab().setScene("frog", nullptr));
-        QCOMPARE(canvas->simulation()->bodyCount(), 1);
+        QCOMPARE(canvas->frogRun()->simulation()->bodyCount(), 1);
         QTRY_VERIFY2_WITH_TIMEOUT(canvas->textLines().join('\n').contains(QStringLiteral("Area error ")),
                                   qPrintable(canvas->textLines().join('\n')), kEventWaitMs);
         QVERIFY(!canvas->textLines().join('\n').contains(QStringLiteral("Body 1 of")));
@@ -208,9 +208,9 @@ private slots:
         auto* step = tab().findChild<QPushButton*>("frogStep");
         QVERIFY(pause && step);
         pause->click();
-        QVERIFY(!tab().canvas()->running());
-        QVERIFY(!tab().canvas()->animating());
-        const Simulation* sim = tab().canvas()->simulation();
+        QVERIFY(!tab().frogRun()->running());
+        QVERIFY(!tab().frogRun()->animating());
+        const Simulation* sim = tab().frogRun()->simulation();
         const long before = sim->stepCount();
         const Point start = centroid(*sim);
         step->click();
@@ -224,8 +224,8 @@ private slots:
 
         // Running again: the 60 Hz timer drives the steps.
         pause->click();
-        QVERIFY(tab().canvas()->running());
-        QVERIFY(tab().canvas()->animating());
+        QVERIFY(tab().frogRun()->running());
+        QVERIFY(tab().frogRun()->animating());
         QTRY_VERIFY_WITH_TIMEOUT(sim->stepCount() > before + 41 + 5, kEventWaitMs);
     }
 
@@ -233,35 +233,35 @@ private slots:
     {
         // Issue 12: the stable solver with 10000 sides costs 30–50 ms a step; stepped every
         // frame it held the event loop frame after frame. Now a frame steps at most
-        // FrogCanvas::kFrameWork of counted work (points × substeps), and says it is slower.
+        // FrogRun::kFrameWork of counted work (points × substeps), and says it is slower.
         FrogCanvas* canvas = tab().canvas();
         QVERIFY(tab().setScene("frog", nullptr));
         QVERIFY(tab().setSolver(SolverKind::Stable, nullptr));
-        QCOMPARE(canvas->framesPerStep(), 1); // the thesis's frog: one step per frame, real time
+        QCOMPARE(canvas->frogRun()->framesPerStep(), 1); // the thesis's frog: one step per frame, real time
         QString error;
         QVERIFY2(tab().editParameter("sides", 10000, &error), qPrintable(error));
-        const Simulation* sim = canvas->simulation();
+        const Simulation* sim = canvas->frogRun()->simulation();
         const long work = sim->workPerStep();
         QVERIFY(work >= 10000L * 8); // 10000 vertices, 8 substeps
-        const int every = canvas->framesPerStep();
-        QCOMPARE(every, static_cast<int>((work + FrogCanvas::kFrameWork - 1) / FrogCanvas::kFrameWork));
+        const int every = canvas->frogRun()->framesPerStep();
+        QCOMPARE(every, static_cast<int>((work + FrogRun::kFrameWork - 1) / FrogRun::kFrameWork));
         QVERIFY(every > 1);
         QVERIFY2(canvas->textLines().join('\n').contains("slower than real time"), qPrintable(canvas->textLines().join('\n')));
-        QVERIFY(canvas->running() && canvas->animating());
-        const long stepsBefore = sim->stepCount(), framesBefore = canvas->frameCount();
-        QTRY_VERIFY_WITH_TIMEOUT(canvas->frameCount() >= framesBefore + 3 * every, 60000);
-        const long frames = canvas->frameCount() - framesBefore, steps = sim->stepCount() - stepsBefore;
+        QVERIFY(canvas->frogRun()->running() && canvas->frogRun()->animating());
+        const long stepsBefore = sim->stepCount(), framesBefore = canvas->frogRun()->frameCount();
+        QTRY_VERIFY_WITH_TIMEOUT(canvas->frogRun()->frameCount() >= framesBefore + 3 * every, 60000);
+        const long frames = canvas->frogRun()->frameCount() - framesBefore, steps = sim->stepCount() - stepsBefore;
         QVERIFY(steps >= 1); // it runs, slowly
         // Counted work per frame within the budget: one step every `every` frames at most.
-        QVERIFY2(steps * work <= (frames + every) * FrogCanvas::kFrameWork,
+        QVERIFY2(steps * work <= (frames + every) * FrogRun::kFrameWork,
                  qPrintable(QStringLiteral("%1 steps in %2 frames").arg(steps).arg(frames)));
         // Back to the thesis's 10 sides: real time again, the note gone.
         QVERIFY(tab().editParameter("sides", 10, &error));
-        QCOMPARE(canvas->framesPerStep(), 1);
+        QCOMPARE(canvas->frogRun()->framesPerStep(), 1);
         QVERIFY(!canvas->textLines().join('\n').contains("slower than real time"));
-        const long realBefore = canvas->simulation()->stepCount(), realFrames = canvas->frameCount();
-        QTRY_VERIFY_WITH_TIMEOUT(canvas->frameCount() >= realFrames + 10, kEventWaitMs);
-        QCOMPARE(canvas->simulation()->stepCount() - realBefore, canvas->frameCount() - realFrames);
+        const long realBefore = canvas->frogRun()->simulation()->stepCount(), realFrames = canvas->frogRun()->frameCount();
+        QTRY_VERIFY_WITH_TIMEOUT(canvas->frogRun()->frameCount() >= realFrames + 10, kEventWaitMs);
+        QCOMPARE(canvas->frogRun()->simulation()->stepCount() - realBefore, canvas->frogRun()->frameCount() - realFrames);
     }
 
     // Issue 16: slow motion steps once every few frames, never with a smaller step, so at ⅛
@@ -281,32 +281,32 @@ private slots:
         speed->setCurrentIndex(0);
         emit speed->activated(0);
         FrogCanvas* canvas = tab().canvas();
-        QCOMPARE(canvas->speed(), 0.125);
-        QCOMPARE(canvas->framesPerStep(), 8);
+        QCOMPARE(canvas->frogRun()->speed(), 0.125);
+        QCOMPARE(canvas->frogRun()->framesPerStep(), 8);
         QVERIFY(canvas->textLines().join('\n').contains("Slow motion"));
-        const Simulation* sim = canvas->simulation();
+        const Simulation* sim = canvas->frogRun()->simulation();
         QCOMPARE(QByteArray::fromStdString(simulationTraceRow(*sim)), rows[1]);
         for (int frame = 1; frame <= 1600; ++frame) {
             const long before = sim->stepCount();
-            canvas->runFrame();
+            canvas->frogRun()->runFrame();
             QCOMPARE(sim->stepCount() - before, frame % 8 == 0 ? 1L : 0L);
             if (frame % 8 == 0)
                 QCOMPARE(QByteArray::fromStdString(simulationTraceRow(*sim)), rows[1 + frame / 8]);
         }
         // Fast: ] twice from 1× is 4×, four steps a frame, the same rows.
         QVERIFY(tab().setScene("frog", nullptr));
-        sim = canvas->simulation();
+        sim = canvas->frogRun()->simulation();
         tab().setSpeed(1);
         // ] is a shortcut of the tab's window: it answers only once the window manager has
         // made that window active (a bounded wait, which names the window if it fails).
         QVERIFY(waitActive(&tab()));
         QTest::keyClick(canvas, Qt::Key_BracketRight);
         QTest::keyClick(canvas, Qt::Key_BracketRight);
-        QCOMPARE(canvas->speed(), 4.0);
+        QCOMPARE(canvas->frogRun()->speed(), 4.0);
         QCOMPARE(speed->currentText(), QStringLiteral("4×"));
-        QCOMPARE(canvas->stepsPerFrame(), 4);
+        QCOMPARE(canvas->frogRun()->stepsPerFrame(), 4);
         for (int frame = 1; frame <= 50; ++frame) {
-            canvas->runFrame();
+            canvas->frogRun()->runFrame();
             QCOMPARE(sim->stepCount(), 4L * frame);
             QCOMPARE(QByteArray::fromStdString(simulationTraceRow(*sim)), rows[1 + 4 * frame]);
         }
@@ -316,13 +316,13 @@ private slots:
         QCOMPARE(saved["speed"].toDouble(), 4.0);
         tab().setSpeed(0.25);
         QVERIFY(tab().loadState(saved, nullptr));
-        QCOMPARE(canvas->speed(), 4.0);
+        QCOMPARE(canvas->frogRun()->speed(), 4.0);
         QJsonObject bad = saved;
         bad["speed"] = 3;
         QString error;
         QVERIFY(!tab().loadState(bad, &error));
         QVERIFY(error.contains("speed"));
-        QCOMPARE(canvas->speed(), 4.0);
+        QCOMPARE(canvas->frogRun()->speed(), 4.0);
     }
 
     // Issue 16: the plots over time under the canvas. They record only while shown, draw the
@@ -346,30 +346,30 @@ private slots:
         FrogPlotPanel* panel = tab().plotPanel();
         QVERIFY(!panel->isVisible());
         steps(tab(), 10);
-        QVERIFY(canvas->series().samples().empty()); // hidden: nothing recorded
+        QVERIFY(canvas->frogRun()->series().samples().empty()); // hidden: nothing recorded
         tab().reset();
         auto* box = tab().findChild<QCheckBox*>("frogShowPlots");
         QVERIFY(box && !box->isChecked());
         box->click();
-        QVERIFY(panel->isVisible() && canvas->recordingSeries());
+        QVERIFY(panel->isVisible() && canvas->frogRun()->recordingSeries());
         QTRY_VERIFY_WITH_TIMEOUT(panel->height() >= 150, kEventWaitMs);
         QVERIFY(canvas->height() > panel->height()); // the canvas keeps most of the column
-        QCOMPARE(canvas->series().samples().size(), std::size_t(1));
+        QCOMPARE(canvas->frogRun()->series().samples().size(), std::size_t(1));
         steps(tab(), 240);
-        QCOMPARE(canvas->series().samples().size(), std::size_t(241));
+        QCOMPARE(canvas->frogRun()->series().samples().size(), std::size_t(241));
         panel->refresh(true);
         QCustomPlot* plot = panel->plot();
         QCOMPARE(panel->view(), FrogPlotPanel::View::Energy);
         QCPGraph* total = plot->graph(3);
         QCOMPARE(total->dataCount(), 241);
         QCOMPARE(total->data()->at(240)->key, 4.0); // 240 steps at 60 a second
-        QCOMPARE(total->data()->at(240)->value, canvas->series().samples().back().total);
+        QCOMPARE(total->data()->at(240)->value, canvas->frogRun()->series().samples().back().total);
         QCOMPARE(plot->graph(2)->visible(), solver == SolverKind::Stable); // elastic: the stable solver's only
         QCOMPARE(plot->xAxis->range().lower, 0.0);
         QCOMPARE(plot->xAxis->range().upper, 10.0);
         // Paused, the timer steps nothing: the plot stands still.
         QTest::qWait(350);
-        QCOMPARE(canvas->series().samples().size(), std::size_t(241));
+        QCOMPARE(canvas->frogRun()->series().samples().size(), std::size_t(241));
         QCOMPARE(total->dataCount(), 241);
         // A window of 2 s scrolls: the last 2 s only.
         panel->setWindowSeconds(2);
@@ -385,7 +385,7 @@ private slots:
         }
         panel->setView(FrogPlotPanel::View::AreaError);
         QCOMPARE(plot->graph(0)->dataCount(), 121);
-        QCOMPARE(plot->graph(0)->data()->at(120)->value, canvas->series().samples().back().areaErrorPercent);
+        QCOMPARE(plot->graph(0)->data()->at(120)->value, canvas->frogRun()->series().samples().back().areaErrorPercent);
         QVERIFY(!plot->graph(3)->visible());
 
         // The CSV is granota-cli simulate --series, byte for byte.
@@ -406,12 +406,12 @@ private slots:
 
         // Hidden again: recording stops; a new run starts a new series.
         box->click();
-        QVERIFY(!panel->isVisible() && !canvas->recordingSeries());
+        QVERIFY(!panel->isVisible() && !canvas->frogRun()->recordingSeries());
         box->click();
-        QCOMPARE(canvas->series().samples().size(), std::size_t(1));
+        QCOMPARE(canvas->frogRun()->series().samples().size(), std::size_t(1));
         tab().reset();
-        QCOMPARE(canvas->series().samples().size(), std::size_t(1));
-        QCOMPARE(canvas->series().samples().front().step, 0L);
+        QCOMPARE(canvas->frogRun()->series().samples().size(), std::size_t(1));
+        QCOMPARE(canvas->frogRun()->series().samples().front().step, 0L);
     }
 
     // Plots per body: with several bodies the panel lists them; one chosen, the plots and the
@@ -450,7 +450,7 @@ private slots:
         QCOMPARE(panel->body(), 1);
         QCOMPARE(canvas->markedBody(), 1);
         QVERIFY(marked(canvas->grab().toImage()) > 100); // its outline and its number
-        const SeriesSample& last = canvas->series().samples().back();
+        const SeriesSample& last = canvas->frogRun()->series().samples().back();
         QCOMPARE(last.bodies.size(), std::size_t(3));
         QCPGraph* total = panel->plot()->graph(3);
         QCOMPARE(total->dataCount(), 121);
@@ -485,20 +485,20 @@ private slots:
         // Many bodies: their values are kept once one is chosen, and the note says from when.
         list->setCurrentIndex(0);
         emit list->activated(0); // all bodies: a new run of many keeps none
-        QVERIFY(!canvas->series().bodiesAsked());
+        QVERIFY(!canvas->frogRun()->series().bodiesAsked());
         QVERIFY2(tab().editParameter("bodies", SeriesRecorder::kBodiesKeptUnasked + 6, &error), qPrintable(error));
         steps(tab(), 3);
         panel->refresh(true);
-        QVERIFY(!canvas->series().keepsBodies());
+        QVERIFY(!canvas->frogRun()->series().keepsBodies());
         list->setCurrentIndex(5);
         emit list->activated(5);
         QCOMPARE(canvas->markedBody(), 4);
-        QVERIFY(canvas->series().bodiesAsked());
+        QVERIFY(canvas->frogRun()->series().bodiesAsked());
         auto* note = panel->findChild<QLabel*>();
         steps(tab(), 3);
         panel->refresh(true);
-        QVERIFY(canvas->series().keepsBodies());
-        QCOMPARE(canvas->series().bodiesKeptFrom(), 4L);
+        QVERIFY(canvas->frogRun()->series().keepsBodies());
+        QCOMPARE(canvas->frogRun()->series().bodiesKeptFrom(), 4L);
         QCOMPARE(panel->plot()->graph(3)->dataCount(), 3); // steps 4, 5, 6
         QVERIFY2(note && note->text().startsWith(QStringLiteral("Body 5 alone: its values are kept from 0.1 s on.")),
                  qPrintable(note ? note->text() : QString()));
@@ -521,19 +521,19 @@ private slots:
         QVERIFY2(tab().editParameter("sides", 1000, &error), qPrintable(error)); // 8000 work: 3 steps a frame
         tab().setSpeed(4);
         FrogCanvas* canvas = tab().canvas();
-        const long work = canvas->simulation()->workPerStep();
-        QCOMPARE(canvas->stepsPerFrame(), int(FrogCanvas::kFrameWork / work));
-        QVERIFY(canvas->stepsPerFrame() < 4);
-        QVERIFY(canvas->effectiveSpeed() < 4);
+        const long work = canvas->frogRun()->simulation()->workPerStep();
+        QCOMPARE(canvas->frogRun()->stepsPerFrame(), int(FrogRun::kFrameWork / work));
+        QVERIFY(canvas->frogRun()->stepsPerFrame() < 4);
+        QVERIFY(canvas->frogRun()->effectiveSpeed() < 4);
     }
 
     void hiddenTabStopsTheTimer()
     {
-        QVERIFY(tab().canvas()->animating());
+        QVERIFY(tab().frogRun()->animating());
         tab().hide();
-        QVERIFY(!tab().canvas()->animating());
+        QVERIFY(!tab().frogRun()->animating());
         tab().show();
-        QVERIFY(tab().canvas()->animating());
+        QVERIFY(tab().frogRun()->animating());
     }
 
     // Issue 16, both solvers at once: the ghost is the other solver's run of the same scene,
@@ -545,17 +545,17 @@ private slots:
         QVERIFY(tab().setSolver(SolverKind::Stable, nullptr));
         tab().findChild<QPushButton*>("frogPause")->setChecked(true);
         FrogCanvas* canvas = tab().canvas();
-        QCOMPARE(canvas->ghost(), nullptr);
+        QCOMPARE(canvas->frogRun()->ghost(), nullptr);
         steps(tab(), 30);
         auto* ghostBox = tab().findChild<QCheckBox*>("frogOverlay6");
         QVERIFY(ghostBox);
         const int undoSteps = tab().undoStack()->count();
         ghostBox->click(); // on late: the ghost catches up with the run
         QCOMPARE(tab().undoStack()->count(), undoSteps + 1);
-        QVERIFY(canvas->ghost());
-        QCOMPARE(canvas->ghost()->solver(), SolverKind::Seed);
-        QCOMPARE(canvas->ghost()->stepCount(), 30L);
-        const QPoint at = canvas->toWidget(centroid(*canvas->simulation())).toPoint();
+        QVERIFY(canvas->frogRun()->ghost());
+        QCOMPARE(canvas->frogRun()->ghost()->solver(), SolverKind::Seed);
+        QCOMPARE(canvas->frogRun()->ghost()->stepCount(), 30L);
+        const QPoint at = canvas->toWidget(centroid(*canvas->frogRun()->simulation())).toPoint();
         QTest::mouseMove(canvas, at);
         QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, at);
         for (int i = 1; i <= 15; ++i) {
@@ -564,9 +564,9 @@ private slots:
         }
         QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, at + QPoint(150, -90));
         steps(tab(), 90);
-        QCOMPARE(canvas->ghost()->stepCount(), 150L);
+        QCOMPARE(canvas->frogRun()->ghost()->stepCount(), 150L);
         // The seed's replay of the run's recording goes through the ghost's states.
-        Recording asSeed = canvas->run()->recording();
+        Recording asSeed = canvas->frogRun()->recorded()->recording();
         asSeed.solver = SolverKind::Seed;
         auto replay = RecordedRun::load(asSeed);
         QVERIFY(replay.ok());
@@ -575,26 +575,26 @@ private slots:
             replay->step();
             rows.push_back(simulationTraceRow(replay->simulation()));
         }
-        QCOMPARE(simulationTraceRow(*canvas->ghost()), rows[150]);
-        QVERIFY(simulationTraceRow(*canvas->ghost()) != simulationTraceRow(*canvas->simulation()));
+        QCOMPARE(simulationTraceRow(*canvas->frogRun()->ghost()), rows[150]);
+        QVERIFY(simulationTraceRow(*canvas->frogRun()->ghost()) != simulationTraceRow(*canvas->frogRun()->simulation()));
         QVERIFY(canvas->textLines().join('\n').contains("Dashed ghost: the seed solver fed the same mouse"));
         // The timeline takes it along.
         for (int t : {70, 0, 149, 31}) {
             tab().timeline()->setValue(t);
-            QCOMPARE(canvas->ghost()->stepCount(), long(t));
-            QCOMPARE(simulationTraceRow(*canvas->ghost()), rows[std::size_t(t)]);
+            QCOMPARE(canvas->frogRun()->ghost()->stepCount(), long(t));
+            QCOMPARE(simulationTraceRow(*canvas->frogRun()->ghost()), rows[std::size_t(t)]);
         }
         // Kept in the document; off again with Ctrl+Z.
         QVERIFY(tab().saveState()["overlays"].toObject()["ghost"].toBool());
         tab().undoStack()->undo();
         QVERIFY(!ghostBox->isChecked());
-        QCOMPARE(canvas->ghost(), nullptr);
+        QCOMPARE(canvas->frogRun()->ghost(), nullptr);
         // Pendulums too: the ghost of the stable solver over the seed's.
         QVERIFY(tab().setScene("pendulum-limits", nullptr));
         QVERIFY(tab().setSolver(SolverKind::Seed, nullptr));
         ghostBox->click();
-        QCOMPARE(canvas->ghost()->solver(), SolverKind::Stable);
-        QCOMPARE(canvas->ghost()->chainCount(), canvas->simulation()->chainCount());
+        QCOMPARE(canvas->frogRun()->ghost()->solver(), SolverKind::Stable);
+        QCOMPARE(canvas->frogRun()->ghost()->chainCount(), canvas->frogRun()->simulation()->chainCount());
     }
 
     // Issue 16: the trail of a chosen point. By default the pendulum's tip; Shift+click picks
@@ -609,31 +609,31 @@ private slots:
         trailBox->click();
         QVERIFY(canvas->overlays().trail);
         std::vector<Point> joints;
-        canvas->simulation()->chainJoints(0, joints);
-        QVERIFY(canvas->trailPoint().joint);
-        QCOMPARE(canvas->trailPoint().index, int(joints.size()) - 1);
+        canvas->frogRun()->simulation()->chainJoints(0, joints);
+        QVERIFY(canvas->frogRun()->trailPoint().joint);
+        QCOMPARE(canvas->frogRun()->trailPoint().index, int(joints.size()) - 1);
         steps(tab(), 100);
-        QCOMPARE(canvas->trail().size(), std::size_t(101));
-        canvas->simulation()->chainJoints(0, joints);
-        QCOMPARE(canvas->trail().back(), joints.back());
+        QCOMPARE(canvas->frogRun()->trail().size(), std::size_t(101));
+        canvas->frogRun()->simulation()->chainJoints(0, joints);
+        QCOMPARE(canvas->frogRun()->trail().back(), joints.back());
         // Shift+click on the frog's body picks its vertex and grabs nothing.
         QVERIFY(tab().setScene("frog", nullptr));
-        QVERIFY(!canvas->trailPoint().joint); // the frog's default: vertex 0 of body 0
+        QVERIFY(!canvas->frogRun()->trailPoint().joint); // the frog's default: vertex 0 of body 0
         steps(tab(), 40);
         std::vector<Point> body;
-        canvas->simulation()->bodyVertices(0, body);
+        canvas->frogRun()->simulation()->bodyVertices(0, body);
         QTest::mouseClick(canvas, Qt::LeftButton, Qt::ShiftModifier, canvas->toWidget(body[3]).toPoint());
-        QVERIFY(!canvas->simulation()->grabbing());
-        QCOMPARE(canvas->trailPoint().index, 3);
-        QCOMPARE(canvas->trail().size(), std::size_t(1));
-        QVERIFY(canvas->run()->recording().events.empty()); // nothing recorded
+        QVERIFY(!canvas->frogRun()->simulation()->grabbing());
+        QCOMPARE(canvas->frogRun()->trailPoint().index, 3);
+        QCOMPARE(canvas->frogRun()->trail().size(), std::size_t(1));
+        QVERIFY(canvas->frogRun()->recorded()->recording().events.empty()); // nothing recorded
         steps(tab(), 700);
-        QCOMPARE(canvas->trail().size(), std::size_t(FrogCanvas::kTrailSteps));
-        canvas->simulation()->bodyVertices(0, body);
-        QCOMPARE(canvas->trail().back(), body[3]);
+        QCOMPARE(canvas->frogRun()->trail().size(), std::size_t(FrogRun::kTrailSteps));
+        canvas->frogRun()->simulation()->bodyVertices(0, body);
+        QCOMPARE(canvas->frogRun()->trail().back(), body[3]);
         QVERIFY(canvas->textLines().join('\n').contains("Trail of vertex 3 of body 1"));
         tab().timeline()->setValue(300);
-        QCOMPARE(canvas->trail().size(), std::size_t(1));
+        QCOMPARE(canvas->frogRun()->trail().size(), std::size_t(1));
         trailBox->click();
         QVERIFY(!canvas->overlays().trail);
     }
@@ -652,25 +652,25 @@ private slots:
         std::vector<std::pair<int, int>> pairs;
         int most = 0;
         for (int i = 0; i < 300; ++i) {
-            canvas->step();
-            canvas->simulation()->broadPhasePairs(pairs);
+            canvas->frogRun()->step();
+            canvas->frogRun()->simulation()->broadPhasePairs(pairs);
             most = std::max(most, int(pairs.size()));
             for (const auto& [a, b] : pairs)
-                QVERIFY(a < b && a >= 0 && b < canvas->simulation()->bodyCount());
+                QVERIFY(a < b && a >= 0 && b < canvas->frogRun()->simulation()->bodyCount());
         }
         QVERIFY2(most > 0, "the bodies never came near each other");
         const QString lines = canvas->textLines().join('\n');
         QVERIFY2(lines.contains(QStringLiteral("Broad phase: %1 candidate pairs, %2 contacts")
                                     .arg(pairs.size())
-                                    .arg(canvas->simulation()->readouts().contacts)),
+                                    .arg(canvas->frogRun()->simulation()->readouts().contacts)),
                  qPrintable(lines));
         QImage image(canvas->size(), QImage::Format_ARGB32_Premultiplied);
         QPainter painter(&image);
         canvas->render(painter, QRectF(image.rect())); // draws the boxes and links without fault
         painter.end();
         QVERIFY(tab().setSolver(SolverKind::Seed, nullptr));
-        canvas->step();
-        canvas->simulation()->broadPhasePairs(pairs);
+        canvas->frogRun()->step();
+        canvas->frogRun()->simulation()->broadPhasePairs(pairs);
         QVERIFY(pairs.empty());
         QVERIFY(canvas->textLines().join('\n').contains("the seed has no collisions"));
     }
@@ -720,7 +720,7 @@ private slots:
         // Swung off the limit, the count follows.
         for (int i = 0; i < 40; ++i) {
             QTest::mouseMove(canvas, canvas->toWidget(Point(640 - 8 * i, 200)).toPoint());
-            canvas->step();
+            canvas->frogRun()->step();
         }
         QVERIFY(
             canvas->textLines().join('\n').contains(QStringLiteral("Protractor: %1 of 2 joints held at a limit").arg(held())));
@@ -731,10 +731,10 @@ private slots:
         QVERIFY(tab().setScene("frog", nullptr));
         QCoreApplication::processEvents();
         const auto presses = [canvas] {
-            const auto& events = canvas->run()->recording().events;
+            const auto& events = canvas->frogRun()->recorded()->recording().events;
             return std::count_if(events.begin(), events.end(), [](const InputEvent& e) { return e.kind == InputKind::Press; });
         };
-        const QPoint a = canvas->toWidget(centroid(*canvas->simulation())).toPoint(), b = a + QPoint(60, -80);
+        const QPoint a = canvas->toWidget(centroid(*canvas->frogRun()->simulation())).toPoint(), b = a + QPoint(60, -80);
         QTest::mousePress(canvas, Qt::RightButton, Qt::NoModifier, a);
         QTest::mouseMove(canvas, b);
         QTest::mouseRelease(canvas, Qt::RightButton, Qt::NoModifier, b);
@@ -744,7 +744,7 @@ private slots:
         QCOMPARE(canvas->ruler()->second, to);
         QVERIFY2(canvas->rulerText().startsWith(displayFixed(std::hypot(to.x - from.x, to.y - from.y), 1) + " px"),
                  qPrintable(canvas->rulerText()));
-        QVERIFY(!canvas->simulation()->grabbing()); // inside the body, and nothing grabbed
+        QVERIFY(!canvas->frogRun()->simulation()->grabbing()); // inside the body, and nothing grabbed
         QCOMPARE(presses(), 0);
         QTest::mouseClick(canvas, Qt::RightButton, Qt::NoModifier, b); // a click clears it
         QVERIFY(!canvas->ruler());
@@ -752,7 +752,7 @@ private slots:
         QTest::mouseMove(canvas, b);
         QTest::mouseRelease(canvas, Qt::LeftButton, Qt::ControlModifier, b);
         QVERIFY(canvas->ruler());
-        QVERIFY(!canvas->simulation()->grabbing());
+        QVERIFY(!canvas->frogRun()->simulation()->grabbing());
         QCOMPARE(presses(), 0);
         // From the keyboard: L at the cursor, three steps right, L; Esc clears it.
         canvas->setFocus();
@@ -804,20 +804,20 @@ private slots:
         QVERIFY(box->isVisibleTo(&tab()));
         QCOMPARE(substeps->value(), 8);
         FrogCanvas* canvas = tab().canvas();
-        QCOMPARE(canvas->simulation()->substeps(), 8);
+        QCOMPARE(canvas->frogRun()->simulation()->substeps(), 8);
         for (int i = 0; i < 5; ++i)
-            canvas->step();
+            canvas->frogRun()->step();
         QUndoStack* undo = tab().undoStack();
         const int before = undo->count();
         substeps->setValue(16);
         substeps->setValue(24); // a run of edits of one knob: one step
-        QCOMPARE(canvas->simulation()->substeps(), 24);
-        QCOMPARE(canvas->simulation()->stepCount(), 5L); // live: the run goes on
+        QCOMPARE(canvas->frogRun()->simulation()->substeps(), 24);
+        QCOMPARE(canvas->frogRun()->simulation()->stepCount(), 5L); // live: the run goes on
         QCOMPARE(undo->count(), before + 1);
         for (int i = 0; i < 3; ++i)
-            canvas->step();
+            canvas->frogRun()->step();
         compliance->setValue(0.01);
-        QCOMPARE(canvas->simulation()->stableSettings().edgeCompliance, 0.01);
+        QCOMPARE(canvas->frogRun()->simulation()->stableSettings().edgeCompliance, 0.01);
         QCOMPARE(tab().scene().stable.edgeCompliance, 2e-3); // the run started with it
         QCOMPARE(undo->count(), before + 2);
         const auto* note = tab().findChild<QLabel*>("frogStableNote");
@@ -829,15 +829,15 @@ private slots:
         QCOMPARE(events[0].toArray(), (QJsonArray{5, "substeps", 24}));
         QCOMPARE(events[1].toArray(), (QJsonArray{8, "edge_compliance", 0.01}));
         undo->undo();
-        QCOMPARE(canvas->simulation()->stableSettings().edgeCompliance, 2e-3);
+        QCOMPARE(canvas->frogRun()->simulation()->stableSettings().edgeCompliance, 2e-3);
         QCOMPARE(compliance->value(), 0.002);
         undo->undo();
-        QCOMPARE(canvas->simulation()->substeps(), 8);
+        QCOMPARE(canvas->frogRun()->simulation()->substeps(), 8);
         QCOMPARE(substeps->value(), 8);
-        QCOMPARE(canvas->simulation()->stepCount(), 8L);
+        QCOMPARE(canvas->frogRun()->simulation()->stepCount(), 8L);
         QVERIFY(tab().loadState(saved, nullptr));
-        QCOMPARE(canvas->simulation()->stepCount(), 8L);
-        QCOMPARE(canvas->simulation()->substeps(), 24);
+        QCOMPARE(canvas->frogRun()->simulation()->stepCount(), 8L);
+        QCOMPARE(canvas->frogRun()->simulation()->substeps(), 24);
         QCOMPARE(substeps->value(), 24);
         QCOMPARE(compliance->value(), 0.01);
         // The timeline shows the knobs each step had.
@@ -849,7 +849,7 @@ private slots:
         QCOMPARE(compliance->value(), 0.002);
         // A stage of its own keeps the knobs in force; a bad document value is refused.
         QVERIFY(tab().setScene("many-bodies", nullptr));
-        QCOMPARE(canvas->simulation()->substeps(), 24);
+        QCOMPARE(canvas->frogRun()->simulation()->substeps(), 24);
         QCOMPARE(tab().scene().stable.substeps, 24);
         QJsonObject bad = saved;
         bad["stable"] = QJsonObject{{"substeps", 40}};
@@ -872,14 +872,14 @@ private slots:
         auto* damping = tab().findChild<QDoubleSpinBox*>("frogEdgeDamping");
         QVERIFY(compliance && hertz && damping);
         FrogCanvas* canvas = tab().canvas();
-        const auto spring = canvas->simulation()->edgeSpring(0);
+        const auto spring = canvas->frogRun()->simulation()->edgeSpring(0);
         QVERIFY(spring && spring->restLength > 1 && spring->vertexMass > 0);
         // α = 0.002 on the frog's edge: T = 2π √(α L m) steps, f = 60 / T.
         const double period = 2 * kPi * std::sqrt(0.002 * spring->restLength * spring->vertexMass);
         QCOMPARE(hertz->value(), std::round(6000 / period) / 100);
         QVERIFY(hertz->isEnabled());
         hertz->setValue(10);
-        const double alpha = canvas->simulation()->stableSettings().edgeCompliance;
+        const double alpha = canvas->frogRun()->simulation()->stableSettings().edgeCompliance;
         QVERIFY(std::abs(alpha - std::pow(3 / kPi, 2) / (spring->restLength * spring->vertexMass)) <= 1e-12);
         QCOMPARE(compliance->value(), std::round(alpha * 1e4) / 1e4);
         QCOMPARE(hertz->value(), 10.0);
@@ -889,22 +889,22 @@ private slots:
         QVERIFY(hertz->isEnabled());
 
         for (int i = 0; i < 4; ++i)
-            canvas->step();
+            canvas->frogRun()->step();
         QCOMPARE(damping->value(), 0.0);
         damping->setValue(0.3);
-        QCOMPARE(canvas->simulation()->stableSettings().edgeDampingRatio, 0.3);
-        QCOMPARE(canvas->simulation()->stepCount(), 4L); // live
+        QCOMPARE(canvas->frogRun()->simulation()->stableSettings().edgeDampingRatio, 0.3);
+        QCOMPARE(canvas->frogRun()->simulation()->stepCount(), 4L); // live
         QCOMPARE(tab().scene().stable.edgeDampingRatio, 0.0);
         const QJsonObject saved = tab().saveState();
         const QJsonArray events = saved["recording"].toObject()["events"].toArray();
         QCOMPARE(events.last().toArray(), (QJsonArray{4, "edge_damping_ratio", 0.3}));
         QVERIFY(!saved["stable"].toObject().contains("edge_damping_ratio")); // the run started without
         tab().undoStack()->undo();
-        QCOMPARE(canvas->simulation()->stableSettings().edgeDampingRatio, 0.0);
+        QCOMPARE(canvas->frogRun()->simulation()->stableSettings().edgeDampingRatio, 0.0);
         QCOMPARE(damping->value(), 0.0);
         QVERIFY(tab().loadState(saved, nullptr));
         QCOMPARE(damping->value(), 0.3);
-        QCOMPARE(canvas->simulation()->stableSettings().edgeDampingRatio, 0.3);
+        QCOMPARE(canvas->frogRun()->simulation()->stableSettings().edgeDampingRatio, 0.3);
         tab().reset(); // a new run starts with the knobs in force, kept in the document's "stable"
         QCOMPARE(tab().scene().stable.edgeDampingRatio, 0.3);
         QCOMPARE(tab().saveState()["stable"].toObject()["edge_damping_ratio"].toDouble(), 0.3);
@@ -945,40 +945,40 @@ private slots:
         FrogCanvas* canvas = tab().canvas();
         QSlider* timeline = tab().timeline();
         QVERIFY(timeline);
-        const auto row = [canvas] { return simulationTraceRow(*canvas->simulation()); };
+        const auto row = [canvas] { return simulationTraceRow(*canvas->frogRun()->simulation()); };
         std::vector<std::string> rows{row()};
         const auto stepAndKeep = [&](int n) {
             for (int i = 0; i < n; ++i) {
-                canvas->step();
+                canvas->frogRun()->step();
                 rows.push_back(row());
             }
         };
         stepAndKeep(60);
-        const QPoint at = canvas->toWidget(centroid(*canvas->simulation())).toPoint();
+        const QPoint at = canvas->toWidget(centroid(*canvas->frogRun()->simulation())).toPoint();
         QTest::mouseMove(canvas, at);
         QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, at);
-        QVERIFY(canvas->simulation()->grabbing());
+        QVERIFY(canvas->frogRun()->simulation()->grabbing());
         for (int i = 1; i <= 20; ++i) {
             QTest::mouseMove(canvas, at + QPoint(8 * i, -9 * i));
             stepAndKeep(2);
         }
         QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, at + QPoint(160, -180));
         stepAndKeep(100);
-        QCOMPARE(canvas->recordedSteps(), 200L);
+        QCOMPARE(canvas->frogRun()->recordedSteps(), 200L);
         QCOMPARE(timeline->maximum(), 200);
         QCOMPARE(timeline->value(), 200);
         const auto* label = tab().findChild<QLabel*>("frogTimelineLabel");
         QCOMPARE(label->text(), QStringLiteral("Step 200 of 200 · 3.33 s"));
-        QVERIFY(canvas->run()->recording().events.size() >= 22);
+        QVERIFY(canvas->frogRun()->recorded()->recording().events.size() >= 22);
 
         // The slider goes back; the plots keep their samples up to the step.
         tab().findChild<QPushButton*>("frogPause")->setChecked(false);
         timeline->setValue(75);
         QVERIFY(tab().findChild<QPushButton*>("frogPause")->isChecked()); // scrubbing pauses
-        QCOMPARE(canvas->simulation()->stepCount(), 75L);
+        QCOMPARE(canvas->frogRun()->simulation()->stepCount(), 75L);
         QCOMPARE(row(), rows[75]);
-        QCOMPARE(canvas->series().samples().back().step, 75L);
-        QCOMPARE(canvas->series().samples().size(), std::size_t(76));
+        QCOMPARE(canvas->frogRun()->series().samples().back().step, 75L);
+        QCOMPARE(canvas->frogRun()->series().samples().size(), std::size_t(76));
         for (int t : {0, 199, 61, 62, 100, 1, 140}) {
             timeline->setValue(t);
             QCOMPARE(row(), rows[std::size_t(t)]);
@@ -990,20 +990,20 @@ private slots:
         QCOMPARE(timeline->value(), 139);
         QTest::keyClick(canvas, Qt::Key_Period);
         QCOMPARE(row(), rows[140]);
-        QVERIFY(canvas->playingBack());
+        QVERIFY(canvas->frogRun()->playingBack());
         QVERIFY(canvas->textLines().join('\n').contains("Replaying the recorded run, step 140 of 200"));
 
         // Hovering, and a click on empty ground, change nothing recorded.
         QTest::mouseMove(canvas, canvas->toWidget(Point(100, 100)).toPoint());
         QTest::mouseClick(canvas, Qt::LeftButton, Qt::NoModifier, canvas->toWidget(Point(100, 100)).toPoint());
-        QCOMPARE(canvas->recordedSteps(), 200L);
+        QCOMPARE(canvas->frogRun()->recordedSteps(), 200L);
         // Running on replays the recorded rows, and the plots follow.
-        while (canvas->simulation()->stepCount() < 200) {
-            canvas->runFrame();
-            QCOMPARE(row(), rows[std::size_t(canvas->simulation()->stepCount())]);
+        while (canvas->frogRun()->simulation()->stepCount() < 200) {
+            canvas->frogRun()->runFrame();
+            QCOMPARE(row(), rows[std::size_t(canvas->frogRun()->simulation()->stepCount())]);
         }
-        QVERIFY(!canvas->playingBack());
-        QCOMPARE(canvas->series().samples().size(), std::size_t(201));
+        QVERIFY(!canvas->frogRun()->playingBack());
+        QCOMPARE(canvas->frogRun()->series().samples().size(), std::size_t(201));
 
         // The document keeps the run, and gives it back at the step it was saved.
         timeline->setValue(120);
@@ -1011,12 +1011,12 @@ private slots:
         const QJsonObject recording = saved["recording"].toObject();
         QCOMPARE(recording["steps"].toInt(), 200);
         QCOMPARE(recording["step"].toInt(), 120);
-        QCOMPARE(recording["events"].toArray().size(), int(canvas->run()->recording().events.size()));
+        QCOMPARE(recording["events"].toArray().size(), int(canvas->frogRun()->recorded()->recording().events.size()));
         tab().reset();
-        QCOMPARE(canvas->recordedSteps(), 0L);
+        QCOMPARE(canvas->frogRun()->recordedSteps(), 0L);
         QString error;
         QVERIFY2(tab().loadState(saved, &error), qPrintable(error));
-        QCOMPARE(canvas->simulation()->stepCount(), 120L);
+        QCOMPARE(canvas->frogRun()->simulation()->stepCount(), 120L);
         QCOMPARE(row(), rows[120]);
         QCOMPARE(timeline->maximum(), 200);
         QCOMPARE(tab().saveState(), saved);
@@ -1045,12 +1045,12 @@ private slots:
 
         // A press on the body branches: the future after it is gone.
         timeline->setValue(150);
-        const QPoint body = canvas->toWidget(centroid(*canvas->simulation())).toPoint();
+        const QPoint body = canvas->toWidget(centroid(*canvas->frogRun()->simulation())).toPoint();
         QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, body);
-        QVERIFY(canvas->simulation()->grabbing());
-        QCOMPARE(canvas->recordedSteps(), 150L);
+        QVERIFY(canvas->frogRun()->simulation()->grabbing());
+        QCOMPARE(canvas->frogRun()->recordedSteps(), 150L);
         QCOMPARE(timeline->maximum(), 150);
-        QVERIFY(!canvas->playingBack());
+        QVERIFY(!canvas->frogRun()->playingBack());
         QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, body);
 
         // Bad recordings are refused with a message, the tab unchanged.
@@ -1099,7 +1099,7 @@ private slots:
         tab().findChild<QPushButton*>("frogPause")->click();
         steps(tab(), 200); // on the floor
         FrogCanvas* canvas = tab().canvas();
-        const Simulation* sim = canvas->simulation();
+        const Simulation* sim = canvas->frogRun()->simulation();
         const Point start = centroid(*sim);
         const QPoint at = canvas->toWidget(start).toPoint();
         QTest::mouseMove(canvas, at);
@@ -1125,7 +1125,7 @@ private slots:
         tab().findChild<QPushButton*>("frogPause")->click();
         steps(tab(), 150);
         FrogCanvas* canvas = tab().canvas();
-        const Simulation* sim = canvas->simulation();
+        const Simulation* sim = canvas->frogRun()->simulation();
         const QPoint at = canvas->toWidget(centroid(*sim)).toPoint();
         QTest::mousePress(canvas, Qt::LeftButton, Qt::NoModifier, at);
         QVERIFY(sim->grabbing());
@@ -1144,7 +1144,7 @@ private slots:
         tab().findChild<QPushButton*>("frogPause")->click();
         steps(tab(), 100);
         FrogCanvas* canvas = tab().canvas();
-        const Simulation* sim = canvas->simulation();
+        const Simulation* sim = canvas->frogRun()->simulation();
         QVERIFY(centroid(*sim).y > 450); // fallen
         QTest::mouseMove(canvas, canvas->toWidget(Point(300, 200)).toPoint());
         QTest::keyPress(canvas, Qt::Key_Space);
@@ -1197,7 +1197,7 @@ private slots:
         QVERIFY(gy);
         gy->setValue(0); // as the user does: the panel applies it to the running scene
         QCOMPARE(tab().scene().params.gravity.y, 0.0);
-        const Simulation* sim = tab().canvas()->simulation();
+        const Simulation* sim = tab().frogRun()->simulation();
         steps(tab(), 150);
         const double floating = centroid(*sim).y;
         QVERIFY2(floating < 370, qPrintable(QString::number(floating))); // no gravity: it does not fall
@@ -1206,7 +1206,7 @@ private slots:
         tab().undoStack()->undo();
         QCOMPARE(tab().scene().params.gravity.y, 0.75);
         QCOMPARE(tab().parametersPanel()->spinBox("gravity", 1)->value(), 0.75);
-        sim = tab().canvas()->simulation();
+        sim = tab().frogRun()->simulation();
         steps(tab(), 150);
         QVERIFY(centroid(*sim).y > 500); // gravity again: on the floor
 
@@ -1309,7 +1309,7 @@ private slots:
         QString error;
         QVERIFY2(tab().editParameter(key, value, &error), qPrintable(error));
         steps(tab(), 200);
-        QVERIFY(tab().canvas()->simulation()->finite());
+        QVERIFY(tab().frogRun()->simulation()->finite());
         QImage image(320, 180, QImage::Format_ARGB32_Premultiplied);
         QPainter p(&image);
         tab().canvas()->render(p, QRectF(0, 0, 320, 180));
@@ -1337,8 +1337,8 @@ private slots:
         FrogCanvas* canvas = tab().canvas();
         QTest::mouseMove(canvas, canvas->toWidget(Point(500, 300)).toPoint()); // the pendulums follow it
         steps(tab(), 300);
-        QCOMPARE(canvas->simulation()->stepCount(), 300L);
-        QVERIFY(canvas->simulation()->finite());
+        QCOMPARE(canvas->frogRun()->simulation()->stepCount(), 300L);
+        QVERIFY(canvas->frogRun()->simulation()->finite());
         QImage image(640, 360, QImage::Format_ARGB32_Premultiplied);
         image.fill(Qt::black);
         {
@@ -1371,7 +1371,7 @@ private slots:
     {
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
-        const long before = tab().canvas()->simulation()->stepCount();
+        const long before = tab().frogRun()->simulation()->stepCount();
         tab().findChild<QPushButton*>("frogPause")->click();
         QCOMPARE(tab().exportFrames(dir.path() + "/frames", 4), QString());
         for (int i = 0; i < 4; ++i) {
@@ -1380,7 +1380,7 @@ private slots:
             QCOMPARE(image.size(), FrogTab::kFrameSize); // a video size, not the canvas's
         }
         QVERIFY(!QFile::exists(dir.path() + "/frames/frame_0004.png"));
-        QCOMPARE(tab().canvas()->simulation()->stepCount(), before + 3); // exactly one step between frames
+        QCOMPARE(tab().frogRun()->simulation()->stepCount(), before + 3); // exactly one step between frames
         QVERIFY(!tab().exportFrames(dir.path(), 0).isEmpty());
     }
 
@@ -1478,7 +1478,7 @@ private slots:
         QVERIFY(!said.isEmpty());
         QVERIFY2(said.last().at(0).toString().contains("lower the sides or the Bézier samples"),
                  qPrintable(said.last().at(0).toString()));
-        QCOMPARE(tab().canvas()->simulation()->scene().params.sides, 10); // the running body too
+        QCOMPARE(tab().frogRun()->simulation()->scene().params.sides, 10); // the running body too
         // At these 2000 points the budget holds 706 sides (706·707/2·2000 = 499 142 000 ≤ 5·10⁸;
         // 707 would be 500 500 000): accepted.
         sides->selectAll();
@@ -1513,7 +1513,7 @@ private slots:
         FrogCanvas* canvas = tab().canvas();
         tab().findChild<QPushButton*>("frogPause")->click();
         steps(tab(), 300);
-        QVERIFY(std::abs(canvas->simulation()->readouts().areaErrorPercent) > 100);
+        QVERIFY(std::abs(canvas->frogRun()->simulation()->readouts().areaErrorPercent) > 100);
         QString lines = canvas->textLines().join('\n');
         QVERIFY2(lines.contains("Reset (R)") && lines.contains("Stable solver"), qPrintable(lines));
         // The warning under the canvas offers both ways out: Reset starts the scene again…
@@ -1522,7 +1522,7 @@ private slots:
         auto* stable = tab().findChild<QPushButton*>("frogExplosionStable");
         QVERIFY(warning->isVisibleTo(&tab()) && stable->isVisibleTo(&tab()));
         reset->click();
-        QCOMPARE(canvas->simulation()->stepCount(), 0L);
+        QCOMPARE(canvas->frogRun()->simulation()->stepCount(), 0L);
         QVERIFY(!warning->isVisibleTo(&tab()));
         steps(tab(), 300);
         QVERIFY(warning->isVisibleTo(&tab()));
@@ -1568,7 +1568,7 @@ private slots:
             QVERIFY2(std::abs(radius->value() - expected) < 0.051,
                      qPrintable(QString("field %1, mouse radius %2").arg(radius->value()).arg(expected)));
             std::vector<Point> v;
-            canvas->simulation()->bodyVertices(0, v);
+            canvas->frogRun()->simulation()->bodyVertices(0, v);
             QVERIFY(std::abs(distance(v[0], Point(640, h / 2)) - expected) < 0.01); // the polygon is that size
         }
         QVERIFY(!tab().undoStack()->canUndo()); // the mouse is not an edit
@@ -1618,7 +1618,7 @@ private slots:
         QTest::mouseMove(canvas, QPoint(2, 1));
         QTest::mouseRelease(canvas, Qt::LeftButton, Qt::NoModifier, QPoint(2, 1));
         canvas->repaint();
-        QVERIFY(canvas->simulation()->finite());
+        QVERIFY(canvas->frogRun()->simulation()->finite());
     }
 };
 

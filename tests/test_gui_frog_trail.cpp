@@ -40,7 +40,7 @@ class TestGuiFrogTrail : public QObject {
         overlays.trail = true;
         canvas->setOverlays(overlays);
         for (int i = 0; i < steps; ++i)
-            canvas->step();
+            canvas->frogRun()->step();
         renderedPixels(canvas); // one paint
     }
 
@@ -92,8 +92,8 @@ private slots:
         QVERIFY(m_tab->editParameter(QStringLiteral("velmax"), QJsonValue(1000), nullptr));
         runWithTrail(600);
         FrogCanvas* canvas = m_tab->canvas();
-        QVERIFY(std::abs(canvas->simulation()->readouts().areaErrorPercent) > 100); // blown up
-        const auto& trail = canvas->trail();
+        QVERIFY(std::abs(canvas->frogRun()->simulation()->readouts().areaErrorPercent) > 100); // blown up
+        const auto& trail = canvas->frogRun()->trail();
         QVERIFY(trail.size() >= 500);
         // Counted here: the newest segments in the frame (with its 5 % margin), up to 20 × (W + H)
         // of line between them.
@@ -119,8 +119,8 @@ private slots:
     {
         runWithTrail(300);
         FrogCanvas* canvas = m_tab->canvas();
-        QVERIFY(canvas->trail().size() >= 300);
-        QCOMPARE(canvas->trailSegmentsDrawn(), int(canvas->trail().size()) - 1);
+        QVERIFY(canvas->frogRun()->trail().size() >= 300);
+        QCOMPARE(canvas->trailSegmentsDrawn(), int(canvas->frogRun()->trail().size()) - 1);
     }
 };
 

@@ -61,7 +61,7 @@ FrogCanvas* focusedFrogCanvas(MainWindow& window)
     auto* canvas = window.frogTab()->findChild<FrogCanvas*>();
     if (!canvas)
         return nullptr;
-    canvas->setRunning(false);
+    canvas->frogRun()->setRunning(false);
     canvas->setFocus(Qt::TabFocusReason);
     return QTest::qWaitFor([canvas] { return canvas->hasFocus(); }, kEventWaitMs) ? canvas : nullptr;
 }
@@ -258,23 +258,23 @@ private slots:
         bar->setFocus(Qt::TabFocusReason);
         QTRY_VERIFY_WITH_TIMEOUT(bar->hasFocus(), kEventWaitMs);
         auto* canvas = window.frogTab()->findChild<FrogCanvas*>();
-        QVERIFY(canvas && canvas->running());
+        QVERIFY(canvas && canvas->frogRun()->running());
         press(window, Qt::Key_P);
-        QVERIFY(!canvas->running());
-        const long before = canvas->simulation()->stepCount();
+        QVERIFY(!canvas->frogRun()->running());
+        const long before = canvas->frogRun()->simulation()->stepCount();
         press(window, Qt::Key_S);
-        QCOMPARE(canvas->simulation()->stepCount(), before + 1);
+        QCOMPARE(canvas->frogRun()->simulation()->stepCount(), before + 1);
         press(window, Qt::Key_R);
-        QCOMPARE(canvas->simulation()->stepCount(), 0L);
+        QCOMPARE(canvas->frogRun()->simulation()->stepCount(), 0L);
         // [ and ] slow down and speed up (issue 16), also without a click.
-        const double speed = canvas->speed();
+        const double speed = canvas->frogRun()->speed();
         press(window, Qt::Key_BracketRight);
-        QCOMPARE(canvas->speed(), 2 * speed);
+        QCOMPARE(canvas->frogRun()->speed(), 2 * speed);
         press(window, Qt::Key_BracketLeft);
         press(window, Qt::Key_BracketLeft);
-        QCOMPARE(canvas->speed(), speed / 2);
+        QCOMPARE(canvas->frogRun()->speed(), speed / 2);
         press(window, Qt::Key_BracketRight);
-        QCOMPARE(canvas->speed(), speed);
+        QCOMPARE(canvas->frogRun()->speed(), speed);
 
         // (The canvas, its timeline and the stopwatch come first: tests/test_gui_keyboard_focus.cpp.)
         const QSet<QString> buttons{QStringLiteral("frogPause"), QStringLiteral("frogStep"), QStringLiteral("frogReset")};
@@ -296,19 +296,19 @@ private slots:
         FrogCanvas* canvas = focusedFrogCanvas(window);
         QVERIFY(canvas);
         for (int i = 0; i < 30; ++i) // let it settle
-            canvas->step();
-        const Point start = centroid(*canvas->simulation());
+            canvas->frogRun()->step();
+        const Point start = centroid(*canvas->frogRun()->simulation());
         press(window, Qt::Key_G);
-        QVERIFY(canvas->simulation()->grabbing());
+        QVERIFY(canvas->frogRun()->simulation()->grabbing());
         for (int i = 0; i < 8; ++i)
             press(window, Qt::Key_Right);
         for (int i = 0; i < 60; ++i)
-            canvas->step();
-        const Point moved = centroid(*canvas->simulation());
+            canvas->frogRun()->step();
+        const Point moved = centroid(*canvas->frogRun()->simulation());
         QVERIFY2(moved.x > start.x + 0.5 * 8 * FrogCanvas::kKeyboardStep,
                  qPrintable(QStringLiteral("%1 → %2").arg(start.x).arg(moved.x)));
         press(window, Qt::Key_Escape);
-        QVERIFY(!canvas->simulation()->grabbing());
+        QVERIFY(!canvas->frogRun()->simulation()->grabbing());
     }
 
     // Issue 16, the ruler from the keyboard: L lays one end at the keyboard cursor, the
@@ -326,7 +326,7 @@ private slots:
         QVERIFY(canvas->ruler());
         QCOMPARE(canvas->ruler()->second.y - canvas->ruler()->first.y, 5 * FrogCanvas::kKeyboardStep);
         QCOMPARE(canvas->ruler()->second.x, canvas->ruler()->first.x);
-        QVERIFY(!canvas->simulation()->grabbing());
+        QVERIFY(!canvas->frogRun()->simulation()->grabbing());
         QVERIFY(canvas->hasFocus());
         press(window, Qt::Key_Escape);
         QVERIFY(!canvas->ruler());
@@ -375,10 +375,10 @@ private slots:
         MainWindow window;
         QVERIFY(showOnTab(window, QStringLiteral("frog")));
         auto* canvas = window.frogTab()->findChild<FrogCanvas*>();
-        canvas->setRunning(false);
-        canvas->step();
+        canvas->frogRun()->setRunning(false);
+        canvas->frogRun()->step();
         const QString text = accessibleText(canvas, QAccessible::Description);
-        const QString error = granota::ui::displayFixed(canvas->simulation()->readouts().areaErrorPercent, 1);
+        const QString error = granota::ui::displayFixed(canvas->frogRun()->simulation()->readouts().areaErrorPercent, 1);
         QVERIFY2(text.contains(QStringLiteral("area error ") + error), qPrintable(text));
     }
 

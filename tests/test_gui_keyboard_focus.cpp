@@ -226,7 +226,7 @@ private slots:
         auto* canvas = window.frogTab()->findChild<FrogCanvas*>();
         auto* scene = window.frogTab()->findChild<QComboBox*>(QStringLiteral("frogScene"));
         QVERIFY(canvas && scene);
-        canvas->setRunning(false);
+        canvas->frogRun()->setRunning(false);
         QTabBar* bar = window.findChild<QTabWidget*>()->tabBar();
         QStringList order;
         for (QWidget* w = bar->nextInFocusChain(); w != bar; w = w->nextInFocusChain()) {
@@ -242,7 +242,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(canvas->hasFocus(), kEventWaitMs);
         // The body's centre, the mean of its vertices, computed here from the simulation.
         std::vector<Point> v;
-        canvas->simulation()->bodyVertices(0, v);
+        canvas->frogRun()->simulation()->bodyVertices(0, v);
         Point c{0, 0};
         for (const Point& p : v)
             c = {c.x + p.x / double(v.size()), c.y + p.y / double(v.size())};

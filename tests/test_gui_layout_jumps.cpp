@@ -137,7 +137,7 @@ private slots:
         granota::ui::FrogTab* tab = window.frogTab();
         tab->findChild<QPushButton*>(QStringLiteral("frogPause"))->setChecked(true);
         for (int i = 0; i < 30; ++i)
-            tab->canvas()->step();
+            tab->frogRun()->step();
         settle();
         auto* label = tab->findChild<QLabel*>(QStringLiteral("frogTimelineLabel"));
         QVERIFY(label);
@@ -145,7 +145,7 @@ private slots:
         const QRect before = inWindow(tab->canvas());
         tab->findChild<QPushButton*>(QStringLiteral("frogStopwatch"))->click();
         for (int i = 0; i < 30; ++i)
-            tab->canvas()->step();
+            tab->frogRun()->step();
         settle();
         QVERIFY(label->text().contains(QLatin1Char('\n'))); // the stopwatch's line is shown
         QVERIFY2(inWindow(tab->canvas()) == before,

@@ -85,7 +85,7 @@ private slots:
         canvas->setOverlays(FrogCanvas::Overlays()); // nothing over the outline
         settle();
         std::vector<Point> vertices;
-        canvas->simulation()->bodyVertices(0, vertices);
+        canvas->frogRun()->simulation()->bodyVertices(0, vertices);
         QVERIFY(vertices.size() >= 3);
         // The most upright edge of the polygon on screen, and its midpoint.
         QPointF a, b;
@@ -134,8 +134,8 @@ private slots:
         canvas->setOverlays(pairs);
         std::vector<std::pair<int, int>> candidates;
         for (int i = 0; i < 600 && candidates.empty(); ++i) {
-            canvas->step();
-            canvas->simulation()->broadPhasePairs(candidates);
+            canvas->frogRun()->step();
+            canvas->frogRun()->simulation()->broadPhasePairs(candidates);
         }
         QVERIFY2(!candidates.empty(), "the bodies never came near each other");
         settle();

@@ -209,10 +209,10 @@ private slots:
                     const QJsonObject overlays = state.value(QStringLiteral("overlays")).toObject();
                     for (auto it = overlays.begin(); it != overlays.end(); ++it)
                         QVERIFY2(!it.value().toBool(), qPrintable(what + QStringLiteral(": overlay ") + it.key()));
-                    const granota::RecordedRun* run = window.frogTab()->canvas()->run();
+                    const granota::RecordedRun* run = window.frogTab()->canvas()->frogRun()->recorded();
                     QVERIFY(run);
                     QCOMPARE(run->stepCount(), f.steps);
-                    QVERIFY(!window.frogTab()->canvas()->running());
+                    QVERIFY(!window.frogTab()->frogRun()->running());
                     continue;
                 }
                 const QJsonObject named = namedSettings(f, v);

@@ -100,16 +100,16 @@ void BM_GuiFrog200(benchmark::State& state)
     auto scene = withBodies(*loadScene("many-bodies"), 200);
     FrogCanvas canvas;
     canvas.resize(1280, 760);
-    canvas.setSimulation(std::move(Simulation::create(*scene, SolverKind::Stable)).value());
-    canvas.setRunning(false);
+    canvas.frogRun()->setSimulation(std::move(Simulation::create(*scene, SolverKind::Stable)).value());
+    canvas.frogRun()->setRunning(false);
     canvas.show();
     QCoreApplication::processEvents();
     for (int i = 0; i < 60; ++i)
-        canvas.step(); // let them fall and meet
+        canvas.frogRun()->step(); // let them fall and meet
     // Painted as on screen: paintEvent into the window's backing store, where the pond
     // behind the frogs is a pixmap drawn once per size (exports paint it as vectors).
     for (auto _ : state) {
-        canvas.step();
+        canvas.frogRun()->step();
         canvas.repaint();
     }
     state.counters["frame_budget_ms"] = 1000.0 / 60.0;
@@ -132,15 +132,15 @@ void BM_GuiFrog200Plots(benchmark::State& state)
         state.SkipWithError(qPrintable(error));
         return;
     }
-    tab.canvas()->setRunning(false);
+    tab.frogRun()->setRunning(false);
     tab.setPlotsShown(true);
     tab.show();
     QCoreApplication::processEvents();
     for (int i = 0; i < 60; ++i)
-        tab.canvas()->step();
+        tab.frogRun()->step();
     int frame = 0;
     for (auto _ : state) {
-        tab.canvas()->step();
+        tab.frogRun()->step();
         tab.canvas()->repaint();
         if (++frame % 6 == 0) {
             tab.plotPanel()->refresh(true);
@@ -148,7 +148,7 @@ void BM_GuiFrog200Plots(benchmark::State& state)
         }
     }
     state.counters["frame_budget_ms"] = 1000.0 / 60.0;
-    state.counters["samples"] = static_cast<double>(tab.canvas()->series().samples().size());
+    state.counters["samples"] = static_cast<double>(tab.frogRun()->series().samples().size());
 }
 
 // Issue 34: a seed body that has blown up (Ex "area" with velmax 1000: its vertices fly
@@ -166,20 +166,20 @@ void BM_GuiSeedExplodedTrail(benchmark::State& state)
         return;
     }
     FrogCanvas* canvas = tab.canvas();
-    canvas->setRunning(false);
+    canvas->frogRun()->setRunning(false);
     FrogCanvas::Overlays overlays = canvas->overlays();
     overlays.trail = state.range(0) != 0; // 0: the body alone, to compare
     canvas->setOverlays(overlays);
     tab.show();
     QCoreApplication::processEvents();
     for (int i = 0; i < 600; ++i)
-        canvas->step(); // blown up, and the trail full
+        canvas->frogRun()->step(); // blown up, and the trail full
     for (auto _ : state) {
-        canvas->step();
+        canvas->frogRun()->step();
         canvas->repaint();
     }
     state.counters["frame_budget_ms"] = 1000.0 / 60.0;
-    state.counters["trail_points"] = static_cast<double>(canvas->trail().size());
+    state.counters["trail_points"] = static_cast<double>(canvas->frogRun()->trail().size());
     state.counters["trail_segments_drawn"] = static_cast<double>(canvas->trailSegmentsDrawn());
 }
 

@@ -107,7 +107,7 @@ void BM_RecordingOverhead(benchmark::State& state)
     for (auto _ : state) {
         auto sim = std::move(Simulation::create(spec, SolverKind::Stable)).value();
         // As the Frog tab's canvas records it: a snapshot every step asked (its seek budget,
-        // FrogCanvas::kScrubWork, holds one step of 1000 bodies), spaced out by the cost floor.
+        // FrogRun::kScrubWork, holds one step of 1000 bodies), spaced out by the cost floor.
         auto run = std::move(RecordedRun::start(spec, SolverKind::Stable, 1)).value();
         run.limitSnapshotCost(RecordedRun::kSnapshotCostShare);
         SeriesRecorder series(36000);

@@ -324,7 +324,7 @@ void FrogCanvas::mousePressEvent(QMouseEvent* event)
     if (event->button() != Qt::LeftButton)
         return;
     if (m_overlays.trail && (event->modifiers() & Qt::ShiftModifier)) { // choose the trail's point, grab nothing
-        if (!chooseTrailPoint(m_mouse))
+        if (!m_run->chooseTrailPoint(m_mouse))
             emit statusMessage(tr("Shift+click on a vertex or a joint to follow it with the trail."));
         return;
     }
@@ -365,7 +365,7 @@ void FrogCanvas::mouseMoveEvent(QMouseEvent* event)
         else
             unsetCursor();
     }
-    if (!running())
+    if (!m_run->running())
         update(); // the eyes follow the mouse even when paused
 }
 

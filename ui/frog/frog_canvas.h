@@ -33,17 +33,7 @@ public:
     using Overlays = FrogOverlayPainter::Overlays;
     using BezierOutline = FrogScenePainter::BezierOutline;
 
-    /// The run's constants and types (frog_run.h), named here as the tests and the tab do.
-    static constexpr int kFramesPerSecond = FrogRun::kFramesPerSecond;
-    static constexpr long kFrameWork = FrogRun::kFrameWork;
-    static constexpr long kGhostCatchUpWork = FrogRun::kGhostCatchUpWork;
-    static constexpr long kScrubWork = FrogRun::kScrubWork;
-    static constexpr std::size_t kSnapshotBytes = FrogRun::kSnapshotBytes;
-    static constexpr std::size_t kSnapshotBytesPerPoint = FrogRun::kSnapshotBytesPerPoint;
-    static constexpr int kSeriesSeconds = FrogRun::kSeriesSeconds;
-    static constexpr int kTrailSteps = FrogRun::kTrailSteps;
     using TrailPoint = FrogRun::TrailPoint;
-    using KeptRun = FrogRun::KeptRun;
     /// Scene pixels one arrow key moves the keyboard cursor (Shift: five times that).
     static constexpr double kKeyboardStep = 10.0;
 
@@ -54,17 +44,12 @@ public:
     ~FrogCanvas() override;
     FrogRun* frogRun() const { return m_run; }
 
-    // The run's state, forwarded (frog_run.h says what each does); the canvas repaints as
-    // the run tells it.
-    void setSimulation(std::unique_ptr<Simulation> simulation) { m_run->setSimulation(std::move(simulation)); }
-    const Simulation* simulation() const { return sim(); }
-    const TrailPoint& trailPoint() const { return m_run->trailPoint(); }
-    const std::deque<Point>& trail() const { return m_run->trail(); }
+    // The run itself (its state, its clock, its recording) is read and driven through
+    // frogRun(): the canvas draws it, repaints as it tells, and feeds it the mouse and keys.
     /// The trail's segments the last paint drew: those in the frame, cut to it, the newest
     /// first up to 20 times the frame's width plus height of line (a blown-up body's trail
     /// sweeps the frame every step; frog_overlay_painter.cpp, kTrailInkBudget).
     int trailSegmentsDrawn() const { return m_overlayPainter.trailSegmentsDrawn(); }
-    bool chooseTrailPoint(Point at) { return m_run->chooseTrailPoint(at); }
     /// The ruler: a measure in scene px between two points the user set, dragged with the
     /// right button (or Ctrl and the left), or placed from the keyboard with L at the cursor,
     /// the arrows, and L again; Esc or a right click clears it. Nothing is recorded; a document
@@ -84,30 +69,6 @@ public:
     /// Annex II draws it, upright, its 138 × 93 box at vertex 0 − (69, 46); on the stable
     /// solver Granota's head, turned with the body.
     HeadPose headPose(int body) { return m_scenePainter.headPose(*sim(), body); }
-    const Simulation* ghost() const { return m_run->ghost(); }
-    const RecordedRun* run() const { return m_run->recorded(); }
-    long recordedSteps() const { return m_run->recordedSteps(); }
-    bool playingBack() const { return m_run->playingBack(); }
-    bool seek(long step) { return m_run->seek(step); }
-    bool setStableSettings(const StableSettings& settings) { return m_run->setStableSettings(settings); }
-    bool setRecording(std::vector<InputEvent> events, long steps, QString* error)
-    {
-        return m_run->setRecording(std::move(events), steps, error);
-    }
-    void setRunning(bool running) { m_run->setRunning(running); }
-    bool running() const { return m_run->running(); }
-    bool animating() const { return m_run->animating(); }
-    void step() { m_run->step(); }
-    int framesPerStep() const { return m_run->framesPerStep(); }
-    bool setSpeed(double speed) { return m_run->setSpeed(speed); }
-    double speed() const { return m_run->speed(); }
-    static QString speedLabel(double speed) { return FrogRun::speedLabel(speed); }
-    int stepsPerFrame() const { return m_run->stepsPerFrame(); }
-    double effectiveSpeed() const { return m_run->effectiveSpeed(); }
-    void runFrame() { m_run->runFrame(); }
-    long frameCount() const { return m_run->frameCount(); }
-    /// Whether the text panel says the body has blown up (FrogRun::blownUp).
-    bool blownUpShown() const { return m_run->blownUp(); }
     /// The lines of the text panel drawn over the scene, as last refreshed.
     QStringList textLines() const;
     /// The width the text panel takes (its widest line, wrapped to the canvas), and the most
@@ -116,19 +77,10 @@ public:
     double textPanelWidth() const;
     double textPanelRoom() const;
 
-    void setRecordingSeries(bool on) { m_run->setRecordingSeries(on); }
-    bool recordingSeries() const { return m_run->recordingSeries(); }
-    const SeriesRecorder& series() const { return m_run->series(); }
     /// The body the plots show alone (FrogPlotPanel::body), outlined and numbered on the
     /// canvas so that the class sees which one it is; −1: none (the plots sum them).
     void setMarkedBody(int body);
     int markedBody() const { return m_markedBody; }
-
-    std::unique_ptr<KeptRun> replaceRun(std::unique_ptr<Simulation> simulation)
-    {
-        return m_run->replaceRun(std::move(simulation));
-    }
-    std::unique_ptr<KeptRun> restoreRun(std::unique_ptr<KeptRun> kept) { return m_run->restoreRun(std::move(kept)); }
 
     void setOverlays(const Overlays& overlays);
     const Overlays& overlays() const { return m_overlays; }

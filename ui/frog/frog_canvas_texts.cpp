@@ -53,21 +53,23 @@ QStringList FrogCanvas::composeTexts(bool blownUpLine)
                                    : tr("Protractor: %n of %1 joints held at a limit (red)", "", held).arg(limited));
         }
         if (m_overlays.trail)
-            lines << (trailPoint().joint ? tr("Trail of joint %1 of chain %2 (Shift+click a point to follow another)")
-                                         : tr("Trail of vertex %1 of body %2 (Shift+click a point to follow another)"))
-                         .arg(trailPoint().index)
-                         .arg(trailPoint().owner + 1);
+            lines << (m_run->trailPoint().joint ? tr("Trail of joint %1 of chain %2 (Shift+click a point to follow another)")
+                                                : tr("Trail of vertex %1 of body %2 (Shift+click a point to follow another)"))
+                         .arg(m_run->trailPoint().index)
+                         .arg(m_run->trailPoint().owner + 1);
         if (m_run->playingBack())
             lines << tr("Replaying the recorded run, step %1 of %2: a press on a body takes over from there")
                          .arg(sim()->stepCount())
                          .arg(m_run->recordedSteps());
         if (const int slower = m_run->workFramesPerStep(); slower > 1)
             lines << tr("Running %n× slower than real time: a step of this scene is more work than a frame holds", "", slower);
-        if (speed() < 1)
-            lines << tr("Slow motion, %1× real time: one step every %n frames, the step itself unchanged", "", framesPerStep())
-                         .arg(speedLabel(speed()));
-        else if (speed() > 1)
-            lines << tr("Fast, %1× real time: %n steps a frame", "", stepsPerFrame()).arg(speedLabel(effectiveSpeed()));
+        if (m_run->speed() < 1)
+            lines << tr("Slow motion, %1× real time: one step every %n frames, the step itself unchanged", "",
+                        m_run->framesPerStep())
+                         .arg(FrogRun::speedLabel(m_run->speed()));
+        else if (m_run->speed() > 1)
+            lines << tr("Fast, %1× real time: %n steps a frame", "", m_run->stepsPerFrame())
+                         .arg(FrogRun::speedLabel(m_run->effectiveSpeed()));
         if (scene.has(SceneComponent::OutlineBezier)) {
             if (const OutlineFitter* fitter = m_scenePainter.fitter(); bezierOutline() == BezierOutline::Fit)
                 lines << tr("Least-squares Bézier fit, degree %1 through %2 points: %3 µs per frame")
@@ -109,7 +111,7 @@ QStringList FrogCanvas::composeTexts(bool blownUpLine)
             lines << tr("Velocities: this scene has no soft body");
         if (m_overlays.frameTime) {
             const double frameMs = m_run->frameMs(), stepMs = m_run->stepMs();
-            if (running())
+            if (m_run->running())
                 lines << tr("Frame %1 ms (%2 frames per second) · step %3 ms · drawing %4 ms")
                              .arg(num(frameMs, 1), num(frameMs > 0 ? 1000 / frameMs : 0.0, 0), num(stepMs, 3),
                                   num(m_drawShownMs, 2));

@@ -41,7 +41,7 @@ constexpr int kParameterMergeIdBase = 0x46520000; ///< "FR": a parameter's edits
 
 } // namespace
 
-const long FrogTab::kLoadSeekWork = 600 * FrogCanvas::kFrameWork;
+const long FrogTab::kLoadSeekWork = 600 * FrogRun::kFrameWork;
 const std::size_t FrogTab::kKeptRunBytes = FrogRun::kSnapshotBytes;
 
 struct FrogTab::KeptRun {
@@ -77,7 +77,7 @@ bool FrogTab::rebuild(const SceneSpec& scene, SolverKind solver, QString* error)
     auto replaced = std::make_unique<KeptRun>();
     replaced->mark = m_mark;
     m_mark = -1; // a new run: the stopwatch's mark was of the old one
-    replaced->canvas = m_canvas->replaceRun(std::move(sim).value());
+    replaced->canvas = m_run->replaceRun(std::move(sim).value());
     m_replaced.reset();
     if (replaced->canvas) {
         m_replaced = std::make_shared<RunSlot>();
@@ -132,7 +132,7 @@ void FrogTab::swapRun(RunSlot& slot)
         shown = std::move(m_replaced->run);
     m_replaced.reset();
     if (slot.run) {
-        m_canvas->restoreRun(std::move(slot.run->canvas)); // the run just built is let go
+        m_run->restoreRun(std::move(slot.run->canvas)); // the run just built is let go
         m_mark = slot.run->mark;
         if (m_plots)
             m_plots->refresh(true);
@@ -391,7 +391,7 @@ void FrogTab::pushParameterStep(const QString& key, std::shared_ptr<const SceneS
 
 void FrogTab::setPaused(bool paused)
 {
-    m_canvas->setRunning(!paused);
+    m_run->setRunning(!paused);
     retranslate();
 }
 
@@ -399,7 +399,7 @@ void FrogTab::stepOnce()
 {
     if (!m_pause->isChecked())
         m_pause->setChecked(true); // a single step pauses first
-    m_canvas->step();
+    m_run->step();
 }
 
 FrogOverlays FrogTab::overlaysChecked() const
@@ -446,7 +446,7 @@ void FrogTab::setPlotsShown(bool on)
         const QSignalBlocker block(m_showPlots);
         m_showPlots->setChecked(on);
     }
-    m_canvas->setRecordingSeries(on);
+    m_run->setRecordingSeries(on);
     m_plots->setRun(m_run);
     m_plots->setVisible(on); // at the height it asks for (FrogPlotPanel::sizeHint), the canvas the rest
     m_canvas->setMarkedBody(on ? m_plots->body() : -1);
@@ -463,13 +463,13 @@ void FrogTab::timelineMoved(int step)
     // Scrubbing is looking: the run pauses there (P runs on, replaying what was recorded).
     if (!m_pause->isChecked())
         m_pause->setChecked(true);
-    m_canvas->seek(step);
+    m_run->seek(step);
     m_plots->refresh(true);
 }
 
 void FrogTab::toggleMark()
 {
-    const Simulation* sim = m_canvas->simulation();
+    const Simulation* sim = m_run->simulation();
     m_mark = m_mark >= 0 || !sim ? -1 : sim->stepCount();
     if (m_mark >= 0)
         emit statusMessage(tr("Stopwatch: marked step %1; M again clears the mark.").arg(m_mark));
@@ -478,7 +478,7 @@ void FrogTab::toggleMark()
 
 void FrogTab::stepBack()
 {
-    const Simulation* sim = m_canvas->simulation();
+    const Simulation* sim = m_run->simulation();
     if (!sim)
         return;
     if (!m_pause->isChecked())
@@ -487,13 +487,13 @@ void FrogTab::stepBack()
         emit statusMessage(tr("Step 0: the run starts here."));
         return;
     }
-    m_canvas->seek(sim->stepCount() - 1);
+    m_run->seek(sim->stepCount() - 1);
     m_plots->refresh(true);
 }
 
 void FrogTab::setSpeed(double speed)
 {
-    if (!m_canvas->setSpeed(speed))
+    if (!m_run->setSpeed(speed))
         return;
     const QSignalBlocker block(m_speedCombo);
     m_speedCombo->setCurrentIndex(m_speedCombo->findData(speed));
@@ -508,13 +508,13 @@ FrogDocument FrogTab::document() const
     doc.solver = m_run->solver();
     doc.overlays = m_canvas->overlays();
     doc.fitOutline = m_fit->isChecked();
-    doc.paused = !m_canvas->running();
-    doc.speed = m_canvas->speed();
+    doc.paused = !m_run->running();
+    doc.speed = m_run->speed();
     doc.ruler = m_canvas->ruler();
     return doc;
 }
 
-QJsonObject FrogTab::saveState() const { return document().toJson(m_canvas->run()); }
+QJsonObject FrogTab::saveState() const { return document().toJson(m_run->recorded()); }
 
 bool FrogTab::loadState(const QJsonObject& state, QString* error)
 {
@@ -538,12 +538,12 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
         return false;
     if (doc->recording) {
         QString refused;
-        if (!m_canvas->setRecording(std::move(doc->recording->events), doc->recording->steps, &refused))
+        if (!m_run->setRecording(std::move(doc->recording->events), doc->recording->steps, &refused))
             showRefusal(refused); // checked by FrogDocument: cannot happen
         const long step = doc->recording->step;
-        const long work = m_canvas->simulation()->workPerStep() * step;
+        const long work = m_run->simulation()->workPerStep() * step;
         if (work <= kLoadSeekWork)
-            m_canvas->seek(step);
+            m_run->seek(step);
         else
             emit statusMessage(
                 tr("The run was saved at step %1: drag the timeline to go there (it is long to replay).").arg(step));
@@ -558,7 +558,7 @@ bool FrogTab::applyState(const QJsonObject& state, QString* error)
         m_canvas->setBezierOutline(doc->fitOutline ? FrogCanvas::BezierOutline::Fit : FrogCanvas::BezierOutline::Precomputed);
         const QSignalBlocker b3(m_pause);
         m_pause->setChecked(doc->paused);
-        m_canvas->setRunning(!doc->paused);
+        m_run->setRunning(!doc->paused);
     }
     m_note->hide();
     showScene();

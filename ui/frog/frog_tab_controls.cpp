@@ -81,7 +81,7 @@ void FrogTab::buildControls()
     m_speedCombo = new QComboBox(m_sceneBox);
     m_speedCombo->setObjectName(QStringLiteral("frogSpeed"));
     for (double speed : StepPacer::kSpeeds)
-        m_speedCombo->addItem(FrogCanvas::speedLabel(speed) + QStringLiteral("×"), speed);
+        m_speedCombo->addItem(FrogRun::speedLabel(speed) + QStringLiteral("×"), speed);
     m_speedCombo->setCurrentIndex(m_speedCombo->findData(1.0));
     m_speedLabel->setBuddy(m_speedCombo);
     auto* buttons = new QHBoxLayout;

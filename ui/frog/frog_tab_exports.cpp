@@ -41,7 +41,7 @@ QString FrogTab::csv() const
 {
     QString out;
     QTextStream s(&out);
-    const Simulation* sim = m_canvas->simulation();
+    const Simulation* sim = m_run->simulation();
     s << "# scene " << QString::fromStdString(scene().name) << " (" << QString::fromStdString(scene().section) << "), solver "
       << QString::fromStdString(solverName(m_run->solver())) << ", step " << (sim ? sim->stepCount() : 0) << "\n";
     s << "kind,index,point,x,y\n";
@@ -66,7 +66,7 @@ QString FrogTab::csv() const
 
 void FrogTab::drawTikz(TikzWriter& w) const
 {
-    const Simulation* sim = m_canvas->simulation();
+    const Simulation* sim = m_run->simulation();
     if (!sim)
         return;
     const double H = scene().params.height;
@@ -171,7 +171,7 @@ void FrogTab::drawTikzHead(TikzWriter& w) const
 
 long FrogTab::shownStep() const
 {
-    const Simulation* sim = m_canvas->simulation();
+    const Simulation* sim = m_run->simulation();
     return sim ? sim->stepCount() : 0;
 }
 
@@ -181,7 +181,7 @@ QString FrogTab::exportFrames(const QString& directory, int frames, QSize size, 
         return tr("The number of frames must be at least 1.");
     if (directory.isEmpty() || (!QDir(directory).exists() && !QDir().mkpath(directory)))
         return tr("Cannot create the folder “%1”.").arg(directory);
-    if (!m_canvas->simulation())
+    if (!m_run->simulation())
         return tr("There is no scene to export.");
     const QDir dir(directory);
     size = QSize(size.width() / 2 * 2, size.height() / 2 * 2); // even sides: yuv420p video
@@ -191,7 +191,7 @@ QString FrogTab::exportFrames(const QString& directory, int frames, QSize size, 
     // user saw; the recorded run replays from there exactly.
     if (!m_pause->isChecked())
         m_pause->setChecked(true);
-    if (firstStep >= 0 && firstStep != shownStep() && !m_canvas->seek(firstStep))
+    if (firstStep >= 0 && firstStep != shownStep() && !m_run->seek(firstStep))
         return tr("Step %1 is no longer recorded.").arg(firstStep);
     QImage image(size, QImage::Format_ARGB32_Premultiplied);
     for (int i = 0; i < frames; ++i) {
@@ -204,7 +204,7 @@ QString FrogTab::exportFrames(const QString& directory, int frames, QSize size, 
         if (const QString error = writePngFile(image, file); !error.isEmpty())
             return error;
         if (i + 1 < frames)
-            m_canvas->step(); // the canvas's fixed step: one per frame, 60 per second
+            m_run->step(); // the canvas's fixed step: one per frame, 60 per second
     }
     return {};
 }

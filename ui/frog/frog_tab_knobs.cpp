@@ -30,7 +30,7 @@ constexpr int kStableMergeIdBase = 0x46530000; ///< "FS": a stable solver knob's
 bool FrogTab::applyStableSettings(const StableSettings& settings, QString* error)
 {
     // Live: the run goes on from where it is, and records the change at its step.
-    if (!m_canvas->setStableSettings(settings)) {
+    if (!m_run->setStableSettings(settings)) {
         if (error)
             *error = tr("The stable solver's knobs were refused: substeps from %1 to %2, compliance from 0 to %3, "
                         "damping ratio from 0 to %4.")
@@ -72,7 +72,7 @@ bool FrogTab::editStableSetting(const QString& key, double value, QString* error
 
 std::optional<Simulation::EdgeSpring> FrogTab::edgeSpringShown() const
 {
-    const Simulation* sim = m_canvas->simulation();
+    const Simulation* sim = m_run->simulation();
     return sim && sim->bodyCount() > 0 ? sim->edgeSpring(0) : std::nullopt;
 }
 
@@ -111,7 +111,7 @@ void FrogTab::showStableSettings()
                        .arg(displayFixed(spring->restLength, 0), displayFixed(period, 1), displayFixed(hertz, 2));
         else
             note = tr("α = 0: the edges are rigid.");
-    } else if (m_canvas->simulation()) {
+    } else if (m_run->simulation()) {
         note = tr("This scene has no springs: the compliance and the damping ratio do nothing here.");
     }
     m_stableNote->setText(note);

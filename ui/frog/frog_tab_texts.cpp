@@ -172,8 +172,8 @@ void FrogTab::retranslate()
 
 void FrogTab::updateTimeline()
 {
-    const long end = m_canvas->recordedSteps();
-    const long now = m_canvas->simulation() ? m_canvas->simulation()->stepCount() : 0;
+    const long end = m_run->recordedSteps();
+    const long now = m_run->simulation() ? m_run->simulation()->stepCount() : 0;
     const int top = int(std::min<long>(end, std::numeric_limits<int>::max()));
     if (m_timeline->maximum() != top || (!m_timeline->isSliderDown() && m_timeline->value() != now)) {
         const QSignalBlocker block(m_timeline);

@@ -127,7 +127,7 @@ bool ThesisFiguresDialog::showChosen()
     // The Frog tab's history starts again with a scene set from outside: a recorded run is
     // not thrown away without asking.
     if (!figure->scene.empty()) {
-        const RecordedRun* run = m_window->frogTab()->canvas()->run();
+        const RecordedRun* run = m_window->frogTab()->canvas()->frogRun()->recorded();
         const long steps = run ? run->recordedSteps() : 0;
         if (steps > 0 &&
             QMessageBox::question(this, tr("Thesis figures"),
