@@ -5492,6 +5492,62 @@ Ja no és al disc.</translation>
             <source>The scene names a component %1 that does not exist (the components are %2).</source>
             <translation>L’escena anomena un component %1 que no existeix (els components són %2).</translation>
         </message>
+        <message>
+            <source>The degree of a B-spline must be from 1 to %2, not %1.</source>
+            <translation>El grau d&apos;una B-spline ha de ser d&apos;1 a %2, no %1.</translation>
+        </message>
+        <message>
+            <source>A B-spline of degree %1 needs at least %2 control points, not %3.</source>
+            <translation>Una B-spline de grau %1 necessita almenys %2 punts de control, no %3.</translation>
+        </message>
+        <message>
+            <source>A B-spline of degree %1 with %2 control points needs %3 knots, not %4.</source>
+            <translation>Una B-spline de grau %1 amb %2 punts de control necessita %3 nusos, no %4.</translation>
+        </message>
+        <message>
+            <source>A rational B-spline needs one weight per control point: %1 weights, not %2.</source>
+            <translation>Una B-spline racional necessita un pes per punt de control: %1 pesos, no %2.</translation>
+        </message>
+        <message>
+            <source>%1 is not a finite number.</source>
+            <translation>%1 no és un nombre finit.</translation>
+        </message>
+        <message>
+            <source>The knots must not decrease: u_%1 = %2 is greater than u_%3 = %4.</source>
+            <translation>Els nusos no poden decréixer: u_%1 = %2 és més gran que u_%3 = %4.</translation>
+        </message>
+        <message>
+            <source>The knot %1 is repeated %2 times; inside, a B-spline of degree %3 allows it at most %4 times.</source>
+            <translation>El nus %1 es repeteix %2 vegades; a l&apos;interior, una B-spline de grau %3 el permet com a màxim %4 vegades.</translation>
+        </message>
+        <message>
+            <source>The knot %1 is repeated %2 times; at an end, a B-spline of degree %3 allows it at most %4 times.</source>
+            <translation>El nus %1 es repeteix %2 vegades; en un extrem, una B-spline de grau %3 el permet com a màxim %4 vegades.</translation>
+        </message>
+        <message>
+            <source>The domain [%1, %2] of the B-spline is empty.</source>
+            <translation>El domini [%1, %2] de la B-spline és buit.</translation>
+        </message>
+        <message>
+            <source>The weight w_%1 = %2 must be positive.</source>
+            <translation>El pes w_%1 = %2 ha de ser positiu.</translation>
+        </message>
+        <message>
+            <source>A knot is inserted at least once, not %1 times.</source>
+            <translation>Un nus s&apos;insereix almenys una vegada, no %1 vegades.</translation>
+        </message>
+        <message>
+            <source>The knot %1 is outside the domain [%2, %3].</source>
+            <translation>El nus %1 és fora del domini [%2, %3].</translation>
+        </message>
+        <message>
+            <source>The knot %1 already has multiplicity %2: inserting it %3 more times would exceed the degree %4.</source>
+            <translation>El nus %1 ja té multiplicitat %2: inserir-lo %3 vegades més superaria el grau %4.</translation>
+        </message>
+        <message>
+            <source>This rational B-spline cannot float its ends: every choice of outer knots tried needs a weight that is not positive.</source>
+            <translation>Aquesta B-spline racional no pot deixar lliures els extrems: cap de les eleccions de nusos exteriors provades evita un pes que no sigui positiu.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::ShortcutsDialog</name>

@@ -5492,6 +5492,62 @@ It is no longer on disk.</translation>
             <source>The scene names a component %1 that does not exist (the components are %2).</source>
             <translation>The scene names a component %1 that does not exist (the components are %2).</translation>
         </message>
+        <message>
+            <source>The degree of a B-spline must be from 1 to %2, not %1.</source>
+            <translation>The degree of a B-spline must be from 1 to %2, not %1.</translation>
+        </message>
+        <message>
+            <source>A B-spline of degree %1 needs at least %2 control points, not %3.</source>
+            <translation>A B-spline of degree %1 needs at least %2 control points, not %3.</translation>
+        </message>
+        <message>
+            <source>A B-spline of degree %1 with %2 control points needs %3 knots, not %4.</source>
+            <translation>A B-spline of degree %1 with %2 control points needs %3 knots, not %4.</translation>
+        </message>
+        <message>
+            <source>A rational B-spline needs one weight per control point: %1 weights, not %2.</source>
+            <translation>A rational B-spline needs one weight per control point: %1 weights, not %2.</translation>
+        </message>
+        <message>
+            <source>%1 is not a finite number.</source>
+            <translation>%1 is not a finite number.</translation>
+        </message>
+        <message>
+            <source>The knots must not decrease: u_%1 = %2 is greater than u_%3 = %4.</source>
+            <translation>The knots must not decrease: u_%1 = %2 is greater than u_%3 = %4.</translation>
+        </message>
+        <message>
+            <source>The knot %1 is repeated %2 times; inside, a B-spline of degree %3 allows it at most %4 times.</source>
+            <translation>The knot %1 is repeated %2 times; inside, a B-spline of degree %3 allows it at most %4 times.</translation>
+        </message>
+        <message>
+            <source>The knot %1 is repeated %2 times; at an end, a B-spline of degree %3 allows it at most %4 times.</source>
+            <translation>The knot %1 is repeated %2 times; at an end, a B-spline of degree %3 allows it at most %4 times.</translation>
+        </message>
+        <message>
+            <source>The domain [%1, %2] of the B-spline is empty.</source>
+            <translation>The domain [%1, %2] of the B-spline is empty.</translation>
+        </message>
+        <message>
+            <source>The weight w_%1 = %2 must be positive.</source>
+            <translation>The weight w_%1 = %2 must be positive.</translation>
+        </message>
+        <message>
+            <source>A knot is inserted at least once, not %1 times.</source>
+            <translation>A knot is inserted at least once, not %1 times.</translation>
+        </message>
+        <message>
+            <source>The knot %1 is outside the domain [%2, %3].</source>
+            <translation>The knot %1 is outside the domain [%2, %3].</translation>
+        </message>
+        <message>
+            <source>The knot %1 already has multiplicity %2: inserting it %3 more times would exceed the degree %4.</source>
+            <translation>The knot %1 already has multiplicity %2: inserting it %3 more times would exceed the degree %4.</translation>
+        </message>
+        <message>
+            <source>This rational B-spline cannot float its ends: every choice of outer knots tried needs a weight that is not positive.</source>
+            <translation>This rational B-spline cannot float its ends: every choice of outer knots tried needs a weight that is not positive.</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::ShortcutsDialog</name>
