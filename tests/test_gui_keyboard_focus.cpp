@@ -288,7 +288,7 @@ private slots:
     void theHintFollowsTheKeyboard()
     {
         MainWindow window;
-        for (const char* key : {"decasteljau", "fit", "catmull-rom", "frog"}) {
+        for (const char* key : {"decasteljau", "fit", "catmull-rom", "frog", "bspline"}) {
             QVERIFY(showOnTab(window, QString::fromLatin1(key)));
             granota::ui::TabPage* page = window.currentTab();
             QVERIFY(!page->keyboardHint().isEmpty());
