@@ -68,6 +68,23 @@ void sendMouse(QWidget* w, QEvent::Type type, QPointF at, Qt::MouseButtons butto
     QCoreApplication::sendEvent(w, &e);
 }
 
+/// The curve's samples at `count` values of u over its domain, by the core.
+std::vector<Point> samples(const BSplineCurve<double>& c, int count)
+{
+    std::vector<Point> out;
+    for (int j = 0; j < count; ++j)
+        out.push_back(bsplinePoint(c, c.domainStart() + (c.domainEnd() - c.domainStart()) * j / (count - 1)));
+    return out;
+}
+
+double maxDistance(const std::vector<Point>& a, const std::vector<Point>& b)
+{
+    double d = 0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        d = std::max(d, std::hypot(a[i].x - b[i].x, a[i].y - b[i].y));
+    return d;
+}
+
 std::vector<Rational> rationals(std::initializer_list<std::pair<long, long>> list)
 {
     std::vector<Rational> out;
@@ -158,12 +175,75 @@ private slots:
         QVERIFY(tab.scene().valid());
     }
 
+    void insertionKeepsTheCurve()
+    {
+        BSplineTab tab;
+        showTab(tab);
+        const BSplineCurve<double> before = tab.scene().curve;
+        const BSplineCurve<Rational> exactBefore = tab.scene().exact;
+        const std::vector<Point> pointsBefore = tab.pointEditor()->points();
+        QVERIFY(tab.insertKnot(frac(1, 2)));
+        QCOMPARE(tab.pointEditor()->points().size(), pointsBefore.size() + 1);
+        QCOMPARE(tab.knots().size(), std::size_t(11));
+        QCOMPARE(tab.previousPolygon(), pointsBefore);
+        // The same curve: 201 samples of the old curve and the new one by the core (doubles), and
+        // exactly at rational parameters.
+        QVERIFY(maxDistance(samples(before, 201), samples(tab.scene().curve, 201)) < 1e-12);
+        for (const Rational& u : rationals({{0, 1}, {1, 7}, {1, 3}, {1, 2}, {5, 8}, {2, 3}, {99, 100}, {1, 1}}))
+            QCOMPARE(bsplinePoint(tab.scene().exact, u), bsplinePoint(exactBefore, u));
+        // Undo: the points and the knots as they were, and the old polygon no longer drawn.
+        tab.undoStack()->undo();
+        QCOMPARE(tab.pointEditor()->points(), pointsBefore);
+        QCOMPARE(tab.knots().size(), std::size_t(10));
+        QVERIFY(tab.previousPolygon().empty());
+        tab.undoStack()->redo();
+        QCOMPARE(tab.pointEditor()->points().size(), pointsBefore.size() + 1);
+    }
+
+    void removalIsExact()
+    {
+        BSplineTab tab;
+        showTab(tab);
+        const std::vector<Point> points = tab.pointEditor()->points();
+        const std::vector<Rational> knots = tab.knots();
+        // Inserted, then removed: the very points and knots again (geomdl #135 got this wrong).
+        QVERIFY(tab.insertKnot(frac(1, 2)));
+        const auto inserted = tab.knots();
+        const int index = static_cast<int>(std::find(inserted.begin(), inserted.end(), frac(1, 2)) - inserted.begin());
+        QVERIFY(tab.removeKnot(index));
+        QCOMPARE(tab.pointEditor()->points(), points);
+        QCOMPARE(tab.knots(), knots);
+        // The curve needs u_4 = 1/3 (the points are not on one cubic across it): refused, unchanged.
+        const int undo = tab.undoStack()->count();
+        QVERIFY(!tab.removeKnot(4));
+        QVERIFY(tab.lastMessage().contains(QStringLiteral("needs")));
+        QCOMPARE(tab.knots(), knots);
+        QCOMPARE(tab.undoStack()->count(), undo);
+    }
+
+    void elevationKeepsTheCurve()
+    {
+        BSplineTab tab;
+        showTab(tab);
+        const BSplineCurve<Rational> before = tab.scene().exact;
+        QVERIFY(tab.elevateDegree());
+        QCOMPARE(tab.scene().degree(), 4);
+        // Each of the four distinct knots once more: 14 knots, and 14 − (p + 2) = 9 points (n + p + 2 knots).
+        QCOMPARE(tab.knots().size(), before.knots.size() + 4);
+        QCOMPARE(tab.pointEditor()->points().size(), std::size_t(9));
+        for (const Rational& u : rationals({{0, 1}, {1, 5}, {1, 2}, {3, 4}, {1, 1}}))
+            QCOMPARE(bsplinePoint(tab.scene().exact, u), bsplinePoint(before, u));
+        tab.undoStack()->undo();
+        QCOMPARE(tab.scene().degree(), 3);
+        QCOMPARE(tab.scene().exact.points, before.points);
+    }
+
     void documentRoundTrip()
     {
         BSplineTab tab;
         showTab(tab);
-        QVERIFY(tab.moveKnot(4, frac(1, 4)));
-        QVERIFY(tab.setWeights(rationals({{1, 1}, {2, 1}, {1, 1}, {1, 2}, {3, 1}, {1, 1}})));
+        QVERIFY(tab.insertKnot(frac(1, 4)));
+        QVERIFY(tab.setWeights(rationals({{1, 1}, {2, 1}, {1, 1}, {1, 2}, {1, 1}, {3, 1}, {1, 1}})));
         tab.setU(frac(3, 5));
         const QJsonObject saved = tab.saveState();
         const BSplineModel model = tab.model();
@@ -181,9 +261,11 @@ private slots:
     {
         QTest::addColumn<QString>("key");
         QTest::addColumn<QJsonValue>("value");
-        QTest::newRow("decreasing knots") << "knots" << QJsonValue(QJsonArray{"0", "0", "0", "0", "2/3", "1/3", "1", "1", "1", "1"});
+        QTest::newRow("decreasing knots") << "knots"
+                                          << QJsonValue(QJsonArray{"0", "0", "0", "0", "2/3", "1/3", "1", "1", "1", "1"});
         QTest::newRow("too few knots") << "knots" << QJsonValue(QJsonArray{"0", "0", "0", "0", "1", "1", "1", "1"});
-        QTest::newRow("a knot five times") << "knots" << QJsonValue(QJsonArray{"0", "0", "0", "0", "0", "1/2", "1", "1", "1", "1"});
+        QTest::newRow("a knot five times") << "knots"
+                                           << QJsonValue(QJsonArray{"0", "0", "0", "0", "0", "1/2", "1", "1", "1", "1"});
         QTest::newRow("a weight zero") << "weights" << QJsonValue(QJsonArray{"1", "1", "0", "1", "1", "1"});
         QTest::newRow("too few weights") << "weights" << QJsonValue(QJsonArray{"1", "1"});
         QTest::newRow("degree 11") << "degree" << QJsonValue(11);
@@ -257,6 +339,10 @@ private slots:
         QTest::keyClick(ruler, Qt::Key_Right, Qt::ShiftModifier);
         QVERIFY(tab.knots()[4] > frac(1, 3));
         QCOMPARE(tab.undoStack()->count(), undo + 1);
+        // Insert: a knot at u; Delete on the needed knot: refused.
+        const std::size_t count = tab.knots().size();
+        QTest::keyClick(ruler, Qt::Key_Insert);
+        QCOMPARE(tab.knots().size(), count + 1);
     }
 };
 

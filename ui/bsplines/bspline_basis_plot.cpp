@@ -15,11 +15,11 @@
 namespace granota::ui {
 
 namespace {
-constexpr int kMinPlotArea = 70;       ///< pixels between the axes, at least
+constexpr int kMinPlotArea = 70;        ///< pixels between the axes, at least
 constexpr int kPlotSamplesPerSpan = 24; ///< samples of each non-empty knot span
-constexpr int kLegendUpTo = 7;         ///< N_i in the legend up to this many functions (two rows with Σ)
-constexpr int kLegendColumns = 4;      ///< a row fits the plot at 800 × 600
-constexpr int kLegendMinHeight = 170;  ///< a lower plot (800 × 600) has no room for the legend's rows: none
+constexpr int kLegendUpTo = 7;          ///< N_i in the legend up to this many functions (two rows with Σ)
+constexpr int kLegendColumns = 4;       ///< a row fits the plot at 800 × 600
+constexpr int kLegendMinHeight = 170;   ///< a lower plot (800 × 600) has no room for the legend's rows: none
 } // namespace
 
 BasisSamples sampleBasis(const BSplineCurve<double>& curve, int samplesPerSpan)
@@ -37,8 +37,7 @@ BasisSamples sampleBasis(const BSplineCurve<double>& curve, int samplesPerSpan)
             out.u.push_back(u);
             // Only N_{span−p..span} can be non-zero on the span (their supports [u_i, u_{i+p+1})).
             for (int i = 0; i <= n; ++i)
-                out.values[static_cast<std::size_t>(i)].push_back(
-                    i >= span - p && i <= span ? basisFunction(k, i, p, u) : 0.0);
+                out.values[static_cast<std::size_t>(i)].push_back(i >= span - p && i <= span ? basisFunction(k, i, p, u) : 0.0);
         }
     }
     // The last knot, where the domain ends (closed there, bspline_basis.h).

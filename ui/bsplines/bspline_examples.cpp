@@ -37,8 +37,7 @@ QString bsplineExampleTitle(BSplineExampleId id)
         return QCoreApplication::translate("granota::ui::BSplineTab", "Ex 2.2 as a B-spline (no interior knot)");
     case BSplineExampleId::ClosedUniformCubic:
         return QCoreApplication::translate("granota::ui::BSplineTab", "Uniform cubic, closed on Ex 2.13's points");
-    case BSplineExampleId::Circle:
-        return QCoreApplication::translate("granota::ui::BSplineTab", "The circle, exactly (NURBS)");
+    case BSplineExampleId::Circle: return QCoreApplication::translate("granota::ui::BSplineTab", "The circle, exactly (NURBS)");
     }
     return {};
 }
@@ -82,8 +81,8 @@ std::optional<BSplineExample> bsplineExample(BSplineExampleId id)
         c.points = {rp(1, 0), rp(1, 1), rp(0, 1), rp(-1, 1), rp(-1, 0), rp(-1, -1), rp(0, -1), rp(1, -1), rp(1, 0)};
         c.weights = {Rational(1), Rational(1), Rational(2), Rational(2), Rational(4),
                      Rational(4), Rational(8), Rational(8), Rational(16)};
-        c.knots = {Rational(0),   Rational(0),   Rational(0),   frac(1, 4), frac(1, 4), frac(1, 2),
-                   frac(1, 2),    frac(3, 4),    frac(3, 4),    Rational(1), Rational(1), Rational(1)};
+        c.knots = {Rational(0), Rational(0), Rational(0), frac(1, 4),  frac(1, 4),  frac(1, 2),
+                   frac(1, 2),  frac(3, 4),  frac(3, 4),  Rational(1), Rational(1), Rational(1)};
         return withModel(std::move(c), KnotPreset::Clamped, true);
     }
     }

@@ -10,8 +10,8 @@ namespace granota::ui {
 
 bool BSplineModel::operator==(const BSplineModel& o) const
 {
-    return degree == o.degree && preset == o.preset && knots == o.knots && weights == o.weights && u == o.u &&
-           net == o.net && bezierSegments == o.bezierSegments;
+    return degree == o.degree && preset == o.preset && knots == o.knots && weights == o.weights && u == o.u && net == o.net &&
+           bezierSegments == o.bezierSegments;
 }
 
 int BSplineModel::degreeFor(int pointCount) const { return std::clamp(std::min(degree, pointCount - 1), 1, kMaxBSplineDegree); }

@@ -25,13 +25,13 @@ namespace granota::ui {
 struct BSplineModel {
     static constexpr int kMaxPoints = 200; ///< docs/extreme-cases.md (as the Catmull-Rom tab)
 
-    int degree = 3;                      ///< p, 1..kMaxBSplineDegree (less while there are fewer than p + 1 points)
+    int degree = 3;                          ///< p, 1..kMaxBSplineDegree (less while there are fewer than p + 1 points)
     KnotPreset preset = KnotPreset::Clamped; ///< the knots unless edited ones fit
-    std::vector<Rational> knots;         ///< the knots as edited (dragged, inserted); empty: the preset's
-    std::vector<Rational> weights;       ///< w_i > 0 (NURBS); empty: polynomial
-    Rational u{1, 2};                    ///< de Boor's construction at u (kept inside the domain)
-    bool net = true;                     ///< de Boor's net at u, level by level
-    bool bezierSegments = false;         ///< the curve's Bézier segments (the extraction) drawn
+    std::vector<Rational> knots;             ///< the knots as edited (dragged, inserted); empty: the preset's
+    std::vector<Rational> weights;           ///< w_i > 0 (NURBS); empty: polynomial
+    Rational u{1, 2};                        ///< de Boor's construction at u (kept inside the domain)
+    bool net = true;                         ///< de Boor's net at u, level by level
+    bool bezierSegments = false;             ///< the curve's Bézier segments (the extraction) drawn
 
     bool operator==(const BSplineModel& o) const;
     bool operator!=(const BSplineModel& o) const { return !(*this == o); }

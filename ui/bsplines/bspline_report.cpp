@@ -69,9 +69,10 @@ QString bsplineReportHtml(const BSplineScene& scene)
     if (n + 1 <= kSupportRowsUpTo) {
         rows.clear();
         for (int i = 0; i <= n; ++i)
-            rows.push_back({ExactPanel::subscripted(QStringLiteral("N"), i),
-                            QStringLiteral("[%1, %2)").arg(exactText(knots[static_cast<std::size_t>(i)]),
-                                                          exactText(knots[static_cast<std::size_t>(i + p + 1)]))});
+            rows.push_back(
+                {ExactPanel::subscripted(QStringLiteral("N"), i),
+                 QStringLiteral("[%1, %2)")
+                     .arg(exactText(knots[static_cast<std::size_t>(i)]), exactText(knots[static_cast<std::size_t>(i + p + 1)]))});
         html += ExactPanel::heading(say("Supports [uᵢ, uᵢ₊ₚ₊₁)"));
         html += ExactPanel::table({QString(), say("non-zero on")}, rows);
     }
@@ -84,9 +85,9 @@ QString bsplineReportHtml(const BSplineScene& scene)
             ++j;
         const int m = static_cast<int>(j - i);
         const bool inside = knots[i] > scene.exact.domainStart() && knots[i] < scene.exact.domainEnd();
-        rows.push_back({exactText(knots[i]), QString::number(m),
-                        inside ? (p - m >= 0 ? QStringLiteral("C<sup>%1</sup>").arg(p - m) : say("broken"))
-                               : say("outside or at an end")});
+        rows.push_back(
+            {exactText(knots[i]), QString::number(m),
+             inside ? (p - m >= 0 ? QStringLiteral("C<sup>%1</sup>").arg(p - m) : say("broken")) : say("outside or at an end")});
         i = j;
     }
     html += ExactPanel::heading(say("Knots"));

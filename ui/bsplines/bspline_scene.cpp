@@ -1,5 +1,8 @@
 #include "ui/bsplines/bspline_scene.h"
 
+#include "core/curves/bezier/degree_elevation.h"
+#include "core/curves/bsplines/bezier_extraction.h"
+
 #include <QRectF>
 
 #include <algorithm>
@@ -29,11 +32,10 @@ BSplineScene computeBSplineScene(const std::vector<Point>& points, const std::ve
     s.net = deBoor(s.curve, toDouble(s.u));
     if (s.exactNet) // the drawn net at exactly the exact values, rounded once
         for (std::size_t r = 0; r < s.net.levels.size(); ++r)
-            for (std::size_t i = 0; i < s.net.levels[r].size(); ++i)
-                {
-                    const RPoint& q = s.exactNet->levels[r][i];
-                    s.net.levels[r][i] = Point(toDouble(q.x), toDouble(q.y));
-                }
+            for (std::size_t i = 0; i < s.net.levels[r].size(); ++i) {
+                const RPoint& q = s.exactNet->levels[r][i];
+                s.net.levels[r][i] = Point(toDouble(q.x), toDouble(q.y));
+            }
 
     const int p = s.curve.degree;
     const auto& k = s.curve.knots;
@@ -48,6 +50,17 @@ BSplineScene computeBSplineScene(const std::vector<Point>& points, const std::ve
             // The span's own end value, not the next one's start, so that each sample is in its span.
             const double u = j + 1 == BSplineScene::kSamplesPerSpan ? b : a + t * (b - a);
             s.samples.push_back(bsplinePoint(s.curve, u));
+        }
+    }
+    for (const auto& segment : toBezierSegments(s.curve)) {
+        s.bezier.push_back(segment.points);
+        s.bezierWeights.push_back(segment.weights);
+        if (!s.curve.rational() && p <= 3) {
+            // Degree elevation (Farin §5.1) keeps the segment and gives TikZ and SVG their cubics.
+            std::vector<Point> b = segment.points;
+            while (b.size() < 4)
+                b = elevateDegree(b);
+            s.cubics.push_back({b[0], b[1], b[2], b[3]});
         }
     }
     return s;

@@ -23,17 +23,17 @@ namespace granota::ui {
 struct BSplineScene {
     static constexpr int kSamplesPerSpan = 32; ///< samples of each non-empty knot span, both ends included
 
-    BSplineCurve<double> curve;   ///< the curve drawn: the points, the knots and weights in force
+    BSplineCurve<double> curve; ///< the curve drawn: the points, the knots and weights in force
     /// The same exactly: each point's exact form, or the value of its double where it has none
     /// (every double is a fraction). Insertion, removal and elevation work on it.
     BSplineCurve<Rational> exact;
     /// Why the curve cannot be drawn (checkBSpline's words, in English: the tab says it in its own),
     /// empty when it can.
     QString error;
-    Rational u;                                ///< de Boor's parameter, inside the domain
-    DeBoorTable<double> net;                   ///< de Boor's net at u
+    Rational u;                                    ///< de Boor's parameter, inside the domain
+    DeBoorTable<double> net;                       ///< de Boor's net at u
     std::optional<DeBoorTable<Rational>> exactNet; ///< the same exactly, when every point has an exact form
-    std::vector<Point> samples;                ///< the curve over its domain, span after span
+    std::vector<Point> samples;                    ///< the curve over its domain, span after span
     /// The control points of each Bézier segment (the extraction, one per non-empty span), and
     /// their weights for a rational curve (empty otherwise).
     std::vector<std::vector<Point>> bezier;

@@ -40,11 +40,11 @@
 namespace granota::ui {
 
 namespace {
-constexpr int kUSteps = 1000;          ///< slider steps over the domain [u_p, u_{n+1}]
-constexpr int kPlaySteps = 200;        ///< Play moves u by 1/kPlaySteps of the domain a frame
-constexpr int kAnimationMs = 40;       ///< Play's frame period (25 frames a second)
-constexpr int kPresetItems = 4;        ///< clamped, uniform, Bézier, and "edited" (not a preset: shown only)
-constexpr int kLongExactText = 14;     ///< a fraction longer than this is shown as a decimal (u, the ruler)
+constexpr int kUSteps = 1000;      ///< slider steps over the domain [u_p, u_{n+1}]
+constexpr int kPlaySteps = 200;    ///< Play moves u by 1/kPlaySteps of the domain a frame
+constexpr int kAnimationMs = 40;   ///< Play's frame period (25 frames a second)
+constexpr int kPresetItems = 4;    ///< clamped, uniform, Bézier, and "edited" (not a preset: shown only)
+constexpr int kLongExactText = 14; ///< a fraction longer than this is shown as a decimal (u, the ruler)
 } // namespace
 
 BSplineTab::BSplineTab(QWidget* parent) : CurveTab(QStringLiteral("bspline"), QT_TR_NOOP("B-splines"), parent)
@@ -122,6 +122,9 @@ void BSplineTab::buildUi()
         moveKnot(index, v, valueMergeId(0x42530000, QStringLiteral("knot drag %1").arg(m_knotGesture)));
     });
     connect(m_ruler, &KnotRuler::dragFinished, this, [this] { ++m_knotGesture; });
+    connect(m_ruler, &KnotRuler::insertRequested, this, [this](double value) { insertKnot(rulerValue(value)); });
+    connect(m_ruler, &KnotRuler::insertAtParameterRequested, this, [this] { insertKnot(m_scene.u); });
+    connect(m_ruler, &KnotRuler::removeRequested, this, [this](int index) { removeKnot(index); });
     connect(m_uSlider, &QSlider::valueChanged, this, [this](int k) {
         if (m_syncing || !m_scene.valid())
             return;
@@ -210,6 +213,14 @@ void BSplineTab::buildUi()
     actionsLayout->addWidget(m_removeButton, 0, 1);
     actionsLayout->addWidget(m_elevateButton, 1, 0);
     actionsLayout->addWidget(examples, 1, 1);
+    connect(m_insertButton, &QPushButton::clicked, this, [this] { insertKnot(m_scene.u); });
+    connect(m_removeButton, &QPushButton::clicked, this, [this] {
+        if (m_ruler->selected() < 0)
+            refuse(tr("Select a knot on the ruler first (click it, or Left/Right while the ruler has the focus)."));
+        else
+            removeKnot(m_ruler->selected());
+    });
+    connect(m_elevateButton, &QPushButton::clicked, this, [this] { elevateDegree(); });
     connect(examples->menu(), &QMenu::aboutToShow, this, [this, examples] {
         QMenu* menu = examples->menu();
         menu->clear();
@@ -362,7 +373,7 @@ void BSplineTab::syncControls()
         m_uSlider->setValue(static_cast<int>(std::lround(toDouble((m_scene.u - lo) / (hi - lo)) * kUSteps)));
         const std::string exact = toString(m_scene.u);
         m_uLabel->setText(QStringLiteral("u = %1").arg(exact.size() <= kLongExactText ? displayText(exact)
-                                                                                       : displayNumber(toDouble(m_scene.u))));
+                                                                                      : displayNumber(toDouble(m_scene.u))));
     }
     m_syncing = false;
 }
@@ -395,10 +406,10 @@ void BSplineTab::recompute()
     m_exact->setContent(bsplineReportHtml(m_scene));
     updateBSplineBasisPlot(m_plot, font(), m_scene, presentationScale(presentation()));
     m_canvas->update();
-    m_canvas->setAccessibleDescription(tr("B-spline of degree %1 with %n control point(s) and %2 knots.", nullptr,
-                                          static_cast<int>(m_editor->points().size()))
-                                           .arg(m_scene.degree())
-                                           .arg(m_scene.curve.knots.size()));
+    m_canvas->setAccessibleDescription(
+        tr("B-spline of degree %1 with %n control point(s) and %2 knots.", nullptr, static_cast<int>(m_editor->points().size()))
+            .arg(m_scene.degree())
+            .arg(m_scene.curve.knots.size()));
     syncControls();
 }
 

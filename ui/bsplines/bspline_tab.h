@@ -62,6 +62,13 @@ public:
     /// Moves knot `index` to `value` (rounded to the ruler's step, bounded by its neighbours);
     /// moves with the same `mergeId` (≥ 0) are one undo step.
     bool moveKnot(int index, const Rational& value, int mergeId = -1);
+    /// Boehm's knot insertion at `value` (inside the domain; the knot's multiplicity stays ≤ p).
+    bool insertKnot(const Rational& value);
+    /// Removes knot `index` if the curve stays exactly the same (exact knot removal); else says
+    /// the curve needs it.
+    bool removeKnot(int index);
+    /// Raises the degree by one, the curve unchanged (p < kMaxBSplineDegree).
+    bool elevateDegree();
     /// The weights (n + 1 of them, each > 0), or none (polynomial).
     bool setWeights(const std::vector<Rational>& weights);
     void setNetVisible(bool on);

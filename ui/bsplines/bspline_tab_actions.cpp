@@ -1,11 +1,15 @@
-// The B-spline tab's undoable edits: the degree, the knot preset, a knot moved, the weights,
-// u and what is shown. Each is one undo step; the
+// The B-spline tab's undoable edits: the degree, the knot preset, a knot moved, inserted or
+// removed, the degree elevated, the weights, u and what is shown. Each is one undo step; the
 // algorithms are the core's (core/curves/bsplines/), exact on the points' exact values.
 
 #include "ui/bsplines/bspline_tab.h"
 
+#include "core/curves/bsplines/bspline_degree_elevation.h"
+#include "core/curves/bsplines/knot_insertion.h"
+#include "core/curves/bsplines/knot_removal.h"
 #include "core/exact/round_step.h"
 #include "ui/bsplines/knot_ruler.h"
+#include "ui/common/curve_canvas.h"
 #include "ui/common/number_text.h"
 #include "ui/common/point_editor.h"
 #include "ui/common/value_command.h"
@@ -60,7 +64,8 @@ bool BSplineTab::setDegree(int degree)
     if (degree == m_model.degreeFor(count) && degree == m_model.degree)
         return true;
     if (degree < 1 || degree > kMaxBSplineDegree || degree > count - 1) {
-        refuse(tr("A B-spline of degree %1 needs at least %2 control points; there are %3.").arg(degree).arg(degree + 1).arg(count));
+        refuse(
+            tr("A B-spline of degree %1 needs at least %2 control points; there are %3.").arg(degree).arg(degree + 1).arg(count));
         return false;
     }
     BSplineModel after = m_model;
@@ -124,11 +129,99 @@ bool BSplineTab::moveKnot(int index, const Rational& value, int mergeId)
     return true;
 }
 
+bool BSplineTab::insertKnot(const Rational& value)
+{
+    if (!m_scene.valid())
+        return false;
+    const BSplineCurve<Rational>& c = m_scene.exact;
+    const int p = c.degree;
+    if (value < c.domainStart() || value > c.domainEnd()) {
+        refuse(tr("A knot is inserted inside the domain [%1, %2].").arg(exactText(c.domainStart()), exactText(c.domainEnd())));
+        return false;
+    }
+    if (!checkKnotInsertion(c, value, 1)) { // inside the domain, so the multiplicity is the fault
+        const int m = knotMultiplicity(c.knots, value);
+        refuse(tr("u = %1 is a knot of multiplicity %2 already: once more would break the curve (at most p = %3 times).")
+                   .arg(exactText(value))
+                   .arg(m)
+                   .arg(p));
+        return false;
+    }
+    if (c.pointCount() + 1 > BSplineModel::kMaxPoints) {
+        refuse(tr("A B-spline here has at most %1 control points.").arg(BSplineModel::kMaxPoints));
+        return false;
+    }
+    const BSplineCurve<Rational> inserted = granota::insertKnot(c, value, 1);
+    BSplineModel after = m_model;
+    after.knots = inserted.knots;
+    after.weights = inserted.weights;
+    const std::vector<Point> before = m_editor->points();
+    changeCurve(inserted, after, tr("Insert knot %1").arg(exactText(value)));
+    m_previousPolygon = before; // drawn under the new polygon until the next edit
+    m_canvas->update();
+    refuse(tr("Knot %1 inserted: %2 control points now, the same curve.").arg(exactText(value)).arg(inserted.pointCount()));
+    return true;
+}
+
+bool BSplineTab::removeKnot(int index)
+{
+    if (!m_scene.valid())
+        return false;
+    const BSplineCurve<Rational>& c = m_scene.exact;
+    if (index < 0 || index >= static_cast<int>(c.knots.size()))
+        return false;
+    const Rational value = c.knots[static_cast<std::size_t>(index)];
+    if (!(value > c.domainStart() && value < c.domainEnd())) {
+        refuse(tr("Only a knot inside the domain can be removed; %1 is at its end or outside it.").arg(exactText(value)));
+        return false;
+    }
+    if (c.pointCount() - 1 < c.degree + 1) {
+        refuse(tr("Removing a knot would leave fewer than p + 1 = %1 points.").arg(c.degree + 1));
+        return false;
+    }
+    const KnotRemoval<Rational> r = granota::removeKnot(c, value, 1, 0.0);
+    if (r.removed == 0) {
+        refuse(tr("The curve needs the knot %1: removing it would change the curve.").arg(exactText(value)));
+        return false;
+    }
+    BSplineModel after = m_model;
+    after.knots = r.curve.knots;
+    after.weights = r.curve.weights;
+    changeCurve(r.curve, after, tr("Remove knot %1").arg(exactText(value)));
+    refuse(tr("Knot %1 removed: the curve is exactly the same.").arg(exactText(value)));
+    return true;
+}
+
+bool BSplineTab::elevateDegree()
+{
+    if (!m_scene.valid())
+        return false;
+    const BSplineCurve<Rational>& c = m_scene.exact;
+    if (c.degree >= kMaxBSplineDegree) {
+        refuse(tr("The degree is at most %1.").arg(kMaxBSplineDegree));
+        return false;
+    }
+    const BSplineCurve<Rational> raised = granota::elevateDegree(c);
+    if (raised.pointCount() > BSplineModel::kMaxPoints) {
+        refuse(tr("A B-spline here has at most %1 control points.").arg(BSplineModel::kMaxPoints));
+        return false;
+    }
+    BSplineModel after = m_model;
+    after.degree = raised.degree;
+    after.knots = raised.knots;
+    after.weights = raised.weights;
+    if (after.preset == KnotPreset::Bezier && raised.degree != raised.pointCount() - 1)
+        after.preset = KnotPreset::Clamped;
+    changeCurve(raised, after, tr("Elevate the degree to %1").arg(raised.degree));
+    return true;
+}
+
 bool BSplineTab::setWeights(const std::vector<Rational>& weights)
 {
     const int count = static_cast<int>(m_editor->points().size());
     if (!weights.empty() && static_cast<int>(weights.size()) != count) {
-        refuse(tr("%n weight(s) for %1 points: give one per point, or none.", nullptr, static_cast<int>(weights.size())).arg(count));
+        refuse(
+            tr("%n weight(s) for %1 points: give one per point, or none.", nullptr, static_cast<int>(weights.size())).arg(count));
         return false;
     }
     for (const Rational& w : weights)

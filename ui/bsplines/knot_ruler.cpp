@@ -15,11 +15,11 @@
 namespace granota::ui {
 
 namespace {
-constexpr double kMarginPx = 24;       ///< room left and right of the outermost knots (their badges)
-constexpr double kPickPx = 9;          ///< how near the mouse must be to a tick to take it
-constexpr double kTickPx = 9;          ///< the tick's half height
-constexpr int kKeySteps = 100;         ///< Shift+arrow moves a knot by 1/kKeySteps of the knots' extent
-const QColor kSpanColour(0xff, 0xe0, 0x8a);  ///< the span that holds u (as the polygon's highlighted points)
+constexpr double kMarginPx = 24;              ///< room left and right of the outermost knots (their badges)
+constexpr double kPickPx = 9;                 ///< how near the mouse must be to a tick to take it
+constexpr double kTickPx = 9;                 ///< the tick's half height
+constexpr int kKeySteps = 100;                ///< Shift+arrow moves a knot by 1/kKeySteps of the knots' extent
+const QColor kSpanColour(0xff, 0xe0, 0x8a);   ///< the span that holds u (as the polygon's highlighted points)
 const QColor kDomainColour(0x2b, 0x2b, 0x2b); ///< the domain [u_p, u_{n+1}]
 } // namespace
 
@@ -271,16 +271,13 @@ void KnotRuler::keyPressEvent(QKeyEvent* event)
         }
         return;
     }
-    case Qt::Key_Insert:
-        emit insertAtParameterRequested();
-        return;
+    case Qt::Key_Insert: emit insertAtParameterRequested(); return;
     case Qt::Key_Delete:
     case Qt::Key_Backspace:
         if (m_selected >= 0)
             emit removeRequested(m_selected);
         return;
-    default:
-        QWidget::keyPressEvent(event);
+    default: QWidget::keyPressEvent(event);
     }
 }
 
