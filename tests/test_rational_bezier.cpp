@@ -123,7 +123,8 @@ private slots:
             const Rational t(2, 7);
             const auto table = rationalDeCasteljau(P, w, t);
             for (const Rational& s : rationalParameters()) {
-                QVERIFY(rationalBezierPoint(table.leftPoints(), table.leftWeights(), s) == rationalBezierPoint(P, w, Rational(s * t)));
+                QVERIFY(rationalBezierPoint(table.leftPoints(), table.leftWeights(), s) ==
+                        rationalBezierPoint(P, w, Rational(s * t)));
                 QVERIFY(rationalBezierPoint(table.rightPoints(), table.rightWeights(), s) ==
                         rationalBezierPoint(P, w, Rational(t + s * (1 - t))));
             }
