@@ -91,8 +91,8 @@ private slots:
         c.knots = ints({0, 0, 0, 1, 1, 1});
         const auto inserted = insertKnot(c, frac(1, 2));
         QVERIFY(checkBSpline(inserted).ok());
-        const std::vector<RPoint> expected = {RPoint(0, 0), RPoint(frac(1, 2), frac(1, 2)),
-                                              RPoint(frac(3, 2), frac(1, 2)), RPoint(2, 0)};
+        const std::vector<RPoint> expected = {RPoint(0, 0), RPoint(frac(1, 2), frac(1, 2)), RPoint(frac(3, 2), frac(1, 2)),
+                                              RPoint(2, 0)};
         QVERIFY(inserted.points == expected);
         QVERIFY(inserted.knots == (std::vector<Rational>{0, 0, 0, frac(1, 2), 1, 1, 1}));
         const auto removed = removeKnot(inserted, frac(1, 2));
@@ -113,8 +113,8 @@ private slots:
         c.knots = ints({0, 1, 2, 3, 4, 5, 6});
         QVERIFY(checkKnotInsertion(c, Rational(4), 1).ok());
         const auto q = insertKnot(c, Rational(4));
-        const std::vector<RPoint> expected = {RPoint(0, 0), RPoint(1, 1), RPoint(2, 1),
-                                              RPoint(frac(5, 2), frac(1, 2)), RPoint(3, 0)};
+        const std::vector<RPoint> expected = {RPoint(0, 0), RPoint(1, 1), RPoint(2, 1), RPoint(frac(5, 2), frac(1, 2)),
+                                              RPoint(3, 0)};
         QVERIFY(q.points == expected);
         QVERIFY(q.knots == ints({0, 1, 2, 3, 4, 4, 5, 6}));
         QVERIFY(sameShape(c, q));
@@ -230,8 +230,7 @@ private slots:
         QVERIFY(checkKnotInsertion(c, frac(1, 3), 2).ok());
         QCOMPARE(checkKnotInsertion(c, frac(1, 2), 2).error().message,
                  std::string("the knot 1/2 has multiplicity 1; inserting it 2 more times would exceed the degree 2"));
-        QCOMPARE(checkKnotInsertion(c, Rational(2), 1).error().message,
-                 std::string("the knot 2 is outside the domain [0, 1]"));
+        QCOMPARE(checkKnotInsertion(c, Rational(2), 1).error().message, std::string("the knot 2 is outside the domain [0, 1]"));
         QCOMPARE(checkKnotInsertion(c, Rational(0), 1).error().message,
                  std::string("the knot 0 has multiplicity 3; inserting it 1 more times would exceed the degree 2"));
         QCOMPARE(checkKnotInsertion(c, frac(1, 4), 0).error().message,

@@ -44,8 +44,7 @@ template <class S> S squaredDistance(const Homogeneous<S>& p, const Homogeneous<
 /// `c` (passing checkBSpline) with ū removed up to `times` times, as far as the curve stays
 /// the same within `tolerance` ≥ 0 (exactly when 0). ū must be a knot strictly inside the
 /// domain (u_p, u_{n+1}); any other ū removes nothing.
-template <class S>
-KnotRemoval<S> removeKnot(const BSplineCurve<S>& c, const S& u, int times = 1, double tolerance = 0)
+template <class S> KnotRemoval<S> removeKnot(const BSplineCurve<S>& c, const S& u, int times = 1, double tolerance = 0)
 {
     using H = detail::Homogeneous<S>;
     KnotRemoval<S> result{c, 0, 0.0};
@@ -89,8 +88,7 @@ KnotRemoval<S> removeKnot(const BSplineCurve<S>& c, const S& u, int times = 1, d
             const S alfi = S(S(u - U[z(i)]) / S(U[z(i + ord + t)] - U[z(i)]));
             const S alfj = S(S(u - U[z(j - t)]) / S(U[z(j + ord)] - U[z(j - t)]));
             temp[z(ii)] = detail::combine(S(S(1) / alfi), Pw[z(i)], S(S(alfi - S(1)) / alfi), temp[z(ii - 1)]);
-            temp[z(jj)] = detail::combine(S(S(1) / S(S(1) - alfj)), Pw[z(j)], S(-alfj / S(S(1) - alfj)),
-                                          temp[z(jj + 1)]);
+            temp[z(jj)] = detail::combine(S(S(1) / S(S(1) - alfj)), Pw[z(j)], S(-alfj / S(S(1) - alfj)), temp[z(jj + 1)]);
             ++i;
             ++ii;
             --j;
