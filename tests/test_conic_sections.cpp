@@ -121,7 +121,8 @@ private slots:
     // 2τ_0 + τ_1 = 1 gives τ_0 = 2/9, τ_1 = 5/9, so w² = τ_1²/(4 τ_0 τ_2) = 25/16, w = 5/4 > 1.
     void hyperbola()
     {
-        ConicSection<Rational> c{{rp(Rational(1, 2), 2), rp(Rational(4, 5), Rational(4, 5)), rp(2, Rational(1, 2))}, Rational(5, 4)};
+        ConicSection<Rational> c{{rp(Rational(1, 2), 2), rp(Rational(4, 5), Rational(4, 5)), rp(2, Rational(1, 2))},
+                                 Rational(5, 4)};
         QCOMPARE(int(c.kind()), int(ConicKind::Hyperbola));
         for (const Rational& t : rationalParameters()) {
             const RPoint p = conicPoint(c, t);

@@ -30,14 +30,10 @@ enum class ConicKind { Ellipse, Parabola, Hyperbola, Degenerate };
 inline const char* conicKindName(ConicKind k)
 {
     switch (k) {
-    case ConicKind::Ellipse:
-        return "ellipse";
-    case ConicKind::Parabola:
-        return "parabola";
-    case ConicKind::Hyperbola:
-        return "hyperbola";
-    case ConicKind::Degenerate:
-        break;
+    case ConicKind::Ellipse: return "ellipse";
+    case ConicKind::Parabola: return "parabola";
+    case ConicKind::Hyperbola: return "hyperbola";
+    case ConicKind::Degenerate: break;
     }
     return "degenerate";
 }
@@ -46,10 +42,7 @@ inline const char* conicKindName(ConicKind k)
 template <class S> struct ImplicitConic {
     S a{}, b{}, c{}, d{}, e{}, f{};
     /// The left-hand side at p: 0 on the conic.
-    S operator()(const Vec2<S>& p) const
-    {
-        return S(a * p.x * p.x + b * p.x * p.y + c * p.y * p.y + d * p.x + e * p.y + f);
-    }
+    S operator()(const Vec2<S>& p) const { return S(a * p.x * p.x + b * p.x * p.y + c * p.y * p.y + d * p.x + e * p.y + f); }
     /// B² − 4AC: negative for an ellipse, 0 for a parabola, positive for a hyperbola.
     S discriminant() const { return S(b * b - S(4) * a * c); }
 };
