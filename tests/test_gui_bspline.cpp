@@ -22,6 +22,8 @@
 
 #include <cmath>
 
+Q_DECLARE_METATYPE(granota::RPoint)
+
 using namespace granota;
 using namespace granota::ui;
 
@@ -322,6 +324,60 @@ private slots:
             const RPoint q = bsplinePoint(ex->curve, frac(j, 24));
             QCOMPARE(q.x * q.x + q.y * q.y, Rational(1));
         }
+    }
+
+    void conicPresets_data()
+    {
+        QTest::addColumn<int>("id");
+        QTest::addColumn<RPoint>("middle");
+        // c(1/2) = (P0 + 2w P1 + P2)/(2 + 2w) on (0, 0), (2, 3), (4, 0), by hand.
+        QTest::newRow("ellipse") << int(BSplineExampleId::Ellipse) << RPoint(Rational(2), Rational(1));
+        QTest::newRow("parabola") << int(BSplineExampleId::Parabola) << RPoint(Rational(2), frac(3, 2));
+        QTest::newRow("hyperbola") << int(BSplineExampleId::Hyperbola) << RPoint(Rational(2), Rational(2));
+        // (1, 0), (1, 1), (0, 1) with weights (1, 1, 2): ((1/4 + 1/2)/(5/4), (1/2 + 1/2)/(5/4)).
+        QTest::newRow("quarter circle") << int(BSplineExampleId::QuarterCircle) << RPoint(frac(3, 5), frac(4, 5));
+    }
+
+    void conicPresets()
+    {
+        QFETCH(int, id);
+        QFETCH(RPoint, middle);
+        BSplineTab tab;
+        showTab(tab);
+        const int undo = tab.undoStack()->count();
+        tab.loadBSplineExample(static_cast<BSplineExampleId>(id));
+        QCOMPARE(tab.undoStack()->count(), undo + 1);
+        QCOMPARE(tab.scene().degree(), 2);
+        QVERIFY(tab.scene().curve.rational());
+        QCOMPARE(tab.scene().u, frac(1, 2));
+        QCOMPARE(tab.scene().exactNet->point(), middle);
+        if (static_cast<BSplineExampleId>(id) == BSplineExampleId::QuarterCircle) {
+            // The cubic beside it: its radial error √(1 + (2 − 3k)²/216) − 1 with k = 4(√2 − 1)/3
+            // (Goldapp's closed form, derived in test_conic_sections), about 2.7e-4.
+            const double k = 4 * (std::sqrt(2.0) - 1) / 3;
+            QCOMPARE(tab.scene().cubicCircle.size(), std::size_t(4));
+            QVERIFY(std::abs(tab.scene().cubicCircleError - (std::sqrt(1 + (2 - 3 * k) * (2 - 3 * k) / 216) - 1)) < 1e-12);
+            QVERIFY(tab.scene().cubicCircleError > 2.7e-4 && tab.scene().cubicCircleError < 2.8e-4);
+        }
+        tab.undoStack()->undo();
+        QCOMPARE(tab.pointEditor()->points().size(), std::size_t(6));
+        QVERIFY(!tab.scene().curve.rational());
+    }
+
+    void exports()
+    {
+        BSplineTab tab;
+        showTab(tab);
+        // A cubic: TikZ draws the curve itself, one `.. controls ..` per span (three spans).
+        const QString tex = tab.tikz();
+        QCOMPARE(tex.count(QStringLiteral(".. controls")), 3);
+        const QStringList lines = tab.csv().split(QLatin1Char('\n'));
+        QCOMPARE(lines.front(), QStringLiteral("point,x,y,w"));
+        QCOMPARE(lines[1], QStringLiteral("P0,0,0,1"));
+        const int knots = static_cast<int>(lines.indexOf(QStringLiteral("knot,u")));
+        QVERIFY(knots > 0);
+        QCOMPARE(lines[knots + 5], QStringLiteral("u4,1/3"));
+        QVERIFY(lines.contains(QStringLiteral("sample,x,y")));
     }
 
     void rulerKeys()

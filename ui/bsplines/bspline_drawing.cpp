@@ -51,6 +51,13 @@ void drawBSpline(QPainter& p, const ViewTransform& view, const CanvasStyle& styl
         p.drawPath(pathOf(previousPolygon, view));
         drawDots(p, previousPolygon, view, kBSplineOldPolygonColour, style.handleRadius() * 0.45, style.thinLine());
     }
+    if (scene.cubicCircle.size() == 4) {
+        const auto& b = scene.cubicCircle;
+        QPainterPath path(view.toScreen(b[0]));
+        path.cubicTo(view.toScreen(b[1]), view.toScreen(b[2]), view.toScreen(b[3]));
+        p.setPen(QPen(kBSplineCubicCircleColour, style.lineWidth(), Qt::DashLine));
+        p.drawPath(path);
+    }
     if (!scene.valid())
         return;
     if (model.bezierSegments)
@@ -123,6 +130,9 @@ void writeBSplineTikz(TikzWriter& w, const std::vector<Point>& points, const BSp
             w.point(scene.net.point(), CanvasStyle::series(degree), QStringLiteral("c(u)"));
         }
     }
+    if (scene.cubicCircle.size() == 4)
+        w.bezierSegments({{scene.cubicCircle[0], scene.cubicCircle[1], scene.cubicCircle[2], scene.cubicCircle[3]}},
+                         kBSplineCubicCircleColour, 1.0, true);
     for (std::size_t i = 0; i < points.size(); ++i)
         w.point(points[i], CanvasStyle().handle, QStringLiteral("P_{%1}").arg(i));
 }

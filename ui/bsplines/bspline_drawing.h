@@ -25,6 +25,8 @@ class TikzWriter;
 
 /// The span's points and the span on the knot ruler.
 inline const QColor kBSplineSpanColour(0xf2, 0xb7, 0x05);
+/// The cubic Bézier quarter circle beside the exact one.
+inline const QColor kBSplineCubicCircleColour(0xc0, 0x39, 0x2b);
 /// The polygon before a knot insertion.
 inline const QColor kBSplineOldPolygonColour(0x6a, 0x6a, 0x6a);
 /// The Bézier segments' control polygons, alternately.

@@ -1,5 +1,7 @@
 #include "ui/bsplines/bspline_examples.h"
 
+#include "core/curves/bsplines/circle_arcs.h"
+#include "core/curves/bsplines/conic_section.h"
 #include "core/io/worked_examples.h"
 
 #include <QCoreApplication>
@@ -23,11 +25,38 @@ BSplineExample withModel(BSplineCurve<Rational> c, KnotPreset preset, bool edite
 
 RPoint rp(long x, long y) { return RPoint(Rational(x), Rational(y)); }
 
+/// One rational quadratic Bézier piece (no interior knot) as the tab shows it.
+BSplineExample conicPiece(std::vector<RPoint> points, std::vector<Rational> weights, bool cubicCircle)
+{
+    BSplineCurve<Rational> c;
+    c.degree = 2;
+    c.points = std::move(points);
+    c.weights = std::move(weights);
+    c.knots = presetKnots<Rational>(KnotPreset::Bezier, 3, 2);
+    BSplineExample e = withModel(std::move(c), KnotPreset::Bezier, false);
+    e.model.cubicCircle = cubicCircle;
+    return e;
+}
+
+/// The conic on the triangle (0, 0), (2, 3), (4, 0) with middle weight w: its kind is w's
+/// (ConicSection: an ellipse below 1, a parabola at 1, a hyperbola above).
+BSplineExample conicOfWeight(const Rational& w)
+{
+    ConicSection<Rational> conic;
+    conic.points = {rp(0, 0), rp(2, 3), rp(4, 0)};
+    conic.weight = w;
+    return conicPiece({conic.points.begin(), conic.points.end()}, {Rational(1), conic.weight, Rational(1)}, false);
+}
+
+
 } // namespace
 
 std::vector<BSplineExampleId> bsplineExampleIds()
 {
-    return {BSplineExampleId::Ex22Bezier, BSplineExampleId::ClosedUniformCubic, BSplineExampleId::Circle};
+    return {BSplineExampleId::Ex22Bezier, BSplineExampleId::ClosedUniformCubic,
+            BSplineExampleId::Circle,     BSplineExampleId::QuarterCircle,
+            BSplineExampleId::Ellipse,    BSplineExampleId::Parabola,
+            BSplineExampleId::Hyperbola};
 }
 
 QString bsplineExampleTitle(BSplineExampleId id)
@@ -38,6 +67,11 @@ QString bsplineExampleTitle(BSplineExampleId id)
     case BSplineExampleId::ClosedUniformCubic:
         return QCoreApplication::translate("granota::ui::BSplineTab", "Uniform cubic, closed on Ex 2.13's points");
     case BSplineExampleId::Circle: return QCoreApplication::translate("granota::ui::BSplineTab", "The circle, exactly (NURBS)");
+    case BSplineExampleId::QuarterCircle:
+        return QCoreApplication::translate("granota::ui::BSplineTab", "Quarter circle, exactly, beside the cubic Bézier one");
+    case BSplineExampleId::Ellipse: return QCoreApplication::translate("granota::ui::BSplineTab", "Conic: an ellipse (w = 1/2)");
+    case BSplineExampleId::Parabola: return QCoreApplication::translate("granota::ui::BSplineTab", "Conic: a parabola (w = 1)");
+    case BSplineExampleId::Hyperbola: return QCoreApplication::translate("granota::ui::BSplineTab", "Conic: a hyperbola (w = 2)");
     }
     return {};
 }
@@ -85,6 +119,14 @@ std::optional<BSplineExample> bsplineExample(BSplineExampleId id)
                    frac(1, 2),  frac(3, 4),  frac(3, 4),  Rational(1), Rational(1), Rational(1)};
         return withModel(std::move(c), KnotPreset::Clamped, true);
     }
+    case BSplineExampleId::QuarterCircle: {
+        // The quarter circle (1, 0), (1, 1), (0, 1) with the weights (1, 1, 2), exact (circle_arcs.h).
+        const RationalBezierSegment<Rational> q = rationalQuarterCircle<Rational>();
+        return conicPiece(q.points, q.weights, true);
+    }
+    case BSplineExampleId::Ellipse: return conicOfWeight(frac(1, 2));
+    case BSplineExampleId::Parabola: return conicOfWeight(Rational(1));
+    case BSplineExampleId::Hyperbola: return conicOfWeight(Rational(2));
     }
     return std::nullopt;
 }

@@ -2,7 +2,9 @@
 /// \file bspline_examples.h
 /// The B-spline tab's examples, as data (points, knots, weights) and without a widget: the
 /// curve it opens on, Ex 2.2's Bézier curve as the B-spline with no interior knot, the uniform
-/// cubic closed on Ex 2.13's points, and the exact circle as a NURBS. Their texts keep the
+/// cubic closed on Ex 2.13's points, the exact circle as a NURBS, and the conic presets: the
+/// exact quarter circle (with the cubic Bézier approximation beside it), an ellipse, a parabola
+/// and a hyperbola on one triangle, by their middle weight (conic_section.h). Their texts keep the
 /// tab's translation context (granota::ui::BSplineTab).
 
 #include "core/curves/bsplines/bspline_curve.h"
@@ -20,7 +22,7 @@ struct BSplineExample {
     BSplineModel model;           ///< the tab's model that shows it
 };
 
-enum class BSplineExampleId { Ex22Bezier, ClosedUniformCubic, Circle };
+enum class BSplineExampleId { Ex22Bezier, ClosedUniformCubic, Circle, QuarterCircle, Ellipse, Parabola, Hyperbola };
 
 std::vector<BSplineExampleId> bsplineExampleIds();
 QString bsplineExampleTitle(BSplineExampleId id);

@@ -11,7 +11,7 @@ namespace granota::ui {
 bool BSplineModel::operator==(const BSplineModel& o) const
 {
     return degree == o.degree && preset == o.preset && knots == o.knots && weights == o.weights && u == o.u && net == o.net &&
-           bezierSegments == o.bezierSegments;
+           bezierSegments == o.bezierSegments && cubicCircle == o.cubicCircle;
 }
 
 int BSplineModel::degreeFor(int pointCount) const { return std::clamp(std::min(degree, pointCount - 1), 1, kMaxBSplineDegree); }
@@ -112,6 +112,8 @@ void writeModel(const BSplineModel& m, QJsonObject& json)
     json.insert(QStringLiteral("u"), QString::fromStdString(toString(m.u)));
     json.insert(QStringLiteral("net"), m.net);
     json.insert(QStringLiteral("bezier_segments"), m.bezierSegments);
+    if (m.cubicCircle)
+        json.insert(QStringLiteral("cubic_circle"), true);
 }
 
 std::optional<BSplineModel> readModel(const QJsonObject& json, QString* problem)
@@ -151,13 +153,16 @@ std::optional<BSplineModel> readModel(const QJsonObject& json, QString* problem)
             return fail("u");
         m.u = *u;
     }
-    for (const char* key : {"net", "bezier_segments"}) {
+    const std::pair<const char*, bool BSplineModel::*> flags[] = {{"net", &BSplineModel::net},
+                                                                  {"bezier_segments", &BSplineModel::bezierSegments},
+                                                                  {"cubic_circle", &BSplineModel::cubicCircle}};
+    for (const auto& [key, flag] : flags) {
         const QJsonValue v = json.value(QLatin1String(key));
         if (v.isUndefined())
             continue;
         if (!v.isBool())
             return fail(key);
-        (std::string_view(key) == "net" ? m.net : m.bezierSegments) = v.toBool();
+        m.*flag = v.toBool();
     }
     return m;
 }

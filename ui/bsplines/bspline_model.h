@@ -32,6 +32,7 @@ struct BSplineModel {
     Rational u{1, 2};                        ///< de Boor's construction at u (kept inside the domain)
     bool net = true;                         ///< de Boor's net at u, level by level
     bool bezierSegments = false;             ///< the curve's Bézier segments (the extraction) drawn
+    bool cubicCircle = false;                ///< the cubic Bézier quarter circle drawn beside (its radial error)
 
     bool operator==(const BSplineModel& o) const;
     bool operator!=(const BSplineModel& o) const { return !(*this == o); }

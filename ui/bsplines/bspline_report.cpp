@@ -1,6 +1,7 @@
 #include "ui/bsplines/bspline_report.h"
 
 #include "core/curves/bsplines/bspline_basis.h"
+#include "core/curves/bsplines/circle_arcs.h"
 #include "core/curves/bsplines/knot_vector.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/number_text.h"
@@ -92,6 +93,11 @@ QString bsplineReportHtml(const BSplineScene& scene)
     }
     html += ExactPanel::heading(say("Knots"));
     html += ExactPanel::table({say("knot"), say("multiplicity m"), say("continuity C<sup>p−m</sup>")}, rows);
+    if (!scene.cubicCircle.empty())
+        html += ExactPanel::note(say("Dashed red: the cubic Bézier quarter circle (1, 0), (1, k), (k, 1), (0, 1), "
+                                     "k = 4(√2 − 1)/3 ≈ %1: its radius is off by up to %2; the rational quarter "
+                                     "circle's by nothing (x² + y² = 1 exactly at every rational u).")
+                                     .arg(displayNumber(cubicCircleHandle()), displaySignificant(scene.cubicCircleError, 2)));
     if (scene.curve.rational()) {
         QStringList w;
         for (const Rational& q : scene.exact.weights)

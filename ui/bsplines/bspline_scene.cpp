@@ -2,6 +2,7 @@
 
 #include "core/curves/bezier/degree_elevation.h"
 #include "core/curves/bsplines/bezier_extraction.h"
+#include "core/curves/bsplines/circle_arcs.h"
 
 #include <QRectF>
 
@@ -18,6 +19,10 @@ BSplineScene computeBSplineScene(const std::vector<Point>& points, const std::ve
     s.curve = model.curve(points);
     s.exact = model.curve(exactValues);
     s.u = model.uFor(count);
+    if (model.cubicCircle) {
+        s.cubicCircle = cubicQuarterCircle(cubicCircleHandle());
+        s.cubicCircleError = cubicCircleRadialError(cubicCircleHandle()).maxError;
+    }
     if (const Expected<void> ok = checkBSpline(s.curve); !ok) {
         s.error = QString::fromStdString(ok.error().message);
         return s;

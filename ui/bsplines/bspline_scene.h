@@ -42,6 +42,10 @@ struct BSplineScene {
     /// raised to degree 3 exactly): the canvas draws them as cubic paths, so that SVG and PDF
     /// hold the curve itself, and TikZ writes them as `.. controls ..`. Empty otherwise.
     std::vector<std::array<Point, 4>> cubics;
+    /// The cubic Bézier quarter circle (1,0), (1,k), (k,1), (0,1), k = 4(√2 − 1)/3, drawn beside
+    /// the exact one when the model asks (circle_arcs.h), and its largest radial error.
+    std::vector<Point> cubicCircle;
+    double cubicCircleError = 0;
 
     bool valid() const { return error.isEmpty(); }
     int span() const { return net.span; }

@@ -150,6 +150,7 @@ void BSplineTab::buildUi()
     m_weightsLabel->setBuddy(m_weightsEdit);
     m_netCheck = new QCheckBox(m_curveBox);
     m_bezierCheck = new QCheckBox(m_curveBox);
+    m_cubicCircleCheck = new QCheckBox(m_curveBox);
     auto* curveLayout = new QGridLayout(m_curveBox);
     curveLayout->addWidget(m_degreeLabel, 0, 0);
     curveLayout->addWidget(m_degreeSpin, 0, 1);
@@ -159,6 +160,7 @@ void BSplineTab::buildUi()
     curveLayout->addWidget(m_weightsEdit, 2, 1);
     curveLayout->addWidget(m_netCheck, 3, 0, 1, 2);
     curveLayout->addWidget(m_bezierCheck, 4, 0, 1, 2);
+    curveLayout->addWidget(m_cubicCircleCheck, 5, 0, 1, 2);
     curveLayout->setColumnStretch(1, 1);
     connect(m_degreeSpin, &QSpinBox::valueChanged, this, [this](int d) {
         if (!m_syncing && !setDegree(d))
@@ -199,6 +201,10 @@ void BSplineTab::buildUi()
         if (!m_syncing)
             setBezierSegmentsVisible(on);
     });
+    connect(m_cubicCircleCheck, &QCheckBox::toggled, this, [this](bool on) {
+        if (!m_syncing)
+            setCubicCircleVisible(on);
+    });
 
     m_actionsBox = new QGroupBox(this);
     m_insertButton = new QPushButton(m_actionsBox);
@@ -225,13 +231,7 @@ void BSplineTab::buildUi()
         QMenu* menu = examples->menu();
         menu->clear();
         for (const BSplineExampleId id : bsplineExampleIds())
-            menu->addAction(bsplineExampleTitle(id), this, [this, id] {
-                if (const auto ex = bsplineExample(id)) {
-                    changeCurve(ex->curve, ex->model, tr("Load %1").arg(bsplineExampleTitle(id)));
-                    updateContentBounds(true);
-                    m_canvas->fitToContent();
-                }
-            });
+            menu->addAction(bsplineExampleTitle(id), this, [this, id] { loadBSplineExample(id); });
     });
     m_examplesButton = examples;
 
@@ -278,7 +278,7 @@ void BSplineTab::buildUi()
     layout->addWidget(split);
 
     setTabOrderOf({m_canvas, m_ruler, m_uSlider, m_play, m_plot, m_degreeSpin, m_presetCombo, m_weightsEdit, m_netCheck,
-                   m_bezierCheck, m_insertButton, m_removeButton, m_elevateButton, examples, m_sideTabs});
+                   m_bezierCheck, m_cubicCircleCheck, m_insertButton, m_removeButton, m_elevateButton, examples, m_sideTabs});
 }
 
 QString BSplineTab::hint() const
@@ -330,6 +330,10 @@ void BSplineTab::retranslate()
     m_bezierCheck->setText(tr("Bé&zier segments"));
     m_bezierCheck->setToolTip(tr("Draw the control polygon of each Bézier segment of the curve (the knots inserted up to "
                                  "multiplicity p): one polynomial piece per span."));
+    m_cubicCircleCheck->setText(tr("C&ubic Bézier circle beside"));
+    m_cubicCircleCheck->setToolTip(tr("The usual cubic Bézier quarter circle (1, 0), (1, k), (k, 1), (0, 1), k = 4(√2 − 1)/3, "
+                                      "dashed: close to the circle but not on it (its radial error is in the exact panel); "
+                                      "the rational quarter circle is exact."));
     m_actionsBox->setTitle(tr("Actions"));
     m_insertButton->setText(tr("&Insert knot at u"));
     m_insertButton->setToolTip(tr("Boehm's knot insertion: one more point and one more knot, the curve unchanged; the "
@@ -339,7 +343,8 @@ void BSplineTab::retranslate()
     m_elevateButton->setText(tr("&Elevate degree"));
     m_elevateButton->setToolTip(tr("Degree p + 1, the same curve: more points, each knot once more."));
     m_examplesButton->setText(tr("E&xamples"));
-    m_examplesButton->setToolTip(tr("Ex 2.2's Bézier curve as a B-spline; a uniform cubic closed on Ex 2.13's points."));
+    m_examplesButton->setToolTip(tr("Ex 2.2's Bézier curve as a B-spline; a uniform cubic closed on Ex 2.13's points; the "
+                                    "circle and the conics, exactly, as rational curves."));
     setBSplineBasisPlotTexts(m_plotTitle, m_plot);
     m_exact->setToolTip(tr("Exact results: de Boor's net at u, the basis functions there, their supports, the knots "
                            "with their multiplicities and the continuity of the curve at each."));
@@ -368,6 +373,7 @@ void BSplineTab::syncControls()
         m_weightsEdit->setText(w.join(QStringLiteral(", ")));
     m_netCheck->setChecked(m_model.net);
     m_bezierCheck->setChecked(m_model.bezierSegments);
+    m_cubicCircleCheck->setChecked(m_model.cubicCircle);
     if (m_scene.valid()) {
         const Rational lo = m_scene.exact.domainStart(), hi = m_scene.exact.domainEnd();
         m_uSlider->setValue(static_cast<int>(std::lround(toDouble((m_scene.u - lo) / (hi - lo)) * kUSteps)));
@@ -494,6 +500,15 @@ void BSplineTab::advanceAnimation()
 }
 
 // ---------------------------------------------------------------- examples, documents and exports
+
+void BSplineTab::loadBSplineExample(BSplineExampleId id)
+{
+    if (const auto ex = bsplineExample(id)) {
+        changeCurve(ex->curve, ex->model, tr("Load %1").arg(bsplineExampleTitle(id)));
+        updateContentBounds(true);
+        m_canvas->fitToContent();
+    }
+}
 
 bool BSplineTab::loadExample(const WorkedExample& example)
 {

@@ -10,6 +10,7 @@
 /// elevation, weights (NURBS). Every change is one undo step; the points are the CurveTab's
 /// editor's, the rest is one BSplineModel.
 
+#include "ui/bsplines/bspline_examples.h"
 #include "ui/bsplines/bspline_model.h"
 #include "ui/bsplines/bspline_scene.h"
 #include "ui/common/curve_tab.h"
@@ -73,6 +74,10 @@ public:
     bool setWeights(const std::vector<Rational>& weights);
     void setNetVisible(bool on);
     void setBezierSegmentsVisible(bool on);
+    /// The cubic Bézier quarter circle beside (the quarter-circle example turns it on).
+    void setCubicCircleVisible(bool on);
+    /// Loads one of the tab's examples (bspline_examples.h) as one undo step.
+    void loadBSplineExample(BSplineExampleId id);
     bool isPlaying() const;
     void setPlaying(bool on);
 
@@ -118,6 +123,7 @@ private:
     QLineEdit* m_weightsEdit = nullptr;
     QCheckBox* m_netCheck = nullptr;
     QCheckBox* m_bezierCheck = nullptr;
+    QCheckBox* m_cubicCircleCheck = nullptr;
     QGroupBox* m_actionsBox = nullptr;
     QPushButton* m_insertButton = nullptr;
     QPushButton* m_removeButton = nullptr;

@@ -250,4 +250,11 @@ void BSplineTab::setBezierSegmentsVisible(bool on)
     changeModel(after, on ? tr("Show the Bézier segments") : tr("Hide the Bézier segments"));
 }
 
+void BSplineTab::setCubicCircleVisible(bool on)
+{
+    BSplineModel after = m_model;
+    after.cubicCircle = on;
+    changeModel(after, on ? tr("Show the cubic circle") : tr("Hide the cubic circle"));
+}
+
 } // namespace granota::ui
