@@ -380,6 +380,21 @@ private slots:
         QVERIFY(lines.contains(QStringLiteral("sample,x,y")));
     }
 
+    void playIsOneUndoStep()
+    {
+        BSplineTab tab;
+        showTab(tab);
+        const Rational start = tab.model().u;
+        const int undo = tab.undoStack()->count();
+        tab.setPlaying(true);
+        QTRY_VERIFY_WITH_TIMEOUT(tab.model().u != start, kEventWaitMs); // a frame at least, however slow the machine
+        QCOMPARE(tab.undoStack()->count(), undo);                       // nothing while it plays
+        tab.setPlaying(false);
+        QCOMPARE(tab.undoStack()->count(), undo + 1);
+        tab.undoStack()->undo();
+        QCOMPARE(tab.model().u, start);
+    }
+
     void rulerKeys()
     {
         BSplineTab tab;
