@@ -40,6 +40,11 @@
 namespace granota::ui {
 
 namespace {
+/// Undo merge ids: the moves of one knot drag (one slider drag) share one, the next gesture has
+/// the next; only consecutive steps merge, so the ids may wrap.
+constexpr int kKnotMergeIdBase = 0x42530000; ///< "BS"
+constexpr int kUMergeIdBase = 0x42550000;
+constexpr int kGestureIds = 0x10000;
 constexpr int kUSteps = 1000;      ///< slider steps over the domain [u_p, u_{n+1}]
 constexpr int kPlaySteps = 200;    ///< Play moves u by 1/kPlaySteps of the domain a frame
 constexpr int kAnimationMs = 40;   ///< Play's frame period (25 frames a second)
@@ -119,7 +124,7 @@ void BSplineTab::buildUi()
             v = k[i - 1];
         else if (i + 1 < k.size() && value >= m_ruler->upperBound(index))
             v = k[i + 1];
-        moveKnot(index, v, valueMergeId(0x42530000, QStringLiteral("knot drag %1").arg(m_knotGesture)));
+        moveKnot(index, v, kKnotMergeIdBase + m_knotGesture % kGestureIds);
     });
     connect(m_ruler, &KnotRuler::dragFinished, this, [this] { ++m_knotGesture; });
     connect(m_ruler, &KnotRuler::insertRequested, this, [this](double value) { insertKnot(rulerValue(value)); });
@@ -129,7 +134,7 @@ void BSplineTab::buildUi()
         if (m_syncing || !m_scene.valid())
             return;
         const Rational lo = m_scene.exact.domainStart(), hi = m_scene.exact.domainEnd();
-        setU(lo + (hi - lo) * frac(k, kUSteps), valueMergeId(0x42550000, QStringLiteral("u gesture %1").arg(m_uGesture)));
+        setU(lo + (hi - lo) * frac(k, kUSteps), kUMergeIdBase + m_uGesture % kGestureIds);
     });
     connect(m_uSlider, &QSlider::sliderReleased, this, [this] { ++m_uGesture; });
     connect(m_play, &QToolButton::toggled, this, &BSplineTab::setPlaying);
