@@ -387,10 +387,12 @@ private slots:
         const Rational start = tab.model().u;
         const int undo = tab.undoStack()->count();
         tab.setPlaying(true);
-        QTRY_VERIFY_WITH_TIMEOUT(tab.model().u != start, kEventWaitMs); // a frame at least, however slow the machine
+        QTRY_VERIFY_WITH_TIMEOUT(tab.scene().u != start, kEventWaitMs); // a frame at least, however slow the machine
         QCOMPARE(tab.undoStack()->count(), undo);                       // nothing while it plays
+        QCOMPARE(tab.model().u, start);                                 // nor in the document
         tab.setPlaying(false);
         QCOMPARE(tab.undoStack()->count(), undo + 1);
+        QCOMPARE(tab.model().u, tab.scene().u);
         tab.undoStack()->undo();
         QCOMPARE(tab.model().u, start);
     }

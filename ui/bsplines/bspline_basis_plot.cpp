@@ -27,23 +27,39 @@ BasisSamples sampleBasis(const BSplineCurve<double>& curve, int samplesPerSpan)
     BasisSamples out;
     const int p = curve.degree, n = curve.pointCount() - 1;
     const auto& k = curve.knots;
-    out.values.resize(static_cast<std::size_t>(n + 1));
-    for (int span = 0; span + 1 < static_cast<int>(k.size()); ++span) {
+    out.functions.resize(static_cast<std::size_t>(n + 1));
+    for (auto& f : out.functions)
+        f.first = -1;
+    const auto record = [&](int i, double value) {
+        BasisSamples::Support& f = out.functions[static_cast<std::size_t>(i)];
+        if (f.first < 0)
+            f.first = static_cast<int>(out.u.size()) - 1;
+        f.values.push_back(value);
+        out.sum.back() += value;
+    };
+    const int last = static_cast<int>(k.size()) - 1;
+    for (int span = 0; span < last; ++span) {
         const double a = k[static_cast<std::size_t>(span)], b = k[static_cast<std::size_t>(span + 1)];
         if (!(a < b))
             continue;
         for (int j = 0; j < samplesPerSpan; ++j) {
             const double u = a + (b - a) * j / samplesPerSpan;
             out.u.push_back(u);
-            // Only N_{span−p..span} can be non-zero on the span (their supports [u_i, u_{i+p+1})).
-            for (int i = 0; i <= n; ++i)
-                out.values[static_cast<std::size_t>(i)].push_back(i >= span - p && i <= span ? basisFunction(k, i, p, u) : 0.0);
+            out.sum.push_back(0.0);
+            // Only N_{span−p..span} can be non-zero on the span (their supports [u_i, u_{i+p+1}));
+            // N_{span−p−1} ends here at 0, its line's last sample.
+            if (j == 0 && span - p - 1 >= 0 && span - p - 1 <= n)
+                record(span - p - 1, 0.0);
+            for (int i = std::max(0, span - p); i <= std::min(n, span); ++i)
+                record(i, basisFunction(k, i, p, u));
         }
     }
     // The last knot, where the domain ends (closed there, bspline_basis.h).
     out.u.push_back(k.back());
-    for (int i = 0; i <= n; ++i)
-        out.values[static_cast<std::size_t>(i)].push_back(basisFunction(k, i, p, k.back()));
+    out.sum.push_back(0.0);
+    for (int i = std::max(0, n - p); i <= n; ++i)
+        if (out.functions[static_cast<std::size_t>(i)].first >= 0)
+            record(i, basisFunction(k, i, p, k.back()));
     return out;
 }
 
@@ -87,16 +103,14 @@ void updateBSplineBasisPlot(QCustomPlot* plot, const QFont& font, const BSplineS
         return;
     }
     const BasisSamples b = sampleBasis(scene.curve, kPlotSamplesPerSpan);
-    const QVector<double> u(b.u.begin(), b.u.end());
-    const int count = static_cast<int>(b.values.size());
+    const int count = static_cast<int>(b.functions.size());
     const bool legend = count <= kLegendUpTo && plot->height() >= kLegendMinHeight;
     plot->legend->setVisible(legend);
-    QVector<double> sum(u.size(), 0.0);
     for (int i = 0; i < count; ++i) {
-        const auto& v = b.values[static_cast<std::size_t>(i)];
-        QVector<double> y(v.begin(), v.end());
-        for (qsizetype j = 0; j < y.size(); ++j)
-            sum[j] += y[j];
+        const BasisSamples::Support& f = b.functions[static_cast<std::size_t>(i)];
+        QVector<double> u, y(f.values.begin(), f.values.end());
+        for (std::size_t j = 0; j < f.values.size(); ++j)
+            u.push_back(b.u[static_cast<std::size_t>(f.first) + j]);
         QCPGraph* g = plot->addGraph();
         g->setData(u, y, true);
         g->setPen(QPen(CanvasStyle::series(i), (count > 40 ? 1.0 : 2.0) * scale));
@@ -105,10 +119,10 @@ void updateBSplineBasisPlot(QCustomPlot* plot, const QFont& font, const BSplineS
     // Σ N_{i,p} on the domain only: 1 there (partition of unity), not outside it.
     const double lo = scene.curve.domainStart(), hi = scene.curve.domainEnd();
     QVector<double> du, ds;
-    for (qsizetype j = 0; j < u.size(); ++j)
-        if (u[j] >= lo && u[j] <= hi) {
-            du.push_back(u[j]);
-            ds.push_back(sum[j]);
+    for (std::size_t j = 0; j < b.u.size(); ++j)
+        if (b.u[j] >= lo && b.u[j] <= hi) {
+            du.push_back(b.u[j]);
+            ds.push_back(b.sum[j]);
         }
     QCPGraph* total = plot->addGraph();
     total->setData(du, ds, true);

@@ -23,10 +23,17 @@ void setBSplineBasisPlotTexts(QLabel* title, QCustomPlot* plot);
 /// replot. The legend (N₀…, Σ) only while the plot is high enough for it: call again on a resize.
 void updateBSplineBasisPlot(QCustomPlot* plot, const QFont& font, const BSplineScene& scene, double scale);
 
-/// The samples of N_{i,p}(u) the plot draws: u over [u_0, u_{n+p+1}], and values[i][j] = N_{i,p}(u_j).
+/// The samples of N_{i,p}(u) the plot draws: u over [u_0, u_{n+p+1}], and each function over its
+/// support only (it is zero elsewhere): p + 1 spans' worth of samples each, so that 200 points
+/// cost 200 short lines, not 200 lines across the whole vector.
 struct BasisSamples {
-    std::vector<double> u;
-    std::vector<std::vector<double>> values;
+    std::vector<double> u;   ///< every sample, increasing
+    std::vector<double> sum; ///< Σ_i N_{i,p}(u_j)
+    struct Support {
+        int first = 0;              ///< the index in `u` of its first sample
+        std::vector<double> values; ///< N_{i,p} at u[first], u[first + 1], …
+    };
+    std::vector<Support> functions; ///< i = 0..n
 };
 BasisSamples sampleBasis(const BSplineCurve<double>& curve, int samplesPerSpan);
 

@@ -25,7 +25,6 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
-#include <QMenu>
 #include <QPushButton>
 #include <QSlider>
 #include <QSpinBox>
@@ -36,6 +35,9 @@
 #include <QToolButton>
 #include <QVBoxLayout>
 #include <qcustomplot.h>
+
+#include <optional>
+#include <utility>
 
 namespace granota::ui {
 
@@ -215,15 +217,19 @@ void BSplineTab::buildUi()
     m_insertButton = new QPushButton(m_actionsBox);
     m_removeButton = new QPushButton(m_actionsBox);
     m_elevateButton = new QPushButton(m_actionsBox);
-    auto* examples = new QToolButton(m_actionsBox);
-    examples->setObjectName(QStringLiteral("bsplineExamples"));
-    examples->setPopupMode(QToolButton::InstantPopup);
-    examples->setMenu(new QMenu(examples));
+    // A combo box rather than a button with a menu: its list does not run an event loop of its own.
+    m_examplesCombo = new QComboBox(m_actionsBox);
+    m_examplesCombo->setObjectName(QStringLiteral("bsplineExamples"));
+    m_examplesCombo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_examplesCombo->setMinimumContentsLength(12);
+    m_examplesCombo->addItem(QString()); // "Examples…": the prompt, not an example
+    for (std::size_t i = 0; i < bsplineExampleIds().size(); ++i)
+        m_examplesCombo->addItem(QString());
     auto* actionsLayout = new QGridLayout(m_actionsBox);
     actionsLayout->addWidget(m_insertButton, 0, 0);
     actionsLayout->addWidget(m_removeButton, 0, 1);
-    actionsLayout->addWidget(m_elevateButton, 1, 0);
-    actionsLayout->addWidget(examples, 1, 1);
+    actionsLayout->addWidget(m_elevateButton, 1, 0, 1, 2);
+    actionsLayout->addWidget(m_examplesCombo, 2, 0, 1, 2);
     connect(m_insertButton, &QPushButton::clicked, this, [this] { insertKnot(m_scene.u); });
     connect(m_removeButton, &QPushButton::clicked, this, [this] {
         if (m_ruler->selected() < 0)
@@ -232,13 +238,13 @@ void BSplineTab::buildUi()
             removeKnot(m_ruler->selected());
     });
     connect(m_elevateButton, &QPushButton::clicked, this, [this] { elevateDegree(); });
-    connect(examples->menu(), &QMenu::aboutToShow, this, [this, examples] {
-        QMenu* menu = examples->menu();
-        menu->clear();
-        for (const BSplineExampleId id : bsplineExampleIds())
-            menu->addAction(bsplineExampleTitle(id), this, [this, id] { loadBSplineExample(id); });
+    connect(m_examplesCombo, &QComboBox::activated, this, [this](int i) {
+        const std::vector<BSplineExampleId> ids = bsplineExampleIds();
+        if (!m_syncing && i >= 1 && i <= static_cast<int>(ids.size()))
+            loadBSplineExample(ids[static_cast<std::size_t>(i - 1)]);
+        const QSignalBlocker block(m_examplesCombo);
+        m_examplesCombo->setCurrentIndex(0); // back to the prompt
     });
-    m_examplesButton = examples;
 
     m_exact = new ExactPanel(this);
     m_table = new PointTable(m_editor, this);
@@ -283,7 +289,8 @@ void BSplineTab::buildUi()
     layout->addWidget(split);
 
     setTabOrderOf({m_canvas, m_ruler, m_uSlider, m_play, m_plot, m_degreeSpin, m_presetCombo, m_weightsEdit, m_netCheck,
-                   m_bezierCheck, m_cubicCircleCheck, m_insertButton, m_removeButton, m_elevateButton, examples, m_sideTabs});
+                   m_bezierCheck, m_cubicCircleCheck, m_insertButton, m_removeButton, m_elevateButton, m_examplesCombo,
+                   m_sideTabs});
 }
 
 QString BSplineTab::hint() const
@@ -347,9 +354,12 @@ void BSplineTab::retranslate()
     m_removeButton->setToolTip(tr("Remove the knot selected on the ruler, only if the curve stays exactly the same."));
     m_elevateButton->setText(tr("&Elevate degree"));
     m_elevateButton->setToolTip(tr("Degree p + 1, the same curve: more points, each knot once more."));
-    m_examplesButton->setText(tr("E&xamples"));
-    m_examplesButton->setToolTip(tr("Ex 2.2's Bézier curve as a B-spline; a uniform cubic closed on Ex 2.13's points; the "
-                                    "circle and the conics, exactly, as rational curves."));
+    m_examplesCombo->setItemText(0, tr("Examples…"));
+    for (std::size_t i = 0; i < bsplineExampleIds().size(); ++i)
+        m_examplesCombo->setItemText(static_cast<int>(i) + 1, bsplineExampleTitle(bsplineExampleIds()[i]));
+    m_examplesCombo->setAccessibleName(tr("Examples"));
+    m_examplesCombo->setToolTip(tr("Ex 2.2's Bézier curve as a B-spline; a uniform cubic closed on Ex 2.13's points; the "
+                                   "circle and the conics, exactly, as rational curves."));
     setBSplineBasisPlotTexts(m_plotTitle, m_plot);
     m_exact->setToolTip(tr("Exact results: de Boor's net at u, the basis functions there, their supports, the knots "
                            "with their multiplicities and the continuity of the curve at each."));
@@ -405,7 +415,11 @@ std::vector<RPoint> BSplineTab::exactValues() const
 
 void BSplineTab::recompute()
 {
-    m_scene = computeBSplineScene(m_editor->points(), exactValues(), m_editor->allExactPoints().has_value(), m_model);
+    // While Play runs, the scene is at Play's u; the model (the document) keeps its own until Pause.
+    BSplineModel shown = m_model;
+    if (m_playU)
+        shown.u = *m_playU;
+    m_scene = computeBSplineScene(m_editor->points(), exactValues(), m_editor->allExactPoints().has_value(), shown);
     // The ruler's labels are the exact knots, or decimals where a fraction would be long.
     QStringList texts;
     for (const Rational& k : m_scene.exact.knots) {
@@ -468,20 +482,19 @@ bool BSplineTab::isPlaying() const { return m_timer->isActive(); }
 void BSplineTab::setPlaying(bool on)
 {
     if (on && !m_timer->isActive()) {
-        m_playStartU = m_model.u;
+        m_playU = m_scene.u;
         m_timer->start();
     } else if (!on && m_timer->isActive()) {
         m_timer->stop();
-        // The whole play is one undo step, from where it started.
-        if (m_playStartU != m_model.u) {
-            BSplineModel before = m_model;
-            before.u = m_playStartU;
-            auto apply = [this](const BSplineModel& m) {
-                applyModel(m);
-                emit documentChanged();
-            };
-            m_undo->push(new ValueCommand<BSplineModel>(apply, before, m_model, tr("Play u"), -1, {false, true}));
-            emit documentChanged();
+        // The whole play is one undo step, from the model's u to where it paused. Until then the
+        // document kept its u: an undo, a save or a tab switch during Play meets no hidden change.
+        const std::optional<Rational> played = std::exchange(m_playU, std::nullopt);
+        if (played && *played != m_model.u) {
+            BSplineModel after = m_model;
+            after.u = *played;
+            changeModel(after, tr("Play u"));
+        } else {
+            recompute();
         }
     }
     if (m_play->isChecked() != on) {
@@ -500,7 +513,7 @@ void BSplineTab::advanceAnimation()
     Rational u = m_scene.u + (hi - lo) * frac(1, kPlaySteps);
     if (u > hi)
         u = lo; // loops
-    m_model.u = u;
+    m_playU = u;
     recompute();
 }
 

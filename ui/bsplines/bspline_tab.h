@@ -15,6 +15,8 @@
 #include "ui/bsplines/bspline_scene.h"
 #include "ui/common/curve_tab.h"
 
+#include <optional>
+
 class QCheckBox;
 class QComboBox;
 class QCustomPlot;
@@ -131,13 +133,13 @@ private:
     QLabel* m_uLabel = nullptr;
     QSlider* m_uSlider = nullptr;
     QToolButton* m_play = nullptr;
-    QToolButton* m_examplesButton = nullptr;
+    QComboBox* m_examplesCombo = nullptr;
     QTimer* m_timer = nullptr;
 
     BSplineModel m_model;
     BSplineScene m_scene;
     std::vector<Point> m_previousPolygon;
-    Rational m_playStartU;
+    std::optional<Rational> m_playU; ///< u while Play runs (the model's u changes only at Pause)
     QString m_lastMessage;
     bool m_syncing = false;
     int m_knotGesture = 0; ///< the merge id of a knot drag: one undo step each
