@@ -119,7 +119,8 @@ int main(int argc, char* argv[])
     parser.setApplicationDescription(say("Splines and soft bodies, for the classroom."));
     const QCommandLineOption helpOption = parser.addHelpOption();
     const QCommandLineOption versionOption = parser.addVersionOption();
-    QCommandLineOption tabOption(QStringLiteral("tab"), say("Open on tab KEY: decasteljau, bernstein, fit, catmull-rom, frog."),
+    QCommandLineOption tabOption(QStringLiteral("tab"),
+                                 say("Open on tab KEY: decasteljau, bernstein, fit, catmull-rom, frog, bspline."),
                                  QStringLiteral("KEY"));
     QCommandLineOption langOption(QStringLiteral("lang"), say("Interface language: ca or en."), QStringLiteral("LANG"));
     QCommandLineOption exampleOption(QStringLiteral("example"), say("Load worked example ID (2.1 … 2.13)."),
@@ -287,7 +288,8 @@ int main(int argc, char* argv[])
     if (parser.isSet(exampleOption) && !window.loadExample(parser.value(exampleOption)))
         return fail(say("unknown example “%1” (2.1 … 2.13)").arg(parser.value(exampleOption)));
     if (parser.isSet(tabOption) && !window.showTab(parser.value(tabOption)))
-        return fail(say("unknown tab “%1” (decasteljau, bernstein, fit, catmull-rom, frog)").arg(parser.value(tabOption)));
+        return fail(
+            say("unknown tab “%1” (decasteljau, bernstein, fit, catmull-rom, frog, bspline)").arg(parser.value(tabOption)));
 
     QSize size = screenshot ? QSize(1280, 800) : window.size();
     if (figure) {

@@ -436,7 +436,7 @@ private slots:
                  qPrintable(QStringLiteral("%1 of %2 squares seen").arg(seen).arg(halfPoints.size() - 2)));
     }
 
-    // Item 17: the status bar's hint is the shown tab's: switching tabs (Ctrl+1…Ctrl+5, as a
+    // Item 17: the status bar's hint is the shown tab's: switching tabs (Ctrl+1…Ctrl+6, as a
     // keyboard does) replaces the last tab's hint and clears its passing messages, every tab
     // has one, and a live language switch translates it.
     void theHintIsTheShownTabs()

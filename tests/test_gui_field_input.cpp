@@ -201,7 +201,7 @@ private slots:
     void wheelScrollsThePanelNotTheField_data()
     {
         QTest::addColumn<QString>("tab");
-        for (const char* key : {"decasteljau", "bernstein", "fit", "catmull-rom", "frog"})
+        for (const char* key : {"decasteljau", "bernstein", "fit", "catmull-rom", "frog", "bspline"})
             QTest::newRow(key) << QString::fromLatin1(key);
     }
     void wheelScrollsThePanelNotTheField()

@@ -8,6 +8,7 @@
 #include "core/softbody/simulation.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/focus_frame.h"
+#include "ui/bsplines/knot_ruler.h"
 #include "ui/frog/frog_canvas.h"
 #include "ui/frog/frog_tab.h"
 #include "ui/shell/blank_screen.h"
@@ -119,7 +120,9 @@ private slots:
                 QTRY_VERIFY_WITH_TIMEOUT(
                     window.focusWidget() && (w == window.focusWidget() || w->isAncestorOf(window.focusWidget())), kEventWaitMs);
                 w = window.focusWidget(); // a tab widget's is its tab bar
-                const bool canvas = qobject_cast<CurveCanvas*>(w) || qobject_cast<FrogCanvas*>(w);
+                // The knot ruler is drawn like a canvas and draws its own ring too.
+                const bool canvas = qobject_cast<CurveCanvas*>(w) || qobject_cast<FrogCanvas*>(w) ||
+                                    qobject_cast<granota::ui::KnotRuler*>(w);
                 const QString name = page->key() + QStringLiteral(": ") + QString::fromLatin1(w->metaObject()->className()) +
                                      QLatin1Char(' ') + w->objectName();
                 if (canvas) {
@@ -288,7 +291,7 @@ private slots:
     void theHintFollowsTheKeyboard()
     {
         MainWindow window;
-        for (const char* key : {"decasteljau", "fit", "catmull-rom", "frog"}) {
+        for (const char* key : {"decasteljau", "fit", "catmull-rom", "frog", "bspline"}) {
             QVERIFY(showOnTab(window, QString::fromLatin1(key)));
             granota::ui::TabPage* page = window.currentTab();
             QVERIFY(!page->keyboardHint().isEmpty());

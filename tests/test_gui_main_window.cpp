@@ -58,7 +58,7 @@ using granota::ui::TabPage;
 namespace {
 
 const QStringList kTabs = {QStringLiteral("decasteljau"), QStringLiteral("bernstein"), QStringLiteral("fit"),
-                           QStringLiteral("catmull-rom"), QStringLiteral("frog")};
+                           QStringLiteral("catmull-rom"), QStringLiteral("frog"),      QStringLiteral("bspline")};
 
 /// Every user-visible text of the window, keyed by where it is: widget texts, titles,
 /// tooltips, placeholders, combo items, table headers, tab titles, menu and action texts.

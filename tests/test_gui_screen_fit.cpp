@@ -104,7 +104,7 @@ private slots:
     void frameFitsAfterPresentation_data()
     {
         QTest::addColumn<QString>("tab");
-        for (const char* tab : {"decasteljau", "bernstein", "fit", "catmull-rom", "frog"})
+        for (const char* tab : {"decasteljau", "bernstein", "fit", "catmull-rom", "frog", "bspline"})
             QTest::newRow(tab) << QString::fromLatin1(tab);
     }
 

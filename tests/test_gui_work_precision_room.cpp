@@ -52,7 +52,7 @@ private slots:
         QTest::addColumn<bool>("plots"); // the Frog's plots over time under its canvas
         for (const char* language : {"en", "ca"})
             for (const QSize size : {QSize(800, 570), QSize(1024, 738)})
-                for (const char* tab : {"decasteljau", "fit", "catmull-rom", "frog"}) // Bernstein: a plot, no canvas
+                for (const char* tab : {"decasteljau", "fit", "catmull-rom", "frog", "bspline"}) // Bernstein: a plot, no canvas
                     QTest::addRow("%s %dx%d %s", language, size.width(), size.height(), tab) << language << size << tab << false;
         QTest::addRow("en 800x570 frog with plots") << "en" << QSize(800, 570) << "frog" << true;
     }

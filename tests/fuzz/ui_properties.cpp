@@ -2,6 +2,7 @@
 
 #include "core/io/point_list.h"
 #include "ui/bernstein/bernstein_tab.h"
+#include "ui/bsplines/bspline_tab.h"
 #include "ui/catmull_rom/catmull_rom_tab.h"
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/shell/document.h"
@@ -80,15 +81,19 @@ std::string firstNonFinite(const QJsonValue& v, const std::string& path)
     return {};
 }
 
-/// The five tabs, built as MainWindow builds them (the Bernstein tab follows the
+/// The six tabs, built as MainWindow builds them (the Bernstein tab follows the
 /// De Casteljau tab's points), owned by a widget that is never shown.
 class Tabs {
 public:
     Tabs() : m_owner(std::make_unique<QWidget>())
     {
         auto* deCasteljau = new ui::DeCasteljauTab(m_owner.get());
-        pages = {deCasteljau, new ui::BernsteinTab(deCasteljau->curveModel(), m_owner.get()), new ui::FitTab(m_owner.get()),
-                 new ui::CatmullRomTab(m_owner.get()), new ui::FrogTab(m_owner.get())};
+        pages = {deCasteljau,
+                 new ui::BernsteinTab(deCasteljau->curveModel(), m_owner.get()),
+                 new ui::FitTab(m_owner.get()),
+                 new ui::CatmullRomTab(m_owner.get()),
+                 new ui::FrogTab(m_owner.get()),
+                 new ui::BSplineTab(m_owner.get())};
     }
     QVector<TabPage*> pages;
 

@@ -39,7 +39,7 @@ public:
     {
     }
 
-    /// The key (docs/classroom.md) (`--tab`): decasteljau, bernstein, fit, catmull-rom, frog.
+    /// The key (docs/classroom.md) (`--tab`): decasteljau, bernstein, fit, catmull-rom, frog, bspline.
     QString key() const { return m_key; }
     /// The tab's title, translated (in the context of the tab's class, e.g. granota::ui::FitTab).
     QString title() const { return metaObject()->tr(m_title, nullptr); }

@@ -3,7 +3,7 @@
 /// The .granota document (docs/file-formats.md): one JSON object with every tab's points and settings.
 ///
 ///     { "format": "granota", "version": 1, "current": "fit",
-///       "tabs": { "decasteljau": {…}, "bernstein": {…}, "fit": {…}, "catmull-rom": {…}, "frog": {…} } }
+///       "tabs": { "decasteljau": {…}, "bernstein": {…}, "fit": {…}, "catmull-rom": {…}, "frog": {…}, "bspline": {…} } }
 ///
 /// An autosave is a document with one more member, naming the document it belongs to
 /// ("" for an Untitled window):   "autosave": { "file": "/home/anna/lesson.granota" }

@@ -4,6 +4,7 @@
 #include "ui/bernstein/bernstein_tab.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/curve_tab.h"
+#include "ui/bsplines/bspline_tab.h"
 #include "ui/catmull_rom/catmull_rom_tab.h"
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/files/exporter.h"
@@ -67,6 +68,8 @@ std::vector<std::string> reportsOf(const QString& key)
         return {"least-squares"};
     if (key == QLatin1String("catmull-rom"))
         return {"catmull-rom-sampling"};
+    if (key == QLatin1String("bspline")) // its pieces are Bézier curves (the extraction); a de Boor report is issue 36's bench
+        return {"curve-sampling", "bezier-evaluation"};
     return {"integrators", "energy-drift", "soft-body"};
 }
 
@@ -89,8 +92,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent), m_tabs(new QTabWi
     FieldInputFilter::install(); // the wheel scrolls the panels; Ctrl+Z in a field is the document's
     m_normalFont = QApplication::font();
     auto* deCasteljau = new DeCasteljauTab(this);
-    m_pages = {deCasteljau, new BernsteinTab(deCasteljau->curveModel(), this), new FitTab(this), new CatmullRomTab(this),
-               new FrogTab(this)};
+    m_pages = {deCasteljau,       new BernsteinTab(deCasteljau->curveModel(), this),
+               new FitTab(this),  new CatmullRomTab(this),
+               new FrogTab(this), new BSplineTab(this)};
     m_undoGroup = new QUndoGroup(this);
     for (TabPage* page : m_pages) {
         // Below every tab, its work-precision section (docs/work-precision.md), collapsed until View ▸ Error

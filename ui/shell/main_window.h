@@ -38,7 +38,7 @@ public:
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    /// Tab keys (docs/classroom.md): decasteljau, bernstein, fit, catmull-rom, frog.
+    /// Tab keys (docs/classroom.md): decasteljau, bernstein, fit, catmull-rom, frog, bspline.
     bool showTab(const QString& key);
     TabPage* tab(const QString& key) const;
     TabPage* currentTab() const;

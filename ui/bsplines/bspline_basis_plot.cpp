@@ -1,0 +1,152 @@
+#include "ui/bsplines/bspline_basis_plot.h"
+
+#include "core/curves/bsplines/bspline_basis.h"
+#include "ui/common/canvas_style.h"
+#include "ui/common/number_text.h"
+#include "ui/common/plot_tick_room.h"
+#include "ui/common/plot_title_room.h"
+
+#include <QCoreApplication>
+#include <QLabel>
+#include <qcustomplot.h>
+
+#include <algorithm>
+
+namespace granota::ui {
+
+namespace {
+constexpr int kMinPlotArea = 70;        ///< pixels between the axes, at least
+constexpr int kPlotSamplesPerSpan = 24; ///< samples of each non-empty knot span
+constexpr int kLegendUpTo = 7;          ///< N_i in the legend up to this many functions (two rows with Σ)
+constexpr int kLegendColumns = 4;       ///< a row fits the plot at 800 × 600
+constexpr int kLegendMinHeight = 170;   ///< a lower plot (800 × 600) has no room for the legend's rows: none
+} // namespace
+
+BasisSamples sampleBasis(const BSplineCurve<double>& curve, int samplesPerSpan)
+{
+    BasisSamples out;
+    const int p = curve.degree, n = curve.pointCount() - 1;
+    const auto& k = curve.knots;
+    out.functions.resize(static_cast<std::size_t>(n + 1));
+    for (auto& f : out.functions)
+        f.first = -1;
+    const auto record = [&](int i, double value) {
+        BasisSamples::Support& f = out.functions[static_cast<std::size_t>(i)];
+        if (f.first < 0)
+            f.first = static_cast<int>(out.u.size()) - 1;
+        f.values.push_back(value);
+        out.sum.back() += value;
+    };
+    const int last = static_cast<int>(k.size()) - 1;
+    for (int span = 0; span < last; ++span) {
+        const double a = k[static_cast<std::size_t>(span)], b = k[static_cast<std::size_t>(span + 1)];
+        if (!(a < b))
+            continue;
+        for (int j = 0; j < samplesPerSpan; ++j) {
+            const double u = a + (b - a) * j / samplesPerSpan;
+            out.u.push_back(u);
+            out.sum.push_back(0.0);
+            // Only N_{span−p..span} can be non-zero on the span (their supports [u_i, u_{i+p+1}));
+            // N_{span−p−1} ends here at 0, its line's last sample.
+            if (j == 0 && span - p - 1 >= 0 && span - p - 1 <= n)
+                record(span - p - 1, 0.0);
+            for (int i = std::max(0, span - p); i <= std::min(n, span); ++i)
+                record(i, basisFunction(k, i, p, u));
+        }
+    }
+    // The last knot, where the domain ends (closed there, bspline_basis.h).
+    out.u.push_back(k.back());
+    out.sum.push_back(0.0);
+    for (int i = std::max(0, n - p); i <= n; ++i)
+        if (out.functions[static_cast<std::size_t>(i)].first >= 0)
+            record(i, basisFunction(k, i, p, k.back()));
+    return out;
+}
+
+void setUpBSplineBasisPlot(QCustomPlot* plot)
+{
+    keepTickLabelsInside(plot);
+    plot->legend->setVisible(true);
+    plot->legend->setBrush(QColor(255, 255, 255, 190));
+    plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    plot->legend->setWrap(kLegendColumns); // rows over the plot's top, above the functions (≤ 1)
+    plot->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignTop | Qt::AlignRight);
+}
+
+void setBSplineBasisPlotTexts(QLabel* title, QCustomPlot* plot)
+{
+    title->setText(QCoreApplication::translate("granota::ui::BSplineTab", "Basis functions Nᵢ,ₚ(u) (Cox–de Boor)"));
+    title->setToolTip(QCoreApplication::translate(
+        "granota::ui::BSplineTab", "c(u) = Σ N_{i,p}(u) P_i: the weight of each control point along the curve. N_{i,p} is "
+                                   "zero outside [u_i, u_{i+p+1}) (local support), the functions add up to 1 on the "
+                                   "domain (the dashed line), and at a knot of multiplicity m they are C^{p−m}."));
+    plot->setToolTip(QCoreApplication::translate("granota::ui::BSplineTab",
+                                                 "Each N_{i,p} in the colour of P_i's ring; the shaded band is the domain "
+                                                 "[u_p, u_{n+1}], the vertical line is u."));
+}
+
+void updateBSplineBasisPlot(QCustomPlot* plot, const QFont& font, const BSplineScene& scene, double scale)
+{
+    plot->clearGraphs();
+    plot->clearItems();
+    QFont small = font;
+    small.setPointSizeF(font.pointSizeF() * 0.85);
+    plot->legend->setFont(small);
+    plot->xAxis->setTickLabelFont(font);
+    plot->yAxis->setTickLabelFont(font);
+    plot->xAxis->setLabelFont(font);
+    plot->yAxis->setLabelFont(font);
+    plot->xAxis->setLabel(QStringLiteral("u"));
+    plot->yAxis->setLabel(QStringLiteral("Nᵢ,ₚ(u)"));
+    if (!scene.valid()) {
+        plot->replot(QCustomPlot::rpQueuedReplot);
+        return;
+    }
+    const BasisSamples b = sampleBasis(scene.curve, kPlotSamplesPerSpan);
+    const int count = static_cast<int>(b.functions.size());
+    const bool legend = count <= kLegendUpTo && plot->height() >= kLegendMinHeight;
+    plot->legend->setVisible(legend);
+    for (int i = 0; i < count; ++i) {
+        const BasisSamples::Support& f = b.functions[static_cast<std::size_t>(i)];
+        QVector<double> u, y(f.values.begin(), f.values.end());
+        for (std::size_t j = 0; j < f.values.size(); ++j)
+            u.push_back(b.u[static_cast<std::size_t>(f.first) + j]);
+        QCPGraph* g = plot->addGraph();
+        g->setData(u, y, true);
+        g->setPen(QPen(CanvasStyle::series(i), (count > 40 ? 1.0 : 2.0) * scale));
+        g->setName(QStringLiteral("N") + subscriptDigits(i));
+    }
+    // Σ N_{i,p} on the domain only: 1 there (partition of unity), not outside it.
+    const double lo = scene.curve.domainStart(), hi = scene.curve.domainEnd();
+    QVector<double> du, ds;
+    for (std::size_t j = 0; j < b.u.size(); ++j)
+        if (b.u[j] >= lo && b.u[j] <= hi) {
+            du.push_back(b.u[j]);
+            ds.push_back(b.sum[j]);
+        }
+    QCPGraph* total = plot->addGraph();
+    total->setData(du, ds, true);
+    total->setPen(QPen(QColor(0x2b, 0x2b, 0x2b), 1.2 * scale, Qt::DashLine));
+    total->setName(QStringLiteral("Σ"));
+
+    auto* domain = new QCPItemRect(plot);
+    domain->topLeft->setCoords(lo, 1.05);
+    domain->bottomRight->setCoords(hi, -0.05);
+    domain->setPen(Qt::NoPen);
+    domain->setBrush(QColor(0x1f, 0x5f, 0xa8, 22));
+    domain->setLayer(QStringLiteral("grid"));
+    auto* marker = new QCPItemStraightLine(plot);
+    const double at = toDouble(scene.u);
+    marker->point1->setCoords(at, 0);
+    marker->point2->setCoords(at, 1);
+    marker->setPen(QPen(CanvasStyle().curve, 1.5 * scale));
+
+    const int tickLabels = QFontMetrics(plot->xAxis->tickLabelFont()).height();
+    const int title = QFontMetrics(plot->xAxis->labelFont()).height();
+    keepAxisTitlesWhole(plot, kMinPlotArea + tickLabels + title + 30);
+    plot->xAxis->setRange(b.u.front(), std::max(b.u.back(), b.u.front() + 1e-9));
+    plot->yAxis->setRange(-0.05, legend ? 1.7 : 1.1); // room for the legend's row
+    plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+} // namespace granota::ui
