@@ -46,10 +46,23 @@ recorded_ms=${overhead% *}
 plain_ms=${overhead#* }
 frogs_plots_ms=$(bench 'BM_GuiFrog200Plots$' ms)
 scrub_ms=$(bench 'BM_ScrubBack10000$' ms)
+# B-splines (bench_bsplines.cpp): a cubic with 10⁴ control points at 10⁶ parameters, Granota
+# and Eigen's Splines module in the same binary, scipy's BSpline on the same data in the same
+# run (peer/scipy_bspline.py, median of 3; "nan" when no python3 has scipy); exact de Boor at degree 10.
+bspline_ms=$(bench 'BM_BSplineEvaluateGranota$' ms)
+eigen_ms=$(bench 'BM_BSplineEvaluateEigen$' ms)
+scipy_ms=nan
+for py in python3 /usr/bin/python3; do
+  if "$py" -c 'import scipy' 2>/dev/null; then
+    scipy_ms=$("$py" tests/benchmarks/peer/scipy_bspline.py | python3 -c 'import json,sys; print(json.load(sys.stdin)["median_ms"])')
+    break
+  fi
+done
+exact10_ms=$(bench 'BM_DeBoorExact/10$' ms)
 
-python3 - "$java_ns" "$seed_ns" "$stable_us" "$pile_ms" "$spread_ms" "$outline_us" "$fit_ms" "$drag_ms" "$frogs_ms" "$length3_us" "$length10_us" "$features_us" "$closest_us" "$overlays_ms" "$plain_ms" "$recorded_ms" "$frogs_plots_ms" "$scrub_ms" <<'PY'
-import sys, platform, subprocess
-java, seed, stable, pile, spread, outline, fit, drag, frogs, length3, length10, features, closest, overlays, plain, recorded, frogs_plots, scrub = map(float, sys.argv[1:])
+python3 - "$java_ns" "$seed_ns" "$stable_us" "$pile_ms" "$spread_ms" "$outline_us" "$fit_ms" "$drag_ms" "$frogs_ms" "$length3_us" "$length10_us" "$features_us" "$closest_us" "$overlays_ms" "$plain_ms" "$recorded_ms" "$frogs_plots_ms" "$scrub_ms" "$bspline_ms" "$eigen_ms" "$scipy_ms" "$exact10_ms" <<'PY'
+import math, sys, platform, subprocess
+java, seed, stable, pile, spread, outline, fit, drag, frogs, length3, length10, features, closest, overlays, plain, recorded, frogs_plots, scrub, bspline, eigen, scipy, exact10 = map(float, sys.argv[1:])
 cpu = next((l.split(':',1)[1].strip() for l in open('/proc/cpuinfo') if l.startswith('model name')), '?')
 print(f"Machine: {cpu}, {subprocess.check_output(['nproc']).decode().strip()} cores; release build.\n")
 print("| target | measured | goal | met |")
@@ -70,8 +83,11 @@ rows = [
   ("recording and the series on 1000 bodies, `stable` (900 steps, in turns with the plain step)", f"{recorded:.0f} ms vs {plain:.0f} ms: **{100*(recorded/plain-1):+.1f} %**", "≤ +5 %", recorded <= 1.05 * plain),
   ("200 frogs with the plots over time open: step + paint + plot", f"{frogs_plots:.1f} ms", "< 16.7 ms (60 fps)", frogs_plots < 16.7),
   ("a scrub 10 000 steps back (the stable frog)", f"{scrub:.1f} ms", "< 100 ms", scrub < 100),
+  ("cubic B-spline, 10⁴ control points, at 10⁶ parameters: Granota vs Eigen's Splines (same binary)", f"{bspline:.0f} ms vs {eigen:.0f} ms: Granota / Eigen **{bspline/eigen:.2f}**", "< 1", bspline < eigen),
+  ("the same against scipy's `BSpline.__call__` (same run)", f"{bspline:.0f} ms vs {scipy:.0f} ms: Granota / scipy **{bspline/scipy:.2f}**" if not math.isnan(scipy) else "scipy not installed", "< 1", bspline < scipy if not math.isnan(scipy) else None),
+  ("exact de Boor (rationals), degree 10: every level of the net", f"{exact10:.3f} ms", "< 5 ms", exact10 < 5),
   ("one `stable` frog step", f"{stable:.1f} µs", "—", True),
 ]
 for name, got, goal, ok in rows:
-    print(f"| {name} | {got} | {goal} | {'yes' if ok else 'no'} |")
+    print(f"| {name} | {got} | {goal} | {'—' if ok is None else 'yes' if ok else 'no'} |")
 PY
