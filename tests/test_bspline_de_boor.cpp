@@ -79,8 +79,7 @@ private slots:
                  rationals({{0, 1}, {0, 1}, {0, 1}, {1, 3}, {2, 3}, {1, 1}, {1, 1}, {1, 1}}));
         QCOMPARE(presetKnots<Rational>(KnotPreset::Uniform, 4, 2),
                  rationals({{0, 1}, {1, 1}, {2, 1}, {3, 1}, {4, 1}, {5, 1}, {6, 1}}));
-        QCOMPARE(presetKnots<Rational>(KnotPreset::Bezier, 3, 2),
-                 rationals({{0, 1}, {0, 1}, {0, 1}, {1, 1}, {1, 1}, {1, 1}}));
+        QCOMPARE(presetKnots<Rational>(KnotPreset::Bezier, 3, 2), rationals({{0, 1}, {0, 1}, {0, 1}, {1, 1}, {1, 1}, {1, 1}}));
         // Bezier exists only for n = p, and no preset for fewer than p + 1 points.
         QVERIFY(presetKnots<Rational>(KnotPreset::Bezier, 4, 2).empty());
         QVERIFY(presetKnots<Rational>(KnotPreset::Clamped, 2, 2).empty());
@@ -363,18 +362,40 @@ private slots:
         QTest::addColumn<QString>("knots");
         QTest::addColumn<QString>("weights");
         QTest::addColumn<QString>("message");
-        QTest::newRow("degree 0") << 0 << 2 << "0 0 1 1" << "" << "degree of a B-spline must be from 1 to 10, not 0";
-        QTest::newRow("degree 11") << 11 << 12 << "" << "" << "from 1 to 10, not 11";
-        QTest::newRow("too few points") << 3 << 3 << "0 0 0 0 1 1 1" << "" << "needs at least 4 control points, not 3";
-        QTest::newRow("knot count") << 2 << 4 << "0 0 0 1 1 1" << "" << "needs n + p + 2 = 7 knots, not 6";
-        QTest::newRow("decreasing") << 2 << 4 << "0 0 0 2 1 1 1" << "" << "must not decrease: u_3 = 2 > u_4 = 1";
-        QTest::newRow("interior multiplicity") << 2 << 6 << "0 0 0 1/2 1/2 1/2 1 1 1" << ""
-                                               << "the knot 1/2 is repeated 3 times; a B-spline of degree 2 allows at most 2 inside";
-        QTest::newRow("end multiplicity") << 2 << 4 << "0 0 0 0 1 1 1" << "" << "knot 0 is repeated 4 times; a B-spline of degree 2 allows at most 3 at an end";
-        QTest::newRow("empty domain") << 2 << 3 << "0 1 2 2 3 4" << "" << "the domain [u_p, u_{n+1}] = [2, 2] is empty";
-        QTest::newRow("weight count") << 2 << 3 << "0 0 0 1 1 1" << "1 1" << "one weight per control point: 3 weights, not 2";
-        QTest::newRow("weight zero") << 2 << 3 << "0 0 0 1 1 1" << "1 0 1" << "weight w_1 = 0 must be positive";
-        QTest::newRow("weight negative") << 2 << 3 << "0 0 0 1 1 1" << "1 1 -1/2" << "weight w_2 = -1/2 must be positive";
+        QTest::newRow("degree 0") << 0 << 2 << "0 0 1 1"
+                                  << ""
+                                  << "degree of a B-spline must be from 1 to 10, not 0";
+        QTest::newRow("degree 11") << 11 << 12 << ""
+                                   << ""
+                                   << "from 1 to 10, not 11";
+        QTest::newRow("too few points") << 3 << 3 << "0 0 0 0 1 1 1"
+                                        << ""
+                                        << "needs at least 4 control points, not 3";
+        QTest::newRow("knot count") << 2 << 4 << "0 0 0 1 1 1"
+                                    << ""
+                                    << "needs n + p + 2 = 7 knots, not 6";
+        QTest::newRow("decreasing") << 2 << 4 << "0 0 0 2 1 1 1"
+                                    << ""
+                                    << "must not decrease: u_3 = 2 > u_4 = 1";
+        QTest::newRow("interior multiplicity")
+            << 2 << 6 << "0 0 0 1/2 1/2 1/2 1 1 1"
+            << ""
+            << "the knot 1/2 is repeated 3 times; a B-spline of degree 2 allows at most 2 inside";
+        QTest::newRow("end multiplicity") << 2 << 4 << "0 0 0 0 1 1 1"
+                                          << ""
+                                          << "knot 0 is repeated 4 times; a B-spline of degree 2 allows at most 3 at an end";
+        QTest::newRow("empty domain") << 2 << 3 << "0 1 2 2 3 4"
+                                      << ""
+                                      << "the domain [u_p, u_{n+1}] = [2, 2] is empty";
+        QTest::newRow("weight count") << 2 << 3 << "0 0 0 1 1 1"
+                                      << "1 1"
+                                      << "one weight per control point: 3 weights, not 2";
+        QTest::newRow("weight zero") << 2 << 3 << "0 0 0 1 1 1"
+                                     << "1 0 1"
+                                     << "weight w_1 = 0 must be positive";
+        QTest::newRow("weight negative") << 2 << 3 << "0 0 0 1 1 1"
+                                         << "1 1 -1/2"
+                                         << "weight w_2 = -1/2 must be positive";
     }
     void refusals()
     {

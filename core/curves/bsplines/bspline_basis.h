@@ -82,8 +82,7 @@ template <class S> S basisFunction(const std::vector<S>& knots, int i, int degre
 /// ders[k][j] = N^{(k)}_{span−p+j, p}(u), k = 0..order, j = 0..p; derivatives above p are 0
 /// (Piegl & Tiller A2.3).
 template <class S>
-std::vector<std::vector<S>> basisDerivatives(const std::vector<S>& knots, int degree, int span, const S& u,
-                                             int order)
+std::vector<std::vector<S>> basisDerivatives(const std::vector<S>& knots, int degree, int span, const S& u, int order)
 {
     const int p = degree;
     assert(p >= 0 && span >= p && order >= 0 && static_cast<std::size_t>(span + 1) < knots.size());

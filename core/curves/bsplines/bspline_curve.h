@@ -64,23 +64,20 @@ template <class S> Expected<void> checkBSpline(const BSplineCurve<S>& c)
     const int p = c.degree;
     if (p < 1 || p > kMaxBSplineDegree)
         return makeError(ErrorCode::OutOfRange, "the degree of a B-spline must be from 1 to " +
-                                                    std::to_string(kMaxBSplineDegree) + ", not " +
-                                                    std::to_string(p));
+                                                    std::to_string(kMaxBSplineDegree) + ", not " + std::to_string(p));
     const std::size_t count = c.points.size();
     if (count < static_cast<std::size_t>(p) + 1)
-        return makeError(ErrorCode::TooFewPoints, "a B-spline of degree " + std::to_string(p) +
-                                                      " needs at least " + std::to_string(p + 1) +
-                                                      " control points, not " + std::to_string(count));
+        return makeError(ErrorCode::TooFewPoints, "a B-spline of degree " + std::to_string(p) + " needs at least " +
+                                                      std::to_string(p + 1) + " control points, not " + std::to_string(count));
     const std::size_t knotCount = count + static_cast<std::size_t>(p) + 1; // n + p + 2
     if (c.knots.size() != knotCount)
-        return makeError(ErrorCode::InvalidInput,
-                         "a B-spline of degree " + std::to_string(p) + " with " + std::to_string(count) +
-                             " control points needs n + p + 2 = " + std::to_string(knotCount) +
-                             " knots, not " + std::to_string(c.knots.size()));
+        return makeError(ErrorCode::InvalidInput, "a B-spline of degree " + std::to_string(p) + " with " + std::to_string(count) +
+                                                      " control points needs n + p + 2 = " + std::to_string(knotCount) +
+                                                      " knots, not " + std::to_string(c.knots.size()));
     if (!c.weights.empty() && c.weights.size() != count)
-        return makeError(ErrorCode::InvalidInput, "a rational B-spline needs one weight per control point: " +
-                                                      std::to_string(count) + " weights, not " +
-                                                      std::to_string(c.weights.size()));
+        return makeError(ErrorCode::InvalidInput,
+                         "a rational B-spline needs one weight per control point: " + std::to_string(count) + " weights, not " +
+                             std::to_string(c.weights.size()));
     for (std::size_t i = 0; i < count; ++i)
         if (!detail::finiteScalar(c.points[i].x) || !detail::finiteScalar(c.points[i].y))
             return makeError(ErrorCode::InvalidInput, "control point P_" + std::to_string(i) + " is not finite");
@@ -92,10 +89,9 @@ template <class S> Expected<void> checkBSpline(const BSplineCurve<S>& c)
             return makeError(ErrorCode::InvalidInput, "knot u_" + std::to_string(i) + " is not finite");
     for (std::size_t i = 0; i + 1 < knotCount; ++i)
         if (c.knots[i + 1] < c.knots[i])
-            return makeError(ErrorCode::NotIncreasing,
-                             "the knots must not decrease: u_" + std::to_string(i) + " = " +
-                                 bsplineNumberText(c.knots[i]) + " > u_" + std::to_string(i + 1) + " = " +
-                                 bsplineNumberText(c.knots[i + 1]));
+            return makeError(ErrorCode::NotIncreasing, "the knots must not decrease: u_" + std::to_string(i) + " = " +
+                                                           bsplineNumberText(c.knots[i]) + " > u_" + std::to_string(i + 1) +
+                                                           " = " + bsplineNumberText(c.knots[i + 1]));
     // Multiplicity: p inside keeps the curve continuous (C^{p−m} at a knot of multiplicity m);
     // p + 1 at an end clamps the curve to its end point.
     for (std::size_t i = 0; i < knotCount;) {
@@ -106,20 +102,19 @@ template <class S> Expected<void> checkBSpline(const BSplineCurve<S>& c)
         const bool end = i == 0 || j == knotCount;
         const std::size_t allowed = end ? static_cast<std::size_t>(p) + 1 : static_cast<std::size_t>(p);
         if (m > allowed)
-            return makeError(ErrorCode::InvalidInput,
-                             "the knot " + bsplineNumberText(c.knots[i]) + " is repeated " + std::to_string(m) +
-                                 " times; a B-spline of degree " + std::to_string(p) + " allows at most " +
-                                 std::to_string(allowed) + (end ? " at an end" : " inside"));
+            return makeError(ErrorCode::InvalidInput, "the knot " + bsplineNumberText(c.knots[i]) + " is repeated " +
+                                                          std::to_string(m) + " times; a B-spline of degree " +
+                                                          std::to_string(p) + " allows at most " + std::to_string(allowed) +
+                                                          (end ? " at an end" : " inside"));
         i = j;
     }
     if (!(c.domainStart() < c.domainEnd()))
-        return makeError(ErrorCode::InvalidInput, "the domain [u_p, u_{n+1}] = [" +
-                                                      bsplineNumberText(c.domainStart()) + ", " +
+        return makeError(ErrorCode::InvalidInput, "the domain [u_p, u_{n+1}] = [" + bsplineNumberText(c.domainStart()) + ", " +
                                                       bsplineNumberText(c.domainEnd()) + "] is empty");
     for (std::size_t i = 0; i < c.weights.size(); ++i)
         if (!(c.weights[i] > S(0)))
-            return makeError(ErrorCode::OutOfRange, "weight w_" + std::to_string(i) + " = " +
-                                                        bsplineNumberText(c.weights[i]) + " must be positive");
+            return makeError(ErrorCode::OutOfRange,
+                             "weight w_" + std::to_string(i) + " = " + bsplineNumberText(c.weights[i]) + " must be positive");
     return {};
 }
 
