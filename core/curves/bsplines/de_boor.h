@@ -16,6 +16,7 @@
 #include <array>
 #include <cassert>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace granota {
@@ -90,6 +91,26 @@ template <class S> Vec2<S> bsplinePoint(const BSplineCurve<S>& c, const S& u)
     assert(p >= 0 && p <= kMaxBSplineDegree);
     const int k = findSpan(c.knots, p, c.pointCount(), u);
     const S* knots = c.knots.data();
+    if constexpr (std::is_floating_point_v<S>) {
+        if (!c.rational()) {
+            // Plain arrays, left uninitialised: the doubles' path does no work it need not.
+            S x[kMaxBSplineDegree + 1], y[kMaxBSplineDegree + 1];
+            const Vec2<S>* P = c.points.data() + (k - p);
+            for (int i = 0; i <= p; ++i) {
+                x[i] = P[i].x;
+                y[i] = P[i].y;
+            }
+            for (int r = 1; r <= p; ++r)
+                for (int i = 0; i <= p - r; ++i) {
+                    const int j = k - p + r + i;
+                    const S alpha = (u - knots[j]) / (knots[j + p + 1 - r] - knots[j]);
+                    const S beta = S(1) - alpha;
+                    x[i] = beta * x[i] + alpha * x[i + 1];
+                    y[i] = beta * y[i] + alpha * y[i + 1];
+                }
+            return Vec2<S>(x[0], y[0]);
+        }
+    }
     std::array<Vec2<S>, kMaxBSplineDegree + 1> h;
     std::array<S, kMaxBSplineDegree + 1> w;
     const bool rational = c.rational();
