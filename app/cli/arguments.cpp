@@ -3,6 +3,7 @@
 #include "core/base/bounded_file.h"
 #include "core/base/display_text.h"
 #include "core/base/input_limits.h"
+#include "core/base/text.h"
 #include "core/io/point_list.h"
 
 namespace granota::cli {
@@ -86,6 +87,29 @@ Expected<Rational> Arguments::rational(const std::string& name, std::optional<Ra
                          "--" + name + " " + quotedForDisplay(*v) + " " +
                              numberBeyondReach(*v).value_or("is not a finite number (integer, decimal or fraction p/q)"));
     return *q;
+}
+
+Expected<std::vector<Rational>> Arguments::rationalList(const std::string& name) const
+{
+    std::vector<Rational> out;
+    auto v = value(name);
+    if (!v)
+        return out;
+    std::size_t start = 0;
+    for (;;) {
+        const std::size_t comma = v->find(',', start);
+        const std::string entry(
+            trim(std::string_view(*v).substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
+        auto q = parseRational(entry);
+        if (!q)
+            return makeError(ErrorCode::InvalidInput,
+                             "--" + name + ": entry " + std::to_string(out.size() + 1) + " " + quotedForDisplay(entry) + " " +
+                                 numberBeyondReach(entry).value_or("is not a finite number (integer, decimal or fraction p/q)"));
+        out.push_back(*q);
+        if (comma == std::string::npos)
+            return out;
+        start = comma + 1;
+    }
 }
 
 Expected<int> Arguments::integer(const std::string& name, int min, int max, std::optional<int> fallback) const

@@ -35,6 +35,9 @@ public:
 
     /// A rational option (integers, decimals, fractions), or `fallback` when absent.
     Expected<Rational> rational(const std::string& name, std::optional<Rational> fallback) const;
+    /// A comma-separated list of rationals ("1,1/2,0.25"), as many as written; an error names
+    /// the first entry that is not a number. Empty when the option is absent.
+    Expected<std::vector<Rational>> rationalList(const std::string& name) const;
     /// An integer option within [min, max], or `fallback` when absent.
     Expected<int> integer(const std::string& name, int min, int max, std::optional<int> fallback) const;
     /// One of `choices`, or `fallback` when absent.

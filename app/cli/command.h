@@ -40,6 +40,7 @@ Command reportCommand();
 Command projectCommand();
 Command analyzeCommand();
 Command splineCommand();
+Command bsplineCommand();
 
 /// Number output: exact "p/q" strings with --exact, doubles otherwise (docs/cli.md).
 Json number(const Rational& q, bool exact);

@@ -29,6 +29,13 @@ double deCasteljauExactWork(int degree, long pointBits, long tBits)
     return 2 * 2 * (entries * bp + weighted * bt);
 }
 
+double rationalDeCasteljauExactWork(int degree, long pointBits, long weightBits, long tBits)
+{
+    // Three coordinates instead of two (× 3/2), and the projected points P_i^r = p_i^r / w_i^r
+    // have numerators and denominators of the homogeneous bits each (× 2).
+    return 3 * deCasteljauExactWork(degree, pointBits + weightBits, tBits);
+}
+
 double bernsteinExactWork(int degree, long tBits)
 {
     // Lemma 2.1: B_i^r = (1 − t)·B_i^{r−1} + t·B_{i−1}^{r−1}, the same triangle as De

@@ -8,7 +8,10 @@
 ///
 /// - De Casteljau (Def 2.4) of degree n at t: level r holds n − r + 1 points whose
 ///   coordinates have about b_P + r·b_t bits (each level multiplies by t and 1 − t once),
-///   so Σ_r 2(n − r + 1)(b_P + r·b_t) ≈ n²·b_P + n³·b_t/3.
+///   so Σ_r 2(n − r + 1)(b_P + r·b_t) ≈ n²·b_P + n³·b_t/3. With weights (a rational
+///   Bézier curve), the same triangle on three homogeneous coordinates of b_P + b_w bits, and
+///   the division of each level by its weights, which doubles the bits written: about three
+///   times the work.
 /// - The Bernstein values B_i^n(t) by Lemma 2.1: the same triangle, one coordinate, b_P = 0.
 /// - The exact least-squares fit (Lemma 2.2, Nota 2.2) of m points at degree n: the t_i
 ///   written over one denominator L; an entry of M has about E_M = n·(b_L + 1) bits, one
@@ -52,6 +55,10 @@ long maxBitLength(const std::vector<RPoint>& points);
 
 /// De Casteljau's triangle of degree n at t, exactly, points of up to pointBits bits.
 double deCasteljauExactWork(int degree, long pointBits, long tBits);
+/// De Casteljau with weights (rational_bezier.h) of degree n at t: the homogeneous points
+/// (w_i x_i, w_i y_i, w_i) of up to pointBits + weightBits bits run through the triangle of
+/// Def 2.4 (three coordinates instead of two), and each level is divided by its weights.
+double rationalDeCasteljauExactWork(int degree, long pointBits, long weightBits, long tBits);
 /// Every B_i^n(t) by Lemma 2.1, exactly.
 double bernsteinExactWork(int degree, long tBits);
 /// The exact fit of Lemma 2.2 at degree n with these parameters t_i and points of up to
