@@ -39,14 +39,14 @@ import json, sys
 for i, c in enumerate(json.load(open(sys.argv[1]))["cases"]):
     pts = ";".join(f"{x!r},{y!r}" for x, y in c["points"])
     knots = ",".join(repr(k) for k in c["knots"])
-    weights = ",".join(repr(w) for w in c.get("weights", []))
+    weights = ",".join(repr(w) for w in c.get("weights", [])) or "-"  # no empty field: read would merge the tabs
     for j, u in enumerate(c["u"]):
         print("\t".join([str(i), str(j), str(c["degree"]), pts, knots, weights, repr(u)]))
 PY
 : >"$tmp/granota.tsv"
 while IFS=$'\t' read -r ci uj degree pts knots weights u; do
     args=(bspline --points "$pts" --degree "$degree" --knots "$knots" --u "$u" --json)
-    [ -z "$weights" ] || args+=(--weights "$weights")
+    [ "$weights" = - ] || args+=(--weights "$weights")
     printf '%s\t%s\t%s\n' "$ci" "$uj" "$("$cli" "${args[@]}" | tr -d '\n')" >>"$tmp/granota.tsv"
 done <"$tmp/calls.txt"
 
