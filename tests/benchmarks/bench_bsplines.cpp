@@ -5,6 +5,7 @@
 // scipy's BSpline on the same data is tests/benchmarks/peer/scipy_bspline.py (targets.sh prints
 // the ratios). And exact de Boor (Rational) at degree 10, the net a drag redraws.
 #include "bench_smoke.h"
+#include "core/curves/bsplines/bspline_sampling.h"
 #include "core/curves/bsplines/de_boor.h"
 #include "core/curves/bsplines/knot_vector.h"
 #include "core/exact/rational.h"
@@ -114,18 +115,24 @@ void BM_BSplineEvaluateEigen(benchmark::State& state)
         static_cast<double>(u.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
-/// The two in turns, a block of 10⁴ parameters each, each timed by the steady clock: on a shared
-/// machine the load then falls on both alike, and their ratio (granota_ms / eigen_ms, a pass over
-/// all the parameters each) is what targets.sh reports.
+/// bsplinePoint and Eigen in turns, a block of 10⁴ parameters each, and bsplinePoints
+/// (bspline_sampling.h: the span carried from one parameter to the next) on the same block, each
+/// timed by the steady clock: on a shared machine the load then falls on all three alike, and
+/// their ratios (granota_ms, eigen_ms, sampled_ms: a pass over all the parameters each) are what
+/// targets.sh reports.
 void BM_BSplineEvaluateInTurns(benchmark::State& state)
 {
     using Clock = std::chrono::steady_clock;
     const auto curve = benchCurve();
     const auto spline = eigenSpline(curve);
     const auto u = benchParameters();
-    std::vector<Point> out(u.size());
+    std::vector<Point> out(u.size()), block;
     constexpr std::size_t kBlock = 10000;
-    double granotaSeconds = 0, eigenSeconds = 0;
+    double granotaSeconds = 0, eigenSeconds = 0, sampledSeconds = 0;
+    std::vector<std::vector<double>> blocks;
+    for (std::size_t start = 0; start < u.size(); start += kBlock)
+        blocks.emplace_back(u.begin() + static_cast<std::ptrdiff_t>(start),
+                            u.begin() + static_cast<std::ptrdiff_t>(std::min(start + kBlock, u.size())));
     for (auto _ : state) {
         for (std::size_t start = 0; start < u.size(); start += kBlock) {
             const std::size_t end = std::min(start + kBlock, u.size());
@@ -142,13 +149,19 @@ void BM_BSplineEvaluateInTurns(benchmark::State& state)
             benchmark::DoNotOptimize(out.data());
             benchmark::ClobberMemory();
             const auto t2 = Clock::now();
+            bsplinePoints(curve, blocks[start / kBlock], block);
+            benchmark::DoNotOptimize(block.data());
+            benchmark::ClobberMemory();
+            const auto t3 = Clock::now();
             granotaSeconds += std::chrono::duration<double>(t1 - t0).count();
             eigenSeconds += std::chrono::duration<double>(t2 - t1).count();
+            sampledSeconds += std::chrono::duration<double>(t3 - t2).count();
         }
     }
     const double passes = static_cast<double>(state.iterations());
     state.counters["granota_ms"] = 1e3 * granotaSeconds / passes;
     state.counters["eigen_ms"] = 1e3 * eigenSeconds / passes;
+    state.counters["sampled_ms"] = 1e3 * sampledSeconds / passes;
 }
 
 /// Degree 10, 21 control points with small integer coordinates, clamped knots i/11, u = 37/100:

@@ -85,11 +85,14 @@ template <class S> DeBoorTable<S> deBoor(const BSplineCurve<S>& c, const S& u)
 
 /// c(u) alone: the hot path for sampling, with the p + 1 points on the stack (no allocation
 /// for doubles). Same preconditions as deBoor.
-template <class S> Vec2<S> bsplinePoint(const BSplineCurve<S>& c, const S& u)
+template <class S> Vec2<S> bsplinePoint(const BSplineCurve<S>& c, const S& u);
+
+/// bsplinePoint with u's span k already known (k = findSpan(c.knots, p, n + 1, u)):
+/// bspline_sampling.h finds it by stepping from the last parameter's span.
+template <class S> Vec2<S> bsplinePointInSpan(const BSplineCurve<S>& c, const S& u, int k)
 {
     const int p = c.degree;
     assert(p >= 0 && p <= kMaxBSplineDegree);
-    const int k = findSpan(c.knots, p, c.pointCount(), u);
     const S* knots = c.knots.data();
     if constexpr (std::is_floating_point_v<S>) {
         if (!c.rational()) {
@@ -137,6 +140,11 @@ template <class S> Vec2<S> bsplinePoint(const BSplineCurve<S>& c, const S& u)
     if (rational)
         return Vec2<S>(S(h[0].x / w[0]), S(h[0].y / w[0]));
     return h[0];
+}
+
+template <class S> Vec2<S> bsplinePoint(const BSplineCurve<S>& c, const S& u)
+{
+    return bsplinePointInSpan(c, u, findSpan(c.knots, c.degree, c.pointCount(), u));
 }
 
 } // namespace granota
