@@ -1,7 +1,8 @@
-// bsplinePoints (bspline_sampling.h) carries the span from one parameter to the next instead of
-// a bisection each time: its points must be bsplinePoint's to the bit, whatever the order of the
-// parameters — increasing (a step or two a parameter), jumping ahead more than its few steps,
-// going back, at repeated knots and at both ends of the domain — for doubles and exactly.
+// The hot paths of B-spline evaluation. bsplinePoints (bspline_sampling.h) carries the span from
+// one parameter to the next instead of a bisection each time: its points must be bsplinePoint's
+// to the bit, whatever the order of the parameters — increasing (a step or two a parameter),
+// jumping ahead more than its few steps, going back, at repeated knots and at both ends of the
+// domain — for doubles and exactly. And bsplinePoint's unrolled degrees give deBoor's point.
 #include "core/curves/bsplines/bspline_sampling.h"
 #include "core/exact/rational.h"
 
@@ -92,6 +93,24 @@ private slots:
                         ++curves;
                     }
         QVERIFY(curves >= 60); // most of the 80 drawn
+    }
+
+    // bsplinePoint unrolls degrees 2 and 3 for polynomial doubles (de_boor.h): the same
+    // operations in the same order as deBoor's table, so the same point to the bit, at every
+    // degree (the others take the general loop).
+    void hotPathEqualsDeBoorTable()
+    {
+        std::mt19937 rng(7);
+        for (int p = 1; p <= kMaxBSplineDegree; ++p)
+            for (bool clamped : {true, false})
+                for (bool rational : {false, true}) {
+                    const auto c = randomCurve(rng, p, p + 1 + static_cast<int>(rng() % 20u), clamped, rational);
+                    if (!checkBSpline(c))
+                        continue;
+                    for (double u : parameters(rng, c, true))
+                        QVERIFY2(bsplinePoint(c, u) == deBoor(c, u).point(),
+                                 qPrintable(QStringLiteral("degree %1, u = %2").arg(p).arg(u, 0, 'g', 17)));
+                }
     }
 
     // Exactly: a quadratic with one interior knot, at increasing and then decreasing rational
