@@ -271,8 +271,8 @@ Expected<CommandOutput> run(const Arguments& args)
     if (req.exact) {
         const double work = exactWork(exact, req);
         if (!exactWorkAllowed(work))
-            return makeError(ErrorCode::OutOfRange, exactWorkRefusal("B-spline computation", work,
-                                                                     "the number of points or the digits of the input"));
+            return makeError(ErrorCode::OutOfRange,
+                             exactWorkRefusal("B-spline computation", work, "the number of points or the digits of the input"));
         return compute(std::move(exact), req);
     }
     BSplineCurve<double> c;
