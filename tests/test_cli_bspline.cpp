@@ -10,6 +10,7 @@
 
 #include <QJsonArray>
 #include <QJsonObject>
+#include <QTemporaryDir>
 
 #include <cmath>
 
@@ -30,6 +31,18 @@ QStringList pointStrings(const QJsonValue& v)
     for (const QJsonValue& p : v.toArray())
         out << strings(p).join(',');
     return out;
+}
+
+/// `count` points (i, i mod 7) in a CSV file that lives as long as the test.
+QString manyPoints(int count)
+{
+    static QTemporaryDir dir;
+    const QString path = dir.filePath(QString("points%1.csv").arg(count));
+    QFile f(path);
+    if (!f.exists() && f.open(QIODevice::WriteOnly))
+        for (int i = 0; i < count; ++i)
+            f.write(QByteArray::number(i) + ',' + QByteArray::number(i % 7) + '\n');
+    return path;
 }
 
 } // namespace
@@ -201,6 +214,13 @@ private slots:
                                                                  "2",
                                                                  "--knots",
                                                                  "0,0,0,1,1.00000000000000000001,1.00000000000000000002,2,2"};
+        // Work refused before it is done (input_limits.h, exact-cost.md): the Bézier extraction
+        // of 20 000 cubic points in doubles (n²p² = 3.6e9, 7 s), and of 1500 points of degree 10
+        // exactly (about 15 s).
+        QTest::newRow("to-bezier too large")
+            << QStringList{"bspline", "--points-file", manyPoints(20000), "--degree", "3", "--to-bezier"};
+        QTest::newRow("exact to-bezier too large")
+            << QStringList{"bspline", "--points-file", manyPoints(1500), "--degree", "10", "--to-bezier", "--exact"};
     }
     void badInput()
     {
