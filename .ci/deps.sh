@@ -15,6 +15,9 @@ PKGS=(
   # LaTeX, beamer (latex-recommended) and pgf/TikZ (pictures). About 64 MB to download,
   # 235 MB installed, 75 s on a Debian 12 runner.
   texlive-latex-base texlive-latex-recommended texlive-pictures
+  # test_bspline_peers compares the B-spline evaluation with scipy's BSpline (python3 and numpy
+  # come with it); the test skips where it is missing.
+  python3-scipy
 )
 missing=()
 for p in "${PKGS[@]}"; do

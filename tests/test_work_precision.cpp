@@ -330,6 +330,22 @@ private slots:
         for (const auto& c : reports::arcLengthReportCurves())
             QVERIFY(std::abs(arcLength(c.points, 0, 1, 1e-15) - c.length) <= 1e-14 * c.length);
     }
+
+    // bspline-evaluation: de Boor, the Bézier extraction with De Casteljau and the basis sum are
+    // all convex combinations, so each stays within a few rounding errors of the exact value
+    // (1e-14 of max |P_i|, some fifty ulps) at every degree from 1 to 10; an unstable method —
+    // Horner's in bezier-evaluation loses that by degree 10 — would not.
+    void bsplineEvaluationStaysAtRoundingLevel()
+    {
+        const auto r = quickReport("bspline-evaluation");
+        for (const char* m : {"de Boor", "Bézier extraction + De Casteljau", "basis functions × points"}) {
+            const auto* series = r.find(m);
+            QVERIFY2(series && series->samples.size() == 10, m);
+            for (int p = 1; p <= 10; ++p)
+                QVERIFY2(errorAt(*series, p) <= 1e-14,
+                         qPrintable(QStringLiteral("%1 at degree %2").arg(QString::fromUtf8(m)).arg(p)));
+        }
+    }
 };
 
 GRANOTA_TEST_APPLESS_MAIN(TestWorkPrecision)

@@ -101,7 +101,7 @@ Expected<CommandOutput> run(const Arguments& args)
     if (name.empty())
         return makeError(ErrorCode::InvalidInput, "report needs a NAME (curve-sampling, catmull-rom-sampling, "
                                                   "bezier-evaluation, least-squares, integrators, energy-drift, soft-body, "
-                                                  "arc-length, all)");
+                                                  "arc-length, bspline-evaluation, all)");
     const auto out = args.value("out");
     if (!out || out->empty())
         return makeError(ErrorCode::InvalidInput, "report needs --out DIR");
@@ -172,7 +172,7 @@ Command reportCommand()
 {
     return {"report", "NAME|all --out DIR [--quick] [--json]",
             "error against run time as CSV, SVG and PNG: curve-sampling, catmull-rom-sampling, bezier-evaluation, "
-            "least-squares, integrators, energy-drift (energy against step), soft-body, arc-length",
+            "least-squares, integrators, energy-drift (energy against step), soft-body, arc-length, bspline-evaluation",
             CommandSyntax{{"out"}, {"quick", "json"}, {}, 1}, run};
 }
 

@@ -20,8 +20,8 @@ const char* toString(WorkPrecisionAxis axis) { return axis == WorkPrecisionAxis:
 
 std::vector<std::string> workPrecisionReportNames()
 {
-    return {"curve-sampling", "catmull-rom-sampling", "bezier-evaluation", "least-squares",
-            "integrators",    "energy-drift",         "soft-body",         "arc-length"};
+    return {"curve-sampling", "catmull-rom-sampling", "bezier-evaluation", "least-squares", "integrators", "energy-drift",
+            "soft-body",      "arc-length",           "bspline-evaluation"};
 }
 
 Expected<WorkPrecisionReport> runWorkPrecisionReport(std::string_view name, const WorkPrecisionOptions& options)
@@ -42,6 +42,8 @@ Expected<WorkPrecisionReport> runWorkPrecisionReport(std::string_view name, cons
         return reports::softBody(options);
     if (name == "arc-length")
         return reports::arcLength(options);
+    if (name == "bspline-evaluation")
+        return reports::bsplineEvaluation(options);
     std::string known;
     for (const auto& n : workPrecisionReportNames())
         known += (known.empty() ? "" : ", ") + n;

@@ -70,7 +70,7 @@ struct WorkPrecisionOptions {
 };
 
 /// curve-sampling, catmull-rom-sampling, bezier-evaluation, least-squares, integrators,
-/// energy-drift, soft-body, arc-length.
+/// energy-drift, soft-body, arc-length, bspline-evaluation.
 std::vector<std::string> workPrecisionReportNames();
 
 /// Runs a report. Errors: an unknown name, or "cancelled" when `progress` returned false.

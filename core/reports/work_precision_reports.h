@@ -37,6 +37,7 @@ Expected<WorkPrecisionReport> integrators(const WorkPrecisionOptions& options);
 Expected<WorkPrecisionReport> energyDrift(const WorkPrecisionOptions& options);
 Expected<WorkPrecisionReport> softBody(const WorkPrecisionOptions& options);
 Expected<WorkPrecisionReport> arcLength(const WorkPrecisionOptions& options);
+Expected<WorkPrecisionReport> bsplineEvaluation(const WorkPrecisionOptions& options);
 
 /// The arc-length report's curves with their reference lengths (exact where known).
 struct ArcLengthCurve {

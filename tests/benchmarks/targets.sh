@@ -46,10 +46,38 @@ recorded_ms=${overhead% *}
 plain_ms=${overhead#* }
 frogs_plots_ms=$(bench 'BM_GuiFrog200Plots$' ms)
 scrub_ms=$(bench 'BM_ScrubBack10000$' ms)
+# B-splines (bench_bsplines.cpp): a cubic with 10⁴ control points at 10⁶ parameters, Granota
+# and Eigen's Splines module in the same binary (in turns), scipy's BSpline on the same data in the same
+# run (peer/scipy_bspline.py, median of 3; "nan" when no python3 has scipy): another process, so
+# compared in CPU time, which the load of a shared machine changes far less than real time; exact
+# de Boor at degree 10.
+# bsplinePoint, Eigen and bsplinePoints in turns of 10⁴ parameters in one benchmark, so that the load falls on all three.
+turns=$("$build/bin/granota-bench" --benchmark_filter='BM_BSplineEvaluateInTurns$' --benchmark_repetitions=3 \
+    --benchmark_report_aggregates_only=true --benchmark_format=json 2>/dev/null |
+    python3 -c 'import json,sys; d=json.load(sys.stdin)
+for b in d["benchmarks"]:
+    if b.get("aggregate_name")=="median": print(b["granota_ms"], b["eigen_ms"], b["sampled_ms"]); break')
+read -r bspline_ms eigen_ms sampled_ms <<<"$turns"
+bspline_cpu_ms=$("$build/bin/granota-bench" --benchmark_filter='BM_BSplineEvaluateGranota$' --benchmark_repetitions=3 \
+    --benchmark_report_aggregates_only=true --benchmark_format=json 2>/dev/null |
+    python3 -c 'import json,sys; d=json.load(sys.stdin)
+scale={"ns":1e-6,"us":1e-3,"ms":1,"s":1e3}
+for b in d["benchmarks"]:
+    if b.get("aggregate_name")=="median": print(b["cpu_time"]*scale[b["time_unit"]]); break')
+scipy_ms=nan
+scipy_cpu_ms=nan
+for py in python3 /usr/bin/python3; do
+  if "$py" -c 'import scipy' 2>/dev/null; then
+    read -r scipy_ms scipy_cpu_ms < <("$py" tests/benchmarks/peer/scipy_bspline.py |
+      python3 -c 'import json,sys; d=json.load(sys.stdin); print(d["median_ms"], d["median_cpu_ms"])')
+    break
+  fi
+done
+exact10_ms=$(bench 'BM_DeBoorExact/10$' ms)
 
-python3 - "$java_ns" "$seed_ns" "$stable_us" "$pile_ms" "$spread_ms" "$outline_us" "$fit_ms" "$drag_ms" "$frogs_ms" "$length3_us" "$length10_us" "$features_us" "$closest_us" "$overlays_ms" "$plain_ms" "$recorded_ms" "$frogs_plots_ms" "$scrub_ms" <<'PY'
-import sys, platform, subprocess
-java, seed, stable, pile, spread, outline, fit, drag, frogs, length3, length10, features, closest, overlays, plain, recorded, frogs_plots, scrub = map(float, sys.argv[1:])
+python3 - "$java_ns" "$seed_ns" "$stable_us" "$pile_ms" "$spread_ms" "$outline_us" "$fit_ms" "$drag_ms" "$frogs_ms" "$length3_us" "$length10_us" "$features_us" "$closest_us" "$overlays_ms" "$plain_ms" "$recorded_ms" "$frogs_plots_ms" "$scrub_ms" "$bspline_ms" "$eigen_ms" "$scipy_ms" "$exact10_ms" "$sampled_ms" "$bspline_cpu_ms" "$scipy_cpu_ms" <<'PY'
+import math, sys, platform, subprocess
+java, seed, stable, pile, spread, outline, fit, drag, frogs, length3, length10, features, closest, overlays, plain, recorded, frogs_plots, scrub, bspline, eigen, scipy, exact10, sampled, bspline_cpu, scipy_cpu = map(float, sys.argv[1:])
 cpu = next((l.split(':',1)[1].strip() for l in open('/proc/cpuinfo') if l.startswith('model name')), '?')
 print(f"Machine: {cpu}, {subprocess.check_output(['nproc']).decode().strip()} cores; release build.\n")
 print("| target | measured | goal | met |")
@@ -70,8 +98,12 @@ rows = [
   ("recording and the series on 1000 bodies, `stable` (900 steps, in turns with the plain step)", f"{recorded:.0f} ms vs {plain:.0f} ms: **{100*(recorded/plain-1):+.1f} %**", "≤ +5 %", recorded <= 1.05 * plain),
   ("200 frogs with the plots over time open: step + paint + plot", f"{frogs_plots:.1f} ms", "< 16.7 ms (60 fps)", frogs_plots < 16.7),
   ("a scrub 10 000 steps back (the stable frog)", f"{scrub:.1f} ms", "< 100 ms", scrub < 100),
+  ("cubic B-spline, 10⁴ control points, at 10⁶ parameters: `bsplinePoint` vs Eigen's Splines (same binary, in turns)", f"{bspline:.0f} ms vs {eigen:.0f} ms: Granota / Eigen **{bspline/eigen:.2f}**", "< 1", bspline < eigen),
+  ("the same sampled by `bsplinePoints` (the span carried from one parameter to the next) vs Eigen (in turns)", f"{sampled:.0f} ms vs {eigen:.0f} ms: Granota / Eigen **{sampled/eigen:.2f}**", "< 1", sampled < eigen),
+  ("`bsplinePoint` against scipy's `BSpline.__call__` (same run, CPU time; real time in brackets)", f"{bspline_cpu:.0f} ms vs {scipy_cpu:.0f} ms ({bspline:.0f} vs {scipy:.0f} ms): Granota / scipy **{bspline_cpu/scipy_cpu:.2f}**" if not math.isnan(scipy) else "scipy not installed", "< 1", bspline_cpu < scipy_cpu if not math.isnan(scipy) else None),
+  ("exact de Boor (rationals), degree 10: every level of the net", f"{exact10:.3f} ms", "< 5 ms", exact10 < 5),
   ("one `stable` frog step", f"{stable:.1f} µs", "—", True),
 ]
 for name, got, goal, ok in rows:
-    print(f"| {name} | {got} | {goal} | {'yes' if ok else 'no'} |")
+    print(f"| {name} | {got} | {goal} | {'—' if ok is None else 'yes' if ok else 'no'} |")
 PY

@@ -46,6 +46,7 @@ QString reportTitle(const WorkPrecisionReport& r)
         {"energy-drift", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Energy drift: E/E₀ − 1 over 10⁵ steps of x″ = −x")},
         {"soft-body", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Soft body: constraint error against substeps")},
         {"arc-length", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Arc length: Gauss–Legendre, Simpson, polyline")},
+        {"bspline-evaluation", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Evaluating a B-spline curve of degree p")},
     };
     return translated(titles, r.name, r.title);
 }
@@ -95,6 +96,13 @@ QString reportLesson(const WorkPrecisionReport& r)
                            "24-point Gauss rule is off by 1e-3 on the cusp and, repeated on pieces that do not end "
                            "there, gains only a factor 4 per doubling (the kink, not the rule, sets the pace); Simpson "
                            "gains 16 per halving, the polyline 4.")},
+        {"bspline-evaluation",
+         QT_TRANSLATE_NOOP("granota::ui::WorkPrecision",
+                           "de Boor's algorithm, the Bézier segments with De Casteljau and the basis functions times the "
+                           "points all stay at rounding level at every degree: each is a chain of convex combinations. "
+                           "The Bézier segments, extracted once, are the quickest per point (one ratio t instead of "
+                           "p(p + 1)/2 ratios of knots) but carry the rounding of their extraction, up to a few times "
+                           "de Boor's error; the basis sum is the slowest.")},
     };
     return translated(lessons, r.name, r.lesson);
 }
@@ -123,6 +131,9 @@ QString reportMethod(const std::string& m)
         {"Gauss–Legendre 24 points", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Gauss–Legendre 24 points")},
         {"Simpson", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Simpson")},
         {"polyline", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "polyline")},
+        {"de Boor", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "de Boor")},
+        {"Bézier extraction + De Casteljau", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "Bézier extraction + De Casteljau")},
+        {"basis functions × points", QT_TRANSLATE_NOOP("granota::ui::WorkPrecision", "basis functions × points")},
     };
     return translated(names, m, m);
 }
@@ -161,6 +172,8 @@ QString reportError(const WorkPrecisionReport& r)
     if (r.name == "arc-length")
         return QCoreApplication::translate("granota::ui::WorkPrecision",
                                            "max relative error of L over four curves, one with a cusp");
+    if (r.name == "bspline-evaluation")
+        return QCoreApplication::translate("granota::ui::WorkPrecision", "max |c(u) − exact| / max |Pᵢ|");
     return QString::fromStdString(r.error);
 }
 

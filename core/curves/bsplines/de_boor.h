@@ -85,14 +85,46 @@ template <class S> DeBoorTable<S> deBoor(const BSplineCurve<S>& c, const S& u)
 
 /// c(u) alone: the hot path for sampling, with the p + 1 points on the stack (no allocation
 /// for doubles). Same preconditions as deBoor.
-template <class S> Vec2<S> bsplinePoint(const BSplineCurve<S>& c, const S& u)
+template <class S> Vec2<S> bsplinePoint(const BSplineCurve<S>& c, const S& u);
+
+namespace detail {
+/// The polynomial doubles' de Boor of bsplinePointInSpan with the degree P known when compiling:
+/// the loops unrolled, the same operations in the same order (the same values to the bit).
+template <int P, class S> Vec2<S> polynomialPointOfDegree(const BSplineCurve<S>& c, const S& u, int k)
+{
+    const S* knots = c.knots.data();
+    S x[P + 1], y[P + 1];
+    const Vec2<S>* points = c.points.data() + (k - P);
+    for (int i = 0; i <= P; ++i) {
+        x[i] = points[i].x;
+        y[i] = points[i].y;
+    }
+    for (int r = 1; r <= P; ++r)
+        for (int i = 0; i <= P - r; ++i) {
+            const int j = k - P + r + i;
+            const S alpha = (u - knots[j]) / (knots[j + P + 1 - r] - knots[j]);
+            const S beta = S(1) - alpha;
+            x[i] = beta * x[i] + alpha * x[i + 1];
+            y[i] = beta * y[i] + alpha * y[i + 1];
+        }
+    return Vec2<S>(x[0], y[0]);
+}
+} // namespace detail
+
+/// bsplinePoint with u's span k already known (k = findSpan(c.knots, p, n + 1, u)):
+/// bspline_sampling.h finds it by stepping from the last parameter's span.
+template <class S> Vec2<S> bsplinePointInSpan(const BSplineCurve<S>& c, const S& u, int k)
 {
     const int p = c.degree;
     assert(p >= 0 && p <= kMaxBSplineDegree);
-    const int k = findSpan(c.knots, p, c.pointCount(), u);
     const S* knots = c.knots.data();
     if constexpr (std::is_floating_point_v<S>) {
         if (!c.rational()) {
+            switch (p) { // the usual degrees unrolled (issue 36's benchmark: a cubic)
+            case 2: return detail::polynomialPointOfDegree<2>(c, u, k);
+            case 3: return detail::polynomialPointOfDegree<3>(c, u, k);
+            default: break;
+            }
             // Plain arrays, left uninitialised: the doubles' path does no work it need not.
             S x[kMaxBSplineDegree + 1], y[kMaxBSplineDegree + 1];
             const Vec2<S>* P = c.points.data() + (k - p);
@@ -137,6 +169,11 @@ template <class S> Vec2<S> bsplinePoint(const BSplineCurve<S>& c, const S& u)
     if (rational)
         return Vec2<S>(S(h[0].x / w[0]), S(h[0].y / w[0]));
     return h[0];
+}
+
+template <class S> Vec2<S> bsplinePoint(const BSplineCurve<S>& c, const S& u)
+{
+    return bsplinePointInSpan(c, u, findSpan(c.knots, c.degree, c.pointCount(), u));
 }
 
 } // namespace granota
