@@ -4581,6 +4581,30 @@ Ja no és al disc.</translation>
             <source>|E/E₀ − 1|, E = (v² + x²)/2</source>
             <translation>|E/E₀ − 1|, amb E = (v² + x²)/2</translation>
         </message>
+        <message>
+            <source>Bézier extraction + De Casteljau</source>
+            <translation>extracció de Bézier + De Casteljau</translation>
+        </message>
+        <message>
+            <source>Evaluating a B-spline curve of degree p</source>
+            <translation>Avaluació d&apos;una corba B-spline de grau p</translation>
+        </message>
+        <message>
+            <source>basis functions × points</source>
+            <translation>funcions de base × punts</translation>
+        </message>
+        <message>
+            <source>de Boor</source>
+            <translation>de Boor</translation>
+        </message>
+        <message>
+            <source>de Boor&apos;s algorithm, the Bézier segments with De Casteljau and the basis functions times the points all stay at rounding level at every degree: each is a chain of convex combinations. The Bézier segments, extracted once, are the quickest per point (one ratio t instead of p(p + 1)/2 ratios of knots) but carry the rounding of their extraction, up to a few times de Boor&apos;s error; the basis sum is the slowest.</source>
+            <translation>L&apos;algorisme de De Boor, els segments de Bézier amb De Casteljau i les funcions de base per punts es mantenen tots al nivell de l&apos;arrodoniment a tots els graus: cadascun és una cadena de combinacions convexes. Els segments de Bézier, extrets una sola vegada, són els més ràpids per punt (una raó t en lloc de p(p + 1)/2 raons de nusos), però porten l&apos;arrodoniment de l&apos;extracció, fins a unes quantes vegades l&apos;error de De Boor; la suma de funcions de base és la més lenta.</translation>
+        </message>
+        <message>
+            <source>max |c(u) − exact| / max |Pᵢ|</source>
+            <translation>màx |c(u) − exacte| / màx |Pᵢ|</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::WorkPrecisionPanel</name>
@@ -4768,8 +4792,8 @@ Ja no és al disc.</translation>
             <translation>no es pot escriure «%1»</translation>
         </message>
         <message>
-            <source>unknown tab “%1” (decasteljau, bernstein, fit, catmull-rom, frog)</source>
-            <translation>pestanya desconeguda «%1» (decasteljau, bernstein, fit, catmull-rom, frog)</translation>
+            <source>unknown tab “%1” (decasteljau, bernstein, fit, catmull-rom, frog, bspline)</source>
+            <translation>pestanya desconeguda «%1» (decasteljau, bernstein, fit, catmull-rom, frog, bspline)</translation>
         </message>
         <message>
             <source>unknown example “%1” (2.1 … 2.13)</source>
@@ -4808,8 +4832,8 @@ Ja no és al disc.</translation>
             <translation>Idioma de la interfície: ca o en.</translation>
         </message>
         <message>
-            <source>Open on tab KEY: decasteljau, bernstein, fit, catmull-rom, frog.</source>
-            <translation>Obre a la pestanya KEY: decasteljau, bernstein, fit, catmull-rom, frog.</translation>
+            <source>Open on tab KEY: decasteljau, bernstein, fit, catmull-rom, frog, bspline.</source>
+            <translation>Obre a la pestanya KEY: decasteljau, bernstein, fit, catmull-rom, frog, bspline.</translation>
         </message>
         <message>
             <source>Splines and soft bodies, for the classroom.</source>
@@ -5573,6 +5597,481 @@ Ja no és al disc.</translation>
         <message>
             <source>The value must be between %1 and %2.</source>
             <translation>El valor ha d’estar entre %1 i %2.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::BSplineTab</name>
+        <message>
+            <source>%1 knots for %2 points of degree %3 (n + p + 2 = %4 are needed)</source>
+            <translation>%1 nusos per a %2 punts de grau %3 (en calen n + p + 2 = %4)</translation>
+        </message>
+        <message>
+            <source>%1 weights for %2 points</source>
+            <translation>%1 pesos per a %2 punts</translation>
+        </message>
+        <message>
+            <source>%n weight(s) for %1 points: give one per point, or none.</source>
+            <translation>%n pes(os) per a %1 punts: doneu-ne un per punt, o cap.</translation>
+        </message>
+        <message>
+            <source>&amp;Degree p:</source>
+            <translation>&amp;Grau p:</translation>
+        </message>
+        <message>
+            <source>&amp;Elevate degree</source>
+            <translation>E&amp;leva el grau</translation>
+        </message>
+        <message>
+            <source>&amp;Insert knot at u</source>
+            <translation>&amp;Insereix un nus a u</translation>
+        </message>
+        <message>
+            <source>&amp;Knots:</source>
+            <translation>&amp;Nusos:</translation>
+        </message>
+        <message>
+            <source>&amp;Remove knot</source>
+            <translation>&amp;Elimina el nus</translation>
+        </message>
+        <message>
+            <source>&amp;Weights:</source>
+            <translation>&amp;Pesos:</translation>
+        </message>
+        <message>
+            <source>A B-spline here has at most %1 control points.</source>
+            <translation>Aquí una B-spline té com a màxim %1 punts de control.</translation>
+        </message>
+        <message>
+            <source>A B-spline needs between 2 and %1 control points; the file has %2.</source>
+            <translation>Una B-spline necessita entre 2 i %1 punts de control; el fitxer en té %2.</translation>
+        </message>
+        <message>
+            <source>A B-spline of degree %1 needs at least %2 control points; there are %3.</source>
+            <translation>Una B-spline de grau %1 necessita almenys %2 punts de control; n&apos;hi ha %3.</translation>
+        </message>
+        <message>
+            <source>A knot can be repeated at most p = %1 times inside the domain and p + 1 times at an end, and the domain [uₚ, uₙ₊₁] cannot be empty.</source>
+            <translation>Un nus es pot repetir com a màxim p = %1 vegades dins del domini i p + 1 vegades en un extrem, i el domini [uₚ, uₙ₊₁] no pot ser buit.</translation>
+        </message>
+        <message>
+            <source>A knot is inserted inside the domain [%1, %2].</source>
+            <translation>Un nus s&apos;insereix dins del domini [%1, %2].</translation>
+        </message>
+        <message>
+            <source>A point has no exact form (dragged freely): the net is shown in doubles.</source>
+            <translation>Un punt no té forma exacta (s&apos;ha arrossegat lliurement): la xarxa es mostra en decimals.</translation>
+        </message>
+        <message>
+            <source>A weight must be positive, not %1.</source>
+            <translation>Un pes ha de ser positiu, no %1.</translation>
+        </message>
+        <message>
+            <source>Actions</source>
+            <translation>Accions</translation>
+        </message>
+        <message>
+            <source>B-spline</source>
+            <translation>B-spline</translation>
+        </message>
+        <message>
+            <source>B-spline canvas</source>
+            <translation>Llenç de la B-spline</translation>
+        </message>
+        <message>
+            <source>B-spline of degree %1 with %n control point(s) and %2 knots.</source>
+            <translation>B-spline de grau %1 amb %n punt(s) de control i %2 nusos.</translation>
+        </message>
+        <message>
+            <source>B-splines</source>
+            <translation>B-splines</translation>
+        </message>
+        <message>
+            <source>Basis functions Nᵢ,ₚ(u) (Cox–de Boor)</source>
+            <translation>Funcions de base Nᵢ,ₚ(u) (Cox–de Boor)</translation>
+        </message>
+        <message>
+            <source>Basis functions at u (degree p = %1)</source>
+            <translation>Funcions de base a u (grau p = %1)</translation>
+        </message>
+        <message>
+            <source>Boehm&apos;s knot insertion: one more point and one more knot, the curve unchanged; the old polygon stays drawn dashed under the new one.</source>
+            <translation>Inserció de nusos de Boehm: un punt i un nus més, i la corba no canvia; el polígon antic queda dibuixat discontinu sota el nou.</translation>
+        </message>
+        <message>
+            <source>Bé&amp;zier segments</source>
+            <translation>Segments de Bé&amp;zier</translation>
+        </message>
+        <message>
+            <source>Bézier (no interior knot)</source>
+            <translation>Bézier (sense nusos interiors)</translation>
+        </message>
+        <message>
+            <source>C&amp;ubic Bézier circle beside</source>
+            <translation>Circumferència de Bézier c&amp;úbica al costat</translation>
+        </message>
+        <message>
+            <source>Change the weights</source>
+            <translation>Canvia els pesos</translation>
+        </message>
+        <message>
+            <source>Clamped: p + 1 equal knots at each end, the curve starts at P₀ and ends at Pₙ. Uniform: 0, 1, 2, …, the ends float. Bézier: no interior knot, degree n, exactly the Bézier curve of the points (Def 2.4). “Edited” is shown once a knot was moved or inserted.</source>
+            <translation>Subjectes: p + 1 nusos iguals a cada extrem; la corba comença a P₀ i acaba a Pₙ. Uniformes: 0, 1, 2, …; els extrems queden lliures. Bézier: sense nusos interiors, grau n, exactament la corba de Bézier dels punts (Def. 2.4). «Editats» es mostra quan s&apos;ha mogut o inserit un nus.</translation>
+        </message>
+        <message>
+            <source>Conic: a hyperbola (w = 2)</source>
+            <translation>Cònica: una hipèrbola (w = 2)</translation>
+        </message>
+        <message>
+            <source>Conic: a parabola (w = 1)</source>
+            <translation>Cònica: una paràbola (w = 1)</translation>
+        </message>
+        <message>
+            <source>Conic: an ellipse (w = 1/2)</source>
+            <translation>Cònica: una el·lipse (w = 1/2)</translation>
+        </message>
+        <message>
+            <source>Dashed red: the cubic Bézier quarter circle (1, 0), (1, k), (k, 1), (0, 1), k = 4(√2 − 1)/3 ≈ %1: its radius is off by up to %2; the rational quarter circle&apos;s by nothing (x² + y² = 1 exactly at every rational u).</source>
+            <translation>En vermell discontinu: el quart de circumferència de Bézier cúbic (1, 0), (1, k), (k, 1), (0, 1), k = 4(√2 − 1)/3 ≈ %1: el seu radi s&apos;allunya fins a %2; el del quart de circumferència racional, gens (x² + y² = 1 exactament a cada u racional).</translation>
+        </message>
+        <message>
+            <source>Degree %1</source>
+            <translation>Grau %1</translation>
+        </message>
+        <message>
+            <source>Degree p + 1, the same curve: more points, each knot once more.</source>
+            <translation>Grau p + 1, la mateixa corba: més punts, cada nus una vegada més.</translation>
+        </message>
+        <message>
+            <source>Drag a point to move it; double-click to add one; Delete removes the selected point; drag the paper to pan, wheel to zoom. The ringed points are the p + 1 that act at u.</source>
+            <translation>Arrossegueu un punt per moure&apos;l; feu doble clic per afegir-ne un; Supr elimina el punt seleccionat; arrossegueu el paper per desplaçar-lo i feu servir la roda per fer zoom. Els punts encerclats són els p + 1 que actuen a u.</translation>
+        </message>
+        <message>
+            <source>Drag a point; drag a knot on the ruler, double-click it to insert one; move u to follow de Boor&apos;s construction.</source>
+            <translation>Arrossegueu un punt; arrossegueu un nus al regle o feu-hi doble clic per inserir-ne un; moveu u per seguir la construcció de De Boor.</translation>
+        </message>
+        <message>
+            <source>Draw the control polygon of each Bézier segment of the curve (the knots inserted up to multiplicity p): one polynomial piece per span.</source>
+            <translation>Dibuixa el polígon de control de cada segment de Bézier de la corba (els nusos inserits fins a multiplicitat p): un tros polinòmic per interval.</translation>
+        </message>
+        <message>
+            <source>Each N_{i,p} in the colour of P_i&apos;s ring; the shaded band is the domain [u_p, u_{n+1}], the vertical line is u.</source>
+            <translation>Cada N_{i,p} del color de l&apos;anella de P_i; la franja ombrejada és el domini [u_p, u_{n+1}] i la línia vertical és u.</translation>
+        </message>
+        <message>
+            <source>Elevate the degree to %1</source>
+            <translation>Eleva el grau a %1</translation>
+        </message>
+        <message>
+            <source>Ex 2.2 as a B-spline (no interior knot)</source>
+            <translation>Ex. 2.2 com a B-spline (sense nusos interiors)</translation>
+        </message>
+        <message>
+            <source>Ex 2.2&apos;s Bézier curve as a B-spline; a uniform cubic closed on Ex 2.13&apos;s points; the circle and the conics, exactly, as rational curves.</source>
+            <translation>La corba de Bézier de l&apos;Ex. 2.2 com a B-spline; una cúbica uniforme tancada sobre els punts de l&apos;Ex. 2.13; la circumferència i les còniques, exactes, com a corbes racionals.</translation>
+        </message>
+        <message>
+            <source>Exact results</source>
+            <translation>Resultats exactes</translation>
+        </message>
+        <message>
+            <source>Exact results and points</source>
+            <translation>Resultats exactes i punts</translation>
+        </message>
+        <message>
+            <source>Exact results: de Boor&apos;s net at u, the basis functions there, their supports, the knots with their multiplicities and the continuity of the curve at each.</source>
+            <translation>Resultats exactes: la xarxa de De Boor a u, les funcions de base en aquest punt, els seus suports, els nusos amb les seves multiplicitats i la continuïtat de la corba a cadascun.</translation>
+        </message>
+        <message>
+            <source>Examples</source>
+            <translation>Exemples</translation>
+        </message>
+        <message>
+            <source>Examples…</source>
+            <translation>Exemples…</translation>
+        </message>
+        <message>
+            <source>Hide de Boor&apos;s net</source>
+            <translation>Amaga la xarxa de De Boor</translation>
+        </message>
+        <message>
+            <source>Hide the Bézier segments</source>
+            <translation>Amaga els segments de Bézier</translation>
+        </message>
+        <message>
+            <source>Hide the cubic circle</source>
+            <translation>Amaga la circumferència cúbica</translation>
+        </message>
+        <message>
+            <source>Insert knot %1</source>
+            <translation>Insereix el nus %1</translation>
+        </message>
+        <message>
+            <source>Knot %1 inserted: %2 control points now, the same curve.</source>
+            <translation>Nus %1 inserit: ara hi ha %2 punts de control, i la corba és la mateixa.</translation>
+        </message>
+        <message>
+            <source>Knot %1 removed: the curve is exactly the same.</source>
+            <translation>Nus %1 eliminat: la corba és exactament la mateixa.</translation>
+        </message>
+        <message>
+            <source>Knot ruler</source>
+            <translation>Regle de nusos</translation>
+        </message>
+        <message>
+            <source>Knots</source>
+            <translation>Nusos</translation>
+        </message>
+        <message>
+            <source>Knots: %1</source>
+            <translation>Nusos: %1</translation>
+        </message>
+        <message>
+            <source>Load %1</source>
+            <translation>Carrega %1</translation>
+        </message>
+        <message>
+            <source>Load Ex %1</source>
+            <translation>Carrega l&apos;Ex. %1</translation>
+        </message>
+        <message>
+            <source>Move knot u%1</source>
+            <translation>Mou el nus u%1</translation>
+        </message>
+        <message>
+            <source>Move u</source>
+            <translation>Mou u</translation>
+        </message>
+        <message>
+            <source>Move u along the domain again and again; Pause makes it one undo step.</source>
+            <translation>Mou u al llarg del domini una vegada i una altra; en fer Pausa, queda en un sol pas per desfer.</translation>
+        </message>
+        <message>
+            <source>No weights</source>
+            <translation>Sense pesos</translation>
+        </message>
+        <message>
+            <source>One weight wᵢ &gt; 0 per point, separated by commas (1, 1, 2): a rational B-spline (NURBS), c(u) = Σ wᵢNᵢ,ₚPᵢ / Σ wᵢNᵢ,ₚ. Empty: polynomial.</source>
+            <translation>Un pes wᵢ &gt; 0 per punt, separats per comes (1, 1, 2): una B-spline racional (NURBS), c(u) = Σ wᵢNᵢ,ₚPᵢ / Σ wᵢNᵢ,ₚ. Buit: polinòmica.</translation>
+        </message>
+        <message>
+            <source>Only a knot inside the domain can be removed; %1 is at its end or outside it.</source>
+            <translation>Només es pot eliminar un nus de dins del domini; %1 és en un extrem o fora.</translation>
+        </message>
+        <message>
+            <source>Parameter u</source>
+            <translation>Paràmetre u</translation>
+        </message>
+        <message>
+            <source>Pause</source>
+            <translation>Pausa</translation>
+        </message>
+        <message>
+            <source>Play</source>
+            <translation>Reprodueix</translation>
+        </message>
+        <message>
+            <source>Play u</source>
+            <translation>Reprodueix u</translation>
+        </message>
+        <message>
+            <source>Point %1 of the B-spline tab is not a finite number.</source>
+            <translation>El punt %1 de la pestanya B-splines no és un nombre finit.</translation>
+        </message>
+        <message>
+            <source>Point %1 of the B-spline tab is not a pair of numbers.</source>
+            <translation>El punt %1 de la pestanya B-splines no és un parell de nombres.</translation>
+        </message>
+        <message>
+            <source>Points</source>
+            <translation>Punts</translation>
+        </message>
+        <message>
+            <source>Quarter circle, exactly, beside the cubic Bézier one</source>
+            <translation>Quart de circumferència exacte, al costat del de Bézier cúbic</translation>
+        </message>
+        <message>
+            <source>Remove knot %1</source>
+            <translation>Elimina el nus %1</translation>
+        </message>
+        <message>
+            <source>Remove the knot selected on the ruler, only if the curve stays exactly the same.</source>
+            <translation>Elimina el nus seleccionat al regle, només si la corba queda exactament igual.</translation>
+        </message>
+        <message>
+            <source>Removing a knot would leave fewer than p + 1 = %1 points.</source>
+            <translation>Eliminar un nus deixaria menys de p + 1 = %1 punts.</translation>
+        </message>
+        <message>
+            <source>Ruler keys: Left/Right select a knot, Shift+Left/Right move it, Insert inserts a knot at u, Delete removes the selected knot; Tab leaves the ruler.</source>
+            <translation>Tecles del regle: Esquerra/Dreta seleccionen un nus, Maj+Esquerra/Dreta el mouen, Insert insereix un nus a u, Supr elimina el nus seleccionat; Tab surt del regle.</translation>
+        </message>
+        <message>
+            <source>Select a knot on the ruler first (click it, or Left/Right while the ruler has the focus).</source>
+            <translation>Primer seleccioneu un nus al regle (feu-hi clic, o premeu Esquerra/Dreta mentre el regle té el focus).</translation>
+        </message>
+        <message>
+            <source>Show de Boor&apos;s net</source>
+            <translation>Mostra la xarxa de De Boor</translation>
+        </message>
+        <message>
+            <source>Show the Bézier segments</source>
+            <translation>Mostra els segments de Bézier</translation>
+        </message>
+        <message>
+            <source>Show the cubic circle</source>
+            <translation>Mostra la circumferència cúbica</translation>
+        </message>
+        <message>
+            <source>Span k = %1: u&lt;sub&gt;%1&lt;/sub&gt; ≤ u &amp;lt; u&lt;sub&gt;%2&lt;/sub&gt;. Only P&lt;sub&gt;%3&lt;/sub&gt;…P&lt;sub&gt;%1&lt;/sub&gt; act here (local support); level r interpolates level r − 1 with α = (u − u&lt;sub&gt;j&lt;/sub&gt;)/(u&lt;sub&gt;j+p+1−r&lt;/sub&gt; − u&lt;sub&gt;j&lt;/sub&gt;).</source>
+            <translation>Interval k = %1: u&lt;sub&gt;%1&lt;/sub&gt; ≤ u &amp;lt; u&lt;sub&gt;%2&lt;/sub&gt;. Només P&lt;sub&gt;%3&lt;/sub&gt;…P&lt;sub&gt;%1&lt;/sub&gt; hi actuen (suport local); el nivell r interpola el nivell r − 1 amb α = (u − u&lt;sub&gt;j&lt;/sub&gt;)/(u&lt;sub&gt;j+p+1−r&lt;/sub&gt; − u&lt;sub&gt;j&lt;/sub&gt;).</translation>
+        </message>
+        <message>
+            <source>Supports [uᵢ, uᵢ₊ₚ₊₁)</source>
+            <translation>Suports [uᵢ, uᵢ₊ₚ₊₁)</translation>
+        </message>
+        <message>
+            <source>The B-spline in the document is not valid: %1.</source>
+            <translation>La B-spline del document no és vàlida: %1.</translation>
+        </message>
+        <message>
+            <source>The B-spline settings are not valid (“%1”).</source>
+            <translation>La configuració de la B-spline no és vàlida («%1»).</translation>
+        </message>
+        <message>
+            <source>The B-spline&apos;s control points are missing or not a list.</source>
+            <translation>Falten els punts de control de la B-spline o no són una llista.</translation>
+        </message>
+        <message>
+            <source>The Bézier preset has degree n = number of points − 1, at most %1: remove points first.</source>
+            <translation>Els nusos de Bézier donen grau n = nombre de punts − 1, com a màxim %1: primer elimineu punts.</translation>
+        </message>
+        <message>
+            <source>The circle, exactly (NURBS)</source>
+            <translation>La circumferència, exacta (NURBS)</translation>
+        </message>
+        <message>
+            <source>The control points P0…Pn as numbers; fractions such as 1/3 are accepted.</source>
+            <translation>Els punts de control P0…Pn com a nombres; s&apos;accepten fraccions com ara 1/3.</translation>
+        </message>
+        <message>
+            <source>The curve needs the knot %1: removing it would change the curve.</source>
+            <translation>La corba necessita el nus %1: eliminar-lo canviaria la corba.</translation>
+        </message>
+        <message>
+            <source>The degree is at most %1.</source>
+            <translation>El grau és com a màxim %1.</translation>
+        </message>
+        <message>
+            <source>The degree of every piece, 1 to 10: the curve is C^{p−1} at a simple knot. Needs at least p + 1 points; the knots go back to the preset.</source>
+            <translation>El grau de cada tros, d&apos;1 a 10: la corba és C^{p−1} en un nus simple. Calen almenys p + 1 punts; els nusos tornen als predefinits.</translation>
+        </message>
+        <message>
+            <source>The knots u₀ ≤ … ≤ uₙ₊ₚ₊₁: drag one (it never passes its neighbours), double-click to insert one, the badge is a knot&apos;s multiplicity. Bold: the domain [uₚ, uₙ₊₁]; yellow: the span that holds u.</source>
+            <translation>Els nusos u₀ ≤ … ≤ uₙ₊ₚ₊₁: arrossegueu-ne un (mai no passa els veïns) o feu doble clic per inserir-ne un; la insígnia és la multiplicitat d&apos;un nus. En negreta: el domini [uₚ, uₙ₊₁]; en groc: l&apos;interval que conté u.</translation>
+        </message>
+        <message>
+            <source>The usual cubic Bézier quarter circle (1, 0), (1, k), (k, 1), (0, 1), k = 4(√2 − 1)/3, dashed: close to the circle but not on it (its radial error is in the exact panel); the rational quarter circle is exact.</source>
+            <translation>El quart de circumferència de Bézier cúbic habitual (1, 0), (1, k), (k, 1), (0, 1), k = 4(√2 − 1)/3, discontinu: a prop de la circumferència però no a sobre (l&apos;error radial és al tauler exacte); el quart de circumferència racional és exacte.</translation>
+        </message>
+        <message>
+            <source>This B-spline cannot be drawn: %1</source>
+            <translation>Aquesta B-spline no es pot dibuixar: %1</translation>
+        </message>
+        <message>
+            <source>Uniform cubic, closed on Ex 2.13&apos;s points</source>
+            <translation>Cúbica uniforme, tancada sobre els punts de l&apos;Ex. 2.13</translation>
+        </message>
+        <message>
+            <source>Weights are numbers separated by commas, such as 1, 1, 2 or 1, 1/2, 1; empty for none.</source>
+            <translation>Els pesos són nombres separats per comes, com ara 1, 1, 2 o 1, 1/2, 1; buit per a cap.</translation>
+        </message>
+        <message>
+            <source>Weights: %1</source>
+            <translation>Pesos: %1</translation>
+        </message>
+        <message>
+            <source>broken</source>
+            <translation>trencada</translation>
+        </message>
+        <message>
+            <source>c(u) = Σ N_{i,p}(u) P_i: the weight of each control point along the curve. N_{i,p} is zero outside [u_i, u_{i+p+1}) (local support), the functions add up to 1 on the domain (the dashed line), and at a knot of multiplicity m they are C^{p−m}.</source>
+            <translation>c(u) = Σ N_{i,p}(u) P_i: el pes de cada punt de control al llarg de la corba. N_{i,p} és zero fora de [u_i, u_{i+p+1}) (suport local), les funcions sumen 1 al domini (la línia discontínua) i en un nus de multiplicitat m són C^{p−m}.</translation>
+        </message>
+        <message>
+            <source>clamped (open uniform)</source>
+            <translation>subjectes (uniformes oberts)</translation>
+        </message>
+        <message>
+            <source>continuity C&lt;sup&gt;p−m&lt;/sup&gt;</source>
+            <translation>continuïtat C&lt;sup&gt;p−m&lt;/sup&gt;</translation>
+        </message>
+        <message>
+            <source>de Boor&apos;s &amp;net at u</source>
+            <translation>&amp;Xarxa de De Boor a u</translation>
+        </message>
+        <message>
+            <source>de Boor&apos;s algorithm at u = %1</source>
+            <translation>Algorisme de De Boor a u = %1</translation>
+        </message>
+        <message>
+            <source>de Boor&apos;s algorithm at u step by step: level r interpolates level r − 1, one colour per level as in the De Casteljau tab, from the span&apos;s p + 1 points down to c(u).</source>
+            <translation>L&apos;algorisme de De Boor a u pas a pas: el nivell r interpola el nivell r − 1, un color per nivell com a la pestanya De Casteljau, des dels p + 1 punts de l&apos;interval fins a c(u).</translation>
+        </message>
+        <message>
+            <source>degree %1 needs at least %2 points</source>
+            <translation>el grau %1 necessita almenys %2 punts</translation>
+        </message>
+        <message>
+            <source>edited</source>
+            <translation>editats</translation>
+        </message>
+        <message>
+            <source>knot</source>
+            <translation>nus</translation>
+        </message>
+        <message>
+            <source>level r</source>
+            <translation>nivell r</translation>
+        </message>
+        <message>
+            <source>multiplicity m</source>
+            <translation>multiplicitat m</translation>
+        </message>
+        <message>
+            <source>non-zero on</source>
+            <translation>no nul·la a</translation>
+        </message>
+        <message>
+            <source>none (polynomial)</source>
+            <translation>cap (polinòmica)</translation>
+        </message>
+        <message>
+            <source>outside or at an end</source>
+            <translation>fora o en un extrem</translation>
+        </message>
+        <message>
+            <source>points P&lt;sub&gt;j&lt;/sub&gt;&lt;sup&gt;r&lt;/sup&gt;</source>
+            <translation>punts P&lt;sub&gt;j&lt;/sub&gt;&lt;sup&gt;r&lt;/sup&gt;</translation>
+        </message>
+        <message>
+            <source>u = %1 is a knot of multiplicity %2 already: once more would break the curve (at most p = %3 times).</source>
+            <translation>u = %1 ja és un nus de multiplicitat %2: una vegada més trencaria la corba (com a màxim p = %3 vegades).</translation>
+        </message>
+        <message>
+            <source>u in the domain [uₚ, uₙ₊₁]: the point c(u) and de Boor&apos;s net there.</source>
+            <translation>u al domini [uₚ, uₙ₊₁]: el punt c(u) i la xarxa de De Boor en aquest punt.</translation>
+        </message>
+        <message>
+            <source>uniform</source>
+            <translation>uniformes</translation>
+        </message>
+        <message>
+            <source>value</source>
+            <translation>valor</translation>
+        </message>
+        <message>
+            <source>Σ N&lt;sub&gt;i,p&lt;/sub&gt;(u) = %1: partition of unity</source>
+            <translation>Σ N&lt;sub&gt;i,p&lt;/sub&gt;(u) = %1: partició de la unitat</translation>
         </message>
     </context>
 </TS>

@@ -4581,6 +4581,30 @@ It is no longer on disk.</translation>
             <source>|E/E₀ − 1|, E = (v² + x²)/2</source>
             <translation>|E/E₀ − 1|, E = (v² + x²)/2</translation>
         </message>
+        <message>
+            <source>Bézier extraction + De Casteljau</source>
+            <translation>Bézier extraction + De Casteljau</translation>
+        </message>
+        <message>
+            <source>Evaluating a B-spline curve of degree p</source>
+            <translation>Evaluating a B-spline curve of degree p</translation>
+        </message>
+        <message>
+            <source>basis functions × points</source>
+            <translation>basis functions × points</translation>
+        </message>
+        <message>
+            <source>de Boor</source>
+            <translation>de Boor</translation>
+        </message>
+        <message>
+            <source>de Boor&apos;s algorithm, the Bézier segments with De Casteljau and the basis functions times the points all stay at rounding level at every degree: each is a chain of convex combinations. The Bézier segments, extracted once, are the quickest per point (one ratio t instead of p(p + 1)/2 ratios of knots) but carry the rounding of their extraction, up to a few times de Boor&apos;s error; the basis sum is the slowest.</source>
+            <translation>de Boor&apos;s algorithm, the Bézier segments with De Casteljau and the basis functions times the points all stay at rounding level at every degree: each is a chain of convex combinations. The Bézier segments, extracted once, are the quickest per point (one ratio t instead of p(p + 1)/2 ratios of knots) but carry the rounding of their extraction, up to a few times de Boor&apos;s error; the basis sum is the slowest.</translation>
+        </message>
+        <message>
+            <source>max |c(u) − exact| / max |Pᵢ|</source>
+            <translation>max |c(u) − exact| / max |Pᵢ|</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::WorkPrecisionPanel</name>
@@ -4768,8 +4792,8 @@ It is no longer on disk.</translation>
             <translation>cannot write “%1”</translation>
         </message>
         <message>
-            <source>unknown tab “%1” (decasteljau, bernstein, fit, catmull-rom, frog)</source>
-            <translation>unknown tab “%1” (decasteljau, bernstein, fit, catmull-rom, frog)</translation>
+            <source>unknown tab “%1” (decasteljau, bernstein, fit, catmull-rom, frog, bspline)</source>
+            <translation>unknown tab “%1” (decasteljau, bernstein, fit, catmull-rom, frog, bspline)</translation>
         </message>
         <message>
             <source>unknown example “%1” (2.1 … 2.13)</source>
@@ -4808,8 +4832,8 @@ It is no longer on disk.</translation>
             <translation>Interface language: ca or en.</translation>
         </message>
         <message>
-            <source>Open on tab KEY: decasteljau, bernstein, fit, catmull-rom, frog.</source>
-            <translation>Open on tab KEY: decasteljau, bernstein, fit, catmull-rom, frog.</translation>
+            <source>Open on tab KEY: decasteljau, bernstein, fit, catmull-rom, frog, bspline.</source>
+            <translation>Open on tab KEY: decasteljau, bernstein, fit, catmull-rom, frog, bspline.</translation>
         </message>
         <message>
             <source>Splines and soft bodies, for the classroom.</source>
@@ -5573,6 +5597,481 @@ It is no longer on disk.</translation>
         <message>
             <source>The value must be between %1 and %2.</source>
             <translation>The value must be between %1 and %2.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::BSplineTab</name>
+        <message>
+            <source>%1 knots for %2 points of degree %3 (n + p + 2 = %4 are needed)</source>
+            <translation>%1 knots for %2 points of degree %3 (n + p + 2 = %4 are needed)</translation>
+        </message>
+        <message>
+            <source>%1 weights for %2 points</source>
+            <translation>%1 weights for %2 points</translation>
+        </message>
+        <message>
+            <source>%n weight(s) for %1 points: give one per point, or none.</source>
+            <translation>%n weight(s) for %1 points: give one per point, or none.</translation>
+        </message>
+        <message>
+            <source>&amp;Degree p:</source>
+            <translation>&amp;Degree p:</translation>
+        </message>
+        <message>
+            <source>&amp;Elevate degree</source>
+            <translation>&amp;Elevate degree</translation>
+        </message>
+        <message>
+            <source>&amp;Insert knot at u</source>
+            <translation>&amp;Insert knot at u</translation>
+        </message>
+        <message>
+            <source>&amp;Knots:</source>
+            <translation>&amp;Knots:</translation>
+        </message>
+        <message>
+            <source>&amp;Remove knot</source>
+            <translation>&amp;Remove knot</translation>
+        </message>
+        <message>
+            <source>&amp;Weights:</source>
+            <translation>&amp;Weights:</translation>
+        </message>
+        <message>
+            <source>A B-spline here has at most %1 control points.</source>
+            <translation>A B-spline here has at most %1 control points.</translation>
+        </message>
+        <message>
+            <source>A B-spline needs between 2 and %1 control points; the file has %2.</source>
+            <translation>A B-spline needs between 2 and %1 control points; the file has %2.</translation>
+        </message>
+        <message>
+            <source>A B-spline of degree %1 needs at least %2 control points; there are %3.</source>
+            <translation>A B-spline of degree %1 needs at least %2 control points; there are %3.</translation>
+        </message>
+        <message>
+            <source>A knot can be repeated at most p = %1 times inside the domain and p + 1 times at an end, and the domain [uₚ, uₙ₊₁] cannot be empty.</source>
+            <translation>A knot can be repeated at most p = %1 times inside the domain and p + 1 times at an end, and the domain [uₚ, uₙ₊₁] cannot be empty.</translation>
+        </message>
+        <message>
+            <source>A knot is inserted inside the domain [%1, %2].</source>
+            <translation>A knot is inserted inside the domain [%1, %2].</translation>
+        </message>
+        <message>
+            <source>A point has no exact form (dragged freely): the net is shown in doubles.</source>
+            <translation>A point has no exact form (dragged freely): the net is shown in doubles.</translation>
+        </message>
+        <message>
+            <source>A weight must be positive, not %1.</source>
+            <translation>A weight must be positive, not %1.</translation>
+        </message>
+        <message>
+            <source>Actions</source>
+            <translation>Actions</translation>
+        </message>
+        <message>
+            <source>B-spline</source>
+            <translation>B-spline</translation>
+        </message>
+        <message>
+            <source>B-spline canvas</source>
+            <translation>B-spline canvas</translation>
+        </message>
+        <message>
+            <source>B-spline of degree %1 with %n control point(s) and %2 knots.</source>
+            <translation>B-spline of degree %1 with %n control point(s) and %2 knots.</translation>
+        </message>
+        <message>
+            <source>B-splines</source>
+            <translation>B-splines</translation>
+        </message>
+        <message>
+            <source>Basis functions Nᵢ,ₚ(u) (Cox–de Boor)</source>
+            <translation>Basis functions Nᵢ,ₚ(u) (Cox–de Boor)</translation>
+        </message>
+        <message>
+            <source>Basis functions at u (degree p = %1)</source>
+            <translation>Basis functions at u (degree p = %1)</translation>
+        </message>
+        <message>
+            <source>Boehm&apos;s knot insertion: one more point and one more knot, the curve unchanged; the old polygon stays drawn dashed under the new one.</source>
+            <translation>Boehm&apos;s knot insertion: one more point and one more knot, the curve unchanged; the old polygon stays drawn dashed under the new one.</translation>
+        </message>
+        <message>
+            <source>Bé&amp;zier segments</source>
+            <translation>Bé&amp;zier segments</translation>
+        </message>
+        <message>
+            <source>Bézier (no interior knot)</source>
+            <translation>Bézier (no interior knot)</translation>
+        </message>
+        <message>
+            <source>C&amp;ubic Bézier circle beside</source>
+            <translation>C&amp;ubic Bézier circle beside</translation>
+        </message>
+        <message>
+            <source>Change the weights</source>
+            <translation>Change the weights</translation>
+        </message>
+        <message>
+            <source>Clamped: p + 1 equal knots at each end, the curve starts at P₀ and ends at Pₙ. Uniform: 0, 1, 2, …, the ends float. Bézier: no interior knot, degree n, exactly the Bézier curve of the points (Def 2.4). “Edited” is shown once a knot was moved or inserted.</source>
+            <translation>Clamped: p + 1 equal knots at each end, the curve starts at P₀ and ends at Pₙ. Uniform: 0, 1, 2, …, the ends float. Bézier: no interior knot, degree n, exactly the Bézier curve of the points (Def 2.4). “Edited” is shown once a knot was moved or inserted.</translation>
+        </message>
+        <message>
+            <source>Conic: a hyperbola (w = 2)</source>
+            <translation>Conic: a hyperbola (w = 2)</translation>
+        </message>
+        <message>
+            <source>Conic: a parabola (w = 1)</source>
+            <translation>Conic: a parabola (w = 1)</translation>
+        </message>
+        <message>
+            <source>Conic: an ellipse (w = 1/2)</source>
+            <translation>Conic: an ellipse (w = 1/2)</translation>
+        </message>
+        <message>
+            <source>Dashed red: the cubic Bézier quarter circle (1, 0), (1, k), (k, 1), (0, 1), k = 4(√2 − 1)/3 ≈ %1: its radius is off by up to %2; the rational quarter circle&apos;s by nothing (x² + y² = 1 exactly at every rational u).</source>
+            <translation>Dashed red: the cubic Bézier quarter circle (1, 0), (1, k), (k, 1), (0, 1), k = 4(√2 − 1)/3 ≈ %1: its radius is off by up to %2; the rational quarter circle&apos;s by nothing (x² + y² = 1 exactly at every rational u).</translation>
+        </message>
+        <message>
+            <source>Degree %1</source>
+            <translation>Degree %1</translation>
+        </message>
+        <message>
+            <source>Degree p + 1, the same curve: more points, each knot once more.</source>
+            <translation>Degree p + 1, the same curve: more points, each knot once more.</translation>
+        </message>
+        <message>
+            <source>Drag a point to move it; double-click to add one; Delete removes the selected point; drag the paper to pan, wheel to zoom. The ringed points are the p + 1 that act at u.</source>
+            <translation>Drag a point to move it; double-click to add one; Delete removes the selected point; drag the paper to pan, wheel to zoom. The ringed points are the p + 1 that act at u.</translation>
+        </message>
+        <message>
+            <source>Drag a point; drag a knot on the ruler, double-click it to insert one; move u to follow de Boor&apos;s construction.</source>
+            <translation>Drag a point; drag a knot on the ruler, double-click it to insert one; move u to follow de Boor&apos;s construction.</translation>
+        </message>
+        <message>
+            <source>Draw the control polygon of each Bézier segment of the curve (the knots inserted up to multiplicity p): one polynomial piece per span.</source>
+            <translation>Draw the control polygon of each Bézier segment of the curve (the knots inserted up to multiplicity p): one polynomial piece per span.</translation>
+        </message>
+        <message>
+            <source>Each N_{i,p} in the colour of P_i&apos;s ring; the shaded band is the domain [u_p, u_{n+1}], the vertical line is u.</source>
+            <translation>Each N_{i,p} in the colour of P_i&apos;s ring; the shaded band is the domain [u_p, u_{n+1}], the vertical line is u.</translation>
+        </message>
+        <message>
+            <source>Elevate the degree to %1</source>
+            <translation>Elevate the degree to %1</translation>
+        </message>
+        <message>
+            <source>Ex 2.2 as a B-spline (no interior knot)</source>
+            <translation>Ex 2.2 as a B-spline (no interior knot)</translation>
+        </message>
+        <message>
+            <source>Ex 2.2&apos;s Bézier curve as a B-spline; a uniform cubic closed on Ex 2.13&apos;s points; the circle and the conics, exactly, as rational curves.</source>
+            <translation>Ex 2.2&apos;s Bézier curve as a B-spline; a uniform cubic closed on Ex 2.13&apos;s points; the circle and the conics, exactly, as rational curves.</translation>
+        </message>
+        <message>
+            <source>Exact results</source>
+            <translation>Exact results</translation>
+        </message>
+        <message>
+            <source>Exact results and points</source>
+            <translation>Exact results and points</translation>
+        </message>
+        <message>
+            <source>Exact results: de Boor&apos;s net at u, the basis functions there, their supports, the knots with their multiplicities and the continuity of the curve at each.</source>
+            <translation>Exact results: de Boor&apos;s net at u, the basis functions there, their supports, the knots with their multiplicities and the continuity of the curve at each.</translation>
+        </message>
+        <message>
+            <source>Examples</source>
+            <translation>Examples</translation>
+        </message>
+        <message>
+            <source>Examples…</source>
+            <translation>Examples…</translation>
+        </message>
+        <message>
+            <source>Hide de Boor&apos;s net</source>
+            <translation>Hide de Boor&apos;s net</translation>
+        </message>
+        <message>
+            <source>Hide the Bézier segments</source>
+            <translation>Hide the Bézier segments</translation>
+        </message>
+        <message>
+            <source>Hide the cubic circle</source>
+            <translation>Hide the cubic circle</translation>
+        </message>
+        <message>
+            <source>Insert knot %1</source>
+            <translation>Insert knot %1</translation>
+        </message>
+        <message>
+            <source>Knot %1 inserted: %2 control points now, the same curve.</source>
+            <translation>Knot %1 inserted: %2 control points now, the same curve.</translation>
+        </message>
+        <message>
+            <source>Knot %1 removed: the curve is exactly the same.</source>
+            <translation>Knot %1 removed: the curve is exactly the same.</translation>
+        </message>
+        <message>
+            <source>Knot ruler</source>
+            <translation>Knot ruler</translation>
+        </message>
+        <message>
+            <source>Knots</source>
+            <translation>Knots</translation>
+        </message>
+        <message>
+            <source>Knots: %1</source>
+            <translation>Knots: %1</translation>
+        </message>
+        <message>
+            <source>Load %1</source>
+            <translation>Load %1</translation>
+        </message>
+        <message>
+            <source>Load Ex %1</source>
+            <translation>Load Ex %1</translation>
+        </message>
+        <message>
+            <source>Move knot u%1</source>
+            <translation>Move knot u%1</translation>
+        </message>
+        <message>
+            <source>Move u</source>
+            <translation>Move u</translation>
+        </message>
+        <message>
+            <source>Move u along the domain again and again; Pause makes it one undo step.</source>
+            <translation>Move u along the domain again and again; Pause makes it one undo step.</translation>
+        </message>
+        <message>
+            <source>No weights</source>
+            <translation>No weights</translation>
+        </message>
+        <message>
+            <source>One weight wᵢ &gt; 0 per point, separated by commas (1, 1, 2): a rational B-spline (NURBS), c(u) = Σ wᵢNᵢ,ₚPᵢ / Σ wᵢNᵢ,ₚ. Empty: polynomial.</source>
+            <translation>One weight wᵢ &gt; 0 per point, separated by commas (1, 1, 2): a rational B-spline (NURBS), c(u) = Σ wᵢNᵢ,ₚPᵢ / Σ wᵢNᵢ,ₚ. Empty: polynomial.</translation>
+        </message>
+        <message>
+            <source>Only a knot inside the domain can be removed; %1 is at its end or outside it.</source>
+            <translation>Only a knot inside the domain can be removed; %1 is at its end or outside it.</translation>
+        </message>
+        <message>
+            <source>Parameter u</source>
+            <translation>Parameter u</translation>
+        </message>
+        <message>
+            <source>Pause</source>
+            <translation>Pause</translation>
+        </message>
+        <message>
+            <source>Play</source>
+            <translation>Play</translation>
+        </message>
+        <message>
+            <source>Play u</source>
+            <translation>Play u</translation>
+        </message>
+        <message>
+            <source>Point %1 of the B-spline tab is not a finite number.</source>
+            <translation>Point %1 of the B-spline tab is not a finite number.</translation>
+        </message>
+        <message>
+            <source>Point %1 of the B-spline tab is not a pair of numbers.</source>
+            <translation>Point %1 of the B-spline tab is not a pair of numbers.</translation>
+        </message>
+        <message>
+            <source>Points</source>
+            <translation>Points</translation>
+        </message>
+        <message>
+            <source>Quarter circle, exactly, beside the cubic Bézier one</source>
+            <translation>Quarter circle, exactly, beside the cubic Bézier one</translation>
+        </message>
+        <message>
+            <source>Remove knot %1</source>
+            <translation>Remove knot %1</translation>
+        </message>
+        <message>
+            <source>Remove the knot selected on the ruler, only if the curve stays exactly the same.</source>
+            <translation>Remove the knot selected on the ruler, only if the curve stays exactly the same.</translation>
+        </message>
+        <message>
+            <source>Removing a knot would leave fewer than p + 1 = %1 points.</source>
+            <translation>Removing a knot would leave fewer than p + 1 = %1 points.</translation>
+        </message>
+        <message>
+            <source>Ruler keys: Left/Right select a knot, Shift+Left/Right move it, Insert inserts a knot at u, Delete removes the selected knot; Tab leaves the ruler.</source>
+            <translation>Ruler keys: Left/Right select a knot, Shift+Left/Right move it, Insert inserts a knot at u, Delete removes the selected knot; Tab leaves the ruler.</translation>
+        </message>
+        <message>
+            <source>Select a knot on the ruler first (click it, or Left/Right while the ruler has the focus).</source>
+            <translation>Select a knot on the ruler first (click it, or Left/Right while the ruler has the focus).</translation>
+        </message>
+        <message>
+            <source>Show de Boor&apos;s net</source>
+            <translation>Show de Boor&apos;s net</translation>
+        </message>
+        <message>
+            <source>Show the Bézier segments</source>
+            <translation>Show the Bézier segments</translation>
+        </message>
+        <message>
+            <source>Show the cubic circle</source>
+            <translation>Show the cubic circle</translation>
+        </message>
+        <message>
+            <source>Span k = %1: u&lt;sub&gt;%1&lt;/sub&gt; ≤ u &amp;lt; u&lt;sub&gt;%2&lt;/sub&gt;. Only P&lt;sub&gt;%3&lt;/sub&gt;…P&lt;sub&gt;%1&lt;/sub&gt; act here (local support); level r interpolates level r − 1 with α = (u − u&lt;sub&gt;j&lt;/sub&gt;)/(u&lt;sub&gt;j+p+1−r&lt;/sub&gt; − u&lt;sub&gt;j&lt;/sub&gt;).</source>
+            <translation>Span k = %1: u&lt;sub&gt;%1&lt;/sub&gt; ≤ u &amp;lt; u&lt;sub&gt;%2&lt;/sub&gt;. Only P&lt;sub&gt;%3&lt;/sub&gt;…P&lt;sub&gt;%1&lt;/sub&gt; act here (local support); level r interpolates level r − 1 with α = (u − u&lt;sub&gt;j&lt;/sub&gt;)/(u&lt;sub&gt;j+p+1−r&lt;/sub&gt; − u&lt;sub&gt;j&lt;/sub&gt;).</translation>
+        </message>
+        <message>
+            <source>Supports [uᵢ, uᵢ₊ₚ₊₁)</source>
+            <translation>Supports [uᵢ, uᵢ₊ₚ₊₁)</translation>
+        </message>
+        <message>
+            <source>The B-spline in the document is not valid: %1.</source>
+            <translation>The B-spline in the document is not valid: %1.</translation>
+        </message>
+        <message>
+            <source>The B-spline settings are not valid (“%1”).</source>
+            <translation>The B-spline settings are not valid (“%1”).</translation>
+        </message>
+        <message>
+            <source>The B-spline&apos;s control points are missing or not a list.</source>
+            <translation>The B-spline&apos;s control points are missing or not a list.</translation>
+        </message>
+        <message>
+            <source>The Bézier preset has degree n = number of points − 1, at most %1: remove points first.</source>
+            <translation>The Bézier preset has degree n = number of points − 1, at most %1: remove points first.</translation>
+        </message>
+        <message>
+            <source>The circle, exactly (NURBS)</source>
+            <translation>The circle, exactly (NURBS)</translation>
+        </message>
+        <message>
+            <source>The control points P0…Pn as numbers; fractions such as 1/3 are accepted.</source>
+            <translation>The control points P0…Pn as numbers; fractions such as 1/3 are accepted.</translation>
+        </message>
+        <message>
+            <source>The curve needs the knot %1: removing it would change the curve.</source>
+            <translation>The curve needs the knot %1: removing it would change the curve.</translation>
+        </message>
+        <message>
+            <source>The degree is at most %1.</source>
+            <translation>The degree is at most %1.</translation>
+        </message>
+        <message>
+            <source>The degree of every piece, 1 to 10: the curve is C^{p−1} at a simple knot. Needs at least p + 1 points; the knots go back to the preset.</source>
+            <translation>The degree of every piece, 1 to 10: the curve is C^{p−1} at a simple knot. Needs at least p + 1 points; the knots go back to the preset.</translation>
+        </message>
+        <message>
+            <source>The knots u₀ ≤ … ≤ uₙ₊ₚ₊₁: drag one (it never passes its neighbours), double-click to insert one, the badge is a knot&apos;s multiplicity. Bold: the domain [uₚ, uₙ₊₁]; yellow: the span that holds u.</source>
+            <translation>The knots u₀ ≤ … ≤ uₙ₊ₚ₊₁: drag one (it never passes its neighbours), double-click to insert one, the badge is a knot&apos;s multiplicity. Bold: the domain [uₚ, uₙ₊₁]; yellow: the span that holds u.</translation>
+        </message>
+        <message>
+            <source>The usual cubic Bézier quarter circle (1, 0), (1, k), (k, 1), (0, 1), k = 4(√2 − 1)/3, dashed: close to the circle but not on it (its radial error is in the exact panel); the rational quarter circle is exact.</source>
+            <translation>The usual cubic Bézier quarter circle (1, 0), (1, k), (k, 1), (0, 1), k = 4(√2 − 1)/3, dashed: close to the circle but not on it (its radial error is in the exact panel); the rational quarter circle is exact.</translation>
+        </message>
+        <message>
+            <source>This B-spline cannot be drawn: %1</source>
+            <translation>This B-spline cannot be drawn: %1</translation>
+        </message>
+        <message>
+            <source>Uniform cubic, closed on Ex 2.13&apos;s points</source>
+            <translation>Uniform cubic, closed on Ex 2.13&apos;s points</translation>
+        </message>
+        <message>
+            <source>Weights are numbers separated by commas, such as 1, 1, 2 or 1, 1/2, 1; empty for none.</source>
+            <translation>Weights are numbers separated by commas, such as 1, 1, 2 or 1, 1/2, 1; empty for none.</translation>
+        </message>
+        <message>
+            <source>Weights: %1</source>
+            <translation>Weights: %1</translation>
+        </message>
+        <message>
+            <source>broken</source>
+            <translation>broken</translation>
+        </message>
+        <message>
+            <source>c(u) = Σ N_{i,p}(u) P_i: the weight of each control point along the curve. N_{i,p} is zero outside [u_i, u_{i+p+1}) (local support), the functions add up to 1 on the domain (the dashed line), and at a knot of multiplicity m they are C^{p−m}.</source>
+            <translation>c(u) = Σ N_{i,p}(u) P_i: the weight of each control point along the curve. N_{i,p} is zero outside [u_i, u_{i+p+1}) (local support), the functions add up to 1 on the domain (the dashed line), and at a knot of multiplicity m they are C^{p−m}.</translation>
+        </message>
+        <message>
+            <source>clamped (open uniform)</source>
+            <translation>clamped (open uniform)</translation>
+        </message>
+        <message>
+            <source>continuity C&lt;sup&gt;p−m&lt;/sup&gt;</source>
+            <translation>continuity C&lt;sup&gt;p−m&lt;/sup&gt;</translation>
+        </message>
+        <message>
+            <source>de Boor&apos;s &amp;net at u</source>
+            <translation>de Boor&apos;s &amp;net at u</translation>
+        </message>
+        <message>
+            <source>de Boor&apos;s algorithm at u = %1</source>
+            <translation>de Boor&apos;s algorithm at u = %1</translation>
+        </message>
+        <message>
+            <source>de Boor&apos;s algorithm at u step by step: level r interpolates level r − 1, one colour per level as in the De Casteljau tab, from the span&apos;s p + 1 points down to c(u).</source>
+            <translation>de Boor&apos;s algorithm at u step by step: level r interpolates level r − 1, one colour per level as in the De Casteljau tab, from the span&apos;s p + 1 points down to c(u).</translation>
+        </message>
+        <message>
+            <source>degree %1 needs at least %2 points</source>
+            <translation>degree %1 needs at least %2 points</translation>
+        </message>
+        <message>
+            <source>edited</source>
+            <translation>edited</translation>
+        </message>
+        <message>
+            <source>knot</source>
+            <translation>knot</translation>
+        </message>
+        <message>
+            <source>level r</source>
+            <translation>level r</translation>
+        </message>
+        <message>
+            <source>multiplicity m</source>
+            <translation>multiplicity m</translation>
+        </message>
+        <message>
+            <source>non-zero on</source>
+            <translation>non-zero on</translation>
+        </message>
+        <message>
+            <source>none (polynomial)</source>
+            <translation>none (polynomial)</translation>
+        </message>
+        <message>
+            <source>outside or at an end</source>
+            <translation>outside or at an end</translation>
+        </message>
+        <message>
+            <source>points P&lt;sub&gt;j&lt;/sub&gt;&lt;sup&gt;r&lt;/sup&gt;</source>
+            <translation>points P&lt;sub&gt;j&lt;/sub&gt;&lt;sup&gt;r&lt;/sup&gt;</translation>
+        </message>
+        <message>
+            <source>u = %1 is a knot of multiplicity %2 already: once more would break the curve (at most p = %3 times).</source>
+            <translation>u = %1 is a knot of multiplicity %2 already: once more would break the curve (at most p = %3 times).</translation>
+        </message>
+        <message>
+            <source>u in the domain [uₚ, uₙ₊₁]: the point c(u) and de Boor&apos;s net there.</source>
+            <translation>u in the domain [uₚ, uₙ₊₁]: the point c(u) and de Boor&apos;s net there.</translation>
+        </message>
+        <message>
+            <source>uniform</source>
+            <translation>uniform</translation>
+        </message>
+        <message>
+            <source>value</source>
+            <translation>value</translation>
+        </message>
+        <message>
+            <source>Σ N&lt;sub&gt;i,p&lt;/sub&gt;(u) = %1: partition of unity</source>
+            <translation>Σ N&lt;sub&gt;i,p&lt;/sub&gt;(u) = %1: partition of unity</translation>
         </message>
     </context>
 </TS>
