@@ -417,6 +417,34 @@ private slots:
         QVERIFY2(check.error().message.find(message.toStdString()) != std::string::npos, check.error().message.c_str());
     }
 
+    // The refusals carry the sentence and its values for the GUI's translation (message_id.h):
+    // a knot that is a fraction keeps its exact text, whole numbers are numbers.
+    void messageIds()
+    {
+        BSplineCurve<Rational> c;
+        c.degree = 2;
+        for (int i = 0; i < 6; ++i)
+            c.points.emplace_back(Rational(i), Rational(0));
+        c.knots = {0, 0, 0, frac(1, 2), frac(1, 2), frac(1, 2), 1, 1, 1};
+        auto e = checkBSpline(c).error();
+        QCOMPARE(e.id, MessageId::BSplineInteriorMultiplicity);
+        QCOMPARE(e.args.size(), std::size_t(4));
+        QCOMPARE(e.args[0].text, std::string("1/2"));
+        QCOMPARE(e.args[1].number, std::optional<double>(3));
+        QCOMPARE(e.args[3].number, std::optional<double>(2));
+        c.knots.pop_back();
+        e = checkBSpline(c).error();
+        QCOMPARE(e.id, MessageId::BSplineKnotCount);
+        QCOMPARE(e.args[2].number, std::optional<double>(9));
+        QCOMPARE(e.args[3].number, std::optional<double>(8));
+        c.knots = {0, 0, 0, frac(1, 3), frac(2, 3), frac(3, 4), 1, 1, 1};
+        c.weights = {1, 1, 1, Rational(-2), 1, 1};
+        e = checkBSpline(c).error();
+        QCOMPARE(e.id, MessageId::BSplineWeightNotPositive);
+        QCOMPARE(e.args[0].number, std::optional<double>(3));
+        QCOMPARE(e.args[1].number, std::optional<double>(-2));
+    }
+
     // Non-finite doubles are refused, naming the value.
     void nonFinite()
     {

@@ -235,6 +235,13 @@ private slots:
                  std::string("the knot 0 has multiplicity 3; inserting it 1 more times would exceed the degree 2"));
         QCOMPARE(checkKnotInsertion(c, frac(1, 4), 0).error().message,
                  std::string("a knot is inserted at least once, not 0 times"));
+        // The GUI's sentences (message_id.h) and their values.
+        const auto outside = checkKnotInsertion(c, frac(3, 2), 1).error();
+        QCOMPARE(outside.id, MessageId::KnotOutsideDomain);
+        QCOMPARE(outside.args[0].text, std::string("3/2"));
+        QCOMPARE(outside.args[2].number, std::optional<double>(1));
+        QCOMPARE(checkKnotInsertion(c, frac(1, 2), 2).error().id, MessageId::KnotInsertionMultiplicity);
+        QCOMPARE(checkKnotInsertion(c, frac(1, 2), 0).error().id, MessageId::KnotInsertionTimes);
     }
 
     // Bézier extraction: one piece per non-empty span, covering the domain in order; each

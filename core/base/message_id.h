@@ -44,6 +44,22 @@ enum class MessageId {
     BezierOutlineTooCostly, ///< a Bézier outline of degree %1 at %2 points is %3 interpolations, more than %4
     BodiesDoNotFit,         ///< %1 bodies of radius %2 do not fit a %3 × %4 frame; %5 vertices piled, at most %6
     StableKnobOutOfRange,   ///< the stable solver's knob %1 out of its range
+    // A B-spline curve (core/curves/bsplines/). Knots and weights are quoted as written: a
+    // number, or a fraction's text when the curve is exact.
+    BSplineDegreeOutOfRange,     ///< the degree %1 is not from 1 to %2
+    BSplineTooFewPoints,         ///< degree %1 needs at least %2 control points, not %3
+    BSplineKnotCount,            ///< degree %1 with %2 points needs %3 knots, not %4
+    BSplineWeightCount,          ///< %1 control points need %1 weights, not %2
+    BSplineNotFinite,            ///< %1 (P_3, w_3 or u_3) is not finite
+    BSplineKnotsDecrease,        ///< u_%1 = %2 > u_%3 = %4
+    BSplineInteriorMultiplicity, ///< the knot %1 repeated %2 times inside; degree %3 allows %4
+    BSplineEndMultiplicity,      ///< the knot %1 repeated %2 times at an end; degree %3 allows %4
+    BSplineEmptyDomain,          ///< the domain [%1, %2] is empty
+    BSplineWeightNotPositive,    ///< w_%1 = %2 is not positive
+    KnotInsertionTimes,          ///< a knot inserted %1 times (at least once)
+    KnotOutsideDomain,           ///< the knot %1 outside the domain [%2, %3]
+    KnotInsertionMultiplicity,   ///< the knot %1 of multiplicity %2 inserted %3 more times exceeds the degree %4
+    BSplineCannotUnclamp,        ///< a rational B-spline whose floating ends would need a weight ≤ 0
 };
 
 /// A value an Error's sentence quotes: a number (shown with the interface's decimal sign) or

@@ -93,6 +93,42 @@ QString ErrorText::of(const Error& error)
                    .arg(StableSettings::kMaxSubsteps)
                    .arg(displayNumber(StableSettings::kMaxEdgeCompliance), displayNumber(StableSettings::kMaxEdgeDampingRatio));
         break;
+    case MessageId::BSplineDegreeOutOfRange:
+        text = tr("The degree of a B-spline must be from 1 to %2, not %1.").arg(a(0), a(1));
+        break;
+    case MessageId::BSplineTooFewPoints:
+        text = tr("A B-spline of degree %1 needs at least %2 control points, not %3.").arg(a(0), a(1), a(2));
+        break;
+    case MessageId::BSplineKnotCount:
+        text = tr("A B-spline of degree %1 with %2 control points needs %3 knots, not %4.").arg(a(0), a(1), a(2), a(3));
+        break;
+    case MessageId::BSplineWeightCount:
+        text = tr("A rational B-spline needs one weight per control point: %1 weights, not %2.").arg(a(0), a(1));
+        break;
+    case MessageId::BSplineNotFinite: text = tr("%1 is not a finite number.").arg(a(0)); break;
+    case MessageId::BSplineKnotsDecrease:
+        text = tr("The knots must not decrease: u_%1 = %2 is greater than u_%3 = %4.").arg(a(0), a(1), a(2), a(3));
+        break;
+    case MessageId::BSplineInteriorMultiplicity:
+        text = tr("The knot %1 is repeated %2 times; inside, a B-spline of degree %3 allows it at most %4 times.")
+                   .arg(a(0), a(1), a(2), a(3));
+        break;
+    case MessageId::BSplineEndMultiplicity:
+        text = tr("The knot %1 is repeated %2 times; at an end, a B-spline of degree %3 allows it at most %4 times.")
+                   .arg(a(0), a(1), a(2), a(3));
+        break;
+    case MessageId::BSplineEmptyDomain: text = tr("The domain [%1, %2] of the B-spline is empty.").arg(a(0), a(1)); break;
+    case MessageId::BSplineWeightNotPositive: text = tr("The weight w_%1 = %2 must be positive.").arg(a(0), a(1)); break;
+    case MessageId::KnotInsertionTimes: text = tr("A knot is inserted at least once, not %1 times.").arg(a(0)); break;
+    case MessageId::KnotOutsideDomain: text = tr("The knot %1 is outside the domain [%2, %3].").arg(a(0), a(1), a(2)); break;
+    case MessageId::KnotInsertionMultiplicity:
+        text = tr("The knot %1 already has multiplicity %2: inserting it %3 more times would exceed the degree %4.")
+                   .arg(a(0), a(1), a(2), a(3));
+        break;
+    case MessageId::BSplineCannotUnclamp:
+        text = tr("This rational B-spline cannot float its ends: every choice of outer knots tried needs a weight that "
+                  "is not positive.");
+        break;
     case MessageId::None:
         if (currentLanguage() == QLatin1String("en"))
             return QString::fromStdString(error.message); // the core's own English says most

@@ -131,8 +131,10 @@ template <class S> Expected<BSplineCurve<S>> unclampCurve(const BSplineCurve<S>&
         hFirst = S(hFirst / S(2));
         hLast = S(hLast / S(2));
     }
-    return makeError(ErrorCode::OutOfRange, "this rational B-spline cannot float its ends: every choice of outer "
-                                            "knots tried needs a weight that is not positive");
+    return makeError(ErrorCode::OutOfRange,
+                     "this rational B-spline cannot float its ends: every choice of outer knots tried needs a weight "
+                     "that is not positive",
+                     MessageId::BSplineCannotUnclamp, {});
 }
 
 } // namespace granota

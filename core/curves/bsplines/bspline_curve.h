@@ -43,6 +43,10 @@ template <class S> struct BSplineCurve {
 /// How a scalar is written in a message: "0.25" for a double, "1/4" for a Rational.
 std::string bsplineNumberText(double v);
 std::string bsplineNumberText(const Rational& v);
+/// The same value as an argument of a translated message (message_id.h): a number the GUI
+/// writes with its decimal sign, or a fraction's text.
+MessageArg bsplineNumberArg(double v);
+MessageArg bsplineNumberArg(const Rational& v);
 
 namespace detail {
 template <class S> bool finiteScalar(const S& v)
@@ -61,37 +65,52 @@ template <class S> bool finiteScalar(const S& v)
 /// ends), an empty domain [u_p, u_{n+1}], a weight ≤ 0.
 template <class S> Expected<void> checkBSpline(const BSplineCurve<S>& c)
 {
+    const auto num = [](std::size_t v) { return numberArg(static_cast<double>(v)); };
+    const auto idx = [](std::size_t i) { return std::to_string(i); };
     const int p = c.degree;
     if (p < 1 || p > kMaxBSplineDegree)
-        return makeError(ErrorCode::OutOfRange, "the degree of a B-spline must be from 1 to " +
-                                                    std::to_string(kMaxBSplineDegree) + ", not " + std::to_string(p));
+        return makeError(ErrorCode::OutOfRange,
+                         "the degree of a B-spline must be from 1 to " + std::to_string(kMaxBSplineDegree) + ", not " +
+                             std::to_string(p),
+                         MessageId::BSplineDegreeOutOfRange, {numberArg(p), numberArg(kMaxBSplineDegree)});
+    const auto P = static_cast<std::size_t>(p);
     const std::size_t count = c.points.size();
-    if (count < static_cast<std::size_t>(p) + 1)
-        return makeError(ErrorCode::TooFewPoints, "a B-spline of degree " + std::to_string(p) + " needs at least " +
-                                                      std::to_string(p + 1) + " control points, not " + std::to_string(count));
-    const std::size_t knotCount = count + static_cast<std::size_t>(p) + 1; // n + p + 2
+    if (count < P + 1)
+        return makeError(ErrorCode::TooFewPoints,
+                         "a B-spline of degree " + idx(P) + " needs at least " + idx(P + 1) + " control points, not " +
+                             idx(count),
+                         MessageId::BSplineTooFewPoints, {num(P), num(P + 1), num(count)});
+    const std::size_t knotCount = count + P + 1; // n + p + 2
     if (c.knots.size() != knotCount)
-        return makeError(ErrorCode::InvalidInput, "a B-spline of degree " + std::to_string(p) + " with " + std::to_string(count) +
-                                                      " control points needs n + p + 2 = " + std::to_string(knotCount) +
-                                                      " knots, not " + std::to_string(c.knots.size()));
+        return makeError(ErrorCode::InvalidInput,
+                         "a B-spline of degree " + idx(P) + " with " + idx(count) +
+                             " control points needs n + p + 2 = " + idx(knotCount) + " knots, not " + idx(c.knots.size()),
+                         MessageId::BSplineKnotCount, {num(P), num(count), num(knotCount), num(c.knots.size())});
     if (!c.weights.empty() && c.weights.size() != count)
         return makeError(ErrorCode::InvalidInput,
-                         "a rational B-spline needs one weight per control point: " + std::to_string(count) + " weights, not " +
-                             std::to_string(c.weights.size()));
+                         "a rational B-spline needs one weight per control point: " + idx(count) + " weights, not " +
+                             idx(c.weights.size()),
+                         MessageId::BSplineWeightCount, {num(count), num(c.weights.size())});
+    const auto notFinite = [](const std::string& what, const std::string& symbol) {
+        return makeError(ErrorCode::InvalidInput, what + " " + symbol + " is not finite", MessageId::BSplineNotFinite,
+                         {textArg(symbol)});
+    };
     for (std::size_t i = 0; i < count; ++i)
         if (!detail::finiteScalar(c.points[i].x) || !detail::finiteScalar(c.points[i].y))
-            return makeError(ErrorCode::InvalidInput, "control point P_" + std::to_string(i) + " is not finite");
+            return notFinite("control point", "P_" + idx(i));
     for (std::size_t i = 0; i < c.weights.size(); ++i)
         if (!detail::finiteScalar(c.weights[i]))
-            return makeError(ErrorCode::InvalidInput, "weight w_" + std::to_string(i) + " is not finite");
+            return notFinite("weight", "w_" + idx(i));
     for (std::size_t i = 0; i < knotCount; ++i)
         if (!detail::finiteScalar(c.knots[i]))
-            return makeError(ErrorCode::InvalidInput, "knot u_" + std::to_string(i) + " is not finite");
+            return notFinite("knot", "u_" + idx(i));
     for (std::size_t i = 0; i + 1 < knotCount; ++i)
         if (c.knots[i + 1] < c.knots[i])
-            return makeError(ErrorCode::NotIncreasing, "the knots must not decrease: u_" + std::to_string(i) + " = " +
-                                                           bsplineNumberText(c.knots[i]) + " > u_" + std::to_string(i + 1) +
-                                                           " = " + bsplineNumberText(c.knots[i + 1]));
+            return makeError(ErrorCode::NotIncreasing,
+                             "the knots must not decrease: u_" + idx(i) + " = " + bsplineNumberText(c.knots[i]) + " > u_" +
+                                 idx(i + 1) + " = " + bsplineNumberText(c.knots[i + 1]),
+                             MessageId::BSplineKnotsDecrease,
+                             {num(i), bsplineNumberArg(c.knots[i]), num(i + 1), bsplineNumberArg(c.knots[i + 1])});
     // Multiplicity: p inside keeps the curve continuous (C^{p−m} at a knot of multiplicity m);
     // p + 1 at an end clamps the curve to its end point.
     for (std::size_t i = 0; i < knotCount;) {
@@ -100,21 +119,26 @@ template <class S> Expected<void> checkBSpline(const BSplineCurve<S>& c)
             ++j;
         const std::size_t m = j - i;
         const bool end = i == 0 || j == knotCount;
-        const std::size_t allowed = end ? static_cast<std::size_t>(p) + 1 : static_cast<std::size_t>(p);
+        const std::size_t allowed = end ? P + 1 : P;
         if (m > allowed)
-            return makeError(ErrorCode::InvalidInput, "the knot " + bsplineNumberText(c.knots[i]) + " is repeated " +
-                                                          std::to_string(m) + " times; a B-spline of degree " +
-                                                          std::to_string(p) + " allows at most " + std::to_string(allowed) +
-                                                          (end ? " at an end" : " inside"));
+            return makeError(ErrorCode::InvalidInput,
+                             "the knot " + bsplineNumberText(c.knots[i]) + " is repeated " + idx(m) +
+                                 " times; a B-spline of degree " + idx(P) + " allows at most " + idx(allowed) +
+                                 (end ? " at an end" : " inside"),
+                             end ? MessageId::BSplineEndMultiplicity : MessageId::BSplineInteriorMultiplicity,
+                             {bsplineNumberArg(c.knots[i]), num(m), num(P), num(allowed)});
         i = j;
     }
     if (!(c.domainStart() < c.domainEnd()))
-        return makeError(ErrorCode::InvalidInput, "the domain [u_p, u_{n+1}] = [" + bsplineNumberText(c.domainStart()) + ", " +
-                                                      bsplineNumberText(c.domainEnd()) + "] is empty");
+        return makeError(ErrorCode::InvalidInput,
+                         "the domain [u_p, u_{n+1}] = [" + bsplineNumberText(c.domainStart()) + ", " +
+                             bsplineNumberText(c.domainEnd()) + "] is empty",
+                         MessageId::BSplineEmptyDomain, {bsplineNumberArg(c.domainStart()), bsplineNumberArg(c.domainEnd())});
     for (std::size_t i = 0; i < c.weights.size(); ++i)
         if (!(c.weights[i] > S(0)))
             return makeError(ErrorCode::OutOfRange,
-                             "weight w_" + std::to_string(i) + " = " + bsplineNumberText(c.weights[i]) + " must be positive");
+                             "weight w_" + idx(i) + " = " + bsplineNumberText(c.weights[i]) + " must be positive",
+                             MessageId::BSplineWeightNotPositive, {num(i), bsplineNumberArg(c.weights[i])});
     return {};
 }
 

@@ -26,17 +26,22 @@ namespace granota {
 template <class S> Expected<void> checkKnotInsertion(const BSplineCurve<S>& c, const S& u, int times)
 {
     if (times < 1)
-        return makeError(ErrorCode::OutOfRange, "a knot is inserted at least once, not " + std::to_string(times) + " times");
+        return makeError(ErrorCode::OutOfRange, "a knot is inserted at least once, not " + std::to_string(times) + " times",
+                         MessageId::KnotInsertionTimes, {numberArg(times)});
     if (u < c.domainStart() || c.domainEnd() < u)
-        return makeError(ErrorCode::OutOfRange, "the knot " + bsplineNumberText(u) + " is outside the domain [" +
-                                                    bsplineNumberText(c.domainStart()) + ", " + bsplineNumberText(c.domainEnd()) +
-                                                    "]");
+        return makeError(ErrorCode::OutOfRange,
+                         "the knot " + bsplineNumberText(u) + " is outside the domain [" + bsplineNumberText(c.domainStart()) +
+                             ", " + bsplineNumberText(c.domainEnd()) + "]",
+                         MessageId::KnotOutsideDomain,
+                         {bsplineNumberArg(u), bsplineNumberArg(c.domainStart()), bsplineNumberArg(c.domainEnd())});
     const auto range = std::equal_range(c.knots.begin(), c.knots.end(), u);
     const int s = static_cast<int>(range.second - range.first);
     if (s + times > c.degree)
-        return makeError(ErrorCode::OutOfRange, "the knot " + bsplineNumberText(u) + " has multiplicity " + std::to_string(s) +
-                                                    "; inserting it " + std::to_string(times) +
-                                                    " more times would exceed the degree " + std::to_string(c.degree));
+        return makeError(ErrorCode::OutOfRange,
+                         "the knot " + bsplineNumberText(u) + " has multiplicity " + std::to_string(s) + "; inserting it " +
+                             std::to_string(times) + " more times would exceed the degree " + std::to_string(c.degree),
+                         MessageId::KnotInsertionMultiplicity,
+                         {bsplineNumberArg(u), numberArg(s), numberArg(times), numberArg(c.degree)});
     return {};
 }
 
