@@ -57,6 +57,9 @@ private slots:
         QVERIFY(std::abs(twice / small - 2) < 1e-9);
         QVERIFY(deCasteljauExactWork(100, 0, 1000) < small / 7); // ≈ 1/8 at half the degree
         QVERIFY(bernsteinExactWork(200, 3) < deCasteljauExactWork(200, 3, 3));
+        // With weights: the same triangle on three homogeneous coordinates whose bits are the
+        // points' plus the weights', each level divided by its weights (exact_cost.h): 3 times.
+        QCOMPARE(rationalDeCasteljauExactWork(50, 10, 6, 20), 3 * deCasteljauExactWork(50, 16, 20));
         // The fit grows faster than the cube of the degree.
         std::vector<Rational> t;
         for (int i = 0; i <= 200; ++i)
@@ -73,6 +76,13 @@ private slots:
             << QStringList{"bernstein", "--degree", "200", "--t", "1e10000", "--exact"} << "Bernstein values";
         QTest::newRow("bezier 201 points at 1e1000")
             << QStringList{"bezier", "--points", smallPoints(201), "--t", "1e1000", "--exact"} << "De Casteljau triangle";
+        QTest::newRow("bezier --weights 201 points at 1e-1000")
+            << QStringList{"bezier", "--points", smallPoints(201), "--weights", QString("1,").repeated(200) + "2",
+                           "--t",    "1e-1000",  "--exact"}
+            << "De Casteljau triangle with weights";
+        QTest::newRow("bspline 1500 points of degree 10 to Bezier")
+            << QStringList{"bspline", "--points", smallPoints(1500), "--degree", "10", "--to-bezier", "--exact"}
+            << "B-spline computation";
         QTest::newRow("fit degree 100 on 201 points")
             << QStringList{"fit", "--points", smallPoints(201), "--degree", "100", "--exact"} << "fit";
     }
