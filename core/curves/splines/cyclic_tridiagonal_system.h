@@ -34,8 +34,8 @@ std::optional<std::vector<S>> solveCyclicTridiagonal(std::vector<S> sub, std::ve
 {
     const std::size_t n = diag.size();
     assert(n >= 3 && sub.size() == n && super.size() == n && rhs.size() == n);
-    const S beta = sub[0];         // A[0][n−1]
-    const S alpha = super[n - 1];  // A[n−1][0]
+    const S beta = sub[0];        // A[0][n−1]
+    const S alpha = super[n - 1]; // A[n−1][0]
     // γ = −diag[0] keeps T's first pivot 2·diag[0] (no cancellation); any γ ≠ 0 is correct.
     const S gamma = diag[0] == S(0) ? S(1) : S(-diag[0]);
     diag[0] = S(diag[0] - gamma);

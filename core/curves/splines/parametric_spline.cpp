@@ -9,9 +9,8 @@ constexpr std::array<EnumName<ParametricEnds>, 4> kParametricEndsNames{{{Paramet
                                                                         {ParametricEnds::Clamped, "clamped"},
                                                                         {ParametricEnds::NotAKnot, "not-a-knot"},
                                                                         {ParametricEnds::Periodic, "periodic"}}};
-constexpr std::array<EnumName<SplineParameters>, 3> kSplineParametersNames{{{SplineParameters::Uniform, "uniform"},
-                                                                            {SplineParameters::Chord, "chord"},
-                                                                            {SplineParameters::Centripetal, "centripetal"}}};
+constexpr std::array<EnumName<SplineParameters>, 3> kSplineParametersNames{
+    {{SplineParameters::Uniform, "uniform"}, {SplineParameters::Chord, "chord"}, {SplineParameters::Centripetal, "centripetal"}}};
 } // namespace
 
 std::string_view parametricEndsName(ParametricEnds ends) { return nameOf(kParametricEndsNames, ends, "natural"); }
@@ -43,9 +42,8 @@ Error parametricTooFewPoints(ParametricEnds ends, std::size_t count)
 {
     return makeError(ErrorCode::TooFewPoints, std::string(ends == ParametricEnds::Periodic ? "A closed" : "An open") +
                                                   " C² spline with " + std::string(parametricEndsName(ends)) +
-                                                  " ends needs at least " +
-                                                  std::to_string(parametricSplineMinimumPoints(ends)) + " points (got " +
-                                                  std::to_string(count) + ").");
+                                                  " ends needs at least " + std::to_string(parametricSplineMinimumPoints(ends)) +
+                                                  " points (got " + std::to_string(count) + ").");
 }
 
 Error parametricRepeatedPoint(std::size_t index, std::size_t next, SplineParameters parameters)
@@ -57,9 +55,8 @@ Error parametricRepeatedPoint(std::size_t index, std::size_t next, SplineParamet
 
 Error parametricIrrationalLength(std::size_t index, std::size_t next, SplineParameters parameters)
 {
-    return makeError(ErrorCode::NotRational, "The " + std::string(splineParametersName(parameters)) +
-                                                 " parameter step from P_" + std::to_string(index) + " to P_" +
-                                                 std::to_string(next) +
+    return makeError(ErrorCode::NotRational, "The " + std::string(splineParametersName(parameters)) + " parameter step from P_" +
+                                                 std::to_string(index) + " to P_" + std::to_string(next) +
                                                  " is not a rational number: exact values need uniform parameters here.");
 }
 
@@ -74,9 +71,9 @@ Error parametricOverflow()
 
 // Def 2.1 in the plane, compiled once for doubles (drawing) and Rational (exact panels).
 template Expected<ParametricSpline<double>> parametricSpline(const std::vector<Vec2<double>>&, ParametricEnds, SplineParameters,
-                                                            std::optional<Vec2<double>>, std::optional<Vec2<double>>);
+                                                             std::optional<Vec2<double>>, std::optional<Vec2<double>>);
 template Expected<ParametricSpline<Rational>> parametricSpline(const std::vector<Vec2<Rational>>&, ParametricEnds,
-                                                              SplineParameters, std::optional<Vec2<Rational>>,
-                                                              std::optional<Vec2<Rational>>);
+                                                               SplineParameters, std::optional<Vec2<Rational>>,
+                                                               std::optional<Vec2<Rational>>);
 
 } // namespace granota

@@ -138,10 +138,10 @@ Expected<std::vector<S>> splineKnots(const std::vector<Vec2<S>>& points, SplineP
 /// parameters; a point or tangent not finite), NotRational (an irrational length over
 /// Rational), Singular, OutOfRange (overflow, doubles only).
 template <class S>
-Expected<ParametricSpline<S>> parametricSpline(const std::vector<Vec2<S>>& points, ParametricEnds ends,
-                                               SplineParameters parameters,
-                                               std::optional<Vec2<typename detail::TypeIdentity<S>::type>> startTangent = std::nullopt,
-                                               std::optional<Vec2<typename detail::TypeIdentity<S>::type>> endTangent = std::nullopt)
+Expected<ParametricSpline<S>> parametricSpline(
+    const std::vector<Vec2<S>>& points, ParametricEnds ends, SplineParameters parameters,
+    std::optional<Vec2<typename detail::TypeIdentity<S>::type>> startTangent = std::nullopt,
+    std::optional<Vec2<typename detail::TypeIdentity<S>::type>> endTangent = std::nullopt)
 {
     constexpr bool floating = std::is_floating_point_v<S>;
     const std::size_t count = points.size();
@@ -222,8 +222,10 @@ Expected<ParametricSpline<S>> parametricSpline(const std::vector<Vec2<S>>& point
         }
         const auto mx = solveCyclicTridiagonal(sub, diag, super, std::move(rhsX));
         const auto my = solveCyclicTridiagonal(std::move(sub), std::move(diag), std::move(super), std::move(rhsY));
+        // The rows are strictly diagonally dominant (2(h_{i−1} + h_i) > h_{i−1} + h_i): in
+        // floating point only an overflow fails the solve.
         if (!mx || !my)
-            return detail::parametricSingular();
+            return floating ? detail::parametricOverflow() : detail::parametricSingular();
         for (std::size_t i = 0; i < n; ++i) {
             const std::size_t next = (i + 1) % n;
             const S h2 = S(h[i] * h[i]);
