@@ -133,7 +133,8 @@ private slots:
         // gives right sides 12, 0, −12, 0; symmetry M_1 = M_3 = 0, so M_0 = 3, M_2 = −3.
         // Segment 0: c_1 = (x_1 − x_0) − (2M_0 + M_1)/6 = 0, c_2 = M_0/2 = 3/2, c_3 = (M_1 − M_0)/6 = −1/2.
         // y = 0, 1, 0, −1 is x turned by a quarter: M^y = 0, 3, 0, −3.
-        const auto s = parametricSpline(pts({{0, 0}, {1, 1}, {2, 0}, {1, -1}}), ParametricEnds::Periodic, SplineParameters::Uniform);
+        const auto s = parametricSpline(pts({{0, 0}, {1, 1}, {2, 0}, {1, -1}}), ParametricEnds::Periodic,
+                                        SplineParameters::Uniform);
         QVERIFY(s.ok());
         QCOMPARE(s->segments[0][0], RV(q(0), q(0)));
         QCOMPARE(s->segments[0][1], RV(q(0), q(3, 2)));
@@ -275,8 +276,8 @@ private slots:
     {
         const auto one = parametricSpline(std::vector<Point>{{0, 0}}, ParametricEnds::Natural, SplineParameters::Uniform);
         QCOMPARE(one.error().code, ErrorCode::TooFewPoints);
-        const auto two =
-            parametricSpline(std::vector<Point>{{0, 0}, {1, 0}}, ParametricEnds::Periodic, SplineParameters::Uniform);
+        const auto two = parametricSpline(std::vector<Point>{{0, 0}, {1, 0}}, ParametricEnds::Periodic,
+                                          SplineParameters::Uniform);
         QCOMPARE(two.error().code, ErrorCode::TooFewPoints);
         QVERIFY(two.error().message.find("at least 3") != std::string::npos);
         const std::vector<Point> repeated{{0, 0}, {1, 1}, {1, 1}, {2, 0}};
@@ -294,14 +295,14 @@ private slots:
         const auto noTangent = parametricSpline(repeated, ParametricEnds::Clamped, SplineParameters::Uniform, Point(1, 0));
         QCOMPARE(noTangent.error().code, ErrorCode::InvalidInput);
         const double nan = std::numeric_limits<double>::quiet_NaN();
-        const auto notFinite =
-            parametricSpline(std::vector<Point>{{0, 0}, {nan, 1}, {2, 0}}, ParametricEnds::Natural, SplineParameters::Uniform);
+        const auto notFinite = parametricSpline(std::vector<Point>{{0, 0}, {nan, 1}, {2, 0}}, ParametricEnds::Natural,
+                                                SplineParameters::Uniform);
         QCOMPARE(notFinite.error().code, ErrorCode::InvalidInput);
-        const auto badTangent =
-            parametricSpline(repeated, ParametricEnds::Clamped, SplineParameters::Uniform, Point(nan, 0), Point(0, 0));
+        const auto badTangent = parametricSpline(repeated, ParametricEnds::Clamped, SplineParameters::Uniform, Point(nan, 0),
+                                                 Point(0, 0));
         QCOMPARE(badTangent.error().code, ErrorCode::InvalidInput);
-        const auto huge = parametricSpline(std::vector<Point>{{0, 0}, {1e308, 1e308}, {-1e308, 1e308}},
-                                           ParametricEnds::Periodic, SplineParameters::Uniform);
+        const auto huge = parametricSpline(std::vector<Point>{{0, 0}, {1e308, 1e308}, {-1e308, 1e308}}, ParametricEnds::Periodic,
+                                           SplineParameters::Uniform);
         QCOMPARE(huge.error().code, ErrorCode::OutOfRange);
     }
 
