@@ -31,7 +31,8 @@ class TestCliSplineModes : public QObject {
 private slots:
     void periodicDiamondExactly()
     {
-        const CliRun r = runCli({"spline", "--points", "0,0;1,1;2,0;1,-1", "--parametric", "--ends", "periodic", "--exact", "--json"});
+        const CliRun r = runCli(
+            {"spline", "--points", "0,0;1,1;2,0;1,-1", "--parametric", "--ends", "periodic", "--exact", "--json"});
         QCOMPARE(r.exitCode, 0);
         const QJsonObject j = r.json();
         QCOMPARE(j["ends"].toString(), QString("periodic"));
@@ -84,8 +85,8 @@ private slots:
         QCOMPARE(pieces[0].toObject()["to"].toDouble(), 100.0);
         QVERIFY(std::abs(p0[0].toDouble() - 224) < 1e-12 && std::abs(p0[1].toDouble()) < 1e-12);
         QVERIFY(std::abs(p0[2].toDouble() + 0.0024) < 1e-15 && std::abs(p0[3].toDouble()) < 1e-15);
-        QCOMPARE(strings(j["monotonicity"]), (QStringList{"decreasing", "decreasing", "increasing", "decreasing",
-                                                          "increasing", "increasing"}));
+        QCOMPARE(strings(j["monotonicity"]),
+                 (QStringList{"decreasing", "decreasing", "increasing", "decreasing", "increasing", "increasing"}));
         const CliRun fc = runCli({"spline", "--points", kD3Issue38, "--monotone", "fritsch-carlson"});
         QCOMPARE(fc.exitCode, 0);
         QVERIFY2(fc.out.contains("proven from its Bernstein coefficients") && !fc.out.contains("not monotone"),
@@ -97,20 +98,20 @@ private slots:
         QTest::addColumn<QStringList>("args");
         QTest::addColumn<QString>("says");
         const QStringList p{"spline", "--points", "0,0;1,1;2,0"};
-        QTest::newRow("periodic, 2 points")
-            << QStringList{"spline", "--points", "0,0;1,1", "--parametric", "--ends", "periodic"} << "at least 3 points";
+        QTest::newRow("periodic, 2 points") << QStringList{"spline", "--points", "0,0;1,1", "--parametric", "--ends", "periodic"}
+                                            << "at least 3 points";
         QTest::newRow("repeated point, chord")
             << QStringList{"spline", "--points", "0,0;1,1;1,1", "--parametric", "--param", "chord"} << "coincide";
         QTest::newRow("closing point repeated, centripetal")
-            << QStringList{"spline", "--points", "0,0;1,1;2,0;0,0", "--parametric", "--ends", "periodic", "--param",
-                           "centripetal"}
+            << QStringList{"spline", "--points", "0,0;1,1;2,0;0,0", "--parametric",
+                           "--ends", "periodic", "--param",         "centripetal"}
             << "coincide";
-        QTest::newRow("irrational chord, exact") << p + QStringList{"--parametric", "--param", "chord", "--exact"}
-                                                 << "not a rational number";
+        QTest::newRow("irrational chord, exact")
+            << p + QStringList{"--parametric", "--param", "chord", "--exact"} << "not a rational number";
         QTest::newRow("clamped without tangents") << p + QStringList{"--parametric", "--ends", "clamped"} << "both end tangents";
         QTest::newRow("tangent with natural ends")
             << p + QStringList{"--parametric", "--start-tangent", "1,0", "--end-tangent", "1,0"} << "--ends clamped";
-        QTest::newRow("bad tangent") << p + QStringList{"--parametric", "--ends", "clamped", "--start-tangent", "1",
+        QTest::newRow("bad tangent") << p + QStringList{"--parametric",  "--ends", "clamped", "--start-tangent", "1",
                                                         "--end-tangent", "1,0"}
                                      << "one vector";
         QTest::newRow("slopes with parametric")

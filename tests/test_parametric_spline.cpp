@@ -145,6 +145,44 @@ private slots:
         QCOMPARE(s->segments[3][2], RV(q(0), q(3, 2)));
     }
 
+    void periodicChordAgreesWithScipy()
+    {
+        // scipy 1.10: CubicSpline(u, P + [P_0], bc_type='periodic', axis=0) with u the
+        // cumulative chord lengths; its c[3 − k, i]·h_i^k are the local-s coefficients below.
+        const std::vector<Point> points{{0, 0}, {2, 1}, {3, 3}, {1, 4}, {-1, 2}};
+        const double expected[5][4][2] = {
+            {{0, 0},
+             {1.8011680308555793, -0.60841314763186383},
+             {0.44585265909477056, 2.2650150160696572},
+             {-0.24702068995034973, -0.65660186843779322}},
+            {{2, 1},
+             {1.9518112791940709, 1.9518112791940707},
+             {-0.29520941075627838, 0.2952094107562796},
+             {-0.65660186843779256, -0.2470206899503502}},
+            {{3, 3},
+             {-0.6084131476318636, 1.8011680308555793},
+             {-2.2650150160696572, -0.4458526590947709},
+             {0.87342816370152043, -0.35531537176080846}},
+            {{1, 4},
+             {-3.1852467863717364, -0.19793758731237485},
+             {0.56843116005584715, -2.4188780390035154},
+             {0.61681562631588904, 0.61681562631588982}},
+            {{-1, 2},
+             {-0.15648340261638788, -2.5181586886666159},
+             {1.5117987743771968, -0.35526947503490458},
+             {-0.35531537176080868, 0.87342816370152043}},
+        };
+        const auto s = parametricSpline(points, ParametricEnds::Periodic, SplineParameters::Chord);
+        QVERIFY(s.ok());
+        QCOMPARE(s->segments.size(), std::size_t(5));
+        for (std::size_t i = 0; i < 5; ++i)
+            for (std::size_t k = 0; k < 4; ++k) {
+                // Coefficients of size ≤ 4 from two different solvers: agreement to 1e-12.
+                QVERIFY(std::abs(s->segments[i][k].x - expected[i][k][0]) < 1e-12);
+                QVERIFY(std::abs(s->segments[i][k].y - expected[i][k][1]) < 1e-12);
+            }
+    }
+
     void clampedEndsGiveTheAskedTangents_data()
     {
         QTest::addColumn<int>("parameters");

@@ -22,8 +22,8 @@ Expected<std::optional<RPoint>> tangentOption(const Arguments& args, const std::
         return std::optional<RPoint>();
     auto parsed = parsePointList(*text);
     if (!parsed || parsed->size() != 1)
-        return makeError(ErrorCode::InvalidInput, "--" + name + " takes one vector \"x,y\"" +
-                                                      (parsed ? std::string() : ": " + parsed.error().message));
+        return makeError(ErrorCode::InvalidInput,
+                         "--" + name + " takes one vector \"x,y\"" + (parsed ? std::string() : ": " + parsed.error().message));
     return std::optional<RPoint>(parsed->front());
 }
 
@@ -66,7 +66,8 @@ Expected<CommandOutput> runParametricSpline(const Arguments& args)
     if (ends != ParametricEnds::Clamped && tangentsGiven)
         return makeError(ErrorCode::InvalidInput, "--start-tangent and --end-tangent are the tangents of --ends clamped");
     if (ends == ParametricEnds::Clamped && !(args.has("start-tangent") && args.has("end-tangent")))
-        return makeError(ErrorCode::InvalidInput, "--ends clamped needs both end tangents: --start-tangent x,y --end-tangent x,y");
+        return makeError(ErrorCode::InvalidInput,
+                         "--ends clamped needs both end tangents: --start-tangent x,y --end-tangent x,y");
     auto start = tangentOption(args, "start-tangent");
     if (!start)
         return start.error();
@@ -89,7 +90,8 @@ Expected<CommandOutput> runParametricSpline(const Arguments& args)
         for (const auto* t : {&*start, &*end})
             if (t->has_value())
                 bits = std::max({bits, bitLength((*t)->x), bitLength((*t)->y)});
-        const double work = 4 * cubicSplineExactWork(static_cast<int>(points->size()), parameters == SplineParameters::Uniform ? 1 : bits, bits);
+        const double work = 4 * cubicSplineExactWork(static_cast<int>(points->size()),
+                                                     parameters == SplineParameters::Uniform ? 1 : bits, bits);
         if (!exactWorkAllowed(work))
             return makeError(ErrorCode::OutOfRange,
                              exactWorkRefusal("parametric spline", work, "the number of points or their digits"));

@@ -180,8 +180,7 @@ std::vector<MonotonePieceProof> proveMonotone(const std::vector<Vec2<double>>& d
     assert(data.size() == slopes.size());
     std::vector<MonotonePieceProof> proofs;
     for (std::size_t i = 0; i + 1 < data.size(); ++i)
-        proofs.push_back(
-            proveMonotonePiece(data[i].y, data[i + 1].y, slopes[i], slopes[i + 1], data[i + 1].x - data[i].x));
+        proofs.push_back(proveMonotonePiece(data[i].y, data[i + 1].y, slopes[i], slopes[i + 1], data[i + 1].x - data[i].x));
     return proofs;
 }
 
