@@ -220,16 +220,20 @@ Expected<ParametricSpline<S>> parametricSpline(
             rhsX[i] = S(S(6) * S(delta[i].x - delta[before].x));
             rhsY[i] = S(S(6) * S(delta[i].y - delta[before].y));
         }
-        const auto mx = solveCyclicTridiagonal(sub, diag, super, std::move(rhsX));
-        const auto my = solveCyclicTridiagonal(std::move(sub), std::move(diag), std::move(super), std::move(rhsY));
+        std::vector<std::vector<S>> rightSides;
+        rightSides.push_back(std::move(rhsX));
+        rightSides.push_back(std::move(rhsY));
+        const auto solved = solveCyclicTridiagonal(std::move(sub), std::move(diag), std::move(super), std::move(rightSides));
         // The rows are strictly diagonally dominant (2(h_{i−1} + h_i) > h_{i−1} + h_i): in
         // floating point only an overflow fails the solve.
-        if (!mx || !my)
+        if (!solved)
             return floating ? detail::parametricOverflow() : detail::parametricSingular();
+        const std::vector<S>& mx = (*solved)[0];
+        const std::vector<S>& my = (*solved)[1];
         for (std::size_t i = 0; i < n; ++i) {
             const std::size_t next = (i + 1) % n;
             const S h2 = S(h[i] * h[i]);
-            const Vec2<S> m0((*mx)[i], (*my)[i]), m1((*mx)[next], (*my)[next]);
+            const Vec2<S> m0(mx[i], my[i]), m1(mx[next], my[next]);
             const Vec2<S> chord = points[next] - points[i];
             std::array<Vec2<S>, 4> c;
             c[0] = points[i];
