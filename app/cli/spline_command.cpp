@@ -3,10 +3,10 @@
 // in powers of x as Ex 2.1 prints them.
 #include "app/cli/command.h"
 #include "app/cli/finite_doubles.h"
+#include "app/cli/spline_modes.h"
 
 #include "core/curves/splines/cubic_spline.h"
 #include "core/exact/exact_cost.h"
-#include "core/exact/polynomial_text.h"
 
 #include <sstream>
 
@@ -14,41 +14,18 @@ namespace granota::cli {
 
 namespace {
 
-template <class S> Json knotNumber(const S& x, bool exact)
-{
-    if constexpr (std::is_same_v<S, Rational>)
-        return number(x, exact);
-    else
-        return number(x);
-}
-
-template <class S> std::string knotText(const S& x)
-{
-    if constexpr (std::is_same_v<S, Rational>)
-        return toString(x);
-    else
-        return formatDouble(x);
-}
-
-/// The pieces s_1 … s_k (Def 2.3's numbering) in powers of x, as JSON and as text.
-template <class S> void describe(const PiecewisePolynomial<S>& spline, bool exact, CommandOutput& out, std::ostringstream& txt)
-{
-    Json pieces = Json::array();
-    for (int i = 0; i < spline.pieceCount(); ++i) {
-        const Polynomial<S> global = spline.globalPiece(i);
-        const auto& from = spline.knots[static_cast<std::size_t>(i)];
-        const auto& to = spline.knots[static_cast<std::size_t>(i) + 1];
-        Json piece = Json::object();
-        piece.set("from", knotNumber(from, exact)).set("to", knotNumber(to, exact)).set("poly", cubicCoefficients(global, exact));
-        pieces.push(std::move(piece));
-        txt << "  s_" << i + 1 << "(x) = " << toText(global, "x") << "   x ∈ [" << knotText(from) << ", " << knotText(to)
-            << (i + 1 < spline.pieceCount() ? ")" : "]") << "\n";
-    }
-    out.json.set("pieces", std::move(pieces));
-}
-
 Expected<CommandOutput> run(const Arguments& args)
 {
+    const bool parametric = args.flag("parametric"), monotone = args.has("monotone");
+    if (parametric && monotone)
+        return makeError(ErrorCode::InvalidInput, "give either --parametric or --monotone, not both");
+    if (parametric)
+        return runParametricSpline(args);
+    if (monotone)
+        return runMonotoneSpline(args);
+    for (const char* option : {"param", "start-tangent", "end-tangent"})
+        if (args.has(option))
+            return makeError(ErrorCode::InvalidInput, std::string("--") + option + " is an option of --parametric");
     auto points = args.points();
     if (!points)
         return points.error();
@@ -86,7 +63,7 @@ Expected<CommandOutput> run(const Arguments& args)
         auto spline = cubicSpline(*points, SplineEndConditions<Rational>{ends, *start, *end});
         if (!spline)
             return spline.error();
-        describe(*spline, true, out, txt);
+        describePieces(*spline, true, out, txt);
     } else {
         auto doublePoints = finiteDoubles(*points, true);
         if (!doublePoints)
@@ -101,7 +78,7 @@ Expected<CommandOutput> run(const Arguments& args)
         if (!spline)
             return spline.error().code == ErrorCode::OutOfRange ? tooLargeForDouble("the cubic spline of these points", true)
                                                                 : spline.error();
-        describe(*spline, false, out, txt);
+        describePieces(*spline, false, out, txt);
     }
     out.text = txt.str();
     return out;
@@ -113,10 +90,15 @@ Command splineCommand()
 {
     return {"spline",
             "--points P | --points-file F  [--ends natural|clamped|not-a-knot|ex-2.1] [--start-slope A --end-slope B] "
-            "[--exact] [--json]",
+            "[--exact] [--json]  |  --parametric [--ends natural|clamped|not-a-knot|periodic] [--start-tangent x,y "
+            "--end-tangent x,y] [--param uniform|chord|centripetal] [--exact] [--json]  |  --monotone "
+            "fritsch-carlson|steffen [--json]",
             "the cubic spline of Def 2.3 through (x_i, y_i) with its end conditions, each piece in powers of x (Ex 2.1: "
-            "--ends ex-2.1)",
-            {{"points", "points-file", "ends", "start-slope", "end-slope"}, {"exact", "json"}, {}},
+            "--ends ex-2.1); --parametric: the C² spline through points of the plane (Def 2.1); --monotone: a C¹ "
+            "cubic that never overshoots the data",
+            {{"points", "points-file", "ends", "start-slope", "end-slope", "param", "start-tangent", "end-tangent", "monotone"},
+             {"exact", "json", "parametric"},
+             {}},
             &run};
 }
 
