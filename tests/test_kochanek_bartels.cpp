@@ -253,7 +253,8 @@ private slots:
         const auto b = kochanekBartels(toDouble(r), approx, CatmullRomMode::Cyclic);
         QVERIFY(a.ok() && b.ok());
         for (std::size_t i = 0; i < a->tangents.size(); ++i)
-            for (const auto& [e, v] : {std::pair{a->tangents[i].in, b->tangents[i].in}, std::pair{a->tangents[i].out, b->tangents[i].out}}) {
+            for (const auto& [e, v] :
+                 {std::pair{a->tangents[i].in, b->tangents[i].in}, std::pair{a->tangents[i].out, b->tangents[i].out}}) {
                 QVERIFY(std::abs(e.x.get_d() - v.x) <= 1e-12 * (1 + std::abs(v.x)));
                 QVERIFY(std::abs(e.y.get_d() - v.y) <= 1e-12 * (1 + std::abs(v.y)));
             }
@@ -268,7 +269,8 @@ private slots:
         QCOMPARE(kochanekBartels(q, {}, CatmullRomMode::Open).error().code, ErrorCode::InvalidInput);
         QCOMPARE(kochanekBartels(testing::pts({{0, 0}, {1, 1}}), {tcb(0, 0, 0)}, CatmullRomMode::Cyclic).error().code,
                  ErrorCode::TooFewPoints);
-        QCOMPARE(kochanekBartels(testing::pts({{0, 0}}), {tcb(0, 0, 0)}, CatmullRomMode::Open).error().code, ErrorCode::TooFewPoints);
+        QCOMPARE(kochanekBartels(testing::pts({{0, 0}}), {tcb(0, 0, 0)}, CatmullRomMode::Open).error().code,
+                 ErrorCode::TooFewPoints);
         QCOMPARE(kochanekBartels(q, {tcb(0, 0, 0)}, CatmullRomMode::Open, 0.5).error().code, ErrorCode::NotRational);
         // T beyond [−1, 1] is still a Catmull-Rom tension (τ = (1 − T)/2): accepted.
         QVERIFY(kochanekBartels(q, {tcb(5, 1, -1)}, CatmullRomMode::Open).ok());

@@ -32,7 +32,9 @@ template <class S> bool finite(const Vec2<S>& v) { return finite(v.x) && finite(
 template <class S> Expected<bool> checkKnot(const TcbKnot<S>& k, std::size_t index, bool shared)
 {
     const std::string where = shared ? std::string() : " at point " + std::to_string(index);
-    const std::pair<const char*, const S*> values[] = {{"tension T", &k.tension}, {"continuity C", &k.continuity}, {"bias B", &k.bias}};
+    const std::pair<const char*, const S*> values[] = {{"tension T", &k.tension},
+                                                       {"continuity C", &k.continuity},
+                                                       {"bias B", &k.bias}};
     for (const auto& [name, value] : values)
         if (!finite(*value))
             return makeError(ErrorCode::InvalidInput, std::string("The ") + name + where + " is not a finite number.");
@@ -51,8 +53,9 @@ Expected<KochanekBartelsCurve<S>> kochanekBartels(const std::vector<Vec2<S>>& po
 {
     constexpr bool exact = std::is_same_v<S, Rational>;
     if (!(alpha >= 0.0 && alpha <= 1.0)) // also rejects NaN
-        return makeError(ErrorCode::OutOfRange, "The parametrization exponent α must lie between 0 (uniform) and 1 (chordal); got " +
-                                                    formatDouble(alpha) + ".");
+        return makeError(ErrorCode::OutOfRange,
+                         "The parametrization exponent α must lie between 0 (uniform) and 1 (chordal); got " +
+                             formatDouble(alpha) + ".");
     if (exact && alpha != 0.0)
         return makeError(ErrorCode::NotRational,
                          "An exact Kochanek–Bartels curve needs α = 0: centripetal and chordal knots are powers of distances.");
@@ -65,7 +68,8 @@ Expected<KochanekBartelsCurve<S>> kochanekBartels(const std::vector<Vec2<S>>& po
                                                       " points (got " + std::to_string(count) + ").");
     for (std::size_t i = 0; i < count; ++i)
         if (!finite(points[i]))
-            return makeError(ErrorCode::InvalidInput, "Point " + std::to_string(i) + " is not a finite number (NaN or infinity).");
+            return makeError(ErrorCode::InvalidInput,
+                             "Point " + std::to_string(i) + " is not a finite number (NaN or infinity).");
     if (perPoint.size() != 1 && perPoint.size() != count)
         return makeError(ErrorCode::InvalidInput, "Give one tension, continuity and bias for all points or one per point (" +
                                                       std::to_string(count) + "), not " + std::to_string(perPoint.size()) + ".");
@@ -109,7 +113,8 @@ Expected<KochanekBartelsCurve<S>> kochanekBartels(const std::vector<Vec2<S>>& po
                 t.out = sum > 0.0 ? (2.0 * hAfter / sum) * t.out : Point(0.0, 0.0);
             }
             if (!finite(t.in) || !finite(t.out))
-                return makeError(ErrorCode::OutOfRange, "The Kochanek–Bartels curve overflows: the coordinates or the tension are too large.");
+                return makeError(ErrorCode::OutOfRange,
+                                 "The Kochanek–Bartels curve overflows: the coordinates or the tension are too large.");
         }
         curve.tangents.push_back(t);
     }
@@ -124,7 +129,7 @@ Expected<KochanekBartelsCurve<S>> kochanekBartels(const std::vector<Vec2<S>>& po
 
 template Expected<KochanekBartelsCurve<double>> kochanekBartels(const std::vector<Point>&, const std::vector<TcbKnot<double>>&,
                                                                 CatmullRomMode, double);
-template Expected<KochanekBartelsCurve<Rational>> kochanekBartels(const std::vector<RPoint>&, const std::vector<TcbKnot<Rational>>&,
-                                                                  CatmullRomMode, double);
+template Expected<KochanekBartelsCurve<Rational>> kochanekBartels(const std::vector<RPoint>&,
+                                                                  const std::vector<TcbKnot<Rational>>&, CatmullRomMode, double);
 
 } // namespace granota
