@@ -48,7 +48,8 @@ private slots:
         QCOMPARE(knots[0].toObject()["knot"].toInt(), 1);
         QCOMPARE(knots[0].toObject()["C"].toInt(), 0);
         QCOMPARE(knots[0].toObject()["G"].toInt(), 0);
-        const CliRun text = runCli({"kochanek-bartels", "--points", "0,0;1,1;2,0", "--tcb", "0,1/2,0", "--mode", "closed", "--exact"});
+        const CliRun text = runCli(
+            {"kochanek-bartels", "--points", "0,0;1,1;2,0", "--tcb", "0,1/2,0", "--mode", "closed", "--exact"});
         QCOMPARE(text.exitCode, 0);
         QVERIFY2(text.out.contains("q_1: in (1, -1/2), out (1, 1/2)"), text.out.constData());
     }
@@ -60,9 +61,12 @@ private slots:
         QTest::addColumn<QString>("tension");
         QTest::addColumn<QString>("tau");
         for (const char* mode : {"open", "cyclic", "closed"}) {
-            QTest::addRow("%s T=0", mode) << mode << "0" << "1/2";
-            QTest::addRow("%s T=1/3", mode) << mode << "1/3" << "1/3";
-            QTest::addRow("%s T=-2", mode) << mode << "-2" << "3/2";
+            QTest::addRow("%s T=0", mode) << mode << "0"
+                                          << "1/2";
+            QTest::addRow("%s T=1/3", mode) << mode << "1/3"
+                                            << "1/3";
+            QTest::addRow("%s T=-2", mode) << mode << "-2"
+                                           << "3/2";
         }
     }
     void tensionIsCatmullRomTau()
@@ -71,7 +75,8 @@ private slots:
         QFETCH(QString, tension);
         QFETCH(QString, tau);
         const QString points = "3,5;2,2;6,0;8,3;7,5";
-        const CliRun kb = runCli({"kochanek-bartels", "--points", points, "--tcb", tension + ",0,0", "--mode", mode, "--exact", "--json"});
+        const CliRun kb = runCli(
+            {"kochanek-bartels", "--points", points, "--tcb", tension + ",0,0", "--mode", mode, "--exact", "--json"});
         const CliRun cr = runCli({"catmull-rom", "--points", points, "--tau", tau, "--mode", mode, "--exact", "--json"});
         QCOMPARE(kb.exitCode, 0);
         QCOMPARE(cr.exitCode, 0);
@@ -90,13 +95,12 @@ private slots:
     // One triple per point; the centripetal curve runs in doubles.
     void perPointAndAlpha()
     {
-        const CliRun r = runCli({"kochanek-bartels", "--points", "0,0;1,1;2,0;4,1", "--tcb", "0,0,0; 1,0,0; 0,-1,0; 0,0,1;", "--exact",
-                                 "--json"});
+        const CliRun r = runCli(
+            {"kochanek-bartels", "--points", "0,0;1,1;2,0;4,1", "--tcb", "0,0,0; 1,0,0; 0,-1,0; 0,0,1;", "--exact", "--json"});
         QCOMPARE(r.exitCode, 0);
         // T = 1 at q_1: both tangents zero.
         QCOMPARE(strings(r.json()["tangents"].toArray()[1].toObject()["in"]), (QStringList{"0", "0"}));
-        const CliRun alpha =
-            runCli({"kochanek-bartels", "--points", "0,0;3,4;3,5", "--tcb", "0,0,0", "--alpha", "1", "--json"});
+        const CliRun alpha = runCli({"kochanek-bartels", "--points", "0,0;3,4;3,5", "--tcb", "0,0,0", "--alpha", "1", "--json"});
         QCOMPARE(alpha.exitCode, 0);
         // α = 1: h_0 = 5, h_1 = 1; in_1 = (3/2, 5/2)·10/6, out_1 = (3/2, 5/2)·2/6 (kochanek_bartels.h).
         const QJsonObject t = alpha.json()["tangents"].toArray()[1].toObject();
@@ -115,12 +119,15 @@ private slots:
         QTest::addRow("two fields") << (tri + QStringList{"--tcb", "0,0"}) << "write tension, continuity and bias";
         QTest::addRow("not a number") << (tri + QStringList{"--tcb", "0,x,0"}) << "is not a number";
         QTest::addRow("wrong count") << (tri + QStringList{"--tcb", "0,0,0;0,0,0"}) << "2 triples for 3 points";
-        QTest::addRow("too few closed") << QStringList{"kochanek-bartels", "--points", "0,0;1,1", "--tcb", "0,0,0", "--mode", "closed"}
+        QTest::addRow("too few closed") << QStringList{"kochanek-bartels", "--points", "0,0;1,1", "--tcb", "0,0,0",
+                                                       "--mode",           "closed"}
                                         << "needs at least 3 points";
         QTest::addRow("alpha 2") << (tri + QStringList{"--tcb", "0,0,0", "--alpha", "2"}) << "--alpha must be between 0 and 1";
-        QTest::addRow("exact alpha") << (tri + QStringList{"--tcb", "0,0,0", "--alpha", "1/2", "--exact"}) << "--exact needs --alpha 0";
+        QTest::addRow("exact alpha") << (tri + QStringList{"--tcb", "0,0,0", "--alpha", "1/2", "--exact"})
+                                     << "--exact needs --alpha 0";
         QTest::addRow("huge tension") << (tri + QStringList{"--tcb", "1e400,0,0"}) << "too large";
-        QTest::addRow("overflow") << QStringList{"kochanek-bartels", "--points", "0,0;1e308,0;-1e308,0", "--tcb", "-3,0,0"} << "too large";
+        QTest::addRow("overflow") << QStringList{"kochanek-bartels", "--points", "0,0;1e308,0;-1e308,0", "--tcb", "-3,0,0"}
+                                  << "too large";
     }
     void badInput()
     {

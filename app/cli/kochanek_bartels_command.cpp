@@ -48,8 +48,8 @@ Expected<std::vector<TcbKnot<Rational>>> parseTcb(const std::string& text)
         for (std::string field; std::getline(one, field, ',');)
             fields.push_back(trimmed(field));
         if (fields.size() != 3)
-            return makeError(ErrorCode::InvalidInput,
-                             where + " is " + quotedForDisplay(items[i]) + ": write tension, continuity and bias as T,C,B (e.g. 0,1/2,0)");
+            return makeError(ErrorCode::InvalidInput, where + " is " + quotedForDisplay(items[i]) +
+                                                          ": write tension, continuity and bias as T,C,B (e.g. 0,1/2,0)");
         Rational values[3];
         const char* names[3] = {"tension T", "continuity C", "bias B"};
         for (std::size_t k = 0; k < 3; ++k) {
@@ -61,8 +61,8 @@ Expected<std::vector<TcbKnot<Rational>>> parseTcb(const std::string& text)
         }
         for (std::size_t k = 1; k < 3; ++k)
             if (values[k] < -1 || values[k] > 1)
-                return makeError(ErrorCode::OutOfRange, where + ": the " + names[k] + " " + toString(values[k]) +
-                                                            " must lie between -1 and 1");
+                return makeError(ErrorCode::OutOfRange,
+                                 where + ": the " + names[k] + " " + toString(values[k]) + " must lie between -1 and 1");
         knots.push_back({values[0], values[1], values[2]});
     }
     return knots;
@@ -100,7 +100,8 @@ Expected<CommandOutput> run(const Arguments& args)
         return points.error();
     const auto tcbText = args.value("tcb");
     if (!tcbText)
-        return makeError(ErrorCode::InvalidInput, "--tcb T,C,B is required (one triple for all points, or \"T,C,B;T,C,B;…\" one per point)");
+        return makeError(ErrorCode::InvalidInput,
+                         "--tcb T,C,B is required (one triple for all points, or \"T,C,B;T,C,B;…\" one per point)");
     auto tcb = parseTcb(*tcbText);
     if (!tcb)
         return tcb.error();
@@ -137,8 +138,7 @@ Expected<CommandOutput> run(const Arguments& args)
             long tcbBits = 0; // a tangent multiplies T, C and B: their bits add up
             for (const auto& k : *tcb)
                 tcbBits = std::max(tcbBits, bitLength(k.tension) + bitLength(k.continuity) + bitLength(k.bias));
-            const double work =
-                catmullRomExactWork(quads->size(), maxBitLength(*points), tcbBits, withSamples ? *samples : 0);
+            const double work = catmullRomExactWork(quads->size(), maxBitLength(*points), tcbBits, withSamples ? *samples : 0);
             if (!exactWorkAllowed(work))
                 return makeError(ErrorCode::OutOfRange,
                                  exactWorkRefusal("Kochanek–Bartels curve", work,
@@ -197,7 +197,9 @@ Expected<CommandOutput> run(const Arguments& args)
                 const std::size_t at = (static_cast<std::size_t>(k.fromSegment) + 1) % points->size();
                 txt << "  q_" << at << ": C^" << k.parametricOrder() << ", G^" << k.geometricOrder() << "\n";
                 Json knot = Json::object();
-                knot.set("knot", Json(static_cast<int>(at))).set("C", Json(k.parametricOrder())).set("G", Json(k.geometricOrder()));
+                knot.set("knot", Json(static_cast<int>(at)))
+                    .set("C", Json(k.parametricOrder()))
+                    .set("G", Json(k.geometricOrder()));
                 knots.push(std::move(knot));
             }
         }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 namespace granota {
 
@@ -28,7 +29,7 @@ template <class S> bool finite(const S& v)
 
 template <class S> bool finite(const Vec2<S>& v) { return finite(v.x) && finite(v.y); }
 
-/// The paper's name for each parameter, for the messages.
+/// Refuses a triple with a value that is not finite, or C or B outside [−1, 1] (the header says why).
 template <class S> Expected<bool> checkKnot(const TcbKnot<S>& k, std::size_t index, bool shared)
 {
     const std::string where = shared ? std::string() : " at point " + std::to_string(index);
