@@ -33,6 +33,7 @@ Command bezierCommand();
 Command bernsteinCommand();
 Command fitCommand();
 Command catmullRomCommand();
+Command kochanekBartelsCommand();
 Command simulateCommand();
 Command benchCommand();
 Command demoCommand();

@@ -67,16 +67,42 @@ template Expected<std::vector<Vec2<Polynomial<double>>>> catmullRomSegments(cons
 template Expected<std::vector<Vec2<Polynomial<Rational>>>> catmullRomSegments(const std::vector<Vec2<Rational>>&, const Rational&,
                                                                               CatmullRomMode);
 
+namespace {
+
+Error alphaOutOfRange(double alpha)
+{
+    return makeError(ErrorCode::OutOfRange, "The parametrization exponent α must lie between 0 (uniform) and 1 (chordal); got " +
+                                                formatDouble(alpha) + ".");
+}
+
+} // namespace
+
 Expected<std::vector<Vec2<Polynomial<double>>>> catmullRomSegments(const std::vector<Point>& q, double tau, CatmullRomMode mode,
                                                                    double alpha)
 {
     if (!(alpha >= 0.0 && alpha <= 1.0)) // also rejects NaN
-        return makeError(ErrorCode::OutOfRange,
-                         "The parametrization exponent α must lie between 0 (uniform) and 1 (chordal); got " +
-                             formatDouble(alpha) + ".");
+        return alphaOutOfRange(alpha);
     if (alpha == 0.0)
-        return catmullRomSegments<double>(q, tau, mode); // uniform: the thesis's curve, bit for bit
+        return catmullRomSegments<double>(q, tau, mode); // uniform: the thesis's curve (Lemma 2.3), bit for bit
+    auto segments = catmullRomHermiteSegments(q, tau, mode, alpha);
+    if (!segments)
+        return segments.error();
+    auto polynomials = hermitePolynomials(*segments);
+    for (const auto& s : polynomials)
+        for (const auto* p : {&s.x, &s.y})
+            for (double c : p->coefficients())
+                if (!std::isfinite(c))
+                    return detail::catmullRomOverflow();
+    return polynomials;
+}
 
+Expected<std::vector<HermiteSegment<double>>> catmullRomHermiteSegments(const std::vector<Point>& q, double tau,
+                                                                        CatmullRomMode mode, double alpha)
+{
+    if (!(alpha >= 0.0 && alpha <= 1.0)) // also rejects NaN
+        return alphaOutOfRange(alpha);
+    if (alpha == 0.0)
+        return catmullRomHermiteSegments<double>(q, tau, mode);
     for (std::size_t i = 0; i < q.size(); ++i)
         if (!isFinite(q[i]))
             return detail::catmullRomNonFinitePoint(i);
@@ -114,7 +140,7 @@ Expected<std::vector<Vec2<Polynomial<double>>>> catmullRomSegments(const std::ve
                      (d[before].y * h[i] + d[i].y * h[before]) / denominator);
     };
 
-    std::vector<Vec2<Polynomial<double>>> segments;
+    std::vector<HermiteSegment<double>> segments;
     segments.reserve(quads->size());
     for (std::size_t i = 0; i < quads->size(); ++i) {
         const Point& p0 = q[i];
@@ -128,17 +154,11 @@ Expected<std::vector<Vec2<Polynomial<double>>>> catmullRomSegments(const std::ve
             t0 = tau * (q[1] - q[0]);
         if (open && i + 1 == n)
             t1 = tau * (q[n] - q[n - 1]);
-        // Cubic Hermite in powers of s.
-        const Point c2 = 3.0 * (p1 - p0) - 2.0 * t0 - t1;
-        const Point c3 = 2.0 * (p0 - p1) + t0 + t1;
-        segments.emplace_back(Polynomial<double>(std::vector<double>{p0.x, t0.x, c2.x, c3.x}),
-                              Polynomial<double>(std::vector<double>{p0.y, t0.y, c2.y, c3.y}));
+        segments.push_back({p0, p1, t0, t1});
     }
-    for (const auto& s : segments)
-        for (const auto* p : {&s.x, &s.y})
-            for (double c : p->coefficients())
-                if (!std::isfinite(c))
-                    return detail::catmullRomOverflow();
+    for (const auto& g : segments)
+        if (!isFinite(g.m0) || !isFinite(g.m1))
+            return detail::catmullRomOverflow();
     return segments;
 }
 

@@ -20,6 +20,7 @@
 #include "core/exact/polynomial.h"
 #include "core/exact/rational.h"
 #include "core/base/vec2.h"
+#include "core/curves/splines/hermite_segment.h"
 
 #include <array>
 #include <cmath>
@@ -144,6 +145,41 @@ Expected<std::vector<Vec2<Polynomial<S>>>> catmullRomSegments(const std::vector<
     return segments;
 }
 
+/// The same uniform curve as cubic Hermite segments (hermite_segment.h): segment i from
+/// q_i to q_{i+1} with Def 2.8's tangents m0 = τ(p_2 − p_0), m1 = τ(p_3 − p_1) of its four
+/// points (catmullRomQuadruples()). hermitePolynomial() of each is, exactly for Rational,
+/// the segment catmullRomSegments() returns; that one is computed as Lemma 2.3's matrix
+/// product M(τ)·[p_0 p_1 p_2 p_3]ᵀ (the thesis's form, and bit for bit the figures' doubles),
+/// so in doubles the two agree only to rounding. Errors as catmullRomSegments().
+template <class S>
+Expected<std::vector<HermiteSegment<S>>> catmullRomHermiteSegments(const std::vector<Vec2<S>>& q, const S& tau,
+                                                                   CatmullRomMode mode)
+{
+    if constexpr (std::is_floating_point_v<S>) {
+        for (std::size_t i = 0; i < q.size(); ++i)
+            if (!std::isfinite(q[i].x) || !std::isfinite(q[i].y))
+                return detail::catmullRomNonFinitePoint(i);
+        if (!std::isfinite(tau))
+            return detail::catmullRomNonFiniteTension();
+    }
+    auto quads = catmullRomQuadruples(q.size(), mode);
+    if (!quads)
+        return quads.error();
+    std::vector<HermiteSegment<S>> segments;
+    segments.reserve(quads->size());
+    for (const auto& k : *quads) {
+        const auto at = [&q](int i) -> const Vec2<S>& { return q[static_cast<std::size_t>(i)]; };
+        segments.push_back({at(k[1]), at(k[2]), tau * (at(k[2]) - at(k[0])), tau * (at(k[3]) - at(k[1]))});
+    }
+    if constexpr (std::is_floating_point_v<S>) {
+        for (const auto& g : segments)
+            for (const Vec2<S>* v : {&g.m0, &g.m1})
+                if (!std::isfinite(v->x) || !std::isfinite(v->y))
+                    return detail::catmullRomOverflow();
+    }
+    return segments;
+}
+
 extern template Expected<std::vector<Vec2<Polynomial<double>>>> catmullRomSegments(const std::vector<Vec2<double>>&,
                                                                                    const double&, CatmullRomMode);
 extern template Expected<std::vector<Vec2<Polynomial<Rational>>>> catmullRomSegments(const std::vector<Vec2<Rational>>&,
@@ -163,6 +199,11 @@ extern template Expected<std::vector<Vec2<Polynomial<Rational>>>> catmullRomSegm
 /// Errors: as above, and OutOfRange when α is not a number in [0, 1].
 Expected<std::vector<Vec2<Polynomial<double>>>> catmullRomSegments(const std::vector<Point>& q, double tau, CatmullRomMode mode,
                                                                    double alpha);
+
+/// The curve above as cubic Hermite segments: catmullRomSegments(q, τ, mode, α) is
+/// hermitePolynomial() of each, bit for bit (α = 0: the uniform catmullRomHermiteSegments()).
+Expected<std::vector<HermiteSegment<double>>> catmullRomHermiteSegments(const std::vector<Point>& q, double tau,
+                                                                        CatmullRomMode mode, double alpha);
 
 /// The knot spacing of the curve above, one h_i per segment in the order of its segments:
 /// segment i covers an interval of length h_i of the curve's global parameter u, so that
