@@ -115,14 +115,14 @@ bool languageNeutral(const QString& text)
                                       QStringLiteral("Verlet"), QStringLiteral("XPBD"),
                                       // Words that are spelt the same in Catalan.
                                       QStringLiteral("Tangent"), QStringLiteral("5.2.1 Obstacles"),
-                                      QStringLiteral("Centre (x, y)")};
+                                      QStringLiteral("Centre (x, y)"), QStringLiteral("B-spline"), QStringLiteral("B-splines")};
     if (names.contains(text.trimmed()))
         return true;
     if (text.endsWith(QLatin1String(".granota"))) // File ▸ Open Recent lists file names
         return true;
     // Numbers, symbols, variable names, point labels, file names.
     static const QRegularExpression symbols(
-        QStringLiteral("^[\\s0-9.,:;/+\\-−=×·²³⁴⅛¼½<>()\\[\\]{}|%…ταtnxyijkPQqBcwsW_′'^√∞≤≥✓✗µ]*$"));
+        QStringLiteral("^[\\s0-9.,:;/+\\-−=×·²³⁴⅛¼½<>()\\[\\]{}|%…ταtnuxyijkPQqBcwsW_′'^√∞≤≥✓✗µ]*$"));
     return symbols.match(text).hasMatch();
 }
 

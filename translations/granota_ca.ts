@@ -5609,9 +5609,12 @@ Ja no és al disc.</translation>
             <source>%1 weights for %2 points</source>
             <translation>%1 pesos per a %2 punts</translation>
         </message>
-        <message>
+        <message numerus="yes">
             <source>%n weight(s) for %1 points: give one per point, or none.</source>
-            <translation>%n pes(os) per a %1 punts: doneu-ne un per punt, o cap.</translation>
+            <translation>
+                <numerusform>%n pes per a %1 punts: doneu-ne un per punt, o cap.</numerusform>
+                <numerusform>%n pesos per a %1 punts: doneu-ne un per punt, o cap.</numerusform>
+            </translation>
         </message>
         <message>
             <source>&amp;Degree p:</source>
@@ -5677,9 +5680,12 @@ Ja no és al disc.</translation>
             <source>B-spline canvas</source>
             <translation>Llenç de la B-spline</translation>
         </message>
-        <message>
+        <message numerus="yes">
             <source>B-spline of degree %1 with %n control point(s) and %2 knots.</source>
-            <translation>B-spline de grau %1 amb %n punt(s) de control i %2 nusos.</translation>
+            <translation>
+                <numerusform>B-spline de grau %1 amb %n punt de control i %2 nusos.</numerusform>
+                <numerusform>B-spline de grau %1 amb %n punts de control i %2 nusos.</numerusform>
+            </translation>
         </message>
         <message>
             <source>B-splines</source>
@@ -5747,15 +5753,15 @@ Ja no és al disc.</translation>
         </message>
         <message>
             <source>Drag a point; drag a knot on the ruler, double-click it to insert one; move u to follow de Boor&apos;s construction.</source>
-            <translation>Arrossegueu un punt; arrossegueu un nus al regle o feu-hi doble clic per inserir-ne un; moveu u per seguir la construcció de De Boor.</translation>
+            <translation>Arrossegueu punts i nusos; doble clic al regle: un nus més; moveu u per seguir De Boor.</translation>
         </message>
         <message>
             <source>Draw the control polygon of each Bézier segment of the curve (the knots inserted up to multiplicity p): one polynomial piece per span.</source>
             <translation>Dibuixa el polígon de control de cada segment de Bézier de la corba (els nusos inserits fins a multiplicitat p): un tros polinòmic per interval.</translation>
         </message>
         <message>
-            <source>Each N_{i,p} in the colour of P_i&apos;s ring; the shaded band is the domain [u_p, u_{n+1}], the vertical line is u.</source>
-            <translation>Cada N_{i,p} del color de l&apos;anella de P_i; la franja ombrejada és el domini [u_p, u_{n+1}] i la línia vertical és u.</translation>
+            <source>Each Nᵢ,ₚ in the colour of Pᵢ&apos;s ring; the shaded band is the domain [uₚ, uₙ₊₁], the vertical line is u.</source>
+            <translation>Cada Nᵢ,ₚ del color de l&apos;anella de Pᵢ; la franja ombrejada és el domini [uₚ, uₙ₊₁] i la línia vertical és u.</translation>
         </message>
         <message>
             <source>Elevate the degree to %1</source>
@@ -5763,7 +5769,7 @@ Ja no és al disc.</translation>
         </message>
         <message>
             <source>Ex 2.2 as a B-spline (no interior knot)</source>
-            <translation>Ex. 2.2 com a B-spline (sense nusos interiors)</translation>
+            <translation>L&apos;Ex. 2.2 sense nusos interiors</translation>
         </message>
         <message>
             <source>Ex 2.2&apos;s Bézier curve as a B-spline; a uniform cubic closed on Ex 2.13&apos;s points; the circle and the conics, exactly, as rational curves.</source>
@@ -5886,8 +5892,8 @@ Ja no és al disc.</translation>
             <translation>Punts</translation>
         </message>
         <message>
-            <source>Quarter circle, exactly, beside the cubic Bézier one</source>
-            <translation>Quart de circumferència exacte, al costat del de Bézier cúbic</translation>
+            <source>Quarter circle: exact and cubic</source>
+            <translation>Quart de circumferència: exacte i cúbic</translation>
         </message>
         <message>
             <source>Remove knot %1</source>
@@ -5962,8 +5968,8 @@ Ja no és al disc.</translation>
             <translation>El grau és com a màxim %1.</translation>
         </message>
         <message>
-            <source>The degree of every piece, 1 to 10: the curve is C^{p−1} at a simple knot. Needs at least p + 1 points; the knots go back to the preset.</source>
-            <translation>El grau de cada tros, d&apos;1 a 10: la corba és C^{p−1} en un nus simple. Calen almenys p + 1 punts; els nusos tornen als predefinits.</translation>
+            <source>The degree of every piece, 1 to 10: the curve is Cᵖ⁻¹ at a simple knot. Needs at least p + 1 points; the knots go back to the preset.</source>
+            <translation>El grau de cada tros, d&apos;1 a 10: la corba és Cᵖ⁻¹ en un nus simple. Calen almenys p + 1 punts; els nusos tornen als predefinits.</translation>
         </message>
         <message>
             <source>The knots u₀ ≤ … ≤ uₙ₊ₚ₊₁: drag one (it never passes its neighbours), double-click to insert one, the badge is a knot&apos;s multiplicity. Bold: the domain [uₚ, uₙ₊₁]; yellow: the span that holds u.</source>
@@ -5978,8 +5984,8 @@ Ja no és al disc.</translation>
             <translation>Aquesta B-spline no es pot dibuixar: %1</translation>
         </message>
         <message>
-            <source>Uniform cubic, closed on Ex 2.13&apos;s points</source>
-            <translation>Cúbica uniforme, tancada sobre els punts de l&apos;Ex. 2.13</translation>
+            <source>Closed uniform cubic (Ex 2.13)</source>
+            <translation>Cúbica uniforme tancada (Ex. 2.13)</translation>
         </message>
         <message>
             <source>Weights are numbers separated by commas, such as 1, 1, 2 or 1, 1/2, 1; empty for none.</source>
@@ -5994,8 +6000,8 @@ Ja no és al disc.</translation>
             <translation>trencada</translation>
         </message>
         <message>
-            <source>c(u) = Σ N_{i,p}(u) P_i: the weight of each control point along the curve. N_{i,p} is zero outside [u_i, u_{i+p+1}) (local support), the functions add up to 1 on the domain (the dashed line), and at a knot of multiplicity m they are C^{p−m}.</source>
-            <translation>c(u) = Σ N_{i,p}(u) P_i: el pes de cada punt de control al llarg de la corba. N_{i,p} és zero fora de [u_i, u_{i+p+1}) (suport local), les funcions sumen 1 al domini (la línia discontínua) i en un nus de multiplicitat m són C^{p−m}.</translation>
+            <source>c(u) = Σ Nᵢ,ₚ(u) Pᵢ: the weight of each control point along the curve. Nᵢ,ₚ is zero outside [uᵢ, uᵢ₊ₚ₊₁) (local support), the functions add up to 1 on the domain (the dashed line), and at a knot of multiplicity m they are Cᵖ⁻ᵐ.</source>
+            <translation>c(u) = Σ Nᵢ,ₚ(u) Pᵢ: el pes de cada punt de control al llarg de la corba. Nᵢ,ₚ és zero fora de [uᵢ, uᵢ₊ₚ₊₁) (suport local), les funcions sumen 1 al domini (la línia discontínua) i en un nus de multiplicitat m són Cᵖ⁻ᵐ.</translation>
         </message>
         <message>
             <source>clamped (open uniform)</source>

@@ -5609,9 +5609,12 @@ It is no longer on disk.</translation>
             <source>%1 weights for %2 points</source>
             <translation>%1 weights for %2 points</translation>
         </message>
-        <message>
+        <message numerus="yes">
             <source>%n weight(s) for %1 points: give one per point, or none.</source>
-            <translation>%n weight(s) for %1 points: give one per point, or none.</translation>
+            <translation>
+                <numerusform>%n weight for %1 points: give one per point, or none.</numerusform>
+                <numerusform>%n weights for %1 points: give one per point, or none.</numerusform>
+            </translation>
         </message>
         <message>
             <source>&amp;Degree p:</source>
@@ -5677,9 +5680,12 @@ It is no longer on disk.</translation>
             <source>B-spline canvas</source>
             <translation>B-spline canvas</translation>
         </message>
-        <message>
+        <message numerus="yes">
             <source>B-spline of degree %1 with %n control point(s) and %2 knots.</source>
-            <translation>B-spline of degree %1 with %n control point(s) and %2 knots.</translation>
+            <translation>
+                <numerusform>B-spline of degree %1 with %n control point and %2 knots.</numerusform>
+                <numerusform>B-spline of degree %1 with %n control points and %2 knots.</numerusform>
+            </translation>
         </message>
         <message>
             <source>B-splines</source>
@@ -5754,8 +5760,8 @@ It is no longer on disk.</translation>
             <translation>Draw the control polygon of each Bézier segment of the curve (the knots inserted up to multiplicity p): one polynomial piece per span.</translation>
         </message>
         <message>
-            <source>Each N_{i,p} in the colour of P_i&apos;s ring; the shaded band is the domain [u_p, u_{n+1}], the vertical line is u.</source>
-            <translation>Each N_{i,p} in the colour of P_i&apos;s ring; the shaded band is the domain [u_p, u_{n+1}], the vertical line is u.</translation>
+            <source>Each Nᵢ,ₚ in the colour of Pᵢ&apos;s ring; the shaded band is the domain [uₚ, uₙ₊₁], the vertical line is u.</source>
+            <translation>Each Nᵢ,ₚ in the colour of Pᵢ&apos;s ring; the shaded band is the domain [uₚ, uₙ₊₁], the vertical line is u.</translation>
         </message>
         <message>
             <source>Elevate the degree to %1</source>
@@ -5886,8 +5892,8 @@ It is no longer on disk.</translation>
             <translation>Points</translation>
         </message>
         <message>
-            <source>Quarter circle, exactly, beside the cubic Bézier one</source>
-            <translation>Quarter circle, exactly, beside the cubic Bézier one</translation>
+            <source>Quarter circle: exact and cubic</source>
+            <translation>Quarter circle: exact and cubic</translation>
         </message>
         <message>
             <source>Remove knot %1</source>
@@ -5962,8 +5968,8 @@ It is no longer on disk.</translation>
             <translation>The degree is at most %1.</translation>
         </message>
         <message>
-            <source>The degree of every piece, 1 to 10: the curve is C^{p−1} at a simple knot. Needs at least p + 1 points; the knots go back to the preset.</source>
-            <translation>The degree of every piece, 1 to 10: the curve is C^{p−1} at a simple knot. Needs at least p + 1 points; the knots go back to the preset.</translation>
+            <source>The degree of every piece, 1 to 10: the curve is Cᵖ⁻¹ at a simple knot. Needs at least p + 1 points; the knots go back to the preset.</source>
+            <translation>The degree of every piece, 1 to 10: the curve is Cᵖ⁻¹ at a simple knot. Needs at least p + 1 points; the knots go back to the preset.</translation>
         </message>
         <message>
             <source>The knots u₀ ≤ … ≤ uₙ₊ₚ₊₁: drag one (it never passes its neighbours), double-click to insert one, the badge is a knot&apos;s multiplicity. Bold: the domain [uₚ, uₙ₊₁]; yellow: the span that holds u.</source>
@@ -5978,8 +5984,8 @@ It is no longer on disk.</translation>
             <translation>This B-spline cannot be drawn: %1</translation>
         </message>
         <message>
-            <source>Uniform cubic, closed on Ex 2.13&apos;s points</source>
-            <translation>Uniform cubic, closed on Ex 2.13&apos;s points</translation>
+            <source>Closed uniform cubic (Ex 2.13)</source>
+            <translation>Closed uniform cubic (Ex 2.13)</translation>
         </message>
         <message>
             <source>Weights are numbers separated by commas, such as 1, 1, 2 or 1, 1/2, 1; empty for none.</source>
@@ -5994,8 +6000,8 @@ It is no longer on disk.</translation>
             <translation>broken</translation>
         </message>
         <message>
-            <source>c(u) = Σ N_{i,p}(u) P_i: the weight of each control point along the curve. N_{i,p} is zero outside [u_i, u_{i+p+1}) (local support), the functions add up to 1 on the domain (the dashed line), and at a knot of multiplicity m they are C^{p−m}.</source>
-            <translation>c(u) = Σ N_{i,p}(u) P_i: the weight of each control point along the curve. N_{i,p} is zero outside [u_i, u_{i+p+1}) (local support), the functions add up to 1 on the domain (the dashed line), and at a knot of multiplicity m they are C^{p−m}.</translation>
+            <source>c(u) = Σ Nᵢ,ₚ(u) Pᵢ: the weight of each control point along the curve. Nᵢ,ₚ is zero outside [uᵢ, uᵢ₊ₚ₊₁) (local support), the functions add up to 1 on the domain (the dashed line), and at a knot of multiplicity m they are Cᵖ⁻ᵐ.</source>
+            <translation>c(u) = Σ Nᵢ,ₚ(u) Pᵢ: the weight of each control point along the curve. Nᵢ,ₚ is zero outside [uᵢ, uᵢ₊ₚ₊₁) (local support), the functions add up to 1 on the domain (the dashed line), and at a knot of multiplicity m they are Cᵖ⁻ᵐ.</translation>
         </message>
         <message>
             <source>clamped (open uniform)</source>

@@ -23,8 +23,9 @@ constexpr int kFailed = 2; ///< every error: bad input, or an answer that cannot
 
 std::vector<Command> commands()
 {
-    return {bezierCommand(),     bernsteinCommand(),       projectCommand(), analyzeCommand(),  fitCommand(),
-            catmullRomCommand(), kochanekBartelsCommand(), splineCommand(),  bsplineCommand(), simulateCommand(), benchCommand(),
+    return {bezierCommand(),  bernsteinCommand(),  projectCommand(),         analyzeCommand(),
+            fitCommand(),     catmullRomCommand(), kochanekBartelsCommand(), splineCommand(),
+            bsplineCommand(), simulateCommand(),   benchCommand(),
 #ifdef GRANOTA_HAS_REPORTS
             reportCommand(),
 #endif

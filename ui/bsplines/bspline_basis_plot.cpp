@@ -77,12 +77,12 @@ void setBSplineBasisPlotTexts(QLabel* title, QCustomPlot* plot)
 {
     title->setText(QCoreApplication::translate("granota::ui::BSplineTab", "Basis functions Nᵢ,ₚ(u) (Cox–de Boor)"));
     title->setToolTip(QCoreApplication::translate(
-        "granota::ui::BSplineTab", "c(u) = Σ N_{i,p}(u) P_i: the weight of each control point along the curve. N_{i,p} is "
-                                   "zero outside [u_i, u_{i+p+1}) (local support), the functions add up to 1 on the "
-                                   "domain (the dashed line), and at a knot of multiplicity m they are C^{p−m}."));
+        "granota::ui::BSplineTab", "c(u) = Σ Nᵢ,ₚ(u) Pᵢ: the weight of each control point along the curve. Nᵢ,ₚ is "
+                                   "zero outside [uᵢ, uᵢ₊ₚ₊₁) (local support), the functions add up to 1 on the "
+                                   "domain (the dashed line), and at a knot of multiplicity m they are Cᵖ⁻ᵐ."));
     plot->setToolTip(QCoreApplication::translate("granota::ui::BSplineTab",
-                                                 "Each N_{i,p} in the colour of P_i's ring; the shaded band is the domain "
-                                                 "[u_p, u_{n+1}], the vertical line is u."));
+                                                 "Each Nᵢ,ₚ in the colour of Pᵢ's ring; the shaded band is the domain "
+                                                 "[uₚ, uₙ₊₁], the vertical line is u."));
 }
 
 void updateBSplineBasisPlot(QCustomPlot* plot, const QFont& font, const BSplineScene& scene, double scale)

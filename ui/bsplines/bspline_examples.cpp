@@ -65,10 +65,10 @@ QString bsplineExampleTitle(BSplineExampleId id)
     case BSplineExampleId::Ex22Bezier:
         return QCoreApplication::translate("granota::ui::BSplineTab", "Ex 2.2 as a B-spline (no interior knot)");
     case BSplineExampleId::ClosedUniformCubic:
-        return QCoreApplication::translate("granota::ui::BSplineTab", "Uniform cubic, closed on Ex 2.13's points");
+        return QCoreApplication::translate("granota::ui::BSplineTab", "Closed uniform cubic (Ex 2.13)");
     case BSplineExampleId::Circle: return QCoreApplication::translate("granota::ui::BSplineTab", "The circle, exactly (NURBS)");
     case BSplineExampleId::QuarterCircle:
-        return QCoreApplication::translate("granota::ui::BSplineTab", "Quarter circle, exactly, beside the cubic Bézier one");
+        return QCoreApplication::translate("granota::ui::BSplineTab", "Quarter circle: exact and cubic");
     case BSplineExampleId::Ellipse: return QCoreApplication::translate("granota::ui::BSplineTab", "Conic: an ellipse (w = 1/2)");
     case BSplineExampleId::Parabola: return QCoreApplication::translate("granota::ui::BSplineTab", "Conic: a parabola (w = 1)");
     case BSplineExampleId::Hyperbola: return QCoreApplication::translate("granota::ui::BSplineTab", "Conic: a hyperbola (w = 2)");

@@ -47,7 +47,7 @@ namespace {
 constexpr int kKnotMergeIdBase = 0x42530000; ///< "BS"
 constexpr int kUMergeIdBase = 0x42550000;
 constexpr int kGestureIds = 0x10000;
-constexpr int kUSteps = 1000;      ///< slider steps over the domain [u_p, u_{n+1}]
+constexpr int kUSteps = 1000;      ///< slider steps over the domain [uₚ, uₙ₊₁]
 constexpr int kPlaySteps = 200;    ///< Play moves u by 1/kPlaySteps of the domain a frame
 constexpr int kAnimationMs = 40;   ///< Play's frame period (25 frames a second)
 constexpr int kPresetItems = 4;    ///< clamped, uniform, Bézier, and "edited" (not a preset: shown only)
@@ -321,7 +321,7 @@ void BSplineTab::retranslate()
     m_play->setToolTip(tr("Move u along the domain again and again; Pause makes it one undo step."));
     m_curveBox->setTitle(tr("B-spline"));
     m_degreeLabel->setText(tr("&Degree p:"));
-    m_degreeSpin->setToolTip(tr("The degree of every piece, 1 to 10: the curve is C^{p−1} at a simple knot. Needs at "
+    m_degreeSpin->setToolTip(tr("The degree of every piece, 1 to 10: the curve is Cᵖ⁻¹ at a simple knot. Needs at "
                                 "least p + 1 points; the knots go back to the preset."));
     m_presetLabel->setText(tr("&Knots:"));
     m_presetCombo->setItemText(0, tr("clamped (open uniform)"));
