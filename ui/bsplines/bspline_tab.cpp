@@ -265,7 +265,7 @@ void BSplineTab::buildUi()
     right->addWidget(m_sideTabs);
     right->setStretchFactor(0, 0);
     right->setStretchFactor(1, 1);
-    right->setSizes({300, 420});
+    right->setSizes({340, 380}); // the controls whole at 1280 × 800 (the Examples box too)
     right->setChildrenCollapsible(false);
 
     auto* left = new QSplitter(Qt::Vertical, this);
