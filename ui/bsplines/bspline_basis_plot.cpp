@@ -15,7 +15,7 @@
 namespace granota::ui {
 
 namespace {
-constexpr int kMinPlotArea = 70;        ///< pixels between the axes, at least
+constexpr int kBasisPlotMinArea = 70;   ///< pixels between the axes, at least
 constexpr int kPlotSamplesPerSpan = 24; ///< samples of each non-empty knot span
 constexpr int kLegendUpTo = 7;          ///< N_i in the legend up to this many functions (two rows with Σ)
 constexpr int kLegendColumns = 4;       ///< a row fits the plot at 800 × 600
@@ -143,7 +143,7 @@ void updateBSplineBasisPlot(QCustomPlot* plot, const QFont& font, const BSplineS
 
     const int tickLabels = QFontMetrics(plot->xAxis->tickLabelFont()).height();
     const int title = QFontMetrics(plot->xAxis->labelFont()).height();
-    keepAxisTitlesWhole(plot, kMinPlotArea + tickLabels + title + 30);
+    keepAxisTitlesWhole(plot, kBasisPlotMinArea + tickLabels + title + 30);
     plot->xAxis->setRange(b.u.front(), std::max(b.u.back(), b.u.front() + 1e-9));
     plot->yAxis->setRange(-0.05, legend ? 1.7 : 1.1); // room for the legend's row
     plot->replot(QCustomPlot::rpQueuedReplot);

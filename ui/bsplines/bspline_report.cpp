@@ -12,8 +12,6 @@ namespace granota::ui {
 
 namespace {
 
-QString exactText(const Rational& q) { return displayText(toString(q)); }
-
 constexpr int kSupportRowsUpTo = 24; ///< the supports are listed up to this many points
 
 } // namespace
@@ -29,7 +27,7 @@ QString bsplineReportHtml(const BSplineScene& scene)
 
     // de Boor's net (de Boor 1972; Piegl & Tiller A3.1).
     html += ExactPanel::heading(
-        QCoreApplication::translate("granota::ui::BSplineTab", "de Boor's algorithm at u = %1").arg(exactText(scene.u)));
+        QCoreApplication::translate("granota::ui::BSplineTab", "de Boor's algorithm at u = %1").arg(rationalText(scene.u)));
     html += QStringLiteral("<p>") +
             QCoreApplication::translate(
                 "granota::ui::BSplineTab",
@@ -63,14 +61,14 @@ QString bsplineReportHtml(const BSplineScene& scene)
     rows.clear();
     for (int j = 0; j <= p; ++j) {
         sum += N[static_cast<std::size_t>(j)];
-        rows.push_back({ExactPanel::subscripted(QStringLiteral("N"), k - p + j), exactText(N[static_cast<std::size_t>(j)])});
+        rows.push_back({ExactPanel::subscripted(QStringLiteral("N"), k - p + j), rationalText(N[static_cast<std::size_t>(j)])});
     }
     html += ExactPanel::heading(
         QCoreApplication::translate("granota::ui::BSplineTab", "Basis functions at u (degree p = %1)").arg(p));
     html += ExactPanel::table({QString(), QCoreApplication::translate("granota::ui::BSplineTab", "value")}, rows);
     html += QStringLiteral("<p>%1 %2</p>")
                 .arg(QCoreApplication::translate("granota::ui::BSplineTab", "Σ N<sub>i,p</sub>(u) = %1: partition of unity")
-                         .arg(exactText(sum)),
+                         .arg(rationalText(sum)),
                      ExactPanel::checkMark(sum == 1));
 
     // Supports.
@@ -78,10 +76,10 @@ QString bsplineReportHtml(const BSplineScene& scene)
     if (n + 1 <= kSupportRowsUpTo) {
         rows.clear();
         for (int i = 0; i <= n; ++i)
-            rows.push_back(
-                {ExactPanel::subscripted(QStringLiteral("N"), i),
-                 QStringLiteral("[%1, %2)")
-                     .arg(exactText(knots[static_cast<std::size_t>(i)]), exactText(knots[static_cast<std::size_t>(i + p + 1)]))});
+            rows.push_back({ExactPanel::subscripted(QStringLiteral("N"), i),
+                            QStringLiteral("[%1, %2)")
+                                .arg(rationalText(knots[static_cast<std::size_t>(i)]),
+                                     rationalText(knots[static_cast<std::size_t>(i + p + 1)]))});
         html += ExactPanel::heading(QCoreApplication::translate("granota::ui::BSplineTab", "Supports [uᵢ, uᵢ₊ₚ₊₁)"));
         html += ExactPanel::table({QString(), QCoreApplication::translate("granota::ui::BSplineTab", "non-zero on")}, rows);
     }
@@ -94,7 +92,7 @@ QString bsplineReportHtml(const BSplineScene& scene)
             ++j;
         const int m = static_cast<int>(j - i);
         const bool inside = knots[i] > scene.exact.domainStart() && knots[i] < scene.exact.domainEnd();
-        rows.push_back({exactText(knots[i]), QString::number(m),
+        rows.push_back({rationalText(knots[i]), QString::number(m),
                         inside ? (p - m >= 0 ? QStringLiteral("C<sup>%1</sup>").arg(p - m)
                                              : QCoreApplication::translate("granota::ui::BSplineTab", "broken"))
                                : QCoreApplication::translate("granota::ui::BSplineTab", "outside or at an end")});
@@ -115,7 +113,7 @@ QString bsplineReportHtml(const BSplineScene& scene)
     if (scene.curve.rational()) {
         QStringList w;
         for (const Rational& q : scene.exact.weights)
-            w << exactText(q);
+            w << rationalText(q);
         html += QStringLiteral("<p>%1</p>")
                     .arg(QCoreApplication::translate("granota::ui::BSplineTab", "Weights: %1").arg(w.join(QStringLiteral(", "))));
     }

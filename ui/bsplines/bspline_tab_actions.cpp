@@ -20,7 +20,6 @@ namespace granota::ui {
 
 namespace {
 constexpr int kRulerSteps = 200; ///< a dragged knot lands on a round step of at most 1/kRulerSteps of the knots' extent
-QString exactText(const Rational& q) { return displayText(toString(q)); }
 } // namespace
 
 std::vector<Rational> BSplineTab::knots() const { return m_model.knotsFor(static_cast<int>(m_editor->points().size())); }
@@ -136,13 +135,14 @@ bool BSplineTab::insertKnot(const Rational& value)
     const BSplineCurve<Rational>& c = m_scene.exact;
     const int p = c.degree;
     if (value < c.domainStart() || value > c.domainEnd()) {
-        refuse(tr("A knot is inserted inside the domain [%1, %2].").arg(exactText(c.domainStart()), exactText(c.domainEnd())));
+        refuse(
+            tr("A knot is inserted inside the domain [%1, %2].").arg(rationalText(c.domainStart()), rationalText(c.domainEnd())));
         return false;
     }
     if (!checkKnotInsertion(c, value, 1)) { // inside the domain, so the multiplicity is the fault
         const int m = knotMultiplicity(c.knots, value);
         refuse(tr("u = %1 is a knot of multiplicity %2 already: once more would break the curve (at most p = %3 times).")
-                   .arg(exactText(value))
+                   .arg(rationalText(value))
                    .arg(m)
                    .arg(p));
         return false;
@@ -156,10 +156,10 @@ bool BSplineTab::insertKnot(const Rational& value)
     after.knots = inserted.knots;
     after.weights = inserted.weights;
     const std::vector<Point> before = m_editor->points();
-    changeCurve(inserted, after, tr("Insert knot %1").arg(exactText(value)));
+    changeCurve(inserted, after, tr("Insert knot %1").arg(rationalText(value)));
     m_previousPolygon = before; // drawn under the new polygon until the next edit
     m_canvas->update();
-    refuse(tr("Knot %1 inserted: %2 control points now, the same curve.").arg(exactText(value)).arg(inserted.pointCount()));
+    refuse(tr("Knot %1 inserted: %2 control points now, the same curve.").arg(rationalText(value)).arg(inserted.pointCount()));
     return true;
 }
 
@@ -172,7 +172,7 @@ bool BSplineTab::removeKnot(int index)
         return false;
     const Rational value = c.knots[static_cast<std::size_t>(index)];
     if (!(value > c.domainStart() && value < c.domainEnd())) {
-        refuse(tr("Only a knot inside the domain can be removed; %1 is at its end or outside it.").arg(exactText(value)));
+        refuse(tr("Only a knot inside the domain can be removed; %1 is at its end or outside it.").arg(rationalText(value)));
         return false;
     }
     if (c.pointCount() - 1 < c.degree + 1) {
@@ -181,14 +181,14 @@ bool BSplineTab::removeKnot(int index)
     }
     const KnotRemoval<Rational> r = granota::removeKnot(c, value, 1, 0.0);
     if (r.removed == 0) {
-        refuse(tr("The curve needs the knot %1: removing it would change the curve.").arg(exactText(value)));
+        refuse(tr("The curve needs the knot %1: removing it would change the curve.").arg(rationalText(value)));
         return false;
     }
     BSplineModel after = m_model;
     after.knots = r.curve.knots;
     after.weights = r.curve.weights;
-    changeCurve(r.curve, after, tr("Remove knot %1").arg(exactText(value)));
-    refuse(tr("Knot %1 removed: the curve is exactly the same.").arg(exactText(value)));
+    changeCurve(r.curve, after, tr("Remove knot %1").arg(rationalText(value)));
+    refuse(tr("Knot %1 removed: the curve is exactly the same.").arg(rationalText(value)));
     return true;
 }
 
@@ -226,7 +226,7 @@ bool BSplineTab::setWeights(const std::vector<Rational>& weights)
     }
     for (const Rational& w : weights)
         if (!(w > 0)) {
-            refuse(tr("A weight must be positive, not %1.").arg(exactText(w)));
+            refuse(tr("A weight must be positive, not %1.").arg(rationalText(w)));
             return false;
         }
     // Weights all equal give the polynomial curve: kept as typed, the document says what was meant.

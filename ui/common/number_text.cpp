@@ -70,6 +70,8 @@ QString panelNumber(double v)
 
 QString panelPointText(const Point& p) { return displayPair(panelNumber(p.x), panelNumber(p.y)); }
 
+QString rationalText(const Rational& q) { return displayText(toString(q)); }
+
 QString panelPointText(const Vec2<Rational>& p)
 {
     return QStringLiteral("(%1, %2)").arg(QString::fromStdString(toString(p.x)), QString::fromStdString(toString(p.y)));

@@ -47,6 +47,8 @@ QString displayPoint(double x, double y);
 QString panelNumber(double v);
 /// A point of doubles in an exact panel, each coordinate a panelNumber.
 QString panelPointText(const Point& p);
+/// A fraction as the window shows it: "1/3", "-2" (displayText of the core's text).
+QString rationalText(const Rational& q);
 /// A point of fractions in an exact panel: "(1/2, 3)".
 QString panelPointText(const Vec2<Rational>& p);
 
