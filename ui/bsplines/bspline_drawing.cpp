@@ -1,11 +1,14 @@
 #include "ui/bsplines/bspline_drawing.h"
 
+#include "ui/common/number_text.h"
 #include "ui/files/tikz_writer.h"
 
 #include <QPainter>
 #include <QPainterPath>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace granota::ui {
 
@@ -105,6 +108,37 @@ void drawBSpline(QPainter& p, const ViewTransform& view, const CanvasStyle& styl
         drawDots(p, level, view, c, style.handleRadius() * 0.6, style.thinLine());
     }
     drawDots(p, {scene.net.point()}, view, CanvasStyle::series(degree), style.handleRadius() * 0.9, style.thinLine() * 1.5);
+}
+
+void drawBSplineWeights(QPainter& p, const ViewTransform& view, const CanvasStyle& style, const std::vector<Point>& points,
+                        const std::vector<Rational>& weights, int selected)
+{
+    if (weights.size() != points.size())
+        return;
+    p.setRenderHint(QPainter::Antialiasing);
+    const double r0 = style.handleRadius();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (!isFinite(points[i]))
+            continue;
+        // w = 1 at 2.2 handle radii, ± 0.6 a doubling, kept between the handle and 6 radii.
+        const double r = r0 * std::clamp(2.2 + 0.6 * std::log2(toDouble(weights[i])), 1.2, 6.0);
+        p.setPen(QPen(kBSplineWeightColour, style.thinLine() * (static_cast<int>(i) == selected ? 1.8 : 1.0), Qt::DotLine));
+        p.setBrush(Qt::NoBrush);
+        p.drawEllipse(view.toScreen(points[i]), r, r);
+    }
+    if (selected < 0 || selected >= static_cast<int>(points.size()) || !isFinite(points[static_cast<std::size_t>(selected)]))
+        return;
+    const QPointF at = view.toScreen(points[static_cast<std::size_t>(selected)]);
+    const QString text = QStringLiteral("w = %1").arg(rationalText(weights[static_cast<std::size_t>(selected)]));
+    p.setFont(style.labelFont());
+    const QFontMetricsF fm(p.font());
+    const QRectF box(at + QPointF(r0 * 1.6, r0 * 1.6), QSizeF(fm.horizontalAdvance(text) + 6, fm.height() + 2));
+    p.setPen(Qt::NoPen);
+    p.setBrush(QColor(255, 255, 255, 210));
+    p.drawRoundedRect(box, 3, 3);
+    p.setPen(kBSplineWeightColour);
+    p.drawText(box, Qt::AlignCenter, text);
+    p.setBrush(Qt::NoBrush);
 }
 
 void writeBSplineTikz(TikzWriter& w, const std::vector<Point>& points, const BSplineModel& model, const BSplineScene& scene)

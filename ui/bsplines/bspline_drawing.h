@@ -35,6 +35,13 @@ inline QColor bsplineSegmentColour(int i) { return i % 2 ? QColor(0x8e, 0x44, 0x
 void drawBSpline(QPainter& p, const ViewTransform& view, const CanvasStyle& style, const BSplineModel& model,
                  const BSplineScene& scene, const std::vector<Point>& previousPolygon);
 
+/// The weights of a rational curve (none drawn for a polynomial one): a thin ring round each
+/// point Pᵢ whose radius grows with log₂ wᵢ (w = 1 just outside the handle, each doubling a
+/// little wider), and "w = …" (exact) beside the selected point (−1: none).
+inline const QColor kBSplineWeightColour(0x8e, 0x44, 0xad);
+void drawBSplineWeights(QPainter& p, const ViewTransform& view, const CanvasStyle& style, const std::vector<Point>& points,
+                        const std::vector<Rational>& weights, int selected);
+
 /// The same in TikZ: the curve as cubic `.. controls ..` segments when its Bézier segments are
 /// cubic or less (raised to degree 3 exactly), else as a polyline of its samples; the polygon, the
 /// points P_i, the net at u.

@@ -11,7 +11,8 @@ namespace granota::ui {
 bool BSplineModel::operator==(const BSplineModel& o) const
 {
     return degree == o.degree && preset == o.preset && knots == o.knots && weights == o.weights && u == o.u && net == o.net &&
-           bezierSegments == o.bezierSegments && cubicCircle == o.cubicCircle;
+           bezierSegments == o.bezierSegments && cubicCircle == o.cubicCircle && curvaturePlot == o.curvaturePlot &&
+           homogeneousCurve == o.homogeneousCurve;
 }
 
 int BSplineModel::degreeFor(int pointCount) const { return std::clamp(std::min(degree, pointCount - 1), 1, kMaxBSplineDegree); }
@@ -114,6 +115,10 @@ void writeModel(const BSplineModel& m, QJsonObject& json)
     json.insert(QStringLiteral("bezier_segments"), m.bezierSegments);
     if (m.cubicCircle)
         json.insert(QStringLiteral("cubic_circle"), true);
+    if (m.curvaturePlot)
+        json.insert(QStringLiteral("curvature_plot"), true);
+    if (m.homogeneousCurve)
+        json.insert(QStringLiteral("homogeneous_curve"), true);
 }
 
 std::optional<BSplineModel> readModel(const QJsonObject& json, QString* problem)
@@ -155,7 +160,9 @@ std::optional<BSplineModel> readModel(const QJsonObject& json, QString* problem)
     }
     const std::pair<const char*, bool BSplineModel::*> flags[] = {{"net", &BSplineModel::net},
                                                                   {"bezier_segments", &BSplineModel::bezierSegments},
-                                                                  {"cubic_circle", &BSplineModel::cubicCircle}};
+                                                                  {"cubic_circle", &BSplineModel::cubicCircle},
+                                                                  {"curvature_plot", &BSplineModel::curvaturePlot},
+                                                                  {"homogeneous_curve", &BSplineModel::homogeneousCurve}};
     for (const auto& [key, flag] : flags) {
         const QJsonValue v = json.value(QLatin1String(key));
         if (v.isUndefined())

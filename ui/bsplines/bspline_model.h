@@ -33,6 +33,8 @@ struct BSplineModel {
     bool net = true;                         ///< de Boor's net at u, level by level
     bool bezierSegments = false;             ///< the curve's Bézier segments (the extraction) drawn
     bool cubicCircle = false;                ///< the cubic Bézier quarter circle drawn beside (its radial error)
+    bool curvaturePlot = false;              ///< the plot under the canvas shows κ(s) instead of the basis functions
+    bool homogeneousCurve = false;           ///< the inset of the curve in (wx, wy, w) (homogeneous_view.h)
 
     bool operator==(const BSplineModel& o) const;
     bool operator!=(const BSplineModel& o) const { return !(*this == o); }
@@ -56,7 +58,7 @@ QString presetKey(KnotPreset preset);
 std::optional<KnotPreset> presetFromKey(const QString& key);
 
 /// The model as JSON ("degree", "knot_preset", "knots" and "weights" as exact texts "1/3", "u",
-/// "net", "bezier_segments") and back. readModel checks the types and the ranges it can check
+/// "net", "bezier_segments", "cubic_circle", "curvature_plot", "homogeneous_curve") and back. readModel checks the types and the ranges it can check
 /// alone (the degree, the preset, each number); the tab checks the knots and the weights
 /// against the points (checkBSpline). nullopt with `problem` (English, the key at fault) on bad data.
 void writeModel(const BSplineModel& m, QJsonObject& json);

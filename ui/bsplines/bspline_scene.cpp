@@ -57,7 +57,8 @@ BSplineScene computeBSplineScene(const std::vector<Point>& points, const std::ve
             s.samples.push_back(bsplinePoint(s.curve, u));
         }
     }
-    for (const auto& segment : toBezierSegments(s.curve)) {
+    const auto pieces = toBezierSegments(s.curve);
+    for (const auto& segment : pieces) {
         s.bezier.push_back(segment.points);
         s.bezierWeights.push_back(segment.weights);
         if (!s.curve.rational() && p <= 3) {
@@ -66,6 +67,17 @@ BSplineScene computeBSplineScene(const std::vector<Point>& points, const std::ve
             while (b.size() < 4)
                 b = elevateDegree(b);
             s.cubics.push_back({b[0], b[1], b[2], b[3]});
+        }
+    }
+    if (model.homogeneousCurve)
+        s.homogeneous = homogeneousView(s.curve, BSplineScene::kHomogeneousSamples);
+    if (model.curvaturePlot) {
+        s.curvature = curvatureProfile(s.bezier, s.bezierWeights, BSplineScene::kCurvatureSamples);
+        // Piece i ≥ 1 starts at an interior knot of the domain; its multiplicity m is counted
+        // among the knots (pieces[i].start is one of them: the extraction keeps the knot values).
+        for (std::size_t i = 1; i < pieces.size() && i < s.curvature.knots.size(); ++i) {
+            const auto m = static_cast<int>(std::count(s.curve.knots.begin(), s.curve.knots.end(), pieces[i].start));
+            s.curvatureKnots.push_back({s.curvature.knots[i], m});
         }
     }
     return s;

@@ -9,8 +9,10 @@
 #include "core/base/vec2.h"
 #include "core/curves/bsplines/bspline_curve.h"
 #include "core/curves/bsplines/de_boor.h"
+#include "core/curves/splines/curvature_profile.h"
 #include "core/exact/rational.h"
 #include "ui/bsplines/bspline_model.h"
+#include "ui/bsplines/homogeneous_view.h"
 
 #include <QString>
 
@@ -21,7 +23,9 @@
 namespace granota::ui {
 
 struct BSplineScene {
-    static constexpr int kSamplesPerSpan = 32; ///< samples of each non-empty knot span, both ends included
+    static constexpr int kSamplesPerSpan = 32;     ///< samples of each non-empty knot span, both ends included
+    static constexpr int kCurvatureSamples = 48;   ///< κ(s) samples of each Bézier piece, both ends included
+    static constexpr int kHomogeneousSamples = 17; ///< samples of each span in (wx, wy, w) (its middle among them)
 
     BSplineCurve<double> curve; ///< the curve drawn: the points, the knots and weights in force
     /// The same exactly: each point's exact form, or the value of its double where it has none
@@ -46,6 +50,18 @@ struct BSplineScene {
     /// the exact one when the model asks (circle_arcs.h), and its largest radial error.
     std::vector<Point> cubicCircle;
     double cubicCircleError = 0;
+    /// κ(s) along the curve when the plot shows it (model.curvaturePlot): the profile of its
+    /// Bézier segments (curvature_profile.h), one piece per non-empty span, so a jump of κ at a
+    /// knot is a break; and each interior knot of the domain with its multiplicity m (the
+    /// curve is Cᵖ⁻ᵐ there), at the s where its piece starts.
+    CurvatureProfile curvature;
+    struct KnotContinuity {
+        double s = 0;         ///< arc length from the curve's start to the knot
+        int multiplicity = 1; ///< m; the curve is Cᵖ⁻ᵐ there (broken when m = p + 1)
+    };
+    std::vector<KnotContinuity> curvatureKnots;
+    /// The curve in (wx, wy, w) when the model shows it (homogeneous_view.h).
+    HomogeneousView homogeneous;
 
     bool valid() const { return error.isEmpty(); }
     int span() const { return net.span; }

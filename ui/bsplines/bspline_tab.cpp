@@ -3,10 +3,12 @@
 #include "core/base/number_format.h"
 #include "core/io/worked_examples.h"
 #include "ui/bsplines/bspline_basis_plot.h"
+#include "ui/bsplines/bspline_curvature_plot.h"
 #include "ui/bsplines/bspline_drawing.h"
 #include "ui/bsplines/bspline_examples.h"
 #include "ui/bsplines/bspline_report.h"
 #include "ui/bsplines/knot_ruler.h"
+#include "ui/bsplines/weight_gesture.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/number_text.h"
@@ -58,10 +60,19 @@ BSplineTab::BSplineTab(QWidget* parent) : CurveTab(QStringLiteral("bspline"), QT
 {
     m_canvas->addLayer([this](QPainter& p, const ViewTransform& v, const CanvasStyle& s) {
         drawBSpline(p, v, s, m_model, m_scene, m_previousPolygon);
+        if (m_editor && m_editor->handlesVisible())
+            drawBSplineWeights(p, v, s, m_editor->points(), m_scene.exact.weights, m_editor->selected());
+    });
+    m_canvas->addOverlay([this](QPainter& p, const ViewTransform&, const CanvasStyle& s) {
+        const QRectF inset = homogeneousInset();
+        if (!inset.isEmpty())
+            drawHomogeneousView(p, inset, m_scene.homogeneous, s, tr("The curve in (wx, wy, w)"));
     });
     m_editor = new PointEditor(m_canvas, m_undo, this);
     m_editor->setLabelPrefix(QStringLiteral("P"));
     m_editor->setCountLimits(2, BSplineModel::kMaxPoints);
+    m_weightGesture = new WeightGesture(m_editor, this);
+    connect(m_weightGesture, &WeightGesture::weightStepped, this, [this](int index, int steps) { stepWeight(index, steps); });
     m_timer = new QTimer(this);
     m_timer->setInterval(kAnimationMs);
     connect(m_timer, &QTimer::timeout, this, &BSplineTab::advanceAnimation);
@@ -154,10 +165,14 @@ void BSplineTab::buildUi()
     m_presetLabel->setBuddy(m_presetCombo);
     m_weightsLabel = new QLabel(m_curveBox);
     m_weightsEdit = new QLineEdit(m_curveBox);
+    m_weightsEdit->setObjectName(QStringLiteral("bsplineWeights"));
     m_weightsLabel->setBuddy(m_weightsEdit);
     m_netCheck = new QCheckBox(m_curveBox);
     m_bezierCheck = new QCheckBox(m_curveBox);
     m_cubicCircleCheck = new QCheckBox(m_curveBox);
+    m_curvatureCheck = new QCheckBox(m_curveBox);
+    m_curvatureCheck->setObjectName(QStringLiteral("bsplineCurvaturePlot"));
+    m_homogeneousCheck = new QCheckBox(m_curveBox);
     auto* curveLayout = new QGridLayout(m_curveBox);
     curveLayout->addWidget(m_degreeLabel, 0, 0);
     curveLayout->addWidget(m_degreeSpin, 0, 1);
@@ -168,6 +183,8 @@ void BSplineTab::buildUi()
     curveLayout->addWidget(m_netCheck, 3, 0, 1, 2);
     curveLayout->addWidget(m_bezierCheck, 4, 0, 1, 2);
     curveLayout->addWidget(m_cubicCircleCheck, 5, 0, 1, 2);
+    curveLayout->addWidget(m_curvatureCheck, 6, 0, 1, 2);
+    curveLayout->addWidget(m_homogeneousCheck, 7, 0, 1, 2);
     curveLayout->setColumnStretch(1, 1);
     connect(m_degreeSpin, &QSpinBox::valueChanged, this, [this](int d) {
         if (!m_syncing && !setDegree(d))
@@ -211,6 +228,14 @@ void BSplineTab::buildUi()
     connect(m_cubicCircleCheck, &QCheckBox::toggled, this, [this](bool on) {
         if (!m_syncing)
             setCubicCircleVisible(on);
+    });
+    connect(m_curvatureCheck, &QCheckBox::toggled, this, [this](bool on) {
+        if (!m_syncing)
+            setCurvaturePlot(on);
+    });
+    connect(m_homogeneousCheck, &QCheckBox::toggled, this, [this](bool on) {
+        if (!m_syncing)
+            setHomogeneousCurveVisible(on);
     });
 
     m_actionsBox = new QGroupBox(this);
@@ -289,8 +314,8 @@ void BSplineTab::buildUi()
     layout->addWidget(split);
 
     setTabOrderOf({m_canvas, m_ruler, m_uSlider, m_play, m_plot, m_degreeSpin, m_presetCombo, m_weightsEdit, m_netCheck,
-                   m_bezierCheck, m_cubicCircleCheck, m_insertButton, m_removeButton, m_elevateButton, m_examplesCombo,
-                   m_sideTabs});
+                   m_bezierCheck, m_cubicCircleCheck, m_curvatureCheck, m_homogeneousCheck, m_insertButton, m_removeButton,
+                   m_elevateButton, m_examplesCombo, m_sideTabs});
 }
 
 QString BSplineTab::hint() const
@@ -304,14 +329,16 @@ QString BSplineTab::keyboardHint() const
     if (m_ruler && m_ruler->hasFocus())
         return tr("Ruler keys: Left/Right select a knot, Shift+Left/Right move it, Insert inserts a knot at u, Delete "
                   "removes the selected knot; Tab leaves the ruler.");
-    return CurveTab::keyboardHint();
+    return tr("Keys: ] and [ select a point, the arrows nudge it (Shift: ten times more), + and − change its weight, "
+              "Delete removes it; Tab leaves the canvas.");
 }
 
 void BSplineTab::retranslate()
 {
     m_canvas->setAccessibleName(tr("B-spline canvas"));
     m_canvas->setToolTip(tr("Drag a point to move it; double-click to add one; Delete removes the selected point; "
-                            "drag the paper to pan, wheel to zoom. The ringed points are the p + 1 that act at u."));
+                            "drag the paper to pan, wheel to zoom; Shift+wheel over a point changes its weight. The "
+                            "ringed points are the p + 1 that act at u."));
     m_ruler->setAccessibleName(tr("Knot ruler"));
     m_ruler->setToolTip(tr("The knots u₀ ≤ … ≤ uₙ₊ₚ₊₁: drag one (it never passes its neighbours), double-click to "
                            "insert one, the badge is a knot's multiplicity. Bold: the domain [uₚ, uₙ₊₁]; yellow: the "
@@ -346,6 +373,16 @@ void BSplineTab::retranslate()
     m_cubicCircleCheck->setToolTip(tr("The usual cubic Bézier quarter circle (1, 0), (1, k), (k, 1), (0, 1), k = 4(√2 − 1)/3, "
                                       "dashed: close to the circle but not on it (its radial error is in the exact panel); "
                                       "the rational quarter circle is exact."));
+    m_curvatureCheck->setText(tr("Curvature κ(s) in the &plot"));
+    m_curvatureCheck->setToolTip(tr("Plot the signed curvature κ of the curve against its arc length s instead of the basis "
+                                    "functions, each interior knot labelled with the continuity Cᵖ⁻ᵐ there: κ may jump "
+                                    "at a knot of multiplicity p − 1 (C¹) and the curve may turn a corner at one of "
+                                    "multiplicity p (C⁰)."));
+    m_homogeneousCheck->setText(tr("Homo&geneous curve (wx, wy, w)"));
+    m_homogeneousCheck->setToolTip(tr("An inset with the curve as the projection of a polynomial B-spline in space: the "
+                                      "points Hᵢ = (wᵢxᵢ, wᵢyᵢ, wᵢ) (purple), the polynomial curve through them, and the "
+                                      "rays from the origin O through each Hᵢ down to the plane w = 1, where they meet "
+                                      "Pᵢ and the rational curve."));
     m_actionsBox->setTitle(tr("Actions"));
     m_insertButton->setText(tr("&Insert knot at u"));
     m_insertButton->setToolTip(tr("Boehm's knot insertion: one more point and one more knot, the curve unchanged; the "
@@ -360,7 +397,6 @@ void BSplineTab::retranslate()
     m_examplesCombo->setAccessibleName(tr("Examples"));
     m_examplesCombo->setToolTip(tr("Ex 2.2's Bézier curve as a B-spline; a uniform cubic closed on Ex 2.13's points; the "
                                    "circle and the conics, exactly, as rational curves."));
-    setBSplineBasisPlotTexts(m_plotTitle, m_plot);
     m_exact->setToolTip(tr("Exact results: de Boor's net at u, the basis functions there, their supports, the knots "
                            "with their multiplicities and the continuity of the curve at each."));
     m_sideTabs->setAccessibleName(tr("Exact results and points"));
@@ -389,6 +425,12 @@ void BSplineTab::syncControls()
     m_netCheck->setChecked(m_model.net);
     m_bezierCheck->setChecked(m_model.bezierSegments);
     m_cubicCircleCheck->setChecked(m_model.cubicCircle);
+    m_curvatureCheck->setChecked(m_model.curvaturePlot);
+    m_homogeneousCheck->setChecked(m_model.homogeneousCurve);
+    if (m_model.curvaturePlot)
+        setBSplineCurvaturePlotTexts(m_plotTitle, m_plot);
+    else
+        setBSplineBasisPlotTexts(m_plotTitle, m_plot);
     if (m_scene.valid()) {
         const Rational lo = m_scene.exact.domainStart(), hi = m_scene.exact.domainEnd();
         m_uSlider->setValue(static_cast<int>(std::lround(toDouble((m_scene.u - lo) / (hi - lo)) * kUSteps)));
@@ -429,7 +471,7 @@ void BSplineTab::recompute()
     m_ruler->setKnots(m_scene.curve.knots, m_scene.degree(), texts);
     m_ruler->setParameter(toDouble(m_scene.u), m_scene.valid() ? m_scene.span() : -1);
     m_exact->setContent(bsplineReportHtml(m_scene));
-    updateBSplineBasisPlot(m_plot, font(), m_scene, presentationScale(presentation()));
+    updatePlot();
     m_canvas->update();
     m_canvas->setAccessibleDescription(
         tr("B-spline of degree %1 with %n control point(s) and %2 knots.", nullptr, static_cast<int>(m_editor->points().size()))
@@ -475,6 +517,24 @@ void BSplineTab::updateContentBounds(bool force)
             return;
     }
     m_canvas->setContentBounds(contentBounds());
+}
+
+void BSplineTab::updatePlot()
+{
+    if (m_model.curvaturePlot)
+        updateBSplineCurvaturePlot(m_plot, font(), m_scene, presentationScale(presentation()));
+    else
+        updateBSplineBasisPlot(m_plot, font(), m_scene, presentationScale(presentation()));
+}
+
+QRectF BSplineTab::homogeneousInset() const
+{
+    if (!m_model.homogeneousCurve || !m_scene.valid())
+        return {};
+    // The lower right corner of the canvas.
+    const QRectF r = m_canvas->rect();
+    const double w = std::min(r.width() * 0.48, 480.0), h = std::min(r.height() * 0.52, 360.0);
+    return QRectF(r.right() - w - 8, r.bottom() - h - 8, w, h);
 }
 
 bool BSplineTab::isPlaying() const { return m_timer->isActive(); }
@@ -636,21 +696,21 @@ void BSplineTab::drawTikz(TikzWriter& w) const { writeBSplineTikz(w, m_editor->p
 void BSplineTab::presentationChanged(bool on)
 {
     m_ruler->setStyleScale(presentationScale(on));
-    updateBSplineBasisPlot(m_plot, font(), m_scene, presentationScale(on));
+    updatePlot();
 }
 
 void BSplineTab::resizeEvent(QResizeEvent* event)
 {
     CurveTab::resizeEvent(event);
     // The plot's legend needs a plot high enough for it (updateBSplineBasisPlot).
-    QTimer::singleShot(0, this, [this] { updateBSplineBasisPlot(m_plot, font(), m_scene, presentationScale(presentation())); });
+    QTimer::singleShot(0, this, [this] { updatePlot(); });
 }
 
 void BSplineTab::changeEvent(QEvent* event)
 {
     CurveTab::changeEvent(event);
     if (event->type() == QEvent::FontChange && m_plot)
-        updateBSplineBasisPlot(m_plot, font(), m_scene, presentationScale(presentation()));
+        updatePlot();
 }
 
 } // namespace granota::ui

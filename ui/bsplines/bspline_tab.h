@@ -33,6 +33,7 @@ class QToolButton;
 namespace granota::ui {
 
 class KnotRuler;
+class WeightGesture;
 
 class BSplineTab : public CurveTab {
     Q_OBJECT
@@ -74,10 +75,20 @@ public:
     bool elevateDegree();
     /// The weights (n + 1 of them, each > 0), or none (polynomial).
     bool setWeights(const std::vector<Rational>& weights);
+    /// Point `index`'s weight by `steps` notches (weight_gesture.h: ×2^(±1/4) each, two
+    /// significant digits, exact); the other weights stay (1 each if there were none).
+    /// Consecutive changes of one point are one undo step.
+    bool stepWeight(int index, int steps);
     void setNetVisible(bool on);
     void setBezierSegmentsVisible(bool on);
     /// The cubic Bézier quarter circle beside (the quarter-circle example turns it on).
     void setCubicCircleVisible(bool on);
+    /// The plot under the canvas: κ(s) with the knots' continuity (on) or the basis functions.
+    void setCurvaturePlot(bool on);
+    /// The inset of the curve in (wx, wy, w) and its rays down to w = 1.
+    void setHomogeneousCurveVisible(bool on);
+    /// Where the inset is drawn on the canvas (widget pixels; empty while hidden).
+    QRectF homogeneousInset() const;
     /// Loads one of the tab's examples (bspline_examples.h) as one undo step.
     void loadBSplineExample(BSplineExampleId id);
     bool isPlaying() const;
@@ -111,8 +122,11 @@ private:
     Rational rulerValue(double value) const;
     void advanceAnimation();
     void updateContentBounds(bool force);
+    /// Redraws the plot under the canvas: the basis functions or κ(s), as the model asks.
+    void updatePlot();
 
     KnotRuler* m_ruler = nullptr;
+    WeightGesture* m_weightGesture = nullptr;
     QCustomPlot* m_plot = nullptr;
     QLabel* m_plotTitle = nullptr;
     QTabWidget* m_sideTabs = nullptr;
@@ -126,6 +140,8 @@ private:
     QCheckBox* m_netCheck = nullptr;
     QCheckBox* m_bezierCheck = nullptr;
     QCheckBox* m_cubicCircleCheck = nullptr;
+    QCheckBox* m_curvatureCheck = nullptr;
+    QCheckBox* m_homogeneousCheck = nullptr;
     QGroupBox* m_actionsBox = nullptr;
     QPushButton* m_insertButton = nullptr;
     QPushButton* m_removeButton = nullptr;

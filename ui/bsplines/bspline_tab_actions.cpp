@@ -9,6 +9,7 @@
 #include "core/curves/bsplines/knot_removal.h"
 #include "core/exact/round_step.h"
 #include "ui/bsplines/knot_ruler.h"
+#include "ui/bsplines/weight_gesture.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/number_text.h"
 #include "ui/common/point_editor.h"
@@ -19,6 +20,7 @@
 namespace granota::ui {
 
 namespace {
+constexpr int kWeightMergeIdBase = 0x42570000; ///< "BW" + the point's index: its weight's changes merge
 constexpr int kRulerSteps = 200; ///< a dragged knot lands on a round step of at most 1/kRulerSteps of the knots' extent
 } // namespace
 
@@ -236,6 +238,30 @@ bool BSplineTab::setWeights(const std::vector<Rational>& weights)
     return true;
 }
 
+bool BSplineTab::stepWeight(int index, int steps)
+{
+    const int count = static_cast<int>(m_editor->points().size());
+    if (index < 0 || index >= count || steps == 0)
+        return false;
+    std::vector<Rational> weights = m_model.weightsFor(count);
+    if (weights.empty())
+        weights.assign(static_cast<std::size_t>(count), Rational(1));
+    Rational& w = weights[static_cast<std::size_t>(index)];
+    const Rational stepped = steppedWeight(w, steps);
+    if (stepped == w) {
+        refuse((steps > 0 ? tr("The weight of P%1 is already %2, the largest the canvas reaches.")
+                          : tr("The weight of P%1 is already %2, the smallest the canvas reaches."))
+                   .arg(index)
+                   .arg(rationalText(w)));
+        return false;
+    }
+    w = stepped;
+    BSplineModel after = m_model;
+    after.weights = weights;
+    changeModel(after, tr("Change the weight of P%1").arg(index), kWeightMergeIdBase + index % 0x10000);
+    return true;
+}
+
 void BSplineTab::setNetVisible(bool on)
 {
     BSplineModel after = m_model;
@@ -255,6 +281,20 @@ void BSplineTab::setCubicCircleVisible(bool on)
     BSplineModel after = m_model;
     after.cubicCircle = on;
     changeModel(after, on ? tr("Show the cubic circle") : tr("Hide the cubic circle"));
+}
+
+void BSplineTab::setCurvaturePlot(bool on)
+{
+    BSplineModel after = m_model;
+    after.curvaturePlot = on;
+    changeModel(after, on ? tr("Plot the curvature") : tr("Plot the basis functions"));
+}
+
+void BSplineTab::setHomogeneousCurveVisible(bool on)
+{
+    BSplineModel after = m_model;
+    after.homogeneousCurve = on;
+    changeModel(after, on ? tr("Show the homogeneous curve") : tr("Hide the homogeneous curve"));
 }
 
 } // namespace granota::ui
