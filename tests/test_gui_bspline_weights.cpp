@@ -171,8 +171,8 @@ private slots:
         QCOMPARE(field->text(), QStringLiteral("1, 7/5, 2"));
         // A wheel without Shift zooms, as before.
         const double zoom = canvas->view().scale();
-        QWheelEvent plain(at, canvas->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier,
-                          Qt::NoScrollPhase, false);
+        QWheelEvent plain(at, canvas->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase,
+                          false);
         QCoreApplication::sendEvent(canvas, &plain);
         QVERIFY(canvas->view().scale() > zoom);
         QCOMPARE(tab.model().weights, weightList({{1, 1}, {7, 5}, {2, 1}}));
@@ -185,6 +185,25 @@ private slots:
         QCOMPARE(tab.model().weights[1], kMinWeight);
         QVERIFY(!tab.stepWeight(1, -1));
         QVERIFY(!tab.lastMessage().isEmpty());
+    }
+
+    // With the control points hidden, Shift+wheel over where P₁ is changes no weight, as the
+    // + and − keys do not: a hidden point cannot be picked.
+    void noWeightByWheelWhenPointsAreHidden()
+    {
+        BSplineTab tab;
+        showWeightsTab(tab);
+        tab.loadBSplineExample(BSplineExampleId::QuarterCircle);
+        CurveCanvas* canvas = tab.canvas();
+        const QPointF at = canvas->view().toScreen(tab.pointEditor()->points()[1]);
+        tab.pointEditor()->setSelected(1);
+        tab.pointEditor()->setHandlesVisible(false);
+        const int undo = tab.undoStack()->count();
+        QWheelEvent wheel(at, canvas->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton, Qt::ShiftModifier,
+                          Qt::NoScrollPhase, false);
+        QCoreApplication::sendEvent(canvas, &wheel);
+        QCOMPARE(tab.model().weights, weightList({{1, 1}, {1, 1}, {2, 1}}));
+        QCOMPARE(tab.undoStack()->count(), undo);
     }
 
     void weightOfAPolynomialCurve()

@@ -45,8 +45,8 @@ bool WeightGesture::eventFilter(QObject* watched, QEvent* event)
         return QObject::eventFilter(watched, event);
     if (event->type() == QEvent::Wheel) {
         auto* e = static_cast<QWheelEvent*>(event);
-        if (!(e->modifiers() & Qt::ShiftModifier))
-            return false; // the canvas zooms
+        if (!(e->modifiers() & Qt::ShiftModifier) || !m_editor->handlesVisible())
+            return false; // the canvas zooms (and hidden points have no weight to turn, as for + and −)
         int index = m_editor->pick(e->position());
         if (index < 0)
             index = m_editor->selected();
