@@ -6079,5 +6079,81 @@ Ja no és al disc.</translation>
             <source>Σ N&lt;sub&gt;i,p&lt;/sub&gt;(u) = %1: partition of unity</source>
             <translation>Σ N&lt;sub&gt;i,p&lt;/sub&gt;(u) = %1: partició de la unitat</translation>
         </message>
+        <message>
+            <source>An inset with the curve as the projection of a polynomial B-spline in space: the points Hᵢ = (wᵢxᵢ, wᵢyᵢ, wᵢ) (purple), the polynomial curve through them, and the rays from the origin O through each Hᵢ down to the plane w = 1, where they meet Pᵢ and the rational curve.</source>
+            <translation>Un requadre amb la corba com a projecció d&apos;una B-spline polinòmica de l&apos;espai: els punts Hᵢ = (wᵢxᵢ, wᵢyᵢ, wᵢ) (en lila), la corba polinòmica que determinen i els raigs des de l&apos;origen O per cada Hᵢ fins al pla w = 1, on troben Pᵢ i la corba racional.</translation>
+        </message>
+        <message>
+            <source>Change the weight of P%1</source>
+            <translation>Canvia el pes de P%1</translation>
+        </message>
+        <message>
+            <source>Curvature κ against arc length s</source>
+            <translation>Curvatura κ segons la longitud d&apos;arc s</translation>
+        </message>
+        <message>
+            <source>Curvature κ(s) in the &amp;plot</source>
+            <translation>&amp;Curvatura κ(s) al gràfic</translation>
+        </message>
+        <message>
+            <source>Drag a point to move it; double-click to add one; Delete removes the selected point; drag the paper to pan, wheel to zoom; Shift+wheel over a point changes its weight. The ringed points are the p + 1 that act at u.</source>
+            <translation>Arrossegueu un punt per moure&apos;l; feu doble clic per afegir-ne un; Supr elimina el punt seleccionat; arrossegueu el paper per desplaçar-lo i feu servir la roda per fer zoom; Maj+roda sobre un punt en canvia el pes. Els punts encerclats són els p + 1 que actuen a u.</translation>
+        </message>
+        <message>
+            <source>Hide the homogeneous curve</source>
+            <translation>Amaga la corba homogènia</translation>
+        </message>
+        <message>
+            <source>Homo&amp;geneous curve (wx, wy, w)</source>
+            <translation>Corba &amp;homogènia (wx, wy, w)</translation>
+        </message>
+        <message>
+            <source>Keys: ] and [ select a point, the arrows nudge it (Shift: ten times more), + and − change its weight, Delete removes it; Tab leaves the canvas.</source>
+            <translation>Tecles: ] i [ seleccionen un punt, les fletxes el mouen una mica (Maj: deu vegades més), + i − en canvien el pes, Supr l&apos;elimina; Tab surt del llenç.</translation>
+        </message>
+        <message>
+            <source>Plot the basis functions</source>
+            <translation>Mostra les funcions de base</translation>
+        </message>
+        <message>
+            <source>Plot the curvature</source>
+            <translation>Mostra la curvatura</translation>
+        </message>
+        <message>
+            <source>Plot the signed curvature κ of the curve against its arc length s instead of the basis functions, each interior knot labelled with the continuity Cᵖ⁻ᵐ there: κ may jump at a knot of multiplicity p − 1 (C¹) and the curve may turn a corner at one of multiplicity p (C⁰).</source>
+            <translation>Mostra la curvatura amb signe κ de la corba segons la longitud d&apos;arc s en lloc de les funcions de base, amb cada nus interior marcat amb la continuïtat Cᵖ⁻ᵐ que hi té: κ pot saltar en un nus de multiplicitat p − 1 (C¹) i la corba pot fer una punta en un de multiplicitat p (C⁰).</translation>
+        </message>
+        <message>
+            <source>Show the homogeneous curve</source>
+            <translation>Mostra la corba homogènia</translation>
+        </message>
+        <message>
+            <source>The curve in (wx, wy, w)</source>
+            <translation>La corba a (wx, wy, w)</translation>
+        </message>
+        <message>
+            <source>The weight of P%1 is already %2, the largest the canvas reaches.</source>
+            <translation>El pes de P%1 ja és %2, el més gran que permet el llenç.</translation>
+        </message>
+        <message>
+            <source>The weight of P%1 is already %2, the smallest the canvas reaches.</source>
+            <translation>El pes de P%1 ja és %2, el més petit que permet el llenç.</translation>
+        </message>
+        <message>
+            <source>arc length s</source>
+            <translation>longitud d&apos;arc s</translation>
+        </message>
+        <message>
+            <source>curvature κ</source>
+            <translation>curvatura κ</translation>
+        </message>
+        <message>
+            <source>κ = (x′y″ − y′x″)/|c′|³, positive where the curve turns left, computed on each Bézier piece of the curve. At a knot of multiplicity m the curve is Cᵖ⁻ᵐ: κ is continuous where the curve is C², it may jump at C¹ (a break in the line), and at C⁰ the curve may turn a corner.</source>
+            <translation>κ = (x′y″ − y′x″)/|c′|³, positiva on la corba gira a l&apos;esquerra, calculada sobre cada tram de Bézier de la corba. En un nus de multiplicitat m la corba és Cᵖ⁻ᵐ: κ és contínua on la corba és C², pot saltar on és C¹ (un tall a la línia) i on és C⁰ la corba pot fer una punta.</translation>
+        </message>
+        <message>
+            <source>κ(s) of the curve; the light vertical lines are its interior knots, each labelled with the continuity there.</source>
+            <translation>κ(s) de la corba; les línies verticals clares són els nusos interiors, cadascun amb la continuïtat que hi té.</translation>
+        </message>
     </context>
 </TS>

@@ -6079,5 +6079,81 @@ It is no longer on disk.</translation>
             <source>Σ N&lt;sub&gt;i,p&lt;/sub&gt;(u) = %1: partition of unity</source>
             <translation>Σ N&lt;sub&gt;i,p&lt;/sub&gt;(u) = %1: partition of unity</translation>
         </message>
+        <message>
+            <source>An inset with the curve as the projection of a polynomial B-spline in space: the points Hᵢ = (wᵢxᵢ, wᵢyᵢ, wᵢ) (purple), the polynomial curve through them, and the rays from the origin O through each Hᵢ down to the plane w = 1, where they meet Pᵢ and the rational curve.</source>
+            <translation>An inset with the curve as the projection of a polynomial B-spline in space: the points Hᵢ = (wᵢxᵢ, wᵢyᵢ, wᵢ) (purple), the polynomial curve through them, and the rays from the origin O through each Hᵢ down to the plane w = 1, where they meet Pᵢ and the rational curve.</translation>
+        </message>
+        <message>
+            <source>Change the weight of P%1</source>
+            <translation>Change the weight of P%1</translation>
+        </message>
+        <message>
+            <source>Curvature κ against arc length s</source>
+            <translation>Curvature κ against arc length s</translation>
+        </message>
+        <message>
+            <source>Curvature κ(s) in the &amp;plot</source>
+            <translation>Curvature κ(s) in the &amp;plot</translation>
+        </message>
+        <message>
+            <source>Drag a point to move it; double-click to add one; Delete removes the selected point; drag the paper to pan, wheel to zoom; Shift+wheel over a point changes its weight. The ringed points are the p + 1 that act at u.</source>
+            <translation>Drag a point to move it; double-click to add one; Delete removes the selected point; drag the paper to pan, wheel to zoom; Shift+wheel over a point changes its weight. The ringed points are the p + 1 that act at u.</translation>
+        </message>
+        <message>
+            <source>Hide the homogeneous curve</source>
+            <translation>Hide the homogeneous curve</translation>
+        </message>
+        <message>
+            <source>Homo&amp;geneous curve (wx, wy, w)</source>
+            <translation>Homo&amp;geneous curve (wx, wy, w)</translation>
+        </message>
+        <message>
+            <source>Keys: ] and [ select a point, the arrows nudge it (Shift: ten times more), + and − change its weight, Delete removes it; Tab leaves the canvas.</source>
+            <translation>Keys: ] and [ select a point, the arrows nudge it (Shift: ten times more), + and − change its weight, Delete removes it; Tab leaves the canvas.</translation>
+        </message>
+        <message>
+            <source>Plot the basis functions</source>
+            <translation>Plot the basis functions</translation>
+        </message>
+        <message>
+            <source>Plot the curvature</source>
+            <translation>Plot the curvature</translation>
+        </message>
+        <message>
+            <source>Plot the signed curvature κ of the curve against its arc length s instead of the basis functions, each interior knot labelled with the continuity Cᵖ⁻ᵐ there: κ may jump at a knot of multiplicity p − 1 (C¹) and the curve may turn a corner at one of multiplicity p (C⁰).</source>
+            <translation>Plot the signed curvature κ of the curve against its arc length s instead of the basis functions, each interior knot labelled with the continuity Cᵖ⁻ᵐ there: κ may jump at a knot of multiplicity p − 1 (C¹) and the curve may turn a corner at one of multiplicity p (C⁰).</translation>
+        </message>
+        <message>
+            <source>Show the homogeneous curve</source>
+            <translation>Show the homogeneous curve</translation>
+        </message>
+        <message>
+            <source>The curve in (wx, wy, w)</source>
+            <translation>The curve in (wx, wy, w)</translation>
+        </message>
+        <message>
+            <source>The weight of P%1 is already %2, the largest the canvas reaches.</source>
+            <translation>The weight of P%1 is already %2, the largest the canvas reaches.</translation>
+        </message>
+        <message>
+            <source>The weight of P%1 is already %2, the smallest the canvas reaches.</source>
+            <translation>The weight of P%1 is already %2, the smallest the canvas reaches.</translation>
+        </message>
+        <message>
+            <source>arc length s</source>
+            <translation>arc length s</translation>
+        </message>
+        <message>
+            <source>curvature κ</source>
+            <translation>curvature κ</translation>
+        </message>
+        <message>
+            <source>κ = (x′y″ − y′x″)/|c′|³, positive where the curve turns left, computed on each Bézier piece of the curve. At a knot of multiplicity m the curve is Cᵖ⁻ᵐ: κ is continuous where the curve is C², it may jump at C¹ (a break in the line), and at C⁰ the curve may turn a corner.</source>
+            <translation>κ = (x′y″ − y′x″)/|c′|³, positive where the curve turns left, computed on each Bézier piece of the curve. At a knot of multiplicity m the curve is Cᵖ⁻ᵐ: κ is continuous where the curve is C², it may jump at C¹ (a break in the line), and at C⁰ the curve may turn a corner.</translation>
+        </message>
+        <message>
+            <source>κ(s) of the curve; the light vertical lines are its interior knots, each labelled with the continuity there.</source>
+            <translation>κ(s) of the curve; the light vertical lines are its interior knots, each labelled with the continuity there.</translation>
+        </message>
     </context>
 </TS>
