@@ -80,14 +80,12 @@ BSplineCurve<Rational> randomGroupedBSpline(std::mt19937& rng, int p, bool ratio
     }
 }
 
-bool sameSegments(const std::vector<RationalBezierSegment<Rational>>& a,
-                  const std::vector<RationalBezierSegment<Rational>>& b)
+bool sameSegments(const std::vector<RationalBezierSegment<Rational>>& a, const std::vector<RationalBezierSegment<Rational>>& b)
 {
     if (a.size() != b.size())
         return false;
     for (std::size_t i = 0; i < a.size(); ++i)
-        if (a[i].points != b[i].points || a[i].weights != b[i].weights || a[i].start != b[i].start ||
-            a[i].end != b[i].end)
+        if (a[i].points != b[i].points || a[i].weights != b[i].weights || a[i].start != b[i].start || a[i].end != b[i].end)
             return false;
     return true;
 }
