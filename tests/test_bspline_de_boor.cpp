@@ -153,6 +153,25 @@ private slots:
             }
     }
 
+    // basisFunctionsInto (the caller's fixed array, no allocation) writes the values of the
+    // Cox–de Boor recursion (basisFunction, computed independently) into N[0..p], and nothing
+    // past them (a sentinel there stays).
+    void basisIntoCallerStorage()
+    {
+        for (const auto& c : randomCurves())
+            for (const auto& u : testParameters(c)) {
+                const int p = c.degree, n = c.pointCount() - 1;
+                const int k = findSpan(c.knots, p, n + 1, u);
+                BasisValues<Rational> N;
+                N.fill(Rational(-7));
+                basisFunctionsInto(c.knots, p, k, u, N);
+                for (int j = 0; j <= kMaxBSplineDegree; ++j) {
+                    const auto jj = static_cast<std::size_t>(j);
+                    QCOMPARE(N[jj], j <= p ? basisFunction(c.knots, k - p + j, p, u) : Rational(-7));
+                }
+            }
+    }
+
     // N_{i,p} is zero outside [u_i, u_{i+p+1}) and positive inside (u_i, u_{i+p+1}) — checked
     // at every knot and inside every span of the domain.
     void support()

@@ -9,8 +9,11 @@
 #include "core/curves/bsplines/de_boor.h"
 #include "core/io/worked_examples.h"
 #include "ui/bsplines/bspline_examples.h"
+#include "ui/bsplines/bspline_report.h"
 #include "ui/bsplines/bspline_tab.h"
 #include "ui/bsplines/knot_ruler.h"
+#include "ui/common/curve_canvas.h"
+#include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
 #include "gui_timeouts.h"
 
@@ -175,6 +178,39 @@ private slots:
         QVERIFY(tab.knots()[4] > 0);
         QVERIFY(tab.knots()[4] < frac(1, 3));
         QVERIFY(tab.scene().valid());
+    }
+
+    // Issue 36: the tab takes 1000 control points (BSplineModel::kMaxPoints; 200 before). Its
+    // exact panel lists the first and last 12 of the 998 distinct knots (0, i/997, 1: the clamped
+    // definition) around a row of "…", and a point dragged across the canvas leaves the panel
+    // showing the final curve once the drag ends (the panel follows a drag on a timer).
+    void thousandPoints()
+    {
+        BSplineTab tab;
+        showTab(tab);
+        std::vector<Point> points;
+        for (int i = 0; i < 1000; ++i)
+            points.emplace_back(i / 20.0, 4 * std::sin(i / 14.0));
+        tab.pointEditor()->setPoints(points, QStringLiteral("thousand"));
+        QCOMPARE(tab.pointEditor()->points().size(), std::size_t(1000));
+        QVERIFY(tab.scene().valid());
+        QCOMPARE(tab.scene().bezier.size(), std::size_t(997));
+        const QString panel = tab.exactPanel()->plainText();
+        QVERIFY(panel.contains(QStringLiteral("11/997")));
+        QVERIFY(panel.contains(QStringLiteral("986/997")));
+        QVERIFY(panel.contains(QStringLiteral("…\t…\t…")));
+
+        CurveCanvas* canvas = tab.canvas();
+        const QPointF from = canvas->view().toScreen(tab.pointEditor()->points()[500]);
+        sendMouse(canvas, QEvent::MouseButtonPress, from, Qt::LeftButton);
+        sendMouse(canvas, QEvent::MouseMove, from + QPointF(0, 10), Qt::LeftButton);
+        sendMouse(canvas, QEvent::MouseMove, from + QPointF(0, 40), Qt::LeftButton);
+        sendMouse(canvas, QEvent::MouseButtonRelease, from + QPointF(0, 40), Qt::NoButton);
+        QVERIFY(tab.pointEditor()->points() != points); // a point moved
+        // The same report typeset apart from the tab: what the panel shows now.
+        ExactPanel fresh;
+        fresh.setContent(bsplineReportHtml(tab.scene()));
+        QCOMPARE(tab.exactPanel()->plainText(), fresh.plainText());
     }
 
     void insertionKeepsTheCurve()

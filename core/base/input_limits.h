@@ -41,13 +41,6 @@ constexpr long kMaxCurveSamples = 1000000;
 /// half a second at most, where 10 000 sides and 2000 points (10¹¹) froze the window 48 s.
 constexpr double kMaxBezierOutlineWork = 5e8;
 
-/// The most work one Bézier extraction of a B-spline (`granota-cli bspline --to-bezier`,
-/// curves/bsplines/bezier_extraction.h) may take, counted as n²·p² for n + 1 control points of
-/// degree p: the extraction inserts each interior knot in its turn, and each insertion writes
-/// a whole new curve. About 2 ns a unit in doubles on the reference machine, so 4 s at most;
-/// 20 000 cubic points (3.6e9, 7 s) are refused, 10 000 (9e8, 1.7 s) are not.
-constexpr double kMaxBezierExtractionWork = 2e9;
-
 /// The most work one `granota-cli simulate` or `bench` run may ask for, in estimated
 /// nanoseconds on the reference machine (softbody/step_cost.h: steps × the estimated time
 /// of a step, which counts the substeps and the work that grows faster than the vertices):

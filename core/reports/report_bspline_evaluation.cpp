@@ -82,7 +82,8 @@ struct ExtractedCurve {
 Point basisSum(const BSplineCurve<double>& c, double u)
 {
     const int span = findSpan(c.knots, c.degree, c.pointCount(), u);
-    const std::vector<double> N = basisFunctions(c.knots, c.degree, span, u);
+    BasisValues<double> N;
+    basisFunctionsInto(c.knots, c.degree, span, u, N);
     Point sum(0, 0);
     for (int i = 0; i <= c.degree; ++i) {
         const double n = N[static_cast<std::size_t>(i)];

@@ -3,10 +3,12 @@
 // the canvas at 1280×760 — must fit in one frame (16.7 ms at 60 Hz); and a frame of the frog
 // canvas with 200 frogs — one step and one paint — too. Both paint as the screen does
 // (repaint: paintEvent into the backing store). Both paint as the screen does
-// (repaint: paintEvent into the backing store).
+// (repaint: paintEvent into the backing store). And a drag on a 1000-point cubic B-spline in the
+// B-spline tab, its canvas and basis plot repainted (issue 36).
 //   QT_QPA_PLATFORM=offscreen build/bin/granota-bench --benchmark_filter=Gui
 #include "core/softbody/scenes/scene.h"
 #include "core/softbody/simulation.h"
+#include "ui/bsplines/bspline_tab.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/decasteljau/decasteljau_tab.h"
 #include "ui/frog/frog_canvas.h"
@@ -93,6 +95,51 @@ void BM_GuiDragDegree30AllOverlays(benchmark::State& state)
         tab.setHodographVisible(true);
     });
 }
+
+// Issue 36: a real drag of the middle point on a cubic B-spline with `count` control points
+// (clamped knots) in the B-spline tab at 1280×760, de Boor's net and the basis plot shown: each
+// mouse move recomputes the tab (curve, net, Bézier pieces, ruler, exact panel, basis plot) and
+// is followed by a repaint of the canvas and of the basis plot, as on screen.
+void dragBSpline(benchmark::State& state, int count)
+{
+    ensureApplication();
+    BSplineTab tab;
+    tab.resize(1280, 760);
+    tab.show();
+    QCoreApplication::processEvents();
+    std::vector<Point> points;
+    for (int i = 0; i < count; ++i)
+        points.emplace_back(i * 50.0 / count, 4 * std::sin(i * 70.0 / count));
+    tab.pointEditor()->setPoints(points, QStringLiteral("bench"));
+    if (tab.pointEditor()->points().size() != points.size() || !tab.setDegree(3) || !tab.setPreset(KnotPreset::Clamped)) {
+        state.SkipWithError("the B-spline tab refused the cubic points (BSplineModel::kMaxPoints)");
+        return;
+    }
+    tab.setNetVisible(true);
+    QCoreApplication::processEvents();
+    CurveCanvas* canvas = tab.canvas();
+    QCustomPlot* plot = tab.basisPlot();
+    const QPointF start = canvas->view().toScreen(points[static_cast<std::size_t>(count / 2)]);
+    QMouseEvent press(QEvent::MouseButtonPress, start, canvas->mapToGlobal(start), Qt::LeftButton, Qt::LeftButton,
+                      Qt::NoModifier);
+    QCoreApplication::sendEvent(canvas, &press);
+    int frame = 0;
+    for (auto _ : state) {
+        const QPointF at = start + QPointF(0, (frame++ % 2) ? 3 : -3); // the mouse moved
+        QMouseEvent move(QEvent::MouseMove, at, canvas->mapToGlobal(at), Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(canvas, &move);
+        canvas->repaint();
+        plot->replot(QCustomPlot::rpImmediateRefresh);
+    }
+    QMouseEvent release(QEvent::MouseButtonRelease, start, canvas->mapToGlobal(start), Qt::LeftButton, Qt::NoButton,
+                        Qt::NoModifier);
+    QCoreApplication::sendEvent(canvas, &release);
+    state.counters["frame_budget_ms"] = 1000.0 / 60.0;
+}
+
+void BM_GuiBSplineDrag1000(benchmark::State& state) { dragBSpline(state, 1000); }
+// The same at 200 points, the tab's limit before issue 36's speed work.
+void BM_GuiBSplineDrag200(benchmark::State& state) { dragBSpline(state, 200); }
 
 void BM_GuiFrog200(benchmark::State& state)
 {
@@ -189,4 +236,6 @@ BENCHMARK(BM_GuiFrog200Plots)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GuiDragDegree30)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GuiDragDegree30AllOverlays)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GuiFrog200)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GuiBSplineDrag1000)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GuiBSplineDrag200)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_GuiSeedExplodedTrail)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond);

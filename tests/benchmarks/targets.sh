@@ -74,14 +74,15 @@ for py in python3 /usr/bin/python3; do
   fi
 done
 exact10_ms=$(bench 'BM_DeBoorExact/10$' ms)
+bspline_drag_ms=$(bench 'BM_GuiBSplineDrag1000$' ms)
 
 closed_ms=$(bench 'BM_ClosedSpline/100000$' ms)
 # The peer: scipy's periodic CubicSpline on the same 10⁵ points (Debian's python3-scipy); nan without it.
 scipy_closed_ms=$(/usr/bin/python3 tests/benchmarks/peer/scipy_periodic_spline.py 100000 2>/dev/null || echo nan)
 
-python3 - "$java_ns" "$seed_ns" "$stable_us" "$pile_ms" "$spread_ms" "$outline_us" "$fit_ms" "$drag_ms" "$frogs_ms" "$length3_us" "$length10_us" "$features_us" "$closest_us" "$overlays_ms" "$plain_ms" "$recorded_ms" "$frogs_plots_ms" "$scrub_ms" "$bspline_ms" "$eigen_ms" "$scipy_ms" "$exact10_ms" "$sampled_ms" "$bspline_cpu_ms" "$scipy_cpu_ms" "$closed_ms" "$scipy_closed_ms" <<'PY'
+python3 - "$java_ns" "$seed_ns" "$stable_us" "$pile_ms" "$spread_ms" "$outline_us" "$fit_ms" "$drag_ms" "$frogs_ms" "$length3_us" "$length10_us" "$features_us" "$closest_us" "$overlays_ms" "$plain_ms" "$recorded_ms" "$frogs_plots_ms" "$scrub_ms" "$bspline_ms" "$eigen_ms" "$scipy_ms" "$exact10_ms" "$sampled_ms" "$bspline_cpu_ms" "$scipy_cpu_ms" "$closed_ms" "$scipy_closed_ms" "$bspline_drag_ms" <<'PY'
 import math, sys, platform, subprocess
-java, seed, stable, pile, spread, outline, fit, drag, frogs, length3, length10, features, closest, overlays, plain, recorded, frogs_plots, scrub, bspline, eigen, scipy, exact10, sampled, bspline_cpu, scipy_cpu, closed, scipy_closed = map(float, sys.argv[1:])
+java, seed, stable, pile, spread, outline, fit, drag, frogs, length3, length10, features, closest, overlays, plain, recorded, frogs_plots, scrub, bspline, eigen, scipy, exact10, sampled, bspline_cpu, scipy_cpu, closed, scipy_closed, bspline_drag = map(float, sys.argv[1:])
 cpu = next((l.split(':',1)[1].strip() for l in open('/proc/cpuinfo') if l.startswith('model name')), '?')
 print(f"Machine: {cpu}, {subprocess.check_output(['nproc']).decode().strip()} cores; release build.\n")
 print("| target | measured | goal | met |")
@@ -106,6 +107,7 @@ rows = [
   ("the same sampled by `bsplinePoints` (the span carried from one parameter to the next) vs Eigen (in turns)", f"{sampled:.0f} ms vs {eigen:.0f} ms: Granota / Eigen **{sampled/eigen:.2f}**", "< 1", sampled < eigen),
   ("`bsplinePoint` against scipy's `BSpline.__call__` (same run, CPU time; real time in brackets)", f"{bspline_cpu:.0f} ms vs {scipy_cpu:.0f} ms ({bspline:.0f} vs {scipy:.0f} ms): Granota / scipy **{bspline_cpu/scipy_cpu:.2f}**" if not math.isnan(scipy) else "scipy not installed", "< 1", bspline_cpu < scipy_cpu if not math.isnan(scipy) else None),
   ("exact de Boor (rationals), degree 10: every level of the net", f"{exact10:.3f} ms", "< 5 ms", exact10 < 5),
+  ("drag on a 1000-point cubic B-spline, net and basis plot shown: recompute + repaint of canvas and plot", f"{bspline_drag:.1f} ms", "< 16.7 ms (one frame)", bspline_drag < 16.7),
   ("closed C² spline through 10⁵ points, chord parameters, vs scipy `CubicSpline(bc_type='periodic')` (same run)", f"{closed:.1f} ms vs {scipy_closed:.0f} ms: **{scipy_closed/closed:.1f}×**" if not math.isnan(scipy_closed) else f"{closed:.1f} ms (scipy not installed)", "< 50 ms", closed < 50),
   ("one `stable` frog step", f"{stable:.1f} µs", "—", True),
 ]

@@ -7,6 +7,7 @@
 #include "ui/common/plot_title_room.h"
 
 #include <QCoreApplication>
+#include <QDataStream>
 #include <QLabel>
 #include <qcustomplot.h>
 
@@ -16,10 +17,13 @@ namespace granota::ui {
 
 namespace {
 constexpr int kBasisPlotMinArea = 70;   ///< pixels between the axes, at least
-constexpr int kPlotSamplesPerSpan = 24; ///< samples of each non-empty knot span
+constexpr int kPlotSamplesPerSpan = 24; ///< samples of each non-empty knot span, at most
+constexpr int kPlotSamplesPerPixel = 3; ///< fewer per span when the spans are narrower than 8 pixels (1000 points)
 constexpr int kLegendUpTo = 7;          ///< N_i in the legend up to this many functions (two rows with Σ)
+constexpr int kSeriesColours = 10;      ///< CanvasStyle::series repeats after this many
 constexpr int kLegendColumns = 4;       ///< a row fits the plot at 800 × 600
-constexpr int kLegendMinHeight = 170;   ///< a lower plot (800 × 600) has no room for the legend's rows: none
+constexpr char kBasisPlotKeyProperty[] = "granotaBasisPlotKey"; ///< what the plot shows (knots, degree, u, style)
+constexpr int kLegendMinHeight = 170; ///< a lower plot (800 × 600) has no room for the legend's rows: none
 } // namespace
 
 BasisSamples sampleBasis(const BSplineCurve<double>& curve, int samplesPerSpan)
@@ -38,6 +42,7 @@ BasisSamples sampleBasis(const BSplineCurve<double>& curve, int samplesPerSpan)
         out.sum.back() += value;
     };
     const int last = static_cast<int>(k.size()) - 1;
+    BasisValues<double> N;
     for (int span = 0; span < last; ++span) {
         const double a = k[static_cast<std::size_t>(span)], b = k[static_cast<std::size_t>(span + 1)];
         if (!(a < b))
@@ -50,8 +55,14 @@ BasisSamples sampleBasis(const BSplineCurve<double>& curve, int samplesPerSpan)
             // N_{span−p−1} ends here at 0, its line's last sample.
             if (j == 0 && span - p - 1 >= 0 && span - p - 1 <= n)
                 record(span - p - 1, 0.0);
-            for (int i = std::max(0, span - p); i <= std::min(n, span); ++i)
-                record(i, basisFunction(k, i, p, u));
+            if (span >= p && span <= n) { // all p + 1 functions exist: A2.2 at once, no allocation
+                basisFunctionsInto(k, p, span, u, N);
+                for (int i = span - p; i <= span; ++i)
+                    record(i, N[static_cast<std::size_t>(i - (span - p))]);
+            } else { // outside the domain, fewer than p + 1 of them
+                for (int i = std::max(0, span - p); i <= std::min(n, span); ++i)
+                    record(i, basisFunction(k, i, p, u));
+            }
         }
     }
     // The last knot, where the domain ends (closed there, bspline_basis.h).
@@ -67,6 +78,9 @@ void setUpBSplineBasisPlot(QCustomPlot* plot)
 {
     keepTickLabelsInside(plot);
     plot->legend->setVisible(true);
+    // Legend items only for the few functions the legend shows: QCustomPlot's grid searches its
+    // items on each addition, 1000 graphs would cost it a second.
+    plot->setAutoAddPlottableToLegend(false);
     plot->legend->setBrush(QColor(255, 255, 255, 190));
     plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
     plot->legend->setWrap(kLegendColumns); // rows over the plot's top, above the functions (≤ 1)
@@ -85,8 +99,22 @@ void setBSplineBasisPlotTexts(QLabel* title, QCustomPlot* plot)
                                                  "[uₚ, uₙ₊₁], the vertical line is u."));
 }
 
+void invalidateBSplineBasisPlot(QCustomPlot* plot) { plot->setProperty(kBasisPlotKeyProperty, QVariant()); }
+
 void updateBSplineBasisPlot(QCustomPlot* plot, const QFont& font, const BSplineScene& scene, double scale)
 {
+    // The functions depend on the knots, the degree and u, not on the control points: a drag of
+    // a point changes nothing here, and the plot keeps what it has.
+    QByteArray key;
+    {
+        QDataStream out(&key, QIODevice::WriteOnly);
+        out << scene.valid() << scene.curve.degree << toDouble(scene.u) << scale << font.toString() << plot->size();
+        for (double v : scene.curve.knots)
+            out << v;
+    }
+    if (plot->property(kBasisPlotKeyProperty).toByteArray() == key)
+        return;
+    plot->setProperty(kBasisPlotKeyProperty, key);
     plot->clearGraphs();
     plot->clearItems();
     QFont small = font;
@@ -102,19 +130,41 @@ void updateBSplineBasisPlot(QCustomPlot* plot, const QFont& font, const BSplineS
         plot->replot(QCustomPlot::rpQueuedReplot);
         return;
     }
-    const BasisSamples b = sampleBasis(scene.curve, kPlotSamplesPerSpan);
+    int spans = 0;
+    for (std::size_t j = 0; j + 1 < scene.curve.knots.size(); ++j)
+        spans += scene.curve.knots[j] < scene.curve.knots[j + 1];
+    const int perSpan = std::clamp(kPlotSamplesPerPixel * plot->width() / std::max(1, spans), 2, kPlotSamplesPerSpan);
+    const BasisSamples b = sampleBasis(scene.curve, perSpan);
     const int count = static_cast<int>(b.functions.size());
     const bool legend = count <= kLegendUpTo && plot->height() >= kLegendMinHeight;
     plot->legend->setVisible(legend);
-    for (int i = 0; i < count; ++i) {
-        const BasisSamples::Support& f = b.functions[static_cast<std::size_t>(i)];
-        QVector<double> u, y(f.values.begin(), f.values.end());
-        for (std::size_t j = 0; j < f.values.size(); ++j)
-            u.push_back(b.u[static_cast<std::size_t>(f.first) + j]);
+    // One graph per colour once the colours repeat (CanvasStyle::series has kSeriesColours): N_i,
+    // N_{i+10}, … one after the other with a gap (NaN) between, so that 1000 points cost QCustomPlot
+    // 10 graphs to draw, not 1000. Their supports [u_i, u_{i+p+1}] follow one another for p ≤ 9.
+    const int p = scene.curve.degree;
+    const bool grouped = count > kSeriesColours && p + 1 <= kSeriesColours;
+    const int graphs = grouped ? kSeriesColours : count;
+    for (int c = 0; c < graphs; ++c) {
+        QVector<double> u, y;
+        for (int i = c; i < count; i += grouped ? kSeriesColours : count) {
+            const BasisSamples::Support& f = b.functions[static_cast<std::size_t>(i)];
+            if (f.values.empty())
+                continue;
+            if (!u.isEmpty()) { // a gap, at the key where the last function ended
+                u.push_back(u.back());
+                y.push_back(qQNaN());
+            }
+            for (std::size_t j = 0; j < f.values.size(); ++j) {
+                u.push_back(b.u[static_cast<std::size_t>(f.first) + j]);
+                y.push_back(f.values[j]);
+            }
+        }
         QCPGraph* g = plot->addGraph();
         g->setData(u, y, true);
-        g->setPen(QPen(CanvasStyle::series(i), (count > 40 ? 1.0 : 2.0) * scale));
-        g->setName(QStringLiteral("N") + subscriptDigits(i));
+        g->setPen(QPen(CanvasStyle::series(c), (count > 40 ? 1.0 : 2.0) * scale));
+        g->setName(QStringLiteral("N") + subscriptDigits(c));
+        if (legend)
+            g->addToLegend();
     }
     // Σ N_{i,p} on the domain only: 1 there (partition of unity), not outside it.
     const double lo = scene.curve.domainStart(), hi = scene.curve.domainEnd();
@@ -128,6 +178,8 @@ void updateBSplineBasisPlot(QCustomPlot* plot, const QFont& font, const BSplineS
     total->setData(du, ds, true);
     total->setPen(QPen(QColor(0x2b, 0x2b, 0x2b), 1.2 * scale, Qt::DashLine));
     total->setName(QStringLiteral("Σ"));
+    if (legend)
+        total->addToLegend();
 
     auto* domain = new QCPItemRect(plot);
     domain->topLeft->setCoords(lo, 1.05);

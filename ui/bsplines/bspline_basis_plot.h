@@ -22,6 +22,9 @@ void setBSplineBasisPlotTexts(QLabel* title, QCustomPlot* plot);
 /// Plots `scene`'s basis functions in `font`, lines `scale` times the normal width, and queues a
 /// replot. The legend (N₀…, Σ) only while the plot is high enough for it: call again on a resize.
 void updateBSplineBasisPlot(QCustomPlot* plot, const QFont& font, const BSplineScene& scene, double scale);
+/// Makes the next updateBSplineBasisPlot draw again, after another plot (κ(s)) drew over it:
+/// the basis plot redraws only when the knots, the degree, u or the style change.
+void invalidateBSplineBasisPlot(QCustomPlot* plot);
 
 /// The samples of N_{i,p}(u) the plot draws: u over [u_0, u_{n+p+1}], and each function over its
 /// support only (it is zero elsewhere): p + 1 spans' worth of samples each, so that 200 points

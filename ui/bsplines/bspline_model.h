@@ -23,7 +23,7 @@
 namespace granota::ui {
 
 struct BSplineModel {
-    static constexpr int kMaxPoints = 200; ///< docs/extreme-cases.md (as the Catmull-Rom tab)
+    static constexpr int kMaxPoints = 1000; ///< docs/extreme-cases.md: a drag at 1000 points fits a 60 Hz frame (bench_gui.cpp)
 
     int degree = 3;                          ///< p, 1..kMaxBSplineDegree (less while there are fewer than p + 1 points)
     KnotPreset preset = KnotPreset::Clamped; ///< the knots unless edited ones fit

@@ -12,7 +12,8 @@ namespace granota::ui {
 
 namespace {
 
-constexpr int kSupportRowsUpTo = 24; ///< the supports are listed up to this many points
+constexpr int kSupportRowsUpTo = 24;   ///< the supports are listed up to this many points
+constexpr int kKnotRowsAtEachEnd = 12; ///< beyond twice this many distinct knots, the first and last ones around "…"
 
 } // namespace
 
@@ -97,6 +98,14 @@ QString bsplineReportHtml(const BSplineScene& scene)
                                              : QCoreApplication::translate("granota::ui::BSplineTab", "broken"))
                                : QCoreApplication::translate("granota::ui::BSplineTab", "outside or at an end")});
         i = j;
+    }
+    // A thousand points give a thousand rows that no one reads and that cost a drag its frame
+    // (the panel lays the table out again at every move): the ends, and the ruler shows the rest.
+    if (rows.size() > 2 * kKnotRowsAtEachEnd) {
+        const auto end = static_cast<std::ptrdiff_t>(kKnotRowsAtEachEnd);
+        rows.erase(rows.begin() + end, rows.end() - end);
+        const QString more = QStringLiteral("…");
+        rows.insert(rows.begin() + end, QStringList{more, more, more});
     }
     html += ExactPanel::heading(QCoreApplication::translate("granota::ui::BSplineTab", "Knots"));
     html += ExactPanel::table({QCoreApplication::translate("granota::ui::BSplineTab", "knot"),

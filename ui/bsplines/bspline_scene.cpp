@@ -54,7 +54,7 @@ BSplineScene computeBSplineScene(const std::vector<Point>& points, const std::ve
             const double t = static_cast<double>(j) / (BSplineScene::kSamplesPerSpan - 1);
             // The span's own end value, not the next one's start, so that each sample is in its span.
             const double u = j + 1 == BSplineScene::kSamplesPerSpan ? b : a + t * (b - a);
-            s.samples.push_back(bsplinePoint(s.curve, u));
+            s.samples.push_back(bsplinePointInSpan(s.curve, u, span)); // the span known: no search
         }
     }
     const auto pieces = toBezierSegments(s.curve);

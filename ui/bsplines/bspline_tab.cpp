@@ -54,6 +54,8 @@ constexpr int kPlaySteps = 200;    ///< Play moves u by 1/kPlaySteps of the doma
 constexpr int kAnimationMs = 40;   ///< Play's frame period (25 frames a second)
 constexpr int kPresetItems = 4;    ///< clamped, uniform, Bézier, and "edited" (not a preset: shown only)
 constexpr int kLongExactText = 14; ///< a fraction longer than this is shown as a decimal (u, the ruler)
+
+constexpr int kBSplinePanelMs = 100; ///< exact panel refresh period while a point is dragged
 } // namespace
 
 BSplineTab::BSplineTab(QWidget* parent) : CurveTab(QStringLiteral("bspline"), QT_TR_NOOP("B-splines"), parent)
@@ -76,6 +78,13 @@ BSplineTab::BSplineTab(QWidget* parent) : CurveTab(QStringLiteral("bspline"), QT
     m_timer = new QTimer(this);
     m_timer->setInterval(kAnimationMs);
     connect(m_timer, &QTimer::timeout, this, &BSplineTab::advanceAnimation);
+    // While a point is dragged, the exact panel (a text document typeset again at every change,
+    // the slowest part of a frame) follows every kBSplinePanelMs, as the De Casteljau tab's does,
+    // and at once when the drag ends (bench_gui.cpp's BM_GuiBSplineDrag1000).
+    m_panelTimer = new QTimer(this);
+    m_panelTimer->setSingleShot(true);
+    m_panelTimer->setInterval(kBSplinePanelMs);
+    connect(m_panelTimer, &QTimer::timeout, this, [this] { m_exact->setContent(bsplineReportHtml(m_scene)); });
     buildUi();
 
     connect(m_editor, &PointEditor::pointsChanged, this, &BSplineTab::pointsEdited);
@@ -470,7 +479,13 @@ void BSplineTab::recompute()
     }
     m_ruler->setKnots(m_scene.curve.knots, m_scene.degree(), texts);
     m_ruler->setParameter(toDouble(m_scene.u), m_scene.valid() ? m_scene.span() : -1);
-    m_exact->setContent(bsplineReportHtml(m_scene));
+    if (m_editor->dragging()) {
+        if (!m_panelTimer->isActive())
+            m_panelTimer->start();
+    } else {
+        m_panelTimer->stop();
+        m_exact->setContent(bsplineReportHtml(m_scene));
+    }
     updatePlot();
     m_canvas->update();
     m_canvas->setAccessibleDescription(
@@ -521,9 +536,10 @@ void BSplineTab::updateContentBounds(bool force)
 
 void BSplineTab::updatePlot()
 {
-    if (m_model.curvaturePlot)
+    if (m_model.curvaturePlot) {
         updateBSplineCurvaturePlot(m_plot, font(), m_scene, presentationScale(presentation()));
-    else
+        invalidateBSplineBasisPlot(m_plot); // it drew over the basis functions
+    } else
         updateBSplineBasisPlot(m_plot, font(), m_scene, presentationScale(presentation()));
 }
 

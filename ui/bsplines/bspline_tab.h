@@ -151,6 +151,7 @@ private:
     QToolButton* m_play = nullptr;
     QComboBox* m_examplesCombo = nullptr;
     QTimer* m_timer = nullptr;
+    QTimer* m_panelTimer = nullptr; ///< coalesces exact panel refreshes while a point is dragged
 
     BSplineModel m_model;
     BSplineScene m_scene;

@@ -48,6 +48,8 @@ void KnotRuler::setStyleScale(double scale)
 
 void KnotRuler::setKnots(const std::vector<double>& knots, int degree, const QStringList& texts)
 {
+    if (knots == m_knots && texts == m_texts && degree == m_degree)
+        return; // a point dragged: nothing of the ruler's changed, no repaint (1000 knots cost a frame)
     m_knots = knots;
     m_texts = texts;
     m_degree = degree;
@@ -60,6 +62,8 @@ void KnotRuler::setKnots(const std::vector<double>& knots, int degree, const QSt
 
 void KnotRuler::setParameter(double u, int span)
 {
+    if (u == m_u && span == m_span)
+        return;
     m_u = u;
     m_span = span;
     update();
@@ -181,12 +185,14 @@ void KnotRuler::paintEvent(QPaintEvent*)
         const bool selected = m_selected >= i && m_selected < j;
         p.setPen(QPen(selected ? CanvasStyle().handleSelected : CanvasStyle().handle, (selected ? 3 : 2) * m_scale));
         p.drawLine(QPointF(x, y - tick), QPointF(x, y + tick));
-        const QString value = i < m_texts.size() ? m_texts[i] : displayNumber(at(i));
-        const double w = fm.horizontalAdvance(value);
-        if (x - w / 2 > labelsEnd + 4) {
-            p.setPen(CanvasStyle().text);
-            p.drawText(QPointF(x - w / 2, y + tick + fm.ascent() + 2), value);
-            labelsEnd = x + w / 2;
+        if (x > labelsEnd + 4) { // else no label fits: skip measuring it (1000 knots)
+            const QString value = i < m_texts.size() ? m_texts[i] : displayNumber(at(i));
+            const double w = fm.horizontalAdvance(value);
+            if (x - w / 2 > labelsEnd + 4) {
+                p.setPen(CanvasStyle().text);
+                p.drawText(QPointF(x - w / 2, y + tick + fm.ascent() + 2), value);
+                labelsEnd = x + w / 2;
+            }
         }
         if (j - i > 1) {
             const double r = 0.5 * fm.height() + m_scale;

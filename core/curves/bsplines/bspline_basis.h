@@ -10,25 +10,31 @@
 /// At the domain's end u_{n+1} the last non-empty span is taken closed, so that c(u_{n+1}) is
 /// defined (P_n on a clamped vector).
 
+#include "core/curves/bsplines/bspline_curve.h"
 #include "core/curves/bsplines/knot_vector.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cstddef>
 #include <vector>
 
 namespace granota {
 
+/// Room for the p + 1 basis values of any degree a B-spline may have (p ≤ kMaxBSplineDegree).
+template <class S> using BasisValues = std::array<S, kMaxBSplineDegree + 1>;
+
 /// The p + 1 values N_{span−p,p}(u), …, N_{span,p}(u) — every basis function that can be
 /// non-zero on the span (Piegl & Tiller A2.2, the triangle of de Boor's "inverted" recursion,
-/// with no 0/0). `span` is findSpan(knots, degree, n + 1, u).
-template <class S> std::vector<S> basisFunctions(const std::vector<S>& knots, int degree, int span, const S& u)
+/// with no 0/0) — written to N[0..p], the rest of N untouched. `span` is findSpan(knots,
+/// degree, n + 1, u). No allocation: the knot differences live on the stack (p ≤ 10), so a
+/// drag or a sampling loop may call it per point.
+template <class S> void basisFunctionsInto(const std::vector<S>& knots, int degree, int span, const S& u, BasisValues<S>& N)
 {
     const int p = degree;
-    assert(p >= 0 && span >= p && static_cast<std::size_t>(span + 1) < knots.size());
+    assert(p >= 0 && p <= kMaxBSplineDegree && span >= p && static_cast<std::size_t>(span + 1) < knots.size());
     const auto K = [&](int i) -> const S& { return knots[static_cast<std::size_t>(i)]; };
-    std::vector<S> N(static_cast<std::size_t>(p + 1)), left(static_cast<std::size_t>(p + 1)),
-        right(static_cast<std::size_t>(p + 1));
+    BasisValues<S> left, right; // left[j] = u − u_{span+1−j}, right[j] = u_{span+j} − u (j ≥ 1)
     N[0] = S(1);
     for (int j = 1; j <= p; ++j) {
         left[static_cast<std::size_t>(j)] = S(u - K(span + 1 - j));
@@ -43,7 +49,14 @@ template <class S> std::vector<S> basisFunctions(const std::vector<S>& knots, in
         }
         N[static_cast<std::size_t>(j)] = saved;
     }
-    return N;
+}
+
+/// basisFunctionsInto as a vector of exactly p + 1 values (one allocation, the result's).
+template <class S> std::vector<S> basisFunctions(const std::vector<S>& knots, int degree, int span, const S& u)
+{
+    BasisValues<S> N;
+    basisFunctionsInto(knots, degree, span, u, N);
+    return std::vector<S>(N.begin(), N.begin() + (degree + 1));
 }
 
 /// One basis function N_{i,p}(u) straight from the Cox–de Boor recursion above (the triangle
