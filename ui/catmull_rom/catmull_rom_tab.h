@@ -28,6 +28,7 @@ class QTabWidget;
 namespace granota::ui {
 
 class FamilyPanel;
+class HermiteHandles;
 class ViewTransform;
 struct CanvasStyle;
 
@@ -49,6 +50,7 @@ public:
     /// The last refusal or hint sent to the status bar.
     QString lastMessage() const { return m_lastMessage; }
     FamilyPanel* familyPanel() const { return m_familyPanel; }
+    HermiteHandles* hermiteHandles() const { return m_hermiteHandles; }
 
     /// Undoable edits of the settings. addTension refuses garbage, values outside [−10, 10],
     /// duplicates and an 11th tension with a message (statusMessage) and returns false.
@@ -57,6 +59,15 @@ public:
     void setSelectedTension(int index);
     /// The family selector (curve_family.h): one undo step.
     void setFamily(CurveFamily family);
+    /// The cardinal tension c ∈ [−1, 1] (slider moves merge into one undo step).
+    void setCardinalTension(const Rational& c);
+    /// T (0), C (1) or B (2) ∈ [−1, 1] of the point selected in the editor, or of every point
+    /// when the panel says "All points" or none is selected.
+    void setTcb(int which, const Rational& value);
+    /// The Hermite family's tangent of point `index` (one undo step).
+    void setHermiteTangent(int index, Point tangent);
+    /// Every Hermite tangent back to the Catmull-Rom rule's (one undo step).
+    void resetHermiteTangents();
     void setEnds(CatmullRomEnds ends);
     void setSpacing(CatmullRomSpacing spacing);
     void setBezierVisible(bool on);
@@ -95,7 +106,12 @@ private:
     QRectF contentBounds() const override;
     void buildUi();
     /// Pushes an undo step from the current settings to `after` (nothing if equal).
-    void changeSettings(const CatmullRomSettings& after, const QString& undoText, bool mergeable = false);
+    void changeSettings(const CatmullRomSettings& after, const QString& undoText, bool mergeable = false, int familyMergeId = -1);
+    // The family selector's part of the tab (catmull_rom_tab_families.cpp).
+    void buildFamilyControls();
+    void syncHermiteHandles();
+    void hermiteTangentDragged(int index, Point tangent);
+    void hermiteDragFinished(int index, Point startTangent);
     /// Makes `s` current (undo/redo, loading): controls, curves, panel, plot.
     void applySettings(const CatmullRomSettings& s);
     void pointsEdited();
@@ -114,6 +130,7 @@ private:
 
     QCustomPlot* m_plot = nullptr;
     FamilyPanel* m_familyPanel = nullptr;
+    HermiteHandles* m_hermiteHandles = nullptr;
     QTabWidget* m_sideTabs = nullptr;
     QGroupBox* m_tensionBox = nullptr;
     QListWidget* m_tauList = nullptr;
