@@ -5,6 +5,7 @@
 #include "ui/catmull_rom/curve_family.h"
 #include "ui/catmull_rom/family_panel.h"
 #include "ui/catmull_rom/hermite_handles.h"
+#include "ui/catmull_rom/knot_continuity_table.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/point_editor.h"
 #include "gui_timeouts.h"
@@ -130,6 +131,35 @@ private slots:
         // The curve still passes through the points (segment 0 ends at P₁, segment 1 starts there).
         QVERIFY(nearPoint(curve.hermite[0].p1, Point{1, 1}));
         QVERIFY(nearPoint(curve.hermite[1].p0, Point{1, 1}));
+    }
+
+    // The knot table on the same example: at q1 the tangents (1, −1/2) and (1, 1/2) (worked
+    // above) differ, so neither C¹ nor G¹ (not parallel: cross product 1·½ − (−½)·1 = 1 ≠ 0),
+    // and the jump |out − in| = |(0, 1)| = 1; back at C = 0 the curve is Catmull-Rom with τ = 1/2,
+    // C¹ at every knot (Prop 2.3).
+    void knotTableShowsC1FailingWhenContinuityIsNotZero()
+    {
+        CatmullRomTab tab;
+        QString error;
+        QVERIFY2(tab.loadState(closedTriangle(tab), &error), qPrintable(error));
+        tab.setFamily(CurveFamily::KochanekBartels);
+        tab.familyPanel()->allKnotsCheck()->setChecked(true);
+        KnotContinuityTable* table = tab.knotTable();
+        QCOMPARE(table->rowCount(), 3); // closed: every point is a knot
+        for (int r = 0; r < 3; ++r)
+            QCOMPARE(table->item(r, KnotContinuityTable::C1Column)->text(), QStringLiteral("✓"));
+        tab.familyPanel()->tcbSlider(1)->setValue(10); // C = 1/2
+        int row = -1;
+        for (int r = 0; r < table->rowCount(); ++r)
+            if (table->knotPoints()[std::size_t(r)] == 1)
+                row = r;
+        QVERIFY(row >= 0);
+        QCOMPARE(table->item(row, KnotContinuityTable::KnotColumn)->text(), QStringLiteral("q1"));
+        QCOMPARE(table->item(row, KnotContinuityTable::C0Column)->text(), QStringLiteral("✓"));
+        QCOMPARE(table->item(row, KnotContinuityTable::C1Column)->text(), QStringLiteral("✗"));
+        QCOMPARE(table->item(row, KnotContinuityTable::G1Column)->text(), QStringLiteral("✗"));
+        QVERIFY(!table->knots()[std::size_t(row)].g1);
+        QCOMPARE(table->item(row, KnotContinuityTable::JumpColumn)->text(), QStringLiteral("1"));
     }
 
     // Cardinal c is Catmull-Rom with τ = (1 − c)/2: c = 0 draws the τ = 1/2 curve of Ex 2.11

@@ -256,6 +256,7 @@ void CatmullRomTab::buildUi()
     m_sideTabs = new QTabWidget(this);
     m_sideTabs->addTab(m_exact, QString());
     m_sideTabs->addTab(m_table, QString());
+    addFamilySideTabs(); // the knot table and the conventions (catmull_rom_tab_families.cpp)
 
     auto* controls = new QWidget;
     auto* controlsLayout = new QVBoxLayout(controls);
@@ -303,7 +304,7 @@ QString CatmullRomTab::hint() const
 void CatmullRomTab::retranslate()
 {
     updateCanvasSummary();
-    m_familyPanel->retranslate();
+    retranslateFamilyControls();
     m_tensionBox->setTitle(tr("Tensions τ (Def 2.8)"));
     m_tensionBox->setToolTip(tr("The tension τ scales the tangents p′(0) = τ(p2 − p0), p′(1) = τ(p3 − p1) of every "
                                 "segment (Def 2.8): 0 gives straight segments, 1/2 is the usual value, negative "
@@ -639,7 +640,7 @@ void CatmullRomTab::pointsEdited()
 void CatmullRomTab::recompute()
 {
     m_scene = computeScene(m_editor->points(), m_settings);
-    syncHermiteHandles();
+    updateFamilyViews();
     m_exact->setContent(
         CatmullRomReport::html(m_editor->points(), m_settings, m_scene, computeAnalysis(m_editor->allExactPoints(), m_settings)));
     updatePlot();

@@ -29,6 +29,7 @@ namespace granota::ui {
 
 class FamilyPanel;
 class HermiteHandles;
+class KnotContinuityTable;
 class ViewTransform;
 struct CanvasStyle;
 
@@ -51,6 +52,8 @@ public:
     QString lastMessage() const { return m_lastMessage; }
     FamilyPanel* familyPanel() const { return m_familyPanel; }
     HermiteHandles* hermiteHandles() const { return m_hermiteHandles; }
+    /// The side panel's knot table: the curve of the family, or the selected τ's Catmull-Rom curve.
+    KnotContinuityTable* knotTable() const { return m_knotTable; }
 
     /// Undoable edits of the settings. addTension refuses garbage, values outside [−10, 10],
     /// duplicates and an 11th tension with a message (statusMessage) and returns false.
@@ -109,7 +112,10 @@ private:
     void changeSettings(const CatmullRomSettings& after, const QString& undoText, bool mergeable = false, int familyMergeId = -1);
     // The family selector's part of the tab (catmull_rom_tab_families.cpp).
     void buildFamilyControls();
-    void syncHermiteHandles();
+    void addFamilySideTabs();
+    void retranslateFamilyControls();
+    /// The Hermite handles and the knot table, after every recompute.
+    void updateFamilyViews();
     void hermiteTangentDragged(int index, Point tangent);
     void hermiteDragFinished(int index, Point startTangent);
     /// Makes `s` current (undo/redo, loading): controls, curves, panel, plot.
@@ -131,6 +137,7 @@ private:
     QCustomPlot* m_plot = nullptr;
     FamilyPanel* m_familyPanel = nullptr;
     HermiteHandles* m_hermiteHandles = nullptr;
+    KnotContinuityTable* m_knotTable = nullptr;
     QTabWidget* m_sideTabs = nullptr;
     QGroupBox* m_tensionBox = nullptr;
     QListWidget* m_tauList = nullptr;

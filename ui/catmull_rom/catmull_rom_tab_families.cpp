@@ -5,8 +5,11 @@
 #include "ui/catmull_rom/family_curves.h"
 #include "ui/catmull_rom/family_panel.h"
 #include "ui/catmull_rom/hermite_handles.h"
+#include "ui/catmull_rom/knot_continuity_table.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/point_editor.h"
+
+#include <QTabWidget>
 
 namespace granota::ui {
 
@@ -33,11 +36,37 @@ void CatmullRomTab::buildFamilyControls()
     connect(m_hermiteHandles, &HermiteHandles::tangentNudged, this, &CatmullRomTab::setHermiteTangent);
 }
 
-void CatmullRomTab::syncHermiteHandles()
+void CatmullRomTab::addFamilySideTabs()
+{
+    m_knotTable = new KnotContinuityTable(this);
+    m_sideTabs->addTab(m_knotTable, QString());
+}
+
+void CatmullRomTab::retranslateFamilyControls()
+{
+    m_familyPanel->retranslate();
+    m_knotTable->retranslate();
+    m_sideTabs->setTabText(m_sideTabs->indexOf(m_knotTable), tr("Knots"));
+    m_sideTabs->setTabToolTip(m_sideTabs->indexOf(m_knotTable), m_knotTable->toolTip());
+}
+
+void CatmullRomTab::updateFamilyViews()
 {
     const bool hermite = m_settings.family == CurveFamily::Hermite;
     m_hermiteHandles->setState(hermite, m_editor->points(),
                                hermite ? hermiteTangentsOf(m_editor->points(), m_settings) : std::vector<Point>{});
+    // The knots of the family's curve, or of the selected τ's Catmull-Rom curve (Prop 2.3).
+    const int n = static_cast<int>(m_editor->points().size());
+    const bool closed = m_settings.ends == CatmullRomEnds::Closed;
+    const int first = firstSegmentStart(m_settings.ends);
+    if (m_settings.family != CurveFamily::CatmullRom) {
+        m_knotTable->showCurve(m_scene.family.segments, m_scene.family.intervals, closed, first, n);
+    } else if (m_settings.selectedTau >= 0 && m_settings.selectedTau < static_cast<int>(m_scene.curves.size())) {
+        const CatmullRomCurve& c = m_scene.curves[static_cast<std::size_t>(m_settings.selectedTau)];
+        m_knotTable->showCurve(c.segments, c.intervals, closed, first, n);
+    } else {
+        m_knotTable->showCurve({}, {}, false, 0, n);
+    }
 }
 
 void CatmullRomTab::setFamily(CurveFamily family)
