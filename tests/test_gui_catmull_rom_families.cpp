@@ -2,6 +2,7 @@
 // selector"): Catmull-Rom stays the default and old documents load as it, switching family is
 // one undo step, and the document keeps the family.
 #include "ui/catmull_rom/catmull_rom_tab.h"
+#include "ui/catmull_rom/conventions_table.h"
 #include "ui/catmull_rom/curve_family.h"
 #include "ui/catmull_rom/family_panel.h"
 #include "ui/catmull_rom/hermite_handles.h"
@@ -279,6 +280,27 @@ private slots:
         QVERIFY(tab.settings().tcb[0].tension == frac(8, 20));
         tab.undoStack()->undo();
         QVERIFY(tab.settings().tcb.empty() || tab.settings().tcb[0].tension == 0);
+    }
+
+    // The conventions, worked by hand from each source's formula (conventions_table.h):
+    // τ = 1/2 is curveTightness 0, Primer τₚ = 1, d3 tension 0, KB T = 0; τ = 2 is s = t = T =
+    // 1 − 4 = −3 and τₚ = 1/4; τ = 0 has no Primer tension.
+    void conventionsConvertTheTension()
+    {
+        const auto half = tensionConventions(frac(1, 2));
+        QCOMPARE(half.size(), std::size_t(5));
+        QVERIFY(*half[0].value == frac(1, 2));
+        QVERIFY(*half[1].value == 0 && *half[2].value == 1 && *half[3].value == 0 && *half[4].value == 0);
+        const auto two = tensionConventions(Rational(2));
+        QVERIFY(*two[1].value == -3 && *two[2].value == frac(1, 4) && *two[3].value == -3 && *two[4].value == -3);
+        QVERIFY(!tensionConventions(Rational(0))[2].value);
+        // In the tab: the cardinal c = 1/2 is τ = 1/4, so the Primer's τₚ = 2.
+        CatmullRomTab tab;
+        tab.setFamily(CurveFamily::Cardinal);
+        tab.familyPanel()->cardinalSlider()->setValue(10);
+        QVERIFY(tab.conventionsTable()->tau() == frac(1, 4));
+        QCOMPARE(tab.conventionsTable()->item(2, 3)->text(), QStringLiteral("2"));
+        QCOMPARE(tab.conventionsTable()->item(1, 3)->text(), QStringLiteral("1/2"));
     }
 
     void familySavedAndRead()

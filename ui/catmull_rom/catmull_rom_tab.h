@@ -30,6 +30,7 @@ namespace granota::ui {
 class FamilyPanel;
 class HermiteHandles;
 class KnotContinuityTable;
+class ConventionsTable;
 class ViewTransform;
 struct CanvasStyle;
 
@@ -54,6 +55,8 @@ public:
     HermiteHandles* hermiteHandles() const { return m_hermiteHandles; }
     /// The side panel's knot table: the curve of the family, or the selected τ's Catmull-Rom curve.
     KnotContinuityTable* knotTable() const { return m_knotTable; }
+    /// The side panel's conventions table, for the τ of the curve shown.
+    ConventionsTable* conventionsTable() const { return m_conventions; }
 
     /// Undoable edits of the settings. addTension refuses garbage, values outside [−10, 10],
     /// duplicates and an 11th tension with a message (statusMessage) and returns false.
@@ -138,6 +141,7 @@ private:
     FamilyPanel* m_familyPanel = nullptr;
     HermiteHandles* m_hermiteHandles = nullptr;
     KnotContinuityTable* m_knotTable = nullptr;
+    ConventionsTable* m_conventions = nullptr;
     QTabWidget* m_sideTabs = nullptr;
     QGroupBox* m_tensionBox = nullptr;
     QListWidget* m_tauList = nullptr;

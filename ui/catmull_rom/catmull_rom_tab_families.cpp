@@ -2,6 +2,7 @@
 // the undoable edits of the family's settings. The rest of the tab is catmull_rom_tab.cpp.
 #include "ui/catmull_rom/catmull_rom_tab.h"
 
+#include "ui/catmull_rom/conventions_table.h"
 #include "ui/catmull_rom/family_curves.h"
 #include "ui/catmull_rom/family_panel.h"
 #include "ui/catmull_rom/hermite_handles.h"
@@ -9,7 +10,11 @@
 #include "ui/common/curve_canvas.h"
 #include "ui/common/point_editor.h"
 
+#include "core/curves/splines/cardinal_spline.h"
+
 #include <QTabWidget>
+
+#include <algorithm>
 
 namespace granota::ui {
 
@@ -40,6 +45,8 @@ void CatmullRomTab::addFamilySideTabs()
 {
     m_knotTable = new KnotContinuityTable(this);
     m_sideTabs->addTab(m_knotTable, QString());
+    m_conventions = new ConventionsTable(this);
+    m_sideTabs->addTab(m_conventions, QString());
 }
 
 void CatmullRomTab::retranslateFamilyControls()
@@ -48,6 +55,9 @@ void CatmullRomTab::retranslateFamilyControls()
     m_knotTable->retranslate();
     m_sideTabs->setTabText(m_sideTabs->indexOf(m_knotTable), tr("Knots"));
     m_sideTabs->setTabToolTip(m_sideTabs->indexOf(m_knotTable), m_knotTable->toolTip());
+    m_conventions->retranslate();
+    m_sideTabs->setTabText(m_sideTabs->indexOf(m_conventions), tr("Conventions"));
+    m_sideTabs->setTabToolTip(m_sideTabs->indexOf(m_conventions), m_conventions->toolTip());
 }
 
 void CatmullRomTab::updateFamilyViews()
@@ -55,6 +65,15 @@ void CatmullRomTab::updateFamilyViews()
     const bool hermite = m_settings.family == CurveFamily::Hermite;
     m_hermiteHandles->setState(hermite, m_editor->points(),
                                hermite ? hermiteTangentsOf(m_editor->points(), m_settings) : std::vector<Point>{});
+    // The τ of the curve shown, in every source's convention.
+    Rational tau = frac(1, 2);
+    if (m_settings.family == CurveFamily::Cardinal)
+        tau = cardinalTau(m_settings.cardinalTension);
+    else if (m_settings.family == CurveFamily::KochanekBartels)
+        tau = cardinalTau(tcbAt(m_settings, static_cast<std::size_t>(std::max(0, m_editor->selected()))).tension);
+    else if (m_settings.selectedTau >= 0 && m_settings.selectedTau < static_cast<int>(m_settings.taus.size()))
+        tau = m_settings.taus[static_cast<std::size_t>(m_settings.selectedTau)];
+    m_conventions->showTau(tau);
     // The knots of the family's curve, or of the selected τ's Catmull-Rom curve (Prop 2.3).
     const int n = static_cast<int>(m_editor->points().size());
     const bool closed = m_settings.ends == CatmullRomEnds::Closed;

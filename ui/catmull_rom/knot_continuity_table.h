@@ -27,8 +27,8 @@ public:
 
     /// The knots of `segments` (local s ∈ [0, 1], lengths `intervals`, the last joined to the
     /// first when `closedLoop`); segment k starts at point (firstPoint + k) mod pointCount.
-    void showCurve(const std::vector<Vec2<Polynomial<double>>>& segments, const std::vector<double>& intervals,
-                   bool closedLoop, int firstPoint, int pointCount);
+    void showCurve(const std::vector<Vec2<Polynomial<double>>>& segments, const std::vector<double>& intervals, bool closedLoop,
+                   int firstPoint, int pointCount);
     void retranslate();
 
     const std::vector<KnotContinuity<double>>& knots() const { return m_knots; }
