@@ -2,6 +2,7 @@
 
 #include "core/base/number_format.h"
 #include "ui/catmull_rom/catmull_rom_drawing.h"
+#include "ui/catmull_rom/family_drawing.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_style.h"
 #include "ui/files/tikz_writer.h"
@@ -67,9 +68,22 @@ void writeCatmullRomTikz(TikzWriter& w, const std::vector<Point>& points, bool p
     // The Catmull-Rom segments and the spline's pieces are cubics: written as Bézier segments.
     if (!scene.splineBezier.empty())
         w.bezierSegments(scene.splineBezier, kCatmullRomSplineColor, 1.0);
-    for (std::size_t i = 0; settings.catmullRom && i < scene.otherEnds.size(); ++i)
+    // A family other than Catmull-Rom (family_curves.h): its Hermite segments as Bézier segments
+    // (hermiteToBezier), and the tangents at the points as arrows, as on the canvas.
+    const bool catmullRom = settings.catmullRom && settings.family == CurveFamily::CatmullRom;
+    if (settings.family != CurveFamily::CatmullRom) {
+        w.comment(QStringLiteral("family %1").arg(curveFamilyKey(settings.family)));
+        w.bezierSegments(scene.family.bezier, kFamilyCurveColor, 1.2);
+        const FamilyCurve& f = scene.family;
+        for (std::size_t i = 0; hasPointTangents(settings.family) && i < f.tangents.size() && i < f.points.size(); ++i) {
+            if (!(f.tangents[i].in == f.tangents[i].out))
+                w.arrow(f.points[i] - f.tangents[i].in, f.points[i], kTangentInColor, 0.8);
+            w.arrow(f.points[i], f.points[i] + f.tangents[i].out, kTangentOutColor, 0.8);
+        }
+    }
+    for (std::size_t i = 0; catmullRom && i < scene.otherEnds.size(); ++i)
         w.bezierSegments(scene.otherEnds[i].bezier, tensionColour(scene.otherEnds[i].tau), 0.8, true);
-    for (std::size_t i = 0; settings.catmullRom && i < scene.curves.size(); ++i) {
+    for (std::size_t i = 0; catmullRom && i < scene.curves.size(); ++i) {
         w.comment(QStringLiteral("tau = %1").arg(tensionText(scene.curves[i].tau)));
         w.bezierSegments(scene.curves[i].bezier, tensionColour(scene.curves[i].tau), 1.2);
     }

@@ -37,10 +37,10 @@ struct CurvaturePlotKnot {
 
 /// The plot's axes and pixels.
 struct CurvaturePlotFrame {
-    QString xLabel;                 ///< "arc length s", translated by the caller
-    QString yLabel;                 ///< "curvature κ"
-    int minimumHeight = 0;          ///< plot height that keeps the axis titles whole (keepAxisTitlesWhole)
-    double scale = 1;               ///< line widths times this (presentation mode)
+    QString xLabel;        ///< "arc length s", translated by the caller
+    QString yLabel;        ///< "curvature κ"
+    int minimumHeight = 0; ///< plot height that keeps the axis titles whole (keepAxisTitlesWhole)
+    double scale = 1;      ///< line widths times this (presentation mode)
 };
 
 /// Adds the curves and the knot marks to `plot` (whose graphs and items the caller cleared) and
