@@ -426,6 +426,7 @@ void CatmullRomTab::syncControls()
     m_bezierCheck->setChecked(m_settings.bezier);
     m_splineCheck->setChecked(m_settings.spline);
     m_catmullRomCheck->setChecked(m_settings.catmullRom);
+    m_catmullRomCheck->setEnabled(m_settings.family == CurveFamily::CatmullRom); // other families draw their own curve
     m_pointsCheck->setChecked(m_settings.controlPoints);
     m_splineEndsCombo->setCurrentIndex(static_cast<int>(m_settings.splineEnds));
     m_splineEndsCombo->setEnabled(m_settings.spline);
