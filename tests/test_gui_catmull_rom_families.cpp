@@ -322,6 +322,9 @@ private slots:
         QCOMPARE(int(tikz.count(QStringLiteral(".. controls"))), 3); // the τ curves are not written
         QVERIFY(tikz.contains(QStringLiteral("->")) || tikz.contains(QStringLiteral("stealth")) ||
                 tikz.contains(QStringLiteral("latex")));
+        // The CSV has the family's samples after the τ curves': the first is q0 = (1, 1) at t = 0.
+        const QString csv = tab.csv();
+        QVERIFY2(csv.contains(QStringLiteral("\nfamily,segment,t,x,y\nkochanek-bartels,1,0,1,1\n")), qPrintable(csv.left(400)));
     }
 
     void familySavedAndRead()

@@ -33,6 +33,20 @@ QString catmullRomCsv(const std::vector<Point>& points, const std::vector<ExactP
                             QString::fromStdString(formatReadable(c.samples[k].y)));
         }
     }
+    if (settings.family != CurveFamily::CatmullRom && !scene.family.samples.empty()) {
+        // The family's curve (family_curves.h), sampled as the τ curves are.
+        out += QStringLiteral("\nfamily,segment,t,x,y\n");
+        const FamilyCurve& f = scene.family;
+        for (std::size_t k = 0; k < f.samples.size(); ++k) {
+            const int segment = static_cast<int>(k) / samples + 1 + firstSegmentStart(settings.ends);
+            const double t = static_cast<double>(static_cast<int>(k) % samples) / (samples - 1);
+            out += QStringLiteral("%1,%2,%3,%4,%5\n")
+                       .arg(curveFamilyKey(settings.family))
+                       .arg(segment)
+                       .arg(QString::fromStdString(formatReadable(t)), QString::fromStdString(formatReadable(f.samples[k].x)),
+                            QString::fromStdString(formatReadable(f.samples[k].y)));
+        }
+    }
     if (settings.curvaturePlot) {
         // κ(s) as plotted: a knot appears twice, the end of one segment and the start of the next.
         out += QStringLiteral("\ncurve,tau,ends,segment,s,kappa\n");

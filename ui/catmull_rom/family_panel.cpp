@@ -110,7 +110,7 @@ void FamilyPanel::showSettings(const CatmullRomSettings& settings, int selectedP
     const TcbKnot<Rational> k = selectedPoint >= 0 ? tcbAt(settings, static_cast<std::size_t>(selectedPoint))
                                                    : tcbAt(settings, 0);
     const Rational values[3] = {k.tension, k.continuity, k.bias};
-    const QString names[3] = {tr("T = %1:"), tr("C = %1:"), tr("B = %1:")};
+    const QString names[3] = {tr("Tension T = %1:"), tr("Continuity C = %1:"), tr("Bias B = %1:")};
     for (std::size_t j = 0; j < 3; ++j) {
         m_tcbLabels[j]->setVisible(kb);
         m_tcbSliders[j]->setVisible(kb);
