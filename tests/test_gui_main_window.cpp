@@ -115,7 +115,10 @@ bool languageNeutral(const QString& text)
                                       QStringLiteral("Verlet"), QStringLiteral("XPBD"),
                                       // Words that are spelt the same in Catalan.
                                       QStringLiteral("Tangent"), QStringLiteral("5.2.1 Obstacles"),
-                                      QStringLiteral("Centre (x, y)"), QStringLiteral("B-spline"), QStringLiteral("B-splines")};
+                                      QStringLiteral("Centre (x, y)"), QStringLiteral("B-spline"), QStringLiteral("B-splines"),
+                                      // The knot table's headers: orders of continuity and the tangent jump.
+                                      QStringLiteral("C⁰"), QStringLiteral("C¹"), QStringLiteral("C²"), QStringLiteral("G¹"),
+                                      QStringLiteral("G²"), QStringLiteral("|p′₊ − p′₋|")};
     if (names.contains(text.trimmed()))
         return true;
     if (text.endsWith(QLatin1String(".granota"))) // File ▸ Open Recent lists file names

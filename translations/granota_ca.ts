@@ -1170,6 +1170,54 @@
             <source>Hide the points</source>
             <translation>Amaga els punts</translation>
         </message>
+        <message>
+            <source>Back to the Catmull-Rom tangents</source>
+            <translation>Torna a les tangents de Catmull-Rom</translation>
+        </message>
+        <message>
+            <source>Change B</source>
+            <translation>Canvia B</translation>
+        </message>
+        <message>
+            <source>Change C</source>
+            <translation>Canvia C</translation>
+        </message>
+        <message>
+            <source>Change T</source>
+            <translation>Canvia T</translation>
+        </message>
+        <message>
+            <source>Change the cardinal tension</source>
+            <translation>Canvia la tensió cardinal</translation>
+        </message>
+        <message>
+            <source>Conventions</source>
+            <translation>Convencions</translation>
+        </message>
+        <message>
+            <source>Drag the tangent at q%1</source>
+            <translation>Arrossega la tangent a q%1</translation>
+        </message>
+        <message>
+            <source>Family: %1</source>
+            <translation>Família: %1</translation>
+        </message>
+        <message>
+            <source>Knots</source>
+            <translation>Nusos</translation>
+        </message>
+        <message>
+            <source>Move the tangent at q%1</source>
+            <translation>Mou la tangent a q%1</translation>
+        </message>
+        <message>
+            <source>tangent in (p′(1)), where it differs</source>
+            <translation>tangent d&apos;entrada (p′(1)), on és diferent</translation>
+        </message>
+        <message>
+            <source>tangent out (p′(0))</source>
+            <translation>tangent de sortida (p′(0))</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::DeCasteljauParameterControl</name>
@@ -5096,6 +5144,10 @@ Ja no és al disc.</translation>
             <source>On the canvas: measure in px with the ruler</source>
             <translation>Al llenç: mesura en px amb el regle</translation>
         </message>
+        <message>
+            <source>Catmull-Rom, Hermite family: move the selected point&apos;s tangent by 1/10</source>
+            <translation>Catmull-Rom, família d&apos;Hermite: mou la tangent del punt seleccionat 1/10</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::ExactPanel</name>
@@ -6154,6 +6206,186 @@ Ja no és al disc.</translation>
         <message>
             <source>κ(s) of the curve; the light vertical lines are its interior knots, each labelled with the continuity there.</source>
             <translation>κ(s) de la corba; les línies verticals clares són els nusos interiors, cadascun amb la continuïtat que hi té.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::ConventionsTable</name>
+        <message>
+            <source>From τ</source>
+            <translation>A partir de τ</translation>
+        </message>
+        <message>
+            <source>Granota, the thesis (Def 2.8)</source>
+            <translation>Granota, la tesi (Def. 2.8)</translation>
+        </message>
+        <message>
+            <source>Kochanek–Bartels (C = B = 0)</source>
+            <translation>Kochanek–Bartels (C = B = 0)</translation>
+        </message>
+        <message>
+            <source>Parameter</source>
+            <translation>Paràmetre</translation>
+        </message>
+        <message>
+            <source>Primer on Bézier curves</source>
+            <translation>Primer on Bézier curves</translation>
+        </message>
+        <message>
+            <source>Processing</source>
+            <translation>Processing</translation>
+        </message>
+        <message>
+            <source>Source</source>
+            <translation>Font</translation>
+        </message>
+        <message>
+            <source>Tension conventions</source>
+            <translation>Convencions de la tensió</translation>
+        </message>
+        <message>
+            <source>The same Catmull-Rom tangent τ(qᵢ₊₁ − qᵢ₋₁) in each source&apos;s convention, with its value for the curve shown: the selected τ, the cardinal c, or T of the selected point.</source>
+            <translation>La mateixa tangent de Catmull-Rom τ(qᵢ₊₁ − qᵢ₋₁) en la convenció de cada font, amb el seu valor per a la corba dibuixada: la τ seleccionada, la c cardinal o la T del punt seleccionat.</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Valor</translation>
+        </message>
+        <message>
+            <source>d3-shape</source>
+            <translation>d3-shape</translation>
+        </message>
+        <message>
+            <source>none (τ ≤ 0)</source>
+            <translation>cap (τ ≤ 0)</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::CurveFamilyNames</name>
+        <message>
+            <source>Cardinal (one tension c)</source>
+            <translation>Cardinal (una tensió c)</translation>
+        </message>
+        <message>
+            <source>Catmull-Rom (Def 2.10)</source>
+            <translation>Catmull-Rom (Def. 2.10)</translation>
+        </message>
+        <message>
+            <source>C² spline in the plane (Def 2.1)</source>
+            <translation>Spline C² al pla (Def. 2.1)</translation>
+        </message>
+        <message>
+            <source>Function data y(x) (Def 2.3)</source>
+            <translation>Dades y(x) d&apos;una funció (Def. 2.3)</translation>
+        </message>
+        <message>
+            <source>Hermite (drag the tangents)</source>
+            <translation>Hermite (tangents lliures)</translation>
+        </message>
+        <message>
+            <source>Kochanek–Bartels: T, C, B per point</source>
+            <translation>Kochanek–Bartels: TCB per punt</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FamilyPanel</name>
+        <message>
+            <source>All points</source>
+            <translation>Tots els punts</translation>
+        </message>
+        <message>
+            <source>Back to the Catmull-Rom tangents</source>
+            <translation>Torna a les tangents de Catmull-Rom</translation>
+        </message>
+        <message>
+            <source>Bias B = %1:</source>
+            <translation>Biaix B = %1:</translation>
+        </message>
+        <message>
+            <source>Bias B in steps of 1/20: &gt; 0 leans the tangents towards the incoming chord, &lt; 0 towards the outgoing one.</source>
+            <translation>Biaix B en passos d&apos;1/20: &gt; 0 inclina les tangents cap a la corda d&apos;entrada, &lt; 0 cap a la de sortida.</translation>
+        </message>
+        <message>
+            <source>Continuity C = %1:</source>
+            <translation>Continuïtat C = %1:</translation>
+        </message>
+        <message>
+            <source>Continuity C in steps of 1/20: 0 keeps the curve C¹ (Prop 2.3); any other value makes the two tangents differ; −1 gives corners.</source>
+            <translation>Continuïtat C en passos d&apos;1/20: 0 manté la corba C¹ (Prop. 2.3); qualsevol altre valor fa que les dues tangents siguin diferents; −1 fa cantonades.</translation>
+        </message>
+        <message>
+            <source>Def 2.8 builds each segment from two points and two tangents. Catmull-Rom sets the tangents by the rule τ(qᵢ₊₁ − qᵢ₋₁); cardinal and Kochanek–Bartels by other rules; Hermite lets you drag them; the C² splines solve for them.</source>
+            <translation>La Def. 2.8 construeix cada segment a partir de dos punts i dues tangents. Catmull-Rom fixa les tangents amb la regla τ(qᵢ₊₁ − qᵢ₋₁); la cardinal i la de Kochanek–Bartels, amb altres regles; Hermite us les deixa arrossegar; els splines C² les obtenen resolent un sistema.</translation>
+        </message>
+        <message>
+            <source>Every tangent as the Catmull-Rom rule τ(qᵢ₊₁ − qᵢ₋₁) of the selected τ sets it.</source>
+            <translation>Cada tangent com la fixa la regla de Catmull-Rom τ(qᵢ₊₁ − qᵢ₋₁) de la τ seleccionada.</translation>
+        </message>
+        <message>
+            <source>Every tangent is yours: drag the square at its end, or Alt + arrows for the selected point&apos;s.</source>
+            <translation>Cada tangent és vostra: arrossegueu el quadrat del seu extrem, o Alt + fletxes per a la del punt seleccionat.</translation>
+        </message>
+        <message>
+            <source>Famil&amp;y:</source>
+            <translation>Famí&amp;lia:</translation>
+        </message>
+        <message>
+            <source>Family: how the tangents are chosen</source>
+            <translation>Família: com es trien les tangents</translation>
+        </message>
+        <message>
+            <source>Move T, C, B of every point at once (also when no point is selected).</source>
+            <translation>Mou T, C, B de tots els punts alhora (també si no n&apos;hi ha cap de seleccionat).</translation>
+        </message>
+        <message>
+            <source>T, C, B of every point:</source>
+            <translation>T, C, B de tots els punts:</translation>
+        </message>
+        <message>
+            <source>T, C, B of the selected point q%1:</source>
+            <translation>T, C, B del punt seleccionat q%1:</translation>
+        </message>
+        <message>
+            <source>Tangents set by a rule: (1 − c)(qᵢ₊₁ − qᵢ₋₁)/2, Catmull-Rom with τ = (1 − c)/2.</source>
+            <translation>Tangents fixades per una regla: (1 − c)(qᵢ₊₁ − qᵢ₋₁)/2, Catmull-Rom amb τ = (1 − c)/2.</translation>
+        </message>
+        <message>
+            <source>Tangents set by a rule: T scales them, C ≠ 0 makes the incoming and outgoing tangents differ (a corner), B leans them towards one chord.</source>
+            <translation>Tangents fixades per una regla: T les escala, C ≠ 0 fa que la tangent d&apos;entrada i la de sortida siguin diferents (una cantonada), B les inclina cap a una de les cordes.</translation>
+        </message>
+        <message>
+            <source>Tension T = %1:</source>
+            <translation>Tensió T = %1:</translation>
+        </message>
+        <message>
+            <source>Tension T in steps of 1/20: τ = (1 − T)/2; 1 gives zero tangents.</source>
+            <translation>Tensió T en passos d&apos;1/20: τ = (1 − T)/2; 1 dona tangents nul·les.</translation>
+        </message>
+        <message>
+            <source>The cardinal tension c in steps of 1/20 from −1 to 1: c = 0 is Catmull-Rom&apos;s τ = 1/2, c = 1 gives zero tangents (straight segments).</source>
+            <translation>La tensió cardinal c en passos d&apos;1/20 de −1 a 1: c = 0 és la τ = 1/2 de Catmull-Rom, c = 1 dona tangents nul·les (segments rectes).</translation>
+        </message>
+        <message>
+            <source>c = %1 (τ = %2):</source>
+            <translation>c = %1 (τ = %2):</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::KnotContinuityTable</name>
+        <message>
+            <source>Continuity at the knots</source>
+            <translation>Continuïtat als nusos</translation>
+        </message>
+        <message>
+            <source>Each knot of the curve drawn: ✓ where the derivatives of order 0, 1, 2 agree (C⁰, C¹, C²) and where the direction (G¹) and the curvature (G²) agree; the last column is the jump of the tangent. Catmull-Rom curves are C¹ at every knot (Prop 2.3); a continuity C ≠ 0 breaks it.</source>
+            <translation>Cada nus de la corba dibuixada: ✓ on coincideixen les derivades d&apos;ordre 0, 1, 2 (C⁰, C¹, C²) i on coincideixen la direcció (G¹) i la curvatura (G²); l&apos;última columna és el salt de la tangent. Les corbes de Catmull-Rom són C¹ a tots els nusos (Prop. 2.3); una continuïtat C ≠ 0 ho trenca.</translation>
+        </message>
+        <message>
+            <source>Knot</source>
+            <translation>Nus</translation>
+        </message>
+        <message>
+            <source>|p′₊ − p′₋|</source>
+            <translation>|p′₊ − p′₋|</translation>
         </message>
     </context>
 </TS>

@@ -1170,6 +1170,54 @@
             <source>Hide the points</source>
             <translation>Hide the points</translation>
         </message>
+        <message>
+            <source>Back to the Catmull-Rom tangents</source>
+            <translation>Back to the Catmull-Rom tangents</translation>
+        </message>
+        <message>
+            <source>Change B</source>
+            <translation>Change B</translation>
+        </message>
+        <message>
+            <source>Change C</source>
+            <translation>Change C</translation>
+        </message>
+        <message>
+            <source>Change T</source>
+            <translation>Change T</translation>
+        </message>
+        <message>
+            <source>Change the cardinal tension</source>
+            <translation>Change the cardinal tension</translation>
+        </message>
+        <message>
+            <source>Conventions</source>
+            <translation>Conventions</translation>
+        </message>
+        <message>
+            <source>Drag the tangent at q%1</source>
+            <translation>Drag the tangent at q%1</translation>
+        </message>
+        <message>
+            <source>Family: %1</source>
+            <translation>Family: %1</translation>
+        </message>
+        <message>
+            <source>Knots</source>
+            <translation>Knots</translation>
+        </message>
+        <message>
+            <source>Move the tangent at q%1</source>
+            <translation>Move the tangent at q%1</translation>
+        </message>
+        <message>
+            <source>tangent in (p′(1)), where it differs</source>
+            <translation>tangent in (p′(1)), where it differs</translation>
+        </message>
+        <message>
+            <source>tangent out (p′(0))</source>
+            <translation>tangent out (p′(0))</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::DeCasteljauParameterControl</name>
@@ -5096,6 +5144,10 @@ It is no longer on disk.</translation>
             <source>On the canvas: measure in px with the ruler</source>
             <translation>On the canvas: measure in px with the ruler</translation>
         </message>
+        <message>
+            <source>Catmull-Rom, Hermite family: move the selected point&apos;s tangent by 1/10</source>
+            <translation>Catmull-Rom, Hermite family: move the selected point&apos;s tangent by 1/10</translation>
+        </message>
     </context>
     <context>
         <name>granota::ui::ExactPanel</name>
@@ -6154,6 +6206,186 @@ It is no longer on disk.</translation>
         <message>
             <source>κ(s) of the curve; the light vertical lines are its interior knots, each labelled with the continuity there.</source>
             <translation>κ(s) of the curve; the light vertical lines are its interior knots, each labelled with the continuity there.</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::ConventionsTable</name>
+        <message>
+            <source>From τ</source>
+            <translation>From τ</translation>
+        </message>
+        <message>
+            <source>Granota, the thesis (Def 2.8)</source>
+            <translation>Granota, the thesis (Def 2.8)</translation>
+        </message>
+        <message>
+            <source>Kochanek–Bartels (C = B = 0)</source>
+            <translation>Kochanek–Bartels (C = B = 0)</translation>
+        </message>
+        <message>
+            <source>Parameter</source>
+            <translation>Parameter</translation>
+        </message>
+        <message>
+            <source>Primer on Bézier curves</source>
+            <translation>Primer on Bézier curves</translation>
+        </message>
+        <message>
+            <source>Processing</source>
+            <translation>Processing</translation>
+        </message>
+        <message>
+            <source>Source</source>
+            <translation>Source</translation>
+        </message>
+        <message>
+            <source>Tension conventions</source>
+            <translation>Tension conventions</translation>
+        </message>
+        <message>
+            <source>The same Catmull-Rom tangent τ(qᵢ₊₁ − qᵢ₋₁) in each source&apos;s convention, with its value for the curve shown: the selected τ, the cardinal c, or T of the selected point.</source>
+            <translation>The same Catmull-Rom tangent τ(qᵢ₊₁ − qᵢ₋₁) in each source&apos;s convention, with its value for the curve shown: the selected τ, the cardinal c, or T of the selected point.</translation>
+        </message>
+        <message>
+            <source>Value</source>
+            <translation>Value</translation>
+        </message>
+        <message>
+            <source>d3-shape</source>
+            <translation>d3-shape</translation>
+        </message>
+        <message>
+            <source>none (τ ≤ 0)</source>
+            <translation>none (τ ≤ 0)</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::CurveFamilyNames</name>
+        <message>
+            <source>Cardinal (one tension c)</source>
+            <translation>Cardinal (one tension c)</translation>
+        </message>
+        <message>
+            <source>Catmull-Rom (Def 2.10)</source>
+            <translation>Catmull-Rom (Def 2.10)</translation>
+        </message>
+        <message>
+            <source>C² spline in the plane (Def 2.1)</source>
+            <translation>C² spline in the plane (Def 2.1)</translation>
+        </message>
+        <message>
+            <source>Function data y(x) (Def 2.3)</source>
+            <translation>Function data y(x) (Def 2.3)</translation>
+        </message>
+        <message>
+            <source>Hermite (drag the tangents)</source>
+            <translation>Hermite (drag the tangents)</translation>
+        </message>
+        <message>
+            <source>Kochanek–Bartels: T, C, B per point</source>
+            <translation>Kochanek–Bartels: T, C, B per point</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FamilyPanel</name>
+        <message>
+            <source>All points</source>
+            <translation>All points</translation>
+        </message>
+        <message>
+            <source>Back to the Catmull-Rom tangents</source>
+            <translation>Back to the Catmull-Rom tangents</translation>
+        </message>
+        <message>
+            <source>Bias B = %1:</source>
+            <translation>Bias B = %1:</translation>
+        </message>
+        <message>
+            <source>Bias B in steps of 1/20: &gt; 0 leans the tangents towards the incoming chord, &lt; 0 towards the outgoing one.</source>
+            <translation>Bias B in steps of 1/20: &gt; 0 leans the tangents towards the incoming chord, &lt; 0 towards the outgoing one.</translation>
+        </message>
+        <message>
+            <source>Continuity C = %1:</source>
+            <translation>Continuity C = %1:</translation>
+        </message>
+        <message>
+            <source>Continuity C in steps of 1/20: 0 keeps the curve C¹ (Prop 2.3); any other value makes the two tangents differ; −1 gives corners.</source>
+            <translation>Continuity C in steps of 1/20: 0 keeps the curve C¹ (Prop 2.3); any other value makes the two tangents differ; −1 gives corners.</translation>
+        </message>
+        <message>
+            <source>Def 2.8 builds each segment from two points and two tangents. Catmull-Rom sets the tangents by the rule τ(qᵢ₊₁ − qᵢ₋₁); cardinal and Kochanek–Bartels by other rules; Hermite lets you drag them; the C² splines solve for them.</source>
+            <translation>Def 2.8 builds each segment from two points and two tangents. Catmull-Rom sets the tangents by the rule τ(qᵢ₊₁ − qᵢ₋₁); cardinal and Kochanek–Bartels by other rules; Hermite lets you drag them; the C² splines solve for them.</translation>
+        </message>
+        <message>
+            <source>Every tangent as the Catmull-Rom rule τ(qᵢ₊₁ − qᵢ₋₁) of the selected τ sets it.</source>
+            <translation>Every tangent as the Catmull-Rom rule τ(qᵢ₊₁ − qᵢ₋₁) of the selected τ sets it.</translation>
+        </message>
+        <message>
+            <source>Every tangent is yours: drag the square at its end, or Alt + arrows for the selected point&apos;s.</source>
+            <translation>Every tangent is yours: drag the square at its end, or Alt + arrows for the selected point&apos;s.</translation>
+        </message>
+        <message>
+            <source>Famil&amp;y:</source>
+            <translation>Famil&amp;y:</translation>
+        </message>
+        <message>
+            <source>Family: how the tangents are chosen</source>
+            <translation>Family: how the tangents are chosen</translation>
+        </message>
+        <message>
+            <source>Move T, C, B of every point at once (also when no point is selected).</source>
+            <translation>Move T, C, B of every point at once (also when no point is selected).</translation>
+        </message>
+        <message>
+            <source>T, C, B of every point:</source>
+            <translation>T, C, B of every point:</translation>
+        </message>
+        <message>
+            <source>T, C, B of the selected point q%1:</source>
+            <translation>T, C, B of the selected point q%1:</translation>
+        </message>
+        <message>
+            <source>Tangents set by a rule: (1 − c)(qᵢ₊₁ − qᵢ₋₁)/2, Catmull-Rom with τ = (1 − c)/2.</source>
+            <translation>Tangents set by a rule: (1 − c)(qᵢ₊₁ − qᵢ₋₁)/2, Catmull-Rom with τ = (1 − c)/2.</translation>
+        </message>
+        <message>
+            <source>Tangents set by a rule: T scales them, C ≠ 0 makes the incoming and outgoing tangents differ (a corner), B leans them towards one chord.</source>
+            <translation>Tangents set by a rule: T scales them, C ≠ 0 makes the incoming and outgoing tangents differ (a corner), B leans them towards one chord.</translation>
+        </message>
+        <message>
+            <source>Tension T = %1:</source>
+            <translation>Tension T = %1:</translation>
+        </message>
+        <message>
+            <source>Tension T in steps of 1/20: τ = (1 − T)/2; 1 gives zero tangents.</source>
+            <translation>Tension T in steps of 1/20: τ = (1 − T)/2; 1 gives zero tangents.</translation>
+        </message>
+        <message>
+            <source>The cardinal tension c in steps of 1/20 from −1 to 1: c = 0 is Catmull-Rom&apos;s τ = 1/2, c = 1 gives zero tangents (straight segments).</source>
+            <translation>The cardinal tension c in steps of 1/20 from −1 to 1: c = 0 is Catmull-Rom&apos;s τ = 1/2, c = 1 gives zero tangents (straight segments).</translation>
+        </message>
+        <message>
+            <source>c = %1 (τ = %2):</source>
+            <translation>c = %1 (τ = %2):</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::KnotContinuityTable</name>
+        <message>
+            <source>Continuity at the knots</source>
+            <translation>Continuity at the knots</translation>
+        </message>
+        <message>
+            <source>Each knot of the curve drawn: ✓ where the derivatives of order 0, 1, 2 agree (C⁰, C¹, C²) and where the direction (G¹) and the curvature (G²) agree; the last column is the jump of the tangent. Catmull-Rom curves are C¹ at every knot (Prop 2.3); a continuity C ≠ 0 breaks it.</source>
+            <translation>Each knot of the curve drawn: ✓ where the derivatives of order 0, 1, 2 agree (C⁰, C¹, C²) and where the direction (G¹) and the curvature (G²) agree; the last column is the jump of the tangent. Catmull-Rom curves are C¹ at every knot (Prop 2.3); a continuity C ≠ 0 breaks it.</translation>
+        </message>
+        <message>
+            <source>Knot</source>
+            <translation>Knot</translation>
+        </message>
+        <message>
+            <source>|p′₊ − p′₋|</source>
+            <translation>|p′₊ − p′₋|</translation>
         </message>
     </context>
 </TS>

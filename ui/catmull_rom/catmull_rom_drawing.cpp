@@ -3,6 +3,7 @@
 #include "core/base/aabb.h"
 
 #include "ui/catmull_rom/catmull_rom_report.h"
+#include "ui/catmull_rom/family_drawing.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_style.h"
 #include "ui/common/view_transform.h"
@@ -32,28 +33,6 @@ void drawPolyline(QPainter& p, const ViewTransform& view, const std::vector<Poin
     p.drawPolyline(poly);
 }
 
-/// Cubic Bézier segments as one path of cubicTo (SVG `C`, PDF `c`): the curve itself, not
-/// a polyline of samples. A segment with a point that is not finite is left out.
-void drawBezierSegments(QPainter& p, const ViewTransform& view, const std::vector<BezierSegment<double>>& segments)
-{
-    QPainterPath path;
-    bool open = false; // the path ends at the previous segment's end
-    for (const auto& b : segments) {
-        if (!isFinite(b[0]) || !isFinite(b[1]) || !isFinite(b[2]) || !isFinite(b[3])) {
-            open = false;
-            continue;
-        }
-        const QPointF start = view.toScreen(b[0]);
-        // A segment starts where the previous one ends (up to rounding): one path, with its joins.
-        if (!open || QLineF(path.currentPosition(), start).length() > 1e-6)
-            path.moveTo(start);
-        path.cubicTo(view.toScreen(b[1]), view.toScreen(b[2]), view.toScreen(b[3]));
-        open = true;
-    }
-    p.setBrush(Qt::NoBrush);
-    p.drawPath(path);
-}
-
 /// The rectangle holding the points, never empty (one point or coincident points get a unit box).
 QRectF pointBounds(const std::vector<Point>& points)
 {
@@ -75,6 +54,26 @@ QRectF pointBounds(const std::vector<Point>& points)
 
 } // namespace
 
+void drawBezierSegments(QPainter& p, const ViewTransform& view, const std::vector<BezierSegment<double>>& segments)
+{
+    QPainterPath path;
+    bool open = false; // the path ends at the previous segment's end
+    for (const auto& b : segments) {
+        if (!isFinite(b[0]) || !isFinite(b[1]) || !isFinite(b[2]) || !isFinite(b[3])) {
+            open = false;
+            continue;
+        }
+        const QPointF start = view.toScreen(b[0]);
+        // A segment starts where the previous one ends (up to rounding): one path, with its joins.
+        if (!open || QLineF(path.currentPosition(), start).length() > 1e-6)
+            path.moveTo(start);
+        path.cubicTo(view.toScreen(b[1]), view.toScreen(b[2]), view.toScreen(b[3]));
+        open = true;
+    }
+    p.setBrush(Qt::NoBrush);
+    p.drawPath(path);
+}
+
 void drawCatmullRomCurves(QPainter& p, const ViewTransform& view, const CanvasStyle& style, const CatmullRomSettings& settings,
                           const CatmullRomScene& scene)
 {
@@ -85,6 +84,10 @@ void drawCatmullRomCurves(QPainter& p, const ViewTransform& view, const CanvasSt
     if (!scene.splineBezier.empty()) {
         p.setPen(QPen(kCatmullRomSplineColor, style.lineWidth(), Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
         drawBezierSegments(p, view, scene.splineBezier);
+    }
+    if (settings.family != CurveFamily::CatmullRom) {
+        drawFamilyCurve(p, view, style, settings, scene); // the family selector's switch point (family_drawing.h)
+        return;
     }
     if (!settings.catmullRom)
         return;
@@ -104,12 +107,26 @@ CanvasLegend catmullRomLegend(const CatmullRomSettings& settings, const CatmullR
 {
     CanvasLegend legend;
     legend.alertColor = kErrorColor;
-    for (std::size_t i = 0; settings.catmullRom && i < scene.curves.size(); ++i) {
+    const bool catmullRom = settings.catmullRom && settings.family == CurveFamily::CatmullRom;
+    if (settings.family != CurveFamily::CatmullRom) {
+        legend.entries.push_back(
+            {kFamilyCurveColor, scene.family.error.isEmpty() ? Qt::SolidLine : Qt::NoPen, curveFamilyName(settings.family)});
+        if (hasPointTangents(settings.family))
+            legend.entries.push_back({kTangentOutColor, Qt::SolidLine,
+                                      QCoreApplication::translate("granota::ui::CatmullRomTab", "tangent out (p′(0))")});
+        if (settings.family == CurveFamily::KochanekBartels)
+            legend.entries.push_back(
+                {kTangentInColor, Qt::SolidLine,
+                 QCoreApplication::translate("granota::ui::CatmullRomTab", "tangent in (p′(1)), where it differs")});
+        if (!scene.family.error.isEmpty())
+            legend.note = scene.family.error;
+    }
+    for (std::size_t i = 0; catmullRom && i < scene.curves.size(); ++i) {
         const auto& c = scene.curves[i];
         legend.entries.push_back({tensionColour(c.tau), c.error.isEmpty() ? Qt::SolidLine : Qt::NoPen,
                                   QStringLiteral("τ = %1").arg(tensionText(c.tau))});
     }
-    if (settings.catmullRom && !scene.otherEnds.empty())
+    if (catmullRom && !scene.otherEnds.empty())
         legend.entries.push_back({QColor(0x77, 0x77, 0x77), Qt::DashLine,
                                   QCoreApplication::translate("granota::ui::CatmullRomTab", "dashed: %1 ends")
                                       .arg(CatmullRomReport::endsName(comparedEnds(settings.ends)))});
@@ -122,7 +139,7 @@ CanvasLegend catmullRomLegend(const CatmullRomSettings& settings, const CatmullR
              scene.spline.empty() ? QCoreApplication::translate("granota::ui::CatmullRomTab", "no cubic spline: x must increase")
                                   : QCoreApplication::translate("granota::ui::CatmullRomTab", "cubic spline C²")});
     for (const auto& c : scene.curves)
-        if (!c.error.isEmpty())
+        if (catmullRom && !c.error.isEmpty())
             legend.note = c.error;
     return legend;
 }
@@ -135,12 +152,14 @@ CanvasLegendObstacles catmullRomLegendObstacles(const ViewTransform& view, const
         for (const Point& q : points)
             avoid.points.push_back(view.toScreen(q));
     };
-    for (std::size_t i = 0; settings.catmullRom && i < scene.curves.size(); ++i)
+    const bool catmullRom = settings.catmullRom && settings.family == CurveFamily::CatmullRom;
+    for (std::size_t i = 0; catmullRom && i < scene.curves.size(); ++i)
         samples(scene.curves[i].samples);
-    for (std::size_t i = 0; settings.catmullRom && i < scene.otherEnds.size(); ++i)
+    for (std::size_t i = 0; catmullRom && i < scene.otherEnds.size(); ++i)
         samples(scene.otherEnds[i].samples);
     samples(scene.bezier);
     samples(scene.spline);
+    samples(scene.family.samples);
     return avoid;
 }
 
@@ -159,14 +178,19 @@ QRectF catmullRomContentBounds(const std::vector<Point>& points, const CatmullRo
                 y1 = std::max(y1, p.y);
             }
     };
+    const bool catmullRom = settings.catmullRom && settings.family == CurveFamily::CatmullRom;
     for (const auto& c : scene.curves)
-        if (settings.catmullRom)
+        if (catmullRom)
             include(c.samples);
     for (const auto& c : scene.otherEnds)
-        if (settings.catmullRom)
+        if (catmullRom)
             include(c.samples);
     include(scene.spline);
     include(scene.bezier);
+    include(scene.family.samples);
+    // The tangents' ends (the Hermite handles, the arrows' heads).
+    for (std::size_t i = 0; i < scene.family.tangents.size() && i < scene.family.points.size(); ++i)
+        include({scene.family.points[i] + scene.family.tangents[i].out, scene.family.points[i] - scene.family.tangents[i].in});
     return QRectF(QPointF(x0, y0), QPointF(x1, y1));
 }
 

@@ -7,6 +7,7 @@
 #include "ui/catmull_rom/catmull_rom_export.h"
 #include "ui/catmull_rom/catmull_rom_plot.h"
 #include "ui/catmull_rom/catmull_rom_report.h"
+#include "ui/catmull_rom/family_panel.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_legend.h"
 #include "ui/common/curve_canvas.h"
@@ -89,6 +90,7 @@ CatmullRomTab::CatmullRomTab(QWidget* parent) : CurveTab(QStringLiteral("catmull
 
 void CatmullRomTab::buildUi()
 {
+    buildFamilyControls(); // the family selector, the chosen family's controls, the Hermite handles
     // Tensions.
     m_tensionBox = new QGroupBox(this);
     m_tauList = new QListWidget(m_tensionBox);
@@ -252,14 +254,19 @@ void CatmullRomTab::buildUi()
     m_exact = new ExactPanel(this);
     m_table = new PointTable(m_editor, this);
     m_sideTabs = new QTabWidget(this);
-    m_sideTabs->addTab(m_exact, QString());
-    m_sideTabs->addTab(m_table, QString());
+    // The knot table and the conventions (catmull_rom_tab_families.cpp) added first, so that
+    // among the children the points table still comes before them; shown after the two.
+    addFamilySideTabs();
+    m_sideTabs->insertTab(0, m_exact, QString());
+    m_sideTabs->insertTab(1, m_table, QString());
+    m_sideTabs->setCurrentIndex(0);
 
     auto* controls = new QWidget;
     auto* controlsLayout = new QVBoxLayout(controls);
     controlsLayout->setContentsMargins(0, 0, 0, 0);
     controlsLayout->addWidget(m_tensionBox);
     controlsLayout->addWidget(m_curveBox);
+    controlsLayout->insertWidget(0, m_familyPanel); // on top, but after the others among the children (tests find the ends first)
     controlsLayout->addStretch(1);
     auto* scroll = new VerticalScrollArea(controls, this); // Tab goes to its controls, and it scrolls to the one focused
 
@@ -300,6 +307,7 @@ QString CatmullRomTab::hint() const
 void CatmullRomTab::retranslate()
 {
     updateCanvasSummary();
+    retranslateFamilyControls();
     m_tensionBox->setTitle(tr("Tensions τ (Def 2.8)"));
     m_tensionBox->setToolTip(tr("The tension τ scales the tangents p′(0) = τ(p2 − p0), p′(1) = τ(p3 − p1) of every "
                                 "segment (Def 2.8): 0 gives straight segments, 1/2 is the usual value, negative "
@@ -391,6 +399,8 @@ QString CatmullRomTab::tensionItemText(const Rational& tau) const
 void CatmullRomTab::syncControls()
 {
     m_syncing = true;
+    m_familyPanel->showSettings(m_settings, m_editor->selected());
+    m_tensionBox->setVisible(m_settings.family == CurveFamily::CatmullRom); // the τ list is Catmull-Rom's
     const int count = static_cast<int>(m_settings.taus.size());
     if (m_tauList->count() != count) {
         m_tauList->clear();
@@ -419,6 +429,7 @@ void CatmullRomTab::syncControls()
     m_bezierCheck->setChecked(m_settings.bezier);
     m_splineCheck->setChecked(m_settings.spline);
     m_catmullRomCheck->setChecked(m_settings.catmullRom);
+    m_catmullRomCheck->setEnabled(m_settings.family == CurveFamily::CatmullRom); // other families draw their own curve
     m_pointsCheck->setChecked(m_settings.controlPoints);
     m_splineEndsCombo->setCurrentIndex(static_cast<int>(m_settings.splineEnds));
     m_splineEndsCombo->setEnabled(m_settings.spline);
@@ -449,12 +460,14 @@ void CatmullRomTab::refuse(const QString& message)
     emit statusMessage(message);
 }
 
-void CatmullRomTab::changeSettings(const CatmullRomSettings& after, const QString& undoText, bool mergeable)
+void CatmullRomTab::changeSettings(const CatmullRomSettings& after, const QString& undoText, bool mergeable, int familyMergeId)
 {
     if (after == m_settings)
         return;
-    // Slider moves merge while they drag the same τ of the same list.
-    const int mergeId = mergeable ? kSliderMergeIdBase + (after.selectedTau + 1) * 32 + static_cast<int>(after.taus.size()) : -1;
+    // Slider moves merge while they drag the same τ of the same list (the family's sliders: their own id).
+    const int mergeId = familyMergeId >= 0 ? familyMergeId
+                        : mergeable ? kSliderMergeIdBase + (after.selectedTau + 1) * 32 + static_cast<int>(after.taus.size())
+                                    : -1;
     m_undo->push(new ValueCommand<CatmullRomSettings>([this](const CatmullRomSettings& s) { applySettings(s); }, m_settings,
                                                       after, undoText, mergeId));
 }
@@ -631,6 +644,7 @@ void CatmullRomTab::pointsEdited()
 void CatmullRomTab::recompute()
 {
     m_scene = computeScene(m_editor->points(), m_settings);
+    updateFamilyViews();
     m_exact->setContent(
         CatmullRomReport::html(m_editor->points(), m_settings, m_scene, computeAnalysis(m_editor->allExactPoints(), m_settings)));
     updatePlot();

@@ -27,6 +27,10 @@ class QTabWidget;
 
 namespace granota::ui {
 
+class FamilyPanel;
+class HermiteHandles;
+class KnotContinuityTable;
+class ConventionsTable;
 class ViewTransform;
 struct CanvasStyle;
 
@@ -47,12 +51,29 @@ public:
     const CatmullRomScene& scene() const { return m_scene; }
     /// The last refusal or hint sent to the status bar.
     QString lastMessage() const { return m_lastMessage; }
+    FamilyPanel* familyPanel() const { return m_familyPanel; }
+    HermiteHandles* hermiteHandles() const { return m_hermiteHandles; }
+    /// The side panel's knot table: the curve of the family, or the selected τ's Catmull-Rom curve.
+    KnotContinuityTable* knotTable() const { return m_knotTable; }
+    /// The side panel's conventions table, for the τ of the curve shown.
+    ConventionsTable* conventionsTable() const { return m_conventions; }
 
     /// Undoable edits of the settings. addTension refuses garbage, values outside [−10, 10],
     /// duplicates and an 11th tension with a message (statusMessage) and returns false.
     bool addTension(const QString& text);
     bool removeTension(int index);
     void setSelectedTension(int index);
+    /// The family selector (curve_family.h): one undo step.
+    void setFamily(CurveFamily family);
+    /// The cardinal tension c ∈ [−1, 1] (slider moves merge into one undo step).
+    void setCardinalTension(const Rational& c);
+    /// T (0), C (1) or B (2) ∈ [−1, 1] of the point selected in the editor, or of every point
+    /// when the panel says "All points" or none is selected.
+    void setTcb(int which, const Rational& value);
+    /// The Hermite family's tangent of point `index` (one undo step).
+    void setHermiteTangent(int index, Point tangent);
+    /// Every Hermite tangent back to the Catmull-Rom rule's (one undo step).
+    void resetHermiteTangents();
     void setEnds(CatmullRomEnds ends);
     void setSpacing(CatmullRomSpacing spacing);
     void setBezierVisible(bool on);
@@ -91,7 +112,15 @@ private:
     QRectF contentBounds() const override;
     void buildUi();
     /// Pushes an undo step from the current settings to `after` (nothing if equal).
-    void changeSettings(const CatmullRomSettings& after, const QString& undoText, bool mergeable = false);
+    void changeSettings(const CatmullRomSettings& after, const QString& undoText, bool mergeable = false, int familyMergeId = -1);
+    // The family selector's part of the tab (catmull_rom_tab_families.cpp).
+    void buildFamilyControls();
+    void addFamilySideTabs();
+    void retranslateFamilyControls();
+    /// The Hermite handles and the knot table, after every recompute.
+    void updateFamilyViews();
+    void hermiteTangentDragged(int index, Point tangent);
+    void hermiteDragFinished(int index, Point startTangent);
     /// Makes `s` current (undo/redo, loading): controls, curves, panel, plot.
     void applySettings(const CatmullRomSettings& s);
     void pointsEdited();
@@ -109,6 +138,10 @@ private:
     QString tensionItemText(const Rational& tau) const;
 
     QCustomPlot* m_plot = nullptr;
+    FamilyPanel* m_familyPanel = nullptr;
+    HermiteHandles* m_hermiteHandles = nullptr;
+    KnotContinuityTable* m_knotTable = nullptr;
+    ConventionsTable* m_conventions = nullptr;
     QTabWidget* m_sideTabs = nullptr;
     QGroupBox* m_tensionBox = nullptr;
     QListWidget* m_tauList = nullptr;
