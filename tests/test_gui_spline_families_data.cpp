@@ -4,9 +4,18 @@
 // square's corners against its closed form, clamped tangents, the translated refusals, and
 // the families' settings through their JSON.
 #include "ui/catmull_rom/function_data_curves.h"
+#include "ui/catmull_rom/function_data_panel.h"
 #include "ui/catmull_rom/plane_spline_curves.h"
+#include "ui/catmull_rom/plane_spline_panel.h"
+#include "ui/common/number_text.h"
 
+#include <QCheckBox>
+#include <QComboBox>
 #include <QJsonDocument>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QTableWidget>
 #include <QTest>
 #include "tests/test_main.h"
 
@@ -203,6 +212,60 @@ private slots:
         QVERIFY(repeated.spline.bezier.empty());
         // Uniform parameters take the same points.
         QVERIFY(computePlaneSplineScene({{0, 0}, {1, 1}, {1, 1}, {2, 0}}, PlaneSplineSettings{}, false).spline.error.isEmpty());
+    }
+
+    void overshootTableListsEachCurve()
+    {
+        const FunctionDataScene scene = computeFunctionDataScene(kD3Data, FunctionDataSettings{}, false);
+        FunctionDataPanel panel;
+        panel.showSettings(FunctionDataSettings{}, scene, kD3Data);
+        QTableWidget* table = panel.overshootTable();
+        QCOMPARE(table->rowCount(), 4);
+        QCOMPARE(table->item(0, 0)->text(), functionDataCurveLabel(FunctionDataCurve::Natural));
+        // The natural spline's row: 98.25 (the first test's value, to 4 digits) on [107, 502].
+        QCOMPARE(table->item(0, 1)->text(), displaySignificant(scene.curves[0].largestOvershoot, 4));
+        QVERIFY(table->item(0, 1)->text().startsWith(QStringLiteral("98")));
+        QVERIFY(table->item(0, 2)->text().contains(QStringLiteral("107")));
+        QCOMPARE(table->item(2, 1)->text(), displaySignificant(0.0, 4));
+        QCOMPARE(table->item(2, 2)->text(), QStringLiteral("—"));
+        QVERIFY(panel.errorLabel()->isHidden());
+
+        // Unticking Steffen asks for the same settings without it, nothing else.
+        QSignalSpy asked(&panel, &FunctionDataPanel::changeRequested);
+        panel.curveCheck(FunctionDataCurve::Steffen)->click();
+        QCOMPARE(asked.count(), 1);
+        FunctionDataSettings expected;
+        expected.shown[3] = false;
+        QVERIFY(asked.at(0).at(0).value<FunctionDataSettings>() == expected);
+    }
+
+    void planePanelRefusesABadTangentAndKeepsTheShownOne()
+    {
+        PlaneSplinePanel panel;
+        PlaneSplineSettings clamped;
+        clamped.ends = ParametricEnds::Clamped;
+        panel.showSettings(clamped, computePlaneSplineScene({{0, 0}, {1, 1}, {2, 0}}, clamped, false));
+        QVERIFY(panel.tangentEdits()[0]->isEnabled());
+        QSignalSpy asked(&panel, &PlaneSplinePanel::changeRequested);
+        QSignalSpy refused(&panel, &PlaneSplinePanel::refused);
+        panel.tangentEdits()[1]->setText(QStringLiteral("abc"));
+        emit panel.tangentEdits()[1]->editingFinished();
+        QCOMPARE(refused.count(), 1);
+        QCOMPARE(asked.count(), 0);
+        QCOMPARE(panel.tangentEdits()[1]->text(), QStringLiteral("0"));
+        panel.tangentEdits()[1]->setText(QStringLiteral("-1/2"));
+        emit panel.tangentEdits()[1]->editingFinished();
+        QCOMPARE(asked.count(), 1);
+        const auto after = asked.at(0).at(0).value<PlaneSplineSettings>();
+        QCOMPARE(after.startTangent.y, frac(-1, 2));
+        // The ends from the keyboard: the combo box's next item is not-a-knot.
+        panel.endsCombo()->setFocus();
+        QTest::keyClick(panel.endsCombo(), Qt::Key_Down);
+        QCOMPARE(asked.count(), 2);
+        QCOMPARE(asked.at(1).at(0).value<PlaneSplineSettings>().ends, ParametricEnds::NotAKnot);
+        // Natural ends: the tangents are not asked for.
+        panel.showSettings(PlaneSplineSettings{}, PlaneSplineScene{});
+        QVERIFY(!panel.tangentEdits()[0]->isEnabled());
     }
 
     void settingsRoundTripThroughJson()
