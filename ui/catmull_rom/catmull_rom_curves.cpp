@@ -111,6 +111,9 @@ CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomS
                                                          CatmullRomScene::kSamplesPerSegment);
         }
     }
+    // The family selector's switch point: Catmull-Rom is the τ curves above, every other
+    // family its own curve (family_curves.cpp).
+    scene.family = computeFamilyCurve(points, settings);
     return scene;
 }
 

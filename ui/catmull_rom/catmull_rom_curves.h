@@ -18,6 +18,7 @@
 #include "core/curves/splines/curvature_profile.h"
 #include "core/curves/splines/piecewise_polynomial.h"
 #include "ui/catmull_rom/catmull_rom_settings.h"
+#include "ui/catmull_rom/family_curves.h"
 
 #include <QCoreApplication>
 #include <QString>
@@ -62,6 +63,7 @@ struct CatmullRomScene {
     std::vector<BezierSegment<double>> splineBezier;
     CurvatureProfile splineCurvature;
     QString splineError; ///< translated: why there is no spline
+    FamilyCurve family;  ///< the chosen family's curve when it is not Catmull-Rom (family_curves.h)
 };
 
 /// The control polygons of cubic Bézier segments, as curvatureProfile() takes them.

@@ -3,6 +3,7 @@
 #include "core/base/aabb.h"
 
 #include "ui/catmull_rom/catmull_rom_report.h"
+#include "ui/catmull_rom/family_drawing.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_style.h"
 #include "ui/common/view_transform.h"
@@ -32,28 +33,6 @@ void drawPolyline(QPainter& p, const ViewTransform& view, const std::vector<Poin
     p.drawPolyline(poly);
 }
 
-/// Cubic Bézier segments as one path of cubicTo (SVG `C`, PDF `c`): the curve itself, not
-/// a polyline of samples. A segment with a point that is not finite is left out.
-void drawBezierSegments(QPainter& p, const ViewTransform& view, const std::vector<BezierSegment<double>>& segments)
-{
-    QPainterPath path;
-    bool open = false; // the path ends at the previous segment's end
-    for (const auto& b : segments) {
-        if (!isFinite(b[0]) || !isFinite(b[1]) || !isFinite(b[2]) || !isFinite(b[3])) {
-            open = false;
-            continue;
-        }
-        const QPointF start = view.toScreen(b[0]);
-        // A segment starts where the previous one ends (up to rounding): one path, with its joins.
-        if (!open || QLineF(path.currentPosition(), start).length() > 1e-6)
-            path.moveTo(start);
-        path.cubicTo(view.toScreen(b[1]), view.toScreen(b[2]), view.toScreen(b[3]));
-        open = true;
-    }
-    p.setBrush(Qt::NoBrush);
-    p.drawPath(path);
-}
-
 /// The rectangle holding the points, never empty (one point or coincident points get a unit box).
 QRectF pointBounds(const std::vector<Point>& points)
 {
@@ -75,6 +54,26 @@ QRectF pointBounds(const std::vector<Point>& points)
 
 } // namespace
 
+void drawBezierSegments(QPainter& p, const ViewTransform& view, const std::vector<BezierSegment<double>>& segments)
+{
+    QPainterPath path;
+    bool open = false; // the path ends at the previous segment's end
+    for (const auto& b : segments) {
+        if (!isFinite(b[0]) || !isFinite(b[1]) || !isFinite(b[2]) || !isFinite(b[3])) {
+            open = false;
+            continue;
+        }
+        const QPointF start = view.toScreen(b[0]);
+        // A segment starts where the previous one ends (up to rounding): one path, with its joins.
+        if (!open || QLineF(path.currentPosition(), start).length() > 1e-6)
+            path.moveTo(start);
+        path.cubicTo(view.toScreen(b[1]), view.toScreen(b[2]), view.toScreen(b[3]));
+        open = true;
+    }
+    p.setBrush(Qt::NoBrush);
+    p.drawPath(path);
+}
+
 void drawCatmullRomCurves(QPainter& p, const ViewTransform& view, const CanvasStyle& style, const CatmullRomSettings& settings,
                           const CatmullRomScene& scene)
 {
@@ -85,6 +84,10 @@ void drawCatmullRomCurves(QPainter& p, const ViewTransform& view, const CanvasSt
     if (!scene.splineBezier.empty()) {
         p.setPen(QPen(kCatmullRomSplineColor, style.lineWidth(), Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
         drawBezierSegments(p, view, scene.splineBezier);
+    }
+    if (settings.family != CurveFamily::CatmullRom) {
+        drawFamilyCurve(p, view, style, settings, scene); // the family selector's switch point (family_drawing.h)
+        return;
     }
     if (!settings.catmullRom)
         return;

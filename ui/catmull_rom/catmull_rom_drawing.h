@@ -26,6 +26,10 @@ struct CanvasStyle;
 inline const QColor kCatmullRomBezierColor{0x6a, 0x3d, 0x9a};
 inline const QColor kCatmullRomSplineColor{0x33, 0x33, 0x33};
 
+/// Cubic Bézier segments as one path of cubicTo (SVG `C`, PDF `c`): the curve itself, not
+/// a polyline of samples. A segment with a point that is not finite is left out.
+void drawBezierSegments(QPainter& p, const ViewTransform& view, const std::vector<BezierSegment<double>>& segments);
+
 /// The Bézier curve, the spline, the compared ends (dashed) and one curve per τ on top, the
 /// selected τ wider; the Catmull-Rom curves only while settings.catmullRom.
 void drawCatmullRomCurves(QPainter& p, const ViewTransform& view, const CanvasStyle& style, const CatmullRomSettings& settings,

@@ -10,8 +10,8 @@ namespace granota::ui {
 
 bool CatmullRomSettings::operator==(const CatmullRomSettings& o) const
 {
-    return taus == o.taus && selectedTau == o.selectedTau && ends == o.ends && spacing == o.spacing && bezier == o.bezier &&
-           spline == o.spline && compareEnds == o.compareEnds && allTausInPlot == o.allTausInPlot &&
+    return family == o.family && taus == o.taus && selectedTau == o.selectedTau && ends == o.ends && spacing == o.spacing &&
+           bezier == o.bezier && spline == o.spline && compareEnds == o.compareEnds && allTausInPlot == o.allTausInPlot &&
            curvaturePlot == o.curvaturePlot && catmullRom == o.catmullRom && controlPoints == o.controlPoints &&
            splineEnds == o.splineEnds && startSlope == o.startSlope && endSlope == o.endSlope && planeSpline == o.planeSpline &&
            functionData == o.functionData;
@@ -92,6 +92,7 @@ void writeSettings(const CatmullRomSettings& s, QJsonObject& json)
     QJsonArray taus;
     for (const Rational& t : s.taus)
         taus.append(tensionText(t));
+    json.insert(QStringLiteral("family"), curveFamilyKey(s.family));
     json.insert(QStringLiteral("taus"), taus);
     json.insert(QStringLiteral("selected_tau"), s.selectedTau);
     json.insert(QStringLiteral("mode"), endsKey(s.ends));
@@ -149,6 +150,14 @@ std::optional<CatmullRomSettings> readSettings(const QJsonObject& json, QString*
     }
     if (s.selectedTau < 0 || s.selectedTau >= static_cast<int>(s.taus.size()))
         return fail(QStringLiteral("selected_tau"));
+    // Absent in documents older than the family selector: Catmull-Rom, as they were drawn.
+    const QJsonValue family = json.value(QStringLiteral("family"));
+    if (!family.isUndefined()) {
+        const auto f = curveFamilyFromKey(family.toString());
+        if (!f)
+            return fail(QStringLiteral("family"));
+        s.family = *f;
+    }
     const QJsonValue mode = json.value(QStringLiteral("mode"));
     if (!mode.isUndefined()) {
         const auto e = endsFromKey(mode.toString());

@@ -7,6 +7,7 @@
 #include "core/curves/splines/catmull_rom_ends.h"
 #include "core/curves/splines/cubic_spline.h"
 #include "core/exact/rational.h"
+#include "ui/catmull_rom/curve_family.h"
 #include "ui/catmull_rom/function_data_settings.h"
 #include "ui/catmull_rom/plane_spline_settings.h"
 
@@ -26,6 +27,7 @@ struct CatmullRomSettings {
     static constexpr int kMaxTensionAbs = 10; ///< docs/extreme-cases.md: τ ∈ [−10, 10]
     static constexpr int kMaxPoints = 200;    ///< docs/extreme-cases.md (soft bodies up to 200 sides)
 
+    CurveFamily family = CurveFamily::CatmullRom;                     ///< which curves go through the points (curve_family.h)
     std::vector<Rational> taus{Rational(0), frac(1, 2), Rational(2)}; ///< Ex 2.11's tensions
     int selectedTau = 1;                                              ///< the one the slider and the plot follow
     CatmullRomEnds ends = CatmullRomEnds::Open;

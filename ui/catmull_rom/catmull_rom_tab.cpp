@@ -7,6 +7,7 @@
 #include "ui/catmull_rom/catmull_rom_export.h"
 #include "ui/catmull_rom/catmull_rom_plot.h"
 #include "ui/catmull_rom/catmull_rom_report.h"
+#include "ui/catmull_rom/family_panel.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_legend.h"
 #include "ui/common/curve_canvas.h"
@@ -89,6 +90,8 @@ CatmullRomTab::CatmullRomTab(QWidget* parent) : CurveTab(QStringLiteral("catmull
 
 void CatmullRomTab::buildUi()
 {
+    m_familyPanel = new FamilyPanel(this); // the family selector and the chosen family's controls
+    connect(m_familyPanel, &FamilyPanel::familyChosen, this, &CatmullRomTab::setFamily);
     // Tensions.
     m_tensionBox = new QGroupBox(this);
     m_tauList = new QListWidget(m_tensionBox);
@@ -260,6 +263,7 @@ void CatmullRomTab::buildUi()
     controlsLayout->setContentsMargins(0, 0, 0, 0);
     controlsLayout->addWidget(m_tensionBox);
     controlsLayout->addWidget(m_curveBox);
+    controlsLayout->insertWidget(0, m_familyPanel); // on top, but after the others among the children (tests find the ends first)
     controlsLayout->addStretch(1);
     auto* scroll = new VerticalScrollArea(controls, this); // Tab goes to its controls, and it scrolls to the one focused
 
@@ -300,6 +304,7 @@ QString CatmullRomTab::hint() const
 void CatmullRomTab::retranslate()
 {
     updateCanvasSummary();
+    m_familyPanel->retranslate();
     m_tensionBox->setTitle(tr("Tensions τ (Def 2.8)"));
     m_tensionBox->setToolTip(tr("The tension τ scales the tangents p′(0) = τ(p2 − p0), p′(1) = τ(p3 − p1) of every "
                                 "segment (Def 2.8): 0 gives straight segments, 1/2 is the usual value, negative "
@@ -391,6 +396,8 @@ QString CatmullRomTab::tensionItemText(const Rational& tau) const
 void CatmullRomTab::syncControls()
 {
     m_syncing = true;
+    m_familyPanel->showSettings(m_settings);
+    m_tensionBox->setVisible(m_settings.family == CurveFamily::CatmullRom); // the τ list is Catmull-Rom's
     const int count = static_cast<int>(m_settings.taus.size());
     if (m_tauList->count() != count) {
         m_tauList->clear();
@@ -536,6 +543,13 @@ void CatmullRomTab::sliderMoved(int value)
     CatmullRomSettings after = m_settings;
     after.taus[static_cast<std::size_t>(index)] = tau;
     changeSettings(after, tr("Change τ"), true);
+}
+
+void CatmullRomTab::setFamily(CurveFamily family)
+{
+    CatmullRomSettings after = m_settings;
+    after.family = family;
+    changeSettings(after, tr("Family: %1").arg(curveFamilyName(family)));
 }
 
 void CatmullRomTab::setEnds(CatmullRomEnds ends)

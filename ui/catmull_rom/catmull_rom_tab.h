@@ -27,6 +27,7 @@ class QTabWidget;
 
 namespace granota::ui {
 
+class FamilyPanel;
 class ViewTransform;
 struct CanvasStyle;
 
@@ -47,12 +48,15 @@ public:
     const CatmullRomScene& scene() const { return m_scene; }
     /// The last refusal or hint sent to the status bar.
     QString lastMessage() const { return m_lastMessage; }
+    FamilyPanel* familyPanel() const { return m_familyPanel; }
 
     /// Undoable edits of the settings. addTension refuses garbage, values outside [−10, 10],
     /// duplicates and an 11th tension with a message (statusMessage) and returns false.
     bool addTension(const QString& text);
     bool removeTension(int index);
     void setSelectedTension(int index);
+    /// The family selector (curve_family.h): one undo step.
+    void setFamily(CurveFamily family);
     void setEnds(CatmullRomEnds ends);
     void setSpacing(CatmullRomSpacing spacing);
     void setBezierVisible(bool on);
@@ -109,6 +113,7 @@ private:
     QString tensionItemText(const Rational& tau) const;
 
     QCustomPlot* m_plot = nullptr;
+    FamilyPanel* m_familyPanel = nullptr;
     QTabWidget* m_sideTabs = nullptr;
     QGroupBox* m_tensionBox = nullptr;
     QListWidget* m_tauList = nullptr;

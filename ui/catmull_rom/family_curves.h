@@ -1,0 +1,42 @@
+#pragma once
+/// \file family_curves.h
+/// The curve of the family chosen in the Catmull-Rom tab (curve_family.h) when it is not
+/// Catmull-Rom (whose curves, one per τ, are CatmullRomScene::curves): computed by the core
+/// from the points and the settings, as Hermite segments (hermite_segment.h) with the tangents
+/// at each point, as cubic Bézier segments (drawn and exported) and samples. No mathematics
+/// here: only calls to core/curves/splines and the translation of their errors.
+
+#include "core/base/vec2.h"
+#include "core/curves/splines/bezier_segments.h"
+#include "core/curves/splines/curvature_profile.h"
+#include "core/curves/splines/hermite_segment.h"
+#include "core/curves/splines/kochanek_bartels.h"
+#include "core/exact/polynomial.h"
+#include "ui/catmull_rom/catmull_rom_settings.h"
+
+#include <QString>
+
+#include <vector>
+
+namespace granota::ui {
+
+/// One curve of a family other than Catmull-Rom.
+struct FamilyCurve {
+    CurveFamily family = CurveFamily::CatmullRom; ///< CatmullRom: no family curve (the τ curves are drawn)
+    std::vector<HermiteSegment<double>> hermite;  ///< Def 2.8's form of every segment (empty for the solved families)
+    std::vector<Vec2<Polynomial<double>>> segments; ///< the same in powers of the local s
+    std::vector<double> intervals;                  ///< h_i per segment (1 uniform)
+    /// The tangents at each point in the local s, in and out (equal where the curve is C¹ in
+    /// s); empty for the families without point tangents.
+    std::vector<KbTangents<double>> tangents;
+    std::vector<Point> points; ///< where the tangents sit (the tab's points when computed)
+    std::vector<BezierSegment<double>> bezier; ///< the segments as cubic Bézier curves (drawn, exported)
+    std::vector<Point> samples;                ///< for the key's placement and the view's box
+    CurvatureProfile curvature;                ///< κ(s), when the plot shows it
+    QString error;                             ///< translated; empty when the curve exists
+};
+
+/// The family's curve through `points` with `settings` (an empty FamilyCurve for Catmull-Rom).
+FamilyCurve computeFamilyCurve(const std::vector<Point>& points, const CatmullRomSettings& settings);
+
+} // namespace granota::ui
