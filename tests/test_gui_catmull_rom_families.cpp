@@ -28,9 +28,8 @@ private slots:
     void keysRoundTrip()
     {
         // The document keys of the brief, spelled out here (not read from curve_family.cpp).
-        const QStringList keys{QStringLiteral("catmull-rom"),      QStringLiteral("cardinal"),
-                               QStringLiteral("kochanek-bartels"), QStringLiteral("hermite"),
-                               QStringLiteral("plane-spline"),     QStringLiteral("function-data")};
+        const QStringList keys{QStringLiteral("catmull-rom"), QStringLiteral("cardinal"),     QStringLiteral("kochanek-bartels"),
+                               QStringLiteral("hermite"),     QStringLiteral("plane-spline"), QStringLiteral("function-data")};
         QCOMPARE(int(kCurveFamilies.size()), keys.size());
         for (std::size_t i = 0; i < kCurveFamilies.size(); ++i) {
             QCOMPARE(curveFamilyKey(kCurveFamilies[i]), keys[int(i)]);

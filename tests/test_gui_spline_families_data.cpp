@@ -3,11 +3,15 @@
 // spline solved here by hand, the monotone schemes' zero, the closed spline through a
 // square's corners against its closed form, clamped tangents, the translated refusals, and
 // the families' settings through their JSON.
+#include "ui/catmull_rom/catmull_rom_tab.h"
 #include "ui/catmull_rom/function_data_curves.h"
 #include "ui/catmull_rom/function_data_panel.h"
 #include "ui/catmull_rom/plane_spline_curves.h"
 #include "ui/catmull_rom/plane_spline_panel.h"
+#include "ui/catmull_rom/spline_family_examples.h"
+#include "ui/catmull_rom/spline_family_panels.h"
 #include "ui/common/number_text.h"
+#include "ui/common/point_editor.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -15,7 +19,9 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QSignalSpy>
+#include <QPushButton>
 #include <QTableWidget>
+#include <QUndoStack>
 #include <QTest>
 #include "tests/test_main.h"
 
@@ -266,6 +272,64 @@ private slots:
         // Natural ends: the tangents are not asked for.
         panel.showSettings(PlaneSplineSettings{}, PlaneSplineScene{});
         QVERIFY(!panel.tangentEdits()[0]->isEnabled());
+    }
+
+    void tabDrawsTheFamilyAndSavesItsSettings()
+    {
+        CatmullRomTab tab;
+        tab.setFamily(CurveFamily::FunctionData);
+        QVERIFY(!tab.splinePanels()->isHidden());
+        QVERIFY(!tab.splinePanels()->dataPanel()->isHidden());
+        QVERIFY(tab.splinePanels()->planePanel()->isHidden());
+        // The family's example: d3-shape #38's data, one undo step for the points and settings.
+        const int count = tab.undoStack()->count();
+        tab.splinePanels()->exampleButton()->click();
+        QCOMPARE(tab.undoStack()->count(), count + 1);
+        QCOMPARE(tab.pointEditor()->points(), d3Shape38ExamplePoints());
+        QCOMPARE(tab.scene().functionData.curves.size(), std::size_t(4));
+        QVERIFY(std::fabs(tab.scene().functionData.curves[0].largestOvershoot - 98.25) < 0.01);
+        QCOMPARE(tab.legend().entries.size(), std::size_t(4));
+        // A curve hidden from the panel: one undo step, and back.
+        tab.splinePanels()->dataPanel()->curveCheck(FunctionDataCurve::Natural)->click();
+        QCOMPARE(tab.scene().functionData.curves.size(), std::size_t(3));
+        QCOMPARE(tab.undoStack()->count(), count + 2);
+        tab.undoStack()->undo();
+        QCOMPARE(tab.scene().functionData.curves.size(), std::size_t(4));
+        QVERIFY(tab.splinePanels()->dataPanel()->curveCheck(FunctionDataCurve::Natural)->isChecked());
+
+        // The plane spline: its example closes the frog's outline points.
+        tab.setFamily(CurveFamily::PlaneSpline);
+        QVERIFY(tab.splinePanels()->dataPanel()->isHidden());
+        tab.splinePanels()->exampleButton()->click();
+        QCOMPARE(tab.pointEditor()->points(), frogOutlineExamplePoints());
+        QVERIFY(tab.settings().planeSpline.ends == ParametricEnds::Periodic);
+        QCOMPARE(tab.scene().planeSpline.spline.bezier.size(), frogOutlineExamplePoints().size());
+        QCOMPARE(tab.scene().planeSpline.catmullRom.bezier.size(), frogOutlineExamplePoints().size());
+
+        // Save and load: the family and its settings come back.
+        PlaneSplineSettings plane = tab.settings().planeSpline;
+        plane.parameters = SplineParameters::Centripetal;
+        plane.startTangent = RPoint(frac(1, 2), Rational(3));
+        CatmullRomSettings changed = tab.settings();
+        changed.planeSpline = plane;
+        changed.functionData.shown = {false, true, true, false};
+        emit tab.splinePanels()->changeRequested(changed, QStringLiteral("test"));
+        const QJsonObject saved = QJsonDocument::fromJson(QJsonDocument(tab.saveState()).toJson()).object();
+        CatmullRomTab other;
+        QString error;
+        QVERIFY2(other.loadState(saved, &error), qPrintable(error));
+        QVERIFY(other.settings() == tab.settings());
+        QVERIFY(other.settings().family == CurveFamily::PlaneSpline);
+        QVERIFY(other.settings().planeSpline == plane);
+        QCOMPARE(other.settings().functionData.shown, (std::array<bool, 4>{false, true, true, false}));
+        // A bad value in the family's settings is refused with its key, and nothing is lost.
+        QJsonObject bad = saved;
+        QJsonObject badPlane = bad.value(QStringLiteral("plane_spline")).toObject();
+        badPlane.insert(QStringLiteral("ends"), QStringLiteral("loose"));
+        bad.insert(QStringLiteral("plane_spline"), badPlane);
+        const QJsonObject before = other.saveState();
+        QVERIFY(!other.loadState(bad, &error));
+        QCOMPARE(other.saveState(), before);
     }
 
     void settingsRoundTripThroughJson()

@@ -4,6 +4,7 @@
 
 #include "ui/catmull_rom/catmull_rom_report.h"
 #include "ui/catmull_rom/family_drawing.h"
+#include "ui/catmull_rom/spline_families_drawing.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_style.h"
 #include "ui/common/view_transform.h"
@@ -105,6 +106,10 @@ void drawCatmullRomCurves(QPainter& p, const ViewTransform& view, const CanvasSt
 
 CanvasLegend catmullRomLegend(const CatmullRomSettings& settings, const CatmullRomScene& scene)
 {
+    if (settings.family == CurveFamily::PlaneSpline)
+        return planeSplineLegend(settings.planeSpline, scene.planeSpline);
+    if (settings.family == CurveFamily::FunctionData)
+        return functionDataLegend(scene.functionData);
     CanvasLegend legend;
     legend.alertColor = kErrorColor;
     for (std::size_t i = 0; settings.catmullRom && i < scene.curves.size(); ++i) {
@@ -144,6 +149,10 @@ CanvasLegendObstacles catmullRomLegendObstacles(const ViewTransform& view, const
         samples(scene.otherEnds[i].samples);
     samples(scene.bezier);
     samples(scene.spline);
+    for (const auto& curve : planeSplineSamples(scene.planeSpline))
+        samples(curve);
+    for (const auto& curve : functionDataSamples(scene.functionData))
+        samples(curve);
     return avoid;
 }
 
@@ -170,6 +179,10 @@ QRectF catmullRomContentBounds(const std::vector<Point>& points, const CatmullRo
             include(c.samples);
     include(scene.spline);
     include(scene.bezier);
+    for (const auto& curve : planeSplineSamples(scene.planeSpline))
+        include(curve);
+    for (const auto& curve : functionDataSamples(scene.functionData))
+        include(curve);
     return QRectF(QPointF(x0, y0), QPointF(x1, y1));
 }
 

@@ -123,12 +123,14 @@ void plotCurvature(QCustomPlot* plot, const CatmullRomSettings& settings, const 
         g->setName(name);
     };
     const double width = 2.0 * scale;
-    for (std::size_t i = 0; i < scene.curves.size(); ++i) {
+    // The C² families plot their own curves (below), not the τ curves.
+    const bool tauCurves = settings.family != CurveFamily::PlaneSpline && settings.family != CurveFamily::FunctionData;
+    for (std::size_t i = 0; tauCurves && i < scene.curves.size(); ++i) {
         const bool selected = static_cast<int>(i) == settings.selectedTau;
         addProfile(scene.curves[i].curvature, QPen(tensionColour(scene.curves[i].tau), selected ? 1.5 * width : width),
                    QStringLiteral("τ = %1").arg(tensionText(scene.curves[i].tau)));
     }
-    for (std::size_t i = 0; i < scene.otherEnds.size(); ++i)
+    for (std::size_t i = 0; tauCurves && i < scene.otherEnds.size(); ++i)
         addProfile(scene.otherEnds[i].curvature, QPen(tensionColour(scene.otherEnds[i].tau), 0.75 * width, Qt::DashLine),
                    QCoreApplication::translate("granota::ui::CatmullRomTab", "τ = %1, %2 ends")
                        .arg(tensionText(scene.otherEnds[i].tau), CatmullRomReport::endsName(scene.otherEnds[i].ends)));
@@ -136,9 +138,17 @@ void plotCurvature(QCustomPlot* plot, const CatmullRomSettings& settings, const 
                QCoreApplication::translate("granota::ui::CatmullRomTab", "Bézier"));
     addProfile(scene.splineCurvature, QPen(kCatmullRomSplineColor, width),
                QCoreApplication::translate("granota::ui::CatmullRomTab", "cubic spline C²"));
+    // The families of issue 37 with curves of their own: the C² spline in the plane and its
+    // Catmull-Rom comparison; the curves on function data, each in its colour.
+    addProfile(scene.planeSpline.spline.curvature, QPen(kCatmullRomSplineColor, 1.25 * width),
+               PlaneSplineCurves::tr("C² spline"));
+    addProfile(scene.planeSpline.catmullRom.curvature, QPen(tensionColour(0.5), width, Qt::DashLine),
+               QStringLiteral("Catmull-Rom τ = 1/2"));
+    for (const FunctionDataCurveShape& shape : scene.functionData.curves)
+        addProfile(shape.curvature, QPen(functionDataCurveColour(shape.curve), width), functionDataCurveLabel(shape.curve));
 
     // The knots of the selected τ, where its κ may jump.
-    if (settings.selectedTau >= 0 && settings.selectedTau < static_cast<int>(scene.curves.size())) {
+    if (tauCurves && settings.selectedTau >= 0 && settings.selectedTau < static_cast<int>(scene.curves.size())) {
         const CurvatureProfile& profile = scene.curves[static_cast<std::size_t>(settings.selectedTau)].curvature;
         const bool closed = settings.ends == CatmullRomEnds::Closed;
         for (std::size_t k = 0; k < profile.knots.size(); ++k) {

@@ -28,6 +28,7 @@ class QTabWidget;
 namespace granota::ui {
 
 class FamilyPanel;
+class SplineFamilyPanels;
 class ViewTransform;
 struct CanvasStyle;
 
@@ -49,6 +50,8 @@ public:
     /// The last refusal or hint sent to the status bar.
     QString lastMessage() const { return m_lastMessage; }
     FamilyPanel* familyPanel() const { return m_familyPanel; }
+    /// The C² spline's and the function data's controls (spline_family_panels.h).
+    SplineFamilyPanels* splinePanels() const { return m_splinePanels; }
 
     /// Undoable edits of the settings. addTension refuses garbage, values outside [−10, 10],
     /// duplicates and an 11th tension with a message (statusMessage) and returns false.
@@ -96,6 +99,8 @@ private:
     void buildUi();
     /// Pushes an undo step from the current settings to `after` (nothing if equal).
     void changeSettings(const CatmullRomSettings& after, const QString& undoText, bool mergeable = false);
+    /// Points and settings as one undo step (a worked example, a family's example).
+    void loadPointsAndSettings(const std::vector<Point>& points, const CatmullRomSettings& settings, const QString& undoText);
     /// Makes `s` current (undo/redo, loading): controls, curves, panel, plot.
     void applySettings(const CatmullRomSettings& s);
     void pointsEdited();
@@ -114,6 +119,7 @@ private:
 
     QCustomPlot* m_plot = nullptr;
     FamilyPanel* m_familyPanel = nullptr;
+    SplineFamilyPanels* m_splinePanels = nullptr;
     QTabWidget* m_sideTabs = nullptr;
     QGroupBox* m_tensionBox = nullptr;
     QListWidget* m_tauList = nullptr;

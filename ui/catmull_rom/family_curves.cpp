@@ -27,18 +27,15 @@ FamilyCurve computeFamilyCurve(const std::vector<Point>& points, const CatmullRo
     curve.family = settings.family;
     curve.points = points;
     switch (settings.family) {
-    case CurveFamily::CatmullRom:
-        return curve; // the τ curves of CatmullRomScene::curves
+    case CurveFamily::CatmullRom: return curve; // the τ curves of CatmullRomScene::curves
     case CurveFamily::Cardinal:
     case CurveFamily::KochanekBartels:
-    case CurveFamily::Hermite:
-        break;
+    case CurveFamily::Hermite: break;
     case CurveFamily::PlaneSpline:
-        // cr-c2: the C² spline in the plane with its ends (parametric_spline.h) goes here.
-        break;
     case CurveFamily::FunctionData:
-        // cr-c2: function data y(x), natural / Catmull-Rom / Fritsch–Carlson / Steffen (monotone_spline.h), here.
-        break;
+        // Several curves each: CatmullRomScene::planeSpline and ::functionData (plane_spline_curves.h,
+        // function_data_curves.h), computed by computeScene.
+        return curve;
     }
     finishFamilyCurve(curve, settings);
     return curve;

@@ -22,14 +22,14 @@ namespace granota::ui {
 
 /// One curve of a family other than Catmull-Rom.
 struct FamilyCurve {
-    CurveFamily family = CurveFamily::CatmullRom; ///< CatmullRom: no family curve (the τ curves are drawn)
-    std::vector<HermiteSegment<double>> hermite;  ///< Def 2.8's form of every segment (empty for the solved families)
+    CurveFamily family = CurveFamily::CatmullRom;   ///< CatmullRom: no family curve (the τ curves are drawn)
+    std::vector<HermiteSegment<double>> hermite;    ///< Def 2.8's form of every segment (empty for the solved families)
     std::vector<Vec2<Polynomial<double>>> segments; ///< the same in powers of the local s
     std::vector<double> intervals;                  ///< h_i per segment (1 uniform)
     /// The tangents at each point in the local s, in and out (equal where the curve is C¹ in
     /// s); empty for the families without point tangents.
     std::vector<KbTangents<double>> tangents;
-    std::vector<Point> points; ///< where the tangents sit (the tab's points when computed)
+    std::vector<Point> points;                 ///< where the tangents sit (the tab's points when computed)
     std::vector<BezierSegment<double>> bezier; ///< the segments as cubic Bézier curves (drawn, exported)
     std::vector<Point> samples;                ///< for the key's placement and the view's box
     CurvatureProfile curvature;                ///< κ(s), when the plot shows it

@@ -136,7 +136,7 @@ void PlaneSplinePanel::showSettings(const PlaneSplineSettings& settings, const P
 void PlaneSplinePanel::retranslate()
 {
     m_endsLabel->setText(tr("End c&onditions:"));
-    m_parametersLabel->setText(tr("Knot spac&ing:"));
+    m_parametersLabel->setText(tr("Knot spacin&g:"));
     for (std::size_t i = 0; i < kPanelEnds.size(); ++i)
         m_endsCombo->setItemText(static_cast<int>(i), planeSplineEndsLabel(kPanelEnds[i]));
     for (std::size_t i = 0; i < kPanelParameters.size(); ++i)
@@ -146,11 +146,12 @@ void PlaneSplinePanel::retranslate()
                                "points. Periodic: a closed curve, C² at every point."));
     m_parametersCombo->setToolTip(tr("How the parameter advances from point to point: by 1 (uniform), by the distance "
                                      "(chord length) or by its square root (centripetal)."));
-    m_startLabel->setText(tr("Start tan&gent:"));
-    m_endLabel->setText(tr("En&d tangent:"));
+    m_startLabel->setText(tr("&Initial tangent:"));
+    m_endLabel->setText(tr("&Final tangent:"));
     const QString x = tr("x component"), y = tr("y component");
     for (std::size_t i = 0; i < m_tangentEdits.size(); ++i)
-        m_tangentEdits[i]->setAccessibleName((i < 2 ? tr("Start tangent, %1") : tr("End tangent, %1")).arg(i % 2 == 0 ? x : y));
+        m_tangentEdits[i]->setAccessibleName(
+            (i < 2 ? tr("Initial tangent, %1") : tr("Final tangent, %1")).arg(i % 2 == 0 ? x : y));
     m_catmullRomCheck->setText(tr("Catmull-Rom τ = 1/2 of the same points"));
 }
 

@@ -58,8 +58,7 @@ CanvasLegend planeSplineLegend(const PlaneSplineSettings& settings, const PlaneS
     CanvasLegend legend;
     legend.alertColor = kSplineFamilyErrorColor;
     legend.entries.push_back({kPlaneSplineColour, scene.spline.error.isEmpty() ? Qt::SolidLine : Qt::NoPen,
-                              PlaneSplineCurves::tr("C² spline, %1 ends, %2 parameters")
-                                  .arg(planeSplineEndsLabel(settings.ends), planeSplineParametersLabel(settings.parameters))});
+                              PlaneSplineCurves::tr("C² spline, %1").arg(planeSplineEndsLabel(settings.ends))});
     if (settings.catmullRomToo)
         legend.entries.push_back({tensionColour(0.5), scene.catmullRom.error.isEmpty() ? Qt::DashLine : Qt::NoPen,
                                   PlaneSplineCurves::tr("dashed: Catmull-Rom τ = 1/2 (C¹)")});
