@@ -332,6 +332,33 @@ private slots:
         QCOMPARE(other.saveState(), before);
     }
 
+    // The families' exports are cubic Bézier segments (TikZ `.. controls ..`), and the function
+    // data's overshoot is filled (one filled polygon per overshooting interval and curve).
+    void exportsWriteTheFamiliesAsCubicSegments()
+    {
+        CatmullRomTab tab;
+        tab.setFamily(CurveFamily::FunctionData);
+        tab.splinePanels()->exampleButton()->click();
+        std::size_t regions = 0;
+        for (const auto& shape : tab.scene().functionData.curves)
+            regions += shape.overshootRegions.size();
+        QVERIFY(regions >= 2); // the natural spline's dips and bumps at least
+        const QString tikz = tab.tikz();
+        QVERIFY2(tikz.count(QStringLiteral(".. controls")) >= 4 * 6, qPrintable(tikz)); // 4 curves, 6 intervals
+        const auto fills = std::size_t(tikz.count(QStringLiteral(", fill=")));
+        QVERIFY2(fills >= regions, qPrintable(tikz));
+        CatmullRomSettings unshaded = tab.settings();
+        unshaded.functionData.shadeOvershoot = false;
+        emit tab.splinePanels()->changeRequested(unshaded, QStringLiteral("test"));
+        QCOMPARE(std::size_t(tab.tikz().count(QStringLiteral(", fill="))), fills - regions);
+
+        tab.setFamily(CurveFamily::PlaneSpline);
+        tab.splinePanels()->exampleButton()->click();
+        const QString plane = tab.tikz();
+        QVERIFY2(plane.count(QStringLiteral(".. controls")) >= 2 * 10, qPrintable(plane)); // spline and Catmull-Rom
+        QVERIFY(plane.contains(QStringLiteral("C2 spline in the plane")));
+    }
+
     void settingsRoundTripThroughJson()
     {
         PlaneSplineSettings plane;
