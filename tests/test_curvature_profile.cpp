@@ -133,6 +133,27 @@ private slots:
         QCOMPARE(p.length(), p.knots[1]);
         QVERIFY(curvatureProfile({}, 5).samples.empty());
     }
+
+    // The rational quarter circle (1, 0), (1, 1), (0, 1) with weights 1, √2/2, 1 is the unit
+    // circle's arc exactly: κ = 1 at every sample (the unit circle's curvature, counter-clockwise)
+    // and s runs to π/2 (its length). A polynomial segment beside it (no weights) is sampled as
+    // by the polynomial overload: the straight line after the arc has κ = 0 and length 1.
+    void rationalQuarterCircle()
+    {
+        const double h = std::sqrt(2.0) / 2;
+        const auto p = curvatureProfile({{{1, 0}, {1, 1}, {0, 1}}, {{0, 1}, {-1, 1}}}, {{1, h, 1}, {}}, 17);
+        QCOMPARE(p.samples.size(), std::size_t(2));
+        for (const auto& sample : p.samples[0]) {
+            QVERIFY(sample.kappa.has_value());
+            QVERIFY(std::fabs(*sample.kappa - 1) < 1e-12);
+        }
+        QCOMPARE(p.samples[0].front().s, 0.0);
+        QVERIFY(std::fabs(p.knots[1] - M_PI / 2) < 1e-13);
+        QCOMPARE(p.samples[1].front().s, p.knots[1]);
+        for (const auto& sample : p.samples[1])
+            QCOMPARE(*sample.kappa, 0.0);
+        QVERIFY(std::fabs(p.length() - (M_PI / 2 + 1)) < 1e-13);
+    }
 };
 
 GRANOTA_TEST_APPLESS_MAIN(TestCurvatureProfile)

@@ -112,12 +112,26 @@ CanvasLegend catmullRomLegend(const CatmullRomSettings& settings, const CatmullR
         return functionDataLegend(scene.functionData);
     CanvasLegend legend;
     legend.alertColor = kErrorColor;
-    for (std::size_t i = 0; settings.catmullRom && i < scene.curves.size(); ++i) {
+    const bool catmullRom = settings.catmullRom && settings.family == CurveFamily::CatmullRom;
+    if (settings.family != CurveFamily::CatmullRom) {
+        legend.entries.push_back(
+            {kFamilyCurveColor, scene.family.error.isEmpty() ? Qt::SolidLine : Qt::NoPen, curveFamilyName(settings.family)});
+        if (hasPointTangents(settings.family))
+            legend.entries.push_back({kTangentOutColor, Qt::SolidLine,
+                                      QCoreApplication::translate("granota::ui::CatmullRomTab", "tangent out (p′(0))")});
+        if (settings.family == CurveFamily::KochanekBartels)
+            legend.entries.push_back(
+                {kTangentInColor, Qt::SolidLine,
+                 QCoreApplication::translate("granota::ui::CatmullRomTab", "tangent in (p′(1)), where it differs")});
+        if (!scene.family.error.isEmpty())
+            legend.note = scene.family.error;
+    }
+    for (std::size_t i = 0; catmullRom && i < scene.curves.size(); ++i) {
         const auto& c = scene.curves[i];
         legend.entries.push_back({tensionColour(c.tau), c.error.isEmpty() ? Qt::SolidLine : Qt::NoPen,
                                   QStringLiteral("τ = %1").arg(tensionText(c.tau))});
     }
-    if (settings.catmullRom && !scene.otherEnds.empty())
+    if (catmullRom && !scene.otherEnds.empty())
         legend.entries.push_back({QColor(0x77, 0x77, 0x77), Qt::DashLine,
                                   QCoreApplication::translate("granota::ui::CatmullRomTab", "dashed: %1 ends")
                                       .arg(CatmullRomReport::endsName(comparedEnds(settings.ends)))});
@@ -130,7 +144,7 @@ CanvasLegend catmullRomLegend(const CatmullRomSettings& settings, const CatmullR
              scene.spline.empty() ? QCoreApplication::translate("granota::ui::CatmullRomTab", "no cubic spline: x must increase")
                                   : QCoreApplication::translate("granota::ui::CatmullRomTab", "cubic spline C²")});
     for (const auto& c : scene.curves)
-        if (!c.error.isEmpty())
+        if (catmullRom && !c.error.isEmpty())
             legend.note = c.error;
     return legend;
 }
@@ -143,12 +157,14 @@ CanvasLegendObstacles catmullRomLegendObstacles(const ViewTransform& view, const
         for (const Point& q : points)
             avoid.points.push_back(view.toScreen(q));
     };
-    for (std::size_t i = 0; settings.catmullRom && i < scene.curves.size(); ++i)
+    const bool catmullRom = settings.catmullRom && settings.family == CurveFamily::CatmullRom;
+    for (std::size_t i = 0; catmullRom && i < scene.curves.size(); ++i)
         samples(scene.curves[i].samples);
-    for (std::size_t i = 0; settings.catmullRom && i < scene.otherEnds.size(); ++i)
+    for (std::size_t i = 0; catmullRom && i < scene.otherEnds.size(); ++i)
         samples(scene.otherEnds[i].samples);
     samples(scene.bezier);
     samples(scene.spline);
+    samples(scene.family.samples);
     for (const auto& curve : planeSplineSamples(scene.planeSpline))
         samples(curve);
     for (const auto& curve : functionDataSamples(scene.functionData))
@@ -171,14 +187,19 @@ QRectF catmullRomContentBounds(const std::vector<Point>& points, const CatmullRo
                 y1 = std::max(y1, p.y);
             }
     };
+    const bool catmullRom = settings.catmullRom && settings.family == CurveFamily::CatmullRom;
     for (const auto& c : scene.curves)
-        if (settings.catmullRom)
+        if (catmullRom)
             include(c.samples);
     for (const auto& c : scene.otherEnds)
-        if (settings.catmullRom)
+        if (catmullRom)
             include(c.samples);
     include(scene.spline);
     include(scene.bezier);
+    include(scene.family.samples);
+    // The tangents' ends (the Hermite handles, the arrows' heads).
+    for (std::size_t i = 0; i < scene.family.tangents.size() && i < scene.family.points.size(); ++i)
+        include({scene.family.points[i] + scene.family.tangents[i].out, scene.family.points[i] - scene.family.tangents[i].in});
     for (const auto& curve : planeSplineSamples(scene.planeSpline))
         include(curve);
     for (const auto& curve : functionDataSamples(scene.functionData))

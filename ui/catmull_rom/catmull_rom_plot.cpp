@@ -4,6 +4,7 @@
 #include "ui/catmull_rom/catmull_rom_report.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_style.h"
+#include "ui/common/curvature_plot.h"
 #include "ui/common/number_text.h"
 #include "ui/common/plot_tick_room.h"
 #include "ui/common/plot_title_room.h"
@@ -91,98 +92,53 @@ void plotBlendingFunctions(QCustomPlot* plot, const CatmullRomSettings& settings
     plot->yAxis->setRange(lo - pad, hi + pad);
 }
 
-/// §2.3 made visible: signed κ against arc length s of every curve drawn, a gap at each
-/// knot (so a jump of κ shows as a break) and the selected τ's knots marked.
+/// §2.3 made visible (curvature_plot.h): signed κ against arc length s of every curve drawn,
+/// a gap at each knot (so a jump of κ shows as a break) and the selected τ's knots marked.
 void plotCurvature(QCustomPlot* plot, const CatmullRomSettings& settings, const CatmullRomScene& scene, double scale)
 {
-    plot->xAxis->setLabel(QCoreApplication::translate("granota::ui::CatmullRomTab", "arc length s"));
-    plot->yAxis->setLabel(QCoreApplication::translate("granota::ui::CatmullRomTab", "curvature κ"));
-    std::vector<double> values; // every κ shown, for the range
-    double length = 0;
-    auto addProfile = [&](const CurvatureProfile& profile, const QPen& pen, const QString& name) {
-        if (profile.samples.empty())
-            return;
-        QVector<double> s, kappa;
-        const double nan = std::numeric_limits<double>::quiet_NaN();
-        for (std::size_t i = 0; i < profile.samples.size(); ++i) {
-            if (i > 0 && !profile.samples[i].empty()) { // a gap between segments: a jump of κ is a break, not a slope
-                s << profile.samples[i].front().s;
-                kappa << nan;
-            }
-            for (const CurvatureSample& sample : profile.samples[i]) {
-                s << sample.s;
-                kappa << (sample.kappa ? *sample.kappa : nan); // undefined (a cusp): a gap, never 0
-                if (sample.kappa)
-                    values.push_back(*sample.kappa);
-            }
-        }
-        length = std::max(length, profile.length());
-        QCPGraph* g = plot->addGraph();
-        g->setData(s, kappa, true); // in order: the two samples of a knot keep their sides
-        g->setPen(pen);
-        g->setName(name);
-    };
+    std::vector<CurvaturePlotCurve> curves;
     const double width = 2.0 * scale;
     // The C² families plot their own curves (below), not the τ curves.
     const bool tauCurves = settings.family != CurveFamily::PlaneSpline && settings.family != CurveFamily::FunctionData;
     for (std::size_t i = 0; tauCurves && i < scene.curves.size(); ++i) {
         const bool selected = static_cast<int>(i) == settings.selectedTau;
-        addProfile(scene.curves[i].curvature, QPen(tensionColour(scene.curves[i].tau), selected ? 1.5 * width : width),
-                   QStringLiteral("τ = %1").arg(tensionText(scene.curves[i].tau)));
+        curves.push_back({&scene.curves[i].curvature, QPen(tensionColour(scene.curves[i].tau), selected ? 1.5 * width : width),
+                          QStringLiteral("τ = %1").arg(tensionText(scene.curves[i].tau))});
     }
     for (std::size_t i = 0; tauCurves && i < scene.otherEnds.size(); ++i)
-        addProfile(scene.otherEnds[i].curvature, QPen(tensionColour(scene.otherEnds[i].tau), 0.75 * width, Qt::DashLine),
-                   QCoreApplication::translate("granota::ui::CatmullRomTab", "τ = %1, %2 ends")
-                       .arg(tensionText(scene.otherEnds[i].tau), CatmullRomReport::endsName(scene.otherEnds[i].ends)));
-    addProfile(scene.bezierCurvature, QPen(kCatmullRomBezierColor, width, Qt::DashDotLine),
-               QCoreApplication::translate("granota::ui::CatmullRomTab", "Bézier"));
-    addProfile(scene.splineCurvature, QPen(kCatmullRomSplineColor, width),
-               QCoreApplication::translate("granota::ui::CatmullRomTab", "cubic spline C²"));
+        curves.push_back({&scene.otherEnds[i].curvature, QPen(tensionColour(scene.otherEnds[i].tau), 0.75 * width, Qt::DashLine),
+                          QCoreApplication::translate("granota::ui::CatmullRomTab", "τ = %1, %2 ends")
+                              .arg(tensionText(scene.otherEnds[i].tau), CatmullRomReport::endsName(scene.otherEnds[i].ends))});
+    curves.push_back({&scene.bezierCurvature, QPen(kCatmullRomBezierColor, width, Qt::DashDotLine),
+                      QCoreApplication::translate("granota::ui::CatmullRomTab", "Bézier")});
+    curves.push_back({&scene.splineCurvature, QPen(kCatmullRomSplineColor, width),
+                      QCoreApplication::translate("granota::ui::CatmullRomTab", "cubic spline C²")});
     // The families of issue 37 with curves of their own: the C² spline in the plane and its
     // Catmull-Rom comparison; the curves on function data, each in its colour.
-    addProfile(scene.planeSpline.spline.curvature, QPen(kCatmullRomSplineColor, 1.25 * width),
-               PlaneSplineCurves::tr("C² spline"));
-    addProfile(scene.planeSpline.catmullRom.curvature, QPen(tensionColour(0.5), width, Qt::DashLine),
-               QStringLiteral("Catmull-Rom τ = 1/2"));
+    curves.push_back(
+        {&scene.planeSpline.spline.curvature, QPen(kCatmullRomSplineColor, 1.25 * width), PlaneSplineCurves::tr("C² spline")});
+    curves.push_back({&scene.planeSpline.catmullRom.curvature, QPen(tensionColour(0.5), width, Qt::DashLine),
+                      QStringLiteral("Catmull-Rom τ = 1/2")});
     for (const FunctionDataCurveShape& shape : scene.functionData.curves)
-        addProfile(shape.curvature, QPen(functionDataCurveColour(shape.curve), width), functionDataCurveLabel(shape.curve));
+        curves.push_back(
+            {&shape.curvature, QPen(functionDataCurveColour(shape.curve), width), functionDataCurveLabel(shape.curve)});
 
     // The knots of the selected τ, where its κ may jump.
+    std::vector<CurvaturePlotKnot> knots;
     if (tauCurves && settings.selectedTau >= 0 && settings.selectedTau < static_cast<int>(scene.curves.size())) {
         const CurvatureProfile& profile = scene.curves[static_cast<std::size_t>(settings.selectedTau)].curvature;
         const bool closed = settings.ends == CatmullRomEnds::Closed;
-        for (std::size_t k = 0; k < profile.knots.size(); ++k) {
-            if (!closed && (k == 0 || k + 1 == profile.knots.size()))
-                continue; // the ends of an open curve are no knots
-            auto* line = new QCPItemStraightLine(plot);
-            line->point1->setCoords(profile.knots[k], 0);
-            line->point2->setCoords(profile.knots[k], 1);
-            line->setPen(QPen(QColor(0x60, 0x60, 0x60, 170), scale, Qt::DashLine));
-            line->setLayer(QStringLiteral("grid"));
-        }
+        for (std::size_t k = 0; k < profile.knots.size(); ++k)
+            if (closed || (k > 0 && k + 1 < profile.knots.size())) // the ends of an open curve are no knots
+                knots.push_back({profile.knots[k], QString()});
     }
 
-    // The range of most values: a near-cusp's spike would flatten every other curve.
-    double lo = -1, hi = 1;
-    if (!values.empty()) {
-        std::sort(values.begin(), values.end());
-        const auto at = [&values](double q) {
-            return values[static_cast<std::size_t>(std::lround(q * static_cast<double>(values.size() - 1)))];
-        };
-        lo = std::min(0.0, at(0.01));
-        hi = std::max(0.0, at(0.99));
-        const double spread = hi - lo;
-        if (!(spread > 0) || !std::isfinite(spread)) {
-            lo -= 1;
-            hi += 1;
-        } else {
-            lo -= 0.08 * spread;
-            hi += 0.08 * spread;
-        }
-    }
-    keepAxisTitlesWhole(plot, minimumPlotHeight(plot));
-    plot->xAxis->setRange(0, length > 0 && std::isfinite(length) ? length : 1.0);
-    plot->yAxis->setRange(lo, hi);
+    CurvaturePlotFrame frame;
+    frame.xLabel = QCoreApplication::translate("granota::ui::CatmullRomTab", "arc length s");
+    frame.yLabel = QCoreApplication::translate("granota::ui::CatmullRomTab", "curvature κ");
+    frame.minimumHeight = minimumPlotHeight(plot);
+    frame.scale = scale;
+    plotCurvatureProfiles(plot, curves, knots, frame);
 }
 
 } // namespace

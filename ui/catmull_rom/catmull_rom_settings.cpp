@@ -10,11 +10,25 @@ namespace granota::ui {
 
 bool CatmullRomSettings::operator==(const CatmullRomSettings& o) const
 {
-    return family == o.family && taus == o.taus && selectedTau == o.selectedTau && ends == o.ends && spacing == o.spacing &&
-           bezier == o.bezier && spline == o.spline && compareEnds == o.compareEnds && allTausInPlot == o.allTausInPlot &&
-           curvaturePlot == o.curvaturePlot && catmullRom == o.catmullRom && controlPoints == o.controlPoints &&
-           splineEnds == o.splineEnds && startSlope == o.startSlope && endSlope == o.endSlope && planeSpline == o.planeSpline &&
-           functionData == o.functionData;
+    const auto sameTcb = [](const std::vector<TcbKnot<Rational>>& a, const std::vector<TcbKnot<Rational>>& b) {
+        if (a.size() != b.size())
+            return false;
+        for (std::size_t i = 0; i < a.size(); ++i)
+            if (a[i].tension != b[i].tension || a[i].continuity != b[i].continuity || a[i].bias != b[i].bias)
+                return false;
+        return true;
+    };
+    return family == o.family && cardinalTension == o.cardinalTension && sameTcb(tcb, o.tcb) &&
+           hermiteTangents == o.hermiteTangents && taus == o.taus && selectedTau == o.selectedTau && ends == o.ends &&
+           spacing == o.spacing && bezier == o.bezier && spline == o.spline && compareEnds == o.compareEnds &&
+           allTausInPlot == o.allTausInPlot && curvaturePlot == o.curvaturePlot && catmullRom == o.catmullRom &&
+           controlPoints == o.controlPoints && splineEnds == o.splineEnds && startSlope == o.startSlope &&
+           endSlope == o.endSlope && planeSpline == o.planeSpline && functionData == o.functionData;
+}
+
+TcbKnot<Rational> tcbAt(const CatmullRomSettings& settings, std::size_t i)
+{
+    return i < settings.tcb.size() ? settings.tcb[i] : TcbKnot<Rational>{};
 }
 
 QString endsKey(CatmullRomEnds ends)
@@ -93,6 +107,15 @@ void writeSettings(const CatmullRomSettings& s, QJsonObject& json)
     for (const Rational& t : s.taus)
         taus.append(tensionText(t));
     json.insert(QStringLiteral("family"), curveFamilyKey(s.family));
+    json.insert(QStringLiteral("cardinal_tension"), tensionText(s.cardinalTension));
+    QJsonArray tcb;
+    for (const TcbKnot<Rational>& k : s.tcb)
+        tcb.append(QJsonArray{tensionText(k.tension), tensionText(k.continuity), tensionText(k.bias)});
+    json.insert(QStringLiteral("tcb"), tcb);
+    QJsonArray tangents;
+    for (const Point& t : s.hermiteTangents)
+        tangents.append(QJsonArray{t.x, t.y});
+    json.insert(QStringLiteral("hermite_tangents"), tangents);
     json.insert(QStringLiteral("taus"), taus);
     json.insert(QStringLiteral("selected_tau"), s.selectedTau);
     json.insert(QStringLiteral("mode"), endsKey(s.ends));
@@ -157,6 +180,46 @@ std::optional<CatmullRomSettings> readSettings(const QJsonObject& json, QString*
         if (!f)
             return fail(QStringLiteral("family"));
         s.family = *f;
+    }
+    // A T, C, B or cardinal c: exact text in [−1, 1].
+    const auto unitValue = [](const QJsonValue& v) -> std::optional<Rational> {
+        const std::optional<Rational> r = v.isString() ? parseTension(v.toString()) : std::nullopt;
+        if (!r || abs(*r) > 1)
+            return std::nullopt;
+        return r;
+    };
+    const QJsonValue cardinal = json.value(QStringLiteral("cardinal_tension"));
+    if (!cardinal.isUndefined()) {
+        const auto c = unitValue(cardinal);
+        if (!c)
+            return fail(QStringLiteral("cardinal_tension"));
+        s.cardinalTension = *c;
+    }
+    const QJsonValue tcb = json.value(QStringLiteral("tcb"));
+    if (!tcb.isUndefined()) {
+        if (!tcb.isArray() || tcb.toArray().size() > CatmullRomSettings::kMaxPoints)
+            return fail(QStringLiteral("tcb"));
+        for (const QJsonValue& k : tcb.toArray()) {
+            const QJsonArray a = k.toArray();
+            const auto t = unitValue(a.at(0)), c = unitValue(a.at(1)), b = unitValue(a.at(2));
+            if (!k.isArray() || a.size() != 3 || !t || !c || !b)
+                return fail(QStringLiteral("tcb"));
+            s.tcb.push_back({*t, *c, *b});
+        }
+    }
+    const QJsonValue tangents = json.value(QStringLiteral("hermite_tangents"));
+    if (!tangents.isUndefined()) {
+        if (!tangents.isArray() || tangents.toArray().size() > CatmullRomSettings::kMaxPoints)
+            return fail(QStringLiteral("hermite_tangents"));
+        for (const QJsonValue& t : tangents.toArray()) {
+            const QJsonArray a = t.toArray();
+            if (!t.isArray() || a.size() != 2 || !a.at(0).isDouble() || !a.at(1).isDouble())
+                return fail(QStringLiteral("hermite_tangents"));
+            const Point p{a.at(0).toDouble(), a.at(1).toDouble()};
+            if (!isFinite(p))
+                return fail(QStringLiteral("hermite_tangents"));
+            s.hermiteTangents.push_back(p);
+        }
     }
     const QJsonValue mode = json.value(QStringLiteral("mode"));
     if (!mode.isUndefined()) {

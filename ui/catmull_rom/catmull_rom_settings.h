@@ -6,6 +6,7 @@
 
 #include "core/curves/splines/catmull_rom_ends.h"
 #include "core/curves/splines/cubic_spline.h"
+#include "core/curves/splines/kochanek_bartels.h"
 #include "core/exact/rational.h"
 #include "ui/catmull_rom/curve_family.h"
 #include "ui/catmull_rom/function_data_settings.h"
@@ -27,7 +28,15 @@ struct CatmullRomSettings {
     static constexpr int kMaxTensionAbs = 10; ///< docs/extreme-cases.md: τ ∈ [−10, 10]
     static constexpr int kMaxPoints = 200;    ///< docs/extreme-cases.md (soft bodies up to 200 sides)
 
-    CurveFamily family = CurveFamily::CatmullRom;                     ///< which curves go through the points (curve_family.h)
+    static constexpr int kTcbSteps = 20; ///< T, C, B and the cardinal c move in steps of 1/20 in [−1, 1] (exact)
+
+    CurveFamily family = CurveFamily::CatmullRom; ///< which curves go through the points (curve_family.h)
+    Rational cardinalTension{0}; ///< c ∈ [−1, 1] of the cardinal family, τ = (1 − c)/2 (cardinal_spline.h)
+    /// Kochanek–Bartels T, C, B per point, each in [−1, 1] (kochanek_bartels.h); missing points are (0, 0, 0).
+    std::vector<TcbKnot<Rational>> tcb;
+    /// The Hermite family's tangent at each point, p′ in the local s (Def 2.8); missing points
+    /// take the Catmull-Rom tangent τ(q_{i+1} − q_{i−1}) of the selected τ.
+    std::vector<Point> hermiteTangents;
     std::vector<Rational> taus{Rational(0), frac(1, 2), Rational(2)}; ///< Ex 2.11's tensions
     int selectedTau = 1;                                              ///< the one the slider and the plot follow
     CatmullRomEnds ends = CatmullRomEnds::Open;
@@ -47,6 +56,9 @@ struct CatmullRomSettings {
     bool operator==(const CatmullRomSettings& o) const;
     bool operator!=(const CatmullRomSettings& o) const { return !(*this == o); }
 };
+
+/// T, C, B at point `i` (zeros past the end of settings.tcb).
+TcbKnot<Rational> tcbAt(const CatmullRomSettings& settings, std::size_t i);
 
 /// "open", "cyclic", "closed", "segment"; "uniform", "centripetal", "chordal".
 QString endsKey(CatmullRomEnds ends);

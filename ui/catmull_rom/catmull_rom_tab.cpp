@@ -91,8 +91,7 @@ CatmullRomTab::CatmullRomTab(QWidget* parent) : CurveTab(QStringLiteral("catmull
 
 void CatmullRomTab::buildUi()
 {
-    m_familyPanel = new FamilyPanel(this); // the family selector and the chosen family's controls
-    connect(m_familyPanel, &FamilyPanel::familyChosen, this, &CatmullRomTab::setFamily);
+    buildFamilyControls();                         // the family selector, the chosen family's controls, the Hermite handles
     m_splinePanels = new SplineFamilyPanels(this); // the C² spline's and the function data's controls, in their families
     connect(m_splinePanels, &SplineFamilyPanels::changeRequested, this,
             [this](const CatmullRomSettings& after, const QString& text) { changeSettings(after, text); });
@@ -263,6 +262,7 @@ void CatmullRomTab::buildUi()
     m_sideTabs = new QTabWidget(this);
     m_sideTabs->addTab(m_exact, QString());
     m_sideTabs->addTab(m_table, QString());
+    addFamilySideTabs(); // the knot table and the conventions (catmull_rom_tab_families.cpp)
 
     auto* controls = new QWidget;
     auto* controlsLayout = new QVBoxLayout(controls);
@@ -311,7 +311,7 @@ QString CatmullRomTab::hint() const
 void CatmullRomTab::retranslate()
 {
     updateCanvasSummary();
-    m_familyPanel->retranslate();
+    retranslateFamilyControls();
     m_splinePanels->retranslate();
     m_tensionBox->setTitle(tr("Tensions τ (Def 2.8)"));
     m_tensionBox->setToolTip(tr("The tension τ scales the tangents p′(0) = τ(p2 − p0), p′(1) = τ(p3 − p1) of every "
@@ -404,7 +404,7 @@ QString CatmullRomTab::tensionItemText(const Rational& tau) const
 void CatmullRomTab::syncControls()
 {
     m_syncing = true;
-    m_familyPanel->showSettings(m_settings);
+    m_familyPanel->showSettings(m_settings, m_editor->selected());
     m_tensionBox->setVisible(m_settings.family == CurveFamily::CatmullRom); // the τ list is Catmull-Rom's
     const int count = static_cast<int>(m_settings.taus.size());
     if (m_tauList->count() != count) {
@@ -464,12 +464,14 @@ void CatmullRomTab::refuse(const QString& message)
     emit statusMessage(message);
 }
 
-void CatmullRomTab::changeSettings(const CatmullRomSettings& after, const QString& undoText, bool mergeable)
+void CatmullRomTab::changeSettings(const CatmullRomSettings& after, const QString& undoText, bool mergeable, int familyMergeId)
 {
     if (after == m_settings)
         return;
-    // Slider moves merge while they drag the same τ of the same list.
-    const int mergeId = mergeable ? kSliderMergeIdBase + (after.selectedTau + 1) * 32 + static_cast<int>(after.taus.size()) : -1;
+    // Slider moves merge while they drag the same τ of the same list (the family's sliders: their own id).
+    const int mergeId = familyMergeId >= 0 ? familyMergeId
+                        : mergeable ? kSliderMergeIdBase + (after.selectedTau + 1) * 32 + static_cast<int>(after.taus.size())
+                                    : -1;
     m_undo->push(new ValueCommand<CatmullRomSettings>([this](const CatmullRomSettings& s) { applySettings(s); }, m_settings,
                                                       after, undoText, mergeId));
 }
@@ -551,13 +553,6 @@ void CatmullRomTab::sliderMoved(int value)
     CatmullRomSettings after = m_settings;
     after.taus[static_cast<std::size_t>(index)] = tau;
     changeSettings(after, tr("Change τ"), true);
-}
-
-void CatmullRomTab::setFamily(CurveFamily family)
-{
-    CatmullRomSettings after = m_settings;
-    after.family = family;
-    changeSettings(after, tr("Family: %1").arg(curveFamilyName(family)));
 }
 
 void CatmullRomTab::setEnds(CatmullRomEnds ends)
@@ -653,6 +648,7 @@ void CatmullRomTab::pointsEdited()
 void CatmullRomTab::recompute()
 {
     m_scene = computeScene(m_editor->points(), m_settings);
+    updateFamilyViews();
     m_splinePanels->showState(m_settings, m_scene, m_editor->points());
     m_exact->setContent(
         CatmullRomReport::html(m_editor->points(), m_settings, m_scene, computeAnalysis(m_editor->allExactPoints(), m_settings)));

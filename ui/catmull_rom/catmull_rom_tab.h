@@ -28,6 +28,9 @@ class QTabWidget;
 namespace granota::ui {
 
 class FamilyPanel;
+class HermiteHandles;
+class KnotContinuityTable;
+class ConventionsTable;
 class SplineFamilyPanels;
 class ViewTransform;
 struct CanvasStyle;
@@ -50,6 +53,11 @@ public:
     /// The last refusal or hint sent to the status bar.
     QString lastMessage() const { return m_lastMessage; }
     FamilyPanel* familyPanel() const { return m_familyPanel; }
+    HermiteHandles* hermiteHandles() const { return m_hermiteHandles; }
+    /// The side panel's knot table: the curve of the family, or the selected τ's Catmull-Rom curve.
+    KnotContinuityTable* knotTable() const { return m_knotTable; }
+    /// The side panel's conventions table, for the τ of the curve shown.
+    ConventionsTable* conventionsTable() const { return m_conventions; }
     /// The C² spline's and the function data's controls (spline_family_panels.h).
     SplineFamilyPanels* splinePanels() const { return m_splinePanels; }
 
@@ -60,6 +68,15 @@ public:
     void setSelectedTension(int index);
     /// The family selector (curve_family.h): one undo step.
     void setFamily(CurveFamily family);
+    /// The cardinal tension c ∈ [−1, 1] (slider moves merge into one undo step).
+    void setCardinalTension(const Rational& c);
+    /// T (0), C (1) or B (2) ∈ [−1, 1] of the point selected in the editor, or of every point
+    /// when the panel says "All points" or none is selected.
+    void setTcb(int which, const Rational& value);
+    /// The Hermite family's tangent of point `index` (one undo step).
+    void setHermiteTangent(int index, Point tangent);
+    /// Every Hermite tangent back to the Catmull-Rom rule's (one undo step).
+    void resetHermiteTangents();
     void setEnds(CatmullRomEnds ends);
     void setSpacing(CatmullRomSpacing spacing);
     void setBezierVisible(bool on);
@@ -98,7 +115,15 @@ private:
     QRectF contentBounds() const override;
     void buildUi();
     /// Pushes an undo step from the current settings to `after` (nothing if equal).
-    void changeSettings(const CatmullRomSettings& after, const QString& undoText, bool mergeable = false);
+    void changeSettings(const CatmullRomSettings& after, const QString& undoText, bool mergeable = false, int familyMergeId = -1);
+    // The family selector's part of the tab (catmull_rom_tab_families.cpp).
+    void buildFamilyControls();
+    void addFamilySideTabs();
+    void retranslateFamilyControls();
+    /// The Hermite handles and the knot table, after every recompute.
+    void updateFamilyViews();
+    void hermiteTangentDragged(int index, Point tangent);
+    void hermiteDragFinished(int index, Point startTangent);
     /// Points and settings as one undo step (a worked example, a family's example).
     void loadPointsAndSettings(const std::vector<Point>& points, const CatmullRomSettings& settings, const QString& undoText);
     /// Makes `s` current (undo/redo, loading): controls, curves, panel, plot.
@@ -119,6 +144,9 @@ private:
 
     QCustomPlot* m_plot = nullptr;
     FamilyPanel* m_familyPanel = nullptr;
+    HermiteHandles* m_hermiteHandles = nullptr;
+    KnotContinuityTable* m_knotTable = nullptr;
+    ConventionsTable* m_conventions = nullptr;
     SplineFamilyPanels* m_splinePanels = nullptr;
     QTabWidget* m_sideTabs = nullptr;
     QGroupBox* m_tensionBox = nullptr;

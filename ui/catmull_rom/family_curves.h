@@ -36,6 +36,14 @@ struct FamilyCurve {
     QString error;                             ///< translated; empty when the curve exists
 };
 
+/// The Catmull-Rom tangent at each point for the selected τ, ends and spacing (p′(0) of the
+/// segment leaving it, p′(1) at an open curve's last point): where the Hermite family starts.
+std::vector<Point> catmullRomTangents(const std::vector<Point>& points, const CatmullRomSettings& settings);
+
+/// The Hermite family's tangent at each point: settings.hermiteTangents, cut to the points or
+/// completed by catmullRomTangents() for points added since.
+std::vector<Point> hermiteTangentsOf(const std::vector<Point>& points, const CatmullRomSettings& settings);
+
 /// The family's curve through `points` with `settings` (an empty FamilyCurve for Catmull-Rom).
 FamilyCurve computeFamilyCurve(const std::vector<Point>& points, const CatmullRomSettings& settings);
 

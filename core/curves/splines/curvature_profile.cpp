@@ -2,6 +2,7 @@
 
 #include "core/curves/bezier/arc_length.h"
 #include "core/curves/bezier/curvature.h"
+#include "core/curves/bezier/rational_bezier.h"
 
 #include <algorithm>
 #include <cassert>
@@ -40,6 +41,54 @@ CurvatureProfile curvatureProfile(const std::vector<std::vector<Point>>& segment
         }
         out.samples.push_back(std::move(row));
         start += L;
+    }
+    out.knots.push_back(start);
+    return out;
+}
+
+CurvatureProfile curvatureProfile(const std::vector<std::vector<Point>>& segments,
+                                  const std::vector<std::vector<double>>& weights, int samplesPerSegment)
+{
+    assert(samplesPerSegment >= 2);
+    samplesPerSegment = std::max(samplesPerSegment, 2);
+    CurvatureProfile out;
+    out.samples.reserve(segments.size());
+    out.knots.reserve(segments.size() + 1);
+    double start = 0;
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        const auto& P = segments[i];
+        const std::vector<double> none;
+        const auto& w = i < weights.size() ? weights[i] : none;
+        if (w.empty() || P.empty()) { // polynomial: equal steps of arc length, as above
+            CurvatureProfile one = curvatureProfile({P}, samplesPerSegment);
+            for (CurvatureSample& sample : one.samples.front())
+                sample.s += start;
+            out.knots.push_back(start);
+            out.samples.push_back(std::move(one.samples.front()));
+            start += one.length();
+            continue;
+        }
+        assert(w.size() == P.size());
+        out.knots.push_back(start);
+        std::vector<CurvatureSample> row;
+        row.reserve(static_cast<std::size_t>(samplesPerSegment));
+        double s = start, previous = 0;
+        for (int j = 0; j < samplesPerSegment; ++j) {
+            const double t = j == samplesPerSegment - 1 ? 1.0 : static_cast<double>(j) / (samplesPerSegment - 1);
+            if (j > 0) {
+                const double piece = rationalArcLength(P, w, previous, t);
+                s += std::isfinite(piece) ? piece : 0.0;
+            }
+            previous = t;
+            CurvatureSample sample;
+            sample.s = s;
+            sample.kappa = rationalCurvatureAt(P, w, t).curvature;
+            if (sample.kappa && !std::isfinite(*sample.kappa))
+                sample.kappa.reset();
+            row.push_back(sample);
+        }
+        out.samples.push_back(std::move(row));
+        start = s;
     }
     out.knots.push_back(start);
     return out;

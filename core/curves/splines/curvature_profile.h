@@ -34,4 +34,11 @@ struct CurvatureProfile {
 /// is finite; an empty segment list gives an empty profile.
 CurvatureProfile curvatureProfile(const std::vector<std::vector<Point>>& segments, int samplesPerSegment);
 
+/// The same for rational Bézier segments (rational_bezier.h): weights[i] are segment i's
+/// weights (each > 0; an empty list: the polynomial segment). A rational segment is sampled at
+/// equal steps of its parameter t, s summed piece by piece (rationalArcLength), κ from
+/// rationalCurvatureAt: the exact quarter circle gives κ = 1 along s ∈ [0, π/2].
+CurvatureProfile curvatureProfile(const std::vector<std::vector<Point>>& segments,
+                                  const std::vector<std::vector<double>>& weights, int samplesPerSegment);
+
 } // namespace granota
