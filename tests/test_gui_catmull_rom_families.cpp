@@ -12,6 +12,8 @@
 #include "gui_timeouts.h"
 
 #include <QCheckBox>
+#include <QRegularExpression>
+#include <qcustomplot.h>
 #include <QComboBox>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -301,6 +303,28 @@ private slots:
         QVERIFY(tab.conventionsTable()->tau() == frac(1, 4));
         QCOMPARE(tab.conventionsTable()->item(2, 3)->text(), QStringLiteral("2"));
         QCOMPARE(tab.conventionsTable()->item(1, 3)->text(), QStringLiteral("1/2"));
+    }
+
+    // The κ(s) plot shows the family's curve instead of the τ curves; TikZ writes its Hermite
+    // segments as Bézier segments (Ex 2.11's four points, open: 3 segments) and its tangents.
+    void plotAndTikzFollowTheFamily()
+    {
+        CatmullRomTab tab;
+        tab.setCurvaturePlot(true);
+        QCOMPARE(tab.blendingPlot()->graphCount(), 3); // τ = 0, 1/2, 2
+        tab.setFamily(CurveFamily::KochanekBartels);
+        QCustomPlot* plot = tab.blendingPlot();
+        QCOMPARE(plot->graphCount(), 1);
+        QCOMPARE(plot->graph(0)->name(), curveFamilyName(CurveFamily::KochanekBartels));
+        QVERIFY(plot->graph(0)->dataCount() > 0);
+        const QString tikz = tab.tikz();
+        QVERIFY2(tikz.contains(QStringLiteral("family kochanek-bartels")), qPrintable(tikz));
+        QCOMPARE(int(tikz.count(QStringLiteral(".. controls"))), 3); // the τ curves are not written
+        QVERIFY(tikz.contains(QStringLiteral("->")) || tikz.contains(QStringLiteral("stealth")) ||
+                tikz.contains(QStringLiteral("latex")));
+        // The CSV has the family's samples after the τ curves': the first is q0 = (1, 1) at t = 0.
+        const QString csv = tab.csv();
+        QVERIFY2(csv.contains(QStringLiteral("\nfamily,segment,t,x,y\nkochanek-bartels,1,0,1,1\n")), qPrintable(csv.left(400)));
     }
 
     void familySavedAndRead()

@@ -3,6 +3,7 @@
 
 #include "core/base/number_format.h"
 #include "ui/catmull_rom/catmull_rom_drawing.h"
+#include "ui/catmull_rom/family_drawing.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_style.h"
 #include "ui/files/tikz_writer.h"
@@ -31,6 +32,20 @@ QString catmullRomCsv(const std::vector<Point>& points, const std::vector<ExactP
                        .arg(segment)
                        .arg(QString::fromStdString(formatReadable(t)), QString::fromStdString(formatReadable(c.samples[k].x)),
                             QString::fromStdString(formatReadable(c.samples[k].y)));
+        }
+    }
+    if (settings.family != CurveFamily::CatmullRom && !scene.family.samples.empty()) {
+        // The family's curve (family_curves.h), sampled as the τ curves are.
+        out += QStringLiteral("\nfamily,segment,t,x,y\n");
+        const FamilyCurve& f = scene.family;
+        for (std::size_t k = 0; k < f.samples.size(); ++k) {
+            const int segment = static_cast<int>(k) / samples + 1 + firstSegmentStart(settings.ends);
+            const double t = static_cast<double>(static_cast<int>(k) % samples) / (samples - 1);
+            out += QStringLiteral("%1,%2,%3,%4,%5\n")
+                       .arg(curveFamilyKey(settings.family))
+                       .arg(segment)
+                       .arg(QString::fromStdString(formatReadable(t)), QString::fromStdString(formatReadable(f.samples[k].x)),
+                            QString::fromStdString(formatReadable(f.samples[k].y)));
         }
     }
     if (settings.curvaturePlot) {
@@ -81,9 +96,22 @@ void writeCatmullRomTikz(TikzWriter& w, const std::vector<Point>& points, bool p
     // The Catmull-Rom segments and the spline's pieces are cubics: written as Bézier segments.
     if (!scene.splineBezier.empty())
         w.bezierSegments(scene.splineBezier, kCatmullRomSplineColor, 1.0);
-    for (std::size_t i = 0; settings.catmullRom && i < scene.otherEnds.size(); ++i)
+    // A family other than Catmull-Rom (family_curves.h): its Hermite segments as Bézier segments
+    // (hermiteToBezier), and the tangents at the points as arrows, as on the canvas.
+    const bool catmullRom = settings.catmullRom && settings.family == CurveFamily::CatmullRom;
+    if (settings.family != CurveFamily::CatmullRom) {
+        w.comment(QStringLiteral("family %1").arg(curveFamilyKey(settings.family)));
+        w.bezierSegments(scene.family.bezier, kFamilyCurveColor, 1.2);
+        const FamilyCurve& f = scene.family;
+        for (std::size_t i = 0; hasPointTangents(settings.family) && i < f.tangents.size() && i < f.points.size(); ++i) {
+            if (!(f.tangents[i].in == f.tangents[i].out))
+                w.arrow(f.points[i] - f.tangents[i].in, f.points[i], kTangentInColor, 0.8);
+            w.arrow(f.points[i], f.points[i] + f.tangents[i].out, kTangentOutColor, 0.8);
+        }
+    }
+    for (std::size_t i = 0; catmullRom && i < scene.otherEnds.size(); ++i)
         w.bezierSegments(scene.otherEnds[i].bezier, tensionColour(scene.otherEnds[i].tau), 0.8, true);
-    for (std::size_t i = 0; settings.catmullRom && i < scene.curves.size(); ++i) {
+    for (std::size_t i = 0; catmullRom && i < scene.curves.size(); ++i) {
         w.comment(QStringLiteral("tau = %1").arg(tensionText(scene.curves[i].tau)));
         w.bezierSegments(scene.curves[i].bezier, tensionColour(scene.curves[i].tau), 1.2);
     }

@@ -4,6 +4,7 @@
 #include "ui/catmull_rom/catmull_rom_report.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_style.h"
+#include "ui/catmull_rom/family_drawing.h"
 #include "ui/common/curvature_plot.h"
 #include "ui/common/number_text.h"
 #include "ui/common/plot_tick_room.h"
@@ -98,14 +99,16 @@ void plotCurvature(QCustomPlot* plot, const CatmullRomSettings& settings, const 
 {
     std::vector<CurvaturePlotCurve> curves;
     const double width = 2.0 * scale;
-    // The C² families plot their own curves (below), not the τ curves.
-    const bool tauCurves = settings.family != CurveFamily::PlaneSpline && settings.family != CurveFamily::FunctionData;
-    for (std::size_t i = 0; tauCurves && i < scene.curves.size(); ++i) {
+    // The family's curve instead of the τ curves when it is not Catmull-Rom (as on the canvas).
+    const bool catmullRom = settings.family == CurveFamily::CatmullRom;
+    if (!catmullRom)
+        curves.push_back({&scene.family.curvature, QPen(kFamilyCurveColor, 1.5 * width), curveFamilyName(settings.family)});
+    for (std::size_t i = 0; catmullRom && i < scene.curves.size(); ++i) {
         const bool selected = static_cast<int>(i) == settings.selectedTau;
         curves.push_back({&scene.curves[i].curvature, QPen(tensionColour(scene.curves[i].tau), selected ? 1.5 * width : width),
                           QStringLiteral("τ = %1").arg(tensionText(scene.curves[i].tau))});
     }
-    for (std::size_t i = 0; tauCurves && i < scene.otherEnds.size(); ++i)
+    for (std::size_t i = 0; catmullRom && i < scene.otherEnds.size(); ++i)
         curves.push_back({&scene.otherEnds[i].curvature, QPen(tensionColour(scene.otherEnds[i].tau), 0.75 * width, Qt::DashLine),
                           QCoreApplication::translate("granota::ui::CatmullRomTab", "τ = %1, %2 ends")
                               .arg(tensionText(scene.otherEnds[i].tau), CatmullRomReport::endsName(scene.otherEnds[i].ends))});
@@ -125,8 +128,9 @@ void plotCurvature(QCustomPlot* plot, const CatmullRomSettings& settings, const 
 
     // The knots of the selected τ, where its κ may jump.
     std::vector<CurvaturePlotKnot> knots;
-    if (tauCurves && settings.selectedTau >= 0 && settings.selectedTau < static_cast<int>(scene.curves.size())) {
-        const CurvatureProfile& profile = scene.curves[static_cast<std::size_t>(settings.selectedTau)].curvature;
+    if (!catmullRom || (settings.selectedTau >= 0 && settings.selectedTau < static_cast<int>(scene.curves.size()))) {
+        const CurvatureProfile& profile = catmullRom ? scene.curves[static_cast<std::size_t>(settings.selectedTau)].curvature
+                                                     : scene.family.curvature;
         const bool closed = settings.ends == CatmullRomEnds::Closed;
         for (std::size_t k = 0; k < profile.knots.size(); ++k)
             if (closed || (k > 0 && k + 1 < profile.knots.size())) // the ends of an open curve are no knots

@@ -260,9 +260,12 @@ void CatmullRomTab::buildUi()
     m_exact = new ExactPanel(this);
     m_table = new PointTable(m_editor, this);
     m_sideTabs = new QTabWidget(this);
-    m_sideTabs->addTab(m_exact, QString());
-    m_sideTabs->addTab(m_table, QString());
-    addFamilySideTabs(); // the knot table and the conventions (catmull_rom_tab_families.cpp)
+    // The knot table and the conventions (catmull_rom_tab_families.cpp) added first, so that
+    // among the children the points table still comes before them; shown after the two.
+    addFamilySideTabs();
+    m_sideTabs->insertTab(0, m_exact, QString());
+    m_sideTabs->insertTab(1, m_table, QString());
+    m_sideTabs->setCurrentIndex(0);
 
     auto* controls = new QWidget;
     auto* controlsLayout = new QVBoxLayout(controls);
@@ -434,6 +437,7 @@ void CatmullRomTab::syncControls()
     m_bezierCheck->setChecked(m_settings.bezier);
     m_splineCheck->setChecked(m_settings.spline);
     m_catmullRomCheck->setChecked(m_settings.catmullRom);
+    m_catmullRomCheck->setEnabled(m_settings.family == CurveFamily::CatmullRom); // other families draw their own curve
     m_pointsCheck->setChecked(m_settings.controlPoints);
     m_splineEndsCombo->setCurrentIndex(static_cast<int>(m_settings.splineEnds));
     m_splineEndsCombo->setEnabled(m_settings.spline);

@@ -27,7 +27,6 @@ ConventionsTable::ConventionsTable(QWidget* parent) : QTableWidget(parent)
 {
     setColumnCount(4);
     setEditTriggers(QAbstractItemView::NoEditTriggers);
-    setSelectionMode(QAbstractItemView::NoSelection);
     verticalHeader()->hide();
     horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     horizontalHeader()->setStretchLastSection(true);

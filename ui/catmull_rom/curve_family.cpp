@@ -28,7 +28,7 @@ QString curveFamilyName(CurveFamily family)
     switch (family) {
     case CurveFamily::CatmullRom: return CurveFamilyNames::tr("Catmull-Rom (Def 2.10)");
     case CurveFamily::Cardinal: return CurveFamilyNames::tr("Cardinal (one tension c)");
-    case CurveFamily::KochanekBartels: return CurveFamilyNames::tr("Kochanek–Bartels (T, C, B)");
+    case CurveFamily::KochanekBartels: return CurveFamilyNames::tr("Kochanek–Bartels: T, C, B per point");
     case CurveFamily::Hermite: return CurveFamilyNames::tr("Hermite (drag the tangents)");
     case CurveFamily::PlaneSpline: return CurveFamilyNames::tr("C² spline in the plane (Def 2.1)");
     case CurveFamily::FunctionData: return CurveFamilyNames::tr("Function data y(x) (Def 2.3)");

@@ -9,6 +9,8 @@
 #include <QPushButton>
 #include <QSlider>
 
+#include <cmath>
+
 namespace granota::ui {
 
 namespace {
@@ -16,7 +18,7 @@ namespace {
 constexpr int kFamilySteps = CatmullRomSettings::kTcbSteps;
 
 /// A slider over [−1, 1] in steps of 1/kFamilySteps.
-QSlider* unitSlider(QWidget* parent)
+QSlider* familyUnitSlider(QWidget* parent)
 {
     auto* s = new QSlider(Qt::Horizontal, parent);
     s->setRange(-kFamilySteps, kFamilySteps);
@@ -24,7 +26,7 @@ QSlider* unitSlider(QWidget* parent)
     return s;
 }
 
-int sliderValueOf(const Rational& r) { return static_cast<int>(std::lround(toDouble(r) * kFamilySteps)); }
+int familySliderValue(const Rational& r) { return static_cast<int>(std::lround(toDouble(r) * kFamilySteps)); }
 
 } // namespace
 
@@ -38,14 +40,14 @@ FamilyPanel::FamilyPanel(QWidget* parent) : QGroupBox(parent)
     m_ruleLabel = new QLabel(this);
     m_ruleLabel->setWordWrap(true);
     m_cardinalLabel = new QLabel(this);
-    m_cardinalSlider = unitSlider(this);
+    m_cardinalSlider = familyUnitSlider(this);
     m_cardinalLabel->setBuddy(m_cardinalSlider);
     m_knotLabel = new QLabel(this);
     m_knotLabel->setWordWrap(true);
     m_allKnots = new QCheckBox(this);
     for (std::size_t k = 0; k < 3; ++k) {
         m_tcbLabels[k] = new QLabel(this);
-        m_tcbSliders[k] = unitSlider(this);
+        m_tcbSliders[k] = familyUnitSlider(this);
         m_tcbLabels[k]->setBuddy(m_tcbSliders[k]);
     }
     m_resetTangents = new QPushButton(this);
@@ -99,7 +101,7 @@ void FamilyPanel::showSettings(const CatmullRomSettings& settings, int selectedP
     const bool hermite = settings.family == CurveFamily::Hermite;
     m_cardinalLabel->setVisible(cardinal);
     m_cardinalSlider->setVisible(cardinal);
-    m_cardinalSlider->setValue(sliderValueOf(settings.cardinalTension));
+    m_cardinalSlider->setValue(familySliderValue(settings.cardinalTension));
     const Rational tau = (Rational(1) - settings.cardinalTension) / Rational(2);
     m_cardinalLabel->setText(
         tr("c = %1 (τ = %2):").arg(displayText(toString(settings.cardinalTension)), displayText(toString(tau))));
@@ -108,11 +110,11 @@ void FamilyPanel::showSettings(const CatmullRomSettings& settings, int selectedP
     const TcbKnot<Rational> k = selectedPoint >= 0 ? tcbAt(settings, static_cast<std::size_t>(selectedPoint))
                                                    : tcbAt(settings, 0);
     const Rational values[3] = {k.tension, k.continuity, k.bias};
-    const QString names[3] = {tr("T = %1:"), tr("C = %1:"), tr("B = %1:")};
+    const QString names[3] = {tr("Tension T = %1:"), tr("Continuity C = %1:"), tr("Bias B = %1:")};
     for (std::size_t j = 0; j < 3; ++j) {
         m_tcbLabels[j]->setVisible(kb);
         m_tcbSliders[j]->setVisible(kb);
-        m_tcbSliders[j]->setValue(sliderValueOf(values[j]));
+        m_tcbSliders[j]->setValue(familySliderValue(values[j]));
         m_tcbLabels[j]->setText(names[j].arg(displayText(toString(values[j]))));
     }
     m_knotLabel->setText(allKnots() ? tr("T, C, B of every point:")

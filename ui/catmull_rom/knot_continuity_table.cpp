@@ -27,7 +27,6 @@ KnotContinuityTable::KnotContinuityTable(QWidget* parent) : QTableWidget(parent)
 {
     setColumnCount(ColumnCount);
     setEditTriggers(QAbstractItemView::NoEditTriggers);
-    setSelectionMode(QAbstractItemView::NoSelection);
     verticalHeader()->hide();
     horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     horizontalHeader()->setStretchLastSection(true);

@@ -52,6 +52,8 @@ ShortcutsHelp::Parts ShortcutsHelp::sections(const QList<QAction*>& actions)
                            row(tr("Arrows (Shift: ten times more)"), tr("Nudge the selected point by a round step")) +
                            row(tr("Alt+arrows (Shift: ten times more)"),
                                tr("De Casteljau: mold the curve at t, c(t) moving by the same step")) +
+                           row(tr("Alt+arrows (Shift: ten times more)"),
+                               tr("Catmull-Rom, Hermite family: move the selected point's tangent by 1/10")) +
                            row(tr("Delete, Backspace"), tr("Remove the selected point"));
     const QString frog =
         row(tr("P"), tr("Pause and run")) + row(tr("S or ."), tr("One step (pausing first)")) +
