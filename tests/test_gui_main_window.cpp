@@ -118,7 +118,12 @@ bool languageNeutral(const QString& text)
                                       QStringLiteral("Centre (x, y)"), QStringLiteral("B-spline"), QStringLiteral("B-splines"),
                                       // The knot table's headers: orders of continuity and the tangent jump.
                                       QStringLiteral("C⁰"), QStringLiteral("C¹"), QStringLiteral("C²"), QStringLiteral("G¹"),
-                                      QStringLiteral("G²"), QStringLiteral("|p′₊ − p′₋|")};
+                                      QStringLiteral("G²"), QStringLiteral("|p′₊ − p′₋|"),
+                                      // Names of methods and sources (the Catmull-Rom tab's families).
+                                      QStringLiteral("Fritsch–Carlson"), QStringLiteral("Steffen"),
+                                      QStringLiteral("Catmull-Rom τ = 1/2"), QStringLiteral("Interval"),
+                                      QStringLiteral("Processing"), QStringLiteral("d3-shape"),
+                                      QStringLiteral("Primer on Bézier curves"), QStringLiteral("Kochanek–Bartels (C = B = 0)")};
     if (names.contains(text.trimmed()))
         return true;
     if (text.endsWith(QLatin1String(".granota"))) // File ▸ Open Recent lists file names

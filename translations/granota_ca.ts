@@ -6388,4 +6388,243 @@ Ja no és al disc.</translation>
             <translation>|p′₊ − p′₋|</translation>
         </message>
     </context>
+    <context>
+        <name>granota::ui::FunctionDataCurves</name>
+        <message>
+            <source>A point is not a finite number.</source>
+            <translation>Un punt no és un nombre finit.</translation>
+        </message>
+        <message>
+            <source>Catmull-Rom τ = 1/2</source>
+            <translation>Catmull-Rom τ = 1/2</translation>
+        </message>
+        <message>
+            <source>Fritsch–Carlson</source>
+            <translation>Fritsch–Carlson</translation>
+        </message>
+        <message>
+            <source>Function data need at least 2 points.</source>
+            <translation>Les dades d&apos;una funció necessiten almenys 2 punts.</translation>
+        </message>
+        <message>
+            <source>Steffen</source>
+            <translation>Steffen</translation>
+        </message>
+        <message>
+            <source>The curve overflows: the coordinates are too large.</source>
+            <translation>La corba desborda: les coordenades són massa grans.</translation>
+        </message>
+        <message>
+            <source>The points are not data y(x): their abscissae must increase strictly from q0 to qn. Move a point, or choose another family: the points are kept.</source>
+            <translation>Els punts no són dades y(x): les abscisses han de créixer estrictament de q0 a qn. Moveu un punt o trieu una altra família: els punts es conserven.</translation>
+        </message>
+        <message>
+            <source>natural spline</source>
+            <translation>spline natural</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FunctionDataPanel</name>
+        <message>
+            <source>Curve</source>
+            <translation>Corba</translation>
+        </message>
+        <message>
+            <source>Curves on the data</source>
+            <translation>Corbes sobre les dades</translation>
+        </message>
+        <message>
+            <source>Interval</source>
+            <translation>Interval</translation>
+        </message>
+        <message>
+            <source>Largest overshoot beyond the neighbouring data values:</source>
+            <translation>Com més sobresurt cada corba dels valors veïns:</translation>
+        </message>
+        <message>
+            <source>Largest overshoot of each curve</source>
+            <translation>El màxim que sobresurt cada corba</translation>
+        </message>
+        <message>
+            <source>On each interval [xᵢ, xᵢ₊₁], fill the part of a curve outside the band between yᵢ and yᵢ₊₁: where it goes beyond its neighbouring data values.</source>
+            <translation>A cada interval [xᵢ, xᵢ₊₁], omple la part d&apos;una corba fora de la franja entre yᵢ i yᵢ₊₁: on va més enllà dels valors veïns.</translation>
+        </message>
+        <message>
+            <source>Overshoot</source>
+            <translation>Sobresurt</translation>
+        </message>
+        <message>
+            <source>Overshoot shading</source>
+            <translation>Ombrejat del que sobresurt</translation>
+        </message>
+        <message>
+            <source>Shade the o&amp;vershoot</source>
+            <translation>Ombreja el &amp;que sobresurt</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::PlaneSplineCurves</name>
+        <message>
+            <source>A closed C² spline needs at least 3 points.</source>
+            <translation>Un spline C² tancat necessita almenys 3 punts.</translation>
+        </message>
+        <message>
+            <source>A point or an end tangent is not a finite number.</source>
+            <translation>Un punt o una tangent d&apos;extrem no és un nombre finit.</translation>
+        </message>
+        <message>
+            <source>An open C² spline needs at least 2 points.</source>
+            <translation>Un spline C² obert necessita almenys 2 punts.</translation>
+        </message>
+        <message>
+            <source>C² spline</source>
+            <translation>spline C²</translation>
+        </message>
+        <message>
+            <source>C² spline, %1</source>
+            <translation>Spline C², %1</translation>
+        </message>
+        <message>
+            <source>Points q%1 and q%2 coincide: %3 parameters need distinct consecutive points (use uniform parameters, or move one).</source>
+            <translation>Els punts q%1 i q%2 coincideixen: els paràmetres de %3 necessiten punts consecutius diferents (useu paràmetres uniformes o moveu-ne un).</translation>
+        </message>
+        <message>
+            <source>The spline overflows: the coordinates are too large.</source>
+            <translation>L&apos;spline desborda: les coordenades són massa grans.</translation>
+        </message>
+        <message>
+            <source>centripetal</source>
+            <translation>centrípeta</translation>
+        </message>
+        <message>
+            <source>chord length</source>
+            <translation>longitud de corda</translation>
+        </message>
+        <message>
+            <source>clamped</source>
+            <translation>subjectes</translation>
+        </message>
+        <message>
+            <source>dashed: Catmull-Rom τ = 1/2 (C¹)</source>
+            <translation>discontínua: Catmull-Rom τ = 1/2 (C¹)</translation>
+        </message>
+        <message>
+            <source>natural</source>
+            <translation>naturals</translation>
+        </message>
+        <message>
+            <source>not-a-knot</source>
+            <translation>sense nus (not-a-knot)</translation>
+        </message>
+        <message>
+            <source>periodic (closed)</source>
+            <translation>periòdics (tancada)</translation>
+        </message>
+        <message>
+            <source>uniform</source>
+            <translation>uniformes</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::PlaneSplinePanel</name>
+        <message>
+            <source>&amp;Final tangent:</source>
+            <translation>Tangent &amp;final:</translation>
+        </message>
+        <message>
+            <source>&amp;Initial tangent:</source>
+            <translation>Tan&amp;gent inicial:</translation>
+        </message>
+        <message>
+            <source>A tangent component is a number between −%1 and %1, such as 1/2 or -0.25.</source>
+            <translation>Cada component d&apos;una tangent és un nombre entre −%1 i %1, com ara 1/2 o -0,25.</translation>
+        </message>
+        <message>
+            <source>Catmull-Rom comparison</source>
+            <translation>Comparació amb Catmull-Rom</translation>
+        </message>
+        <message>
+            <source>Catmull-Rom τ = 1/2 of the same points</source>
+            <translation>Catmull-Rom τ = 1/2 dels mateixos punts</translation>
+        </message>
+        <message>
+            <source>C² spline end tangents</source>
+            <translation>Tangents als extrems de l&apos;spline C²</translation>
+        </message>
+        <message>
+            <source>C² spline ends</source>
+            <translation>Extrems de l&apos;spline C²</translation>
+        </message>
+        <message>
+            <source>C² spline parameters</source>
+            <translation>Paràmetres de l&apos;spline C²</translation>
+        </message>
+        <message>
+            <source>Def 2.1 leaves two conditions free; the ends fix them. Natural: p″ = 0 at both ends. Clamped: the given end tangents. Not-a-knot: p‴ continuous at the second and last but one points. Periodic: a closed curve, C² at every point.</source>
+            <translation>La Def. 2.1 deixa dues condicions lliures; els extrems les fixen. Naturals: p″ = 0 als dos extrems. Subjectes: les tangents donades. Sense nus: p‴ contínua al segon i al penúltim punt. Periòdics: una corba tancada, C² a tots els punts.</translation>
+        </message>
+        <message>
+            <source>End c&amp;onditions:</source>
+            <translation>Condicions als extre&amp;ms:</translation>
+        </message>
+        <message>
+            <source>Final tangent, %1</source>
+            <translation>Tangent final, %1</translation>
+        </message>
+        <message>
+            <source>How the parameter advances from point to point: by 1 (uniform), by the distance (chord length) or by its square root (centripetal).</source>
+            <translation>Com avança el paràmetre d&apos;un punt al següent: d&apos;1 en 1 (uniformes), per la distància (longitud de corda) o per la seva arrel quadrada (centrípeta).</translation>
+        </message>
+        <message>
+            <source>Initial tangent, %1</source>
+            <translation>Tangent inicial, %1</translation>
+        </message>
+        <message>
+            <source>Knot spacin&amp;g:</source>
+            <translation>Espa&amp;iat dels nusos:</translation>
+        </message>
+        <message>
+            <source>x component</source>
+            <translation>component x</translation>
+        </message>
+        <message>
+            <source>y component</source>
+            <translation>component y</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::SplineFamilyPanels</name>
+        <message>
+            <source>C² spline in the plane</source>
+            <translation>Spline C² al pla</translation>
+        </message>
+        <message>
+            <source>Data where the natural spline dips about 98 below its neighbouring values (d3-shape issue #38); the monotone schemes do not.</source>
+            <translation>Dades on l&apos;spline natural baixa unes 98 unitats per sota dels valors veïns (d3-shape, issue #38); els esquemes monòtons, no.</translation>
+        </message>
+        <message>
+            <source>Example: d3-s&amp;hape #38 data</source>
+            <translation>Exemple: dades de d3-s&amp;hape #38</translation>
+        </message>
+        <message>
+            <source>Example: t&amp;he frog&apos;s outline points</source>
+            <translation>Exemple: punts del c&amp;ontorn de la granota</translation>
+        </message>
+        <message>
+            <source>Frog outline example</source>
+            <translation>Exemple del contorn de la granota</translation>
+        </message>
+        <message>
+            <source>Function data</source>
+            <translation>Dades d&apos;una funció</translation>
+        </message>
+        <message>
+            <source>The frog body&apos;s vertices at rest, closed: the C² spline against the Catmull-Rom outline of §4.12.</source>
+            <translation>Els vèrtexs del cos de la granota en repòs, tancats: l&apos;spline C² davant del contorn de Catmull-Rom del §4.12.</translation>
+        </message>
+        <message>
+            <source>d3-shape #38 example</source>
+            <translation>Exemple de d3-shape #38</translation>
+        </message>
+    </context>
 </TS>

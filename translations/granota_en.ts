@@ -6388,4 +6388,243 @@ It is no longer on disk.</translation>
             <translation>|p′₊ − p′₋|</translation>
         </message>
     </context>
+    <context>
+        <name>granota::ui::FunctionDataCurves</name>
+        <message>
+            <source>A point is not a finite number.</source>
+            <translation>A point is not a finite number.</translation>
+        </message>
+        <message>
+            <source>Catmull-Rom τ = 1/2</source>
+            <translation>Catmull-Rom τ = 1/2</translation>
+        </message>
+        <message>
+            <source>Fritsch–Carlson</source>
+            <translation>Fritsch–Carlson</translation>
+        </message>
+        <message>
+            <source>Function data need at least 2 points.</source>
+            <translation>Function data need at least 2 points.</translation>
+        </message>
+        <message>
+            <source>Steffen</source>
+            <translation>Steffen</translation>
+        </message>
+        <message>
+            <source>The curve overflows: the coordinates are too large.</source>
+            <translation>The curve overflows: the coordinates are too large.</translation>
+        </message>
+        <message>
+            <source>The points are not data y(x): their abscissae must increase strictly from q0 to qn. Move a point, or choose another family: the points are kept.</source>
+            <translation>The points are not data y(x): their abscissae must increase strictly from q0 to qn. Move a point, or choose another family: the points are kept.</translation>
+        </message>
+        <message>
+            <source>natural spline</source>
+            <translation>natural spline</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::FunctionDataPanel</name>
+        <message>
+            <source>Curve</source>
+            <translation>Curve</translation>
+        </message>
+        <message>
+            <source>Curves on the data</source>
+            <translation>Curves on the data</translation>
+        </message>
+        <message>
+            <source>Interval</source>
+            <translation>Interval</translation>
+        </message>
+        <message>
+            <source>Largest overshoot beyond the neighbouring data values:</source>
+            <translation>Largest overshoot beyond the neighbouring data values:</translation>
+        </message>
+        <message>
+            <source>Largest overshoot of each curve</source>
+            <translation>Largest overshoot of each curve</translation>
+        </message>
+        <message>
+            <source>On each interval [xᵢ, xᵢ₊₁], fill the part of a curve outside the band between yᵢ and yᵢ₊₁: where it goes beyond its neighbouring data values.</source>
+            <translation>On each interval [xᵢ, xᵢ₊₁], fill the part of a curve outside the band between yᵢ and yᵢ₊₁: where it goes beyond its neighbouring data values.</translation>
+        </message>
+        <message>
+            <source>Overshoot</source>
+            <translation>Overshoot</translation>
+        </message>
+        <message>
+            <source>Overshoot shading</source>
+            <translation>Overshoot shading</translation>
+        </message>
+        <message>
+            <source>Shade the o&amp;vershoot</source>
+            <translation>Shade the o&amp;vershoot</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::PlaneSplineCurves</name>
+        <message>
+            <source>A closed C² spline needs at least 3 points.</source>
+            <translation>A closed C² spline needs at least 3 points.</translation>
+        </message>
+        <message>
+            <source>A point or an end tangent is not a finite number.</source>
+            <translation>A point or an end tangent is not a finite number.</translation>
+        </message>
+        <message>
+            <source>An open C² spline needs at least 2 points.</source>
+            <translation>An open C² spline needs at least 2 points.</translation>
+        </message>
+        <message>
+            <source>C² spline</source>
+            <translation>C² spline</translation>
+        </message>
+        <message>
+            <source>C² spline, %1</source>
+            <translation>C² spline, %1</translation>
+        </message>
+        <message>
+            <source>Points q%1 and q%2 coincide: %3 parameters need distinct consecutive points (use uniform parameters, or move one).</source>
+            <translation>Points q%1 and q%2 coincide: %3 parameters need distinct consecutive points (use uniform parameters, or move one).</translation>
+        </message>
+        <message>
+            <source>The spline overflows: the coordinates are too large.</source>
+            <translation>The spline overflows: the coordinates are too large.</translation>
+        </message>
+        <message>
+            <source>centripetal</source>
+            <translation>centripetal</translation>
+        </message>
+        <message>
+            <source>chord length</source>
+            <translation>chord length</translation>
+        </message>
+        <message>
+            <source>clamped</source>
+            <translation>clamped</translation>
+        </message>
+        <message>
+            <source>dashed: Catmull-Rom τ = 1/2 (C¹)</source>
+            <translation>dashed: Catmull-Rom τ = 1/2 (C¹)</translation>
+        </message>
+        <message>
+            <source>natural</source>
+            <translation>natural</translation>
+        </message>
+        <message>
+            <source>not-a-knot</source>
+            <translation>not-a-knot</translation>
+        </message>
+        <message>
+            <source>periodic (closed)</source>
+            <translation>periodic (closed)</translation>
+        </message>
+        <message>
+            <source>uniform</source>
+            <translation>uniform</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::PlaneSplinePanel</name>
+        <message>
+            <source>&amp;Final tangent:</source>
+            <translation>&amp;Final tangent:</translation>
+        </message>
+        <message>
+            <source>&amp;Initial tangent:</source>
+            <translation>&amp;Initial tangent:</translation>
+        </message>
+        <message>
+            <source>A tangent component is a number between −%1 and %1, such as 1/2 or -0.25.</source>
+            <translation>A tangent component is a number between −%1 and %1, such as 1/2 or -0.25.</translation>
+        </message>
+        <message>
+            <source>Catmull-Rom comparison</source>
+            <translation>Catmull-Rom comparison</translation>
+        </message>
+        <message>
+            <source>Catmull-Rom τ = 1/2 of the same points</source>
+            <translation>Catmull-Rom τ = 1/2 of the same points</translation>
+        </message>
+        <message>
+            <source>C² spline end tangents</source>
+            <translation>C² spline end tangents</translation>
+        </message>
+        <message>
+            <source>C² spline ends</source>
+            <translation>C² spline ends</translation>
+        </message>
+        <message>
+            <source>C² spline parameters</source>
+            <translation>C² spline parameters</translation>
+        </message>
+        <message>
+            <source>Def 2.1 leaves two conditions free; the ends fix them. Natural: p″ = 0 at both ends. Clamped: the given end tangents. Not-a-knot: p‴ continuous at the second and last but one points. Periodic: a closed curve, C² at every point.</source>
+            <translation>Def 2.1 leaves two conditions free; the ends fix them. Natural: p″ = 0 at both ends. Clamped: the given end tangents. Not-a-knot: p‴ continuous at the second and last but one points. Periodic: a closed curve, C² at every point.</translation>
+        </message>
+        <message>
+            <source>End c&amp;onditions:</source>
+            <translation>End c&amp;onditions:</translation>
+        </message>
+        <message>
+            <source>Final tangent, %1</source>
+            <translation>Final tangent, %1</translation>
+        </message>
+        <message>
+            <source>How the parameter advances from point to point: by 1 (uniform), by the distance (chord length) or by its square root (centripetal).</source>
+            <translation>How the parameter advances from point to point: by 1 (uniform), by the distance (chord length) or by its square root (centripetal).</translation>
+        </message>
+        <message>
+            <source>Initial tangent, %1</source>
+            <translation>Initial tangent, %1</translation>
+        </message>
+        <message>
+            <source>Knot spacin&amp;g:</source>
+            <translation>Knot spacin&amp;g:</translation>
+        </message>
+        <message>
+            <source>x component</source>
+            <translation>x component</translation>
+        </message>
+        <message>
+            <source>y component</source>
+            <translation>y component</translation>
+        </message>
+    </context>
+    <context>
+        <name>granota::ui::SplineFamilyPanels</name>
+        <message>
+            <source>C² spline in the plane</source>
+            <translation>C² spline in the plane</translation>
+        </message>
+        <message>
+            <source>Data where the natural spline dips about 98 below its neighbouring values (d3-shape issue #38); the monotone schemes do not.</source>
+            <translation>Data where the natural spline dips about 98 below its neighbouring values (d3-shape issue #38); the monotone schemes do not.</translation>
+        </message>
+        <message>
+            <source>Example: d3-s&amp;hape #38 data</source>
+            <translation>Example: d3-s&amp;hape #38 data</translation>
+        </message>
+        <message>
+            <source>Example: t&amp;he frog&apos;s outline points</source>
+            <translation>Example: t&amp;he frog&apos;s outline points</translation>
+        </message>
+        <message>
+            <source>Frog outline example</source>
+            <translation>Frog outline example</translation>
+        </message>
+        <message>
+            <source>Function data</source>
+            <translation>Function data</translation>
+        </message>
+        <message>
+            <source>The frog body&apos;s vertices at rest, closed: the C² spline against the Catmull-Rom outline of §4.12.</source>
+            <translation>The frog body&apos;s vertices at rest, closed: the C² spline against the Catmull-Rom outline of §4.12.</translation>
+        </message>
+        <message>
+            <source>d3-shape #38 example</source>
+            <translation>d3-shape #38 example</translation>
+        </message>
+    </context>
 </TS>

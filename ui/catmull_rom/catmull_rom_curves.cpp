@@ -114,6 +114,10 @@ CatmullRomScene computeScene(const std::vector<Point>& points, const CatmullRomS
     // The family selector's switch point: Catmull-Rom is the τ curves above, every other
     // family its own curve (family_curves.cpp).
     scene.family = computeFamilyCurve(points, settings);
+    if (settings.family == CurveFamily::PlaneSpline)
+        scene.planeSpline = computePlaneSplineScene(points, settings.planeSpline, settings.curvaturePlot);
+    if (settings.family == CurveFamily::FunctionData)
+        scene.functionData = computeFunctionDataScene(points, settings.functionData, settings.curvaturePlot);
     return scene;
 }
 

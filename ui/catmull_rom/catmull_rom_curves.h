@@ -19,6 +19,8 @@
 #include "core/curves/splines/piecewise_polynomial.h"
 #include "ui/catmull_rom/catmull_rom_settings.h"
 #include "ui/catmull_rom/family_curves.h"
+#include "ui/catmull_rom/function_data_curves.h"
+#include "ui/catmull_rom/plane_spline_curves.h"
 
 #include <QCoreApplication>
 #include <QString>
@@ -62,8 +64,10 @@ struct CatmullRomScene {
     std::vector<double> splineIntervals;
     std::vector<BezierSegment<double>> splineBezier;
     CurvatureProfile splineCurvature;
-    QString splineError; ///< translated: why there is no spline
-    FamilyCurve family;  ///< the chosen family's curve when it is not Catmull-Rom (family_curves.h)
+    QString splineError;            ///< translated: why there is no spline
+    FamilyCurve family;             ///< the chosen family's curve when it is not Catmull-Rom (family_curves.h)
+    PlaneSplineScene planeSpline;   ///< the C² spline in the plane, in that family (plane_spline_curves.h)
+    FunctionDataScene functionData; ///< the four curves on function data, in that family (function_data_curves.h)
 };
 
 /// The control polygons of cubic Bézier segments, as curvatureProfile() takes them.

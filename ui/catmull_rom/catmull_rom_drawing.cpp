@@ -4,6 +4,7 @@
 
 #include "ui/catmull_rom/catmull_rom_report.h"
 #include "ui/catmull_rom/family_drawing.h"
+#include "ui/catmull_rom/spline_families_drawing.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_style.h"
 #include "ui/common/view_transform.h"
@@ -105,6 +106,10 @@ void drawCatmullRomCurves(QPainter& p, const ViewTransform& view, const CanvasSt
 
 CanvasLegend catmullRomLegend(const CatmullRomSettings& settings, const CatmullRomScene& scene)
 {
+    if (settings.family == CurveFamily::PlaneSpline)
+        return planeSplineLegend(settings.planeSpline, scene.planeSpline);
+    if (settings.family == CurveFamily::FunctionData)
+        return functionDataLegend(scene.functionData);
     CanvasLegend legend;
     legend.alertColor = kErrorColor;
     const bool catmullRom = settings.catmullRom && settings.family == CurveFamily::CatmullRom;
@@ -160,6 +165,10 @@ CanvasLegendObstacles catmullRomLegendObstacles(const ViewTransform& view, const
     samples(scene.bezier);
     samples(scene.spline);
     samples(scene.family.samples);
+    for (const auto& curve : planeSplineSamples(scene.planeSpline))
+        samples(curve);
+    for (const auto& curve : functionDataSamples(scene.functionData))
+        samples(curve);
     return avoid;
 }
 
@@ -191,6 +200,10 @@ QRectF catmullRomContentBounds(const std::vector<Point>& points, const CatmullRo
     // The tangents' ends (the Hermite handles, the arrows' heads).
     for (std::size_t i = 0; i < scene.family.tangents.size() && i < scene.family.points.size(); ++i)
         include({scene.family.points[i] + scene.family.tangents[i].out, scene.family.points[i] - scene.family.tangents[i].in});
+    for (const auto& curve : planeSplineSamples(scene.planeSpline))
+        include(curve);
+    for (const auto& curve : functionDataSamples(scene.functionData))
+        include(curve);
     return QRectF(QPointF(x0, y0), QPointF(x1, y1));
 }
 

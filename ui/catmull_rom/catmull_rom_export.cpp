@@ -1,4 +1,5 @@
 #include "ui/catmull_rom/catmull_rom_export.h"
+#include "ui/catmull_rom/spline_families_export.h"
 
 #include "core/base/number_format.h"
 #include "ui/catmull_rom/catmull_rom_drawing.h"
@@ -73,6 +74,19 @@ QString catmullRomCsv(const std::vector<Point>& points, const std::vector<ExactP
 void writeCatmullRomTikz(TikzWriter& w, const std::vector<Point>& points, bool polygonVisible, const CatmullRomSettings& settings,
                          const CatmullRomScene& scene)
 {
+    if (settings.family == CurveFamily::PlaneSpline || settings.family == CurveFamily::FunctionData) {
+        // The C² families (spline_families_export.h): their curves, the points, the canvas's key.
+        if (settings.controlPoints && polygonVisible)
+            w.polyline(points, CanvasStyle().polygon, 0.6, true);
+        if (settings.family == CurveFamily::PlaneSpline)
+            writePlaneSplineTikz(w, settings.planeSpline, scene.planeSpline);
+        else
+            writeFunctionDataTikz(w, settings.functionData, scene.functionData);
+        for (std::size_t i = 0; settings.controlPoints && i < points.size(); ++i)
+            w.point(points[i], CanvasStyle().handle, QStringLiteral("q_{%1}").arg(i));
+        writeSplineFamilyTikzKey(w, catmullRomLegend(settings, scene));
+        return;
+    }
     w.comment(QStringLiteral("Catmull-Rom curves (thesis §2.2), mode %1").arg(endsKey(settings.ends)));
     // The polygon of the points q_i, dashed and thin, as the point editor draws it.
     if (settings.controlPoints && polygonVisible)

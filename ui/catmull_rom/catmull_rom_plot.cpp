@@ -116,6 +116,15 @@ void plotCurvature(QCustomPlot* plot, const CatmullRomSettings& settings, const 
                       QCoreApplication::translate("granota::ui::CatmullRomTab", "Bézier")});
     curves.push_back({&scene.splineCurvature, QPen(kCatmullRomSplineColor, width),
                       QCoreApplication::translate("granota::ui::CatmullRomTab", "cubic spline C²")});
+    // The families of issue 37 with curves of their own: the C² spline in the plane and its
+    // Catmull-Rom comparison; the curves on function data, each in its colour.
+    curves.push_back(
+        {&scene.planeSpline.spline.curvature, QPen(kCatmullRomSplineColor, 1.25 * width), PlaneSplineCurves::tr("C² spline")});
+    curves.push_back({&scene.planeSpline.catmullRom.curvature, QPen(tensionColour(0.5), width, Qt::DashLine),
+                      QStringLiteral("Catmull-Rom τ = 1/2")});
+    for (const FunctionDataCurveShape& shape : scene.functionData.curves)
+        curves.push_back(
+            {&shape.curvature, QPen(functionDataCurveColour(shape.curve), width), functionDataCurveLabel(shape.curve)});
 
     // The knots of the selected τ, where its κ may jump.
     std::vector<CurvaturePlotKnot> knots;

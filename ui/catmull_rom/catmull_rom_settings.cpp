@@ -22,7 +22,8 @@ bool CatmullRomSettings::operator==(const CatmullRomSettings& o) const
            hermiteTangents == o.hermiteTangents && taus == o.taus && selectedTau == o.selectedTau && ends == o.ends &&
            spacing == o.spacing && bezier == o.bezier && spline == o.spline && compareEnds == o.compareEnds &&
            allTausInPlot == o.allTausInPlot && curvaturePlot == o.curvaturePlot && catmullRom == o.catmullRom &&
-           controlPoints == o.controlPoints && splineEnds == o.splineEnds && startSlope == o.startSlope && endSlope == o.endSlope;
+           controlPoints == o.controlPoints && splineEnds == o.splineEnds && startSlope == o.startSlope &&
+           endSlope == o.endSlope && planeSpline == o.planeSpline && functionData == o.functionData;
 }
 
 TcbKnot<Rational> tcbAt(const CatmullRomSettings& settings, std::size_t i)
@@ -130,6 +131,11 @@ void writeSettings(const CatmullRomSettings& s, QJsonObject& json)
     json.insert(QStringLiteral("compare_ends"), s.compareEnds);
     json.insert(QStringLiteral("all_taus_in_plot"), s.allTausInPlot);
     json.insert(QStringLiteral("curvature_plot"), s.curvaturePlot);
+    QJsonObject plane, data;
+    writePlaneSplineSettings(s.planeSpline, plane);
+    writeFunctionDataSettings(s.functionData, data);
+    json.insert(QStringLiteral("plane_spline"), plane);
+    json.insert(QStringLiteral("function_data"), data);
 }
 
 std::optional<CatmullRomSettings> readSettings(const QJsonObject& json, QString* problem)
@@ -261,6 +267,23 @@ std::optional<CatmullRomSettings> readSettings(const QJsonObject& json, QString*
         if (!v.isBool())
             return fail(QLatin1String(key));
         *target = v.toBool();
+    }
+    // The families' own settings, each an object (absent: the defaults).
+    const QJsonValue plane = json.value(QStringLiteral("plane_spline"));
+    if (!plane.isUndefined()) {
+        QString why;
+        const auto read = plane.isObject() ? readPlaneSplineSettings(plane.toObject(), &why) : std::nullopt;
+        if (!read)
+            return fail(QStringLiteral("plane_spline.") + why);
+        s.planeSpline = *read;
+    }
+    const QJsonValue data = json.value(QStringLiteral("function_data"));
+    if (!data.isUndefined()) {
+        QString why;
+        const auto read = data.isObject() ? readFunctionDataSettings(data.toObject(), &why) : std::nullopt;
+        if (!read)
+            return fail(QStringLiteral("function_data.") + why);
+        s.functionData = *read;
     }
     return s;
 }

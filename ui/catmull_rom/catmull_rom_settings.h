@@ -9,6 +9,8 @@
 #include "core/curves/splines/kochanek_bartels.h"
 #include "core/exact/rational.h"
 #include "ui/catmull_rom/curve_family.h"
+#include "ui/catmull_rom/function_data_settings.h"
+#include "ui/catmull_rom/plane_spline_settings.h"
 
 #include <QJsonObject>
 #include <QString>
@@ -48,6 +50,8 @@ struct CatmullRomSettings {
     bool compareEnds = false;                    ///< Ex 2.13: the open and cyclic curves side by side
     bool allTausInPlot = false;                  ///< Ex 2.12: the blending functions of every τ
     bool curvaturePlot = false;                  ///< §2.3: the plot shows κ against arc length instead
+    PlaneSplineSettings planeSpline;             ///< the "C² spline in the plane" family (plane_spline_settings.h)
+    FunctionDataSettings functionData;           ///< the "function data" family (function_data_settings.h)
 
     bool operator==(const CatmullRomSettings& o) const;
     bool operator!=(const CatmullRomSettings& o) const { return !(*this == o); }

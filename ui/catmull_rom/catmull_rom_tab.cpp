@@ -8,6 +8,7 @@
 #include "ui/catmull_rom/catmull_rom_plot.h"
 #include "ui/catmull_rom/catmull_rom_report.h"
 #include "ui/catmull_rom/family_panel.h"
+#include "ui/catmull_rom/spline_family_panels.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_legend.h"
 #include "ui/common/curve_canvas.h"
@@ -90,7 +91,12 @@ CatmullRomTab::CatmullRomTab(QWidget* parent) : CurveTab(QStringLiteral("catmull
 
 void CatmullRomTab::buildUi()
 {
-    buildFamilyControls(); // the family selector, the chosen family's controls, the Hermite handles
+    buildFamilyControls();                         // the family selector, the chosen family's controls, the Hermite handles
+    m_splinePanels = new SplineFamilyPanels(this); // the C² spline's and the function data's controls, in their families
+    connect(m_splinePanels, &SplineFamilyPanels::changeRequested, this,
+            [this](const CatmullRomSettings& after, const QString& text) { changeSettings(after, text); });
+    connect(m_splinePanels, &SplineFamilyPanels::exampleRequested, this, &CatmullRomTab::loadPointsAndSettings);
+    connect(m_splinePanels, &SplineFamilyPanels::refused, this, &CatmullRomTab::refuse);
     // Tensions.
     m_tensionBox = new QGroupBox(this);
     m_tauList = new QListWidget(m_tensionBox);
@@ -267,6 +273,7 @@ void CatmullRomTab::buildUi()
     controlsLayout->addWidget(m_tensionBox);
     controlsLayout->addWidget(m_curveBox);
     controlsLayout->insertWidget(0, m_familyPanel); // on top, but after the others among the children (tests find the ends first)
+    controlsLayout->insertWidget(1, m_splinePanels);
     controlsLayout->addStretch(1);
     auto* scroll = new VerticalScrollArea(controls, this); // Tab goes to its controls, and it scrolls to the one focused
 
@@ -308,6 +315,7 @@ void CatmullRomTab::retranslate()
 {
     updateCanvasSummary();
     retranslateFamilyControls();
+    m_splinePanels->retranslate();
     m_tensionBox->setTitle(tr("Tensions τ (Def 2.8)"));
     m_tensionBox->setToolTip(tr("The tension τ scales the tangents p′(0) = τ(p2 − p0), p′(1) = τ(p3 − p1) of every "
                                 "segment (Def 2.8): 0 gives straight segments, 1/2 is the usual value, negative "
@@ -645,6 +653,7 @@ void CatmullRomTab::recompute()
 {
     m_scene = computeScene(m_editor->points(), m_settings);
     updateFamilyViews();
+    m_splinePanels->showState(m_settings, m_scene, m_editor->points());
     m_exact->setContent(
         CatmullRomReport::html(m_editor->points(), m_settings, m_scene, computeAnalysis(m_editor->allExactPoints(), m_settings)));
     updatePlot();
@@ -718,15 +727,20 @@ bool CatmullRomTab::loadExample(const WorkedExample& example)
     const auto state = catmullRomExample(example, m_editor->points(), m_settings);
     if (!state)
         return false;
-    const QString id = QString::fromStdString(example.id);
-    m_undo->beginMacro(tr("Load Ex %1").arg(id));
-    if (state->points != m_editor->points())
-        m_editor->setPoints(state->points, tr("Load Ex %1").arg(id));
-    changeSettings(state->settings, tr("Load Ex %1").arg(id));
+    loadPointsAndSettings(state->points, state->settings, tr("Load Ex %1").arg(QString::fromStdString(example.id)));
+    return true;
+}
+
+void CatmullRomTab::loadPointsAndSettings(const std::vector<Point>& points, const CatmullRomSettings& settings,
+                                          const QString& undoText)
+{
+    m_undo->beginMacro(undoText);
+    if (points != m_editor->points())
+        m_editor->setPoints(points, undoText);
+    changeSettings(settings, undoText);
     m_undo->endMacro();
     updateContentBounds(true);
     m_canvas->fitToContent();
-    return true;
 }
 
 void CatmullRomTab::writeSettings(QJsonObject& state) const { ui::writeSettings(m_settings, state); }

@@ -31,6 +31,7 @@ class FamilyPanel;
 class HermiteHandles;
 class KnotContinuityTable;
 class ConventionsTable;
+class SplineFamilyPanels;
 class ViewTransform;
 struct CanvasStyle;
 
@@ -57,6 +58,8 @@ public:
     KnotContinuityTable* knotTable() const { return m_knotTable; }
     /// The side panel's conventions table, for the τ of the curve shown.
     ConventionsTable* conventionsTable() const { return m_conventions; }
+    /// The C² spline's and the function data's controls (spline_family_panels.h).
+    SplineFamilyPanels* splinePanels() const { return m_splinePanels; }
 
     /// Undoable edits of the settings. addTension refuses garbage, values outside [−10, 10],
     /// duplicates and an 11th tension with a message (statusMessage) and returns false.
@@ -121,6 +124,8 @@ private:
     void updateFamilyViews();
     void hermiteTangentDragged(int index, Point tangent);
     void hermiteDragFinished(int index, Point startTangent);
+    /// Points and settings as one undo step (a worked example, a family's example).
+    void loadPointsAndSettings(const std::vector<Point>& points, const CatmullRomSettings& settings, const QString& undoText);
     /// Makes `s` current (undo/redo, loading): controls, curves, panel, plot.
     void applySettings(const CatmullRomSettings& s);
     void pointsEdited();
@@ -142,6 +147,7 @@ private:
     HermiteHandles* m_hermiteHandles = nullptr;
     KnotContinuityTable* m_knotTable = nullptr;
     ConventionsTable* m_conventions = nullptr;
+    SplineFamilyPanels* m_splinePanels = nullptr;
     QTabWidget* m_sideTabs = nullptr;
     QGroupBox* m_tensionBox = nullptr;
     QListWidget* m_tauList = nullptr;

@@ -1,6 +1,7 @@
 #include "ui/catmull_rom/family_drawing.h"
 
 #include "ui/catmull_rom/catmull_rom_drawing.h"
+#include "ui/catmull_rom/spline_families_drawing.h"
 #include "ui/common/canvas_style.h"
 #include "ui/common/view_transform.h"
 
@@ -39,12 +40,8 @@ void drawFamilyCurve(QPainter& p, const ViewTransform& view, const CanvasStyle& 
     case CurveFamily::Cardinal:
     case CurveFamily::KochanekBartels:
     case CurveFamily::Hermite: break;
-    case CurveFamily::PlaneSpline:
-        // cr-c2: the C² spline in the plane (and the frog outline) is drawn here.
-        break;
-    case CurveFamily::FunctionData:
-        // cr-c2: the function data's interpolants, the overshoot shaded, are drawn here.
-        break;
+    case CurveFamily::PlaneSpline: drawPlaneSpline(p, view, style, scene.planeSpline); return;
+    case CurveFamily::FunctionData: drawFunctionData(p, view, style, settings.functionData, scene.functionData); return;
     }
     p.setPen(QPen(kFamilyCurveColor, style.lineWidth() * 1.25, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
     drawBezierSegments(p, view, curve.bezier);
