@@ -3,7 +3,8 @@
 // two Bézier pieces give by hand while it is continuous at simple knots (C²); a point's weight
 // changes by Shift+wheel and the + and − keys, two significant digits exactly, consecutive
 // changes one undo step, never ≤ 0; the homogeneous curve (wx, wy, w) divided by w is the
-// rational curve, (3/4, 1, 5/4) at u = 1/2 on the quarter circle by hand.
+// rational curve, (3/4, 1, 5/4) at u = 1/2 on the quarter circle by hand; the point table's w
+// column edits one weight at a time, as typed, one undo step each, never ≤ 0.
 #include "core/curves/bsplines/de_boor.h"
 #include "ui/bsplines/bspline_curvature_plot.h"
 #include "ui/bsplines/bspline_examples.h"
@@ -11,10 +12,12 @@
 #include "ui/bsplines/weight_gesture.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/point_editor.h"
+#include "ui/common/point_table.h"
 #include "gui_timeouts.h"
 
 #include <QCheckBox>
 #include <QLineEdit>
+#include <QSignalSpy>
 #include <QTest>
 #include <QUndoStack>
 #include <QWheelEvent>
@@ -204,6 +207,95 @@ private slots:
         QCoreApplication::sendEvent(canvas, &wheel);
         QCOMPARE(tab.model().weights, weightList({{1, 1}, {1, 1}, {2, 1}}));
         QCOMPARE(tab.undoStack()->count(), undo);
+    }
+
+    // The quarter circle's weights (1, 1, 2) in the table's w column (column 2). Typing 3/2 in
+    // P₁'s row changes that weight alone, exactly: (1, 3/2, 2), what the weights field, the
+    // scene (the rings) and the column then show; one undo step, whose undo gives (1, 1, 2)
+    // back everywhere. 0, −1, text and a radical are refused with a message, nothing changes
+    // and the cell shows the weight again.
+    void weightTypedInTheTable()
+    {
+        BSplineTab tab;
+        showWeightsTab(tab);
+        tab.loadBSplineExample(BSplineExampleId::QuarterCircle);
+        PointTable* table = tab.pointTable();
+        auto* field = tab.findChild<QLineEdit*>(QStringLiteral("bsplineWeights"));
+        QVERIFY(field);
+        QCOMPARE(table->columnCount(), 3);
+        QCOMPARE(table->horizontalHeaderItem(2)->text(), QStringLiteral("w"));
+        QVERIFY(!table->horizontalHeaderItem(2)->toolTip().isEmpty());
+        const auto column = [table] {
+            QStringList texts;
+            for (int i = 0; i < table->rowCount(); ++i)
+                texts << table->item(i, 2)->text();
+            return texts.join(QStringLiteral(", "));
+        };
+        QCOMPARE(column(), QStringLiteral("1, 1, 2"));
+        const std::vector<Point> points = tab.pointEditor()->points();
+        const int undo = tab.undoStack()->count();
+
+        table->item(1, 2)->setText(QStringLiteral("3/2"));
+        QCOMPARE(tab.model().weights, weightList({{1, 1}, {3, 2}, {2, 1}}));
+        QCOMPARE(tab.scene().exact.weights, tab.model().weights);
+        QCOMPARE(field->text(), QStringLiteral("1, 3/2, 2"));
+        QCOMPARE(column(), QStringLiteral("1, 3/2, 2"));
+        QCOMPARE(tab.pointEditor()->points(), points);
+        QCOMPARE(tab.undoStack()->count(), undo + 1);
+        tab.undoStack()->undo();
+        QCOMPARE(tab.model().weights, weightList({{1, 1}, {1, 1}, {2, 1}}));
+        QCOMPARE(tab.scene().exact.weights, tab.model().weights);
+        QCOMPARE(field->text(), QStringLiteral("1, 1, 2"));
+        QCOMPARE(column(), QStringLiteral("1, 1, 2"));
+
+        // A decimal is read exactly: 0.7 is 7/10.
+        table->item(0, 2)->setText(QStringLiteral("0.7"));
+        QCOMPARE(tab.model().weights, weightList({{7, 10}, {1, 1}, {2, 1}}));
+        QCOMPARE(column(), QStringLiteral("7/10, 1, 2"));
+        tab.undoStack()->undo();
+
+        QSignalSpy messages(&tab, &BSplineTab::statusMessage);
+        const int commands = tab.undoStack()->count(), at = tab.undoStack()->index(); // 0.7 is there to redo
+        const QStringList refused = {QStringLiteral("0"), QStringLiteral("-1"), QStringLiteral("abc"), QStringLiteral("√2/2"),
+                                     QString()};
+        for (const QString& text : refused) {
+            table->item(1, 2)->setText(text);
+            QCOMPARE(tab.model().weights, weightList({{1, 1}, {1, 1}, {2, 1}}));
+            QCOMPARE(tab.undoStack()->count(), commands);
+            QCOMPARE(tab.undoStack()->index(), at);
+            QCOMPARE(table->item(1, 2)->text(), QStringLiteral("1"));
+            QCOMPARE(field->text(), QStringLiteral("1, 1, 2"));
+        }
+        QCOMPARE(messages.count(), static_cast<int>(refused.size()));
+        // The x and y columns still edit the points.
+        table->item(2, 0)->setText(QStringLiteral("1/2"));
+        QCOMPARE(tab.pointEditor()->points()[2], (Point{0.5, 1}));
+        QCOMPARE(tab.model().weights, weightList({{1, 1}, {1, 1}, {2, 1}}));
+    }
+
+    // A polynomial curve shows 1 in every row; typing 2 in P₀'s row makes it rational with 1 at
+    // every other point (as stepWeight does), one undo step; typing 1 changes nothing.
+    void weightTypedInThePolynomialCurvesTable()
+    {
+        BSplineTab tab;
+        showWeightsTab(tab);
+        QVERIFY(tab.model().weights.empty());
+        PointTable* table = tab.pointTable();
+        QCOMPARE(table->rowCount(), 6);
+        for (int i = 0; i < table->rowCount(); ++i)
+            QCOMPARE(table->item(i, 2)->text(), QStringLiteral("1"));
+        const int undo = tab.undoStack()->count();
+        table->item(0, 2)->setText(QStringLiteral("1"));
+        QVERIFY(tab.model().weights.empty());
+        QCOMPARE(tab.undoStack()->count(), undo);
+        table->item(0, 2)->setText(QStringLiteral("2"));
+        QCOMPARE(tab.model().weights, weightList({{2, 1}, {1, 1}, {1, 1}, {1, 1}, {1, 1}, {1, 1}}));
+        QVERIFY(tab.scene().curve.rational());
+        QCOMPARE(tab.undoStack()->count(), undo + 1);
+        QCOMPARE(table->item(0, 2)->text(), QStringLiteral("2"));
+        tab.undoStack()->undo();
+        QVERIFY(tab.model().weights.empty());
+        QCOMPARE(table->item(0, 2)->text(), QStringLiteral("1"));
     }
 
     void weightOfAPolynomialCurve()

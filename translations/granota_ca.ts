@@ -6160,10 +6160,6 @@ Ja no és al disc.</translation>
             <translation>Corba &amp;homogènia (wx, wy, w)</translation>
         </message>
         <message>
-            <source>Keys: ] and [ select a point, the arrows nudge it (Shift: ten times more), + and − change its weight, Delete removes it; Tab leaves the canvas.</source>
-            <translation>Tecles: ] i [ seleccionen un punt, les fletxes el mouen una mica (Maj: deu vegades més), + i − en canvien el pes, Supr l&apos;elimina; Tab surt del llenç.</translation>
-        </message>
-        <message>
             <source>Plot the basis functions</source>
             <translation>Mostra les funcions de base</translation>
         </message>
@@ -6206,6 +6202,18 @@ Ja no és al disc.</translation>
         <message>
             <source>κ(s) of the curve; the light vertical lines are its interior knots, each labelled with the continuity there.</source>
             <translation>κ(s) de la corba; les línies verticals clares són els nusos interiors, cadascun amb la continuïtat que hi té.</translation>
+        </message>
+        <message>
+            <source>Keys: ] and [ pick a point, arrows nudge it (Shift: ×10), + and − change its weight, Delete removes it; Tab leaves the canvas.</source>
+            <translation>Tecles: ] i [ trien un punt, les fletxes el mouen (Maj: ×10), + i − en canvien el pes, Supr l&apos;elimina; Tab surt del llenç.</translation>
+        </message>
+        <message>
+            <source>The weight wᵢ of each point (a rational B-spline when not all are 1)</source>
+            <translation>El pes wᵢ de cada punt (una B-spline racional quan no tots valen 1)</translation>
+        </message>
+        <message>
+            <source>“%1” is not a weight: type a decimal (0.7) or a fraction (3/2) greater than 0.</source>
+            <translation>«%1» no és un pes: escriviu un decimal (0,7) o una fracció (3/2) més gran que 0.</translation>
         </message>
     </context>
     <context>

@@ -6160,10 +6160,6 @@ It is no longer on disk.</translation>
             <translation>Homo&amp;geneous curve (wx, wy, w)</translation>
         </message>
         <message>
-            <source>Keys: ] and [ select a point, the arrows nudge it (Shift: ten times more), + and − change its weight, Delete removes it; Tab leaves the canvas.</source>
-            <translation>Keys: ] and [ select a point, the arrows nudge it (Shift: ten times more), + and − change its weight, Delete removes it; Tab leaves the canvas.</translation>
-        </message>
-        <message>
             <source>Plot the basis functions</source>
             <translation>Plot the basis functions</translation>
         </message>
@@ -6206,6 +6202,18 @@ It is no longer on disk.</translation>
         <message>
             <source>κ(s) of the curve; the light vertical lines are its interior knots, each labelled with the continuity there.</source>
             <translation>κ(s) of the curve; the light vertical lines are its interior knots, each labelled with the continuity there.</translation>
+        </message>
+        <message>
+            <source>Keys: ] and [ pick a point, arrows nudge it (Shift: ×10), + and − change its weight, Delete removes it; Tab leaves the canvas.</source>
+            <translation>Keys: ] and [ pick a point, arrows nudge it (Shift: ×10), + and − change its weight, Delete removes it; Tab leaves the canvas.</translation>
+        </message>
+        <message>
+            <source>The weight wᵢ of each point (a rational B-spline when not all are 1)</source>
+            <translation>The weight wᵢ of each point (a rational B-spline when not all are 1)</translation>
+        </message>
+        <message>
+            <source>“%1” is not a weight: type a decimal (0.7) or a fraction (3/2) greater than 0.</source>
+            <translation>“%1” is not a weight: type a decimal (0.7) or a fraction (3/2) greater than 0.</translation>
         </message>
     </context>
     <context>

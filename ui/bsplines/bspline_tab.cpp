@@ -9,6 +9,7 @@
 #include "ui/bsplines/bspline_report.h"
 #include "ui/bsplines/knot_ruler.h"
 #include "ui/bsplines/weight_gesture.h"
+#include "ui/bsplines/weight_text.h"
 #include "ui/common/curve_canvas.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/number_text.h"
@@ -208,22 +209,13 @@ void BSplineTab::buildUi()
     connect(m_weightsEdit, &QLineEdit::editingFinished, this, [this] {
         if (m_syncing)
             return;
-        std::vector<Rational> w;
-        const QString text = m_weightsEdit->text().trimmed();
-        bool ok = true;
-        if (!text.isEmpty())
-            for (const QString& part : text.split(QLatin1Char(','))) {
-                const auto q = parseRational(typedToC(part.trimmed()).toStdString());
-                ok = ok && q.has_value();
-                if (q)
-                    w.push_back(*q);
-            }
-        if (!ok) {
+        const auto w = parseTypedWeights(m_weightsEdit->text());
+        if (!w) {
             refuse(tr("Weights are numbers separated by commas, such as 1, 1, 2 or 1, 1/2, 1; empty for none."));
             syncControls();
             return;
         }
-        if (!setWeights(w))
+        if (!setWeights(*w))
             syncControls();
     });
     connect(m_netCheck, &QCheckBox::toggled, this, [this](bool on) {
@@ -282,6 +274,17 @@ void BSplineTab::buildUi()
 
     m_exact = new ExactPanel(this);
     m_table = new PointTable(m_editor, this);
+    // The w column: each point's weight, typed as in the weights field (weight_text.h).
+    m_table->setExtraColumn(
+        QStringLiteral("w"), [this](int row) { return weightText(weightOf(row)); },
+        [this](int row, const QString& text) {
+            const auto w = parseTypedWeight(text);
+            if (!w) {
+                refuse(tr("“%1” is not a weight: type a decimal (0.7) or a fraction (3/2) greater than 0.").arg(text.trimmed()));
+                return false;
+            }
+            return setWeight(row, *w);
+        });
     m_sideTabs = new QTabWidget(this);
     m_sideTabs->addTab(m_exact, QString());
     m_sideTabs->addTab(m_table, QString());
@@ -338,8 +341,8 @@ QString BSplineTab::keyboardHint() const
     if (m_ruler && m_ruler->hasFocus())
         return tr("Ruler keys: Left/Right select a knot, Shift+Left/Right move it, Insert inserts a knot at u, Delete "
                   "removes the selected knot; Tab leaves the ruler.");
-    return tr("Keys: ] and [ select a point, the arrows nudge it (Shift: ten times more), + and − change its weight, "
-              "Delete removes it; Tab leaves the canvas.");
+    return tr("Keys: ] and [ pick a point, arrows nudge it (Shift: ×10), + and − change its weight, Delete removes it; "
+              "Tab leaves the canvas.");
 }
 
 void BSplineTab::retranslate()
@@ -413,6 +416,7 @@ void BSplineTab::retranslate()
     m_sideTabs->setTabText(1, tr("Points"));
     m_sideTabs->setTabToolTip(0, m_exact->toolTip());
     m_sideTabs->setTabToolTip(1, tr("The control points P0…Pn as numbers; fractions such as 1/3 are accepted."));
+    m_table->setExtraColumnToolTip(tr("The weight wᵢ of each point (a rational B-spline when not all are 1)"));
     m_table->retranslate();
     setPlaying(isPlaying());
     syncControls();
@@ -428,7 +432,7 @@ void BSplineTab::syncControls()
     m_presetCombo->setCurrentIndex(edited ? 3 : static_cast<int>(m_model.preset));
     QStringList w;
     for (const Rational& q : m_model.weightsFor(count))
-        w << displayText(toString(q));
+        w << weightText(q);
     if (!m_weightsEdit->hasFocus())
         m_weightsEdit->setText(w.join(QStringLiteral(", ")));
     m_netCheck->setChecked(m_model.net);
@@ -508,6 +512,7 @@ void BSplineTab::applyModel(const BSplineModel& m)
     m_model = m;
     m_previousPolygon.clear();
     recompute();
+    m_table->refreshExtraColumn(); // the weights, as the field shows them (syncControls)
 }
 
 void BSplineTab::refuse(const QString& message)

@@ -75,6 +75,11 @@ public:
     bool elevateDegree();
     /// The weights (n + 1 of them, each > 0), or none (polynomial).
     bool setWeights(const std::vector<Rational>& weights);
+    /// Point `index`'s weight as typed in the table's w column (> 0); the other weights stay
+    /// (1 each if there were none). Each change is one undo step.
+    bool setWeight(int index, const Rational& weight);
+    /// The weight of point `index` in force (1 on a polynomial curve).
+    Rational weightOf(int index) const;
     /// Point `index`'s weight by `steps` notches (weight_gesture.h: ×2^(±1/4) each, two
     /// significant digits, exact); the other weights stay (1 each if there were none).
     /// Consecutive changes of one point are one undo step.

@@ -238,6 +238,34 @@ bool BSplineTab::setWeights(const std::vector<Rational>& weights)
     return true;
 }
 
+Rational BSplineTab::weightOf(int index) const
+{
+    const auto i = static_cast<std::size_t>(index);
+    return m_model.weights.size() == m_editor->points().size() && i < m_model.weights.size() ? m_model.weights[i] : Rational(1);
+}
+
+bool BSplineTab::setWeight(int index, const Rational& weight)
+{
+    const int count = static_cast<int>(m_editor->points().size());
+    if (index < 0 || index >= count)
+        return false;
+    if (!(weight > 0)) {
+        refuse(tr("A weight must be positive, not %1.").arg(rationalText(weight)));
+        return false;
+    }
+    if (weight == weightOf(index))
+        return true; // as it is: a polynomial curve stays polynomial for a typed 1
+    // As stepWeight does: a polynomial curve becomes rational with 1 at every other point.
+    std::vector<Rational> weights = m_model.weightsFor(count);
+    if (weights.empty())
+        weights.assign(static_cast<std::size_t>(count), Rational(1));
+    weights[static_cast<std::size_t>(index)] = weight;
+    BSplineModel after = m_model;
+    after.weights = weights;
+    changeModel(after, tr("Change the weight of P%1").arg(index)); // no merge id: each typed weight is one undo step
+    return true;
+}
+
 bool BSplineTab::stepWeight(int index, int steps)
 {
     const int count = static_cast<int>(m_editor->points().size());

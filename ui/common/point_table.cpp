@@ -8,8 +8,10 @@
 #include <QEvent>
 #include <QHeaderView>
 #include <QSignalBlocker>
+#include <QStringList>
 
 #include <cmath>
+#include <utility>
 
 namespace granota::ui {
 
@@ -40,9 +42,46 @@ PointTable::PointTable(PointEditor* editor, QWidget* parent) : QTableWidget(pare
 
 void PointTable::retranslate()
 {
-    setHorizontalHeaderLabels({tr("x"), tr("y")});
+    setHeaders();
     setToolTip(tr("The points as numbers: type a decimal or a fraction such as 1/3."));
     refresh();
+}
+
+void PointTable::setHeaders()
+{
+    QStringList labels{tr("x"), tr("y")};
+    if (hasExtraColumn())
+        labels << m_extraHeader;
+    setColumnCount(static_cast<int>(labels.size()));
+    setHorizontalHeaderLabels(labels);
+    if (QTableWidgetItem* header = hasExtraColumn() ? horizontalHeaderItem(kExtraColumn) : nullptr)
+        header->setToolTip(m_extraToolTip);
+}
+
+void PointTable::setExtraColumn(const QString& header, ExtraText text, ExtraEdit edit)
+{
+    m_extraHeader = header;
+    m_extraText = std::move(text);
+    m_extraEdit = std::move(edit);
+    setHeaders();
+    refresh();
+}
+
+void PointTable::setExtraColumnToolTip(const QString& toolTip)
+{
+    m_extraToolTip = toolTip;
+    setHeaders();
+}
+
+void PointTable::refreshExtraColumn()
+{
+    if (!hasExtraColumn())
+        return;
+    const bool refreshing = std::exchange(m_refreshing, true);
+    for (int i = 0; i < rowCount(); ++i)
+        if (QTableWidgetItem* cell = item(i, kExtraColumn))
+            cell->setText(m_extraText(i));
+    m_refreshing = refreshing;
 }
 
 ColumnNotation PointTable::notation(int column) const
@@ -59,6 +98,8 @@ ColumnNotation PointTable::notation(int column) const
 
 QString PointTable::cellText(int row, int column) const
 {
+    if (column == kExtraColumn)
+        return m_extraText(row);
     const auto i = static_cast<std::size_t>(row);
     const Point& p = m_editor->points()[i];
     const ExactPoint& q = m_editor->exactAt(i);
@@ -84,6 +125,7 @@ void PointTable::refresh()
         return;
     }
     const int rows = static_cast<int>(points.size());
+    const int columns = columnCount();
     setRowCount(rows);
     {
         // The views hear of the new labels and texts once, below: told of each row's label
@@ -92,7 +134,7 @@ void PointTable::refresh()
         const QSignalBlocker quiet(model());
         for (int i = 0; i < rows; ++i) {
             setVerticalHeaderItem(i, new QTableWidgetItem(QStringLiteral("%1%2").arg(m_editor->labelPrefix()).arg(i)));
-            for (int c = 0; c < 2; ++c) {
+            for (int c = 0; c < columns; ++c) {
                 QTableWidgetItem* cell = item(i, c);
                 if (!cell) {
                     cell = new QTableWidgetItem;
@@ -105,7 +147,7 @@ void PointTable::refresh()
     }
     if (rows > 0) {
         emit model()->headerDataChanged(Qt::Vertical, 0, rows - 1);
-        emit model()->dataChanged(model()->index(0, 0), model()->index(rows - 1, 1));
+        emit model()->dataChanged(model()->index(0, 0), model()->index(rows - 1, columns - 1));
     }
     m_refreshing = false;
 }
@@ -114,6 +156,11 @@ void PointTable::cellEdited(int row, int column)
 {
     if (m_refreshing)
         return;
+    if (column == kExtraColumn) {
+        m_extraEdit(row, item(row, column)->text());
+        refreshExtraColumn(); // the value in force, refused or not (a typed "2.0" reads "2")
+        return;
+    }
     const QString text = item(row, column)->text().trimmed();
     const auto q = parseTypedRational(text);
     const double v = q ? toDouble(*q) : std::nan("");

@@ -8,10 +8,14 @@
 /// such as 1/3 and all are small fractions, else decimals for all — an exact value's decimal
 /// expansion (a typed 0.05688 is 0.05688, 0.1 nudged by 0.01 is 0.11), a repeating one to 16
 /// digits, and a value without an exact form the shortest that reads back as its double.
+/// A tab may add one more column after x and y (setExtraColumn: the B-spline tab's weights),
+/// whose texts and edits are the tab's; the table only shows them and hands typed text over.
 
 #include "core/exact/number_column.h"
 
 #include <QTableWidget>
+
+#include <functional>
 
 namespace granota::ui {
 
@@ -25,6 +29,18 @@ public:
     /// The notation column 0 (x) or 1 (y) is shown in.
     ColumnNotation columnShown(int column) const { return m_notation[column]; }
 
+    /// A third column headed `header` (column 2): row i shows text(i); a text typed into it is
+    /// given to edit(i, text), which makes the change (and says why not: the table does not)
+    /// and returns false when it refuses. After an edit the column shows text(i) again.
+    using ExtraText = std::function<QString(int row)>;
+    using ExtraEdit = std::function<bool(int row, const QString& text)>;
+    void setExtraColumn(const QString& header, ExtraText text, ExtraEdit edit);
+    /// The extra column's header tooltip (in the language in use: the tab sets it again).
+    void setExtraColumnToolTip(const QString& toolTip);
+    /// Shows text(i) in every row of the extra column again (its values changed, not the points).
+    void refreshExtraColumn();
+    bool hasExtraColumn() const { return static_cast<bool>(m_extraText); }
+
 signals:
     void message(const QString& text);
 
@@ -37,10 +53,17 @@ private:
     void cellEdited(int row, int column);
     ColumnNotation notation(int column) const;
     QString cellText(int row, int column) const;
+    /// Sets the header labels (x, y and the extra column's) and the extra header's tooltip.
+    void setHeaders();
 
     PointEditor* m_editor;
     bool m_refreshing = false;
     ColumnNotation m_notation[2] = {ColumnNotation::Decimals, ColumnNotation::Decimals};
+    static constexpr int kExtraColumn = 2;
+    QString m_extraHeader;
+    QString m_extraToolTip;
+    ExtraText m_extraText;
+    ExtraEdit m_extraEdit;
 };
 
 } // namespace granota::ui
