@@ -6616,11 +6616,11 @@ Ja no és al disc.</translation>
         </message>
         <message>
             <source>Example: t&amp;he frog&apos;s outline points</source>
-            <translation>Exemple: punts del c&amp;ontorn de la granota</translation>
+            <translation>Exemple: punts de la silueta de la gran&amp;ota</translation>
         </message>
         <message>
             <source>Frog outline example</source>
-            <translation>Exemple del contorn de la granota</translation>
+            <translation>Exemple de la silueta de la granota</translation>
         </message>
         <message>
             <source>Function data</source>
@@ -6628,7 +6628,7 @@ Ja no és al disc.</translation>
         </message>
         <message>
             <source>The frog body&apos;s vertices at rest, closed: the C² spline against the Catmull-Rom outline of §4.12.</source>
-            <translation>Els vèrtexs del cos de la granota en repòs, tancats: l&apos;spline C² davant del contorn de Catmull-Rom del §4.12.</translation>
+            <translation>Els vèrtexs del cos de la granota en repòs, tancats: l&apos;spline C² davant de la silueta de Catmull-Rom del §4.12.</translation>
         </message>
         <message>
             <source>d3-shape #38 example</source>
