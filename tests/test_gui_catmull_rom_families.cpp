@@ -327,6 +327,70 @@ private slots:
         QVERIFY2(csv.contains(QStringLiteral("\nfamily,segment,t,x,y\nkochanek-bartels,1,0,1,1\n")), qPrintable(csv.left(400)));
     }
 
+    // T, C, B follow their points (issue 37): C = 1/2 at q2 alone on five points; deleting q1
+    // leaves it on the old q2, now q1; inserting a point between q0 and q1 moves it to q3 and
+    // gives the new point (0, 0, 0); each undo restores the values exactly, with the points.
+    void tcbFollowsItsPointThroughDeletionAndInsertion()
+    {
+        CatmullRomTab tab;
+        tab.pointEditor()->setPoints({{0, 0}, {1, 2}, {2, 0}, {3, 2}, {4, 0}}, QStringLiteral("five"));
+        tab.setFamily(CurveFamily::KochanekBartels);
+        tab.pointEditor()->setSelected(2);
+        tab.setTcb(1, frac(1, 2));
+        const auto continuities = [&tab] {
+            std::vector<Rational> c;
+            for (std::size_t i = 0; i < tab.pointEditor()->points().size(); ++i)
+                c.push_back(tcbAt(tab.settings(), i).continuity);
+            return c;
+        };
+        const Rational h = frac(1, 2);
+        const std::vector<Rational> start{0, 0, h, 0, 0};
+        QVERIFY(continuities() == start);
+        const int count = tab.undoStack()->count();
+        tab.pointEditor()->removePoint(1);
+        QVERIFY(continuities() == (std::vector<Rational>{0, h, 0, 0}));
+        QCOMPARE(tab.undoStack()->count(), count + 1); // the points and their values: one step
+        tab.undoStack()->undo();
+        QVERIFY(continuities() == start);
+        QCOMPARE(tab.pointEditor()->points().size(), std::size_t(5));
+        tab.undoStack()->redo();
+        QVERIFY(continuities() == (std::vector<Rational>{0, h, 0, 0}));
+        tab.undoStack()->undo();
+        tab.pointEditor()->insertPoint(1, Point{0.5, 1});
+        QVERIFY(continuities() == (std::vector<Rational>{0, 0, 0, h, 0, 0}));
+        const TcbKnot<Rational> added = tcbAt(tab.settings(), 1);
+        QVERIFY(added.tension == 0 && added.continuity == 0 && added.bias == 0);
+        tab.undoStack()->undo();
+        QVERIFY(continuities() == start);
+        QCOMPARE(tab.pointEditor()->points().size(), std::size_t(5));
+    }
+
+    // The Hermite tangents follow their points too: the tangent set at q2 stays with that point
+    // when q1 is deleted; a point inserted between q0 = (0,0) and q1 = (1,2) at (1/2, 1) gets the
+    // Catmull-Rom tangent there, τ(q2 − q0) = ½((1,2) − (0,0)) = (1/2, 1) with the new neighbours
+    // (τ = 1/2, uniform); undo restores every tangent exactly.
+    void hermiteTangentsFollowTheirPoints()
+    {
+        CatmullRomTab tab;
+        tab.pointEditor()->setPoints({{0, 0}, {1, 2}, {2, 0}, {3, 2}, {4, 0}}, QStringLiteral("five"));
+        tab.setFamily(CurveFamily::Hermite);
+        tab.setHermiteTangent(2, Point{7, -3});
+        const std::vector<Point> before = tab.settings().hermiteTangents;
+        QCOMPARE(before.size(), std::size_t(5));
+        tab.pointEditor()->removePoint(1);
+        QVERIFY(tab.settings().hermiteTangents == (std::vector<Point>{before[0], before[2], before[3], before[4]}));
+        QVERIFY(nearPoint(tab.scene().family.tangents[1].out, Point{7, -3}));
+        tab.undoStack()->undo();
+        QVERIFY(tab.settings().hermiteTangents == before);
+        tab.pointEditor()->insertPoint(1, Point{0.5, 1});
+        const std::vector<Point>& t = tab.settings().hermiteTangents;
+        QCOMPARE(t.size(), std::size_t(6));
+        QVERIFY(nearPoint(t[1], Point{0.5, 1}));
+        QVERIFY(t[0] == before[0] && t[2] == before[1] && t[3] == before[2] && t[4] == before[3] && t[5] == before[4]);
+        tab.undoStack()->undo();
+        QVERIFY(tab.settings().hermiteTangents == before);
+    }
+
     void familySavedAndRead()
     {
         for (CurveFamily f : kCurveFamilies) {
