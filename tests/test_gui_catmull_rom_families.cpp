@@ -8,6 +8,7 @@
 #include "ui/catmull_rom/hermite_handles.h"
 #include "ui/catmull_rom/knot_continuity_table.h"
 #include "ui/common/curve_canvas.h"
+#include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
 #include "gui_timeouts.h"
 
@@ -389,6 +390,35 @@ private slots:
         QVERIFY(t[0] == before[0] && t[2] == before[1] && t[3] == before[2] && t[4] == before[3] && t[5] == before[4]);
         tab.undoStack()->undo();
         QVERIFY(tab.settings().hermiteTangents == before);
+    }
+
+    // The exact panel describes the family's curve, not the τ curves: on the closed
+    // triangle with C = 1/2 it lists at q1 the tangents in (1, −1/2) and out (1, 1/2) (worked by
+    // hand above, kbContinuityHalfSplitsTheTangents) as exact fractions, and no Catmull-Rom
+    // section (Prop 2.3's "Tangents at the knots"); the Bézier control point b₁ of the segment
+    // q1 → q2 is q1 + out/3 = (1, 1) + (1/3, 1/6) = (4/3, 7/6) (hermite_segment.h's rule, by hand).
+    void exactPanelDescribesTheFamily()
+    {
+        CatmullRomTab tab;
+        QString error;
+        QVERIFY2(tab.loadState(closedTriangle(tab), &error), qPrintable(error));
+        ExactPanel* panel = tab.findChild<ExactPanel*>();
+        QVERIFY(panel);
+        QVERIFY(panel->plainText().contains(QStringLiteral("Prop 2.3")));
+        tab.setFamily(CurveFamily::KochanekBartels);
+        tab.familyPanel()->allKnotsCheck()->setChecked(true);
+        tab.familyPanel()->tcbSlider(1)->setValue(10); // C = 1/2
+        const QString text = panel->plainText();
+        QVERIFY2(text.contains(curveFamilyName(CurveFamily::KochanekBartels)), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("(1, -1/2)")) && text.contains(QStringLiteral("(1, 1/2)")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("(4/3, 7/6)")), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("Prop 2.3")), qPrintable(text));
+        // Every other family names itself too, and none shows the Catmull-Rom sections.
+        for (CurveFamily f : {CurveFamily::Cardinal, CurveFamily::Hermite, CurveFamily::PlaneSpline, CurveFamily::FunctionData}) {
+            tab.setFamily(f);
+            QVERIFY2(panel->plainText().contains(curveFamilyName(f)), qPrintable(panel->plainText()));
+            QVERIFY2(!panel->plainText().contains(QStringLiteral("Prop 2.3")), qPrintable(panel->plainText()));
+        }
     }
 
     void familySavedAndRead()

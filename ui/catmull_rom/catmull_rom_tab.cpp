@@ -8,6 +8,7 @@
 #include "ui/catmull_rom/catmull_rom_plot.h"
 #include "ui/catmull_rom/catmull_rom_report.h"
 #include "ui/catmull_rom/family_panel.h"
+#include "ui/catmull_rom/family_report.h"
 #include "ui/catmull_rom/spline_family_panels.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_legend.h"
@@ -654,8 +655,11 @@ void CatmullRomTab::recompute()
     m_scene = computeScene(m_editor->points(), m_settings);
     updateFamilyViews();
     m_splinePanels->showState(m_settings, m_scene, m_editor->points());
-    m_exact->setContent(
-        CatmullRomReport::html(m_editor->points(), m_settings, m_scene, computeAnalysis(m_editor->allExactPoints(), m_settings)));
+    // The panel describes the curve drawn: the family's own when it is not Catmull-Rom.
+    m_exact->setContent(m_settings.family != CurveFamily::CatmullRom
+                            ? FamilyReport::html(m_editor->points(), m_editor->allExactPoints(), m_settings, m_scene)
+                            : CatmullRomReport::html(m_editor->points(), m_settings, m_scene,
+                                                     computeAnalysis(m_editor->allExactPoints(), m_settings)));
     updatePlot();
     m_canvas->update();
     updateCanvasSummary();
