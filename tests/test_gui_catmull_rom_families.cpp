@@ -8,6 +8,7 @@
 #include "ui/catmull_rom/hermite_handles.h"
 #include "ui/catmull_rom/knot_continuity_table.h"
 #include "ui/common/curve_canvas.h"
+#include "ui/common/exact_panel.h"
 #include "ui/common/point_editor.h"
 #include "gui_timeouts.h"
 
@@ -325,6 +326,99 @@ private slots:
         // The CSV has the family's samples after the τ curves': the first is q0 = (1, 1) at t = 0.
         const QString csv = tab.csv();
         QVERIFY2(csv.contains(QStringLiteral("\nfamily,segment,t,x,y\nkochanek-bartels,1,0,1,1\n")), qPrintable(csv.left(400)));
+    }
+
+    // T, C, B follow their points (issue 37): C = 1/2 at q2 alone on five points; deleting q1
+    // leaves it on the old q2, now q1; inserting a point between q0 and q1 moves it to q3 and
+    // gives the new point (0, 0, 0); each undo restores the values exactly, with the points.
+    void tcbFollowsItsPointThroughDeletionAndInsertion()
+    {
+        CatmullRomTab tab;
+        tab.pointEditor()->setPoints({{0, 0}, {1, 2}, {2, 0}, {3, 2}, {4, 0}}, QStringLiteral("five"));
+        tab.setFamily(CurveFamily::KochanekBartels);
+        tab.pointEditor()->setSelected(2);
+        tab.setTcb(1, frac(1, 2));
+        const auto continuities = [&tab] {
+            std::vector<Rational> c;
+            for (std::size_t i = 0; i < tab.pointEditor()->points().size(); ++i)
+                c.push_back(tcbAt(tab.settings(), i).continuity);
+            return c;
+        };
+        const Rational h = frac(1, 2);
+        const std::vector<Rational> start{0, 0, h, 0, 0};
+        QVERIFY(continuities() == start);
+        const int count = tab.undoStack()->count();
+        tab.pointEditor()->removePoint(1);
+        QVERIFY(continuities() == (std::vector<Rational>{0, h, 0, 0}));
+        QCOMPARE(tab.undoStack()->count(), count + 1); // the points and their values: one step
+        tab.undoStack()->undo();
+        QVERIFY(continuities() == start);
+        QCOMPARE(tab.pointEditor()->points().size(), std::size_t(5));
+        tab.undoStack()->redo();
+        QVERIFY(continuities() == (std::vector<Rational>{0, h, 0, 0}));
+        tab.undoStack()->undo();
+        tab.pointEditor()->insertPoint(1, Point{0.5, 1});
+        QVERIFY(continuities() == (std::vector<Rational>{0, 0, 0, h, 0, 0}));
+        const TcbKnot<Rational> added = tcbAt(tab.settings(), 1);
+        QVERIFY(added.tension == 0 && added.continuity == 0 && added.bias == 0);
+        tab.undoStack()->undo();
+        QVERIFY(continuities() == start);
+        QCOMPARE(tab.pointEditor()->points().size(), std::size_t(5));
+    }
+
+    // The Hermite tangents follow their points too: the tangent set at q2 stays with that point
+    // when q1 is deleted; a point inserted between q0 = (0,0) and q1 = (1,2) at (1/2, 1) gets the
+    // Catmull-Rom tangent there, τ(q2 − q0) = ½((1,2) − (0,0)) = (1/2, 1) with the new neighbours
+    // (τ = 1/2, uniform); undo restores every tangent exactly.
+    void hermiteTangentsFollowTheirPoints()
+    {
+        CatmullRomTab tab;
+        tab.pointEditor()->setPoints({{0, 0}, {1, 2}, {2, 0}, {3, 2}, {4, 0}}, QStringLiteral("five"));
+        tab.setFamily(CurveFamily::Hermite);
+        tab.setHermiteTangent(2, Point{7, -3});
+        const std::vector<Point> before = tab.settings().hermiteTangents;
+        QCOMPARE(before.size(), std::size_t(5));
+        tab.pointEditor()->removePoint(1);
+        QVERIFY(tab.settings().hermiteTangents == (std::vector<Point>{before[0], before[2], before[3], before[4]}));
+        QVERIFY(nearPoint(tab.scene().family.tangents[1].out, Point{7, -3}));
+        tab.undoStack()->undo();
+        QVERIFY(tab.settings().hermiteTangents == before);
+        tab.pointEditor()->insertPoint(1, Point{0.5, 1});
+        const std::vector<Point>& t = tab.settings().hermiteTangents;
+        QCOMPARE(t.size(), std::size_t(6));
+        QVERIFY(nearPoint(t[1], Point{0.5, 1}));
+        QVERIFY(t[0] == before[0] && t[2] == before[1] && t[3] == before[2] && t[4] == before[3] && t[5] == before[4]);
+        tab.undoStack()->undo();
+        QVERIFY(tab.settings().hermiteTangents == before);
+    }
+
+    // The exact panel describes the family's curve, not the τ curves: on the issue's closed
+    // triangle with C = 1/2 it lists at q1 the tangents in (1, −1/2) and out (1, 1/2) (worked by
+    // hand above, kbContinuityHalfSplitsTheTangents) as exact fractions, and no Catmull-Rom
+    // section (Prop 2.3's "Tangents at the knots"); the Bézier control point b₁ of the segment
+    // q1 → q2 is q1 + out/3 = (1, 1) + (1/3, 1/6) = (4/3, 7/6) (hermite_segment.h's rule, by hand).
+    void exactPanelDescribesTheFamily()
+    {
+        CatmullRomTab tab;
+        QString error;
+        QVERIFY2(tab.loadState(closedTriangle(tab), &error), qPrintable(error));
+        ExactPanel* panel = tab.findChild<ExactPanel*>();
+        QVERIFY(panel);
+        QVERIFY(panel->plainText().contains(QStringLiteral("Prop 2.3")));
+        tab.setFamily(CurveFamily::KochanekBartels);
+        tab.familyPanel()->allKnotsCheck()->setChecked(true);
+        tab.familyPanel()->tcbSlider(1)->setValue(10); // C = 1/2
+        const QString text = panel->plainText();
+        QVERIFY2(text.contains(curveFamilyName(CurveFamily::KochanekBartels)), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("(1, -1/2)")) && text.contains(QStringLiteral("(1, 1/2)")), qPrintable(text));
+        QVERIFY2(text.contains(QStringLiteral("(4/3, 7/6)")), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("Prop 2.3")), qPrintable(text));
+        // Every other family names itself too, and none shows the Catmull-Rom sections.
+        for (CurveFamily f : {CurveFamily::Cardinal, CurveFamily::Hermite, CurveFamily::PlaneSpline, CurveFamily::FunctionData}) {
+            tab.setFamily(f);
+            QVERIFY2(panel->plainText().contains(curveFamilyName(f)), qPrintable(panel->plainText()));
+            QVERIFY2(!panel->plainText().contains(QStringLiteral("Prop 2.3")), qPrintable(panel->plainText()));
+        }
     }
 
     void familySavedAndRead()

@@ -359,6 +359,57 @@ private slots:
         QVERIFY(plane.contains(QStringLiteral("C2 spline in the plane")));
     }
 
+    // The CSV of the two families: each curve's samples and, for function data, the overshoot
+    // per interval. On d3-shape #38's data the natural spline's third interval [107, 502]
+    // overshoots by about 98 (solved by hand in d3NaturalSplineOvershootsByAbout98), Fritsch–
+    // Carlson by 0 on every interval; the first sample is the first datum (0, 224) at t = 0. The
+    // closed spline through the unit square passes, half way along its first segment, at 11/16
+    // from the centre below the edge (0,0)–(1,0): (1/2, 1/2 − 11/16) = (1/2, −3/16) (the closed
+    // form of closedSplineThroughSquareIsSymmetric).
+    void csvWritesTheFamiliesSamples()
+    {
+        CatmullRomTab tab;
+        tab.setFamily(CurveFamily::FunctionData);
+        tab.splinePanels()->exampleButton()->click();
+        QVERIFY(tab.pointEditor()->points() == kD3Data);
+        const QStringList lines = tab.csv().split(QLatin1Char('\n'));
+        const auto row = [&lines](const QString& start) {
+            for (const QString& line : lines)
+                if (line.startsWith(start))
+                    return line.split(QLatin1Char(','));
+            return QStringList();
+        };
+        QVERIFY2(lines.contains(QStringLiteral("curve,segment,t,x,y")), qPrintable(lines.join(QLatin1Char('\n')).left(600)));
+        QCOMPARE(row(QStringLiteral("natural,1,0,")),
+                 (QStringList{QStringLiteral("natural"), QStringLiteral("1"), QStringLiteral("0"), QStringLiteral("0"),
+                              QStringLiteral("224")}));
+        QVERIFY(lines.contains(QStringLiteral("curve,interval,overshoot")));
+        const QStringList afterHeader = lines.mid(int(lines.indexOf(QStringLiteral("curve,interval,overshoot"))));
+        QStringList natural;
+        for (const QString& line : afterHeader)
+            if (line.startsWith(QStringLiteral("natural,3,")))
+                natural = line.split(QLatin1Char(','));
+        QCOMPARE(natural.size(), 3);
+        QVERIFY2(std::fabs(natural[2].toDouble() - 98) < 1, qPrintable(natural.join(QLatin1Char(','))));
+        for (int i = 1; i <= 6; ++i)
+            QVERIFY(afterHeader.contains(QStringLiteral("fritsch_carlson,%1,0").arg(i)));
+
+        tab.setFamily(CurveFamily::PlaneSpline);
+        tab.pointEditor()->setPoints({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, QStringLiteral("square"));
+        CatmullRomSettings periodic = tab.settings();
+        periodic.planeSpline.ends = ParametricEnds::Periodic;
+        emit tab.splinePanels()->changeRequested(periodic, QStringLiteral("test"));
+        const QStringList plane = tab.csv().split(QLatin1Char('\n'));
+        QStringList middle;
+        for (const QString& line : plane)
+            if (line.startsWith(QStringLiteral("c2-spline,1,0.5,")))
+                middle = line.split(QLatin1Char(','));
+        QCOMPARE(middle.size(), 5);
+        QVERIFY2(std::fabs(middle[3].toDouble() - 0.5) < 1e-9 && std::fabs(middle[4].toDouble() + 3.0 / 16) < 1e-9,
+                 qPrintable(middle.join(QLatin1Char(','))));
+        QVERIFY(plane.contains(QStringLiteral("knot,u")));
+    }
+
     void settingsRoundTripThroughJson()
     {
         PlaneSplineSettings plane;

@@ -6635,4 +6635,70 @@ Ja no és al disc.</translation>
             <translation>Exemple de d3-shape #38</translation>
         </message>
     </context>
+    <context>
+        <name>FamilyReport</name>
+        <message numerus="yes">
+            <source>… and %n more segments.</source>
+            <translation>
+                <numerusform>… i %n segment més.</numerusform>
+                <numerusform>… i %n segments més.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Centripetal and chordal spacing: values in decimals.</source>
+            <translation>Espaiat centrípet o de corda: valors en decimals.</translation>
+        </message>
+        <message>
+            <source>Def 2.8 with the tangents you set: drag the handle at the end of each tangent.</source>
+            <translation>Def. 2.8 amb les tangents que fixeu: arrossegueu la nansa de l&apos;extrem de cada tangent.</translation>
+        </message>
+        <message>
+            <source>Each point has two tangents (Kochanek and Bartels 1984): in ends the segment arriving, out starts the segment leaving; they differ when C ≠ 0, and the curve is then not C¹ there.</source>
+            <translation>Cada punt té dues tangents (Kochanek i Bartels 1984): la d&apos;entrada acaba el segment que hi arriba, la de sortida comença el que en surt; són diferents quan C ≠ 0, i aleshores la corba no és C¹ en aquell punt.</translation>
+        </message>
+        <message>
+            <source>Function data y(x): the natural spline, Catmull-Rom, Fritsch–Carlson and Steffen on the same data, their overshoot shaded on the canvas and measured in their panel. This panel lists the exact tangents and segments of the cardinal, Kochanek–Bartels and Hermite families.</source>
+            <translation>Dades d&apos;una funció y(x): l&apos;spline natural, Catmull-Rom, Fritsch–Carlson i Steffen sobre les mateixes dades, amb el que sobresurten ombrejat al llenç i mesurat al seu quadre. Aquest quadre llista les tangents i els segments exactes de les famílies cardinal, Kochanek–Bartels i Hermite.</translation>
+        </message>
+        <message>
+            <source>Segments as Hermite data (Def 2.8)</source>
+            <translation>Segments com a dades d&apos;Hermite (Def. 2.8)</translation>
+        </message>
+        <message>
+            <source>Segments as cubic Bézier curves</source>
+            <translation>Segments com a corbes de Bézier cúbiques</translation>
+        </message>
+        <message>
+            <source>Tangents at the points</source>
+            <translation>Tangents als punts</translation>
+        </message>
+        <message>
+            <source>The C² spline in the plane (Def 2.1) solves for its tangents: its end conditions and parameters are in its panel, the continuity at every knot in the Knots tab. This panel lists the exact tangents and segments of the cardinal, Kochanek–Bartels and Hermite families.</source>
+            <translation>L&apos;spline C² al pla (Def. 2.1) calcula les seves tangents: les condicions als extrems i els paràmetres són al seu quadre, i la continuïtat a cada nus, a la pestanya Nusos. Aquest quadre llista les tangents i els segments exactes de les famílies cardinal, Kochanek–Bartels i Hermite.</translation>
+        </message>
+        <message>
+            <source>The points or the tangents are not small fractions: values in decimals.</source>
+            <translation>Els punts o les tangents no són fraccions petites: valors en decimals.</translation>
+        </message>
+        <message>
+            <source>The tangent at qᵢ is τ(qᵢ₊₁ − qᵢ₋₁) with τ = (1 − c)/2 = %1 (c = %2).</source>
+            <translation>La tangent a qᵢ és τ(qᵢ₊₁ − qᵢ₋₁) amb τ = (1 − c)/2 = %1 (c = %2).</translation>
+        </message>
+        <message>
+            <source>in</source>
+            <translation>entrada</translation>
+        </message>
+        <message>
+            <source>out</source>
+            <translation>sortida</translation>
+        </message>
+        <message>
+            <source>segment</source>
+            <translation>segment</translation>
+        </message>
+        <message>
+            <source>tangent</source>
+            <translation>tangent</translation>
+        </message>
+    </context>
 </TS>

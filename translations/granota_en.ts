@@ -6635,4 +6635,70 @@ It is no longer on disk.</translation>
             <translation>d3-shape #38 example</translation>
         </message>
     </context>
+    <context>
+        <name>FamilyReport</name>
+        <message numerus="yes">
+            <source>… and %n more segments.</source>
+            <translation>
+                <numerusform>… and %n more segment.</numerusform>
+                <numerusform>… and %n more segments.</numerusform>
+            </translation>
+        </message>
+        <message>
+            <source>Centripetal and chordal spacing: values in decimals.</source>
+            <translation>Centripetal and chordal spacing: values in decimals.</translation>
+        </message>
+        <message>
+            <source>Def 2.8 with the tangents you set: drag the handle at the end of each tangent.</source>
+            <translation>Def 2.8 with the tangents you set: drag the handle at the end of each tangent.</translation>
+        </message>
+        <message>
+            <source>Each point has two tangents (Kochanek and Bartels 1984): in ends the segment arriving, out starts the segment leaving; they differ when C ≠ 0, and the curve is then not C¹ there.</source>
+            <translation>Each point has two tangents (Kochanek and Bartels 1984): in ends the segment arriving, out starts the segment leaving; they differ when C ≠ 0, and the curve is then not C¹ there.</translation>
+        </message>
+        <message>
+            <source>Function data y(x): the natural spline, Catmull-Rom, Fritsch–Carlson and Steffen on the same data, their overshoot shaded on the canvas and measured in their panel. This panel lists the exact tangents and segments of the cardinal, Kochanek–Bartels and Hermite families.</source>
+            <translation>Function data y(x): the natural spline, Catmull-Rom, Fritsch–Carlson and Steffen on the same data, their overshoot shaded on the canvas and measured in their panel. This panel lists the exact tangents and segments of the cardinal, Kochanek–Bartels and Hermite families.</translation>
+        </message>
+        <message>
+            <source>Segments as Hermite data (Def 2.8)</source>
+            <translation>Segments as Hermite data (Def 2.8)</translation>
+        </message>
+        <message>
+            <source>Segments as cubic Bézier curves</source>
+            <translation>Segments as cubic Bézier curves</translation>
+        </message>
+        <message>
+            <source>Tangents at the points</source>
+            <translation>Tangents at the points</translation>
+        </message>
+        <message>
+            <source>The C² spline in the plane (Def 2.1) solves for its tangents: its end conditions and parameters are in its panel, the continuity at every knot in the Knots tab. This panel lists the exact tangents and segments of the cardinal, Kochanek–Bartels and Hermite families.</source>
+            <translation>The C² spline in the plane (Def 2.1) solves for its tangents: its end conditions and parameters are in its panel, the continuity at every knot in the Knots tab. This panel lists the exact tangents and segments of the cardinal, Kochanek–Bartels and Hermite families.</translation>
+        </message>
+        <message>
+            <source>The points or the tangents are not small fractions: values in decimals.</source>
+            <translation>The points or the tangents are not small fractions: values in decimals.</translation>
+        </message>
+        <message>
+            <source>The tangent at qᵢ is τ(qᵢ₊₁ − qᵢ₋₁) with τ = (1 − c)/2 = %1 (c = %2).</source>
+            <translation>The tangent at qᵢ is τ(qᵢ₊₁ − qᵢ₋₁) with τ = (1 − c)/2 = %1 (c = %2).</translation>
+        </message>
+        <message>
+            <source>in</source>
+            <translation>in</translation>
+        </message>
+        <message>
+            <source>out</source>
+            <translation>out</translation>
+        </message>
+        <message>
+            <source>segment</source>
+            <translation>segment</translation>
+        </message>
+        <message>
+            <source>tangent</source>
+            <translation>tangent</translation>
+        </message>
+    </context>
 </TS>

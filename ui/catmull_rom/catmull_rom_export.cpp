@@ -48,6 +48,11 @@ QString catmullRomCsv(const std::vector<Point>& points, const std::vector<ExactP
                             QString::fromStdString(formatReadable(f.samples[k].y)));
         }
     }
+    // The C² families' own curves (spline_families_export.h).
+    if (settings.family == CurveFamily::PlaneSpline)
+        out += QStringLiteral("\n") + planeSplineCsv(scene.planeSpline);
+    else if (settings.family == CurveFamily::FunctionData)
+        out += QStringLiteral("\n") + functionDataCsv(scene.functionData);
     if (settings.curvaturePlot) {
         // κ(s) as plotted: a knot appears twice, the end of one segment and the start of the next.
         out += QStringLiteral("\ncurve,tau,ends,segment,s,kappa\n");

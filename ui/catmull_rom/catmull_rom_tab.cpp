@@ -3,11 +3,10 @@
 #include "core/exact/rational_approximation.h"
 #include "core/io/worked_examples.h"
 #include "ui/catmull_rom/catmull_rom_drawing.h"
-#include "ui/catmull_rom/catmull_rom_example.h"
-#include "ui/catmull_rom/catmull_rom_export.h"
 #include "ui/catmull_rom/catmull_rom_plot.h"
 #include "ui/catmull_rom/catmull_rom_report.h"
 #include "ui/catmull_rom/family_panel.h"
+#include "ui/catmull_rom/family_report.h"
 #include "ui/catmull_rom/spline_family_panels.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_legend.h"
@@ -654,8 +653,11 @@ void CatmullRomTab::recompute()
     m_scene = computeScene(m_editor->points(), m_settings);
     updateFamilyViews();
     m_splinePanels->showState(m_settings, m_scene, m_editor->points());
-    m_exact->setContent(
-        CatmullRomReport::html(m_editor->points(), m_settings, m_scene, computeAnalysis(m_editor->allExactPoints(), m_settings)));
+    // The panel describes the curve drawn: the family's own when it is not Catmull-Rom.
+    m_exact->setContent(m_settings.family != CurveFamily::CatmullRom
+                            ? FamilyReport::html(m_editor->points(), m_editor->allExactPoints(), m_settings, m_scene)
+                            : CatmullRomReport::html(m_editor->points(), m_settings, m_scene,
+                                                     computeAnalysis(m_editor->allExactPoints(), m_settings)));
     updatePlot();
     m_canvas->update();
     updateCanvasSummary();
@@ -720,70 +722,7 @@ CanvasLegendBox CatmullRomTab::legendBox(const ViewTransform& view, const Canvas
 
 CanvasLegend CatmullRomTab::legend() const { return catmullRomLegend(m_settings, m_scene); }
 
-// ---------------------------------------------------------------- examples and documents
-
-bool CatmullRomTab::loadExample(const WorkedExample& example)
-{
-    const auto state = catmullRomExample(example, m_editor->points(), m_settings);
-    if (!state)
-        return false;
-    loadPointsAndSettings(state->points, state->settings, tr("Load Ex %1").arg(QString::fromStdString(example.id)));
-    return true;
-}
-
-void CatmullRomTab::loadPointsAndSettings(const std::vector<Point>& points, const CatmullRomSettings& settings,
-                                          const QString& undoText)
-{
-    m_undo->beginMacro(undoText);
-    if (points != m_editor->points())
-        m_editor->setPoints(points, undoText);
-    changeSettings(settings, undoText);
-    m_undo->endMacro();
-    updateContentBounds(true);
-    m_canvas->fitToContent();
-}
-
-void CatmullRomTab::writeSettings(QJsonObject& state) const { ui::writeSettings(m_settings, state); }
-
-PointListMessages CatmullRomTab::pointMessages() const
-{
-    PointListMessages say;
-    say.notAList = tr("The Catmull-Rom points are missing or not a list.");
-    say.badCount = [](int count) {
-        return tr("A Catmull-Rom curve needs between 2 and %1 points; the file has %2.")
-            .arg(CatmullRomSettings::kMaxPoints)
-            .arg(count);
-    };
-    say.notAPair = [](int i) { return tr("Point %1 of the Catmull-Rom tab is not a pair of numbers.").arg(i); };
-    say.notFinite = [](int i) { return tr("Point %1 of the Catmull-Rom tab is not a finite number.").arg(i); };
-    return say;
-}
-
-bool CatmullRomTab::loadSettings(const QJsonObject& state, const std::vector<Point>& points, QString& error)
-{
-    QString problem;
-    const auto settings = readSettings(state, &problem);
-    if (!settings) {
-        error = tr("The Catmull-Rom settings are not valid (“%1”): tensions must be numbers in [−10, 10], "
-                   "at most %2 of them, without repeats.")
-                    .arg(problem)
-                    .arg(CatmullRomSettings::kMaxTensions);
-        return false;
-    }
-    // All checked: now change the tab.
-    m_editor->applyPoints(points);
-    applySettings(*settings);
-    return true;
-}
-
-// ---------------------------------------------------------------- exports and view
-
-QString CatmullRomTab::csv() const { return catmullRomCsv(m_editor->points(), m_editor->exactPoints(), m_settings, m_scene); }
-
-void CatmullRomTab::drawTikz(TikzWriter& w) const
-{
-    writeCatmullRomTikz(w, m_editor->points(), m_editor->polygonVisible(), m_settings, m_scene);
-}
+// ---------------------------------------------------------------- view
 
 void CatmullRomTab::presentationChanged(bool)
 {

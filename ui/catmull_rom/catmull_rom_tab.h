@@ -124,6 +124,11 @@ private:
     void updateFamilyViews();
     void hermiteTangentDragged(int index, Point tangent);
     void hermiteDragFinished(int index, Point startTangent);
+    /// T, C, B and the Hermite tangents follow their points: a point inserted at `index` gets
+    /// (0, 0, 0) and the Catmull-Rom tangent there, a removed point's values go with it (part
+    /// of the editor's undo step).
+    void pointInserted(int index);
+    void pointRemoved(int index);
     /// Points and settings as one undo step (a worked example, a family's example).
     void loadPointsAndSettings(const std::vector<Point>& points, const CatmullRomSettings& settings, const QString& undoText);
     /// Makes `s` current (undo/redo, loading): controls, curves, panel, plot.

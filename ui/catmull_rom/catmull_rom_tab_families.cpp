@@ -31,6 +31,8 @@ void CatmullRomTab::buildFamilyControls()
     connect(m_familyPanel, &FamilyPanel::cardinalTensionChosen, this, &CatmullRomTab::setCardinalTension);
     connect(m_familyPanel, &FamilyPanel::tcbChosen, this, &CatmullRomTab::setTcb);
     connect(m_familyPanel, &FamilyPanel::resetTangentsAsked, this, &CatmullRomTab::resetHermiteTangents);
+    connect(m_editor, &PointEditor::pointInserted, this, &CatmullRomTab::pointInserted);
+    connect(m_editor, &PointEditor::pointRemoved, this, &CatmullRomTab::pointRemoved);
     connect(m_editor, &PointEditor::selectionChanged, this,
             [this](int index) { m_familyPanel->showSettings(m_settings, index); });
     // Installed after the point editor: its handles are picked before the points.
@@ -164,6 +166,37 @@ void CatmullRomTab::hermiteDragFinished(int index, Point startTangent)
     if (after == m_settings)
         return;
     changeSettings(after, tr("Drag the tangent at q%1").arg(index));
+}
+
+void CatmullRomTab::pointInserted(int index)
+{
+    // The values are stored by index: those from `index` on belong to the points that moved up
+    // one. Points past the end of a list take the defaults anyway (tcbAt, hermiteTangentsOf).
+    if (index < 0)
+        return;
+    CatmullRomSettings after = m_settings;
+    const auto at = static_cast<std::size_t>(index);
+    if (at < after.tcb.size())
+        after.tcb.insert(after.tcb.begin() + index, TcbKnot<Rational>{});
+    if (at < after.hermiteTangents.size()) {
+        // The rule's tangent with the new neighbours (the points have changed already).
+        const std::vector<Point> rule = catmullRomTangents(m_editor->points(), m_settings);
+        after.hermiteTangents.insert(after.hermiteTangents.begin() + index, at < rule.size() ? rule[at] : Point{0, 0});
+    }
+    changeSettings(after, QString()); // inside the editor's step, which names it
+}
+
+void CatmullRomTab::pointRemoved(int index)
+{
+    if (index < 0)
+        return;
+    CatmullRomSettings after = m_settings;
+    const auto at = static_cast<std::size_t>(index);
+    if (at < after.tcb.size())
+        after.tcb.erase(after.tcb.begin() + index);
+    if (at < after.hermiteTangents.size())
+        after.hermiteTangents.erase(after.hermiteTangents.begin() + index);
+    changeSettings(after, QString()); // inside the editor's step, which names it
 }
 
 } // namespace granota::ui

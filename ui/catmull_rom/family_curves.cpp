@@ -11,39 +11,6 @@ namespace granota::ui {
 
 namespace {
 
-/// Segment mode (Def 2.8) keeps the open curve's interior segments only.
-template <class T> std::vector<T> familyShownSegments(std::vector<T> all, CatmullRomEnds ends)
-{
-    if (ends != CatmullRomEnds::Segment)
-        return all;
-    if (all.size() < 2)
-        return {};
-    return std::vector<T>(all.begin() + 1, all.end() - 1);
-}
-
-/// The tangents at each point of segments that run from point (first + k) mod n to the next:
-/// out = p′(0) of the segment leaving the point, in = p′(1) of the one arriving; a point with
-/// one of the two takes it for both (an open curve's ends), with neither both are 0.
-std::vector<KbTangents<double>> familyTangentsOf(const std::vector<HermiteSegment<double>>& segments, std::size_t n, int first)
-{
-    std::vector<KbTangents<double>> t(n);
-    std::vector<bool> hasIn(n, false), hasOut(n, false);
-    for (std::size_t k = 0; k < segments.size() && n > 0; ++k) {
-        const std::size_t a = (static_cast<std::size_t>(first) + k) % n, b = (a + 1) % n;
-        t[a].out = segments[k].m0;
-        hasOut[a] = true;
-        t[b].in = segments[k].m1;
-        hasIn[b] = true;
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-        if (hasOut[i] && !hasIn[i])
-            t[i].in = t[i].out;
-        if (hasIn[i] && !hasOut[i])
-            t[i].out = t[i].in;
-    }
-    return t;
-}
-
 /// How many segments Def 2.10 strings through n points (Segment: the interior ones).
 std::size_t familySegmentCount(std::size_t n, CatmullRomEnds ends)
 {

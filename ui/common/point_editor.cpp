@@ -207,7 +207,11 @@ void PointEditor::insertPoint(int index, Point p, const ExactPoint& exact)
     index = std::clamp(index, 0, static_cast<int>(m_edited.points.size()));
     EditedPoints after = edited();
     after.insert(static_cast<std::size_t>(index), p, exact);
-    m_undo->push(new PointsCommand(this, edited(), after, tr("Add point")));
+    const QString text = tr("Add point");
+    m_undo->beginMacro(text); // with the values a tab keeps per point (pointInserted)
+    m_undo->push(new PointsCommand(this, edited(), after, text));
+    emit pointInserted(index);
+    m_undo->endMacro();
     setSelected(index);
 }
 
@@ -222,7 +226,11 @@ void PointEditor::removePoint(int index)
     finishDrag();
     EditedPoints after = edited();
     after.erase(static_cast<std::size_t>(index));
-    m_undo->push(new PointsCommand(this, edited(), after, tr("Delete point %1").arg(index)));
+    const QString text = tr("Delete point %1").arg(index);
+    m_undo->beginMacro(text); // with the values a tab keeps per point (pointRemoved)
+    m_undo->push(new PointsCommand(this, edited(), after, text));
+    emit pointRemoved(index);
+    m_undo->endMacro();
 }
 
 void PointEditor::finishDrag()

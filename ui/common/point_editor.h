@@ -154,6 +154,11 @@ signals:
     void message(const QString& text);
     /// The labels were chosen on or off, or back to automatic (for the tab's document).
     void labelChoiceChanged();
+    /// A point was inserted at `index` (or removed from there) by insertPoint()/removePoint().
+    /// Emitted inside that edit's undo macro, after the points changed: a tab that keeps values
+    /// per point pushes their change here, and it becomes part of the same undo step.
+    void pointInserted(int index);
+    void pointRemoved(int index);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
