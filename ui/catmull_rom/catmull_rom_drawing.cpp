@@ -55,7 +55,7 @@ QRectF pointBounds(const std::vector<Point>& points)
 
 } // namespace
 
-void drawBezierSegments(QPainter& p, const ViewTransform& view, const std::vector<BezierSegment<double>>& segments)
+QPainterPath bezierSegmentsPath(const ViewTransform& view, const std::vector<BezierSegment<double>>& segments)
 {
     QPainterPath path;
     bool open = false; // the path ends at the previous segment's end
@@ -71,8 +71,13 @@ void drawBezierSegments(QPainter& p, const ViewTransform& view, const std::vecto
         path.cubicTo(view.toScreen(b[1]), view.toScreen(b[2]), view.toScreen(b[3]));
         open = true;
     }
+    return path;
+}
+
+void drawBezierSegments(QPainter& p, const ViewTransform& view, const std::vector<BezierSegment<double>>& segments)
+{
     p.setBrush(Qt::NoBrush);
-    p.drawPath(path);
+    p.drawPath(bezierSegmentsPath(view, segments));
 }
 
 void drawCatmullRomCurves(QPainter& p, const ViewTransform& view, const CanvasStyle& style, const CatmullRomSettings& settings,

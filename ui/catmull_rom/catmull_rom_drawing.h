@@ -16,6 +16,7 @@
 #include <vector>
 
 class QPainter;
+class QPainterPath;
 
 namespace granota::ui {
 
@@ -28,6 +29,9 @@ inline const QColor kCatmullRomSplineColor{0x33, 0x33, 0x33};
 
 /// Cubic Bézier segments as one path of cubicTo (SVG `C`, PDF `c`): the curve itself, not
 /// a polyline of samples. A segment with a point that is not finite is left out.
+/// Cubic Bézier segments as one path of cubicTo (SVG `C`, PDF `c`, TikZ `.. controls ..`), a
+/// segment that starts where the last one ended joined to it; a segment that is not finite skipped.
+QPainterPath bezierSegmentsPath(const ViewTransform& view, const std::vector<BezierSegment<double>>& segments);
 void drawBezierSegments(QPainter& p, const ViewTransform& view, const std::vector<BezierSegment<double>>& segments);
 
 /// The Bézier curve, the spline, the compared ends (dashed) and one curve per τ on top, the

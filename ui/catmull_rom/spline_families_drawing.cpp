@@ -2,6 +2,7 @@
 
 #include "core/base/aabb.h"
 
+#include "ui/catmull_rom/catmull_rom_drawing.h"
 #include "ui/catmull_rom/tension_colour.h"
 #include "ui/common/canvas_style.h"
 #include "ui/common/view_transform.h"
@@ -19,24 +20,6 @@ namespace {
 const QColor kSplineFamilyErrorColor(0xc6, 0x28, 0x28);
 const QColor kPlaneSplineColour(0x33, 0x33, 0x33);
 
-/// Cubic Bézier segments as one path of cubicTo (SVG `C`, PDF `c`, TikZ `.. controls ..`).
-QPainterPath splineFamilyPath(const ViewTransform& view, const std::vector<BezierSegment<double>>& segments)
-{
-    QPainterPath path;
-    bool open = false;
-    for (const auto& b : segments) {
-        if (!isFinite(b[0]) || !isFinite(b[1]) || !isFinite(b[2]) || !isFinite(b[3])) {
-            open = false;
-            continue;
-        }
-        const QPointF start = view.toScreen(b[0]);
-        if (!open || QLineF(path.currentPosition(), start).length() > 1e-6)
-            path.moveTo(start);
-        path.cubicTo(view.toScreen(b[1]), view.toScreen(b[2]), view.toScreen(b[3]));
-        open = true;
-    }
-    return path;
-}
 
 } // namespace
 
@@ -45,11 +28,11 @@ void drawPlaneSpline(QPainter& p, const ViewTransform& view, const CanvasStyle& 
     p.setBrush(Qt::NoBrush);
     if (!scene.catmullRom.bezier.empty()) {
         p.setPen(QPen(tensionColour(0.5), style.lineWidth(), Qt::DashLine, Qt::RoundCap, Qt::RoundJoin));
-        p.drawPath(splineFamilyPath(view, scene.catmullRom.bezier));
+        p.drawPath(bezierSegmentsPath(view, scene.catmullRom.bezier));
     }
     if (!scene.spline.bezier.empty()) {
         p.setPen(QPen(kPlaneSplineColour, style.lineWidth() * 1.25, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-        p.drawPath(splineFamilyPath(view, scene.spline.bezier));
+        p.drawPath(bezierSegmentsPath(view, scene.spline.bezier));
     }
 }
 
@@ -88,7 +71,7 @@ void drawFunctionData(QPainter& p, const ViewTransform& view, const CanvasStyle&
     p.setBrush(Qt::NoBrush);
     for (const auto& shape : scene.curves) {
         p.setPen(QPen(functionDataCurveColour(shape.curve), style.lineWidth(), Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-        p.drawPath(splineFamilyPath(view, shape.bezier));
+        p.drawPath(bezierSegmentsPath(view, shape.bezier));
     }
 }
 

@@ -10,40 +10,39 @@
 
 namespace granota {
 
+namespace {
+
+/// A polynomial segment's κ at equal steps of arc length, the ends exactly at t = 0 and t = 1,
+/// its s counted from `start`; its length in `length`.
+std::vector<CurvatureSample> polynomialSegmentSamples(const std::vector<Point>& P, double start, int samplesPerSegment,
+                                                      double& length)
+{
+    std::vector<CurvatureSample> row;
+    length = 0;
+    if (P.empty())
+        return row;
+    const ArcLengthParametrization arc(P);
+    const double L = std::isfinite(arc.total()) ? arc.total() : 0.0;
+    row.reserve(static_cast<std::size_t>(samplesPerSegment));
+    for (int j = 0; j < samplesPerSegment; ++j) {
+        const double local = j == samplesPerSegment - 1 ? L : L * j / (samplesPerSegment - 1);
+        const double t = j == 0 ? 0.0 : j == samplesPerSegment - 1 ? 1.0 : arc.parameterAt(local);
+        CurvatureSample sample;
+        sample.s = start + local;
+        sample.kappa = curvatureAt(P, t).curvature;
+        if (sample.kappa && !std::isfinite(*sample.kappa))
+            sample.kappa.reset();
+        row.push_back(sample);
+    }
+    length = L;
+    return row;
+}
+
+} // namespace
+
 CurvatureProfile curvatureProfile(const std::vector<std::vector<Point>>& segments, int samplesPerSegment)
 {
-    assert(samplesPerSegment >= 2);
-    samplesPerSegment = std::max(samplesPerSegment, 2);
-    CurvatureProfile out;
-    out.samples.reserve(segments.size());
-    out.knots.reserve(segments.size() + 1);
-    double start = 0;
-    for (const auto& P : segments) {
-        out.knots.push_back(start);
-        std::vector<CurvatureSample> row;
-        if (P.empty()) {
-            out.samples.push_back(std::move(row));
-            continue;
-        }
-        const ArcLengthParametrization arc(P);
-        const double L = std::isfinite(arc.total()) ? arc.total() : 0.0;
-        row.reserve(static_cast<std::size_t>(samplesPerSegment));
-        for (int j = 0; j < samplesPerSegment; ++j) {
-            // Equal steps of arc length, ends exactly at t = 0 and t = 1.
-            const double local = j == samplesPerSegment - 1 ? L : L * j / (samplesPerSegment - 1);
-            const double t = j == 0 ? 0.0 : j == samplesPerSegment - 1 ? 1.0 : arc.parameterAt(local);
-            CurvatureSample sample;
-            sample.s = start + local;
-            sample.kappa = curvatureAt(P, t).curvature;
-            if (sample.kappa && !std::isfinite(*sample.kappa))
-                sample.kappa.reset();
-            row.push_back(sample);
-        }
-        out.samples.push_back(std::move(row));
-        start += L;
-    }
-    out.knots.push_back(start);
-    return out;
+    return curvatureProfile(segments, {}, samplesPerSegment);
 }
 
 CurvatureProfile curvatureProfile(const std::vector<std::vector<Point>>& segments,
@@ -59,13 +58,11 @@ CurvatureProfile curvatureProfile(const std::vector<std::vector<Point>>& segment
         const auto& P = segments[i];
         const std::vector<double> none;
         const auto& w = i < weights.size() ? weights[i] : none;
-        if (w.empty() || P.empty()) { // polynomial: equal steps of arc length, as above
-            CurvatureProfile one = curvatureProfile({P}, samplesPerSegment);
-            for (CurvatureSample& sample : one.samples.front())
-                sample.s += start;
+        if (w.empty() || P.empty()) { // polynomial: equal steps of arc length
+            double length = 0;
             out.knots.push_back(start);
-            out.samples.push_back(std::move(one.samples.front()));
-            start += one.length();
+            out.samples.push_back(polynomialSegmentSamples(P, start, samplesPerSegment, length));
+            start += length;
             continue;
         }
         assert(w.size() == P.size());
