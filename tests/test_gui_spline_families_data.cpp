@@ -3,6 +3,7 @@
 // spline solved here by hand, the monotone schemes' zero, the closed spline through a
 // square's corners against its closed form, clamped tangents, the translated refusals, and
 // the families' settings through their JSON.
+#include "core/exact/polynomial_text.h"
 #include "ui/catmull_rom/catmull_rom_tab.h"
 #include "ui/catmull_rom/function_data_curves.h"
 #include "ui/catmull_rom/function_data_panel.h"
@@ -10,6 +11,7 @@
 #include "ui/catmull_rom/plane_spline_panel.h"
 #include "ui/catmull_rom/spline_family_examples.h"
 #include "ui/catmull_rom/spline_family_panels.h"
+#include "ui/common/exact_panel.h"
 #include "ui/common/number_text.h"
 #include "ui/common/point_editor.h"
 
@@ -408,6 +410,38 @@ private slots:
         QVERIFY2(std::fabs(middle[3].toDouble() - 0.5) < 1e-9 && std::fabs(middle[4].toDouble() + 3.0 / 16) < 1e-9,
                  qPrintable(middle.join(QLatin1Char(','))));
         QVERIFY(plane.contains(QStringLiteral("knot,u")));
+    }
+
+    // The exact panel lists the C² spline in the plane's segments exactly. The closed uniform
+    // spline through the unit square (0,0), (1,0), (1,1), (0,1), solved by hand: the tangents D_i
+    // satisfy D_{i−1} + 4D_i + D_{i+1} = 3(P_{i+1} − P_{i−1}); by the square's symmetry D_{i±1} are
+    // D_i turned by ±90°, so they cancel and D_i = 3/4 (P_{i+1} − P_{i−1}): D_0 = (3/4, −3/4),
+    // D_1 = (3/4, 3/4). Hermite's form p(s) = P_0 + D_0 s + (3(P_1 − P_0) − 2D_0 − D_1) s² +
+    // (2(P_0 − P_1) + D_0 + D_1) s³ gives x = 3/4 s + 3/4 s² − 1/2 s³, y = −3/4 s + 3/4 s²
+    // (its middle (1/2, −3/16), as csvWritesTheFamiliesSamples reads).
+    void exactPanelListsThePlaneSplineSegments()
+    {
+        CatmullRomTab tab;
+        tab.setFamily(CurveFamily::PlaneSpline);
+        tab.pointEditor()->setPoints({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, QStringLiteral("square"));
+        CatmullRomSettings periodic = tab.settings();
+        periodic.planeSpline.ends = ParametricEnds::Periodic;
+        emit tab.splinePanels()->changeRequested(periodic, QStringLiteral("test"));
+        auto* panel = tab.findChild<ExactPanel*>();
+        QVERIFY(panel);
+        const QString text = panel->plainText();
+        const auto expected = [](std::vector<Rational> c) {
+            return QString::fromStdString(toText(Polynomial<Rational>(std::move(c)), "s"));
+        };
+        const QString x = expected({Rational(0), frac(3, 4), frac(3, 4), frac(-1, 2)});
+        const QString y = expected({Rational(0), frac(-3, 4), frac(3, 4)});
+        QVERIFY2(text.contains(x) && text.contains(y), qPrintable(x + QStringLiteral(" | ") + y + QStringLiteral("\n") + text));
+        // With chord-length parameters the panel gives no table (a chord length is in general a square
+        // root), only the sentence.
+        CatmullRomSettings chord = tab.settings();
+        chord.planeSpline.parameters = SplineParameters::Chord;
+        emit tab.splinePanels()->changeRequested(chord, QStringLiteral("test"));
+        QVERIFY(!panel->plainText().contains(x));
     }
 
     void settingsRoundTripThroughJson()

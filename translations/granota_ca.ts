@@ -6700,5 +6700,9 @@ Ja no és al disc.</translation>
             <source>tangent</source>
             <translation>tangent</translation>
         </message>
+        <message>
+            <source>Def 2.1 in the plane: each segment pᵢ(s) from qᵢ to qᵢ₊₁, s ∈ [0, 1], in powers of s, solved exactly; the curve is C² at every knot (the Knots tab).</source>
+            <translation>La Def. 2.1 al pla: cada segment pᵢ(s) de qᵢ a qᵢ₊₁, s ∈ [0, 1], en potències de s, resolt exactament; la corba és C² a tots els nusos (la pestanya Nusos).</translation>
+        </message>
     </context>
 </TS>

@@ -6700,5 +6700,9 @@ It is no longer on disk.</translation>
             <source>tangent</source>
             <translation>tangent</translation>
         </message>
+        <message>
+            <source>Def 2.1 in the plane: each segment pᵢ(s) from qᵢ to qᵢ₊₁, s ∈ [0, 1], in powers of s, solved exactly; the curve is C² at every knot (the Knots tab).</source>
+            <translation>Def 2.1 in the plane: each segment pᵢ(s) from qᵢ to qᵢ₊₁, s ∈ [0, 1], in powers of s, solved exactly; the curve is C² at every knot (the Knots tab).</translation>
+        </message>
     </context>
 </TS>

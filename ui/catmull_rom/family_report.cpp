@@ -5,8 +5,11 @@
 #include "core/curves/splines/continuity_check.h"
 #include "core/curves/splines/hermite_segment.h"
 #include "core/curves/splines/kochanek_bartels.h"
+#include "core/curves/splines/parametric_spline.h"
+#include "core/exact/polynomial_text.h"
 #include "core/exact/rational_approximation.h"
 #include "ui/catmull_rom/curve_family.h"
+#include "ui/catmull_rom/catmull_rom_report.h"
 #include "ui/catmull_rom/family_curves.h"
 #include "ui/common/exact_panel.h"
 #include "ui/common/number_text.h"
@@ -107,6 +110,33 @@ QString familyReportBody(const std::vector<HermiteSegment<S>>& segments, const s
     return html;
 }
 
+/// The C² spline in the plane (Def 2.1) through exact points with uniform parameters, solved
+/// again in Rational by the core: its segments pᵢ(s) in powers of the local s ∈ [0, 1], or an
+/// empty text when it has no exact form here (chord or centripetal parameters, points without
+/// an exact form, the core's refusal: the canvas says why).
+QString familyReportPlaneSpline(const std::optional<std::vector<RPoint>>& exact, std::size_t n, const PlaneSplineSettings& plane)
+{
+    if (!exact || exact->size() != n || plane.parameters != SplineParameters::Uniform)
+        return QString();
+    const bool clamped = plane.ends == ParametricEnds::Clamped;
+    const auto spline = parametricSpline(*exact, plane.ends, SplineParameters::Uniform,
+                                         clamped ? std::optional<RPoint>(plane.startTangent) : std::nullopt,
+                                         clamped ? std::optional<RPoint>(plane.endTangent) : std::nullopt);
+    if (!spline)
+        return QString();
+    const auto pieces = parametricSplinePolynomials(*spline);
+    std::vector<QStringList> rows;
+    const std::size_t shown = std::min<std::size_t>(pieces.size(), CatmullRomReport::kMaxListedSegments);
+    for (std::size_t i = 0; i < shown; ++i)
+        rows.push_back({ExactPanel::subscripted(QStringLiteral("p"), static_cast<int>(i)) + QStringLiteral("(s)"),
+                        ExactPanel::polynomialHtml(toText(pieces[i].x, "s")),
+                        ExactPanel::polynomialHtml(toText(pieces[i].y, "s"))});
+    QString html = ExactPanel::table({QString(), QStringLiteral("x(s)"), QStringLiteral("y(s)")}, rows);
+    if (pieces.size() > shown)
+        html += ExactPanel::note(FamilyReport::tr("… and %n more segments.", nullptr, static_cast<int>(pieces.size() - shown)));
+    return html;
+}
+
 } // namespace
 
 QString FamilyReport::html(const std::vector<Point>& points, const std::optional<std::vector<RPoint>>& exact,
@@ -131,12 +161,20 @@ QString FamilyReport::html(const std::vector<Point>& points, const std::optional
         html += ExactPanel::note(
             tr("Def 2.8 with the tangents you set: drag the handle at the end of each tangent.").toHtmlEscaped());
         break;
-    case CurveFamily::PlaneSpline:
+    case CurveFamily::PlaneSpline: {
+        const QString segments = familyReportPlaneSpline(exact, points.size(), settings.planeSpline);
+        if (!segments.isEmpty())
+            return html +
+                   ExactPanel::note(tr("Def 2.1 in the plane: each segment pᵢ(s) from qᵢ to qᵢ₊₁, s ∈ [0, 1], in powers of "
+                                       "s, solved exactly; the curve is C² at every knot (the Knots tab).")
+                                        .toHtmlEscaped()) +
+                   segments;
         return html + ExactPanel::note(tr("The C² spline in the plane (Def 2.1) solves for its tangents: its end conditions and "
                                           "parameters are in its panel, the continuity at every knot in the Knots tab. This "
                                           "panel lists the exact tangents and segments of the cardinal, Kochanek–Bartels and "
                                           "Hermite families.")
                                            .toHtmlEscaped());
+    }
     case CurveFamily::FunctionData:
         return html +
                ExactPanel::note(tr("Function data y(x): the natural spline, Catmull-Rom, Fritsch–Carlson and Steffen on the "
